@@ -1,0 +1,286 @@
+//! The tempered P1 triangle (METHOD.md §2), in the adjugate form.
+//!
+//! With F = ∂x/∂ξ, J = det F and adj(F) its adjugate, the reference
+//! gradients mapped by the adjugate are g_i = ∇_ξφ_i · adj(F), so that
+//! ∇φ_i = g_i / J. Every stiffness here is written with g_i and a single
+//! division by the tempered Jacobian T = max(J, Jmin):
+//!
+//! * Laplacian: K_ij = κ g_i·g_j / (2T)
+//! * elasticity: K = B̂ᵀ D B̂ / (2T), B̂ the strain-displacement matrix built
+//!   from the g_i
+//!
+//! which is finite for J = 0 and J < 0. Plain FEM (tempering off) divides by
+//! |J| (the usual area weight) and refuses J = 0.
+
+use crate::error::{Error, Result, Status};
+
+/// Adjugate-mapped gradients, Jacobian and size of one P1 triangle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TriGeometry {
+    /// g_i = ∇_ξφ_i · adj(F), i.e. (y_j - y_k, x_k - x_j) for (i, j, k) cyclic.
+    pub g: [[f64; 2]; 3],
+    /// J = det F = twice the signed area (positive for counter-clockwise).
+    pub j: f64,
+    /// The longest edge h_e.
+    pub h: f64,
+}
+
+/// Accurate a*d - b*c (Kahan's algorithm with fused multiply-add): the
+/// Jacobian of a sliver is a difference of nearly equal products.
+fn det2(a: f64, b: f64, c: f64, d: f64) -> f64 {
+    let w = b * c;
+    let e = (-b).mul_add(c, w);
+    let f = a.mul_add(d, -w);
+    f + e
+}
+
+impl TriGeometry {
+    /// Computes the geometry of the triangle with vertices `p`.
+    pub fn new(p: &[[f64; 2]; 3]) -> TriGeometry {
+        let [[x1, y1], [x2, y2], [x3, y3]] = *p;
+        let g = [[y2 - y3, x3 - x2], [y3 - y1, x1 - x3], [y1 - y2, x2 - x1]];
+        let j = det2(x2 - x1, x3 - x1, y2 - y1, y3 - y1);
+        let len = |a: [f64; 2]| a[0].hypot(a[1]);
+        let h = len(g[0]).max(len(g[1])).max(len(g[2]));
+        TriGeometry { g, j, h }
+    }
+
+    /// True when all three vertices coincide (every g_i is zero).
+    pub fn is_point(&self) -> bool {
+        self.h == 0.0
+    }
+}
+
+/// How Jmin is chosen (METHOD.md §2).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Tempering {
+    /// Jmin = h_e³/λ with λ = the larger side of the mesh's bounding box
+    /// (the default; the seed's λ = 1 m for its 1 m model). It scales with the
+    /// model, so metres and millimetres give the same physical answer.
+    Auto,
+    /// Jmin = h_e³/λ with this λ, a length in model units.
+    Lambda(f64),
+    /// The same Jmin for every element (units of length²).
+    Fixed(f64),
+    /// Plain FEM: divide by |J|; a zero Jacobian is an error.
+    Off,
+}
+
+impl Tempering {
+    /// Checks the parameter of the policy.
+    pub fn validate(&self) -> Result<()> {
+        match *self {
+            Tempering::Lambda(l) if !(l.is_finite() && l > 0.0) => Err(Error::argument(format!(
+                "tempering lambda = {l} must be finite and > 0"
+            ))),
+            Tempering::Fixed(j) if !(j.is_finite() && j > 0.0) => Err(Error::argument(format!(
+                "tempering jmin = {j} must be finite and > 0"
+            ))),
+            _ => Ok(()),
+        }
+    }
+}
+
+/// The tempering applied to one element, resolved from a [`Tempering`]
+/// policy and the model size.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Jmin {
+    /// Divide by max(J, jmin).
+    Tempered(f64),
+    /// Divide by |J| (plain FEM).
+    Off,
+}
+
+impl Jmin {
+    /// Jmin = h³/λ, written to avoid overflow/underflow of h³ when possible.
+    pub fn from_lambda(h: f64, lambda: f64) -> Jmin {
+        Jmin::Tempered((h / lambda) * h * h)
+    }
+}
+
+/// The value T that replaces J in the denominator, or an error for an
+/// element that plain FEM cannot integrate. `None` means the element is a
+/// single point: its stiffness is exactly zero (all g_i vanish).
+fn denominator(geo: &TriGeometry, jmin: Jmin) -> Result<Option<f64>> {
+    let t = match jmin {
+        Jmin::Tempered(jm) => geo.j.max(jm),
+        Jmin::Off => geo.j.abs(),
+    };
+    if t > 0.0 {
+        return Ok(Some(t));
+    }
+    if geo.is_point() {
+        return Ok(None);
+    }
+    let why = match jmin {
+        Jmin::Off => "zero Jacobian with tempering off (plain FEM cannot integrate it)",
+        Jmin::Tempered(_) => "zero Jacobian and Jmin underflows to zero",
+    };
+    Err(Error::new(
+        Status::DegenerateElement,
+        format!("degenerate element: {why}"),
+    ))
+}
+
+/// The tempered Jacobian T used for an element (J itself for a healthy one).
+pub fn tempered_jacobian(geo: &TriGeometry, jmin: Jmin) -> Result<Option<f64>> {
+    denominator(geo, jmin)
+}
+
+/// B̂ (3x6): strain-displacement matrix times J, Voigt [ε_xx, ε_yy, γ_xy],
+/// DOFs ordered (u1, v1, u2, v2, u3, v3).
+pub fn b_hat(geo: &TriGeometry) -> [[f64; 6]; 3] {
+    let mut b = [[0.0; 6]; 3];
+    for (i, gi) in geo.g.iter().enumerate() {
+        b[0][2 * i] = gi[0];
+        b[1][2 * i + 1] = gi[1];
+        b[2][2 * i] = gi[1];
+        b[2][2 * i + 1] = gi[0];
+    }
+    b
+}
+
+/// K = B̂ᵀ D B̂ / (2T) for any symmetric 3x3 D (isotropic, or the
+/// frictionless contact law). Returns zeros for a point element.
+pub fn elasticity_stiffness(
+    geo: &TriGeometry,
+    d: &[[f64; 3]; 3],
+    jmin: Jmin,
+) -> Result<[[f64; 6]; 6]> {
+    let Some(t) = denominator(geo, jmin)? else {
+        return Ok([[0.0; 6]; 6]);
+    };
+    let b = b_hat(geo);
+    // DB = D B̂ (3x6)
+    let mut db = [[0.0; 6]; 3];
+    for r in 0..3 {
+        for c in 0..6 {
+            db[r][c] = d[r][0] * b[0][c] + d[r][1] * b[1][c] + d[r][2] * b[2][c];
+        }
+    }
+    let scale = 0.5 / t;
+    let mut k = [[0.0; 6]; 6];
+    for a in 0..6 {
+        for c in a..6 {
+            let v = (b[0][a] * db[0][c] + b[1][a] * db[1][c] + b[2][a] * db[2][c]) * scale;
+            k[a][c] = v;
+            k[c][a] = v;
+        }
+    }
+    finite_or_error(k.iter().flatten())?;
+    Ok(k)
+}
+
+/// Scalar Laplacian K_ij = κ g_i·g_j / (2T). Returns zeros for a point
+/// element.
+pub fn laplacian_stiffness(geo: &TriGeometry, kappa: f64, jmin: Jmin) -> Result<[[f64; 3]; 3]> {
+    let Some(t) = denominator(geo, jmin)? else {
+        return Ok([[0.0; 3]; 3]);
+    };
+    let scale = 0.5 * kappa / t;
+    let mut k = [[0.0; 3]; 3];
+    for i in 0..3 {
+        for j in i..3 {
+            let v = (geo.g[i][0] * geo.g[j][0] + geo.g[i][1] * geo.g[j][1]) * scale;
+            k[i][j] = v;
+            k[j][i] = v;
+        }
+    }
+    finite_or_error(k.iter().flatten())?;
+    Ok(k)
+}
+
+fn finite_or_error<'a>(mut values: impl Iterator<Item = &'a f64>) -> Result<()> {
+    if values.all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(Error::new(
+            Status::NumericalFailure,
+            "element stiffness overflows (coordinates or moduli too extreme)",
+        ))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const D_UNIT: [[f64; 3]; 3] = [[2.0, 0.5, 0.0], [0.5, 2.0, 0.0], [0.0, 0.0, 0.75]];
+
+    #[test]
+    fn jacobian_is_twice_the_signed_area() {
+        let g = TriGeometry::new(&[[0.0, 0.0], [2.0, 0.0], [0.0, 1.0]]);
+        assert_eq!(g.j, 2.0);
+        let g = TriGeometry::new(&[[0.0, 0.0], [0.0, 1.0], [2.0, 0.0]]);
+        assert_eq!(g.j, -2.0);
+    }
+
+    #[test]
+    fn healthy_element_is_untouched_by_tempering() {
+        let geo = TriGeometry::new(&[[0.0, 0.0], [1.0, 0.0], [0.2, 0.9]]);
+        let plain = elasticity_stiffness(&geo, &D_UNIT, Jmin::Off).unwrap();
+        let tempered = elasticity_stiffness(&geo, &D_UNIT, Jmin::from_lambda(geo.h, 100.0)).unwrap();
+        assert_eq!(plain, tempered);
+    }
+
+    #[test]
+    fn flat_cap_is_finite_and_softened_by_j_over_jmin() {
+        let eps = 1e-9;
+        let geo = TriGeometry::new(&[[0.0, 0.0], [1.0, 0.0], [0.5, eps]]);
+        let jmin = 1e-3;
+        let plain = laplacian_stiffness(&geo, 1.0, Jmin::Off).unwrap();
+        let tempered = laplacian_stiffness(&geo, 1.0, Jmin::Tempered(jmin)).unwrap();
+        let ratio = geo.j / jmin;
+        for i in 0..3 {
+            for j in 0..3 {
+                assert!((tempered[i][j] - ratio * plain[i][j]).abs() <= 1e-12 * plain[i][j].abs());
+            }
+        }
+    }
+
+    #[test]
+    fn exactly_degenerate_and_inverted_elements_are_finite_when_tempered() {
+        for p in [
+            [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]],
+            [[0.0, 0.0], [1.0, 0.0], [1.0, 0.0]],
+            [[0.0, 0.0], [0.0, 1.0], [1.0, 0.0]],
+        ] {
+            let geo = TriGeometry::new(&p);
+            let k = elasticity_stiffness(&geo, &D_UNIT, Jmin::from_lambda(geo.h, 10.0)).unwrap();
+            assert!(k.iter().flatten().all(|v| v.is_finite()));
+            assert!(k.iter().flatten().any(|v| *v != 0.0));
+        }
+    }
+
+    #[test]
+    fn plain_fem_refuses_a_zero_jacobian() {
+        let geo = TriGeometry::new(&[[0.0, 0.0], [1.0, 0.0], [2.0, 0.0]]);
+        let e = elasticity_stiffness(&geo, &D_UNIT, Jmin::Off).unwrap_err();
+        assert_eq!(e.status(), Status::DegenerateElement);
+    }
+
+    #[test]
+    fn element_collapsed_to_a_point_has_zero_stiffness_not_nan() {
+        let geo = TriGeometry::new(&[[1.0, 2.0]; 3]);
+        let k = elasticity_stiffness(&geo, &D_UNIT, Jmin::from_lambda(geo.h, 10.0)).unwrap();
+        assert!(k.iter().flatten().all(|v| *v == 0.0));
+        let k = laplacian_stiffness(&geo, 1.0, Jmin::from_lambda(geo.h, 10.0)).unwrap();
+        assert!(k.iter().flatten().all(|v| *v == 0.0));
+    }
+
+    #[test]
+    fn rigid_motions_produce_no_force_even_for_flat_elements() {
+        for p in [
+            [[0.0, 0.0], [1.0, 0.0], [0.3, 0.8]],
+            [[0.0, 0.0], [1.0, 0.0], [0.5, 0.0]],
+        ] {
+            let geo = TriGeometry::new(&p);
+            let k = elasticity_stiffness(&geo, &D_UNIT, Jmin::Tempered(0.01)).unwrap();
+            let rot: Vec<f64> = p.iter().flat_map(|q| [-q[1], q[0]]).collect();
+            for row in &k {
+                let f: f64 = row.iter().zip(&rot).map(|(a, b)| a * b).sum();
+                assert!(f.abs() < 1e-12 * row.iter().map(|v| v.abs()).sum::<f64>());
+            }
+        }
+    }
+}

@@ -1,0 +1,120 @@
+//! Errors and the status codes shared by the Rust API and the C ABI.
+
+use std::fmt;
+
+/// Outcome of a call. The numbers are part of the C ABI and are fixed
+/// forever: a code is never renumbered or reused, new codes are appended.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Status {
+    /// Success.
+    Ok = 0,
+    /// A required pointer argument was NULL.
+    NullPointer = 1,
+    /// An argument is out of its documented range (the message names it).
+    InvalidArgument = 2,
+    /// The mesh is invalid (the message names the node, triangle or edge).
+    InvalidMesh = 3,
+    /// A material is invalid or missing (the message names the body).
+    InvalidMaterial = 4,
+    /// The call is not allowed in the model's current state (e.g. a solve
+    /// before a mesh was given, results before a solve).
+    InvalidState = 5,
+    /// A caller-owned output buffer is shorter than required.
+    BufferTooSmall = 6,
+    /// The stiffness matrix is singular or indefinite: some body is not
+    /// restrained (the message names it).
+    Singular = 7,
+    /// The contact active-set loop did not converge (the message gives the
+    /// history).
+    NotConverged = 8,
+    /// A degenerate element cannot be integrated (zero Jacobian with
+    /// tempering off); the message names it.
+    DegenerateElement = 9,
+    /// A contact pair or contact mesh is invalid (the message names it).
+    InvalidContact = 10,
+    /// A computed result is not finite (overflow); nothing was returned.
+    NumericalFailure = 11,
+    /// An internal error (a caught panic): please report it.
+    Internal = 12,
+    /// Memory for the factorisation could not be allocated.
+    OutOfMemory = 13,
+}
+
+impl Status {
+    /// A short, stable, human-readable name of the status.
+    pub fn name(self) -> &'static str {
+        match self {
+            Status::Ok => "ok",
+            Status::NullPointer => "null pointer",
+            Status::InvalidArgument => "invalid argument",
+            Status::InvalidMesh => "invalid mesh",
+            Status::InvalidMaterial => "invalid material",
+            Status::InvalidState => "invalid state",
+            Status::BufferTooSmall => "buffer too small",
+            Status::Singular => "singular system",
+            Status::NotConverged => "not converged",
+            Status::DegenerateElement => "degenerate element",
+            Status::InvalidContact => "invalid contact",
+            Status::NumericalFailure => "numerical failure",
+            Status::Internal => "internal error",
+            Status::OutOfMemory => "out of memory",
+        }
+    }
+}
+
+/// An error of the tfem API: a status code plus a message naming the
+/// offending item (node, element, body, edge or argument).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Error {
+    status: Status,
+    message: String,
+}
+
+impl Error {
+    /// Builds an error. `status` must not be [`Status::Ok`].
+    pub fn new(status: Status, message: impl Into<String>) -> Self {
+        debug_assert!(status != Status::Ok);
+        Error {
+            status,
+            message: message.into(),
+        }
+    }
+
+    /// The status code of this error.
+    pub fn status(&self) -> Status {
+        self.status
+    }
+
+    /// The message, naming the offending item.
+    pub fn message(&self) -> &str {
+        &self.message
+    }
+
+    pub(crate) fn argument(message: impl Into<String>) -> Self {
+        Error::new(Status::InvalidArgument, message)
+    }
+
+    pub(crate) fn mesh(message: impl Into<String>) -> Self {
+        Error::new(Status::InvalidMesh, message)
+    }
+
+    pub(crate) fn state(message: impl Into<String>) -> Self {
+        Error::new(Status::InvalidState, message)
+    }
+
+    pub(crate) fn contact(message: impl Into<String>) -> Self {
+        Error::new(Status::InvalidContact, message)
+    }
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}: {}", self.status.name(), self.message)
+    }
+}
+
+impl std::error::Error for Error {}
+
+/// Result type of the tfem API.
+pub type Result<T> = std::result::Result<T, Error>;

@@ -1,0 +1,908 @@
+//! The C ABI: a thin translation layer over [`crate::Model`].
+//!
+//! Conventions (repeated in the generated header):
+//! * Every function returns a [`Status`]; `TFEM_STATUS_OK` (0) is success.
+//!   `tfem_last_error` gives the message of the last failed call.
+//! * Indices (nodes, triangles, edges) use the `index_base` given to
+//!   `tfem_set_mesh` (0 for C, 1 for Fortran) in every later call and in
+//!   every message.
+//! * Output buffers are owned by the caller; their length (in elements, not
+//!   bytes) is checked, and nothing is written when it is too short.
+//! * A failed call leaves the model as it was. No panic crosses the
+//!   boundary: it is caught and reported as `TFEM_STATUS_INTERNAL`.
+
+#![allow(clippy::missing_safety_doc)]
+
+use std::cell::RefCell;
+use std::ffi::{c_char, c_int};
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+use crate::contact::{ContactLaw, ContactOptions, InversionTest};
+use crate::element::{Jmin, Tempering, TriGeometry, elasticity_stiffness, laplacian_stiffness};
+use crate::error::{Error, Result, Status};
+use crate::material::{Material, PlaneMode};
+use crate::mesh::Mesh;
+use crate::model::{Component, Model};
+use crate::solution::{ContactReport, SolveInfo};
+
+/// Opaque handle to a model. Create with `tfem_create`, free with
+/// `tfem_destroy`.
+pub struct TfemModel {
+    model: Model,
+    index_base: usize,
+    last_error: String,
+}
+
+/// How Jmin is chosen (argument `mode` of `tfem_set_tempering`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum TemperingMode {
+    /// Jmin = h³/λ, λ = larger side of the mesh's bounding box (default).
+    Auto = 0,
+    /// Jmin = h³/λ with λ = `value` (a length in model units).
+    Lambda = 1,
+    /// Jmin = `value` for every element (length²).
+    FixedJmin = 2,
+    /// Plain FEM (no tempering); zero-Jacobian elements are an error.
+    Off = 3,
+}
+
+/// Options of `tfem_solve_contact`. Fill with `tfem_contact_options_default`
+/// and change what you need.
+#[repr(C)]
+#[derive(Debug, Clone, Copy)]
+pub struct TfemContactOptions {
+    /// A `ContactLaw` value: 0 = frictionless (default), 1 = stick.
+    pub law: c_int,
+    /// E_c of the contact elements; 0 = the smaller E of the two bodies.
+    pub contact_modulus: f64,
+    /// λ of the contact elements (Jmin = h³/λ), model length units; 0 = the
+    /// larger side of the mesh's bounding box.
+    pub lambda: f64,
+    /// An `InversionTest` value: 0 = linearised J (default), 1 = literal J.
+    pub inversion_test: c_int,
+    /// Cap on active-set iterations (default 50).
+    pub max_iterations: c_int,
+}
+
+/// Statistics of a solve. Times are wall-clock seconds.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct TfemSolveInfo {
+    /// Unknowns after Dirichlet elimination.
+    pub unknowns: i64,
+    /// Stored entries of the matrix's upper triangle.
+    pub matrix_nnz: i64,
+    /// Stored entries of the Cholesky factor.
+    pub factor_nnz: i64,
+    /// Numeric factorisations performed.
+    pub factorizations: i64,
+    /// ‖K u − f‖ / ‖f‖ of the final system.
+    pub relative_residual: f64,
+    /// Condition estimate of the Jacobi-scaled final matrix.
+    pub condition_estimate: f64,
+    /// Bytes held by pattern, matrix values and factor.
+    pub memory_bytes: i64,
+    /// Pattern, scatter map and symbolic analysis (0 when reused).
+    pub time_analysis: f64,
+    /// Element matrices and scatter-add.
+    pub time_assembly: f64,
+    /// Numeric factorisations, including the singularity check.
+    pub time_factorization: f64,
+    /// Triangular solves.
+    pub time_solve: f64,
+    /// The whole call.
+    pub time_total: f64,
+}
+
+/// Report of `tfem_solve_contact`.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct TfemContactReport {
+    /// Active-set iterations (solves).
+    pub iterations: c_int,
+    /// Elements of the contact mesh B.
+    pub elements: c_int,
+    /// Active elements at convergence.
+    pub active: c_int,
+    /// Contact length ℓc (half the summed interface-edge length of the
+    /// active elements), model length units.
+    pub contact_length: f64,
+    /// Largest normal interpenetration, model length units.
+    pub max_penetration: f64,
+    /// Solver statistics.
+    pub info: TfemSolveInfo,
+}
+
+thread_local! {
+    static LAST_ERROR: RefCell<String> = const { RefCell::new(String::new()) };
+}
+
+fn set_global_error(message: &str) {
+    LAST_ERROR.with(|e| *e.borrow_mut() = message.to_string());
+}
+
+fn null(what: &str) -> Error {
+    Error::new(Status::NullPointer, format!("argument `{what}` is NULL"))
+}
+
+fn panic_message(p: &(dyn std::any::Any + Send)) -> String {
+    let text = p
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| p.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "unknown panic".to_string());
+    format!("internal error (please report): {text}")
+}
+
+/// Runs `f` on a model handle, catching panics and recording the message.
+fn with_model(model: *mut TfemModel, f: impl FnOnce(&mut TfemModel) -> Result<()>) -> Status {
+    // SAFETY: the caller passes a handle from tfem_create (or NULL), used by
+    // one thread at a time per the thread contract.
+    let Some(m) = (unsafe { model.as_mut() }) else {
+        set_global_error("argument `model` is NULL");
+        return Status::NullPointer;
+    };
+    match catch_unwind(AssertUnwindSafe(|| f(m))) {
+        Ok(Ok(())) => {
+            m.last_error.clear();
+            Status::Ok
+        }
+        Ok(Err(e)) => {
+            m.last_error = e.message().to_string();
+            e.status()
+        }
+        Err(p) => {
+            m.last_error = panic_message(p.as_ref());
+            Status::Internal
+        }
+    }
+}
+
+/// Runs a model-free call, catching panics; errors go to the thread's
+/// last-error slot.
+fn without_model(f: impl FnOnce() -> Result<()>) -> Status {
+    match catch_unwind(AssertUnwindSafe(f)) {
+        Ok(Ok(())) => Status::Ok,
+        Ok(Err(e)) => {
+            set_global_error(e.message());
+            e.status()
+        }
+        Err(p) => {
+            set_global_error(&panic_message(p.as_ref()));
+            Status::Internal
+        }
+    }
+}
+
+/// A slice from a C pointer and count; NULL is allowed only for count 0.
+fn slice_in<'a, T>(ptr: *const T, len: usize, what: &str) -> Result<&'a [T]> {
+    if len == 0 {
+        return Ok(&[]);
+    }
+    if ptr.is_null() {
+        return Err(null(what));
+    }
+    // SAFETY: the caller guarantees `len` readable elements at `ptr`.
+    Ok(unsafe { std::slice::from_raw_parts(ptr, len) })
+}
+
+fn count(n: i32, what: &str) -> Result<usize> {
+    usize::try_from(n).map_err(|_| Error::argument(format!("{what} = {n} must be >= 0")))
+}
+
+/// Copies `src` into a caller buffer of `len` elements.
+fn copy_out<T: Copy>(src: &[T], out: *mut T, len: usize, what: &str) -> Result<()> {
+    if out.is_null() {
+        return Err(null(what));
+    }
+    if len < src.len() {
+        return Err(Error::new(
+            Status::BufferTooSmall,
+            format!("`{what}` holds {len} values but {} are needed", src.len()),
+        ));
+    }
+    // SAFETY: `out` has room for `len >= src.len()` elements.
+    unsafe { std::ptr::copy_nonoverlapping(src.as_ptr(), out, src.len()) };
+    Ok(())
+}
+
+fn write<T>(out: *mut T, value: T, what: &str) -> Result<()> {
+    if out.is_null() {
+        return Err(null(what));
+    }
+    // SAFETY: non-null pointer to a caller-owned T.
+    unsafe { out.write(value) };
+    Ok(())
+}
+
+impl TfemModel {
+    fn index(&self, i: i32, n: usize, what: &str) -> Result<usize> {
+        let b = self.index_base as i64;
+        let v = i as i64 - b;
+        if v < 0 || v as usize >= n {
+            return Err(Error::argument(format!(
+                "{what} {i} is out of range ({n} available, index base {b})"
+            )));
+        }
+        Ok(v as usize)
+    }
+
+    fn n_nodes(&self) -> Result<usize> {
+        self.model
+            .mesh()
+            .map(|m| m.nodes().len())
+            .ok_or_else(|| Error::state("no mesh: call tfem_set_mesh first"))
+    }
+}
+
+fn component(c: i32) -> Result<Component> {
+    Component::from_i32(c)
+        .ok_or_else(|| Error::argument(format!("component = {c} must be 0 (x) or 1 (y)")))
+}
+
+fn plane(p: i32) -> Result<PlaneMode> {
+    PlaneMode::from_i32(p).ok_or_else(|| {
+        Error::argument(format!("plane = {p} must be 0 (plane strain) or 1 (plane stress)"))
+    })
+}
+
+fn info_out(i: &SolveInfo) -> TfemSolveInfo {
+    TfemSolveInfo {
+        unknowns: i.unknowns as i64,
+        matrix_nnz: i.matrix_nnz as i64,
+        factor_nnz: i.factor_nnz as i64,
+        factorizations: i.factorizations as i64,
+        relative_residual: i.relative_residual,
+        condition_estimate: i.condition_estimate,
+        memory_bytes: i.memory_bytes as i64,
+        time_analysis: i.timings.analysis,
+        time_assembly: i.timings.assembly,
+        time_factorization: i.timings.factorization,
+        time_solve: i.timings.solve,
+        time_total: i.timings.total,
+    }
+}
+
+fn report_out(r: &ContactReport) -> TfemContactReport {
+    TfemContactReport {
+        iterations: r.iterations as c_int,
+        elements: r.elements as c_int,
+        active: r.active as c_int,
+        contact_length: r.contact_length,
+        max_penetration: r.max_penetration,
+        info: info_out(&r.info),
+    }
+}
+
+/// The library version as a static NUL-terminated string ("major.minor.patch").
+/// Thread-safe; never NULL; do not free.
+#[unsafe(no_mangle)]
+pub extern "C" fn tfem_version() -> *const c_char {
+    concat!(env!("CARGO_PKG_VERSION"), "\0").as_ptr().cast()
+}
+
+/// Creates an empty model. Returns NULL only if memory is exhausted.
+/// Free it with `tfem_destroy`.
+#[unsafe(no_mangle)]
+pub extern "C" fn tfem_create() -> *mut TfemModel {
+    catch_unwind(|| {
+        Box::into_raw(Box::new(TfemModel {
+            model: Model::new(),
+            index_base: 0,
+            last_error: String::new(),
+        }))
+    })
+    .unwrap_or(std::ptr::null_mut())
+}
+
+/// Destroys a model and everything it owns. NULL is a no-op. The handle must
+/// not be used afterwards.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_destroy(model: *mut TfemModel) {
+    if !model.is_null() {
+        // SAFETY: a handle from tfem_create, destroyed once.
+        let _ = catch_unwind(AssertUnwindSafe(|| drop(unsafe { Box::from_raw(model) })));
+    }
+}
+
+/// Copies the message of the last failed call on `model` (empty after a
+/// successful call) into `buffer` (`length` bytes including the final NUL).
+/// With `model` NULL, gives the calling thread's last error from calls that
+/// have no model (or were given a NULL one). A message longer than the buffer
+/// is truncated (still NUL-terminated) and TFEM_STATUS_BUFFER_TOO_SMALL is
+/// returned; `tfem_last_error_length` gives the size needed.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_last_error(
+    model: *const TfemModel,
+    buffer: *mut c_char,
+    length: usize,
+) -> Status {
+    let text = match unsafe { model.as_ref() } {
+        Some(m) => m.last_error.clone(),
+        None => LAST_ERROR.with(|e| e.borrow().clone()),
+    };
+    copy_message(&text, buffer, length)
+}
+
+fn copy_message(text: &str, buffer: *mut c_char, length: usize) -> Status {
+    if buffer.is_null() || length == 0 {
+        return if buffer.is_null() {
+            Status::NullPointer
+        } else {
+            Status::BufferTooSmall
+        };
+    }
+    let bytes = text.as_bytes();
+    let mut n = bytes.len().min(length - 1);
+    // Do not cut a UTF-8 sequence in half.
+    while n > 0 && n < bytes.len() && (bytes[n] & 0xC0) == 0x80 {
+        n -= 1;
+    }
+    // SAFETY: `buffer` has room for `length > n` bytes.
+    unsafe {
+        std::ptr::copy_nonoverlapping(bytes.as_ptr().cast::<c_char>(), buffer, n);
+        *buffer.add(n) = 0;
+    }
+    if n < bytes.len() {
+        Status::BufferTooSmall
+    } else {
+        Status::Ok
+    }
+}
+
+/// Size in bytes (including the final NUL) of the message `tfem_last_error`
+/// would give. `model` may be NULL (thread's last error).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_last_error_length(model: *const TfemModel) -> usize {
+    match unsafe { model.as_ref() } {
+        Some(m) => m.last_error.len() + 1,
+        None => LAST_ERROR.with(|e| e.borrow().len() + 1),
+    }
+}
+
+/// Number of warnings: mesh validation (unused or coincident nodes,
+/// inverted or clockwise triangles) and the last solve (tempering of
+/// well-shaped elements).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_warning_count(model: *mut TfemModel, count: *mut c_int) -> Status {
+    with_model(model, |m| write(count, m.model.warnings().len() as c_int, "count"))
+}
+
+/// Copies warning number `index` (0-based, whatever the index base) into
+/// `buffer` of `length` bytes, truncating like `tfem_last_error`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_warning(
+    model: *mut TfemModel,
+    index: c_int,
+    buffer: *mut c_char,
+    length: usize,
+) -> Status {
+    let mut status = Status::Ok;
+    let s = with_model(model, |m| {
+        let w = m.model.warnings();
+        let i = usize::try_from(index)
+            .ok()
+            .filter(|&i| i < w.len())
+            .ok_or_else(|| Error::argument(format!("warning index {index} is out of range ({} warnings)", w.len())))?;
+        status = copy_message(&w[i], buffer, length);
+        match status {
+            Status::Ok => Ok(()),
+            s => Err(Error::new(s, "`buffer` is NULL or too short for the warning")),
+        }
+    });
+    if s == Status::Ok { status } else { s }
+}
+
+/// Sets the mesh: `n_nodes` nodes with coordinates `xy` (2·n_nodes values,
+/// x0 y0 x1 y1 …), `n_triangles` P1 triangles with `connectivity`
+/// (3·n_triangles node indices, counter-clockwise) and a body tag per
+/// triangle in `body_of_triangle`. `index_base` is 0 (C) or 1 (Fortran) and
+/// applies to every index of every later call. Degenerate and inverted
+/// triangles are legal. Replacing a mesh discards constraints, loads,
+/// contact pairs and results; materials and tempering are kept.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_set_mesh(
+    model: *mut TfemModel,
+    n_nodes: c_int,
+    xy: *const f64,
+    n_triangles: c_int,
+    connectivity: *const c_int,
+    body_of_triangle: *const c_int,
+    index_base: c_int,
+) -> Status {
+    with_model(model, |m| {
+        let base = match index_base {
+            0 | 1 => index_base as usize,
+            _ => return Err(Error::argument(format!("index_base = {index_base} must be 0 or 1"))),
+        };
+        let nn = count(n_nodes, "n_nodes")?;
+        let nt = count(n_triangles, "n_triangles")?;
+        let xy = slice_in(xy, 2 * nn, "xy")?;
+        let conn = slice_in(connectivity, 3 * nt, "connectivity")?;
+        let bodies = slice_in(body_of_triangle, nt, "body_of_triangle")?;
+        let nodes: Vec<[f64; 2]> = xy.chunks_exact(2).map(|c| [c[0], c[1]]).collect();
+        let mut tris = Vec::with_capacity(nt);
+        for (t, c) in conn.chunks_exact(3).enumerate() {
+            let mut tri = [0usize; 3];
+            for k in 0..3 {
+                let v = c[k] as i64 - base as i64;
+                if v < 0 || v as usize >= nn {
+                    return Err(Error::mesh(format!(
+                        "triangle {}: node index {} is out of range ({nn} nodes, index base {base})",
+                        t + base,
+                        c[k]
+                    )));
+                }
+                tri[k] = v as usize;
+            }
+            tris.push(tri);
+        }
+        let mesh = Mesh::new(nodes, tris, bodies.to_vec(), base)?;
+        m.model.set_mesh(mesh);
+        m.index_base = base;
+        Ok(())
+    })
+}
+
+/// Sets the tagged boundary edges: `n_edges` edges given by `edge_nodes`
+/// (2·n_edges node indices) with a tag each in `tags`. Tags name the edges
+/// for loads, constraints and contact pairs. Replaces previous edges.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_set_boundary_edges(
+    model: *mut TfemModel,
+    n_edges: c_int,
+    edge_nodes: *const c_int,
+    tags: *const c_int,
+) -> Status {
+    with_model(model, |m| {
+        let n = m.n_nodes()?;
+        let ne = count(n_edges, "n_edges")?;
+        let en = slice_in(edge_nodes, 2 * ne, "edge_nodes")?;
+        let tags = slice_in(tags, ne, "tags")?;
+        let mut edges = Vec::with_capacity(ne);
+        for c in en.chunks_exact(2) {
+            edges.push([m.index(c[0], n, "edge node")?, m.index(c[1], n, "edge node")?]);
+        }
+        m.model.set_boundary_edges(&edges, tags)
+    })
+}
+
+/// Sets the material of body `body`: Young's modulus `young` (> 0), Poisson
+/// ratio `poisson` (in (-1, 0.5) for plane strain, (-1, 0.5] for plane
+/// stress) and `plane` (a `PlaneMode`: 0 strain, 1 stress).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_set_material(
+    model: *mut TfemModel,
+    body: c_int,
+    young: f64,
+    poisson: f64,
+    plane_mode: c_int,
+) -> Status {
+    with_model(model, |m| {
+        let mat = Material::new(young, poisson, plane(plane_mode)?, &format!("body {body}"))?;
+        m.model.set_material(body, mat)
+    })
+}
+
+/// Chooses Jmin: `mode` is a `TemperingMode` (0 auto, 1 lambda = `value`,
+/// 2 fixed Jmin = `value`, 3 off); `value` is ignored for 0 and 3.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_set_tempering(model: *mut TfemModel, mode: c_int, value: f64) -> Status {
+    with_model(model, |m| {
+        let t = match mode {
+            0 => Tempering::Auto,
+            1 => Tempering::Lambda(value),
+            2 => Tempering::Fixed(value),
+            3 => Tempering::Off,
+            _ => return Err(Error::argument(format!("tempering mode = {mode} must be 0, 1, 2 or 3"))),
+        };
+        m.model.set_tempering(t)
+    })
+}
+
+/// Prescribes displacement component `component` (0 x, 1 y) of `node` to
+/// `value` (model length units).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_fix(model: *mut TfemModel, node: c_int, comp: c_int, value: f64) -> Status {
+    with_model(model, |m| {
+        let n = m.n_nodes()?;
+        let v = m.index(node, n, "node")?;
+        m.model.fix(v, component(comp)?, value)
+    })
+}
+
+/// Prescribes component `component` to `value` on every node of the
+/// boundary edges tagged `tag`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_fix_edges(model: *mut TfemModel, tag: c_int, comp: c_int, value: f64) -> Status {
+    with_model(model, |m| {
+        let c = component(comp)?;
+        // Transactional: a failure half way must not leave some nodes fixed.
+        let before: Vec<(usize, f64)> = m.model.constraints().collect();
+        let r = m.model.fix_edges(tag, c, value);
+        if r.is_err() {
+            m.model.clear_constraints();
+            for (g, v) in before {
+                m.model.fix(g / 2, if g % 2 == 0 { Component::X } else { Component::Y }, v)?;
+            }
+        }
+        r
+    })
+}
+
+/// Removes every prescribed displacement.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_clear_constraints(model: *mut TfemModel) -> Status {
+    with_model(model, |m| {
+        m.model.clear_constraints();
+        Ok(())
+    })
+}
+
+/// Applies pressure `pressure` (force per unit length, positive pushing
+/// into the body) on the boundary edges tagged `tag`. Loads add up.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_add_pressure(model: *mut TfemModel, tag: c_int, pressure: f64) -> Status {
+    with_model(model, |m| m.model.add_pressure(tag, pressure))
+}
+
+/// Applies the traction (tx, ty) (force per unit length) on the boundary
+/// edges tagged `tag`. Loads add up.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_add_traction(model: *mut TfemModel, tag: c_int, tx: f64, ty: f64) -> Status {
+    with_model(model, |m| m.model.add_traction(tag, [tx, ty]))
+}
+
+/// Adds the point force (fx, fy) at `node`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_add_nodal_force(model: *mut TfemModel, node: c_int, fx: f64, fy: f64) -> Status {
+    with_model(model, |m| {
+        let n = m.n_nodes()?;
+        let v = m.index(node, n, "node")?;
+        m.model.add_nodal_force(v, [fx, fy])
+    })
+}
+
+/// Sets the body force (bx, by) (force per unit area) of body `body`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_set_body_force(model: *mut TfemModel, body: c_int, bx: f64, by: f64) -> Status {
+    with_model(model, |m| m.model.set_body_force(body, [bx, by]))
+}
+
+/// Removes every load.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_clear_loads(model: *mut TfemModel) -> Status {
+    with_model(model, |m| {
+        m.model.clear_loads();
+        Ok(())
+    })
+}
+
+/// Solves a scene without contact. `info` may be NULL. A body that is not
+/// restrained gives TFEM_STATUS_SINGULAR naming it.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_solve(model: *mut TfemModel, info: *mut TfemSolveInfo) -> Status {
+    with_model(model, |m| {
+        let i = m.model.solve()?;
+        if !info.is_null() {
+            write(info, info_out(&i), "info")?;
+        }
+        Ok(())
+    })
+}
+
+/// Sizes: nodes, triangles, and elements of the contact mesh of the last
+/// contact solve (0 otherwise). Any pointer may be NULL.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_sizes(
+    model: *mut TfemModel,
+    n_nodes: *mut c_int,
+    n_triangles: *mut c_int,
+    n_contact_elements: *mut c_int,
+) -> Status {
+    with_model(model, |m| {
+        let mesh = m.model.mesh().ok_or_else(|| Error::state("no mesh: call tfem_set_mesh first"))?;
+        let nc = m.model.contact_elements().map(|c| c.len()).unwrap_or(0);
+        if !n_nodes.is_null() {
+            write(n_nodes, mesh.nodes().len() as c_int, "n_nodes")?;
+        }
+        if !n_triangles.is_null() {
+            write(n_triangles, mesh.triangles().len() as c_int, "n_triangles")?;
+        }
+        if !n_contact_elements.is_null() {
+            write(n_contact_elements, nc as c_int, "n_contact_elements")?;
+        }
+        Ok(())
+    })
+}
+
+/// Copies the nodal displacements (u0 v0 u1 v1 …, 2·n_nodes values) of the
+/// last solve into `out` of `length` values.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_displacements(model: *mut TfemModel, out: *mut f64, length: usize) -> Status {
+    with_model(model, |m| {
+        let u: Vec<f64> = m.model.displacements()?.into_iter().flatten().collect();
+        copy_out(&u, out, length, "out")
+    })
+}
+
+/// Copies element strains (ε_xx ε_yy γ_xy per triangle, engineering shear,
+/// 3·n_triangles values), computed on request.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_element_strains(model: *mut TfemModel, out: *mut f64, length: usize) -> Status {
+    with_model(model, |m| {
+        let v: Vec<f64> = m.model.element_strains()?.into_iter().flatten().collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies element stresses (σ_xx σ_yy σ_xy per triangle, 3·n_triangles
+/// values), computed on request.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_element_stresses(model: *mut TfemModel, out: *mut f64, length: usize) -> Status {
+    with_model(model, |m| {
+        let v: Vec<f64> = m.model.element_stresses()?.into_iter().flatten().collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies J (twice the signed area, initial configuration) of every
+/// triangle (n_triangles values). Needs only a mesh.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_element_jacobians(model: *mut TfemModel, out: *mut f64, length: usize) -> Status {
+    with_model(model, |m| {
+        let v = m.model.element_jacobians()?;
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies reaction forces (Rx Ry per node, 2·n_nodes values; zero at DOFs
+/// that are not prescribed), computed on request.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_reactions(model: *mut TfemModel, out: *mut f64, length: usize) -> Status {
+    with_model(model, |m| {
+        let v: Vec<f64> = m.model.reactions()?.into_iter().flatten().collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+fn jmin_arg(jmin: f64) -> Result<Jmin> {
+    if jmin == 0.0 {
+        Ok(Jmin::Off)
+    } else if jmin.is_finite() && jmin > 0.0 {
+        Ok(Jmin::Tempered(jmin))
+    } else {
+        Err(Error::argument(format!("jmin = {jmin} must be > 0 (tempered) or 0 (plain FEM)")))
+    }
+}
+
+fn corners_arg(xy: *const f64) -> Result<[[f64; 2]; 3]> {
+    let xy = slice_in(xy, 6, "xy")?;
+    if let Some(k) = xy.iter().position(|v| !v.is_finite()) {
+        return Err(Error::argument(format!("xy[{k}] = {} is not finite", xy[k])));
+    }
+    Ok([[xy[0], xy[1]], [xy[2], xy[3]], [xy[4], xy[5]]])
+}
+
+/// Tempered elasticity stiffness of one P1 triangle with corners `xy`
+/// (x1 y1 x2 y2 x3 y3): K = B̂ᵀ D B̂ / (2·max(J, jmin)), written row-major
+/// into `out` (36 values, DOFs u1 v1 u2 v2 u3 v3). `jmin` > 0 tempers;
+/// `jmin` = 0 is plain FEM (divides by |J|, fails for J = 0). Pure and
+/// thread-safe; errors go to the thread's `tfem_last_error(NULL, …)`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_element_stiffness(
+    xy: *const f64,
+    young: f64,
+    poisson: f64,
+    plane_mode: c_int,
+    jmin: f64,
+    out: *mut f64,
+) -> Status {
+    without_model(|| {
+        let x = corners_arg(xy)?;
+        let mat = Material::new(young, poisson, plane(plane_mode)?, "element")?;
+        let k = elasticity_stiffness(&TriGeometry::new(&x), &mat.d_matrix(), jmin_arg(jmin)?)?;
+        let flat: Vec<f64> = k.iter().flatten().copied().collect();
+        copy_out(&flat, out, 36, "out")
+    })
+}
+
+/// Tempered Laplacian stiffness of one P1 triangle: K_ij = κ g_i·g_j /
+/// (2·max(J, jmin)), row-major into `out` (9 values). `jmin` as in
+/// `tfem_element_stiffness`. Pure and thread-safe.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_laplacian_stiffness(
+    xy: *const f64,
+    kappa: f64,
+    jmin: f64,
+    out: *mut f64,
+) -> Status {
+    without_model(|| {
+        let x = corners_arg(xy)?;
+        if !(kappa.is_finite() && kappa > 0.0) {
+            return Err(Error::argument(format!("kappa = {kappa} must be finite and > 0")));
+        }
+        let k = laplacian_stiffness(&TriGeometry::new(&x), kappa, jmin_arg(jmin)?)?;
+        let flat: Vec<f64> = k.iter().flatten().copied().collect();
+        copy_out(&flat, out, 9, "out")
+    })
+}
+
+/// Declares a potential contact interface between the boundary edges tagged
+/// `tag_a` (one body) and `tag_b` (another body); the contact mesh B is
+/// built from matching nodes (a small normal gap is allowed). Writes the
+/// pair's index (0-based) to `pair` (may be NULL).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_add_contact_pair(
+    model: *mut TfemModel,
+    tag_a: c_int,
+    tag_b: c_int,
+    pair: *mut c_int,
+) -> Status {
+    with_model(model, |m| {
+        let p = m.model.add_contact_pair(tag_a, tag_b)?;
+        if !pair.is_null() {
+            write(pair, p as c_int, "pair")?;
+        }
+        Ok(())
+    })
+}
+
+/// Declares a contact pair with a user-made contact mesh B: `n_triangles`
+/// triangles in `connectivity` (3 per triangle) over nodes of the two
+/// interfaces. Wrongly oriented triangles are flipped; their number goes to
+/// `flipped` (may be NULL), the pair's index to `pair` (may be NULL).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_add_contact_pair_with_mesh(
+    model: *mut TfemModel,
+    tag_a: c_int,
+    tag_b: c_int,
+    n_triangles: c_int,
+    connectivity: *const c_int,
+    pair: *mut c_int,
+    flipped: *mut c_int,
+) -> Status {
+    with_model(model, |m| {
+        let n = m.n_nodes()?;
+        let nt = count(n_triangles, "n_triangles")?;
+        let conn = slice_in(connectivity, 3 * nt, "connectivity")?;
+        let mut tris = Vec::with_capacity(nt);
+        for c in conn.chunks_exact(3) {
+            tris.push([
+                m.index(c[0], n, "contact node")?,
+                m.index(c[1], n, "contact node")?,
+                m.index(c[2], n, "contact node")?,
+            ]);
+        }
+        let (p, f) = m.model.add_contact_pair_with_mesh(tag_a, tag_b, &tris)?;
+        if !pair.is_null() {
+            write(pair, p as c_int, "pair")?;
+        }
+        if !flipped.is_null() {
+            write(flipped, f as c_int, "flipped")?;
+        }
+        Ok(())
+    })
+}
+
+/// Fills `options` with the defaults: frictionless law, E_c and λ derived
+/// from the model, linearised inversion test, 50 iterations.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_options_default(options: *mut TfemContactOptions) -> Status {
+    without_model(|| {
+        let d = ContactOptions::default();
+        write(
+            options,
+            TfemContactOptions {
+                law: d.law as c_int,
+                contact_modulus: 0.0,
+                lambda: 0.0,
+                inversion_test: d.test as c_int,
+                max_iterations: d.max_iterations as c_int,
+            },
+            "options",
+        )
+    })
+}
+
+fn options_in(o: &TfemContactOptions) -> Result<ContactOptions> {
+    let law = match o.law {
+        0 => ContactLaw::Frictionless,
+        1 => ContactLaw::Stick,
+        l => return Err(Error::argument(format!("options.law = {l} must be 0 (frictionless) or 1 (stick)"))),
+    };
+    let test = match o.inversion_test {
+        0 => InversionTest::Linearised,
+        1 => InversionTest::Literal,
+        t => {
+            return Err(Error::argument(format!(
+                "options.inversion_test = {t} must be 0 (linearised) or 1 (literal)"
+            )));
+        }
+    };
+    let opt = |v: f64, what: &str| -> Result<Option<f64>> {
+        if v == 0.0 {
+            Ok(None)
+        } else if v.is_finite() && v > 0.0 {
+            Ok(Some(v))
+        } else {
+            Err(Error::argument(format!("options.{what} = {v} must be > 0, or 0 for the default")))
+        }
+    };
+    let max_iterations = usize::try_from(o.max_iterations)
+        .ok()
+        .filter(|&n| n > 0)
+        .ok_or_else(|| Error::argument(format!("options.max_iterations = {} must be >= 1", o.max_iterations)))?;
+    Ok(ContactOptions {
+        law,
+        contact_modulus: opt(o.contact_modulus, "contact_modulus")?,
+        lambda: opt(o.lambda, "lambda")?,
+        test,
+        max_iterations,
+    })
+}
+
+/// Solves the contact problem by the active-set loop over inverted contact
+/// elements. `options` may be NULL (defaults); `report` may be NULL.
+/// TFEM_STATUS_NOT_CONVERGED (cycle or iteration cap) gives the history in
+/// the message; the model is then unchanged.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_solve_contact(
+    model: *mut TfemModel,
+    options: *const TfemContactOptions,
+    report: *mut TfemContactReport,
+) -> Status {
+    with_model(model, |m| {
+        // SAFETY: NULL or a caller-owned options struct.
+        let opts = match unsafe { options.as_ref() } {
+            None => ContactOptions::default(),
+            Some(o) => options_in(o)?,
+        };
+        let r = m.model.solve_contact(&opts)?;
+        if !report.is_null() {
+            write(report, report_out(&r), "report")?;
+        }
+        Ok(())
+    })
+}
+
+/// Copies the active flag (1 active, 0 not) of every contact element of
+/// the last contact solve (n_contact_elements values, see `tfem_get_sizes`).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_active(model: *mut TfemModel, out: *mut c_int, length: usize) -> Status {
+    with_model(model, |m| {
+        let v: Vec<c_int> = m.model.contact_active()?.iter().map(|&a| c_int::from(a)).collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies the contact pressure (positive in compression, 0 when inactive)
+/// of every contact element (n_contact_elements values).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_pressure(model: *mut TfemModel, out: *mut f64, length: usize) -> Status {
+    with_model(model, |m| copy_out(m.model.contact_pressure()?, out, length, "out"))
+}
+
+/// Copies the nodes of every contact element (3·n_contact_elements
+/// indices, in the model's index base), oriented so that J > 0 when the gap
+/// opens.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_elements(model: *mut TfemModel, out: *mut c_int, length: usize) -> Status {
+    with_model(model, |m| {
+        let b = m.index_base as c_int;
+        let v: Vec<c_int> = m
+            .model
+            .contact_elements()?
+            .iter()
+            .flat_map(|e| e.nodes.map(|n| n as c_int + b))
+            .collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Writes the report of the last contact solve to `report`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_report(model: *mut TfemModel, report: *mut TfemContactReport) -> Status {
+    with_model(model, |m| write(report, report_out(m.model.contact_report()?), "report"))
+}

@@ -1,0 +1,441 @@
+//! Meshes of P1 triangles with a body tag per triangle and tagged boundary
+//! edges, and their validation.
+//!
+//! Degenerate (zero-area) and inverted triangles are legal: they are what
+//! TFEM is for. What is rejected is what no method can use: indices out of
+//! range, a node repeated in a triangle, non-finite coordinates, an empty
+//! mesh.
+
+use std::collections::HashMap;
+
+use crate::element::TriGeometry;
+use crate::error::{Error, Result};
+
+/// A tagged boundary edge, with the triangle that owns it.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BoundaryEdge {
+    /// The two end nodes (0-based).
+    pub nodes: [usize; 2],
+    /// The user's tag (physical group).
+    pub tag: i32,
+    /// The owning triangle and its third node, when exactly one triangle has
+    /// this edge; `None` for an interior edge (usable for constraints only).
+    pub owner: Option<(usize, usize)>,
+}
+
+/// A validated mesh.
+#[derive(Debug, Clone)]
+pub struct Mesh {
+    nodes: Vec<[f64; 2]>,
+    triangles: Vec<[usize; 3]>,
+    body_of: Vec<i32>,
+    edges: Vec<BoundaryEdge>,
+    node_body: Vec<Option<i32>>,
+    bodies: Vec<i32>,
+    index_base: usize,
+    warnings: Vec<String>,
+}
+
+const MAX_LISTED: usize = 5;
+
+fn list<T: std::fmt::Display>(items: &[T]) -> String {
+    let shown: Vec<String> = items.iter().take(MAX_LISTED).map(|i| i.to_string()).collect();
+    let more = if items.len() > MAX_LISTED {
+        format!(" and {} more", items.len() - MAX_LISTED)
+    } else {
+        String::new()
+    };
+    format!("{}{}", shown.join(", "), more)
+}
+
+impl Mesh {
+    /// Validates and builds a mesh from 0-based data. `index_base` (0 or 1)
+    /// only changes how indices are printed in messages, so that a Fortran
+    /// user reads the numbers of their own mesh.
+    pub fn new(
+        nodes: Vec<[f64; 2]>,
+        triangles: Vec<[usize; 3]>,
+        body_of: Vec<i32>,
+        index_base: usize,
+    ) -> Result<Mesh> {
+        let b = index_base;
+        if nodes.is_empty() {
+            return Err(Error::mesh("empty mesh: no nodes"));
+        }
+        if triangles.is_empty() {
+            return Err(Error::mesh("empty mesh: no triangles"));
+        }
+        if body_of.len() != triangles.len() {
+            return Err(Error::mesh(format!(
+                "{} body tags for {} triangles",
+                body_of.len(),
+                triangles.len()
+            )));
+        }
+        if let Some(i) = nodes
+            .iter()
+            .position(|p| !(p[0].is_finite() && p[1].is_finite()))
+        {
+            return Err(Error::mesh(format!(
+                "node {}: coordinates ({}, {}) are not finite",
+                i + b,
+                nodes[i][0],
+                nodes[i][1]
+            )));
+        }
+        let n = nodes.len();
+        for (t, tri) in triangles.iter().enumerate() {
+            for &v in tri {
+                if v >= n {
+                    return Err(Error::mesh(format!(
+                        "triangle {}: node index {} is out of range ({} nodes, index base {})",
+                        t + b,
+                        v + b,
+                        n,
+                        b
+                    )));
+                }
+            }
+            if tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] {
+                return Err(Error::mesh(format!(
+                    "triangle {}: node {} is repeated ({}, {}, {})",
+                    t + b,
+                    if tri[0] == tri[1] || tri[0] == tri[2] {
+                        tri[0] + b
+                    } else {
+                        tri[1] + b
+                    },
+                    tri[0] + b,
+                    tri[1] + b,
+                    tri[2] + b
+                )));
+            }
+        }
+        let mut node_body = vec![None; n];
+        for (tri, &body) in triangles.iter().zip(&body_of) {
+            for &v in tri {
+                node_body[v].get_or_insert(body);
+            }
+        }
+        let mut bodies = body_of.clone();
+        bodies.sort_unstable();
+        bodies.dedup();
+        let mut mesh = Mesh {
+            nodes,
+            triangles,
+            body_of,
+            edges: Vec::new(),
+            node_body,
+            bodies,
+            index_base,
+            warnings: Vec::new(),
+        };
+        mesh.collect_warnings();
+        Ok(mesh)
+    }
+
+    fn collect_warnings(&mut self) {
+        let b = self.index_base;
+        let unused: Vec<usize> = (0..self.nodes.len())
+            .filter(|&i| self.node_body[i].is_none())
+            .map(|i| i + b)
+            .collect();
+        if !unused.is_empty() {
+            self.warnings.push(format!(
+                "{} node(s) not used by any triangle get no unknowns: {}",
+                unused.len(),
+                list(&unused)
+            ));
+        }
+        // Coincident nodes are expected across a contact interface; inside
+        // one body they usually mean an unmerged mesh (a hidden crack).
+        let mut order: Vec<usize> = (0..self.nodes.len())
+            .filter(|&i| self.node_body[i].is_some())
+            .collect();
+        order.sort_unstable_by(|&i, &j| {
+            let (p, q) = (self.nodes[i], self.nodes[j]);
+            p[0].total_cmp(&q[0]).then(p[1].total_cmp(&q[1]))
+        });
+        let dupes: Vec<String> = order
+            .windows(2)
+            .filter(|w| {
+                self.nodes[w[0]] == self.nodes[w[1]] && self.node_body[w[0]] == self.node_body[w[1]]
+            })
+            .map(|w| format!("{}={}", w[0] + b, w[1] + b))
+            .collect();
+        if !dupes.is_empty() {
+            self.warnings.push(format!(
+                "{} pair(s) of coincident nodes inside one body (unmerged mesh, a crack?): {}",
+                dupes.len(),
+                list(&dupes)
+            ));
+        }
+        for &body in &self.bodies {
+            let (mut n_tri, mut n_inv, mut area) = (0usize, 0usize, 0.0);
+            for (t, tri) in self.triangles.iter().enumerate() {
+                if self.body_of[t] != body {
+                    continue;
+                }
+                let j = TriGeometry::new(&self.corners(tri)).j;
+                n_tri += 1;
+                area += j;
+                n_inv += usize::from(j < 0.0);
+            }
+            if area < 0.0 {
+                self.warnings.push(format!(
+                    "body {body}: the triangles are ordered clockwise ({n_inv} of {n_tri} have J < 0); \
+                     TFEM treats J < 0 as inverted and tempers it: give counter-clockwise triangles"
+                ));
+            } else if n_inv > 0 {
+                self.warnings.push(format!(
+                    "body {body}: {n_inv} inverted triangle(s) (J < 0) are tempered with Jmin"
+                ));
+            }
+        }
+    }
+
+    /// Sets the tagged boundary edges (0-based nodes), replacing previous
+    /// ones. Each edge must be a side of at least one triangle. On error the
+    /// mesh is unchanged.
+    pub fn set_boundary_edges(&mut self, edges: &[[usize; 2]], tags: &[i32]) -> Result<()> {
+        let b = self.index_base;
+        if edges.len() != tags.len() {
+            return Err(Error::argument(format!(
+                "{} boundary edges but {} tags",
+                edges.len(),
+                tags.len()
+            )));
+        }
+        let n = self.nodes.len();
+        let mut owners: HashMap<(usize, usize), (usize, usize, u32)> = HashMap::new();
+        for (t, tri) in self.triangles.iter().enumerate() {
+            for k in 0..3 {
+                let (p, q, r) = (tri[k], tri[(k + 1) % 3], tri[(k + 2) % 3]);
+                owners
+                    .entry((p.min(q), p.max(q)))
+                    .and_modify(|e| e.2 += 1)
+                    .or_insert((t, r, 1));
+            }
+        }
+        let mut out = Vec::with_capacity(edges.len());
+        for (e, (&[p, q], &tag)) in edges.iter().zip(tags).enumerate() {
+            if p >= n || q >= n {
+                return Err(Error::mesh(format!(
+                    "boundary edge {}: node index {} is out of range ({} nodes)",
+                    e + b,
+                    if p >= n { p + b } else { q + b },
+                    n
+                )));
+            }
+            if p == q {
+                return Err(Error::mesh(format!(
+                    "boundary edge {}: both ends are node {}",
+                    e + b,
+                    p + b
+                )));
+            }
+            let owner = match owners.get(&(p.min(q), p.max(q))) {
+                None => {
+                    return Err(Error::mesh(format!(
+                        "boundary edge {} (nodes {}, {}) is not a side of any triangle",
+                        e + b,
+                        p + b,
+                        q + b
+                    )));
+                }
+                Some(&(t, r, 1)) => Some((t, r)),
+                Some(_) => None,
+            };
+            out.push(BoundaryEdge {
+                nodes: [p, q],
+                tag,
+                owner,
+            });
+        }
+        self.edges = out;
+        Ok(())
+    }
+
+    /// Node coordinates.
+    pub fn nodes(&self) -> &[[f64; 2]] {
+        &self.nodes
+    }
+
+    /// Triangles (0-based node indices).
+    pub fn triangles(&self) -> &[[usize; 3]] {
+        &self.triangles
+    }
+
+    /// Body tag of each triangle.
+    pub fn body_of(&self) -> &[i32] {
+        &self.body_of
+    }
+
+    /// The distinct body tags, sorted.
+    pub fn bodies(&self) -> &[i32] {
+        &self.bodies
+    }
+
+    /// The body of the first triangle using each node (`None`: unused node).
+    pub fn node_body(&self) -> &[Option<i32>] {
+        &self.node_body
+    }
+
+    /// Tagged boundary edges.
+    pub fn boundary_edges(&self) -> &[BoundaryEdge] {
+        &self.edges
+    }
+
+    /// Index base used in messages (0 for C, 1 for Fortran).
+    pub fn index_base(&self) -> usize {
+        self.index_base
+    }
+
+    /// Warnings found by validation (unused nodes, coincident nodes in one
+    /// body, inverted or clockwise triangles).
+    pub fn warnings(&self) -> &[String] {
+        &self.warnings
+    }
+
+    /// The corners of a triangle.
+    pub fn corners(&self, tri: &[usize; 3]) -> [[f64; 2]; 3] {
+        [self.nodes[tri[0]], self.nodes[tri[1]], self.nodes[tri[2]]]
+    }
+
+    /// The larger side of the bounding box: the default tempering
+    /// wavelength λ and the length scale of tolerances.
+    pub fn size(&self) -> f64 {
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for p in &self.nodes {
+            for k in 0..2 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+        (hi[0] - lo[0]).max(hi[1] - lo[1])
+    }
+
+    /// Unit outward normal of a boundary edge, or `None` for an interior
+    /// edge or a zero-length one.
+    pub fn outward_normal(&self, edge: &BoundaryEdge) -> Option<[f64; 2]> {
+        let (t, third) = edge.owner?;
+        let [p, q] = edge.nodes;
+        let (a, c) = (self.nodes[p], self.nodes[q]);
+        let tv = [c[0] - a[0], c[1] - a[1]];
+        let len = tv[0].hypot(tv[1]);
+        if len == 0.0 {
+            return None;
+        }
+        let left = [-tv[1] / len, tv[0] / len];
+        let r = self.nodes[third];
+        let side = left[0] * (r[0] - a[0]) + left[1] * (r[1] - a[1]);
+        let interior_on_left = if side != 0.0 {
+            side > 0.0
+        } else {
+            // Flat owner: trust the triangle's cyclic order (counter-clockwise
+            // means the interior is on the left of p -> q).
+            let tri = self.triangles[t];
+            let k = tri.iter().position(|&v| v == p).unwrap_or(0);
+            tri[(k + 1) % 3] == q
+        };
+        Some(if interior_on_left {
+            [-left[0], -left[1]]
+        } else {
+            left
+        })
+    }
+
+    /// Names node `i` in the user's index base.
+    pub fn node_name(&self, i: usize) -> String {
+        format!("node {}", i + self.index_base)
+    }
+
+    /// Names triangle `t` in the user's index base.
+    pub fn triangle_name(&self, t: usize) -> String {
+        format!("triangle {}", t + self.index_base)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::error::Status;
+
+    fn square() -> (Vec<[f64; 2]>, Vec<[usize; 3]>) {
+        (
+            vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]],
+            vec![[0, 1, 2], [0, 2, 3]],
+        )
+    }
+
+    #[test]
+    fn rejects_out_of_range_index_in_the_users_base() {
+        let (n, _) = square();
+        let e = Mesh::new(n, vec![[0, 1, 4]], vec![1], 1).unwrap_err();
+        assert_eq!(e.status(), Status::InvalidMesh);
+        assert!(e.message().contains("triangle 1"), "{}", e.message());
+        assert!(e.message().contains("node index 5"), "{}", e.message());
+    }
+
+    #[test]
+    fn rejects_repeated_node() {
+        let (n, _) = square();
+        let e = Mesh::new(n, vec![[0, 1, 2], [2, 3, 2]], vec![1, 1], 0).unwrap_err();
+        assert!(e.message().contains("triangle 1: node 2 is repeated"), "{}", e.message());
+    }
+
+    #[test]
+    fn rejects_non_finite_coordinates() {
+        let (mut n, t) = square();
+        n[2][1] = f64::NAN;
+        let e = Mesh::new(n, t, vec![1, 1], 0).unwrap_err();
+        assert!(e.message().contains("node 2"), "{}", e.message());
+    }
+
+    #[test]
+    fn rejects_empty_mesh() {
+        assert!(Mesh::new(vec![], vec![], vec![], 0).is_err());
+        let (n, _) = square();
+        assert!(Mesh::new(n, vec![], vec![], 0).is_err());
+    }
+
+    #[test]
+    fn degenerate_and_inverted_triangles_are_legal() {
+        let n = vec![[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [0.0, 1.0]];
+        let m = Mesh::new(n, vec![[0, 1, 2], [0, 3, 1]], vec![1, 1], 0).unwrap();
+        assert_eq!(m.triangles().len(), 2);
+        assert!(m.warnings().iter().any(|w| w.contains("clockwise")));
+    }
+
+    #[test]
+    fn warns_about_unused_and_coincident_nodes() {
+        let n = vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0], [1.0, 0.0], [5.0, 5.0]];
+        let m = Mesh::new(n, vec![[0, 1, 2], [3, 2, 1]], vec![1, 1], 0).unwrap();
+        let w = m.warnings().join("\n");
+        assert!(w.contains("not used") && w.contains('4'), "{w}");
+        assert!(w.contains("coincident") && w.contains("1=3"), "{w}");
+    }
+
+    #[test]
+    fn outward_normal_points_away_from_the_owner() {
+        let (n, t) = square();
+        let mut m = Mesh::new(n, t, vec![1, 1], 0).unwrap();
+        m.set_boundary_edges(&[[1, 0], [2, 3]], &[5, 6]).unwrap();
+        let n0 = m.outward_normal(&m.boundary_edges()[0]).unwrap();
+        let n1 = m.outward_normal(&m.boundary_edges()[1]).unwrap();
+        assert_eq!(n0, [0.0, -1.0]);
+        assert_eq!(n1, [0.0, 1.0]);
+    }
+
+    #[test]
+    fn boundary_edge_must_be_a_triangle_side_and_failure_keeps_old_edges() {
+        let (n, t) = square();
+        let mut m = Mesh::new(n, t, vec![1, 1], 0).unwrap();
+        m.set_boundary_edges(&[[0, 1]], &[1]).unwrap();
+        let e = m.set_boundary_edges(&[[1, 3]], &[1]).unwrap_err();
+        assert!(e.message().contains("not a side"), "{}", e.message());
+        let e = m.set_boundary_edges(&[[0, 1], [1, 2], [1, 7]], &[1, 1, 1]).unwrap_err();
+        assert!(e.message().contains("boundary edge 2"), "{}", e.message());
+        assert_eq!(m.boundary_edges().len(), 1);
+    }
+}

@@ -1,0 +1,1179 @@
+//! The model: a mesh, materials per body, tempering, constraints, loads and
+//! contact pairs; the solves and the results they produce.
+//!
+//! Every mutating call either succeeds or leaves the model exactly as it
+//! was. Any change of the problem discards previous results; changes of the
+//! structure (mesh, set of prescribed DOFs, contact pairs) also discard the
+//! cached sparsity pattern and symbolic factorisation, which are otherwise
+//! reused by later solves.
+
+use std::collections::{BTreeMap, HashSet};
+use std::time::Instant;
+
+use crate::assembly::{DofMap, NOT_FREE, Pattern};
+use crate::contact::{
+    self, ContactElement, ContactLaw, ContactOptions, ContactPair, InversionTest,
+    contact_pressure, contact_stiffness, law_matrix, linearised_jacobian,
+};
+use crate::element::{Jmin, Tempering, TriGeometry, b_hat, elasticity_stiffness, tempered_jacobian};
+use crate::error::{Error, Result, Status};
+use crate::material::Material;
+use crate::mesh::Mesh;
+use crate::solution::{ContactReport, IterationRecord, SolveInfo, Timings};
+use crate::solver::{Cholesky, FactorError};
+
+/// A displacement component.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Component {
+    /// Horizontal (u).
+    X = 0,
+    /// Vertical (v).
+    Y = 1,
+}
+
+impl Component {
+    /// Decodes the C ABI integer (0 = x, 1 = y).
+    pub fn from_i32(value: i32) -> Option<Component> {
+        match value {
+            0 => Some(Component::X),
+            1 => Some(Component::Y),
+            _ => None,
+        }
+    }
+}
+
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum EdgeLoad {
+    Pressure(f64),
+    Traction([f64; 2]),
+}
+
+/// A solved state.
+#[derive(Debug, Clone)]
+struct Solved {
+    u: Vec<f64>,
+    f_ext: Vec<f64>,
+    info: SolveInfo,
+    contact: Option<ContactSolved>,
+}
+
+#[derive(Debug, Clone)]
+struct ContactSolved {
+    active: Vec<bool>,
+    pressure: Vec<f64>,
+    report: ContactReport,
+    params: Vec<ContactParams>,
+}
+
+/// Per-element contact parameters: constitutive matrix and tempered J.
+#[derive(Debug, Clone)]
+struct ContactParams {
+    d: [[f64; 3]; 3],
+    t: f64,
+}
+
+struct Cache {
+    epoch: u64,
+    dofs: DofMap,
+    pattern: Pattern,
+    chol: Cholesky,
+    contact: Vec<ContactElement>,
+}
+
+/// A 2D elasticity model solved with tempered P1 elements.
+pub struct Model {
+    mesh: Option<Mesh>,
+    materials: BTreeMap<i32, Material>,
+    tempering: Tempering,
+    prescribed: BTreeMap<usize, f64>,
+    edge_loads: Vec<(i32, EdgeLoad)>,
+    nodal_forces: Vec<(usize, [f64; 2])>,
+    body_forces: BTreeMap<i32, [f64; 2]>,
+    pairs: Vec<ContactPair>,
+    solved: Option<Solved>,
+    cache: Option<Cache>,
+    epoch: u64,
+    solve_warnings: Vec<String>,
+}
+
+impl Default for Model {
+    fn default() -> Self {
+        Model::new()
+    }
+}
+
+fn finite2(v: [f64; 2], what: &str) -> Result<()> {
+    if v[0].is_finite() && v[1].is_finite() {
+        Ok(())
+    } else {
+        Err(Error::argument(format!("{what} ({}, {}) is not finite", v[0], v[1])))
+    }
+}
+
+fn norm(v: &[f64]) -> f64 {
+    v.iter().map(|a| a * a).sum::<f64>().sqrt()
+}
+
+impl Model {
+    /// An empty model (no mesh, default tempering [`Tempering::Auto`]).
+    pub fn new() -> Model {
+        Model {
+            mesh: None,
+            materials: BTreeMap::new(),
+            tempering: Tempering::Auto,
+            prescribed: BTreeMap::new(),
+            edge_loads: Vec::new(),
+            nodal_forces: Vec::new(),
+            body_forces: BTreeMap::new(),
+            pairs: Vec::new(),
+            solved: None,
+            cache: None,
+            epoch: 0,
+            solve_warnings: Vec::new(),
+        }
+    }
+
+    fn changed_structure(&mut self) {
+        self.epoch += 1;
+        self.solved = None;
+    }
+
+    fn mesh_ref(&self) -> Result<&Mesh> {
+        self.mesh
+            .as_ref()
+            .ok_or_else(|| Error::state("no mesh: call set_mesh first"))
+    }
+
+    fn check_node(&self, node: usize) -> Result<()> {
+        let mesh = self.mesh_ref()?;
+        if node >= mesh.nodes().len() {
+            return Err(Error::argument(format!(
+                "node {} is out of range ({} nodes, index base {})",
+                node + mesh.index_base(),
+                mesh.nodes().len(),
+                mesh.index_base()
+            )));
+        }
+        Ok(())
+    }
+
+    /// Replaces the mesh. Constraints, loads, contact pairs and results are
+    /// discarded (they refer to nodes and edges); materials and tempering
+    /// are kept.
+    pub fn set_mesh(&mut self, mesh: Mesh) {
+        self.mesh = Some(mesh);
+        self.prescribed.clear();
+        self.edge_loads.clear();
+        self.nodal_forces.clear();
+        self.body_forces.clear();
+        self.pairs.clear();
+        self.cache = None;
+        self.changed_structure();
+    }
+
+    /// The mesh, if set.
+    pub fn mesh(&self) -> Option<&Mesh> {
+        self.mesh.as_ref()
+    }
+
+    /// Sets the tagged boundary edges (0-based nodes). See
+    /// [`Mesh::set_boundary_edges`].
+    pub fn set_boundary_edges(&mut self, edges: &[[usize; 2]], tags: &[i32]) -> Result<()> {
+        let mesh = self
+            .mesh
+            .as_mut()
+            .ok_or_else(|| Error::state("no mesh: call set_mesh first"))?;
+        mesh.set_boundary_edges(edges, tags)?;
+        self.changed_structure();
+        Ok(())
+    }
+
+    /// Sets the material of a body. Before a mesh is given any body tag is
+    /// accepted; afterwards the body must exist.
+    pub fn set_material(&mut self, body: i32, material: Material) -> Result<()> {
+        if let Some(mesh) = &self.mesh {
+            if mesh.bodies().binary_search(&body).is_err() {
+                return Err(Error::new(
+                    Status::InvalidMaterial,
+                    format!("body {body} is not in the mesh (bodies: {:?})", mesh.bodies()),
+                ));
+            }
+        }
+        self.materials.insert(body, material);
+        self.solved = None;
+        Ok(())
+    }
+
+    /// The material of a body.
+    pub fn material(&self, body: i32) -> Option<&Material> {
+        self.materials.get(&body)
+    }
+
+    /// Sets how Jmin is chosen.
+    pub fn set_tempering(&mut self, tempering: Tempering) -> Result<()> {
+        tempering.validate()?;
+        self.tempering = tempering;
+        self.solved = None;
+        Ok(())
+    }
+
+    /// The tempering policy.
+    pub fn tempering(&self) -> Tempering {
+        self.tempering
+    }
+
+    /// The λ the tempering uses (None when off or fixed): the given one, or
+    /// the larger side of the mesh's bounding box for [`Tempering::Auto`].
+    pub fn tempering_lambda(&self) -> Option<f64> {
+        match self.tempering {
+            Tempering::Auto => self.mesh.as_ref().map(|m| m.size()),
+            Tempering::Lambda(l) => Some(l),
+            _ => None,
+        }
+    }
+
+    /// Prescribes one displacement component of a node (0-based).
+    pub fn fix(&mut self, node: usize, component: Component, value: f64) -> Result<()> {
+        self.check_node(node)?;
+        if !value.is_finite() {
+            return Err(Error::argument(format!(
+                "prescribed displacement {value} of node {} is not finite",
+                node + self.mesh_ref()?.index_base()
+            )));
+        }
+        let g = 2 * node + component as usize;
+        if self.prescribed.insert(g, value).is_none() {
+            self.changed_structure();
+        } else {
+            self.solved = None;
+        }
+        Ok(())
+    }
+
+    /// Prescribes a component on every node of the edges tagged `tag`.
+    pub fn fix_edges(&mut self, tag: i32, component: Component, value: f64) -> Result<()> {
+        let mesh = self.mesh_ref()?;
+        if !value.is_finite() {
+            return Err(Error::argument(format!(
+                "prescribed displacement {value} on tag {tag} is not finite"
+            )));
+        }
+        let nodes: Vec<usize> = mesh
+            .boundary_edges()
+            .iter()
+            .filter(|e| e.tag == tag)
+            .flat_map(|e| e.nodes)
+            .collect();
+        if nodes.is_empty() {
+            return Err(Error::argument(format!("no boundary edge has tag {tag}")));
+        }
+        for v in nodes {
+            self.fix(v, component, value)?;
+        }
+        Ok(())
+    }
+
+    /// Removes every prescribed displacement.
+    pub fn clear_constraints(&mut self) {
+        if !self.prescribed.is_empty() {
+            self.prescribed.clear();
+            self.changed_structure();
+        }
+    }
+
+    /// Prescribed displacements, as (global DOF = 2·node + component, value).
+    pub fn constraints(&self) -> impl Iterator<Item = (usize, f64)> + '_ {
+        self.prescribed.iter().map(|(&g, &v)| (g, v))
+    }
+
+    fn check_loaded_tag(&self, tag: i32) -> Result<()> {
+        let mesh = self.mesh_ref()?;
+        let mut any = false;
+        for (k, e) in mesh.boundary_edges().iter().enumerate() {
+            if e.tag != tag {
+                continue;
+            }
+            any = true;
+            if mesh.outward_normal(e).is_none() {
+                return Err(Error::argument(format!(
+                    "boundary edge {} (tag {tag}) is interior or has zero length: it cannot carry a load",
+                    k + mesh.index_base()
+                )));
+            }
+        }
+        if any {
+            Ok(())
+        } else {
+            Err(Error::argument(format!("no boundary edge has tag {tag}")))
+        }
+    }
+
+    /// Applies a pressure (force per unit length, positive pushing into the
+    /// body) on the edges tagged `tag`. Loads add up.
+    pub fn add_pressure(&mut self, tag: i32, pressure: f64) -> Result<()> {
+        if !pressure.is_finite() {
+            return Err(Error::argument(format!("pressure {pressure} is not finite")));
+        }
+        self.check_loaded_tag(tag)?;
+        self.edge_loads.push((tag, EdgeLoad::Pressure(pressure)));
+        self.solved = None;
+        Ok(())
+    }
+
+    /// Applies a traction vector (force per unit length) on the edges tagged
+    /// `tag`. Loads add up.
+    pub fn add_traction(&mut self, tag: i32, traction: [f64; 2]) -> Result<()> {
+        finite2(traction, "traction")?;
+        self.check_loaded_tag(tag)?;
+        self.edge_loads.push((tag, EdgeLoad::Traction(traction)));
+        self.solved = None;
+        Ok(())
+    }
+
+    /// Adds a point force at a node (0-based).
+    pub fn add_nodal_force(&mut self, node: usize, force: [f64; 2]) -> Result<()> {
+        self.check_node(node)?;
+        finite2(force, "nodal force")?;
+        self.nodal_forces.push((node, force));
+        self.solved = None;
+        Ok(())
+    }
+
+    /// Sets the body force (per unit area) of a body.
+    pub fn set_body_force(&mut self, body: i32, force: [f64; 2]) -> Result<()> {
+        let mesh = self.mesh_ref()?;
+        if mesh.bodies().binary_search(&body).is_err() {
+            return Err(Error::argument(format!("body {body} is not in the mesh")));
+        }
+        finite2(force, "body force")?;
+        self.body_forces.insert(body, force);
+        self.solved = None;
+        Ok(())
+    }
+
+    /// Removes every load (pressures, tractions, nodal and body forces).
+    pub fn clear_loads(&mut self) {
+        self.edge_loads.clear();
+        self.nodal_forces.clear();
+        self.body_forces.clear();
+        self.solved = None;
+    }
+
+    /// Declares a potential contact interface between the edges tagged
+    /// `tag_a` (on one body) and `tag_b` (on another). Returns the pair's
+    /// index. The contact mesh B is built from matching nodes at solve time
+    /// unless one is handed over with [`Model::set_contact_mesh`].
+    pub fn add_contact_pair(&mut self, tag_a: i32, tag_b: i32) -> Result<usize> {
+        let mesh = self.mesh_ref()?;
+        let (body_a, body_b) = contact::pair_bodies(mesh, tag_a, tag_b)?;
+        if self
+            .pairs
+            .iter()
+            .any(|p| (p.tag_a, p.tag_b) == (tag_a, tag_b) || (p.tag_a, p.tag_b) == (tag_b, tag_a))
+        {
+            return Err(Error::contact(format!(
+                "contact pair ({tag_a}, {tag_b}) is already declared"
+            )));
+        }
+        // Build it now so that an unmatched node is reported by this call.
+        contact::build_conforming(mesh, self.pairs.len(), tag_a, tag_b)?;
+        self.pairs.push(ContactPair {
+            tag_a,
+            tag_b,
+            body_a,
+            body_b,
+            user_mesh: None,
+        });
+        self.changed_structure();
+        Ok(self.pairs.len() - 1)
+    }
+
+    /// Declares a contact pair with a contact mesh B handed over by the user
+    /// (0-based triangles over interface nodes, as made with Gmsh). Its
+    /// orientation is fixed where needed; returns (pair index, number of
+    /// triangles flipped).
+    pub fn add_contact_pair_with_mesh(
+        &mut self,
+        tag_a: i32,
+        tag_b: i32,
+        triangles: &[[usize; 3]],
+    ) -> Result<(usize, usize)> {
+        let mesh = self.mesh_ref()?;
+        let (body_a, body_b) = contact::pair_bodies(mesh, tag_a, tag_b)?;
+        if triangles.is_empty() {
+            return Err(Error::contact("the contact mesh has no triangles"));
+        }
+        let (elements, flipped) =
+            contact::check_user_mesh(mesh, self.pairs.len(), tag_a, tag_b, triangles)?;
+        self.pairs.push(ContactPair {
+            tag_a,
+            tag_b,
+            body_a,
+            body_b,
+            user_mesh: Some(elements.iter().map(|e| e.nodes).collect()),
+        });
+        self.changed_structure();
+        Ok((self.pairs.len() - 1, flipped))
+    }
+
+    /// Removes every contact pair.
+    pub fn clear_contact_pairs(&mut self) {
+        if !self.pairs.is_empty() {
+            self.pairs.clear();
+            self.changed_structure();
+        }
+    }
+
+    /// The declared contact pairs.
+    pub fn contact_pairs(&self) -> &[ContactPair] {
+        &self.pairs
+    }
+
+    /// Mesh warnings plus those of the last solve (e.g. tempering of
+    /// well-shaped elements).
+    pub fn warnings(&self) -> Vec<String> {
+        let mut w: Vec<String> = self
+            .mesh
+            .as_ref()
+            .map(|m| m.warnings().to_vec())
+            .unwrap_or_default();
+        w.extend(self.solve_warnings.iter().cloned());
+        w
+    }
+
+    fn body_jmin(&self, mesh: &Mesh) -> impl Fn(&TriGeometry) -> Jmin + use<> {
+        let tempering = self.tempering;
+        let size = mesh.size();
+        move |geo: &TriGeometry| match tempering {
+            Tempering::Auto => Jmin::from_lambda(geo.h, size),
+            Tempering::Lambda(l) => Jmin::from_lambda(geo.h, l),
+            Tempering::Fixed(j) => Jmin::Tempered(j),
+            Tempering::Off => Jmin::Off,
+        }
+    }
+
+    fn check_ready(&self, with_contact: bool) -> Result<&Mesh> {
+        let mesh = self.mesh_ref()?;
+        for &b in mesh.bodies() {
+            if !self.materials.contains_key(&b) {
+                return Err(Error::new(
+                    Status::InvalidMaterial,
+                    format!("body {b} has no material: call set_material"),
+                ));
+            }
+        }
+        match (with_contact, self.pairs.is_empty()) {
+            (false, false) => Err(Error::state(format!(
+                "the model has {} contact pair(s): use solve_contact",
+                self.pairs.len()
+            ))),
+            (true, true) => Err(Error::state("no contact pair: call add_contact_pair first")),
+            _ => Ok(mesh),
+        }
+    }
+
+    /// Solves a scene without contact. On error the model is unchanged.
+    pub fn solve(&mut self) -> Result<SolveInfo> {
+        self.run(None).map(|s| s.info)
+    }
+
+    /// Solves the contact problem with the active-set loop of METHOD.md §3.
+    /// On error (singular, not converged) the model is unchanged.
+    pub fn solve_contact(&mut self, options: &ContactOptions) -> Result<ContactReport> {
+        options.validate()?;
+        let solved = self.run(Some(*options))?;
+        Ok(solved
+            .contact
+            .as_ref()
+            .map(|c| c.report.clone())
+            .expect("a contact solve has a contact state"))
+    }
+
+    fn run(&mut self, options: Option<ContactOptions>) -> Result<&Solved> {
+        let t_start = Instant::now();
+        self.check_ready(options.is_some())?;
+        let mut timings = Timings::default();
+        let cache = match self.cache.take() {
+            Some(c) if c.epoch == self.epoch => c,
+            _ => {
+                let t0 = Instant::now();
+                let c = self.analyse()?;
+                timings.analysis = t0.elapsed().as_secs_f64();
+                c
+            }
+        };
+        let mut cache = cache;
+        let result = self.run_with(&mut cache, options, &mut timings);
+        self.cache = Some(cache);
+        let (solved, warnings) = result?;
+        let mut solved = solved;
+        solved.info.timings.analysis = timings.analysis;
+        solved.info.timings.total = t_start.elapsed().as_secs_f64();
+        if let Some(c) = solved.contact.as_mut() {
+            c.report.info = solved.info;
+        }
+        self.solve_warnings = warnings;
+        self.solved = Some(solved);
+        Ok(self.solved.as_ref().expect("just stored"))
+    }
+
+    fn analyse(&self) -> Result<Cache> {
+        let mesh = self.mesh_ref()?;
+        let n_nodes = mesh.nodes().len();
+        let used = mesh.node_body();
+        let dofs = DofMap::new(n_nodes, 2, |g| {
+            used[g / 2].is_some() && !self.prescribed.contains_key(&g)
+        });
+        let mut contact = Vec::new();
+        for (i, p) in self.pairs.iter().enumerate() {
+            let mut elements = match &p.user_mesh {
+                None => contact::build_conforming(mesh, i, p.tag_a, p.tag_b)?,
+                Some(tris) => contact::check_user_mesh(mesh, i, p.tag_a, p.tag_b, tris)?.0,
+            };
+            contact.append(&mut elements);
+        }
+        // The pattern holds every element of B from the start (stored zeros
+        // while inactive) so the symbolic analysis survives activation.
+        let mut elements: Vec<[usize; 3]> = mesh.triangles().to_vec();
+        elements.extend(contact.iter().map(|e| e.nodes));
+        let pattern = Pattern::build(&dofs, n_nodes, &elements)?;
+        let chol = Cholesky::analyse(&pattern)?;
+        Ok(Cache {
+            epoch: self.epoch,
+            dofs,
+            pattern,
+            chol,
+            contact,
+        })
+    }
+
+    /// External forces on every global DOF.
+    fn external_forces(&self, mesh: &Mesh) -> Vec<f64> {
+        let mut f = vec![0.0; 2 * mesh.nodes().len()];
+        for &(tag, load) in &self.edge_loads {
+            for e in mesh.boundary_edges().iter().filter(|e| e.tag == tag) {
+                let [p, q] = e.nodes;
+                let (xp, xq) = (mesh.nodes()[p], mesh.nodes()[q]);
+                let len = (xq[0] - xp[0]).hypot(xq[1] - xp[1]);
+                let t = match load {
+                    EdgeLoad::Traction(t) => t,
+                    EdgeLoad::Pressure(pr) => {
+                        let n = mesh.outward_normal(e).expect("checked when the load was added");
+                        [-pr * n[0], -pr * n[1]]
+                    }
+                };
+                for v in [p, q] {
+                    f[2 * v] += 0.5 * len * t[0];
+                    f[2 * v + 1] += 0.5 * len * t[1];
+                }
+            }
+        }
+        for &(v, force) in &self.nodal_forces {
+            f[2 * v] += force[0];
+            f[2 * v + 1] += force[1];
+        }
+        if !self.body_forces.is_empty() {
+            for (tri, body) in mesh.triangles().iter().zip(mesh.body_of()) {
+                if let Some(b) = self.body_forces.get(body) {
+                    // Inverted or flat elements carry no material volume.
+                    let area = 0.5 * TriGeometry::new(&mesh.corners(tri)).j.max(0.0);
+                    for &v in tri {
+                        f[2 * v] += b[0] * area / 3.0;
+                        f[2 * v + 1] += b[1] * area / 3.0;
+                    }
+                }
+            }
+        }
+        f
+    }
+
+    fn prescribed_vector(&self, n_dofs: usize) -> Vec<f64> {
+        let mut up = vec![0.0; n_dofs];
+        for (&g, &v) in &self.prescribed {
+            up[g] = v;
+        }
+        up
+    }
+
+    /// Adds an element matrix and its prescribed-DOF correction to the
+    /// reduced system.
+    #[allow(clippy::too_many_arguments)]
+    fn scatter(
+        dofs: &DofMap,
+        pattern: &Pattern,
+        values: &mut [f64],
+        rhs: &mut [f64],
+        e: usize,
+        tri: &[usize; 3],
+        ke: &[f64; 36],
+        f0: Option<&[f64; 6]>,
+        up: &[f64],
+    ) {
+        pattern.add_element(values, e, ke);
+        let mut gd = [0usize; 6];
+        dofs.element_dofs(tri, &mut gd);
+        for a in 0..6 {
+            let fa = dofs.free(gd[a]);
+            if fa == NOT_FREE {
+                continue;
+            }
+            let mut r = f0.map_or(0.0, |f| f[a]);
+            for b in 0..6 {
+                if dofs.free(gd[b]) == NOT_FREE {
+                    r -= ke[a * 6 + b] * up[gd[b]];
+                }
+            }
+            rhs[fa] += r;
+        }
+    }
+
+    fn run_with(
+        &self,
+        cache: &mut Cache,
+        options: Option<ContactOptions>,
+        timings: &mut Timings,
+    ) -> Result<(Solved, Vec<String>)> {
+        let Cache {
+            dofs,
+            pattern,
+            chol,
+            contact,
+            ..
+        } = cache;
+        let (dofs, pattern, contact) = (&*dofs, &*pattern, &*contact);
+        let mesh = self.mesh_ref()?;
+        let n_dofs = 2 * mesh.nodes().len();
+        let n_body = mesh.triangles().len();
+        let mut warnings = Vec::new();
+        let up = self.prescribed_vector(n_dofs);
+        let f_ext = self.external_forces(mesh);
+
+        // Body part of the system: assembled once, reused by every iteration.
+        let t0 = Instant::now();
+        let jmin_of = self.body_jmin(mesh);
+        let mut values_body = vec![0.0; pattern.nnz()];
+        let mut rhs_body = vec![0.0; dofs.n_free()];
+        for (g, &f) in f_ext.iter().enumerate() {
+            let fg = dofs.free(g);
+            if fg != NOT_FREE {
+                rhs_body[fg] += f;
+            }
+        }
+        let mut softened = (0usize, None::<usize>);
+        let mut d_cache: Option<(i32, [[f64; 3]; 3])> = None;
+        for (e, (tri, &body)) in mesh.triangles().iter().zip(mesh.body_of()).enumerate() {
+            let d = match d_cache {
+                Some((b, d)) if b == body => d,
+                _ => {
+                    let d = self.materials[&body].d_matrix();
+                    d_cache = Some((body, d));
+                    d
+                }
+            };
+            let geo = TriGeometry::new(&mesh.corners(tri));
+            let jm = jmin_of(&geo);
+            if let Jmin::Tempered(jmin) = jm {
+                if geo.j < jmin && geo.j >= 0.1 * geo.h * geo.h {
+                    softened.0 += 1;
+                    softened.1.get_or_insert(e);
+                }
+            }
+            let k = elasticity_stiffness(&geo, &d, jm).map_err(|err| {
+                Error::new(
+                    err.status(),
+                    format!("{} (body {body}): {}", mesh.triangle_name(e), err.message()),
+                )
+            })?;
+            let ke: [f64; 36] = std::array::from_fn(|i| k[i / 6][i % 6]);
+            Self::scatter(dofs, pattern, &mut values_body, &mut rhs_body, e, tri, &ke, None, &up);
+        }
+        timings.assembly += t0.elapsed().as_secs_f64();
+        if let (n, Some(e)) = softened {
+            warnings.push(format!(
+                "tempering softens {n} well-shaped element(s) (e.g. {}): λ = {:?} is not much larger \
+                 than the element size, so Jmin = h³/λ exceeds their J; increase λ",
+                mesh.triangle_name(e),
+                self.tempering_lambda()
+            ));
+        }
+
+        let mut info = SolveInfo {
+            unknowns: dofs.n_free(),
+            matrix_nnz: pattern.nnz(),
+            factor_nnz: chol.factor_nnz(),
+            ..Default::default()
+        };
+
+        let Some(opts) = options else {
+            let (u, values, rhs) = self.factor_and_solve(
+                dofs,
+                pattern,
+                chol,
+                values_body,
+                rhs_body,
+                &up,
+                timings,
+                &mut info,
+                "",
+            )?;
+            info.relative_residual = residual(pattern, &values, &u_free(dofs, &u), &rhs);
+            info.condition_estimate = chol.condition_estimate();
+            info.memory_bytes = memory(pattern, chol);
+            info.timings = *timings;
+            return Ok((
+                Solved {
+                    u,
+                    f_ext,
+                    info,
+                    contact: None,
+                },
+                warnings,
+            ));
+        };
+
+        // Contact: per-element law and tempering.
+        let lambda_c = opts.lambda.unwrap_or_else(|| mesh.size());
+        let params: Vec<ContactParams> = contact
+            .iter()
+            .map(|el| {
+                let p = &self.pairs[el.pair];
+                let (ma, mb) = (self.materials[&p.body_a], self.materials[&p.body_b]);
+                let soft = if mb.young() < ma.young() { mb } else { ma };
+                let e_c = opts.contact_modulus.unwrap_or(soft.young());
+                let d = match opts.law {
+                    ContactLaw::Frictionless => law_matrix(ContactLaw::Frictionless, e_c, 0.0, el.normal),
+                    ContactLaw::Stick => Material::new(e_c, soft.poisson(), soft.plane(), "contact")
+                        .map(|m| m.d_matrix())
+                        .unwrap_or_else(|_| law_matrix(ContactLaw::Stick, e_c, soft.poisson().min(0.49), el.normal)),
+                };
+                let t = match Jmin::from_lambda(el.h, lambda_c) {
+                    Jmin::Tempered(t) => t,
+                    Jmin::Off => unreachable!(),
+                };
+                ContactParams { d, t }
+            })
+            .collect();
+        if let Some((k, _)) = params.iter().enumerate().find(|(_, p)| !(p.t > 0.0 && p.t.is_finite())) {
+            return Err(Error::new(
+                Status::NumericalFailure,
+                format!("contact element {}: Jmin = h³/λ is not a positive finite number", k + mesh.index_base()),
+            ));
+        }
+        let geos: Vec<TriGeometry> = contact
+            .iter()
+            .map(|el| TriGeometry::new(&mesh.corners(&el.nodes)))
+            .collect();
+        let mut active: Vec<bool> = contact
+            .iter()
+            .map(|el| el.j0 <= 1e-12 * el.h * el.h)
+            .collect();
+        let mut seen: HashSet<Vec<bool>> = HashSet::new();
+        seen.insert(active.clone());
+        let mut history = Vec::new();
+        let mut result = None;
+        for it in 1..=opts.max_iterations {
+            let t0 = Instant::now();
+            let mut values = values_body.clone();
+            let mut rhs = rhs_body.clone();
+            for (k, el) in contact.iter().enumerate() {
+                if !active[k] {
+                    continue;
+                }
+                let cs = contact_stiffness(&geos[k], &params[k].d, el.normal, el.j0, params[k].t);
+                Self::scatter(dofs, pattern, &mut values, &mut rhs, n_body + k, &el.nodes, &cs.k, Some(&cs.f0), &up);
+            }
+            timings.assembly += t0.elapsed().as_secs_f64();
+            let n_active = active.iter().filter(|&&a| a).count();
+            let context = format!(" (contact iteration {it}, {n_active} active contact elements)");
+            let (u, values, rhs) =
+                self.factor_and_solve(dofs, pattern, chol, values, rhs, &up, timings, &mut info, &context)?;
+            let next: Vec<bool> = contact
+                .iter()
+                .enumerate()
+                .map(|(k, el)| {
+                    let ue = element_u(&u, &el.nodes);
+                    let j = match opts.test {
+                        InversionTest::Linearised => linearised_jacobian(&geos[k], &ue),
+                        InversionTest::Literal => {
+                            let mut x = mesh.corners(&el.nodes);
+                            for (i, p) in x.iter_mut().enumerate() {
+                                p[0] += ue[2 * i];
+                                p[1] += ue[2 * i + 1];
+                            }
+                            TriGeometry::new(&x).j
+                        }
+                    };
+                    j < 0.0
+                })
+                .collect();
+            let on = next.iter().zip(&active).filter(|(n, a)| **n && !**a).count();
+            let off = next.iter().zip(&active).filter(|(n, a)| !**n && **a).count();
+            history.push(IterationRecord {
+                active: n_active,
+                switched_on: on,
+                switched_off: off,
+            });
+            if next == active {
+                result = Some((u, values, rhs));
+                break;
+            }
+            if !seen.insert(next.clone()) {
+                return Err(Error::new(
+                    Status::NotConverged,
+                    format!(
+                        "the active set revisited an earlier state at iteration {it} (a cycle); history {}",
+                        format_history(&history)
+                    ),
+                ));
+            }
+            active = next;
+        }
+        let Some((u, values, rhs)) = result else {
+            return Err(Error::new(
+                Status::NotConverged,
+                format!(
+                    "the active set did not settle in {} iterations; history {}",
+                    opts.max_iterations,
+                    format_history(&history)
+                ),
+            ));
+        };
+        info.relative_residual = residual(pattern, &values, &u_free(dofs, &u), &rhs);
+        info.condition_estimate = chol.condition_estimate();
+        info.memory_bytes = memory(pattern, chol);
+        info.timings = *timings;
+
+        let mut pressure = vec![0.0; contact.len()];
+        let (mut lc, mut max_pen) = (0.0, 0.0f64);
+        for (k, el) in contact.iter().enumerate() {
+            if !active[k] {
+                continue;
+            }
+            let ue = element_u(&u, &el.nodes);
+            pressure[k] = contact_pressure(&geos[k], &params[k].d, el.normal, el.j0, params[k].t, &ue);
+            lc += 0.5 * el.edge_length;
+            let opening = linearised_jacobian(&geos[k], &ue);
+            if el.edge_length > 0.0 {
+                max_pen = max_pen.max(-opening / el.edge_length);
+            }
+        }
+        let report = ContactReport {
+            iterations: history.len(),
+            elements: contact.len(),
+            active: active.iter().filter(|&&a| a).count(),
+            contact_length: lc,
+            max_penetration: max_pen,
+            history,
+            info,
+        };
+        Ok((
+            Solved {
+                u,
+                f_ext,
+                info,
+                contact: Some(ContactSolved {
+                    active,
+                    pressure,
+                    report,
+                    params,
+                }),
+            },
+            warnings,
+        ))
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn factor_and_solve(
+        &self,
+        dofs: &DofMap,
+        pattern: &Pattern,
+        chol: &mut Cholesky,
+        values: Vec<f64>,
+        rhs: Vec<f64>,
+        up: &[f64],
+        timings: &mut Timings,
+        info: &mut SolveInfo,
+        context: &str,
+    ) -> Result<(Vec<f64>, Vec<f64>, Vec<f64>)> {
+        let mesh = self.mesh_ref()?;
+        let t0 = Instant::now();
+        let fact = chol.factorize(pattern, &values);
+        timings.factorization += t0.elapsed().as_secs_f64();
+        info.factorizations += 1;
+        if let Err(e) = fact {
+            return Err(singular_error(mesh, dofs, e, context));
+        }
+        let t0 = Instant::now();
+        let mut x = rhs.clone();
+        chol.solve(&mut x)?;
+        timings.solve += t0.elapsed().as_secs_f64();
+        let mut u = up.to_vec();
+        let free_to_global = dofs.free_to_global();
+        for (f, &g) in free_to_global.iter().enumerate() {
+            u[g] = x[f];
+        }
+        if let Some(g) = u.iter().position(|v| !v.is_finite()) {
+            return Err(Error::new(
+                Status::NumericalFailure,
+                format!(
+                    "the displacement of {} is not finite{context}",
+                    mesh.node_name(g / 2)
+                ),
+            ));
+        }
+        Ok((u, values, rhs))
+    }
+
+    fn solved(&self) -> Result<&Solved> {
+        self.solved
+            .as_ref()
+            .ok_or_else(|| Error::state("no results: solve the model first (results are discarded by any change)"))
+    }
+
+    /// Nodal displacements [u, v] of the last solve.
+    pub fn displacements(&self) -> Result<Vec<[f64; 2]>> {
+        let s = self.solved()?;
+        Ok(s.u.chunks_exact(2).map(|c| [c[0], c[1]]).collect())
+    }
+
+    /// Statistics of the last solve.
+    pub fn solve_info(&self) -> Result<SolveInfo> {
+        Ok(self.solved()?.info)
+    }
+
+    fn element_geometry(&self, mesh: &Mesh, e: usize) -> (TriGeometry, Jmin) {
+        let geo = TriGeometry::new(&mesh.corners(&mesh.triangles()[e]));
+        let jm = self.body_jmin(mesh)(&geo);
+        (geo, jm)
+    }
+
+    /// Element strains [ε_xx, ε_yy, γ_xy] (engineering shear), computed on
+    /// request: B̂u / max(J, Jmin), the usual strain for J >= Jmin and the
+    /// tempered one below (consistent with the tempered energy).
+    pub fn element_strains(&self) -> Result<Vec<[f64; 3]>> {
+        let s = self.solved()?;
+        let mesh = self.mesh_ref()?;
+        (0..mesh.triangles().len())
+            .map(|e| {
+                let (geo, jm) = self.element_geometry(mesh, e);
+                let Some(t) = tempered_jacobian(&geo, jm)? else {
+                    return Ok([0.0; 3]);
+                };
+                let b = b_hat(&geo);
+                let ue = element_u(&s.u, &mesh.triangles()[e]);
+                Ok(std::array::from_fn(|r| (0..6).map(|c| b[r][c] * ue[c]).sum::<f64>() / t))
+            })
+            .collect()
+    }
+
+    /// Element stresses [σ_xx, σ_yy, σ_xy] = D ε, computed on request.
+    pub fn element_stresses(&self) -> Result<Vec<[f64; 3]>> {
+        let strains = self.element_strains()?;
+        let mesh = self.mesh_ref()?;
+        Ok(strains
+            .iter()
+            .zip(mesh.body_of())
+            .map(|(eps, body)| {
+                let d = self.materials[body].d_matrix();
+                std::array::from_fn(|r| d[r][0] * eps[0] + d[r][1] * eps[1] + d[r][2] * eps[2])
+            })
+            .collect())
+    }
+
+    /// J (twice the signed area) of every triangle in the initial
+    /// configuration. Needs only a mesh.
+    pub fn element_jacobians(&self) -> Result<Vec<f64>> {
+        let mesh = self.mesh_ref()?;
+        Ok(mesh
+            .triangles()
+            .iter()
+            .map(|t| TriGeometry::new(&mesh.corners(t)).j)
+            .collect())
+    }
+
+    /// Reaction forces [R_x, R_y] per node: K u − f at prescribed DOFs (zero
+    /// elsewhere), computed on request.
+    pub fn reactions(&self) -> Result<Vec<[f64; 2]>> {
+        let s = self.solved()?;
+        let mesh = self.mesh_ref()?;
+        let mut r = vec![0.0; s.u.len()];
+        let is_fixed = |g: usize| self.prescribed.contains_key(&g);
+        let mut add = |tri: &[usize; 3], ke: &[f64; 36], f0: Option<&[f64; 6]>| {
+            let ue = element_u(&s.u, tri);
+            for a in 0..6 {
+                let g = 2 * tri[a / 2] + a % 2;
+                if is_fixed(g) {
+                    let ku: f64 = (0..6).map(|b| ke[a * 6 + b] * ue[b]).sum();
+                    r[g] += ku - f0.map_or(0.0, |f| f[a]);
+                }
+            }
+        };
+        for (e, (tri, body)) in mesh.triangles().iter().zip(mesh.body_of()).enumerate() {
+            let (geo, jm) = self.element_geometry(mesh, e);
+            let k = elasticity_stiffness(&geo, &self.materials[body].d_matrix(), jm)?;
+            let ke: [f64; 36] = std::array::from_fn(|i| k[i / 6][i % 6]);
+            add(tri, &ke, None);
+        }
+        if let (Some(c), Some(cache)) = (&s.contact, &self.cache) {
+            for (k, el) in cache.contact.iter().enumerate() {
+                if c.active[k] {
+                    let geo = TriGeometry::new(&mesh.corners(&el.nodes));
+                    let cs = contact_stiffness(&geo, &c.params[k].d, el.normal, el.j0, c.params[k].t);
+                    add(&el.nodes, &cs.k, Some(&cs.f0));
+                }
+            }
+        }
+        for (g, v) in r.iter_mut().enumerate() {
+            if is_fixed(g) {
+                *v -= s.f_ext[g];
+            }
+        }
+        Ok(r.chunks_exact(2).map(|c| [c[0], c[1]]).collect())
+    }
+
+    fn contact_solved(&self) -> Result<(&ContactSolved, &[ContactElement])> {
+        let s = self.solved()?;
+        match (&s.contact, &self.cache) {
+            (Some(c), Some(cache)) => Ok((c, &cache.contact)),
+            _ => Err(Error::state("no contact results: call solve_contact first")),
+        }
+    }
+
+    /// The elements of the contact mesh B of the last contact solve.
+    pub fn contact_elements(&self) -> Result<&[ContactElement]> {
+        Ok(self.contact_solved()?.1)
+    }
+
+    /// Active flag of every element of B at convergence.
+    pub fn contact_active(&self) -> Result<&[bool]> {
+        Ok(&self.contact_solved()?.0.active)
+    }
+
+    /// Contact pressure (positive in compression, zero when inactive) of
+    /// every element of B.
+    pub fn contact_pressure(&self) -> Result<&[f64]> {
+        Ok(&self.contact_solved()?.0.pressure)
+    }
+
+    /// The report of the last contact solve.
+    pub fn contact_report(&self) -> Result<&ContactReport> {
+        Ok(&self.contact_solved()?.0.report)
+    }
+}
+
+fn singular_error(mesh: &Mesh, dofs: &DofMap, e: FactorError, context: &str) -> Error {
+    let free_to_global = dofs.free_to_global();
+    match e {
+        FactorError::Other(err) => err,
+        FactorError::ZeroDiagonal { unknown } => {
+            let g = free_to_global[unknown];
+            let node = g / 2;
+            Error::new(
+                Status::Singular,
+                format!(
+                    "{} (body {}) has no stiffness in {}{context}",
+                    mesh.node_name(node),
+                    mesh.node_body()[node].unwrap_or_default(),
+                    if g % 2 == 0 { "x" } else { "y" }
+                ),
+            )
+        }
+        FactorError::Singular { mode: None, .. } => Error::new(
+            Status::Singular,
+            format!("the stiffness matrix is indefinite{context}"),
+        ),
+        FactorError::Singular { mode: Some(mode), .. } => {
+            let n = mesh.nodes().len();
+            let mut m = vec![0.0; 2 * n];
+            for (f, &g) in free_to_global.iter().enumerate() {
+                m[g] = mode[f];
+            }
+            Error::new(
+                Status::Singular,
+                format!("singular stiffness matrix: {}{context}", describe_mode(mesh, &m)),
+            )
+        }
+    }
+}
+
+fn element_u(u: &[f64], tri: &[usize; 3]) -> [f64; 6] {
+    std::array::from_fn(|a| u[2 * tri[a / 2] + a % 2])
+}
+
+fn u_free(dofs: &DofMap, u: &[f64]) -> Vec<f64> {
+    dofs.free_to_global().iter().map(|&g| u[g]).collect()
+}
+
+fn residual(pattern: &Pattern, values: &[f64], x: &[f64], rhs: &[f64]) -> f64 {
+    let mut y = vec![0.0; x.len()];
+    pattern.sym_mul(values, x, &mut y);
+    let r: Vec<f64> = y.iter().zip(rhs).map(|(a, b)| a - b).collect();
+    let nf = norm(rhs);
+    if nf > 0.0 { norm(&r) / nf } else { norm(&r) }
+}
+
+fn memory(pattern: &Pattern, chol: &Cholesky) -> usize {
+    pattern.memory_bytes() + 8 * pattern.nnz() + chol.memory_bytes()
+}
+
+fn format_history(h: &[IterationRecord]) -> String {
+    let items: Vec<String> = h
+        .iter()
+        .map(|r| format!("[active {}, +{}, -{}]", r.active, r.switched_on, r.switched_off))
+        .collect();
+    items.join(" ")
+}
+
+/// Names the bodies that move in a near-null mode and the kind of motion.
+fn describe_mode(mesh: &Mesh, m: &[f64]) -> String {
+    let mut share: BTreeMap<i32, f64> = BTreeMap::new();
+    for (v, body) in mesh.node_body().iter().enumerate() {
+        if let Some(b) = body {
+            *share.entry(*b).or_default() += m[2 * v].powi(2) + m[2 * v + 1].powi(2);
+        }
+    }
+    let total: f64 = share.values().sum();
+    let mut ranked: Vec<(i32, f64)> = share.into_iter().map(|(b, s)| (b, s / total.max(f64::MIN_POSITIVE))).collect();
+    ranked.sort_by(|a, b| b.1.total_cmp(&a.1));
+    let top = ranked[0].1;
+    let named: Vec<(i32, f64)> = ranked.into_iter().filter(|&(_, s)| s >= 0.1 * top).collect();
+    let mut parts = Vec::new();
+    for &(body, _) in &named {
+        // Fractions of the body's motion that are rigid translations and
+        // rotation about its centroid (three orthogonal modes).
+        let nodes: Vec<usize> = (0..mesh.nodes().len())
+            .filter(|&v| mesh.node_body()[v] == Some(body))
+            .collect();
+        let nn = nodes.len() as f64;
+        let c = nodes.iter().fold([0.0, 0.0], |acc, &v| {
+            [acc[0] + mesh.nodes()[v][0] / nn, acc[1] + mesh.nodes()[v][1] / nn]
+        });
+        let (mut tx, mut ty, mut rot, mut rr, mut e) = (0.0, 0.0, 0.0, 0.0, 0.0);
+        for &v in &nodes {
+            let (dx, dy) = (mesh.nodes()[v][0] - c[0], mesh.nodes()[v][1] - c[1]);
+            let (a, b) = (m[2 * v], m[2 * v + 1]);
+            tx += a;
+            ty += b;
+            rot += -dy * a + dx * b;
+            rr += dx * dx + dy * dy;
+            e += a * a + b * b;
+        }
+        let fx = tx * tx / nn / e;
+        let fy = ty * ty / nn / e;
+        let fr = if rr > 0.0 { rot * rot / rr / e } else { 0.0 };
+        let kind = if fx + fy + fr < 0.5 {
+            "a mechanism that is not a rigid motion".to_string()
+        } else {
+            let mut k = Vec::new();
+            for (f, name) in [(fx, "translation in x"), (fy, "translation in y"), (fr, "rotation")] {
+                if f >= 0.05 {
+                    k.push(format!("{:.0}% {name}", 100.0 * f));
+                }
+            }
+            k.join(", ")
+        };
+        parts.push(format!("body {body} is not restrained (free mode: {kind})"));
+    }
+    parts.join("; ")
+}

@@ -1,0 +1,70 @@
+//! What a solve returns: statistics, timings, and the contact report.
+
+/// Wall-clock time of the stages of a solve, in seconds.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct Timings {
+    /// Sparsity pattern, scatter map and symbolic analysis (zero when reused).
+    pub analysis: f64,
+    /// Element matrices and scatter-add, summed over iterations.
+    pub assembly: f64,
+    /// Numeric factorisations including the singularity check, summed.
+    pub factorization: f64,
+    /// Triangular solves, summed.
+    pub solve: f64,
+    /// The whole call.
+    pub total: f64,
+}
+
+/// Statistics of a solve.
+#[derive(Debug, Clone, Copy, Default, PartialEq)]
+pub struct SolveInfo {
+    /// Number of unknowns (DOFs after Dirichlet elimination).
+    pub unknowns: usize,
+    /// Stored entries of the upper triangle of the matrix.
+    pub matrix_nnz: usize,
+    /// Stored entries of the Cholesky factor.
+    pub factor_nnz: usize,
+    /// Numeric factorisations performed.
+    pub factorizations: usize,
+    /// ‖K u − f‖ / ‖f‖ over the unknowns, for the final system.
+    pub relative_residual: f64,
+    /// Condition estimate of the Jacobi-scaled final matrix.
+    pub condition_estimate: f64,
+    /// Bytes held by the pattern, matrix values and factor.
+    pub memory_bytes: usize,
+    /// Stage timings.
+    pub timings: Timings,
+}
+
+/// One iteration of the active-set loop.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct IterationRecord {
+    /// Active contact elements used in this iteration's solve.
+    pub active: usize,
+    /// Elements the inversion test switched on after the solve.
+    pub switched_on: usize,
+    /// Elements the inversion test switched off after the solve.
+    pub switched_off: usize,
+}
+
+/// Result of a contact solve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactReport {
+    /// Active-set iterations (solves) performed.
+    pub iterations: usize,
+    /// Elements of the contact mesh B.
+    pub elements: usize,
+    /// Active (inverted) elements at convergence.
+    pub active: usize,
+    /// Contact length ℓc: half the summed interface-edge length of the
+    /// active elements (each point of the interface is covered by one
+    /// element with its edge on each side).
+    pub contact_length: f64,
+    /// Largest normal interpenetration (−opening / edge length) of an active
+    /// element, in model length units; 0 when nothing penetrates.
+    pub max_penetration: f64,
+    /// Per-iteration history.
+    pub history: Vec<IterationRecord>,
+    /// Solver statistics and timings.
+    pub info: SolveInfo,
+}
