@@ -109,7 +109,7 @@ fn denominator(geo: &TriGeometry, jmin: Jmin) -> Result<Option<f64>> {
     if t > 0.0 {
         return Ok(Some(t));
     }
-    if geo.is_point() {
+    if geo.is_point() && matches!(jmin, Jmin::Tempered(_)) {
         return Ok(None);
     }
     let why = match jmin {

@@ -518,16 +518,7 @@ pub unsafe extern "C" fn tfem_fix(model: *mut TfemModel, node: c_int, comp: c_in
 pub unsafe extern "C" fn tfem_fix_edges(model: *mut TfemModel, tag: c_int, comp: c_int, value: f64) -> Status {
     with_model(model, |m| {
         let c = component(comp)?;
-        // Transactional: a failure half way must not leave some nodes fixed.
-        let before: Vec<(usize, f64)> = m.model.constraints().collect();
-        let r = m.model.fix_edges(tag, c, value);
-        if r.is_err() {
-            m.model.clear_constraints();
-            for (g, v) in before {
-                m.model.fix(g / 2, if g % 2 == 0 { Component::X } else { Component::Y }, v)?;
-            }
-        }
-        r
+        m.model.fix_edges(tag, c, value)
     })
 }
 

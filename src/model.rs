@@ -169,6 +169,7 @@ impl Model {
         self.body_forces.clear();
         self.pairs.clear();
         self.cache = None;
+        self.solve_warnings.clear();
         self.changed_structure();
     }
 
@@ -251,7 +252,8 @@ impl Model {
         Ok(())
     }
 
-    /// Prescribes a component on every node of the edges tagged `tag`.
+    /// Prescribes a component on every node of the edges tagged `tag`
+    /// (all or nothing: the checks come before any change).
     pub fn fix_edges(&mut self, tag: i32, component: Component, value: f64) -> Result<()> {
         let mesh = self.mesh_ref()?;
         if !value.is_finite() {
