@@ -1,8 +1,15 @@
 //! Tools to verify a discretisation against known solutions: a quadrature
 //! rule, consistent nodal loads of a body-force field, and error norms.
 
-use crate::element::TriGeometry;
+use std::time::Instant;
+
+use crate::element::{Tempering, TriGeometry};
+use crate::error::Result;
+use crate::laplace::solve_poisson;
+use crate::material::Material;
 use crate::mesh::Mesh;
+use crate::meshgen::MeshBuilder;
+use crate::model::{Component, Model};
 
 /// Barycentric coordinates of a degree-4 rule on triangles (Dunavant, 6 points).
 pub const QUAD_POINTS: [[f64; 3]; 6] = [
@@ -103,6 +110,202 @@ pub fn h1_error(
         }
     }
     sum.sqrt()
+}
+
+/// Energy norm of (exact − discrete) for elasticity:
+/// sqrt(∫ (ε − ε_h)ᵀ D (ε − ε_h)), ε Voigt with engineering shear, the
+/// exact displacement gradient given as [[∂u/∂x, ∂u/∂y], [∂v/∂x, ∂v/∂y]].
+/// Triangles with J <= 0 have no area and are skipped.
+pub fn energy_error(
+    mesh: &Mesh,
+    uh: &[f64],
+    d: &[[f64; 3]; 3],
+    exact_grad: impl Fn([f64; 2]) -> [[f64; 2]; 2],
+) -> f64 {
+    let mut sum = 0.0;
+    for tri in mesh.triangles() {
+        let x = mesh.corners(tri);
+        let geo = TriGeometry::new(&x);
+        if geo.j <= 0.0 {
+            continue;
+        }
+        let mut gh = [[0.0; 2]; 2];
+        for a in 0..3 {
+            for c in 0..2 {
+                gh[c][0] += geo.g[a][0] * uh[2 * tri[a] + c] / geo.j;
+                gh[c][1] += geo.g[a][1] * uh[2 * tri[a] + c] / geo.j;
+            }
+        }
+        for (q, w) in QUAD_POINTS.iter().zip(QUAD_WEIGHTS) {
+            let g = exact_grad(point(&x, q));
+            let e = [
+                g[0][0] - gh[0][0],
+                g[1][1] - gh[1][1],
+                g[0][1] + g[1][0] - gh[0][1] - gh[1][0],
+            ];
+            let mut de = 0.0;
+            for r in 0..3 {
+                for c in 0..3 {
+                    de += e[r] * d[r][c] * e[c];
+                }
+            }
+            sum += w * 0.5 * geo.j * de;
+        }
+    }
+    sum.sqrt()
+}
+
+/// The manufactured elasticity solution on the unit square used by the
+/// convergence studies: u = sin πx sin πy, v = sin 2πx sin πy (zero on the
+/// boundary), with the body force f = −[(λ+μ)∇(∇·u) + μΔu] of an isotropic
+/// material with Lamé constants (λ, μ).
+#[derive(Debug, Clone, Copy)]
+pub struct ManufacturedElasticity {
+    /// Lamé's first parameter (plane strain: Eν/((1+ν)(1−2ν))).
+    pub lame: f64,
+    /// Shear modulus.
+    pub mu: f64,
+}
+
+impl ManufacturedElasticity {
+    /// For a material in plane strain or plane stress.
+    pub fn new(material: &crate::Material) -> ManufacturedElasticity {
+        let d = material.d_matrix();
+        ManufacturedElasticity {
+            lame: d[0][1],
+            mu: d[2][2],
+        }
+    }
+
+    /// The exact displacement.
+    pub fn displacement(&self, p: [f64; 2]) -> [f64; 2] {
+        let pi = std::f64::consts::PI;
+        let (x, y) = (p[0], p[1]);
+        [(pi * x).sin() * (pi * y).sin(), (2.0 * pi * x).sin() * (pi * y).sin()]
+    }
+
+    /// The exact gradient [[u_x, u_y], [v_x, v_y]].
+    pub fn gradient(&self, p: [f64; 2]) -> [[f64; 2]; 2] {
+        let pi = std::f64::consts::PI;
+        let (x, y) = (p[0], p[1]);
+        [
+            [pi * (pi * x).cos() * (pi * y).sin(), pi * (pi * x).sin() * (pi * y).cos()],
+            [
+                2.0 * pi * (2.0 * pi * x).cos() * (pi * y).sin(),
+                pi * (2.0 * pi * x).sin() * (pi * y).cos(),
+            ],
+        ]
+    }
+
+    /// The body force that makes [`Self::displacement`] the solution.
+    pub fn body_force(&self, p: [f64; 2]) -> [f64; 2] {
+        let pi = std::f64::consts::PI;
+        let pi2 = pi * pi;
+        let (x, y) = (p[0], p[1]);
+        let a = (pi * x).sin() * (pi * y).sin();
+        let b = (2.0 * pi * x).sin() * (pi * y).sin();
+        let (a_xx, a_yy, a_xy) = (-pi2 * a, -pi2 * a, pi2 * (pi * x).cos() * (pi * y).cos());
+        let (b_xx, b_yy, b_xy) = (
+            -4.0 * pi2 * b,
+            -pi2 * b,
+            2.0 * pi2 * (2.0 * pi * x).cos() * (pi * y).cos(),
+        );
+        let lm = self.lame + self.mu;
+        [
+            -(lm * (a_xx + b_xy) + self.mu * (a_xx + a_yy)),
+            -(lm * (a_xy + b_yy) + self.mu * (b_xx + b_yy)),
+        ]
+    }
+}
+
+/// One mesh level of a convergence study.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StudyPoint {
+    /// Nominal mesh size.
+    pub h: f64,
+    /// Unknowns.
+    pub unknowns: usize,
+    /// L2 error.
+    pub l2: f64,
+    /// Energy-norm error (elasticity) or H1-seminorm error (Laplacian).
+    pub energy: f64,
+    /// Wall time of the solve, seconds.
+    pub seconds: f64,
+}
+
+fn boundary_nodes(builder: &MeshBuilder) -> Vec<usize> {
+    let mut nodes: Vec<usize> = builder.boundary_edges().into_iter().flatten().collect();
+    nodes.sort_unstable();
+    nodes.dedup();
+    nodes
+}
+
+/// Solves [`ManufacturedElasticity`] on the mesh of `builder` (u prescribed
+/// on the whole boundary) and measures its errors.
+pub fn run_manufactured_elasticity(
+    builder: MeshBuilder,
+    h: f64,
+    material: Material,
+    tempering: Tempering,
+) -> Result<StudyPoint> {
+    let exact = ManufacturedElasticity::new(&material);
+    let fixed = boundary_nodes(&builder);
+    let mesh = builder.build()?;
+    let loads = nodal_loads(&mesh, |p| exact.body_force(p));
+    let mut model = Model::new();
+    model.set_mesh(mesh);
+    model.set_material(1, material)?;
+    model.set_tempering(tempering)?;
+    for &v in &fixed {
+        let u = exact.displacement(model.mesh().expect("set").nodes()[v]);
+        model.fix(v, Component::X, u[0])?;
+        model.fix(v, Component::Y, u[1])?;
+    }
+    for (v, f) in loads.iter().enumerate() {
+        if f[0] != 0.0 || f[1] != 0.0 {
+            model.add_nodal_force(v, *f)?;
+        }
+    }
+    let t0 = Instant::now();
+    let info = model.solve()?;
+    let seconds = t0.elapsed().as_secs_f64();
+    let uh: Vec<f64> = model.displacements()?.into_iter().flatten().collect();
+    let mesh = model.mesh().expect("set");
+    let l2 = l2_error(mesh, &uh, 2, |p| exact.displacement(p).to_vec());
+    let energy = energy_error(mesh, &uh, &material.d_matrix(), |p| exact.gradient(p));
+    Ok(StudyPoint {
+        h,
+        unknowns: info.unknowns,
+        l2,
+        energy,
+        seconds,
+    })
+}
+
+/// Solves −Δu = 2π² sin πx sin πy (exact u = sin πx sin πy, zero on the
+/// boundary of the unit square) on the mesh of `builder`.
+pub fn run_manufactured_laplace(builder: MeshBuilder, h: f64, tempering: Tempering) -> Result<StudyPoint> {
+    let pi = std::f64::consts::PI;
+    let exact = move |p: [f64; 2]| (pi * p[0]).sin() * (pi * p[1]).sin();
+    let fixed: Vec<(usize, f64)> = boundary_nodes(&builder)
+        .into_iter()
+        .map(|v| (v, exact(builder.nodes[v])))
+        .collect();
+    let mesh = builder.build()?;
+    let t0 = Instant::now();
+    let uh = solve_poisson(&mesh, 1.0, tempering, |p| 2.0 * pi * pi * exact(p), &fixed)?;
+    let seconds = t0.elapsed().as_secs_f64();
+    let l2 = l2_error(&mesh, &uh, 1, |p| vec![exact(p)]);
+    let energy = h1_error(&mesh, &uh, 1, |p| {
+        vec![[pi * (pi * p[0]).cos() * (pi * p[1]).sin(), pi * (pi * p[0]).sin() * (pi * p[1]).cos()]]
+    });
+    Ok(StudyPoint {
+        h,
+        unknowns: uh.len() - fixed.len(),
+        l2,
+        energy,
+        seconds,
+    })
 }
 
 /// Least-squares slope of log(e) against log(h): the observed convergence
