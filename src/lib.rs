@@ -35,6 +35,7 @@ pub mod material;
 pub mod mesh;
 pub mod meshgen;
 pub mod model;
+pub mod scenes;
 pub mod solution;
 pub mod solver;
 pub mod verification;

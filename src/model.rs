@@ -550,6 +550,12 @@ impl Model {
         })
     }
 
+    /// The assembled external load vector (2 values per node: f_x, f_y) of
+    /// the current loads: consistent edge loads, nodal and body forces.
+    pub fn load_vector(&self) -> Result<Vec<f64>> {
+        Ok(self.external_forces(self.mesh_ref()?))
+    }
+
     /// External forces on every global DOF.
     fn external_forces(&self, mesh: &Mesh) -> Vec<f64> {
         let mut f = vec![0.0; 2 * mesh.nodes().len()];
@@ -766,10 +772,11 @@ impl Model {
             .iter()
             .map(|el| TriGeometry::new(&mesh.corners(&el.nodes)))
             .collect();
-        let mut active: Vec<bool> = contact
-            .iter()
-            .map(|el| el.j0 <= 1e-12 * el.h * el.h)
-            .collect();
+        // Start from all of B: for touching surfaces these are the initially
+        // touching elements (the seed's choice); with a small gap the first
+        // solve pulls the surfaces together, which keeps a body held only by
+        // contact restrained. The set then shrinks to the inverted ones.
+        let mut active: Vec<bool> = vec![true; contact.len()];
         let mut seen: HashSet<Vec<bool>> = HashSet::new();
         seen.insert(active.clone());
         let mut history = Vec::new();
@@ -939,15 +946,16 @@ impl Model {
         Ok(s.u.chunks_exact(2).map(|c| [c[0], c[1]]).collect())
     }
 
+    /// Work of the external loads, Σ f·u (per unit thickness): for a
+    /// pressure load, the compliance ∫ p (−u·n).
+    pub fn external_work(&self) -> Result<f64> {
+        let s = self.solved()?;
+        Ok(s.f_ext.iter().zip(&s.u).map(|(f, u)| f * u).sum())
+    }
+
     /// Statistics of the last solve.
     pub fn solve_info(&self) -> Result<SolveInfo> {
         Ok(self.solved()?.info)
-    }
-
-    fn element_geometry(&self, mesh: &Mesh, e: usize) -> (TriGeometry, Jmin) {
-        let geo = TriGeometry::new(&mesh.corners(&mesh.triangles()[e]));
-        let jm = self.body_jmin(mesh)(&geo);
-        (geo, jm)
     }
 
     /// Element strains [ε_xx, ε_yy, γ_xy] (engineering shear), computed on
@@ -956,9 +964,11 @@ impl Model {
     pub fn element_strains(&self) -> Result<Vec<[f64; 3]>> {
         let s = self.solved()?;
         let mesh = self.mesh_ref()?;
+        let jmin_of = self.body_jmin(mesh);
         (0..mesh.triangles().len())
             .map(|e| {
-                let (geo, jm) = self.element_geometry(mesh, e);
+                let geo = TriGeometry::new(&mesh.corners(&mesh.triangles()[e]));
+                let jm = jmin_of(&geo);
                 let Some(t) = tempered_jacobian(&geo, jm)? else {
                     return Ok([0.0; 3]);
                 };
@@ -1011,9 +1021,10 @@ impl Model {
                 }
             }
         };
-        for (e, (tri, body)) in mesh.triangles().iter().zip(mesh.body_of()).enumerate() {
-            let (geo, jm) = self.element_geometry(mesh, e);
-            let k = elasticity_stiffness(&geo, &self.materials[body].d_matrix(), jm)?;
+        let jmin_of = self.body_jmin(mesh);
+        for (tri, body) in mesh.triangles().iter().zip(mesh.body_of()) {
+            let geo = TriGeometry::new(&mesh.corners(tri));
+            let k = elasticity_stiffness(&geo, &self.materials[body].d_matrix(), jmin_of(&geo))?;
             let ke: [f64; 36] = std::array::from_fn(|i| k[i / 6][i % 6]);
             add(tri, &ke, None);
         }
