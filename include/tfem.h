@@ -104,6 +104,10 @@ typedef enum tfem_status {
    * Memory for the factorisation could not be allocated.
    */
   TFEM_STATUS_OUT_OF_MEMORY = 13,
+  /**
+   * A file could not be read or written (the message names it).
+   */
+  TFEM_STATUS_IO = 14,
 } tfem_status;
 
 /**
@@ -339,13 +343,13 @@ void tfem_destroy(struct tfem_model *model);
  * is truncated (still NUL-terminated) and TFEM_STATUS_BUFFER_TOO_SMALL is
  * returned; `tfem_last_error_length` gives the size needed.
  */
-enum tfem_status tfem_last_error(const struct tfem_model *model, char *buffer, uintptr_t length);
+enum tfem_status tfem_last_error(const struct tfem_model *model, char *buffer, size_t length);
 
 /**
  * Size in bytes (including the final NUL) of the message `tfem_last_error`
  * would give. `model` may be NULL (thread's last error).
  */
-uintptr_t tfem_last_error_length(const struct tfem_model *model);
+size_t tfem_last_error_length(const struct tfem_model *model);
 
 /**
  * Number of warnings: mesh validation (unused or coincident nodes,
@@ -358,10 +362,7 @@ enum tfem_status tfem_warning_count(struct tfem_model *model, int *count);
  * Copies warning number `index` (0-based, whatever the index base) into
  * `buffer` of `length` bytes, truncating like `tfem_last_error`.
  */
-enum tfem_status tfem_get_warning(struct tfem_model *model,
-                                  int index,
-                                  char *buffer,
-                                  uintptr_t length);
+enum tfem_status tfem_get_warning(struct tfem_model *model, int index, char *buffer, size_t length);
 
 /**
  * Sets the mesh: `n_nodes` nodes with coordinates `xy` (2·n_nodes values,
@@ -470,33 +471,31 @@ enum tfem_status tfem_get_sizes(struct tfem_model *model,
  * Copies the nodal displacements (u0 v0 u1 v1 …, 2·n_nodes values) of the
  * last solve into `out` of `length` values.
  */
-enum tfem_status tfem_get_displacements(struct tfem_model *model, double *out, uintptr_t length);
+enum tfem_status tfem_get_displacements(struct tfem_model *model, double *out, size_t length);
 
 /**
  * Copies element strains (ε_xx ε_yy γ_xy per triangle, engineering shear,
  * 3·n_triangles values), computed on request.
  */
-enum tfem_status tfem_get_element_strains(struct tfem_model *model, double *out, uintptr_t length);
+enum tfem_status tfem_get_element_strains(struct tfem_model *model, double *out, size_t length);
 
 /**
  * Copies element stresses (σ_xx σ_yy σ_xy per triangle, 3·n_triangles
  * values), computed on request.
  */
-enum tfem_status tfem_get_element_stresses(struct tfem_model *model, double *out, uintptr_t length);
+enum tfem_status tfem_get_element_stresses(struct tfem_model *model, double *out, size_t length);
 
 /**
  * Copies J (twice the signed area, initial configuration) of every
  * triangle (n_triangles values). Needs only a mesh.
  */
-enum tfem_status tfem_get_element_jacobians(struct tfem_model *model,
-                                            double *out,
-                                            uintptr_t length);
+enum tfem_status tfem_get_element_jacobians(struct tfem_model *model, double *out, size_t length);
 
 /**
  * Copies reaction forces (Rx Ry per node, 2·n_nodes values; zero at DOFs
  * that are not prescribed), computed on request.
  */
-enum tfem_status tfem_get_reactions(struct tfem_model *model, double *out, uintptr_t length);
+enum tfem_status tfem_get_reactions(struct tfem_model *model, double *out, size_t length);
 
 /**
  * Tempered elasticity stiffness of one P1 triangle with corners `xy`
@@ -561,20 +560,20 @@ enum tfem_status tfem_solve_contact(struct tfem_model *model,
  * Copies the active flag (1 active, 0 not) of every contact element of
  * the last contact solve (n_contact_elements values, see `tfem_get_sizes`).
  */
-enum tfem_status tfem_get_contact_active(struct tfem_model *model, int *out, uintptr_t length);
+enum tfem_status tfem_get_contact_active(struct tfem_model *model, int *out, size_t length);
 
 /**
  * Copies the contact pressure (positive in compression, 0 when inactive)
  * of every contact element (n_contact_elements values).
  */
-enum tfem_status tfem_get_contact_pressure(struct tfem_model *model, double *out, uintptr_t length);
+enum tfem_status tfem_get_contact_pressure(struct tfem_model *model, double *out, size_t length);
 
 /**
  * Copies the nodes of every contact element (3·n_contact_elements
  * indices, in the model's index base), oriented so that J > 0 when the gap
  * opens.
  */
-enum tfem_status tfem_get_contact_elements(struct tfem_model *model, int *out, uintptr_t length);
+enum tfem_status tfem_get_contact_elements(struct tfem_model *model, int *out, size_t length);
 
 /**
  * Writes the report of the last contact solve to `report`.

@@ -278,7 +278,11 @@ mod tests {
         let dofs = DofMap::new(3, 1, |_| true);
         let p = Pattern::build(&dofs, 3, &[[0, 1, 2]]).unwrap();
         let mut v = vec![0.0; p.nnz()];
-        p.add_element(&mut v, 0, &[2.0, -1.0, 0.0, -1.0, 2.0, -1.0, 0.0, -1.0, 2.0]);
+        p.add_element(
+            &mut v,
+            0,
+            &[2.0, -1.0, 0.0, -1.0, 2.0, -1.0, 0.0, -1.0, 2.0],
+        );
         let mut y = vec![0.0; 3];
         p.sym_mul(&v, &[1.0, 1.0, 1.0], &mut y);
         assert_eq!(y, vec![1.0, 0.0, 1.0]);

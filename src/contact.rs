@@ -234,7 +234,12 @@ const TANGENTIAL_TOL: f64 = 1e-6;
 /// when their offset is normal to it (a small initial gap is allowed, up to
 /// half the local edge length) and tangentially within 1e-6 of the local
 /// edge length; an unmatched node is an error naming it.
-pub fn build_conforming(mesh: &Mesh, pair: usize, tag_a: i32, tag_b: i32) -> Result<Vec<ContactElement>> {
+pub fn build_conforming(
+    mesh: &Mesh,
+    pair: usize,
+    tag_a: i32,
+    tag_b: i32,
+) -> Result<Vec<ContactElement>> {
     let a = side_of(mesh, tag_a)?;
     let b = side_of(mesh, tag_b)?;
     let x = mesh.nodes();
@@ -253,7 +258,7 @@ pub fn build_conforming(mesh: &Mesh, pair: usize, tag_a: i32, tag_b: i32) -> Res
             m[1] += n[1];
         }
     }
-    for (&(p, q), _) in &b.edges {
+    for &(p, q) in b.edges.keys() {
         let l = dist(x[p], x[q]);
         for v in [p, q] {
             let h = local_h.entry(v).or_insert(f64::INFINITY);
@@ -493,7 +498,13 @@ pub fn law_matrix(law: ContactLaw, e_c: f64, nu_c: f64, n: [f64; 2]) -> [[f64; 3
 
 /// Stiffness and initial-gap load of an active contact element. An active
 /// element is inverted, so max(J, Jmin) = Jmin: `t` is its Jmin.
-pub fn contact_stiffness(geo: &TriGeometry, d: &[[f64; 3]; 3], n: [f64; 2], j0: f64, t: f64) -> ContactStiffness {
+pub fn contact_stiffness(
+    geo: &TriGeometry,
+    d: &[[f64; 3]; 3],
+    n: [f64; 2],
+    j0: f64,
+    t: f64,
+) -> ContactStiffness {
     let b = b_hat(geo);
     let mut db = [[0.0; 6]; 3];
     for r in 0..3 {
@@ -526,7 +537,14 @@ pub fn contact_stiffness(geo: &TriGeometry, d: &[[f64; 3]; 3], n: [f64; 2], j0: 
 
 /// Contact pressure (positive in compression) of an active element with
 /// element displacements `ue`: -n·σ·n with σ = D (B̂u + J0 n⊗n) / T.
-pub fn contact_pressure(geo: &TriGeometry, d: &[[f64; 3]; 3], n: [f64; 2], j0: f64, t: f64, ue: &[f64; 6]) -> f64 {
+pub fn contact_pressure(
+    geo: &TriGeometry,
+    d: &[[f64; 3]; 3],
+    n: [f64; 2],
+    j0: f64,
+    t: f64,
+    ue: &[f64; 6],
+) -> f64 {
     let b = b_hat(geo);
     let en = e_n(n);
     let mut s = [0.0; 3];

@@ -219,7 +219,8 @@ mod tests {
     fn healthy_element_is_untouched_by_tempering() {
         let geo = TriGeometry::new(&[[0.0, 0.0], [1.0, 0.0], [0.2, 0.9]]);
         let plain = elasticity_stiffness(&geo, &D_UNIT, Jmin::Off).unwrap();
-        let tempered = elasticity_stiffness(&geo, &D_UNIT, Jmin::from_lambda(geo.h, 100.0)).unwrap();
+        let tempered =
+            elasticity_stiffness(&geo, &D_UNIT, Jmin::from_lambda(geo.h, 100.0)).unwrap();
         assert_eq!(plain, tempered);
     }
 

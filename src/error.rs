@@ -39,6 +39,8 @@ pub enum Status {
     Internal = 12,
     /// Memory for the factorisation could not be allocated.
     OutOfMemory = 13,
+    /// A file could not be read or written (the message names it).
+    Io = 14,
 }
 
 impl Status {
@@ -59,6 +61,7 @@ impl Status {
             Status::NumericalFailure => "numerical failure",
             Status::Internal => "internal error",
             Status::OutOfMemory => "out of memory",
+            Status::Io => "input/output error",
         }
     }
 }

@@ -243,7 +243,9 @@ fn component(c: i32) -> Result<Component> {
 
 fn plane(p: i32) -> Result<PlaneMode> {
     PlaneMode::from_i32(p).ok_or_else(|| {
-        Error::argument(format!("plane = {p} must be 0 (plane strain) or 1 (plane stress)"))
+        Error::argument(format!(
+            "plane = {p} must be 0 (plane strain) or 1 (plane stress)"
+        ))
     })
 }
 
@@ -366,7 +368,9 @@ pub unsafe extern "C" fn tfem_last_error_length(model: *const TfemModel) -> usiz
 /// well-shaped elements).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_warning_count(model: *mut TfemModel, count: *mut c_int) -> Status {
-    with_model(model, |m| write(count, m.model.warnings().len() as c_int, "count"))
+    with_model(model, |m| {
+        write(count, m.model.warnings().len() as c_int, "count")
+    })
 }
 
 /// Copies warning number `index` (0-based, whatever the index base) into
@@ -384,11 +388,19 @@ pub unsafe extern "C" fn tfem_get_warning(
         let i = usize::try_from(index)
             .ok()
             .filter(|&i| i < w.len())
-            .ok_or_else(|| Error::argument(format!("warning index {index} is out of range ({} warnings)", w.len())))?;
+            .ok_or_else(|| {
+                Error::argument(format!(
+                    "warning index {index} is out of range ({} warnings)",
+                    w.len()
+                ))
+            })?;
         status = copy_message(&w[i], buffer, length);
         match status {
             Status::Ok => Ok(()),
-            s => Err(Error::new(s, "`buffer` is NULL or too short for the warning")),
+            s => Err(Error::new(
+                s,
+                "`buffer` is NULL or too short for the warning",
+            )),
         }
     });
     if s == Status::Ok { status } else { s }
@@ -414,7 +426,11 @@ pub unsafe extern "C" fn tfem_set_mesh(
     with_model(model, |m| {
         let base = match index_base {
             0 | 1 => index_base as usize,
-            _ => return Err(Error::argument(format!("index_base = {index_base} must be 0 or 1"))),
+            _ => {
+                return Err(Error::argument(format!(
+                    "index_base = {index_base} must be 0 or 1"
+                )));
+            }
         };
         let nn = count(n_nodes, "n_nodes")?;
         let nt = count(n_triangles, "n_triangles")?;
@@ -462,7 +478,10 @@ pub unsafe extern "C" fn tfem_set_boundary_edges(
         let tags = slice_in(tags, ne, "tags")?;
         let mut edges = Vec::with_capacity(ne);
         for c in en.chunks_exact(2) {
-            edges.push([m.index(c[0], n, "edge node")?, m.index(c[1], n, "edge node")?]);
+            edges.push([
+                m.index(c[0], n, "edge node")?,
+                m.index(c[1], n, "edge node")?,
+            ]);
         }
         m.model.set_boundary_edges(&edges, tags)
     })
@@ -488,14 +507,22 @@ pub unsafe extern "C" fn tfem_set_material(
 /// Chooses Jmin: `mode` is a `TemperingMode` (0 auto, 1 lambda = `value`,
 /// 2 fixed Jmin = `value`, 3 off); `value` is ignored for 0 and 3.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_set_tempering(model: *mut TfemModel, mode: c_int, value: f64) -> Status {
+pub unsafe extern "C" fn tfem_set_tempering(
+    model: *mut TfemModel,
+    mode: c_int,
+    value: f64,
+) -> Status {
     with_model(model, |m| {
         let t = match mode {
             0 => Tempering::Auto,
             1 => Tempering::Lambda(value),
             2 => Tempering::Fixed(value),
             3 => Tempering::Off,
-            _ => return Err(Error::argument(format!("tempering mode = {mode} must be 0, 1, 2 or 3"))),
+            _ => {
+                return Err(Error::argument(format!(
+                    "tempering mode = {mode} must be 0, 1, 2 or 3"
+                )));
+            }
         };
         m.model.set_tempering(t)
     })
@@ -504,7 +531,12 @@ pub unsafe extern "C" fn tfem_set_tempering(model: *mut TfemModel, mode: c_int, 
 /// Prescribes displacement component `component` (0 x, 1 y) of `node` to
 /// `value` (model length units).
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_fix(model: *mut TfemModel, node: c_int, comp: c_int, value: f64) -> Status {
+pub unsafe extern "C" fn tfem_fix(
+    model: *mut TfemModel,
+    node: c_int,
+    comp: c_int,
+    value: f64,
+) -> Status {
     with_model(model, |m| {
         let n = m.n_nodes()?;
         let v = m.index(node, n, "node")?;
@@ -515,7 +547,12 @@ pub unsafe extern "C" fn tfem_fix(model: *mut TfemModel, node: c_int, comp: c_in
 /// Prescribes component `component` to `value` on every node of the
 /// boundary edges tagged `tag`.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_fix_edges(model: *mut TfemModel, tag: c_int, comp: c_int, value: f64) -> Status {
+pub unsafe extern "C" fn tfem_fix_edges(
+    model: *mut TfemModel,
+    tag: c_int,
+    comp: c_int,
+    value: f64,
+) -> Status {
     with_model(model, |m| {
         let c = component(comp)?;
         m.model.fix_edges(tag, c, value)
@@ -534,20 +571,34 @@ pub unsafe extern "C" fn tfem_clear_constraints(model: *mut TfemModel) -> Status
 /// Applies pressure `pressure` (force per unit length, positive pushing
 /// into the body) on the boundary edges tagged `tag`. Loads add up.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_add_pressure(model: *mut TfemModel, tag: c_int, pressure: f64) -> Status {
+pub unsafe extern "C" fn tfem_add_pressure(
+    model: *mut TfemModel,
+    tag: c_int,
+    pressure: f64,
+) -> Status {
     with_model(model, |m| m.model.add_pressure(tag, pressure))
 }
 
 /// Applies the traction (tx, ty) (force per unit length) on the boundary
 /// edges tagged `tag`. Loads add up.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_add_traction(model: *mut TfemModel, tag: c_int, tx: f64, ty: f64) -> Status {
+pub unsafe extern "C" fn tfem_add_traction(
+    model: *mut TfemModel,
+    tag: c_int,
+    tx: f64,
+    ty: f64,
+) -> Status {
     with_model(model, |m| m.model.add_traction(tag, [tx, ty]))
 }
 
 /// Adds the point force (fx, fy) at `node`.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_add_nodal_force(model: *mut TfemModel, node: c_int, fx: f64, fy: f64) -> Status {
+pub unsafe extern "C" fn tfem_add_nodal_force(
+    model: *mut TfemModel,
+    node: c_int,
+    fx: f64,
+    fy: f64,
+) -> Status {
     with_model(model, |m| {
         let n = m.n_nodes()?;
         let v = m.index(node, n, "node")?;
@@ -557,7 +608,12 @@ pub unsafe extern "C" fn tfem_add_nodal_force(model: *mut TfemModel, node: c_int
 
 /// Sets the body force (bx, by) (force per unit area) of body `body`.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_set_body_force(model: *mut TfemModel, body: c_int, bx: f64, by: f64) -> Status {
+pub unsafe extern "C" fn tfem_set_body_force(
+    model: *mut TfemModel,
+    body: c_int,
+    bx: f64,
+    by: f64,
+) -> Status {
     with_model(model, |m| m.model.set_body_force(body, [bx, by]))
 }
 
@@ -593,7 +649,10 @@ pub unsafe extern "C" fn tfem_get_sizes(
     n_contact_elements: *mut c_int,
 ) -> Status {
     with_model(model, |m| {
-        let mesh = m.model.mesh().ok_or_else(|| Error::state("no mesh: call tfem_set_mesh first"))?;
+        let mesh = m
+            .model
+            .mesh()
+            .ok_or_else(|| Error::state("no mesh: call tfem_set_mesh first"))?;
         let nc = m.model.contact_elements().map(|c| c.len()).unwrap_or(0);
         if !n_nodes.is_null() {
             write(n_nodes, mesh.nodes().len() as c_int, "n_nodes")?;
@@ -611,7 +670,11 @@ pub unsafe extern "C" fn tfem_get_sizes(
 /// Copies the nodal displacements (u0 v0 u1 v1 …, 2·n_nodes values) of the
 /// last solve into `out` of `length` values.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_displacements(model: *mut TfemModel, out: *mut f64, length: usize) -> Status {
+pub unsafe extern "C" fn tfem_get_displacements(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
     with_model(model, |m| {
         let u: Vec<f64> = m.model.displacements()?.into_iter().flatten().collect();
         copy_out(&u, out, length, "out")
@@ -621,7 +684,11 @@ pub unsafe extern "C" fn tfem_get_displacements(model: *mut TfemModel, out: *mut
 /// Copies element strains (ε_xx ε_yy γ_xy per triangle, engineering shear,
 /// 3·n_triangles values), computed on request.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_element_strains(model: *mut TfemModel, out: *mut f64, length: usize) -> Status {
+pub unsafe extern "C" fn tfem_get_element_strains(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
     with_model(model, |m| {
         let v: Vec<f64> = m.model.element_strains()?.into_iter().flatten().collect();
         copy_out(&v, out, length, "out")
@@ -631,7 +698,11 @@ pub unsafe extern "C" fn tfem_get_element_strains(model: *mut TfemModel, out: *m
 /// Copies element stresses (σ_xx σ_yy σ_xy per triangle, 3·n_triangles
 /// values), computed on request.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_element_stresses(model: *mut TfemModel, out: *mut f64, length: usize) -> Status {
+pub unsafe extern "C" fn tfem_get_element_stresses(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
     with_model(model, |m| {
         let v: Vec<f64> = m.model.element_stresses()?.into_iter().flatten().collect();
         copy_out(&v, out, length, "out")
@@ -641,7 +712,11 @@ pub unsafe extern "C" fn tfem_get_element_stresses(model: *mut TfemModel, out: *
 /// Copies J (twice the signed area, initial configuration) of every
 /// triangle (n_triangles values). Needs only a mesh.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_element_jacobians(model: *mut TfemModel, out: *mut f64, length: usize) -> Status {
+pub unsafe extern "C" fn tfem_get_element_jacobians(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
     with_model(model, |m| {
         let v = m.model.element_jacobians()?;
         copy_out(&v, out, length, "out")
@@ -651,7 +726,11 @@ pub unsafe extern "C" fn tfem_get_element_jacobians(model: *mut TfemModel, out: 
 /// Copies reaction forces (Rx Ry per node, 2·n_nodes values; zero at DOFs
 /// that are not prescribed), computed on request.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_reactions(model: *mut TfemModel, out: *mut f64, length: usize) -> Status {
+pub unsafe extern "C" fn tfem_get_reactions(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
     with_model(model, |m| {
         let v: Vec<f64> = m.model.reactions()?.into_iter().flatten().collect();
         copy_out(&v, out, length, "out")
@@ -664,14 +743,19 @@ fn jmin_arg(jmin: f64) -> Result<Jmin> {
     } else if jmin.is_finite() && jmin > 0.0 {
         Ok(Jmin::Tempered(jmin))
     } else {
-        Err(Error::argument(format!("jmin = {jmin} must be > 0 (tempered) or 0 (plain FEM)")))
+        Err(Error::argument(format!(
+            "jmin = {jmin} must be > 0 (tempered) or 0 (plain FEM)"
+        )))
     }
 }
 
 fn corners_arg(xy: *const f64) -> Result<[[f64; 2]; 3]> {
     let xy = slice_in(xy, 6, "xy")?;
     if let Some(k) = xy.iter().position(|v| !v.is_finite()) {
-        return Err(Error::argument(format!("xy[{k}] = {} is not finite", xy[k])));
+        return Err(Error::argument(format!(
+            "xy[{k}] = {} is not finite",
+            xy[k]
+        )));
     }
     Ok([[xy[0], xy[1]], [xy[2], xy[3]], [xy[4], xy[5]]])
 }
@@ -712,7 +796,9 @@ pub unsafe extern "C" fn tfem_laplacian_stiffness(
     without_model(|| {
         let x = corners_arg(xy)?;
         if !(kappa.is_finite() && kappa > 0.0) {
-            return Err(Error::argument(format!("kappa = {kappa} must be finite and > 0")));
+            return Err(Error::argument(format!(
+                "kappa = {kappa} must be finite and > 0"
+            )));
         }
         let k = laplacian_stiffness(&TriGeometry::new(&x), kappa, jmin_arg(jmin)?)?;
         let flat: Vec<f64> = k.iter().flatten().copied().collect();
@@ -801,7 +887,11 @@ fn options_in(o: &TfemContactOptions) -> Result<ContactOptions> {
     let law = match o.law {
         0 => ContactLaw::Frictionless,
         1 => ContactLaw::Stick,
-        l => return Err(Error::argument(format!("options.law = {l} must be 0 (frictionless) or 1 (stick)"))),
+        l => {
+            return Err(Error::argument(format!(
+                "options.law = {l} must be 0 (frictionless) or 1 (stick)"
+            )));
+        }
     };
     let test = match o.inversion_test {
         0 => InversionTest::Linearised,
@@ -818,13 +908,20 @@ fn options_in(o: &TfemContactOptions) -> Result<ContactOptions> {
         } else if v.is_finite() && v > 0.0 {
             Ok(Some(v))
         } else {
-            Err(Error::argument(format!("options.{what} = {v} must be > 0, or 0 for the default")))
+            Err(Error::argument(format!(
+                "options.{what} = {v} must be > 0, or 0 for the default"
+            )))
         }
     };
     let max_iterations = usize::try_from(o.max_iterations)
         .ok()
         .filter(|&n| n > 0)
-        .ok_or_else(|| Error::argument(format!("options.max_iterations = {} must be >= 1", o.max_iterations)))?;
+        .ok_or_else(|| {
+            Error::argument(format!(
+                "options.max_iterations = {} must be >= 1",
+                o.max_iterations
+            ))
+        })?;
     Ok(ContactOptions {
         law,
         contact_modulus: opt(o.contact_modulus, "contact_modulus")?,
@@ -861,9 +958,18 @@ pub unsafe extern "C" fn tfem_solve_contact(
 /// Copies the active flag (1 active, 0 not) of every contact element of
 /// the last contact solve (n_contact_elements values, see `tfem_get_sizes`).
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_active(model: *mut TfemModel, out: *mut c_int, length: usize) -> Status {
+pub unsafe extern "C" fn tfem_get_contact_active(
+    model: *mut TfemModel,
+    out: *mut c_int,
+    length: usize,
+) -> Status {
     with_model(model, |m| {
-        let v: Vec<c_int> = m.model.contact_active()?.iter().map(|&a| c_int::from(a)).collect();
+        let v: Vec<c_int> = m
+            .model
+            .contact_active()?
+            .iter()
+            .map(|&a| c_int::from(a))
+            .collect();
         copy_out(&v, out, length, "out")
     })
 }
@@ -871,15 +977,25 @@ pub unsafe extern "C" fn tfem_get_contact_active(model: *mut TfemModel, out: *mu
 /// Copies the contact pressure (positive in compression, 0 when inactive)
 /// of every contact element (n_contact_elements values).
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_pressure(model: *mut TfemModel, out: *mut f64, length: usize) -> Status {
-    with_model(model, |m| copy_out(m.model.contact_pressure()?, out, length, "out"))
+pub unsafe extern "C" fn tfem_get_contact_pressure(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        copy_out(m.model.contact_pressure()?, out, length, "out")
+    })
 }
 
 /// Copies the nodes of every contact element (3·n_contact_elements
 /// indices, in the model's index base), oriented so that J > 0 when the gap
 /// opens.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_elements(model: *mut TfemModel, out: *mut c_int, length: usize) -> Status {
+pub unsafe extern "C" fn tfem_get_contact_elements(
+    model: *mut TfemModel,
+    out: *mut c_int,
+    length: usize,
+) -> Status {
     with_model(model, |m| {
         let b = m.index_base as c_int;
         let v: Vec<c_int> = m
@@ -894,6 +1010,11 @@ pub unsafe extern "C" fn tfem_get_contact_elements(model: *mut TfemModel, out: *
 
 /// Writes the report of the last contact solve to `report`.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_report(model: *mut TfemModel, report: *mut TfemContactReport) -> Status {
-    with_model(model, |m| write(report, report_out(m.model.contact_report()?), "report"))
+pub unsafe extern "C" fn tfem_get_contact_report(
+    model: *mut TfemModel,
+    report: *mut TfemContactReport,
+) -> Status {
+    with_model(model, |m| {
+        write(report, report_out(m.model.contact_report()?), "report")
+    })
 }

@@ -21,13 +21,17 @@ pub fn solve_poisson(
 ) -> Result<Vec<f64>> {
     tempering.validate()?;
     if !(kappa.is_finite() && kappa > 0.0) {
-        return Err(Error::argument(format!("conductivity kappa = {kappa} must be finite and > 0")));
+        return Err(Error::argument(format!(
+            "conductivity kappa = {kappa} must be finite and > 0"
+        )));
     }
     let n = mesh.nodes().len();
     let mut value = vec![f64::NAN; n];
     for &(v, g) in dirichlet {
         if v >= n || !g.is_finite() {
-            return Err(Error::argument(format!("Dirichlet condition on node {v} = {g} is invalid")));
+            return Err(Error::argument(format!(
+                "Dirichlet condition on node {v} = {g} is invalid"
+            )));
         }
         value[v] = g;
     }
@@ -47,8 +51,12 @@ pub fn solve_poisson(
             Tempering::Fixed(j) => Jmin::Tempered(j),
             Tempering::Off => Jmin::Off,
         };
-        let k = laplacian_stiffness(&geo, kappa, jm)
-            .map_err(|err| Error::new(err.status(), format!("{}: {}", mesh.triangle_name(e), err.message())))?;
+        let k = laplacian_stiffness(&geo, kappa, jm).map_err(|err| {
+            Error::new(
+                err.status(),
+                format!("{}: {}", mesh.triangle_name(e), err.message()),
+            )
+        })?;
         let ke: [f64; 9] = std::array::from_fn(|i| k[i / 3][i % 3]);
         pattern.add_element(&mut vals, e, &ke);
         // Load with the true area (zero for flat and inverted elements).
@@ -85,7 +93,10 @@ pub fn solve_poisson(
         }
     }
     chol.solve(&mut rhs)?;
-    let mut u: Vec<f64> = value.iter().map(|v| if v.is_nan() { 0.0 } else { *v }).collect();
+    let mut u: Vec<f64> = value
+        .iter()
+        .map(|v| if v.is_nan() { 0.0 } else { *v })
+        .collect();
     for (f, g) in dofs.free_to_global().into_iter().enumerate() {
         u[g] = rhs[f];
     }

@@ -25,11 +25,16 @@
 //! assert!((u[1][0] - 1e-3).abs() < 1e-15); // σ/E with ν = 0
 //! ```
 
+// Index loops mirror the element formulas (B̂ᵀ D B̂, g_i·g_j) term by term.
+#![allow(clippy::needless_range_loop)]
+#![warn(missing_docs)]
+
 pub mod assembly;
 pub mod contact;
 pub mod element;
 pub mod error;
 pub mod ffi;
+pub mod io;
 pub mod laplace;
 pub mod material;
 pub mod mesh;

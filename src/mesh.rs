@@ -39,7 +39,11 @@ pub struct Mesh {
 const MAX_LISTED: usize = 5;
 
 fn list<T: std::fmt::Display>(items: &[T]) -> String {
-    let shown: Vec<String> = items.iter().take(MAX_LISTED).map(|i| i.to_string()).collect();
+    let shown: Vec<String> = items
+        .iter()
+        .take(MAX_LISTED)
+        .map(|i| i.to_string())
+        .collect();
     let more = if items.len() > MAX_LISTED {
         format!(" and {} more", items.len() - MAX_LISTED)
     } else {
@@ -381,7 +385,11 @@ mod tests {
     fn rejects_repeated_node() {
         let (n, _) = square();
         let e = Mesh::new(n, vec![[0, 1, 2], [2, 3, 2]], vec![1, 1], 0).unwrap_err();
-        assert!(e.message().contains("triangle 1: node 2 is repeated"), "{}", e.message());
+        assert!(
+            e.message().contains("triangle 1: node 2 is repeated"),
+            "{}",
+            e.message()
+        );
     }
 
     #[test]
@@ -434,7 +442,9 @@ mod tests {
         m.set_boundary_edges(&[[0, 1]], &[1]).unwrap();
         let e = m.set_boundary_edges(&[[1, 3]], &[1]).unwrap_err();
         assert!(e.message().contains("not a side"), "{}", e.message());
-        let e = m.set_boundary_edges(&[[0, 1], [1, 2], [1, 7]], &[1, 1, 1]).unwrap_err();
+        let e = m
+            .set_boundary_edges(&[[0, 1], [1, 2], [1, 7]], &[1, 1, 1])
+            .unwrap_err();
         assert!(e.message().contains("boundary edge 2"), "{}", e.message());
         assert_eq!(m.boundary_edges().len(), 1);
     }

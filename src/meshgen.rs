@@ -41,7 +41,11 @@ pub fn subdivide(a: f64, b: f64, stops: &[f64], h: f64) -> Vec<f64> {
 /// is always a node).
 pub fn subdivide_symmetric(a: f64, b: f64, stops: &[f64], h: f64) -> Vec<f64> {
     let mid = 0.5 * (a + b);
-    let left: Vec<f64> = stops.iter().copied().filter(|&s| s > a && s < mid).collect();
+    let left: Vec<f64> = stops
+        .iter()
+        .copied()
+        .filter(|&s| s > a && s < mid)
+        .collect();
     let half = subdivide(a, mid, &left, h);
     let mut out = half.clone();
     for x in half.iter().rev().skip(1) {
@@ -78,7 +82,13 @@ impl MeshBuilder {
     /// Adds the tensor grid xs × ys as its own nodes (so two grids sharing a
     /// line have coincident, distinct nodes there) and splits every cell.
     /// Returns the node indices by row: `rows[j][i]` is at (xs[i], ys[j]).
-    pub fn add_grid(&mut self, xs: &[f64], ys: &[f64], body: i32, diagonal: Diagonal) -> Vec<Vec<usize>> {
+    pub fn add_grid(
+        &mut self,
+        xs: &[f64],
+        ys: &[f64],
+        body: i32,
+        diagonal: Diagonal,
+    ) -> Vec<Vec<usize>> {
         let rows: Vec<Vec<usize>> = ys
             .iter()
             .map(|&y| xs.iter().map(|&x| self.add_node([x, y])).collect())
@@ -144,7 +154,11 @@ impl MeshBuilder {
                     .or_insert((1, [p, q]));
             }
         }
-        let mut out: Vec<[usize; 2]> = count.into_values().filter(|e| e.0 == 1).map(|e| e.1).collect();
+        let mut out: Vec<[usize; 2]> = count
+            .into_values()
+            .filter(|e| e.0 == 1)
+            .map(|e| e.1)
+            .collect();
         out.sort_unstable();
         out
     }
@@ -207,7 +221,10 @@ mod tests {
     fn subdivide_hits_breakpoints_and_respects_spacing() {
         let x = subdivide(0.0, 1.0, &[0.3, 0.5], 0.12);
         assert!(x.contains(&0.3) && x.contains(&0.5));
-        assert!(x.windows(2).all(|w| w[1] - w[0] <= 0.12 + 1e-12 && w[1] > w[0]));
+        assert!(
+            x.windows(2)
+                .all(|w| w[1] - w[0] <= 0.12 + 1e-12 && w[1] > w[0])
+        );
     }
 
     #[test]

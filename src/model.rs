@@ -12,10 +12,12 @@ use std::time::Instant;
 
 use crate::assembly::{DofMap, NOT_FREE, Pattern};
 use crate::contact::{
-    self, ContactElement, ContactLaw, ContactOptions, ContactPair, InversionTest,
-    contact_pressure, contact_stiffness, law_matrix, linearised_jacobian,
+    self, ContactElement, ContactLaw, ContactOptions, ContactPair, InversionTest, contact_pressure,
+    contact_stiffness, law_matrix, linearised_jacobian,
 };
-use crate::element::{Jmin, Tempering, TriGeometry, b_hat, elasticity_stiffness, tempered_jacobian};
+use crate::element::{
+    Jmin, Tempering, TriGeometry, b_hat, elasticity_stiffness, tempered_jacobian,
+};
 use crate::error::{Error, Result, Status};
 use crate::material::Material;
 use crate::mesh::Mesh;
@@ -107,7 +109,10 @@ fn finite2(v: [f64; 2], what: &str) -> Result<()> {
     if v[0].is_finite() && v[1].is_finite() {
         Ok(())
     } else {
-        Err(Error::argument(format!("{what} ({}, {}) is not finite", v[0], v[1])))
+        Err(Error::argument(format!(
+            "{what} ({}, {}) is not finite",
+            v[0], v[1]
+        )))
     }
 }
 
@@ -197,7 +202,10 @@ impl Model {
             if mesh.bodies().binary_search(&body).is_err() {
                 return Err(Error::new(
                     Status::InvalidMaterial,
-                    format!("body {body} is not in the mesh (bodies: {:?})", mesh.bodies()),
+                    format!(
+                        "body {body} is not in the mesh (bodies: {:?})",
+                        mesh.bodies()
+                    ),
                 ));
             }
         }
@@ -315,7 +323,9 @@ impl Model {
     /// body) on the edges tagged `tag`. Loads add up.
     pub fn add_pressure(&mut self, tag: i32, pressure: f64) -> Result<()> {
         if !pressure.is_finite() {
-            return Err(Error::argument(format!("pressure {pressure} is not finite")));
+            return Err(Error::argument(format!(
+                "pressure {pressure} is not finite"
+            )));
         }
         self.check_loaded_tag(tag)?;
         self.edge_loads.push((tag, EdgeLoad::Pressure(pressure)));
@@ -567,7 +577,9 @@ impl Model {
                 let t = match load {
                     EdgeLoad::Traction(t) => t,
                     EdgeLoad::Pressure(pr) => {
-                        let n = mesh.outward_normal(e).expect("checked when the load was added");
+                        let n = mesh
+                            .outward_normal(e)
+                            .expect("checked when the load was added");
                         [-pr * n[0], -pr * n[1]]
                     }
                 };
@@ -694,7 +706,17 @@ impl Model {
                 )
             })?;
             let ke: [f64; 36] = std::array::from_fn(|i| k[i / 6][i % 6]);
-            Self::scatter(dofs, pattern, &mut values_body, &mut rhs_body, e, tri, &ke, None, &up);
+            Self::scatter(
+                dofs,
+                pattern,
+                &mut values_body,
+                &mut rhs_body,
+                e,
+                tri,
+                &ke,
+                None,
+                &up,
+            );
         }
         timings.assembly += t0.elapsed().as_secs_f64();
         if let (n, Some(e)) = softened {
@@ -750,10 +772,21 @@ impl Model {
                 let soft = if mb.young() < ma.young() { mb } else { ma };
                 let e_c = opts.contact_modulus.unwrap_or(soft.young());
                 let d = match opts.law {
-                    ContactLaw::Frictionless => law_matrix(ContactLaw::Frictionless, e_c, 0.0, el.normal),
-                    ContactLaw::Stick => Material::new(e_c, soft.poisson(), soft.plane(), "contact")
-                        .map(|m| m.d_matrix())
-                        .unwrap_or_else(|_| law_matrix(ContactLaw::Stick, e_c, soft.poisson().min(0.49), el.normal)),
+                    ContactLaw::Frictionless => {
+                        law_matrix(ContactLaw::Frictionless, e_c, 0.0, el.normal)
+                    }
+                    ContactLaw::Stick => {
+                        Material::new(e_c, soft.poisson(), soft.plane(), "contact")
+                            .map(|m| m.d_matrix())
+                            .unwrap_or_else(|_| {
+                                law_matrix(
+                                    ContactLaw::Stick,
+                                    e_c,
+                                    soft.poisson().min(0.49),
+                                    el.normal,
+                                )
+                            })
+                    }
                 };
                 let t = match Jmin::from_lambda(el.h, lambda_c) {
                     Jmin::Tempered(t) => t,
@@ -762,10 +795,17 @@ impl Model {
                 ContactParams { d, t }
             })
             .collect();
-        if let Some((k, _)) = params.iter().enumerate().find(|(_, p)| !(p.t > 0.0 && p.t.is_finite())) {
+        if let Some((k, _)) = params
+            .iter()
+            .enumerate()
+            .find(|(_, p)| !(p.t > 0.0 && p.t.is_finite()))
+        {
             return Err(Error::new(
                 Status::NumericalFailure,
-                format!("contact element {}: Jmin = h³/λ is not a positive finite number", k + mesh.index_base()),
+                format!(
+                    "contact element {}: Jmin = h³/λ is not a positive finite number",
+                    k + mesh.index_base()
+                ),
             ));
         }
         let geos: Vec<TriGeometry> = contact
@@ -790,13 +830,24 @@ impl Model {
                     continue;
                 }
                 let cs = contact_stiffness(&geos[k], &params[k].d, el.normal, el.j0, params[k].t);
-                Self::scatter(dofs, pattern, &mut values, &mut rhs, n_body + k, &el.nodes, &cs.k, Some(&cs.f0), &up);
+                Self::scatter(
+                    dofs,
+                    pattern,
+                    &mut values,
+                    &mut rhs,
+                    n_body + k,
+                    &el.nodes,
+                    &cs.k,
+                    Some(&cs.f0),
+                    &up,
+                );
             }
             timings.assembly += t0.elapsed().as_secs_f64();
             let n_active = active.iter().filter(|&&a| a).count();
             let context = format!(" (contact iteration {it}, {n_active} active contact elements)");
-            let (u, values, rhs) =
-                self.factor_and_solve(dofs, pattern, chol, values, rhs, &up, timings, &mut info, &context)?;
+            let (u, values, rhs) = self.factor_and_solve(
+                dofs, pattern, chol, values, rhs, &up, timings, &mut info, &context,
+            )?;
             let next: Vec<bool> = contact
                 .iter()
                 .enumerate()
@@ -816,8 +867,16 @@ impl Model {
                     j < 0.0
                 })
                 .collect();
-            let on = next.iter().zip(&active).filter(|(n, a)| **n && !**a).count();
-            let off = next.iter().zip(&active).filter(|(n, a)| !**n && **a).count();
+            let on = next
+                .iter()
+                .zip(&active)
+                .filter(|(n, a)| **n && !**a)
+                .count();
+            let off = next
+                .iter()
+                .zip(&active)
+                .filter(|(n, a)| !**n && **a)
+                .count();
             history.push(IterationRecord {
                 active: n_active,
                 switched_on: on,
@@ -860,7 +919,8 @@ impl Model {
                 continue;
             }
             let ue = element_u(&u, &el.nodes);
-            pressure[k] = contact_pressure(&geos[k], &params[k].d, el.normal, el.j0, params[k].t, &ue);
+            pressure[k] =
+                contact_pressure(&geos[k], &params[k].d, el.normal, el.j0, params[k].t, &ue);
             lc += 0.5 * el.edge_length;
             let opening = linearised_jacobian(&geos[k], &ue);
             if el.edge_length > 0.0 {
@@ -935,9 +995,9 @@ impl Model {
     }
 
     fn solved(&self) -> Result<&Solved> {
-        self.solved
-            .as_ref()
-            .ok_or_else(|| Error::state("no results: solve the model first (results are discarded by any change)"))
+        self.solved.as_ref().ok_or_else(|| {
+            Error::state("no results: solve the model first (results are discarded by any change)")
+        })
     }
 
     /// Nodal displacements [u, v] of the last solve.
@@ -974,7 +1034,9 @@ impl Model {
                 };
                 let b = b_hat(&geo);
                 let ue = element_u(&s.u, &mesh.triangles()[e]);
-                Ok(std::array::from_fn(|r| (0..6).map(|c| b[r][c] * ue[c]).sum::<f64>() / t))
+                Ok(std::array::from_fn(|r| {
+                    (0..6).map(|c| b[r][c] * ue[c]).sum::<f64>() / t
+                }))
             })
             .collect()
     }
@@ -1032,7 +1094,8 @@ impl Model {
             for (k, el) in cache.contact.iter().enumerate() {
                 if c.active[k] {
                     let geo = TriGeometry::new(&mesh.corners(&el.nodes));
-                    let cs = contact_stiffness(&geo, &c.params[k].d, el.normal, el.j0, c.params[k].t);
+                    let cs =
+                        contact_stiffness(&geo, &c.params[k].d, el.normal, el.j0, c.params[k].t);
                     add(&el.nodes, &cs.k, Some(&cs.f0));
                 }
             }
@@ -1096,7 +1159,9 @@ fn singular_error(mesh: &Mesh, dofs: &DofMap, e: FactorError, context: &str) -> 
             Status::Singular,
             format!("the stiffness matrix is indefinite{context}"),
         ),
-        FactorError::Singular { mode: Some(mode), .. } => {
+        FactorError::Singular {
+            mode: Some(mode), ..
+        } => {
             let n = mesh.nodes().len();
             let mut m = vec![0.0; 2 * n];
             for (f, &g) in free_to_global.iter().enumerate() {
@@ -1104,7 +1169,10 @@ fn singular_error(mesh: &Mesh, dofs: &DofMap, e: FactorError, context: &str) -> 
             }
             Error::new(
                 Status::Singular,
-                format!("singular stiffness matrix: {}{context}", describe_mode(mesh, &m)),
+                format!(
+                    "singular stiffness matrix: {}{context}",
+                    describe_mode(mesh, &m)
+                ),
             )
         }
     }
@@ -1133,7 +1201,12 @@ fn memory(pattern: &Pattern, chol: &Cholesky) -> usize {
 fn format_history(h: &[IterationRecord]) -> String {
     let items: Vec<String> = h
         .iter()
-        .map(|r| format!("[active {}, +{}, -{}]", r.active, r.switched_on, r.switched_off))
+        .map(|r| {
+            format!(
+                "[active {}, +{}, -{}]",
+                r.active, r.switched_on, r.switched_off
+            )
+        })
         .collect();
     items.join(" ")
 }
@@ -1147,10 +1220,16 @@ fn describe_mode(mesh: &Mesh, m: &[f64]) -> String {
         }
     }
     let total: f64 = share.values().sum();
-    let mut ranked: Vec<(i32, f64)> = share.into_iter().map(|(b, s)| (b, s / total.max(f64::MIN_POSITIVE))).collect();
+    let mut ranked: Vec<(i32, f64)> = share
+        .into_iter()
+        .map(|(b, s)| (b, s / total.max(f64::MIN_POSITIVE)))
+        .collect();
     ranked.sort_by(|a, b| b.1.total_cmp(&a.1));
     let top = ranked[0].1;
-    let named: Vec<(i32, f64)> = ranked.into_iter().filter(|&(_, s)| s >= 0.1 * top).collect();
+    let named: Vec<(i32, f64)> = ranked
+        .into_iter()
+        .filter(|&(_, s)| s >= 0.1 * top)
+        .collect();
     let mut parts = Vec::new();
     for &(body, _) in &named {
         // Fractions of the body's motion that are rigid translations and
@@ -1160,7 +1239,10 @@ fn describe_mode(mesh: &Mesh, m: &[f64]) -> String {
             .collect();
         let nn = nodes.len() as f64;
         let c = nodes.iter().fold([0.0, 0.0], |acc, &v| {
-            [acc[0] + mesh.nodes()[v][0] / nn, acc[1] + mesh.nodes()[v][1] / nn]
+            [
+                acc[0] + mesh.nodes()[v][0] / nn,
+                acc[1] + mesh.nodes()[v][1] / nn,
+            ]
         });
         let (mut tx, mut ty, mut rot, mut rr, mut e) = (0.0, 0.0, 0.0, 0.0, 0.0);
         for &v in &nodes {
@@ -1179,7 +1261,11 @@ fn describe_mode(mesh: &Mesh, m: &[f64]) -> String {
             "a mechanism that is not a rigid motion".to_string()
         } else {
             let mut k = Vec::new();
-            for (f, name) in [(fx, "translation in x"), (fy, "translation in y"), (fr, "rotation")] {
+            for (f, name) in [
+                (fx, "translation in x"),
+                (fy, "translation in y"),
+                (fr, "rotation"),
+            ] {
                 if f >= 0.05 {
                     k.push(format!("{:.0}% {name}", 100.0 * f));
                 }

@@ -5,12 +5,12 @@
 //! x = L/2 ± C, mirror-symmetric about x = L/2.
 
 use crate::contact::ContactOptions;
+use crate::element::Tempering;
 use crate::error::{Error, Result};
 use crate::material::{Material, PlaneMode};
 use crate::meshgen::{Diagonal, MeshBuilder, subdivide, subdivide_symmetric};
 use crate::model::{Component, Model};
 use crate::solution::ContactReport;
-use crate::element::Tempering;
 
 /// Tag of the supported segment of the lower body's bottom edge.
 pub const TAG_SUPPORT: i32 = 1;
@@ -126,7 +126,10 @@ impl TwoBlocks {
         let mid = 0.5 * l;
         let xs = subdivide_symmetric(0.0, l, &[mid - c, mid + c], h);
         let ys1 = subdivide(-self.h1, 0.0, &[], h);
-        let ys2: Vec<f64> = subdivide(0.0, self.h2, &[], h).iter().map(|y| y + self.gap).collect();
+        let ys2: Vec<f64> = subdivide(0.0, self.h2, &[], h)
+            .iter()
+            .map(|y| y + self.gap)
+            .collect();
         let mut b = MeshBuilder::new();
         let lower = b.add_grid(&xs, &ys1, 1, Diagonal::MirroredAt(mid));
         let n_lower_nodes = b.nodes.len();
@@ -138,25 +141,29 @@ impl TwoBlocks {
         for e in b.boundary_edges() {
             let (p, q) = (b.nodes[e[0]], b.nodes[e[1]]);
             let in_lower = e[0] < n_lower_nodes;
-            let tag = if in_lower && p[1] == -self.h1 && q[1] == -self.h1 && loaded(p[0]) && loaded(q[0]) {
-                TAG_SUPPORT
-            } else if in_lower && p[1] == 0.0 && q[1] == 0.0 {
-                TAG_CONTACT_LOWER
-            } else if !in_lower && p[1] == ys2[0] && q[1] == ys2[0] {
-                TAG_CONTACT_UPPER
-            } else if !in_lower && p[1] == ys2[ys2.len() - 1] && q[1] == p[1] && loaded(p[0]) && loaded(q[0]) {
-                TAG_LOAD
-            } else {
-                continue;
-            };
+            let tag =
+                if in_lower && p[1] == -self.h1 && q[1] == -self.h1 && loaded(p[0]) && loaded(q[0])
+                {
+                    TAG_SUPPORT
+                } else if in_lower && p[1] == 0.0 && q[1] == 0.0 {
+                    TAG_CONTACT_LOWER
+                } else if !in_lower && p[1] == ys2[0] && q[1] == ys2[0] {
+                    TAG_CONTACT_UPPER
+                } else if !in_lower
+                    && p[1] == ys2[ys2.len() - 1]
+                    && q[1] == p[1]
+                    && loaded(p[0])
+                    && loaded(q[0])
+                {
+                    TAG_LOAD
+                } else {
+                    continue;
+                };
             edges.push(e);
             tags.push(tag);
         }
-        let symmetric_nodes: Vec<usize> = lower
-            .iter()
-            .chain(&upper)
-            .map(|row| row[i_mid])
-            .collect();
+        let symmetric_nodes: Vec<usize> =
+            lower.iter().chain(&upper).map(|row| row[i_mid]).collect();
         let corner_lower = lower[lower.len() - 1][0];
         let corner_upper = upper[0][0];
         let top_center = upper[upper.len() - 1][i_mid];

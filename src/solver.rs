@@ -74,13 +74,8 @@ impl Cholesky {
     /// Symbolic analysis (AMD fill-reducing ordering) of `pattern`.
     pub fn analyse(pattern: &Pattern) -> Result<Cholesky> {
         let n = pattern.n();
-        let sym = SymbolicSparseColMatRef::new_checked(
-            n,
-            n,
-            pattern.col_ptr(),
-            None,
-            pattern.row_idx(),
-        );
+        let sym =
+            SymbolicSparseColMatRef::new_checked(n, n, pattern.col_ptr(), None, pattern.row_idx());
         let symbolic = factorize_symbolic_cholesky(
             sym,
             Side::Upper,
@@ -89,8 +84,7 @@ impl Cholesky {
         )
         .map_err(|_| oom("symbolic analysis"))?;
         let par = Par::rayon(0);
-        let factor_req =
-            symbolic.factorize_numeric_llt_scratch::<f64>(par, Default::default());
+        let factor_req = symbolic.factorize_numeric_llt_scratch::<f64>(par, Default::default());
         let solve_req = symbolic.solve_in_place_scratch::<f64>(1, par);
         let factor_mem = MemBuffer::try_new(factor_req).map_err(|_| oom("workspace"))?;
         let solve_mem = MemBuffer::try_new(solve_req).map_err(|_| oom("workspace"))?;
@@ -228,8 +222,7 @@ impl Cholesky {
             shifted = v;
             &shifted
         };
-        let sym =
-            SymbolicSparseColMatRef::new_checked(n, n, cp, None, pattern.row_idx());
+        let sym = SymbolicSparseColMatRef::new_checked(n, n, cp, None, pattern.row_idx());
         let a = SparseColMatRef::new(sym, vals);
         let stack = MemStack::new(&mut self.factor_mem);
         self.symbolic
@@ -332,7 +325,11 @@ mod tests {
         c.solve(&mut b).unwrap();
         let mut r = vec![0.0; 50];
         p.sym_mul(&v, &b, &mut r);
-        let err: f64 = r.iter().zip(&rhs).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+        let err: f64 = r
+            .iter()
+            .zip(&rhs)
+            .map(|(a, b)| (a - b).abs())
+            .fold(0.0, f64::max);
         assert!(err < 1e-10, "{err}");
         assert!(c.condition_estimate() > 1.0);
     }

@@ -13,12 +13,36 @@ use crate::model::{Component, Model};
 
 /// Barycentric coordinates of a degree-4 rule on triangles (Dunavant, 6 points).
 pub const QUAD_POINTS: [[f64; 3]; 6] = [
-    [0.108_103_018_168_070, 0.445_948_490_915_965, 0.445_948_490_915_965],
-    [0.445_948_490_915_965, 0.108_103_018_168_070, 0.445_948_490_915_965],
-    [0.445_948_490_915_965, 0.445_948_490_915_965, 0.108_103_018_168_070],
-    [0.816_847_572_980_459, 0.091_576_213_509_771, 0.091_576_213_509_771],
-    [0.091_576_213_509_771, 0.816_847_572_980_459, 0.091_576_213_509_771],
-    [0.091_576_213_509_771, 0.091_576_213_509_771, 0.816_847_572_980_459],
+    [
+        0.108_103_018_168_070,
+        0.445_948_490_915_965,
+        0.445_948_490_915_965,
+    ],
+    [
+        0.445_948_490_915_965,
+        0.108_103_018_168_070,
+        0.445_948_490_915_965,
+    ],
+    [
+        0.445_948_490_915_965,
+        0.445_948_490_915_965,
+        0.108_103_018_168_070,
+    ],
+    [
+        0.816_847_572_980_459,
+        0.091_576_213_509_771,
+        0.091_576_213_509_771,
+    ],
+    [
+        0.091_576_213_509_771,
+        0.816_847_572_980_459,
+        0.091_576_213_509_771,
+    ],
+    [
+        0.091_576_213_509_771,
+        0.091_576_213_509_771,
+        0.816_847_572_980_459,
+    ],
 ];
 
 /// Weights of [`QUAD_POINTS`], summing to 1 (multiply by the area).
@@ -58,7 +82,12 @@ pub fn nodal_loads(mesh: &Mesh, body_force: impl Fn([f64; 2]) -> [f64; 2]) -> Ve
 
 /// L2 norm of (exact − discrete) for a P1 field with `ncomp` components per
 /// node stored node-major in `uh`.
-pub fn l2_error(mesh: &Mesh, uh: &[f64], ncomp: usize, exact: impl Fn([f64; 2]) -> Vec<f64>) -> f64 {
+pub fn l2_error(
+    mesh: &Mesh,
+    uh: &[f64],
+    ncomp: usize,
+    exact: impl Fn([f64; 2]) -> Vec<f64>,
+) -> f64 {
     let mut sum = 0.0;
     for tri in mesh.triangles() {
         let x = mesh.corners(tri);
@@ -105,7 +134,9 @@ pub fn h1_error(
         for (q, w) in QUAD_POINTS.iter().zip(QUAD_WEIGHTS) {
             let ex = exact_grad(point(&x, q));
             for c in 0..ncomp {
-                sum += w * area * ((ex[c][0] - grads[c][0]).powi(2) + (ex[c][1] - grads[c][1]).powi(2));
+                sum += w
+                    * area
+                    * ((ex[c][0] - grads[c][0]).powi(2) + (ex[c][1] - grads[c][1]).powi(2));
             }
         }
     }
@@ -181,7 +212,10 @@ impl ManufacturedElasticity {
     pub fn displacement(&self, p: [f64; 2]) -> [f64; 2] {
         let pi = std::f64::consts::PI;
         let (x, y) = (p[0], p[1]);
-        [(pi * x).sin() * (pi * y).sin(), (2.0 * pi * x).sin() * (pi * y).sin()]
+        [
+            (pi * x).sin() * (pi * y).sin(),
+            (2.0 * pi * x).sin() * (pi * y).sin(),
+        ]
     }
 
     /// The exact gradient [[u_x, u_y], [v_x, v_y]].
@@ -189,7 +223,10 @@ impl ManufacturedElasticity {
         let pi = std::f64::consts::PI;
         let (x, y) = (p[0], p[1]);
         [
-            [pi * (pi * x).cos() * (pi * y).sin(), pi * (pi * x).sin() * (pi * y).cos()],
+            [
+                pi * (pi * x).cos() * (pi * y).sin(),
+                pi * (pi * x).sin() * (pi * y).cos(),
+            ],
             [
                 2.0 * pi * (2.0 * pi * x).cos() * (pi * y).sin(),
                 pi * (2.0 * pi * x).sin() * (pi * y).cos(),
@@ -284,7 +321,11 @@ pub fn run_manufactured_elasticity(
 
 /// Solves −Δu = 2π² sin πx sin πy (exact u = sin πx sin πy, zero on the
 /// boundary of the unit square) on the mesh of `builder`.
-pub fn run_manufactured_laplace(builder: MeshBuilder, h: f64, tempering: Tempering) -> Result<StudyPoint> {
+pub fn run_manufactured_laplace(
+    builder: MeshBuilder,
+    h: f64,
+    tempering: Tempering,
+) -> Result<StudyPoint> {
     let pi = std::f64::consts::PI;
     let exact = move |p: [f64; 2]| (pi * p[0]).sin() * (pi * p[1]).sin();
     let fixed: Vec<(usize, f64)> = boundary_nodes(&builder)
@@ -297,7 +338,10 @@ pub fn run_manufactured_laplace(builder: MeshBuilder, h: f64, tempering: Temperi
     let seconds = t0.elapsed().as_secs_f64();
     let l2 = l2_error(&mesh, &uh, 1, |p| vec![exact(p)]);
     let energy = h1_error(&mesh, &uh, 1, |p| {
-        vec![[pi * (pi * p[0]).cos() * (pi * p[1]).sin(), pi * (pi * p[0]).sin() * (pi * p[1]).cos()]]
+        vec![[
+            pi * (pi * p[0]).cos() * (pi * p[1]).sin(),
+            pi * (pi * p[0]).sin() * (pi * p[1]).cos(),
+        ]]
     });
     Ok(StudyPoint {
         h,

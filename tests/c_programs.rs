@@ -12,7 +12,10 @@ fn root() -> PathBuf {
 /// target/<profile>, where cargo puts libtfem.so next to the deps folder.
 fn lib_dir() -> PathBuf {
     let exe = std::env::current_exe().expect("test executable path");
-    exe.parent().and_then(Path::parent).expect("target/<profile>").to_path_buf()
+    exe.parent()
+        .and_then(Path::parent)
+        .expect("target/<profile>")
+        .to_path_buf()
 }
 
 fn compiler(cpp: bool) -> Command {
@@ -82,7 +85,10 @@ pub fn build(source: &str, extra: &[&str]) -> PathBuf {
 }
 
 pub fn run(exe: &Path, args: &[&str]) -> String {
-    let out = Command::new(exe).args(args).output().expect("run the test program");
+    let out = Command::new(exe)
+        .args(args)
+        .output()
+        .expect("run the test program");
     let stdout = String::from_utf8_lossy(&out.stdout).to_string();
     println!("{stdout}");
     assert!(
@@ -109,7 +115,99 @@ fn element_matrices_match_the_independent_eigen_implementation() {
         eigen.exists(),
         "Eigen is missing: install Debian's libeigen3-dev (the README's test command does)"
     );
-    let exe = build("element_reference.cpp", &["-std=c++17", "-I/usr/include/eigen3", "-Wno-deprecated-copy"]);
+    let exe = build(
+        "element_reference.cpp",
+        &[
+            "-std=c++17",
+            "-I/usr/include/eigen3",
+            "-Wno-deprecated-copy",
+        ],
+    );
     let out = run(&exe, &[]);
     assert!(out.contains(" 0 failed"), "{out}");
+}
+
+#[test]
+fn two_blocks_through_the_c_abi_matches_rust() {
+    use std::fmt::Write;
+    use tfem::scenes::{TAG_CONTACT_LOWER, TAG_CONTACT_UPPER, TAG_LOAD, TwoBlocks};
+
+    let scene = TwoBlocks {
+        mesh_size: 1.0 / 32.0,
+        ..Default::default()
+    };
+    let mut s = scene.build().unwrap();
+    let r = s.solve(&tfem::ContactOptions::default()).unwrap();
+
+    let mesh = s.model.mesh().unwrap();
+    let mut text = String::new();
+    writeln!(text, "nodes {}", mesh.nodes().len()).unwrap();
+    for p in mesh.nodes() {
+        writeln!(text, "{:e} {:e}", p[0], p[1]).unwrap();
+    }
+    writeln!(text, "triangles {}", mesh.triangles().len()).unwrap();
+    for (t, b) in mesh.triangles().iter().zip(mesh.body_of()) {
+        writeln!(text, "{} {} {} {b}", t[0], t[1], t[2]).unwrap();
+    }
+    writeln!(text, "edges {}", mesh.boundary_edges().len()).unwrap();
+    for e in mesh.boundary_edges() {
+        writeln!(text, "{} {} {}", e.nodes[0], e.nodes[1], e.tag).unwrap();
+    }
+    writeln!(text, "materials 2").unwrap();
+    for b in [1, 2] {
+        let m = s.model.material(b).unwrap();
+        writeln!(
+            text,
+            "{b} {:e} {:e} {}",
+            m.young(),
+            m.poisson(),
+            m.plane() as i32
+        )
+        .unwrap();
+    }
+    let fixed: Vec<(usize, f64)> = s.model.constraints().collect();
+    writeln!(text, "fixed {}", fixed.len()).unwrap();
+    for (g, v) in fixed {
+        writeln!(text, "{} {} {v:e}", g / 2, g % 2).unwrap();
+    }
+    writeln!(text, "pressures 1\n{TAG_LOAD} {:e}", scene.p).unwrap();
+    writeln!(text, "contact 2\n{TAG_CONTACT_LOWER} {TAG_CONTACT_UPPER}").unwrap();
+    writeln!(
+        text,
+        "probes 3\n{} {} {}",
+        s.corner_lower, s.corner_upper, s.top_center
+    )
+    .unwrap();
+    let file = lib_dir().join("c_tests").join("two_blocks_scene.txt");
+    std::fs::create_dir_all(file.parent().unwrap()).unwrap();
+    std::fs::write(&file, text).unwrap();
+
+    let exe = build("two_blocks_c.c", &["-std=c11"]);
+    let out = run(&exe, &[file.to_str().unwrap()]);
+    let value = |name: &str| -> f64 {
+        out.lines()
+            .find_map(|l| l.strip_prefix(&format!("{name} ")))
+            .unwrap_or_else(|| panic!("{name} missing in {out}"))
+            .trim()
+            .parse()
+            .unwrap()
+    };
+    let same = |a: f64, b: f64| (a - b).abs() <= 1e-12 * a.abs().max(b.abs());
+    assert!(same(value("lc"), r.lc), "{} vs {}", value("lc"), r.lc);
+    assert!(
+        same(value("gap_edge"), r.gap_edge),
+        "{} vs {}",
+        value("gap_edge"),
+        r.gap_edge
+    );
+    assert!(
+        same(value("v_top"), r.v_top),
+        "{} vs {}",
+        value("v_top"),
+        r.v_top
+    );
+    assert!(same(value("max_penetration"), r.report.max_penetration));
+    assert_eq!(value("iterations") as usize, r.report.iterations);
+    assert_eq!(value("active") as usize, r.report.active);
+    assert_eq!(value("unknowns") as usize, r.report.info.unknowns);
 }

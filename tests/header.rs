@@ -37,7 +37,12 @@ fn header_documents_every_function() {
     let lines: Vec<&str> = fresh.lines().collect();
     for (i, line) in lines.iter().enumerate() {
         if line.contains(" tfem_") && line.contains('(') && !line.trim_start().starts_with('*') {
-            let previous = lines[..i].iter().rev().find(|l| !l.trim().is_empty()).copied().unwrap_or("");
+            let previous = lines[..i]
+                .iter()
+                .rev()
+                .find(|l| !l.trim().is_empty())
+                .copied()
+                .unwrap_or("");
             assert!(
                 previous.trim_end().ends_with("*/"),
                 "function without documentation in the header: {line}"

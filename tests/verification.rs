@@ -3,7 +3,9 @@
 //! (bands of flattened triangles).
 
 use tfem::meshgen::{Diagonal, MeshBuilder, unit_square};
-use tfem::verification::{StudyPoint, fitted_rate, run_manufactured_elasticity, run_manufactured_laplace};
+use tfem::verification::{
+    StudyPoint, fitted_rate, run_manufactured_elasticity, run_manufactured_laplace,
+};
 use tfem::{Component, Material, Model, PlaneMode, Tempering};
 
 fn steel_like() -> Material {
@@ -18,7 +20,9 @@ fn irregular_square() -> MeshBuilder {
     b.add_grid(&xs, &xs, 1, Diagonal::MirroredAt(0.5));
     let mut state = 12345u64;
     let mut next = || {
-        state = state.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
         (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
     };
     for p in b.nodes.iter_mut() {
@@ -42,7 +46,12 @@ fn patch_test_reproduces_a_linear_field_to_round_off_on_an_irregular_mesh() {
     let b = irregular_square();
     let boundary: Vec<usize> = b.boundary_edges().into_iter().flatten().collect();
     let mesh = b.build().unwrap();
-    let exact = |p: [f64; 2]| [1e-3 + 2e-3 * p[0] - 1e-3 * p[1], -5e-4 + 1e-3 * p[0] + 3e-3 * p[1]];
+    let exact = |p: [f64; 2]| {
+        [
+            1e-3 + 2e-3 * p[0] - 1e-3 * p[1],
+            -5e-4 + 1e-3 * p[0] + 3e-3 * p[1],
+        ]
+    };
     let mut model = Model::new();
     let nodes = mesh.nodes().to_vec();
     model.set_mesh(mesh);
@@ -65,7 +74,11 @@ fn patch_test_reproduces_a_linear_field_to_round_off_on_an_irregular_mesh() {
     assert!(err < 1e-15, "nodal error {err}");
     // Uniform strain [2e-3, 3e-3, 0] and the matching uniform stress.
     let d = steel_like().d_matrix();
-    let sigma = [d[0][0] * 2e-3 + d[0][1] * 3e-3, d[1][0] * 2e-3 + d[1][1] * 3e-3, 0.0];
+    let sigma = [
+        d[0][0] * 2e-3 + d[0][1] * 3e-3,
+        d[1][0] * 2e-3 + d[1][1] * 3e-3,
+        0.0,
+    ];
     for s in model.element_stresses().unwrap() {
         for k in 0..3 {
             assert!((s[k] - sigma[k]).abs() < 1e-14, "{s:?} vs {sigma:?}");
@@ -85,7 +98,11 @@ fn patch_test_transmits_uniform_traction_on_an_irregular_mesh() {
     let mut model = Model::new();
     model.set_mesh(mesh);
     model.set_material(1, steel_like()).unwrap();
-    let tags: Vec<i32> = left.iter().map(|_| 1).chain(right.iter().map(|_| 2)).collect();
+    let tags: Vec<i32> = left
+        .iter()
+        .map(|_| 1)
+        .chain(right.iter().map(|_| 2))
+        .collect();
     let edges: Vec<[usize; 2]> = left.iter().chain(&right).copied().collect();
     model.set_boundary_edges(&edges, &tags).unwrap();
     model.set_tempering(Tempering::Lambda(1e3)).unwrap();
@@ -96,11 +113,17 @@ fn patch_test_transmits_uniform_traction_on_an_irregular_mesh() {
     model.fix(top_left, Component::X, 0.0).unwrap();
     model.solve().unwrap();
     for s in model.element_stresses().unwrap() {
-        assert!((s[0] - 1.0).abs() < 1e-12 && s[1].abs() < 1e-12 && s[2].abs() < 1e-12, "{s:?}");
+        assert!(
+            (s[0] - 1.0).abs() < 1e-12 && s[1].abs() < 1e-12 && s[2].abs() < 1e-12,
+            "{s:?}"
+        );
     }
     let r = model.reactions().unwrap();
     let total: f64 = r.iter().map(|r| r[0].abs() + r[1].abs()).sum();
-    assert!(total < 1e-12, "self-equilibrated load needs no reaction, got {total}");
+    assert!(
+        total < 1e-12,
+        "self-equilibrated load needs no reaction, got {total}"
+    );
 }
 
 #[test]
@@ -125,18 +148,31 @@ fn tempering_that_softens_well_shaped_elements_is_warned_about() {
 fn manufactured_elasticity_converges_at_rate_two_in_l2_and_one_in_energy() {
     let points: Vec<StudyPoint> = [8, 16, 32, 64]
         .iter()
-        .map(|&n| run_manufactured_elasticity(unit_square(n, None), 1.0 / n as f64, steel_like(), Tempering::Auto).unwrap())
+        .map(|&n| {
+            run_manufactured_elasticity(
+                unit_square(n, None),
+                1.0 / n as f64,
+                steel_like(),
+                Tempering::Auto,
+            )
+            .unwrap()
+        })
         .collect();
     let (l2, energy) = rates(&points);
     assert!((1.9..=2.1).contains(&l2), "L2 rate {l2}: {points:?}");
-    assert!((0.9..=1.1).contains(&energy), "energy rate {energy}: {points:?}");
+    assert!(
+        (0.9..=1.1).contains(&energy),
+        "energy rate {energy}: {points:?}"
+    );
 }
 
 #[test]
 fn manufactured_laplacian_converges_at_rate_two_in_l2_and_one_in_h1() {
     let points: Vec<StudyPoint> = [8, 16, 32, 64]
         .iter()
-        .map(|&n| run_manufactured_laplace(unit_square(n, None), 1.0 / n as f64, Tempering::Auto).unwrap())
+        .map(|&n| {
+            run_manufactured_laplace(unit_square(n, None), 1.0 / n as f64, Tempering::Auto).unwrap()
+        })
         .collect();
     let (l2, h1) = rates(&points);
     assert!((1.9..=2.1).contains(&l2), "L2 rate {l2}: {points:?}");
@@ -151,18 +187,30 @@ const LEVELS: [usize; 4] = [8, 16, 32, 64];
 fn laplacian_locks_with_plain_fem_on_a_band_of_flat_triangles() {
     let points: Vec<StudyPoint> = LEVELS
         .iter()
-        .map(|&n| run_manufactured_laplace(unit_square(n, Some(BAND)), 1.0 / n as f64, Tempering::Off).unwrap())
+        .map(|&n| {
+            run_manufactured_laplace(unit_square(n, Some(BAND)), 1.0 / n as f64, Tempering::Off)
+                .unwrap()
+        })
         .collect();
     let (l2, _) = rates(&points);
-    assert!(l2 < 0.5, "plain FEM should stop converging, L2 rate {l2}: {points:?}");
-    assert!(points[3].l2 > 0.05, "the band forces u linear along y = 1/2: {points:?}");
+    assert!(
+        l2 < 0.5,
+        "plain FEM should stop converging, L2 rate {l2}: {points:?}"
+    );
+    assert!(
+        points[3].l2 > 0.05,
+        "the band forces u linear along y = 1/2: {points:?}"
+    );
 }
 
 #[test]
 fn laplacian_keeps_rate_two_with_tempering_on_a_band_of_flat_triangles() {
     let points: Vec<StudyPoint> = LEVELS
         .iter()
-        .map(|&n| run_manufactured_laplace(unit_square(n, Some(BAND)), 1.0 / n as f64, Tempering::Auto).unwrap())
+        .map(|&n| {
+            run_manufactured_laplace(unit_square(n, Some(BAND)), 1.0 / n as f64, Tempering::Auto)
+                .unwrap()
+        })
         .collect();
     let (l2, _) = rates(&points);
     assert!(l2 >= 1.8, "TFEM L2 rate {l2}: {points:?}");
@@ -173,12 +221,20 @@ fn elasticity_locks_with_plain_fem_on_a_band_of_flat_triangles() {
     let points: Vec<StudyPoint> = LEVELS
         .iter()
         .map(|&n| {
-            run_manufactured_elasticity(unit_square(n, Some(BAND)), 1.0 / n as f64, steel_like(), Tempering::Off)
-                .unwrap()
+            run_manufactured_elasticity(
+                unit_square(n, Some(BAND)),
+                1.0 / n as f64,
+                steel_like(),
+                Tempering::Off,
+            )
+            .unwrap()
         })
         .collect();
     let (l2, _) = rates(&points);
-    assert!(l2 < 0.5, "plain FEM should stop converging, L2 rate {l2}: {points:?}");
+    assert!(
+        l2 < 0.5,
+        "plain FEM should stop converging, L2 rate {l2}: {points:?}"
+    );
     assert!(points[3].l2 > 0.05, "{points:?}");
 }
 
@@ -187,8 +243,13 @@ fn elasticity_keeps_rate_two_with_tempering_on_a_band_of_flat_triangles() {
     let points: Vec<StudyPoint> = LEVELS
         .iter()
         .map(|&n| {
-            run_manufactured_elasticity(unit_square(n, Some(BAND)), 1.0 / n as f64, steel_like(), Tempering::Auto)
-                .unwrap()
+            run_manufactured_elasticity(
+                unit_square(n, Some(BAND)),
+                1.0 / n as f64,
+                steel_like(),
+                Tempering::Auto,
+            )
+            .unwrap()
         })
         .collect();
     let (l2, _) = rates(&points);

@@ -1,0 +1,5 @@
+//! Optional file I/O, each format behind its own Cargo feature so that an
+//! embedder links only the core.
+
+#[cfg(feature = "vtu")]
+pub mod vtu;
