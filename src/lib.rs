@@ -9,13 +9,16 @@
 //! ABI in [`ffi`] is a thin translation layer over it.
 //!
 //! ```
-//! use tfem::{Component, Material, Mesh, Model, PlaneMode};
+//! use tfem::{Component, Material, Mesh, Model, PlaneMode, Tempering};
 //! // A unit square of two triangles, clamped on the left, pulled on the right.
 //! let nodes = vec![[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]];
 //! let mesh = Mesh::new(nodes, vec![[0, 1, 2], [0, 2, 3]], vec![1, 1], 0).unwrap();
 //! let mut model = Model::new();
 //! model.set_mesh(mesh);
 //! model.set_material(1, Material::new(1e3, 0.0, PlaneMode::Stress, "body 1").unwrap()).unwrap();
+//! // Two triangles for the whole body: h is the body size, so the default
+//! // λ (the body size) would temper them; this solution is linear (λ = ∞).
+//! model.set_tempering(Tempering::Lambda(1e6)).unwrap();
 //! model.set_boundary_edges(&[[1, 2]], &[10]).unwrap();
 //! for n in [0, 3] { model.fix(n, Component::X, 0.0).unwrap(); }
 //! model.fix(0, Component::Y, 0.0).unwrap();
