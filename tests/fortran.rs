@@ -27,11 +27,10 @@ fn squash(s: &str) -> String {
 /// The prototypes of the header, with the first sentence of their docs.
 fn prototypes(header: &str) -> Vec<Proto> {
     let mut out = Vec::new();
-    let mut doc = String::new();
     let mut rest = header;
     while let Some(start) = rest.find("/**") {
         let end = rest[start..].find("*/").expect("closed comment") + start;
-        doc = rest[start + 3..end]
+        let doc = rest[start + 3..end]
             .lines()
             .map(|l| l.trim().trim_start_matches('*').trim())
             .filter(|l| !l.is_empty())
@@ -44,7 +43,7 @@ fn prototypes(header: &str) -> Vec<Proto> {
         if plain && decl.contains("tfem_") && decl.contains('(') && !decl.starts_with("typedef") {
             let open = decl.find('(').unwrap();
             let head = &decl[..open];
-            let name_start = head.rfind(|c: char| c == ' ' || c == '*').unwrap() + 1;
+            let name_start = head.rfind([' ', '*']).unwrap() + 1;
             let ret = head[..name_start].trim().to_string();
             let name = head[name_start..].to_string();
             let inner = &decl[open + 1..decl.rfind(')').unwrap()];
@@ -56,7 +55,7 @@ fn prototypes(header: &str) -> Vec<Proto> {
                     .map(|p| {
                         let p = p.trim();
                         let cut = p
-                            .rfind(|c: char| c == ' ' || c == '*')
+                            .rfind([' ', '*'])
                             .unwrap_or_else(|| panic!("cannot split parameter `{p}` of `{decl}`"))
                             + 1;
                         (p[..cut].trim().to_string(), p[cut..].to_string())
