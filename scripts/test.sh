@@ -26,16 +26,25 @@ cargo clippy --release --all-targets -- -D warnings
 
 echo "== core without optional I/O (no default features)"
 cargo build --release --lib --no-default-features
-if nm -D --defined-only target/release/libtfem.so | grep -qi vtk; then
-  echo "the core library links VTK output code without the vtu feature" >&2
+if cargo tree --no-default-features --edges normal --prefix none | grep -q '^vtkio'; then
+  echo "the core library depends on the VTU writer without the vtu feature" >&2
   exit 1
 fi
 
-echo "== cargo test --release (Rust, C and C++ tests)"
-cargo build --release --lib
+echo "== cargo test --release (Rust, C, C++ and Fortran tests)"
+cargo build --release --lib --examples
 cargo test --release
 
-echo "== ctest"
-cmake -S c_tests -B build/c_tests -DCMAKE_BUILD_TYPE=Release >/dev/null
+echo "== CMake package: build, install, find_package from C, C++ and Fortran"
+prefix="$PWD/build/prefix"
+cmake -S . -B build/tfem -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build/tfem >/dev/null
+cmake --install build/tfem --prefix "$prefix" >/dev/null
+cmake -S c_tests/external -B build/external -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
+cmake --build build/external >/dev/null
+build/external/tfem_user
+
+echo "== ctest (C, C++, Fortran tests and seed-scene regression baselines)"
+cmake -S c_tests -B build/c_tests -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
 cmake --build build/c_tests -j 2 >/dev/null
 ctest --test-dir build/c_tests --output-on-failure
