@@ -238,6 +238,12 @@ int main(void) {
   CHECK(tfem_get_warning(m, 0, msg, sizeof msg) == TFEM_STATUS_OK && strstr(msg, "7") != NULL);
   tfem_destroy(m);
 
+  /* Gmsh files: a missing file and a NULL path are clear errors. */
+  m = tfem_create();
+  EXPECT_ERROR(m, tfem_load_gmsh(m, "/nonexistent/mesh.msh", 1), TFEM_STATUS_IO, "/nonexistent/mesh.msh");
+  EXPECT_ERROR(m, tfem_load_gmsh(m, NULL, 1), TFEM_STATUS_NULL_POINTER, "path");
+  tfem_destroy(m);
+
   /* Pure element functions. */
   double xy[6] = {0, 0, 1, 0, 2, 0}, K[36], L[9];
   CHECK(tfem_element_stiffness(xy, 1.0, 0.3, 0, 1e-3, K) == TFEM_STATUS_OK);

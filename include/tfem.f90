@@ -162,6 +162,18 @@ module tfem
       integer(c_int) :: status
     end function tfem_set_mesh
 
+  !> Loads a Gmsh MSH 4.1 mesh (ASCII or binary) from the file `path` (NUL-terminated UTF-8):
+  !! physical surfaces become bodies (tag = body), physical curves become boundary-edge tags; only
+  !! 3-node triangles and 2-node lines, in the plane z = 0
+    function tfem_load_gmsh(model, path, index_base) &
+        bind(C, name="tfem_load_gmsh") result(status)
+      import
+      type(c_ptr), value :: model
+      character(kind=c_char), intent(in) :: path
+      integer(c_int), value :: index_base
+      integer(c_int) :: status
+    end function tfem_load_gmsh
+
   !> Sets the tagged boundary edges: `n_edges` edges given by `edge_nodes` (2·n_edges node indices)
   !! with a tag each in `tags`
     function tfem_set_boundary_edges(model, n_edges, edge_nodes, tags) &

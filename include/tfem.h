@@ -382,6 +382,18 @@ enum tfem_status tfem_set_mesh(struct tfem_model *model,
                                int index_base);
 
 /**
+ * Loads a Gmsh MSH 4.1 mesh (ASCII or binary) from the file `path`
+ * (NUL-terminated UTF-8): physical surfaces become bodies (tag = body),
+ * physical curves become boundary-edge tags; only 3-node triangles and
+ * 2-node lines, in the plane z = 0. Replaces the mesh like `tfem_set_mesh`
+ * with the given `index_base` for later calls. Returns TFEM_STATUS_IO for
+ * an unreadable file, TFEM_STATUS_INVALID_MESH for unsupported content,
+ * TFEM_STATUS_INVALID_ARGUMENT if the library was built without the
+ * `gmsh` feature.
+ */
+enum tfem_status tfem_load_gmsh(struct tfem_model *model, const char *path, int index_base);
+
+/**
  * Sets the tagged boundary edges: `n_edges` edges given by `edge_nodes`
  * (2·n_edges node indices) with a tag each in `tags`. Tags name the edges
  * for loads, constraints and contact pairs. Replaces previous edges.

@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(libeigen3-dev cmake g++ gfortran pkg-config)
+packages=(libeigen3-dev cmake g++ gfortran gmsh pkg-config)
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")

@@ -461,6 +461,55 @@ pub unsafe extern "C" fn tfem_set_mesh(
     })
 }
 
+/// Loads a Gmsh MSH 4.1 mesh (ASCII or binary) from the file `path`
+/// (NUL-terminated UTF-8): physical surfaces become bodies (tag = body),
+/// physical curves become boundary-edge tags; only 3-node triangles and
+/// 2-node lines, in the plane z = 0. Replaces the mesh like `tfem_set_mesh`
+/// with the given `index_base` for later calls. Returns TFEM_STATUS_IO for
+/// an unreadable file, TFEM_STATUS_INVALID_MESH for unsupported content,
+/// TFEM_STATUS_INVALID_ARGUMENT if the library was built without the
+/// `gmsh` feature.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_load_gmsh(
+    model: *mut TfemModel,
+    path: *const c_char,
+    index_base: c_int,
+) -> Status {
+    with_model(model, |m| {
+        if path.is_null() {
+            return Err(null("path"));
+        }
+        let base = match index_base {
+            0 | 1 => index_base as usize,
+            _ => {
+                return Err(Error::argument(format!(
+                    "index_base = {index_base} must be 0 or 1"
+                )));
+            }
+        };
+        // SAFETY: a NUL-terminated string from the caller.
+        let path = unsafe { std::ffi::CStr::from_ptr(path) }
+            .to_str()
+            .map_err(|_| Error::argument("path is not valid UTF-8"))?;
+        load_gmsh(m, std::path::Path::new(path), base)
+    })
+}
+
+#[cfg(feature = "gmsh")]
+fn load_gmsh(m: &mut TfemModel, path: &std::path::Path, base: usize) -> Result<()> {
+    let mesh = crate::io::gmsh::read_msh(path, base)?;
+    m.model.set_mesh(mesh);
+    m.index_base = base;
+    Ok(())
+}
+
+#[cfg(not(feature = "gmsh"))]
+fn load_gmsh(_: &mut TfemModel, _: &std::path::Path, _: usize) -> Result<()> {
+    Err(Error::argument(
+        "this libtfem was built without the `gmsh` feature",
+    ))
+}
+
 /// Sets the tagged boundary edges: `n_edges` edges given by `edge_nodes`
 /// (2·n_edges node indices) with a tag each in `tags`. Tags name the edges
 /// for loads, constraints and contact pairs. Replaces previous edges.

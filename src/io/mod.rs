@@ -3,3 +3,6 @@
 
 #[cfg(feature = "vtu")]
 pub mod vtu;
+
+#[cfg(feature = "gmsh")]
+pub mod gmsh;
