@@ -169,7 +169,7 @@ module tfem
         bind(C, name="tfem_load_gmsh") result(status)
       import
       type(c_ptr), value :: model
-      character(kind=c_char), intent(in) :: path
+      character(kind=c_char), intent(in) :: path(*)
       integer(c_int), value :: index_base
       integer(c_int) :: status
     end function tfem_load_gmsh

@@ -126,7 +126,8 @@ fn structs(header: &str) -> Vec<(String, Vec<(String, String)>)> {
     out
 }
 
-const ARRAYS: [&str; 7] = [
+const ARRAYS: [&str; 8] = [
+    "path",
     "xy",
     "connectivity",
     "body_of_triangle",
