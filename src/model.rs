@@ -736,6 +736,7 @@ impl Model {
         };
 
         let Some(opts) = options else {
+            let energy = |r: &[f64]| self.body_energy(mesh, r);
             let (u, values, rhs) = self.factor_and_solve(
                 dofs,
                 pattern,
@@ -746,11 +747,13 @@ impl Model {
                 timings,
                 &mut info,
                 "",
+                &energy,
             )?;
             info.relative_residual = residual(pattern, &values, &u_free(dofs, &u), &rhs);
             info.condition_estimate = chol.condition_estimate();
             info.memory_bytes = memory(pattern, chol);
             info.timings = *timings;
+            conditioning_warning(&info, &mut warnings);
             return Ok((
                 Solved {
                     u,
@@ -845,8 +848,24 @@ impl Model {
             timings.assembly += t0.elapsed().as_secs_f64();
             let n_active = active.iter().filter(|&&a| a).count();
             let context = format!(" (contact iteration {it}, {n_active} active contact elements)");
+            let energy = |r: &[f64]| {
+                let mut acc = self.body_energy(mesh, r);
+                for (k, el) in contact.iter().enumerate() {
+                    if active[k] {
+                        let cs = contact_stiffness(
+                            &geos[k],
+                            &params[k].d,
+                            el.normal,
+                            el.j0,
+                            params[k].t,
+                        );
+                        add_energy(&mut acc, &cs.k, r, &el.nodes);
+                    }
+                }
+                acc
+            };
             let (u, values, rhs) = self.factor_and_solve(
-                dofs, pattern, chol, values, rhs, &up, timings, &mut info, &context,
+                dofs, pattern, chol, values, rhs, &up, timings, &mut info, &context, &energy,
             )?;
             let next: Vec<bool> = contact
                 .iter()
@@ -911,6 +930,7 @@ impl Model {
         info.condition_estimate = chol.condition_estimate();
         info.memory_bytes = memory(pattern, chol);
         info.timings = *timings;
+        conditioning_warning(&info, &mut warnings);
 
         let mut pressure = vec![0.0; contact.len()];
         let (mut lc, mut max_pen) = (0.0, 0.0f64);
@@ -964,6 +984,7 @@ impl Model {
         timings: &mut Timings,
         info: &mut SolveInfo,
         context: &str,
+        rigid_energy: &dyn Fn(&[f64]) -> (f64, f64),
     ) -> Result<(Vec<f64>, Vec<f64>, Vec<f64>)> {
         let mesh = self.mesh_ref()?;
         let t0 = Instant::now();
@@ -971,11 +992,59 @@ impl Model {
         timings.factorization += t0.elapsed().as_secs_f64();
         info.factorizations += 1;
         if let Err(e) = fact {
-            return Err(singular_error(mesh, dofs, e, context));
+            let usable_hint = matches!(e, FactorError::Singular { usable: true, .. });
+            let restrained = match &e {
+                FactorError::Singular {
+                    mode: Some(m),
+                    usable: true,
+                    ..
+                } => {
+                    // A tiny eigenvalue from an extreme stiffness contrast, or a
+                    // free mode? Fit the rigid motion of each body to the mode and
+                    // measure its energy element by element: round-off for a
+                    // free body, the coupling's energy for a restrained one.
+                    let r = rigid_fit(mesh, dofs, m);
+                    let (energy, scale) = rigid_energy(&r);
+                    energy > RIGID_ENERGY_TOL * scale
+                }
+                _ => false,
+            };
+            if !(restrained && chol.accept_ill_conditioned()) {
+                let mut err = singular_error(mesh, dofs, e, context);
+                if matches!(err.status(), Status::Singular) && chol.factor_nnz() > 0 && usable_hint
+                {
+                    err = Error::new(
+                        Status::Singular,
+                        format!(
+                            "{} — numerically singular: the free motion is resisted by less than \
+                             1e-13 of the stiffness (a free body, or a stiffness contrast beyond \
+                             double precision)",
+                            err.message()
+                        ),
+                    );
+                }
+                return Err(err);
+            }
         }
         let t0 = Instant::now();
         let mut x = rhs.clone();
         chol.solve(&mut x)?;
+        // Iterative refinement: free for well-conditioned systems (the first
+        // residual is already at round-off), decisive for extreme stiffness
+        // contrasts.
+        let nb = norm(&rhs);
+        let mut kx = vec![0.0; x.len()];
+        for _ in 0..3 {
+            pattern.sym_mul(&values, &x, &mut kx);
+            let mut r: Vec<f64> = rhs.iter().zip(&kx).map(|(b, k)| b - k).collect();
+            let rn = norm(&r);
+            // (A NaN residual also stops: the finiteness check reports it.)
+            if rn.is_nan() || rn <= 1e-14 * nb {
+                break;
+            }
+            chol.solve(&mut r)?;
+            x.iter_mut().zip(&r).for_each(|(a, d)| *a += d);
+        }
         timings.solve += t0.elapsed().as_secs_f64();
         let mut u = up.to_vec();
         let free_to_global = dofs.free_to_global();
@@ -992,6 +1061,22 @@ impl Model {
             ));
         }
         Ok((u, values, rhs))
+    }
+
+    /// (rᵀKr, Σ diag energy) of the body elements for a global vector r.
+    fn body_energy(&self, mesh: &Mesh, r: &[f64]) -> (f64, f64) {
+        let jmin_of = self.body_jmin(mesh);
+        let mut acc = (0.0, 0.0);
+        for (tri, body) in mesh.triangles().iter().zip(mesh.body_of()) {
+            let geo = TriGeometry::new(&mesh.corners(tri));
+            if let Ok(k) =
+                elasticity_stiffness(&geo, &self.materials[body].d_matrix(), jmin_of(&geo))
+            {
+                let ke: [f64; 36] = std::array::from_fn(|i| k[i / 6][i % 6]);
+                add_energy(&mut acc, &ke, r, tri);
+            }
+        }
+        acc
     }
 
     fn solved(&self) -> Result<&Solved> {
@@ -1138,6 +1223,66 @@ impl Model {
     }
 }
 
+/// Energy of a fitted rigid motion, relative to the element-wise diagonal
+/// energy, above which the motion is restrained: a free body gives ~1e-16
+/// (round-off of B̂ applied to a rigid motion); a body held only by a soft
+/// contact against a 1e12 times stiffer one still gives ~1e-12.
+const RIGID_ENERGY_TOL: f64 = 1e-13;
+
+/// The rigid motion (translation and rotation about the centroid) of each
+/// body that best fits `mode` (over unknowns), zero on prescribed DOFs.
+fn rigid_fit(mesh: &Mesh, dofs: &DofMap, mode: &[f64]) -> Vec<f64> {
+    let n = mesh.nodes().len();
+    let mut m = vec![0.0; 2 * n];
+    for (f, g) in dofs.free_to_global().into_iter().enumerate() {
+        m[g] = mode[f];
+    }
+    let mut r = vec![0.0; 2 * n];
+    for &body in mesh.bodies() {
+        let nodes: Vec<usize> = (0..n)
+            .filter(|&v| mesh.node_body()[v] == Some(body))
+            .collect();
+        let nn = nodes.len() as f64;
+        let c = nodes.iter().fold([0.0, 0.0], |a, &v| {
+            [
+                a[0] + mesh.nodes()[v][0] / nn,
+                a[1] + mesh.nodes()[v][1] / nn,
+            ]
+        });
+        let (mut t, mut rot, mut rr) = ([0.0, 0.0], 0.0, 0.0);
+        for &v in &nodes {
+            let (dx, dy) = (mesh.nodes()[v][0] - c[0], mesh.nodes()[v][1] - c[1]);
+            t[0] += m[2 * v] / nn;
+            t[1] += m[2 * v + 1] / nn;
+            rot += dx * m[2 * v + 1] - dy * m[2 * v];
+            rr += dx * dx + dy * dy;
+        }
+        let theta = if rr > 0.0 { rot / rr } else { 0.0 };
+        for &v in &nodes {
+            let (dx, dy) = (mesh.nodes()[v][0] - c[0], mesh.nodes()[v][1] - c[1]);
+            for (k, value) in [t[0] - theta * dy, t[1] + theta * dx]
+                .into_iter()
+                .enumerate()
+            {
+                if dofs.free(2 * v + k) != NOT_FREE {
+                    r[2 * v + k] = value;
+                }
+            }
+        }
+    }
+    r
+}
+
+/// Adds rᵀ K_e r and Σ_a K_e[a][a] r_a² of one element to `acc`.
+fn add_energy(acc: &mut (f64, f64), ke: &[f64; 36], r: &[f64], tri: &[usize; 3]) {
+    let re = element_u(r, tri);
+    for a in 0..6 {
+        let kr: f64 = (0..6).map(|b| ke[a * 6 + b] * re[b]).sum();
+        acc.0 += re[a] * kr;
+        acc.1 += ke[a * 6 + a].abs() * re[a] * re[a];
+    }
+}
+
 fn singular_error(mesh: &Mesh, dofs: &DofMap, e: FactorError, context: &str) -> Error {
     let free_to_global = dofs.free_to_global();
     match e {
@@ -1196,6 +1341,20 @@ fn residual(pattern: &Pattern, values: &[f64], x: &[f64], rhs: &[f64]) -> f64 {
 
 fn memory(pattern: &Pattern, chol: &Cholesky) -> usize {
     pattern.memory_bytes() + 8 * pattern.nnz() + chol.memory_bytes()
+}
+
+/// Warns when the scaled system is so ill-conditioned that results lose
+/// digits (an extreme stiffness contrast or penalty).
+fn conditioning_warning(info: &SolveInfo, warnings: &mut Vec<String>) {
+    if info.condition_estimate > 1e10 || info.relative_residual > 1e-8 {
+        warnings.push(format!(
+            "ill-conditioned system: condition estimate {:.1e}, relative residual {:.1e}; \
+             expect about {:.0} correct digits",
+            info.condition_estimate,
+            info.relative_residual,
+            (-(info.condition_estimate * f64::EPSILON).log10()).clamp(0.0, 16.0)
+        ));
+    }
 }
 
 fn format_history(h: &[IterationRecord]) -> String {

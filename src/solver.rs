@@ -39,6 +39,10 @@ pub enum FactorError {
         eigenvalue: f64,
         /// Near-null vector over the unknowns, if computed.
         mode: Option<Vec<f64>>,
+        /// The factorisation itself succeeded: if the caller finds the mode
+        /// restrained after all (an extreme but legitimate stiffness
+        /// contrast), [`Cholesky::accept_ill_conditioned`] makes it usable.
+        usable: bool,
     },
     /// An unknown has no stiffness at all (zero or negative diagonal).
     ZeroDiagonal {
@@ -59,6 +63,7 @@ pub struct Cholesky {
     solve_mem: MemBuffer,
     par: Par,
     factored: bool,
+    usable: bool,
     min_eigenvalue: f64,
     max_eigenvalue_bound: f64,
 }
@@ -102,6 +107,7 @@ impl Cholesky {
             solve_mem,
             par,
             factored: false,
+            usable: false,
             min_eigenvalue: f64::NAN,
             max_eigenvalue_bound: f64::NAN,
         })
@@ -144,6 +150,7 @@ impl Cholesky {
         values: &[f64],
     ) -> std::result::Result<(), FactorError> {
         self.factored = false;
+        self.usable = false;
         let n = pattern.n();
         let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
         for j in 0..n {
@@ -173,9 +180,11 @@ impl Cholesky {
                 let (eig, mode) = self.inverse_iteration();
                 self.min_eigenvalue = eig;
                 if eig < SINGULAR_TOL || !eig.is_finite() {
+                    self.usable = eig.is_finite();
                     return Err(FactorError::Singular {
                         eigenvalue: eig,
                         mode: Some(self.unscale(mode)),
+                        usable: self.usable,
                     });
                 }
                 self.factored = true;
@@ -191,12 +200,14 @@ impl Cholesky {
                         return Err(FactorError::Singular {
                             eigenvalue: 0.0,
                             mode: Some(self.unscale(mode)),
+                            usable: false,
                         });
                     }
                 }
                 Err(FactorError::Singular {
                     eigenvalue: f64::NEG_INFINITY,
                     mode: None,
+                    usable: false,
                 })
             }
         }
@@ -273,6 +284,15 @@ impl Cholesky {
             x.iter_mut().for_each(|a| *a /= nx);
         }
         (estimate, x)
+    }
+
+    /// Uses a factorisation that [`Cholesky::factorize`] flagged as
+    /// singular although it succeeded, once the caller has established that
+    /// the near-null mode is restrained (ill-conditioned, not singular).
+    /// Returns whether the factorisation is now usable.
+    pub fn accept_ill_conditioned(&mut self) -> bool {
+        self.factored = self.usable;
+        self.factored
     }
 
     /// Solves K x = b in place (b over the unknowns, unscaled). Requires a
