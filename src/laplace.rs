@@ -6,6 +6,7 @@ use crate::assembly::{DofMap, NOT_FREE, Pattern};
 use crate::element::{Jmin, Tempering, TriGeometry, laplacian_stiffness};
 use crate::error::{Error, Result, Status};
 use crate::mesh::Mesh;
+use crate::ordering::Ordering;
 use crate::solver::{Cholesky, FactorError};
 use crate::verification::{QUAD_POINTS, QUAD_WEIGHTS};
 
@@ -38,7 +39,12 @@ pub fn solve_poisson(
     let used = mesh.node_body();
     let dofs = DofMap::new(n, 1, |v| used[v].is_some() && value[v].is_nan());
     let pattern = Pattern::build(&dofs, n, mesh.triangles())?;
-    let mut chol = Cholesky::analyse(&pattern)?;
+    let coords: Vec<[f64; 2]> = dofs
+        .free_to_global()
+        .iter()
+        .map(|&v| mesh.nodes()[v])
+        .collect();
+    let mut chol = Cholesky::analyse(&pattern, Ordering::Auto, Some(&coords))?;
     let size = mesh.size();
     let mut vals = vec![0.0; pattern.nnz()];
     let mut rhs = vec![0.0; dofs.n_free()];

@@ -21,6 +21,7 @@ use crate::element::{
 use crate::error::{Error, Result, Status};
 use crate::material::Material;
 use crate::mesh::Mesh;
+use crate::ordering::Ordering;
 use crate::solution::{ContactReport, IterationRecord, SolveInfo, Timings};
 use crate::solver::{Cholesky, FactorError};
 
@@ -97,6 +98,7 @@ pub struct Model {
     cache: Option<Cache>,
     epoch: u64,
     solve_warnings: Vec<String>,
+    ordering: Ordering,
 }
 
 impl Default for Model {
@@ -136,6 +138,16 @@ impl Model {
             cache: None,
             epoch: 0,
             solve_warnings: Vec::new(),
+            ordering: Ordering::Auto,
+        }
+    }
+
+    /// Chooses the fill-reducing ordering of the factorisation (default
+    /// [`Ordering::Auto`]). Results do not depend on it beyond round-off.
+    pub fn set_ordering(&mut self, ordering: Ordering) {
+        if self.ordering != ordering {
+            self.ordering = ordering;
+            self.cache = None;
         }
     }
 
@@ -550,7 +562,12 @@ impl Model {
         let mut elements: Vec<[usize; 3]> = mesh.triangles().to_vec();
         elements.extend(contact.iter().map(|e| e.nodes));
         let pattern = Pattern::build(&dofs, n_nodes, &elements)?;
-        let chol = Cholesky::analyse(&pattern)?;
+        let coords: Vec<[f64; 2]> = dofs
+            .free_to_global()
+            .iter()
+            .map(|&g| mesh.nodes()[g / 2])
+            .collect();
+        let chol = Cholesky::analyse(&pattern, self.ordering, Some(&coords))?;
         Ok(Cache {
             epoch: self.epoch,
             dofs,

@@ -18,8 +18,11 @@ use faer::sparse::linalg::cholesky::{
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
 use faer::{Conj, MatMut, Par, Side};
 
+use faer::perm::PermRef;
+
 use crate::assembly::Pattern;
 use crate::error::{Error, Result, Status};
+use crate::ordering::{Ordering, nested_dissection};
 
 /// Smallest eigenvalue of the Jacobi-scaled matrix (unit diagonal) below
 /// which the system is declared singular. A rigid-body mode gives ~1e-16;
@@ -76,18 +79,35 @@ fn oom(what: &str) -> Error {
 }
 
 impl Cholesky {
-    /// Symbolic analysis (AMD fill-reducing ordering) of `pattern`.
-    pub fn analyse(pattern: &Pattern) -> Result<Cholesky> {
+    /// Symbolic analysis of `pattern` with a fill-reducing ordering: AMD, or
+    /// geometric nested dissection when `coords` (one point per unknown)
+    /// are given and `ordering` asks for it.
+    pub fn analyse(
+        pattern: &Pattern,
+        ordering: Ordering,
+        coords: Option<&[[f64; 2]]>,
+    ) -> Result<Cholesky> {
         let n = pattern.n();
         let sym =
             SymbolicSparseColMatRef::new_checked(n, n, pattern.col_ptr(), None, pattern.row_idx());
-        let symbolic = factorize_symbolic_cholesky(
-            sym,
-            Side::Upper,
-            SymmetricOrdering::Amd,
-            CholeskySymbolicParams::default(),
-        )
-        .map_err(|_| oom("symbolic analysis"))?;
+        let nd = match coords {
+            Some(c) if ordering.use_nested_dissection(n) => {
+                let fwd = nested_dissection(pattern.col_ptr(), pattern.row_idx(), c);
+                let mut inv = vec![0usize; n];
+                for (new, &old) in fwd.iter().enumerate() {
+                    inv[old] = new;
+                }
+                Some((fwd, inv))
+            }
+            _ => None,
+        };
+        let ord = match &nd {
+            Some((fwd, inv)) => SymmetricOrdering::Custom(PermRef::new_checked(fwd, inv, n)),
+            None => SymmetricOrdering::Amd,
+        };
+        let symbolic =
+            factorize_symbolic_cholesky(sym, Side::Upper, ord, CholeskySymbolicParams::default())
+                .map_err(|_| oom("symbolic analysis"))?;
         let par = Par::rayon(0);
         let factor_req = symbolic.factorize_numeric_llt_scratch::<f64>(par, Default::default());
         let solve_req = symbolic.solve_in_place_scratch::<f64>(1, par);
@@ -337,7 +357,7 @@ mod tests {
     #[test]
     fn solves_a_grounded_chain() {
         let (p, v) = chain(50, true);
-        let mut c = Cholesky::analyse(&p).unwrap();
+        let mut c = Cholesky::analyse(&p, Ordering::Amd, None).unwrap();
         c.factorize(&p, &v).unwrap();
         let mut b = vec![0.0; 50];
         b[49] = 1.0;
@@ -357,7 +377,7 @@ mod tests {
     #[test]
     fn detects_a_floating_chain_and_returns_its_constant_mode() {
         let (p, v) = chain(30, false);
-        let mut c = Cholesky::analyse(&p).unwrap();
+        let mut c = Cholesky::analyse(&p, Ordering::Amd, None).unwrap();
         match c.factorize(&p, &v) {
             Err(FactorError::Singular { mode: Some(m), .. }) => {
                 let mean = m.iter().sum::<f64>() / m.len() as f64;
