@@ -81,6 +81,19 @@ impl Tempering {
     }
 }
 
+impl Tempering {
+    /// The Jmin of an element of longest edge `geo.h` in a model whose
+    /// bounding box's larger side is `model_size` (the automatic λ).
+    pub fn jmin(&self, geo: &TriGeometry, model_size: f64) -> Jmin {
+        match *self {
+            Tempering::Auto => Jmin::from_lambda(geo.h, model_size),
+            Tempering::Lambda(l) => Jmin::from_lambda(geo.h, l),
+            Tempering::Fixed(j) => Jmin::Tempered(j),
+            Tempering::Off => Jmin::Off,
+        }
+    }
+}
+
 /// The tempering applied to one element, resolved from a [`Tempering`]
 /// policy and the model size.
 #[derive(Debug, Clone, Copy, PartialEq)]

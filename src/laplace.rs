@@ -3,7 +3,7 @@
 //! shares assembly and solver with the elasticity model.
 
 use crate::assembly::{DofMap, NOT_FREE, Pattern};
-use crate::element::{Jmin, Tempering, TriGeometry, laplacian_stiffness};
+use crate::element::{Tempering, TriGeometry, laplacian_stiffness};
 use crate::error::{Error, Result, Status};
 use crate::mesh::Mesh;
 use crate::ordering::Ordering;
@@ -51,12 +51,7 @@ pub fn solve_poisson(
     for (e, tri) in mesh.triangles().iter().enumerate() {
         let x = mesh.corners(tri);
         let geo = TriGeometry::new(&x);
-        let jm = match tempering {
-            Tempering::Auto => Jmin::from_lambda(geo.h, size),
-            Tempering::Lambda(l) => Jmin::from_lambda(geo.h, l),
-            Tempering::Fixed(j) => Jmin::Tempered(j),
-            Tempering::Off => Jmin::Off,
-        };
+        let jm = tempering.jmin(&geo, size);
         let k = laplacian_stiffness(&geo, kappa, jm).map_err(|err| {
             Error::new(
                 err.status(),

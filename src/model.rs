@@ -469,12 +469,7 @@ impl Model {
     fn body_jmin(&self, mesh: &Mesh) -> impl Fn(&TriGeometry) -> Jmin + use<> {
         let tempering = self.tempering;
         let size = mesh.size();
-        move |geo: &TriGeometry| match tempering {
-            Tempering::Auto => Jmin::from_lambda(geo.h, size),
-            Tempering::Lambda(l) => Jmin::from_lambda(geo.h, l),
-            Tempering::Fixed(j) => Jmin::Tempered(j),
-            Tempering::Off => Jmin::Off,
-        }
+        move |geo: &TriGeometry| tempering.jmin(geo, size)
     }
 
     fn check_ready(&self, with_contact: bool) -> Result<&Mesh> {

@@ -2,21 +2,12 @@
 //! library built by cargo (with the `cc` crate, as a build script would)
 //! and runs them: they must exit 0.
 
+mod common;
+
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// target/<profile>, where cargo puts libtfem.so next to the deps folder.
-fn lib_dir() -> PathBuf {
-    let exe = std::env::current_exe().expect("test executable path");
-    exe.parent()
-        .and_then(Path::parent)
-        .expect("target/<profile>")
-        .to_path_buf()
-}
+use common::{ensure_shared_library, lib_dir, root, run};
 
 fn compiler(cpp: bool) -> Command {
     let mut build = cc::Build::new();
@@ -32,32 +23,11 @@ fn compiler(cpp: bool) -> Command {
     build.get_compiler().to_command()
 }
 
-/// `cargo test` builds the library only as an rlib for the tests, so the
-/// shared library the C programs link against is (re)built here, once.
-fn ensure_shared_library() {
-    static BUILT: std::sync::OnceLock<()> = std::sync::OnceLock::new();
-    BUILT.get_or_init(|| {
-        let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".to_string());
-        let mut cmd = Command::new(cargo);
-        cmd.current_dir(root()).args(["build", "--lib", "--quiet"]);
-        if env!("TFEM_BUILD_PROFILE") == "release" {
-            cmd.arg("--release");
-        }
-        let status = cmd.status().expect("run cargo build --lib");
-        assert!(status.success(), "cargo build --lib failed");
-    });
-}
-
 /// Builds `c_tests/<source>` into an executable linked with libtfem.
 pub fn build(source: &str, extra: &[&str]) -> PathBuf {
     ensure_shared_library();
     let cpp = source.ends_with(".cpp");
     let lib = lib_dir();
-    assert!(
-        lib.join("libtfem.so").exists(),
-        "{} is missing after cargo build --lib",
-        lib.join("libtfem.so").display()
-    );
     let out_dir = lib.join("c_tests");
     std::fs::create_dir_all(&out_dir).expect("output directory");
     let exe = out_dir.join(Path::new(source).file_stem().expect("file name"));
@@ -82,23 +52,6 @@ pub fn build(source: &str, extra: &[&str]) -> PathBuf {
         String::from_utf8_lossy(&out.stderr)
     );
     exe
-}
-
-pub fn run(exe: &Path, args: &[&str]) -> String {
-    let out = Command::new(exe)
-        .args(args)
-        .output()
-        .expect("run the test program");
-    let stdout = String::from_utf8_lossy(&out.stdout).to_string();
-    println!("{stdout}");
-    assert!(
-        out.status.success(),
-        "{} failed ({}):\n{stdout}\n{}",
-        exe.display(),
-        out.status,
-        String::from_utf8_lossy(&out.stderr)
-    );
-    stdout
 }
 
 #[test]

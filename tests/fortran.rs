@@ -3,13 +3,13 @@
 //! generated from `include/tfem.h`; these tests keep it honest and run the
 //! Fortran programs. Regenerate with `TFEM_BLESS=1 cargo test --test fortran`.
 
+mod common;
+
 use std::fmt::Write;
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
-fn root() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
-}
+use common::{ensure_shared_library, lib_dir, root, run};
 
 /// A C prototype: return type, name, parameters (type, name).
 #[derive(Debug, Clone, PartialEq)]
@@ -400,20 +400,8 @@ fn every_header_function_has_a_matching_fortran_interface() {
 /// Compiles Fortran sources (module first) into an executable linked with
 /// libtfem and returns its path.
 fn build_fortran(sources: &[&Path], name: &str) -> PathBuf {
-    let lib = std::env::current_exe()
-        .unwrap()
-        .parent()
-        .unwrap()
-        .parent()
-        .unwrap()
-        .to_path_buf();
-    let cargo = std::env::var("CARGO").unwrap_or_else(|_| "cargo".into());
-    let mut cmd = Command::new(cargo);
-    cmd.current_dir(root()).args(["build", "--lib", "--quiet"]);
-    if env!("TFEM_BUILD_PROFILE") == "release" {
-        cmd.arg("--release");
-    }
-    assert!(cmd.status().unwrap().success(), "cargo build --lib");
+    ensure_shared_library();
+    let lib = lib_dir();
     let dir = lib.join("fortran").join(name);
     std::fs::create_dir_all(&dir).unwrap();
     let exe = dir.join(name);
@@ -442,26 +430,13 @@ fn build_fortran(sources: &[&Path], name: &str) -> PathBuf {
     exe
 }
 
-fn run(exe: &Path) -> String {
-    let out = Command::new(exe).output().unwrap();
-    let text = String::from_utf8_lossy(&out.stdout).to_string();
-    println!("{text}");
-    assert!(
-        out.status.success(),
-        "{} failed:\n{text}\n{}",
-        exe.display(),
-        String::from_utf8_lossy(&out.stderr)
-    );
-    text
-}
-
 #[test]
 fn fortran_api_test_passes_every_check() {
     let exe = build_fortran(
         &[&root().join("c_tests/fortran_api_test.f90")],
         "fortran_api_test",
     );
-    let out = run(&exe);
+    let out = run(&exe, &[]);
     assert!(out.contains(" 0 failed"), "{out}");
 }
 
@@ -469,7 +444,7 @@ fn fortran_api_test_passes_every_check() {
 fn fortran_seed_scene_example_matches_the_rust_numbers() {
     use tfem::scenes::TwoBlocks;
     let exe = build_fortran(&[&root().join("examples/two_blocks.f90")], "two_blocks_f90");
-    let out = run(&exe);
+    let out = run(&exe, &[]);
     let value = |name: &str| -> f64 {
         out.lines()
             .find_map(|l| l.trim().strip_prefix(&format!("{name} ")))
