@@ -35,6 +35,9 @@ echo "== cargo test --release (Rust, C, C++ and Fortran tests)"
 cargo build --release --lib --examples
 cargo test --release
 
+echo "== the report, quick mode (the full one is docs/report.md)"
+cargo run --release --example report -- --quick --out build/report
+
 echo "== CMake package: build, install, find_package from C, C++ and Fortran"
 prefix="$PWD/build/prefix"
 cmake -S . -B build/tfem -DCMAKE_BUILD_TYPE=Release >/dev/null
