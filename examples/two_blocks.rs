@@ -64,6 +64,10 @@ struct Args {
     /// Element size h [m].
     #[arg(long, default_value_t = 1.0 / 64.0)]
     mesh_size: f64,
+    /// Element size of the upper block [m], if it differs (non-matching
+    /// interface meshes).
+    #[arg(long)]
+    upper_mesh_size: Option<f64>,
     /// Initial gap between the blocks [m].
     #[arg(long, default_value_t = 0.0)]
     gap: f64,
@@ -106,6 +110,7 @@ impl Args {
             c,
             p: self.p,
             mesh_size: h,
+            upper_mesh_size: self.upper_mesh_size,
             gap: self.gap,
             ..Default::default()
         }
@@ -161,7 +166,8 @@ fn reference_case(args: &Args, c: f64) -> Option<Value> {
         ("p", s.p),
         ("L", s.length),
     ];
-    let plain = matches!(args.law, Law::Frictionless) && s.gap == 0.0;
+    let plain =
+        matches!(args.law, Law::Frictionless) && s.gap == 0.0 && s.upper_mesh_size.is_none();
     all["cases"]
         .as_object()?
         .values()

@@ -564,3 +564,168 @@ pub fn linearised_jacobian(geo: &TriGeometry, ue: &[f64; 6]) -> f64 {
             .map(|i| geo.g[i][0] * ue[2 * i] + geo.g[i][1] * ue[2 * i + 1])
             .sum::<f64>()
 }
+
+/// Builds B for a pair whose interface nodes do not match (METHOD.md §5):
+/// both interfaces are chained into polylines running the same way, every
+/// node gets the arclength parameter of its projection on the first
+/// polyline (extended beyond its ends), and the strip between them is
+/// triangulated by advancing along whichever polyline has the nearer next
+/// node, over the range where the two interfaces face each other (plus one
+/// edge at each end). Each triangle has an edge on one interface and a node
+/// on the other; orientation and normals are set as for a user mesh.
+pub fn build_nonconforming(
+    mesh: &Mesh,
+    pair: usize,
+    tag_a: i32,
+    tag_b: i32,
+) -> Result<Vec<ContactElement>> {
+    let a = side_of(mesh, tag_a)?;
+    let b = side_of(mesh, tag_b)?;
+    let x = mesh.nodes();
+    let chain_a = chain(mesh, &a, tag_a)?;
+    let mut chain_b = chain(mesh, &b, tag_b)?;
+    // Each chain has its body on the right; facing each other they run in
+    // opposite directions: turn b around.
+    chain_b.reverse();
+    // Arclength along a, and the projection of any point on it (extended
+    // linearly beyond both ends).
+    let mut s_a = vec![0.0; chain_a.len()];
+    for k in 1..chain_a.len() {
+        s_a[k] = s_a[k - 1] + dist(x[chain_a[k - 1]], x[chain_a[k]]);
+    }
+    let total = s_a[s_a.len() - 1];
+    let project = |p: [f64; 2]| -> f64 {
+        let mut best = (f64::INFINITY, 0.0);
+        for k in 0..chain_a.len() - 1 {
+            let (p0, p1) = (x[chain_a[k]], x[chain_a[k + 1]]);
+            let d = [p1[0] - p0[0], p1[1] - p0[1]];
+            let len2 = d[0] * d[0] + d[1] * d[1];
+            let mut t = ((p[0] - p0[0]) * d[0] + (p[1] - p0[1]) * d[1]) / len2;
+            let (lo, hi) = (
+                if k == 0 { f64::NEG_INFINITY } else { 0.0 },
+                if k + 2 == chain_a.len() {
+                    f64::INFINITY
+                } else {
+                    1.0
+                },
+            );
+            t = t.clamp(lo, hi);
+            let q = [p0[0] + t * d[0], p0[1] + t * d[1]];
+            let dd = dist(p, q);
+            if dd < best.0 {
+                best = (dd, s_a[k] + t * len2.sqrt());
+            }
+        }
+        best.1
+    };
+    let s_b: Vec<f64> = chain_b.iter().map(|&v| project(x[v])).collect();
+    let base = mesh.index_base();
+    if let Some(k) = (1..s_b.len()).find(|&k| s_b[k] < s_b[k - 1]) {
+        return Err(Error::contact(format!(
+            "interface tag {tag_b} folds back along interface tag {tag_a} at node {}: the two interfaces must face each other",
+            chain_b[k] + base
+        )));
+    }
+    let (lo, hi) = (s_b[0].max(0.0), s_b[s_b.len() - 1].min(total));
+    if hi.is_nan() || hi <= lo {
+        return Err(Error::contact(format!(
+            "interfaces tags {tag_a} and {tag_b} do not face each other (no overlap along the interface)"
+        )));
+    }
+    // Keep the part of each chain over [lo, hi] plus one node beyond each end.
+    let window = |s: &[f64]| -> (usize, usize) {
+        let first = s.iter().rposition(|&v| v <= lo).unwrap_or(0);
+        let last = s.iter().position(|&v| v >= hi).unwrap_or(s.len() - 1);
+        (first, last.max(first + 1).min(s.len() - 1))
+    };
+    let (a0, a1) = window(&s_a);
+    let (b0, b1) = window(&s_b);
+    let (ca, sa) = (&chain_a[a0..=a1], &s_a[a0..=a1]);
+    let (cb, sb) = (&chain_b[b0..=b1], &s_b[b0..=b1]);
+    let mut tris = Vec::with_capacity(ca.len() + cb.len());
+    let (mut i, mut j) = (0, 0);
+    while i + 1 < ca.len() || j + 1 < cb.len() {
+        let advance_a = if i + 1 == ca.len() {
+            false
+        } else if j + 1 == cb.len() {
+            true
+        } else {
+            sa[i + 1] <= sb[j + 1]
+        };
+        if advance_a {
+            tris.push([ca[i], ca[i + 1], cb[j]]);
+            i += 1;
+        } else {
+            tris.push([ca[i], cb[j + 1], cb[j]]);
+            j += 1;
+        }
+    }
+    Ok(check_user_mesh(mesh, pair, tag_a, tag_b, &tris)?.0)
+}
+
+/// The edges of one side chained into a single polyline, in their
+/// orientation (body on the right).
+fn chain(mesh: &Mesh, side: &Side, tag: i32) -> Result<Vec<usize>> {
+    let base = mesh.index_base();
+    let mut next: HashMap<usize, usize> = HashMap::new();
+    let mut has_prev: HashSet<usize> = HashSet::new();
+    for &[p, q] in &side.oriented {
+        if next.insert(p, q).is_some() {
+            return Err(Error::contact(format!(
+                "interface tag {tag} branches at node {}: it must be a single chain of edges",
+                p + base
+            )));
+        }
+        has_prev.insert(q);
+    }
+    let starts: Vec<usize> = next
+        .keys()
+        .copied()
+        .filter(|v| !has_prev.contains(v))
+        .collect();
+    let start = match starts.as_slice() {
+        [s] => *s,
+        [] => {
+            return Err(Error::contact(format!(
+                "interface tag {tag} is a closed loop: open it into a chain of edges"
+            )));
+        }
+        _ => {
+            return Err(Error::contact(format!(
+                "interface tag {tag} has {} separate pieces: use one contact pair per piece",
+                starts.len()
+            )));
+        }
+    };
+    let mut out = vec![start];
+    let mut v = start;
+    while let Some(&w) = next.get(&v) {
+        out.push(w);
+        v = w;
+        if out.len() > side.oriented.len() + 1 {
+            break;
+        }
+    }
+    if out.len() != side.oriented.len() + 1 {
+        return Err(Error::contact(format!(
+            "interface tag {tag} is not a single chain of edges (near node {})",
+            v + base
+        )));
+    }
+    Ok(out)
+}
+
+/// Builds B for a pair: conforming (node-to-node quads) when the nodes of
+/// the two interfaces match, else by triangulating the strip between them.
+pub fn build(mesh: &Mesh, pair: usize, tag_a: i32, tag_b: i32) -> Result<Vec<ContactElement>> {
+    match build_conforming(mesh, pair, tag_a, tag_b) {
+        Ok(elements) => Ok(elements),
+        Err(conforming) => build_nonconforming(mesh, pair, tag_a, tag_b).map_err(|e| {
+            Error::contact(format!(
+                "{} (as a conforming interface: {})",
+                e.message(),
+                conforming.message()
+            ))
+        }),
+    }
+}

@@ -400,8 +400,8 @@ impl Model {
                 "contact pair ({tag_a}, {tag_b}) is already declared"
             )));
         }
-        // Build it now so that an unmatched node is reported by this call.
-        contact::build_conforming(mesh, self.pairs.len(), tag_a, tag_b)?;
+        // Build it now so that a bad interface is reported by this call.
+        contact::build(mesh, self.pairs.len(), tag_a, tag_b)?;
         self.pairs.push(ContactPair {
             tag_a,
             tag_b,
@@ -547,7 +547,7 @@ impl Model {
         let mut contact = Vec::new();
         for (i, p) in self.pairs.iter().enumerate() {
             let mut elements = match &p.user_mesh {
-                None => contact::build_conforming(mesh, i, p.tag_a, p.tag_b)?,
+                None => contact::build(mesh, i, p.tag_a, p.tag_b)?,
                 Some(tris) => contact::check_user_mesh(mesh, i, p.tag_a, p.tag_b, tris)?.0,
             };
             contact.append(&mut elements);

@@ -45,6 +45,9 @@ pub struct TwoBlocks {
     pub p: f64,
     /// Target element size h.
     pub mesh_size: f64,
+    /// Element size of the upper body Ω2 if it differs (a non-conforming
+    /// interface); `None`: both bodies use `mesh_size` (conforming).
+    pub upper_mesh_size: Option<f64>,
     /// Initial gap between the bodies (0: touching, the seed's case).
     pub gap: f64,
     /// Prescribe u_x = 0 on x = L/2 in both bodies.
@@ -68,6 +71,7 @@ impl Default for TwoBlocks {
             c: 0.1,
             p: 1e7,
             mesh_size: 1.0 / 64.0,
+            upper_mesh_size: None,
             gap: 0.0,
             symmetry: true,
             support: true,
@@ -124,17 +128,25 @@ impl TwoBlocks {
             )));
         }
         let mid = 0.5 * l;
+        let h_up = self.upper_mesh_size.unwrap_or(h);
+        if h_up.is_nan() || h_up <= 0.0 {
+            return Err(Error::argument(format!(
+                "two blocks: upper mesh size {h_up} must be > 0"
+            )));
+        }
         let xs = subdivide_symmetric(0.0, l, &[mid - c, mid + c], h);
+        let xs2 = subdivide_symmetric(0.0, l, &[mid - c, mid + c], h_up);
         let ys1 = subdivide(-self.h1, 0.0, &[], h);
-        let ys2: Vec<f64> = subdivide(0.0, self.h2, &[], h)
+        let ys2: Vec<f64> = subdivide(0.0, self.h2, &[], h_up)
             .iter()
             .map(|y| y + self.gap)
             .collect();
         let mut b = MeshBuilder::new();
         let lower = b.add_grid(&xs, &ys1, 1, Diagonal::MirroredAt(mid));
         let n_lower_nodes = b.nodes.len();
-        let upper = b.add_grid(&xs, &ys2, 2, Diagonal::MirroredAt(mid));
+        let upper = b.add_grid(&xs2, &ys2, 2, Diagonal::MirroredAt(mid));
         let i_mid = xs.iter().position(|&x| x == mid).expect("L/2 is a node");
+        let i_mid2 = xs2.iter().position(|&x| x == mid).expect("L/2 is a node");
         let loaded = |x: f64| x >= mid - c && x <= mid + c;
         let mut edges = Vec::new();
         let mut tags = Vec::new();
@@ -162,11 +174,14 @@ impl TwoBlocks {
             edges.push(e);
             tags.push(tag);
         }
-        let symmetric_nodes: Vec<usize> =
-            lower.iter().chain(&upper).map(|row| row[i_mid]).collect();
+        let symmetric_nodes: Vec<usize> = lower
+            .iter()
+            .map(|row| row[i_mid])
+            .chain(upper.iter().map(|row| row[i_mid2]))
+            .collect();
         let corner_lower = lower[lower.len() - 1][0];
         let corner_upper = upper[0][0];
-        let top_center = upper[upper.len() - 1][i_mid];
+        let top_center = upper[upper.len() - 1][i_mid2];
 
         let mut model = Model::new();
         model.set_mesh(b.build()?);

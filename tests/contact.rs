@@ -546,32 +546,38 @@ fn a_contact_mesh_triangle_on_one_side_only_is_rejected_naming_it() {
 }
 
 #[test]
-fn non_matching_interface_nodes_are_an_error_naming_the_node() {
+fn a_non_matching_interface_node_switches_to_the_strip_triangulation() {
     let scene = TwoBlocks {
         mesh_size: 1.0 / 16.0,
         ..Default::default()
     };
     let mut s = scene.build().unwrap();
+    let conforming = {
+        let mut c = scene.build().unwrap();
+        c.solve(&ContactOptions::default()).unwrap();
+        c.model.contact_elements().unwrap().len()
+    };
     s.model.clear_contact_pairs();
     // Shift one upper interface node sideways by a tenth of an element.
     let (_, b) = interface_pairs(&s.model)[5];
-    let mut mesh = s.model.mesh().unwrap().clone();
+    let mesh = s.model.mesh().unwrap().clone();
     let mut nodes = mesh.nodes().to_vec();
     nodes[b][0] += 0.1 / 16.0;
     let edges: Vec<[usize; 2]> = mesh.boundary_edges().iter().map(|e| e.nodes).collect();
     let tags: Vec<i32> = mesh.boundary_edges().iter().map(|e| e.tag).collect();
-    mesh = tfem::Mesh::new(nodes, mesh.triangles().to_vec(), mesh.body_of().to_vec(), 0).unwrap();
-    mesh.set_boundary_edges(&edges, &tags).unwrap();
-    let mut model = Model::new();
-    model.set_mesh(mesh);
-    let e = model
-        .add_contact_pair(TAG_CONTACT_LOWER, TAG_CONTACT_UPPER)
-        .unwrap_err();
-    assert_eq!(e.status(), Status::InvalidContact);
+    let mut shifted =
+        tfem::Mesh::new(nodes, mesh.triangles().to_vec(), mesh.body_of().to_vec(), 0).unwrap();
+    shifted.set_boundary_edges(&edges, &tags).unwrap();
+    let elements = tfem::contact::build(&shifted, 0, TAG_CONTACT_LOWER, TAG_CONTACT_UPPER).unwrap();
+    // The zipper makes one triangle per interface edge of either side.
+    assert_eq!(elements.len(), conforming);
+    let conforming_err =
+        tfem::contact::build_conforming(&shifted, 0, TAG_CONTACT_LOWER, TAG_CONTACT_UPPER)
+            .unwrap_err();
     assert!(
-        e.message().contains(&format!("node {b}")),
+        conforming_err.message().contains(&format!("node {b}")),
         "{}",
-        e.message()
+        conforming_err.message()
     );
 }
 
