@@ -397,8 +397,7 @@ module tfem
     end function tfem_laplacian_stiffness
 
   !> Declares a potential contact interface between the boundary edges tagged `tag_a` (one body) and
-  !! `tag_b` (another body); the contact mesh B is built from matching nodes (a small normal gap is
-  !! allowed)
+  !! `tag_b` (another body)
     function tfem_add_contact_pair(model, tag_a, tag_b, pair) &
         bind(C, name="tfem_add_contact_pair") result(status)
       import

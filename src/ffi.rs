@@ -856,9 +856,11 @@ pub unsafe extern "C" fn tfem_laplacian_stiffness(
 }
 
 /// Declares a potential contact interface between the boundary edges tagged
-/// `tag_a` (one body) and `tag_b` (another body); the contact mesh B is
-/// built from matching nodes (a small normal gap is allowed). Writes the
-/// pair's index (0-based) to `pair` (may be NULL).
+/// `tag_a` (one body) and `tag_b` (another body). The contact mesh B is
+/// built from matching nodes when they match (a small normal gap is
+/// allowed), else by triangulating the strip between the two interfaces
+/// (each must be one open chain of edges). Writes the pair's index
+/// (0-based) to `pair` (may be NULL).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_add_contact_pair(
     model: *mut TfemModel,

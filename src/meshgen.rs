@@ -81,7 +81,7 @@ impl MeshBuilder {
 
     /// Adds the tensor grid xs × ys as its own nodes (so two grids sharing a
     /// line have coincident, distinct nodes there) and splits every cell.
-    /// Returns the node indices by row: `rows[j][i]` is at (xs[i], ys[j]).
+    /// Returns the node indices by row: `rows[j][i]` is at `(xs[i], ys[j])`.
     pub fn add_grid(
         &mut self,
         xs: &[f64],

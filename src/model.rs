@@ -386,8 +386,10 @@ impl Model {
 
     /// Declares a potential contact interface between the edges tagged
     /// `tag_a` (on one body) and `tag_b` (on another). Returns the pair's
-    /// index. The contact mesh B is built from matching nodes at solve time
-    /// unless one is handed over with [`Model::set_contact_mesh`].
+    /// index. The contact mesh B is built from matching nodes when the two
+    /// interfaces' nodes match, else by triangulating the strip between them
+    /// (see [`contact::build`]); or hand one over with
+    /// [`Model::add_contact_pair_with_mesh`].
     pub fn add_contact_pair(&mut self, tag_a: i32, tag_b: i32) -> Result<usize> {
         let mesh = self.mesh_ref()?;
         let (body_a, body_b) = contact::pair_bodies(mesh, tag_a, tag_b)?;
