@@ -19,6 +19,7 @@ use std::collections::{HashMap, HashSet};
 
 use crate::element::{TriGeometry, b_hat};
 use crate::error::{Error, Result};
+use crate::material::Material;
 use crate::mesh::Mesh;
 
 /// The constitutive law of the contact elements.
@@ -471,8 +472,10 @@ fn e_n(n: [f64; 2]) -> [f64; 3] {
     [n[0] * n[0], n[1] * n[1], 2.0 * n[0] * n[1]]
 }
 
-/// The contact constitutive matrix for the law.
-pub fn law_matrix(law: ContactLaw, e_c: f64, nu_c: f64, n: [f64; 2]) -> [[f64; 3]; 3] {
+/// The contact constitutive matrix: E_c m mᵀ with m = [n_x², n_y², n_x n_y]
+/// for the frictionless law; for the stick law the isotropic D of `soft`
+/// (the softer body's material: ν and plane mode) with Young's modulus E_c.
+pub fn law_matrix(law: ContactLaw, e_c: f64, soft: &Material, n: [f64; 2]) -> [[f64; 3]; 3] {
     match law {
         ContactLaw::Frictionless => {
             let m = [n[0] * n[0], n[1] * n[1], n[0] * n[1]];
@@ -484,15 +487,7 @@ pub fn law_matrix(law: ContactLaw, e_c: f64, nu_c: f64, n: [f64; 2]) -> [[f64; 3
             }
             d
         }
-        ContactLaw::Stick => {
-            let mu = e_c / (2.0 * (1.0 + nu_c));
-            let lam = e_c * nu_c / ((1.0 + nu_c) * (1.0 - 2.0 * nu_c));
-            [
-                [lam + 2.0 * mu, lam, 0.0],
-                [lam, lam + 2.0 * mu, 0.0],
-                [0.0, 0.0, mu],
-            ]
-        }
+        ContactLaw::Stick => soft.with_young(e_c).d_matrix(),
     }
 }
 

@@ -107,8 +107,13 @@ pub enum Jmin {
 impl Jmin {
     /// Jmin = h³/λ, written to avoid overflow/underflow of h³ when possible.
     pub fn from_lambda(h: f64, lambda: f64) -> Jmin {
-        Jmin::Tempered((h / lambda) * h * h)
+        Jmin::Tempered(jmin_of_lambda(h, lambda))
     }
+}
+
+/// Jmin = h³/λ as a number.
+pub fn jmin_of_lambda(h: f64, lambda: f64) -> f64 {
+    (h / lambda) * h * h
 }
 
 /// The value T that replaces J in the denominator, or an error for an

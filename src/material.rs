@@ -67,6 +67,13 @@ impl Material {
         })
     }
 
+    /// The same material with another Young's modulus (already checked to
+    /// be finite and > 0 by the caller).
+    pub fn with_young(&self, young: f64) -> Material {
+        debug_assert!(young.is_finite() && young > 0.0);
+        Material { young, ..*self }
+    }
+
     /// Young's modulus.
     pub fn young(&self) -> f64 {
         self.young

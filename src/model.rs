@@ -12,11 +12,11 @@ use std::time::Instant;
 
 use crate::assembly::{DofMap, NOT_FREE, Pattern};
 use crate::contact::{
-    self, ContactElement, ContactLaw, ContactOptions, ContactPair, InversionTest, contact_pressure,
+    self, ContactElement, ContactOptions, ContactPair, InversionTest, contact_pressure,
     contact_stiffness, law_matrix, linearised_jacobian,
 };
 use crate::element::{
-    Jmin, Tempering, TriGeometry, b_hat, elasticity_stiffness, tempered_jacobian,
+    Jmin, Tempering, TriGeometry, b_hat, elasticity_stiffness, jmin_of_lambda, tempered_jacobian,
 };
 use crate::error::{Error, Result, Status};
 use crate::material::Material;
@@ -788,27 +788,8 @@ impl Model {
                 let (ma, mb) = (self.materials[&p.body_a], self.materials[&p.body_b]);
                 let soft = if mb.young() < ma.young() { mb } else { ma };
                 let e_c = opts.contact_modulus.unwrap_or(soft.young());
-                let d = match opts.law {
-                    ContactLaw::Frictionless => {
-                        law_matrix(ContactLaw::Frictionless, e_c, 0.0, el.normal)
-                    }
-                    ContactLaw::Stick => {
-                        Material::new(e_c, soft.poisson(), soft.plane(), "contact")
-                            .map(|m| m.d_matrix())
-                            .unwrap_or_else(|_| {
-                                law_matrix(
-                                    ContactLaw::Stick,
-                                    e_c,
-                                    soft.poisson().min(0.49),
-                                    el.normal,
-                                )
-                            })
-                    }
-                };
-                let t = match Jmin::from_lambda(el.h, lambda_c) {
-                    Jmin::Tempered(t) => t,
-                    Jmin::Off => unreachable!(),
-                };
+                let d = law_matrix(opts.law, e_c, &soft, el.normal);
+                let t = jmin_of_lambda(el.h, lambda_c);
                 ContactParams { d, t }
             })
             .collect();
@@ -1025,8 +1006,7 @@ impl Model {
             };
             if !(restrained && chol.accept_ill_conditioned()) {
                 let mut err = singular_error(mesh, dofs, e, context);
-                if matches!(err.status(), Status::Singular) && chol.factor_nnz() > 0 && usable_hint
-                {
+                if matches!(err.status(), Status::Singular) && usable_hint {
                     err = Error::new(
                         Status::Singular,
                         format!(
