@@ -56,6 +56,7 @@ module tfem
     integer(c_int64_t) :: matrix_nnz
     integer(c_int64_t) :: factor_nnz
     integer(c_int64_t) :: factorizations
+    integer(c_int64_t) :: interface_unknowns
     real(c_double) :: relative_residual
     real(c_double) :: condition_estimate
     integer(c_int64_t) :: memory_bytes
@@ -63,6 +64,7 @@ module tfem
     real(c_double) :: time_assembly
     real(c_double) :: time_factorization
     real(c_double) :: time_solve
+    real(c_double) :: time_interface
     real(c_double) :: time_total
   end type tfem_solve_info
 
@@ -72,6 +74,7 @@ module tfem
     real(c_double) :: lambda
     integer(c_int) :: inversion_test
     integer(c_int) :: max_iterations
+    integer(c_int) :: refactorize
   end type tfem_contact_options
 
   type, bind(C) :: tfem_contact_report

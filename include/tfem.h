@@ -221,6 +221,10 @@ typedef struct tfem_solve_info {
    */
   int64_t factorizations;
   /**
+   * Unknowns of the condensed contact interface (0 if not condensed).
+   */
+  int64_t interface_unknowns;
+  /**
    * ‖K u − f‖ / ‖f‖ of the final system.
    */
   double relative_residual;
@@ -248,6 +252,10 @@ typedef struct tfem_solve_info {
    * Triangular solves.
    */
   double time_solve;
+  /**
+   * Dense work on the condensed contact interface.
+   */
+  double time_interface;
   /**
    * The whole call.
    */
@@ -280,6 +288,11 @@ typedef struct tfem_contact_options {
    * Cap on active-set iterations (default 50).
    */
   int max_iterations;
+  /**
+   * 1 = refactorise the matrix at every active-set iteration; 0 (default)
+   * = condense the changes on the contact interface (faster, exact).
+   */
+  int refactorize;
 } tfem_contact_options;
 
 /**

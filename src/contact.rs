@@ -63,6 +63,10 @@ pub struct ContactOptions {
     pub test: InversionTest,
     /// Cap on active-set iterations.
     pub max_iterations: usize,
+    /// Refactorise the whole matrix at every active-set iteration instead
+    /// of condensing the changes on the interface (see
+    /// [`crate::condensation`]); slower, kept for comparison.
+    pub refactorize: bool,
 }
 
 impl Default for ContactOptions {
@@ -73,6 +77,7 @@ impl Default for ContactOptions {
             lambda: None,
             test: InversionTest::Linearised,
             max_iterations: 50,
+            refactorize: false,
         }
     }
 }

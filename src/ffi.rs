@@ -63,6 +63,9 @@ pub struct TfemContactOptions {
     pub inversion_test: c_int,
     /// Cap on active-set iterations (default 50).
     pub max_iterations: c_int,
+    /// 1 = refactorise the matrix at every active-set iteration; 0 (default)
+    /// = condense the changes on the contact interface (faster, exact).
+    pub refactorize: c_int,
 }
 
 /// Statistics of a solve. Times are wall-clock seconds.
@@ -77,6 +80,8 @@ pub struct TfemSolveInfo {
     pub factor_nnz: i64,
     /// Numeric factorisations performed.
     pub factorizations: i64,
+    /// Unknowns of the condensed contact interface (0 if not condensed).
+    pub interface_unknowns: i64,
     /// ‖K u − f‖ / ‖f‖ of the final system.
     pub relative_residual: f64,
     /// Condition estimate of the Jacobi-scaled final matrix.
@@ -91,6 +96,8 @@ pub struct TfemSolveInfo {
     pub time_factorization: f64,
     /// Triangular solves.
     pub time_solve: f64,
+    /// Dense work on the condensed contact interface.
+    pub time_interface: f64,
     /// The whole call.
     pub time_total: f64,
 }
@@ -254,6 +261,7 @@ fn info_out(i: &SolveInfo) -> TfemSolveInfo {
         unknowns: i.unknowns as i64,
         matrix_nnz: i.matrix_nnz as i64,
         factor_nnz: i.factor_nnz as i64,
+        interface_unknowns: i.interface_unknowns as i64,
         factorizations: i.factorizations as i64,
         relative_residual: i.relative_residual,
         condition_estimate: i.condition_estimate,
@@ -262,6 +270,7 @@ fn info_out(i: &SolveInfo) -> TfemSolveInfo {
         time_assembly: i.timings.assembly,
         time_factorization: i.timings.factorization,
         time_solve: i.timings.solve,
+        time_interface: i.timings.interface,
         time_total: i.timings.total,
     }
 }
@@ -928,6 +937,7 @@ pub unsafe extern "C" fn tfem_contact_options_default(options: *mut TfemContactO
                 lambda: 0.0,
                 inversion_test: d.test as c_int,
                 max_iterations: d.max_iterations as c_int,
+                refactorize: c_int::from(d.refactorize),
             },
             "options",
         )
@@ -973,12 +983,22 @@ fn options_in(o: &TfemContactOptions) -> Result<ContactOptions> {
                 o.max_iterations
             ))
         })?;
+    let refactorize = match o.refactorize {
+        0 => false,
+        1 => true,
+        r => {
+            return Err(Error::argument(format!(
+                "options.refactorize = {r} must be 0 (condense on the interface) or 1"
+            )));
+        }
+    };
     Ok(ContactOptions {
         law,
         contact_modulus: opt(o.contact_modulus, "contact_modulus")?,
         lambda: opt(o.lambda, "lambda")?,
         test,
         max_iterations,
+        refactorize,
     })
 }
 

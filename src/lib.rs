@@ -33,6 +33,7 @@
 #![warn(missing_docs)]
 
 pub mod assembly;
+pub mod condensation;
 pub mod contact;
 pub mod element;
 pub mod error;

@@ -11,9 +11,10 @@ use std::collections::{BTreeMap, HashSet};
 use std::time::Instant;
 
 use crate::assembly::{DofMap, NOT_FREE, Pattern};
+use crate::condensation::{ElementMatrix, Interface};
 use crate::contact::{
-    self, ContactElement, ContactOptions, ContactPair, InversionTest, contact_pressure,
-    contact_stiffness, law_matrix, linearised_jacobian,
+    self, ContactElement, ContactOptions, ContactPair, ContactStiffness, InversionTest,
+    contact_pressure, contact_stiffness, law_matrix, linearised_jacobian,
 };
 use crate::element::{
     Jmin, Tempering, TriGeometry, b_hat, elasticity_stiffness, jmin_of_lambda, tempered_jacobian,
@@ -80,8 +81,39 @@ struct Cache {
     epoch: u64,
     dofs: DofMap,
     pattern: Pattern,
-    chol: Cholesky,
+    coords: Vec<[f64; 2]>,
+    /// The symbolic analysis, made on first need, and the unknowns it
+    /// numbers last (the condensed contact interface, or none).
+    chol: Option<(Vec<usize>, Cholesky)>,
     contact: Vec<ContactElement>,
+}
+
+/// The factorisation object of `slot`, analysed with `last` numbered
+/// last; `None` accepts any existing analysis. (Re-)analyses, timed, when
+/// needed.
+fn analysed<'a>(
+    slot: &'a mut Option<(Vec<usize>, Cholesky)>,
+    pattern: &Pattern,
+    coords: &[[f64; 2]],
+    ordering: Ordering,
+    last: Option<&[usize]>,
+    timings: &mut Timings,
+) -> Result<&'a mut Cholesky> {
+    let fits = match (&*slot, last) {
+        (None, _) => false,
+        (Some(_), None) => true,
+        (Some((have, _)), Some(want)) => have == want,
+    };
+    if !fits {
+        let t0 = Instant::now();
+        let last = last.unwrap_or(&[]);
+        // Drop the old factor first: two at once may not fit in memory.
+        *slot = None;
+        let chol = Cholesky::analyse(pattern, ordering, Some(coords), last)?;
+        *slot = Some((last.to_vec(), chol));
+        timings.analysis += t0.elapsed().as_secs_f64();
+    }
+    Ok(&mut slot.as_mut().expect("just analysed").1)
 }
 
 /// A 2D elasticity model solved with tempered P1 elements.
@@ -564,12 +596,12 @@ impl Model {
             .iter()
             .map(|&g| mesh.nodes()[g / 2])
             .collect();
-        let chol = Cholesky::analyse(&pattern, self.ordering, Some(&coords))?;
         Ok(Cache {
             epoch: self.epoch,
             dofs,
             pattern,
-            chol,
+            coords,
+            chol: None,
             contact,
         })
     }
@@ -668,20 +700,21 @@ impl Model {
         options: Option<ContactOptions>,
         timings: &mut Timings,
     ) -> Result<(Solved, Vec<String>)> {
-        let Cache {
-            dofs,
-            pattern,
-            chol,
-            contact,
-            ..
-        } = cache;
-        let (dofs, pattern, contact) = (&*dofs, &*pattern, &*contact);
         let mesh = self.mesh_ref()?;
         let n_dofs = 2 * mesh.nodes().len();
         let n_body = mesh.triangles().len();
         let mut warnings = Vec::new();
         let up = self.prescribed_vector(n_dofs);
         let f_ext = self.external_forces(mesh);
+        let Cache {
+            dofs,
+            pattern,
+            coords,
+            chol: slot,
+            contact,
+            ..
+        } = cache;
+        let (dofs, pattern, coords, contact) = (&*dofs, &*pattern, &*coords, &*contact);
 
         // Body part of the system: assembled once, reused by every iteration.
         let t0 = Instant::now();
@@ -745,11 +778,12 @@ impl Model {
         let mut info = SolveInfo {
             unknowns: dofs.n_free(),
             matrix_nnz: pattern.nnz(),
-            factor_nnz: chol.factor_nnz(),
             ..Default::default()
         };
 
         let Some(opts) = options else {
+            let chol = analysed(slot, pattern, coords, self.ordering, None, timings)?;
+            info.factor_nnz = chol.factor_nnz();
             let energy = |r: &[f64]| self.body_energy(mesh, r);
             let (u, values, rhs) = self.factor_and_solve(
                 dofs,
@@ -762,6 +796,7 @@ impl Model {
                 &mut info,
                 "",
                 &energy,
+                true,
             )?;
             info.relative_residual = residual(pattern, &values, &u_free(dofs, &u), &rhs);
             info.condition_estimate = chol.condition_estimate();
@@ -810,58 +845,189 @@ impl Model {
             .iter()
             .map(|el| TriGeometry::new(&mesh.corners(&el.nodes)))
             .collect();
+        // An active element is inverted, so its T = Jmin: its matrix and
+        // initial-gap load do not change between iterations.
+        let stiffness: Vec<ContactStiffness> = contact
+            .iter()
+            .enumerate()
+            .map(|(k, el)| contact_stiffness(&geos[k], &params[k].d, el.normal, el.j0, params[k].t))
+            .collect();
+        let unknowns: Vec<[Option<usize>; 6]> = contact
+            .iter()
+            .map(|el| {
+                let mut gd = [0usize; 6];
+                dofs.element_dofs(&el.nodes, &mut gd);
+                gd.map(|g| Some(dofs.free(g)).filter(|&f| f != NOT_FREE))
+            })
+            .collect();
+        // Each element's load on its free unknowns: the initial-gap load
+        // minus the share of the prescribed displacements.
+        let loads: Vec<[f64; 6]> = contact
+            .iter()
+            .enumerate()
+            .map(|(k, el)| {
+                let mut gd = [0usize; 6];
+                dofs.element_dofs(&el.nodes, &mut gd);
+                std::array::from_fn(|a| {
+                    if unknowns[k][a].is_none() {
+                        return 0.0;
+                    }
+                    let mut r = stiffness[k].f0[a];
+                    for b in 0..6 {
+                        if unknowns[k][b].is_none() {
+                            r -= stiffness[k].k[a * 6 + b] * up[gd[b]];
+                        }
+                    }
+                    r
+                })
+            })
+            .collect();
+        let interface = if opts.refactorize {
+            Vec::new()
+        } else {
+            interface_unknowns(&stiffness, &unknowns, &geos, opts.test)
+        };
+        let condense = Interface::worthwhile(interface.len(), pattern.nnz());
+        let last = if condense { Some(&interface[..]) } else { None };
+        let chol = analysed(slot, pattern, coords, self.ordering, last, timings)?;
+        info.factor_nnz = chol.factor_nnz();
+        let free_to_global = dofs.free_to_global();
+
+        let assemble = |active: &[bool]| {
+            let mut values = values_body.clone();
+            let mut rhs = rhs_body.clone();
+            for (k, el) in contact.iter().enumerate() {
+                if active[k] {
+                    Self::scatter(
+                        dofs,
+                        pattern,
+                        &mut values,
+                        &mut rhs,
+                        n_body + k,
+                        &el.nodes,
+                        &stiffness[k].k,
+                        Some(&stiffness[k].f0),
+                        &up,
+                    );
+                }
+            }
+            (values, rhs)
+        };
         // Start from all of B: for touching surfaces these are the initially
         // touching elements (the seed's choice); with a small gap the first
         // solve pulls the surfaces together, which keeps a body held only by
         // contact restrained. The set then shrinks to the inverted ones.
+        // Being the stiffest matrix of the loop, K₁ is also the reference
+        // that the condensed iterations update.
         let mut active: Vec<bool> = vec![true; contact.len()];
         let mut seen: HashSet<Vec<bool>> = HashSet::new();
         seen.insert(active.clone());
         let mut history = Vec::new();
-        let mut result = None;
+        // The condensed system and the first iteration's solution x₁ (over
+        // the unknowns) it is relative to.
+        let mut condensed: Option<(Interface, Vec<f64>)> = None;
+        // The active set the interface factor currently represents.
+        let mut factor_active = active.clone();
+        let mut u = Vec::new();
+        let mut last_full: Option<(Vec<f64>, Vec<f64>)> = None;
+        let mut converged = false;
         for it in 1..=opts.max_iterations {
-            let t0 = Instant::now();
-            let mut values = values_body.clone();
-            let mut rhs = rhs_body.clone();
-            for (k, el) in contact.iter().enumerate() {
-                if !active[k] {
-                    continue;
-                }
-                let cs = contact_stiffness(&geos[k], &params[k].d, el.normal, el.j0, params[k].t);
-                Self::scatter(
-                    dofs,
-                    pattern,
-                    &mut values,
-                    &mut rhs,
-                    n_body + k,
-                    &el.nodes,
-                    &cs.k,
-                    Some(&cs.f0),
-                    &up,
-                );
-            }
-            timings.assembly += t0.elapsed().as_secs_f64();
             let n_active = active.iter().filter(|&&a| a).count();
             let context = format!(" (contact iteration {it}, {n_active} active contact elements)");
-            let energy = |r: &[f64]| {
-                let mut acc = self.body_energy(mesh, r);
-                for (k, el) in contact.iter().enumerate() {
-                    if active[k] {
-                        let cs = contact_stiffness(
-                            &geos[k],
-                            &params[k].d,
-                            el.normal,
-                            el.j0,
-                            params[k].t,
-                        );
-                        add_energy(&mut acc, &cs.k, r, &el.nodes);
-                    }
-                }
-                acc
+            let element = |k: usize, sign: f64| {
+                (
+                    ElementMatrix {
+                        unknowns: &unknowns[k],
+                        matrix: &stiffness[k].k,
+                    },
+                    sign,
+                )
             };
-            let (u, values, rhs) = self.factor_and_solve(
-                dofs, pattern, chol, values, rhs, &up, timings, &mut info, &context, &energy,
-            )?;
+            let mut done = false;
+            if let Some((sys, x1)) = condensed.as_mut() {
+                let t0 = Instant::now();
+                // A few changes since the factorised set: update the factor;
+                // many: refactorise Ŝ₁ minus the inactive elements.
+                let changed: Vec<usize> = (0..contact.len())
+                    .filter(|&k| active[k] != factor_active[k])
+                    .collect();
+                let sign = |k: usize| if active[k] { 1.0 } else { -1.0 };
+                // (Measured: a rank-1 update costs ~1/20 of a refactorisation
+                // at 2000 interface unknowns.)
+                let updated = 24 * changed.len() <= sys.len()
+                    && sys.is_factored()
+                    && sys
+                        .update(changed.iter().map(|&k| element(k, sign(k))))
+                        .is_ok();
+                let factored = updated || {
+                    let removed = (0..contact.len()).filter(|&k| !active[k]);
+                    sys.factorize(removed.map(|k| element(k, -1.0))).is_ok()
+                };
+                factor_active.clone_from(&active);
+                if factored {
+                    let mut g = vec![0.0; sys.len()];
+                    for k in (0..contact.len()).filter(|&k| !active[k]) {
+                        for a in 0..6 {
+                            if let Some(p) = unknowns[k][a].and_then(|i| sys.position(i)) {
+                                g[p] -= loads[k][a];
+                            }
+                        }
+                    }
+                    let ui = sys.solve(&sys.gather(x1), &g)?;
+                    // Only interface values enter the inversion test (the
+                    // others have zero coefficients); keep x₁ elsewhere.
+                    for (p, &i) in sys.unknowns().iter().enumerate() {
+                        u[free_to_global[i]] = ui[p];
+                    }
+                    last_full = None;
+                    done = true;
+                } else {
+                    // Singular or nearly so: the full factorisation below
+                    // names the free mode (or accepts an ill-conditioned but
+                    // restrained system). The condensation ends here.
+                    condensed = None;
+                }
+                timings.interface += t0.elapsed().as_secs_f64();
+            }
+            if !done {
+                let t0 = Instant::now();
+                let (values, rhs) = assemble(&active);
+                timings.assembly += t0.elapsed().as_secs_f64();
+                let energy = |r: &[f64]| {
+                    let mut acc = self.body_energy(mesh, r);
+                    for (k, el) in contact.iter().enumerate() {
+                        if active[k] {
+                            add_energy(&mut acc, &stiffness[k].k, r, &el.nodes);
+                        }
+                    }
+                    acc
+                };
+                // A condensed loop refines its final solution against the
+                // final matrix; refining x₁ as well would be wasted.
+                let refine_here = !(it == 1 && condense);
+                let (uk, values, rhs) = self.factor_and_solve(
+                    dofs,
+                    pattern,
+                    chol,
+                    values,
+                    rhs,
+                    &up,
+                    timings,
+                    &mut info,
+                    &context,
+                    &energy,
+                    refine_here,
+                )?;
+                if it == 1 && condense {
+                    let t0 = Instant::now();
+                    let sys = Interface::new(chol, interface.clone())?;
+                    info.interface_unknowns = sys.len();
+                    condensed = Some((sys, u_free(dofs, &uk)));
+                    timings.interface += t0.elapsed().as_secs_f64();
+                }
+                u = uk;
+                last_full = Some((values, rhs));
+            }
             let next: Vec<bool> = contact
                 .iter()
                 .enumerate()
@@ -897,7 +1063,7 @@ impl Model {
                 switched_off: off,
             });
             if next == active {
-                result = Some((u, values, rhs));
+                converged = true;
                 break;
             }
             if !seen.insert(next.clone()) {
@@ -911,7 +1077,7 @@ impl Model {
             }
             active = next;
         }
-        let Some((u, values, rhs)) = result else {
+        if !converged {
             return Err(Error::new(
                 Status::NotConverged,
                 format!(
@@ -920,10 +1086,68 @@ impl Model {
                     format_history(&history)
                 ),
             ));
+        }
+        let (values, rhs) = match last_full {
+            Some(full) => full,
+            None => {
+                // The last iterate is condensed: recover the whole field,
+                // u = x₁ + K₁⁻¹ P(Δg + ΔC u_I), refined against K itself.
+                let (sys, x1) = condensed.as_ref().expect("a condensed iterate");
+                let t0 = Instant::now();
+                let (values, rhs) = assemble(&active);
+                timings.assembly += t0.elapsed().as_secs_f64();
+                let t0 = Instant::now();
+                // p = ΔC v_I − Δg over the unknowns (ΔC, Δg: what the inactive
+                // elements took out of K₁ and of its load).
+                let interface_product = |v: &dyn Fn(usize) -> f64, with_load: bool| {
+                    let mut p = vec![0.0; dofs.n_free()];
+                    for k in (0..contact.len()).filter(|&k| !active[k]) {
+                        for a in 0..6 {
+                            let Some(i) = unknowns[k][a] else { continue };
+                            let mut r = if with_load { -loads[k][a] } else { 0.0 };
+                            for b in 0..6 {
+                                let c = stiffness[k].k[a * 6 + b];
+                                // (Only interface unknowns have coefficients.)
+                                if let (Some(j), true) = (unknowns[k][b], c != 0.0) {
+                                    r += c * v(j);
+                                }
+                            }
+                            p[i] += r;
+                        }
+                    }
+                    p
+                };
+                let mut x = interface_product(&|j| u[free_to_global[j]], true);
+                chol.solve(&mut x)?;
+                x.iter_mut().zip(x1).for_each(|(a, b)| *a += b);
+                let mut solve = |r: &mut [f64]| -> Result<()> {
+                    // K δ = r: y = K₁⁻¹r, S δ_I = S₁ y_I, δ = y + K₁⁻¹PΔC δ_I.
+                    chol.solve(r)?;
+                    let di = sys.solve(&sys.gather(r), &vec![0.0; sys.len()])?;
+                    let mut p = interface_product(
+                        &|j| {
+                            di[sys
+                                .position(j)
+                                .expect("coupled unknowns are on the interface")]
+                        },
+                        false,
+                    );
+                    chol.solve(&mut p)?;
+                    r.iter_mut().zip(&p).for_each(|(a, b)| *a += b);
+                    Ok(())
+                };
+                refine(pattern, &values, &rhs, &mut x, &mut solve)?;
+                timings.solve += t0.elapsed().as_secs_f64();
+                u = self.global_field(dofs, &x, &up, &context_final(&history))?;
+                (values, rhs)
+            }
         };
         info.relative_residual = residual(pattern, &values, &u_free(dofs, &u), &rhs);
         info.condition_estimate = chol.condition_estimate();
-        info.memory_bytes = memory(pattern, chol);
+        info.memory_bytes = memory(pattern, chol)
+            + condensed
+                .as_ref()
+                .map_or(0, |(sys, x1)| sys.memory_bytes() + 8 * x1.len());
         info.timings = *timings;
         conditioning_warning(&info, &mut warnings);
 
@@ -980,6 +1204,7 @@ impl Model {
         info: &mut SolveInfo,
         context: &str,
         rigid_energy: &dyn Fn(&[f64]) -> (f64, f64),
+        refined: bool,
     ) -> Result<(Vec<f64>, Vec<f64>, Vec<f64>)> {
         let mesh = self.mesh_ref()?;
         let t0 = Instant::now();
@@ -1023,28 +1248,26 @@ impl Model {
         let t0 = Instant::now();
         let mut x = rhs.clone();
         chol.solve(&mut x)?;
-        // Iterative refinement, only where it pays: a residual above 1e-10
-        // (extreme stiffness contrasts) is refined while each step at least
-        // halves it; a well-conditioned system costs one product, no solve.
-        let nb = norm(&rhs);
-        let mut kx = vec![0.0; x.len()];
-        let mut previous = f64::INFINITY;
-        for _ in 0..3 {
-            pattern.sym_mul(&values, &x, &mut kx);
-            let mut r: Vec<f64> = rhs.iter().zip(&kx).map(|(b, k)| b - k).collect();
-            let rn = norm(&r);
-            // (A NaN residual also stops: the finiteness check reports it.)
-            if rn.is_nan() || rn <= 1e-10 * nb || rn > 0.5 * previous {
-                break;
-            }
-            previous = rn;
-            chol.solve(&mut r)?;
-            x.iter_mut().zip(&r).for_each(|(a, d)| *a += d);
+        if refined {
+            refine(pattern, &values, &rhs, &mut x, &mut |r| chol.solve(r))?;
         }
         timings.solve += t0.elapsed().as_secs_f64();
+        let u = self.global_field(dofs, &x, up, context)?;
+        Ok((u, values, rhs))
+    }
+
+    /// The global displacement vector from the unknowns and the prescribed
+    /// values; refuses a non-finite value, naming its node.
+    fn global_field(
+        &self,
+        dofs: &DofMap,
+        x: &[f64],
+        up: &[f64],
+        context: &str,
+    ) -> Result<Vec<f64>> {
+        let mesh = self.mesh_ref()?;
         let mut u = up.to_vec();
-        let free_to_global = dofs.free_to_global();
-        for (f, &g) in free_to_global.iter().enumerate() {
+        for (f, &g) in dofs.free_to_global().iter().enumerate() {
             u[g] = x[f];
         }
         if let Some(g) = u.iter().position(|v| !v.is_finite()) {
@@ -1056,7 +1279,7 @@ impl Model {
                 ),
             ));
         }
-        Ok((u, values, rhs))
+        Ok(u)
     }
 
     /// (rᵀKr, Σ diag energy) of the body elements for a global vector r.
@@ -1317,6 +1540,69 @@ fn singular_error(mesh: &Mesh, dofs: &DofMap, e: FactorError, context: &str) -> 
             )
         }
     }
+}
+
+/// Iterative refinement of K x = rhs, only where it pays: a residual above
+/// 1e-10 (extreme stiffness contrasts) is refined while each step at least
+/// halves it; a well-conditioned system costs one product, no solve.
+fn refine(
+    pattern: &Pattern,
+    values: &[f64],
+    rhs: &[f64],
+    x: &mut [f64],
+    solve: &mut dyn FnMut(&mut [f64]) -> Result<()>,
+) -> Result<()> {
+    let nb = norm(rhs);
+    let mut kx = vec![0.0; x.len()];
+    let mut previous = f64::INFINITY;
+    for _ in 0..3 {
+        pattern.sym_mul(values, x, &mut kx);
+        let mut r: Vec<f64> = rhs.iter().zip(&kx).map(|(b, k)| b - k).collect();
+        let rn = norm(&r);
+        // (A NaN residual also stops: the finiteness check reports it.)
+        if rn.is_nan() || rn <= 1e-10 * nb || rn > 0.5 * previous {
+            break;
+        }
+        previous = rn;
+        solve(&mut r)?;
+        x.iter_mut().zip(&r).for_each(|(a, d)| *a += d);
+    }
+    Ok(())
+}
+
+/// The free unknowns of the condensed contact interface: those with a
+/// nonzero coefficient in an element of B — in its matrix, its load, or its
+/// inversion test (the literal test needs every unknown of its nodes). For
+/// a straight interface under the frictionless law these are the normal
+/// components only, half of the contact nodes' unknowns.
+fn interface_unknowns(
+    stiffness: &[ContactStiffness],
+    unknowns: &[[Option<usize>; 6]],
+    geos: &[TriGeometry],
+    test: InversionTest,
+) -> Vec<usize> {
+    let mut set = Vec::new();
+    for (k, cs) in stiffness.iter().enumerate() {
+        for a in 0..6 {
+            let Some(i) = unknowns[k][a] else { continue };
+            let coupled = cs.k[a * 6..a * 6 + 6].iter().any(|&v| v != 0.0)
+                || cs.f0[a] != 0.0
+                || match test {
+                    InversionTest::Linearised => geos[k].g[a / 2][a % 2] != 0.0,
+                    InversionTest::Literal => true,
+                };
+            if coupled {
+                set.push(i);
+            }
+        }
+    }
+    set.sort_unstable();
+    set.dedup();
+    set
+}
+
+fn context_final(history: &[IterationRecord]) -> String {
+    format!(" (contact solution after {} iterations)", history.len())
 }
 
 fn element_u(u: &[f64], tri: &[usize; 3]) -> [f64; 6] {

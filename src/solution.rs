@@ -11,6 +11,9 @@ pub struct Timings {
     pub factorization: f64,
     /// Triangular solves, summed.
     pub solve: f64,
+    /// Dense work on the condensed contact interface (reading its Schur
+    /// complement, factorising and solving it at each iteration).
+    pub interface: f64,
     /// The whole call.
     pub total: f64,
 }
@@ -26,6 +29,9 @@ pub struct SolveInfo {
     pub factor_nnz: usize,
     /// Numeric factorisations performed.
     pub factorizations: usize,
+    /// Unknowns of the condensed contact interface (0 when the active-set
+    /// loop refactorised instead).
+    pub interface_unknowns: usize,
     /// ‖K u − f‖ / ‖f‖ over the unknowns, for the final system.
     pub relative_residual: f64,
     /// Condition estimate of the Jacobi-scaled final matrix.

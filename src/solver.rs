@@ -11,12 +11,13 @@
 
 use faer::dyn_stack::{MemBuffer, MemStack};
 use faer::linalg::cholesky::llt::factor::LltRegularization;
+use faer::sparse::linalg::cholesky::supernodal::SupernodalLltRef;
 use faer::sparse::linalg::cholesky::{
-    CholeskySymbolicParams, LltRef, SymbolicCholesky, SymmetricOrdering,
+    CholeskySymbolicParams, LltRef, SymbolicCholesky, SymbolicCholeskyRaw, SymmetricOrdering,
     factorize_symbolic_cholesky,
 };
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
-use faer::{Conj, MatMut, Par, Side};
+use faer::{Conj, Mat, MatMut, Par, Side};
 
 use faer::perm::PermRef;
 
@@ -69,6 +70,7 @@ pub struct Cholesky {
     usable: bool,
     min_eigenvalue: f64,
     max_eigenvalue_bound: f64,
+    n_last: usize,
 }
 
 fn oom(what: &str) -> Error {
@@ -81,29 +83,39 @@ fn oom(what: &str) -> Error {
 impl Cholesky {
     /// Symbolic analysis of `pattern` with a fill-reducing ordering: AMD, or
     /// geometric nested dissection when `coords` (one point per unknown)
-    /// are given and `ordering` asks for it.
+    /// are given and `ordering` asks for it. The unknowns in `last` are
+    /// numbered last, in that order, so that the trailing block of the
+    /// factor is the Cholesky factor of their Schur complement (see
+    /// [`Cholesky::last_block_factor`]); the others are ordered as asked.
     pub fn analyse(
         pattern: &Pattern,
         ordering: Ordering,
         coords: Option<&[[f64; 2]]>,
+        last: &[usize],
     ) -> Result<Cholesky> {
         let n = pattern.n();
         let sym =
             SymbolicSparseColMatRef::new_checked(n, n, pattern.col_ptr(), None, pattern.row_idx());
-        let nd = match coords {
-            Some(c) if ordering.use_nested_dissection(n) => {
-                let fwd = nested_dissection(pattern.col_ptr(), pattern.row_idx(), c);
-                let mut inv = vec![0usize; n];
-                for (new, &old) in fwd.iter().enumerate() {
-                    inv[old] = new;
+        let perm = if last.is_empty() {
+            match coords {
+                Some(c) if ordering.use_nested_dissection(n) => {
+                    Some(nested_dissection(pattern.col_ptr(), pattern.row_idx(), c))
                 }
-                Some((fwd, inv))
+                _ => None,
             }
-            _ => None,
+        } else {
+            Some(order_with_last(pattern, ordering, coords, last)?)
         };
-        let ord = match &nd {
-            Some((fwd, inv)) => SymmetricOrdering::Custom(PermRef::new_checked(fwd, inv, n)),
-            None => SymmetricOrdering::Amd,
+        let inv = perm.as_ref().map(|fwd| {
+            let mut inv = vec![0usize; n];
+            for (new, &old) in fwd.iter().enumerate() {
+                inv[old] = new;
+            }
+            inv
+        });
+        let ord = match (&perm, &inv) {
+            (Some(fwd), Some(inv)) => SymmetricOrdering::Custom(PermRef::new_checked(fwd, inv, n)),
+            _ => SymmetricOrdering::Amd,
         };
         let symbolic =
             factorize_symbolic_cholesky(sym, Side::Upper, ord, CholeskySymbolicParams::default())
@@ -130,7 +142,65 @@ impl Cholesky {
             usable: false,
             min_eigenvalue: f64::NAN,
             max_eigenvalue_bound: f64::NAN,
+            n_last: last.len(),
         })
+    }
+
+    /// The Jacobi scaling s of the last factorisation: the factor is that of
+    /// diag(s) K diag(s), which has a unit diagonal.
+    pub fn scale(&self) -> &[f64] {
+        &self.scale
+    }
+
+    /// The trailing diagonal block L₂₂ of the factor of the scaled matrix
+    /// (dense, lower triangular), over the unknowns given as `last` to
+    /// [`Cholesky::analyse`], in that order. With K = [K₁₁ K₁₂; K₂₁ K₂₂]
+    /// (the `last` unknowns second), L₂₂L₂₂ᵀ = diag(s₂) S diag(s₂) where
+    /// S = K₂₂ − K₂₁K₁₁⁻¹K₁₂ is their Schur complement: the exact condensed
+    /// stiffness, for free, from the factorisation already paid for.
+    /// Requires a successful [`Cholesky::factorize`].
+    pub fn last_block_factor(&self) -> Result<Mat<f64>> {
+        if !self.factored {
+            return Err(Error::state("no successful factorisation to read"));
+        }
+        let n = self.n();
+        let first = n - self.n_last;
+        let mut l = Mat::<f64>::zeros(self.n_last, self.n_last);
+        match self.symbolic.raw() {
+            SymbolicCholeskyRaw::Simplicial(s) => {
+                let (cp, ri) = (s.col_ptr(), s.row_idx());
+                for j in first..n {
+                    for p in cp[j]..cp[j + 1] {
+                        // Every row of a trailing column is itself trailing.
+                        l[(ri[p] - first, j - first)] = self.l_values[p];
+                    }
+                }
+            }
+            SymbolicCholeskyRaw::Supernodal(s) => {
+                let llt = SupernodalLltRef::new(s, &self.l_values);
+                for k in 0..s.n_supernodes() {
+                    let node = llt.supernode(k);
+                    let (start, val, pattern) = (node.start(), node.val(), node.pattern());
+                    let ncols = val.ncols();
+                    if start + ncols <= first {
+                        continue;
+                    }
+                    for c in 0..ncols {
+                        let j = start + c;
+                        if j < first {
+                            continue;
+                        }
+                        for r in c..ncols {
+                            l[(start + r - first, j - first)] = val[(r, c)];
+                        }
+                        for (r, &i) in pattern.iter().enumerate() {
+                            l[(i - first, j - first)] = val[(ncols + r, c)];
+                        }
+                    }
+                }
+            }
+        }
+        Ok(l)
     }
 
     /// Number of unknowns.
@@ -332,6 +402,75 @@ impl Cholesky {
     }
 }
 
+/// A fill-reducing ordering (`perm[new] = old`) of the unknowns not in
+/// `last`, followed by `last`. The others are ordered on their own graph
+/// (the pattern restricted to them), by nested dissection or AMD.
+fn order_with_last(
+    pattern: &Pattern,
+    ordering: Ordering,
+    coords: Option<&[[f64; 2]]>,
+    last: &[usize],
+) -> Result<Vec<usize>> {
+    const LAST: usize = usize::MAX;
+    let n = pattern.n();
+    let mut sub = vec![0usize; n];
+    for &i in last {
+        if i >= n || sub[i] == LAST {
+            return Err(Error::argument(format!(
+                "unknown {i} is out of range or repeated in the set numbered last"
+            )));
+        }
+        sub[i] = LAST;
+    }
+    let rest: Vec<usize> = (0..n).filter(|&i| sub[i] != LAST).collect();
+    for (k, &i) in rest.iter().enumerate() {
+        sub[i] = k;
+    }
+    let m = rest.len();
+    let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
+    let mut col_ptr = Vec::with_capacity(m + 1);
+    let mut row_idx = Vec::new();
+    col_ptr.push(0);
+    for &j in &rest {
+        row_idx.extend(
+            ri[cp[j]..cp[j + 1]]
+                .iter()
+                .filter(|&&i| sub[i] != LAST)
+                .map(|&i| sub[i]),
+        );
+        col_ptr.push(row_idx.len());
+    }
+    let order = match coords {
+        Some(c) if ordering.use_nested_dissection(m) => {
+            let c: Vec<[f64; 2]> = rest.iter().map(|&i| c[i]).collect();
+            nested_dissection(&col_ptr, &row_idx, &c)
+        }
+        _ => {
+            let (mut fwd, mut inv) = (vec![0usize; m], vec![0usize; m]);
+            let sym = SymbolicSparseColMatRef::new_checked(m, m, &col_ptr, None, &row_idx);
+            let mut mem = MemBuffer::try_new(faer::sparse::linalg::amd::order_scratch::<usize>(
+                m,
+                row_idx.len(),
+            ))
+            .map_err(|_| oom("ordering workspace"))?;
+            faer::sparse::linalg::amd::order(
+                &mut fwd,
+                &mut inv,
+                sym,
+                Default::default(),
+                MemStack::new(&mut mem),
+            )
+            .map_err(|_| oom("ordering"))?;
+            fwd
+        }
+    };
+    Ok(order
+        .into_iter()
+        .map(|k| rest[k])
+        .chain(last.iter().copied())
+        .collect())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -357,7 +496,7 @@ mod tests {
     #[test]
     fn solves_a_grounded_chain() {
         let (p, v) = chain(50, true);
-        let mut c = Cholesky::analyse(&p, Ordering::Amd, None).unwrap();
+        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &[]).unwrap();
         c.factorize(&p, &v).unwrap();
         let mut b = vec![0.0; 50];
         b[49] = 1.0;
@@ -375,9 +514,44 @@ mod tests {
     }
 
     #[test]
+    fn the_trailing_block_of_the_factor_is_the_schur_complement_of_the_last_unknowns() {
+        let n = 40;
+        let (p, v) = chain(n, true);
+        let last = [30usize, 5, 17];
+        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &last).unwrap();
+        c.factorize(&p, &v).unwrap();
+        let l = c.last_block_factor().unwrap();
+        // Independent dense Schur complement (nalgebra): K22 − K21 K11⁻¹ K12.
+        let mut k = nalgebra::DMatrix::<f64>::zeros(n, n);
+        let (cp, ri) = (p.col_ptr(), p.row_idx());
+        for j in 0..n {
+            for q in cp[j]..cp[j + 1] {
+                k[(ri[q], j)] = v[q];
+                k[(j, ri[q])] = v[q];
+            }
+        }
+        let rest: Vec<usize> = (0..n).filter(|i| !last.contains(i)).collect();
+        let k11 = k.select_rows(&rest).select_columns(&rest);
+        let k12 = k.select_rows(&rest).select_columns(&last);
+        let k22 = k.select_rows(&last).select_columns(&last);
+        let s = &k22 - k12.transpose() * k11.cholesky().unwrap().solve(&k12);
+        for a in 0..3 {
+            for b in 0..3 {
+                let llt: f64 = (0..3).map(|m| l[(a, m)] * l[(b, m)]).sum();
+                let got = llt / (c.scale()[last[a]] * c.scale()[last[b]]);
+                let want = s[(a, b)];
+                assert!(
+                    (got - want).abs() <= 1e-12 * s.norm(),
+                    "S[{a},{b}] = {got} vs {want}"
+                );
+            }
+        }
+    }
+
+    #[test]
     fn detects_a_floating_chain_and_returns_its_constant_mode() {
         let (p, v) = chain(30, false);
-        let mut c = Cholesky::analyse(&p, Ordering::Amd, None).unwrap();
+        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &[]).unwrap();
         match c.factorize(&p, &v) {
             Err(FactorError::Singular { mode: Some(m), .. }) => {
                 let mean = m.iter().sum::<f64>() / m.len() as f64;

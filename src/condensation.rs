@@ -1,0 +1,342 @@
+//! Interface condensation of the active-set loop.
+//!
+//! Between active-set iterations only contact elements change, and they
+//! couple only the interface unknowns I (the unknowns of the contact nodes
+//! with a nonzero coefficient in an element of B). With I numbered last, the
+//! one sparse factorisation of K₁ (the first iteration's matrix) ends with
+//! the dense Cholesky factor of its Schur complement S₁ on I
+//! ([`Cholesky::last_block_factor`]). Any later matrix is
+//! K = K₁ − P ΔC Pᵀ with ΔC supported on I, so its Schur complement is
+//! S = S₁ − ΔC and the interface displacements solve the small dense system
+//!
+//!   S u_I = S₁ x₁|_I + Δg,
+//!
+//! where x₁ solves the first iteration and Δg is the change of the contact
+//! loads. The inversion test needs only u_I; the full field is recovered
+//! once, at convergence, by one more sparse solve:
+//! u = x₁ + K₁⁻¹ P (Δg + ΔC u_I). Exact, no refactorisation.
+//!
+//! Everything dense is held in the Jacobi scaling s of K₁ (Ŝ = diag(s) S
+//! diag(s)), where the diagonal is ~1 and the singularity test of the
+//! sparse factorisation carries over.
+
+use faer::dyn_stack::{MemBuffer, MemStack};
+use faer::linalg::cholesky::llt::factor::{cholesky_in_place, cholesky_in_place_scratch};
+use faer::linalg::cholesky::llt::update::rank_r_update_clobber;
+use faer::linalg::matmul::triangular::{BlockStructure, matmul};
+use faer::linalg::triangular_solve::{
+    solve_lower_triangular_in_place, solve_upper_triangular_in_place,
+};
+use faer::{Accum, Mat, MatMut, Par};
+
+use crate::error::{Error, Result, Status};
+use crate::solver::{Cholesky, SINGULAR_TOL};
+
+fn singular_error(eig: f64) -> Error {
+    Error::new(
+        Status::Singular,
+        format!("the condensed interface matrix is singular (smallest eigenvalue ≤ {eig:.1e})"),
+    )
+}
+
+/// Marks an unknown outside the interface.
+const OUTSIDE: u32 = u32::MAX;
+
+/// An element's contribution to the interface: its unknowns (indices over
+/// the free unknowns, `None` when prescribed) and its 6×6 matrix.
+pub struct ElementMatrix<'a> {
+    /// Free-unknown index of each of the 6 element DOFs.
+    pub unknowns: &'a [Option<usize>; 6],
+    /// Row-major 6×6 element matrix.
+    pub matrix: &'a [f64; 36],
+}
+
+/// The condensed interface system of one factorised reference matrix K₁.
+pub struct Interface {
+    unknowns: Vec<usize>,
+    position: Vec<u32>,
+    scale: Vec<f64>,
+    /// Ŝ₁, both triangles.
+    s_ref: Mat<f64>,
+    /// The Cholesky factor of the current Ŝ (lower triangle).
+    factor: Mat<f64>,
+    factored: bool,
+    min_eigenvalue: f64,
+    par: Par,
+}
+
+impl Interface {
+    /// Largest interface handled densely.
+    pub const MAX_UNKNOWNS: usize = 8192;
+
+    /// Whether condensing `n_interface` unknowns pays for a matrix with
+    /// `matrix_nnz` stored entries: the dense interface matrices must stay
+    /// small beside the sparse factor (which holds many times the matrix).
+    pub fn worthwhile(n_interface: usize, matrix_nnz: usize) -> bool {
+        n_interface > 0
+            && n_interface <= Self::MAX_UNKNOWNS
+            && n_interface * n_interface <= 4 * matrix_nnz
+    }
+
+    /// Reads Ŝ₁ from the factorisation of K₁, analysed with `unknowns`
+    /// (sorted free-unknown indices) numbered last.
+    pub fn new(chol: &Cholesky, unknowns: Vec<usize>) -> Result<Interface> {
+        let n = unknowns.len();
+        let mut position = vec![OUTSIDE; chol.n()];
+        for (k, &i) in unknowns.iter().enumerate() {
+            position[i] = k as u32;
+        }
+        let scale: Vec<f64> = unknowns.iter().map(|&i| chol.scale()[i]).collect();
+        let l = chol.last_block_factor()?;
+        let par = Par::rayon(0);
+        let mut s_ref = Mat::<f64>::zeros(n, n);
+        matmul(
+            s_ref.as_mut(),
+            BlockStructure::TriangularLower,
+            Accum::Replace,
+            l.as_ref(),
+            BlockStructure::TriangularLower,
+            l.as_ref().transpose(),
+            BlockStructure::TriangularUpper,
+            1.0,
+            par,
+        );
+        for j in 0..n {
+            for i in 0..j {
+                s_ref[(i, j)] = s_ref[(j, i)];
+            }
+        }
+        Ok(Interface {
+            unknowns,
+            position,
+            scale,
+            s_ref,
+            // L₂₂ is already the factor of Ŝ₁, checked with the sparse factor.
+            factor: l,
+            factored: true,
+            min_eigenvalue: chol.min_eigenvalue_estimate(),
+            par,
+        })
+    }
+
+    /// Number of interface unknowns.
+    pub fn len(&self) -> usize {
+        self.unknowns.len()
+    }
+
+    /// Whether the interface is empty.
+    pub fn is_empty(&self) -> bool {
+        self.unknowns.is_empty()
+    }
+
+    /// Bytes held by the two dense matrices.
+    pub fn memory_bytes(&self) -> usize {
+        16 * self.len() * self.len()
+    }
+
+    /// The free-unknown indices of the interface, in order.
+    pub fn unknowns(&self) -> &[usize] {
+        &self.unknowns
+    }
+
+    /// Upper bound of the smallest eigenvalue of the last factorised Ŝ.
+    pub fn min_eigenvalue_estimate(&self) -> f64 {
+        self.min_eigenvalue
+    }
+
+    fn add(
+        position: &[u32],
+        scale: &[f64],
+        m: &mut MatMut<'_, f64>,
+        e: &ElementMatrix<'_>,
+        sign: f64,
+    ) {
+        for a in 0..6 {
+            let Some(pa) = e.unknowns[a].map(|i| position[i]) else {
+                continue;
+            };
+            if pa == OUTSIDE {
+                continue;
+            }
+            for b in 0..6 {
+                let Some(pb) = e.unknowns[b].map(|i| position[i]) else {
+                    continue;
+                };
+                if pb == OUTSIDE {
+                    continue;
+                }
+                let (pa, pb) = (pa as usize, pb as usize);
+                m[(pa, pb)] += sign * scale[pa] * e.matrix[a * 6 + b] * scale[pb];
+            }
+        }
+    }
+
+    /// Factorises Ŝ = Ŝ₁ + Σ sign·Ĉₑ over the element changes relative to
+    /// K₁. Fails with [`Status::Singular`] when Ŝ is not positive definite
+    /// or its smallest eigenvalue is below [`SINGULAR_TOL`]; the caller
+    /// then falls back to a full factorisation, which names the free mode.
+    pub fn factorize<'a>(
+        &mut self,
+        changes: impl Iterator<Item = (ElementMatrix<'a>, f64)>,
+    ) -> Result<()> {
+        self.factored = false;
+        let n = self.len();
+        self.factor.copy_from(&self.s_ref);
+        {
+            let mut f = self.factor.as_mut();
+            for (e, sign) in changes {
+                Self::add(&self.position, &self.scale, &mut f, &e, sign);
+            }
+        }
+        let mut mem = MemBuffer::try_new(cholesky_in_place_scratch::<f64>(
+            n,
+            self.par,
+            Default::default(),
+        ))
+        .map_err(|_| Error::new(Status::OutOfMemory, "interface factorisation workspace"))?;
+        cholesky_in_place(
+            self.factor.as_mut(),
+            Default::default(),
+            self.par,
+            MemStack::new(&mut mem),
+            Default::default(),
+        )
+        .map_err(|_| singular_error(0.0))?;
+        self.check()
+    }
+
+    /// Updates the current factor for element changes relative to the
+    /// matrix it factorises (not to Ŝ₁): each change's scaled matrix is split
+    /// into its eigenpairs (one for a frictionless element, up to three
+    /// otherwise) and applied as a rank-r update, O(n²r) instead of the
+    /// O(n³) refactorisation. Fails like [`Interface::factorize`], and also
+    /// when a downdate loses definiteness in round-off; the factor is then
+    /// unusable and the caller refactorises.
+    pub fn update<'a>(
+        &mut self,
+        changes: impl Iterator<Item = (ElementMatrix<'a>, f64)>,
+    ) -> Result<()> {
+        if !self.factored {
+            return Err(Error::state("interface update without a factor"));
+        }
+        self.factored = false;
+        let mut columns: Vec<(Vec<(usize, f64)>, f64)> = Vec::new();
+        for (e, sign) in changes {
+            let on: Vec<(usize, usize)> = (0..6)
+                .filter_map(|a| {
+                    let i = e.unknowns[a]?;
+                    (self.position[i] != OUTSIDE).then_some((a, self.position[i] as usize))
+                })
+                .collect();
+            if on.is_empty() {
+                continue;
+            }
+            let m = on.len();
+            let km = nalgebra::DMatrix::from_fn(m, m, |r, c| {
+                let ((a, pa), (b, pb)) = (on[r], on[c]);
+                self.scale[pa] * e.matrix[a * 6 + b] * self.scale[pb]
+            });
+            let eig = km.symmetric_eigen();
+            let top = eig.eigenvalues.amax();
+            for (k, &lambda) in eig.eigenvalues.iter().enumerate() {
+                // Eigenvalues at round-off level of the largest are the
+                // element's exact zeros (its rank deficiency), not data.
+                if lambda.abs() > 64.0 * f64::EPSILON * top {
+                    let v = eig.eigenvectors.column(k);
+                    let col = on
+                        .iter()
+                        .enumerate()
+                        .map(|(r, &(_, p))| (p, v[r]))
+                        .collect();
+                    columns.push((col, sign * lambda));
+                }
+            }
+        }
+        let n = self.len();
+        let mut w = Mat::<f64>::zeros(n, columns.len());
+        let mut alpha = faer::diag::Diag::<f64>::zeros(columns.len());
+        for (j, (col, a)) in columns.iter().enumerate() {
+            for &(p, v) in col {
+                w[(p, j)] = v;
+            }
+            alpha[j] = *a;
+        }
+        rank_r_update_clobber(self.factor.as_mut(), w.as_mut(), alpha.as_mut())
+            .map_err(|_| singular_error(0.0))?;
+        self.check()
+    }
+
+    /// Whether the current factor is usable.
+    pub fn is_factored(&self) -> bool {
+        self.factored
+    }
+
+    /// Inverse-iteration bound of the smallest eigenvalue of the freshly
+    /// factorised Ŝ; marks the factor usable when it passes.
+    fn check(&mut self) -> Result<()> {
+        let n = self.len();
+        let mut x: Vec<f64> = (0..n).map(|i| 1.0 + (i % 7) as f64 * 0.1).collect();
+        let mut eig = f64::INFINITY;
+        for _ in 0..3 {
+            let nx = x.iter().map(|a| a * a).sum::<f64>().sqrt();
+            x.iter_mut().for_each(|a| *a /= nx);
+            self.solve_scaled(&mut x);
+            eig = 1.0 / x.iter().map(|a| a * a).sum::<f64>().sqrt();
+        }
+        self.min_eigenvalue = eig;
+        if eig >= SINGULAR_TOL {
+            self.factored = true;
+            Ok(())
+        } else {
+            Err(singular_error(eig))
+        }
+    }
+
+    fn solve_scaled(&self, x: &mut [f64]) {
+        let n = x.len();
+        let mut rhs = MatMut::from_column_major_slice_mut(x, n, 1);
+        solve_lower_triangular_in_place(self.factor.as_ref(), rhs.as_mut(), self.par);
+        solve_upper_triangular_in_place(self.factor.as_ref().transpose(), rhs, self.par);
+    }
+
+    /// Solves S u_I = S₁ y_I + g_I for u_I (all over the interface, in its
+    /// order, unscaled), with the last factorised S: the interface values of
+    /// K⁻¹(b + P g) for any b with y = K₁⁻¹ b.
+    pub fn solve(&self, y: &[f64], g: &[f64]) -> Result<Vec<f64>> {
+        if !self.factored {
+            return Err(Error::state("interface solve before a factorisation"));
+        }
+        let n = self.len();
+        let yh: Vec<f64> = (0..n).map(|k| y[k] / self.scale[k]).collect();
+        let mut x = vec![0.0; n];
+        for j in 0..n {
+            let yj = yh[j];
+            if yj != 0.0 {
+                for (xi, &s) in x.iter_mut().zip(self.s_ref.col(j).iter()) {
+                    *xi += s * yj;
+                }
+            }
+        }
+        for k in 0..n {
+            x[k] += self.scale[k] * g[k];
+        }
+        self.solve_scaled(&mut x);
+        for k in 0..n {
+            x[k] *= self.scale[k];
+        }
+        Ok(x)
+    }
+
+    /// Gathers the interface values of a vector over the free unknowns.
+    pub fn gather(&self, v: &[f64]) -> Vec<f64> {
+        self.unknowns.iter().map(|&i| v[i]).collect()
+    }
+
+    /// Interface position of a free unknown, if it is on the interface.
+    pub fn position(&self, unknown: usize) -> Option<usize> {
+        match self.position[unknown] {
+            OUTSIDE => None,
+            p => Some(p as usize),
+        }
+    }
+}
