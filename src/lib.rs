@@ -44,6 +44,7 @@ pub mod material;
 pub mod mesh;
 pub mod meshgen;
 pub mod model;
+pub mod oracle;
 pub mod ordering;
 pub mod scenes;
 pub mod solution;

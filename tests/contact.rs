@@ -1,14 +1,11 @@
 //! Frictionless contact by activating inverted contact elements, checked
 //! against an exact frictionless oracle (node-to-node Lagrange multipliers,
-//! primal-dual active set, on the same conforming mesh; written here, not in
-//! the library), and on the seed scene.
+//! primal-dual active set, on the same conforming mesh; `tfem::oracle`, which
+//! shares nothing with the TFEM contact path), and on the seed scene.
 
 use std::collections::{BTreeSet, HashMap};
 
-use faer::linalg::solvers::SolveCore;
-use faer::sparse::{SparseColMat, Triplet};
-use faer::{Conj, MatMut};
-use tfem::element::{Jmin, TriGeometry, elasticity_stiffness};
+use tfem::element::TriGeometry;
 use tfem::scenes::{
     TAG_CONTACT_LOWER, TAG_CONTACT_UPPER, TwoBlocks, TwoBlocksResult, TwoBlocksScene,
 };
@@ -21,120 +18,16 @@ fn solve(scene: &TwoBlocks) -> (TwoBlocksScene, TwoBlocksResult) {
     (s, r)
 }
 
-/// Node pairs across the interface (lower node, upper node), matched by x.
 fn interface_pairs(model: &Model) -> Vec<(usize, usize)> {
-    let mesh = model.mesh().unwrap();
-    let side = |tag: i32| -> BTreeSet<usize> {
-        mesh.boundary_edges()
-            .iter()
-            .filter(|e| e.tag == tag)
-            .flat_map(|e| e.nodes)
-            .collect()
-    };
-    let upper: HashMap<u64, usize> = side(TAG_CONTACT_UPPER)
-        .into_iter()
-        .map(|v| (mesh.nodes()[v][0].to_bits(), v))
-        .collect();
-    side(TAG_CONTACT_LOWER)
-        .into_iter()
-        .map(|a| (a, upper[&mesh.nodes()[a][0].to_bits()]))
-        .collect()
+    tfem::oracle::interface_pairs(model, TAG_CONTACT_LOWER, TAG_CONTACT_UPPER).unwrap()
 }
 
-/// Exact frictionless contact on the node pairs: minimise the energy subject
-/// to v_b − v_a + g0 >= 0, by a primal-dual active set on the saddle-point
-/// system [K −Cᵀ; C 0] (sparse LU). Returns displacements and the active
-/// pairs. The interface is y = const, so the normal is (0, 1).
+/// The exact frictionless oracle (`tfem::oracle`: node-to-node multipliers,
+/// primal-dual active set, sparse LU; it shares only the body stiffness
+/// with TFEM): displacements and active node pairs.
 fn oracle(model: &Model) -> (Vec<f64>, BTreeSet<(usize, usize)>) {
-    let mesh = model.mesh().unwrap();
-    let n = 2 * mesh.nodes().len();
-    let fixed: HashMap<usize, f64> = model.constraints().collect();
-    let f = model.load_vector().unwrap();
-    let pairs = interface_pairs(model);
-    let gap0: Vec<f64> = pairs
-        .iter()
-        .map(|&(a, b)| mesh.nodes()[b][1] - mesh.nodes()[a][1])
-        .collect();
-    let mut k_triplets = Vec::new();
-    for (tri, body) in mesh.triangles().iter().zip(mesh.body_of()) {
-        let geo = TriGeometry::new(&mesh.corners(tri));
-        let d = model.material(*body).unwrap().d_matrix();
-        let ke = elasticity_stiffness(&geo, &d, Jmin::Off).unwrap();
-        for a in 0..6 {
-            let ga = 2 * tri[a / 2] + a % 2;
-            if fixed.contains_key(&ga) {
-                continue;
-            }
-            for b in 0..6 {
-                let gb = 2 * tri[b / 2] + b % 2;
-                k_triplets.push(Triplet::new(ga, gb, ke[a][b]));
-            }
-        }
-    }
-    // Identity rows and constraint rows are scaled like the stiffness so
-    // that the LU's pivoting sees one scale.
-    let s = k_triplets.iter().map(|t| t.val.abs()).fold(0.0, f64::max);
-    for &g in fixed.keys() {
-        k_triplets.push(Triplet::new(g, g, s));
-    }
-    let mut active: Vec<bool> = vec![true; pairs.len()];
-    for _ in 0..100 {
-        let idx: Vec<usize> = (0..pairs.len()).filter(|&i| active[i]).collect();
-        let m = idx.len();
-        let mut t = k_triplets.clone();
-        for (r, &i) in idx.iter().enumerate() {
-            let (a, b) = pairs[i];
-            for (g, sign) in [(2 * b + 1, s), (2 * a + 1, -s)] {
-                t.push(Triplet::new(n + r, g, sign));
-                t.push(Triplet::new(g, n + r, -sign));
-            }
-        }
-        let mut rhs: Vec<f64> = (0..n)
-            .map(|g| fixed.get(&g).map_or(f[g], |v| s * v))
-            .collect();
-        rhs.extend(idx.iter().map(|&i| -s * gap0[i]));
-        let a = SparseColMat::<usize, f64>::try_new_from_triplets(n + m, n + m, &t).unwrap();
-        let lu = a.sp_lu().unwrap();
-        let mut x = rhs.clone();
-        lu.solve_in_place_with_conj(
-            Conj::No,
-            MatMut::from_column_major_slice_mut(&mut x, n + m, 1),
-        );
-        // Two steps of iterative refinement.
-        for _ in 0..2 {
-            let mut r = rhs.clone();
-            for tr in &t {
-                r[tr.row] -= tr.val * x[tr.col];
-            }
-            lu.solve_in_place_with_conj(
-                Conj::No,
-                MatMut::from_column_major_slice_mut(&mut r, n + m, 1),
-            );
-            x.iter_mut().zip(&r).for_each(|(a, b)| *a += b);
-        }
-        let (u, lambda) = x.split_at(n);
-        let scale = lambda
-            .iter()
-            .fold(0.0f64, |s, l| s.max(l.abs()))
-            .max(1e-300);
-        let mut next = vec![false; pairs.len()];
-        for (i, &(a, b)) in pairs.iter().enumerate() {
-            next[i] = if active[i] {
-                lambda[idx.iter().position(|&j| j == i).unwrap()] > 1e-12 * scale
-            } else {
-                u[2 * b + 1] - u[2 * a + 1] + gap0[i] < 0.0
-            };
-        }
-        if next == active {
-            let set = (0..pairs.len())
-                .filter(|&i| active[i])
-                .map(|i| pairs[i])
-                .collect();
-            return (u.to_vec(), set);
-        }
-        active = next;
-    }
-    panic!("the oracle's active set did not converge");
+    let o = tfem::oracle::frictionless_oracle(model, TAG_CONTACT_LOWER, TAG_CONTACT_UPPER).unwrap();
+    (o.u, o.active)
 }
 
 /// The node pairs tested by the active contact elements: on a flat
