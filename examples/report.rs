@@ -341,9 +341,9 @@ fn seed(report: &mut String, a: &Args) {
                     .and_then(|cs| Some((cs[name]["value"].as_f64()?, cs[name]["err"].as_f64()?)))
                     .map_or("– | –".into(), |(rv, re)| {
                         format!(
-                            "{rv:.6e} ± {re:.1e} | {:+.2e} ({:+.1} err)",
+                            "{rv:.6e} ± {re:.1e} | {:+.2e} ({:.1} error bars)",
                             (x - rv) / rv,
-                            (x - rv) / re
+                            (x - rv).abs() / re
                         )
                     });
                 writeln!(
