@@ -155,7 +155,14 @@ typedef enum tfem_inversion_test {
   /**
    * J linearised about the initial configuration, J0 + Σ g_i·u_i < 0
    * (consistent with small strain; for a flat conforming element, the
-   * node-pair normal gap). The default: it never cycled in our studies.
+   * node-pair normal gap). Under the frictionless law, only its normal
+   * part J0 + Σ (n·g_i)(n·u_i) — the element's normal opening: the
+   * node-to-segment gap at its apex times its interface edge, the very
+   * quantity the law penalises — so that an active element always pushes.
+   * The two differ by J0·ε_tt (the interface stretching times the initial
+   * gap): nothing on touching surfaces, but on a curved gap, where the
+   * bodies strain by a percent, enough to activate elements that then
+   * pull. The default.
    */
   TFEM_INVERSION_TEST_LINEARISED = 0,
   /**

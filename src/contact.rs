@@ -15,7 +15,7 @@
 //! opening, not on the displacement jump alone, so an element that closes an
 //! initial gap switches on without a force jump.
 
-use std::collections::{HashMap, HashSet};
+use std::collections::{BTreeMap, HashMap, HashSet};
 
 use crate::element::{TriGeometry, b_hat};
 use crate::error::{Error, Result};
@@ -40,7 +40,14 @@ pub enum ContactLaw {
 pub enum InversionTest {
     /// J linearised about the initial configuration, J0 + Σ g_i·u_i < 0
     /// (consistent with small strain; for a flat conforming element, the
-    /// node-pair normal gap). The default: it never cycled in our studies.
+    /// node-pair normal gap). Under the frictionless law, only its normal
+    /// part J0 + Σ (n·g_i)(n·u_i) — the element's normal opening: the
+    /// node-to-segment gap at its apex times its interface edge, the very
+    /// quantity the law penalises — so that an active element always pushes.
+    /// The two differ by J0·ε_tt (the interface stretching times the initial
+    /// gap): nothing on touching surfaces, but on a curved gap, where the
+    /// bodies strain by a percent, enough to activate elements that then
+    /// pull. The default.
     Linearised = 0,
     /// The seed's literal test, J(X + u) < 0. Its second-order term (slope
     /// times slip) can exceed the penalty penetration on fine meshes and make
@@ -496,6 +503,33 @@ pub fn law_matrix(law: ContactLaw, e_c: f64, soft: &Material, n: [f64; 2]) -> [[
     }
 }
 
+/// The active set the loop starts from: per pair, the elements whose gap
+/// (J₀ over the interface edge: the apex's distance from the edge) is within
+/// 1e-3 of their size of the pair's smallest gap. Touching or uniformly
+/// spaced surfaces start fully active (the seed's choice: the first solve
+/// pulls a small uniform gap closed, which keeps a body held only by contact
+/// restrained); curved ones start from their first points of contact, so
+/// that the loop grows the set instead of releasing a glued interface one
+/// element at a time.
+pub fn initial_active_set(elements: &[ContactElement]) -> Vec<bool> {
+    let gap = |e: &ContactElement| {
+        if e.edge_length > 0.0 {
+            e.j0 / e.edge_length
+        } else {
+            0.0
+        }
+    };
+    let mut smallest: BTreeMap<usize, f64> = BTreeMap::new();
+    for e in elements {
+        let g = smallest.entry(e.pair).or_insert(f64::INFINITY);
+        *g = g.min(gap(e));
+    }
+    elements
+        .iter()
+        .map(|e| gap(e) <= smallest[&e.pair] + 1e-3 * e.h)
+        .collect()
+}
+
 /// Stiffness and initial-gap load of an active contact element. An active
 /// element is inverted, so max(J, Jmin) = Jmin: `t` is its Jmin.
 pub fn contact_stiffness(
@@ -558,6 +592,36 @@ pub fn contact_pressure(
 }
 
 /// The linearised Jacobian J0 + Σ g_i·u_i.
+/// The linearised opening the inversion test uses and the law penalises:
+/// for the frictionless law the normal part of the linearised J,
+/// J0 + Σ (n·g_i)(n·u_i); for the stick law the whole linearised J.
+pub fn linearised_opening(geo: &TriGeometry, law: ContactLaw, n: [f64; 2], ue: &[f64; 6]) -> f64 {
+    match law {
+        ContactLaw::Stick => linearised_jacobian(geo, ue),
+        ContactLaw::Frictionless => {
+            geo.j
+                + (0..3)
+                    .map(|i| {
+                        (geo.g[i][0] * n[0] + geo.g[i][1] * n[1])
+                            * (ue[2 * i] * n[0] + ue[2 * i + 1] * n[1])
+                    })
+                    .sum::<f64>()
+        }
+    }
+}
+
+/// Coefficient of element DOF `a` (node a/2, component a%2) in
+/// [`linearised_opening`].
+pub fn opening_coefficient(geo: &TriGeometry, law: ContactLaw, n: [f64; 2], a: usize) -> f64 {
+    let g = geo.g[a / 2];
+    match law {
+        ContactLaw::Stick => g[a % 2],
+        ContactLaw::Frictionless => (g[0] * n[0] + g[1] * n[1]) * n[a % 2],
+    }
+}
+
+/// The linearised Jacobian J0 + Σ g_i·u_i of an element with displacements
+/// `ue`.
 pub fn linearised_jacobian(geo: &TriGeometry, ue: &[f64; 6]) -> f64 {
     geo.j
         + (0..3)

@@ -56,6 +56,26 @@ pub fn subdivide_symmetric(a: f64, b: f64, stops: &[f64], h: f64) -> Vec<f64> {
     out
 }
 
+/// Points from `a` to `b` (a < b): spacing `h` up to `a + fine`, then each
+/// spacing `ratio` times the previous (a geometric grading away from a
+/// region of interest at `a`), the last one stretched or merged to end at
+/// `b` exactly.
+pub fn graded(a: f64, b: f64, h: f64, fine: f64, ratio: f64) -> Vec<f64> {
+    let mut out = subdivide(a, (a + fine).min(b), &[], h);
+    let mut step = (out[out.len() - 1] - out[out.len().saturating_sub(2)]).max(h);
+    let mut x = out[out.len() - 1];
+    while x < b {
+        step *= ratio;
+        x += step;
+        if x + 0.5 * step >= b {
+            x = b;
+        }
+        out.push(x.min(b));
+    }
+    out.dedup();
+    out
+}
+
 /// Nodes, triangles and body tags under construction.
 #[derive(Debug, Clone, Default)]
 pub struct MeshBuilder {
@@ -89,9 +109,24 @@ impl MeshBuilder {
         body: i32,
         diagonal: Diagonal,
     ) -> Vec<Vec<usize>> {
+        self.add_mapped_grid(xs, ys, |x, y| [x, y], body, diagonal)
+    }
+
+    /// Like [`MeshBuilder::add_grid`], with node (xs[i], ys[j]) placed at
+    /// `map(xs[i], ys[j])`: a structured mesh of a curved region. The map
+    /// must keep every cell convex and counter-clockwise (checked when the
+    /// mesh is built).
+    pub fn add_mapped_grid(
+        &mut self,
+        xs: &[f64],
+        ys: &[f64],
+        map: impl Fn(f64, f64) -> [f64; 2],
+        body: i32,
+        diagonal: Diagonal,
+    ) -> Vec<Vec<usize>> {
         let rows: Vec<Vec<usize>> = ys
             .iter()
-            .map(|&y| xs.iter().map(|&x| self.add_node([x, y])).collect())
+            .map(|&y| xs.iter().map(|&x| self.add_node(map(x, y))).collect())
             .collect();
         for j in 0..ys.len() - 1 {
             for i in 0..xs.len() - 1 {

@@ -14,7 +14,7 @@ use crate::assembly::{DofMap, NOT_FREE, Pattern};
 use crate::condensation::{ElementMatrix, Interface};
 use crate::contact::{
     self, ContactElement, ContactOptions, ContactPair, ContactStiffness, InversionTest,
-    contact_pressure, contact_stiffness, law_matrix, linearised_jacobian,
+    contact_pressure, contact_stiffness, law_matrix, linearised_opening, opening_coefficient,
 };
 use crate::element::{
     Jmin, Tempering, TriGeometry, b_hat, elasticity_stiffness, jmin_of_lambda, tempered_jacobian,
@@ -885,7 +885,7 @@ impl Model {
         let interface = if opts.refactorize {
             Vec::new()
         } else {
-            interface_unknowns(&stiffness, &unknowns, &geos, opts.test)
+            interface_unknowns(contact, &stiffness, &unknowns, &geos, &opts)
         };
         let condense = Interface::worthwhile(interface.len(), pattern.nnz());
         let last = if condense { Some(&interface[..]) } else { None };
@@ -913,13 +913,12 @@ impl Model {
             }
             (values, rhs)
         };
-        // Start from all of B: for touching surfaces these are the initially
-        // touching elements (the seed's choice); with a small gap the first
-        // solve pulls the surfaces together, which keeps a body held only by
-        // contact restrained. The set then shrinks to the inverted ones.
-        // Being the stiffest matrix of the loop, K₁ is also the reference
-        // that the condensed iterations update.
-        let mut active: Vec<bool> = vec![true; contact.len()];
+        // Start from the elements at each pair's smallest gap (all of B for
+        // touching or uniformly spaced surfaces, the seed's choice; the
+        // first point of contact of curved ones). K₁ is the reference the
+        // condensed iterations update.
+        let initial = contact::initial_active_set(contact);
+        let mut active = initial.clone();
         let mut seen: HashSet<Vec<bool>> = HashSet::new();
         seen.insert(active.clone());
         let mut history = Vec::new();
@@ -952,6 +951,10 @@ impl Model {
                     .filter(|&k| active[k] != factor_active[k])
                     .collect();
                 let sign = |k: usize| if active[k] { 1.0 } else { -1.0 };
+                // Changes relative to K₁: elements added (+) or removed (−).
+                let relative: Vec<usize> = (0..contact.len())
+                    .filter(|&k| active[k] != initial[k])
+                    .collect();
                 // (Measured: a rank-1 update costs ~1/20 of a refactorisation
                 // at 2000 interface unknowns.)
                 let updated = 24 * changed.len() <= sys.len()
@@ -959,17 +962,17 @@ impl Model {
                     && sys
                         .update(changed.iter().map(|&k| element(k, sign(k))))
                         .is_ok();
-                let factored = updated || {
-                    let removed = (0..contact.len()).filter(|&k| !active[k]);
-                    sys.factorize(removed.map(|k| element(k, -1.0))).is_ok()
-                };
+                let factored = updated
+                    || sys
+                        .factorize(relative.iter().map(|&k| element(k, sign(k))))
+                        .is_ok();
                 factor_active.clone_from(&active);
                 if factored {
                     let mut g = vec![0.0; sys.len()];
-                    for k in (0..contact.len()).filter(|&k| !active[k]) {
+                    for &k in &relative {
                         for a in 0..6 {
                             if let Some(p) = unknowns[k][a].and_then(|i| sys.position(i)) {
-                                g[p] -= loads[k][a];
+                                g[p] += sign(k) * loads[k][a];
                             }
                         }
                     }
@@ -1034,7 +1037,9 @@ impl Model {
                 .map(|(k, el)| {
                     let ue = element_u(&u, &el.nodes);
                     let j = match opts.test {
-                        InversionTest::Linearised => linearised_jacobian(&geos[k], &ue),
+                        InversionTest::Linearised => {
+                            linearised_opening(&geos[k], opts.law, el.normal, &ue)
+                        }
                         InversionTest::Literal => {
                             let mut x = mesh.corners(&el.nodes);
                             for (i, p) in x.iter_mut().enumerate() {
@@ -1097,11 +1102,13 @@ impl Model {
                 let (values, rhs) = assemble(&active);
                 timings.assembly += t0.elapsed().as_secs_f64();
                 let t0 = Instant::now();
-                // p = ΔC v_I − Δg over the unknowns (ΔC, Δg: what the inactive
-                // elements took out of K₁ and of its load).
+                // p = ΔC v_I − Δg over the unknowns, ΔC = C₁ − C and
+                // Δg = g₁ − g: what the elements removed since K₁ took out of
+                // it and its load, minus what the added ones put in.
                 let interface_product = |v: &dyn Fn(usize) -> f64, with_load: bool| {
                     let mut p = vec![0.0; dofs.n_free()];
-                    for k in (0..contact.len()).filter(|&k| !active[k]) {
+                    for k in (0..contact.len()).filter(|&k| active[k] != initial[k]) {
+                        let removed = if initial[k] { 1.0 } else { -1.0 };
                         for a in 0..6 {
                             let Some(i) = unknowns[k][a] else { continue };
                             let mut r = if with_load { -loads[k][a] } else { 0.0 };
@@ -1112,7 +1119,7 @@ impl Model {
                                     r += c * v(j);
                                 }
                             }
-                            p[i] += r;
+                            p[i] += removed * r;
                         }
                     }
                     p
@@ -1161,7 +1168,7 @@ impl Model {
             pressure[k] =
                 contact_pressure(&geos[k], &params[k].d, el.normal, el.j0, params[k].t, &ue);
             lc += 0.5 * el.edge_length;
-            let opening = linearised_jacobian(&geos[k], &ue);
+            let opening = linearised_opening(&geos[k], opts.law, el.normal, &ue);
             if el.edge_length > 0.0 {
                 max_pen = max_pen.max(-opening / el.edge_length);
             }
@@ -1576,11 +1583,13 @@ fn refine(
 /// a straight interface under the frictionless law these are the normal
 /// components only, half of the contact nodes' unknowns.
 fn interface_unknowns(
+    contact: &[ContactElement],
     stiffness: &[ContactStiffness],
     unknowns: &[[Option<usize>; 6]],
     geos: &[TriGeometry],
-    test: InversionTest,
+    opts: &ContactOptions,
 ) -> Vec<usize> {
+    let (test, law) = (opts.test, opts.law);
     let mut set = Vec::new();
     for (k, cs) in stiffness.iter().enumerate() {
         for a in 0..6 {
@@ -1588,7 +1597,9 @@ fn interface_unknowns(
             let coupled = cs.k[a * 6..a * 6 + 6].iter().any(|&v| v != 0.0)
                 || cs.f0[a] != 0.0
                 || match test {
-                    InversionTest::Linearised => geos[k].g[a / 2][a % 2] != 0.0,
+                    InversionTest::Linearised => {
+                        opening_coefficient(&geos[k], law, contact[k].normal, a) != 0.0
+                    }
                     InversionTest::Literal => true,
                 };
             if coupled {

@@ -4,6 +4,8 @@
 //! Meshed by the built-in structured triangulator with nodes on x = L/2 and
 //! x = L/2 ± C, mirror-symmetric about x = L/2.
 
+pub mod hertz;
+
 use crate::contact::ContactOptions;
 use crate::element::Tempering;
 use crate::error::{Error, Result};
