@@ -586,6 +586,125 @@ fn patch_test(report: &mut String, a: &Args) {
     .unwrap();
 }
 
+/// Hertz contact: the curved, gapped, possibly non-matching interface.
+fn hertz(report: &mut String, a: &Args) {
+    use tfem::scenes::hertz::Hertz;
+    let levels: Vec<f64> = if a.quick {
+        vec![4.0, 8.0, 16.0]
+    } else {
+        vec![4.0, 8.0, 16.0, 32.0, 64.0]
+    };
+    let base = Hertz::default();
+    writeln!(
+        report,
+        "## Error against run time: Hertz contact\n\n\
+         A cylinder (R = {}) pressed on a block, plane strain, frictionless, half model; the load \
+         is chosen for a = {} R (`tfem::scenes::hertz`: graded built-in mesh, the cylinder's part \
+         near the contact spans 40a, the block 100a). B is the strip triangulation of the curved gap. \
+         *a*: where the block's nodal contact pressure ends; *p₀*: the block's nodal pressure on the \
+         axis; *fit*: least squares of p² = p₀²(1 − x²/a²) over the inner 80 % of the contact. \
+         Relative errors against a = √(4PR/(πE*)), p₀ = 2P/(πa); rates fitted in h.\n",
+        base.radius, base.half_width
+    )
+    .unwrap();
+    let cases = [
+        ("equal moduli", Hertz::default()),
+        (
+            "cylinder 100× stiffer",
+            Hertz {
+                e_cylinder: 100.0 * base.e_block,
+                ..base
+            },
+        ),
+        (
+            "cylinder 100× softer",
+            Hertz {
+                e_cylinder: 0.01 * base.e_block,
+                ..base
+            },
+        ),
+        (
+            "non-matching (cylinder mesh 2.5× coarser)",
+            Hertz {
+                cylinder_mesh_ratio: 2.5,
+                ..base
+            },
+        ),
+    ];
+    let mut curves = Vec::new();
+    for (label, case) in cases {
+        writeln!(
+            report,
+            "### {label}\n\n| h | unknowns | iterations | time [s] | err a | err p₀ | err a (fit) | err p₀ (fit) |\n|---|---|---|---|---|---|---|---|"
+        )
+        .unwrap();
+        let (mut hs, mut ea, mut ep, mut ef, mut pts) =
+            (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
+        for &k in &levels {
+            let hz = Hertz {
+                mesh_size: case.half_width / k,
+                ..case
+            };
+            let mut s = hz.build().expect("scene");
+            let t0 = Instant::now();
+            match s.solve(&hz, &ContactOptions::default()) {
+                Ok(r) => {
+                    let t = t0.elapsed().as_secs_f64();
+                    let rel = |v: f64, e: f64| (v - e) / e;
+                    writeln!(
+                        report,
+                        "| a/{k} | {} | {} | {t:.3} | {:+.2e} | {:+.2e} | {:+.2e} | {:+.2e} |",
+                        r.report.info.unknowns,
+                        r.report.iterations,
+                        rel(r.a, r.a_exact),
+                        rel(r.p0, r.p0_exact),
+                        rel(r.a_fit, r.a_exact),
+                        rel(r.p0_fit, r.p0_exact)
+                    )
+                    .unwrap();
+                    hs.push(1.0 / k);
+                    ea.push(rel(r.a, r.a_exact).abs());
+                    ep.push(rel(r.p0, r.p0_exact).abs());
+                    ef.push(rel(r.p0_fit, r.p0_exact).abs());
+                    pts.push((t, rel(r.p0_fit, r.p0_exact).abs()));
+                }
+                Err(e) => {
+                    writeln!(report, "| a/{k} | {}: {} |", e.status().name(), e.message()).unwrap()
+                }
+            }
+        }
+        if hs.len() >= 2 {
+            writeln!(
+                report,
+                "\nFitted rates in h: a {:.2}, p₀ {:.2}, p₀ (fit) {:.2}.\n",
+                fitted_rate(&hs, &ea),
+                fitted_rate(&hs, &ep),
+                fitted_rate(&hs, &ef)
+            )
+            .unwrap();
+        }
+        curves.push(Curve {
+            label: format!("{label}: p₀ (fit)"),
+            points: pts,
+        });
+    }
+    let file = a.out.join("hertz_error_time.svg");
+    if let Err(e) = plot(
+        &file,
+        "Hertz contact: relative error of the peak pressure (fit) against wall time",
+        "time [s]",
+        "relative error",
+        &curves,
+    ) {
+        eprintln!("plot: {e}");
+    }
+    writeln!(
+        report,
+        "![Hertz error against time](hertz_error_time.svg)\n"
+    )
+    .unwrap();
+}
+
 fn stability(report: &mut String, a: &Args) {
     let base = TwoBlocks {
         mesh_size: if a.quick { 1.0 / 32.0 } else { 1.0 / 64.0 },
@@ -934,6 +1053,7 @@ fn main() {
     manufactured(&mut report, &a);
     seed(&mut report, &a);
     patch_test(&mut report, &a);
+    hertz(&mut report, &a);
     stability(&mut report, &a);
     speed(&mut report, &a);
     built(&mut report);

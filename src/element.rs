@@ -40,8 +40,17 @@ impl TriGeometry {
         let [[x1, y1], [x2, y2], [x3, y3]] = *p;
         let g = [[y2 - y3, x3 - x2], [y3 - y1, x1 - x3], [y1 - y2, x2 - x1]];
         let j = det2(x2 - x1, x3 - x1, y2 - y1, y3 - y1);
-        let len = |a: [f64; 2]| a[0].hypot(a[1]);
-        let h = len(g[0]).max(len(g[1])).max(len(g[2]));
+        // One square root of the largest squared length; hypot (no
+        // overflow or underflow, but ~10x slower) only when the squares
+        // leave the normal range (coordinates beyond ~1e±150).
+        let sq = |a: [f64; 2]| a[0].mul_add(a[0], a[1] * a[1]);
+        let h2 = sq(g[0]).max(sq(g[1])).max(sq(g[2]));
+        let h = if h2.is_normal() || (h2 == 0.0 && g.iter().flatten().all(|&c| c == 0.0)) {
+            h2.sqrt()
+        } else {
+            let len = |a: [f64; 2]| a[0].hypot(a[1]);
+            len(g[0]).max(len(g[1])).max(len(g[2]))
+        };
         TriGeometry { g, j, h }
     }
 
