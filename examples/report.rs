@@ -237,8 +237,10 @@ fn seed(report: &mut String, a: &Args) {
          independent reference (GetFEM, exact frictionless contact, extrapolated; `{}`), when found, \
          and against the exact frictionless oracle on the same mesh (`tfem::oracle`: node-to-node \
          multipliers, sparse LU; up to h = 1/{oracle_max}): *same set* says whether its contact node \
-         pairs are exactly TFEM's. Times: analysis (pattern, ordering, symbolic), assembly, the one \
-         numeric factorisation, solves, dense interface work, whole contact solve.\n",
+         pairs are exactly TFEM's. Times: mesh (generation and model set-up), analysis (pattern, \
+         ordering, symbolic), assembly, the one numeric factorisation, solves, dense interface work, \
+         whole contact solve (without the mesh). Memory: allocated by pattern, values, factor and \
+         interface (peak process memory: the speed section).\n",
         a.reference.display()
     )
     .unwrap();
@@ -249,12 +251,13 @@ fn seed(report: &mut String, a: &Args) {
         writeln!(report, "### 2C/L = {:.1}\n", 2.0 * c).unwrap();
         writeln!(
             report,
-            "| h | unknowns | iterations | analysis | assembly | factorisation | solves | dense | total [s] | ℓc | err ℓc | err gap_edge | err v_top | err compliance | same set as oracle | vs oracle: gap_edge | v_top | compliance | max penetration |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+            "| h | unknowns | iterations | mesh | analysis | assembly | factorisation | solves | dense | total [s] | memory [MB] | ℓc | err ℓc | err gap_edge | err v_top | err compliance | same set as oracle | vs oracle: gap_edge | v_top | compliance | max penetration |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
         )
         .unwrap();
         let mut pts = Vec::new();
         let mut seq: Vec<[f64; 4]> = Vec::new();
         for &n in &levels {
+            let t_mesh = Instant::now();
             let mut s = TwoBlocks {
                 c,
                 mesh_size: 1.0 / n as f64,
@@ -262,6 +265,7 @@ fn seed(report: &mut String, a: &Args) {
             }
             .build()
             .expect("scene");
+            let t_mesh = t_mesh.elapsed().as_secs_f64();
             let t0 = Instant::now();
             let r = match s.solve(&ContactOptions::default()) {
                 Ok(r) => r,
@@ -302,7 +306,7 @@ fn seed(report: &mut String, a: &Args) {
             let i = r.report.info;
             writeln!(
                 report,
-                "| 1/{n} | {} | {} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.4} | {} | {} | {} | {} | {vs_oracle} | {:.2e} |",
+                "| 1/{n} | {} | {} | {t_mesh:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.3} | {:.0} | {:.4} | {} | {} | {} | {} | {vs_oracle} | {:.2e} |",
                 i.unknowns,
                 r.report.iterations,
                 i.timings.analysis,
@@ -311,6 +315,7 @@ fn seed(report: &mut String, a: &Args) {
                 i.timings.solve,
                 i.timings.interface,
                 total,
+                i.memory_bytes as f64 / 1e6,
                 r.lc,
                 rel("lc", r.lc),
                 rel("gap_edge", r.gap_edge),
