@@ -771,11 +771,16 @@ impl Model {
         }
         timings.assembly += t0.elapsed().as_secs_f64();
         if let (n, Some(e)) = softened {
+            let cause = match self.tempering_lambda() {
+                Some(l) => format!(
+                    "λ = {l:e} is not much larger than the element size, so Jmin = h³/λ exceeds \
+                     their J; increase λ"
+                ),
+                None => "the fixed Jmin exceeds their J; lower it".to_string(),
+            };
             warnings.push(format!(
-                "tempering softens {n} well-shaped element(s) (e.g. {}): λ = {:?} is not much larger \
-                 than the element size, so Jmin = h³/λ exceeds their J; increase λ",
-                mesh.triangle_name(e),
-                self.tempering_lambda()
+                "tempering softens {n} well-shaped element(s) (e.g. {}): {cause}",
+                mesh.triangle_name(e)
             ));
         }
 
