@@ -178,21 +178,34 @@ fn manufactured(report: &mut String, a: &Args) {
             points: t.iter().copied().zip(l2).collect(),
         });
     }
-    let file = a.out.join("manufactured_error_time.svg");
-    if let Err(e) = plot(
-        &file,
+    figure(
+        report,
+        a,
+        "manufactured_error_time.svg",
         "manufactured elasticity: L2 error against wall time",
         "time [s]",
         "L2 error",
         &curves,
-    ) {
+        "L2 error against time",
+    );
+}
+
+/// Draws `curves` into `out/file` and links it from the report.
+#[allow(clippy::too_many_arguments)]
+fn figure(
+    report: &mut String,
+    a: &Args,
+    file: &str,
+    title: &str,
+    xlabel: &str,
+    ylabel: &str,
+    curves: &[Curve],
+    alt: &str,
+) {
+    if let Err(e) = plot(&a.out.join(file), title, xlabel, ylabel, curves) {
         eprintln!("plot: {e}");
     }
-    writeln!(
-        report,
-        "![L2 error against time](manufactured_error_time.svg)\n"
-    )
-    .unwrap();
+    writeln!(report, "![{alt}]({file})\n").unwrap();
 }
 
 fn reference(a: &Args) -> Option<Value> {
@@ -445,21 +458,16 @@ fn seed(report: &mut String, a: &Args) {
         }
     }
     writeln!(report).unwrap();
-    let file = a.out.join("seed_error_time.svg");
-    if let Err(e) = plot(
-        &file,
+    figure(
+        report,
+        a,
+        "seed_error_time.svg",
         "seed scene: relative error of the compliance against wall time",
         "time [s]",
         "relative error",
         &curves,
-    ) {
-        eprintln!("plot: {e}");
-    }
-    writeln!(
-        report,
-        "![seed scene error against time](seed_error_time.svg)\n"
-    )
-    .unwrap();
+        "seed scene error against time",
+    );
 }
 
 /// TFEM's active contact elements as node pairs (lower, upper): on a flat
@@ -574,21 +582,16 @@ fn patch_test(report: &mut String, a: &Args) {
         )
         .unwrap();
     }
-    let file = a.out.join("patch_error_time.svg");
-    if let Err(e) = plot(
-        &file,
+    figure(
+        report,
+        a,
+        "patch_error_time.svg",
         "contact patch test: L2 stress error against wall time",
         "time [s]",
         "relative L2 stress error",
         &curves,
-    ) {
-        eprintln!("plot: {e}");
-    }
-    writeln!(
-        report,
-        "![patch test error against time](patch_error_time.svg)\n"
-    )
-    .unwrap();
+        "patch test error against time",
+    );
 }
 
 /// Hertz contact: the curved, gapped, possibly non-matching interface.
@@ -693,21 +696,16 @@ fn hertz(report: &mut String, a: &Args) {
             points: pts,
         });
     }
-    let file = a.out.join("hertz_error_time.svg");
-    if let Err(e) = plot(
-        &file,
+    figure(
+        report,
+        a,
+        "hertz_error_time.svg",
         "Hertz contact: relative error of the peak pressure (fit) against wall time",
         "time [s]",
         "relative error",
         &curves,
-    ) {
-        eprintln!("plot: {e}");
-    }
-    writeln!(
-        report,
-        "![Hertz error against time](hertz_error_time.svg)\n"
-    )
-    .unwrap();
+        "Hertz error against time",
+    );
 }
 
 fn stability(report: &mut String, a: &Args) {
