@@ -192,7 +192,8 @@ impl Mesh {
                 ));
             } else if n_inv > 0 {
                 self.warnings.push(format!(
-                    "body {body}: {n_inv} inverted triangle(s) (J < 0) are tempered with Jmin"
+                    "body {body}: {n_inv} inverted triangle(s) (J < 0): TFEM tempers them with Jmin; \
+                     plain FEM (tempering off) integrates them with |J|, a wrong stiffness"
                 ));
             }
         }
