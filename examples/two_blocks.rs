@@ -289,13 +289,16 @@ fn single(args: &Args) -> i32 {
             args.p * 2.0 * args.c
         );
         println!(
-            "time {:.3} s: analysis {:.3}, assembly {:.3}, {} factorisations {:.3}, solves {:.3}",
+            "time {:.3} s: analysis {:.3}, assembly {:.3}, factorisation(s) {:.3} ({}), solves {:.3}, \
+             interface ({} unknowns) {:.3}",
             r.seconds,
             info.timings.analysis,
             info.timings.assembly,
-            info.factorizations,
             info.timings.factorization,
-            info.timings.solve
+            info.factorizations,
+            info.timings.solve,
+            info.interface_unknowns,
+            info.timings.interface
         );
         match &files {
             Ok(()) => println!("wrote {} and {}", vtu.display(), svg.display()),
