@@ -842,6 +842,26 @@ fn stability(report: &mut String, a: &Args) {
     degenerate(report);
 }
 
+/// One body (E = 1, ν = 0.3, plane strain) clamped on its boundary under a
+/// unit downward body force.
+fn clamped(b: tfem::meshgen::MeshBuilder) -> tfem::Model {
+    let boundary: Vec<usize> = b.boundary_edges().into_iter().flatten().collect();
+    let mut model = tfem::Model::new();
+    model.set_mesh(b.build().expect("mesh"));
+    model
+        .set_material(
+            1,
+            Material::new(1.0, 0.3, PlaneMode::Strain, "body 1").expect("material"),
+        )
+        .expect("material");
+    for v in boundary {
+        model.fix(v, tfem::Component::X, 0.0).expect("fix");
+        model.fix(v, tfem::Component::Y, 0.0).expect("fix");
+    }
+    model.set_body_force(1, [0.0, -1.0]).expect("load");
+    model
+}
+
 /// Degenerate and inverted elements, and a tempering λ too small for the
 /// mesh: a unit square (16 × 16 cells, edges fixed, body force) with a band
 /// of caps of height ε along y = 1/2, TFEM against plain FEM.
@@ -869,20 +889,7 @@ fn degenerate(report: &mut String) {
                 p[1] = eps;
             }
         }
-        let boundary: Vec<usize> = b.boundary_edges().into_iter().flatten().collect();
-        let mut model = tfem::Model::new();
-        model.set_mesh(b.build().expect("mesh"));
-        model
-            .set_material(
-                1,
-                Material::new(1.0, 0.3, PlaneMode::Strain, "body 1").expect("material"),
-            )
-            .expect("material");
-        for v in boundary {
-            model.fix(v, tfem::Component::X, 0.0).expect("fix");
-            model.fix(v, tfem::Component::Y, 0.0).expect("fix");
-        }
-        model.set_body_force(1, [0.0, -1.0]).expect("load");
+        let mut model = clamped(b);
         model.set_tempering(tempering).expect("tempering");
         let r = model.solve().and_then(|_| model.displacements()).map(|u| {
             u.iter().flatten().fold(0.0f64, |m, v| {
@@ -1107,21 +1114,7 @@ fn built(report: &mut String) {
         rc.info.memory_bytes as f64 / 1e6
     )
     .unwrap();
-    let b = unit_square(128, None);
-    let mut model = tfem::Model::new();
-    let boundary: Vec<usize> = b.boundary_edges().into_iter().flatten().collect();
-    model.set_mesh(b.build().expect("mesh"));
-    model
-        .set_material(
-            1,
-            Material::new(1.0, 0.3, PlaneMode::Strain, "body 1").expect("material"),
-        )
-        .expect("material");
-    for v in boundary {
-        model.fix(v, tfem::Component::X, 0.0).expect("fix");
-        model.fix(v, tfem::Component::Y, 0.0).expect("fix");
-    }
-    model.set_body_force(1, [0.0, -1.0]).expect("load");
+    let mut model = clamped(unit_square(128, None));
     let i = model.solve().expect("solve");
     writeln!(
         report,
