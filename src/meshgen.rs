@@ -4,7 +4,7 @@
 
 use std::collections::HashMap;
 
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::mesh::Mesh;
 
 /// How each grid cell is split into two triangles.
@@ -17,9 +17,30 @@ pub enum Diagonal {
     MirroredAt(f64),
 }
 
+/// Most points a 1D subdivision may have (a guard against a mistyped h
+/// asking for an unbounded allocation).
+pub const MAX_POINTS: f64 = 1e8;
+
+/// Checks a < b finite and 0 < h with at most [`MAX_POINTS`] points.
+fn check_interval(a: f64, b: f64, h: f64) -> Result<()> {
+    if !(a.is_finite() && b.is_finite() && a < b) {
+        return Err(Error::argument(format!(
+            "subdivision: need finite a < b (got a = {a}, b = {b})"
+        )));
+    }
+    if !(h > 0.0 && (b - a) / h <= MAX_POINTS) {
+        return Err(Error::argument(format!(
+            "subdivision: spacing h = {h} must be > 0 and give at most {MAX_POINTS:e} points on [{a}, {b}]"
+        )));
+    }
+    Ok(())
+}
+
 /// Points from `a` to `b` with spacing at most `h`, passing through every
-/// breakpoint in `stops` (sorted, strictly inside (a, b)).
-pub fn subdivide(a: f64, b: f64, stops: &[f64], h: f64) -> Vec<f64> {
+/// breakpoint in `stops` (sorted, strictly inside (a, b)). Fails with
+/// `INVALID_ARGUMENT` unless a < b and 0 < h (and the count is bounded).
+pub fn subdivide(a: f64, b: f64, stops: &[f64], h: f64) -> Result<Vec<f64>> {
+    check_interval(a, b, h)?;
     let mut knots = vec![a];
     knots.extend(stops.iter().copied().filter(|&s| s > a && s < b));
     knots.push(b);
@@ -34,34 +55,41 @@ pub fn subdivide(a: f64, b: f64, stops: &[f64], h: f64) -> Vec<f64> {
             });
         }
     }
-    out
+    Ok(out)
 }
 
 /// Like [`subdivide`] but exactly mirror-symmetric about (a + b) / 2 (which
 /// is always a node).
-pub fn subdivide_symmetric(a: f64, b: f64, stops: &[f64], h: f64) -> Vec<f64> {
+pub fn subdivide_symmetric(a: f64, b: f64, stops: &[f64], h: f64) -> Result<Vec<f64>> {
     let mid = 0.5 * (a + b);
     let left: Vec<f64> = stops
         .iter()
         .copied()
         .filter(|&s| s > a && s < mid)
         .collect();
-    let half = subdivide(a, mid, &left, h);
+    let half = subdivide(a, mid, &left, h)?;
     let mut out = half.clone();
     for x in half.iter().rev().skip(1) {
         out.push(mid + (mid - x));
     }
     let last = out.len() - 1;
     out[last] = b;
-    out
+    Ok(out)
 }
 
 /// Points from `a` to `b` (a < b): spacing `h` up to `a + fine`, then each
 /// spacing `ratio` times the previous (a geometric grading away from a
 /// region of interest at `a`), the last one stretched or merged to end at
-/// `b` exactly.
-pub fn graded(a: f64, b: f64, h: f64, fine: f64, ratio: f64) -> Vec<f64> {
-    let mut out = subdivide(a, (a + fine).min(b), &[], h);
+/// `b` exactly. Fails with `INVALID_ARGUMENT` unless a < b, h > 0,
+/// fine > 0 and 1 ≤ ratio ≤ 10.
+pub fn graded(a: f64, b: f64, h: f64, fine: f64, ratio: f64) -> Result<Vec<f64>> {
+    check_interval(a, b, h)?;
+    if !(fine > 0.0 && (1.0..=10.0).contains(&ratio)) {
+        return Err(Error::argument(format!(
+            "graded subdivision: need fine > 0 and 1 <= ratio <= 10 (got {fine}, {ratio})"
+        )));
+    }
+    let mut out = subdivide(a, (a + fine).min(b), &[], h)?;
     let mut step = (out[out.len() - 1] - out[out.len().saturating_sub(2)]).max(h);
     let mut x = out[out.len() - 1];
     while x < b {
@@ -73,7 +101,7 @@ pub fn graded(a: f64, b: f64, h: f64, fine: f64, ratio: f64) -> Vec<f64> {
         out.push(x.min(b));
     }
     out.dedup();
-    out
+    Ok(out)
 }
 
 /// Nodes, triangles and body tags under construction.
@@ -253,8 +281,42 @@ mod tests {
     use crate::element::TriGeometry;
 
     #[test]
+    fn bad_subdivision_arguments_are_invalid_arguments_not_hangs() {
+        use crate::error::Status;
+        for (a, b, h) in [
+            (0.0, 1.0, 0.0),
+            (0.0, 1.0, -1.0),
+            (0.0, 1.0, f64::NAN),
+            (1.0, 0.0, 0.1),
+            (0.0, 1.0, 1e-12),
+        ] {
+            assert_eq!(
+                subdivide(a, b, &[], h).unwrap_err().status(),
+                Status::InvalidArgument
+            );
+        }
+        for ratio in [0.5, f64::NAN, 100.0] {
+            let e = graded(0.0, 1.0, 0.1, 0.2, ratio).unwrap_err();
+            assert_eq!(e.status(), Status::InvalidArgument, "{}", e.message());
+        }
+    }
+
+    #[test]
+    fn graded_spacing_is_fine_then_grows_and_ends_at_b() {
+        let x = graded(0.0, 10.0, 0.1, 1.0, 1.2).unwrap();
+        assert_eq!((x[0], x[x.len() - 1]), (0.0, 10.0));
+        assert!(x.windows(2).all(|w| w[1] > w[0]));
+        assert!(
+            x.windows(2)
+                .take(10)
+                .all(|w| (w[1] - w[0] - 0.1).abs() < 1e-12)
+        );
+        assert!(x.len() < 40, "grading coarsens: {} points", x.len());
+    }
+
+    #[test]
     fn subdivide_hits_breakpoints_and_respects_spacing() {
-        let x = subdivide(0.0, 1.0, &[0.3, 0.5], 0.12);
+        let x = subdivide(0.0, 1.0, &[0.3, 0.5], 0.12).unwrap();
         assert!(x.contains(&0.3) && x.contains(&0.5));
         assert!(
             x.windows(2)
@@ -264,7 +326,7 @@ mod tests {
 
     #[test]
     fn symmetric_subdivision_is_a_mirror_image() {
-        let x = subdivide_symmetric(0.0, 1.0, &[0.4], 0.07);
+        let x = subdivide_symmetric(0.0, 1.0, &[0.4], 0.07).unwrap();
         let n = x.len();
         for i in 0..n {
             assert!((x[i] + x[n - 1 - i] - 1.0).abs() < 1e-15);

@@ -1498,6 +1498,21 @@ const RIGID_ENERGY_TOL: f64 = 1e-13;
 
 /// The rigid motion (translation and rotation about the centroid) of each
 /// body that best fits `mode` (over unknowns), zero on prescribed DOFs.
+/// The nodes of a body and their centroid.
+fn body_nodes(mesh: &Mesh, body: i32) -> (Vec<usize>, [f64; 2]) {
+    let nodes: Vec<usize> = (0..mesh.nodes().len())
+        .filter(|&v| mesh.node_body()[v] == Some(body))
+        .collect();
+    let nn = nodes.len() as f64;
+    let c = nodes.iter().fold([0.0, 0.0], |acc, &v| {
+        [
+            acc[0] + mesh.nodes()[v][0] / nn,
+            acc[1] + mesh.nodes()[v][1] / nn,
+        ]
+    });
+    (nodes, c)
+}
+
 fn rigid_fit(mesh: &Mesh, dofs: &DofMap, mode: &[f64]) -> Vec<f64> {
     let n = mesh.nodes().len();
     let mut m = vec![0.0; 2 * n];
@@ -1506,16 +1521,8 @@ fn rigid_fit(mesh: &Mesh, dofs: &DofMap, mode: &[f64]) -> Vec<f64> {
     }
     let mut r = vec![0.0; 2 * n];
     for &body in mesh.bodies() {
-        let nodes: Vec<usize> = (0..n)
-            .filter(|&v| mesh.node_body()[v] == Some(body))
-            .collect();
+        let (nodes, c) = body_nodes(mesh, body);
         let nn = nodes.len() as f64;
-        let c = nodes.iter().fold([0.0, 0.0], |a, &v| {
-            [
-                a[0] + mesh.nodes()[v][0] / nn,
-                a[1] + mesh.nodes()[v][1] / nn,
-            ]
-        });
         let (mut t, mut rot, mut rr) = ([0.0, 0.0], 0.0, 0.0);
         for &v in &nodes {
             let (dx, dy) = (mesh.nodes()[v][0] - c[0], mesh.nodes()[v][1] - c[1]);
@@ -1749,16 +1756,8 @@ fn describe_mode(mesh: &Mesh, m: &[f64]) -> String {
     for &(body, _) in &named {
         // Fractions of the body's motion that are rigid translations and
         // rotation about its centroid (three orthogonal modes).
-        let nodes: Vec<usize> = (0..mesh.nodes().len())
-            .filter(|&v| mesh.node_body()[v] == Some(body))
-            .collect();
+        let (nodes, c) = body_nodes(mesh, body);
         let nn = nodes.len() as f64;
-        let c = nodes.iter().fold([0.0, 0.0], |acc, &v| {
-            [
-                acc[0] + mesh.nodes()[v][0] / nn,
-                acc[1] + mesh.nodes()[v][1] / nn,
-            ]
-        });
         let (mut tx, mut ty, mut rot, mut rr, mut e) = (0.0, 0.0, 0.0, 0.0, 0.0);
         for &v in &nodes {
             let (dx, dy) = (mesh.nodes()[v][0] - c[0], mesh.nodes()[v][1] - c[1]);

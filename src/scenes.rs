@@ -136,10 +136,10 @@ impl TwoBlocks {
                 "two blocks: upper mesh size {h_up} must be > 0"
             )));
         }
-        let xs = subdivide_symmetric(0.0, l, &[mid - c, mid + c], h);
-        let xs2 = subdivide_symmetric(0.0, l, &[mid - c, mid + c], h_up);
-        let ys1 = subdivide(-self.h1, 0.0, &[], h);
-        let ys2: Vec<f64> = subdivide(0.0, self.h2, &[], h_up)
+        let xs = subdivide_symmetric(0.0, l, &[mid - c, mid + c], h)?;
+        let xs2 = subdivide_symmetric(0.0, l, &[mid - c, mid + c], h_up)?;
+        let ys1 = subdivide(-self.h1, 0.0, &[], h)?;
+        let ys2: Vec<f64> = subdivide(0.0, self.h2, &[], h_up)?
             .iter()
             .map(|y| y + self.gap)
             .collect();

@@ -141,17 +141,17 @@ impl Hertz {
         }
         let fine = 1.5 * a;
         let (w_block, w_cyl) = (2.0 * r, 0.8 * r);
-        let xs = graded(0.0, w_block, h, fine, self.grading);
-        let depth: Vec<f64> = graded(0.0, 2.0 * r, h, fine, self.grading)
+        let xs = graded(0.0, w_block, h, fine, self.grading)?;
+        let depth: Vec<f64> = graded(0.0, 2.0 * r, h, fine, self.grading)?
             .into_iter()
             .rev()
             .map(|d| -d)
             .collect();
         let hc = h * self.cylinder_mesh_ratio;
-        let xs_cyl = graded(0.0, w_cyl, hc, fine, self.grading);
+        let xs_cyl = graded(0.0, w_cyl, hc, fine, self.grading)?;
         // Heights above the circle, as fractions of the column: graded from
         // the contact (t = 0) to the centre line (t = 1).
-        let ts: Vec<f64> = graded(0.0, r, hc, fine, self.grading)
+        let ts: Vec<f64> = graded(0.0, r, hc, fine, self.grading)?
             .into_iter()
             .map(|y| y / r)
             .collect();
