@@ -982,6 +982,7 @@ fn speed_run(n: usize, ordering: &str, mode: &str) -> ! {
         "{}",
         serde_json::json!({
             "unknowns": i.unknowns, "interface": i.interface_unknowns, "factor_nnz": i.factor_nnz,
+            "matrix_nnz": i.matrix_nnz, "factorization_bytes": i.factorization_bytes,
             "allocated": i.memory_bytes, "analysis": t.analysis, "assembly": t.assembly,
             "factorization": t.factorization, "solve": t.solve, "dense": t.interface, "total": total,
             "iterations": r.iterations, "factorizations": i.factorizations,
@@ -1016,10 +1017,15 @@ fn speed(report: &mut String, a: &Args) {
          loop (its mean per iteration). *condensed*: the default loop (one factorisation with the \
          interface numbered last, dense interface updates, final recovery and refinement). \
          *ratio*: condensed loop without the symbolic analysis (paid once per mesh, kept across \
-         solves) over fact.+solve; *ratio incl.*: with it.\n"
+         solves) over fact.+solve; *ratio incl.*: with it. *factorisation [MB]*: what one numeric \
+         factorisation needs at its peak — factor values, symbolic structure and faer's workspace \
+         (`SolveInfo::factorization_bytes`); *matrix*: the CSC matrix it reads (pattern and values). \
+         *peak / fact.*: the condensed solve's peak RSS (mesh, model, matrix, factor, interface, \
+         results, allocator) over the factorisation; *peak / (fact. + matrix)*: over the \
+         factorisation with its input.\n"
     )
     .unwrap();
-    writeln!(report, "| h | unknowns | interface unknowns | iterations | analysis [s] | fact.+solve [s] | refactorising loop [s] | condensed loop [s] | ratio | ratio incl. | dense interface [s] | assembly / fact. | factor [MB] | peak RSS [MB] | peak RSS / factor |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|").unwrap();
+    writeln!(report, "| h | unknowns | interface unknowns | iterations | analysis [s] | fact.+solve [s] | refactorising loop [s] | condensed loop [s] | ratio | ratio incl. | dense interface [s] | assembly / fact. | factorisation [MB] | matrix [MB] | peak RSS [MB] | peak / fact. | peak / (fact. + matrix) |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|").unwrap();
     let mut scaling: Vec<(f64, f64, f64)> = Vec::new();
     let mut orderings = Vec::new();
     for &n in &levels {
@@ -1029,11 +1035,12 @@ fn speed(report: &mut String, a: &Args) {
             continue;
         };
         let per = (f(&full, "factorization") + f(&full, "solve")) / f(&full, "factorizations");
-        let factor = 8.0 * f(&cond, "factor_nnz");
+        let factorization = f(&cond, "factorization_bytes");
+        let matrix = 8.0 * (f(&cond, "unknowns") + 1.0 + 2.0 * f(&cond, "matrix_nnz"));
         let peak = f(&cond, "rss_peak");
         writeln!(
             report,
-            "| 1/{n} | {} | {} | {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.3} | {:.0} | {:.0} | {:.2} |",
+            "| 1/{n} | {} | {} | {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.3} | {:.0} | {:.0} | {:.0} | {:.2} | {:.2} |",
             cond["unknowns"],
             cond["interface"],
             cond["iterations"],
@@ -1045,9 +1052,11 @@ fn speed(report: &mut String, a: &Args) {
             f(&cond, "total") / per,
             f(&cond, "dense"),
             f(&cond, "assembly") / f(&cond, "factorization"),
-            factor / 1e6,
+            factorization / 1e6,
+            matrix / 1e6,
             peak / 1e6,
-            peak / factor,
+            peak / factorization,
+            peak / (factorization + matrix),
         )
         .unwrap();
         scaling.push((f(&cond, "unknowns"), f(&cond, "total"), peak));

@@ -60,6 +60,7 @@ module tfem
     real(c_double) :: relative_residual
     real(c_double) :: condition_estimate
     integer(c_int64_t) :: memory_bytes
+    integer(c_int64_t) :: factorization_bytes
     real(c_double) :: time_analysis
     real(c_double) :: time_assembly
     real(c_double) :: time_factorization

@@ -240,11 +240,16 @@ typedef struct tfem_solve_info {
    */
   double condition_estimate;
   /**
-   * Bytes held by pattern, matrix values and factor.
+   * Bytes held by pattern, matrix values, factor and dense interface.
    */
   int64_t memory_bytes;
   /**
-   * Pattern, scatter map and symbolic analysis (0 when reused).
+   * Bytes one numeric factorisation needs at its peak (factor, symbolic
+   * structure, workspace).
+   */
+  int64_t factorization_bytes;
+  /**
+   * Pattern and symbolic analysis (0 when reused).
    */
   double time_analysis;
   /**

@@ -86,9 +86,12 @@ pub struct TfemSolveInfo {
     pub relative_residual: f64,
     /// Condition estimate of the Jacobi-scaled final matrix.
     pub condition_estimate: f64,
-    /// Bytes held by pattern, matrix values and factor.
+    /// Bytes held by pattern, matrix values, factor and dense interface.
     pub memory_bytes: i64,
-    /// Pattern, scatter map and symbolic analysis (0 when reused).
+    /// Bytes one numeric factorisation needs at its peak (factor, symbolic
+    /// structure, workspace).
+    pub factorization_bytes: i64,
+    /// Pattern and symbolic analysis (0 when reused).
     pub time_analysis: f64,
     /// Element matrices and scatter-add.
     pub time_assembly: f64,
@@ -266,6 +269,7 @@ fn info_out(i: &SolveInfo) -> TfemSolveInfo {
         relative_residual: i.relative_residual,
         condition_estimate: i.condition_estimate,
         memory_bytes: i.memory_bytes as i64,
+        factorization_bytes: i.factorization_bytes as i64,
         time_analysis: i.timings.analysis,
         time_assembly: i.timings.assembly,
         time_factorization: i.timings.factorization,

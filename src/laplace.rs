@@ -38,7 +38,7 @@ pub fn solve_poisson(
     }
     let used = mesh.node_body();
     let dofs = DofMap::new(n, 1, |v| used[v].is_some() && value[v].is_nan());
-    let pattern = Pattern::build(&dofs, n, mesh.triangles())?;
+    let pattern = Pattern::build(&dofs, n, mesh.triangles());
     let coords: Vec<[f64; 2]> = dofs
         .free_to_global()
         .iter()
@@ -59,7 +59,7 @@ pub fn solve_poisson(
             )
         })?;
         let ke: [f64; 9] = std::array::from_fn(|i| k[i / 3][i % 3]);
-        pattern.add_element(&mut vals, e, &ke);
+        pattern.add_element(&mut vals, &tri.map(|v| dofs.free(v)), &ke);
         // Load with the true area (zero for flat and inverted elements).
         let area = 0.5 * geo.j.max(0.0);
         for a in 0..3 {

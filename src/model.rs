@@ -81,7 +81,6 @@ struct Cache {
     epoch: u64,
     dofs: DofMap,
     pattern: Pattern,
-    coords: Vec<[f64; 2]>,
     /// The symbolic analysis, made on first need, and the unknowns it
     /// numbers last (the condensed contact interface, or none).
     chol: Option<(Vec<usize>, Cholesky)>,
@@ -94,7 +93,7 @@ struct Cache {
 fn analysed<'a>(
     slot: &'a mut Option<(Vec<usize>, Cholesky)>,
     pattern: &Pattern,
-    coords: &[[f64; 2]],
+    coords: impl FnOnce() -> Vec<[f64; 2]>,
     ordering: Ordering,
     last: Option<&[usize]>,
     timings: &mut Timings,
@@ -109,7 +108,9 @@ fn analysed<'a>(
         let last = last.unwrap_or(&[]);
         // Drop the old factor first: two at once may not fit in memory.
         *slot = None;
-        let chol = Cholesky::analyse(pattern, ordering, Some(coords), last)?;
+        // The unknowns' coordinates are only needed here (17 MB at 1M
+        // unknowns), so they are not kept.
+        let chol = Cholesky::analyse(pattern, ordering, Some(&coords()), last)?;
         *slot = Some((last.to_vec(), chol));
         timings.analysis += t0.elapsed().as_secs_f64();
     }
@@ -590,17 +591,11 @@ impl Model {
         // while inactive) so the symbolic analysis survives activation.
         let mut elements: Vec<[usize; 3]> = mesh.triangles().to_vec();
         elements.extend(contact.iter().map(|e| e.nodes));
-        let pattern = Pattern::build(&dofs, n_nodes, &elements)?;
-        let coords: Vec<[f64; 2]> = dofs
-            .free_to_global()
-            .iter()
-            .map(|&g| mesh.nodes()[g / 2])
-            .collect();
+        let pattern = Pattern::build(&dofs, n_nodes, &elements);
         Ok(Cache {
             epoch: self.epoch,
             dofs,
             pattern,
-            coords,
             chol: None,
             contact,
         })
@@ -670,16 +665,15 @@ impl Model {
         pattern: &Pattern,
         values: &mut [f64],
         rhs: &mut [f64],
-        e: usize,
         tri: &[usize; 3],
         ke: &[f64; 36],
         f0: Option<&[f64; 6]>,
         up: &[f64],
     ) {
-        pattern.add_element(values, e, ke);
         let mut gd = [0usize; 6];
         dofs.element_dofs(tri, &mut gd);
         let free = gd.map(|g| dofs.free(g));
+        pattern.add_element(values, &free, ke);
         if f0.is_none() && !free.contains(&NOT_FREE) {
             // The common case: nothing prescribed, no initial load.
             return;
@@ -706,19 +700,23 @@ impl Model {
     ) -> Result<(Solved, Vec<String>)> {
         let mesh = self.mesh_ref()?;
         let n_dofs = 2 * mesh.nodes().len();
-        let n_body = mesh.triangles().len();
         let mut warnings = Vec::new();
         let up = self.prescribed_vector(n_dofs);
         let f_ext = self.external_forces(mesh);
         let Cache {
             dofs,
             pattern,
-            coords,
             chol: slot,
             contact,
             ..
         } = cache;
-        let (dofs, pattern, coords, contact) = (&*dofs, &*pattern, &*coords, &*contact);
+        let (dofs, pattern, contact) = (&*dofs, &*pattern, &*contact);
+        let coords = || {
+            dofs.free_to_global()
+                .iter()
+                .map(|&g| mesh.nodes()[g / 2])
+                .collect()
+        };
 
         // Body part of the system: assembled once, reused by every iteration.
         let t0 = Instant::now();
@@ -762,7 +760,6 @@ impl Model {
                 pattern,
                 &mut values_body,
                 &mut rhs_body,
-                e,
                 tri,
                 &ke,
                 None,
@@ -793,6 +790,7 @@ impl Model {
         let Some(opts) = options else {
             let chol = analysed(slot, pattern, coords, self.ordering, None, timings)?;
             info.factor_nnz = chol.factor_nnz();
+            info.factorization_bytes = chol.factorization_bytes();
             let energy = |r: &[f64]| self.body_energy(mesh, r);
             let (u, values, rhs) = self.factor_and_solve(
                 dofs,
@@ -900,6 +898,7 @@ impl Model {
         let last = if condense { Some(&interface[..]) } else { None };
         let chol = analysed(slot, pattern, coords, self.ordering, last, timings)?;
         info.factor_nnz = chol.factor_nnz();
+        info.factorization_bytes = chol.factorization_bytes();
         let free_to_global = dofs.free_to_global();
 
         // The assembled system and the contact set it holds. The
@@ -917,7 +916,6 @@ impl Model {
                 pattern,
                 values,
                 rhs,
-                n_body + k,
                 &contact[k].nodes,
                 &cs.k.map(|v| sign * v),
                 Some(&cs.f0.map(|v| sign * v)),

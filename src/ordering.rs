@@ -33,8 +33,10 @@ impl Ordering {
     }
 }
 
-/// Subsets smaller than this are numbered as they come.
-const LEAF: usize = 64;
+/// Subsets smaller than this are numbered as they come. (Measured on the
+/// seed scene: 16 gives a factor 7 % smaller and 5–8 % faster than 64 at
+/// 67k … 1M unknowns; 8 is no better.)
+const LEAF: usize = 16;
 
 /// Nested-dissection permutation (`perm[new] = old`) of the symmetric graph
 /// given by the upper-triangular CSC pattern (`col_ptr`, `row_idx`), with a

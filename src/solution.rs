@@ -3,7 +3,7 @@
 /// Wall-clock time of the stages of a solve, in seconds.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Timings {
-    /// Sparsity pattern, scatter map and symbolic analysis (zero when reused).
+    /// Sparsity pattern and symbolic analysis (zero when reused).
     pub analysis: f64,
     /// Element matrices and scatter-add, summed over iterations.
     pub assembly: f64,
@@ -36,8 +36,13 @@ pub struct SolveInfo {
     pub relative_residual: f64,
     /// Condition estimate of the Jacobi-scaled final matrix.
     pub condition_estimate: f64,
-    /// Bytes held by the pattern, matrix values and factor.
+    /// Bytes held by the pattern, matrix values, factor and (for a
+    /// condensed contact solve) the dense interface matrices.
     pub memory_bytes: usize,
+    /// Bytes one numeric factorisation needs at its peak: the factor, its
+    /// symbolic structure and the factorisation workspace (not the matrix
+    /// it reads). The yardstick for the memory of a whole solve.
+    pub factorization_bytes: usize,
     /// Stage timings.
     pub timings: Timings,
 }
