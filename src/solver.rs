@@ -301,9 +301,8 @@ impl Cholesky {
         }
         self.max_eigenvalue_bound = row_sum.iter().cloned().fold(0.0, f64::max);
         drop(row_sum);
-        let r = self.factor_shifted(pattern, values, 0.0);
-        match r {
-            Ok(()) => {
+        match self.factor_shifted(pattern, values, 0.0)? {
+            true => {
                 let (eig, mode) = self.inverse_iteration();
                 self.min_eigenvalue = eig;
                 if eig < SINGULAR_TOL || !eig.is_finite() {
@@ -317,12 +316,12 @@ impl Cholesky {
                 self.factored = true;
                 Ok(())
             }
-            Err(()) => {
+            false => {
                 // Not positive definite: find the offending mode with a
                 // shifted factorisation, whose inverse iteration converges to
                 // the (near-)null space.
                 for shift in [1e-10, 1e-6, 1e-2] {
-                    if self.factor_shifted(pattern, values, shift).is_ok() {
+                    if self.factor_shifted(pattern, values, shift)? {
                         let (_, mode) = self.inverse_iteration();
                         return Err(FactorError::Singular {
                             eigenvalue: 0.0,
@@ -346,13 +345,14 @@ impl Cholesky {
         mode
     }
 
-    /// Factorises K + shift·diag(K), i.e. the scaled matrix plus shift·I.
+    /// Factorises K + shift·diag(K), i.e. the scaled matrix plus shift·I;
+    /// whether it is positive definite.
     fn factor_shifted(
         &mut self,
         pattern: &Pattern,
         values: &[f64],
         shift: f64,
-    ) -> std::result::Result<(), ()> {
+    ) -> std::result::Result<bool, FactorError> {
         let n = pattern.n();
         let cp = pattern.col_ptr();
         let shifted;
@@ -370,11 +370,11 @@ impl Cholesky {
         let a = SparseColMatRef::new(sym, vals);
         // The workspace (143 MB at 1M unknowns) lives only during the
         // factorisation, so that what follows can reuse its pages.
-        let Ok(mut mem) = MemBuffer::try_new(self.factor_req) else {
-            return Err(());
-        };
+        let mut mem = MemBuffer::try_new(self.factor_req)
+            .map_err(|_| FactorError::Other(oom("workspace")))?;
         let stack = MemStack::new(&mut mem);
-        self.symbolic
+        Ok(self
+            .symbolic
             .factorize_numeric_llt(
                 &mut self.l_values,
                 a,
@@ -384,8 +384,7 @@ impl Cholesky {
                 stack,
                 Default::default(),
             )
-            .map(|_| ())
-            .map_err(|_| ())
+            .is_ok())
     }
 
     /// x ← K⁻¹x with the factor of K.
