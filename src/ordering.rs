@@ -34,7 +34,7 @@ impl Ordering {
 }
 
 /// Subsets smaller than this are numbered as they come. (Measured on the
-/// seed scene: 16 gives a factor 7 % smaller and 5–8 % faster than 64 at
+/// seed scene: 16 gives a factor 7 % smaller and 4–8 % faster than 64 at
 /// 67k … 1M unknowns; 8 is no better.)
 const LEAF: usize = 16;
 
