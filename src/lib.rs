@@ -49,6 +49,7 @@ pub mod ordering;
 pub mod scenes;
 pub mod solution;
 pub mod solver;
+mod split;
 pub mod verification;
 
 pub use contact::{ContactLaw, ContactOptions, InversionTest};

@@ -43,6 +43,9 @@ pub struct SolveInfo {
     /// symbolic structure and the factorisation workspace (not the matrix
     /// it reads). The yardstick for the memory of a whole solve.
     pub factorization_bytes: usize,
+    /// Whether the factorisation ran as two concurrent subtrees and a
+    /// dense separator block ([`crate::Model::set_parallel_subtrees`]).
+    pub split_factorization: bool,
     /// Stage timings.
     pub timings: Timings,
 }

@@ -29,7 +29,8 @@ use faer::perm::PermRef;
 
 use crate::assembly::Pattern;
 use crate::error::{Error, Result, Status};
-use crate::ordering::{Ordering, nested_dissection};
+use crate::ordering::{Graph, Ordering, nested_dissection, split_in_two};
+use crate::split::SplitCholesky;
 
 /// Smallest eigenvalue of the Jacobi-scaled matrix (unit diagonal) below
 /// which the system is declared singular. A rigid-body mode gives ~1e-16;
@@ -65,13 +66,8 @@ pub enum FactorError {
 
 /// A reusable Cholesky solver for one sparsity pattern.
 pub struct Cholesky {
-    symbolic: SymbolicCholesky<usize>,
-    l_values: Vec<f64>,
+    engine: Engine,
     scale: Vec<f64>,
-    factor_req: faer::dyn_stack::StackReq,
-    solve_mem: MemBuffer,
-    solve_bytes: usize,
-    par: Par,
     factored: bool,
     usable: bool,
     min_eigenvalue: f64,
@@ -86,6 +82,28 @@ fn oom(what: &str) -> Error {
     )
 }
 
+/// The factorisation proper, in one piece or split at the top of the
+/// elimination tree.
+enum Engine {
+    Whole(Box<Whole>),
+    Split(Box<SplitCholesky>),
+}
+
+/// One faer factorisation of the whole matrix.
+struct Whole {
+    symbolic: SymbolicCholesky<usize>,
+    l_values: Vec<f64>,
+    factor_req: faer::dyn_stack::StackReq,
+    solve_mem: MemBuffer,
+    solve_bytes: usize,
+    par: Par,
+}
+
+/// Unknown count from which a nested-dissection factorisation is split
+/// into two concurrent subtrees (below it the whole factorisation takes
+/// milliseconds).
+const SPLIT_MIN: usize = 20_000;
+
 impl Cholesky {
     /// Symbolic analysis of `pattern` with a fill-reducing ordering: AMD, or
     /// geometric nested dissection when `coords` (one point per unknown)
@@ -93,62 +111,48 @@ impl Cholesky {
     /// numbered last, in that order, so that the trailing block of the
     /// factor is the Cholesky factor of their Schur complement (see
     /// [`Cholesky::last_block_factor`]); the others are ordered as asked.
+    ///
+    /// With `parallel_subtrees`, nested dissection, at least
+    /// 20 000 unknowns and two threads or more, the factorisation is split
+    /// at the top of the elimination tree: the two subtrees are factorised
+    /// concurrently and the separator (with `last`) as a dense block.
     pub fn analyse(
         pattern: &Pattern,
         ordering: Ordering,
         coords: Option<&[[f64; 2]]>,
         last: &[usize],
+        parallel_subtrees: bool,
     ) -> Result<Cholesky> {
         let n = pattern.n();
-        let sym =
-            SymbolicSparseColMatRef::new_checked(n, n, pattern.col_ptr(), None, pattern.row_idx());
-        let perm = if last.is_empty() {
-            match coords {
-                Some(c) if ordering.use_nested_dissection(n) => {
-                    Some(nested_dissection(pattern.col_ptr(), pattern.row_idx(), c))
-                }
-                _ => None,
+        let split = match coords {
+            Some(c)
+                if parallel_subtrees
+                    && n >= SPLIT_MIN
+                    && ordering.use_nested_dissection(n - last.len())
+                    && rayon::current_num_threads() >= 2 =>
+            {
+                analyse_split(pattern, c, last)?
             }
-        } else {
-            Some(order_with_last(pattern, ordering, coords, last)?)
+            _ => None,
         };
-        let inv = perm.as_ref().map(|fwd| {
-            let mut inv = vec![0usize; n];
-            for (new, &old) in fwd.iter().enumerate() {
-                inv[old] = new;
-            }
-            inv
-        });
-        let ord = match (&perm, &inv) {
-            (Some(fwd), Some(inv)) => SymmetricOrdering::Custom(PermRef::new_checked(fwd, inv, n)),
-            _ => SymmetricOrdering::Amd,
+        let engine = match split {
+            Some(split) => Engine::Split(Box::new(split)),
+            None => Engine::Whole(Box::new(Whole::analyse(pattern, ordering, coords, last)?)),
         };
-        let symbolic =
-            factorize_symbolic_cholesky(sym, Side::Upper, ord, CholeskySymbolicParams::default())
-                .map_err(|_| oom("symbolic analysis"))?;
-        let par = Par::rayon(0);
-        let factor_req = symbolic.factorize_numeric_llt_scratch::<f64>(par, Default::default());
-        let solve_req = symbolic.solve_in_place_scratch::<f64>(1, par);
-        let solve_mem = MemBuffer::try_new(solve_req).map_err(|_| oom("workspace"))?;
-        let mut l_values = Vec::new();
-        l_values
-            .try_reserve_exact(symbolic.len_val())
-            .map_err(|_| oom("factor"))?;
-        l_values.resize(symbolic.len_val(), 0.0);
         Ok(Cholesky {
-            symbolic,
-            l_values,
+            engine,
             scale: vec![0.0; n],
-            factor_req,
-            solve_mem,
-            solve_bytes: solve_req.unaligned_bytes_required(),
-            par,
             factored: false,
             usable: false,
             min_eigenvalue: f64::NAN,
             max_eigenvalue_bound: f64::NAN,
             n_last: last.len(),
         })
+    }
+
+    /// Whether the factorisation is split into two concurrent subtrees.
+    pub fn is_split(&self) -> bool {
+        matches!(self.engine, Engine::Split(_))
     }
 
     /// The Jacobi scaling s of the last factorisation: the factor is that of
@@ -168,54 +172,23 @@ impl Cholesky {
         if !self.factored {
             return Err(Error::state("no successful factorisation to read"));
         }
-        let n = self.n();
-        let first = n - self.n_last;
-        let mut l = Mat::<f64>::zeros(self.n_last, self.n_last);
-        // The scaling of the trailing unknowns, in factor order: DL is the
-        // factor of DKD (row i of L scaled by s_i).
-        let row_scale: Vec<f64> = match self.symbolic.perm() {
-            Some(p) => p.arrays().0[first..]
-                .iter()
-                .map(|&old| self.scale[old])
-                .collect(),
-            None => self.scale[first..].to_vec(),
-        };
-        match self.symbolic.raw() {
-            SymbolicCholeskyRaw::Simplicial(s) => {
-                let (cp, ri) = (s.col_ptr(), s.row_idx());
-                for j in first..n {
-                    for p in cp[j]..cp[j + 1] {
-                        // Every row of a trailing column is itself trailing.
-                        l[(ri[p] - first, j - first)] = row_scale[ri[p] - first] * self.l_values[p];
+        let m = self.n_last;
+        match &self.engine {
+            Engine::Whole(w) => Ok(w.last_block_factor(m, &self.scale)),
+            Engine::Split(sp) => {
+                let top = sp.top();
+                let first = top.len() - m;
+                let f = sp.top_factor();
+                // DL is the factor of DKD: rows scaled by s.
+                Ok(Mat::from_fn(m, m, |i, j| {
+                    if i >= j {
+                        self.scale[top[first + i]] * f[(first + i, first + j)]
+                    } else {
+                        0.0
                     }
-                }
-            }
-            SymbolicCholeskyRaw::Supernodal(s) => {
-                let llt = SupernodalLltRef::new(s, &self.l_values);
-                for k in 0..s.n_supernodes() {
-                    let node = llt.supernode(k);
-                    let (start, val, pattern) = (node.start(), node.val(), node.pattern());
-                    let ncols = val.ncols();
-                    if start + ncols <= first {
-                        continue;
-                    }
-                    for c in 0..ncols {
-                        let j = start + c;
-                        if j < first {
-                            continue;
-                        }
-                        for r in c..ncols {
-                            let i = start + r - first;
-                            l[(i, j - first)] = row_scale[i] * val[(r, c)];
-                        }
-                        for (r, &i) in pattern.iter().enumerate() {
-                            l[(i - first, j - first)] = row_scale[i - first] * val[(ncols + r, c)];
-                        }
-                    }
-                }
+                }))
             }
         }
-        Ok(l)
     }
 
     /// Number of unknowns.
@@ -225,33 +198,30 @@ impl Cholesky {
 
     /// Stored entries of the Cholesky factor.
     pub fn factor_nnz(&self) -> usize {
-        self.l_values.len()
+        match &self.engine {
+            Engine::Whole(w) => w.l_values.len(),
+            Engine::Split(sp) => sp.factor_nnz(),
+        }
     }
 
     /// Bytes held by the factor, the scaling and the solve workspace.
     pub fn memory_bytes(&self) -> usize {
-        8 * (self.l_values.len() + self.scale.len()) + self.solve_bytes
+        8 * self.scale.len()
+            + match &self.engine {
+                Engine::Whole(w) => 8 * w.l_values.len() + w.solve_bytes,
+                Engine::Split(sp) => sp.memory_bytes(),
+            }
     }
 
     /// Bytes the numeric factorisation needs at its peak: the factor, the
     /// symbolic structure and the workspace (which exists only during a
-    /// factorisation), not counting the matrix it reads.
+    /// factorisation), not counting the matrix it reads (but counting the
+    /// copies a split factorisation makes of it).
     pub fn factorization_bytes(&self) -> usize {
-        let symbolic = match self.symbolic.raw() {
-            SymbolicCholeskyRaw::Simplicial(s) => s.col_ptr().len() + s.row_idx().len(),
-            SymbolicCholeskyRaw::Supernodal(s) => {
-                s.supernode_begin().len()
-                    + s.col_ptr_for_row_idx().len()
-                    + s.col_ptr_for_val().len()
-                    + s.row_idx().len()
-            }
-        };
-        let perm = if self.symbolic.perm().is_some() {
-            2 * self.n()
-        } else {
-            0
-        };
-        8 * (self.l_values.len() + symbolic + perm) + self.factor_req.unaligned_bytes_required()
+        match &self.engine {
+            Engine::Whole(w) => w.factorization_bytes(),
+            Engine::Split(sp) => sp.factorization_bytes(),
+        }
     }
 
     /// Upper bound of the smallest eigenvalue of the scaled matrix, from the
@@ -353,46 +323,20 @@ impl Cholesky {
         values: &[f64],
         shift: f64,
     ) -> std::result::Result<bool, FactorError> {
-        let n = pattern.n();
-        let cp = pattern.col_ptr();
-        let shifted;
-        let vals: &[f64] = if shift == 0.0 {
-            values
-        } else {
-            let mut v = values.to_vec();
-            for j in 0..n {
-                v[cp[j + 1] - 1] *= 1.0 + shift;
-            }
-            shifted = v;
-            &shifted
-        };
-        let sym = SymbolicSparseColMatRef::new_checked(n, n, cp, None, pattern.row_idx());
-        let a = SparseColMatRef::new(sym, vals);
-        // The workspace (143 MB at 1M unknowns) lives only during the
-        // factorisation, so that what follows can reuse its pages.
-        let mut mem = MemBuffer::try_new(self.factor_req)
-            .map_err(|_| FactorError::Other(oom("workspace")))?;
-        let stack = MemStack::new(&mut mem);
-        Ok(self
-            .symbolic
-            .factorize_numeric_llt(
-                &mut self.l_values,
-                a,
-                Side::Upper,
-                LltRegularization::default(),
-                self.par,
-                stack,
-                Default::default(),
-            )
-            .is_ok())
+        match &mut self.engine {
+            Engine::Whole(w) => w.factorize(pattern, values, shift),
+            Engine::Split(sp) => sp
+                .factorize(pattern, values, shift)
+                .map_err(FactorError::Other),
+        }
     }
 
     /// x ← K⁻¹x with the factor of K.
     fn solve_unscaled(&mut self, x: &mut [f64]) {
-        let n = x.len();
-        let llt = LltRef::new(&self.symbolic, &self.l_values);
-        let rhs = MatMut::from_column_major_slice_mut(x, n, 1);
-        llt.solve_in_place_with_conj(Conj::No, rhs, self.par, MemStack::new(&mut self.solve_mem));
+        match &mut self.engine {
+            Engine::Whole(w) => w.solve(x),
+            Engine::Split(sp) => sp.solve(x),
+        }
     }
 
     /// x ← S⁻¹x = D⁻¹K⁻¹D⁻¹x for the scaled matrix S = DKD.
@@ -451,15 +395,217 @@ impl Cholesky {
     }
 }
 
-/// A fill-reducing ordering (`perm[new] = old`) of the unknowns not in
-/// `last`, followed by `last`. The others are ordered on their own graph
-/// (the pattern restricted to them), by nested dissection or AMD.
-fn order_with_last(
+impl Whole {
+    fn analyse(
+        pattern: &Pattern,
+        ordering: Ordering,
+        coords: Option<&[[f64; 2]]>,
+        last: &[usize],
+    ) -> Result<Whole> {
+        let n = pattern.n();
+        let sym =
+            SymbolicSparseColMatRef::new_checked(n, n, pattern.col_ptr(), None, pattern.row_idx());
+        let perm = if last.is_empty() {
+            match coords {
+                Some(c) if ordering.use_nested_dissection(n) => {
+                    Some(nested_dissection(pattern.col_ptr(), pattern.row_idx(), c))
+                }
+                _ => None,
+            }
+        } else {
+            Some(order_with_last(pattern, ordering, coords, last)?)
+        };
+        let inv = perm.as_ref().map(|fwd| {
+            let mut inv = vec![0usize; n];
+            for (new, &old) in fwd.iter().enumerate() {
+                inv[old] = new;
+            }
+            inv
+        });
+        let ord = match (&perm, &inv) {
+            (Some(fwd), Some(inv)) => SymmetricOrdering::Custom(PermRef::new_checked(fwd, inv, n)),
+            _ => SymmetricOrdering::Amd,
+        };
+        let symbolic =
+            factorize_symbolic_cholesky(sym, Side::Upper, ord, CholeskySymbolicParams::default())
+                .map_err(|_| oom("symbolic analysis"))?;
+        let par = Par::rayon(0);
+        let factor_req = symbolic.factorize_numeric_llt_scratch::<f64>(par, Default::default());
+        let solve_req = symbolic.solve_in_place_scratch::<f64>(1, par);
+        let solve_mem = MemBuffer::try_new(solve_req).map_err(|_| oom("workspace"))?;
+        let mut l_values = Vec::new();
+        l_values
+            .try_reserve_exact(symbolic.len_val())
+            .map_err(|_| oom("factor"))?;
+        l_values.resize(symbolic.len_val(), 0.0);
+        Ok(Whole {
+            symbolic,
+            l_values,
+            factor_req,
+            solve_mem,
+            solve_bytes: solve_req.unaligned_bytes_required(),
+            par,
+        })
+    }
+
+    fn factorization_bytes(&self) -> usize {
+        let symbolic = match self.symbolic.raw() {
+            SymbolicCholeskyRaw::Simplicial(s) => s.col_ptr().len() + s.row_idx().len(),
+            SymbolicCholeskyRaw::Supernodal(s) => {
+                s.supernode_begin().len()
+                    + s.col_ptr_for_row_idx().len()
+                    + s.col_ptr_for_val().len()
+                    + s.row_idx().len()
+            }
+        };
+        let perm = if self.symbolic.perm().is_some() {
+            2 * self.scale_len()
+        } else {
+            0
+        };
+        8 * (self.l_values.len() + symbolic + perm) + self.factor_req.unaligned_bytes_required()
+    }
+
+    fn scale_len(&self) -> usize {
+        self.symbolic.nrows()
+    }
+
+    /// Factorises K + shift·diag(K); whether it is positive definite.
+    fn factorize(
+        &mut self,
+        pattern: &Pattern,
+        values: &[f64],
+        shift: f64,
+    ) -> std::result::Result<bool, FactorError> {
+        let n = pattern.n();
+        let cp = pattern.col_ptr();
+        let shifted;
+        let vals: &[f64] = if shift == 0.0 {
+            values
+        } else {
+            let mut v = values.to_vec();
+            for j in 0..n {
+                v[cp[j + 1] - 1] *= 1.0 + shift;
+            }
+            shifted = v;
+            &shifted
+        };
+        let sym = SymbolicSparseColMatRef::new_checked(n, n, cp, None, pattern.row_idx());
+        let a = SparseColMatRef::new(sym, vals);
+        // The workspace (143 MB at 1M unknowns) lives only during the
+        // factorisation, so that what follows can reuse its pages.
+        let mut mem = MemBuffer::try_new(self.factor_req)
+            .map_err(|_| FactorError::Other(oom("workspace")))?;
+        let stack = MemStack::new(&mut mem);
+        Ok(self
+            .symbolic
+            .factorize_numeric_llt(
+                &mut self.l_values,
+                a,
+                Side::Upper,
+                LltRegularization::default(),
+                self.par,
+                stack,
+                Default::default(),
+            )
+            .is_ok())
+    }
+
+    fn solve(&mut self, x: &mut [f64]) {
+        let n = x.len();
+        let llt = LltRef::new(&self.symbolic, &self.l_values);
+        let rhs = MatMut::from_column_major_slice_mut(x, n, 1);
+        llt.solve_in_place_with_conj(Conj::No, rhs, self.par, MemStack::new(&mut self.solve_mem));
+    }
+
+    /// The trailing m×m block of the factor, rows scaled by `scale`.
+    fn last_block_factor(&self, m: usize, scale: &[f64]) -> Mat<f64> {
+        let n = self.scale_len();
+        let first = n - m;
+        let mut l = Mat::<f64>::zeros(m, m);
+        // The scaling of the trailing unknowns, in factor order: DL is the
+        // factor of DKD (row i of L scaled by s_i).
+        let row_scale: Vec<f64> = match self.symbolic.perm() {
+            Some(p) => p.arrays().0[first..]
+                .iter()
+                .map(|&old| scale[old])
+                .collect(),
+            None => scale[first..].to_vec(),
+        };
+        match self.symbolic.raw() {
+            SymbolicCholeskyRaw::Simplicial(s) => {
+                let (cp, ri) = (s.col_ptr(), s.row_idx());
+                for j in first..n {
+                    for p in cp[j]..cp[j + 1] {
+                        // Every row of a trailing column is itself trailing.
+                        l[(ri[p] - first, j - first)] = row_scale[ri[p] - first] * self.l_values[p];
+                    }
+                }
+            }
+            SymbolicCholeskyRaw::Supernodal(s) => {
+                let llt = SupernodalLltRef::new(s, &self.l_values);
+                for k in 0..s.n_supernodes() {
+                    let node = llt.supernode(k);
+                    let (start, val, pattern) = (node.start(), node.val(), node.pattern());
+                    let ncols = val.ncols();
+                    if start + ncols <= first {
+                        continue;
+                    }
+                    for c in 0..ncols {
+                        let j = start + c;
+                        if j < first {
+                            continue;
+                        }
+                        for r in c..ncols {
+                            let i = start + r - first;
+                            l[(i, j - first)] = row_scale[i] * val[(r, c)];
+                        }
+                        for (r, &i) in pattern.iter().enumerate() {
+                            l[(i - first, j - first)] = row_scale[i - first] * val[(ncols + r, c)];
+                        }
+                    }
+                }
+            }
+        }
+        l
+    }
+}
+
+/// The split analysis ([`SplitCholesky`]): the unknowns other than `last`
+/// cut in two parts and a separator, numbered before `last`. `None` when
+/// they do not split (or the dense separator block would be too large:
+/// over 64 entries per unknown).
+fn analyse_split(
     pattern: &Pattern,
-    ordering: Ordering,
-    coords: Option<&[[f64; 2]]>,
+    coords: &[[f64; 2]],
     last: &[usize],
-) -> Result<Vec<usize>> {
+) -> Result<Option<SplitCholesky>> {
+    let n = pattern.n();
+    let (rest, col_ptr, row_idx) = restricted(pattern, last)?;
+    let graph = Graph::from_upper(&col_ptr, &row_idx);
+    drop((col_ptr, row_idx));
+    let c: Vec<[f64; 2]> = rest.iter().map(|&i| coords[i]).collect();
+    let Some((parts, sep)) = split_in_two(&graph, &c) else {
+        return Ok(None);
+    };
+    drop(graph);
+    let t = sep.len() + last.len();
+    if t * t > 64 * n {
+        return Ok(None);
+    }
+    let parts = parts.map(|p| p.into_iter().map(|k| rest[k]).collect());
+    let top = sep
+        .into_iter()
+        .map(|k| rest[k])
+        .chain(last.iter().copied())
+        .collect();
+    SplitCholesky::analyse(pattern, parts, top)
+}
+
+/// The unknowns not in `last` and the pattern restricted to them (upper
+/// CSC over their indices in that list).
+#[allow(clippy::type_complexity)]
+fn restricted(pattern: &Pattern, last: &[usize]) -> Result<(Vec<usize>, Vec<usize>, Vec<usize>)> {
     const LAST: usize = usize::MAX;
     let n = pattern.n();
     let mut sub = vec![0usize; n];
@@ -475,9 +621,8 @@ fn order_with_last(
     for (k, &i) in rest.iter().enumerate() {
         sub[i] = k;
     }
-    let m = rest.len();
     let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
-    let mut col_ptr = Vec::with_capacity(m + 1);
+    let mut col_ptr = Vec::with_capacity(rest.len() + 1);
     let mut row_idx = Vec::new();
     col_ptr.push(0);
     for &j in &rest {
@@ -489,6 +634,20 @@ fn order_with_last(
         );
         col_ptr.push(row_idx.len());
     }
+    Ok((rest, col_ptr, row_idx))
+}
+
+/// A fill-reducing ordering (`perm[new] = old`) of the unknowns not in
+/// `last`, followed by `last`. The others are ordered on their own graph
+/// (the pattern restricted to them), by nested dissection or AMD.
+fn order_with_last(
+    pattern: &Pattern,
+    ordering: Ordering,
+    coords: Option<&[[f64; 2]]>,
+    last: &[usize],
+) -> Result<Vec<usize>> {
+    let (rest, col_ptr, row_idx) = restricted(pattern, last)?;
+    let m = rest.len();
     let order = match coords {
         Some(c) if ordering.use_nested_dissection(m) => {
             let c: Vec<[f64; 2]> = rest.iter().map(|&i| c[i]).collect();
@@ -548,7 +707,7 @@ mod tests {
     #[test]
     fn solves_a_grounded_chain() {
         let (p, v) = chain(50, true);
-        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &[]).unwrap();
+        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &[], false).unwrap();
         c.factorize(&p, &v).unwrap();
         let mut b = vec![0.0; 50];
         b[49] = 1.0;
@@ -570,7 +729,7 @@ mod tests {
         let n = 40;
         let (p, v) = chain(n, true);
         let last = [30usize, 5, 17];
-        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &last).unwrap();
+        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &last, false).unwrap();
         c.factorize(&p, &v).unwrap();
         let l = c.last_block_factor().unwrap();
         // Independent dense Schur complement (nalgebra): K22 − K21 K11⁻¹ K12.
@@ -603,7 +762,7 @@ mod tests {
     #[test]
     fn detects_a_floating_chain_and_returns_its_constant_mode() {
         let (p, v) = chain(30, false);
-        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &[]).unwrap();
+        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &[], false).unwrap();
         match c.factorize(&p, &v) {
             Err(FactorError::Singular { mode: Some(m), .. }) => {
                 let mean = m.iter().sum::<f64>() / m.len() as f64;

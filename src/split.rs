@@ -1,0 +1,736 @@
+//! A sparse Cholesky factorisation split at the top of its elimination
+//! tree, so that the tree's two subtrees are factorised at the same time.
+//!
+//! faer's supernodal factorisation visits the supernodes one after the
+//! other; only its dense kernels run in parallel, which leaves the many
+//! small fronts of a 2D mesh on one core. A dissection makes the two
+//! subtrees independent: with the unknowns ordered [A, B, T] (parts A and B
+//! not coupled to each other, separator T last),
+//!
+//!   K = [K_AA 0 K_AT; 0 K_BB K_BT; K_TA K_TB K_TT].
+//!
+//! The principal submatrices M_A = K[A∪T] and M_B = K[B∪T] are positive
+//! definite whenever K is; they are factorised concurrently with T last,
+//! M_A = L_A L_Aᵀ with L_A = [L_AA 0; L_TA L_TT^A] and
+//! L_TT^A L_TT^Aᵀ = K_TT − L_TA L_TAᵀ. The Schur complement of K on T is
+//!
+//!   S = K_TT − L_TA L_TAᵀ − L_TB L_TBᵀ = L_TT^A L_TT^Aᵀ + L_TT^B L_TT^Bᵀ − K_TT,
+//!
+//! factorised densely as L_S L_Sᵀ, and K = LLᵀ with
+//! L = [L_AA 0 0; 0 L_BB 0; L_TA L_TB L_S]. The price is that each part also
+//! factorises the dense T block (concurrently) and S must be formed: small
+//! against the subtrees while T is a separator or a contact interface
+//! (2054 unknowns at 1M).
+
+use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
+use faer::linalg::cholesky::llt::factor::{
+    LltRegularization, cholesky_in_place, cholesky_in_place_scratch,
+};
+use faer::linalg::matmul::triangular::{BlockStructure, matmul};
+use faer::linalg::triangular_solve::{
+    solve_lower_triangular_in_place, solve_upper_triangular_in_place,
+};
+use faer::sparse::linalg::cholesky::simplicial::{
+    prefactorize_symbolic_cholesky, prefactorize_symbolic_cholesky_scratch,
+};
+use faer::sparse::linalg::cholesky::supernodal::{
+    SupernodalLltRef, SymbolicSupernodalCholesky, factorize_supernodal_numeric_llt,
+    factorize_supernodal_numeric_llt_scratch, factorize_supernodal_symbolic_cholesky,
+    factorize_supernodal_symbolic_cholesky_scratch,
+};
+use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
+use faer::{Accum, Conj, Mat, MatMut, MatRef, Par};
+
+use crate::assembly::Pattern;
+use crate::error::{Error, Result, Status};
+
+/// `owner` of a separator unknown.
+const TOP: u8 = 2;
+
+fn oom(what: &str) -> Error {
+    Error::new(
+        Status::OutOfMemory,
+        format!("cannot allocate the {what} of the split factorisation"),
+    )
+}
+
+/// A Cholesky factorisation of K in two concurrent parts and a dense
+/// separator block (module documentation).
+pub(crate) struct SplitCholesky {
+    parts: [Part; 2],
+    /// The separator unknowns in factor order.
+    top: Vec<usize>,
+    /// Which part owns each unknown (0, 1, or [`TOP`]).
+    owner: Vec<u8>,
+    /// Each unknown's index within its part or within `top`.
+    local: Vec<u32>,
+    /// Lower Cholesky factor L_S of the Schur complement on `top`.
+    top_factor: Mat<f64>,
+}
+
+/// One part's factorisation of M = K[own ∪ top], own first.
+struct Part {
+    /// The part's unknowns in factor order (local indices 0..own.len()).
+    own: Vec<usize>,
+    /// Lower triangle of M in local numbering (CSC), entries in the order
+    /// [`Part::visit`] meets them.
+    col_ptr: Vec<u32>,
+    row_idx: Vec<u32>,
+    symbolic: SymbolicSupernodalCholesky<u32>,
+    l_values: Vec<f64>,
+    factor_req: StackReq,
+    /// Workspace of the triangular solves (the longest supernode pattern).
+    solve_mem: MemBuffer,
+}
+
+impl SplitCholesky {
+    /// Symbolic analysis for parts `parts` (each in its fill-reducing
+    /// order) and separator `top` (in factor order) of the unknowns of
+    /// `pattern`. `None` if the parts are coupled to each other (not a
+    /// dissection) or a part is empty.
+    pub(crate) fn analyse(
+        pattern: &Pattern,
+        parts: [Vec<usize>; 2],
+        top: Vec<usize>,
+    ) -> Result<Option<SplitCholesky>> {
+        let n = pattern.n();
+        if parts.iter().any(|p| p.is_empty())
+            || parts[0].len() + parts[1].len() + top.len() != n
+            || n > u32::MAX as usize / 2
+        {
+            return Ok(None);
+        }
+        let mut owner = vec![u8::MAX; n];
+        let mut local = vec![0u32; n];
+        for (h, part) in parts.iter().enumerate() {
+            for (k, &u) in part.iter().enumerate() {
+                owner[u] = h as u8;
+                local[u] = k as u32;
+            }
+        }
+        for (k, &u) in top.iter().enumerate() {
+            owner[u] = TOP;
+            local[u] = k as u32;
+        }
+        if owner.contains(&u8::MAX) {
+            return Ok(None);
+        }
+        let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
+        for j in 0..n {
+            for &i in &ri[cp[j]..cp[j + 1]] {
+                if owner[i] != TOP && owner[j] != TOP && owner[i] != owner[j] {
+                    return Ok(None);
+                }
+            }
+        }
+        let [a, b] = parts;
+        let (o, l, tp) = (&owner, &local, &top);
+        let (pa, pb) = rayon::join(
+            || Part::analyse(pattern, 0, a, tp, o, l),
+            || Part::analyse(pattern, 1, b, tp, o, l),
+        );
+        let (pa, pb) = (pa?, pb?);
+        let t = top.len();
+        Ok(Some(SplitCholesky {
+            parts: [pa, pb],
+            top,
+            owner,
+            local,
+            top_factor: Mat::zeros(t, t),
+        }))
+    }
+
+    /// The separator unknowns in factor order.
+    pub(crate) fn top(&self) -> &[usize] {
+        &self.top
+    }
+
+    /// The dense lower factor of the Schur complement on [`Self::top`].
+    pub(crate) fn top_factor(&self) -> MatRef<'_, f64> {
+        self.top_factor.as_ref()
+    }
+
+    /// Stored factor entries (both parts, the separator block).
+    pub(crate) fn factor_nnz(&self) -> usize {
+        let t = self.top.len();
+        self.parts.iter().map(|p| p.l_values.len()).sum::<usize>() + t * (t + 1) / 2
+    }
+
+    /// Bytes held between factorisations.
+    pub(crate) fn memory_bytes(&self) -> usize {
+        let t = self.top.len();
+        self.parts.iter().map(Part::held_bytes).sum::<usize>()
+            + 8 * (t * t + self.top.len())
+            + 5 * self.owner.len()
+    }
+
+    /// Bytes a numeric factorisation needs at its peak: what is held, plus
+    /// both parts' matrix copies and workspaces (live at the same time).
+    pub(crate) fn factorization_bytes(&self) -> usize {
+        self.memory_bytes()
+            + self
+                .parts
+                .iter()
+                .map(|p| 8 * p.row_idx.len() + p.factor_req.unaligned_bytes_required())
+                .sum::<usize>()
+    }
+
+    /// Factorises K + shift·diag(K) (upper triangle `values` on `pattern`);
+    /// whether it is positive definite.
+    pub(crate) fn factorize(
+        &mut self,
+        pattern: &Pattern,
+        values: &[f64],
+        shift: f64,
+    ) -> Result<bool> {
+        let (owner, local, top) = (&self.owner, &self.local, &self.top);
+        let t = top.len();
+        let [pa, pb] = &mut self.parts;
+        let (ra, rb) = rayon::join(
+            || pa.factorize(pattern, values, shift, top, owner, local),
+            || pb.factorize(pattern, values, shift, top, owner, local),
+        );
+        if !(ra? && rb?) {
+            return Ok(false);
+        }
+        // S = L_TT^A L_TT^Aᵀ + L_TT^B L_TT^Bᵀ − K_TT (lower triangle).
+        let par = Par::rayon(0);
+        let s = &mut self.top_factor;
+        s.fill(0.0);
+        for part in &self.parts {
+            part.add_trailing_product(s.as_mut(), par);
+        }
+        let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
+        for (kj, &j) in self.top.iter().enumerate() {
+            for p in cp[j]..cp[j + 1] {
+                let i = ri[p];
+                if self.owner[i] == TOP {
+                    let ki = self.local[i] as usize;
+                    let v = if i == j {
+                        values[p] * (1.0 + shift)
+                    } else {
+                        values[p]
+                    };
+                    s[(ki.max(kj), ki.min(kj))] -= v;
+                }
+            }
+        }
+        let mut mem =
+            MemBuffer::try_new(cholesky_in_place_scratch::<f64>(t, par, Default::default()))
+                .map_err(|_| oom("separator workspace"))?;
+        Ok(cholesky_in_place(
+            s.as_mut(),
+            LltRegularization::default(),
+            par,
+            MemStack::new(&mut mem),
+            Default::default(),
+        )
+        .is_ok())
+    }
+
+    /// x ← K⁻¹x with the last successful factorisation.
+    pub(crate) fn solve(&mut self, x: &mut [f64]) {
+        let [pa, pb] = &mut self.parts;
+        let xr: &[f64] = x;
+        let ((mut wa, ca), (mut wb, cb)) = rayon::join(|| pa.forward(xr), || pb.forward(xr));
+        // L_S L_Sᵀ x_T = b_T − L_TA y_A − L_TB y_B.
+        let mut r = Mat::<f64>::zeros(self.top.len(), 1);
+        for (k, &u) in self.top.iter().enumerate() {
+            r[(k, 0)] = x[u] + ca[k] + cb[k];
+        }
+        solve_lower_triangular_in_place(self.top_factor.as_ref(), r.as_mut(), Par::Seq);
+        solve_upper_triangular_in_place(self.top_factor.as_ref().transpose(), r.as_mut(), Par::Seq);
+        let r = r.col(0).try_as_col_major().expect("a column").as_slice();
+        rayon::join(|| pa.backward(&mut wa, r), || pb.backward(&mut wb, r));
+        for (part, w) in [(&*pa, &wa), (&*pb, &wb)] {
+            for (k, &u) in part.own.iter().enumerate() {
+                x[u] = w[k];
+            }
+        }
+        for (k, &u) in self.top.iter().enumerate() {
+            x[u] = r[k];
+        }
+    }
+}
+
+impl Part {
+    fn n(&self) -> usize {
+        self.col_ptr.len() - 1
+    }
+
+    fn held_bytes(&self) -> usize {
+        let s = &self.symbolic;
+        8 * (self.l_values.len() + self.own.len())
+            + 4 * (self.col_ptr.len()
+                + self.row_idx.len()
+                + s.supernode_begin().len()
+                + s.col_ptr_for_row_idx().len()
+                + s.col_ptr_for_val().len()
+                + s.row_idx().len())
+    }
+
+    /// Calls `f(column, row, position in the global values)` for every
+    /// entry of the lower triangle of M in local numbering, always in the
+    /// same order.
+    fn visit(
+        pattern: &Pattern,
+        own: &[usize],
+        top: &[usize],
+        who: u8,
+        owner: &[u8],
+        local: &[u32],
+        mut f: impl FnMut(usize, usize, usize),
+    ) {
+        let n_own = own.len();
+        let lid = |u: usize| -> Option<usize> {
+            match owner[u] {
+                TOP => Some(n_own + local[u] as usize),
+                h if h == who => Some(local[u] as usize),
+                _ => None,
+            }
+        };
+        let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
+        // Every entry of M has its (global) column in own ∪ top.
+        for &j in own.iter().chain(top) {
+            let lj = lid(j).expect("a column of the part");
+            for p in cp[j]..cp[j + 1] {
+                if let Some(li) = lid(ri[p]) {
+                    f(li.min(lj), li.max(lj), p);
+                }
+            }
+        }
+    }
+
+    fn analyse(
+        pattern: &Pattern,
+        who: u8,
+        own: Vec<usize>,
+        top: &[usize],
+        owner: &[u8],
+        local: &[u32],
+    ) -> Result<Part> {
+        let m = own.len() + top.len();
+        let mut col_ptr = vec![0u32; m + 1];
+        Self::visit(pattern, &own, top, who, owner, local, |c, _, _| {
+            col_ptr[c + 1] += 1
+        });
+        for k in 0..m {
+            col_ptr[k + 1] += col_ptr[k];
+        }
+        let mut cursor = col_ptr.clone();
+        let mut row_idx = vec![0u32; col_ptr[m] as usize];
+        Self::visit(pattern, &own, top, who, owner, local, |c, r, _| {
+            row_idx[cursor[c] as usize] = r as u32;
+            cursor[c] += 1;
+        });
+        // faer's symbolic analysis reads the upper triangle, its numeric
+        // factorisation the lower one: the analysis gets the transpose.
+        let (up_ptr, up_idx) = transpose(m, &col_ptr, &row_idx);
+        let upper = SymbolicSparseColMatRef::new_unsorted_checked(m, m, &up_ptr, None, &up_idx);
+        let mut etree = vec![0i32; m];
+        let mut col_counts = vec![0u32; m];
+        let mut mem = MemBuffer::try_new(StackReq::any_of(&[
+            prefactorize_symbolic_cholesky_scratch::<u32>(m, up_idx.len()),
+            factorize_supernodal_symbolic_cholesky_scratch::<u32>(m),
+        ]))
+        .map_err(|_| oom("symbolic workspace"))?;
+        let tree = prefactorize_symbolic_cholesky(
+            &mut etree,
+            &mut col_counts,
+            upper,
+            MemStack::new(&mut mem),
+        );
+        let symbolic = factorize_supernodal_symbolic_cholesky(
+            upper,
+            tree,
+            &col_counts,
+            MemStack::new(&mut mem),
+            Default::default(),
+        )
+        .map_err(|_| oom("symbolic analysis"))?;
+        drop((up_ptr, up_idx, etree, col_counts, mem));
+        let factor_req = factorize_supernodal_numeric_llt_scratch::<u32, f64>(
+            &symbolic,
+            Par::Seq,
+            Default::default(),
+        );
+        let solve_mem = MemBuffer::try_new(symbolic.solve_in_place_scratch::<f64>(1, Par::Seq))
+            .map_err(|_| oom("solve workspace"))?;
+        let mut l_values = Vec::new();
+        l_values
+            .try_reserve_exact(symbolic.len_val())
+            .map_err(|_| oom("factor"))?;
+        l_values.resize(symbolic.len_val(), 0.0);
+        Ok(Part {
+            own,
+            col_ptr,
+            row_idx,
+            symbolic,
+            l_values,
+            factor_req,
+            solve_mem,
+        })
+    }
+
+    fn factorize(
+        &mut self,
+        pattern: &Pattern,
+        values: &[f64],
+        shift: f64,
+        top: &[usize],
+        owner: &[u8],
+        local: &[u32],
+    ) -> Result<bool> {
+        let top_start = self.own.len();
+        let who = owner[self.own[0]];
+        let mut vals = Vec::new();
+        vals.try_reserve_exact(self.row_idx.len())
+            .map_err(|_| oom("matrix copy"))?;
+        vals.resize(self.row_idx.len(), 0.0);
+        let mut cursor = self.col_ptr.clone();
+        Self::visit(pattern, &self.own, top, who, owner, local, |c, r, p| {
+            vals[cursor[c] as usize] = if r == c {
+                values[p] * (1.0 + shift)
+            } else {
+                values[p]
+            };
+            cursor[c] += 1;
+        });
+        drop(cursor);
+        let m = self.n();
+        let sym =
+            SymbolicSparseColMatRef::new_unsorted_checked(m, m, &self.col_ptr, None, &self.row_idx);
+        let a = SparseColMatRef::new(sym, &vals);
+        let mut mem = MemBuffer::try_new(self.factor_req).map_err(|_| oom("workspace"))?;
+        let s = &self.symbolic;
+        let ok = factorize_supernodal_numeric_llt(
+            &mut self.l_values,
+            a,
+            LltRegularization::default(),
+            s,
+            Par::Seq,
+            MemStack::new(&mut mem),
+            Default::default(),
+        )
+        .is_ok();
+        if ok {
+            self.zero_upper_of_trailing_blocks(top_start);
+        }
+        Ok(ok)
+    }
+
+    /// Zeroes the strict upper triangles of the diagonal blocks of the
+    /// supernodes holding separator columns, so that those supernodes can
+    /// be multiplied as plain dense blocks.
+    fn zero_upper_of_trailing_blocks(&mut self, first: usize) {
+        let s = &self.symbolic;
+        let (begin, end) = (s.supernode_begin(), s.supernode_end());
+        let val_ptr = s.col_ptr_for_val();
+        let row_ptr = s.col_ptr_for_row_idx();
+        for k in 0..s.n_supernodes() {
+            let (start, end) = (begin[k] as usize, end[k] as usize);
+            if end <= first {
+                continue;
+            }
+            let ncols = end - start;
+            let nrows = ncols + (row_ptr[k + 1] - row_ptr[k]) as usize;
+            let base = val_ptr[k] as usize;
+            for c in 0..ncols {
+                for r in 0..c {
+                    self.l_values[base + c * nrows + r] = 0.0;
+                }
+            }
+        }
+    }
+
+    /// Each supernode's block of separator columns: (its rows as separator
+    /// indices, ascending; the dense block, rows × columns, first column at
+    /// separator index `rows[0]`).
+    fn trailing_blocks(&self) -> Vec<(Vec<usize>, MatRef<'_, f64>)> {
+        let first = self.own.len();
+        let s = &self.symbolic;
+        let llt = SupernodalLltRef::new(s, &self.l_values);
+        let mut out = Vec::new();
+        for k in 0..s.n_supernodes() {
+            let node = llt.supernode(k);
+            let (start, val) = (node.start(), node.val());
+            let ncols = val.ncols();
+            if start + ncols <= first {
+                continue;
+            }
+            let c0 = first.saturating_sub(start);
+            let rows: Vec<usize> = (start + c0..start + ncols)
+                .chain(node.pattern().iter().map(|&i| i as usize))
+                .map(|i| i - first)
+                .collect();
+            out.push((rows, val.get(c0.., c0..)));
+        }
+        out
+    }
+
+    /// s += L_TT L_TTᵀ (lower triangle) for this part's separator block.
+    fn add_trailing_product(&self, mut s: MatMut<'_, f64>, par: Par) {
+        for (rows, block) in self.trailing_blocks() {
+            let r = rows.len();
+            let contiguous = rows.last().is_some_and(|&l| l + 1 == rows[0] + r);
+            if contiguous {
+                matmul(
+                    s.as_mut().submatrix_mut(rows[0], rows[0], r, r),
+                    BlockStructure::TriangularLower,
+                    Accum::Add,
+                    block,
+                    BlockStructure::Rectangular,
+                    block.transpose(),
+                    BlockStructure::Rectangular,
+                    1.0,
+                    par,
+                );
+            } else {
+                let mut g = Mat::<f64>::zeros(r, r);
+                matmul(
+                    g.as_mut(),
+                    BlockStructure::TriangularLower,
+                    Accum::Replace,
+                    block,
+                    BlockStructure::Rectangular,
+                    block.transpose(),
+                    BlockStructure::Rectangular,
+                    1.0,
+                    par,
+                );
+                for b in 0..r {
+                    for a in b..r {
+                        s[(rows[a], rows[b])] += g[(a, b)];
+                    }
+                }
+            }
+        }
+    }
+
+    /// Forward substitution of the part: w = L⁻¹[b_own; 0], and
+    /// c = L_TT w_T = −L_TA y (y = L_AA⁻¹ b_own), over the separator.
+    fn forward(&mut self, b: &[f64]) -> (Vec<f64>, Vec<f64>) {
+        let first = self.own.len();
+        let mut w = vec![0.0; self.n()];
+        for (k, &u) in self.own.iter().enumerate() {
+            w[k] = b[u];
+        }
+        let n = self.n();
+        let s = &self.symbolic;
+        SupernodalLltRef::new(s, &self.l_values).l_solve_with_conj(
+            Conj::No,
+            MatMut::from_column_major_slice_mut(&mut w, n, 1),
+            Par::Seq,
+            MemStack::new(&mut self.solve_mem),
+        );
+        let wt = &w[first..];
+        let mut c = vec![0.0; wt.len()];
+        for (rows, block) in self.trailing_blocks() {
+            for col in 0..block.ncols() {
+                let x = wt[rows[col]];
+                for (row, &i) in rows.iter().enumerate().skip(col) {
+                    c[i] += block[(row, col)] * x;
+                }
+            }
+        }
+        (w, c)
+    }
+
+    /// Back substitution of the part given the separator values x_T:
+    /// w_own ← L_AA⁻ᵀ(y − L_TAᵀ x_T).
+    fn backward(&mut self, w: &mut [f64], x_top: &[f64]) {
+        let first = self.own.len();
+        // w_T = L_TTᵀ x_T, so that the transposed solve recovers x_T there
+        // and subtracts L_TAᵀ x_T from the part.
+        w[first..].fill(0.0);
+        for (rows, block) in self.trailing_blocks() {
+            for col in 0..block.ncols() {
+                let mut acc = 0.0;
+                for (row, &i) in rows.iter().enumerate().skip(col) {
+                    acc += block[(row, col)] * x_top[i];
+                }
+                w[first + rows[col]] = acc;
+            }
+        }
+        let n = self.n();
+        let s = &self.symbolic;
+        SupernodalLltRef::new(s, &self.l_values).l_transpose_solve_with_conj(
+            Conj::No,
+            MatMut::from_column_major_slice_mut(w, n, 1),
+            Par::Seq,
+            MemStack::new(&mut self.solve_mem),
+        );
+    }
+}
+
+/// The transpose of an m×m CSC pattern.
+fn transpose(m: usize, col_ptr: &[u32], row_idx: &[u32]) -> (Vec<u32>, Vec<u32>) {
+    let mut ptr = vec![0u32; m + 1];
+    for &r in row_idx {
+        ptr[r as usize + 1] += 1;
+    }
+    for k in 0..m {
+        ptr[k + 1] += ptr[k];
+    }
+    let mut cursor = ptr.clone();
+    let mut idx = vec![0u32; row_idx.len()];
+    for c in 0..m {
+        for &r in &row_idx[col_ptr[c] as usize..col_ptr[c + 1] as usize] {
+            idx[cursor[r as usize] as usize] = c as u32;
+            cursor[r as usize] += 1;
+        }
+    }
+    (ptr, idx)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::assembly::DofMap;
+    use nalgebra::{DMatrix, DVector};
+
+    const NX: usize = 9;
+    const NY: usize = 6;
+
+    /// A scalar diffusion matrix on an NX × NY grid of triangles with
+    /// conductivities varying by element and the left column grounded.
+    fn grid() -> (Pattern, Vec<f64>) {
+        let node = |x: usize, y: usize| y * NX + x;
+        let mut tris = Vec::new();
+        for y in 0..NY - 1 {
+            for x in 0..NX - 1 {
+                tris.push([node(x, y), node(x + 1, y), node(x + 1, y + 1)]);
+                tris.push([node(x, y), node(x + 1, y + 1), node(x, y + 1)]);
+            }
+        }
+        let n = NX * NY;
+        let dofs = DofMap::new(n, 1, |_| true);
+        let p = Pattern::build(&dofs, n, &tris);
+        let mut v = vec![0.0; p.nnz()];
+        for (e, t) in tris.iter().enumerate() {
+            let w = 1.0 + (e % 7) as f64;
+            let ke = [2.0, -1.0, -1.0, -1.0, 2.0, -1.0, -1.0, -1.0, 2.0].map(|k| w * k);
+            p.add_element(&mut v, t, &ke);
+        }
+        let cp = p.col_ptr();
+        for y in 0..NY {
+            let j = node(0, y);
+            v[cp[j + 1] - 1] += 3.0;
+        }
+        (p, v)
+    }
+
+    fn dense(p: &Pattern, v: &[f64]) -> DMatrix<f64> {
+        let n = p.n();
+        let mut k = DMatrix::zeros(n, n);
+        let (cp, ri) = (p.col_ptr(), p.row_idx());
+        for j in 0..n {
+            for q in cp[j]..cp[j + 1] {
+                k[(ri[q], j)] = v[q];
+                k[(j, ri[q])] = v[q];
+            }
+        }
+        k
+    }
+
+    /// Parts left and right of the middle column x = 4, which is the
+    /// separator, followed by two unknowns taken out of the parts.
+    fn dissection() -> ([Vec<usize>; 2], Vec<usize>) {
+        let last = [NX + 1, 3 * NX + 7];
+        let keep = |u: &usize| !last.contains(u);
+        let left = (0..NX * NY).filter(|u| u % NX < 4).filter(keep).collect();
+        let right = (0..NX * NY).filter(|u| u % NX > 4).filter(keep).collect();
+        let top = (0..NY).map(|y| y * NX + 4).chain(last).collect();
+        ([left, right], top)
+    }
+
+    #[test]
+    fn solves_like_a_dense_factorisation() {
+        let (p, v) = grid();
+        let (parts, top) = dissection();
+        let mut c = SplitCholesky::analyse(&p, parts, top).unwrap().unwrap();
+        assert!(c.factorize(&p, &v, 0.0).unwrap());
+        let b: Vec<f64> = (0..p.n()).map(|i| (i as f64 * 0.37).sin()).collect();
+        let mut x = b.clone();
+        c.solve(&mut x);
+        let want = dense(&p, &v)
+            .cholesky()
+            .unwrap()
+            .solve(&DVector::from_vec(b));
+        for (i, (a, w)) in x.iter().zip(want.iter()).enumerate() {
+            assert!((a - w).abs() <= 1e-12 * want.amax(), "x[{i}] = {a} vs {w}");
+        }
+    }
+
+    #[test]
+    fn the_separator_factor_is_that_of_the_schur_complement() {
+        let (p, v) = grid();
+        let (parts, top) = dissection();
+        let mut c = SplitCholesky::analyse(&p, parts, top.clone())
+            .unwrap()
+            .unwrap();
+        assert!(c.factorize(&p, &v, 0.0).unwrap());
+        let k = dense(&p, &v);
+        let rest: Vec<usize> = (0..p.n()).filter(|i| !top.contains(i)).collect();
+        let k11 = k.select_rows(&rest).select_columns(&rest);
+        let k12 = k.select_rows(&rest).select_columns(&top);
+        let k22 = k.select_rows(&top).select_columns(&top);
+        let s = &k22 - k12.transpose() * k11.cholesky().unwrap().solve(&k12);
+        let f = c.top_factor();
+        let t = top.len();
+        for a in 0..t {
+            for b in 0..=a {
+                let llt: f64 = (0..=b).map(|m| f[(a, m)] * f[(b, m)]).sum();
+                assert!(
+                    (llt - s[(a, b)]).abs() <= 1e-12 * s.norm(),
+                    "S[{a},{b}] = {llt} vs {}",
+                    s[(a, b)]
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn a_shift_factorises_the_matrix_with_a_scaled_diagonal() {
+        let (p, v) = grid();
+        let (parts, top) = dissection();
+        let mut c = SplitCholesky::analyse(&p, parts, top).unwrap().unwrap();
+        assert!(c.factorize(&p, &v, 0.5).unwrap());
+        let mut k = dense(&p, &v);
+        for i in 0..p.n() {
+            k[(i, i)] *= 1.5;
+        }
+        let b: Vec<f64> = (0..p.n()).map(|i| 1.0 + (i % 5) as f64).collect();
+        let mut x = b.clone();
+        c.solve(&mut x);
+        let want = k.cholesky().unwrap().solve(&DVector::from_vec(b));
+        let err = (DVector::from_vec(x) - &want).amax();
+        assert!(err <= 1e-12 * want.amax(), "{err}");
+    }
+
+    #[test]
+    fn an_indefinite_matrix_is_not_positive_definite() {
+        let (p, mut v) = grid();
+        let (parts, top) = dissection();
+        // A separator unknown's stiffness far below its couplings.
+        let cp = p.col_ptr();
+        let j = top[2];
+        v[cp[j + 1] - 1] = 1e-3;
+        let mut c = SplitCholesky::analyse(&p, parts, top).unwrap().unwrap();
+        assert!(!c.factorize(&p, &v, 0.0).unwrap());
+    }
+
+    #[test]
+    fn parts_coupled_to_each_other_are_refused() {
+        let (p, _) = grid();
+        // Without a separator, the middle column joins the left part to
+        // the right one.
+        let left: Vec<usize> = (0..NX * NY).filter(|u| u % NX <= 4).collect();
+        let right: Vec<usize> = (0..NX * NY).filter(|u| u % NX > 4).collect();
+        assert!(
+            SplitCholesky::analyse(&p, [left, right], Vec::new())
+                .unwrap()
+                .is_none()
+        );
+    }
+}
