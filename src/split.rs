@@ -68,6 +68,9 @@ pub(crate) struct SplitCholesky {
     top_factor: Mat<f64>,
 }
 
+/// Matrix copy, workspace and column cursors of a part's factorisation.
+type Buffers = (Vec<f64>, MemBuffer, Vec<u32>);
+
 /// One part's factorisation of M = K[own ∪ top], own first.
 struct Part {
     /// The part's unknowns in factor order (local indices 0..own.len()).
@@ -186,11 +189,15 @@ impl SplitCholesky {
         let (owner, local, top) = (&self.owner, &self.local, &self.top);
         let t = top.len();
         let [pa, pb] = &mut self.parts;
+        // Buffers are allocated here, not on the worker threads, so that
+        // they come from (and return to) this thread's heap rather than
+        // leaving memory in per-thread allocator arenas.
+        let (ba, bb) = (pa.buffers()?, pb.buffers()?);
         let (ra, rb) = rayon::join(
-            || pa.factorize(pattern, values, shift, top, owner, local),
-            || pb.factorize(pattern, values, shift, top, owner, local),
+            || pa.factorize(pattern, values, shift, (top, owner, local), ba),
+            || pb.factorize(pattern, values, shift, (top, owner, local), bb),
         );
-        if !(ra? && rb?) {
+        if !(ra && rb) {
             return Ok(false);
         }
         // S = L_TT^A L_TT^Aᵀ + L_TT^B L_TT^Bᵀ − K_TT (lower triangle).
@@ -232,7 +239,14 @@ impl SplitCholesky {
     pub(crate) fn solve(&mut self, x: &mut [f64]) {
         let [pa, pb] = &mut self.parts;
         let xr: &[f64] = x;
-        let ((mut wa, ca), (mut wb, cb)) = rayon::join(|| pa.forward(xr), || pb.forward(xr));
+        let t = self.top.len();
+        // Allocated on this thread (see `factorize`).
+        let (mut wa, mut wb) = (vec![0.0; pa.n()], vec![0.0; pb.n()]);
+        let (mut ca, mut cb) = (vec![0.0; t], vec![0.0; t]);
+        rayon::join(
+            || pa.forward(xr, &mut wa, &mut ca),
+            || pb.forward(xr, &mut wb, &mut cb),
+        );
         // L_S L_Sᵀ x_T = b_T − L_TA y_A − L_TB y_B.
         let mut r = Mat::<f64>::zeros(self.top.len(), 1);
         for (k, &u) in self.top.iter().enumerate() {
@@ -377,17 +391,11 @@ impl Part {
         pattern: &Pattern,
         values: &[f64],
         shift: f64,
-        top: &[usize],
-        owner: &[u8],
-        local: &[u32],
-    ) -> Result<bool> {
+        (top, owner, local): (&[usize], &[u8], &[u32]),
+        (mut vals, mut mem, mut cursor): Buffers,
+    ) -> bool {
         let top_start = self.own.len();
         let who = owner[self.own[0]];
-        let mut vals = Vec::new();
-        vals.try_reserve_exact(self.row_idx.len())
-            .map_err(|_| oom("matrix copy"))?;
-        vals.resize(self.row_idx.len(), 0.0);
-        let mut cursor = self.col_ptr.clone();
         Self::visit(pattern, &self.own, top, who, owner, local, |c, r, p| {
             vals[cursor[c] as usize] = if r == c {
                 values[p] * (1.0 + shift)
@@ -401,7 +409,6 @@ impl Part {
         let sym =
             SymbolicSparseColMatRef::new_unsorted_checked(m, m, &self.col_ptr, None, &self.row_idx);
         let a = SparseColMatRef::new(sym, &vals);
-        let mut mem = MemBuffer::try_new(self.factor_req).map_err(|_| oom("workspace"))?;
         let s = &self.symbolic;
         let ok = factorize_supernodal_numeric_llt(
             &mut self.l_values,
@@ -416,7 +423,18 @@ impl Part {
         if ok {
             self.zero_upper_of_trailing_blocks(top_start);
         }
-        Ok(ok)
+        ok
+    }
+
+    /// The buffers of one numeric factorisation: the matrix copy, faer's
+    /// workspace and the column cursors of the copy.
+    fn buffers(&self) -> Result<Buffers> {
+        let mut vals = Vec::new();
+        vals.try_reserve_exact(self.row_idx.len())
+            .map_err(|_| oom("matrix copy"))?;
+        vals.resize(self.row_idx.len(), 0.0);
+        let mem = MemBuffer::try_new(self.factor_req).map_err(|_| oom("workspace"))?;
+        Ok((vals, mem, self.col_ptr.clone()))
     }
 
     /// Zeroes the strict upper triangles of the diagonal blocks of the
@@ -509,22 +527,22 @@ impl Part {
 
     /// Forward substitution of the part: w = L⁻¹[b_own; 0], and
     /// c = L_TT w_T = −L_TA y (y = L_AA⁻¹ b_own), over the separator.
-    fn forward(&mut self, b: &[f64]) -> (Vec<f64>, Vec<f64>) {
+    fn forward(&mut self, b: &[f64], w: &mut [f64], c: &mut [f64]) {
         let first = self.own.len();
-        let mut w = vec![0.0; self.n()];
         for (k, &u) in self.own.iter().enumerate() {
             w[k] = b[u];
         }
+        w[first..].fill(0.0);
+        c.fill(0.0);
         let n = self.n();
         let s = &self.symbolic;
         SupernodalLltRef::new(s, &self.l_values).l_solve_with_conj(
             Conj::No,
-            MatMut::from_column_major_slice_mut(&mut w, n, 1),
+            MatMut::from_column_major_slice_mut(w, n, 1),
             Par::Seq,
             MemStack::new(&mut self.solve_mem),
         );
         let wt = &w[first..];
-        let mut c = vec![0.0; wt.len()];
         for (rows, block) in self.trailing_blocks() {
             for col in 0..block.ncols() {
                 let x = wt[rows[col]];
@@ -533,7 +551,6 @@ impl Part {
                 }
             }
         }
-        (w, c)
     }
 
     /// Back substitution of the part given the separator values x_T:
