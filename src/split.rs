@@ -738,6 +738,42 @@ mod tests {
     }
 
     #[test]
+    fn uncoupled_parts_need_no_separator() {
+        // Two strips of triangles sharing no node.
+        let n = 20;
+        let mut tris = Vec::new();
+        for base in [0, 10] {
+            for i in 0..8 {
+                tris.push([base + i, base + i + 1, base + i + 2]);
+            }
+        }
+        let dofs = DofMap::new(n, 1, |_| true);
+        let p = Pattern::build(&dofs, n, &tris);
+        let mut v = vec![0.0; p.nnz()];
+        for t in &tris {
+            p.add_element(
+                &mut v,
+                t,
+                &[3.0, -1.0, -1.0, -1.0, 3.0, -1.0, -1.0, -1.0, 3.0],
+            );
+        }
+        let parts = [(0..10).collect(), (10..20).collect()];
+        let mut c = SplitCholesky::analyse(&p, parts, Vec::new())
+            .unwrap()
+            .unwrap();
+        assert!(c.factorize(&p, &v, 0.0).unwrap());
+        let b: Vec<f64> = (0..n).map(|i| 1.0 + i as f64).collect();
+        let mut x = b.clone();
+        c.solve(&mut x);
+        let want = dense(&p, &v)
+            .cholesky()
+            .unwrap()
+            .solve(&DVector::from_vec(b));
+        let err = (DVector::from_vec(x) - &want).amax();
+        assert!(err <= 1e-12 * want.amax(), "{err}");
+    }
+
+    #[test]
     fn parts_coupled_to_each_other_are_refused() {
         let (p, _) = grid();
         // Without a separator, the middle column joins the left part to
