@@ -2,6 +2,8 @@
 //! pattern of the reduced matrix, computed once per mesh so that
 //! re-assembly (every contact iteration) adds into fixed positions.
 
+use std::ops::Range;
+
 /// Marks a DOF that is not an unknown (prescribed, or on an unused node).
 pub const NOT_FREE: usize = usize::MAX;
 
@@ -75,6 +77,20 @@ pub struct Pattern {
     n: usize,
     col_ptr: Vec<usize>,
     row_idx: Vec<usize>,
+}
+
+/// The values of a contiguous range of a [`Pattern`]'s columns
+/// ([`Pattern::split_columns`]).
+pub struct Columns<'v> {
+    range: Range<usize>,
+    values: &'v mut [f64],
+}
+
+impl Columns<'_> {
+    /// The columns (unknowns) covered.
+    pub fn range(&self) -> Range<usize> {
+        self.range.clone()
+    }
 }
 
 impl Pattern {
@@ -171,6 +187,20 @@ impl Pattern {
         &self.row_idx
     }
 
+    /// Position in the values of the entry coupling unknowns `i` and `j`
+    /// (either order), if the pattern stores it.
+    pub fn position(&self, i: usize, j: usize) -> Option<usize> {
+        let (i, j) = (i.min(j), i.max(j));
+        if j >= self.n {
+            return None;
+        }
+        let base = self.col_ptr[j];
+        self.row_idx[base..self.col_ptr[j + 1]]
+            .binary_search(&i)
+            .ok()
+            .map(|k| base + k)
+    }
+
     /// Adds the dense k x k element matrix `ke` (row-major) on the
     /// unknowns `unknowns` (k of them; [`NOT_FREE`] for a prescribed DOF,
     /// whose rows and columns are skipped) into the upper-triangle `values`.
@@ -181,6 +211,39 @@ impl Pattern {
     /// Panics if an entry lies outside the pattern (an element that was not
     /// given to [`Pattern::build`]).
     pub fn add_element(&self, values: &mut [f64], unknowns: &[usize], ke: &[f64]) {
+        self.add_element_in(
+            &mut Columns {
+                range: 0..self.n,
+                values,
+            },
+            unknowns,
+            ke,
+        );
+    }
+
+    /// The values of columns [0, mid) and [mid, n), to be assembled at the
+    /// same time.
+    pub fn split_columns<'v>(
+        &self,
+        mid: usize,
+        values: &'v mut [f64],
+    ) -> (Columns<'v>, Columns<'v>) {
+        let (lo, hi) = values.split_at_mut(self.col_ptr[mid]);
+        (
+            Columns {
+                range: 0..mid,
+                values: lo,
+            },
+            Columns {
+                range: mid..self.n,
+                values: hi,
+            },
+        )
+    }
+
+    /// [`Pattern::add_element`] restricted to the entries whose column
+    /// lies in the range of `cols`.
+    pub fn add_element_in(&self, cols: &mut Columns<'_>, unknowns: &[usize], ke: &[f64]) {
         let k = unknowns.len();
         debug_assert_eq!(ke.len(), k * k);
         if k == 6
@@ -188,11 +251,12 @@ impl Pattern {
                 .chunks(2)
                 .all(|c| c[0] != NOT_FREE && c[1] == c[0] + 1)
         {
-            self.add_vector_element(values, unknowns, ke);
+            self.add_vector_element(cols, unknowns, ke);
             return;
         }
+        let off = self.col_ptr[cols.range.start];
         for (b, &j) in unknowns.iter().enumerate() {
-            if j == NOT_FREE {
+            if j == NOT_FREE || !cols.range.contains(&j) {
                 continue;
             }
             let base = self.col_ptr[j];
@@ -205,26 +269,37 @@ impl Pattern {
                 let pos = col
                     .binary_search(&i)
                     .expect("the pattern holds every entry of its elements");
-                values[base + pos] += ke[a * k + b];
+                cols.values[base + pos - off] += ke[a * k + b];
             }
         }
     }
 
-    /// [`Pattern::add_element`] for a triangle with two free unknowns per
-    /// node, numbered consecutively (the common case): the columns of a
+    /// [`Pattern::add_element_in`] for a triangle with two free unknowns
+    /// per node, numbered consecutively (the common case): the columns of a
     /// node's two unknowns hold the same rows below it, so one search per
     /// pair of nodes places all four entries of their block, and diagonal
     /// blocks sit at the ends of their columns (3 searches instead of 21).
-    fn add_vector_element(&self, values: &mut [f64], unknowns: &[usize], ke: &[f64]) {
+    fn add_vector_element(&self, cols: &mut Columns<'_>, unknowns: &[usize], ke: &[f64]) {
         let cp = &self.col_ptr;
+        let off = cp[cols.range.start];
+        let values = &mut *cols.values;
         let first = [unknowns[0], unknowns[2], unknowns[4]];
         for v in 0..3 {
             let j = first[v];
+            // The node's two columns j and j + 1 (a range may end between).
+            let (in_a, in_b) = (cols.range.contains(&j), cols.range.contains(&(j + 1)));
+            if !(in_a || in_b) {
+                continue;
+            }
             let (a, b) = (2 * v, 2 * v + 1);
             debug_assert_eq!(self.row_idx[cp[j + 1] - 1], j);
-            values[cp[j + 1] - 1] += ke[a * 6 + a];
-            values[cp[j + 2] - 2] += ke[a * 6 + b];
-            values[cp[j + 2] - 1] += ke[b * 6 + b];
+            if in_a {
+                values[cp[j + 1] - 1 - off] += ke[a * 6 + a];
+            }
+            if in_b {
+                values[cp[j + 2] - 2 - off] += ke[a * 6 + b];
+                values[cp[j + 2] - 1 - off] += ke[b * 6 + b];
+            }
             for w in 0..3 {
                 let i = first[w];
                 if i >= j {
@@ -237,10 +312,14 @@ impl Pattern {
                 let next = cp[j + 1] + (pos - cp[j]);
                 debug_assert_eq!(self.row_idx[next + 1], i + 1);
                 let (c, d) = (2 * w, 2 * w + 1);
-                values[pos] += ke[c * 6 + a];
-                values[pos + 1] += ke[d * 6 + a];
-                values[next] += ke[c * 6 + b];
-                values[next + 1] += ke[d * 6 + b];
+                if in_a {
+                    values[pos - off] += ke[c * 6 + a];
+                    values[pos + 1 - off] += ke[d * 6 + a];
+                }
+                if in_b {
+                    values[next - off] += ke[c * 6 + b];
+                    values[next + 1 - off] += ke[d * 6 + b];
+                }
             }
         }
     }
@@ -287,7 +366,50 @@ mod tests {
         assert_eq!(values, vec![4.0, 5.0, 6.0, 0.0, 0.0]);
     }
 
-    /// Dense symmetric matrix of `values` (upper triangle) on `p`.
+    #[test]
+    fn position_finds_stored_entries_in_either_order_and_only_those() {
+        let dofs = DofMap::new(4, 1, |g| g != 0);
+        let p = Pattern::build(&dofs, 4, &[[0, 1, 2], [0, 2, 3]]);
+        // Upper-triangle storage: (0,0) (0,1) (1,1) (1,2) (2,2).
+        assert_eq!(p.position(1, 2), Some(3));
+        assert_eq!(p.position(2, 1), Some(3));
+        assert_eq!(p.position(0, 0), Some(0));
+        // Nodes 1 and 3 share no element; unknown 3 does not exist.
+        assert_eq!(p.position(0, 2), None);
+        assert_eq!(p.position(1, 3), None);
+    }
+
+    #[test]
+    fn assembling_column_ranges_separately_gives_the_whole_assembly() {
+        // Two vector triangles (the fast path) and one with a fixed DOF
+        // (the general path); every cut, including between a node's two
+        // columns.
+        let tris = [[0, 1, 2], [2, 3, 0], [3, 4, 2]];
+        let dofs = DofMap::new(5, 2, |g| g != 9);
+        let p = Pattern::build(&dofs, 5, &tris);
+        let ke: Vec<f64> = (0..36)
+            .map(|q| (1 + (q / 6).min(q % 6) * 6 + (q / 6).max(q % 6)) as f64)
+            .collect();
+        let add_all = |cols: &mut Columns<'_>| {
+            for t in &tris {
+                let mut u = [0; 6];
+                dofs.element_dofs(t, &mut u);
+                let u = u.map(|g| dofs.free(g));
+                p.add_element_in(cols, &u, &ke);
+            }
+        };
+        let mut whole = vec![0.0; p.nnz()];
+        add_all(&mut p.split_columns(p.n(), &mut whole).0);
+        for cut in 0..=p.n() {
+            let mut parts = vec![0.0; p.nnz()];
+            let (mut lo, mut hi) = p.split_columns(cut, &mut parts);
+            add_all(&mut lo);
+            add_all(&mut hi);
+            assert_eq!(parts, whole, "cut at column {cut}");
+        }
+    }
+
+    /// Dense symmetric matrix of `values` (upper triangle) on `p`.    /// Dense symmetric matrix of `values` (upper triangle) on `p`.
     fn dense(p: &Pattern, values: &[f64]) -> Vec<Vec<f64>> {
         let mut a = vec![vec![0.0; p.n()]; p.n()];
         for j in 0..p.n() {

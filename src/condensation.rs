@@ -79,8 +79,10 @@ impl Interface {
     }
 
     /// Reads Ŝ₁ from the factorisation of K₁, analysed with `unknowns`
-    /// (sorted free-unknown indices) numbered last.
-    pub fn new(chol: &Cholesky, unknowns: Vec<usize>) -> Result<Interface> {
+    /// (sorted free-unknown indices) numbered last: takes it when the
+    /// factorisation kept it ([`Cholesky::take_last_schur`]), else forms it
+    /// from the trailing factor block as L₂₂L₂₂ᵀ.
+    pub fn new(chol: &mut Cholesky, unknowns: Vec<usize>) -> Result<Interface> {
         let n = unknowns.len();
         let mut position = vec![OUTSIDE; chol.n()];
         for (k, &i) in unknowns.iter().enumerate() {
@@ -89,23 +91,29 @@ impl Interface {
         let scale: Vec<f64> = unknowns.iter().map(|&i| chol.scale()[i]).collect();
         let l = chol.last_block_factor()?;
         let par = Par::rayon(0);
-        let mut s_ref = Mat::<f64>::zeros(n, n);
-        matmul(
-            s_ref.as_mut(),
-            BlockStructure::TriangularLower,
-            Accum::Replace,
-            l.as_ref(),
-            BlockStructure::TriangularLower,
-            l.as_ref().transpose(),
-            BlockStructure::TriangularUpper,
-            1.0,
-            par,
-        );
-        for j in 0..n {
-            for i in 0..j {
-                s_ref[(i, j)] = s_ref[(j, i)];
+        let s_ref = match chol.take_last_schur() {
+            Some(s) => s,
+            None => {
+                let mut s = Mat::<f64>::zeros(n, n);
+                matmul(
+                    s.as_mut(),
+                    BlockStructure::TriangularLower,
+                    Accum::Replace,
+                    l.as_ref(),
+                    BlockStructure::TriangularLower,
+                    l.as_ref().transpose(),
+                    BlockStructure::TriangularUpper,
+                    1.0,
+                    par,
+                );
+                for j in 0..n {
+                    for i in 0..j {
+                        s[(i, j)] = s[(j, i)];
+                    }
+                }
+                s
             }
-        }
+        };
         Ok(Interface {
             unknowns,
             position,

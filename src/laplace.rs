@@ -44,7 +44,7 @@ pub fn solve_poisson(
         .iter()
         .map(|&v| mesh.nodes()[v])
         .collect();
-    let mut chol = Cholesky::analyse(&pattern, Ordering::Auto, Some(&coords), &[], true)?;
+    let mut chol = Cholesky::analyse(&pattern, Ordering::Auto, Some(&coords), &[], &[], true)?;
     let size = mesh.size();
     let mut vals = vec![0.0; pattern.nnz()];
     let mut rhs = vec![0.0; dofs.n_free()];

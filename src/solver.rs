@@ -116,11 +116,18 @@ impl Cholesky {
     /// 20 000 unknowns and two threads or more, the factorisation is split
     /// at the top of the elimination tree: the two subtrees are factorised
     /// concurrently and the separator (with `last`) as a dense block.
+    ///
+    /// `zeros` lists positions in the pattern's values that hold zero in
+    /// every matrix to be factorised (stored only because the pattern is
+    /// built node by node): the split may then treat those unknowns as
+    /// uncoupled. [`Cholesky::factorize`] fails on a matrix where one of
+    /// them is not zero.
     pub fn analyse(
         pattern: &Pattern,
         ordering: Ordering,
         coords: Option<&[[f64; 2]]>,
         last: &[usize],
+        zeros: &[usize],
         parallel_subtrees: bool,
     ) -> Result<Cholesky> {
         let n = pattern.n();
@@ -131,12 +138,19 @@ impl Cholesky {
                     && ordering.use_nested_dissection(n - last.len())
                     && rayon::current_num_threads() >= 2 =>
             {
-                analyse_split(pattern, c, last)?
+                analyse_split(pattern, c, last, zeros)?
             }
             _ => None,
         };
         let engine = match split {
-            Some(split) => Engine::Split(Box::new(split)),
+            Some(mut split) => {
+                // The Schur complement the split forms is then that of
+                // `last`, which the condensation would otherwise rebuild.
+                if !last.is_empty() && split.top().len() == last.len() {
+                    split.keep_schur();
+                }
+                Engine::Split(Box::new(split))
+            }
             None => Engine::Whole(Box::new(Whole::analyse(pattern, ordering, coords, last)?)),
         };
         Ok(Cholesky {
@@ -189,6 +203,35 @@ impl Cholesky {
                 }))
             }
         }
+    }
+
+    /// The Schur complement S of the `last` unknowns (see
+    /// [`Cholesky::last_block_factor`]) of the last successful
+    /// factorisation, scaled (diag(s₂) S diag(s₂)) and with both triangles,
+    /// when the factorisation formed it anyway: a split one whose separator
+    /// is exactly those unknowns (two bodies meeting at the contact
+    /// interface). Taken out: a second call returns `None`.
+    pub fn take_last_schur(&mut self) -> Option<Mat<f64>> {
+        let Engine::Split(sp) = &mut self.engine else {
+            return None;
+        };
+        if !self.factored || self.n_last == 0 || sp.top().len() != self.n_last {
+            return None;
+        }
+        let mut s = sp.take_schur()?;
+        let d: Vec<f64> = sp.top().iter().map(|&u| self.scale[u]).collect();
+        let t = d.len();
+        for j in 0..t {
+            for i in j..t {
+                s[(i, j)] *= d[i] * d[j];
+            }
+        }
+        for j in 0..t {
+            for i in 0..j {
+                s[(i, j)] = s[(j, i)];
+            }
+        }
+        Some(s)
     }
 
     /// Number of unknowns.
@@ -572,16 +615,33 @@ impl Whole {
 }
 
 /// The split analysis ([`SplitCholesky`]): the unknowns other than `last`
-/// cut in two parts and a separator, numbered before `last`. `None` when
-/// they do not split (or the dense separator block would be too large:
-/// over 64 entries per unknown).
+/// cut in two parts and a separator, numbered before `last`, ignoring the
+/// couplings at the positions `zeros`. `None` when they do not split (or
+/// the dense separator block would be too large: over 64 entries per
+/// unknown).
 fn analyse_split(
     pattern: &Pattern,
     coords: &[[f64; 2]],
     last: &[usize],
+    zeros: &[usize],
 ) -> Result<Option<SplitCholesky>> {
     let n = pattern.n();
-    let (rest, col_ptr, row_idx) = restricted(pattern, last)?;
+    let mut is_zero = Vec::new();
+    if !zeros.is_empty() {
+        is_zero = vec![false; pattern.nnz()];
+        for &p in zeros {
+            match is_zero.get_mut(p) {
+                Some(z) => *z = true,
+                None => {
+                    return Err(Error::argument(format!(
+                        "zero position {p} is outside the pattern ({} entries)",
+                        pattern.nnz()
+                    )));
+                }
+            }
+        }
+    }
+    let (rest, col_ptr, row_idx) = restricted(pattern, last, &is_zero)?;
     let graph = Graph::from_upper(&col_ptr, &row_idx);
     drop((col_ptr, row_idx));
     let c: Vec<[f64; 2]> = rest.iter().map(|&i| coords[i]).collect();
@@ -599,13 +659,18 @@ fn analyse_split(
         .map(|k| rest[k])
         .chain(last.iter().copied())
         .collect();
-    SplitCholesky::analyse(pattern, parts, top)
+    SplitCholesky::analyse(pattern, parts, top, &is_zero)
 }
 
 /// The unknowns not in `last` and the pattern restricted to them (upper
-/// CSC over their indices in that list).
+/// CSC over their indices in that list), without the positions marked in
+/// `is_zero` (empty: none).
 #[allow(clippy::type_complexity)]
-fn restricted(pattern: &Pattern, last: &[usize]) -> Result<(Vec<usize>, Vec<usize>, Vec<usize>)> {
+fn restricted(
+    pattern: &Pattern,
+    last: &[usize],
+    is_zero: &[bool],
+) -> Result<(Vec<usize>, Vec<usize>, Vec<usize>)> {
     const LAST: usize = usize::MAX;
     let n = pattern.n();
     let mut sub = vec![0usize; n];
@@ -627,10 +692,9 @@ fn restricted(pattern: &Pattern, last: &[usize]) -> Result<(Vec<usize>, Vec<usiz
     col_ptr.push(0);
     for &j in &rest {
         row_idx.extend(
-            ri[cp[j]..cp[j + 1]]
-                .iter()
-                .filter(|&&i| sub[i] != LAST)
-                .map(|&i| sub[i]),
+            (cp[j]..cp[j + 1])
+                .filter(|&p| sub[ri[p]] != LAST && !is_zero.get(p).copied().unwrap_or(false))
+                .map(|p| sub[ri[p]]),
         );
         col_ptr.push(row_idx.len());
     }
@@ -646,7 +710,7 @@ fn order_with_last(
     coords: Option<&[[f64; 2]]>,
     last: &[usize],
 ) -> Result<Vec<usize>> {
-    let (rest, col_ptr, row_idx) = restricted(pattern, last)?;
+    let (rest, col_ptr, row_idx) = restricted(pattern, last, &[])?;
     let m = rest.len();
     let order = match coords {
         Some(c) if ordering.use_nested_dissection(m) => {
@@ -707,7 +771,7 @@ mod tests {
     #[test]
     fn solves_a_grounded_chain() {
         let (p, v) = chain(50, true);
-        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &[], false).unwrap();
+        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &[], &[], false).unwrap();
         c.factorize(&p, &v).unwrap();
         let mut b = vec![0.0; 50];
         b[49] = 1.0;
@@ -729,7 +793,7 @@ mod tests {
         let n = 40;
         let (p, v) = chain(n, true);
         let last = [30usize, 5, 17];
-        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &last, false).unwrap();
+        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &last, &[], false).unwrap();
         c.factorize(&p, &v).unwrap();
         let l = c.last_block_factor().unwrap();
         // Independent dense Schur complement (nalgebra): K22 − K21 K11⁻¹ K12.
@@ -759,10 +823,98 @@ mod tests {
         }
     }
 
+    /// Two grids of NX × NY scalar nodes, one above the other, joined by a
+    /// strip of triangles between A's top row and B's bottom row, each
+    /// grounded along its outer edge; those two rows are the "interface".
+    fn two_blocks() -> (Pattern, Vec<f64>, Vec<[f64; 2]>, Vec<usize>) {
+        const NX: usize = 100;
+        const NY: usize = 101;
+        let node = |b: usize, x: usize, y: usize| b * NX * NY + y * NX + x;
+        let mut tris = Vec::new();
+        let mut coords = vec![[0.0; 2]; 2 * NX * NY];
+        for b in 0..2 {
+            for y in 0..NY {
+                for x in 0..NX {
+                    let y0 = if b == 0 { 0.0 } else { NY as f64 + 0.5 };
+                    coords[node(b, x, y)] = [x as f64, y0 + y as f64];
+                    if x + 1 < NX && y + 1 < NY {
+                        tris.push([node(b, x, y), node(b, x + 1, y), node(b, x + 1, y + 1)]);
+                        tris.push([node(b, x, y), node(b, x + 1, y + 1), node(b, x, y + 1)]);
+                    }
+                }
+            }
+        }
+        for x in 0..NX - 1 {
+            let (a0, a1) = (node(0, x, NY - 1), node(0, x + 1, NY - 1));
+            let (b0, b1) = (node(1, x, 0), node(1, x + 1, 0));
+            tris.push([a0, a1, b0]);
+            tris.push([a1, b1, b0]);
+        }
+        let n = 2 * NX * NY;
+        let dofs = DofMap::new(n, 1, |_| true);
+        let p = Pattern::build(&dofs, n, &tris);
+        let mut v = vec![0.0; p.nnz()];
+        for (e, t) in tris.iter().enumerate() {
+            let w = 1.0 + (e % 5) as f64;
+            let ke = [2.0, -1.0, -1.0, -1.0, 2.0, -1.0, -1.0, -1.0, 2.0].map(|k| w * k);
+            p.add_element(&mut v, t, &ke);
+        }
+        let cp = p.col_ptr();
+        for x in 0..NX {
+            for u in [node(0, x, 0), node(1, x, NY - 1)] {
+                v[cp[u + 1] - 1] += 1.0;
+            }
+        }
+        let mut last: Vec<usize> = (0..NX)
+            .flat_map(|x| [node(0, x, NY - 1), node(1, x, 0)])
+            .collect();
+        last.sort_unstable();
+        (p, v, coords, last)
+    }
+
+    #[test]
+    fn a_split_at_the_last_unknowns_hands_over_their_schur_complement() {
+        let (p, v, coords, last) = two_blocks();
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(2)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            let mut c = Cholesky::analyse(
+                &p,
+                Ordering::NestedDissection,
+                Some(&coords),
+                &last,
+                &[],
+                true,
+            )
+            .unwrap();
+            assert!(c.is_split());
+            c.factorize(&p, &v).unwrap();
+            let s = c.take_last_schur().expect("the kept Schur complement");
+            // Against the trailing factor block (itself checked against a
+            // dense Schur complement above): Ŝ = L₂₂L₂₂ᵀ.
+            let l = c.last_block_factor().unwrap();
+            let m = last.len();
+            let norm = (0..m).map(|i| s[(i, i)].abs()).fold(0.0, f64::max);
+            for a in 0..m {
+                for b in 0..m {
+                    let llt: f64 = (0..=a.min(b)).map(|k| l[(a, k)] * l[(b, k)]).sum();
+                    assert!(
+                        (s[(a, b)] - llt).abs() <= 1e-12 * norm,
+                        "S[{a},{b}] = {} vs {llt}",
+                        s[(a, b)]
+                    );
+                }
+            }
+            assert!(c.take_last_schur().is_none());
+        });
+    }
+
     #[test]
     fn detects_a_floating_chain_and_returns_its_constant_mode() {
         let (p, v) = chain(30, false);
-        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &[], false).unwrap();
+        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &[], &[], false).unwrap();
         match c.factorize(&p, &v) {
             Err(FactorError::Singular { mode: Some(m), .. }) => {
                 let mean = m.iter().sum::<f64>() / m.len() as f64;

@@ -9,18 +9,27 @@
 //!
 //!   K = [K_AA 0 K_AT; 0 K_BB K_BT; K_TA K_TB K_TT].
 //!
-//! The principal submatrices M_A = K[A∪T] and M_B = K[B∪T] are positive
-//! definite whenever K is; they are factorised concurrently with T last,
+//! Only the separator unknowns T_A ⊂ T coupled to A enter A's part: the
+//! principal submatrix M_A = K[A∪T_A] is positive definite whenever K is,
+//! and is factorised (concurrently with M_B) with T_A last,
 //! M_A = L_A L_Aᵀ with L_A = [L_AA 0; L_TA L_TT^A] and
-//! L_TT^A L_TT^Aᵀ = K_TT − L_TA L_TAᵀ. The Schur complement of K on T is
+//! L_TT^A L_TT^Aᵀ = K[T_A, T_A] − L_TA L_TAᵀ. The Schur complement of K on T
+//! is then
 //!
-//!   S = K_TT − L_TA L_TAᵀ − L_TB L_TBᵀ = L_TT^A L_TT^Aᵀ + L_TT^B L_TT^Bᵀ − K_TT,
+//!   S = K_TT − L_TA L_TAᵀ − L_TB L_TBᵀ
+//!     = K_TT + Σ_p (L_TT^p L_TT^pᵀ − K[T_p, T_p])   (each on T_p × T_p),
 //!
 //! factorised densely as L_S L_Sᵀ, and K = LLᵀ with
 //! L = [L_AA 0 0; 0 L_BB 0; L_TA L_TB L_S]. The price is that each part also
-//! factorises the dense T block (concurrently) and S must be formed: small
-//! against the subtrees while T is a separator or a contact interface
-//! (2054 unknowns at 1M).
+//! factorises its dense T_p block and S must be formed: small against the
+//! subtrees while T is a separator or a contact interface (2054 unknowns at
+//! 1M unknowns, of which each body's part holds its own side, 1027).
+//!
+//! Pattern entries declared zero in every matrix (the analysis's
+//! `is_zero`) do not couple: a frictionless contact element with an
+//! axis-aligned normal stores zeros between the tangential unknowns of the
+//! two surfaces, which would otherwise join the two bodies. Each
+//! factorisation checks that they are still zero.
 
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
 use faer::linalg::cholesky::llt::factor::{
@@ -66,15 +75,53 @@ pub(crate) struct SplitCholesky {
     local: Vec<u32>,
     /// Lower Cholesky factor L_S of the Schur complement on `top`.
     top_factor: Mat<f64>,
+    /// Positions of the matrix values declared zero (checked at every
+    /// factorisation: the split may rely on them).
+    zeros: Vec<usize>,
+    /// Whether a factorisation keeps a copy of the Schur complement.
+    keep_schur: bool,
+    /// The Schur complement on `top` of the last factorisation (lower
+    /// triangle), when kept and not yet taken.
+    schur: Option<Mat<f64>>,
 }
 
 /// Matrix copy, workspace and column cursors of a part's factorisation.
 type Buffers = (Vec<f64>, MemBuffer, Vec<u32>);
 
-/// One part's factorisation of M = K[own ∪ top], own first.
+/// Where every unknown sits, shared by both parts.
+#[derive(Clone, Copy)]
+struct Layout<'a> {
+    /// The separator unknowns in factor order.
+    top: &'a [usize],
+    /// Which part owns each unknown (0, 1, or [`TOP`]).
+    owner: &'a [u8],
+    /// Each unknown's index within its part or within `top`.
+    local: &'a [u32],
+    /// Positions of the values that are zero in every matrix (empty: none
+    /// known); only the analysis needs them.
+    is_zero: &'a [bool],
+}
+
+fn zero_at(is_zero: &[bool], p: usize) -> bool {
+    is_zero.get(p).copied().unwrap_or(false)
+}
+
+/// Marks a separator unknown that a part is not coupled to.
+const NONE: u32 = u32::MAX;
+
+/// One part's factorisation of M = K[own ∪ T_p], own first, where T_p is
+/// the separator unknowns coupled to the part. The others contribute
+/// nothing to the part's Schur complement, so leaving them out keeps the
+/// part's dense trailing front small: for a contact interface, T_p is the
+/// part's own side, half of the separator.
 struct Part {
     /// The part's unknowns in factor order (local indices 0..own.len()).
     own: Vec<usize>,
+    /// T_p as ascending indices into the separator (local indices
+    /// own.len()..).
+    seps: Vec<u32>,
+    /// Each separator index's position in `seps`, or [`NONE`].
+    sep_pos: Vec<u32>,
     /// Lower triangle of M in local numbering (CSC), entries in the order
     /// [`Part::visit`] meets them.
     col_ptr: Vec<u32>,
@@ -89,12 +136,14 @@ struct Part {
 impl SplitCholesky {
     /// Symbolic analysis for parts `parts` (each in its fill-reducing
     /// order) and separator `top` (in factor order) of the unknowns of
-    /// `pattern`. `None` if the parts are coupled to each other (not a
-    /// dissection) or a part is empty.
+    /// `pattern`, where the positions marked in `is_zero` (empty: none)
+    /// hold zero in every matrix to be factorised. `None` if the parts are
+    /// coupled to each other (not a dissection) or a part is empty.
     pub(crate) fn analyse(
         pattern: &Pattern,
         parts: [Vec<usize>; 2],
         top: Vec<usize>,
+        is_zero: &[bool],
     ) -> Result<Option<SplitCholesky>> {
         let n = pattern.n();
         if parts.iter().any(|p| p.is_empty())
@@ -120,17 +169,27 @@ impl SplitCholesky {
         }
         let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
         for j in 0..n {
-            for &i in &ri[cp[j]..cp[j + 1]] {
-                if owner[i] != TOP && owner[j] != TOP && owner[i] != owner[j] {
+            for p in cp[j]..cp[j + 1] {
+                let i = ri[p];
+                if owner[i] != TOP
+                    && owner[j] != TOP
+                    && owner[i] != owner[j]
+                    && !zero_at(is_zero, p)
+                {
                     return Ok(None);
                 }
             }
         }
         let [a, b] = parts;
-        let (o, l, tp) = (&owner, &local, &top);
+        let layout = Layout {
+            top: &top,
+            owner: &owner,
+            local: &local,
+            is_zero,
+        };
         let (pa, pb) = rayon::join(
-            || Part::analyse(pattern, 0, a, tp, o, l),
-            || Part::analyse(pattern, 1, b, tp, o, l),
+            || Part::analyse(pattern, 0, a, layout),
+            || Part::analyse(pattern, 1, b, layout),
         );
         let (pa, pb) = (pa?, pb?);
         let t = top.len();
@@ -140,6 +199,9 @@ impl SplitCholesky {
             owner,
             local,
             top_factor: Mat::zeros(t, t),
+            zeros: (0..is_zero.len()).filter(|&p| is_zero[p]).collect(),
+            keep_schur: false,
+            schur: None,
         }))
     }
 
@@ -151,6 +213,18 @@ impl SplitCholesky {
     /// The dense lower factor of the Schur complement on [`Self::top`].
     pub(crate) fn top_factor(&self) -> MatRef<'_, f64> {
         self.top_factor.as_ref()
+    }
+
+    /// Makes every factorisation keep a copy of the Schur complement on
+    /// [`Self::top`] for [`Self::take_schur`] (t² more values).
+    pub(crate) fn keep_schur(&mut self) {
+        self.keep_schur = true;
+    }
+
+    /// The Schur complement S on [`Self::top`] formed by the last
+    /// factorisation (lower triangle), if kept and not taken yet.
+    pub(crate) fn take_schur(&mut self) -> Option<Mat<f64>> {
+        self.schur.take()
     }
 
     /// Stored factor entries (both parts, the separator block).
@@ -168,9 +242,12 @@ impl SplitCholesky {
     }
 
     /// Bytes a numeric factorisation needs at its peak: what is held, plus
-    /// both parts' matrix copies and workspaces (live at the same time).
+    /// both parts' matrix copies and workspaces (live at the same time) and
+    /// the kept Schur complement.
     pub(crate) fn factorization_bytes(&self) -> usize {
+        let t = self.top.len();
         self.memory_bytes()
+            + if self.keep_schur { 8 * t * t } else { 0 }
             + self
                 .parts
                 .iter()
@@ -186,53 +263,82 @@ impl SplitCholesky {
         values: &[f64],
         shift: f64,
     ) -> Result<bool> {
-        let (owner, local, top) = (&self.owner, &self.local, &self.top);
-        let t = top.len();
+        if let Some(&p) = self.zeros.iter().find(|&&p| values[p] != 0.0) {
+            return Err(Error::state(format!(
+                "matrix entry {p} was analysed as zero but holds {:e}",
+                values[p]
+            )));
+        }
+        let layout = Layout {
+            top: &self.top,
+            owner: &self.owner,
+            local: &self.local,
+            is_zero: &[],
+        };
+        let t = self.top.len();
         let [pa, pb] = &mut self.parts;
         // Buffers are allocated here, not on the worker threads, so that
         // they come from (and return to) this thread's heap rather than
         // leaving memory in per-thread allocator arenas.
         let (ba, bb) = (pa.buffers()?, pb.buffers()?);
         let (ra, rb) = rayon::join(
-            || pa.factorize(pattern, values, shift, (top, owner, local), ba),
-            || pb.factorize(pattern, values, shift, (top, owner, local), bb),
+            || pa.factorize(pattern, values, shift, layout, ba),
+            || pb.factorize(pattern, values, shift, layout, bb),
         );
         if !(ra && rb) {
             return Ok(false);
         }
-        // S = L_TT^A L_TT^Aᵀ + L_TT^B L_TT^Bᵀ − K_TT (lower triangle).
+        // S = K_TT + Σ_p (L_TT^p L_TT^pᵀ − K[T_p, T_p]) (lower triangle):
+        // each part's trailing product is K[T_p, T_p] minus its
+        // contribution to the Schur complement.
         let par = Par::rayon(0);
         let s = &mut self.top_factor;
         s.fill(0.0);
         for part in &self.parts {
             part.add_trailing_product(s.as_mut(), par);
         }
+        self.schur = None;
         let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
         for (kj, &j) in self.top.iter().enumerate() {
             for p in cp[j]..cp[j + 1] {
                 let i = ri[p];
                 if self.owner[i] == TOP {
                     let ki = self.local[i] as usize;
+                    let in_both =
+                        |part: &Part| part.sep_pos[ki] != NONE && part.sep_pos[kj] != NONE;
+                    let copies = self.parts.iter().filter(|q| in_both(q)).count() as f64;
                     let v = if i == j {
                         values[p] * (1.0 + shift)
                     } else {
                         values[p]
                     };
-                    s[(ki.max(kj), ki.min(kj))] -= v;
+                    s[(ki.max(kj), ki.min(kj))] += (1.0 - copies) * v;
                 }
             }
+        }
+        let mut kept = None;
+        if self.keep_schur {
+            let mut copy = Mat::<f64>::new();
+            copy.try_reserve(t, t)
+                .map_err(|_| oom("Schur complement copy"))?;
+            copy.resize_with(t, t, |i, j| s[(i, j)]);
+            kept = Some(copy);
         }
         let mut mem =
             MemBuffer::try_new(cholesky_in_place_scratch::<f64>(t, par, Default::default()))
                 .map_err(|_| oom("separator workspace"))?;
-        Ok(cholesky_in_place(
+        let r = cholesky_in_place(
             s.as_mut(),
             LltRegularization::default(),
             par,
             MemStack::new(&mut mem),
             Default::default(),
         )
-        .is_ok())
+        .is_ok();
+        if r {
+            self.schur = kept;
+        }
+        Ok(r)
     }
 
     /// x ← K⁻¹x with the last successful factorisation.
@@ -275,7 +381,9 @@ impl Part {
     fn held_bytes(&self) -> usize {
         let s = &self.symbolic;
         8 * (self.l_values.len() + self.own.len())
-            + 4 * (self.col_ptr.len()
+            + 4 * (self.seps.len()
+                + self.sep_pos.len()
+                + self.col_ptr.len()
                 + self.row_idx.len()
                 + s.supernode_begin().len()
                 + s.col_ptr_for_row_idx().len()
@@ -283,29 +391,56 @@ impl Part {
                 + s.row_idx().len())
     }
 
+    /// The separator unknowns coupled to part `who` (its unknowns `own`),
+    /// as ascending indices into the separator.
+    fn coupled_separator(pattern: &Pattern, who: u8, own: &[usize], at: Layout<'_>) -> Vec<u32> {
+        let mut coupled = vec![false; at.top.len()];
+        let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
+        // The upper triangle holds each coupling once, in the column of
+        // the larger index: look in the part's columns and the separator's.
+        for &j in own {
+            for p in cp[j]..cp[j + 1] {
+                if at.owner[ri[p]] == TOP && !zero_at(at.is_zero, p) {
+                    coupled[at.local[ri[p]] as usize] = true;
+                }
+            }
+        }
+        for (k, &j) in at.top.iter().enumerate() {
+            if (cp[j]..cp[j + 1]).any(|p| at.owner[ri[p]] == who && !zero_at(at.is_zero, p)) {
+                coupled[k] = true;
+            }
+        }
+        (0..at.top.len() as u32)
+            .filter(|&k| coupled[k as usize])
+            .collect()
+    }
+
     /// Calls `f(column, row, position in the global values)` for every
     /// entry of the lower triangle of M in local numbering, always in the
     /// same order.
     fn visit(
         pattern: &Pattern,
-        own: &[usize],
-        top: &[usize],
         who: u8,
-        owner: &[u8],
-        local: &[u32],
+        own: &[usize],
+        (seps, sep_pos): (&[u32], &[u32]),
+        at: Layout<'_>,
         mut f: impl FnMut(usize, usize, usize),
     ) {
         let n_own = own.len();
         let lid = |u: usize| -> Option<usize> {
-            match owner[u] {
-                TOP => Some(n_own + local[u] as usize),
-                h if h == who => Some(local[u] as usize),
+            match at.owner[u] {
+                TOP => match sep_pos[at.local[u] as usize] {
+                    NONE => None,
+                    k => Some(n_own + k as usize),
+                },
+                h if h == who => Some(at.local[u] as usize),
                 _ => None,
             }
         };
         let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
-        // Every entry of M has its (global) column in own ∪ top.
-        for &j in own.iter().chain(top) {
+        // Every entry of M has its (global) column in own ∪ T_p.
+        let top_columns = seps.iter().map(|&k| at.top[k as usize]);
+        for j in own.iter().copied().chain(top_columns) {
             let lj = lid(j).expect("a column of the part");
             for p in cp[j]..cp[j + 1] {
                 if let Some(li) = lid(ri[p]) {
@@ -315,17 +450,16 @@ impl Part {
         }
     }
 
-    fn analyse(
-        pattern: &Pattern,
-        who: u8,
-        own: Vec<usize>,
-        top: &[usize],
-        owner: &[u8],
-        local: &[u32],
-    ) -> Result<Part> {
-        let m = own.len() + top.len();
+    fn analyse(pattern: &Pattern, who: u8, own: Vec<usize>, at: Layout<'_>) -> Result<Part> {
+        let seps = Self::coupled_separator(pattern, who, &own, at);
+        let mut sep_pos = vec![NONE; at.top.len()];
+        for (q, &k) in seps.iter().enumerate() {
+            sep_pos[k as usize] = q as u32;
+        }
+        let members = (&seps[..], &sep_pos[..]);
+        let m = own.len() + seps.len();
         let mut col_ptr = vec![0u32; m + 1];
-        Self::visit(pattern, &own, top, who, owner, local, |c, _, _| {
+        Self::visit(pattern, who, &own, members, at, |c, _, _| {
             col_ptr[c + 1] += 1
         });
         for k in 0..m {
@@ -333,7 +467,7 @@ impl Part {
         }
         let mut cursor = col_ptr.clone();
         let mut row_idx = vec![0u32; col_ptr[m] as usize];
-        Self::visit(pattern, &own, top, who, owner, local, |c, r, _| {
+        Self::visit(pattern, who, &own, members, at, |c, r, _| {
             row_idx[cursor[c] as usize] = r as u32;
             cursor[c] += 1;
         });
@@ -377,6 +511,8 @@ impl Part {
         l_values.resize(symbolic.len_val(), 0.0);
         Ok(Part {
             own,
+            seps,
+            sep_pos,
             col_ptr,
             row_idx,
             symbolic,
@@ -391,12 +527,13 @@ impl Part {
         pattern: &Pattern,
         values: &[f64],
         shift: f64,
-        (top, owner, local): (&[usize], &[u8], &[u32]),
+        at: Layout<'_>,
         (mut vals, mut mem, mut cursor): Buffers,
     ) -> bool {
         let top_start = self.own.len();
-        let who = owner[self.own[0]];
-        Self::visit(pattern, &self.own, top, who, owner, local, |c, r, p| {
+        let who = at.owner[self.own[0]];
+        let members = (&self.seps[..], &self.sep_pos[..]);
+        Self::visit(pattern, who, &self.own, members, at, |c, r, p| {
             vals[cursor[c] as usize] = if r == c {
                 values[p] * (1.0 + shift)
             } else {
@@ -461,10 +598,8 @@ impl Part {
         }
     }
 
-    /// Each supernode's block of separator columns: (its rows as separator
-    /// indices, ascending; the dense block, rows × columns, first column at
-    /// separator index `rows[0]`).
-    fn trailing_blocks(&self) -> Vec<(Vec<usize>, MatRef<'_, f64>)> {
+    /// Each supernode's block of separator columns.
+    fn trailing_blocks(&self) -> Vec<Trailing<'_>> {
         let first = self.own.len();
         let s = &self.symbolic;
         let llt = SupernodalLltRef::new(s, &self.l_values);
@@ -479,16 +614,20 @@ impl Part {
             let c0 = first.saturating_sub(start);
             let rows: Vec<usize> = (start + c0..start + ncols)
                 .chain(node.pattern().iter().map(|&i| i as usize))
-                .map(|i| i - first)
+                .map(|i| self.seps[i - first] as usize)
                 .collect();
-            out.push((rows, val.get(c0.., c0..)));
+            out.push(Trailing {
+                first: start + c0 - first,
+                rows,
+                block: val.get(c0.., c0..),
+            });
         }
         out
     }
 
     /// s += L_TT L_TTᵀ (lower triangle) for this part's separator block.
     fn add_trailing_product(&self, mut s: MatMut<'_, f64>, par: Par) {
-        for (rows, block) in self.trailing_blocks() {
+        for Trailing { rows, block, .. } in self.trailing_blocks() {
             let r = rows.len();
             let contiguous = rows.last().is_some_and(|&l| l + 1 == rows[0] + r);
             if contiguous {
@@ -543,9 +682,14 @@ impl Part {
             MemStack::new(&mut self.solve_mem),
         );
         let wt = &w[first..];
-        for (rows, block) in self.trailing_blocks() {
+        for Trailing {
+            first: c0,
+            rows,
+            block,
+        } in self.trailing_blocks()
+        {
             for col in 0..block.ncols() {
-                let x = wt[rows[col]];
+                let x = wt[c0 + col];
                 for (row, &i) in rows.iter().enumerate().skip(col) {
                     c[i] += block[(row, col)] * x;
                 }
@@ -560,13 +704,18 @@ impl Part {
         // w_T = L_TTᵀ x_T, so that the transposed solve recovers x_T there
         // and subtracts L_TAᵀ x_T from the part.
         w[first..].fill(0.0);
-        for (rows, block) in self.trailing_blocks() {
+        for Trailing {
+            first: c0,
+            rows,
+            block,
+        } in self.trailing_blocks()
+        {
             for col in 0..block.ncols() {
                 let mut acc = 0.0;
                 for (row, &i) in rows.iter().enumerate().skip(col) {
                     acc += block[(row, col)] * x_top[i];
                 }
-                w[first + rows[col]] = acc;
+                w[first + c0 + col] = acc;
             }
         }
         let n = self.n();
@@ -578,6 +727,17 @@ impl Part {
             MemStack::new(&mut self.solve_mem),
         );
     }
+}
+
+/// A supernode's block of a part's separator columns.
+struct Trailing<'a> {
+    /// Position in T_p of the block's first column.
+    first: usize,
+    /// The block's rows as separator indices (ascending): its columns'
+    /// own rows first, then the rows below them.
+    rows: Vec<usize>,
+    /// The dense block, rows × columns.
+    block: MatRef<'a, f64>,
 }
 
 /// The transpose of an m×m CSC pattern.
@@ -665,7 +825,9 @@ mod tests {
     fn solves_like_a_dense_factorisation() {
         let (p, v) = grid();
         let (parts, top) = dissection();
-        let mut c = SplitCholesky::analyse(&p, parts, top).unwrap().unwrap();
+        let mut c = SplitCholesky::analyse(&p, parts, top, &[])
+            .unwrap()
+            .unwrap();
         assert!(c.factorize(&p, &v, 0.0).unwrap());
         let b: Vec<f64> = (0..p.n()).map(|i| (i as f64 * 0.37).sin()).collect();
         let mut x = b.clone();
@@ -683,7 +845,7 @@ mod tests {
     fn the_separator_factor_is_that_of_the_schur_complement() {
         let (p, v) = grid();
         let (parts, top) = dissection();
-        let mut c = SplitCholesky::analyse(&p, parts, top.clone())
+        let mut c = SplitCholesky::analyse(&p, parts, top.clone(), &[])
             .unwrap()
             .unwrap();
         assert!(c.factorize(&p, &v, 0.0).unwrap());
@@ -708,10 +870,40 @@ mod tests {
     }
 
     #[test]
+    fn a_part_holds_only_the_separator_unknowns_it_is_coupled_to() {
+        // A separator two columns thick: x = 4 touches only the left part,
+        // x = 5 only the right one.
+        let (p, v) = grid();
+        let left: Vec<usize> = (0..NX * NY).filter(|u| u % NX < 4).collect();
+        let right: Vec<usize> = (0..NX * NY).filter(|u| u % NX > 5).collect();
+        let top: Vec<usize> = (0..NX * NY)
+            .filter(|u| (4..=5).contains(&(u % NX)))
+            .collect();
+        let (n_left, n_right) = (left.len(), right.len());
+        let mut c = SplitCholesky::analyse(&p, [left, right], top, &[])
+            .unwrap()
+            .unwrap();
+        assert_eq!(c.parts[0].n(), n_left + NY);
+        assert_eq!(c.parts[1].n(), n_right + NY);
+        assert!(c.factorize(&p, &v, 0.0).unwrap());
+        let b: Vec<f64> = (0..p.n()).map(|i| (i as f64 * 0.73).cos()).collect();
+        let mut x = b.clone();
+        c.solve(&mut x);
+        let want = dense(&p, &v)
+            .cholesky()
+            .unwrap()
+            .solve(&DVector::from_vec(b));
+        let err = (DVector::from_vec(x) - &want).amax();
+        assert!(err <= 1e-12 * want.amax(), "{err}");
+    }
+
+    #[test]
     fn a_shift_factorises_the_matrix_with_a_scaled_diagonal() {
         let (p, v) = grid();
         let (parts, top) = dissection();
-        let mut c = SplitCholesky::analyse(&p, parts, top).unwrap().unwrap();
+        let mut c = SplitCholesky::analyse(&p, parts, top, &[])
+            .unwrap()
+            .unwrap();
         assert!(c.factorize(&p, &v, 0.5).unwrap());
         let mut k = dense(&p, &v);
         for i in 0..p.n() {
@@ -733,7 +925,9 @@ mod tests {
         let cp = p.col_ptr();
         let j = top[2];
         v[cp[j + 1] - 1] = 1e-3;
-        let mut c = SplitCholesky::analyse(&p, parts, top).unwrap().unwrap();
+        let mut c = SplitCholesky::analyse(&p, parts, top, &[])
+            .unwrap()
+            .unwrap();
         assert!(!c.factorize(&p, &v, 0.0).unwrap());
     }
 
@@ -758,7 +952,7 @@ mod tests {
             );
         }
         let parts = [(0..10).collect(), (10..20).collect()];
-        let mut c = SplitCholesky::analyse(&p, parts, Vec::new())
+        let mut c = SplitCholesky::analyse(&p, parts, Vec::new(), &[])
             .unwrap()
             .unwrap();
         assert!(c.factorize(&p, &v, 0.0).unwrap());
@@ -773,6 +967,66 @@ mod tests {
         assert!(err <= 1e-12 * want.amax(), "{err}");
     }
 
+    /// The grid cut between columns x = 4 and x = 5, with every value
+    /// coupling them zeroed and the right edge grounded too: the parts
+    /// [x ≤ 4] and [x ≥ 5] are coupled only through stored zeros, which
+    /// `is_zero` marks.
+    fn grid_cut_by_zeros() -> (Pattern, Vec<f64>, [Vec<usize>; 2], Vec<bool>) {
+        let (p, mut v) = grid();
+        let (cp, ri) = (p.col_ptr(), p.row_idx());
+        let mut is_zero = vec![false; p.nnz()];
+        for j in 0..p.n() {
+            for q in cp[j]..cp[j + 1] {
+                if (ri[q] % NX <= 4) != (j % NX <= 4) {
+                    is_zero[q] = true;
+                    v[q] = 0.0;
+                }
+            }
+        }
+        for y in 0..NY {
+            let j = y * NX + NX - 1;
+            v[cp[j + 1] - 1] += 3.0;
+        }
+        let left = (0..NX * NY).filter(|u| u % NX <= 4).collect();
+        let right = (0..NX * NY).filter(|u| u % NX > 4).collect();
+        (p, v, [left, right], is_zero)
+    }
+
+    #[test]
+    fn parts_coupled_only_through_declared_zeros_split_without_a_separator() {
+        let (p, v, parts, is_zero) = grid_cut_by_zeros();
+        let mut c = SplitCholesky::analyse(&p, parts, Vec::new(), &is_zero)
+            .unwrap()
+            .expect("a split");
+        assert!(c.factorize(&p, &v, 0.0).unwrap());
+        let b: Vec<f64> = (0..p.n()).map(|i| (i as f64 * 0.41).sin()).collect();
+        let mut x = b.clone();
+        c.solve(&mut x);
+        let want = dense(&p, &v)
+            .cholesky()
+            .unwrap()
+            .solve(&DVector::from_vec(b));
+        let err = (DVector::from_vec(x) - &want).amax();
+        assert!(err <= 1e-12 * want.amax(), "{err}");
+    }
+
+    #[test]
+    fn a_declared_zero_that_holds_a_value_fails_the_factorisation() {
+        let (p, mut v, parts, is_zero) = grid_cut_by_zeros();
+        let mut c = SplitCholesky::analyse(&p, parts, Vec::new(), &is_zero)
+            .unwrap()
+            .expect("a split");
+        let q = is_zero.iter().position(|&z| z).unwrap();
+        v[q] = -0.5;
+        let err = c.factorize(&p, &v, 0.0).unwrap_err();
+        assert_eq!(err.status(), Status::InvalidState);
+        assert!(
+            err.message().contains(&format!("entry {q}")),
+            "{}",
+            err.message()
+        );
+    }
+
     #[test]
     fn parts_coupled_to_each_other_are_refused() {
         let (p, _) = grid();
@@ -781,7 +1035,7 @@ mod tests {
         let left: Vec<usize> = (0..NX * NY).filter(|u| u % NX <= 4).collect();
         let right: Vec<usize> = (0..NX * NY).filter(|u| u % NX > 4).collect();
         assert!(
-            SplitCholesky::analyse(&p, [left, right], Vec::new())
+            SplitCholesky::analyse(&p, [left, right], Vec::new(), &[])
                 .unwrap()
                 .is_none()
         );
