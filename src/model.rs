@@ -736,8 +736,6 @@ impl Model {
         up
     }
 
-    /// Adds an element matrix and its prescribed-DOF correction to the
-    /// reduced system.
     /// Adds the body elements' stiffness into the columns of `cols` and
     /// their prescribed-displacement loads into `rhs` (the rows of the same
     /// range). Visits the elements with an unknown in the range and, with
@@ -811,6 +809,8 @@ impl Model {
         Ok(softened)
     }
 
+    /// Adds an element matrix and its prescribed-DOF correction to the
+    /// reduced system.
     #[allow(clippy::too_many_arguments)]
     fn scatter(
         dofs: &DofMap,

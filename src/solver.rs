@@ -120,8 +120,8 @@ impl Cholesky {
     /// `zeros` lists positions in the pattern's values that hold zero in
     /// every matrix to be factorised (stored only because the pattern is
     /// built node by node): the split may then treat those unknowns as
-    /// uncoupled. [`Cholesky::factorize`] fails on a matrix where one of
-    /// them is not zero.
+    /// uncoupled, and its [`Cholesky::factorize`] fails on a matrix where
+    /// one of them is not zero.
     pub fn analyse(
         pattern: &Pattern,
         ordering: Ordering,

@@ -263,6 +263,7 @@ impl SplitCholesky {
         values: &[f64],
         shift: f64,
     ) -> Result<bool> {
+        self.schur = None;
         if let Some(&p) = self.zeros.iter().find(|&&p| values[p] != 0.0) {
             return Err(Error::state(format!(
                 "matrix entry {p} was analysed as zero but holds {:e}",
@@ -297,7 +298,6 @@ impl SplitCholesky {
         for part in &self.parts {
             part.add_trailing_product(s.as_mut(), par);
         }
-        self.schur = None;
         let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
         for (kj, &j) in self.top.iter().enumerate() {
             for p in cp[j]..cp[j + 1] {
