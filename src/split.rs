@@ -810,6 +810,16 @@ mod tests {
         k
     }
 
+    /// Asserts that the factorised `c` solves K x = b like nalgebra's dense
+    /// Cholesky of `k`.
+    fn assert_solves_like_dense(c: &mut SplitCholesky, k: DMatrix<f64>, b: Vec<f64>) {
+        let mut x = b.clone();
+        c.solve(&mut x);
+        let want = k.cholesky().unwrap().solve(&DVector::from_vec(b));
+        let err = (DVector::from_vec(x) - &want).amax();
+        assert!(err <= 1e-12 * want.amax(), "{err}");
+    }
+
     /// Parts left and right of the middle column x = 4, which is the
     /// separator, followed by two unknowns taken out of the parts.
     fn dissection() -> ([Vec<usize>; 2], Vec<usize>) {
@@ -830,15 +840,7 @@ mod tests {
             .unwrap();
         assert!(c.factorize(&p, &v, 0.0).unwrap());
         let b: Vec<f64> = (0..p.n()).map(|i| (i as f64 * 0.37).sin()).collect();
-        let mut x = b.clone();
-        c.solve(&mut x);
-        let want = dense(&p, &v)
-            .cholesky()
-            .unwrap()
-            .solve(&DVector::from_vec(b));
-        for (i, (a, w)) in x.iter().zip(want.iter()).enumerate() {
-            assert!((a - w).abs() <= 1e-12 * want.amax(), "x[{i}] = {a} vs {w}");
-        }
+        assert_solves_like_dense(&mut c, dense(&p, &v), b);
     }
 
     #[test]
@@ -887,14 +889,7 @@ mod tests {
         assert_eq!(c.parts[1].n(), n_right + NY);
         assert!(c.factorize(&p, &v, 0.0).unwrap());
         let b: Vec<f64> = (0..p.n()).map(|i| (i as f64 * 0.73).cos()).collect();
-        let mut x = b.clone();
-        c.solve(&mut x);
-        let want = dense(&p, &v)
-            .cholesky()
-            .unwrap()
-            .solve(&DVector::from_vec(b));
-        let err = (DVector::from_vec(x) - &want).amax();
-        assert!(err <= 1e-12 * want.amax(), "{err}");
+        assert_solves_like_dense(&mut c, dense(&p, &v), b);
     }
 
     #[test]
@@ -910,11 +905,7 @@ mod tests {
             k[(i, i)] *= 1.5;
         }
         let b: Vec<f64> = (0..p.n()).map(|i| 1.0 + (i % 5) as f64).collect();
-        let mut x = b.clone();
-        c.solve(&mut x);
-        let want = k.cholesky().unwrap().solve(&DVector::from_vec(b));
-        let err = (DVector::from_vec(x) - &want).amax();
-        assert!(err <= 1e-12 * want.amax(), "{err}");
+        assert_solves_like_dense(&mut c, k, b);
     }
 
     #[test]
@@ -957,14 +948,7 @@ mod tests {
             .unwrap();
         assert!(c.factorize(&p, &v, 0.0).unwrap());
         let b: Vec<f64> = (0..n).map(|i| 1.0 + i as f64).collect();
-        let mut x = b.clone();
-        c.solve(&mut x);
-        let want = dense(&p, &v)
-            .cholesky()
-            .unwrap()
-            .solve(&DVector::from_vec(b));
-        let err = (DVector::from_vec(x) - &want).amax();
-        assert!(err <= 1e-12 * want.amax(), "{err}");
+        assert_solves_like_dense(&mut c, dense(&p, &v), b);
     }
 
     /// The grid cut between columns x = 4 and x = 5, with every value
@@ -1000,14 +984,7 @@ mod tests {
             .expect("a split");
         assert!(c.factorize(&p, &v, 0.0).unwrap());
         let b: Vec<f64> = (0..p.n()).map(|i| (i as f64 * 0.41).sin()).collect();
-        let mut x = b.clone();
-        c.solve(&mut x);
-        let want = dense(&p, &v)
-            .cholesky()
-            .unwrap()
-            .solve(&DVector::from_vec(b));
-        let err = (DVector::from_vec(x) - &want).amax();
-        assert!(err <= 1e-12 * want.amax(), "{err}");
+        assert_solves_like_dense(&mut c, dense(&p, &v), b);
     }
 
     #[test]
