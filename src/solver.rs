@@ -131,6 +131,12 @@ impl Cholesky {
         parallel_subtrees: bool,
     ) -> Result<Cholesky> {
         let n = pattern.n();
+        if let Some(&p) = zeros.iter().find(|&&p| p >= pattern.nnz()) {
+            return Err(Error::argument(format!(
+                "zero position {p} is outside the pattern ({} entries)",
+                pattern.nnz()
+            )));
+        }
         let split = match coords {
             Some(c)
                 if parallel_subtrees
@@ -628,17 +634,10 @@ fn analyse_split(
     let n = pattern.n();
     let mut is_zero = Vec::new();
     if !zeros.is_empty() {
+        // (Positions checked by `Cholesky::analyse`.)
         is_zero = vec![false; pattern.nnz()];
         for &p in zeros {
-            match is_zero.get_mut(p) {
-                Some(z) => *z = true,
-                None => {
-                    return Err(Error::argument(format!(
-                        "zero position {p} is outside the pattern ({} entries)",
-                        pattern.nnz()
-                    )));
-                }
-            }
+            is_zero[p] = true;
         }
     }
     let (rest, col_ptr, row_idx) = restricted(pattern, last, &is_zero)?;
@@ -909,6 +908,21 @@ mod tests {
             }
             assert!(c.take_last_schur().is_none());
         });
+    }
+
+    #[test]
+    fn a_zero_position_outside_the_pattern_is_refused_and_named() {
+        let (p, _) = chain(10, true);
+        let bad = p.nnz();
+        let err = Cholesky::analyse(&p, Ordering::Amd, None, &[], &[0, bad], false)
+            .err()
+            .expect("refused");
+        assert_eq!(err.status(), Status::InvalidArgument);
+        assert!(
+            err.message().contains(&format!("zero position {bad}")),
+            "{}",
+            err.message()
+        );
     }
 
     #[test]
