@@ -79,6 +79,24 @@ pub struct Pattern {
     row_idx: Vec<usize>,
 }
 
+/// Where the off-diagonal node blocks of one vector triangle sit in a
+/// [`Pattern`] ([`Pattern::slots`]): for its node pairs (0, 1), (0, 2) and
+/// (1, 2), the offset, within the column of the pair's later first
+/// unknown, of the row of its earlier one.
+///
+/// A full scatter map would take 4 bytes per element entry (84 MB at 1M
+/// unknowns); these take 6 bytes per triangle and save the three column
+/// searches that were half of the body assembly's scatter.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Slots([u16; 3]);
+
+impl Slots {
+    /// For a triangle that has no slots (a prescribed DOF, unknowns not
+    /// numbered in node pairs, or a column too long for 16 bits): its
+    /// positions are searched.
+    pub const SEARCH: Slots = Slots([u16::MAX; 3]);
+}
+
 /// The values of a contiguous range of a [`Pattern`]'s columns
 /// ([`Pattern::split_columns`]).
 pub struct Columns<'v> {
@@ -90,6 +108,11 @@ impl Columns<'_> {
     /// The columns (unknowns) covered.
     pub fn range(&self) -> Range<usize> {
         self.range.clone()
+    }
+
+    /// Sets every value of the range to zero.
+    pub fn clear(&mut self) {
+        self.values.fill(0.0);
     }
 }
 
@@ -205,9 +228,8 @@ impl Pattern {
     /// unknowns `unknowns` (k of them; [`NOT_FREE`] for a prescribed DOF,
     /// whose rows and columns are skipped) into the upper-triangle `values`.
     ///
-    /// Positions are found by search in the (short, sorted) columns rather
-    /// than read from a precomputed scatter map, which would take 4 bytes
-    /// per element entry (84 MB at 1M unknowns, ~8 % of the factor).
+    /// Positions are found by search in the (short, sorted) columns; see
+    /// [`Slots`] for a compact precomputed map.
     /// Panics if an entry lies outside the pattern (an element that was not
     /// given to [`Pattern::build`]).
     pub fn add_element(&self, values: &mut [f64], unknowns: &[usize], ke: &[f64]) {
@@ -246,12 +268,13 @@ impl Pattern {
     pub fn add_element_in(&self, cols: &mut Columns<'_>, unknowns: &[usize], ke: &[f64]) {
         let k = unknowns.len();
         debug_assert_eq!(ke.len(), k * k);
-        if k == 6
-            && unknowns
-                .chunks(2)
-                .all(|c| c[0] != NOT_FREE && c[1] == c[0] + 1)
-        {
-            self.add_vector_element(cols, unknowns, ke);
+        if is_vector_triangle(unknowns) {
+            let cp = &self.col_ptr;
+            self.add_vector_element(cols, unknowns, ke, |_, j, i| {
+                self.row_idx[cp[j]..cp[j + 1]]
+                    .binary_search(&i)
+                    .expect("the pattern holds every entry of its elements")
+            });
             return;
         }
         let off = self.col_ptr[cols.range.start];
@@ -274,16 +297,64 @@ impl Pattern {
         }
     }
 
-    /// [`Pattern::add_element_in`] for a triangle with two free unknowns
-    /// per node, numbered consecutively (the common case): the columns of a
-    /// node's two unknowns hold the same rows below it, so one search per
+    /// The [`Slots`] of the triangle on `unknowns` (six, per node in
+    /// turn), or [`Slots::SEARCH`]. Panics, like [`Pattern::add_element`],
+    /// if the triangle was not given to [`Pattern::build`].
+    pub fn slots(&self, unknowns: &[usize]) -> Slots {
+        if !is_vector_triangle(unknowns) {
+            return Slots::SEARCH;
+        }
+        let first = [unknowns[0], unknowns[2], unknowns[4]];
+        let mut slots = [0u16; 3];
+        for (pair, (v, w)) in [(0, 1), (0, 2), (1, 2)].into_iter().enumerate() {
+            let (i, j) = (first[v].min(first[w]), first[v].max(first[w]));
+            let col = &self.row_idx[self.col_ptr[j]..self.col_ptr[j + 1]];
+            let at = col
+                .binary_search(&i)
+                .expect("the pattern holds every entry of its elements");
+            match u16::try_from(at) {
+                Ok(at) if at != u16::MAX => slots[pair] = at,
+                _ => return Slots::SEARCH,
+            }
+        }
+        Slots(slots)
+    }
+
+    /// [`Pattern::add_element_in`] for a triangle whose [`Slots`] were
+    /// computed on this pattern (by [`Pattern::slots`] with the same
+    /// unknowns): no search.
+    pub fn add_element_at(
+        &self,
+        cols: &mut Columns<'_>,
+        unknowns: &[usize],
+        ke: &[f64],
+        slots: Slots,
+    ) {
+        if slots == Slots::SEARCH {
+            self.add_element_in(cols, unknowns, ke);
+            return;
+        }
+        debug_assert!(is_vector_triangle(unknowns));
+        self.add_vector_element(cols, unknowns, ke, |pair, _, _| slots.0[pair] as usize);
+    }
+
+    /// [`Pattern::add_element_in`] for a vector triangle (two free unknowns
+    /// per node, numbered consecutively; the common case): the columns of a
+    /// node's two unknowns hold the same rows below it, so one position per
     /// pair of nodes places all four entries of their block, and diagonal
-    /// blocks sit at the ends of their columns (3 searches instead of 21).
-    fn add_vector_element(&self, cols: &mut Columns<'_>, unknowns: &[usize], ke: &[f64]) {
+    /// blocks sit at the ends of their columns. `offset(pair, j, i)` is
+    /// where row i sits in column j, for node pair `pair` as in [`Slots`].
+    fn add_vector_element(
+        &self,
+        cols: &mut Columns<'_>,
+        unknowns: &[usize],
+        ke: &[f64],
+        offset: impl Fn(usize, usize, usize) -> usize,
+    ) {
         let cp = &self.col_ptr;
         let off = cp[cols.range.start];
-        let values = &mut *cols.values;
         let first = [unknowns[0], unknowns[2], unknowns[4]];
+        let values = &mut *cols.values;
         for v in 0..3 {
             let j = first[v];
             // The node's two columns j and j + 1 (a range may end between).
@@ -305,10 +376,9 @@ impl Pattern {
                 if i >= j {
                     continue;
                 }
-                let pos = cp[j]
-                    + self.row_idx[cp[j]..cp[j + 1]]
-                        .binary_search(&i)
-                        .expect("the pattern holds every entry of its elements");
+                // Pairs (0, 1), (0, 2), (1, 2) are numbered v + w − 1.
+                let pos = cp[j] + offset(v + w - 1, j, i);
+                debug_assert_eq!(self.row_idx[pos], i);
                 let next = cp[j + 1] + (pos - cp[j]);
                 debug_assert_eq!(self.row_idx[next + 1], i + 1);
                 let (c, d) = (2 * w, 2 * w + 1);
@@ -343,6 +413,15 @@ impl Pattern {
             }
         }
     }
+}
+
+/// Whether `unknowns` are those of a vector triangle: six, two free ones
+/// per node, numbered consecutively.
+fn is_vector_triangle(unknowns: &[usize]) -> bool {
+    unknowns.len() == 6
+        && unknowns
+            .chunks(2)
+            .all(|c| c[0] != NOT_FREE && c[1] == c[0] + 1)
 }
 
 #[cfg(test)]
@@ -409,7 +488,43 @@ mod tests {
         }
     }
 
-    /// Dense symmetric matrix of `values` (upper triangle) on `p`.    /// Dense symmetric matrix of `values` (upper triangle) on `p`.
+    #[test]
+    fn slots_place_every_entry_where_the_column_search_does() {
+        // Two vector triangles and one with a prescribed DOF (no slots).
+        let tris = [[0, 1, 2], [2, 3, 0], [3, 4, 2]];
+        let dofs = DofMap::new(5, 2, |g| g != 9);
+        let p = Pattern::build(&dofs, 5, &tris);
+        let unknowns: Vec<[usize; 6]> = tris
+            .iter()
+            .map(|t| {
+                let mut u = [0; 6];
+                dofs.element_dofs(t, &mut u);
+                u.map(|g| dofs.free(g))
+            })
+            .collect();
+        let slots: Vec<Slots> = unknowns.iter().map(|u| p.slots(u)).collect();
+        assert_ne!(slots[0], Slots::SEARCH);
+        assert_ne!(slots[1], Slots::SEARCH);
+        assert_eq!(slots[2], Slots::SEARCH);
+        let ke: Vec<f64> = (0..36)
+            .map(|q| (1 + (q / 6).min(q % 6) * 6 + (q / 6).max(q % 6)) as f64)
+            .collect();
+        let mut searched = vec![0.0; p.nnz()];
+        for u in &unknowns {
+            p.add_element(&mut searched, u, &ke);
+        }
+        for cut in 0..=p.n() {
+            let mut placed = vec![0.0; p.nnz()];
+            let (mut lo, mut hi) = p.split_columns(cut, &mut placed);
+            for (u, &s) in unknowns.iter().zip(&slots) {
+                p.add_element_at(&mut lo, u, &ke, s);
+                p.add_element_at(&mut hi, u, &ke, s);
+            }
+            assert_eq!(placed, searched, "cut at column {cut}");
+        }
+    }
+
+    /// Dense symmetric matrix of `values` (upper triangle) on `p`.
     fn dense(p: &Pattern, values: &[f64]) -> Vec<Vec<f64>> {
         let mut a = vec![vec![0.0; p.n()]; p.n()];
         for j in 0..p.n() {

@@ -25,9 +25,17 @@ pub struct TriGeometry {
     pub h: f64,
 }
 
-/// Accurate a*d - b*c (Kahan's algorithm with fused multiply-add): the
-/// Jacobian of a sliver is a difference of nearly equal products.
+/// Accurate a*d - b*c: the Jacobian of a sliver is a difference of nearly
+/// equal products. Without cancellation (|ad − bc| ≥ (|ad| + |bc|)/2) the
+/// plain difference is within 3ε of it; otherwise Kahan's algorithm with
+/// fused multiply-add (1.5ε), which costs two calls into libm where the
+/// build target has no FMA instruction.
 fn det2(a: f64, b: f64, c: f64, d: f64) -> f64 {
+    let (ad, bc) = (a * d, b * c);
+    let plain = ad - bc;
+    if plain.abs() >= 0.5 * (ad.abs() + bc.abs()) {
+        return plain;
+    }
     let w = b * c;
     let e = (-b).mul_add(c, w);
     let f = a.mul_add(d, -w);
@@ -43,7 +51,7 @@ impl TriGeometry {
         // One square root of the largest squared length; hypot (no
         // overflow or underflow, but ~10x slower) only when the squares
         // leave the normal range (coordinates beyond ~1e±150).
-        let sq = |a: [f64; 2]| a[0].mul_add(a[0], a[1] * a[1]);
+        let sq = |a: [f64; 2]| a[0] * a[0] + a[1] * a[1];
         let h2 = sq(g[0]).max(sq(g[1])).max(sq(g[2]));
         let h = if h2.is_normal() || (h2 == 0.0 && g.iter().flatten().all(|&c| c == 0.0)) {
             h2.sqrt()
@@ -240,6 +248,18 @@ mod tests {
         assert_eq!(g.j, 2.0);
         let g = TriGeometry::new(&[[0.0, 0.0], [0.0, 1.0], [2.0, 0.0]]);
         assert_eq!(g.j, -2.0);
+    }
+
+    #[test]
+    fn a_sliver_jacobian_is_exact_where_the_plain_difference_cancels() {
+        // a·d − b·c with a = d = 1 + 2⁻³⁰, b = 1, c = 1 + 2⁻²⁹ is exactly
+        // 2⁻⁶⁰, below the last bit of either product: the plain difference
+        // of the rounded products gives 0.
+        let e = 2f64.powi(-30);
+        let (a, b, c, d) = (1.0 + e, 1.0, 1.0 + 2.0 * e, 1.0 + e);
+        assert_eq!(a * d - b * c, 0.0);
+        let geo = TriGeometry::new(&[[0.0, 0.0], [a, c], [b, d]]);
+        assert_eq!(geo.j, 2f64.powi(-60));
     }
 
     #[test]
