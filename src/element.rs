@@ -36,9 +36,9 @@ fn det2(a: f64, b: f64, c: f64, d: f64) -> f64 {
     if plain.abs() >= 0.5 * (ad.abs() + bc.abs()) {
         return plain;
     }
-    let w = b * c;
-    let e = (-b).mul_add(c, w);
-    let f = a.mul_add(d, -w);
+    // Kahan: e is the rounding error of bc, f = ad − bc rounded once.
+    let e = (-b).mul_add(c, bc);
+    let f = a.mul_add(d, -bc);
     f + e
 }
 
