@@ -57,9 +57,9 @@ impl Mesh {
     /// only changes how indices are printed in messages, so that a Fortran
     /// user reads the numbers of their own mesh.
     pub fn new(
-        nodes: Vec<[f64; 2]>,
-        triangles: Vec<[usize; 3]>,
-        body_of: Vec<i32>,
+        mut nodes: Vec<[f64; 2]>,
+        mut triangles: Vec<[usize; 3]>,
+        mut body_of: Vec<i32>,
         index_base: usize,
     ) -> Result<Mesh> {
         let b = index_base;
@@ -124,6 +124,12 @@ impl Mesh {
         let mut bodies = body_of.clone();
         bodies.sort_unstable();
         bodies.dedup();
+        // A builder that grew these by doubling leaves up to half of their
+        // capacity unused, held for the mesh's whole life (38 MB at 1M
+        // unknowns).
+        nodes.shrink_to_fit();
+        triangles.shrink_to_fit();
+        body_of.shrink_to_fit();
         let mut mesh = Mesh {
             nodes,
             triangles,

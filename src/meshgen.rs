@@ -140,7 +140,7 @@ impl MeshBuilder {
         self.add_mapped_grid(xs, ys, |x, y| [x, y], body, diagonal)
     }
 
-    /// Like [`MeshBuilder::add_grid`], with node (xs[i], ys[j]) placed at
+    /// Like [`MeshBuilder::add_grid`], with node (xs\[i\], ys\[j\]) placed at
     /// `map(xs[i], ys[j])`: a structured mesh of a curved region. The map
     /// must keep every cell convex and counter-clockwise (checked when the
     /// mesh is built).

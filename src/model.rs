@@ -1325,6 +1325,9 @@ impl Model {
                 ),
             ));
         }
+        let condensed_bytes = condensed
+            .as_ref()
+            .map_or(0, |(sys, x1)| sys.memory_bytes() + 8 * x1.len());
         let (values, rhs) = if last_full {
             let (values, rhs, _) = held.take().expect("the last full solve's system");
             if condense && history.len() == 1 {
@@ -1339,7 +1342,7 @@ impl Model {
         } else {
             // The last iterate is condensed: recover the whole field,
             // u = x₁ + K₁⁻¹ P(Δg + ΔC u_I), refined against K itself.
-            let (sys, x1) = condensed.as_ref().expect("a condensed iterate");
+            let (sys, x1) = condensed.take().expect("a condensed iterate");
             let t0 = Instant::now();
             let (values, rhs) = assemble(&active, &mut body, &mut held);
             timings.assembly += t0.elapsed().as_secs_f64();
@@ -1367,8 +1370,11 @@ impl Model {
                 p
             };
             let mut x = interface_product(&|j| u[free_to_global[j]], true);
+            // Near the solve's memory peak: free the vectors done with.
+            drop(std::mem::take(&mut u));
             chol.solve(&mut x)?;
-            x.iter_mut().zip(x1).for_each(|(a, b)| *a += b);
+            x.iter_mut().zip(&x1).for_each(|(a, b)| *a += b);
+            drop(x1);
             let mut solve = |r: &mut [f64]| -> Result<()> {
                 // K δ = r: y = K₁⁻¹r, S δ_I = S₁ y_I, δ = y + K₁⁻¹PΔC δ_I.
                 chol.solve(r)?;
@@ -1390,11 +1396,8 @@ impl Model {
             u = self.global_field(dofs, &x, &up, &context_final(&history))?;
             (values, rhs)
         };
-        info.memory_bytes = memory(pattern, chol)
-            + condensed
-                .as_ref()
-                .map_or(0, |(sys, x1)| sys.memory_bytes() + 8 * x1.len());
-        // The dense interface matrices (77 MB at 1M unknowns) are done
+        info.memory_bytes = memory(pattern, chol) + condensed_bytes;
+        // The dense interface matrices (51 MB at 1M unknowns) are done
         // with: free them before the results' temporaries are allocated.
         drop(condensed);
         info.relative_residual = residual(pattern, &values, &u_free(dofs, &u), &rhs);
@@ -1821,23 +1824,26 @@ fn refine(
     solve: &mut dyn FnMut(&mut [f64]) -> Result<()>,
 ) -> Result<()> {
     let inf = |v: &[f64]| v.iter().fold(0.0f64, |m, a| m.max(a.abs()));
-    let mut row_sums = vec![0.0f64; x.len()];
-    let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
-    for j in 0..x.len() {
-        for p in cp[j]..cp[j + 1] {
-            row_sums[ri[p]] += values[p].abs();
-            if ri[p] != j {
-                row_sums[j] += values[p].abs();
+    // One n-vector at a time: this runs near the solve's memory peak.
+    let k_norm = {
+        let mut row_sums = vec![0.0f64; x.len()];
+        let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
+        for j in 0..x.len() {
+            for p in cp[j]..cp[j + 1] {
+                row_sums[ri[p]] += values[p].abs();
+                if ri[p] != j {
+                    row_sums[j] += values[p].abs();
+                }
             }
         }
-    }
-    let k_norm = inf(&row_sums);
+        inf(&row_sums)
+    };
     let f_norm = inf(rhs);
-    let mut kx = vec![0.0; x.len()];
+    let mut r = vec![0.0; x.len()];
     let mut previous = f64::INFINITY;
     for _ in 0..3 {
-        pattern.sym_mul(values, x, &mut kx);
-        let mut r: Vec<f64> = rhs.iter().zip(&kx).map(|(b, k)| b - k).collect();
+        pattern.sym_mul(values, x, &mut r);
+        r.iter_mut().zip(rhs).for_each(|(k, b)| *k = b - *k);
         let rn = inf(&r);
         let omega = rn / (k_norm * inf(x) + f_norm);
         // (A NaN residual also stops: the finiteness check reports it.)

@@ -99,6 +99,17 @@ struct Whole {
     par: Par,
 }
 
+/// Length of the lower triangle of an m×m matrix packed by columns.
+pub fn packed_len(m: usize) -> usize {
+    m * (m + 1) / 2
+}
+
+/// Where column j (rows j..m) starts in the lower triangle of an m×m
+/// matrix packed by columns.
+pub fn packed_start(m: usize, j: usize) -> usize {
+    j * m - j * j.saturating_sub(1) / 2
+}
+
 /// Unknown count from which a nested-dissection factorisation is split
 /// into two concurrent subtrees (below it the whole factorisation takes
 /// milliseconds).
@@ -213,11 +224,13 @@ impl Cholesky {
 
     /// The Schur complement S of the `last` unknowns (see
     /// [`Cholesky::last_block_factor`]) of the last successful
-    /// factorisation, scaled (diag(s₂) S diag(s₂)) and with both triangles,
-    /// when the factorisation formed it anyway: a split one whose separator
-    /// is exactly those unknowns (two bodies meeting at the contact
-    /// interface). Taken out: a second call returns `None`.
-    pub fn take_last_schur(&mut self) -> Option<Mat<f64>> {
+    /// factorisation, scaled (diag(s₂) S diag(s₂)), its lower triangle
+    /// packed by columns (column j holds rows j.., from
+    /// [`packed_start`]`(m, j)`), when the factorisation formed it anyway:
+    /// a split one whose separator is exactly those unknowns (two bodies
+    /// meeting at the contact interface). Taken out: a second call returns
+    /// `None`.
+    pub fn take_last_schur(&mut self) -> Option<Vec<f64>> {
         let Engine::Split(sp) = &mut self.engine else {
             return None;
         };
@@ -228,13 +241,9 @@ impl Cholesky {
         let d: Vec<f64> = sp.top().iter().map(|&u| self.scale[u]).collect();
         let t = d.len();
         for j in 0..t {
-            for i in j..t {
-                s[(i, j)] *= d[i] * d[j];
-            }
-        }
-        for j in 0..t {
-            for i in 0..j {
-                s[(i, j)] = s[(j, i)];
+            let start = packed_start(t, j);
+            for (i, v) in (j..t).zip(&mut s[start..start + t - j]) {
+                *v *= d[i] * d[j];
             }
         }
         Some(s)
@@ -895,14 +904,16 @@ mod tests {
             // dense Schur complement above): Ŝ = L₂₂L₂₂ᵀ.
             let l = c.last_block_factor().unwrap();
             let m = last.len();
-            let norm = (0..m).map(|i| s[(i, i)].abs()).fold(0.0, f64::max);
-            for a in 0..m {
-                for b in 0..m {
-                    let llt: f64 = (0..=a.min(b)).map(|k| l[(a, k)] * l[(b, k)]).sum();
+            assert_eq!(s.len(), packed_len(m));
+            let at = |i: usize, j: usize| s[packed_start(m, j) + i - j];
+            let norm = (0..m).map(|i| at(i, i).abs()).fold(0.0, f64::max);
+            for b in 0..m {
+                for a in b..m {
+                    let llt: f64 = (0..=b).map(|k| l[(a, k)] * l[(b, k)]).sum();
                     assert!(
-                        (s[(a, b)] - llt).abs() <= 1e-12 * norm,
+                        (at(a, b) - llt).abs() <= 1e-12 * norm,
                         "S[{a},{b}] = {} vs {llt}",
-                        s[(a, b)]
+                        at(a, b)
                     );
                 }
             }

@@ -52,6 +52,7 @@ use faer::{Accum, Conj, Mat, MatMut, MatRef, Par};
 
 use crate::assembly::Pattern;
 use crate::error::{Error, Result, Status};
+use crate::solver::packed_len;
 
 /// `owner` of a separator unknown.
 const TOP: u8 = 2;
@@ -81,8 +82,9 @@ pub(crate) struct SplitCholesky {
     /// Whether a factorisation keeps a copy of the Schur complement.
     keep_schur: bool,
     /// The Schur complement on `top` of the last factorisation (lower
-    /// triangle), when kept and not yet taken.
-    schur: Option<Mat<f64>>,
+    /// triangle packed by columns, [`crate::solver::packed_start`]), when kept and not
+    /// yet taken.
+    schur: Option<Vec<f64>>,
 }
 
 /// Matrix copy, workspace and column cursors of a part's factorisation.
@@ -216,14 +218,15 @@ impl SplitCholesky {
     }
 
     /// Makes every factorisation keep a copy of the Schur complement on
-    /// [`Self::top`] for [`Self::take_schur`] (t² more values).
+    /// [`Self::top`] for [`Self::take_schur`] (t(t + 1)/2 more values).
     pub(crate) fn keep_schur(&mut self) {
         self.keep_schur = true;
     }
 
     /// The Schur complement S on [`Self::top`] formed by the last
-    /// factorisation (lower triangle), if kept and not taken yet.
-    pub(crate) fn take_schur(&mut self) -> Option<Mat<f64>> {
+    /// factorisation (lower triangle packed by columns), if kept and not
+    /// taken yet.
+    pub(crate) fn take_schur(&mut self) -> Option<Vec<f64>> {
         self.schur.take()
     }
 
@@ -247,7 +250,11 @@ impl SplitCholesky {
     pub(crate) fn factorization_bytes(&self) -> usize {
         let t = self.top.len();
         self.memory_bytes()
-            + if self.keep_schur { 8 * t * t } else { 0 }
+            + if self.keep_schur {
+                8 * packed_len(t)
+            } else {
+                0
+            }
             + self
                 .parts
                 .iter()
@@ -318,10 +325,14 @@ impl SplitCholesky {
         }
         let mut kept = None;
         if self.keep_schur {
-            let mut copy = Mat::<f64>::new();
-            copy.try_reserve(t, t)
+            // Packed, half of t². (It cannot live in the factor's unused
+            // triangle: faer's dense Cholesky writes both, seen in 0.24.)
+            let mut copy = Vec::new();
+            copy.try_reserve_exact(packed_len(t))
                 .map_err(|_| oom("Schur complement copy"))?;
-            copy.resize_with(t, t, |i, j| s[(i, j)]);
+            for j in 0..t {
+                copy.extend(s.col(j).subrows(j, t - j).iter());
+            }
             kept = Some(copy);
         }
         let mut mem =
