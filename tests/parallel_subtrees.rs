@@ -39,7 +39,7 @@ fn seed_scene(split: bool, refactorize: bool) -> (Vec<[f64; 2]>, SolveInfo) {
     }
     .build()
     .unwrap();
-    // (Ordering::Auto picks nested dissection from 50 000 unknowns.)
+    // (Ordering::Auto would pick it too; the test must not depend on that.)
     s.model.set_ordering(Ordering::NestedDissection);
     s.model.set_parallel_subtrees(split);
     let r = s
