@@ -30,7 +30,7 @@ use faer::linalg::triangular_solve::{
 use faer::{Accum, Mat, MatMut, Par};
 
 use crate::error::{Error, Result, Status};
-use crate::solver::{Cholesky, SINGULAR_TOL, packed_len, packed_start};
+use crate::solver::{Cholesky, SINGULAR_TOL, pack_lower, packed_len, packed_start};
 
 fn singular_error(eig: f64) -> Error {
     Error::new(
@@ -108,9 +108,7 @@ impl Interface {
                     par,
                 );
                 let mut packed = Vec::with_capacity(packed_len(n));
-                for j in 0..n {
-                    packed.extend(s.col(j).subrows(j, n - j).iter());
-                }
+                pack_lower(s.as_ref(), &mut packed);
                 packed
             }
         };

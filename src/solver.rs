@@ -23,7 +23,7 @@ use faer::sparse::linalg::cholesky::{
     factorize_symbolic_cholesky,
 };
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
-use faer::{Conj, Mat, MatMut, Par, Side};
+use faer::{Conj, Mat, MatMut, MatRef, Par, Side};
 
 use faer::perm::PermRef;
 
@@ -108,6 +108,15 @@ pub fn packed_len(m: usize) -> usize {
 /// matrix packed by columns.
 pub fn packed_start(m: usize, j: usize) -> usize {
     j * m - j * j.saturating_sub(1) / 2
+}
+
+/// Appends the lower triangle of the square `m`, packed by columns, to
+/// `out` (which the caller reserves: [`packed_len`]).
+pub fn pack_lower(m: MatRef<'_, f64>, out: &mut Vec<f64>) {
+    let n = m.nrows();
+    for j in 0..n {
+        out.extend(m.col(j).subrows(j, n - j).iter());
+    }
 }
 
 /// Unknown count from which a nested-dissection factorisation is split

@@ -52,7 +52,7 @@ use faer::{Accum, Conj, Mat, MatMut, MatRef, Par};
 
 use crate::assembly::Pattern;
 use crate::error::{Error, Result, Status};
-use crate::solver::packed_len;
+use crate::solver::{pack_lower, packed_len};
 
 /// `owner` of a separator unknown.
 const TOP: u8 = 2;
@@ -330,9 +330,7 @@ impl SplitCholesky {
             let mut copy = Vec::new();
             copy.try_reserve_exact(packed_len(t))
                 .map_err(|_| oom("Schur complement copy"))?;
-            for j in 0..t {
-                copy.extend(s.col(j).subrows(j, t - j).iter());
-            }
+            pack_lower(s.as_ref(), &mut copy);
             kept = Some(copy);
         }
         let mut mem =
