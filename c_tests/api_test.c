@@ -213,6 +213,21 @@ int main(void) {
   CHECK(tfem_solve(m, NULL) == TFEM_STATUS_OK);
   check_tension(m);
 
+  /* Orderings: the same answer from AMD and from nested dissection, as one
+   * tree or as two concurrent subtrees; bad values are refused by name and
+   * leave the results in place. */
+  CHECK(tfem_set_ordering(m, TFEM_ORDERING_MODE_AMD, 1) == TFEM_STATUS_OK);
+  CHECK(tfem_solve(m, NULL) == TFEM_STATUS_OK);
+  check_tension(m);
+  CHECK(tfem_set_ordering(m, TFEM_ORDERING_MODE_NESTED_DISSECTION, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_solve(m, NULL) == TFEM_STATUS_OK);
+  check_tension(m);
+  EXPECT_ERROR(m, tfem_set_ordering(m, 3, 1), TFEM_STATUS_INVALID_ARGUMENT, "ordering = 3");
+  EXPECT_ERROR(m, tfem_set_ordering(m, TFEM_ORDERING_MODE_AUTO, 2), TFEM_STATUS_INVALID_ARGUMENT, "parallel_subtrees = 2");
+  EXPECT_ERROR(NULL, tfem_set_ordering(NULL, 0, 1), TFEM_STATUS_NULL_POINTER, "model");
+  check_tension(m);
+  CHECK(tfem_set_ordering(m, TFEM_ORDERING_MODE_AUTO, 1) == TFEM_STATUS_OK);
+
   /* Warnings: none for this clean mesh. */
   CHECK(tfem_warning_count(m, &nw) == TFEM_STATUS_OK && nw == 0);
   EXPECT_ERROR(m, tfem_get_warning(m, 0, msg, sizeof msg), TFEM_STATUS_INVALID_ARGUMENT, "warning index");

@@ -41,6 +41,10 @@ program fortran_api_test
   call expect(tfem_fix_edges(m, 1_c_int, TFEM_COMPONENT_X, 0._dp) == TFEM_STATUS_OK, 'fix edges')
   call expect(tfem_fix(m, 1_c_int, TFEM_COMPONENT_Y, 0._dp) == TFEM_STATUS_OK, 'fix')
   call expect(tfem_add_traction(m, 2_c_int, 10._dp, 0._dp) == TFEM_STATUS_OK, 'traction')
+  status = tfem_set_ordering(m, 7_c_int, 1_c_int)
+  call expect(status == TFEM_STATUS_INVALID_ARGUMENT .and. index(tfem_error_message(m), 'ordering = 7') > 0, &
+      'bad ordering named')
+  call expect(tfem_set_ordering(m, TFEM_ORDERING_MODE_AMD, 1_c_int) == TFEM_STATUS_OK, 'AMD ordering')
   call expect(tfem_solve(m, info) == TFEM_STATUS_OK, 'solve: '//tfem_error_message(m))
   call expect(info%unknowns == 9 .and. info%relative_residual < 1e-12_dp, 'solve info')
   call expect(tfem_get_displacements(m, u, int(size(u), c_size_t)) == TFEM_STATUS_OK, 'displacements')

@@ -35,6 +35,11 @@ module tfem
   integer(c_int), parameter :: TFEM_TEMPERING_MODE_FIXED_JMIN = 2
   integer(c_int), parameter :: TFEM_TEMPERING_MODE_OFF = 3
 
+  ! tfem_ordering_mode
+  integer(c_int), parameter :: TFEM_ORDERING_MODE_AUTO = 0
+  integer(c_int), parameter :: TFEM_ORDERING_MODE_AMD = 1
+  integer(c_int), parameter :: TFEM_ORDERING_MODE_NESTED_DISSECTION = 2
+
   ! tfem_contact_law
   integer(c_int), parameter :: TFEM_CONTACT_LAW_FRICTIONLESS = 0
   integer(c_int), parameter :: TFEM_CONTACT_LAW_STICK = 1
@@ -214,6 +219,18 @@ module tfem
       real(c_double), value :: value
       integer(c_int) :: status
     end function tfem_set_tempering
+
+  !> Chooses the fill-reducing ordering: `ordering` is an `OrderingMode` (0 auto, 1 AMD, 2 nested
+  !! dissection); `parallel_subtrees` = 1 (default) factorises the two subtrees of a nested
+  !! dissection concurrently, 0 as one tree
+    function tfem_set_ordering(model, ordering, parallel_subtrees) &
+        bind(C, name="tfem_set_ordering") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: ordering
+      integer(c_int), value :: parallel_subtrees
+      integer(c_int) :: status
+    end function tfem_set_ordering
 
   !> Prescribes displacement component `component` (0 x, 1 y) of `node` to `value` (model length
   !! units)

@@ -133,6 +133,25 @@ typedef enum tfem_tempering_mode {
 } tfem_tempering_mode;
 
 /**
+ * The fill-reducing ordering of the factorisation (argument `ordering` of
+ * `tfem_set_ordering`).
+ */
+typedef enum tfem_ordering_mode {
+  /**
+   * Nested dissection from 10 000 unknowns, AMD below (default).
+   */
+  TFEM_ORDERING_MODE_AUTO = 0,
+  /**
+   * faer's approximate minimum degree.
+   */
+  TFEM_ORDERING_MODE_AMD = 1,
+  /**
+   * Geometric nested dissection on the node coordinates.
+   */
+  TFEM_ORDERING_MODE_NESTED_DISSECTION = 2,
+} tfem_ordering_mode;
+
+/**
  * The constitutive law of the contact elements.
  */
 typedef enum tfem_contact_law {
@@ -444,6 +463,15 @@ enum tfem_status tfem_set_material(struct tfem_model *model,
  * 2 fixed Jmin = `value`, 3 off); `value` is ignored for 0 and 3.
  */
 enum tfem_status tfem_set_tempering(struct tfem_model *model, int mode, double value);
+
+/**
+ * Chooses the fill-reducing ordering: `ordering` is an `OrderingMode`
+ * (0 auto, 1 AMD, 2 nested dissection); `parallel_subtrees` = 1 (default)
+ * factorises the two subtrees of a nested dissection concurrently, 0 as
+ * one tree. Results do not depend on either beyond round-off; a change
+ * discards the symbolic analysis kept for the mesh.
+ */
+enum tfem_status tfem_set_ordering(struct tfem_model *model, int ordering, int parallel_subtrees);
 
 /**
  * Prescribes displacement component `component` (0 x, 1 y) of `node` to

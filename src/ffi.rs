@@ -23,6 +23,7 @@ use crate::error::{Error, Result, Status};
 use crate::material::{Material, PlaneMode};
 use crate::mesh::Mesh;
 use crate::model::{Component, Model};
+use crate::ordering::Ordering;
 use crate::solution::{ContactReport, SolveInfo};
 
 /// Opaque handle to a model. Create with `tfem_create`, free with
@@ -45,6 +46,19 @@ pub enum TemperingMode {
     FixedJmin = 2,
     /// Plain FEM (no tempering); zero-Jacobian elements are an error.
     Off = 3,
+}
+
+/// The fill-reducing ordering of the factorisation (argument `ordering` of
+/// `tfem_set_ordering`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum OrderingMode {
+    /// Nested dissection from 10 000 unknowns, AMD below (default).
+    Auto = 0,
+    /// faer's approximate minimum degree.
+    Amd = 1,
+    /// Geometric nested dissection on the node coordinates.
+    NestedDissection = 2,
 }
 
 /// Options of `tfem_solve_contact`. Fill with `tfem_contact_options_default`
@@ -587,6 +601,43 @@ pub unsafe extern "C" fn tfem_set_tempering(
             }
         };
         m.model.set_tempering(t)
+    })
+}
+
+/// Chooses the fill-reducing ordering: `ordering` is an `OrderingMode`
+/// (0 auto, 1 AMD, 2 nested dissection); `parallel_subtrees` = 1 (default)
+/// factorises the two subtrees of a nested dissection concurrently, 0 as
+/// one tree. Results do not depend on either beyond round-off; a change
+/// discards the symbolic analysis kept for the mesh.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_set_ordering(
+    model: *mut TfemModel,
+    ordering: c_int,
+    parallel_subtrees: c_int,
+) -> Status {
+    with_model(model, |m| {
+        let ordering = match ordering {
+            0 => Ordering::Auto,
+            1 => Ordering::Amd,
+            2 => Ordering::NestedDissection,
+            _ => {
+                return Err(Error::argument(format!(
+                    "ordering = {ordering} must be 0 (auto), 1 (AMD) or 2 (nested dissection)"
+                )));
+            }
+        };
+        let parallel = match parallel_subtrees {
+            0 => false,
+            1 => true,
+            _ => {
+                return Err(Error::argument(format!(
+                    "parallel_subtrees = {parallel_subtrees} must be 0 or 1"
+                )));
+            }
+        };
+        m.model.set_ordering(ordering);
+        m.model.set_parallel_subtrees(parallel);
+        Ok(())
     })
 }
 
