@@ -1065,7 +1065,11 @@ fn speed(report: &mut String, a: &Args) {
         let factorization = f(&cond, "factorization_bytes");
         let matrix = 8.0 * (f(&cond, "unknowns") + 1.0 + 2.0 * f(&cond, "matrix_nnz"));
         let peak = f(&cond, "rss_peak");
-        let single_peak = child(n, "nd", "single").map_or(f64::NAN, |v| f(&v, "rss_peak"));
+        // Only a run that got through its one iteration is a baseline (it
+        // stops with "not converged", or "ok" if one iteration settled).
+        let single_peak = child(n, "nd", "single")
+            .filter(|v| matches!(v["status"].as_str(), Some("not converged" | "ok")))
+            .map_or(f64::NAN, |v| f(&v, "rss_peak"));
         writeln!(
             report,
             "| 1/{n} | {} | {} | {} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} | {:.3} | {:.0} | {:.0} | {:.0} | {:.2} | {:.2} | {:.0} | {:.2} |",
