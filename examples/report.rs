@@ -41,6 +41,14 @@ fn args() -> Args {
                 let mode = it.next().expect("--speed-run N ORDERING MODE");
                 speed_run(n, &ordering, &mode);
             }
+            "--export-matrix" => {
+                let n = it
+                    .next()
+                    .and_then(|v| v.parse().ok())
+                    .expect("--export-matrix N FILE");
+                export_matrix(n, Path::new(&it.next().expect("--export-matrix N FILE")));
+            }
+            "--faer-alone" => faer_alone(Path::new(&it.next().expect("--faer-alone FILE"))),
             "--out" => a.out = PathBuf::from(it.next().expect("--out DIR")),
             "--reference" => a.reference = PathBuf::from(it.next().expect("--reference FILE")),
             other => {
@@ -1015,6 +1023,166 @@ fn speed_run(n: usize, ordering: &str, mode: &str) -> ! {
     std::process::exit(0)
 }
 
+/// `report --export-matrix N FILE`: solves the seed scene (default options)
+/// and writes the matrix of its converged system with a nested-dissection
+/// permutation of it, for [`faer_alone`]. Little-endian: n, nnz (u64), the
+/// column pointers and row indices (u64), the values (f64), the permutation
+/// (u64, `perm[new] = old`).
+fn export_matrix(n: usize, file: &Path) -> ! {
+    let mut s = TwoBlocks {
+        mesh_size: 1.0 / n as f64,
+        ..Default::default()
+    }
+    .build()
+    .expect("scene");
+    s.model
+        .solve_contact(&ContactOptions::default())
+        .expect("contact solve");
+    let k = s.model.system_matrix().expect("the converged matrix");
+    let nodes = s.model.mesh().expect("mesh").nodes();
+    let coords: Vec<[f64; 2]> = k.unknowns.iter().map(|&g| nodes[g / 2]).collect();
+    let perm = tfem::ordering::nested_dissection(k.col_ptr, k.row_idx, &coords);
+    let mut w = std::io::BufWriter::new(std::fs::File::create(file).expect("matrix file"));
+    let words = [k.n(), k.values.len()]
+        .into_iter()
+        .chain(k.col_ptr.iter().copied());
+    let words = words.chain(k.row_idx.iter().copied());
+    for x in words.map(|x| x as u64) {
+        std::io::Write::write_all(&mut w, &x.to_le_bytes()).expect("write");
+    }
+    for x in k.values {
+        std::io::Write::write_all(&mut w, &x.to_le_bytes()).expect("write");
+    }
+    for &x in &perm {
+        std::io::Write::write_all(&mut w, &(x as u64).to_le_bytes()).expect("write");
+    }
+    std::io::Write::flush(&mut w).expect("write");
+    std::process::exit(0)
+}
+
+/// Reads `len` little-endian 8-byte words, 1 MiB at a time so that reading
+/// costs no more memory than the result.
+fn read_words<T>(r: &mut impl std::io::Read, len: usize, from: fn([u8; 8]) -> T) -> Vec<T> {
+    let mut out = Vec::with_capacity(len);
+    let mut buf = vec![0u8; 1 << 20];
+    while out.len() < len {
+        let m = (len - out.len()).min(buf.len() / 8);
+        r.read_exact(&mut buf[..8 * m]).expect("matrix file");
+        out.extend(
+            buf[..8 * m]
+                .chunks_exact(8)
+                .map(|c| from(c.try_into().unwrap())),
+        );
+    }
+    out
+}
+
+/// `report --faer-alone FILE`: the baseline of "the factorisation alone" —
+/// a process that holds the matrix of [`export_matrix`] and nothing else,
+/// and runs faer's supernodal Cholesky on it with the given
+/// nested-dissection permutation (symbolic analysis, one numeric
+/// factorisation, one solve). Prints its times and peak memory as JSON.
+fn faer_alone(file: &Path) -> ! {
+    use faer::dyn_stack::{MemBuffer, MemStack};
+    use faer::linalg::cholesky::llt::factor::LltRegularization;
+    use faer::perm::PermRef;
+    use faer::sparse::linalg::cholesky::{
+        CholeskySymbolicParams, LltRef, SymmetricOrdering, factorize_symbolic_cholesky,
+    };
+    use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
+    use faer::{Conj, MatMut, Par, Side};
+
+    let mut r = std::io::BufReader::new(std::fs::File::open(file).expect("matrix file"));
+    let u64le = |b: [u8; 8]| u64::from_le_bytes(b) as usize;
+    let head = read_words(&mut r, 2, u64le);
+    let (n, nnz) = (head[0], head[1]);
+    let col_ptr = read_words(&mut r, n + 1, u64le);
+    let row_idx = read_words(&mut r, nnz, u64le);
+    let values = read_words(&mut r, nnz, f64::from_le_bytes);
+    let perm = read_words(&mut r, n, u64le);
+    drop(r);
+    let mut inv = vec![0usize; n];
+    for (new, &old) in perm.iter().enumerate() {
+        inv[old] = new;
+    }
+    let rss_matrix = peak_rss();
+
+    let t0 = Instant::now();
+    let sym = SymbolicSparseColMatRef::new_checked(n, n, &col_ptr, None, &row_idx);
+    let ord = SymmetricOrdering::Custom(PermRef::new_checked(&perm, &inv, n));
+    let symbolic =
+        factorize_symbolic_cholesky(sym, Side::Upper, ord, CholeskySymbolicParams::default())
+            .expect("symbolic");
+    let analysis = t0.elapsed().as_secs_f64();
+    let par = Par::rayon(0);
+    let t0 = Instant::now();
+    let mut l_values = vec![0.0; symbolic.len_val()];
+    let mut mem =
+        MemBuffer::new(symbolic.factorize_numeric_llt_scratch::<f64>(par, Default::default()));
+    let a = SparseColMatRef::new(sym, &values);
+    symbolic
+        .factorize_numeric_llt(
+            &mut l_values,
+            a,
+            Side::Upper,
+            LltRegularization::default(),
+            par,
+            MemStack::new(&mut mem),
+            Default::default(),
+        )
+        .expect("positive definite");
+    drop(mem);
+    let factorization = t0.elapsed().as_secs_f64();
+    let t0 = Instant::now();
+    let mut x = vec![1.0; n];
+    let mut mem = MemBuffer::new(symbolic.solve_in_place_scratch::<f64>(1, par));
+    LltRef::new(&symbolic, &l_values).solve_in_place_with_conj(
+        Conj::No,
+        MatMut::from_column_major_slice_mut(&mut x, n, 1),
+        par,
+        MemStack::new(&mut mem),
+    );
+    let solve = t0.elapsed().as_secs_f64();
+    assert!(
+        x.iter().all(|v| v.is_finite()),
+        "faer's solve is not finite"
+    );
+    println!(
+        "{}",
+        serde_json::json!({
+            "unknowns": n, "matrix_nnz": nnz, "factor_nnz": symbolic.len_val(),
+            "analysis": analysis, "factorization": factorization, "solve": solve,
+            "rss_matrix": rss_matrix, "rss_peak": peak_rss(),
+        })
+    );
+    std::process::exit(0)
+}
+
+/// The seed scene's converged matrix at h = 1/n through [`export_matrix`]
+/// and [`faer_alone`], each in its own process; the file is removed.
+fn faer_child(n: usize) -> Option<Value> {
+    let exe = std::env::current_exe().ok()?;
+    let file =
+        std::env::temp_dir().join(format!("tfem-report-matrix-{}-{n}.bin", std::process::id()));
+    let file_arg = file.to_str()?;
+    let exported = std::process::Command::new(&exe)
+        .args(["--export-matrix", &n.to_string(), file_arg])
+        .status()
+        .ok()?
+        .success();
+    let out = exported
+        .then(|| {
+            std::process::Command::new(&exe)
+                .args(["--faer-alone", file_arg])
+                .output()
+                .ok()
+        })
+        .flatten();
+    let _ = std::fs::remove_file(&file);
+    let text = String::from_utf8_lossy(&out?.stdout).into_owned();
+    serde_json::from_str(text.lines().last()?).ok()
+}
+
 fn child(n: usize, ordering: &str, mode: &str) -> Option<Value> {
     let out = std::process::Command::new(std::env::current_exe().ok()?)
         .args(["--speed-run", &n.to_string(), ordering, mode])
@@ -1055,6 +1223,7 @@ fn speed(report: &mut String, a: &Args) {
     writeln!(report, "| h | unknowns | interface unknowns | iterations | analysis [s] | fact.+solve [s] | refactorising loop [s] | condensed loop [s] | ratio | ratio incl. | dense interface [s] | assembly / fact. | factorisation [MB] | matrix [MB] | peak RSS [MB] | peak / fact. | peak / (fact. + matrix) | fact.+solve peak [MB] | peak / fact.+solve peak |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|").unwrap();
     let mut scaling: Vec<(f64, f64, f64)> = Vec::new();
     let mut orderings = Vec::new();
+    let mut against_faer = Vec::new();
     for &n in &levels {
         let (Some(full), Some(cond)) = (child(n, "nd", "refactorize"), child(n, "nd", "condensed"))
         else {
@@ -1094,6 +1263,9 @@ fn speed(report: &mut String, a: &Args) {
         )
         .unwrap();
         scaling.push((f(&cond, "unknowns"), f(&cond, "total"), peak));
+        if let Some(alone) = faer_child(n) {
+            against_faer.push((n, alone, cond.clone()));
+        }
         if let (Some(amd), Some(one)) = (
             child(n, "amd", "condensed"),
             child(n, "nd-one-tree", "condensed"),
@@ -1113,6 +1285,39 @@ fn speed(report: &mut String, a: &Args) {
         )
         .unwrap();
     }
+    writeln!(
+        report,
+        "### Against faer alone\n\nThe factorisation alone, measured: a process that reads the \
+         converged matrix of the same scene (written by another process) with a nested-dissection \
+         permutation of it, holds nothing else, and runs faer's supernodal Cholesky once \
+         (symbolic analysis, numeric factorisation, one solve; `report --faer-alone`). Its peak \
+         RSS includes the matrix it reads. Against it, the whole condensed contact solve of the \
+         table above (its own process: mesh, model, every iteration, results). *time ratio*: the \
+         contact solve without its symbolic analysis over faer's factorisation + solve; *incl.*: \
+         both with their analyses.\n\n\
+         | h | unknowns | faer factor nnz | faer analysis [s] | faer factorisation [s] | faer solve [s] | faer peak RSS [MB] | contact solve [s] | contact peak RSS [MB] | time ratio | time ratio incl. | memory ratio |\n|---|---|---|---|---|---|---|---|---|---|---|---|"
+    )
+    .unwrap();
+    for (n, alone, cond) in &against_faer {
+        let fact_solve = f(alone, "factorization") + f(alone, "solve");
+        writeln!(
+            report,
+            "| 1/{n} | {} | {:.3e} | {:.2} | {:.2} | {:.2} | {:.0} | {:.2} | {:.0} | {:.2} | {:.2} | {:.2} |",
+            alone["unknowns"],
+            f(alone, "factor_nnz"),
+            f(alone, "analysis"),
+            f(alone, "factorization"),
+            f(alone, "solve"),
+            f(alone, "rss_peak") / 1e6,
+            f(cond, "total"),
+            f(cond, "rss_peak") / 1e6,
+            (f(cond, "total") - f(cond, "analysis")) / fact_solve,
+            f(cond, "total") / (f(alone, "analysis") + fact_solve),
+            f(cond, "rss_peak") / f(alone, "rss_peak"),
+        )
+        .unwrap();
+    }
+    writeln!(report).unwrap();
     writeln!(
         report,
         "### Orderings\n\nThe one factorisation (with its singularity check) of the condensed loop, \

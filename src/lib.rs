@@ -59,4 +59,4 @@ pub use material::{Material, PlaneMode};
 pub use mesh::Mesh;
 pub use model::{Component, Model};
 pub use ordering::Ordering;
-pub use solution::{ContactReport, SolveInfo, Timings};
+pub use solution::{ContactReport, SolveInfo, SystemMatrix, Timings};

@@ -25,7 +25,7 @@ use crate::error::{Error, Result, Status};
 use crate::material::Material;
 use crate::mesh::Mesh;
 use crate::ordering::Ordering;
-use crate::solution::{ContactReport, IterationRecord, SolveInfo, Timings};
+use crate::solution::{ContactReport, IterationRecord, SolveInfo, SystemMatrix, Timings};
 use crate::solver::{Cholesky, FactorError};
 
 /// A displacement component.
@@ -1568,6 +1568,26 @@ impl Model {
     /// Statistics of the last solve.
     pub fn solve_info(&self) -> Result<SolveInfo> {
         Ok(self.solved()?.info)
+    }
+
+    /// The stiffness matrix of the last solve ([`SystemMatrix`]), borrowed:
+    /// nothing is assembled or copied for it. Unlike the other results it
+    /// does not outlive a failed solve, which reuses the matrix storage.
+    pub fn system_matrix(&self) -> Result<SystemMatrix<'_>> {
+        self.solved()?;
+        let cache = self
+            .cache
+            .as_ref()
+            .filter(|c| c.epoch == self.epoch && c.values.len() == c.pattern.nnz())
+            .ok_or_else(|| {
+                Error::state("no matrix: the last solve failed (solve again for its matrix)")
+            })?;
+        Ok(SystemMatrix {
+            col_ptr: cache.pattern.col_ptr(),
+            row_idx: cache.pattern.row_idx(),
+            values: &cache.values,
+            unknowns: cache.dofs.free_to_global(),
+        })
     }
 
     /// Element strains [ε_xx, ε_yy, γ_xy] (engineering shear), computed on

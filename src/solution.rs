@@ -82,3 +82,50 @@ pub struct ContactReport {
     /// Solver statistics and timings.
     pub info: SolveInfo,
 }
+
+/// The stiffness matrix K of the last solve on its unknowns (the DOFs left
+/// after Dirichlet elimination), borrowed from the model without a copy:
+/// the upper triangle in compressed sparse columns, rows ascending within
+/// each column. For a contact solve it holds the contact elements active in
+/// the final state, so that K u = f is the system the reported displacements
+/// solve. Meant for checking a solve against another code, or timing a
+/// solver on the very matrix tfem factorised.
+#[derive(Debug, Clone)]
+pub struct SystemMatrix<'a> {
+    /// Column pointers: column j is `col_ptr[j]..col_ptr[j + 1]` (n + 1
+    /// entries).
+    pub col_ptr: &'a [usize],
+    /// Row index of each stored entry (≤ its column).
+    pub row_idx: &'a [usize],
+    /// Value of each stored entry.
+    pub values: &'a [f64],
+    /// The global DOF (2·node + component, component 0 = x) of each unknown.
+    pub unknowns: Vec<usize>,
+}
+
+impl SystemMatrix<'_> {
+    /// Number of unknowns (rows = columns).
+    pub fn n(&self) -> usize {
+        self.unknowns.len()
+    }
+
+    /// y = K x over the unknowns (the symmetric product of the stored upper
+    /// triangle).
+    ///
+    /// # Panics
+    /// If `x` does not have one value per unknown.
+    pub fn mul_vec(&self, x: &[f64]) -> Vec<f64> {
+        assert_eq!(x.len(), self.n(), "x needs one value per unknown");
+        let mut y = vec![0.0; self.n()];
+        for (j, w) in self.col_ptr.windows(2).enumerate() {
+            for p in w[0]..w[1] {
+                let (i, a) = (self.row_idx[p], self.values[p]);
+                y[i] += a * x[j];
+                if i != j {
+                    y[j] += a * x[i];
+                }
+            }
+        }
+        y
+    }
+}
