@@ -82,6 +82,39 @@ static void check_tension(tfem_model *m) {
   for (int e = 0; e < 4; ++e) CHECK(fabs(s[3 * e] - 10.0) < 1e-12 && fabs(s[3 * e + 1]) < 1e-12);
 }
 
+/* The matrix of the last tension solve: K u = f on the unknowns, with f the
+ * traction's consistent nodal forces (5 N in x at nodes 2 and 5); upper
+ * triangle, rows ascending, diagonal last, indices in the index base. */
+static void check_matrix(tfem_model *m, int base) {
+  int64_t n = -1, nnz = -1;
+  CHECK(tfem_get_system_matrix_size(m, &n, &nnz) == TFEM_STATUS_OK && n == 9 && nnz > n);
+  if (n != 9 || nnz <= n || nnz > 64) return;
+  int64_t cp[10], ri[64], dofs[9];
+  double k[64], u[12];
+  CHECK(tfem_get_system_matrix(m, cp, 10, ri, 64, k, 64, dofs, 9) == TFEM_STATUS_OK);
+  CHECK(tfem_get_displacements(m, u, 12) == TFEM_STATUS_OK);
+  CHECK(cp[0] == base && cp[n] == nnz + base);
+  double x[9], ku[9] = {0};
+  for (int j = 0; j < n; ++j) x[j] = u[dofs[j] - base];
+  for (int j = 0; j < n; ++j) {
+    for (int64_t p = cp[j] - base; p < cp[j + 1] - base; ++p) {
+      int64_t i = ri[p] - base;
+      CHECK(i >= 0 && i <= j && (p == cp[j] - base || ri[p - 1] < ri[p]));
+      if (i < 0 || i > j) return;
+      ku[i] += k[p] * x[j];
+      if (i != j) ku[j] += k[p] * x[i];
+    }
+    CHECK(ri[cp[j + 1] - base - 1] - base == j && k[cp[j + 1] - base - 1] > 0.0);
+  }
+  double err = 0;
+  for (int j = 0; j < n; ++j) {
+    int64_t d = dofs[j] - base;
+    double f = (d == 2 * 2 || d == 2 * 5) ? 5.0 : 0.0;
+    err = fmax(err, fabs(ku[j] - f));
+  }
+  CHECK(err < 1e-12);
+}
+
 int main(void) {
   char msg[512];
   const char *v = tfem_version();
@@ -101,6 +134,7 @@ int main(void) {
   EXPECT_ERROR(m, tfem_solve(m, NULL), TFEM_STATUS_INVALID_STATE, "mesh");
   double buf[64];
   EXPECT_ERROR(m, tfem_get_displacements(m, buf, 64), TFEM_STATUS_INVALID_STATE, "solve");
+  EXPECT_ERROR(m, tfem_get_system_matrix_size(m, NULL, NULL), TFEM_STATUS_INVALID_STATE, "solve");
   EXPECT_ERROR(m, tfem_fix(m, 0, 0, 0.0), TFEM_STATUS_INVALID_STATE, "mesh");
   EXPECT_ERROR(m, tfem_solve_contact(m, NULL, NULL), TFEM_STATUS_INVALID_STATE, "mesh");
 
@@ -185,6 +219,16 @@ int main(void) {
   CHECK(info.unknowns == 12 - 3 && info.factorizations == 1 && info.relative_residual < 1e-12);
   CHECK(info.time_total >= 0.0 && info.condition_estimate >= 1.0);
   check_tension(m);
+  check_matrix(m, 0);
+  {
+    /* Every matrix buffer is checked before any is written. */
+    int64_t cp[10] = {-7}, ri[64], dofs[9];
+    double k[64];
+    EXPECT_ERROR(m, tfem_get_system_matrix(m, cp, 10, ri, 8, k, 64, dofs, 9), TFEM_STATUS_BUFFER_TOO_SMALL, "row_idx");
+    CHECK(cp[0] == -7);
+    EXPECT_ERROR(m, tfem_get_system_matrix(m, cp, 10, ri, 64, k, 64, NULL, 9), TFEM_STATUS_NULL_POINTER, "dofs");
+    CHECK(cp[0] == -7);
+  }
 
   /* Result buffers: too short leaves the buffer untouched; NULL is refused. */
   double short_buf[11];
@@ -240,6 +284,7 @@ int main(void) {
   restrain_and_load(m, 1);
   CHECK(tfem_solve(m, NULL) == TFEM_STATUS_OK);
   check_tension(m);
+  check_matrix(m, 1);
   EXPECT_ERROR(m, tfem_fix(m, 0, 0, 0.0), TFEM_STATUS_INVALID_ARGUMENT, "index base 1");
   /* An unused node is warned about (1-based in the message). */
   double xy7[14];

@@ -17,7 +17,10 @@ program fortran_api_test
   integer(c_int) :: status, bad(12)
   type(tfem_solve_info) :: info
   character(len=:), allocatable :: msg
-  integer :: i
+  integer :: i, j
+  integer(c_int64_t) :: n, nnz, p
+  integer(c_int64_t), allocatable :: col_ptr(:), row_idx(:), dofs(:)
+  real(dp), allocatable :: kval(:), x(:), ku(:), f(:)
 
   call expect(len(tfem_version_string()) > 0, 'version')
   m = tfem_create()
@@ -55,6 +58,24 @@ program fortran_api_test
   call expect(err < 1e-14_dp, 'exact uniaxial tension')
   call expect(tfem_get_reactions(m, r, int(size(r), c_size_t)) == TFEM_STATUS_OK, 'reactions')
   call expect(abs(r(1) + r(7) + 10) < 1e-12_dp, 'reactions balance the load')
+  ! The solve's matrix, 1-based: K u = f on the unknowns, f the traction's
+  ! nodal forces (5 in x at nodes 3 and 6: positions 5 and 11 of u).
+  call expect(tfem_get_system_matrix_size(m, n, nnz) == TFEM_STATUS_OK .and. n == 9, 'matrix size')
+  allocate (col_ptr(n + 1), row_idx(nnz), kval(nnz), dofs(n), x(n), ku(n), f(12))
+  call expect(tfem_get_system_matrix(m, col_ptr, size(col_ptr, kind=c_size_t), row_idx, size(row_idx, kind=c_size_t), &
+      kval, size(kval, kind=c_size_t), dofs, size(dofs, kind=c_size_t)) == TFEM_STATUS_OK, 'matrix')
+  call expect(col_ptr(1) == 1 .and. col_ptr(n + 1) == nnz + 1, 'matrix 1-based')
+  x = u(dofs)
+  ku = 0
+  do j = 1, int(n)
+    do p = col_ptr(j), col_ptr(j + 1) - 1
+      ku(row_idx(p)) = ku(row_idx(p)) + kval(p) * x(j)
+      if (row_idx(p) /= j) ku(j) = ku(j) + kval(p) * x(row_idx(p))
+    end do
+  end do
+  f = 0
+  f([5, 11]) = 5
+  call expect(maxval(abs(ku - f(dofs))) < 1e-12_dp, 'K u = f through the matrix')
   status = tfem_get_displacements(m, u, 11_c_size_t)
   call expect(status == TFEM_STATUS_BUFFER_TOO_SMALL, 'short buffer')
   call tfem_destroy(m)

@@ -390,6 +390,36 @@ module tfem
       integer(c_int) :: status
     end function tfem_get_reactions
 
+  !> Sizes of the stiffness matrix of the last solve (see `tfem_get_system_matrix`): `n` unknowns and
+  !! `nnz` stored entries of its upper triangle
+    function tfem_get_system_matrix_size(model, n, nnz) &
+        bind(C, name="tfem_get_system_matrix_size") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int64_t), intent(out) :: n
+      integer(c_int64_t), intent(out) :: nnz
+      integer(c_int) :: status
+    end function tfem_get_system_matrix_size
+
+  !> Copies the stiffness matrix K of the last solve on its unknowns (the DOFs left after Dirichlet
+  !! elimination), the system K u = f whose solution `tfem_get_displacements` returns; for a contact
+  !! solve it holds the contact elements active at convergence
+    function tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length) &
+        bind(C, name="tfem_get_system_matrix") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int64_t), intent(inout) :: col_ptr(*)
+      integer(c_size_t), value :: col_ptr_length
+      integer(c_int64_t), intent(inout) :: row_idx(*)
+      integer(c_size_t), value :: row_idx_length
+      real(c_double), intent(inout) :: values(*)
+      integer(c_size_t), value :: values_length
+      integer(c_int64_t), intent(inout) :: dofs(*)
+      integer(c_size_t), value :: dofs_length
+      integer(c_int) :: status
+    end function tfem_get_system_matrix
+
   !> Tempered elasticity stiffness of one P1 triangle with corners `xy` (x1 y1 x2 y2 x3 y3): K =
   !! B̂ᵀ D B̂ / (2·max(J, jmin)), written row-major into `out` (36 values, DOFs u1 v1 u2 v2 u3
   !! v3)
@@ -431,7 +461,8 @@ module tfem
 
   !> Declares a contact pair with a user-made contact mesh B: `n_triangles` triangles in
   !! `connectivity` (3 per triangle) over nodes of the two interfaces
-    function tfem_add_contact_pair_with_mesh(model, tag_a, tag_b, n_triangles, connectivity, pair, flipped) &
+    function tfem_add_contact_pair_with_mesh(model, tag_a, tag_b, n_triangles, connectivity, pair, &
+        flipped) &
         bind(C, name="tfem_add_contact_pair_with_mesh") result(status)
       import
       type(c_ptr), value :: model

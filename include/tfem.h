@@ -563,6 +563,36 @@ enum tfem_status tfem_get_element_jacobians(struct tfem_model *model, double *ou
 enum tfem_status tfem_get_reactions(struct tfem_model *model, double *out, size_t length);
 
 /**
+ * Sizes of the stiffness matrix of the last solve (see
+ * `tfem_get_system_matrix`): `n` unknowns and `nnz` stored entries of its
+ * upper triangle. Either pointer may be NULL.
+ */
+enum tfem_status tfem_get_system_matrix_size(struct tfem_model *model, int64_t *n, int64_t *nnz);
+
+/**
+ * Copies the stiffness matrix K of the last solve on its unknowns (the
+ * DOFs left after Dirichlet elimination), the system K u = f whose
+ * solution `tfem_get_displacements` returns; for a contact solve it holds
+ * the contact elements active at convergence. Upper triangle in
+ * compressed sparse columns, rows ascending within each column:
+ * `col_ptr` (n + 1 values), `row_idx` and `values` (nnz values each),
+ * indices in the model's index base (`col_ptr[0]` = base). `dofs` (n
+ * values) gives each unknown's position in the array of
+ * `tfem_get_displacements`, in the index base (2·node + component for
+ * base 0). Every buffer is checked before any is written. Not available
+ * after a failed solve (TFEM_STATUS_INVALID_STATE): solve again.
+ */
+enum tfem_status tfem_get_system_matrix(struct tfem_model *model,
+                                        int64_t *col_ptr,
+                                        size_t col_ptr_length,
+                                        int64_t *row_idx,
+                                        size_t row_idx_length,
+                                        double *values,
+                                        size_t values_length,
+                                        int64_t *dofs,
+                                        size_t dofs_length);
+
+/**
  * Tempered elasticity stiffness of one P1 triangle with corners `xy`
  * (x1 y1 x2 y2 x3 y3): K = B̂ᵀ D B̂ / (2·max(J, jmin)), written row-major
  * into `out` (36 values, DOFs u1 v1 u2 v2 u3 v3). `jmin` > 0 tempers;

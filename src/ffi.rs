@@ -850,6 +850,79 @@ pub unsafe extern "C" fn tfem_get_reactions(
     })
 }
 
+/// Sizes of the stiffness matrix of the last solve (see
+/// `tfem_get_system_matrix`): `n` unknowns and `nnz` stored entries of its
+/// upper triangle. Either pointer may be NULL.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_system_matrix_size(
+    model: *mut TfemModel,
+    n: *mut i64,
+    nnz: *mut i64,
+) -> Status {
+    with_model(model, |m| {
+        let k = m.model.system_matrix()?;
+        if !n.is_null() {
+            write(n, k.n() as i64, "n")?;
+        }
+        if !nnz.is_null() {
+            write(nnz, k.values.len() as i64, "nnz")?;
+        }
+        Ok(())
+    })
+}
+
+/// Copies the stiffness matrix K of the last solve on its unknowns (the
+/// DOFs left after Dirichlet elimination), the system K u = f whose
+/// solution `tfem_get_displacements` returns; for a contact solve it holds
+/// the contact elements active at convergence. Upper triangle in
+/// compressed sparse columns, rows ascending within each column:
+/// `col_ptr` (n + 1 values), `row_idx` and `values` (nnz values each),
+/// indices in the model's index base (`col_ptr[0]` = base). `dofs` (n
+/// values) gives each unknown's position in the array of
+/// `tfem_get_displacements`, in the index base (2·node + component for
+/// base 0). Every buffer is checked before any is written. Not available
+/// after a failed solve (TFEM_STATUS_INVALID_STATE): solve again.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn tfem_get_system_matrix(
+    model: *mut TfemModel,
+    col_ptr: *mut i64,
+    col_ptr_length: usize,
+    row_idx: *mut i64,
+    row_idx_length: usize,
+    values: *mut f64,
+    values_length: usize,
+    dofs: *mut i64,
+    dofs_length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let k = m.model.system_matrix()?;
+        let (n, nnz) = (k.n(), k.values.len());
+        for (ptr, len, need, what) in [
+            (col_ptr.is_null(), col_ptr_length, n + 1, "col_ptr"),
+            (row_idx.is_null(), row_idx_length, nnz, "row_idx"),
+            (values.is_null(), values_length, nnz, "values"),
+            (dofs.is_null(), dofs_length, n, "dofs"),
+        ] {
+            if ptr {
+                return Err(null(what));
+            }
+            if len < need {
+                return Err(Error::new(
+                    Status::BufferTooSmall,
+                    format!("`{what}` holds {len} values but {need} are needed"),
+                ));
+            }
+        }
+        let b = m.index_base as i64;
+        let based = |v: &[usize]| -> Vec<i64> { v.iter().map(|&i| i as i64 + b).collect() };
+        copy_out(&based(k.col_ptr), col_ptr, col_ptr_length, "col_ptr")?;
+        copy_out(&based(k.row_idx), row_idx, row_idx_length, "row_idx")?;
+        copy_out(k.values, values, values_length, "values")?;
+        copy_out(&based(&k.unknowns), dofs, dofs_length, "dofs")
+    })
+}
+
 fn jmin_arg(jmin: f64) -> Result<Jmin> {
     if jmin == 0.0 {
         Ok(Jmin::Off)

@@ -126,7 +126,7 @@ fn structs(header: &str) -> Vec<(String, Vec<(String, String)>)> {
     out
 }
 
-const ARRAYS: [&str; 8] = [
+const ARRAYS: [&str; 12] = [
     "path",
     "xy",
     "connectivity",
@@ -135,6 +135,10 @@ const ARRAYS: [&str; 8] = [
     "tags",
     "out",
     "buffer",
+    "col_ptr",
+    "row_idx",
+    "values",
+    "dofs",
 ];
 
 fn fortran_field(ty: &str) -> String {
@@ -164,6 +168,7 @@ fn fortran_param(ty: &str, name: &str) -> String {
     let kind = match base {
         "double" => "real(c_double)",
         "int" => "integer(c_int)",
+        "int64_t" => "integer(c_int64_t)",
         "size_t" => "integer(c_size_t)",
         "char" => "character(kind=c_char)",
         t => panic!("no Fortran mapping for parameter type {t}"),
@@ -231,7 +236,24 @@ fn generate(header: &str) -> String {
     for p in prototypes(header) {
         f.push_str(&wrap_doc(&p.doc));
         let args: Vec<&str> = p.params.iter().map(|(_, n)| n.as_str()).collect();
-        let arglist = args.join(", ");
+        // Free-form lines end at column 132: long argument lists continue.
+        let mut arglist = String::new();
+        let mut line = p.name.len() + 10;
+        for (k, a) in args.iter().enumerate() {
+            if k > 0 {
+                arglist.push(',');
+                line += 1;
+                if line + a.len() > 100 {
+                    arglist.push_str(" &\n        ");
+                    line = 8;
+                } else {
+                    arglist.push(' ');
+                    line += 1;
+                }
+            }
+            arglist.push_str(a);
+            line += a.len();
+        }
         let (kind, result) = match p.ret.as_str() {
             "void" => ("subroutine", String::new()),
             "enum tfem_status" => ("function", " result(status)".into()),
@@ -357,6 +379,7 @@ fn every_header_function_has_a_matching_fortran_interface() {
             .expect("interface head");
         let head = &module[head_start..at];
         let args = &head[head.find('(').unwrap() + 1..head.find(')').unwrap()];
+        let args = args.replace('&', "");
         let names: Vec<&str> = args
             .split(',')
             .map(str::trim)
@@ -376,7 +399,7 @@ fn every_header_function_has_a_matching_fortran_interface() {
                 .unwrap_or_else(|| panic!("{}: no declaration of {n}", p.name));
             // Pointers are passed by reference, except the opaque handle,
             // which is a type(c_ptr) passed by value.
-            let by_value = decl.contains("value");
+            let by_value = decl.contains(", value ::");
             let handle = ty.contains("struct tfem_model");
             assert_eq!(
                 by_value,
@@ -387,6 +410,7 @@ fn every_header_function_has_a_matching_fortran_interface() {
             let kind_ok = match ty.trim_start_matches("const ").trim_end_matches('*').trim() {
                 "double" => decl.contains("c_double"),
                 "int" => decl.contains("c_int"),
+                "int64_t" => decl.contains("c_int64_t"),
                 "size_t" => decl.contains("c_size_t"),
                 "char" => decl.contains("c_char"),
                 "struct tfem_model" => decl.contains("c_ptr"),
