@@ -80,6 +80,19 @@ fn the_matrix_of_a_contact_solve_holds_the_final_active_elements() {
 }
 
 #[test]
+fn the_refactorising_loop_lends_the_final_matrix_too() {
+    let mut model = coarse_two_blocks();
+    let options = ContactOptions {
+        refactorize: true,
+        ..Default::default()
+    };
+    let report = model.solve_contact(&options).unwrap();
+    assert!(report.iterations > 1);
+    let r = load_residual(&model, &model.system_matrix().unwrap());
+    assert!(r < 1e-10, "‖Ku − f‖/‖f‖ = {r:e}");
+}
+
+#[test]
 fn the_matrix_is_an_upper_triangle_with_ascending_rows() {
     let mut model = clamped_square();
     model.solve().unwrap();
