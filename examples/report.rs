@@ -1297,8 +1297,8 @@ fn speed(report: &mut String, a: &Args) {
         report,
         "### Against faer alone\n\nThe factorisation alone, measured: a process that reads the \
          converged matrix of the same scene (written by another process; its nonzeros, without \
-         the inactive contact elements' stored zeros) with a nested-dissection permutation of it, holds nothing else, and runs faer's supernodal Cholesky once \
-         (symbolic analysis, numeric factorisation, one solve; `report --faer-alone`). Its peak \
+         the inactive contact elements' stored zeros) with a nested-dissection permutation of \
+         it, holds nothing else, and runs faer's supernodal Cholesky once (symbolic analysis, numeric factorisation, one solve; `report --faer-alone`). Its peak \
          RSS includes the matrix it reads. Against it, the whole condensed contact solve of the \
          table above (its own process: mesh, model, every iteration, results). *time ratio*: the \
          contact solve without its symbolic analysis over faer's factorisation + solve; *incl.*: \
