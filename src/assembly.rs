@@ -45,6 +45,7 @@ impl DofMap {
     }
 
     /// Unknown index of a global DOF, or [`NOT_FREE`].
+    #[inline]
     pub fn free(&self, global: usize) -> usize {
         self.free[global]
     }

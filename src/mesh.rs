@@ -309,6 +309,7 @@ impl Mesh {
     }
 
     /// The corners of a triangle.
+    #[inline]
     pub fn corners(&self, tri: &[usize; 3]) -> [[f64; 2]; 3] {
         [self.nodes[tri[0]], self.nodes[tri[1]], self.nodes[tri[2]]]
     }

@@ -19,7 +19,8 @@ use crate::contact::{
     contact_pressure, contact_stiffness, law_matrix, linearised_opening, opening_coefficient,
 };
 use crate::element::{
-    Jmin, Tempering, TriGeometry, b_hat, elasticity_stiffness, jmin_of_lambda, tempered_jacobian,
+    Jmin, Tempering, TriGeometry, b_hat, elasticity_stiffness, elasticity_stiffness_into,
+    jmin_of_lambda, tempered_jacobian,
 };
 use crate::error::{Error, Result, Status};
 use crate::material::Material;
@@ -78,6 +79,10 @@ struct ContactParams {
     d: [[f64; 3]; 3],
     t: f64,
 }
+
+/// The well-shaped elements that tempering softens: how many, and the
+/// first.
+type Softened = (usize, Option<usize>);
 
 struct Cache {
     epoch: u64,
@@ -761,6 +766,57 @@ impl Model {
         up
     }
 
+    /// The body part of the reduced system: stiffness values on `pattern`
+    /// (into `storage` when it has the right length) and the load on the
+    /// unknowns (external forces minus the prescribed displacements'
+    /// share), with the elements tempering softens.
+    fn assemble_body(
+        &self,
+        mesh: &Mesh,
+        (dofs, pattern, slots): (&DofMap, &Pattern, &[Slots]),
+        storage: Vec<f64>,
+        f_ext: &[f64],
+        up: &[f64],
+    ) -> Result<(Vec<f64>, Vec<f64>, Softened)> {
+        let jmin_of = self.body_jmin(mesh);
+        let mut values_body = storage;
+        if values_body.len() != pattern.nnz() {
+            values_body = faulted_in(pattern.nnz());
+        }
+        let mut rhs_body = vec![0.0; dofs.n_free()];
+        for (g, &f) in f_ext.iter().enumerate() {
+            let fg = dofs.free(g);
+            if fg != NOT_FREE {
+                rhs_body[fg] += f;
+            }
+        }
+        // Two column ranges assembled at the same time: each visits the
+        // elements with an unknown in its range and writes only there.
+        let mid = dofs.n_free() / 2;
+        // The node of the first unknown above the cut.
+        let cut = (0..f_ext.len())
+            .find(|&g| dofs.free(g) == mid)
+            .map_or(usize::MAX, |g| g / 2);
+        let (rhs_lo, rhs_hi) = rhs_body.split_at_mut(mid);
+        let (mut lo, mut hi) = pattern.split_columns(mid, &mut values_body);
+        let body_part = |cols: &mut Columns<'_>, rhs: &mut [f64], below: bool| {
+            cols.clear();
+            let side = (cut, below);
+            let system = (dofs, pattern, slots);
+            self.assemble_body_columns(mesh, system, up, &jmin_of, cols, rhs, side)
+        };
+        let (r_lo, r_hi) = rayon::join(
+            || body_part(&mut lo, rhs_lo, true),
+            || body_part(&mut hi, rhs_hi, false),
+        );
+        let softened = match (r_lo, r_hi) {
+            (Err(a), Err(b)) => return Err(if a.0 <= b.0 { a.1 } else { b.1 }),
+            (Err(a), _) | (_, Err(a)) => return Err(a.1),
+            (Ok(a), Ok(b)) => (a.0 + b.0, a.1.into_iter().chain(b.1).min()),
+        };
+        Ok((values_body, rhs_body, softened))
+    }
+
     /// Adds the body elements' stiffness into the columns of `cols` and
     /// their prescribed-displacement loads into `rhs` (the rows of the same
     /// range). Visits the elements with an unknown in the range and those
@@ -784,10 +840,12 @@ impl Model {
         cols: &mut Columns<'_>,
         rhs: &mut [f64],
         (cut, below): (usize, bool),
-    ) -> std::result::Result<(usize, Option<usize>), (usize, Error)> {
+    ) -> std::result::Result<Softened, (usize, Error)> {
+        debug_assert_eq!(dofs.per_node(), 2);
         let range = cols.range();
-        let mut softened = (0usize, None::<usize>);
+        let mut softened: Softened = (0, None);
         let mut d_cache: Option<(i32, [[f64; 3]; 3])> = None;
+        let mut k = [[0.0; 6]; 6];
         for (e, (tri, &body)) in mesh.triangles().iter().zip(mesh.body_of()).enumerate() {
             let lowest = tri[0].min(tri[1]).min(tri[2]);
             let on_side = if below {
@@ -798,11 +856,22 @@ impl Model {
             if !on_side {
                 continue;
             }
+            // Global DOFs and unknowns, node-major as in
+            // `DofMap::element_dofs`. (Plain loops: the array adaptors were
+            // left as calls, whose results then stall on being read back.)
             let mut gd = [0usize; 6];
-            dofs.element_dofs(tri, &mut gd);
-            let free = gd.map(|g| dofs.free(g));
-            let first = free.iter().copied().filter(|&f| f != NOT_FREE).min();
-            let owns = first.map_or((lowest <= cut) == below, |f| range.contains(&f));
+            let mut free = [NOT_FREE; 6];
+            for q in 0..6 {
+                gd[q] = 2 * tri[q / 2] + q % 2;
+                free[q] = dofs.free(gd[q]);
+            }
+            // (NOT_FREE is the largest usize: the minimum is a free one.)
+            let first = free.iter().copied().min().unwrap_or(NOT_FREE);
+            let owns = if first == NOT_FREE {
+                (lowest <= cut) == below
+            } else {
+                range.contains(&first)
+            };
             if !owns && !free.iter().any(|f| range.contains(f)) {
                 continue;
             }
@@ -822,14 +891,11 @@ impl Model {
                     softened.1.get_or_insert(e);
                 }
             }
-            let k = match elasticity_stiffness(&geo, &d, jm) {
-                Ok(k) => k,
-                Err(err) => {
-                    let what = format!("{} (body {body})", mesh.triangle_name(e));
-                    let message = format!("{what}: {}", err.message());
-                    return Err((e, Error::new(err.status(), message)));
-                }
-            };
+            if let Err(err) = elasticity_stiffness_into(&geo, &d, jm, &mut k) {
+                let what = format!("{} (body {body})", mesh.triangle_name(e));
+                let message = format!("{what}: {}", err.message());
+                return Err((e, Error::new(err.status(), message)));
+            }
             let ke = k.as_flattened();
             pattern.add_element_at(cols, &free, ke, slots[e]);
             if !free.contains(&NOT_FREE) {
@@ -916,43 +982,10 @@ impl Model {
 
         // Body part of the system: assembled once, reused by every iteration.
         let t0 = Instant::now();
-        let jmin_of = self.body_jmin(mesh);
         // (A solve that failed did not give the storage back.)
-        let mut values_body = std::mem::take(storage);
-        if values_body.len() != pattern.nnz() {
-            values_body = faulted_in(pattern.nnz());
-        }
-        let mut rhs_body = vec![0.0; dofs.n_free()];
-        for (g, &f) in f_ext.iter().enumerate() {
-            let fg = dofs.free(g);
-            if fg != NOT_FREE {
-                rhs_body[fg] += f;
-            }
-        }
-        // Two column ranges assembled at the same time: each visits the
-        // elements with an unknown in its range and writes only there.
-        let mid = dofs.n_free() / 2;
-        // The node of the first unknown above the cut.
-        let cut = (0..n_dofs)
-            .find(|&g| dofs.free(g) == mid)
-            .map_or(usize::MAX, |g| g / 2);
-        let (rhs_lo, rhs_hi) = rhs_body.split_at_mut(mid);
-        let (mut lo, mut hi) = pattern.split_columns(mid, &mut values_body);
-        let body_part = |cols: &mut Columns<'_>, rhs: &mut [f64], below: bool| {
-            cols.clear();
-            let side = (cut, below);
-            let system = (dofs, pattern, &slots[..]);
-            self.assemble_body_columns(mesh, system, &up, &jmin_of, cols, rhs, side)
-        };
-        let (r_lo, r_hi) = rayon::join(
-            || body_part(&mut lo, rhs_lo, true),
-            || body_part(&mut hi, rhs_hi, false),
-        );
-        let softened = match (r_lo, r_hi) {
-            (Err(a), Err(b)) => return Err(if a.0 <= b.0 { a.1 } else { b.1 }),
-            (Err(a), _) | (_, Err(a)) => return Err(a.1),
-            (Ok(a), Ok(b)) => (a.0 + b.0, a.1.into_iter().chain(b.1).min()),
-        };
+        let storage_in = std::mem::take(storage);
+        let (values_body, rhs_body, softened) =
+            self.assemble_body(mesh, (dofs, pattern, slots), storage_in, &f_ext, &up)?;
         timings.assembly += t0.elapsed().as_secs_f64();
         if let (n, Some(e)) = softened {
             let cause = match self.tempering_lambda() {
