@@ -190,15 +190,16 @@ pub fn elasticity_stiffness(
 }
 
 /// [`elasticity_stiffness`] written into `k` (every entry), for the
-/// assembly loops: no 288-byte result to move per triangle. On error `k`
+/// assembly loop: no 288-byte result to move per triangle. On error `k`
 /// holds garbage.
 ///
 /// Written block by block on the nonzeros of B̂ (each node's columns are
 /// [g_x, 0, g_y] and [0, g_y, g_x]): the same sums, term for term, as the
 /// dense product B̂ᵀ (D B̂), so the values are the same to the last bit for
-/// finite input, at half its cost.
+/// finite input, at about half its cost (82 → 45 ns per triangle with the
+/// geometry, measured in isolation).
 #[inline]
-pub fn elasticity_stiffness_into(
+pub(crate) fn elasticity_stiffness_into(
     geo: &TriGeometry,
     d: &[[f64; 3]; 3],
     jmin: Jmin,
@@ -254,7 +255,8 @@ pub fn laplacian_stiffness(geo: &TriGeometry, kappa: f64, jmin: Jmin) -> Result<
 
 #[inline]
 fn finite_or_error<'a>(values: impl Iterator<Item = &'a f64>) -> Result<()> {
-    // Without short-circuit, which lets the check vectorise.
+    // No short-circuit: one branch per element rather than one per entry
+    // (nearly every element passes).
     if !values.fold(false, |bad, v| bad | !v.is_finite()) {
         Ok(())
     } else {
