@@ -402,15 +402,26 @@ impl Pattern {
 
     /// y = A x for the symmetric matrix whose upper triangle is `values`.
     pub fn sym_mul(&self, values: &[f64], x: &[f64], y: &mut [f64]) {
-        y.fill(0.0);
-        for j in 0..self.n {
-            for p in self.col_ptr[j]..self.col_ptr[j + 1] {
-                let i = self.row_idx[p];
-                let a = values[p];
-                y[i] += a * x[j];
-                if i != j {
-                    y[j] += a * x[i];
-                }
+        sym_mul_upper(&self.col_ptr, &self.row_idx, values, x, y);
+    }
+}
+
+/// y = A x for the symmetric matrix whose upper triangle is stored in
+/// compressed sparse columns (`col_ptr`, `row_idx`, `values`).
+pub(crate) fn sym_mul_upper(
+    col_ptr: &[usize],
+    row_idx: &[usize],
+    values: &[f64],
+    x: &[f64],
+    y: &mut [f64],
+) {
+    y.fill(0.0);
+    for (j, w) in col_ptr.windows(2).enumerate() {
+        for p in w[0]..w[1] {
+            let (i, a) = (row_idx[p], values[p]);
+            y[i] += a * x[j];
+            if i != j {
+                y[j] += a * x[i];
             }
         }
     }

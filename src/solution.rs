@@ -1,5 +1,7 @@
 //! What a solve returns: statistics, timings, and the contact report.
 
+use crate::assembly::sym_mul_upper;
+
 /// Wall-clock time of the stages of a solve, in seconds.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
 pub struct Timings {
@@ -117,15 +119,7 @@ impl SystemMatrix<'_> {
     pub fn mul_vec(&self, x: &[f64]) -> Vec<f64> {
         assert_eq!(x.len(), self.n(), "x needs one value per unknown");
         let mut y = vec![0.0; self.n()];
-        for (j, w) in self.col_ptr.windows(2).enumerate() {
-            for p in w[0]..w[1] {
-                let (i, a) = (self.row_idx[p], self.values[p]);
-                y[i] += a * x[j];
-                if i != j {
-                    y[j] += a * x[i];
-                }
-            }
-        }
+        sym_mul_upper(self.col_ptr, self.row_idx, self.values, x, &mut y);
         y
     }
 }
