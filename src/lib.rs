@@ -2,11 +2,22 @@
 //!
 //! P1 triangles whose stiffness divides by max(J, Jmin) instead of J, so that
 //! flat, degenerate and inverted elements stay finite and do not lock
-//! (METHOD.md §2), and frictionless contact between bodies by activating the
-//! inverted elements of a contact mesh (METHOD.md §3).
+//! (docs/method.md §2), and frictionless contact between bodies by
+//! activating the inverted elements of a contact mesh (docs/method.md §3).
 //!
 //! The Rust API ([`Model`], [`Mesh`], [`Material`]) is the real API; the C
 //! ABI in [`ffi`] is a thin translation layer over it.
+//!
+//! The crate is layered; each layer imports only those below it:
+//!
+//! | layer | modules |
+//! |---|---|
+//! | C ABI, verification studies | [`ffi`], `studies` (feature `studies`) |
+//! | the model | [`model`]: [`Problem`], the solution, [`Model`] |
+//! | solving | [`solve`]: session, assembled system, linear solve, condensed interface, active-set loop |
+//! | contact and linear algebra | [`contact`]: B, laws, the contact set; [`linalg`]: Cholesky, orderings |
+//! | finite elements | [`fem`]: mesh, material, element, assembly, loads, the element loop |
+//! | errors | [`error`] |
 //!
 //! ```
 //! use tfem::{Component, Material, Mesh, Model, PlaneMode, Tempering};
@@ -32,31 +43,31 @@
 #![allow(clippy::needless_range_loop)]
 #![warn(missing_docs)]
 
-pub mod assembly;
-pub mod condensation;
 pub mod contact;
-pub mod element;
 pub mod error;
+pub mod fem;
 pub mod ffi;
 pub mod io;
-pub mod laplace;
-pub mod material;
-pub mod mesh;
-pub mod meshgen;
+pub mod linalg;
 pub mod model;
-pub mod oracle;
-pub mod ordering;
-pub mod scenes;
-pub mod solution;
-pub mod solver;
-mod split;
-pub mod verification;
+pub mod solve;
+#[cfg(feature = "studies")]
+pub mod studies;
+
+// The paths of the flat layout before the layers (kept for users).
+pub use fem::{assembly, element, material, mesh};
+pub use linalg::cholesky as solver;
+pub use linalg::ordering;
+pub use model::solution;
+pub use solve::condensed as condensation;
+#[cfg(feature = "studies")]
+pub use studies::{laplace, meshgen, oracle, scenes, verification};
 
 pub use contact::{ContactLaw, ContactOptions, InversionTest};
 pub use element::{Jmin, Tempering, TriGeometry};
 pub use error::{Error, Result, Status};
 pub use material::{Material, PlaneMode};
 pub use mesh::Mesh;
-pub use model::{Component, Model};
+pub use model::{Component, Model, Problem};
 pub use ordering::Ordering;
 pub use solution::{ContactReport, SolveInfo, SystemMatrix, Timings};

@@ -14,7 +14,7 @@ use std::path::Path;
 use mshio::mshfile::ElementType;
 
 use crate::error::{Error, Result, Status};
-use crate::mesh::Mesh;
+use crate::fem::mesh::Mesh;
 
 fn io_error(path: &Path, what: impl std::fmt::Display) -> Error {
     Error::new(Status::Io, format!("{}: {what}", path.display()))

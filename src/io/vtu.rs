@@ -8,8 +8,8 @@ use vtkio::model::{
     Version, VertexNumbers, Vtk,
 };
 
-use crate::element::TriGeometry;
 use crate::error::{Error, Result, Status};
+use crate::fem::element::TriGeometry;
 use crate::model::Model;
 
 fn cell_array(name: &str, comps: u32, data: Vec<f64>) -> Attribute {

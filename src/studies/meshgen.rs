@@ -5,7 +5,7 @@
 use std::collections::HashMap;
 
 use crate::error::{Error, Result};
-use crate::mesh::Mesh;
+use crate::fem::mesh::Mesh;
 
 /// How each grid cell is split into two triangles.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -278,7 +278,7 @@ pub fn unit_square(n: usize, band: Option<f64>) -> MeshBuilder {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::element::TriGeometry;
+    use crate::fem::element::TriGeometry;
 
     #[test]
     fn bad_subdivision_arguments_are_invalid_arguments_not_hangs() {

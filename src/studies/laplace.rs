@@ -2,13 +2,13 @@
 //! Dirichlet conditions. It reproduces the TFEM paper's locking study and
 //! shares assembly and solver with the elasticity model.
 
-use crate::assembly::{DofMap, NOT_FREE, Pattern};
-use crate::element::{Tempering, TriGeometry, laplacian_stiffness};
+use super::quadrature::{QUAD_POINTS, QUAD_WEIGHTS};
 use crate::error::{Error, Result, Status};
-use crate::mesh::Mesh;
-use crate::ordering::Ordering;
-use crate::solver::{Cholesky, FactorError};
-use crate::verification::{QUAD_POINTS, QUAD_WEIGHTS};
+use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
+use crate::fem::element::{Tempering, TriGeometry, laplacian_stiffness};
+use crate::fem::mesh::Mesh;
+use crate::linalg::ordering::Ordering;
+use crate::linalg::{AnalyseParams, Cholesky, FactorError};
 
 /// Solves −κΔu = f on `mesh` with u prescribed at the nodes listed in
 /// `dirichlet` (node, value). Returns the nodal values (prescribed ones
@@ -44,7 +44,14 @@ pub fn solve_poisson(
         .iter()
         .map(|&v| mesh.nodes()[v])
         .collect();
-    let mut chol = Cholesky::analyse(&pattern, Ordering::Auto, Some(&coords), &[], &[], true)?;
+    let params = AnalyseParams {
+        ordering: Ordering::Auto,
+        coords: Some(&coords),
+        last: &[],
+        zeros: &[],
+        parallel_subtrees: true,
+    };
+    let mut chol = Cholesky::analyse(&pattern, &params)?;
     let size = mesh.size();
     let mut vals = vec![0.0; pattern.nnz()];
     let mut rhs = vec![0.0; dofs.n_free()];
@@ -98,7 +105,7 @@ pub fn solve_poisson(
         .iter()
         .map(|v| if v.is_nan() { 0.0 } else { *v })
         .collect();
-    for (f, g) in dofs.free_to_global().into_iter().enumerate() {
+    for (f, &g) in dofs.free_to_global().iter().enumerate() {
         u[g] = rhs[f];
     }
     Ok(u)

@@ -1,4 +1,5 @@
-//! Interface condensation of the active-set loop.
+//! The condensed system of the active-set loop: the contact changes
+//! condensed on the interface unknowns.
 //!
 //! Between active-set iterations only contact elements change, and they
 //! couple only the interface unknowns I (the unknowns of the contact nodes
@@ -30,7 +31,8 @@ use faer::linalg::triangular_solve::{
 use faer::{Accum, Mat, MatMut, Par};
 
 use crate::error::{Error, Result, Status};
-use crate::solver::{Cholesky, SINGULAR_TOL, pack_lower, packed_len, packed_start};
+use crate::linalg::packed::{pack_lower, packed_len, packed_start};
+use crate::linalg::{Cholesky, SINGULAR_TOL};
 
 fn singular_error(eig: f64) -> Error {
     Error::new(
@@ -51,8 +53,10 @@ pub struct ElementMatrix<'a> {
     pub matrix: &'a [f64; 36],
 }
 
-/// The condensed interface system of one factorised reference matrix K₁.
-pub struct Interface {
+/// The condensed system of one factorised reference matrix K₁: the
+/// interface Schur complement Ŝ₁, the factor of the current Ŝ, and the
+/// positions of the interface unknowns.
+pub struct Condensed {
     unknowns: Vec<usize>,
     position: Vec<u32>,
     scale: Vec<f64>,
@@ -66,7 +70,7 @@ pub struct Interface {
     par: Par,
 }
 
-impl Interface {
+impl Condensed {
     /// Largest interface handled densely.
     pub const MAX_UNKNOWNS: usize = 8192;
 
@@ -83,7 +87,7 @@ impl Interface {
     /// (sorted free-unknown indices) numbered last: takes it when the
     /// factorisation kept it ([`Cholesky::take_last_schur`]), else forms it
     /// from the trailing factor block as L₂₂L₂₂ᵀ.
-    pub fn new(chol: &mut Cholesky, unknowns: Vec<usize>) -> Result<Interface> {
+    pub fn new(chol: &mut Cholesky, unknowns: Vec<usize>) -> Result<Condensed> {
         let n = unknowns.len();
         let mut position = vec![OUTSIDE; chol.n()];
         for (k, &i) in unknowns.iter().enumerate() {
@@ -112,7 +116,7 @@ impl Interface {
                 packed
             }
         };
-        Ok(Interface {
+        Ok(Condensed {
             unknowns,
             position,
             scale,
@@ -223,7 +227,7 @@ impl Interface {
     /// matrix it factorises (not to Ŝ₁): each change's scaled matrix is split
     /// into its eigenpairs (one for a frictionless element, up to three
     /// otherwise) and applied as a rank-r update, O(n²r) instead of the
-    /// O(n³) refactorisation. Fails like [`Interface::factorize`], and also
+    /// O(n³) refactorisation. Fails like [`Condensed::factorize`], and also
     /// when a downdate loses definiteness in round-off; the factor is then
     /// unusable and the caller refactorises.
     pub fn update<'a>(

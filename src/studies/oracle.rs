@@ -11,8 +11,8 @@ use faer::linalg::solvers::SolveCore;
 use faer::sparse::{SparseColMat, Triplet};
 use faer::{Conj, MatMut};
 
-use crate::element::{Jmin, TriGeometry, elasticity_stiffness};
 use crate::error::{Error, Result, Status};
+use crate::fem::element::{Jmin, TriGeometry, elasticity_stiffness};
 use crate::model::Model;
 
 /// The oracle's solution.

@@ -50,9 +50,9 @@ use faer::sparse::linalg::cholesky::supernodal::{
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
 use faer::{Accum, Conj, Mat, MatMut, MatRef, Par};
 
-use crate::assembly::Pattern;
+use super::packed::{pack_lower, packed_len};
 use crate::error::{Error, Result, Status};
-use crate::solver::{pack_lower, packed_len};
+use crate::fem::assembly::Pattern;
 
 /// `owner` of a separator unknown.
 const TOP: u8 = 2;
@@ -82,7 +82,7 @@ pub(crate) struct SplitCholesky {
     /// Whether a factorisation keeps a copy of the Schur complement.
     keep_schur: bool,
     /// The Schur complement on `top` of the last factorisation (lower
-    /// triangle packed by columns, [`crate::solver::packed_start`]), when kept and not
+    /// triangle packed by columns, [`super::packed::packed_start`]), when kept and not
     /// yet taken.
     schur: Option<Vec<f64>>,
 }
@@ -772,7 +772,7 @@ fn transpose(m: usize, col_ptr: &[u32], row_idx: &[u32]) -> (Vec<u32>, Vec<u32>)
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::assembly::DofMap;
+    use crate::fem::assembly::DofMap;
     use nalgebra::{DMatrix, DVector};
 
     const NX: usize = 9;

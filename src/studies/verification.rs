@@ -3,57 +3,14 @@
 
 use std::time::Instant;
 
-use crate::element::{Tempering, TriGeometry};
+use super::laplace::solve_poisson;
+use super::meshgen::MeshBuilder;
+pub use super::quadrature::{QUAD_POINTS, QUAD_WEIGHTS};
 use crate::error::Result;
-use crate::laplace::solve_poisson;
-use crate::material::Material;
-use crate::mesh::Mesh;
-use crate::meshgen::MeshBuilder;
+use crate::fem::element::{Tempering, TriGeometry};
+use crate::fem::material::Material;
+use crate::fem::mesh::Mesh;
 use crate::model::{Component, Model};
-
-/// Barycentric coordinates of a degree-4 rule on triangles (Dunavant, 6 points).
-pub const QUAD_POINTS: [[f64; 3]; 6] = [
-    [
-        0.108_103_018_168_070,
-        0.445_948_490_915_965,
-        0.445_948_490_915_965,
-    ],
-    [
-        0.445_948_490_915_965,
-        0.108_103_018_168_070,
-        0.445_948_490_915_965,
-    ],
-    [
-        0.445_948_490_915_965,
-        0.445_948_490_915_965,
-        0.108_103_018_168_070,
-    ],
-    [
-        0.816_847_572_980_459,
-        0.091_576_213_509_771,
-        0.091_576_213_509_771,
-    ],
-    [
-        0.091_576_213_509_771,
-        0.816_847_572_980_459,
-        0.091_576_213_509_771,
-    ],
-    [
-        0.091_576_213_509_771,
-        0.091_576_213_509_771,
-        0.816_847_572_980_459,
-    ],
-];
-
-/// Weights of [`QUAD_POINTS`], summing to 1 (multiply by the area).
-pub const QUAD_WEIGHTS: [f64; 6] = [
-    0.223_381_589_678_011,
-    0.223_381_589_678_011,
-    0.223_381_589_678_011,
-    0.109_951_743_655_322,
-    0.109_951_743_655_322,
-    0.109_951_743_655_322,
-];
 
 fn point(x: &[[f64; 2]; 3], q: &[f64; 3]) -> [f64; 2] {
     [

@@ -6,13 +6,13 @@
 
 pub mod hertz;
 
+use super::meshgen::{Diagonal, MeshBuilder, subdivide, subdivide_symmetric};
 use crate::contact::ContactOptions;
-use crate::element::Tempering;
 use crate::error::{Error, Result};
-use crate::material::{Material, PlaneMode};
-use crate::meshgen::{Diagonal, MeshBuilder, subdivide, subdivide_symmetric};
+use crate::fem::element::Tempering;
+use crate::fem::material::{Material, PlaneMode};
+use crate::model::solution::ContactReport;
 use crate::model::{Component, Model};
-use crate::solution::ContactReport;
 
 /// Tag of the supported segment of the lower body's bottom edge.
 pub const TAG_SUPPORT: i32 = 1;

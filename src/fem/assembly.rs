@@ -7,12 +7,12 @@ use std::ops::Range;
 /// Marks a DOF that is not an unknown (prescribed, or on an unused node).
 pub const NOT_FREE: usize = usize::MAX;
 
-/// Maps global DOFs (`per_node * node + component`) to unknowns.
+/// Maps global DOFs (`per_node * node + component`) to unknowns and back.
 #[derive(Debug, Clone, PartialEq)]
 pub struct DofMap {
     per_node: usize,
     free: Vec<usize>,
-    n_free: usize,
+    to_global: Vec<usize>,
 }
 
 impl DofMap {
@@ -27,10 +27,16 @@ impl DofMap {
                 n_free += 1;
             }
         }
+        let mut to_global = vec![0; n_free];
+        for (g, &f) in free.iter().enumerate() {
+            if f != NOT_FREE {
+                to_global[f] = g;
+            }
+        }
         DofMap {
             per_node,
             free,
-            n_free,
+            to_global,
         }
     }
 
@@ -41,7 +47,12 @@ impl DofMap {
 
     /// Number of unknowns.
     pub fn n_free(&self) -> usize {
-        self.n_free
+        self.to_global.len()
+    }
+
+    /// Number of global DOFs (`per_node` per node).
+    pub fn n_global(&self) -> usize {
+        self.free.len()
     }
 
     /// Unknown index of a global DOF, or [`NOT_FREE`].
@@ -50,15 +61,24 @@ impl DofMap {
         self.free[global]
     }
 
-    /// The global DOF of every unknown.
-    pub fn free_to_global(&self) -> Vec<usize> {
-        let mut out = vec![0; self.n_free];
-        for (g, &f) in self.free.iter().enumerate() {
-            if f != NOT_FREE {
-                out[f] = g;
-            }
+    /// The global DOF of every unknown (increasing).
+    pub fn free_to_global(&self) -> &[usize] {
+        &self.to_global
+    }
+
+    /// The values of a global vector at the unknowns.
+    pub fn gather(&self, global: &[f64]) -> Vec<f64> {
+        self.to_global.iter().map(|&g| global[g]).collect()
+    }
+
+    /// The global vector with `x` at the unknowns and `prescribed` (a
+    /// global vector) elsewhere.
+    pub fn expand(&self, x: &[f64], prescribed: &[f64]) -> Vec<f64> {
+        let mut u = prescribed.to_vec();
+        for (&g, &v) in self.to_global.iter().zip(x) {
+            u[g] = v;
         }
-        out
+        u
     }
 
     /// The global DOFs of a triangle, node-major.

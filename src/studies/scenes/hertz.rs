@@ -17,12 +17,12 @@
 use std::collections::{BTreeMap, BTreeSet};
 
 use crate::contact::ContactOptions;
-use crate::element::{Jmin, Tempering, TriGeometry, elasticity_stiffness};
 use crate::error::{Error, Result};
-use crate::material::{Material, PlaneMode};
-use crate::meshgen::{Diagonal, MeshBuilder, graded};
+use crate::fem::element::{Jmin, Tempering, TriGeometry, elasticity_stiffness};
+use crate::fem::material::{Material, PlaneMode};
+use crate::model::solution::ContactReport;
 use crate::model::{Component, Model};
-use crate::solution::ContactReport;
+use crate::studies::meshgen::{Diagonal, MeshBuilder, graded};
 
 /// Tag of the block's top edge (contact side a).
 pub const TAG_BLOCK_TOP: i32 = 2;

@@ -1,6 +1,4 @@
-//! What a solve returns: statistics, timings, and the contact report.
-
-use crate::assembly::sym_mul_upper;
+//! What a solve reports: statistics, timings, and the contact report.
 
 /// Wall-clock time of the stages of a solve, in seconds.
 #[derive(Debug, Clone, Copy, Default, PartialEq)]
@@ -46,7 +44,7 @@ pub struct SolveInfo {
     /// it reads). The yardstick for the memory of a whole solve.
     pub factorization_bytes: usize,
     /// Whether the factorisation ran as two concurrent subtrees and a
-    /// dense separator block ([`crate::Model::set_parallel_subtrees`]).
+    /// dense separator block (`Model::set_parallel_subtrees`).
     pub split_factorization: bool,
     /// Stage timings.
     pub timings: Timings,
@@ -83,43 +81,4 @@ pub struct ContactReport {
     pub history: Vec<IterationRecord>,
     /// Solver statistics and timings.
     pub info: SolveInfo,
-}
-
-/// The stiffness matrix K of the last solve on its unknowns (the DOFs left
-/// after Dirichlet elimination), borrowed from the model without a copy:
-/// the upper triangle in compressed sparse columns, rows ascending within
-/// each column. For a contact solve it holds the contact elements active in
-/// the final state, so that K u = f is the system the reported displacements
-/// solve. Meant for checking a solve against another code, or timing a
-/// solver on the very matrix tfem factorised.
-#[derive(Debug, Clone)]
-pub struct SystemMatrix<'a> {
-    /// Column pointers: column j is `col_ptr[j]..col_ptr[j + 1]` (n + 1
-    /// entries).
-    pub col_ptr: &'a [usize],
-    /// Row index of each stored entry (≤ its column).
-    pub row_idx: &'a [usize],
-    /// Value of each stored entry.
-    pub values: &'a [f64],
-    /// The global DOF (2·node + component, component 0 = x) of each unknown.
-    pub unknowns: Vec<usize>,
-}
-
-impl SystemMatrix<'_> {
-    /// Number of unknowns (rows = columns).
-    pub fn n(&self) -> usize {
-        self.unknowns.len()
-    }
-
-    /// y = K x over the unknowns (the symmetric product of the stored upper
-    /// triangle).
-    ///
-    /// # Panics
-    /// If `x` does not have one value per unknown.
-    pub fn mul_vec(&self, x: &[f64]) -> Vec<f64> {
-        assert_eq!(x.len(), self.n(), "x needs one value per unknown");
-        let mut y = vec![0.0; self.n()];
-        sym_mul_upper(self.col_ptr, self.row_idx, self.values, x, &mut y);
-        y
-    }
 }

@@ -8,7 +8,7 @@
 
 use std::collections::HashMap;
 
-use crate::element::TriGeometry;
+use super::element::TriGeometry;
 use crate::error::{Error, Result};
 
 /// A tagged boundary edge, with the triangle that owns it.

@@ -23,14 +23,15 @@ use faer::sparse::linalg::cholesky::{
     factorize_symbolic_cholesky,
 };
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
-use faer::{Conj, Mat, MatMut, MatRef, Par, Side};
+use faer::{Conj, Mat, MatMut, Par, Side};
 
 use faer::perm::PermRef;
 
-use crate::assembly::Pattern;
+use super::ordering::{Graph, Ordering, nested_dissection, split_in_two};
+use super::packed::packed_start;
+use super::split::SplitCholesky;
 use crate::error::{Error, Result, Status};
-use crate::ordering::{Graph, Ordering, nested_dissection, split_in_two};
-use crate::split::SplitCholesky;
+use crate::fem::assembly::Pattern;
 
 /// Smallest eigenvalue of the Jacobi-scaled matrix (unit diagonal) below
 /// which the system is declared singular. A rigid-body mode gives ~1e-16;
@@ -62,6 +63,37 @@ pub enum FactorError {
     },
     /// Another error (memory).
     Other(Error),
+}
+
+/// What a symbolic analysis ([`Cholesky::analyse`]) is asked for.
+#[derive(Debug, Clone, Copy)]
+pub struct AnalyseParams<'a> {
+    /// The fill-reducing ordering.
+    pub ordering: Ordering,
+    /// One point per unknown, for nested dissection (`None`: AMD only).
+    pub coords: Option<&'a [[f64; 2]]>,
+    /// Unknowns numbered last, in this order (their Schur complement is
+    /// then the trailing block of the factor).
+    pub last: &'a [usize],
+    /// Positions of the pattern's values that are zero in every matrix to
+    /// be factorised.
+    pub zeros: &'a [usize],
+    /// Factorise the two subtrees of a nested dissection concurrently.
+    pub parallel_subtrees: bool,
+}
+
+impl Default for AnalyseParams<'_> {
+    /// AMD (no coordinates), nothing numbered last, no known zeros, one
+    /// tree.
+    fn default() -> Self {
+        AnalyseParams {
+            ordering: Ordering::Amd,
+            coords: None,
+            last: &[],
+            zeros: &[],
+            parallel_subtrees: false,
+        }
+    }
 }
 
 /// A reusable Cholesky solver for one sparsity pattern.
@@ -99,33 +131,14 @@ struct Whole {
     par: Par,
 }
 
-/// Length of the lower triangle of an m×m matrix packed by columns.
-pub fn packed_len(m: usize) -> usize {
-    m * (m + 1) / 2
-}
-
-/// Where column j (rows j..m) starts in the lower triangle of an m×m
-/// matrix packed by columns.
-pub fn packed_start(m: usize, j: usize) -> usize {
-    j * m - j * j.saturating_sub(1) / 2
-}
-
-/// Appends the lower triangle of the square `m`, packed by columns, to
-/// `out` (which the caller reserves: [`packed_len`]).
-pub fn pack_lower(m: MatRef<'_, f64>, out: &mut Vec<f64>) {
-    let n = m.nrows();
-    for j in 0..n {
-        out.extend(m.col(j).subrows(j, n - j).iter());
-    }
-}
-
 /// Unknown count from which a nested-dissection factorisation is split
 /// into two concurrent subtrees (below it the whole factorisation takes
 /// milliseconds).
 const SPLIT_MIN: usize = 20_000;
 
 impl Cholesky {
-    /// Symbolic analysis of `pattern` with a fill-reducing ordering: AMD, or
+    /// Symbolic analysis of `pattern` as `params` asks
+    /// ([`AnalyseParams`]): a fill-reducing ordering, AMD, or
     /// geometric nested dissection when `coords` (one point per unknown)
     /// are given and `ordering` asks for it. The unknowns in `last` are
     /// numbered last, in that order, so that the trailing block of the
@@ -142,14 +155,14 @@ impl Cholesky {
     /// built node by node): the split may then treat those unknowns as
     /// uncoupled, and its [`Cholesky::factorize`] fails on a matrix where
     /// one of them is not zero.
-    pub fn analyse(
-        pattern: &Pattern,
-        ordering: Ordering,
-        coords: Option<&[[f64; 2]]>,
-        last: &[usize],
-        zeros: &[usize],
-        parallel_subtrees: bool,
-    ) -> Result<Cholesky> {
+    pub fn analyse(pattern: &Pattern, params: &AnalyseParams<'_>) -> Result<Cholesky> {
+        let AnalyseParams {
+            ordering,
+            coords,
+            last,
+            zeros,
+            parallel_subtrees,
+        } = *params;
         let n = pattern.n();
         if let Some(&p) = zeros.iter().find(|&&p| p >= pattern.nnz()) {
             return Err(Error::argument(format!(
@@ -763,7 +776,8 @@ fn order_with_last(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::assembly::DofMap;
+    use crate::fem::assembly::DofMap;
+    use crate::linalg::packed::packed_len;
 
     fn chain(n: usize, grounded: bool) -> (Pattern, Vec<f64>) {
         // A chain of scalar springs 0-1-2-...; triangles (i, i+1, i+1) are not
@@ -788,7 +802,7 @@ mod tests {
     #[test]
     fn solves_a_grounded_chain() {
         let (p, v) = chain(50, true);
-        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &[], &[], false).unwrap();
+        let mut c = Cholesky::analyse(&p, &AnalyseParams::default()).unwrap();
         c.factorize(&p, &v).unwrap();
         let mut b = vec![0.0; 50];
         b[49] = 1.0;
@@ -810,7 +824,14 @@ mod tests {
         let n = 40;
         let (p, v) = chain(n, true);
         let last = [30usize, 5, 17];
-        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &last, &[], false).unwrap();
+        let mut c = Cholesky::analyse(
+            &p,
+            &AnalyseParams {
+                last: &last,
+                ..Default::default()
+            },
+        )
+        .unwrap();
         c.factorize(&p, &v).unwrap();
         let l = c.last_block_factor().unwrap();
         // Independent dense Schur complement (nalgebra): K22 − K21 K11⁻¹ K12.
@@ -899,11 +920,13 @@ mod tests {
         pool.install(|| {
             let mut c = Cholesky::analyse(
                 &p,
-                Ordering::NestedDissection,
-                Some(&coords),
-                &last,
-                &[],
-                true,
+                &AnalyseParams {
+                    ordering: Ordering::NestedDissection,
+                    coords: Some(&coords),
+                    last: &last,
+                    zeros: &[],
+                    parallel_subtrees: true,
+                },
             )
             .unwrap();
             assert!(c.is_split());
@@ -934,9 +957,15 @@ mod tests {
     fn a_zero_position_outside_the_pattern_is_refused_and_named() {
         let (p, _) = chain(10, true);
         let bad = p.nnz();
-        let err = Cholesky::analyse(&p, Ordering::Amd, None, &[], &[0, bad], false)
-            .err()
-            .expect("refused");
+        let err = Cholesky::analyse(
+            &p,
+            &AnalyseParams {
+                zeros: &[0, bad],
+                ..Default::default()
+            },
+        )
+        .err()
+        .expect("refused");
         assert_eq!(err.status(), Status::InvalidArgument);
         assert!(
             err.message().contains(&format!("zero position {bad}")),
@@ -948,7 +977,7 @@ mod tests {
     #[test]
     fn detects_a_floating_chain_and_returns_its_constant_mode() {
         let (p, v) = chain(30, false);
-        let mut c = Cholesky::analyse(&p, Ordering::Amd, None, &[], &[], false).unwrap();
+        let mut c = Cholesky::analyse(&p, &AnalyseParams::default()).unwrap();
         match c.factorize(&p, &v) {
             Err(FactorError::Singular { mode: Some(m), .. }) => {
                 let mean = m.iter().sum::<f64>() / m.len() as f64;

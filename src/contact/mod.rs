@@ -1,0 +1,155 @@
+//! Frictionless contact by activating inverted elements of a contact mesh B
+//! (METHOD.md §3): the contact pairs and options, the construction and
+//! checking of B ([`mesh`]), the constitutive law of its elements
+//! ([`law`]) and the set of its elements in one solve, which owns their
+//! data and the inversion test ([`set`]).
+//!
+//! A flat element of B on a conforming interface is exactly a spring between
+//! two coincident nodes; with Jmin = h³/λ it is a node-to-node penalty of
+//! about E_c·λ/h² per unit length, so interpenetration is O(h²).
+//!
+//! Each element of B carries its interface normal n (a flat element has
+//! none of its own), its initial Jacobian J0 (zero for touching surfaces,
+//! positive for a gap) and the length of its edge on the interface. Its
+//! "opening" is the Jacobian linearised about the initial configuration,
+//! J0 + Σ g_i·u_i, which for a flat conforming element is the node-pair
+//! normal gap times the edge length. The element's stress acts on that
+//! opening, not on the displacement jump alone, so an element that closes an
+//! initial gap switches on without a force jump.
+
+pub mod law;
+pub mod mesh;
+pub mod set;
+
+pub use law::{
+    ContactStiffness, contact_pressure, contact_stiffness, law_matrix, linearised_jacobian,
+    linearised_opening, opening_coefficient,
+};
+pub use mesh::{build, build_conforming, build_nonconforming, check_user_mesh, pair_bodies};
+pub use set::{ContactSet, ElementLaw, initial_active_set};
+
+use crate::error::{Error, Result};
+
+/// The constitutive law of the contact elements.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ContactLaw {
+    /// Only the normal strain is penalised: D_c = E_c m mᵀ with
+    /// m = [n_x², n_y², n_x n_y]. Tangential slip is free.
+    Frictionless = 0,
+    /// Plain tempered isotropic elasticity in B (E_c, ν of the softer body):
+    /// it also resists slip, so it ties the surfaces (sticking contact).
+    Stick = 1,
+}
+
+/// How an element of B is found inverted.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum InversionTest {
+    /// J linearised about the initial configuration, J0 + Σ g_i·u_i < 0
+    /// (consistent with small strain; for a flat conforming element, the
+    /// node-pair normal gap). Under the frictionless law, only its normal
+    /// part J0 + Σ (n·g_i)(n·u_i) — the element's normal opening: the
+    /// node-to-segment gap at its apex times its interface edge, the very
+    /// quantity the law penalises — so that an active element always pushes.
+    /// The two differ by J0·ε_tt (the interface stretching times the initial
+    /// gap): nothing on touching surfaces, but on a curved gap, where the
+    /// bodies strain by a percent, enough to activate elements that then
+    /// pull. The default.
+    Linearised = 0,
+    /// The seed's literal test, J(X + u) < 0. Its second-order term (slope
+    /// times slip) can exceed the penalty penetration on fine meshes and make
+    /// the loop cycle.
+    Literal = 1,
+}
+
+/// Options of the contact solve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactOptions {
+    /// Constitutive law of B.
+    pub law: ContactLaw,
+    /// E_c; `None` = the smaller Young's modulus of the two bodies of each
+    /// pair (stiffer values only worsen conditioning).
+    pub contact_modulus: Option<f64>,
+    /// λ of the contact elements (Jmin = h³/λ), a length in model units;
+    /// `None` = the larger side of the mesh's bounding box.
+    pub lambda: Option<f64>,
+    /// The inversion test.
+    pub test: InversionTest,
+    /// Cap on active-set iterations.
+    pub max_iterations: usize,
+    /// Refactorise the whole matrix at every active-set iteration instead
+    /// of condensing the changes on the interface (see
+    /// [`crate::condensation`]); slower, kept for comparison.
+    pub refactorize: bool,
+}
+
+impl Default for ContactOptions {
+    fn default() -> Self {
+        ContactOptions {
+            law: ContactLaw::Frictionless,
+            contact_modulus: None,
+            lambda: None,
+            test: InversionTest::Linearised,
+            max_iterations: 50,
+            refactorize: false,
+        }
+    }
+}
+
+impl ContactOptions {
+    /// Checks the options.
+    pub fn validate(&self) -> Result<()> {
+        if let Some(e) = self.contact_modulus {
+            if !(e.is_finite() && e > 0.0) {
+                return Err(Error::argument(format!(
+                    "contact modulus E_c = {e} must be finite and > 0"
+                )));
+            }
+        }
+        if let Some(l) = self.lambda {
+            if !(l.is_finite() && l > 0.0) {
+                return Err(Error::argument(format!(
+                    "contact lambda = {l} must be finite and > 0"
+                )));
+            }
+        }
+        if self.max_iterations == 0 {
+            return Err(Error::argument("max_iterations must be at least 1"));
+        }
+        Ok(())
+    }
+}
+
+/// A potential contact interface: boundary edges tagged `tag_a` on one body
+/// and `tag_b` on another.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactPair {
+    /// Tag of the edges on the first body.
+    pub tag_a: i32,
+    /// Tag of the edges on the second body.
+    pub tag_b: i32,
+    /// Body carrying `tag_a`.
+    pub body_a: i32,
+    /// Body carrying `tag_b`.
+    pub body_b: i32,
+    /// A contact mesh handed over by the user (0-based nodes), if any.
+    pub user_mesh: Option<Vec<[usize; 3]>>,
+}
+
+/// One element of the contact mesh B.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ContactElement {
+    /// Nodes, ordered so that J > 0 when the gap opens.
+    pub nodes: [usize; 3],
+    /// Unit interface normal, pointing from body a to body b.
+    pub normal: [f64; 2],
+    /// Initial Jacobian (0 for touching surfaces).
+    pub j0: f64,
+    /// Longest edge (for Jmin = h³/λ).
+    pub h: f64,
+    /// Length of the element's edge on the interface.
+    pub edge_length: f64,
+    /// Index of the pair it belongs to.
+    pub pair: usize,
+}

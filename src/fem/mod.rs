@@ -1,0 +1,13 @@
+//! The finite elements: meshes of P1 triangles ([`mesh`]), materials
+//! ([`material`]), the tempered element ([`element`]), the numbering of
+//! unknowns and the sparsity pattern ([`assembly`]), loads ([`loads`]),
+//! the one loop over body elements ([`element_loop`]) and the bodies' part
+//! of the system assembled on the pattern ([`body`]).
+
+pub mod assembly;
+pub mod body;
+pub mod element;
+pub mod element_loop;
+pub mod loads;
+pub mod material;
+pub mod mesh;

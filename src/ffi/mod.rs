@@ -1,0 +1,27 @@
+//! The C ABI: a thin translation layer over [`crate::Model`], in three
+//! parts: the entry points (`entry`), the plumbing every entry point shares
+//! (handles, panics, errors, caller buffers: `plumbing`) and the `repr(C)`
+//! mirrors of the Rust types with their conversions (`convert`).
+//!
+//! Conventions (repeated in the generated header):
+//! * Every function returns a [`Status`]; `TFEM_STATUS_OK` (0) is success.
+//!   `tfem_last_error` gives the message of the last failed call.
+//! * Indices (nodes, triangles, edges) use the `index_base` given to
+//!   `tfem_set_mesh` (0 for C, 1 for Fortran) in every later call and in
+//!   every message.
+//! * Output buffers are owned by the caller; their length (in elements, not
+//!   bytes) is checked, and nothing is written when it is too short.
+//! * A failed call leaves the model as it was. No panic crosses the
+//!   boundary: it is caught and reported as `TFEM_STATUS_INTERNAL`.
+
+#![allow(clippy::missing_safety_doc)]
+
+mod convert;
+mod entry;
+mod plumbing;
+
+pub use convert::{
+    OrderingMode, TemperingMode, TfemContactOptions, TfemContactReport, TfemSolveInfo,
+};
+pub use entry::*;
+pub use plumbing::TfemModel;

@@ -1,0 +1,196 @@
+//! What every entry point shares: the model handle, the catching of
+//! panics, the error slots (per model, and per thread for calls without a
+//! model), and reading and writing caller-owned memory.
+
+use std::cell::RefCell;
+use std::ffi::c_char;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+use crate::error::{Error, Result, Status};
+use crate::model::Model;
+
+/// Opaque handle to a model. Create with `tfem_create`, free with
+/// `tfem_destroy`.
+pub struct TfemModel {
+    pub(super) model: Model,
+    pub(super) index_base: usize,
+    pub(super) last_error: String,
+}
+
+thread_local! {
+    pub(super) static LAST_ERROR: RefCell<String> = const { RefCell::new(String::new()) };
+}
+
+pub(super) fn set_global_error(message: &str) {
+    LAST_ERROR.with(|e| *e.borrow_mut() = message.to_string());
+}
+
+pub(super) fn null(what: &str) -> Error {
+    Error::new(Status::NullPointer, format!("argument `{what}` is NULL"))
+}
+
+pub(super) fn panic_message(p: &(dyn std::any::Any + Send)) -> String {
+    let text = p
+        .downcast_ref::<&str>()
+        .map(|s| s.to_string())
+        .or_else(|| p.downcast_ref::<String>().cloned())
+        .unwrap_or_else(|| "unknown panic".to_string());
+    format!("internal error (please report): {text}")
+}
+
+/// Runs `f` on a model handle, catching panics and recording the message.
+pub(super) fn with_model(
+    model: *mut TfemModel,
+    f: impl FnOnce(&mut TfemModel) -> Result<()>,
+) -> Status {
+    // SAFETY: the caller passes a handle from tfem_create (or NULL), used by
+    // one thread at a time per the thread contract.
+    let Some(m) = (unsafe { model.as_mut() }) else {
+        set_global_error("argument `model` is NULL");
+        return Status::NullPointer;
+    };
+    match catch_unwind(AssertUnwindSafe(|| f(m))) {
+        Ok(Ok(())) => {
+            m.last_error.clear();
+            Status::Ok
+        }
+        Ok(Err(e)) => {
+            m.last_error = e.message().to_string();
+            e.status()
+        }
+        Err(p) => {
+            m.last_error = panic_message(p.as_ref());
+            Status::Internal
+        }
+    }
+}
+
+/// Runs a model-free call, catching panics; errors go to the thread's
+/// last-error slot.
+pub(super) fn without_model(f: impl FnOnce() -> Result<()>) -> Status {
+    match catch_unwind(AssertUnwindSafe(f)) {
+        Ok(Ok(())) => Status::Ok,
+        Ok(Err(e)) => {
+            set_global_error(e.message());
+            e.status()
+        }
+        Err(p) => {
+            set_global_error(&panic_message(p.as_ref()));
+            Status::Internal
+        }
+    }
+}
+
+/// A slice from a C pointer and count; NULL is allowed only for count 0.
+pub(super) fn slice_in<'a, T>(ptr: *const T, len: usize, what: &str) -> Result<&'a [T]> {
+    if len == 0 {
+        return Ok(&[]);
+    }
+    if ptr.is_null() {
+        return Err(null(what));
+    }
+    // SAFETY: the caller guarantees `len` readable elements at `ptr`.
+    Ok(unsafe { std::slice::from_raw_parts(ptr, len) })
+}
+
+pub(super) fn count(n: i32, what: &str) -> Result<usize> {
+    usize::try_from(n).map_err(|_| Error::argument(format!("{what} = {n} must be >= 0")))
+}
+
+/// Copies `src` into a caller buffer of `len` elements.
+pub(super) fn copy_out<T: Copy>(src: &[T], out: *mut T, len: usize, what: &str) -> Result<()> {
+    if out.is_null() {
+        return Err(null(what));
+    }
+    if len < src.len() {
+        return Err(Error::new(
+            Status::BufferTooSmall,
+            format!("`{what}` holds {len} values but {} are needed", src.len()),
+        ));
+    }
+    // SAFETY: `out` has room for `len >= src.len()` elements.
+    unsafe { std::ptr::copy_nonoverlapping(src.as_ptr(), out, src.len()) };
+    Ok(())
+}
+
+/// Writes `f` of each element of `src` into a caller buffer of `len`
+/// elements, with no intermediate copy (the matrix's index arrays are
+/// ~70 MB at 1M unknowns).
+pub(super) fn map_out<T: Copy, U>(
+    src: &[T],
+    out: *mut U,
+    len: usize,
+    what: &str,
+    f: impl Fn(T) -> U,
+) -> Result<()> {
+    if out.is_null() {
+        return Err(null(what));
+    }
+    if len < src.len() {
+        return Err(Error::new(
+            Status::BufferTooSmall,
+            format!("`{what}` holds {len} values but {} are needed", src.len()),
+        ));
+    }
+    for (i, &v) in src.iter().enumerate() {
+        // SAFETY: `out` has room for `len >= src.len()` elements; raw
+        // writes, as the caller's buffer may be uninitialised.
+        unsafe { out.add(i).write(f(v)) };
+    }
+    Ok(())
+}
+
+pub(super) fn write<T>(out: *mut T, value: T, what: &str) -> Result<()> {
+    if out.is_null() {
+        return Err(null(what));
+    }
+    // SAFETY: non-null pointer to a caller-owned T.
+    unsafe { out.write(value) };
+    Ok(())
+}
+
+impl TfemModel {
+    pub(super) fn index(&self, i: i32, n: usize, what: &str) -> Result<usize> {
+        let b = self.index_base as i64;
+        let v = i as i64 - b;
+        if v < 0 || v as usize >= n {
+            return Err(Error::argument(format!(
+                "{what} {i} is out of range ({n} available, index base {b})"
+            )));
+        }
+        Ok(v as usize)
+    }
+
+    pub(super) fn n_nodes(&self) -> Result<usize> {
+        self.model
+            .mesh()
+            .map(|m| m.nodes().len())
+            .ok_or_else(|| Error::state("no mesh: call tfem_set_mesh first"))
+    }
+}
+
+pub(super) fn copy_message(text: &str, buffer: *mut c_char, length: usize) -> Status {
+    if buffer.is_null() || length == 0 {
+        return if buffer.is_null() {
+            Status::NullPointer
+        } else {
+            Status::BufferTooSmall
+        };
+    }
+    let bytes = text.as_bytes();
+    let mut n = bytes.len().min(length - 1);
+    // Do not cut a UTF-8 sequence in half.
+    while n > 0 && n < bytes.len() && (bytes[n] & 0xC0) == 0x80 {
+        n -= 1;
+    }
+    // SAFETY: `buffer` has room for `length > n` bytes.
+    unsafe {
+        std::ptr::copy_nonoverlapping(bytes.as_ptr().cast::<c_char>(), buffer, n);
+        *buffer.add(n) = 0;
+    }
+    if n < bytes.len() {
+        Status::BufferTooSmall
+    } else {
+        Status::Ok
+    }
+}

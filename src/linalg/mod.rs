@@ -1,0 +1,17 @@
+//! Sparse and dense linear algebra below the finite elements: the sparse
+//! Cholesky factorisation with its symbolic analysis kept for reuse
+//! ([`cholesky`]), its split into two concurrent subtrees (`split`), the
+//! fill-reducing orderings ([`ordering`]), packed dense triangles
+//! ([`packed`]) and iterative refinement ([`refine`]).
+//!
+//! Nothing here knows about meshes or contact: the matrices are symmetric,
+//! given by the upper triangle on a [`crate::fem::assembly::Pattern`].
+
+pub mod cholesky;
+pub mod ordering;
+pub mod packed;
+pub mod refine;
+mod split;
+
+pub use cholesky::{AnalyseParams, Cholesky, FactorError, SINGULAR_TOL};
+pub use ordering::Ordering;

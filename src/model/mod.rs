@@ -1,0 +1,475 @@
+//! The model: the [`Problem`] a user describes, the session a solve
+//! derives from it, and the [`solution`] of the last solve, behind one
+//! facade.
+//!
+//! Every mutating call either succeeds or leaves the model exactly as it
+//! was. Results belong to one revision of the problem: any change of the
+//! problem makes them stale (their accessors then say so). What a solve
+//! derives from the structure (the unknowns, the pattern, the contact mesh,
+//! the symbolic factorisation) belongs to one structure epoch and is
+//! reused by later solves while the epoch holds. Settings that change
+//! nothing physical (the ordering) keep every result.
+
+pub mod problem;
+pub mod solution;
+
+use std::time::Instant;
+
+pub use problem::Problem;
+
+use solution::{ContactReport, ContactSolution, Solution, SolveInfo, SystemMatrix, Timings};
+
+use crate::contact::{ContactElement, ContactOptions, ContactPair};
+use crate::error::{Error, Result};
+use crate::fem::element::{Tempering, TriGeometry};
+use crate::fem::material::Material;
+use crate::fem::mesh::Mesh;
+use crate::linalg::Ordering;
+use crate::solve::session::{Session, Settings};
+use crate::solve::{self, Input, Outcome};
+
+/// A displacement component.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Component {
+    /// Horizontal (u).
+    X = 0,
+    /// Vertical (v).
+    Y = 1,
+}
+
+impl Component {
+    /// Decodes the C ABI integer (0 = x, 1 = y).
+    pub fn from_i32(value: i32) -> Option<Component> {
+        match value {
+            0 => Some(Component::X),
+            1 => Some(Component::Y),
+            _ => None,
+        }
+    }
+}
+
+/// A 2D elasticity model solved with tempered P1 elements.
+pub struct Model {
+    problem: Problem,
+    settings: Settings,
+    session: Option<Session>,
+    solution: Option<Solution>,
+    solve_warnings: Vec<String>,
+}
+
+impl Default for Model {
+    fn default() -> Self {
+        Model::new()
+    }
+}
+
+impl Model {
+    /// An empty model (no mesh, default tempering [`Tempering::Auto`]).
+    pub fn new() -> Model {
+        Model {
+            problem: Problem::new(),
+            settings: Settings::default(),
+            session: None,
+            solution: None,
+            solve_warnings: Vec::new(),
+        }
+    }
+
+    /// The problem the model solves.
+    pub fn problem(&self) -> &Problem {
+        &self.problem
+    }
+
+    /// Applies a change to the problem, then drops what it made stale: the
+    /// session of another structure, results of another revision.
+    fn edit<T>(&mut self, change: impl FnOnce(&mut Problem) -> Result<T>) -> Result<T> {
+        let out = change(&mut self.problem)?;
+        if self
+            .session
+            .as_ref()
+            .is_some_and(|s| s.structure() != self.problem.structure())
+        {
+            self.session = None;
+        }
+        if self
+            .solution
+            .as_ref()
+            .is_some_and(|s| s.revision != self.problem.revision())
+        {
+            self.solution = None;
+        }
+        Ok(out)
+    }
+
+    /// Chooses the fill-reducing ordering of the factorisation (default
+    /// [`Ordering::Auto`]). Results do not depend on it beyond round-off;
+    /// they are kept, and the next solve analyses the matrix anew.
+    pub fn set_ordering(&mut self, ordering: Ordering) {
+        self.settings.ordering = ordering;
+    }
+
+    /// Factorises the two subtrees of a nested-dissection ordering
+    /// concurrently, the separator as a dense block (default on; it takes
+    /// effect from 20 000 unknowns with two threads or more). Off: one faer
+    /// factorisation of the whole tree, parallel only inside its dense
+    /// blocks. Results do not depend on it beyond round-off; they are kept.
+    pub fn set_parallel_subtrees(&mut self, on: bool) {
+        self.settings.parallel_subtrees = on;
+    }
+
+    /// Replaces the mesh. Constraints, loads, contact pairs and results are
+    /// discarded (they refer to nodes and edges); materials and tempering
+    /// are kept.
+    pub fn set_mesh(&mut self, mesh: Mesh) {
+        let _ = self.edit(|p| {
+            p.set_mesh(mesh);
+            Ok(())
+        });
+        self.solve_warnings.clear();
+    }
+
+    /// The mesh, if set.
+    pub fn mesh(&self) -> Option<&Mesh> {
+        self.problem.mesh()
+    }
+
+    /// Sets the tagged boundary edges (0-based nodes). See
+    /// [`Mesh::set_boundary_edges`].
+    pub fn set_boundary_edges(&mut self, edges: &[[usize; 2]], tags: &[i32]) -> Result<()> {
+        self.edit(|p| p.set_boundary_edges(edges, tags))
+    }
+
+    /// Sets the material of a body. Before a mesh is given any body tag is
+    /// accepted; afterwards the body must exist.
+    pub fn set_material(&mut self, body: i32, material: Material) -> Result<()> {
+        self.edit(|p| p.set_material(body, material))
+    }
+
+    /// The material of a body.
+    pub fn material(&self, body: i32) -> Option<&Material> {
+        self.problem.material(body)
+    }
+
+    /// Sets how Jmin is chosen.
+    pub fn set_tempering(&mut self, tempering: Tempering) -> Result<()> {
+        self.edit(|p| p.set_tempering(tempering))
+    }
+
+    /// The tempering policy.
+    pub fn tempering(&self) -> Tempering {
+        self.problem.tempering()
+    }
+
+    /// The λ the tempering uses (None when off or fixed): the given one, or
+    /// the larger side of the mesh's bounding box for [`Tempering::Auto`].
+    pub fn tempering_lambda(&self) -> Option<f64> {
+        self.problem.tempering_lambda()
+    }
+
+    /// Prescribes one displacement component of a node (0-based).
+    pub fn fix(&mut self, node: usize, component: Component, value: f64) -> Result<()> {
+        self.edit(|p| p.fix(node, component, value))
+    }
+
+    /// Prescribes a component on every node of the edges tagged `tag`
+    /// (all or nothing: the checks come before any change).
+    pub fn fix_edges(&mut self, tag: i32, component: Component, value: f64) -> Result<()> {
+        self.edit(|p| p.fix_edges(tag, component, value))
+    }
+
+    /// Removes every prescribed displacement.
+    pub fn clear_constraints(&mut self) {
+        let _ = self.edit(|p| {
+            p.clear_constraints();
+            Ok(())
+        });
+    }
+
+    /// Prescribed displacements, as (global DOF = 2·node + component, value).
+    pub fn constraints(&self) -> impl Iterator<Item = (usize, f64)> + '_ {
+        self.problem.constraints()
+    }
+
+    /// Applies a pressure (force per unit length, positive pushing into the
+    /// body) on the edges tagged `tag`. Loads add up.
+    pub fn add_pressure(&mut self, tag: i32, pressure: f64) -> Result<()> {
+        self.edit(|p| p.add_pressure(tag, pressure))
+    }
+
+    /// Applies a traction vector (force per unit length) on the edges tagged
+    /// `tag`. Loads add up.
+    pub fn add_traction(&mut self, tag: i32, traction: [f64; 2]) -> Result<()> {
+        self.edit(|p| p.add_traction(tag, traction))
+    }
+
+    /// Adds a point force at a node (0-based).
+    pub fn add_nodal_force(&mut self, node: usize, force: [f64; 2]) -> Result<()> {
+        self.edit(|p| p.add_nodal_force(node, force))
+    }
+
+    /// Sets the body force (per unit area) of a body.
+    pub fn set_body_force(&mut self, body: i32, force: [f64; 2]) -> Result<()> {
+        self.edit(|p| p.set_body_force(body, force))
+    }
+
+    /// Removes every load (pressures, tractions, nodal and body forces).
+    pub fn clear_loads(&mut self) {
+        let _ = self.edit(|p| {
+            p.clear_loads();
+            Ok(())
+        });
+    }
+
+    /// Declares a potential contact interface between the edges tagged
+    /// `tag_a` (on one body) and `tag_b` (on another). Returns the pair's
+    /// index. The contact mesh B is built from matching nodes when the two
+    /// interfaces' nodes match, else by triangulating the strip between them
+    /// (see [`crate::contact::build`]); or hand one over with
+    /// [`Model::add_contact_pair_with_mesh`].
+    pub fn add_contact_pair(&mut self, tag_a: i32, tag_b: i32) -> Result<usize> {
+        self.edit(|p| p.add_contact_pair(tag_a, tag_b))
+    }
+
+    /// Declares a contact pair with a contact mesh B handed over by the user
+    /// (0-based triangles over interface nodes, as made with Gmsh). Its
+    /// orientation is fixed where needed; returns (pair index, number of
+    /// triangles flipped).
+    pub fn add_contact_pair_with_mesh(
+        &mut self,
+        tag_a: i32,
+        tag_b: i32,
+        triangles: &[[usize; 3]],
+    ) -> Result<(usize, usize)> {
+        self.edit(|p| p.add_contact_pair_with_mesh(tag_a, tag_b, triangles))
+    }
+
+    /// Removes every contact pair.
+    pub fn clear_contact_pairs(&mut self) {
+        let _ = self.edit(|p| {
+            p.clear_contact_pairs();
+            Ok(())
+        });
+    }
+
+    /// The declared contact pairs.
+    pub fn contact_pairs(&self) -> &[ContactPair] {
+        self.problem.contact_pairs()
+    }
+
+    /// Mesh warnings plus those of the last solve (e.g. tempering of
+    /// well-shaped elements).
+    pub fn warnings(&self) -> Vec<String> {
+        let mut w: Vec<String> = self
+            .problem
+            .mesh()
+            .map(|m| m.warnings().to_vec())
+            .unwrap_or_default();
+        w.extend(self.solve_warnings.iter().cloned());
+        w
+    }
+
+    /// The assembled external load vector (2 values per node: f_x, f_y) of
+    /// the current loads: consistent edge loads, nodal and body forces.
+    pub fn load_vector(&self) -> Result<Vec<f64>> {
+        self.problem.load_vector()
+    }
+
+    /// Solves a scene without contact. On error the model is unchanged.
+    pub fn solve(&mut self) -> Result<SolveInfo> {
+        self.run(None).map(|s| s.info)
+    }
+
+    /// Solves the contact problem with the active-set loop of
+    /// docs/method.md §3. On error (singular, not converged) the model is
+    /// unchanged.
+    pub fn solve_contact(&mut self, options: &ContactOptions) -> Result<ContactReport> {
+        options.validate()?;
+        let solution = self.run(Some(options))?;
+        let contact = solution.contact.as_ref();
+        Ok(contact
+            .map(|c| c.report.clone())
+            .expect("a contact solve has a contact state"))
+    }
+
+    /// Solves the current revision of the problem and keeps its results.
+    fn run(&mut self, options: Option<&ContactOptions>) -> Result<&Solution> {
+        let t_start = Instant::now();
+        self.problem.check_ready(options.is_some())?;
+        let mut timings = Timings::default();
+        let prescribed = self.problem.prescribed_vector()?;
+        let f_ext = self.problem.load_vector()?;
+        let input = Input {
+            elements: self.problem.elements()?,
+            pairs: self.problem.contact_pairs(),
+            prescribed: &prescribed,
+            f_ext: &f_ext,
+            lambda: self.problem.tempering_lambda(),
+            settings: self.settings,
+        };
+        let session = session_of(&mut self.session, &self.problem, &mut timings)?;
+        let outcome = solve::solve(session, &input, options, &mut timings)?;
+        let revision = self.problem.revision();
+        session.set_system_of(Some(revision));
+        let elements = &session.contact;
+        let (solution, warnings) =
+            solution_of(outcome, f_ext, elements, timings, t_start, revision);
+        self.solve_warnings = warnings;
+        Ok(self.solution.insert(solution))
+    }
+
+    fn solution(&self) -> Result<&Solution> {
+        self.solution
+            .as_ref()
+            .filter(|s| s.revision == self.problem.revision())
+            .ok_or_else(|| {
+                Error::state(
+                    "no results: solve the model first (results are discarded by any change)",
+                )
+            })
+    }
+
+    /// Nodal displacements [u, v] of the last solve.
+    pub fn displacements(&self) -> Result<Vec<[f64; 2]>> {
+        Ok(self.solution()?.displacements())
+    }
+
+    /// Work of the external loads, Σ f·u (per unit thickness): for a
+    /// pressure load, the compliance ∫ p (−u·n).
+    pub fn external_work(&self) -> Result<f64> {
+        Ok(self.solution()?.external_work())
+    }
+
+    /// Statistics of the last solve.
+    pub fn solve_info(&self) -> Result<SolveInfo> {
+        Ok(self.solution()?.info)
+    }
+
+    /// The stiffness matrix of the last solve ([`SystemMatrix`]), borrowed:
+    /// nothing is assembled or copied for it. Unlike the other results it
+    /// does not outlive a failed solve, which reuses the matrix storage.
+    pub fn system_matrix(&self) -> Result<SystemMatrix<'_>> {
+        let revision = self.solution()?.revision;
+        self.session
+            .as_ref()
+            .and_then(|s| s.system_matrix(revision))
+            .ok_or_else(|| {
+                Error::state("no matrix: the last solve failed (solve again for its matrix)")
+            })
+    }
+
+    /// Element strains [ε_xx, ε_yy, γ_xy] (engineering shear), computed on
+    /// request: B̂u / max(J, Jmin), the usual strain for J >= Jmin and the
+    /// tempered one below (consistent with the tempered energy).
+    pub fn element_strains(&self) -> Result<Vec<[f64; 3]>> {
+        self.solution()?.strains(&self.problem)
+    }
+
+    /// Element stresses [σ_xx, σ_yy, σ_xy] = D ε, computed on request.
+    pub fn element_stresses(&self) -> Result<Vec<[f64; 3]>> {
+        self.solution()?.stresses(&self.problem)
+    }
+
+    /// J (twice the signed area) of every triangle in the initial
+    /// configuration. Needs only a mesh.
+    pub fn element_jacobians(&self) -> Result<Vec<f64>> {
+        let mesh = self.problem.mesh_ref()?;
+        Ok(mesh
+            .triangles()
+            .iter()
+            .map(|t| TriGeometry::new(&mesh.corners(t)).j)
+            .collect())
+    }
+
+    /// Reaction forces [R_x, R_y] per node: K u − f at prescribed DOFs (zero
+    /// elsewhere), computed on request.
+    pub fn reactions(&self) -> Result<Vec<[f64; 2]>> {
+        self.solution()?.reactions(&self.problem)
+    }
+
+    fn contact_solution(&self) -> Result<&ContactSolution> {
+        self.solution()?
+            .contact
+            .as_ref()
+            .ok_or_else(|| Error::state("no contact results: call solve_contact first"))
+    }
+
+    /// The elements of the contact mesh B of the last contact solve.
+    pub fn contact_elements(&self) -> Result<&[ContactElement]> {
+        Ok(&self.contact_solution()?.elements)
+    }
+
+    /// Active flag of every element of B at convergence.
+    pub fn contact_active(&self) -> Result<&[bool]> {
+        Ok(&self.contact_solution()?.active)
+    }
+
+    /// Contact pressure (positive in compression, zero when inactive) of
+    /// every element of B.
+    pub fn contact_pressure(&self) -> Result<&[f64]> {
+        Ok(&self.contact_solution()?.pressure)
+    }
+
+    /// The report of the last contact solve.
+    pub fn contact_report(&self) -> Result<&ContactReport> {
+        Ok(&self.contact_solution()?.report)
+    }
+}
+
+/// The session of the problem's structure in `slot`, built (and timed as
+/// analysis) when there is none of that structure.
+fn session_of<'s>(
+    slot: &'s mut Option<Session>,
+    p: &Problem,
+    timings: &mut Timings,
+) -> Result<&'s mut Session> {
+    if slot
+        .as_ref()
+        .is_some_and(|s| s.structure() != p.structure())
+    {
+        *slot = None;
+    }
+    if slot.is_none() {
+        let t0 = Instant::now();
+        let prescribed = |g| p.is_prescribed(g);
+        let s = Session::new(p.structure(), p.mesh_ref()?, prescribed, p.contact_pairs())?;
+        timings.analysis = t0.elapsed().as_secs_f64();
+        *slot = Some(s);
+    }
+    Ok(slot.as_mut().expect("just built"))
+}
+
+/// The solution (and the solve's warnings) of a solve's outcome; fills
+/// in the timings of the whole call.
+fn solution_of(
+    outcome: Outcome,
+    f_ext: Vec<f64>,
+    elements: &[ContactElement],
+    mut timings: Timings,
+    t_start: Instant,
+    revision: u64,
+) -> (Solution, Vec<String>) {
+    let mut info = outcome.info;
+    timings.total = t_start.elapsed().as_secs_f64();
+    info.timings.analysis = timings.analysis;
+    info.timings.total = timings.total;
+    let contact = outcome.contact.map(|c| {
+        let mut report = c.report;
+        report.info = info;
+        ContactSolution {
+            elements: elements.to_vec(),
+            active: c.active,
+            pressure: c.pressure,
+            laws: c.laws,
+            report,
+        }
+    });
+    let solution = Solution {
+        revision,
+        u: outcome.u,
+        f_ext,
+        info,
+        contact,
+    };
+    (solution, outcome.warnings)
+}

@@ -1,0 +1,408 @@
+//! The problem as the user describes it: a mesh, a material per body,
+//! the tempering, prescribed displacements, loads and contact pairs.
+//!
+//! Every setter either succeeds or leaves the problem exactly as it was.
+//! Two counters record changes: the *revision* moves with every change
+//! (results of an earlier revision are stale), the *structure* epoch with
+//! the changes that alter what a solve derives from the problem — the mesh
+//! and its boundary edges, the set of prescribed DOFs, the contact pairs —
+//! so that everything derived checks the epoch instead of being cleared by
+//! hand.
+
+use std::collections::BTreeMap;
+
+use super::Component;
+use crate::contact::{self, ContactPair};
+use crate::error::{Error, Result, Status};
+use crate::fem::element::Tempering;
+use crate::fem::element_loop::ElementLoop;
+use crate::fem::loads::{EdgeLoad, Loads, check_loaded_tag};
+use crate::fem::material::Material;
+use crate::fem::mesh::Mesh;
+
+/// A 2D elasticity (and contact) problem.
+#[derive(Debug, Clone)]
+pub struct Problem {
+    mesh: Option<Mesh>,
+    materials: BTreeMap<i32, Material>,
+    tempering: Tempering,
+    prescribed: BTreeMap<usize, f64>,
+    loads: Loads,
+    pairs: Vec<ContactPair>,
+    structure: u64,
+    revision: u64,
+}
+
+impl Default for Problem {
+    fn default() -> Self {
+        Problem::new()
+    }
+}
+
+fn finite2(v: [f64; 2], what: &str) -> Result<()> {
+    if v[0].is_finite() && v[1].is_finite() {
+        Ok(())
+    } else {
+        Err(Error::argument(format!(
+            "{what} ({}, {}) is not finite",
+            v[0], v[1]
+        )))
+    }
+}
+
+impl Problem {
+    /// An empty problem (no mesh, tempering [`Tempering::Auto`]).
+    pub fn new() -> Problem {
+        Problem {
+            mesh: None,
+            materials: BTreeMap::new(),
+            tempering: Tempering::Auto,
+            prescribed: BTreeMap::new(),
+            loads: Loads::default(),
+            pairs: Vec::new(),
+            structure: 0,
+            revision: 0,
+        }
+    }
+
+    /// Counts a change; `structural` when it alters the structure.
+    fn changed(&mut self, structural: bool) {
+        self.revision += 1;
+        if structural {
+            self.structure += 1;
+        }
+    }
+
+    /// The revision: moves with every change.
+    pub fn revision(&self) -> u64 {
+        self.revision
+    }
+
+    /// The structure epoch: moves with the mesh, its boundary edges, the
+    /// set of prescribed DOFs and the contact pairs.
+    pub fn structure(&self) -> u64 {
+        self.structure
+    }
+
+    /// The mesh, or an error naming the missing call.
+    pub fn mesh_ref(&self) -> Result<&Mesh> {
+        self.mesh
+            .as_ref()
+            .ok_or_else(|| Error::state("no mesh: call set_mesh first"))
+    }
+
+    fn check_node(&self, node: usize) -> Result<()> {
+        let mesh = self.mesh_ref()?;
+        if node >= mesh.nodes().len() {
+            return Err(Error::argument(format!(
+                "node {} is out of range ({} nodes, index base {})",
+                node + mesh.index_base(),
+                mesh.nodes().len(),
+                mesh.index_base()
+            )));
+        }
+        Ok(())
+    }
+
+    /// Replaces the mesh. Constraints, loads and contact pairs are
+    /// discarded (they refer to nodes and edges); materials and tempering
+    /// are kept.
+    pub fn set_mesh(&mut self, mesh: Mesh) {
+        self.mesh = Some(mesh);
+        self.prescribed.clear();
+        self.loads.clear();
+        self.pairs.clear();
+        self.changed(true);
+    }
+
+    /// The mesh, if set.
+    pub fn mesh(&self) -> Option<&Mesh> {
+        self.mesh.as_ref()
+    }
+
+    /// Sets the tagged boundary edges (0-based nodes). See
+    /// [`Mesh::set_boundary_edges`].
+    pub fn set_boundary_edges(&mut self, edges: &[[usize; 2]], tags: &[i32]) -> Result<()> {
+        let mesh = self
+            .mesh
+            .as_mut()
+            .ok_or_else(|| Error::state("no mesh: call set_mesh first"))?;
+        mesh.set_boundary_edges(edges, tags)?;
+        self.changed(true);
+        Ok(())
+    }
+
+    /// Sets the material of a body. Before a mesh is given any body tag is
+    /// accepted; afterwards the body must exist.
+    pub fn set_material(&mut self, body: i32, material: Material) -> Result<()> {
+        if let Some(mesh) = &self.mesh {
+            if mesh.bodies().binary_search(&body).is_err() {
+                return Err(Error::new(
+                    Status::InvalidMaterial,
+                    format!(
+                        "body {body} is not in the mesh (bodies: {:?})",
+                        mesh.bodies()
+                    ),
+                ));
+            }
+        }
+        self.materials.insert(body, material);
+        self.changed(false);
+        Ok(())
+    }
+
+    /// The material of a body.
+    pub fn material(&self, body: i32) -> Option<&Material> {
+        self.materials.get(&body)
+    }
+
+    /// Sets how Jmin is chosen.
+    pub fn set_tempering(&mut self, tempering: Tempering) -> Result<()> {
+        tempering.validate()?;
+        self.tempering = tempering;
+        self.changed(false);
+        Ok(())
+    }
+
+    /// The tempering policy.
+    pub fn tempering(&self) -> Tempering {
+        self.tempering
+    }
+
+    /// The λ the tempering uses (None when off or fixed): the given one, or
+    /// the larger side of the mesh's bounding box for [`Tempering::Auto`].
+    pub fn tempering_lambda(&self) -> Option<f64> {
+        match self.tempering {
+            Tempering::Auto => self.mesh.as_ref().map(|m| m.size()),
+            Tempering::Lambda(l) => Some(l),
+            _ => None,
+        }
+    }
+
+    /// Prescribes one displacement component of a node (0-based).
+    pub fn fix(&mut self, node: usize, component: Component, value: f64) -> Result<()> {
+        self.check_node(node)?;
+        if !value.is_finite() {
+            return Err(Error::argument(format!(
+                "prescribed displacement {value} of node {} is not finite",
+                node + self.mesh_ref()?.index_base()
+            )));
+        }
+        let g = 2 * node + component as usize;
+        let new_dof = self.prescribed.insert(g, value).is_none();
+        self.changed(new_dof);
+        Ok(())
+    }
+
+    /// Prescribes a component on every node of the edges tagged `tag`
+    /// (all or nothing: the checks come before any change).
+    pub fn fix_edges(&mut self, tag: i32, component: Component, value: f64) -> Result<()> {
+        let mesh = self.mesh_ref()?;
+        if !value.is_finite() {
+            return Err(Error::argument(format!(
+                "prescribed displacement {value} on tag {tag} is not finite"
+            )));
+        }
+        let nodes: Vec<usize> = mesh
+            .boundary_edges()
+            .iter()
+            .filter(|e| e.tag == tag)
+            .flat_map(|e| e.nodes)
+            .collect();
+        if nodes.is_empty() {
+            return Err(Error::argument(format!("no boundary edge has tag {tag}")));
+        }
+        for v in nodes {
+            self.fix(v, component, value)?;
+        }
+        Ok(())
+    }
+
+    /// Removes every prescribed displacement.
+    pub fn clear_constraints(&mut self) {
+        if !self.prescribed.is_empty() {
+            self.prescribed.clear();
+            self.changed(true);
+        }
+    }
+
+    /// Prescribed displacements, as (global DOF = 2·node + component, value).
+    pub fn constraints(&self) -> impl Iterator<Item = (usize, f64)> + '_ {
+        self.prescribed.iter().map(|(&g, &v)| (g, v))
+    }
+
+    /// Whether a global DOF is prescribed.
+    pub fn is_prescribed(&self, dof: usize) -> bool {
+        self.prescribed.contains_key(&dof)
+    }
+
+    /// The prescribed values as a global vector (zero where free).
+    pub fn prescribed_vector(&self) -> Result<Vec<f64>> {
+        let mut up = vec![0.0; 2 * self.mesh_ref()?.nodes().len()];
+        for (&g, &v) in &self.prescribed {
+            up[g] = v;
+        }
+        Ok(up)
+    }
+
+    /// Applies a pressure (force per unit length, positive pushing into the
+    /// body) on the edges tagged `tag`. Loads add up.
+    pub fn add_pressure(&mut self, tag: i32, pressure: f64) -> Result<()> {
+        if !pressure.is_finite() {
+            return Err(Error::argument(format!(
+                "pressure {pressure} is not finite"
+            )));
+        }
+        check_loaded_tag(self.mesh_ref()?, tag)?;
+        self.loads.add_edge_load(tag, EdgeLoad::Pressure(pressure));
+        self.changed(false);
+        Ok(())
+    }
+
+    /// Applies a traction vector (force per unit length) on the edges tagged
+    /// `tag`. Loads add up.
+    pub fn add_traction(&mut self, tag: i32, traction: [f64; 2]) -> Result<()> {
+        finite2(traction, "traction")?;
+        check_loaded_tag(self.mesh_ref()?, tag)?;
+        self.loads.add_edge_load(tag, EdgeLoad::Traction(traction));
+        self.changed(false);
+        Ok(())
+    }
+
+    /// Adds a point force at a node (0-based).
+    pub fn add_nodal_force(&mut self, node: usize, force: [f64; 2]) -> Result<()> {
+        self.check_node(node)?;
+        finite2(force, "nodal force")?;
+        self.loads.add_nodal_force(node, force);
+        self.changed(false);
+        Ok(())
+    }
+
+    /// Sets the body force (per unit area) of a body.
+    pub fn set_body_force(&mut self, body: i32, force: [f64; 2]) -> Result<()> {
+        let mesh = self.mesh_ref()?;
+        if mesh.bodies().binary_search(&body).is_err() {
+            return Err(Error::argument(format!("body {body} is not in the mesh")));
+        }
+        finite2(force, "body force")?;
+        self.loads.set_body_force(body, force);
+        self.changed(false);
+        Ok(())
+    }
+
+    /// Removes every load (pressures, tractions, nodal and body forces).
+    pub fn clear_loads(&mut self) {
+        self.loads.clear();
+        self.changed(false);
+    }
+
+    /// The assembled external load vector (2 values per node: f_x, f_y) of
+    /// the current loads: consistent edge loads, nodal and body forces.
+    pub fn load_vector(&self) -> Result<Vec<f64>> {
+        Ok(self.loads.nodal_vector(self.mesh_ref()?))
+    }
+
+    /// Declares a potential contact interface between the edges tagged
+    /// `tag_a` (on one body) and `tag_b` (on another). Returns the pair's
+    /// index. The contact mesh B is built from matching nodes when the two
+    /// interfaces' nodes match, else by triangulating the strip between them
+    /// (see [`contact::build`]); or hand one over with
+    /// [`Problem::add_contact_pair_with_mesh`].
+    pub fn add_contact_pair(&mut self, tag_a: i32, tag_b: i32) -> Result<usize> {
+        let mesh = self.mesh_ref()?;
+        let (body_a, body_b) = contact::pair_bodies(mesh, tag_a, tag_b)?;
+        if self
+            .pairs
+            .iter()
+            .any(|p| (p.tag_a, p.tag_b) == (tag_a, tag_b) || (p.tag_a, p.tag_b) == (tag_b, tag_a))
+        {
+            return Err(Error::contact(format!(
+                "contact pair ({tag_a}, {tag_b}) is already declared"
+            )));
+        }
+        // Build it now so that a bad interface is reported by this call.
+        contact::build(mesh, self.pairs.len(), tag_a, tag_b)?;
+        self.pairs.push(ContactPair {
+            tag_a,
+            tag_b,
+            body_a,
+            body_b,
+            user_mesh: None,
+        });
+        self.changed(true);
+        Ok(self.pairs.len() - 1)
+    }
+
+    /// Declares a contact pair with a contact mesh B handed over by the user
+    /// (0-based triangles over interface nodes, as made with Gmsh). Its
+    /// orientation is fixed where needed; returns (pair index, number of
+    /// triangles flipped).
+    pub fn add_contact_pair_with_mesh(
+        &mut self,
+        tag_a: i32,
+        tag_b: i32,
+        triangles: &[[usize; 3]],
+    ) -> Result<(usize, usize)> {
+        let mesh = self.mesh_ref()?;
+        let (body_a, body_b) = contact::pair_bodies(mesh, tag_a, tag_b)?;
+        if triangles.is_empty() {
+            return Err(Error::contact("the contact mesh has no triangles"));
+        }
+        let (elements, flipped) =
+            contact::check_user_mesh(mesh, self.pairs.len(), tag_a, tag_b, triangles)?;
+        self.pairs.push(ContactPair {
+            tag_a,
+            tag_b,
+            body_a,
+            body_b,
+            user_mesh: Some(elements.iter().map(|e| e.nodes).collect()),
+        });
+        self.changed(true);
+        Ok((self.pairs.len() - 1, flipped))
+    }
+
+    /// Removes every contact pair.
+    pub fn clear_contact_pairs(&mut self) {
+        if !self.pairs.is_empty() {
+            self.pairs.clear();
+            self.changed(true);
+        }
+    }
+
+    /// The declared contact pairs.
+    pub fn contact_pairs(&self) -> &[ContactPair] {
+        &self.pairs
+    }
+
+    /// The mesh, once every body has a material and the pairs fit the kind
+    /// of solve (`with_contact`).
+    pub fn check_ready(&self, with_contact: bool) -> Result<&Mesh> {
+        let mesh = self.mesh_ref()?;
+        for &b in mesh.bodies() {
+            if !self.materials.contains_key(&b) {
+                return Err(Error::new(
+                    Status::InvalidMaterial,
+                    format!("body {b} has no material: call set_material"),
+                ));
+            }
+        }
+        match (with_contact, self.pairs.is_empty()) {
+            (false, false) => Err(Error::state(format!(
+                "the model has {} contact pair(s): use solve_contact",
+                self.pairs.len()
+            ))),
+            (true, true) => Err(Error::state("no contact pair: call add_contact_pair first")),
+            _ => Ok(mesh),
+        }
+    }
+
+    /// The loop over the body elements (every body needs a material:
+    /// [`Problem::check_ready`]).
+    pub fn elements(&self) -> Result<ElementLoop<'_>> {
+        Ok(ElementLoop::new(
+            self.mesh_ref()?,
+            &self.materials,
+            self.tempering,
+        ))
+    }
+}

@@ -1,0 +1,125 @@
+//! The results of a solve: displacements, the external forces they
+//! answer, statistics, and the contact state. Everything else — strains,
+//! stresses, reactions — is computed from them when asked for.
+
+use super::problem::Problem;
+use crate::contact::{ContactElement, ElementLaw, contact_stiffness};
+use crate::error::Result;
+use crate::fem::element::{TriGeometry, b_hat, tempered_jacobian};
+use crate::fem::element_loop::element_values;
+
+pub use crate::solve::report::{ContactReport, IterationRecord, SolveInfo, Timings};
+pub use crate::solve::system::SystemMatrix;
+
+/// The results of one successful solve of one revision of a problem.
+#[derive(Debug, Clone)]
+pub(crate) struct Solution {
+    /// The problem revision it solves.
+    pub revision: u64,
+    /// Displacements over every global DOF.
+    pub u: Vec<f64>,
+    /// External forces over every global DOF.
+    pub f_ext: Vec<f64>,
+    /// Statistics.
+    pub info: SolveInfo,
+    /// The contact state, for a contact solve.
+    pub contact: Option<ContactSolution>,
+}
+
+/// The contact state of a solution.
+#[derive(Debug, Clone)]
+pub(crate) struct ContactSolution {
+    /// The elements of B.
+    pub elements: Vec<ContactElement>,
+    /// Active flag of every element at convergence.
+    pub active: Vec<bool>,
+    /// Contact pressure of every element (zero when inactive).
+    pub pressure: Vec<f64>,
+    /// Each element's law.
+    pub laws: Vec<ElementLaw>,
+    /// The report.
+    pub report: ContactReport,
+}
+
+impl Solution {
+    /// Nodal displacements [u, v].
+    pub fn displacements(&self) -> Vec<[f64; 2]> {
+        self.u.chunks_exact(2).map(|c| [c[0], c[1]]).collect()
+    }
+
+    /// Work of the external loads, Σ f·u.
+    pub fn external_work(&self) -> f64 {
+        self.f_ext.iter().zip(&self.u).map(|(f, u)| f * u).sum()
+    }
+
+    /// Element strains [ε_xx, ε_yy, γ_xy]: B̂u / max(J, Jmin).
+    pub fn strains(&self, problem: &Problem) -> Result<Vec<[f64; 3]>> {
+        let elements = problem.elements()?;
+        let mut out = Vec::with_capacity(elements.mesh().triangles().len());
+        elements.for_each(|el| {
+            let Some(t) = tempered_jacobian(&el.geo, el.jmin)? else {
+                out.push([0.0; 3]);
+                return Ok(());
+            };
+            let b = b_hat(&el.geo);
+            let ue = element_values(&self.u, el.nodes);
+            out.push(std::array::from_fn(|r| {
+                (0..6).map(|c| b[r][c] * ue[c]).sum::<f64>() / t
+            }));
+            Ok(())
+        })?;
+        Ok(out)
+    }
+
+    /// Element stresses [σ_xx, σ_yy, σ_xy] = D ε.
+    pub fn stresses(&self, problem: &Problem) -> Result<Vec<[f64; 3]>> {
+        let strains = self.strains(problem)?;
+        let elements = problem.elements()?;
+        Ok(strains
+            .iter()
+            .zip(elements.mesh().body_of())
+            .map(|(eps, &body)| {
+                let d = elements.material(body).d_matrix();
+                std::array::from_fn(|r| d[r][0] * eps[0] + d[r][1] * eps[1] + d[r][2] * eps[2])
+            })
+            .collect())
+    }
+
+    /// Reaction forces [R_x, R_y] per node: K u − f at prescribed DOFs
+    /// (zero elsewhere), the active contact elements included.
+    pub fn reactions(&self, problem: &Problem) -> Result<Vec<[f64; 2]>> {
+        let elements = problem.elements()?;
+        let mesh = elements.mesh();
+        let mut r = vec![0.0; self.u.len()];
+        let mut add = |tri: &[usize; 3], ke: &[f64; 36], f0: Option<&[f64; 6]>| {
+            let ue = element_values(&self.u, tri);
+            for a in 0..6 {
+                let g = 2 * tri[a / 2] + a % 2;
+                if problem.is_prescribed(g) {
+                    let ku: f64 = (0..6).map(|b| ke[a * 6 + b] * ue[b]).sum();
+                    r[g] += ku - f0.map_or(0.0, |f| f[a]);
+                }
+            }
+        };
+        elements.for_each(|el| {
+            add(el.nodes, &elements.stiffness(el)?, None);
+            Ok(())
+        })?;
+        if let Some(c) = &self.contact {
+            for (k, el) in c.elements.iter().enumerate() {
+                if c.active[k] {
+                    let geo = TriGeometry::new(&mesh.corners(&el.nodes));
+                    let law = &c.laws[k];
+                    let cs = contact_stiffness(&geo, &law.d, el.normal, el.j0, law.t);
+                    add(&el.nodes, &cs.k, Some(&cs.f0));
+                }
+            }
+        }
+        for (g, v) in r.iter_mut().enumerate() {
+            if problem.is_prescribed(g) {
+                *v -= self.f_ext[g];
+            }
+        }
+        Ok(r.chunks_exact(2).map(|c| [c[0], c[1]]).collect())
+    }
+}

@@ -1,0 +1,461 @@
+//! The active-set loop of the contact solve (docs/method.md §3): solve
+//! with the active elements of B, find the inverted ones, switch them on
+//! and the others off, until the set no longer changes.
+//!
+//! The first iteration factorises K₁ (bodies plus the initial set). When
+//! the interface is condensed ([`Condensed`]), every later iteration is a
+//! dense solve on the interface unknowns only, and the whole field is
+//! recovered once, at the end, by one more sparse solve: one factorisation
+//! per contact solve. Otherwise (or when the condensed matrix turns out
+//! singular) every iteration updates the assembled system in place and
+//! refactorises it. The loop works over the unknowns throughout; the caller
+//! expands the result to global DOFs once.
+
+use std::collections::HashSet;
+use std::time::Instant;
+
+use super::condensed::{Condensed, ElementMatrix};
+use super::diagnostics::add_energy;
+use super::linear::{Structure, check_finite, factor_and_solve};
+use super::report::{IterationRecord, SolveInfo, Timings};
+use super::system::AssembledSystem;
+use crate::contact::{ContactOptions, ContactSet};
+use crate::error::{Error, Result, Status};
+use crate::fem::assembly::NOT_FREE;
+use crate::fem::element_loop::ElementLoop;
+use crate::linalg::Cholesky;
+use crate::linalg::refine::refine;
+
+/// What the loop works with, borrowed from the session and the problem.
+pub(crate) struct LoopInput<'a, 's> {
+    /// Mesh, unknowns and pattern.
+    pub at: Structure<'a>,
+    /// The body elements (for the energy of a near-null mode).
+    pub elements: &'a ElementLoop<'a>,
+    /// The elements of B with their laws and the inversion test.
+    pub set: &'a ContactSet<'s>,
+    /// Prescribed displacements, a global vector.
+    pub prescribed: &'a [f64],
+    /// The interface unknowns to condense on, or `None` to refactorise at
+    /// every iteration (the analysis numbered them last).
+    pub interface: Option<Vec<usize>>,
+    /// The options of the solve.
+    pub options: ContactOptions,
+}
+
+/// The converged state of the loop.
+pub(crate) struct Settled {
+    /// The solution over the unknowns.
+    pub x: Vec<f64>,
+    /// The active set.
+    pub active: Vec<bool>,
+    /// One record per iteration.
+    pub history: Vec<IterationRecord>,
+    /// Bytes the condensed system held (0 when not condensed).
+    pub condensed_bytes: usize,
+}
+
+/// The sets the loop has visited: coming back to one is a cycle.
+#[derive(Default)]
+pub(crate) struct Visited(HashSet<Vec<bool>>);
+
+impl Visited {
+    /// Records `set`; false when it was visited before.
+    pub fn first_visit(&mut self, set: &[bool]) -> bool {
+        self.0.insert(set.to_vec())
+    }
+}
+
+/// The condensed system with the first iteration's solution x₁ it is
+/// relative to and the active set its factor represents.
+struct CondensedState {
+    system: Condensed,
+    x1: Vec<f64>,
+    factor_active: Vec<bool>,
+}
+
+/// The current solution of the loop.
+enum Iterate {
+    /// Nothing solved yet.
+    None,
+    /// A full solve of the assembled system: every unknown.
+    Full(Vec<f64>),
+    /// The first solve, whose x₁ the condensed state holds (not refined).
+    Reference,
+    /// A condensed step: the interface values, in the interface's order
+    /// (x₁ holds the others, which no contact element reads).
+    Condensed(Vec<f64>),
+}
+
+/// The active-set loop over the contact elements of one solve.
+pub(crate) struct ActiveSetLoop<'a, 's> {
+    input: LoopInput<'a, 's>,
+    chol: &'a mut Cholesky,
+    system: &'a mut AssembledSystem,
+    timings: &'a mut Timings,
+    info: &'a mut SolveInfo,
+    initial: Vec<bool>,
+    active: Vec<bool>,
+    visited: Visited,
+    history: Vec<IterationRecord>,
+    condensed: Option<CondensedState>,
+    iterate: Iterate,
+}
+
+impl<'a, 's> ActiveSetLoop<'a, 's> {
+    /// A loop that starts from the set's initial active elements;
+    /// `system` holds the bodies' part, `chol` an analysis of its pattern.
+    pub fn new(
+        input: LoopInput<'a, 's>,
+        (chol, system): (&'a mut Cholesky, &'a mut AssembledSystem),
+        (timings, info): (&'a mut Timings, &'a mut SolveInfo),
+    ) -> ActiveSetLoop<'a, 's> {
+        let initial = input.set.initial_active();
+        let mut visited = Visited::default();
+        visited.first_visit(&initial);
+        ActiveSetLoop {
+            input,
+            chol,
+            system,
+            timings,
+            info,
+            active: initial.clone(),
+            initial,
+            visited,
+            history: Vec::new(),
+            condensed: None,
+            iterate: Iterate::None,
+        }
+    }
+
+    /// Runs the loop (docs/method.md §3): solve with the active elements,
+    /// test which are inverted, stop when the set is unchanged, refuse a
+    /// set visited before (a cycle) or too many iterations.
+    pub fn run(mut self) -> Result<Settled> {
+        for iteration in 1..=self.input.options.max_iterations {
+            self.solve(iteration)?;
+            let next = self.inverted();
+            self.record(&next);
+            if next == self.active {
+                return self.recover();
+            }
+            if !self.visited.first_visit(&next) {
+                return Err(self.not_converged(format!(
+                    "the active set revisited an earlier state at iteration {iteration} (a cycle)"
+                )));
+            }
+            self.active = next;
+        }
+        Err(self.not_converged(format!(
+            "the active set did not settle in {} iterations",
+            self.input.options.max_iterations
+        )))
+    }
+
+    /// One iteration's solve with the current active set: a condensed step
+    /// when the interface is condensed and its matrix is definite, else a
+    /// full solve.
+    fn solve(&mut self, iteration: usize) -> Result<()> {
+        if self.condensed.is_some() && self.condensed_step()? {
+            return Ok(());
+        }
+        self.full_step(iteration)
+    }
+
+    /// Solves the interface system for the current set; false (and the
+    /// condensation ends) when its matrix is singular or nearly so, so that
+    /// the full factorisation names the free mode, or accepts an
+    /// ill-conditioned but restrained system.
+    fn condensed_step(&mut self) -> Result<bool> {
+        let t0 = Instant::now();
+        let set = self.input.set;
+        let state = self.condensed.as_mut().expect("a condensed system");
+        let sign = |k: usize| if self.active[k] { 1.0 } else { -1.0 };
+        let element = |k: usize| {
+            let matrix = &set.stiffness(k).k;
+            (
+                ElementMatrix {
+                    unknowns: set.unknowns(k),
+                    matrix,
+                },
+                sign(k),
+            )
+        };
+        // Changes since the factorised set, and relative to K₁.
+        let changed = differing(&self.active, &state.factor_active);
+        let relative = differing(&self.active, &self.initial);
+        // A few changes: update the factor (measured: a rank-1 update costs
+        // ~1/20 of a refactorisation at 2000 interface unknowns); many:
+        // refactorise Ŝ₁ plus the changes relative to K₁.
+        let sys = &mut state.system;
+        let updated = 24 * changed.len() <= sys.len()
+            && sys.is_factored()
+            && sys.update(changed.iter().map(|&k| element(k))).is_ok();
+        let factored = updated || sys.factorize(relative.iter().map(|&k| element(k))).is_ok();
+        state.factor_active.clone_from(&self.active);
+        if factored {
+            let mut g = vec![0.0; sys.len()];
+            for &k in &relative {
+                for a in 0..6 {
+                    if let Some(p) = set.unknowns(k)[a].and_then(|i| sys.position(i)) {
+                        g[p] += sign(k) * set.load(k)[a];
+                    }
+                }
+            }
+            self.iterate = Iterate::Condensed(sys.solve(&sys.gather(&state.x1), &g)?);
+        } else {
+            self.condensed = None;
+        }
+        self.timings.interface += t0.elapsed().as_secs_f64();
+        Ok(factored)
+    }
+
+    /// Updates the assembled system to the current set, factorises and
+    /// solves it. In the first iteration of a condensed loop, its factor
+    /// gives the condensed system.
+    fn full_step(&mut self, iteration: usize) -> Result<()> {
+        let input = &self.input;
+        let (at, set) = (input.at, input.set);
+        let t0 = Instant::now();
+        let structure = (at.dofs, at.pattern);
+        self.system
+            .set_contact(&self.active, set, structure, input.prescribed);
+        self.timings.assembly += t0.elapsed().as_secs_f64();
+        let active = &self.active;
+        let energy = |r: &[f64]| {
+            let mut acc = body_energy(input.elements, r);
+            for (k, el) in set.elements().iter().enumerate() {
+                if active[k] {
+                    add_energy(&mut acc, &set.stiffness(k).k, r, &el.nodes);
+                }
+            }
+            acc
+        };
+        let n_active = active.iter().filter(|&&a| a).count();
+        let context =
+            format!(" (contact iteration {iteration}, {n_active} active contact elements)");
+        let condense = iteration == 1 && input.interface.is_some();
+        // A condensed loop refines its final solution against the final
+        // matrix; refining x₁ as well would be wasted.
+        let (chol, system) = (&mut *self.chol, &*self.system);
+        let (timings, info) = (&mut *self.timings, &mut *self.info);
+        let x = factor_and_solve(
+            at, chol, system, &energy, !condense, &context, timings, info,
+        )?;
+        if !condense {
+            self.iterate = Iterate::Full(x);
+            return Ok(());
+        }
+        let t0 = Instant::now();
+        let interface = input.interface.clone().expect("condensing");
+        let system = Condensed::new(self.chol, interface)?;
+        self.info.interface_unknowns = system.len();
+        self.condensed = Some(CondensedState {
+            system,
+            x1: x,
+            factor_active: self.active.clone(),
+        });
+        self.iterate = Iterate::Reference;
+        self.timings.interface += t0.elapsed().as_secs_f64();
+        Ok(())
+    }
+
+    /// The value of unknown `i` in the current iterate.
+    fn value(&self, i: usize) -> f64 {
+        match (&self.iterate, &self.condensed) {
+            (Iterate::Full(x), _) => x[i],
+            (Iterate::Reference, Some(c)) => c.x1[i],
+            (Iterate::Condensed(ui), Some(c)) => match c.system.position(i) {
+                Some(p) => ui[p],
+                None => c.x1[i],
+            },
+            _ => unreachable!("an iterate without its condensed system"),
+        }
+    }
+
+    /// The inversion test on the current iterate.
+    fn inverted(&self) -> Vec<bool> {
+        let (dofs, prescribed) = (self.input.at.dofs, self.input.prescribed);
+        let elements = self.input.set.elements();
+        self.input.set.inverted(|k| {
+            let tri = &elements[k].nodes;
+            std::array::from_fn(|a| {
+                let g = 2 * tri[a / 2] + a % 2;
+                match dofs.free(g) {
+                    NOT_FREE => prescribed[g],
+                    i => self.value(i),
+                }
+            })
+        })
+    }
+
+    /// Records the iteration: the set it solved with and what the test
+    /// switched.
+    fn record(&mut self, next: &[bool]) {
+        let pairs = || next.iter().zip(&self.active);
+        self.history.push(IterationRecord {
+            active: self.active.iter().filter(|&&a| a).count(),
+            switched_on: pairs().filter(|(n, a)| **n && !**a).count(),
+            switched_off: pairs().filter(|(n, a)| !**n && **a).count(),
+        });
+    }
+
+    fn not_converged(&self, what: String) -> Error {
+        Error::new(
+            Status::NotConverged,
+            format!("{what}; history {}", format_history(&self.history)),
+        )
+    }
+
+    /// The settled solution over all unknowns, refined against the final
+    /// system, which the assembled system then holds.
+    fn recover(mut self) -> Result<Settled> {
+        let condensed_bytes = self
+            .condensed
+            .as_ref()
+            .map_or(0, |c| c.system.memory_bytes() + 8 * c.x1.len());
+        let context = format!(
+            " (contact solution after {} iterations)",
+            self.history.len()
+        );
+        let x = match std::mem::replace(&mut self.iterate, Iterate::None) {
+            Iterate::Full(x) => x,
+            Iterate::Reference => self.refine_reference(&context)?,
+            Iterate::Condensed(ui) => self.expand_condensed(ui, &context)?,
+            Iterate::None => unreachable!("the loop solved before settling"),
+        };
+        Ok(Settled {
+            x,
+            active: self.active,
+            history: self.history,
+            condensed_bytes,
+        })
+    }
+
+    /// Settled at once: x₁ is the answer, not yet refined.
+    fn refine_reference(&mut self, context: &str) -> Result<Vec<f64>> {
+        let state = self.condensed.take().expect("x₁ of the condensed loop");
+        let t0 = Instant::now();
+        let mut x = state.x1;
+        drop(state.system);
+        let (pattern, chol) = (self.input.at.pattern, &mut *self.chol);
+        let (values, rhs) = (self.system.values(), self.system.rhs());
+        refine(pattern, values, rhs, &mut x, &mut |r| chol.solve(r))?;
+        check_finite(self.input.at, &x, context)?;
+        self.timings.solve += t0.elapsed().as_secs_f64();
+        Ok(x)
+    }
+
+    /// The last iterate is condensed: recovers the whole field,
+    /// u = x₁ + K₁⁻¹ P(Δg + ΔC u_I), refined against K itself.
+    fn expand_condensed(&mut self, ui: Vec<f64>, context: &str) -> Result<Vec<f64>> {
+        let CondensedState {
+            system: sys, x1, ..
+        } = self.condensed.take().expect("condensed");
+        let input = &self.input;
+        let t0 = Instant::now();
+        let structure = (input.at.dofs, input.at.pattern);
+        self.system
+            .set_contact(&self.active, input.set, structure, input.prescribed);
+        self.timings.assembly += t0.elapsed().as_secs_f64();
+        let t0 = Instant::now();
+        let changes = Changes {
+            set: input.set,
+            active: &self.active,
+            initial: &self.initial,
+            n: input.at.dofs.n_free(),
+        };
+        let position = |j: usize| {
+            sys.position(j)
+                .expect("coupled unknowns are on the interface")
+        };
+        let mut x = changes.product(&|j| ui[position(j)], true);
+        // Near the solve's memory peak: free the vectors done with.
+        drop(ui);
+        self.chol.solve(&mut x)?;
+        x.iter_mut().zip(&x1).for_each(|(a, b)| *a += b);
+        drop(x1);
+        let chol = &mut *self.chol;
+        let mut solve = |r: &mut [f64]| -> Result<()> {
+            // K δ = r: y = K₁⁻¹r, S δ_I = S₁ y_I, δ = y + K₁⁻¹PΔC δ_I.
+            chol.solve(r)?;
+            let di = sys.solve(&sys.gather(r), &vec![0.0; sys.len()])?;
+            let mut p = changes.product(&|j| di[position(j)], false);
+            chol.solve(&mut p)?;
+            r.iter_mut().zip(&p).for_each(|(a, b)| *a += b);
+            Ok(())
+        };
+        let (values, rhs) = (self.system.values(), self.system.rhs());
+        refine(input.at.pattern, values, rhs, &mut x, &mut solve)?;
+        self.timings.solve += t0.elapsed().as_secs_f64();
+        check_finite(input.at, &x, context)?;
+        Ok(x)
+    }
+}
+
+/// The contact elements whose state differs between K₁ (the initial set)
+/// and the final set.
+struct Changes<'c, 's> {
+    set: &'c ContactSet<'s>,
+    active: &'c [bool],
+    initial: &'c [bool],
+    n: usize,
+}
+
+impl Changes<'_, '_> {
+    /// p = ΔC v_I − Δg over the unknowns (the load only `with_load`),
+    /// ΔC = C₁ − C and Δg = g₁ − g: what the elements removed since K₁ took
+    /// out of it and its load, minus what the added ones put in. `v` gives
+    /// the value of an interface unknown.
+    fn product(&self, v: &dyn Fn(usize) -> f64, with_load: bool) -> Vec<f64> {
+        let set = self.set;
+        let mut p = vec![0.0; self.n];
+        for k in differing(self.active, self.initial) {
+            let removed = if self.initial[k] { 1.0 } else { -1.0 };
+            let (unknowns, stiffness) = (set.unknowns(k), &set.stiffness(k).k);
+            for a in 0..6 {
+                let Some(i) = unknowns[a] else { continue };
+                let mut r = if with_load { -set.load(k)[a] } else { 0.0 };
+                for b in 0..6 {
+                    let c = stiffness[a * 6 + b];
+                    // (Only interface unknowns have coefficients.)
+                    if let (Some(j), true) = (unknowns[b], c != 0.0) {
+                        r += c * v(j);
+                    }
+                }
+                p[i] += removed * r;
+            }
+        }
+        p
+    }
+}
+
+/// The elements whose flags differ between two sets.
+fn differing(a: &[bool], b: &[bool]) -> Vec<usize> {
+    (0..a.len()).filter(|&k| a[k] != b[k]).collect()
+}
+
+/// (rᵀKr, Σ diag energy) of the body elements for a global vector r.
+pub(crate) fn body_energy(elements: &ElementLoop<'_>, r: &[f64]) -> (f64, f64) {
+    let mut acc = (0.0, 0.0);
+    let _ = elements.for_each(|el| {
+        if let Ok(ke) = elements.stiffness(el) {
+            add_energy(&mut acc, &ke, r, el.nodes);
+        }
+        Ok(())
+    });
+    acc
+}
+
+fn format_history(h: &[IterationRecord]) -> String {
+    let items: Vec<String> = h
+        .iter()
+        .map(|r| {
+            format!(
+                "[active {}, +{}, -{}]",
+                r.active, r.switched_on, r.switched_off
+            )
+        })
+        .collect();
+    items.join(" ")
+}

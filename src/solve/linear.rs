@@ -1,0 +1,126 @@
+//! One linear solve: factorise the assembled matrix (a singular one is
+//! diagnosed: which body moves, and how), solve, refine; then check that
+//! every unknown is finite. Works over the unknowns throughout.
+
+use std::time::Instant;
+
+use super::diagnostics::{RIGID_ENERGY_TOL, rigid_fit, singular_error};
+use super::report::{SolveInfo, Timings};
+use super::system::AssembledSystem;
+use crate::error::{Error, Result, Status};
+use crate::fem::assembly::{DofMap, Pattern};
+use crate::fem::mesh::Mesh;
+use crate::linalg::refine::refine;
+use crate::linalg::{Cholesky, FactorError};
+
+/// The structure a linear solve works on.
+#[derive(Clone, Copy)]
+pub(crate) struct Structure<'a> {
+    /// The mesh (for naming nodes and bodies in errors).
+    pub mesh: &'a Mesh,
+    /// The unknowns.
+    pub dofs: &'a DofMap,
+    /// The matrix pattern.
+    pub pattern: &'a Pattern,
+}
+
+/// The energy (rᵀKr, Σ diag energy) of the assembled elements for a
+/// global vector r: tells a free rigid mode from a restrained one.
+pub(crate) type Energy<'e> = &'e dyn Fn(&[f64]) -> (f64, f64);
+
+/// Factorises `system`'s matrix with `chol` (whose analysis fits its
+/// pattern) and solves it; refines the solution when `refined`. Returns
+/// the unknowns, all finite. `context` ends every error message.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn factor_and_solve(
+    at: Structure<'_>,
+    chol: &mut Cholesky,
+    system: &AssembledSystem,
+    energy: Energy<'_>,
+    refined: bool,
+    context: &str,
+    timings: &mut Timings,
+    info: &mut SolveInfo,
+) -> Result<Vec<f64>> {
+    let t0 = Instant::now();
+    let fact = chol.factorize(at.pattern, system.values());
+    timings.factorization += t0.elapsed().as_secs_f64();
+    info.factorizations += 1;
+    if let Err(e) = fact {
+        accept_or_explain(at, chol, e, energy, context)?;
+    }
+    let t0 = Instant::now();
+    let mut x = system.rhs().to_vec();
+    chol.solve(&mut x)?;
+    if refined {
+        refine(
+            at.pattern,
+            system.values(),
+            system.rhs(),
+            &mut x,
+            &mut |r| chol.solve(r),
+        )?;
+    }
+    timings.solve += t0.elapsed().as_secs_f64();
+    check_finite(at, &x, context)?;
+    Ok(x)
+}
+
+/// After a failed factorisation: accepts an ill-conditioned but restrained
+/// system (a tiny eigenvalue from an extreme stiffness contrast), else the
+/// error naming the free mode.
+fn accept_or_explain(
+    at: Structure<'_>,
+    chol: &mut Cholesky,
+    e: FactorError,
+    energy: Energy<'_>,
+    context: &str,
+) -> Result<()> {
+    let usable_hint = matches!(e, FactorError::Singular { usable: true, .. });
+    let restrained = match &e {
+        FactorError::Singular {
+            mode: Some(m),
+            usable: true,
+            ..
+        } => {
+            // A tiny eigenvalue from an extreme stiffness contrast, or a
+            // free mode? Fit the rigid motion of each body to the mode and
+            // measure its energy element by element: round-off for a
+            // free body, the coupling's energy for a restrained one.
+            let r = rigid_fit(at.mesh, at.dofs, m);
+            let (energy, scale) = energy(&r);
+            energy > RIGID_ENERGY_TOL * scale
+        }
+        _ => false,
+    };
+    if restrained && chol.accept_ill_conditioned() {
+        return Ok(());
+    }
+    let mut err = singular_error(at.mesh, at.dofs, e, context);
+    if matches!(err.status(), Status::Singular) && usable_hint {
+        err = Error::new(
+            Status::Singular,
+            format!(
+                "{} — numerically singular: the free motion is resisted by less than \
+                 1e-13 of the stiffness (a free body, or a stiffness contrast beyond \
+                 double precision)",
+                err.message()
+            ),
+        );
+    }
+    Err(err)
+}
+
+/// Refuses a non-finite unknown, naming its node.
+pub(crate) fn check_finite(at: Structure<'_>, x: &[f64], context: &str) -> Result<()> {
+    match x.iter().position(|v| !v.is_finite()) {
+        None => Ok(()),
+        Some(f) => Err(Error::new(
+            Status::NumericalFailure,
+            format!(
+                "the displacement of {} is not finite{context}",
+                at.mesh.node_name(at.dofs.free_to_global()[f] / 2)
+            ),
+        )),
+    }
+}

@@ -1,0 +1,289 @@
+//! Solving a problem: the [`session`] derived from its structure and
+//! reused while the structure holds, the [`system`] assembled into it, the
+//! [`linear`] solve with its [`diagnostics`], the [`condensed`] interface
+//! system and the [`active_set`] loop of the contact solve.
+//!
+//! A solve reads the problem through [`Input`] and returns an [`Outcome`]
+//! (displacements over every global DOF, statistics, the contact state);
+//! it changes nothing but the session, so that a failed solve leaves the
+//! model's results as they were.
+
+pub(crate) mod active_set;
+pub mod condensed;
+pub(crate) mod diagnostics;
+pub(crate) mod linear;
+pub mod report;
+pub(crate) mod session;
+pub mod system;
+
+use active_set::{ActiveSetLoop, LoopInput, body_energy};
+use condensed::Condensed;
+use diagnostics::conditioning_warning;
+use linear::{Structure, factor_and_solve};
+use report::{ContactReport, SolveInfo, Timings};
+use session::{Session, Settings, Wanted, factorisation};
+
+use crate::contact::{ContactOptions, ContactPair, ContactSet, ElementLaw};
+use crate::error::Result;
+use crate::fem::body::Softened;
+use crate::fem::element_loop::{ElementLoop, element_values};
+use crate::fem::mesh::Mesh;
+
+/// What a solve reads of the problem.
+pub(crate) struct Input<'a> {
+    /// The body elements with their materials and tempering.
+    pub elements: ElementLoop<'a>,
+    /// The contact pairs.
+    pub pairs: &'a [ContactPair],
+    /// Prescribed displacements, a global vector (zero where free).
+    pub prescribed: &'a [f64],
+    /// External forces, a global vector.
+    pub f_ext: &'a [f64],
+    /// The tempering's λ (for the warning about softened elements; `None`
+    /// for a fixed Jmin).
+    pub lambda: Option<f64>,
+    /// The factorisation's settings.
+    pub settings: Settings,
+}
+
+/// What a successful solve produced.
+pub(crate) struct Outcome {
+    /// Displacements over every global DOF.
+    pub u: Vec<f64>,
+    /// Statistics (timings filled by the caller).
+    pub info: SolveInfo,
+    /// The contact state, for a contact solve.
+    pub contact: Option<ContactOutcome>,
+    /// Warnings of the solve.
+    pub warnings: Vec<String>,
+}
+
+/// The contact state at convergence.
+pub(crate) struct ContactOutcome {
+    /// Active flag of every element of B.
+    pub active: Vec<bool>,
+    /// Contact pressure of every element of B (zero when inactive).
+    pub pressure: Vec<f64>,
+    /// Each element's law.
+    pub laws: Vec<ElementLaw>,
+    /// The report (its `info` filled by the caller).
+    pub report: ContactReport,
+}
+
+/// Solves `input` on `session`: without contact when `options` is `None`.
+pub(crate) fn solve(
+    session: &mut Session,
+    input: &Input<'_>,
+    options: Option<&ContactOptions>,
+    timings: &mut Timings,
+) -> Result<Outcome> {
+    session.set_system_of(None);
+    let mesh = input.elements.mesh();
+    let t0 = std::time::Instant::now();
+    let softened = session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
+    timings.assembly += t0.elapsed().as_secs_f64();
+    let mut warnings = Vec::new();
+    softening_warning(mesh, softened, input.lambda, &mut warnings);
+    let info = SolveInfo {
+        unknowns: session.dofs.n_free(),
+        matrix_nnz: session.pattern.nnz(),
+        ..Default::default()
+    };
+    match options {
+        None => solve_plain(session, input, info, timings, warnings),
+        Some(options) => solve_contact(session, input, options, info, timings, warnings),
+    }
+}
+
+/// The warning about well-shaped elements that tempering softens.
+fn softening_warning(
+    mesh: &Mesh,
+    softened: Softened,
+    lambda: Option<f64>,
+    warnings: &mut Vec<String>,
+) {
+    let (n, Some(e)) = softened else {
+        return;
+    };
+    let cause = match lambda {
+        Some(l) => format!(
+            "λ = {l:e} is not much larger than the element size, so Jmin = h³/λ exceeds \
+             their J; increase λ"
+        ),
+        None => "the fixed Jmin exceeds their J; lower it".to_string(),
+    };
+    warnings.push(format!(
+        "tempering softens {n} well-shaped element(s) (e.g. {}): {cause}",
+        mesh.triangle_name(e)
+    ));
+}
+
+/// A solve without contact: one factorisation of the bodies' part.
+fn solve_plain(
+    session: &mut Session,
+    input: &Input<'_>,
+    mut info: SolveInfo,
+    timings: &mut Timings,
+    mut warnings: Vec<String>,
+) -> Result<Outcome> {
+    let mesh = input.elements.mesh();
+    let Session {
+        dofs,
+        pattern,
+        analysis,
+        system,
+        ..
+    } = &mut *session;
+    let values = system.values();
+    let want = Wanted {
+        last: None,
+        zeros: &[],
+        is_zero: &|p| values[p] == 0.0,
+    };
+    let at = Structure {
+        mesh,
+        dofs,
+        pattern,
+    };
+    let chol = factorisation(
+        analysis,
+        (mesh, dofs, pattern),
+        input.settings,
+        want,
+        timings,
+        &mut info,
+    )?;
+    let energy = |r: &[f64]| body_energy(&input.elements, r);
+    let x = factor_and_solve(at, chol, system, &energy, true, "", timings, &mut info)?;
+    info.relative_residual = system.relative_residual(pattern, &x);
+    info.condition_estimate = chol.condition_estimate();
+    info.memory_bytes = session_memory(at, system, chol);
+    info.timings = *timings;
+    conditioning_warning(&info, &mut warnings);
+    Ok(Outcome {
+        u: dofs.expand(&x, input.prescribed),
+        info,
+        contact: None,
+        warnings,
+    })
+}
+
+/// A contact solve: the active-set loop over the elements of B.
+fn solve_contact(
+    session: &mut Session,
+    input: &Input<'_>,
+    options: &ContactOptions,
+    mut info: SolveInfo,
+    timings: &mut Timings,
+    mut warnings: Vec<String>,
+) -> Result<Outcome> {
+    let mesh = input.elements.mesh();
+    let Session {
+        dofs,
+        pattern,
+        contact,
+        analysis,
+        system,
+        ..
+    } = &mut *session;
+    let material = |body: i32| *input.elements.material(body);
+    let geometry = (&*dofs, input.prescribed);
+    let set = ContactSet::new(mesh, contact, input.pairs, material, geometry, options)?;
+    let interface = if options.refactorize {
+        Vec::new()
+    } else {
+        set.interface_unknowns()
+    };
+    let condense = Condensed::worthwhile(interface.len(), pattern.nnz());
+    let zeros = set.structural_zeros(pattern, system.values());
+    let want = Wanted {
+        last: condense.then_some(&interface[..]),
+        zeros: &zeros,
+        is_zero: &|p| zeros.binary_search(&p).is_ok(),
+    };
+    let structure = (mesh, &*dofs, &*pattern);
+    let chol = factorisation(
+        analysis,
+        structure,
+        input.settings,
+        want,
+        timings,
+        &mut info,
+    )?;
+    let at = Structure {
+        mesh,
+        dofs,
+        pattern,
+    };
+    let loop_input = LoopInput {
+        at,
+        elements: &input.elements,
+        set: &set,
+        prescribed: input.prescribed,
+        interface: condense.then_some(interface),
+        options: *options,
+    };
+    let settled = ActiveSetLoop::new(loop_input, (chol, system), (timings, &mut info)).run()?;
+    info.memory_bytes = session_memory(at, system, chol) + settled.condensed_bytes;
+    info.relative_residual = system.relative_residual(pattern, &settled.x);
+    info.condition_estimate = chol.condition_estimate();
+    info.timings = *timings;
+    conditioning_warning(&info, &mut warnings);
+    let u = dofs.expand(&settled.x, input.prescribed);
+    drop(settled.x);
+    let contact = contact_outcome(&set, &u, settled.active, settled.history, info);
+    Ok(Outcome {
+        u,
+        info,
+        contact: Some(contact),
+        warnings,
+    })
+}
+
+/// Bytes held by the pattern, the matrix values and the factor.
+fn session_memory(
+    at: Structure<'_>,
+    system: &system::AssembledSystem,
+    chol: &crate::linalg::Cholesky,
+) -> usize {
+    at.pattern.memory_bytes() + system.memory_bytes() + chol.memory_bytes()
+}
+
+/// Pressures, contact length and penetration of the settled set.
+fn contact_outcome(
+    set: &ContactSet<'_>,
+    u: &[f64],
+    active: Vec<bool>,
+    history: Vec<report::IterationRecord>,
+    info: SolveInfo,
+) -> ContactOutcome {
+    let mut pressure = vec![0.0; set.len()];
+    let (mut lc, mut max_pen) = (0.0, 0.0f64);
+    for (k, el) in set.elements().iter().enumerate() {
+        if !active[k] {
+            continue;
+        }
+        let ue = element_values(u, &el.nodes);
+        pressure[k] = set.pressure(k, &ue);
+        lc += 0.5 * el.edge_length;
+        let opening = set.opening(k, &ue);
+        if el.edge_length > 0.0 {
+            max_pen = max_pen.max(-opening / el.edge_length);
+        }
+    }
+    let report = ContactReport {
+        iterations: history.len(),
+        elements: set.len(),
+        active: active.iter().filter(|&&a| a).count(),
+        contact_length: lc,
+        max_penetration: max_pen,
+        history,
+        info,
+    };
+    ContactOutcome {
+        active,
+        pressure,
+        laws: set.laws().to_vec(),
+        report,
+    }
+}

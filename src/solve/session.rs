@@ -1,0 +1,226 @@
+//! What a solve derives from the structure of a problem — the unknowns,
+//! the sparsity pattern, the element slots, the contact mesh B, the
+//! symbolic analysis with its factor, and the storage of the assembled
+//! system — kept and reused by every solve while the structure (mesh,
+//! prescribed DOFs, contact pairs) is unchanged.
+
+use std::time::Instant;
+
+use rayon::prelude::*;
+
+use super::report::{SolveInfo, Timings};
+use super::system::{AssembledSystem, SystemMatrix};
+use crate::contact::{self, ContactElement, ContactPair};
+use crate::error::Result;
+use crate::fem::assembly::{DofMap, Pattern, Slots};
+use crate::fem::body::{Softened, Target};
+use crate::fem::element_loop::ElementLoop;
+use crate::fem::mesh::Mesh;
+use crate::linalg::{AnalyseParams, Cholesky, Ordering};
+
+/// Choices of the factorisation that change no result beyond round-off.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Settings {
+    /// The fill-reducing ordering.
+    pub ordering: Ordering,
+    /// Factorise the two subtrees of a nested dissection concurrently.
+    pub parallel_subtrees: bool,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings {
+            ordering: Ordering::Auto,
+            parallel_subtrees: true,
+        }
+    }
+}
+
+/// A symbolic analysis with its factor, and what it was made for.
+pub(crate) struct Analysis {
+    /// The unknowns numbered last (the condensed contact interface, or none).
+    last: Vec<usize>,
+    /// The value positions it was told are zero.
+    zeros: Vec<usize>,
+    /// The settings it was made with.
+    settings: Settings,
+    chol: Cholesky,
+}
+
+/// What a solve needs of the analysis.
+pub(crate) struct Wanted<'a> {
+    /// The unknowns to number last; `None` accepts any.
+    pub last: Option<&'a [usize]>,
+    /// Value positions that are zero in every matrix of this solve, for a
+    /// new analysis.
+    pub zeros: &'a [usize],
+    /// Whether a value position is zero in every matrix of this solve: an
+    /// existing analysis fits only while all of its zeros still are.
+    pub is_zero: &'a dyn Fn(usize) -> bool,
+}
+
+/// Everything derived from one structure of a problem.
+pub(crate) struct Session {
+    /// The structure epoch of the problem it was built for.
+    structure: u64,
+    /// The unknowns.
+    pub dofs: DofMap,
+    /// The pattern of the reduced matrix: body triangles and every element
+    /// of B (stored zeros while inactive, so that the symbolic analysis
+    /// survives activation).
+    pub pattern: Pattern,
+    /// Each mesh triangle's [`Slots`] in `pattern`.
+    pub slots: Vec<Slots>,
+    /// The contact mesh B of all pairs.
+    pub contact: Vec<ContactElement>,
+    /// The symbolic analysis and factor, made on first need.
+    pub analysis: Option<Analysis>,
+    /// The assembled system: the storage of the matrix values, allocated
+    /// with the pattern.
+    pub system: AssembledSystem,
+    /// The revision of the problem whose solution `system` holds the final
+    /// matrix of, if any.
+    system_of: Option<u64>,
+}
+
+impl Session {
+    /// Derives the unknowns (the DOFs of used nodes that `is_prescribed`
+    /// does not fix), B of every pair, the pattern and the slots.
+    pub fn new(
+        structure: u64,
+        mesh: &Mesh,
+        is_prescribed: impl Fn(usize) -> bool,
+        pairs: &[ContactPair],
+    ) -> Result<Session> {
+        let n_nodes = mesh.nodes().len();
+        let used = mesh.node_body();
+        let dofs = DofMap::new(n_nodes, 2, |g| used[g / 2].is_some() && !is_prescribed(g));
+        let mut contact = Vec::new();
+        for (i, p) in pairs.iter().enumerate() {
+            let mut elements = match &p.user_mesh {
+                None => contact::build(mesh, i, p.tag_a, p.tag_b)?,
+                Some(tris) => contact::check_user_mesh(mesh, i, p.tag_a, p.tag_b, tris)?.0,
+            };
+            contact.append(&mut elements);
+        }
+        let mut elements: Vec<[usize; 3]> = mesh.triangles().to_vec();
+        elements.extend(contact.iter().map(|e| e.nodes));
+        let pattern = Pattern::build(&dofs, n_nodes, &elements);
+        drop(elements);
+        let system = AssembledSystem::new(pattern.nnz());
+        let slots = triangle_slots(mesh, &dofs, &pattern);
+        Ok(Session {
+            structure,
+            dofs,
+            pattern,
+            slots,
+            contact,
+            analysis: None,
+            system,
+            system_of: None,
+        })
+    }
+
+    /// The structure epoch it was built for.
+    pub fn structure(&self) -> u64 {
+        self.structure
+    }
+
+    /// Assembles the bodies' part into the system (no contact element in)
+    /// for the global vectors (external forces, prescribed values) `loads`.
+    /// Returns the elements tempering softens.
+    pub fn assemble_body(
+        &mut self,
+        elements: &ElementLoop<'_>,
+        loads: (&[f64], &[f64]),
+    ) -> Result<Softened> {
+        let target = Target {
+            dofs: &self.dofs,
+            pattern: &self.pattern,
+            slots: &self.slots,
+        };
+        let n_contact = self.contact.len();
+        self.system
+            .assemble_body(elements, target, loads, n_contact)
+    }
+
+    /// Records that the assembled system is the final one of the solve of
+    /// problem revision `revision` (`None`: of no solve).
+    pub fn set_system_of(&mut self, revision: Option<u64>) {
+        self.system_of = revision;
+    }
+
+    /// The final matrix of the solve of problem revision `revision`.
+    pub fn system_matrix(&self, revision: u64) -> Option<SystemMatrix<'_>> {
+        (self.system_of == Some(revision)).then(|| self.system.matrix(&self.pattern, &self.dofs))
+    }
+}
+
+/// Each mesh triangle's [`Slots`] in `pattern`.
+fn triangle_slots(mesh: &Mesh, dofs: &DofMap, pattern: &Pattern) -> Vec<Slots> {
+    let mut slots = vec![Slots::SEARCH; mesh.triangles().len()];
+    const CHUNK: usize = 1 << 14;
+    slots
+        .par_chunks_mut(CHUNK)
+        .zip(mesh.triangles().par_chunks(CHUNK))
+        .for_each(|(slots, tris)| {
+            for (s, tri) in slots.iter_mut().zip(tris) {
+                let mut gd = [0usize; 6];
+                dofs.element_dofs(tri, &mut gd);
+                *s = pattern.slots(&gd.map(|g| dofs.free(g)));
+            }
+        });
+    slots
+}
+
+/// The factorisation of `analysis`, analysed as `want` asks with
+/// `settings`: the existing one while it fits, else a new symbolic
+/// analysis (timed). Fills the factor's sizes into `info`.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn factorisation<'a>(
+    analysis: &'a mut Option<Analysis>,
+    (mesh, dofs, pattern): (&Mesh, &DofMap, &Pattern),
+    settings: Settings,
+    want: Wanted<'_>,
+    timings: &mut Timings,
+    info: &mut SolveInfo,
+) -> Result<&'a mut Cholesky> {
+    let fits = analysis.as_ref().is_some_and(|a| {
+        a.settings == settings
+            && want.last.is_none_or(|last| a.last == last)
+            && a.zeros.iter().all(|&p| (want.is_zero)(p))
+    });
+    if !fits {
+        let t0 = Instant::now();
+        let last = want.last.unwrap_or(&[]);
+        // Drop the old factor first: two at once may not fit in memory.
+        *analysis = None;
+        // The unknowns' coordinates are only needed here (17 MB at 1M
+        // unknowns), so they are not kept.
+        let coords: Vec<[f64; 2]> = dofs
+            .free_to_global()
+            .iter()
+            .map(|&g| mesh.nodes()[g / 2])
+            .collect();
+        let params = AnalyseParams {
+            ordering: settings.ordering,
+            coords: Some(&coords),
+            last,
+            zeros: want.zeros,
+            parallel_subtrees: settings.parallel_subtrees,
+        };
+        let chol = Cholesky::analyse(pattern, &params)?;
+        *analysis = Some(Analysis {
+            last: last.to_vec(),
+            zeros: want.zeros.to_vec(),
+            settings,
+            chol,
+        });
+        timings.analysis += t0.elapsed().as_secs_f64();
+    }
+    let chol = &mut analysis.as_mut().expect("just analysed").chol;
+    info.factor_nnz = chol.factor_nnz();
+    info.factorization_bytes = chol.factorization_bytes();
+    info.split_factorization = chol.is_split();
+    Ok(chol)
+}

@@ -1,0 +1,17 @@
+//! The verification harness, outside the shipped core (Cargo feature
+//! `studies`, off by default): the seed's scenes and Hertz contact
+//! ([`scenes`]), an independent exact contact solver ([`oracle`]),
+//! manufactured solutions and norms ([`verification`]), a tempered Poisson
+//! solver ([`laplace`]), structured and graded triangulations
+//! ([`meshgen`]) and the quadrature their norms use ([`quadrature`]).
+//!
+//! The tests, examples and the report use it; the C library does not carry
+//! it. Its modules keep their old paths (`tfem::scenes`, …) as
+//! re-exports.
+
+pub mod laplace;
+pub mod meshgen;
+pub mod oracle;
+pub mod quadrature;
+pub mod scenes;
+pub mod verification;
