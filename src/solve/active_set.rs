@@ -459,3 +459,253 @@ fn format_history(h: &[IterationRecord]) -> String {
         .collect();
     items.join(" ")
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::InversionTest;
+    use crate::fem::material::{Material, PlaneMode};
+    use crate::fem::mesh::Mesh;
+    use crate::model::{Component, Problem};
+    use crate::solve::session::{Session, Settings, Wanted, factorisation};
+
+    /// Two n×2-cell blocks of unit length stacked at y = 0 (separate
+    /// nodes), pressed together by a pressure on the first `loaded` top
+    /// edges of the upper one; the lower one is supported at its bottom,
+    /// each has u_x = 0 at x = 0.
+    fn two_blocks(n: usize, loaded: usize) -> Problem {
+        let h = 1.0 / n as f64;
+        let (mut nodes, mut tris, mut bodies) = (Vec::new(), Vec::new(), Vec::new());
+        let mut edges = Vec::new();
+        let mut tags = Vec::new();
+        for (body, y0) in [(1, -2.0 * h), (2, 0.0)] {
+            let first = nodes.len();
+            let id = |i: usize, j: usize| first + j * (n + 1) + i;
+            for j in 0..3 {
+                for i in 0..=n {
+                    nodes.push([i as f64 * h, y0 + j as f64 * h]);
+                }
+            }
+            for j in 0..2 {
+                for i in 0..n {
+                    let (a, b, c, d) = (id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+                    tris.extend([[a, b, c], [a, c, d]]);
+                    bodies.extend([body, body]);
+                }
+            }
+            for i in 0..n {
+                let (bottom, top) = ([id(i, 0), id(i + 1, 0)], [id(i, 2), id(i + 1, 2)]);
+                edges.extend([bottom, top]);
+                let top_tag = if body == 2 && i < loaded {
+                    22
+                } else {
+                    10 * body + 1
+                };
+                tags.extend([10 * body, top_tag]);
+            }
+        }
+        let mut mesh = Mesh::new(nodes, tris, bodies, 0).unwrap();
+        mesh.set_boundary_edges(&edges, &tags).unwrap();
+        let mut p = Problem::new();
+        p.set_mesh(mesh);
+        for body in [1, 2] {
+            let m = Material::new(1e3 * body as f64, 0.3, PlaneMode::Strain, "block").unwrap();
+            p.set_material(body, m).unwrap();
+        }
+        p.fix_edges(10, Component::Y, 0.0).unwrap();
+        p.fix(0, Component::X, 0.0).unwrap();
+        p.fix(3 * (n + 1), Component::X, 0.0).unwrap();
+        p.add_pressure(22, 1.0).unwrap();
+        p.add_contact_pair(11, 20).unwrap();
+        p
+    }
+
+    /// Solves `p` with the active set `active` held fixed: one loop
+    /// iteration from it, refactorising (`condense` false) or condensing
+    /// the changes relative to the initial set. Returns the final iterate's
+    /// values over the unknowns after `recover`, and the interface unknowns.
+    fn solve_with(
+        p: &Problem,
+        active: Option<Vec<bool>>,
+        condense: bool,
+    ) -> (Vec<f64>, Vec<usize>) {
+        let mesh = p.mesh().unwrap();
+        let prescribed_dof = |g| p.is_prescribed(g);
+        let mut session = Session::new(0, mesh, prescribed_dof, p.contact_pairs()).unwrap();
+        let elements = p.elements().unwrap();
+        let prescribed = p.prescribed_vector().unwrap();
+        let f_ext = p.load_vector().unwrap();
+        session
+            .assemble_body(&elements, (&f_ext, &prescribed))
+            .unwrap();
+        let Session {
+            dofs,
+            pattern,
+            contact,
+            analysis,
+            system,
+            ..
+        } = &mut session;
+        let options = ContactOptions {
+            test: InversionTest::Linearised,
+            ..Default::default()
+        };
+        let material = |b: i32| *elements.material(b);
+        let set = ContactSet::new(
+            mesh,
+            contact,
+            p.contact_pairs(),
+            material,
+            (dofs, &prescribed),
+            &options,
+        )
+        .unwrap();
+        let interface = set.interface_unknowns();
+        let want = Wanted {
+            last: condense.then_some(&interface[..]),
+            zeros: &[],
+            is_zero: &|_| false,
+        };
+        let (mut timings, mut info) = (Timings::default(), SolveInfo::default());
+        let structure = (mesh, &*dofs, &*pattern);
+        let chol = factorisation(
+            analysis,
+            structure,
+            Settings::default(),
+            want,
+            &mut timings,
+            &mut info,
+        )
+        .unwrap();
+        let input = LoopInput {
+            at: Structure {
+                mesh,
+                dofs,
+                pattern,
+            },
+            elements: &elements,
+            set: &set,
+            prescribed: &prescribed,
+            interface: condense.then(|| interface.clone()),
+            options,
+        };
+        let mut lp = ActiveSetLoop::new(input, (chol, system), (&mut timings, &mut info));
+        match active {
+            // The initial set, solved once (and condensed when asked).
+            None => lp.solve(1).unwrap(),
+            Some(active) if condense => {
+                lp.solve(1).unwrap();
+                lp.active = active;
+                assert!(
+                    lp.condensed_step().unwrap(),
+                    "the interface matrix is definite"
+                );
+                assert!(matches!(lp.iterate, Iterate::Condensed(_)));
+            }
+            Some(active) => {
+                lp.active = active;
+                lp.solve(1).unwrap();
+            }
+        }
+        lp.history.push(IterationRecord {
+            active: 0,
+            switched_on: 0,
+            switched_off: 0,
+        });
+        (lp.recover().unwrap().x, interface)
+    }
+
+    fn assert_close(a: &[f64], b: &[f64], tol: f64) {
+        let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        for (i, (x, y)) in a.iter().zip(b).enumerate() {
+            assert!(
+                (x - y).abs() <= tol * scale,
+                "unknown {i}: {x} vs {y} (scale {scale})"
+            );
+        }
+    }
+
+    /// The set with the first `k` elements of B switched off.
+    fn released(p: &Problem, k: usize) -> Vec<bool> {
+        let mesh = p.mesh().unwrap();
+        let b = crate::contact::build(mesh, 0, 11, 20).unwrap();
+        (0..b.len()).map(|e| e >= k).collect()
+    }
+
+    #[test]
+    fn a_condensed_step_gives_the_interface_values_of_a_full_solve_of_its_set() {
+        let p = two_blocks(8, 8);
+        let active = released(&p, 4);
+        let (full, interface) = solve_with(&p, Some(active.clone()), false);
+        let (condensed, _) = solve_with(&p, Some(active), true);
+        let pick = |x: &[f64]| interface.iter().map(|&i| x[i]).collect::<Vec<_>>();
+        assert_close(&pick(&condensed), &pick(&full), 1e-12);
+    }
+
+    #[test]
+    fn the_recovery_after_a_condensed_step_gives_the_whole_field_of_a_full_solve() {
+        let p = two_blocks(8, 8);
+        let active = released(&p, 6);
+        let (full, _) = solve_with(&p, Some(active.clone()), false);
+        let (recovered, _) = solve_with(&p, Some(active), true);
+        assert_close(&recovered, &full, 1e-12);
+    }
+
+    #[test]
+    fn settling_at_once_refines_the_first_solution_into_the_full_solve() {
+        let p = two_blocks(8, 8);
+        let (full, _) = solve_with(&p, None, false);
+        let (reference, _) = solve_with(&p, None, true);
+        assert_close(&reference, &full, 1e-13);
+    }
+
+    #[test]
+    fn a_set_visited_before_is_a_cycle_and_a_new_one_is_not() {
+        let mut visited = Visited::default();
+        assert!(visited.first_visit(&[true, false, true]));
+        assert!(visited.first_visit(&[true, true, true]));
+        assert!(!visited.first_visit(&[true, false, true]));
+        assert!(visited.first_visit(&[false, false, false]));
+    }
+
+    #[test]
+    fn a_loop_that_does_not_settle_stops_at_the_cap_with_its_history() {
+        // Pressed on its left quarter only, the upper block lifts off at
+        // the right: the first inversion test changes the set.
+        let mut model = crate::Model::new();
+        let p = two_blocks(8, 2);
+        model.set_mesh(p.mesh().unwrap().clone());
+        for body in [1, 2] {
+            model
+                .set_material(body, *p.material(body).unwrap())
+                .unwrap();
+        }
+        for (g, v) in p.constraints() {
+            let c = if g % 2 == 0 {
+                Component::X
+            } else {
+                Component::Y
+            };
+            model.fix(g / 2, c, v).unwrap();
+        }
+        model.add_pressure(22, 1.0).unwrap();
+        model.add_contact_pair(11, 20).unwrap();
+        let capped = ContactOptions {
+            max_iterations: 1,
+            ..Default::default()
+        };
+        let err = model
+            .solve_contact(&capped)
+            .expect_err("one iteration is not enough");
+        assert_eq!(err.status(), Status::NotConverged);
+        assert!(
+            err.message().starts_with(
+                "the active set did not settle in 1 iterations; history [active 16, +0, -"
+            ),
+            "{}",
+            err.message()
+        );
+        let settled = model.solve_contact(&ContactOptions::default()).unwrap();
+        assert!(settled.iterations > 1 && settled.active < 16);
+    }
+}
