@@ -16,6 +16,13 @@ use tfem::scenes::TwoBlocks;
 use tfem::verification::{StudyPoint, fitted_rate, run_manufactured_elasticity};
 use tfem::{ContactOptions, Material, Ordering, PlaneMode, Tempering};
 
+/// The reference values shipped in the repository (see
+/// `docs/reference/README.md`), found from any working directory.
+const REFERENCE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/docs/reference/two_blocks_canonical.json"
+);
+
 struct Args {
     quick: bool,
     out: PathBuf,
@@ -26,7 +33,7 @@ fn args() -> Args {
     let mut a = Args {
         quick: false,
         out: PathBuf::from("docs"),
-        reference: PathBuf::from("../shared/reference/two_blocks_canonical.json"),
+        reference: PathBuf::from(REFERENCE),
     };
     let mut it = std::env::args().skip(1);
     while let Some(x) = it.next() {
@@ -262,7 +269,12 @@ fn seed(report: &mut String, a: &Args) {
          ordering, symbolic), assembly, the one numeric factorisation, solves, dense interface work, \
          whole contact solve (without the mesh). Memory: allocated by pattern, values, factor and \
          interface (peak process memory: the speed section).\n",
-        a.reference.display()
+        // Inside the repository, the path relative to it: the report is
+        // committed, so it names no directory of the machine it ran on.
+        a.reference
+            .strip_prefix(env!("CARGO_MANIFEST_DIR"))
+            .unwrap_or(&a.reference)
+            .display()
     )
     .unwrap();
     let mut curves = Vec::new();

@@ -18,6 +18,13 @@ use serde_json::{Value, json};
 use tfem::scenes::{TwoBlocks, TwoBlocksResult, TwoBlocksScene};
 use tfem::{ContactLaw, ContactOptions, InversionTest};
 
+/// The reference values shipped in the repository (see
+/// `docs/reference/README.md`), found from any working directory.
+const REFERENCE: &str = concat!(
+    env!("CARGO_MANIFEST_DIR"),
+    "/docs/reference/two_blocks_canonical.json"
+);
+
 #[derive(Debug, Clone, Copy, ValueEnum)]
 enum Law {
     Frictionless,
@@ -92,8 +99,9 @@ struct Args {
     /// Where pictures and VTU files go.
     #[arg(long, default_value = "out")]
     out: PathBuf,
-    /// Reference values of the canonical scene (compared when found).
-    #[arg(long, default_value = "../shared/reference/two_blocks_canonical.json")]
+    /// Reference values of the canonical scene (compared when found;
+    /// default: the copy shipped in the repository, `docs/reference/`).
+    #[arg(long, default_value = REFERENCE)]
     reference: PathBuf,
 }
 
