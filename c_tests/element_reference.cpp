@@ -1,6 +1,6 @@
 // Independent check of tfem's tempered element matrices.
 //
-// The reference below is written from the formula of METHOD.md §2 with
+// The reference below is written from the formula of docs/method.md §2 with
 // Eigen in long double precision, without calling tfem:
 //   F = [x2-x1, x3-x1; y2-y1, y3-y1],  J = det F,  adj(F)
 //   rows of G = grad_xi(phi_i) * adj(F)

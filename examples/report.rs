@@ -144,7 +144,7 @@ fn manufactured(report: &mut String, a: &Args) {
         report,
         "u = (sin πx sin πy, sin 2πx sin πy) on the unit square, plane strain ν = 0.3, u prescribed on the \
          boundary. *Band*: the mesh contains a row of flattened caps of height 1e-9 along y = 1/2 \
-         (METHOD.md §1). Energy error over the elements with J > 0 (the caps' true gradients are what \
+         (docs/method.md §1). Energy error over the elements with J > 0 (the caps' true gradients are what \
          TFEM tempers, so on band meshes it measures the discrete function, not the tempered energy).\n"
     )
     .unwrap();
@@ -261,7 +261,7 @@ fn seed(report: &mut String, a: &Args) {
     writeln!(report, "## Error against run time: the seed scene\n").unwrap();
     writeln!(
         report,
-        "Canonical parameters (METHOD.md §4), frictionless law, defaults. Relative errors against the \
+        "Canonical parameters (docs/method.md §4), frictionless law, defaults. Relative errors against the \
          independent reference (GetFEM, exact frictionless contact, extrapolated; `{}`), when found, \
          and against the exact frictionless oracle on the same mesh (`tfem::oracle`: node-to-node \
          multipliers, sparse LU; up to h = 1/{oracle_max}): *same set* says whether its contact node \

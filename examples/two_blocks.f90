@@ -1,5 +1,5 @@
 ! The seed scene from Fortran: two blocks in frictionless contact, canonical
-! parameters (METHOD.md section 4), 2C/L = 0.2, h = 1/32, meshed here with
+! parameters (docs/method.md section 4), 2C/L = 0.2, h = 1/32, meshed here with
 ! the same structured triangulation as the Rust example, 1-based indices.
 !
 !   gfortran include/tfem.f90 examples/two_blocks.f90 -Ltarget/release -ltfem \

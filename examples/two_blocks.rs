@@ -1,4 +1,4 @@
-//! The seed scene (METHOD.md §4): two elastic blocks in frictionless contact,
+//! The seed scene (docs/method.md §4): two elastic blocks in frictionless contact,
 //! pressed over 2C on top and supported over 2C below. Prints the contact
 //! length ℓc, the opening at the corner, the top displacement and the
 //! compliance, compares them with the independent reference when the

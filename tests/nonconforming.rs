@@ -1,4 +1,4 @@
-//! Non-conforming interfaces (METHOD.md §5): the contact mesh B triangulates
+//! Non-conforming interfaces (docs/method.md §5): the contact mesh B triangulates
 //! the strip between two interface polylines whose nodes do not match; the
 //! activation of inverted elements applies unchanged.
 

@@ -1,4 +1,4 @@
-// The seed scene (METHOD.md section 4) for Gmsh: two blocks touching along
+// The seed scene (docs/method.md section 4) for Gmsh: two blocks touching along
 // y = 0 with distinct, coincident interface nodes (two curves, same
 // transfinite subdivision), nodes on x = L/2 and x = L/2 +- C.
 //   gmsh -2 -setnumber h 0.03125 -format msh41 examples/meshes/two_blocks.geo -o two_blocks.msh

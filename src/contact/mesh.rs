@@ -334,7 +334,7 @@ pub fn check_user_mesh(
     Ok((out, flipped))
 }
 
-/// Builds B for a pair whose interface nodes do not match (METHOD.md §5):
+/// Builds B for a pair whose interface nodes do not match (docs/method.md §5):
 /// both interfaces are chained into polylines running the same way, every
 /// node gets the arclength parameter of its projection on the first
 /// polyline (extended beyond its ends), and the strip between them is

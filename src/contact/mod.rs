@@ -1,5 +1,5 @@
 //! Frictionless contact by activating inverted elements of a contact mesh B
-//! (METHOD.md §3): the contact pairs and options, the construction and
+//! (docs/method.md §3): the contact pairs and options, the construction and
 //! checking of B ([`mesh`]), the constitutive law of its elements
 //! ([`law`]) and the set of its elements in one solve, which owns their
 //! data and the inversion test ([`set`]).

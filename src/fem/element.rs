@@ -1,4 +1,4 @@
-//! The tempered P1 triangle (METHOD.md §2), in the adjugate form.
+//! The tempered P1 triangle (docs/method.md §2), in the adjugate form.
 //!
 //! With F = ∂x/∂ξ, J = det F and adj(F) its adjugate, the reference
 //! gradients mapped by the adjugate are g_i = ∇_ξφ_i · adj(F), so that
@@ -69,7 +69,7 @@ impl TriGeometry {
     }
 }
 
-/// How Jmin is chosen (METHOD.md §2).
+/// How Jmin is chosen (docs/method.md §2).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Tempering {
     /// Jmin = h_e³/λ with λ = the larger side of the mesh's bounding box

@@ -243,7 +243,7 @@ impl MeshBuilder {
 /// The unit square with n × n cells and, when `band` is `Some(eps)`, a band
 /// of flattened triangles along y = 1/2 (n even): a row of nodes at height
 /// 1/2 + eps placed at the midpoints between the nodes of the row y = 1/2,
-/// so that the band consists of caps of height eps (METHOD.md §1; the
+/// so that the band consists of caps of height eps (docs/method.md §1; the
 /// locking study of the TFEM paper). Returns the builder; its boundary is
 /// the square's.
 pub fn unit_square(n: usize, band: Option<f64>) -> MeshBuilder {

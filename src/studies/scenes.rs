@@ -1,4 +1,4 @@
-//! The seed's test case (METHOD.md §4): two rectangles in contact along
+//! The seed's test case (docs/method.md §4): two rectangles in contact along
 //! their whole length, a pressure on the top of the upper one over 2C, the
 //! bottom of the lower one supported over 2C, u_x = 0 on the symmetry line.
 //! Meshed by the built-in structured triangulator with nodes on x = L/2 and
@@ -24,7 +24,7 @@ pub const TAG_CONTACT_UPPER: i32 = 3;
 pub const TAG_LOAD: i32 = 4;
 
 /// Parameters of the two-block scene. [`Default`] gives the canonical
-/// parameters of METHOD.md §4 with 2C/L = 0.2 and h = 1/64.
+/// parameters of docs/method.md §4 with 2C/L = 0.2 and h = 1/64.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TwoBlocks {
     /// Young's modulus of the lower body Ω1.
