@@ -102,7 +102,7 @@ git_before=$(git status --porcelain --untracked-files=all 2>/dev/null || true)
 rm -f build/tfem/CMakeCache.txt # a fresh configure (cargo's build in build/tfem/cargo is kept)
 (unset CARGO_TARGET_DIR; timed "configure" configure -S . -B build/tfem -DCMAKE_BUILD_TYPE=Release)
 timed "build (cargo into build/tfem/cargo)" env -u CARGO_TARGET_DIR cmake --build build/tfem >/dev/null
-changed=$(find . -path ./build -prune -o -path ./.git -prune -o -newer "$stamp" -print)
+changed=$(find . -mindepth 1 -path ./build -prune -o -path ./.git -prune -o -newer "$stamp" -print)
 rm -f "$stamp"
 if [ -n "$changed" ]; then
   echo "the CMake build wrote into the source tree:" >&2
