@@ -38,16 +38,132 @@ cargo test --release
 echo "== the report, quick mode (the full one is docs/report.md)"
 cargo run --release --example report -- --quick --out build/report
 
-echo "== CMake package: build, install, find_package from C, C++ and Fortran"
+echo "== CMake package: out-of-tree build, SONAME, install, find_package and pkg-config clients, moved prefix"
+# Configures fail on any CMake warning; the cargo build of CMake goes into
+# build/tfem/cargo (CARGO_TARGET_DIR unset: the default is what is tested)
+# and must leave the source tree alone. The clients must record NEEDED
+# libtfem.so.0 and keep running once the install prefix has been moved:
+# the installed client through its RUNPATH $ORIGIN/../lib, the build-tree
+# and pkg-config clients through LD_LIBRARY_PATH.
+timed() { # timed LABEL COMMAND...: runs COMMAND, prints (on stderr) how long it took
+  local label=$1 t0 t1
+  shift
+  t0=$(date +%s.%N)
+  "$@"
+  t1=$(date +%s.%N)
+  awk -v l="$label" -v a="$t0" -v b="$t1" 'BEGIN { printf "   %s: %.1f s\n", l, b - a }' >&2
+}
+configure() { # configure ARGS...: cmake configure, quiet, failing on warnings
+  local err
+  err=$(mktemp)
+  if ! cmake "$@" >/dev/null 2>"$err"; then
+    cat "$err" >&2
+    exit 1
+  fi
+  if grep -Eq 'CMake (Deprecation )?Warning' "$err"; then
+    echo "cmake $* printed warnings:" >&2
+    cat "$err" >&2
+    exit 1
+  fi
+  rm -f "$err"
+}
+soname_of() { # the SONAME line of readelf -d
+  readelf -d "$1" | grep '(SONAME)' || { echo "$1 has no SONAME" >&2; exit 1; }
+}
+expect_soname() { # expect_soname LIB
+  local line
+  line=$(soname_of "$1")
+  echo "   $1:$line"
+  [[ $line == *"Library soname: [libtfem.so.0]" ]] || { echo "$1: SONAME is not libtfem.so.0" >&2; exit 1; }
+}
+expect_needed() { # expect_needed EXE: NEEDED libtfem.so.0 (the SONAME, not a path)
+  local needed
+  needed=$(readelf -d "$1" | grep '(NEEDED)')
+  echo "   $1: $(grep libtfem <<<"$needed" | sed 's/^ *//')"
+  grep -q 'Shared library: \[libtfem.so.0\]' <<<"$needed" || { echo "$1 does not need libtfem.so.0" >&2; exit 1; }
+  if grep -q 'Shared library: \[[^]]*/' <<<"$needed"; then
+    echo "$1 records a library by path:" >&2
+    echo "$needed" >&2
+    exit 1
+  fi
+}
+expect_resolved() { # expect_resolved EXE DIR [ENV...]: ldd finds libtfem.so.0 in DIR
+  local exe=$1 dir=$2 found
+  shift 2
+  found=$(env "$@" ldd "$exe" | awk '$1 == "libtfem.so.0" { print $3 }')
+  [ -n "$found" ] && [ "$(realpath "$found")" = "$(realpath "$dir/libtfem.so.0")" ] ||
+    { echo "$exe: libtfem.so.0 resolved to '$found', not in $dir" >&2; exit 1; }
+}
+
+stage="$PWD/build/stage"     # installed here, then moved to $prefix
 prefix="$PWD/build/prefix"
-cmake -S . -B build/tfem -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build/tfem >/dev/null
-cmake --install build/tfem --prefix "$prefix" >/dev/null
-cmake -S c_tests/external -B build/external -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
-cmake --build build/external >/dev/null
+stamp=$(mktemp)
+git_before=$(git status --porcelain --untracked-files=all 2>/dev/null || true)
+rm -f build/tfem/CMakeCache.txt # a fresh configure (cargo's build in build/tfem/cargo is kept)
+(unset CARGO_TARGET_DIR; timed "configure" configure -S . -B build/tfem -DCMAKE_BUILD_TYPE=Release)
+timed "build (cargo into build/tfem/cargo)" env -u CARGO_TARGET_DIR cmake --build build/tfem >/dev/null
+changed=$(find . -mindepth 1 -path ./build -prune -o -path ./.git -prune -o -newer "$stamp" -print)
+rm -f "$stamp"
+if [ -n "$changed" ]; then
+  echo "the CMake build wrote into the source tree:" >&2
+  echo "$changed" | head -20 >&2
+  exit 1
+fi
+if [ "$(git status --porcelain --untracked-files=all 2>/dev/null || true)" != "$git_before" ]; then
+  echo "the CMake build changed git status:" >&2
+  git status --porcelain >&2
+  exit 1
+fi
+[ -d build/tfem/cargo/release ] || { echo "cargo did not build into build/tfem/cargo" >&2; exit 1; }
+expect_soname "${CARGO_TARGET_DIR:-target}/release/libtfem.so" # cargo build --release
+expect_soname build/tfem/lib/libtfem.so.0.1.0                   # built by CMake
+
+rm -rf "$stage" "$prefix" build/external build/pkgconfig
+timed "install" cmake --install build/tfem --prefix "$stage" >/dev/null
+expect_soname "$stage/lib/libtfem.so.0.1.0"
+[ "$(readlink "$stage/lib/libtfem.so")" = libtfem.so.0 ] &&
+  [ "$(readlink "$stage/lib/libtfem.so.0")" = libtfem.so.0.1.0 ] &&
+  [ -f "$stage/lib/libtfem.so.0.1.0" ] && [ ! -L "$stage/lib/libtfem.so.0.1.0" ] ||
+  { echo "installed libtfem.so -> libtfem.so.0 -> libtfem.so.0.1.0 missing:" >&2; ls -l "$stage/lib" >&2; exit 1; }
+for f in include/tfem.h include/tfem.f90 lib/cmake/tfem/tfemConfig.cmake lib/pkgconfig/tfem.pc; do
+  [ -f "$stage/$f" ] || { echo "$stage/$f not installed" >&2; exit 1; }
+done
+
+# find_package client (c_tests/external), built, then installed next to tfem
+timed "find_package client: configure" configure -S c_tests/external -B build/external -DCMAKE_PREFIX_PATH="$stage"
+timed "find_package client: build" cmake --build build/external >/dev/null
+cmake --install build/external --prefix "$stage" >/dev/null
+expect_needed build/external/tfem_user
+expect_needed "$stage/bin/tfem_user"
 build/external/tfem_user
 
+# pkg-config client: the same main.c
+mkdir -p build/pkgconfig
+pc_flags=$(PKG_CONFIG_PATH="$stage/lib/pkgconfig" pkg-config --cflags --libs tfem)
+[ "$(PKG_CONFIG_PATH="$stage/lib/pkgconfig" pkg-config --modversion tfem)" = 0.1.0 ] ||
+  { echo "tfem.pc: wrong Version" >&2; exit 1; }
+timed "pkg-config client: build" cc c_tests/external/main.c $pc_flags -o build/pkgconfig/tfem_user
+expect_needed build/pkgconfig/tfem_user
+LD_LIBRARY_PATH="$stage/lib" build/pkgconfig/tfem_user
+
+# move the install: nothing may depend on its old path
+mv "$stage" "$prefix"
+expect_resolved "$prefix/bin/tfem_user" "$prefix/lib" -u LD_LIBRARY_PATH
+env -u LD_LIBRARY_PATH "$prefix/bin/tfem_user"
+expect_resolved build/external/tfem_user "$prefix/lib" LD_LIBRARY_PATH="$prefix/lib"
+LD_LIBRARY_PATH="$prefix/lib" build/external/tfem_user
+LD_LIBRARY_PATH="$prefix/lib" build/pkgconfig/tfem_user
+[ "$(realpath "$(PKG_CONFIG_PATH="$prefix/lib/pkgconfig" pkg-config --variable=libdir tfem)")" = "$prefix/lib" ] ||
+  { echo "tfem.pc does not follow the moved prefix" >&2; exit 1; }
+
+# TFEM_CARGO_TARGET_DIR follows CARGO_TARGET_DIR: the library cargo built above
+echo "   CARGO_TARGET_DIR=${CARGO_TARGET_DIR:-$PWD/target}:"
+rm -rf build/tfem-shared-target
+CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$PWD/target}" timed "configure" configure -S . -B build/tfem-shared-target -DCMAKE_BUILD_TYPE=Release
+timed "build (cargo has nothing to do)" cmake --build build/tfem-shared-target >/dev/null
+cmp build/tfem-shared-target/lib/libtfem.so.0.1.0 "${CARGO_TARGET_DIR:-target}/release/libtfem.so"
+
 echo "== ctest (C, C++, Fortran tests and seed-scene regression baselines)"
-cmake -S c_tests -B build/c_tests -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix" >/dev/null
-cmake --build build/c_tests -j 2 >/dev/null
-ctest --test-dir build/c_tests --output-on-failure
+timed "configure (against the moved install)" configure -S c_tests -B build/c_tests -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix"
+timed "build" cmake --build build/c_tests -j 2 >/dev/null
+timed "ctest" ctest --test-dir build/c_tests --output-on-failure
