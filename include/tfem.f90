@@ -1,121 +1,306 @@
 ! Generated from include/tfem.h by tests/fortran.rs. Do not edit:
 ! regenerate with `TFEM_BLESS=1 cargo test --test fortran`.
 !
-! Fortran interface to tfem (ISO_C_BINDING). Every function returns an
-! integer(c_int) status (TFEM_STATUS_OK = 0). Pass index_base = 1 to
-! tfem_set_mesh to use 1-based node, triangle and edge numbers in every
-! call and message. The model handle is a type(c_ptr). See tfem.h for
-! units, sizes and the thread contract; tfem_error_message(model) returns
-! the last error as a Fortran string.
+! Fortran interface to tfem (ISO_C_BINDING): every function of tfem.h with its whole
+! documentation, the enums as named constants, the structs as bind(C) types, and
+! string helpers. From tfem.h:
+!
+! tfem -- the Tempered Finite Element Method for 2D elasticity and
+! frictionless contact. C ABI.
+!
+! Conventions
+! - Every function returns a tfem_status; TFEM_STATUS_OK (0) is success.
+!   Status numbers are fixed forever and never reused. tfem_last_error()
+!   gives the message of the last failed call, naming the offending node,
+!   triangle, edge, body or argument.
+! - Indices (nodes, triangles, edges) use the index_base given to
+!   tfem_set_mesh (0 for C, 1 for Fortran) in every later call and in
+!   every message. Counts are int; buffer lengths are size_t, in elements.
+! - Output buffers are owned by the caller. Their length is checked and
+!   nothing is written when it is too short (TFEM_STATUS_BUFFER_TOO_SMALL).
+! - A failed call leaves the model as it was. Any change to the problem
+!   (mesh, materials, constraints, loads, contact pairs, tempering)
+!   discards previous results; results are computed when asked for.
+! - Units are the caller's: lengths, forces and moduli in one consistent
+!   system. Stresses and forces are per unit thickness (2D).
+! - No NaN or Inf is ever returned as a result with TFEM_STATUS_OK.
+!
+! Thread contract
+! - A tfem_model must be used by one thread at a time (no internal
+!   locking); different models may be used concurrently from different
+!   threads. The solver itself uses a thread pool internally.
+! - tfem_version, tfem_element_stiffness, tfem_laplacian_stiffness and
+!   tfem_contact_options_default are pure and thread-safe; their errors go
+!   to a per-thread slot read with tfem_last_error(NULL, ...).
+! - No panic crosses the boundary: an internal failure returns
+!   TFEM_STATUS_INTERNAL.
+!
+! In Fortran (`use tfem`), where it differs from the C conventions above
+! - The model handle is a type(c_ptr) from tfem_create, passed by value.
+! - Functions returning a tfem_status return an integer(c_int): compare it with the
+!   TFEM_STATUS_* parameters below. tfem_error_message([model]) returns the last error as a
+!   Fortran string (model omitted: the calling thread's model-free calls);
+!   tfem_warning_message(model, index) and tfem_version_string() return strings too.
+! - Indices: pass index_base = 1 to tfem_set_mesh (or tfem_load_gmsh) and every node, triangle
+!   and edge number of later calls and messages is 1-based, like Fortran arrays. Numbers that a
+!   function documents as 0-based stay 0-based.
+! - NULL: a pointer argument that the C documentation says may be NULL is OPTIONAL here: omit it
+!   (by keywords, or at the end of the list) and the library receives NULL (Fortran 2018 and
+!   TS 29113: an absent optional argument of a bind(C) procedure is passed as a null pointer).
+!   This needs a Fortran 2018 compiler mode: gfortran's default or -std=f2018, not -std=f2008.
+!   A nullable model handle is passed by value, which a bind(C) interface cannot make OPTIONAL:
+!   its generic has a specific without it instead (tfem_last_error(buffer, length),
+!   tfem_last_error_length()).
+! - Kinds: C int is integer(c_int), the default integer of gfortran, ifx, flang and nvfortran
+!   (unless built with -fdefault-integer-8 or -i8), so default integer counts, indices and
+!   index arrays are passed as they are; double is real(c_double), int64_t integer(c_int64_t).
+!   Buffer lengths (size_t) accept default integers too: see the generic interfaces below.
+! - Character buffers are character(kind=c_char) arrays (or strings, for generic functions); a
+!   path is NUL-terminated: append c_null_char.
+!
+! Generic interfaces
+! A function with a size_t length or a nullable model handle is a generic interface named like
+! the C function. Its specifics:
+! - the bind(C) interface itself, under the C name too, so that calls with integer(c_size_t)
+!   lengths (the kind of integer(c_int64_t) on 64-bit platforms), procedure actual arguments and
+!   c_funloc keep working as before;
+! - private module procedures that convert and forward to it, named after the C function with
+!   suffixes: _i takes every length as integer(tfem_length_kind) (c_int where size_t is wider, so
+!   default integers and literals; c_int64_t where size_t is c_int) and passes a negative length
+!   as 0, so that the call fails with TFEM_STATUS_BUFFER_TOO_SMALL; _no_<arg> omits a nullable
+!   model handle and passes c_null_ptr; _str takes a character(len=*) string for each character
+!   buffer (generic resolution needs matching ranks, so without it a string would no longer
+!   reach the array dummy by sequence association).
+! All the lengths of one call share one kind. For the reason of _str, pass the buffers of a
+! generic function as arrays or array sections, not as their first element (u(1)). Counts and
+! indices (C int) are not generic: integer(c_int) is already the default integer.
 module tfem
   use, intrinsic :: iso_c_binding
   implicit none
-  private :: c_strlen
+  private :: c_strlen, tfem_to_size_t
+  private :: tfem_last_error_i
+  private :: tfem_last_error_str
+  private :: tfem_last_error_str_i
+  private :: tfem_last_error_no_model
+  private :: tfem_last_error_no_model_i
+  private :: tfem_last_error_no_model_str
+  private :: tfem_last_error_no_model_str_i
+  private :: tfem_last_error_raw
+  private :: tfem_last_error_length_no_model
+  private :: tfem_get_warning_i
+  private :: tfem_get_warning_str
+  private :: tfem_get_warning_str_i
+  private :: tfem_get_warning_raw
+  private :: tfem_get_displacements_i
+  private :: tfem_get_element_strains_i
+  private :: tfem_get_element_stresses_i
+  private :: tfem_get_element_jacobians_i
+  private :: tfem_get_reactions_i
+  private :: tfem_get_system_matrix_i
+  private :: tfem_get_contact_active_i
+  private :: tfem_get_contact_pressure_i
+  private :: tfem_get_contact_elements_i
 
-  ! tfem_status
+  !> The kind of the lengths the generic interfaces accept besides integer(c_size_t): c_int (the
+  !! default integer) where size_t is wider, else c_int64_t.
+  integer, parameter :: tfem_length_kind = merge(c_int, c_int64_t, c_size_t /= c_int)
+
+  ! enum tfem_status: Outcome of a call. The numbers are part of the C ABI and are fixed forever: a
+  ! code is never renumbered or reused, new codes are appended.
+  !> Success.
   integer(c_int), parameter :: TFEM_STATUS_OK = 0
+  !> A required pointer argument was NULL.
   integer(c_int), parameter :: TFEM_STATUS_NULL_POINTER = 1
+  !> An argument is out of its documented range (the message names it).
   integer(c_int), parameter :: TFEM_STATUS_INVALID_ARGUMENT = 2
+  !> The mesh is invalid (the message names the node, triangle or edge).
   integer(c_int), parameter :: TFEM_STATUS_INVALID_MESH = 3
+  !> A material is invalid or missing (the message names the body).
   integer(c_int), parameter :: TFEM_STATUS_INVALID_MATERIAL = 4
+  !> The call is not allowed in the model's current state (e.g. a solve before a mesh was given,
+  !! results before a solve).
   integer(c_int), parameter :: TFEM_STATUS_INVALID_STATE = 5
+  !> A caller-owned output buffer is shorter than required.
   integer(c_int), parameter :: TFEM_STATUS_BUFFER_TOO_SMALL = 6
+  !> The stiffness matrix is singular or indefinite: some body is not restrained (the message names
+  !! it).
   integer(c_int), parameter :: TFEM_STATUS_SINGULAR = 7
+  !> The contact active-set loop did not converge (the message gives the history).
   integer(c_int), parameter :: TFEM_STATUS_NOT_CONVERGED = 8
+  !> A degenerate element cannot be integrated (zero Jacobian with tempering off); the message names
+  !! it.
   integer(c_int), parameter :: TFEM_STATUS_DEGENERATE_ELEMENT = 9
+  !> A contact pair or contact mesh is invalid (the message names it).
   integer(c_int), parameter :: TFEM_STATUS_INVALID_CONTACT = 10
+  !> A computed result is not finite (overflow); nothing was returned.
   integer(c_int), parameter :: TFEM_STATUS_NUMERICAL_FAILURE = 11
+  !> An internal error (a caught panic): please report it.
   integer(c_int), parameter :: TFEM_STATUS_INTERNAL = 12
+  !> Memory for the factorisation could not be allocated.
   integer(c_int), parameter :: TFEM_STATUS_OUT_OF_MEMORY = 13
+  !> A file could not be read or written (the message names it).
   integer(c_int), parameter :: TFEM_STATUS_IO = 14
 
-  ! tfem_tempering_mode
+  ! enum tfem_tempering_mode: How Jmin is chosen (argument `mode` of `tfem_set_tempering`).
+  !> Jmin = h³/λ, λ = larger side of the mesh's bounding box (default).
   integer(c_int), parameter :: TFEM_TEMPERING_MODE_AUTO = 0
+  !> Jmin = h³/λ with λ = `value` (a length in model units).
   integer(c_int), parameter :: TFEM_TEMPERING_MODE_LAMBDA = 1
+  !> Jmin = `value` for every element (length²).
   integer(c_int), parameter :: TFEM_TEMPERING_MODE_FIXED_JMIN = 2
+  !> Plain FEM (no tempering); zero-Jacobian elements are an error.
   integer(c_int), parameter :: TFEM_TEMPERING_MODE_OFF = 3
 
-  ! tfem_ordering_mode
+  ! enum tfem_ordering_mode: The fill-reducing ordering of the factorisation (argument `ordering` of
+  ! `tfem_set_ordering`).
+  !> Nested dissection from 10 000 unknowns, AMD below (default).
   integer(c_int), parameter :: TFEM_ORDERING_MODE_AUTO = 0
+  !> faer's approximate minimum degree.
   integer(c_int), parameter :: TFEM_ORDERING_MODE_AMD = 1
+  !> Geometric nested dissection on the node coordinates.
   integer(c_int), parameter :: TFEM_ORDERING_MODE_NESTED_DISSECTION = 2
 
-  ! tfem_contact_law
+  ! enum tfem_contact_law: The constitutive law of the contact elements.
+  !> Only the normal strain is penalised: D_c = E_c m mᵀ with m = [n_x², n_y², n_x n_y]. Tangential
+  !! slip is free.
   integer(c_int), parameter :: TFEM_CONTACT_LAW_FRICTIONLESS = 0
+  !> Plain tempered isotropic elasticity in B (E_c, ν of the softer body): it also resists slip, so
+  !! it ties the surfaces (sticking contact).
   integer(c_int), parameter :: TFEM_CONTACT_LAW_STICK = 1
 
-  ! tfem_inversion_test
+  ! enum tfem_inversion_test: How an element of B is found inverted.
+  !> J linearised about the initial configuration, J0 + Σ g_i·u_i < 0 (consistent with small strain;
+  !! for a flat conforming element, the node-pair normal gap). Under the frictionless law, only its
+  !! normal part J0 + Σ (n·g_i)(n·u_i) — the element's normal opening: the node-to-segment gap at
+  !! its apex times its interface edge, the very quantity the law penalises — so that an active
+  !! element always pushes. The two differ by J0·ε_tt (the interface stretching times the initial
+  !! gap): nothing on touching surfaces, but on a curved gap, where the bodies strain by a percent,
+  !! enough to activate elements that then pull. The default.
   integer(c_int), parameter :: TFEM_INVERSION_TEST_LINEARISED = 0
+  !> The seed's literal test, J(X + u) < 0. Its second-order term (slope times slip) can exceed the
+  !! penalty penetration on fine meshes and make the loop cycle.
   integer(c_int), parameter :: TFEM_INVERSION_TEST_LITERAL = 1
 
-  ! tfem_plane_mode
+  ! enum tfem_plane_mode: The 2D idealisation of the out-of-plane direction.
+  !> ε_zz = 0 (thick bodies; the seed's setting).
   integer(c_int), parameter :: TFEM_PLANE_MODE_STRAIN = 0
+  !> σ_zz = 0 (thin plates).
   integer(c_int), parameter :: TFEM_PLANE_MODE_STRESS = 1
 
-  ! tfem_component
+  ! enum tfem_component: A displacement component.
+  !> Horizontal (u).
   integer(c_int), parameter :: TFEM_COMPONENT_X = 0
+  !> Vertical (v).
   integer(c_int), parameter :: TFEM_COMPONENT_Y = 1
 
+  !> Statistics of a solve. Times are wall-clock seconds.
   type, bind(C) :: tfem_solve_info
+    !> Unknowns after Dirichlet elimination.
     integer(c_int64_t) :: unknowns
+    !> Stored entries of the matrix's upper triangle.
     integer(c_int64_t) :: matrix_nnz
+    !> Stored entries of the Cholesky factor.
     integer(c_int64_t) :: factor_nnz
+    !> Numeric factorisations performed.
     integer(c_int64_t) :: factorizations
+    !> Unknowns of the condensed contact interface (0 if not condensed).
     integer(c_int64_t) :: interface_unknowns
+    !> ‖K u − f‖ / ‖f‖ of the final system.
     real(c_double) :: relative_residual
+    !> Condition estimate of the Jacobi-scaled final matrix.
     real(c_double) :: condition_estimate
+    !> Bytes held by pattern, matrix values, factor and dense interface.
     integer(c_int64_t) :: memory_bytes
+    !> Bytes one numeric factorisation needs at its peak (factor, symbolic structure, workspace).
     integer(c_int64_t) :: factorization_bytes
+    !> Pattern and symbolic analysis (0 when reused).
     real(c_double) :: time_analysis
+    !> Element matrices and scatter-add.
     real(c_double) :: time_assembly
+    !> Numeric factorisations, including the singularity check.
     real(c_double) :: time_factorization
+    !> Triangular solves.
     real(c_double) :: time_solve
+    !> Dense work on the condensed contact interface.
     real(c_double) :: time_interface
+    !> The whole call.
     real(c_double) :: time_total
   end type tfem_solve_info
 
+  !> Options of `tfem_solve_contact`. Fill with `tfem_contact_options_default` and change what you
+  !! need.
   type, bind(C) :: tfem_contact_options
+    !> A `ContactLaw` value: 0 = frictionless (default), 1 = stick.
     integer(c_int) :: law
+    !> E_c of the contact elements; 0 = the smaller E of the two bodies.
     real(c_double) :: contact_modulus
+    !> λ of the contact elements (Jmin = h³/λ), model length units; 0 = the larger side of the
+    !! mesh's bounding box.
     real(c_double) :: lambda
+    !> An `InversionTest` value: 0 = linearised J (default), 1 = literal J.
     integer(c_int) :: inversion_test
+    !> Cap on active-set iterations (default 50).
     integer(c_int) :: max_iterations
+    !> 1 = refactorise the matrix at every active-set iteration; 0 (default) = condense the changes
+    !! on the contact interface (faster, exact).
     integer(c_int) :: refactorize
   end type tfem_contact_options
 
+  !> Report of `tfem_solve_contact`.
   type, bind(C) :: tfem_contact_report
+    !> Active-set iterations (solves).
     integer(c_int) :: iterations
+    !> Elements of the contact mesh B.
     integer(c_int) :: elements
+    !> Active elements at convergence.
     integer(c_int) :: active
+    !> Contact length ℓc (half the summed interface-edge length of the active elements), model
+    !! length units.
     real(c_double) :: contact_length
+    !> Largest normal interpenetration, model length units.
     real(c_double) :: max_penetration
+    !> Solver statistics.
     type(tfem_solve_info) :: info
   end type tfem_contact_report
 
   interface
-  !> The library version as a static NUL-terminated string ("major.minor.patch")
+    !> The library version as a static NUL-terminated string ("major.minor.patch"). Thread-safe;
+    !! never NULL; do not free.
     function tfem_version() &
         bind(C, name="tfem_version") result(res)
       import
       type(c_ptr) :: res
     end function tfem_version
+  end interface
 
-  !> Creates an empty model
+  interface
+    !> Creates an empty model. Returns NULL only if memory is exhausted. Free it with
+    !! `tfem_destroy`.
     function tfem_create() &
         bind(C, name="tfem_create") result(res)
       import
       type(c_ptr) :: res
     end function tfem_create
+  end interface
 
-  !> Destroys a model and everything it owns
+  interface
+    !> Destroys a model and everything it owns. NULL is a no-op. The handle must not be used
+    !! afterwards.
     subroutine tfem_destroy(model) &
         bind(C, name="tfem_destroy")
       import
       type(c_ptr), value :: model
     end subroutine tfem_destroy
+  end interface
 
-  !> Copies the message of the last failed call on `model` (empty after a successful call) into
-  !! `buffer` (`length` bytes including the final NUL)
+  interface tfem_last_error
+    !> Copies the message of the last failed call on `model` (empty after a successful call) into
+    !! `buffer` (`length` bytes including the final NUL). With `model` NULL, gives the calling
+    !! thread's last error from calls that have no model (or were given a NULL one). A message
+    !! longer than the buffer is truncated (still NUL-terminated) and TFEM_STATUS_BUFFER_TOO_SMALL
+    !! is returned; `tfem_last_error_length` gives the size needed. Fortran: `model` may be omitted
+    !! (NULL is passed). `length` takes an integer(c_size_t) or a default integer (kind
+    !! tfem_length_kind); a negative length is passed as 0. `buffer` may also be a character string.
     function tfem_last_error(model, buffer, length) &
         bind(C, name="tfem_last_error") result(status)
       import
@@ -124,17 +309,30 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_last_error
+    module procedure tfem_last_error_i
+    module procedure tfem_last_error_str
+    module procedure tfem_last_error_str_i
+    module procedure tfem_last_error_no_model
+    module procedure tfem_last_error_no_model_i
+    module procedure tfem_last_error_no_model_str
+    module procedure tfem_last_error_no_model_str_i
+  end interface tfem_last_error
 
-  !> Size in bytes (including the final NUL) of the message `tfem_last_error` would give
+  interface tfem_last_error_length
+    !> Size in bytes (including the final NUL) of the message `tfem_last_error` would give. `model`
+    !! may be NULL (thread's last error). Fortran: `model` may be omitted (NULL is passed).
     function tfem_last_error_length(model) &
         bind(C, name="tfem_last_error_length") result(res)
       import
       type(c_ptr), value :: model
       integer(c_size_t) :: res
     end function tfem_last_error_length
+    module procedure tfem_last_error_length_no_model
+  end interface tfem_last_error_length
 
-  !> Number of warnings: mesh validation (unused or coincident nodes, inverted or clockwise
-  !! triangles) and the last solve (tempering of well-shaped elements)
+  interface
+    !> Number of warnings: mesh validation (unused or coincident nodes, inverted or clockwise
+    !! triangles) and the last solve (tempering of well-shaped elements).
     function tfem_warning_count(model, count) &
         bind(C, name="tfem_warning_count") result(status)
       import
@@ -142,9 +340,13 @@ module tfem
       integer(c_int), intent(out) :: count
       integer(c_int) :: status
     end function tfem_warning_count
+  end interface
 
-  !> Copies warning number `index` (0-based, whatever the index base) into `buffer` of `length`
-  !! bytes, truncating like `tfem_last_error`
+  interface tfem_get_warning
+    !> Copies warning number `index` (0-based, whatever the index base) into `buffer` of `length`
+    !! bytes, truncating like `tfem_last_error`. Fortran: `length` takes an integer(c_size_t) or a
+    !! default integer (kind tfem_length_kind); a negative length is passed as 0. `buffer` may also
+    !! be a character string.
     function tfem_get_warning(model, index, buffer, length) &
         bind(C, name="tfem_get_warning") result(status)
       import
@@ -154,10 +356,18 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_warning
+    module procedure tfem_get_warning_i
+    module procedure tfem_get_warning_str
+    module procedure tfem_get_warning_str_i
+  end interface tfem_get_warning
 
-  !> Sets the mesh: `n_nodes` nodes with coordinates `xy` (2·n_nodes values, x0 y0 x1 y1 …),
-  !! `n_triangles` P1 triangles with `connectivity` (3·n_triangles node indices, counter-clockwise)
-  !! and a body tag per triangle in `body_of_triangle`
+  interface
+    !> Sets the mesh: `n_nodes` nodes with coordinates `xy` (2·n_nodes values, x0 y0 x1 y1 …),
+    !! `n_triangles` P1 triangles with `connectivity` (3·n_triangles node indices,
+    !! counter-clockwise) and a body tag per triangle in `body_of_triangle`. `index_base` is 0 (C)
+    !! or 1 (Fortran) and applies to every index of every later call. Degenerate and inverted
+    !! triangles are legal. Replacing a mesh discards constraints, loads, contact pairs and results;
+    !! materials and tempering are kept.
     function tfem_set_mesh(model, n_nodes, xy, n_triangles, connectivity, body_of_triangle, index_base) &
         bind(C, name="tfem_set_mesh") result(status)
       import
@@ -170,10 +380,15 @@ module tfem
       integer(c_int), value :: index_base
       integer(c_int) :: status
     end function tfem_set_mesh
+  end interface
 
-  !> Loads a Gmsh MSH 4.1 mesh (ASCII or binary) from the file `path` (NUL-terminated UTF-8):
-  !! physical surfaces become bodies (tag = body), physical curves become boundary-edge tags; only
-  !! 3-node triangles and 2-node lines, in the plane z = 0
+  interface
+    !> Loads a Gmsh MSH 4.1 mesh (ASCII or binary) from the file `path` (NUL-terminated UTF-8):
+    !! physical surfaces become bodies (tag = body), physical curves become boundary-edge tags; only
+    !! 3-node triangles and 2-node lines, in the plane z = 0. Replaces the mesh like `tfem_set_mesh`
+    !! with the given `index_base` for later calls. Returns TFEM_STATUS_IO for an unreadable file,
+    !! TFEM_STATUS_INVALID_MESH for unsupported content, TFEM_STATUS_INVALID_ARGUMENT if the library
+    !! was built without the `gmsh` feature.
     function tfem_load_gmsh(model, path, index_base) &
         bind(C, name="tfem_load_gmsh") result(status)
       import
@@ -182,9 +397,12 @@ module tfem
       integer(c_int), value :: index_base
       integer(c_int) :: status
     end function tfem_load_gmsh
+  end interface
 
-  !> Sets the tagged boundary edges: `n_edges` edges given by `edge_nodes` (2·n_edges node indices)
-  !! with a tag each in `tags`
+  interface
+    !> Sets the tagged boundary edges: `n_edges` edges given by `edge_nodes` (2·n_edges node
+    !! indices) with a tag each in `tags`. Tags name the edges for loads, constraints and contact
+    !! pairs. Replaces previous edges.
     function tfem_set_boundary_edges(model, n_edges, edge_nodes, tags) &
         bind(C, name="tfem_set_boundary_edges") result(status)
       import
@@ -194,10 +412,12 @@ module tfem
       integer(c_int), intent(in) :: tags(*)
       integer(c_int) :: status
     end function tfem_set_boundary_edges
+  end interface
 
-  !> Sets the material of body `body`: Young's modulus `young` (> 0), Poisson ratio `poisson` (in
-  !! (-1, 0.5) for plane strain, (-1, 0.5] for plane stress) and `plane` (a `PlaneMode`: 0 strain, 1
-  !! stress)
+  interface
+    !> Sets the material of body `body`: Young's modulus `young` (> 0), Poisson ratio `poisson` (in
+    !! (-1, 0.5) for plane strain, (-1, 0.5] for plane stress) and `plane` (a `PlaneMode`: 0 strain,
+    !! 1 stress).
     function tfem_set_material(model, body, young, poisson, plane_mode) &
         bind(C, name="tfem_set_material") result(status)
       import
@@ -208,9 +428,11 @@ module tfem
       integer(c_int), value :: plane_mode
       integer(c_int) :: status
     end function tfem_set_material
+  end interface
 
-  !> Chooses Jmin: `mode` is a `TemperingMode` (0 auto, 1 lambda = `value`, 2 fixed Jmin = `value`, 3
-  !! off); `value` is ignored for 0 and 3
+  interface
+    !> Chooses Jmin: `mode` is a `TemperingMode` (0 auto, 1 lambda = `value`, 2 fixed Jmin =
+    !! `value`, 3 off); `value` is ignored for 0 and 3.
     function tfem_set_tempering(model, mode, value) &
         bind(C, name="tfem_set_tempering") result(status)
       import
@@ -219,10 +441,13 @@ module tfem
       real(c_double), value :: value
       integer(c_int) :: status
     end function tfem_set_tempering
+  end interface
 
-  !> Chooses the fill-reducing ordering: `ordering` is an `OrderingMode` (0 auto, 1 AMD, 2 nested
-  !! dissection); `parallel_subtrees` = 1 (default) factorises the two subtrees of a nested
-  !! dissection concurrently, 0 as one tree
+  interface
+    !> Chooses the fill-reducing ordering: `ordering` is an `OrderingMode` (0 auto, 1 AMD, 2 nested
+    !! dissection); `parallel_subtrees` = 1 (default) factorises the two subtrees of a nested
+    !! dissection concurrently, 0 as one tree. Results do not depend on either beyond round-off; a
+    !! change discards the symbolic analysis kept for the mesh.
     function tfem_set_ordering(model, ordering, parallel_subtrees) &
         bind(C, name="tfem_set_ordering") result(status)
       import
@@ -231,9 +456,11 @@ module tfem
       integer(c_int), value :: parallel_subtrees
       integer(c_int) :: status
     end function tfem_set_ordering
+  end interface
 
-  !> Prescribes displacement component `component` (0 x, 1 y) of `node` to `value` (model length
-  !! units)
+  interface
+    !> Prescribes displacement component `component` (0 x, 1 y) of `node` to `value` (model length
+    !! units).
     function tfem_fix(model, node, comp, value) &
         bind(C, name="tfem_fix") result(status)
       import
@@ -243,8 +470,10 @@ module tfem
       real(c_double), value :: value
       integer(c_int) :: status
     end function tfem_fix
+  end interface
 
-  !> Prescribes component `component` to `value` on every node of the boundary edges tagged `tag`
+  interface
+    !> Prescribes component `component` to `value` on every node of the boundary edges tagged `tag`.
     function tfem_fix_edges(model, tag, comp, value) &
         bind(C, name="tfem_fix_edges") result(status)
       import
@@ -254,17 +483,21 @@ module tfem
       real(c_double), value :: value
       integer(c_int) :: status
     end function tfem_fix_edges
+  end interface
 
-  !> Removes every prescribed displacement
+  interface
+    !> Removes every prescribed displacement.
     function tfem_clear_constraints(model) &
         bind(C, name="tfem_clear_constraints") result(status)
       import
       type(c_ptr), value :: model
       integer(c_int) :: status
     end function tfem_clear_constraints
+  end interface
 
-  !> Applies pressure `pressure` (force per unit length, positive pushing into the body) on the
-  !! boundary edges tagged `tag`
+  interface
+    !> Applies pressure `pressure` (force per unit length, positive pushing into the body) on the
+    !! boundary edges tagged `tag`. Loads add up.
     function tfem_add_pressure(model, tag, pressure) &
         bind(C, name="tfem_add_pressure") result(status)
       import
@@ -273,8 +506,11 @@ module tfem
       real(c_double), value :: pressure
       integer(c_int) :: status
     end function tfem_add_pressure
+  end interface
 
-  !> Applies the traction (tx, ty) (force per unit length) on the boundary edges tagged `tag`
+  interface
+    !> Applies the traction (tx, ty) (force per unit length) on the boundary edges tagged `tag`.
+    !! Loads add up.
     function tfem_add_traction(model, tag, tx, ty) &
         bind(C, name="tfem_add_traction") result(status)
       import
@@ -284,8 +520,10 @@ module tfem
       real(c_double), value :: ty
       integer(c_int) :: status
     end function tfem_add_traction
+  end interface
 
-  !> Adds the point force (fx, fy) at `node`
+  interface
+    !> Adds the point force (fx, fy) at `node`.
     function tfem_add_nodal_force(model, node, fx, fy) &
         bind(C, name="tfem_add_nodal_force") result(status)
       import
@@ -295,8 +533,10 @@ module tfem
       real(c_double), value :: fy
       integer(c_int) :: status
     end function tfem_add_nodal_force
+  end interface
 
-  !> Sets the body force (bx, by) (force per unit area) of body `body`
+  interface
+    !> Sets the body force (bx, by) (force per unit area) of body `body`.
     function tfem_set_body_force(model, body, bx, by) &
         bind(C, name="tfem_set_body_force") result(status)
       import
@@ -306,38 +546,49 @@ module tfem
       real(c_double), value :: by
       integer(c_int) :: status
     end function tfem_set_body_force
+  end interface
 
-  !> Removes every load
+  interface
+    !> Removes every load.
     function tfem_clear_loads(model) &
         bind(C, name="tfem_clear_loads") result(status)
       import
       type(c_ptr), value :: model
       integer(c_int) :: status
     end function tfem_clear_loads
+  end interface
 
-  !> Solves a scene without contact
+  interface
+    !> Solves a scene without contact. `info` may be NULL. A body that is not restrained gives
+    !! TFEM_STATUS_SINGULAR naming it. Fortran: `info` is OPTIONAL: omit it to pass NULL.
     function tfem_solve(model, info) &
         bind(C, name="tfem_solve") result(status)
       import
       type(c_ptr), value :: model
-      type(tfem_solve_info), intent(inout) :: info
+      type(tfem_solve_info), intent(inout), optional :: info
       integer(c_int) :: status
     end function tfem_solve
+  end interface
 
-  !> Sizes: nodes, triangles, and elements of the contact mesh of the last contact solve (0
-  !! otherwise)
+  interface
+    !> Sizes: nodes, triangles, and elements of the contact mesh of the last contact solve (0
+    !! otherwise). Any pointer may be NULL. Fortran: `n_nodes`, `n_triangles` and
+    !! `n_contact_elements` are OPTIONAL: omit them to pass NULL.
     function tfem_get_sizes(model, n_nodes, n_triangles, n_contact_elements) &
         bind(C, name="tfem_get_sizes") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int), intent(out) :: n_nodes
-      integer(c_int), intent(out) :: n_triangles
-      integer(c_int), intent(out) :: n_contact_elements
+      integer(c_int), intent(out), optional :: n_nodes
+      integer(c_int), intent(out), optional :: n_triangles
+      integer(c_int), intent(out), optional :: n_contact_elements
       integer(c_int) :: status
     end function tfem_get_sizes
+  end interface
 
-  !> Copies the nodal displacements (u0 v0 u1 v1 …, 2·n_nodes values) of the last solve into `out`
-  !! of `length` values
+  interface tfem_get_displacements
+    !> Copies the nodal displacements (u0 v0 u1 v1 …, 2·n_nodes values) of the last solve into `out`
+    !! of `length` values. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
+    !! tfem_length_kind); a negative length is passed as 0.
     function tfem_get_displacements(model, out, length) &
         bind(C, name="tfem_get_displacements") result(status)
       import
@@ -346,9 +597,13 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_displacements
+    module procedure tfem_get_displacements_i
+  end interface tfem_get_displacements
 
-  !> Copies element strains (ε_xx ε_yy γ_xy per triangle, engineering shear, 3·n_triangles
-  !! values), computed on request
+  interface tfem_get_element_strains
+    !> Copies element strains (ε_xx ε_yy γ_xy per triangle, engineering shear, 3·n_triangles
+    !! values), computed on request. Fortran: `length` takes an integer(c_size_t) or a default
+    !! integer (kind tfem_length_kind); a negative length is passed as 0.
     function tfem_get_element_strains(model, out, length) &
         bind(C, name="tfem_get_element_strains") result(status)
       import
@@ -357,9 +612,13 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_element_strains
+    module procedure tfem_get_element_strains_i
+  end interface tfem_get_element_strains
 
-  !> Copies element stresses (σ_xx σ_yy σ_xy per triangle, 3·n_triangles values), computed on
-  !! request
+  interface tfem_get_element_stresses
+    !> Copies element stresses (σ_xx σ_yy σ_xy per triangle, 3·n_triangles values), computed on
+    !! request. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
+    !! tfem_length_kind); a negative length is passed as 0.
     function tfem_get_element_stresses(model, out, length) &
         bind(C, name="tfem_get_element_stresses") result(status)
       import
@@ -368,8 +627,13 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_element_stresses
+    module procedure tfem_get_element_stresses_i
+  end interface tfem_get_element_stresses
 
-  !> Copies J (twice the signed area, initial configuration) of every triangle (n_triangles values)
+  interface tfem_get_element_jacobians
+    !> Copies J (twice the signed area, initial configuration) of every triangle (n_triangles
+    !! values). Needs only a mesh. Fortran: `length` takes an integer(c_size_t) or a default integer
+    !! (kind tfem_length_kind); a negative length is passed as 0.
     function tfem_get_element_jacobians(model, out, length) &
         bind(C, name="tfem_get_element_jacobians") result(status)
       import
@@ -378,9 +642,13 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_element_jacobians
+    module procedure tfem_get_element_jacobians_i
+  end interface tfem_get_element_jacobians
 
-  !> Copies reaction forces (Rx Ry per node, 2·n_nodes values; zero at DOFs that are not
-  !! prescribed), computed on request
+  interface tfem_get_reactions
+    !> Copies reaction forces (Rx Ry per node, 2·n_nodes values; zero at DOFs that are not
+    !! prescribed), computed on request. Fortran: `length` takes an integer(c_size_t) or a default
+    !! integer (kind tfem_length_kind); a negative length is passed as 0.
     function tfem_get_reactions(model, out, length) &
         bind(C, name="tfem_get_reactions") result(status)
       import
@@ -389,21 +657,35 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_reactions
+    module procedure tfem_get_reactions_i
+  end interface tfem_get_reactions
 
-  !> Sizes of the stiffness matrix of the last solve (see `tfem_get_system_matrix`): `n` unknowns and
-  !! `nnz` stored entries of its upper triangle
+  interface
+    !> Sizes of the stiffness matrix of the last solve (see `tfem_get_system_matrix`): `n` unknowns
+    !! and `nnz` stored entries of its upper triangle. Either pointer may be NULL. Fortran: `n` and
+    !! `nnz` are OPTIONAL: omit them to pass NULL.
     function tfem_get_system_matrix_size(model, n, nnz) &
         bind(C, name="tfem_get_system_matrix_size") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int64_t), intent(out) :: n
-      integer(c_int64_t), intent(out) :: nnz
+      integer(c_int64_t), intent(out), optional :: n
+      integer(c_int64_t), intent(out), optional :: nnz
       integer(c_int) :: status
     end function tfem_get_system_matrix_size
+  end interface
 
-  !> Copies the stiffness matrix K of the last solve on its unknowns (the DOFs left after Dirichlet
-  !! elimination), the system K u = f whose solution `tfem_get_displacements` returns; for a contact
-  !! solve it holds the contact elements active at convergence
+  interface tfem_get_system_matrix
+    !> Copies the stiffness matrix K of the last solve on its unknowns (the DOFs left after
+    !! Dirichlet elimination), the system K u = f whose solution `tfem_get_displacements` returns;
+    !! for a contact solve it holds the contact elements active at convergence. Upper triangle in
+    !! compressed sparse columns, rows ascending within each column: `col_ptr` (n + 1 values),
+    !! `row_idx` and `values` (nnz values each), indices in the model's index base (`col_ptr[0]` =
+    !! base). `dofs` (n values) gives each unknown's position in the array of
+    !! `tfem_get_displacements`, in the index base (2·node + component for base 0). Every buffer is
+    !! checked before any is written. Not available after a failed solve
+    !! (TFEM_STATUS_INVALID_STATE): solve again. Fortran: `col_ptr_length`, `row_idx_length`,
+    !! `values_length` and `dofs_length` take integer(c_size_t) or default integers (kind
+    !! tfem_length_kind), all of one kind; a negative length is passed as 0.
     function tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
         values_length, dofs, dofs_length) &
         bind(C, name="tfem_get_system_matrix") result(status)
@@ -419,10 +701,14 @@ module tfem
       integer(c_size_t), value :: dofs_length
       integer(c_int) :: status
     end function tfem_get_system_matrix
+    module procedure tfem_get_system_matrix_i
+  end interface tfem_get_system_matrix
 
-  !> Tempered elasticity stiffness of one P1 triangle with corners `xy` (x1 y1 x2 y2 x3 y3): K =
-  !! B̂ᵀ D B̂ / (2·max(J, jmin)), written row-major into `out` (36 values, DOFs u1 v1 u2 v2 u3
-  !! v3)
+  interface
+    !> Tempered elasticity stiffness of one P1 triangle with corners `xy` (x1 y1 x2 y2 x3 y3): K =
+    !! B̂ᵀ D B̂ / (2·max(J, jmin)), written row-major into `out` (36 values, DOFs u1 v1 u2 v2 u3
+    !! v3). `jmin` > 0 tempers; `jmin` = 0 is plain FEM (divides by |J|, fails for J = 0). Pure and
+    !! thread-safe; errors go to the thread's `tfem_last_error(NULL, …)`.
     function tfem_element_stiffness(xy, young, poisson, plane_mode, jmin, out) &
         bind(C, name="tfem_element_stiffness") result(status)
       import
@@ -434,9 +720,11 @@ module tfem
       real(c_double), intent(inout) :: out(*)
       integer(c_int) :: status
     end function tfem_element_stiffness
+  end interface
 
-  !> Tempered Laplacian stiffness of one P1 triangle: K_ij = κ g_i·g_j / (2·max(J, jmin)),
-  !! row-major into `out` (9 values)
+  interface
+    !> Tempered Laplacian stiffness of one P1 triangle: K_ij = κ g_i·g_j / (2·max(J, jmin)),
+    !! row-major into `out` (9 values). `jmin` as in `tfem_element_stiffness`. Pure and thread-safe.
     function tfem_laplacian_stiffness(xy, kappa, jmin, out) &
         bind(C, name="tfem_laplacian_stiffness") result(status)
       import
@@ -446,21 +734,30 @@ module tfem
       real(c_double), intent(inout) :: out(*)
       integer(c_int) :: status
     end function tfem_laplacian_stiffness
+  end interface
 
-  !> Declares a potential contact interface between the boundary edges tagged `tag_a` (one body) and
-  !! `tag_b` (another body)
+  interface
+    !> Declares a potential contact interface between the boundary edges tagged `tag_a` (one body)
+    !! and `tag_b` (another body). The contact mesh B is built from matching nodes when they match
+    !! (a small normal gap is allowed), else by triangulating the strip between the two interfaces
+    !! (each must be one open chain of edges). Writes the pair's index (0-based) to `pair` (may be
+    !! NULL). Fortran: `pair` is OPTIONAL: omit it to pass NULL.
     function tfem_add_contact_pair(model, tag_a, tag_b, pair) &
         bind(C, name="tfem_add_contact_pair") result(status)
       import
       type(c_ptr), value :: model
       integer(c_int), value :: tag_a
       integer(c_int), value :: tag_b
-      integer(c_int), intent(out) :: pair
+      integer(c_int), intent(out), optional :: pair
       integer(c_int) :: status
     end function tfem_add_contact_pair
+  end interface
 
-  !> Declares a contact pair with a user-made contact mesh B: `n_triangles` triangles in
-  !! `connectivity` (3 per triangle) over nodes of the two interfaces
+  interface
+    !> Declares a contact pair with a user-made contact mesh B: `n_triangles` triangles in
+    !! `connectivity` (3 per triangle) over nodes of the two interfaces. Wrongly oriented triangles
+    !! are flipped; their number goes to `flipped` (may be NULL), the pair's index to `pair` (may be
+    !! NULL). Fortran: `pair` and `flipped` are OPTIONAL: omit them to pass NULL.
     function tfem_add_contact_pair_with_mesh(model, tag_a, tag_b, n_triangles, connectivity, pair, &
         flipped) &
         bind(C, name="tfem_add_contact_pair_with_mesh") result(status)
@@ -470,32 +767,43 @@ module tfem
       integer(c_int), value :: tag_b
       integer(c_int), value :: n_triangles
       integer(c_int), intent(in) :: connectivity(*)
-      integer(c_int), intent(out) :: pair
-      integer(c_int), intent(out) :: flipped
+      integer(c_int), intent(out), optional :: pair
+      integer(c_int), intent(out), optional :: flipped
       integer(c_int) :: status
     end function tfem_add_contact_pair_with_mesh
+  end interface
 
-  !> Fills `options` with the defaults: frictionless law, E_c and λ derived from the model,
-  !! linearised inversion test, 50 iterations
+  interface
+    !> Fills `options` with the defaults: frictionless law, E_c and λ derived from the model,
+    !! linearised inversion test, 50 iterations.
     function tfem_contact_options_default(options) &
         bind(C, name="tfem_contact_options_default") result(status)
       import
       type(tfem_contact_options), intent(inout) :: options
       integer(c_int) :: status
     end function tfem_contact_options_default
+  end interface
 
-  !> Solves the contact problem by the active-set loop over inverted contact elements
+  interface
+    !> Solves the contact problem by the active-set loop over inverted contact elements. `options`
+    !! may be NULL (defaults); `report` may be NULL. TFEM_STATUS_NOT_CONVERGED (cycle or iteration
+    !! cap) gives the history in the message; the model is then unchanged. Fortran: `options` and
+    !! `report` are OPTIONAL: omit them to pass NULL.
     function tfem_solve_contact(model, options, report) &
         bind(C, name="tfem_solve_contact") result(status)
       import
       type(c_ptr), value :: model
-      type(tfem_contact_options), intent(in) :: options
-      type(tfem_contact_report), intent(inout) :: report
+      type(tfem_contact_options), intent(in), optional :: options
+      type(tfem_contact_report), intent(inout), optional :: report
       integer(c_int) :: status
     end function tfem_solve_contact
+  end interface
 
-  !> Copies the active flag (1 active, 0 not) of every contact element of the last contact solve
-  !! (n_contact_elements values, see `tfem_get_sizes`)
+  interface tfem_get_contact_active
+    !> Copies the active flag (1 active, 0 not) of every contact element of the last contact solve
+    !! (n_contact_elements values, see `tfem_get_sizes`). Fortran: `length` takes an
+    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
+    !! as 0.
     function tfem_get_contact_active(model, out, length) &
         bind(C, name="tfem_get_contact_active") result(status)
       import
@@ -504,9 +812,13 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_active
+    module procedure tfem_get_contact_active_i
+  end interface tfem_get_contact_active
 
-  !> Copies the contact pressure (positive in compression, 0 when inactive) of every contact element
-  !! (n_contact_elements values)
+  interface tfem_get_contact_pressure
+    !> Copies the contact pressure (positive in compression, 0 when inactive) of every contact
+    !! element (n_contact_elements values). Fortran: `length` takes an integer(c_size_t) or a
+    !! default integer (kind tfem_length_kind); a negative length is passed as 0.
     function tfem_get_contact_pressure(model, out, length) &
         bind(C, name="tfem_get_contact_pressure") result(status)
       import
@@ -515,9 +827,14 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_pressure
+    module procedure tfem_get_contact_pressure_i
+  end interface tfem_get_contact_pressure
 
-  !> Copies the nodes of every contact element (3·n_contact_elements indices, in the model's index
-  !! base), oriented so that J > 0 when the gap opens
+  interface tfem_get_contact_elements
+    !> Copies the nodes of every contact element (3·n_contact_elements indices, in the model's index
+    !! base), oriented so that J > 0 when the gap opens. Fortran: `length` takes an
+    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
+    !! as 0.
     function tfem_get_contact_elements(model, out, length) &
         bind(C, name="tfem_get_contact_elements") result(status)
       import
@@ -526,8 +843,11 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_elements
+    module procedure tfem_get_contact_elements_i
+  end interface tfem_get_contact_elements
 
-  !> Writes the report of the last contact solve to `report`
+  interface
+    !> Writes the report of the last contact solve to `report`.
     function tfem_get_contact_report(model, report) &
         bind(C, name="tfem_get_contact_report") result(status)
       import
@@ -535,7 +855,6 @@ module tfem
       type(tfem_contact_report), intent(inout) :: report
       integer(c_int) :: status
     end function tfem_get_contact_report
-
   end interface
 
 contains
@@ -550,16 +869,238 @@ contains
     end do
   end function c_strlen
 
-  !> The message of the last failed call on model (c_null_ptr: this thread's
+  !> A length of kind tfem_length_kind as integer(c_size_t). A negative length becomes 0, so
+  !! that the library reports TFEM_STATUS_BUFFER_TOO_SMALL instead of reading a huge size_t.
+  elemental function tfem_to_size_t(n) result(s)
+    integer(tfem_length_kind), intent(in) :: n
+    integer(c_size_t) :: s
+    if (n <= 0) then
+      s = 0
+    else if (n >= huge(s)) then
+      s = huge(s)
+    else
+      s = int(n, c_size_t)
+    end if
+  end function tfem_to_size_t
+
+  ! tfem_last_error, lengths of kind tfem_length_kind.
+  function tfem_last_error_i(model, buffer, length) result(status)
+    type(c_ptr), value :: model
+    character(kind=c_char), intent(inout) :: buffer(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_last_error(model, buffer, tfem_to_size_t(length))
+  end function tfem_last_error_i
+
+  ! tfem_last_error, character buffers as strings.
+  function tfem_last_error_str(model, buffer, length) result(status)
+    type(c_ptr), value :: model
+    character(kind=c_char, len=*), intent(inout) :: buffer
+    integer(c_size_t), value :: length
+    integer(c_int) :: status
+    status = tfem_last_error_raw(model, buffer, length)
+  end function tfem_last_error_str
+
+  ! tfem_last_error, character buffers as strings, lengths of kind tfem_length_kind.
+  function tfem_last_error_str_i(model, buffer, length) result(status)
+    type(c_ptr), value :: model
+    character(kind=c_char, len=*), intent(inout) :: buffer
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_last_error_raw(model, buffer, tfem_to_size_t(length))
+  end function tfem_last_error_str_i
+
+  ! tfem_last_error, without `model` (NULL).
+  function tfem_last_error_no_model(buffer, length) result(status)
+    character(kind=c_char), intent(inout) :: buffer(*)
+    integer(c_size_t), value :: length
+    integer(c_int) :: status
+    status = tfem_last_error(c_null_ptr, buffer, length)
+  end function tfem_last_error_no_model
+
+  ! tfem_last_error, without `model` (NULL), lengths of kind tfem_length_kind.
+  function tfem_last_error_no_model_i(buffer, length) result(status)
+    character(kind=c_char), intent(inout) :: buffer(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_last_error(c_null_ptr, buffer, tfem_to_size_t(length))
+  end function tfem_last_error_no_model_i
+
+  ! tfem_last_error, without `model` (NULL), character buffers as strings.
+  function tfem_last_error_no_model_str(buffer, length) result(status)
+    character(kind=c_char, len=*), intent(inout) :: buffer
+    integer(c_size_t), value :: length
+    integer(c_int) :: status
+    status = tfem_last_error_raw(c_null_ptr, buffer, length)
+  end function tfem_last_error_no_model_str
+
+  ! tfem_last_error, without `model` (NULL), character buffers as strings, lengths of kind
+  ! tfem_length_kind.
+  function tfem_last_error_no_model_str_i(buffer, length) result(status)
+    character(kind=c_char, len=*), intent(inout) :: buffer
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_last_error_raw(c_null_ptr, buffer, tfem_to_size_t(length))
+  end function tfem_last_error_no_model_str_i
+
+  ! tfem_last_error, by a specific name (for the strings of the _str specifics).
+  function tfem_last_error_raw(model, buffer, length) result(status)
+    type(c_ptr), value :: model
+    character(kind=c_char), intent(inout) :: buffer(*)
+    integer(c_size_t), value :: length
+    integer(c_int) :: status
+    status = tfem_last_error(model, buffer, length)
+  end function tfem_last_error_raw
+
+  ! tfem_last_error_length, without `model` (NULL).
+  function tfem_last_error_length_no_model() result(res)
+    integer(c_size_t) :: res
+    res = tfem_last_error_length(c_null_ptr)
+  end function tfem_last_error_length_no_model
+
+  ! tfem_get_warning, lengths of kind tfem_length_kind.
+  function tfem_get_warning_i(model, index, buffer, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: index
+    character(kind=c_char), intent(inout) :: buffer(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_warning(model, index, buffer, tfem_to_size_t(length))
+  end function tfem_get_warning_i
+
+  ! tfem_get_warning, character buffers as strings.
+  function tfem_get_warning_str(model, index, buffer, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: index
+    character(kind=c_char, len=*), intent(inout) :: buffer
+    integer(c_size_t), value :: length
+    integer(c_int) :: status
+    status = tfem_get_warning_raw(model, index, buffer, length)
+  end function tfem_get_warning_str
+
+  ! tfem_get_warning, character buffers as strings, lengths of kind tfem_length_kind.
+  function tfem_get_warning_str_i(model, index, buffer, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: index
+    character(kind=c_char, len=*), intent(inout) :: buffer
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_warning_raw(model, index, buffer, tfem_to_size_t(length))
+  end function tfem_get_warning_str_i
+
+  ! tfem_get_warning, by a specific name (for the strings of the _str specifics).
+  function tfem_get_warning_raw(model, index, buffer, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: index
+    character(kind=c_char), intent(inout) :: buffer(*)
+    integer(c_size_t), value :: length
+    integer(c_int) :: status
+    status = tfem_get_warning(model, index, buffer, length)
+  end function tfem_get_warning_raw
+
+  ! tfem_get_displacements, lengths of kind tfem_length_kind.
+  function tfem_get_displacements_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_displacements(model, out, tfem_to_size_t(length))
+  end function tfem_get_displacements_i
+
+  ! tfem_get_element_strains, lengths of kind tfem_length_kind.
+  function tfem_get_element_strains_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_element_strains(model, out, tfem_to_size_t(length))
+  end function tfem_get_element_strains_i
+
+  ! tfem_get_element_stresses, lengths of kind tfem_length_kind.
+  function tfem_get_element_stresses_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_element_stresses(model, out, tfem_to_size_t(length))
+  end function tfem_get_element_stresses_i
+
+  ! tfem_get_element_jacobians, lengths of kind tfem_length_kind.
+  function tfem_get_element_jacobians_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_element_jacobians(model, out, tfem_to_size_t(length))
+  end function tfem_get_element_jacobians_i
+
+  ! tfem_get_reactions, lengths of kind tfem_length_kind.
+  function tfem_get_reactions_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_reactions(model, out, tfem_to_size_t(length))
+  end function tfem_get_reactions_i
+
+  ! tfem_get_system_matrix, lengths of kind tfem_length_kind.
+  function tfem_get_system_matrix_i(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i
+
+  ! tfem_get_contact_active, lengths of kind tfem_length_kind.
+  function tfem_get_contact_active_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_active(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_active_i
+
+  ! tfem_get_contact_pressure, lengths of kind tfem_length_kind.
+  function tfem_get_contact_pressure_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_pressure(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_pressure_i
+
+  ! tfem_get_contact_elements, lengths of kind tfem_length_kind.
+  function tfem_get_contact_elements_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_elements(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_elements_i
+
+  !> The message of the last failed call on model (omitted or c_null_ptr: this thread's
   !! model-free calls), as a Fortran string.
   function tfem_error_message(model) result(msg)
-    type(c_ptr), intent(in) :: model
+    type(c_ptr), intent(in), optional :: model
     character(len=:), allocatable :: msg
     character(kind=c_char), allocatable :: buf(:)
+    type(c_ptr) :: handle
     integer(c_int) :: status
     integer :: i, n
-    allocate(buf(tfem_last_error_length(model)))
-    status = tfem_last_error(model, buf, int(size(buf), c_size_t))
+    handle = c_null_ptr
+    if (present(model)) handle = model
+    allocate(buf(tfem_last_error_length(handle)))
+    status = tfem_last_error(handle, buf, size(buf, kind=c_size_t))
     n = c_strlen(buf)
     allocate(character(len=n) :: msg)
     do i = 1, n
@@ -575,7 +1116,7 @@ contains
     character(kind=c_char) :: buf(4096)
     integer(c_int) :: status
     integer :: i, n
-    status = tfem_get_warning(model, int(index, c_int), buf, int(size(buf), c_size_t))
+    status = tfem_get_warning(model, int(index, c_int), buf, size(buf, kind=c_size_t))
     n = c_strlen(buf)
     if (status /= TFEM_STATUS_OK .and. status /= TFEM_STATUS_BUFFER_TOO_SMALL) n = 0
     allocate(character(len=n) :: msg)
