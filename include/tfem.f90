@@ -18,22 +18,35 @@
 !   every message. Counts are int; buffer lengths are size_t, in elements.
 ! - Output buffers are owned by the caller. Their length is checked and
 !   nothing is written when it is too short (TFEM_STATUS_BUFFER_TOO_SMALL).
-! - A failed call leaves the model as it was. Any change to the problem
-!   (mesh, materials, constraints, loads, contact pairs, tempering)
-!   discards previous results; results are computed when asked for.
+! - A failed call leaves the model as it was, its results included. Any
+!   change to the problem (mesh, boundary edges, materials, constraints,
+!   loads, contact pairs, tempering) discards previous results; settings
+!   that change nothing physical (tfem_set_ordering, tfem_set_threads)
+!   keep them. Results are computed when asked for, and do not depend on
+!   the calls that failed before.
 ! - Units are the caller's: lengths, forces and moduli in one consistent
-!   system. Stresses and forces are per unit thickness (2D).
-! - No NaN or Inf is ever returned as a result with TFEM_STATUS_OK.
+!   system (SI: m, N, Pa). The model is 2D with unit thickness: moduli,
+!   stresses, pressures and tractions are forces per unit area (Pa);
+!   nodal forces, reactions and contact forces are forces per unit
+!   thickness (N/m); body forces are forces per unit volume (N/m^3); work
+!   is per unit thickness (J/m).
+! - No NaN or Inf is ever returned as a result with TFEM_STATUS_OK: an
+!   overflow gives TFEM_STATUS_NUMERICAL_FAILURE naming the item.
+! - Nothing is ever printed on stdout or stderr: messages, warnings and
+!   internal failures are read with tfem_last_error and tfem_get_warning.
 !
 ! Thread contract
 ! - A tfem_model must be used by one thread at a time (no internal
 !   locking); different models may be used concurrently from different
-!   threads. The solver itself uses a thread pool internally.
+!   threads. The solver itself runs on a thread pool: the process-wide one
+!   (as many threads as cores, or RAYON_NUM_THREADS), or the model's own
+!   with tfem_set_threads (1 for a host that runs its own threads).
 ! - tfem_version, tfem_element_stiffness, tfem_laplacian_stiffness and
 !   tfem_contact_options_default are pure and thread-safe; their errors go
-!   to a per-thread slot read with tfem_last_error(NULL, ...).
+!   to a per-thread slot read with tfem_last_error(NULL, ...), which their
+!   next success clears.
 ! - No panic crosses the boundary: an internal failure returns
-!   TFEM_STATUS_INTERNAL.
+!   TFEM_STATUS_INTERNAL (its message read with tfem_last_error).
 !
 ! In Fortran (`use tfem`), where it differs from the C conventions above
 ! - The model handle is a type(c_ptr) from tfem_create, passed by value.
@@ -100,6 +113,11 @@ module tfem
   private :: tfem_get_contact_active_i
   private :: tfem_get_contact_pressure_i
   private :: tfem_get_contact_elements_i
+  private :: tfem_get_contact_forces_i
+  private :: tfem_get_contact_gaps_i
+  private :: tfem_get_contact_mesh_i
+  private :: tfem_get_contact_element_pairs_i
+  private :: tfem_get_contact_element_apexes_i
 
   !> The kind of the lengths the generic interfaces accept besides integer(c_size_t): c_int (the
   !! default integer) where size_t is wider, else c_int64_t.
@@ -363,11 +381,16 @@ module tfem
 
   interface
     !> Sets the mesh: `n_nodes` nodes with coordinates `xy` (2·n_nodes values, x0 y0 x1 y1 …),
-    !! `n_triangles` P1 triangles with `connectivity` (3·n_triangles node indices,
-    !! counter-clockwise) and a body tag per triangle in `body_of_triangle`. `index_base` is 0 (C)
-    !! or 1 (Fortran) and applies to every index of every later call. Degenerate and inverted
-    !! triangles are legal. Replacing a mesh discards constraints, loads, contact pairs and results;
-    !! materials and tempering are kept.
+    !! `n_triangles` P1 triangles with `connectivity` (3·n_triangles node indices) and a body tag
+    !! per triangle in `body_of_triangle`. `index_base` is 0 (C) or 1 (Fortran) and applies to every
+    !! index of every later call. Orientation: triangles may be numbered clockwise,
+    !! counter-clockwise, or both; each connected region of a body is numbered consistently across
+    !! its shared edges and turned counter-clockwise by area (a warning counts the triangles turned;
+    !! every later output refers to the turned triangles). A triangle still clockwise then is a fold
+    !! of the mesh, an inverted element, which TFEM tempers (a warning counts them). Degenerate
+    !! triangles are legal. Coordinates whose products overflow double precision are refused.
+    !! Replacing a mesh discards constraints, loads, contact pairs and results; materials and
+    !! tempering are kept.
     function tfem_set_mesh(model, n_nodes, xy, n_triangles, connectivity, body_of_triangle, index_base) &
         bind(C, name="tfem_set_mesh") result(status)
       import
@@ -402,7 +425,10 @@ module tfem
   interface
     !> Sets the tagged boundary edges: `n_edges` edges given by `edge_nodes` (2·n_edges node
     !! indices) with a tag each in `tags`. Tags name the edges for loads, constraints and contact
-    !! pairs. Replaces previous edges.
+    !! pairs. Replaces previous edges (use `tfem_add_boundary_edges` to add one group at a time).
+    !! Refused, naming the tag, when a load or contact pair already declared would lose its edges or
+    !! find them interior (an edge shared by two triangles can carry a constraint, not a load or a
+    !! contact interface); on any error nothing changes.
     function tfem_set_boundary_edges(model, n_edges, edge_nodes, tags) &
         bind(C, name="tfem_set_boundary_edges") result(status)
       import
@@ -446,8 +472,9 @@ module tfem
   interface
     !> Chooses the fill-reducing ordering: `ordering` is an `OrderingMode` (0 auto, 1 AMD, 2 nested
     !! dissection); `parallel_subtrees` = 1 (default) factorises the two subtrees of a nested
-    !! dissection concurrently, 0 as one tree. Results do not depend on either beyond round-off; a
-    !! change discards the symbolic analysis kept for the mesh.
+    !! dissection concurrently, 0 as one tree. Results do not depend on either beyond round-off: the
+    !! results of the last solve (all of them, the matrix included) are kept, and the next solve
+    !! analyses the matrix anew.
     function tfem_set_ordering(model, ordering, parallel_subtrees) &
         bind(C, name="tfem_set_ordering") result(status)
       import
@@ -460,7 +487,9 @@ module tfem
 
   interface
     !> Prescribes displacement component `component` (0 x, 1 y) of `node` to `value` (model length
-    !! units).
+    !! units). A component already prescribed a different value is refused
+    !! (TFEM_STATUS_INVALID_ARGUMENT naming the node): one of the two would silently win. Call
+    !! `tfem_clear_constraints` to change prescribed values.
     function tfem_fix(model, node, comp, value) &
         bind(C, name="tfem_fix") result(status)
       import
@@ -473,7 +502,9 @@ module tfem
   end interface
 
   interface
-    !> Prescribes component `component` to `value` on every node of the boundary edges tagged `tag`.
+    !> Prescribes component `component` to `value` on every node of the boundary edges tagged `tag`
+    !! (interior edges too). All or nothing: a node already prescribed a different value (see
+    !! `tfem_fix`) refuses the whole call.
     function tfem_fix_edges(model, tag, comp, value) &
         bind(C, name="tfem_fix_edges") result(status)
       import
@@ -496,8 +527,9 @@ module tfem
   end interface
 
   interface
-    !> Applies pressure `pressure` (force per unit length, positive pushing into the body) on the
-    !! boundary edges tagged `tag`. Loads add up.
+    !> Applies pressure `pressure` on the boundary edges tagged `tag`: a stress (force per unit
+    !! area, Pa in SI), positive pushing into the body; with the 2D convention of unit thickness, an
+    !! edge of length ℓ carries the force ℓ·pressure per unit thickness. Loads add up.
     function tfem_add_pressure(model, tag, pressure) &
         bind(C, name="tfem_add_pressure") result(status)
       import
@@ -509,8 +541,9 @@ module tfem
   end interface
 
   interface
-    !> Applies the traction (tx, ty) (force per unit length) on the boundary edges tagged `tag`.
-    !! Loads add up.
+    !> Applies the traction (tx, ty) on the boundary edges tagged `tag`: a stress vector (force per
+    !! unit area, Pa in SI); an edge of length ℓ carries ℓ·(tx, ty) per unit thickness. Loads add
+    !! up.
     function tfem_add_traction(model, tag, tx, ty) &
         bind(C, name="tfem_add_traction") result(status)
       import
@@ -523,7 +556,7 @@ module tfem
   end interface
 
   interface
-    !> Adds the point force (fx, fy) at `node`.
+    !> Adds the point force (fx, fy) at `node`: force per unit thickness (N/m in SI). Loads add up.
     function tfem_add_nodal_force(model, node, fx, fy) &
         bind(C, name="tfem_add_nodal_force") result(status)
       import
@@ -536,7 +569,8 @@ module tfem
   end interface
 
   interface
-    !> Sets the body force (bx, by) (force per unit area) of body `body`.
+    !> Sets the body force (bx, by) of body `body`: force per unit volume (ρg, N/m³ in SI), acting
+    !! on each unit area of the mesh per unit thickness.
     function tfem_set_body_force(model, body, bx, by) &
         bind(C, name="tfem_set_body_force") result(status)
       import
@@ -616,8 +650,9 @@ module tfem
   end interface tfem_get_element_strains
 
   interface tfem_get_element_stresses
-    !> Copies element stresses (σ_xx σ_yy σ_xy per triangle, 3·n_triangles values), computed on
-    !! request. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
+    !> Copies element stresses (σ_xx σ_yy σ_xy per triangle, 3·n_triangles values; force per unit
+    !! area, Pa in SI), computed on request. An overflow gives TFEM_STATUS_NUMERICAL_FAILURE naming
+    !! the triangle. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
     !! tfem_length_kind); a negative length is passed as 0.
     function tfem_get_element_stresses(model, out, length) &
         bind(C, name="tfem_get_element_stresses") result(status)
@@ -631,9 +666,11 @@ module tfem
   end interface tfem_get_element_stresses
 
   interface tfem_get_element_jacobians
-    !> Copies J (twice the signed area, initial configuration) of every triangle (n_triangles
-    !! values). Needs only a mesh. Fortran: `length` takes an integer(c_size_t) or a default integer
-    !! (kind tfem_length_kind); a negative length is passed as 0.
+    !> Copies J (twice the signed area, initial configuration) of every triangle as stored, that is
+    !! after the turning of triangles numbered clockwise (see `tfem_set_mesh`): negative only for
+    !! the mesh's folds (n_triangles values). Needs only a mesh. Fortran: `length` takes an
+    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
+    !! as 0.
     function tfem_get_element_jacobians(model, out, length) &
         bind(C, name="tfem_get_element_jacobians") result(status)
       import
@@ -646,9 +683,10 @@ module tfem
   end interface tfem_get_element_jacobians
 
   interface tfem_get_reactions
-    !> Copies reaction forces (Rx Ry per node, 2·n_nodes values; zero at DOFs that are not
-    !! prescribed), computed on request. Fortran: `length` takes an integer(c_size_t) or a default
-    !! integer (kind tfem_length_kind); a negative length is passed as 0.
+    !> Copies reaction forces (Rx Ry per node, 2·n_nodes values; force per unit thickness, N/m in
+    !! SI; zero at DOFs that are not prescribed), computed on request. Fortran: `length` takes an
+    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
+    !! as 0.
     function tfem_get_reactions(model, out, length) &
         bind(C, name="tfem_get_reactions") result(status)
       import
@@ -682,10 +720,11 @@ module tfem
     !! `row_idx` and `values` (nnz values each), indices in the model's index base (`col_ptr[0]` =
     !! base). `dofs` (n values) gives each unknown's position in the array of
     !! `tfem_get_displacements`, in the index base (2·node + component for base 0). Every buffer is
-    !! checked before any is written. Not available after a failed solve
-    !! (TFEM_STATUS_INVALID_STATE): solve again. Fortran: `col_ptr_length`, `row_idx_length`,
-    !! `values_length` and `dofs_length` take integer(c_size_t) or default integers (kind
-    !! tfem_length_kind), all of one kind; a negative length is passed as 0.
+    !! checked before any is written. Like every result it outlives a failed solve (which rebuilds
+    !! it bit for bit) and is discarded by a change of the problem (TFEM_STATUS_INVALID_STATE).
+    !! Fortran: `col_ptr_length`, `row_idx_length`, `values_length` and `dofs_length` take
+    !! integer(c_size_t) or default integers (kind tfem_length_kind), all of one kind; a negative
+    !! length is passed as 0.
     function tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
         values_length, dofs, dofs_length) &
         bind(C, name="tfem_get_system_matrix") result(status)
@@ -816,9 +855,10 @@ module tfem
   end interface tfem_get_contact_active
 
   interface tfem_get_contact_pressure
-    !> Copies the contact pressure (positive in compression, 0 when inactive) of every contact
-    !! element (n_contact_elements values). Fortran: `length` takes an integer(c_size_t) or a
-    !! default integer (kind tfem_length_kind); a negative length is passed as 0.
+    !> Copies the contact pressure of every contact element (n_contact_elements values): the normal
+    !! stress −n·σ·n in the element (force per unit area, Pa in SI), positive in compression, 0 when
+    !! inactive. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
+    !! tfem_length_kind); a negative length is passed as 0.
     function tfem_get_contact_pressure(model, out, length) &
         bind(C, name="tfem_get_contact_pressure") result(status)
       import
@@ -855,6 +895,170 @@ module tfem
       type(tfem_contact_report), intent(inout) :: report
       integer(c_int) :: status
     end function tfem_get_contact_report
+  end interface
+
+  interface
+    !> Adds tagged boundary edges to those already set (see `tfem_set_boundary_edges`): `n_edges`
+    !! edges given by `edge_nodes` (2·n_edges node indices) with a tag each in `tags`, for instance
+    !! one call per boundary group. An edge given again with a tag it already has is refused (its
+    !! loads would count twice); on any error nothing changes.
+    function tfem_add_boundary_edges(model, n_edges, edge_nodes, tags) &
+        bind(C, name="tfem_add_boundary_edges") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: n_edges
+      integer(c_int), intent(in) :: edge_nodes(*)
+      integer(c_int), intent(in) :: tags(*)
+      integer(c_int) :: status
+    end function tfem_add_boundary_edges
+  end interface
+
+  interface
+    !> Writes the work of the external loads of the last solve, Σ f·u over every node (force ×
+    !! length per unit thickness, J/m in SI): for a pressure load, the compliance ∫ p (−u·n) ds.
+    function tfem_get_external_work(model, work) &
+        bind(C, name="tfem_get_external_work") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(out) :: work
+      integer(c_int) :: status
+    end function tfem_get_external_work
+  end interface
+
+  interface tfem_get_contact_forces
+    !> Copies the force the contact exerts on every node in the last contact solve (fx fy per node,
+    !! 2·n_nodes values; force per unit thickness, N/m in SI; zero off the contact interfaces),
+    !! computed on request. The forces of one pair sum to zero; on a body they balance its loads and
+    !! reactions. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
+    !! tfem_length_kind); a negative length is passed as 0.
+    function tfem_get_contact_forces(model, out, length) &
+        bind(C, name="tfem_get_contact_forces") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_forces
+    module procedure tfem_get_contact_forces_i
+  end interface tfem_get_contact_forces
+
+  interface tfem_get_contact_gaps
+    !> Copies the normal gap at every node in the last contact solve (n_nodes values, model length
+    !! units; zero off the contact interfaces), computed on request: the smallest, over the contact
+    !! elements at the node, of the distance of an element's apex from its interface edge in the
+    !! deformed configuration (linearised). Positive: open; negative: the bodies interpenetrate (by
+    !! O(h²), the penalty of the contact elements). Fortran: `length` takes an integer(c_size_t) or
+    !! a default integer (kind tfem_length_kind); a negative length is passed as 0.
+    function tfem_get_contact_gaps(model, out, length) &
+        bind(C, name="tfem_get_contact_gaps") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_gaps
+    module procedure tfem_get_contact_gaps_i
+  end interface tfem_get_contact_gaps
+
+  interface
+    !> Writes the number of elements of the contact mesh B of the declared contact pairs, available
+    !! before any solve (0 without pairs).
+    function tfem_get_contact_mesh_size(model, n_elements) &
+        bind(C, name="tfem_get_contact_mesh_size") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(out) :: n_elements
+      integer(c_int) :: status
+    end function tfem_get_contact_mesh_size
+  end interface
+
+  interface tfem_get_contact_mesh
+    !> Copies the nodes of every element of the contact mesh B of the declared contact pairs (3 per
+    !! element, in the model's index base, oriented so that J > 0 when the gap opens), available
+    !! before any solve: the same elements, in the same order, as `tfem_get_contact_elements` gives
+    !! after a contact solve. Fortran: `length` takes an integer(c_size_t) or a default integer
+    !! (kind tfem_length_kind); a negative length is passed as 0.
+    function tfem_get_contact_mesh(model, out, length) &
+        bind(C, name="tfem_get_contact_mesh") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_mesh
+    module procedure tfem_get_contact_mesh_i
+  end interface tfem_get_contact_mesh
+
+  interface tfem_get_contact_element_pairs
+    !> Copies, for every element of the contact mesh B (see `tfem_get_contact_mesh`), the index of
+    !! its contact pair (0-based, as returned by `tfem_add_contact_pair`, whatever the index base).
+    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
+    !! negative length is passed as 0.
+    function tfem_get_contact_element_pairs(model, out, length) &
+        bind(C, name="tfem_get_contact_element_pairs") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_element_pairs
+    module procedure tfem_get_contact_element_pairs_i
+  end interface tfem_get_contact_element_pairs
+
+  interface tfem_get_contact_element_apexes
+    !> Copies, for every element of the contact mesh B (see `tfem_get_contact_mesh`), its apex: the
+    !! node (in the model's index base) alone on its side of the interface, whose distance from the
+    !! element's interface edge is the element's gap. Fortran: `length` takes an integer(c_size_t)
+    !! or a default integer (kind tfem_length_kind); a negative length is passed as 0.
+    function tfem_get_contact_element_apexes(model, out, length) &
+        bind(C, name="tfem_get_contact_element_apexes") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_element_apexes
+    module procedure tfem_get_contact_element_apexes_i
+  end interface tfem_get_contact_element_apexes
+
+  interface
+    !> Writes the bodies of contact pair `pair` (0-based, as returned by `tfem_add_contact_pair`):
+    !! `body_a` carries the pair's first tag, `body_b` its second. Either pointer may be NULL.
+    !! Fortran: `body_a` and `body_b` are OPTIONAL: omit them to pass NULL.
+    function tfem_get_contact_pair_bodies(model, pair, body_a, body_b) &
+        bind(C, name="tfem_get_contact_pair_bodies") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: pair
+      integer(c_int), intent(out), optional :: body_a
+      integer(c_int), intent(out), optional :: body_b
+      integer(c_int) :: status
+    end function tfem_get_contact_pair_bodies
+  end interface
+
+  interface
+    !> Sets the number of threads the model's solves run on: `threads` >= 1 gives the model a pool
+    !! of its own (1: no parallelism at all, for a host that runs its own OpenMP or MPI threads); 0
+    !! (the default) uses the process-wide pool, with as many threads as cores or the environment
+    !! variable RAYON_NUM_THREADS. Results do not depend on it beyond round-off, and are kept.
+    function tfem_set_threads(model, threads) &
+        bind(C, name="tfem_set_threads") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: threads
+      integer(c_int) :: status
+    end function tfem_set_threads
+  end interface
+
+  interface
+    !> Writes the number of threads the model's solves run on (see `tfem_set_threads`).
+    function tfem_get_threads(model, threads) &
+        bind(C, name="tfem_get_threads") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(out) :: threads
+      integer(c_int) :: status
+    end function tfem_get_threads
   end interface
 
 contains
@@ -1087,6 +1291,51 @@ contains
     integer(c_int) :: status
     status = tfem_get_contact_elements(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_elements_i
+
+  ! tfem_get_contact_forces, lengths of kind tfem_length_kind.
+  function tfem_get_contact_forces_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_forces(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_forces_i
+
+  ! tfem_get_contact_gaps, lengths of kind tfem_length_kind.
+  function tfem_get_contact_gaps_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_gaps(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_gaps_i
+
+  ! tfem_get_contact_mesh, lengths of kind tfem_length_kind.
+  function tfem_get_contact_mesh_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_mesh(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_mesh_i
+
+  ! tfem_get_contact_element_pairs, lengths of kind tfem_length_kind.
+  function tfem_get_contact_element_pairs_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_element_pairs(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_element_pairs_i
+
+  ! tfem_get_contact_element_apexes, lengths of kind tfem_length_kind.
+  function tfem_get_contact_element_apexes_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_element_apexes(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_element_apexes_i
 
   !> The message of the last failed call on model (omitted or c_null_ptr: this thread's
   !! model-free calls), as a Fortran string.

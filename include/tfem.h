@@ -12,22 +12,35 @@
  *   every message. Counts are int; buffer lengths are size_t, in elements.
  * - Output buffers are owned by the caller. Their length is checked and
  *   nothing is written when it is too short (TFEM_STATUS_BUFFER_TOO_SMALL).
- * - A failed call leaves the model as it was. Any change to the problem
- *   (mesh, materials, constraints, loads, contact pairs, tempering)
- *   discards previous results; results are computed when asked for.
+ * - A failed call leaves the model as it was, its results included. Any
+ *   change to the problem (mesh, boundary edges, materials, constraints,
+ *   loads, contact pairs, tempering) discards previous results; settings
+ *   that change nothing physical (tfem_set_ordering, tfem_set_threads)
+ *   keep them. Results are computed when asked for, and do not depend on
+ *   the calls that failed before.
  * - Units are the caller's: lengths, forces and moduli in one consistent
- *   system. Stresses and forces are per unit thickness (2D).
- * - No NaN or Inf is ever returned as a result with TFEM_STATUS_OK.
+ *   system (SI: m, N, Pa). The model is 2D with unit thickness: moduli,
+ *   stresses, pressures and tractions are forces per unit area (Pa);
+ *   nodal forces, reactions and contact forces are forces per unit
+ *   thickness (N/m); body forces are forces per unit volume (N/m^3); work
+ *   is per unit thickness (J/m).
+ * - No NaN or Inf is ever returned as a result with TFEM_STATUS_OK: an
+ *   overflow gives TFEM_STATUS_NUMERICAL_FAILURE naming the item.
+ * - Nothing is ever printed on stdout or stderr: messages, warnings and
+ *   internal failures are read with tfem_last_error and tfem_get_warning.
  *
  * Thread contract
  * - A tfem_model must be used by one thread at a time (no internal
  *   locking); different models may be used concurrently from different
- *   threads. The solver itself uses a thread pool internally.
+ *   threads. The solver itself runs on a thread pool: the process-wide one
+ *   (as many threads as cores, or RAYON_NUM_THREADS), or the model's own
+ *   with tfem_set_threads (1 for a host that runs its own threads).
  * - tfem_version, tfem_element_stiffness, tfem_laplacian_stiffness and
  *   tfem_contact_options_default are pure and thread-safe; their errors go
- *   to a per-thread slot read with tfem_last_error(NULL, ...).
+ *   to a per-thread slot read with tfem_last_error(NULL, ...), which their
+ *   next success clears.
  * - No panic crosses the boundary: an internal failure returns
- *   TFEM_STATUS_INTERNAL.
+ *   TFEM_STATUS_INTERNAL (its message read with tfem_last_error).
  */
 
 
@@ -411,11 +424,18 @@ enum tfem_status tfem_get_warning(struct tfem_model *model, int index, char *buf
 /**
  * Sets the mesh: `n_nodes` nodes with coordinates `xy` (2·n_nodes values,
  * x0 y0 x1 y1 …), `n_triangles` P1 triangles with `connectivity`
- * (3·n_triangles node indices, counter-clockwise) and a body tag per
- * triangle in `body_of_triangle`. `index_base` is 0 (C) or 1 (Fortran) and
- * applies to every index of every later call. Degenerate and inverted
- * triangles are legal. Replacing a mesh discards constraints, loads,
- * contact pairs and results; materials and tempering are kept.
+ * (3·n_triangles node indices) and a body tag per triangle in
+ * `body_of_triangle`. `index_base` is 0 (C) or 1 (Fortran) and applies to
+ * every index of every later call. Orientation: triangles may be numbered
+ * clockwise, counter-clockwise, or both; each connected region of a body
+ * is numbered consistently across its shared edges and turned
+ * counter-clockwise by area (a warning counts the triangles turned; every
+ * later output refers to the turned triangles). A triangle still
+ * clockwise then is a fold of the mesh, an inverted element, which TFEM
+ * tempers (a warning counts them). Degenerate triangles are legal.
+ * Coordinates whose products overflow double precision are refused.
+ * Replacing a mesh discards constraints, loads, contact pairs and
+ * results; materials and tempering are kept.
  */
 enum tfem_status tfem_set_mesh(struct tfem_model *model,
                                int n_nodes,
@@ -440,7 +460,12 @@ enum tfem_status tfem_load_gmsh(struct tfem_model *model, const char *path, int 
 /**
  * Sets the tagged boundary edges: `n_edges` edges given by `edge_nodes`
  * (2·n_edges node indices) with a tag each in `tags`. Tags name the edges
- * for loads, constraints and contact pairs. Replaces previous edges.
+ * for loads, constraints and contact pairs. Replaces previous edges (use
+ * `tfem_add_boundary_edges` to add one group at a time). Refused, naming
+ * the tag, when a load or contact pair already declared would lose its
+ * edges or find them interior (an edge shared by two triangles can carry
+ * a constraint, not a load or a contact interface); on any error nothing
+ * changes.
  */
 enum tfem_status tfem_set_boundary_edges(struct tfem_model *model,
                                          int n_edges,
@@ -468,20 +493,26 @@ enum tfem_status tfem_set_tempering(struct tfem_model *model, int mode, double v
  * Chooses the fill-reducing ordering: `ordering` is an `OrderingMode`
  * (0 auto, 1 AMD, 2 nested dissection); `parallel_subtrees` = 1 (default)
  * factorises the two subtrees of a nested dissection concurrently, 0 as
- * one tree. Results do not depend on either beyond round-off; a change
- * discards the symbolic analysis kept for the mesh.
+ * one tree. Results do not depend on either beyond round-off: the results
+ * of the last solve (all of them, the matrix included) are kept, and the
+ * next solve analyses the matrix anew.
  */
 enum tfem_status tfem_set_ordering(struct tfem_model *model, int ordering, int parallel_subtrees);
 
 /**
  * Prescribes displacement component `component` (0 x, 1 y) of `node` to
- * `value` (model length units).
+ * `value` (model length units). A component already prescribed a
+ * different value is refused (TFEM_STATUS_INVALID_ARGUMENT naming the
+ * node): one of the two would silently win. Call `tfem_clear_constraints`
+ * to change prescribed values.
  */
 enum tfem_status tfem_fix(struct tfem_model *model, int node, int comp, double value);
 
 /**
  * Prescribes component `component` to `value` on every node of the
- * boundary edges tagged `tag`.
+ * boundary edges tagged `tag` (interior edges too). All or nothing: a node
+ * already prescribed a different value (see `tfem_fix`) refuses the
+ * whole call.
  */
 enum tfem_status tfem_fix_edges(struct tfem_model *model, int tag, int comp, double value);
 
@@ -491,24 +522,29 @@ enum tfem_status tfem_fix_edges(struct tfem_model *model, int tag, int comp, dou
 enum tfem_status tfem_clear_constraints(struct tfem_model *model);
 
 /**
- * Applies pressure `pressure` (force per unit length, positive pushing
- * into the body) on the boundary edges tagged `tag`. Loads add up.
+ * Applies pressure `pressure` on the boundary edges tagged `tag`: a
+ * stress (force per unit area, Pa in SI), positive pushing into the body;
+ * with the 2D convention of unit thickness, an edge of length ℓ carries
+ * the force ℓ·pressure per unit thickness. Loads add up.
  */
 enum tfem_status tfem_add_pressure(struct tfem_model *model, int tag, double pressure);
 
 /**
- * Applies the traction (tx, ty) (force per unit length) on the boundary
- * edges tagged `tag`. Loads add up.
+ * Applies the traction (tx, ty) on the boundary edges tagged `tag`: a
+ * stress vector (force per unit area, Pa in SI); an edge of length ℓ
+ * carries ℓ·(tx, ty) per unit thickness. Loads add up.
  */
 enum tfem_status tfem_add_traction(struct tfem_model *model, int tag, double tx, double ty);
 
 /**
- * Adds the point force (fx, fy) at `node`.
+ * Adds the point force (fx, fy) at `node`: force per unit thickness (N/m
+ * in SI). Loads add up.
  */
 enum tfem_status tfem_add_nodal_force(struct tfem_model *model, int node, double fx, double fy);
 
 /**
- * Sets the body force (bx, by) (force per unit area) of body `body`.
+ * Sets the body force (bx, by) of body `body`: force per unit volume (ρg,
+ * N/m³ in SI), acting on each unit area of the mesh per unit thickness.
  */
 enum tfem_status tfem_set_body_force(struct tfem_model *model, int body, double bx, double by);
 
@@ -546,19 +582,23 @@ enum tfem_status tfem_get_element_strains(struct tfem_model *model, double *out,
 
 /**
  * Copies element stresses (σ_xx σ_yy σ_xy per triangle, 3·n_triangles
- * values), computed on request.
+ * values; force per unit area, Pa in SI), computed on request. An
+ * overflow gives TFEM_STATUS_NUMERICAL_FAILURE naming the triangle.
  */
 enum tfem_status tfem_get_element_stresses(struct tfem_model *model, double *out, size_t length);
 
 /**
  * Copies J (twice the signed area, initial configuration) of every
- * triangle (n_triangles values). Needs only a mesh.
+ * triangle as stored, that is after the turning of triangles numbered
+ * clockwise (see `tfem_set_mesh`): negative only for the mesh's folds
+ * (n_triangles values). Needs only a mesh.
  */
 enum tfem_status tfem_get_element_jacobians(struct tfem_model *model, double *out, size_t length);
 
 /**
- * Copies reaction forces (Rx Ry per node, 2·n_nodes values; zero at DOFs
- * that are not prescribed), computed on request.
+ * Copies reaction forces (Rx Ry per node, 2·n_nodes values; force per
+ * unit thickness, N/m in SI; zero at DOFs that are not prescribed),
+ * computed on request.
  */
 enum tfem_status tfem_get_reactions(struct tfem_model *model, double *out, size_t length);
 
@@ -579,8 +619,9 @@ enum tfem_status tfem_get_system_matrix_size(struct tfem_model *model, int64_t *
  * indices in the model's index base (`col_ptr[0]` = base). `dofs` (n
  * values) gives each unknown's position in the array of
  * `tfem_get_displacements`, in the index base (2·node + component for
- * base 0). Every buffer is checked before any is written. Not available
- * after a failed solve (TFEM_STATUS_INVALID_STATE): solve again.
+ * base 0). Every buffer is checked before any is written. Like every
+ * result it outlives a failed solve (which rebuilds it bit for bit) and
+ * is discarded by a change of the problem (TFEM_STATUS_INVALID_STATE).
  */
 enum tfem_status tfem_get_system_matrix(struct tfem_model *model,
                                         int64_t *col_ptr,
@@ -660,8 +701,9 @@ enum tfem_status tfem_solve_contact(struct tfem_model *model,
 enum tfem_status tfem_get_contact_active(struct tfem_model *model, int *out, size_t length);
 
 /**
- * Copies the contact pressure (positive in compression, 0 when inactive)
- * of every contact element (n_contact_elements values).
+ * Copies the contact pressure of every contact element (n_contact_elements
+ * values): the normal stress −n·σ·n in the element (force per unit area,
+ * Pa in SI), positive in compression, 0 when inactive.
  */
 enum tfem_status tfem_get_contact_pressure(struct tfem_model *model, double *out, size_t length);
 
@@ -677,6 +719,100 @@ enum tfem_status tfem_get_contact_elements(struct tfem_model *model, int *out, s
  */
 enum tfem_status tfem_get_contact_report(struct tfem_model *model,
                                          struct tfem_contact_report *report);
+
+/**
+ * Adds tagged boundary edges to those already set (see
+ * `tfem_set_boundary_edges`): `n_edges` edges given by `edge_nodes`
+ * (2·n_edges node indices) with a tag each in `tags`, for instance one
+ * call per boundary group. An edge given again with a tag it already has
+ * is refused (its loads would count twice); on any error nothing changes.
+ */
+enum tfem_status tfem_add_boundary_edges(struct tfem_model *model,
+                                         int n_edges,
+                                         const int *edge_nodes,
+                                         const int *tags);
+
+/**
+ * Writes the work of the external loads of the last solve, Σ f·u over
+ * every node (force × length per unit thickness, J/m in SI): for a
+ * pressure load, the compliance ∫ p (−u·n) ds.
+ */
+enum tfem_status tfem_get_external_work(struct tfem_model *model, double *work);
+
+/**
+ * Copies the force the contact exerts on every node in the last contact
+ * solve (fx fy per node, 2·n_nodes values; force per unit thickness, N/m
+ * in SI; zero off the contact interfaces), computed on request. The
+ * forces of one pair sum to zero; on a body they balance its loads and
+ * reactions.
+ */
+enum tfem_status tfem_get_contact_forces(struct tfem_model *model, double *out, size_t length);
+
+/**
+ * Copies the normal gap at every node in the last contact solve
+ * (n_nodes values, model length units; zero off the contact interfaces),
+ * computed on request: the smallest, over the contact elements at the
+ * node, of the distance of an element's apex from its interface edge in
+ * the deformed configuration (linearised). Positive: open; negative: the
+ * bodies interpenetrate (by O(h²), the penalty of the contact elements).
+ */
+enum tfem_status tfem_get_contact_gaps(struct tfem_model *model, double *out, size_t length);
+
+/**
+ * Writes the number of elements of the contact mesh B of the declared
+ * contact pairs, available before any solve (0 without pairs).
+ */
+enum tfem_status tfem_get_contact_mesh_size(struct tfem_model *model, int *n_elements);
+
+/**
+ * Copies the nodes of every element of the contact mesh B of the declared
+ * contact pairs (3 per element, in the model's index base, oriented so
+ * that J > 0 when the gap opens), available before any solve: the same
+ * elements, in the same order, as `tfem_get_contact_elements` gives after
+ * a contact solve.
+ */
+enum tfem_status tfem_get_contact_mesh(struct tfem_model *model, int *out, size_t length);
+
+/**
+ * Copies, for every element of the contact mesh B (see
+ * `tfem_get_contact_mesh`), the index of its contact pair (0-based, as
+ * returned by `tfem_add_contact_pair`, whatever the index base).
+ */
+enum tfem_status tfem_get_contact_element_pairs(struct tfem_model *model, int *out, size_t length);
+
+/**
+ * Copies, for every element of the contact mesh B (see
+ * `tfem_get_contact_mesh`), its apex: the node (in the model's index
+ * base) alone on its side of the interface, whose distance from the
+ * element's interface edge is the element's gap.
+ */
+enum tfem_status tfem_get_contact_element_apexes(struct tfem_model *model, int *out, size_t length);
+
+/**
+ * Writes the bodies of contact pair `pair` (0-based, as returned by
+ * `tfem_add_contact_pair`): `body_a` carries the pair's first tag,
+ * `body_b` its second. Either pointer may be NULL.
+ */
+enum tfem_status tfem_get_contact_pair_bodies(struct tfem_model *model,
+                                              int pair,
+                                              int *body_a,
+                                              int *body_b);
+
+/**
+ * Sets the number of threads the model's solves run on: `threads` >= 1
+ * gives the model a pool of its own (1: no parallelism at all, for a
+ * host that runs its own OpenMP or MPI threads); 0 (the default) uses
+ * the process-wide pool, with as many threads as cores or the
+ * environment variable RAYON_NUM_THREADS. Results do not depend on it
+ * beyond round-off, and are kept.
+ */
+enum tfem_status tfem_set_threads(struct tfem_model *model, int threads);
+
+/**
+ * Writes the number of threads the model's solves run on (see
+ * `tfem_set_threads`).
+ */
+enum tfem_status tfem_get_threads(struct tfem_model *model, int *threads);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -119,5 +119,26 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
+/// Refuses a result with a value that is not finite (an overflow):
+/// `values` holds `per` values per item, and the error names the first
+/// such item with `name` and says which `quantity` overflowed.
+pub(crate) fn ensure_finite(
+    values: impl IntoIterator<Item = f64>,
+    per: usize,
+    quantity: &str,
+    name: impl Fn(usize) -> String,
+) -> Result<()> {
+    match values.into_iter().position(|v| !v.is_finite()) {
+        None => Ok(()),
+        Some(i) => Err(Error::new(
+            Status::NumericalFailure,
+            format!(
+                "the {quantity} of {} is not finite (an overflow: rescale the model or its loads)",
+                name(i / per.max(1))
+            ),
+        )),
+    }
+}
+
 /// Result type of the tfem API.
 pub type Result<T> = std::result::Result<T, Error>;

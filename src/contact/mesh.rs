@@ -5,7 +5,7 @@
 
 use std::collections::{HashMap, HashSet};
 
-use super::ContactElement;
+use super::{ContactElement, ContactPair};
 use crate::error::{Error, Result};
 use crate::fem::element::TriGeometry;
 use crate::fem::mesh::Mesh;
@@ -226,9 +226,9 @@ pub fn build_conforming(
             )));
         }
         let n = a.edges[&(a1.min(b1), a1.max(b1))];
-        for (tri, edge_len) in [
-            ([a1, b1, b2], dist(x[a1], x[b1])),
-            ([a1, b2, a2], dist(x[a2], x[b2])),
+        for (tri, edge_len, apex) in [
+            ([a1, b1, b2], dist(x[a1], x[b1]), b2),
+            ([a1, b2, a2], dist(x[a2], x[b2]), a1),
         ] {
             let geo = TriGeometry::new(&mesh.corners(&tri));
             elements.push(ContactElement {
@@ -238,6 +238,7 @@ pub fn build_conforming(
                 h: geo.h,
                 edge_length: edge_len,
                 pair,
+                apex,
             });
         }
     }
@@ -322,6 +323,9 @@ pub fn check_user_mesh(
             geo = TriGeometry::new(&mesh.corners(&nodes));
             flipped += 1;
         }
+        let apex = tri[(0..3)
+            .find(|&k| on_a[k] != same_on_a)
+            .expect("one node apart")];
         out.push(ContactElement {
             nodes,
             normal,
@@ -329,6 +333,7 @@ pub fn check_user_mesh(
             h: geo.h,
             edge_length: dist(x[p], x[q]),
             pair,
+            apex,
         });
     }
     Ok((out, flipped))
@@ -482,6 +487,20 @@ fn chain(mesh: &Mesh, side: &Side, tag: i32) -> Result<Vec<usize>> {
         )));
     }
     Ok(out)
+}
+
+/// B of every pair in turn (pair i's elements carry `pair = i`): built,
+/// or the user's mesh checked.
+pub fn build_all(mesh: &Mesh, pairs: &[ContactPair]) -> Result<Vec<ContactElement>> {
+    let mut all = Vec::new();
+    for (i, p) in pairs.iter().enumerate() {
+        let mut elements = match &p.user_mesh {
+            None => build(mesh, i, p.tag_a, p.tag_b)?,
+            Some(tris) => check_user_mesh(mesh, i, p.tag_a, p.tag_b, tris)?.0,
+        };
+        all.append(&mut elements);
+    }
+    Ok(all)
 }
 
 /// Builds B for a pair: conforming (node-to-node quads) when the nodes of

@@ -25,7 +25,9 @@ pub use law::{
     ContactStiffness, contact_pressure, contact_stiffness, law_matrix, linearised_jacobian,
     linearised_opening, opening_coefficient,
 };
-pub use mesh::{build, build_conforming, build_nonconforming, check_user_mesh, pair_bodies};
+pub use mesh::{
+    build, build_all, build_conforming, build_nonconforming, check_user_mesh, pair_bodies,
+};
 pub use set::{ContactSet, ElementLaw, initial_active_set};
 
 use crate::error::{Error, Result};
@@ -103,14 +105,14 @@ impl ContactOptions {
         if let Some(e) = self.contact_modulus {
             if !(e.is_finite() && e > 0.0) {
                 return Err(Error::argument(format!(
-                    "contact modulus E_c = {e} must be finite and > 0"
+                    "contact modulus E_c = {e:?} must be finite and > 0"
                 )));
             }
         }
         if let Some(l) = self.lambda {
             if !(l.is_finite() && l > 0.0) {
                 return Err(Error::argument(format!(
-                    "contact lambda = {l} must be finite and > 0"
+                    "contact lambda = {l:?} must be finite and > 0"
                 )));
             }
         }
@@ -152,4 +154,7 @@ pub struct ContactElement {
     pub edge_length: f64,
     /// Index of the pair it belongs to.
     pub pair: usize,
+    /// Its apex: the node alone on its side of the interface (0-based),
+    /// whose distance from the interface edge is the element's gap.
+    pub apex: usize,
 }

@@ -11,7 +11,7 @@ use super::law::{
     opening_coefficient,
 };
 use super::{ContactElement, ContactOptions, ContactPair, InversionTest};
-use crate::error::{Error, Result, Status};
+use crate::error::{Error, Result, Status, ensure_finite};
 use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
 use crate::fem::element::{TriGeometry, jmin_of_lambda};
 use crate::fem::material::Material;
@@ -66,6 +66,11 @@ impl<'a> ContactSet<'a> {
             .enumerate()
             .map(|(k, el)| contact_stiffness(&geos[k], &laws[k].d, el.normal, el.j0, laws[k].t))
             .collect();
+        let name = |k: usize| format!("contact element {}", k + mesh.index_base());
+        let values = stiffness
+            .iter()
+            .flat_map(|cs| cs.k.iter().chain(&cs.f0).copied());
+        ensure_finite(values, 42, "stiffness", name)?;
         let unknowns: Vec<[Option<usize>; 6]> = elements
             .iter()
             .map(|el| {
@@ -85,6 +90,11 @@ impl<'a> ContactSet<'a> {
             unknowns,
             loads,
         })
+    }
+
+    /// The mesh.
+    pub fn mesh(&self) -> &'a Mesh {
+        self.mesh
     }
 
     /// Number of elements.

@@ -89,10 +89,10 @@ impl Tempering {
     pub fn validate(&self) -> Result<()> {
         match *self {
             Tempering::Lambda(l) if !(l.is_finite() && l > 0.0) => Err(Error::argument(format!(
-                "tempering lambda = {l} must be finite and > 0"
+                "tempering lambda = {l:?} must be finite and > 0"
             ))),
             Tempering::Fixed(j) if !(j.is_finite() && j > 0.0) => Err(Error::argument(format!(
-                "tempering jmin = {j} must be finite and > 0"
+                "tempering jmin = {j:?} must be finite and > 0"
             ))),
             _ => Ok(()),
         }

@@ -54,19 +54,28 @@ impl Loads {
     /// The consistent nodal vector of the loads on `mesh` (2 values per
     /// node: f_x, f_y): each edge load split equally between the edge's
     /// nodes, body forces split equally between the triangle's corners.
-    pub fn nodal_vector(&self, mesh: &Mesh) -> Vec<f64> {
+    /// Fails, naming the edge, if a pressure acts on an edge without an
+    /// outward normal (which [`check_loaded_tag`] refuses beforehand).
+    pub fn nodal_vector(&self, mesh: &Mesh) -> Result<Vec<f64>> {
         let mut f = vec![0.0; 2 * mesh.nodes().len()];
         for &(tag, load) in &self.edge {
-            for e in mesh.boundary_edges().iter().filter(|e| e.tag == tag) {
+            for (k, e) in mesh.boundary_edges().iter().enumerate() {
+                if e.tag != tag {
+                    continue;
+                }
                 let [p, q] = e.nodes;
                 let (xp, xq) = (mesh.nodes()[p], mesh.nodes()[q]);
                 let len = (xq[0] - xp[0]).hypot(xq[1] - xp[1]);
                 let t = match load {
                     EdgeLoad::Traction(t) => t,
                     EdgeLoad::Pressure(pr) => {
-                        let n = mesh
-                            .outward_normal(e)
-                            .expect("checked when the load was added");
+                        let n = mesh.outward_normal(e).ok_or_else(|| {
+                            Error::argument(format!(
+                                "boundary edge {} (tag {tag}) is interior or has zero length: \
+                                 it cannot carry a pressure",
+                                k + mesh.index_base()
+                            ))
+                        })?;
                         [-pr * n[0], -pr * n[1]]
                     }
                 };
@@ -92,7 +101,7 @@ impl Loads {
                 }
             }
         }
-        f
+        Ok(f)
     }
 }
 

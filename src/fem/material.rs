@@ -43,7 +43,7 @@ impl Material {
         if !(young.is_finite() && young > 0.0) {
             return Err(Error::new(
                 Status::InvalidMaterial,
-                format!("{what}: Young's modulus E = {young} must be finite and > 0"),
+                format!("{what}: Young's modulus E = {young:?} must be finite and > 0"),
             ));
         }
         let upper_ok = match plane {
@@ -57,7 +57,7 @@ impl Material {
             };
             return Err(Error::new(
                 Status::InvalidMaterial,
-                format!("{what}: Poisson ratio nu = {poisson} must lie in {range}"),
+                format!("{what}: Poisson ratio nu = {poisson:?} must lie in {range}"),
             ));
         }
         Ok(Material {

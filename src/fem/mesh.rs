@@ -2,13 +2,16 @@
 //! edges, and their validation.
 //!
 //! Degenerate (zero-area) and inverted triangles are legal: they are what
-//! TFEM is for. What is rejected is what no method can use: indices out of
+//! TFEM is for. Triangles numbered clockwise are turned
+//! ([`super::orientation`]), so that only folds of the mesh count as
+//! inverted. What is rejected is what no method can use: indices out of
 //! range, a node repeated in a triangle, non-finite coordinates, an empty
 //! mesh.
 
-use std::collections::HashMap;
+use std::collections::{BTreeMap, HashMap, HashSet};
 
 use super::element::TriGeometry;
+use super::orientation::{Turned, orient};
 use crate::error::{Error, Result};
 
 /// A tagged boundary edge, with the triangle that owns it.
@@ -81,7 +84,7 @@ impl Mesh {
             .position(|p| !(p[0].is_finite() && p[1].is_finite()))
         {
             return Err(Error::mesh(format!(
-                "node {}: coordinates ({}, {}) are not finite",
+                "node {}: coordinates ({:?}, {:?}) are not finite",
                 i + b,
                 nodes[i][0],
                 nodes[i][1]
@@ -115,6 +118,19 @@ impl Mesh {
                 )));
             }
         }
+        let mut j = Vec::with_capacity(triangles.len());
+        for (t, tri) in triangles.iter().enumerate() {
+            let geo = TriGeometry::new(&[nodes[tri[0]], nodes[tri[1]], nodes[tri[2]]]);
+            if !(geo.j.is_finite() && geo.h.is_finite()) {
+                return Err(Error::mesh(format!(
+                    "triangle {}: its size or area overflows (coordinates too large for double \
+                     precision: rescale the model)",
+                    t + b
+                )));
+            }
+            j.push(geo.j);
+        }
+        let turned = orient(&mut triangles, &body_of, &j);
         let mut node_body = vec![None; n];
         for (tri, &body) in triangles.iter().zip(&body_of) {
             for &v in tri {
@@ -140,11 +156,11 @@ impl Mesh {
             index_base,
             warnings: Vec::new(),
         };
-        mesh.collect_warnings();
+        mesh.collect_warnings(&turned, &j);
         Ok(mesh)
     }
 
-    fn collect_warnings(&mut self) {
+    fn collect_warnings(&mut self, turned: &[Turned], j: &[f64]) {
         let b = self.index_base;
         let unused: Vec<usize> = (0..self.nodes.len())
             .filter(|&i| self.node_body[i].is_none())
@@ -180,28 +196,34 @@ impl Mesh {
                 list(&dupes)
             ));
         }
-        for &body in &self.bodies {
-            let (mut n_tri, mut n_inv, mut area) = (0usize, 0usize, 0.0);
-            for (t, tri) in self.triangles.iter().enumerate() {
-                if self.body_of[t] != body {
-                    continue;
-                }
-                let j = TriGeometry::new(&self.corners(tri)).j;
-                n_tri += 1;
-                area += j;
-                n_inv += usize::from(j < 0.0);
+        for r in turned {
+            self.warnings.push(format!(
+                "body {}: {} triangle(s) numbered clockwise (e.g. triangle {}) were turned \
+                 counter-clockwise, numbering each region of the body consistently across shared \
+                 edges; results refer to the turned triangles",
+                r.body,
+                r.count,
+                r.first + b
+            ));
+        }
+        // Still clockwise after the turning: folds of the mesh.
+        let mut inverted: BTreeMap<i32, usize> = BTreeMap::new();
+        for (t, &jt) in j.iter().enumerate() {
+            let turned_here = turned.iter().any(|r| r.body == self.body_of[t]);
+            let now = if turned_here {
+                TriGeometry::new(&self.corners(&self.triangles[t])).j
+            } else {
+                jt
+            };
+            if now < 0.0 {
+                *inverted.entry(self.body_of[t]).or_default() += 1;
             }
-            if area < 0.0 {
-                self.warnings.push(format!(
-                    "body {body}: the triangles are ordered clockwise ({n_inv} of {n_tri} have J < 0); \
-                     TFEM treats J < 0 as inverted and tempers it: give counter-clockwise triangles"
-                ));
-            } else if n_inv > 0 {
-                self.warnings.push(format!(
-                    "body {body}: {n_inv} inverted triangle(s) (J < 0): TFEM tempers them with Jmin; \
-                     plain FEM (tempering off) integrates them with |J|, a wrong stiffness"
-                ));
-            }
+        }
+        for (body, n_inv) in inverted {
+            self.warnings.push(format!(
+                "body {body}: {n_inv} inverted triangle(s) (J < 0): TFEM tempers them with Jmin; \
+                 plain FEM (tempering off) integrates them with |J|, a wrong stiffness"
+            ));
         }
     }
 
@@ -209,6 +231,34 @@ impl Mesh {
     /// ones. Each edge must be a side of at least one triangle. On error the
     /// mesh is unchanged.
     pub fn set_boundary_edges(&mut self, edges: &[[usize; 2]], tags: &[i32]) -> Result<()> {
+        self.edges = self.checked_edges(edges, tags, &[])?;
+        Ok(())
+    }
+
+    /// Adds tagged boundary edges to those already set (one group at a
+    /// time, say). An edge given again with a tag it already has is
+    /// refused (its loads would count twice). On error the mesh is
+    /// unchanged.
+    pub fn add_boundary_edges(&mut self, edges: &[[usize; 2]], tags: &[i32]) -> Result<()> {
+        let mut added = self.checked_edges(edges, tags, &self.edges)?;
+        self.edges.append(&mut added);
+        Ok(())
+    }
+
+    /// Replaces the boundary edges by `edges` (checked with
+    /// [`Mesh::checked_edges`]), returning the previous ones.
+    pub fn replace_edges(&mut self, edges: Vec<BoundaryEdge>) -> Vec<BoundaryEdge> {
+        std::mem::replace(&mut self.edges, edges)
+    }
+
+    /// Validates tagged edges (0-based nodes) to join `existing` ones: each
+    /// must be a side of a triangle, and no (edge, tag) may be given twice.
+    pub fn checked_edges(
+        &self,
+        edges: &[[usize; 2]],
+        tags: &[i32],
+        existing: &[BoundaryEdge],
+    ) -> Result<Vec<BoundaryEdge>> {
         let b = self.index_base;
         if edges.len() != tags.len() {
             return Err(Error::argument(format!(
@@ -228,6 +278,16 @@ impl Mesh {
                     .or_insert((t, r, 1));
             }
         }
+        let mut seen: HashSet<(usize, usize, i32)> = existing
+            .iter()
+            .map(|e| {
+                (
+                    e.nodes[0].min(e.nodes[1]),
+                    e.nodes[0].max(e.nodes[1]),
+                    e.tag,
+                )
+            })
+            .collect();
         let mut out = Vec::with_capacity(edges.len());
         for (e, (&[p, q], &tag)) in edges.iter().zip(tags).enumerate() {
             if p >= n || q >= n {
@@ -257,14 +317,23 @@ impl Mesh {
                 Some(&(t, r, 1)) => Some((t, r)),
                 Some(_) => None,
             };
+            let key = (p.min(q), p.max(q), tag);
+            if !seen.insert(key) {
+                return Err(Error::mesh(format!(
+                    "boundary edge {} (nodes {}, {}) is given tag {tag} twice: its loads would count \
+                     twice",
+                    e + b,
+                    p + b,
+                    q + b
+                )));
+            }
             out.push(BoundaryEdge {
                 nodes: [p, q],
                 tag,
                 owner,
             });
         }
-        self.edges = out;
-        Ok(())
+        Ok(out)
     }
 
     /// Node coordinates.

@@ -1,8 +1,9 @@
 //! The finite elements: meshes of P1 triangles ([`mesh`]), materials
 //! ([`material`]), the tempered element ([`element`]), the numbering of
 //! unknowns and the sparsity pattern ([`assembly`]), loads ([`loads`]),
-//! the one loop over body elements ([`element_loop`]) and the bodies' part
-//! of the system assembled on the pattern ([`body`]).
+//! the one loop over body elements ([`element_loop`]), the bodies' part
+//! of the system assembled on the pattern ([`body`]) and the orientation
+//! of triangles numbered clockwise ([`orientation`]).
 
 pub mod assembly;
 pub mod body;
@@ -11,3 +12,4 @@ pub mod element_loop;
 pub mod loads;
 pub mod material;
 pub mod mesh;
+pub mod orientation;

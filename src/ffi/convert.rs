@@ -167,7 +167,7 @@ pub(super) fn jmin_arg(jmin: f64) -> Result<Jmin> {
         Ok(Jmin::Tempered(jmin))
     } else {
         Err(Error::argument(format!(
-            "jmin = {jmin} must be > 0 (tempered) or 0 (plain FEM)"
+            "jmin = {jmin:?} must be > 0 (tempered) or 0 (plain FEM)"
         )))
     }
 }
@@ -176,7 +176,7 @@ pub(super) fn corners_arg(xy: *const f64) -> Result<[[f64; 2]; 3]> {
     let xy = slice_in(xy, 6, "xy")?;
     if let Some(k) = xy.iter().position(|v| !v.is_finite()) {
         return Err(Error::argument(format!(
-            "xy[{k}] = {} is not finite",
+            "xy[{k}] = {:?} is not finite",
             xy[k]
         )));
     }
@@ -209,7 +209,7 @@ pub(super) fn options_in(o: &TfemContactOptions) -> Result<ContactOptions> {
             Ok(Some(v))
         } else {
             Err(Error::argument(format!(
-                "options.{what} = {v} must be > 0, or 0 for the default"
+                "options.{what} = {v:?} must be > 0, or 0 for the default"
             )))
         }
     };

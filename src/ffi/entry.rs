@@ -2,15 +2,14 @@
 //! its arguments, calls the Rust API, and writes its outputs.
 
 use std::ffi::{c_char, c_int};
-use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use super::convert::{
     TfemContactOptions, TfemContactReport, TfemSolveInfo, component, corners_arg, info_out,
     jmin_arg, options_in, plane, report_out,
 };
 use super::plumbing::{
-    LAST_ERROR, TfemModel, copy_message, copy_out, count, map_out, null, slice_in, with_model,
-    without_model, write,
+    LAST_ERROR, TfemModel, copy_message, copy_out, count, guarded, map_out, null, slice_in,
+    with_model, without_model, write,
 };
 use crate::contact::ContactOptions;
 use crate::error::{Error, Result, Status};
@@ -31,7 +30,7 @@ pub extern "C" fn tfem_version() -> *const c_char {
 /// Free it with `tfem_destroy`.
 #[unsafe(no_mangle)]
 pub extern "C" fn tfem_create() -> *mut TfemModel {
-    catch_unwind(|| {
+    guarded(|| {
         Box::into_raw(Box::new(TfemModel {
             model: Model::new(),
             index_base: 0,
@@ -47,7 +46,7 @@ pub extern "C" fn tfem_create() -> *mut TfemModel {
 pub unsafe extern "C" fn tfem_destroy(model: *mut TfemModel) {
     if !model.is_null() {
         // SAFETY: a handle from tfem_create, destroyed once.
-        let _ = catch_unwind(AssertUnwindSafe(|| drop(unsafe { Box::from_raw(model) })));
+        let _ = guarded(|| drop(unsafe { Box::from_raw(model) }));
     }
 }
 
@@ -125,11 +124,18 @@ pub unsafe extern "C" fn tfem_get_warning(
 
 /// Sets the mesh: `n_nodes` nodes with coordinates `xy` (2·n_nodes values,
 /// x0 y0 x1 y1 …), `n_triangles` P1 triangles with `connectivity`
-/// (3·n_triangles node indices, counter-clockwise) and a body tag per
-/// triangle in `body_of_triangle`. `index_base` is 0 (C) or 1 (Fortran) and
-/// applies to every index of every later call. Degenerate and inverted
-/// triangles are legal. Replacing a mesh discards constraints, loads,
-/// contact pairs and results; materials and tempering are kept.
+/// (3·n_triangles node indices) and a body tag per triangle in
+/// `body_of_triangle`. `index_base` is 0 (C) or 1 (Fortran) and applies to
+/// every index of every later call. Orientation: triangles may be numbered
+/// clockwise, counter-clockwise, or both; each connected region of a body
+/// is numbered consistently across its shared edges and turned
+/// counter-clockwise by area (a warning counts the triangles turned; every
+/// later output refers to the turned triangles). A triangle still
+/// clockwise then is a fold of the mesh, an inverted element, which TFEM
+/// tempers (a warning counts them). Degenerate triangles are legal.
+/// Coordinates whose products overflow double precision are refused.
+/// Replacing a mesh discards constraints, loads, contact pairs and
+/// results; materials and tempering are kept.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_set_mesh(
     model: *mut TfemModel,
@@ -229,7 +235,12 @@ fn load_gmsh(_: &mut TfemModel, _: &std::path::Path, _: usize) -> Result<()> {
 
 /// Sets the tagged boundary edges: `n_edges` edges given by `edge_nodes`
 /// (2·n_edges node indices) with a tag each in `tags`. Tags name the edges
-/// for loads, constraints and contact pairs. Replaces previous edges.
+/// for loads, constraints and contact pairs. Replaces previous edges (use
+/// `tfem_add_boundary_edges` to add one group at a time). Refused, naming
+/// the tag, when a load or contact pair already declared would lose its
+/// edges or find them interior (an edge shared by two triangles can carry
+/// a constraint, not a load or a contact interface); on any error nothing
+/// changes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_set_boundary_edges(
     model: *mut TfemModel,
@@ -238,19 +249,30 @@ pub unsafe extern "C" fn tfem_set_boundary_edges(
     tags: *const c_int,
 ) -> Status {
     with_model(model, |m| {
-        let n = m.n_nodes()?;
-        let ne = count(n_edges, "n_edges")?;
-        let en = slice_in(edge_nodes, 2 * ne, "edge_nodes")?;
-        let tags = slice_in(tags, ne, "tags")?;
-        let mut edges = Vec::with_capacity(ne);
-        for c in en.chunks_exact(2) {
-            edges.push([
-                m.index(c[0], n, "edge node")?,
-                m.index(c[1], n, "edge node")?,
-            ]);
-        }
+        let (edges, tags) = edges_in(m, n_edges, edge_nodes, tags)?;
         m.model.set_boundary_edges(&edges, tags)
     })
+}
+
+/// The edges (0-based) and tags of a C edge list.
+fn edges_in<'t>(
+    m: &TfemModel,
+    n_edges: c_int,
+    edge_nodes: *const c_int,
+    tags: *const c_int,
+) -> Result<(Vec<[usize; 2]>, &'t [c_int])> {
+    let n = m.n_nodes()?;
+    let ne = count(n_edges, "n_edges")?;
+    let en = slice_in(edge_nodes, 2 * ne, "edge_nodes")?;
+    let tags = slice_in(tags, ne, "tags")?;
+    let mut edges = Vec::with_capacity(ne);
+    for c in en.chunks_exact(2) {
+        edges.push([
+            m.index(c[0], n, "edge node")?,
+            m.index(c[1], n, "edge node")?,
+        ]);
+    }
+    Ok((edges, tags))
 }
 
 /// Sets the material of body `body`: Young's modulus `young` (> 0), Poisson
@@ -297,8 +319,9 @@ pub unsafe extern "C" fn tfem_set_tempering(
 /// Chooses the fill-reducing ordering: `ordering` is an `OrderingMode`
 /// (0 auto, 1 AMD, 2 nested dissection); `parallel_subtrees` = 1 (default)
 /// factorises the two subtrees of a nested dissection concurrently, 0 as
-/// one tree. Results do not depend on either beyond round-off; a change
-/// discards the symbolic analysis kept for the mesh.
+/// one tree. Results do not depend on either beyond round-off: the results
+/// of the last solve (all of them, the matrix included) are kept, and the
+/// next solve analyses the matrix anew.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_set_ordering(
     model: *mut TfemModel,
@@ -332,7 +355,10 @@ pub unsafe extern "C" fn tfem_set_ordering(
 }
 
 /// Prescribes displacement component `component` (0 x, 1 y) of `node` to
-/// `value` (model length units).
+/// `value` (model length units). A component already prescribed a
+/// different value is refused (TFEM_STATUS_INVALID_ARGUMENT naming the
+/// node): one of the two would silently win. Call `tfem_clear_constraints`
+/// to change prescribed values.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_fix(
     model: *mut TfemModel,
@@ -348,7 +374,9 @@ pub unsafe extern "C" fn tfem_fix(
 }
 
 /// Prescribes component `component` to `value` on every node of the
-/// boundary edges tagged `tag`.
+/// boundary edges tagged `tag` (interior edges too). All or nothing: a node
+/// already prescribed a different value (see `tfem_fix`) refuses the
+/// whole call.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_fix_edges(
     model: *mut TfemModel,
@@ -371,8 +399,10 @@ pub unsafe extern "C" fn tfem_clear_constraints(model: *mut TfemModel) -> Status
     })
 }
 
-/// Applies pressure `pressure` (force per unit length, positive pushing
-/// into the body) on the boundary edges tagged `tag`. Loads add up.
+/// Applies pressure `pressure` on the boundary edges tagged `tag`: a
+/// stress (force per unit area, Pa in SI), positive pushing into the body;
+/// with the 2D convention of unit thickness, an edge of length ℓ carries
+/// the force ℓ·pressure per unit thickness. Loads add up.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_add_pressure(
     model: *mut TfemModel,
@@ -382,8 +412,9 @@ pub unsafe extern "C" fn tfem_add_pressure(
     with_model(model, |m| m.model.add_pressure(tag, pressure))
 }
 
-/// Applies the traction (tx, ty) (force per unit length) on the boundary
-/// edges tagged `tag`. Loads add up.
+/// Applies the traction (tx, ty) on the boundary edges tagged `tag`: a
+/// stress vector (force per unit area, Pa in SI); an edge of length ℓ
+/// carries ℓ·(tx, ty) per unit thickness. Loads add up.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_add_traction(
     model: *mut TfemModel,
@@ -394,7 +425,8 @@ pub unsafe extern "C" fn tfem_add_traction(
     with_model(model, |m| m.model.add_traction(tag, [tx, ty]))
 }
 
-/// Adds the point force (fx, fy) at `node`.
+/// Adds the point force (fx, fy) at `node`: force per unit thickness (N/m
+/// in SI). Loads add up.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_add_nodal_force(
     model: *mut TfemModel,
@@ -409,7 +441,8 @@ pub unsafe extern "C" fn tfem_add_nodal_force(
     })
 }
 
-/// Sets the body force (bx, by) (force per unit area) of body `body`.
+/// Sets the body force (bx, by) of body `body`: force per unit volume (ρg,
+/// N/m³ in SI), acting on each unit area of the mesh per unit thickness.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_set_body_force(
     model: *mut TfemModel,
@@ -499,7 +532,8 @@ pub unsafe extern "C" fn tfem_get_element_strains(
 }
 
 /// Copies element stresses (σ_xx σ_yy σ_xy per triangle, 3·n_triangles
-/// values), computed on request.
+/// values; force per unit area, Pa in SI), computed on request. An
+/// overflow gives TFEM_STATUS_NUMERICAL_FAILURE naming the triangle.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_element_stresses(
     model: *mut TfemModel,
@@ -513,7 +547,9 @@ pub unsafe extern "C" fn tfem_get_element_stresses(
 }
 
 /// Copies J (twice the signed area, initial configuration) of every
-/// triangle (n_triangles values). Needs only a mesh.
+/// triangle as stored, that is after the turning of triangles numbered
+/// clockwise (see `tfem_set_mesh`): negative only for the mesh's folds
+/// (n_triangles values). Needs only a mesh.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_element_jacobians(
     model: *mut TfemModel,
@@ -526,8 +562,9 @@ pub unsafe extern "C" fn tfem_get_element_jacobians(
     })
 }
 
-/// Copies reaction forces (Rx Ry per node, 2·n_nodes values; zero at DOFs
-/// that are not prescribed), computed on request.
+/// Copies reaction forces (Rx Ry per node, 2·n_nodes values; force per
+/// unit thickness, N/m in SI; zero at DOFs that are not prescribed),
+/// computed on request.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_reactions(
     model: *mut TfemModel,
@@ -570,8 +607,9 @@ pub unsafe extern "C" fn tfem_get_system_matrix_size(
 /// indices in the model's index base (`col_ptr[0]` = base). `dofs` (n
 /// values) gives each unknown's position in the array of
 /// `tfem_get_displacements`, in the index base (2·node + component for
-/// base 0). Every buffer is checked before any is written. Not available
-/// after a failed solve (TFEM_STATUS_INVALID_STATE): solve again.
+/// base 0). Every buffer is checked before any is written. Like every
+/// result it outlives a failed solve (which rebuilds it bit for bit) and
+/// is discarded by a change of the problem (TFEM_STATUS_INVALID_STATE).
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)]
 pub unsafe extern "C" fn tfem_get_system_matrix(
@@ -650,7 +688,7 @@ pub unsafe extern "C" fn tfem_laplacian_stiffness(
         let x = corners_arg(xy)?;
         if !(kappa.is_finite() && kappa > 0.0) {
             return Err(Error::argument(format!(
-                "kappa = {kappa} must be finite and > 0"
+                "kappa = {kappa:?} must be finite and > 0"
             )));
         }
         let k = laplacian_stiffness(&TriGeometry::new(&x), kappa, jmin_arg(jmin)?)?;
@@ -782,8 +820,9 @@ pub unsafe extern "C" fn tfem_get_contact_active(
     })
 }
 
-/// Copies the contact pressure (positive in compression, 0 when inactive)
-/// of every contact element (n_contact_elements values).
+/// Copies the contact pressure of every contact element (n_contact_elements
+/// values): the normal stress −n·σ·n in the element (force per unit area,
+/// Pa in SI), positive in compression, 0 when inactive.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_contact_pressure(
     model: *mut TfemModel,
@@ -824,5 +863,203 @@ pub unsafe extern "C" fn tfem_get_contact_report(
 ) -> Status {
     with_model(model, |m| {
         write(report, report_out(m.model.contact_report()?), "report")
+    })
+}
+
+/// Adds tagged boundary edges to those already set (see
+/// `tfem_set_boundary_edges`): `n_edges` edges given by `edge_nodes`
+/// (2·n_edges node indices) with a tag each in `tags`, for instance one
+/// call per boundary group. An edge given again with a tag it already has
+/// is refused (its loads would count twice); on any error nothing changes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_add_boundary_edges(
+    model: *mut TfemModel,
+    n_edges: c_int,
+    edge_nodes: *const c_int,
+    tags: *const c_int,
+) -> Status {
+    with_model(model, |m| {
+        let (edges, tags) = edges_in(m, n_edges, edge_nodes, tags)?;
+        m.model.add_boundary_edges(&edges, tags)
+    })
+}
+
+/// Writes the work of the external loads of the last solve, Σ f·u over
+/// every node (force × length per unit thickness, J/m in SI): for a
+/// pressure load, the compliance ∫ p (−u·n) ds.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_external_work(model: *mut TfemModel, work: *mut f64) -> Status {
+    with_model(model, |m| write(work, m.model.external_work()?, "work"))
+}
+
+/// Copies the force the contact exerts on every node in the last contact
+/// solve (fx fy per node, 2·n_nodes values; force per unit thickness, N/m
+/// in SI; zero off the contact interfaces), computed on request. The
+/// forces of one pair sum to zero; on a body they balance its loads and
+/// reactions.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_forces(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let v: Vec<f64> = m.model.contact_forces()?.into_iter().flatten().collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies the normal gap at every node in the last contact solve
+/// (n_nodes values, model length units; zero off the contact interfaces),
+/// computed on request: the smallest, over the contact elements at the
+/// node, of the distance of an element's apex from its interface edge in
+/// the deformed configuration (linearised). Positive: open; negative: the
+/// bodies interpenetrate (by O(h²), the penalty of the contact elements).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_gaps(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        copy_out(&m.model.contact_gaps()?, out, length, "out")
+    })
+}
+
+/// Writes the number of elements of the contact mesh B of the declared
+/// contact pairs, available before any solve (0 without pairs).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_mesh_size(
+    model: *mut TfemModel,
+    n_elements: *mut c_int,
+) -> Status {
+    with_model(model, |m| {
+        write(
+            n_elements,
+            m.model.contact_mesh()?.len() as c_int,
+            "n_elements",
+        )
+    })
+}
+
+/// Copies the nodes of every element of the contact mesh B of the declared
+/// contact pairs (3 per element, in the model's index base, oriented so
+/// that J > 0 when the gap opens), available before any solve: the same
+/// elements, in the same order, as `tfem_get_contact_elements` gives after
+/// a contact solve.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_mesh(
+    model: *mut TfemModel,
+    out: *mut c_int,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let b = m.index_base as c_int;
+        let v: Vec<c_int> = m
+            .model
+            .contact_mesh()?
+            .iter()
+            .flat_map(|e| e.nodes.map(|n| n as c_int + b))
+            .collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies, for every element of the contact mesh B (see
+/// `tfem_get_contact_mesh`), the index of its contact pair (0-based, as
+/// returned by `tfem_add_contact_pair`, whatever the index base).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_element_pairs(
+    model: *mut TfemModel,
+    out: *mut c_int,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let v: Vec<c_int> = m
+            .model
+            .contact_mesh()?
+            .iter()
+            .map(|e| e.pair as c_int)
+            .collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies, for every element of the contact mesh B (see
+/// `tfem_get_contact_mesh`), its apex: the node (in the model's index
+/// base) alone on its side of the interface, whose distance from the
+/// element's interface edge is the element's gap.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_element_apexes(
+    model: *mut TfemModel,
+    out: *mut c_int,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let b = m.index_base as c_int;
+        let v: Vec<c_int> = m
+            .model
+            .contact_mesh()?
+            .iter()
+            .map(|e| e.apex as c_int + b)
+            .collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Writes the bodies of contact pair `pair` (0-based, as returned by
+/// `tfem_add_contact_pair`): `body_a` carries the pair's first tag,
+/// `body_b` its second. Either pointer may be NULL.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_pair_bodies(
+    model: *mut TfemModel,
+    pair: c_int,
+    body_a: *mut c_int,
+    body_b: *mut c_int,
+) -> Status {
+    with_model(model, |m| {
+        let pairs = m.model.contact_pairs();
+        let p = usize::try_from(pair)
+            .ok()
+            .and_then(|i| pairs.get(i))
+            .ok_or_else(|| {
+                Error::argument(format!(
+                    "pair = {pair} is out of range ({} contact pairs, 0-based)",
+                    pairs.len()
+                ))
+            })?;
+        let (a, b) = (p.body_a, p.body_b);
+        if !body_a.is_null() {
+            write(body_a, a, "body_a")?;
+        }
+        if !body_b.is_null() {
+            write(body_b, b, "body_b")?;
+        }
+        Ok(())
+    })
+}
+
+/// Sets the number of threads the model's solves run on: `threads` >= 1
+/// gives the model a pool of its own (1: no parallelism at all, for a
+/// host that runs its own OpenMP or MPI threads); 0 (the default) uses
+/// the process-wide pool, with as many threads as cores or the
+/// environment variable RAYON_NUM_THREADS. Results do not depend on it
+/// beyond round-off, and are kept.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_set_threads(model: *mut TfemModel, threads: c_int) -> Status {
+    with_model(model, |m| {
+        let n = usize::try_from(threads)
+            .map_err(|_| Error::argument(format!("threads = {threads} must be >= 0")))?;
+        m.model.set_threads(n)
+    })
+}
+
+/// Writes the number of threads the model's solves run on (see
+/// `tfem_set_threads`).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_threads(model: *mut TfemModel, threads: *mut c_int) -> Status {
+    with_model(model, |m| {
+        let n = c_int::try_from(m.model.threads()).unwrap_or(c_int::MAX);
+        write(threads, n, "threads")
     })
 }

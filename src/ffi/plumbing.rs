@@ -5,6 +5,8 @@
 use std::cell::RefCell;
 use std::ffi::c_char;
 use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::sync::Once;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use crate::error::{Error, Result, Status};
 use crate::model::Model;
@@ -38,6 +40,30 @@ pub(super) fn panic_message(p: &(dyn std::any::Any + Send)) -> String {
     format!("internal error (please report): {text}")
 }
 
+/// C calls in progress in the process.
+static IN_CALL: AtomicUsize = AtomicUsize::new(0);
+
+/// Runs `f` catching any panic, which is then reported through the error
+/// slots and never printed: while a C call runs, the panic hook (installed
+/// on the first call, chaining to the one before) stays silent. (It must
+/// be process-wide: a panic in a worker thread of the solver runs the hook
+/// on that thread.)
+pub(super) fn guarded<R>(f: impl FnOnce() -> R) -> std::thread::Result<R> {
+    static HOOK: Once = Once::new();
+    HOOK.call_once(|| {
+        let previous = std::panic::take_hook();
+        std::panic::set_hook(Box::new(move |info| {
+            if IN_CALL.load(Ordering::SeqCst) == 0 {
+                previous(info);
+            }
+        }));
+    });
+    IN_CALL.fetch_add(1, Ordering::SeqCst);
+    let result = catch_unwind(AssertUnwindSafe(f));
+    IN_CALL.fetch_sub(1, Ordering::SeqCst);
+    result
+}
+
 /// Runs `f` on a model handle, catching panics and recording the message.
 pub(super) fn with_model(
     model: *mut TfemModel,
@@ -49,7 +75,7 @@ pub(super) fn with_model(
         set_global_error("argument `model` is NULL");
         return Status::NullPointer;
     };
-    match catch_unwind(AssertUnwindSafe(|| f(m))) {
+    match guarded(|| f(m)) {
         Ok(Ok(())) => {
             m.last_error.clear();
             Status::Ok
@@ -66,10 +92,13 @@ pub(super) fn with_model(
 }
 
 /// Runs a model-free call, catching panics; errors go to the thread's
-/// last-error slot.
+/// last-error slot, which a success clears.
 pub(super) fn without_model(f: impl FnOnce() -> Result<()>) -> Status {
-    match catch_unwind(AssertUnwindSafe(f)) {
-        Ok(Ok(())) => Status::Ok,
+    match guarded(f) {
+        Ok(Ok(())) => {
+            set_global_error("");
+            Status::Ok
+        }
         Ok(Err(e)) => {
             set_global_error(e.message());
             e.status()

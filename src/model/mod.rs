@@ -53,6 +53,9 @@ impl Component {
 pub struct Model {
     problem: Problem,
     settings: Settings,
+    /// The model's own thread pool ([`Model::set_threads`]), or `None`
+    /// for rayon's global one.
+    pool: Option<std::sync::Arc<rayon::ThreadPool>>,
     session: Option<Session>,
     solution: Option<Solution>,
     solve_warnings: Vec<String>,
@@ -70,6 +73,7 @@ impl Model {
         Model {
             problem: Problem::new(),
             settings: Settings::default(),
+            pool: None,
             session: None,
             solution: None,
             solve_warnings: Vec::new(),
@@ -118,6 +122,38 @@ impl Model {
         self.settings.parallel_subtrees = on;
     }
 
+    /// Runs the solves on `threads` threads of the model's own pool (1: no
+    /// parallelism at all, for a host that runs its own threads); 0 goes
+    /// back to rayon's global pool (as many threads as cores, or
+    /// `RAYON_NUM_THREADS`). Results do not depend on it beyond round-off
+    /// (from 20 000 unknowns, two threads or more factorise two subtrees
+    /// at once); they are kept.
+    pub fn set_threads(&mut self, threads: usize) -> Result<()> {
+        self.pool = match threads {
+            0 => None,
+            n => Some(std::sync::Arc::new(
+                rayon::ThreadPoolBuilder::new()
+                    .num_threads(n)
+                    .build()
+                    .map_err(|e| {
+                        Error::new(
+                            crate::error::Status::OutOfMemory,
+                            format!("cannot start {n} threads: {e}"),
+                        )
+                    })?,
+            )),
+        };
+        Ok(())
+    }
+
+    /// The number of threads a solve runs on.
+    pub fn threads(&self) -> usize {
+        match &self.pool {
+            Some(pool) => pool.current_num_threads(),
+            None => rayon::current_num_threads(),
+        }
+    }
+
     /// Replaces the mesh. Constraints, loads, contact pairs and results are
     /// discarded (they refer to nodes and edges); materials and tempering
     /// are kept.
@@ -134,10 +170,18 @@ impl Model {
         self.problem.mesh()
     }
 
-    /// Sets the tagged boundary edges (0-based nodes). See
-    /// [`Mesh::set_boundary_edges`].
+    /// Sets the tagged boundary edges (0-based nodes), replacing the
+    /// previous ones; refused, naming the tag, when a load or contact pair
+    /// already declared would lose its edges. See
+    /// [`Problem::set_boundary_edges`].
     pub fn set_boundary_edges(&mut self, edges: &[[usize; 2]], tags: &[i32]) -> Result<()> {
         self.edit(|p| p.set_boundary_edges(edges, tags))
+    }
+
+    /// Adds tagged boundary edges (0-based nodes) to those already set.
+    /// See [`Problem::add_boundary_edges`].
+    pub fn add_boundary_edges(&mut self, edges: &[[usize; 2]], tags: &[i32]) -> Result<()> {
+        self.edit(|p| p.add_boundary_edges(edges, tags))
     }
 
     /// Sets the material of a body. Before a mesh is given any body tag is
@@ -277,7 +321,15 @@ impl Model {
 
     /// Solves a scene without contact. On error the model is unchanged.
     pub fn solve(&mut self) -> Result<SolveInfo> {
-        self.run(None).map(|s| s.info)
+        self.in_pool(|m| m.run(None).map(|s| s.info))
+    }
+
+    /// Runs `f` in the model's thread pool.
+    fn in_pool<R: Send>(&mut self, f: impl FnOnce(&mut Model) -> R + Send) -> R {
+        match self.pool.clone() {
+            Some(pool) => pool.install(|| f(self)),
+            None => f(self),
+        }
     }
 
     /// Solves the contact problem with the active-set loop of
@@ -285,11 +337,13 @@ impl Model {
     /// unchanged.
     pub fn solve_contact(&mut self, options: &ContactOptions) -> Result<ContactReport> {
         options.validate()?;
-        let solution = self.run(Some(options))?;
-        let contact = solution.contact.as_ref();
-        Ok(contact
-            .map(|c| c.report.clone())
-            .expect("a contact solve has a contact state"))
+        self.in_pool(|m| {
+            let solution = m.run(Some(options))?;
+            let contact = solution.contact.as_ref();
+            Ok(contact
+                .map(|c| c.report.clone())
+                .expect("a contact solve has a contact state"))
+        })
     }
 
     /// Solves the current revision of the problem and keeps its results.
@@ -308,12 +362,31 @@ impl Model {
             settings: self.settings,
         };
         let session = session_of(&mut self.session, &self.problem, &mut timings)?;
-        let outcome = solve::solve(session, &input, options, &mut timings)?;
         let revision = self.problem.revision();
+        let outcome = match solve::solve(session, &input, options, &mut timings) {
+            Ok(outcome) => outcome,
+            Err(e) => {
+                // The results of this revision stay: so does their matrix.
+                if let Some(s) = self.solution.as_ref().filter(|s| s.revision == revision) {
+                    let options = s.contact.as_ref().map(|c| &c.options);
+                    if solve::restore(session, &input, options, &s.log).is_ok() {
+                        session.set_system_of(Some(revision));
+                    }
+                }
+                return Err(e);
+            }
+        };
         session.set_system_of(Some(revision));
         let elements = &session.contact;
-        let (solution, warnings) =
-            solution_of(outcome, f_ext, elements, timings, t_start, revision);
+        let options = options.copied();
+        let (solution, warnings) = solution_of(
+            outcome,
+            f_ext,
+            (elements, options),
+            timings,
+            t_start,
+            revision,
+        );
         self.solve_warnings = warnings;
         Ok(self.solution.insert(solution))
     }
@@ -337,7 +410,7 @@ impl Model {
     /// Work of the external loads, Σ f·u (per unit thickness): for a
     /// pressure load, the compliance ∫ p (−u·n).
     pub fn external_work(&self) -> Result<f64> {
-        Ok(self.solution()?.external_work())
+        self.solution()?.external_work()
     }
 
     /// Statistics of the last solve.
@@ -346,8 +419,9 @@ impl Model {
     }
 
     /// The stiffness matrix of the last solve ([`SystemMatrix`]), borrowed:
-    /// nothing is assembled or copied for it. Unlike the other results it
-    /// does not outlive a failed solve, which reuses the matrix storage.
+    /// nothing is assembled or copied for it. Like the other results it
+    /// outlives a failed solve (which rebuilds it, to the last bit, in the
+    /// storage it borrowed).
     pub fn system_matrix(&self) -> Result<SystemMatrix<'_>> {
         let revision = self.solution()?.revision;
         self.session
@@ -414,6 +488,28 @@ impl Model {
     pub fn contact_report(&self) -> Result<&ContactReport> {
         Ok(&self.contact_solution()?.report)
     }
+
+    /// The force the contact exerts on every node of the last contact
+    /// solve, [f_x, f_y] per node (zero off the interfaces; force per unit
+    /// thickness), computed on request. It sums to zero over each pair.
+    pub fn contact_forces(&self) -> Result<Vec<[f64; 2]>> {
+        self.solution()?.contact_forces(&self.problem)
+    }
+
+    /// The normal gap at every node of the last contact solve (zero off the
+    /// interfaces; negative where the bodies interpenetrate), computed on
+    /// request: the smallest distance, over the elements of B at the node,
+    /// of an element's apex from its interface edge (deformed, linearised).
+    pub fn contact_gaps(&self) -> Result<Vec<f64>> {
+        self.solution()?.contact_gaps(&self.problem)
+    }
+
+    /// The contact mesh B of the declared pairs, available before any
+    /// solve (the elements of pair i carry `pair = i`).
+    pub fn contact_mesh(&self) -> Result<Vec<ContactElement>> {
+        let problem = &self.problem;
+        crate::contact::build_all(problem.mesh_ref()?, problem.contact_pairs())
+    }
 }
 
 /// The session of the problem's structure in `slot`, built (and timed as
@@ -444,7 +540,7 @@ fn session_of<'s>(
 fn solution_of(
     outcome: Outcome,
     f_ext: Vec<f64>,
-    elements: &[ContactElement],
+    (elements, options): (&[ContactElement], Option<ContactOptions>),
     mut timings: Timings,
     t_start: Instant,
     revision: u64,
@@ -462,6 +558,7 @@ fn solution_of(
             pressure: c.pressure,
             laws: c.laws,
             report,
+            options: options.expect("a contact solve has options"),
         }
     });
     let solution = Solution {
@@ -470,6 +567,7 @@ fn solution_of(
         f_ext,
         info,
         contact,
+        log: outcome.log,
     };
     (solution, outcome.warnings)
 }

@@ -18,7 +18,7 @@ use crate::fem::element::Tempering;
 use crate::fem::element_loop::ElementLoop;
 use crate::fem::loads::{EdgeLoad, Loads, check_loaded_tag};
 use crate::fem::material::Material;
-use crate::fem::mesh::Mesh;
+use crate::fem::mesh::{BoundaryEdge, Mesh};
 
 /// A 2D elasticity (and contact) problem.
 #[derive(Debug, Clone)]
@@ -44,7 +44,7 @@ fn finite2(v: [f64; 2], what: &str) -> Result<()> {
         Ok(())
     } else {
         Err(Error::argument(format!(
-            "{what} ({}, {}) is not finite",
+            "{what} ({:?}, {:?}) is not finite",
             v[0], v[1]
         )))
     }
@@ -120,16 +120,81 @@ impl Problem {
         self.mesh.as_ref()
     }
 
-    /// Sets the tagged boundary edges (0-based nodes). See
-    /// [`Mesh::set_boundary_edges`].
+    /// Sets the tagged boundary edges (0-based nodes), replacing the
+    /// previous ones ([`Mesh::set_boundary_edges`]). The loads and contact
+    /// pairs already declared must still find their tags on edges that
+    /// can carry them: otherwise the call is refused, naming the tag, and
+    /// nothing changes.
     pub fn set_boundary_edges(&mut self, edges: &[[usize; 2]], tags: &[i32]) -> Result<()> {
+        let new = self.mesh_ref()?.checked_edges(edges, tags, &[])?;
+        self.swap_edges(new)
+    }
+
+    /// Adds tagged boundary edges (0-based nodes) to those already set
+    /// ([`Mesh::add_boundary_edges`]): one group at a time.
+    pub fn add_boundary_edges(&mut self, edges: &[[usize; 2]], tags: &[i32]) -> Result<()> {
+        let mesh = self.mesh_ref()?;
+        let mut new = mesh.boundary_edges().to_vec();
+        new.append(&mut mesh.checked_edges(edges, tags, mesh.boundary_edges())?);
+        self.swap_edges(new)
+    }
+
+    /// Puts `edges` in place of the mesh's boundary edges if every load
+    /// and pair still fits them; else restores the old ones.
+    fn swap_edges(&mut self, edges: Vec<BoundaryEdge>) -> Result<()> {
         let mesh = self
             .mesh
             .as_mut()
             .ok_or_else(|| Error::state("no mesh: call set_mesh first"))?;
-        mesh.set_boundary_edges(edges, tags)?;
-        self.changed(true);
-        Ok(())
+        let old = mesh.replace_edges(edges);
+        match self.revalidated_pairs() {
+            Ok(pairs) => {
+                self.pairs = pairs;
+                self.changed(true);
+                Ok(())
+            }
+            Err(e) => {
+                self.mesh.as_mut().expect("a mesh").replace_edges(old);
+                Err(e)
+            }
+        }
+    }
+
+    /// Checks the loads and pairs against the mesh's current boundary
+    /// edges; returns the pairs with their bodies found anew.
+    fn revalidated_pairs(&self) -> Result<Vec<ContactPair>> {
+        let mesh = self.mesh_ref()?;
+        let mut tags: Vec<i32> = self.loads.edge_loads().iter().map(|l| l.0).collect();
+        tags.sort_unstable();
+        tags.dedup();
+        for tag in tags {
+            check_loaded_tag(mesh, tag).map_err(|e| {
+                Error::argument(format!(
+                    "a load acts on tag {tag}, which these edges would take from it: {}",
+                    e.message()
+                ))
+            })?;
+        }
+        let mut pairs = self.pairs.clone();
+        for (i, p) in pairs.iter_mut().enumerate() {
+            let refit = || -> Result<(i32, i32)> {
+                let bodies = contact::pair_bodies(mesh, p.tag_a, p.tag_b)?;
+                match &p.user_mesh {
+                    None => contact::build(mesh, i, p.tag_a, p.tag_b).map(|_| ()),
+                    Some(t) => contact::check_user_mesh(mesh, i, p.tag_a, p.tag_b, t).map(|_| ()),
+                }?;
+                Ok(bodies)
+            };
+            (p.body_a, p.body_b) = refit().map_err(|e| {
+                Error::contact(format!(
+                    "contact pair {i} (tags {}, {}) no longer fits these edges: {}",
+                    p.tag_a,
+                    p.tag_b,
+                    e.message()
+                ))
+            })?;
+        }
+        Ok(pairs)
     }
 
     /// Sets the material of a body. Before a mesh is given any body tag is
@@ -184,14 +249,30 @@ impl Problem {
         self.check_node(node)?;
         if !value.is_finite() {
             return Err(Error::argument(format!(
-                "prescribed displacement {value} of node {} is not finite",
+                "prescribed displacement {value:?} of node {} is not finite",
                 node + self.mesh_ref()?.index_base()
             )));
         }
         let g = 2 * node + component as usize;
+        self.check_unprescribed_or_equal(g, value)?;
         let new_dof = self.prescribed.insert(g, value).is_none();
         self.changed(new_dof);
         Ok(())
+    }
+
+    /// Refuses to prescribe global DOF `g` a value other than the one it
+    /// already has: one of the two would silently win (a corner shared by
+    /// two constrained edges, say).
+    fn check_unprescribed_or_equal(&self, g: usize, value: f64) -> Result<()> {
+        match self.prescribed.get(&g) {
+            Some(&old) if old != value => Err(Error::argument(format!(
+                "node {} {} is already prescribed {old:?}, not {value:?}: clear the constraints \
+                 to change a prescribed value",
+                g / 2 + self.mesh_ref()?.index_base(),
+                if g % 2 == 0 { "u_x" } else { "u_y" }
+            ))),
+            _ => Ok(()),
+        }
     }
 
     /// Prescribes a component on every node of the edges tagged `tag`
@@ -200,7 +281,7 @@ impl Problem {
         let mesh = self.mesh_ref()?;
         if !value.is_finite() {
             return Err(Error::argument(format!(
-                "prescribed displacement {value} on tag {tag} is not finite"
+                "prescribed displacement {value:?} on tag {tag} is not finite"
             )));
         }
         let nodes: Vec<usize> = mesh
@@ -211,6 +292,9 @@ impl Problem {
             .collect();
         if nodes.is_empty() {
             return Err(Error::argument(format!("no boundary edge has tag {tag}")));
+        }
+        for &v in &nodes {
+            self.check_unprescribed_or_equal(2 * v + component as usize, value)?;
         }
         for v in nodes {
             self.fix(v, component, value)?;
@@ -250,7 +334,7 @@ impl Problem {
     pub fn add_pressure(&mut self, tag: i32, pressure: f64) -> Result<()> {
         if !pressure.is_finite() {
             return Err(Error::argument(format!(
-                "pressure {pressure} is not finite"
+                "pressure {pressure:?} is not finite"
             )));
         }
         check_loaded_tag(self.mesh_ref()?, tag)?;
@@ -299,7 +383,7 @@ impl Problem {
     /// The assembled external load vector (2 values per node: f_x, f_y) of
     /// the current loads: consistent edge loads, nodal and body forces.
     pub fn load_vector(&self) -> Result<Vec<f64>> {
-        Ok(self.loads.nodal_vector(self.mesh_ref()?))
+        self.loads.nodal_vector(self.mesh_ref()?)
     }
 
     /// Declares a potential contact interface between the edges tagged

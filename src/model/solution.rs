@@ -3,8 +3,10 @@
 //! stresses, reactions — is computed from them when asked for.
 
 use super::problem::Problem;
-use crate::contact::{ContactElement, ElementLaw, contact_stiffness};
-use crate::error::Result;
+use crate::contact::{
+    ContactElement, ContactOptions, ElementLaw, contact_stiffness, linearised_opening,
+};
+use crate::error::{Error, Result, ensure_finite};
 use crate::fem::element::{TriGeometry, b_hat, tempered_jacobian};
 use crate::fem::element_loop::element_values;
 
@@ -24,6 +26,9 @@ pub(crate) struct Solution {
     pub info: SolveInfo,
     /// The contact state, for a contact solve.
     pub contact: Option<ContactSolution>,
+    /// The contact elements its final system switched after the bodies'
+    /// part, to rebuild that system after a failed solve.
+    pub log: Vec<Vec<usize>>,
 }
 
 /// The contact state of a solution.
@@ -39,6 +44,8 @@ pub(crate) struct ContactSolution {
     pub laws: Vec<ElementLaw>,
     /// The report.
     pub report: ContactReport,
+    /// The options of the solve.
+    pub options: ContactOptions,
 }
 
 impl Solution {
@@ -48,8 +55,10 @@ impl Solution {
     }
 
     /// Work of the external loads, Σ f·u.
-    pub fn external_work(&self) -> f64 {
-        self.f_ext.iter().zip(&self.u).map(|(f, u)| f * u).sum()
+    pub fn external_work(&self) -> Result<f64> {
+        let w = self.f_ext.iter().zip(&self.u).map(|(f, u)| f * u).sum();
+        ensure_finite([w], 1, "work", |_| "the external loads".to_string())?;
+        Ok(w)
     }
 
     /// Element strains [ε_xx, ε_yy, γ_xy]: B̂u / max(J, Jmin).
@@ -68,6 +77,10 @@ impl Solution {
             }));
             Ok(())
         })?;
+        let mesh = elements.mesh();
+        ensure_finite(out.iter().flatten().copied(), 3, "strain", |t| {
+            mesh.triangle_name(t)
+        })?;
         Ok(out)
     }
 
@@ -75,14 +88,19 @@ impl Solution {
     pub fn stresses(&self, problem: &Problem) -> Result<Vec<[f64; 3]>> {
         let strains = self.strains(problem)?;
         let elements = problem.elements()?;
-        Ok(strains
+        let stresses: Vec<[f64; 3]> = strains
             .iter()
             .zip(elements.mesh().body_of())
             .map(|(eps, &body)| {
                 let d = elements.material(body).d_matrix();
                 std::array::from_fn(|r| d[r][0] * eps[0] + d[r][1] * eps[1] + d[r][2] * eps[2])
             })
-            .collect())
+            .collect();
+        let mesh = elements.mesh();
+        ensure_finite(stresses.iter().flatten().copied(), 3, "stress", |t| {
+            mesh.triangle_name(t)
+        })?;
+        Ok(stresses)
     }
 
     /// Reaction forces [R_x, R_y] per node: K u − f at prescribed DOFs
@@ -120,6 +138,64 @@ impl Solution {
                 *v -= self.f_ext[g];
             }
         }
+        ensure_finite(r.iter().copied(), 2, "reaction", |v| mesh.node_name(v))?;
         Ok(r.chunks_exact(2).map(|c| [c[0], c[1]]).collect())
+    }
+
+    /// The force the contact exerts on every node, [f_x, f_y] per node
+    /// (zero off the interfaces): minus the internal force K_e u_e − f0_e
+    /// of the active elements of B. It sums to zero over each pair.
+    pub fn contact_forces(&self, problem: &Problem) -> Result<Vec<[f64; 2]>> {
+        let c = self.contact_state()?;
+        let mesh = problem.mesh_ref()?;
+        let mut f = vec![0.0; self.u.len()];
+        for (k, el) in c.elements.iter().enumerate() {
+            if !c.active[k] {
+                continue;
+            }
+            let geo = TriGeometry::new(&mesh.corners(&el.nodes));
+            let law = &c.laws[k];
+            let cs = contact_stiffness(&geo, &law.d, el.normal, el.j0, law.t);
+            let ue = element_values(&self.u, &el.nodes);
+            for a in 0..6 {
+                let ku: f64 = (0..6).map(|b| cs.k[a * 6 + b] * ue[b]).sum();
+                f[2 * el.nodes[a / 2] + a % 2] -= ku - cs.f0[a];
+            }
+        }
+        ensure_finite(f.iter().copied(), 2, "contact force", |v| mesh.node_name(v))?;
+        Ok(f.chunks_exact(2).map(|c| [c[0], c[1]]).collect())
+    }
+
+    /// The normal gap at every node (zero off the interfaces): the
+    /// smallest, over the elements of B at the node, of the distance of the
+    /// element's apex from its interface edge in the deformed configuration
+    /// (linearised, the opening over the edge length). Negative: the
+    /// bodies interpenetrate there.
+    pub fn contact_gaps(&self, problem: &Problem) -> Result<Vec<f64>> {
+        let c = self.contact_state()?;
+        let mesh = problem.mesh_ref()?;
+        let mut gap = vec![f64::INFINITY; mesh.nodes().len()];
+        for el in &c.elements {
+            if el.edge_length <= 0.0 {
+                continue;
+            }
+            let geo = TriGeometry::new(&mesh.corners(&el.nodes));
+            let ue = element_values(&self.u, &el.nodes);
+            let g = linearised_opening(&geo, c.options.law, el.normal, &ue) / el.edge_length;
+            for &v in &el.nodes {
+                gap[v] = gap[v].min(g);
+            }
+        }
+        gap.iter_mut()
+            .filter(|g| **g == f64::INFINITY)
+            .for_each(|g| *g = 0.0);
+        ensure_finite(gap.iter().copied(), 1, "contact gap", |v| mesh.node_name(v))?;
+        Ok(gap)
+    }
+
+    fn contact_state(&self) -> Result<&ContactSolution> {
+        self.contact
+            .as_ref()
+            .ok_or_else(|| Error::state("no contact results: call solve_contact first"))
     }
 }

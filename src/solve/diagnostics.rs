@@ -151,12 +151,16 @@ pub fn describe_mode(mesh: &Mesh, m: &[f64]) -> String {
         .into_iter()
         .filter(|&(_, s)| s >= 0.1 * top)
         .collect();
+    // Three bodies at most: the message stays short.
     let mut parts = Vec::new();
-    for &(body, _) in &named {
+    for &(body, _) in named.iter().take(3) {
         parts.push(format!(
             "body {body} is not restrained (free mode: {})",
             motion_kind(mesh, body, m)
         ));
+    }
+    if named.len() > 3 {
+        parts.push(format!("and {} more bodies", named.len() - 3));
     }
     parts.join("; ")
 }

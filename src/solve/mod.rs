@@ -24,7 +24,7 @@ use report::{ContactReport, SolveInfo, Timings};
 use session::{Session, Settings, Wanted, factorisation};
 
 use crate::contact::{ContactOptions, ContactPair, ContactSet, ElementLaw};
-use crate::error::Result;
+use crate::error::{Result, ensure_finite};
 use crate::fem::body::Softened;
 use crate::fem::element_loop::{ElementLoop, element_values};
 use crate::fem::mesh::Mesh;
@@ -50,6 +50,9 @@ pub(crate) struct Input<'a> {
 pub(crate) struct Outcome {
     /// Displacements over every global DOF.
     pub u: Vec<f64>,
+    /// How the final system was assembled: the contact elements switched
+    /// after the bodies' part ([`restore`] replays it).
+    pub log: Vec<Vec<usize>>,
     /// Statistics (timings filled by the caller).
     pub info: SolveInfo,
     /// The contact state, for a contact solve.
@@ -95,6 +98,34 @@ pub(crate) fn solve(
     }
 }
 
+/// Rebuilds in `session` the final system of an earlier successful solve of
+/// `input` (with contact `options`, whose system switched the elements of
+/// `log`), after a failed solve reused its storage: the same operations in
+/// the same order, so the same values to the last bit.
+pub(crate) fn restore(
+    session: &mut Session,
+    input: &Input<'_>,
+    options: Option<&ContactOptions>,
+    log: &[Vec<usize>],
+) -> Result<()> {
+    session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
+    if let Some(options) = options {
+        let mesh = input.elements.mesh();
+        let Session {
+            dofs,
+            pattern,
+            contact,
+            system,
+            ..
+        } = &mut *session;
+        let material = |body: i32| *input.elements.material(body);
+        let geometry = (&*dofs, input.prescribed);
+        let set = ContactSet::new(mesh, contact, input.pairs, material, geometry, options)?;
+        system.replay(log, &set, (dofs, pattern), input.prescribed);
+    }
+    Ok(())
+}
+
 /// The warning about well-shaped elements that tempering softens.
 fn softening_warning(
     mesh: &Mesh,
@@ -134,11 +165,9 @@ fn solve_plain(
         system,
         ..
     } = &mut *session;
-    let values = system.values();
     let want = Wanted {
-        last: None,
+        last: &[],
         zeros: &[],
-        is_zero: &|p| values[p] == 0.0,
     };
     let at = Structure {
         mesh,
@@ -159,9 +188,11 @@ fn solve_plain(
     info.condition_estimate = chol.condition_estimate();
     info.memory_bytes = session_memory(at, system, chol);
     info.timings = *timings;
+    finite_statistics(&info)?;
     conditioning_warning(&info, &mut warnings);
     Ok(Outcome {
         u: dofs.expand(&x, input.prescribed),
+        log: Vec::new(),
         info,
         contact: None,
         warnings,
@@ -197,9 +228,8 @@ fn solve_contact(
     let condense = Condensed::worthwhile(interface.len(), pattern.nnz());
     let zeros = set.structural_zeros(pattern, system.values());
     let want = Wanted {
-        last: condense.then_some(&interface[..]),
+        last: if condense { &interface } else { &[] },
         zeros: &zeros,
-        is_zero: &|p| zeros.binary_search(&p).is_ok(),
     };
     let structure = (mesh, &*dofs, &*pattern);
     let chol = factorisation(
@@ -228,12 +258,14 @@ fn solve_contact(
     info.relative_residual = system.relative_residual(pattern, &settled.x);
     info.condition_estimate = chol.condition_estimate();
     info.timings = *timings;
+    finite_statistics(&info)?;
     conditioning_warning(&info, &mut warnings);
     let u = dofs.expand(&settled.x, input.prescribed);
     drop(settled.x);
-    let contact = contact_outcome(&set, &u, settled.active, settled.history, info);
+    let contact = contact_outcome(&set, &u, settled.active, settled.history, info)?;
     Ok(Outcome {
         u,
+        log: system.log().to_vec(),
         info,
         contact: Some(contact),
         warnings,
@@ -249,6 +281,15 @@ fn session_memory(
     at.pattern.memory_bytes() + system.memory_bytes() + chol.memory_bytes()
 }
 
+/// Refuses statistics that overflowed (a relative residual or condition
+/// estimate of a system scaled beyond double precision).
+fn finite_statistics(info: &SolveInfo) -> Result<()> {
+    let values = [info.relative_residual, info.condition_estimate];
+    ensure_finite(values, 1, "relative residual or condition estimate", |_| {
+        "the solved system".to_string()
+    })
+}
+
 /// Pressures, contact length and penetration of the settled set.
 fn contact_outcome(
     set: &ContactSet<'_>,
@@ -256,7 +297,7 @@ fn contact_outcome(
     active: Vec<bool>,
     history: Vec<report::IterationRecord>,
     info: SolveInfo,
-) -> ContactOutcome {
+) -> Result<ContactOutcome> {
     let mut pressure = vec![0.0; set.len()];
     let (mut lc, mut max_pen) = (0.0, 0.0f64);
     for (k, el) in set.elements().iter().enumerate() {
@@ -271,6 +312,11 @@ fn contact_outcome(
             max_pen = max_pen.max(-opening / el.edge_length);
         }
     }
+    let name = |k: usize| format!("contact element {}", k + set.mesh().index_base());
+    ensure_finite(pressure.iter().copied(), 1, "contact pressure", name)?;
+    ensure_finite([lc, max_pen], 1, "contact length or penetration", |_| {
+        "the contact report".to_string()
+    })?;
     let report = ContactReport {
         iterations: history.len(),
         elements: set.len(),
@@ -280,10 +326,10 @@ fn contact_outcome(
         history,
         info,
     };
-    ContactOutcome {
+    Ok(ContactOutcome {
         active,
         pressure,
         laws: set.laws().to_vec(),
         report,
-    }
+    })
 }

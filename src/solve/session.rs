@@ -47,16 +47,17 @@ pub(crate) struct Analysis {
     chol: Cholesky,
 }
 
-/// What a solve needs of the analysis.
+/// What a solve asks of the analysis. An analysis is reused only when it
+/// was made for exactly this request and the same settings, so that a
+/// solve's result never depends on the solves before it (a refactorising
+/// contact solve after a condensed one would otherwise inherit its
+/// interface-last ordering, and its round-off).
+#[derive(Clone, Copy)]
 pub(crate) struct Wanted<'a> {
-    /// The unknowns to number last; `None` accepts any.
-    pub last: Option<&'a [usize]>,
-    /// Value positions that are zero in every matrix of this solve, for a
-    /// new analysis.
+    /// The unknowns to number last.
+    pub last: &'a [usize],
+    /// Value positions that are zero in every matrix of this solve.
     pub zeros: &'a [usize],
-    /// Whether a value position is zero in every matrix of this solve: an
-    /// existing analysis fits only while all of its zeros still are.
-    pub is_zero: &'a dyn Fn(usize) -> bool,
 }
 
 /// Everything derived from one structure of a problem.
@@ -95,14 +96,7 @@ impl Session {
         let n_nodes = mesh.nodes().len();
         let used = mesh.node_body();
         let dofs = DofMap::new(n_nodes, 2, |g| used[g / 2].is_some() && !is_prescribed(g));
-        let mut contact = Vec::new();
-        for (i, p) in pairs.iter().enumerate() {
-            let mut elements = match &p.user_mesh {
-                None => contact::build(mesh, i, p.tag_a, p.tag_b)?,
-                Some(tris) => contact::check_user_mesh(mesh, i, p.tag_a, p.tag_b, tris)?.0,
-            };
-            contact.append(&mut elements);
-        }
+        let contact = contact::build_all(mesh, pairs)?;
         let mut elements: Vec<[usize; 3]> = mesh.triangles().to_vec();
         elements.extend(contact.iter().map(|e| e.nodes));
         let pattern = Pattern::build(&dofs, n_nodes, &elements);
@@ -185,14 +179,12 @@ pub(crate) fn factorisation<'a>(
     timings: &mut Timings,
     info: &mut SolveInfo,
 ) -> Result<&'a mut Cholesky> {
-    let fits = analysis.as_ref().is_some_and(|a| {
-        a.settings == settings
-            && want.last.is_none_or(|last| a.last == last)
-            && a.zeros.iter().all(|&p| (want.is_zero)(p))
-    });
+    let fits = analysis
+        .as_ref()
+        .is_some_and(|a| a.settings == settings && a.last == want.last && a.zeros == want.zeros);
     if !fits {
         let t0 = Instant::now();
-        let last = want.last.unwrap_or(&[]);
+        let last = want.last;
         // Drop the old factor first: two at once may not fit in memory.
         *analysis = None;
         // The unknowns' coordinates are only needed here (17 MB at 1M

@@ -19,6 +19,10 @@ pub(crate) struct AssembledSystem {
     rhs: Vec<f64>,
     /// Whether each contact element's matrix and load are in.
     contact: Vec<bool>,
+    /// The contact elements switched since the bodies' part was assembled,
+    /// one list per update, in order: replaying it onto the bodies' part
+    /// rebuilds the system to the last bit.
+    log: Vec<Vec<usize>>,
 }
 
 impl AssembledSystem {
@@ -34,6 +38,7 @@ impl AssembledSystem {
             values,
             rhs: Vec::new(),
             contact: Vec::new(),
+            log: Vec::new(),
         }
     }
 
@@ -63,6 +68,7 @@ impl AssembledSystem {
     ) -> Result<Softened> {
         self.rhs = vec![0.0; target.dofs.n_free()];
         self.contact = vec![false; n_contact];
+        self.log.clear();
         let (values, rhs) = (&mut self.values, &mut self.rhs);
         body::assemble(elements, target, f_ext, prescribed, values, rhs)
     }
@@ -75,21 +81,56 @@ impl AssembledSystem {
         &mut self,
         active: &[bool],
         set: &ContactSet<'_>,
+        structure: (&DofMap, &Pattern),
+        prescribed: &[f64],
+    ) {
+        let changed: Vec<usize> = (0..set.len())
+            .filter(|&k| active[k] != self.contact[k])
+            .collect();
+        self.toggle(changed, set, structure, prescribed);
+    }
+
+    /// The contact elements switched since the bodies' part was assembled
+    /// ([`AssembledSystem::replay`]).
+    pub fn log(&self) -> &[Vec<usize>] {
+        &self.log
+    }
+
+    /// Switches the elements of `log` (from [`AssembledSystem::log`]) in
+    /// order: onto the same bodies' part, it rebuilds that system exactly.
+    pub fn replay(
+        &mut self,
+        log: &[Vec<usize>],
+        set: &ContactSet<'_>,
+        structure: (&DofMap, &Pattern),
+        prescribed: &[f64],
+    ) {
+        for ks in log {
+            self.toggle(ks.clone(), set, structure, prescribed);
+        }
+    }
+
+    /// Switches each of `ks` (ascending) on or off.
+    fn toggle(
+        &mut self,
+        ks: Vec<usize>,
+        set: &ContactSet<'_>,
         (dofs, pattern): (&DofMap, &Pattern),
         prescribed: &[f64],
     ) {
-        for k in 0..set.len() {
-            if active[k] == self.contact[k] {
-                continue;
-            }
-            let sign = if active[k] { 1.0 } else { -1.0 };
+        if ks.is_empty() {
+            return;
+        }
+        for &k in &ks {
+            let sign = if self.contact[k] { -1.0 } else { 1.0 };
             let cs = set.stiffness(k);
             let nodes = &set.elements()[k].nodes;
             let ke = cs.k.map(|v| sign * v);
             let f0 = cs.f0.map(|v| sign * v);
             self.scatter(dofs, pattern, nodes, &ke, &f0, prescribed);
-            self.contact[k] = active[k];
+            self.contact[k] = !self.contact[k];
         }
+        self.log.push(ks);
     }
 
     /// Adds an element matrix `ke` on `nodes` and its load `f0` minus the
@@ -121,14 +162,15 @@ impl AssembledSystem {
         }
     }
 
-    /// ‖K x − f‖₂ / ‖f‖₂ (‖K x‖₂ when f = 0).
+    /// ‖K x − f‖₂ / ‖f‖₂ (‖K x − f‖₂ when f = 0). The norms are summed
+    /// plainly and, only if that overflows (or underflows to 0), scaled by
+    /// the largest entry.
     pub fn relative_residual(&self, pattern: &Pattern, x: &[f64]) -> f64 {
-        let norm = |v: &[f64]| v.iter().map(|a| a * a).sum::<f64>().sqrt();
         let mut r = vec![0.0; x.len()];
         pattern.sym_mul(&self.values, x, &mut r);
         r.iter_mut().zip(&self.rhs).for_each(|(a, b)| *a -= b);
-        let nf = norm(&self.rhs);
-        if nf > 0.0 { norm(&r) / nf } else { norm(&r) }
+        let nf = norm2(&self.rhs);
+        if nf > 0.0 { norm2(&r) / nf } else { norm2(&r) }
     }
 
     /// The matrix as a [`SystemMatrix`] view.
@@ -140,6 +182,20 @@ impl AssembledSystem {
             unknowns: dofs.free_to_global(),
         }
     }
+}
+
+/// ‖v‖₂ without overflow or harmful underflow: the plain sum of squares
+/// when it is a normal number, else scaled by the largest |v_i|.
+pub(crate) fn norm2(v: &[f64]) -> f64 {
+    let plain = v.iter().map(|a| a * a).sum::<f64>();
+    if plain.is_normal() || plain == 0.0 && v.iter().all(|&a| a == 0.0) {
+        return plain.sqrt();
+    }
+    let m = v.iter().fold(0.0f64, |m, a| m.max(a.abs()));
+    if !(m > 0.0 && m.is_finite()) {
+        return m;
+    }
+    m * v.iter().map(|a| (a / m) * (a / m)).sum::<f64>().sqrt()
 }
 
 /// The stiffness matrix K of the last solve on its unknowns (the DOFs left
