@@ -35,6 +35,35 @@ echo "== cargo test --release (Rust, C, C++ and Fortran tests)"
 cargo build --release --lib --examples
 cargo test --release
 
+echo "== C tests under AddressSanitizer and UndefinedBehaviorSanitizer"
+# api_test.c and the API fuzzer (c_tests/api_fuzz.c) built with the
+# sanitizers against the release library just built.
+lib="$PWD/target/release"
+san=(-std=c11 -Wall -Wextra -Werror -g -O1 -fsanitize=address,undefined -fno-omit-frame-pointer -Iinclude)
+mkdir -p build/sanitize
+gcc "${san[@]}" c_tests/api_test.c -o build/sanitize/api_test -L"$lib" -ltfem -lm -Wl,-rpath,"$lib"
+UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 build/sanitize/api_test
+gcc "${san[@]}" c_tests/api_fuzz.c -o build/sanitize/api_fuzz -L"$lib" -ltfem -lm -lpthread -Wl,-rpath,"$lib"
+gcc -std=c11 -Wall -Wextra -Werror -O2 -Iinclude c_tests/api_fuzz.c -o build/sanitize/api_fuzz_native \
+  -L"$lib" -ltfem -lm -lpthread -Wl,-rpath,"$lib"
+build/sanitize/api_fuzz --self-test
+
+# ---------------------------------------------------------------------------
+# DISABLED: running the API fuzzer. It is built above (so it keeps compiling)
+# but not run, because today it reports defects of the library (crashes on
+# a Gmsh file, NaN/Inf returned with TFEM_STATUS_OK, failed calls that change
+# the model, results lost by tfem_set_ordering, panics printed on stderr,
+# over-long messages, the thread error slot...; the list, with reproducers,
+# is in c_tests/README.md). It will be enabled once those are fixed: change
+# `false` to `true` below (and pass -DTFEM_API_FUZZ=ON to the CTest suite).
+# ---------------------------------------------------------------------------
+if false; then
+  echo "== API fuzzer: native (1 and 2 threads) and under the sanitizers"
+  build/sanitize/api_fuzz_native --seed 1
+  build/sanitize/api_fuzz_native --seed 2 --threads 2
+  build/sanitize/api_fuzz --seed 3 --cases 3000
+fi
+
 echo "== the report, quick mode (the full one is docs/report.md)"
 cargo run --release --example report -- --quick --out build/report
 

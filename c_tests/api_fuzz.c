@@ -1,0 +1,3300 @@
+/* api_fuzz: a seeded random API-sequence tester of every entry point of the
+ * tfem C ABI (include/tfem.h).
+ *
+ *   api_fuzz [--seed S] [--cases N] [--threads T] [--long] [--seconds S]
+ *   api_fuzz --seed S --replay-case K [--minimize] [--class NAME]
+ *
+ * Each case is a sequence of calls generated from (seed, case number) alone:
+ * either a valid scene built here (a unit square clamped and pulled, the
+ * seed's two blocks in contact, a clockwise mesh, a user-made contact mesh,
+ * a Gmsh file, the literal-test cycle) mutated (wrong indices, counts,
+ * NULLs, short buffers, NaN/Inf/denormal/huge values, wrong enums, index
+ * base, calls inserted, deleted, duplicated, reordered), or a fully random
+ * sequence of any entry points. Every call is checked against the header's
+ * promises:
+ *   - output buffers are allocated with canaries before and after; nothing
+ *     may be written beyond the declared length, nor at all by a failed
+ *     call (except the documented truncation of messages);
+ *   - every output of an OK call is finite;
+ *   - every failed call leaves a non-empty, bounded (<= 300 bytes) message
+ *     in the model's slot or the thread's slot, and a successful one an
+ *     empty message;
+ *   - the library writes nothing on stderr (fd 2 is a file, measured
+ *     around each call);
+ *   - no crash, abort or hang (cases run in batches in forked children;
+ *     a batch that dies is bisected down to the case);
+ *   - bit-identical replay: the case is run again on a fresh model without
+ *     the calls that failed, and every output of every OK call must be
+ *     identical (a failed call must leave the model as it was);
+ *   - a few semantic oracles: exact solutions of the pristine scenes,
+ *     global equilibrium of the reactions, loads on tags that no longer
+ *     exist, conflicting prescribed values, results that vanish without a
+ *     change of the problem.
+ * --replay-case K reruns one case verbosely and prints it as a C program
+ * (a reproducer a developer can paste); --minimize first shrinks it to the
+ * fewest calls that still show the violation.
+ *
+ * Plain C11 + POSIX (fork, pthreads); compiles with -Wall -Wextra -Werror
+ * and with -fsanitize=address,undefined. See c_tests/README.md. */
+
+#define _GNU_SOURCE
+#include <errno.h>
+#include <fcntl.h>
+#include <float.h>
+#include <inttypes.h>
+#include <limits.h>
+#include <math.h>
+#include <pthread.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <sys/time.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "tfem.h"
+
+/* Sanitizer settings: an error ends the process (the batch is then bisected
+ * to the case), leaks are not checked in the forked children. */
+const char *__asan_default_options(void);
+const char *__asan_default_options(void) {
+  return "abort_on_error=1:detect_leaks=0:allocator_may_return_null=0";
+}
+const char *__ubsan_default_options(void);
+const char *__ubsan_default_options(void) { return "halt_on_error=1:abort_on_error=1:print_stacktrace=1"; }
+
+/* ------------------------------------------------------------------------ */
+/* Violation classes                                                         */
+/* ------------------------------------------------------------------------ */
+
+enum {
+  V_CRASH,          /* killed by a signal other than SIGABRT */
+  V_ABORT,          /* SIGABRT (Rust abort, allocation failure, sanitizer) */
+  V_HANG,           /* the case did not finish in time */
+  V_NAN_OK,         /* a NaN or Inf output with TFEM_STATUS_OK */
+  V_CANARY,         /* a write before or beyond an output buffer */
+  V_WRITE_ON_FAIL,  /* an output written by a failed call */
+  V_STATE,          /* replay without the failed calls differs */
+  V_NONDET,         /* replay differs although no call failed */
+  V_STDERR,         /* the library wrote on stderr */
+  V_LONG_MSG,       /* a message longer than 300 bytes */
+  V_EMPTY_MSG,      /* a failed call without a message */
+  V_INTERNAL,       /* TFEM_STATUS_INTERNAL (a caught panic) */
+  V_BAD_STATUS,     /* a status outside the enum */
+  V_SLOT,           /* thread error slot not as documented */
+  V_LASTERR,        /* tfem_last_error / _length inconsistent */
+  V_ORACLE,         /* a pristine scene's exact solution is not met */
+  V_DROPPED_LOAD,   /* solve OK while a load's tag no longer names an edge */
+  V_EQUILIBRIUM,    /* reactions do not balance the applied loads */
+  V_DOUBLE_FIX,     /* a DOF prescribed twice with different values: OK */
+  V_RESULTS_LOST,   /* results vanished without a change of the problem */
+  V_MATRIX_DROPPED, /* a failed solve dropped the matrix, kept the results */
+  V_OTHER,          /* other contract checks (sizes, structure, sanity) */
+  NV
+};
+
+static const char *const V_NAME[NV] = {
+    "crash",          "abort",         "hang",          "nan_inf_ok",     "canary",
+    "write_on_fail",  "state_change",  "nondeterminism", "stderr",        "long_message",
+    "empty_message",  "internal",      "bad_status",    "thread_slot",    "last_error_api",
+    "oracle",         "dropped_load",  "equilibrium",   "double_fix",     "results_lost",
+    "matrix_dropped", "other",
+};
+
+static const char *const V_DESC[NV] = {
+    "process killed by a signal",
+    "process aborted (SIGABRT)",
+    "case did not finish within the time limit",
+    "NaN or Inf returned with TFEM_STATUS_OK",
+    "write before or beyond an output buffer",
+    "output written by a call that failed",
+    "replay without the failed calls differs (a failed call changed the model)",
+    "replay differs although no call failed (nondeterminism)",
+    "library wrote on stderr",
+    "error message longer than 300 bytes",
+    "failed call without a message",
+    "TFEM_STATUS_INTERNAL (caught panic)",
+    "status outside the tfem_status enum",
+    "thread error slot (tfem_last_error(NULL)) not as documented",
+    "tfem_last_error / tfem_last_error_length inconsistent",
+    "pristine scene does not meet its exact solution",
+    "solve OK although a load's tag no longer names any edge (load silently dropped)",
+    "reactions do not balance the applied loads",
+    "a DOF prescribed twice with different values is accepted silently",
+    "results vanished without a change of the problem",
+    "a failed solve dropped the system matrix but kept the results",
+    "other contract check",
+};
+
+#define MAX_MSG 300
+
+/* ------------------------------------------------------------------------ */
+/* Random numbers (splitmix64), deterministic from (seed, case)              */
+/* ------------------------------------------------------------------------ */
+
+typedef struct {
+  uint64_t s;
+} rng_t;
+
+static uint64_t mix64(uint64_t z) {
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+static uint64_t rnext(rng_t *r) {
+  r->s += 0x9e3779b97f4a7c15ULL;
+  return mix64(r->s);
+}
+static int rint_(rng_t *r, int n) { return n <= 0 ? 0 : (int)(rnext(r) % (uint64_t)n); }
+static int rrange(rng_t *r, int lo, int hi) { return lo + rint_(r, hi - lo + 1); }
+static double runif(rng_t *r) { return (double)(rnext(r) >> 11) * (1.0 / 9007199254740992.0); }
+static int chance(rng_t *r, double p) { return runif(r) < p; }
+
+/* ------------------------------------------------------------------------ */
+/* Small helpers                                                             */
+/* ------------------------------------------------------------------------ */
+
+static void *xmalloc(size_t n) {
+  void *p = malloc(n ? n : 1);
+  if (!p) {
+    fprintf(stdout, "api_fuzz: out of memory\n");
+    exit(3);
+  }
+  return p;
+}
+static void *xcalloc(size_t n, size_t s) {
+  void *p = calloc(n ? n : 1, s ? s : 1);
+  if (!p) {
+    fprintf(stdout, "api_fuzz: out of memory\n");
+    exit(3);
+  }
+  return p;
+}
+static void *xrealloc(void *p, size_t n) {
+  void *q = realloc(p, n ? n : 1);
+  if (!q) {
+    fprintf(stdout, "api_fuzz: out of memory\n");
+    exit(3);
+  }
+  return q;
+}
+static double now_s(void) {
+  struct timespec t;
+  clock_gettime(CLOCK_MONOTONIC, &t);
+  return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+
+/* A double as a C expression that gives the same bits back. */
+static const char *cdbl(double v, char buf[64]) {
+  if (isnan(v)) {
+    snprintf(buf, 64, "%s", signbit(v) ? "(-NAN)" : "NAN");
+  } else if (isinf(v)) {
+    snprintf(buf, 64, "%s", v < 0 ? "(-INFINITY)" : "INFINITY");
+  } else if (v == 0.0 && signbit(v)) {
+    snprintf(buf, 64, "(-0.0)");
+  } else {
+    snprintf(buf, 64, "%.17g", v);
+    if (!strpbrk(buf, ".en")) strcat(buf, ".0");
+  }
+  return buf;
+}
+
+static const char *status_name(int s) {
+  static const char *const n[] = {"OK",          "NULL_POINTER",      "INVALID_ARGUMENT",
+                                  "INVALID_MESH", "INVALID_MATERIAL", "INVALID_STATE",
+                                  "BUFFER_TOO_SMALL", "SINGULAR",     "NOT_CONVERGED",
+                                  "DEGENERATE_ELEMENT", "INVALID_CONTACT", "NUMERICAL_FAILURE",
+                                  "INTERNAL",    "OUT_OF_MEMORY",     "IO"};
+  return (s >= 0 && s <= 14) ? n[s] : "?";
+}
+
+/* ------------------------------------------------------------------------ */
+/* Entry points                                                              */
+/* ------------------------------------------------------------------------ */
+
+enum {
+  F_VERSION,
+  F_LAST_ERROR,
+  F_LAST_ERROR_LENGTH,
+  F_WARNING_COUNT,
+  F_GET_WARNING,
+  F_SET_MESH,
+  F_LOAD_GMSH,
+  F_SET_BOUNDARY_EDGES,
+  F_SET_MATERIAL,
+  F_SET_TEMPERING,
+  F_SET_ORDERING,
+  F_FIX,
+  F_FIX_EDGES,
+  F_CLEAR_CONSTRAINTS,
+  F_ADD_PRESSURE,
+  F_ADD_TRACTION,
+  F_ADD_NODAL_FORCE,
+  F_SET_BODY_FORCE,
+  F_CLEAR_LOADS,
+  F_SOLVE,
+  F_GET_SIZES,
+  F_GET_DISPLACEMENTS,
+  F_GET_STRAINS,
+  F_GET_STRESSES,
+  F_GET_JACOBIANS,
+  F_GET_REACTIONS,
+  F_GET_MATRIX_SIZE,
+  F_GET_MATRIX,
+  F_ELEMENT_STIFFNESS,
+  F_LAPLACIAN_STIFFNESS,
+  F_ADD_CONTACT_PAIR,
+  F_ADD_CONTACT_PAIR_WITH_MESH,
+  F_CONTACT_OPTIONS_DEFAULT,
+  F_SOLVE_CONTACT,
+  F_GET_CONTACT_ACTIVE,
+  F_GET_CONTACT_PRESSURE,
+  F_GET_CONTACT_ELEMENTS,
+  F_GET_CONTACT_REPORT,
+  F_DESTROY_NULL, /* tfem_destroy(NULL) */
+  F_RECREATE,     /* tfem_destroy(m); m = tfem_create() */
+  NF
+};
+
+/* Output kinds. */
+enum { K_D, K_I, K_L, K_C, K_SI, K_RE, K_OP };
+static size_t ksize(int k) {
+  switch (k) {
+  case K_D: return sizeof(double);
+  case K_I: return sizeof(int);
+  case K_L: return sizeof(int64_t);
+  case K_C: return 1;
+  case K_SI: return sizeof(tfem_solve_info);
+  case K_RE: return sizeof(tfem_contact_report);
+  default: return sizeof(tfem_contact_options);
+  }
+}
+
+/* Required lengths of output buffers. */
+enum { R_SCALAR, R_2NN, R_3NT, R_NT, R_NC, R_3NC, R_N1, R_NNZ, R_N, R_MSG, R_WARN, R_36, R_9 };
+
+#define MAXI 6
+#define MAXD 4
+#define MAXIN 3
+#define MAXOUT 4
+
+typedef struct {
+  const char *name;
+  int model;       /* 1: the first argument is the model */
+  const char *ir;  /* roles of the int arguments */
+  const char *dr;  /* roles of the double arguments */
+  const char *ink; /* input arrays: 'x' coords (double), 'n' node indices, 'b' bodies, 't' tags, 'o' options */
+  const char *outk; /* output kinds: d i l c S R O; upper-case letter = scalar pointer */
+  unsigned char req[MAXOUT];
+  int scalar_out;   /* outputs are single objects (pointer, no length) */
+} fndesc;
+
+/* int roles: c count, B index base, f gmsh file, n node, t tag, b body,
+ *   P plane, M tempering mode, O ordering, x 0/1 flag, C component,
+ *   L law, T inversion test, m max iterations, w warning index
+ * double roles: E young, p poisson, J jmin, K kappa, v tempering value,
+ *   u displacement, f force, G contact modulus, l lambda */
+static const fndesc FN[NF] = {
+    [F_VERSION] = {"tfem_version", 0, "", "", "", "", {0}, 0},
+    [F_LAST_ERROR] = {"tfem_last_error", 1, "", "", "", "c", {R_MSG}, 0},
+    [F_LAST_ERROR_LENGTH] = {"tfem_last_error_length", 1, "", "", "", "", {0}, 0},
+    [F_WARNING_COUNT] = {"tfem_warning_count", 1, "", "", "", "i", {R_SCALAR}, 1},
+    [F_GET_WARNING] = {"tfem_get_warning", 1, "w", "", "", "c", {R_WARN}, 0},
+    [F_SET_MESH] = {"tfem_set_mesh", 1, "ccB", "", "xnb", "", {0}, 0},
+    [F_LOAD_GMSH] = {"tfem_load_gmsh", 1, "fB", "", "", "", {0}, 0},
+    [F_SET_BOUNDARY_EDGES] = {"tfem_set_boundary_edges", 1, "c", "", "nt", "", {0}, 0},
+    [F_SET_MATERIAL] = {"tfem_set_material", 1, "bP", "Ep", "", "", {0}, 0},
+    [F_SET_TEMPERING] = {"tfem_set_tempering", 1, "M", "v", "", "", {0}, 0},
+    [F_SET_ORDERING] = {"tfem_set_ordering", 1, "Ox", "", "", "", {0}, 0},
+    [F_FIX] = {"tfem_fix", 1, "nC", "u", "", "", {0}, 0},
+    [F_FIX_EDGES] = {"tfem_fix_edges", 1, "tC", "u", "", "", {0}, 0},
+    [F_CLEAR_CONSTRAINTS] = {"tfem_clear_constraints", 1, "", "", "", "", {0}, 0},
+    [F_ADD_PRESSURE] = {"tfem_add_pressure", 1, "t", "f", "", "", {0}, 0},
+    [F_ADD_TRACTION] = {"tfem_add_traction", 1, "t", "ff", "", "", {0}, 0},
+    [F_ADD_NODAL_FORCE] = {"tfem_add_nodal_force", 1, "n", "ff", "", "", {0}, 0},
+    [F_SET_BODY_FORCE] = {"tfem_set_body_force", 1, "b", "ff", "", "", {0}, 0},
+    [F_CLEAR_LOADS] = {"tfem_clear_loads", 1, "", "", "", "", {0}, 0},
+    [F_SOLVE] = {"tfem_solve", 1, "", "", "", "S", {R_SCALAR}, 1},
+    [F_GET_SIZES] = {"tfem_get_sizes", 1, "", "", "", "iii", {R_SCALAR, R_SCALAR, R_SCALAR}, 1},
+    [F_GET_DISPLACEMENTS] = {"tfem_get_displacements", 1, "", "", "", "d", {R_2NN}, 0},
+    [F_GET_STRAINS] = {"tfem_get_element_strains", 1, "", "", "", "d", {R_3NT}, 0},
+    [F_GET_STRESSES] = {"tfem_get_element_stresses", 1, "", "", "", "d", {R_3NT}, 0},
+    [F_GET_JACOBIANS] = {"tfem_get_element_jacobians", 1, "", "", "", "d", {R_NT}, 0},
+    [F_GET_REACTIONS] = {"tfem_get_reactions", 1, "", "", "", "d", {R_2NN}, 0},
+    [F_GET_MATRIX_SIZE] = {"tfem_get_system_matrix_size", 1, "", "", "", "ll", {R_SCALAR, R_SCALAR}, 1},
+    [F_GET_MATRIX] = {"tfem_get_system_matrix", 1, "", "", "", "lldl", {R_N1, R_NNZ, R_NNZ, R_N}, 0},
+    [F_ELEMENT_STIFFNESS] = {"tfem_element_stiffness", 0, "P", "EpJ", "x", "d", {R_36}, 0},
+    [F_LAPLACIAN_STIFFNESS] = {"tfem_laplacian_stiffness", 0, "", "KJ", "x", "d", {R_9}, 0},
+    [F_ADD_CONTACT_PAIR] = {"tfem_add_contact_pair", 1, "tt", "", "", "i", {R_SCALAR}, 1},
+    [F_ADD_CONTACT_PAIR_WITH_MESH] = {"tfem_add_contact_pair_with_mesh", 1, "ttc", "", "n", "ii",
+                                      {R_SCALAR, R_SCALAR}, 1},
+    [F_CONTACT_OPTIONS_DEFAULT] = {"tfem_contact_options_default", 0, "", "", "", "O", {R_SCALAR}, 1},
+    [F_SOLVE_CONTACT] = {"tfem_solve_contact", 1, "LTmx", "Gl", "o", "R", {R_SCALAR}, 1},
+    [F_GET_CONTACT_ACTIVE] = {"tfem_get_contact_active", 1, "", "", "", "i", {R_NC}, 0},
+    [F_GET_CONTACT_PRESSURE] = {"tfem_get_contact_pressure", 1, "", "", "", "d", {R_NC}, 0},
+    [F_GET_CONTACT_ELEMENTS] = {"tfem_get_contact_elements", 1, "", "", "", "i", {R_3NC}, 0},
+    [F_GET_CONTACT_REPORT] = {"tfem_get_contact_report", 1, "", "", "", "R", {R_SCALAR}, 1},
+    [F_DESTROY_NULL] = {"tfem_destroy(NULL)", 0, "", "", "", "", {0}, 0},
+    [F_RECREATE] = {"tfem_destroy+tfem_create", 0, "", "", "", "", {0}, 0},
+};
+
+static int fn_ni(int f) { return (int)strlen(FN[f].ir); }
+static int fn_nd(int f) { return (int)strlen(FN[f].dr); }
+static int fn_nin(int f) { return (int)strlen(FN[f].ink); }
+static int fn_nout(int f) { return (int)strlen(FN[f].outk); }
+static int out_kind(int f, int j) {
+  switch (FN[f].outk[j]) {
+  case 'd': return K_D;
+  case 'i': return K_I;
+  case 'l': return K_L;
+  case 'c': return K_C;
+  case 'S': return K_SI;
+  case 'R': return K_RE;
+  default: return K_OP;
+  }
+}
+/* Functions whose failure may write (documented truncation of messages). */
+static int writes_on_failure(int f) { return f == F_LAST_ERROR || f == F_GET_WARNING; }
+
+/* Does a successful call of f change the problem (and so discard results)? */
+static int changes_problem(int f) {
+  switch (f) {
+  case F_SET_MESH: case F_LOAD_GMSH: case F_SET_BOUNDARY_EDGES: case F_SET_MATERIAL:
+  case F_SET_TEMPERING: case F_FIX: case F_FIX_EDGES: case F_ADD_PRESSURE:
+  case F_ADD_TRACTION: case F_ADD_NODAL_FORCE: case F_SET_BODY_FORCE: case F_CLEAR_LOADS:
+  case F_ADD_CONTACT_PAIR: case F_ADD_CONTACT_PAIR_WITH_MESH:
+    return 1;
+  default: return 0;
+  }
+}
+
+/* ------------------------------------------------------------------------ */
+/* Calls and cases                                                           */
+/* ------------------------------------------------------------------------ */
+
+/* Length specification of an output buffer, resolved when first run. */
+enum { LS_EXACT, LS_REL, LS_FIXED };
+
+typedef struct {
+  int n;      /* elements */
+  void *p;    /* double* for 'x', int* otherwise */
+  int null_;  /* pass NULL */
+} in_arr;
+
+typedef struct {
+  int ls;
+  long delta;
+  int null_;
+  int resolved;
+  size_t len;  /* the declared length passed (elements) */
+  long req;    /* the required length found when resolved (-1 unknown) */
+} out_spec;
+
+typedef struct {
+  int fn;
+  int null_model;
+  int iv[MAXI];
+  double dv[MAXD];
+  in_arr in[MAXIN];
+  out_spec out[MAXOUT];
+  int mutated;   /* touched by a mutation (for the oracle) */
+  /* oracle on get_displacements: u[comp] of node (0-based) = expect */
+  int oracle;
+  int or_node, or_comp;
+  double or_expect, or_rtol;
+  /* original run */
+  int status;
+  int ran;
+  unsigned char *saved[MAXOUT + 1];
+  size_t saved_n[MAXOUT + 1];
+} call_t;
+
+typedef struct {
+  call_t *c;
+  int n, cap;
+  uint64_t seed;
+  long index;
+  const char *kind;
+  int pristine; /* a scene left unmutated: its oracles apply */
+} case_t;
+
+static void in_set(call_t *c, int j, const void *v, int n, size_t el) {
+  free(c->in[j].p);
+  c->in[j].p = xmalloc((size_t)(n > 0 ? n : 0) * el + 1);
+  if (n > 0 && v) memcpy(c->in[j].p, v, (size_t)n * el);
+  c->in[j].n = n > 0 ? n : 0;
+}
+static size_t in_el(int fn, int j) { return FN[fn].ink[j] == 'x' ? sizeof(double) : sizeof(int); }
+
+static call_t *add_call(case_t *cs, int fn) {
+  if (cs->n == cs->cap) {
+    cs->cap = cs->cap ? 2 * cs->cap : 32;
+    cs->c = xrealloc(cs->c, (size_t)cs->cap * sizeof(call_t));
+  }
+  call_t *c = &cs->c[cs->n++];
+  memset(c, 0, sizeof *c);
+  c->fn = fn;
+  for (int j = 0; j < MAXOUT; ++j) c->out[j].ls = LS_EXACT;
+  return c;
+}
+
+static void call_copy(call_t *dst, const call_t *src) {
+  *dst = *src;
+  for (int j = 0; j < MAXIN; ++j) {
+    dst->in[j].p = NULL;
+    if (src->in[j].p) {
+      size_t el = in_el(src->fn, j);
+      dst->in[j].p = xmalloc((size_t)src->in[j].n * el + 1);
+      memcpy(dst->in[j].p, src->in[j].p, (size_t)src->in[j].n * el);
+    }
+  }
+  for (int j = 0; j <= MAXOUT; ++j) {
+    dst->saved[j] = NULL;
+    dst->saved_n[j] = 0;
+  }
+}
+static void call_free(call_t *c) {
+  for (int j = 0; j < MAXIN; ++j) free(c->in[j].p);
+  for (int j = 0; j <= MAXOUT; ++j) free(c->saved[j]);
+}
+static void case_free(case_t *cs) {
+  for (int i = 0; i < cs->n; ++i) call_free(&cs->c[i]);
+  free(cs->c);
+  memset(cs, 0, sizeof *cs);
+}
+static void case_insert_copy(case_t *cs, int at, const call_t *src) {
+  call_t tmp;
+  call_copy(&tmp, src);
+  add_call(cs, F_VERSION);
+  memmove(&cs->c[at + 1], &cs->c[at], (size_t)(cs->n - 1 - at) * sizeof(call_t));
+  cs->c[at] = tmp;
+}
+static void case_delete(case_t *cs, int at) {
+  call_free(&cs->c[at]);
+  memmove(&cs->c[at], &cs->c[at + 1], (size_t)(cs->n - 1 - at) * sizeof(call_t));
+  cs->n--;
+}
+
+/* ------------------------------------------------------------------------ */
+/* Meshes built here                                                         */
+/* ------------------------------------------------------------------------ */
+
+typedef struct {
+  int nn, nt, ne;
+  double *xy;
+  int *tri, *body;
+  int *edge, *tag; /* 0-based */
+  int capn, capt, cape;
+} mesh_t;
+
+static int mesh_node(mesh_t *m, double x, double y) {
+  if (m->nn == m->capn) {
+    m->capn = m->capn ? 2 * m->capn : 64;
+    m->xy = xrealloc(m->xy, sizeof(double) * 2 * (size_t)m->capn);
+  }
+  m->xy[2 * m->nn] = x;
+  m->xy[2 * m->nn + 1] = y;
+  return m->nn++;
+}
+static void mesh_tri(mesh_t *m, int a, int b, int c, int body) {
+  if (m->nt == m->capt) {
+    m->capt = m->capt ? 2 * m->capt : 64;
+    m->tri = xrealloc(m->tri, sizeof(int) * 3 * (size_t)m->capt);
+    m->body = xrealloc(m->body, sizeof(int) * (size_t)m->capt);
+  }
+  m->tri[3 * m->nt] = a;
+  m->tri[3 * m->nt + 1] = b;
+  m->tri[3 * m->nt + 2] = c;
+  m->body[m->nt++] = body;
+}
+static void mesh_edge(mesh_t *m, int p, int q, int tag) {
+  if (m->ne == m->cape) {
+    m->cape = m->cape ? 2 * m->cape : 64;
+    m->edge = xrealloc(m->edge, sizeof(int) * 2 * (size_t)m->cape);
+    m->tag = xrealloc(m->tag, sizeof(int) * (size_t)m->cape);
+  }
+  m->edge[2 * m->ne] = p;
+  m->edge[2 * m->ne + 1] = q;
+  m->tag[m->ne++] = tag;
+}
+static void mesh_free(mesh_t *m) {
+  free(m->xy);
+  free(m->tri);
+  free(m->body);
+  free(m->edge);
+  free(m->tag);
+  memset(m, 0, sizeof *m);
+}
+
+/* Points from a to b with spacing at most h through the stops (meshgen.rs). */
+static int subdivide(double a, double b, const double *stops, int ns, double h, double *out) {
+  double knots[16];
+  int nk = 0;
+  knots[nk++] = a;
+  for (int i = 0; i < ns; ++i)
+    if (stops[i] > a && stops[i] < b) knots[nk++] = stops[i];
+  knots[nk++] = b;
+  int n_out = 0;
+  out[n_out++] = a;
+  for (int w = 0; w + 1 < nk; ++w) {
+    double span = knots[w + 1] - knots[w];
+    int n = (int)ceil(span / h - 1e-9);
+    if (n < 1) n = 1;
+    for (int k = 1; k <= n; ++k) out[n_out++] = k == n ? knots[w + 1] : knots[w] + span * k / n;
+  }
+  return n_out;
+}
+static int subdivide_symmetric(double a, double b, const double *stops, int ns, double h, double *out) {
+  double mid = 0.5 * (a + b), left[16];
+  int nl = 0;
+  for (int i = 0; i < ns; ++i)
+    if (stops[i] > a && stops[i] < mid) left[nl++] = stops[i];
+  double half[4096];
+  int nh = subdivide(a, mid, left, nl, h, half);
+  int n = 0;
+  for (int i = 0; i < nh; ++i) out[n++] = half[i];
+  for (int i = nh - 2; i >= 0; --i) out[n++] = mid + (mid - half[i]);
+  out[n - 1] = b;
+  return n;
+}
+
+/* A structured grid xs × ys, cells split along the forward diagonal, or
+ * mirrored at x = mirror (when mirror is finite). rows[j*nx+i] = node. */
+static void add_grid(mesh_t *m, const double *xs, int nx, const double *ys, int ny, int body,
+                     double mirror, int *rows) {
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) rows[j * nx + i] = mesh_node(m, xs[i], ys[j]);
+  for (int j = 0; j + 1 < ny; ++j)
+    for (int i = 0; i + 1 < nx; ++i) {
+      int a = rows[j * nx + i], b = rows[j * nx + i + 1];
+      int c = rows[(j + 1) * nx + i + 1], d = rows[(j + 1) * nx + i];
+      int forward = isfinite(mirror) ? 0.5 * (xs[i] + xs[i + 1]) < mirror : 1;
+      if (forward) {
+        mesh_tri(m, a, b, c, body);
+        mesh_tri(m, a, c, d, body);
+      } else {
+        mesh_tri(m, a, b, d, body);
+        mesh_tri(m, b, c, d, body);
+      }
+    }
+}
+
+/* The boundary edges of a mesh, oriented as in their triangle, sorted. */
+static int cmp_edge(const void *a, const void *b) {
+  const int *x = a, *y = b;
+  if (x[0] != y[0]) return x[0] < y[0] ? -1 : 1;
+  return (x[1] > y[1]) - (x[1] < y[1]);
+}
+static int boundary_edges(const mesh_t *m, int **out) {
+  int n = 3 * m->nt;
+  int *all = xmalloc(sizeof(int) * 4 * (size_t)n); /* (min, max, p, q) */
+  for (int t = 0; t < m->nt; ++t)
+    for (int k = 0; k < 3; ++k) {
+      int p = m->tri[3 * t + k], q = m->tri[3 * t + (k + 1) % 3];
+      int *e = &all[4 * (3 * t + k)];
+      e[0] = p < q ? p : q;
+      e[1] = p < q ? q : p;
+      e[2] = p;
+      e[3] = q;
+    }
+  qsort(all, (size_t)n, 4 * sizeof(int), cmp_edge);
+  int *res = xmalloc(sizeof(int) * 2 * (size_t)n);
+  int nr = 0;
+  for (int i = 0; i < n;) {
+    int j = i;
+    while (j < n && all[4 * j] == all[4 * i] && all[4 * j + 1] == all[4 * i + 1]) ++j;
+    if (j - i == 1) {
+      res[2 * nr] = all[4 * i + 2];
+      res[2 * nr + 1] = all[4 * i + 3];
+      ++nr;
+    }
+    i = j;
+  }
+  free(all);
+  qsort(res, (size_t)nr, 2 * sizeof(int), cmp_edge);
+  *out = res;
+  return nr;
+}
+
+/* ------------------------------------------------------------------------ */
+/* Gmsh files (written once, before any fork, into a private directory)      */
+/* ------------------------------------------------------------------------ */
+
+enum {
+  G_VALID, G_NODES_1E15, G_NODES_2P62, G_TRUNCATED, G_EMPTY, G_GARBAGE, G_TILTED, G_NO_ENTITIES,
+  G_CLOCKWISE, G_UNDEFINED_NODE, G_ELEMENTS_1E15, G_BLOCKS_1E15, G_NEGATIVE, G_NONEXISTENT,
+  G_DIRECTORY, G_BAD_UTF8, G_QUADS, G_SHORT_BLOCK, NGMSH
+};
+static const char *const G_NAME[NGMSH] = {
+    "valid", "nodes_1e15", "nodes_2p62", "truncated", "empty", "garbage", "tilted",
+    "no_entities", "clockwise", "undefined_node", "elements_1e15", "blocks_1e15",
+    "negative", "nonexistent", "directory", "bad_utf8", "quads", "short_block"};
+
+static char g_dir[256];
+static char *g_path[NGMSH];
+static char *g_text[NGMSH];
+static size_t g_len[NGMSH];
+
+static char *gmsh_square(const char *nodes_header, const char *elements_header, int with_entities,
+                         int clockwise, double z4, int bad_node, int quads, int short_block) {
+  char *s = xmalloc(8192);
+  int n = 0;
+  n += sprintf(s + n, "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n");
+  if (with_entities)
+    n += sprintf(s + n,
+                 "$Entities\n0 4 1 0\n1 0 0 0 0 1 0 1 1 0\n2 1 0 0 1 1 0 1 2 0\n"
+                 "3 0 0 0 1 0 0 1 3 0\n4 0 1 0 1 1 0 1 4 0\n1 0 0 0 1 1 0 1 1 0\n$EndEntities\n");
+  n += sprintf(s + n, "$Nodes\n%s\n2 1 0 9\n", nodes_header);
+  int listed = short_block ? 3 : 9;
+  for (int k = 1; k <= listed; ++k) n += sprintf(s + n, "%d\n", k);
+  for (int k = 0; k < listed; ++k)
+    n += sprintf(s + n, "%g %g %g\n", 0.5 * (k % 3), 0.5 * (k / 3), k == 4 ? z4 : 0.0);
+  n += sprintf(s + n, "$EndNodes\n$Elements\n%s\n", elements_header);
+  if (quads) {
+    n += sprintf(s + n, "2 1 3 4\n");
+    for (int j = 0, e = 1; j < 2; ++j)
+      for (int i = 0; i < 2; ++i, ++e) {
+        int a = 1 + i + 3 * j;
+        n += sprintf(s + n, "%d %d %d %d %d\n", e, a, a + 1, a + 4, a + 3);
+      }
+  } else {
+    n += sprintf(s + n, "2 1 2 8\n");
+    for (int j = 0, e = 1; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        int a = 1 + i + 3 * j, b = a + 1, c = a + 4, d = a + 3;
+        if (bad_node && e == 1) a = 99;
+        if (clockwise) {
+          n += sprintf(s + n, "%d %d %d %d\n%d %d %d %d\n", e, a, c, b, e + 1, a, d, c);
+        } else {
+          n += sprintf(s + n, "%d %d %d %d\n%d %d %d %d\n", e, a, b, c, e + 1, a, c, d);
+        }
+        e += 2;
+      }
+  }
+  n += sprintf(s + n, "1 1 1 2\n9 1 4\n10 4 7\n1 2 1 2\n11 3 6\n12 6 9\n");
+  n += sprintf(s + n, "1 3 1 2\n13 1 2\n14 2 3\n1 4 1 2\n15 7 8\n16 8 9\n$EndElements\n");
+  return s;
+}
+
+static void on_signal(int sig);
+static pid_t g_owner; /* the process that made g_dir (children leave it) */
+
+static void gmsh_files_init(void) {
+  snprintf(g_dir, sizeof g_dir, "/tmp/api_fuzz_XXXXXX");
+  if (!mkdtemp(g_dir)) {
+    perror("mkdtemp");
+    exit(3);
+  }
+  g_owner = getpid();
+  signal(SIGINT, on_signal);
+  signal(SIGTERM, on_signal);
+  signal(SIGPIPE, on_signal);
+  signal(SIGHUP, on_signal);
+  const char *nh = "1 9 1 9", *eh = "5 16 1 16";
+  for (int g = 0; g < NGMSH; ++g) {
+    char *t = NULL;
+    switch (g) {
+    case G_VALID: t = gmsh_square(nh, eh, 1, 0, 0.0, 0, 0, 0); break;
+    case G_NODES_1E15: t = gmsh_square("1 1000000000000000 1 9", eh, 1, 0, 0.0, 0, 0, 0); break;
+    case G_NODES_2P62: t = gmsh_square("1 4611686018427387904 1 9", eh, 1, 0, 0.0, 0, 0, 0); break;
+    case G_TRUNCATED:
+      t = gmsh_square(nh, eh, 1, 0, 0.0, 0, 0, 0);
+      t[strstr(t, "$EndNodes") - t - 20] = 0;
+      break;
+    case G_EMPTY: t = xcalloc(1, 1); break;
+    case G_GARBAGE: {
+      t = xmalloc(301);
+      rng_t r = {12345};
+      for (int i = 0; i < 300; ++i) t[i] = (char)(1 + rint_(&r, 255));
+      t[300] = 0;
+      break;
+    }
+    case G_TILTED: t = gmsh_square(nh, eh, 1, 0, 0.5, 0, 0, 0); break;
+    case G_NO_ENTITIES: t = gmsh_square(nh, eh, 0, 0, 0.0, 0, 0, 0); break;
+    case G_CLOCKWISE: t = gmsh_square(nh, eh, 1, 1, 0.0, 0, 0, 0); break;
+    case G_UNDEFINED_NODE: t = gmsh_square(nh, eh, 1, 0, 0.0, 1, 0, 0); break;
+    case G_ELEMENTS_1E15: t = gmsh_square(nh, "5 1000000000000000 1 16", 1, 0, 0.0, 0, 0, 0); break;
+    case G_BLOCKS_1E15: t = gmsh_square("1000000000000000 9 1 9", eh, 1, 0, 0.0, 0, 0, 0); break;
+    case G_NEGATIVE: t = gmsh_square("1 -9 1 9", eh, 1, 0, 0.0, 0, 0, 0); break;
+    case G_QUADS: t = gmsh_square(nh, "5 12 1 12", 1, 0, 0.0, 0, 1, 0); break;
+    case G_SHORT_BLOCK: t = gmsh_square(nh, eh, 1, 0, 0.0, 0, 0, 1); break;
+    default: break;
+    }
+    char path[512];
+    if (g == G_NONEXISTENT) {
+      snprintf(path, sizeof path, "%s/does_not_exist.msh", g_dir);
+    } else if (g == G_DIRECTORY) {
+      snprintf(path, sizeof path, "%s", g_dir);
+    } else if (g == G_BAD_UTF8) {
+      snprintf(path, sizeof path, "%s/\xff\xfe.msh", g_dir);
+    } else {
+      snprintf(path, sizeof path, "%s/%s.msh", g_dir, G_NAME[g]);
+      FILE *f = fopen(path, "wb");
+      if (!f) {
+        perror(path);
+        exit(3);
+      }
+      fwrite(t, 1, strlen(t), f);
+      fclose(f);
+    }
+    g_path[g] = strdup(path);
+    g_text[g] = t;
+    g_len[g] = t ? strlen(t) : 0;
+  }
+}
+static void gmsh_files_cleanup(void) {
+  if (!g_dir[0] || getpid() != g_owner) return;
+  for (int g = 0; g < NGMSH; ++g) {
+    if (g_text[g] && g != G_DIRECTORY && g != G_NONEXISTENT && g != G_BAD_UTF8) unlink(g_path[g]);
+    free(g_path[g]);
+    free(g_text[g]);
+    g_path[g] = g_text[g] = NULL;
+  }
+  char extra[2][400];
+  snprintf(extra[0], sizeof extra[0], "%s/stderr", g_dir);
+  snprintf(extra[1], sizeof extra[1], "%s/repro.c", g_dir);
+  unlink(extra[0]);
+  unlink(extra[1]);
+  rmdir(g_dir);
+  g_dir[0] = 0;
+}
+
+/* Interrupted (Ctrl-C, a closed pipe): remove the private directory. */
+static void on_signal(int sig) {
+  if (getpid() == g_owner && g_dir[0]) {
+    char p[400];
+    for (int g = 0; g < NGMSH; ++g)
+      if (g_path[g] && g != G_DIRECTORY && g != G_NONEXISTENT && g != G_BAD_UTF8) unlink(g_path[g]);
+    snprintf(p, sizeof p, "%s/stderr", g_dir);
+    unlink(p);
+    snprintf(p, sizeof p, "%s/repro.c", g_dir);
+    unlink(p);
+    rmdir(g_dir);
+  }
+  signal(sig, SIG_DFL);
+  raise(sig);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Generation context and value pools                                        */
+/* ------------------------------------------------------------------------ */
+
+typedef struct {
+  int nn, nt, base;
+  int tags[8], ntags;
+  int bodies[4], nbodies;
+  const mesh_t *mesh; /* the scene's mesh (0-based), or NULL */
+} ctx_t;
+
+static double wild_double(rng_t *r) {
+  static const double pool[] = {0.0, -0.0, 1.0, -1.0, 0.5, 1e-300, 4.9406564584124654e-324,
+                                2.2250738585072014e-308, 1e-310, 1e300, DBL_MAX, -1e300,
+                                -DBL_MAX, 1e10, 1e11, 1e7, 1e-7, 1e15, 3.0e200, 0.49999999999999994};
+  int k = rint_(r, 26);
+  if (k < 20) return pool[k];
+  switch (k) {
+  case 20: return NAN;
+  case 21: return -NAN;
+  case 22: return INFINITY;
+  case 23: return -INFINITY;
+  case 24: return (runif(r) - 0.5) * pow(10.0, rrange(r, -10, 10));
+  default: return ldexp(1.0, rrange(r, -1074, 1023)) * (chance(r, 0.5) ? 1 : -1);
+  }
+}
+
+static double plausible_double(rng_t *r, char role) {
+  switch (role) {
+  case 'E': { static const double v[] = {1000.0, 1e10, 1e11, 210e9, 1.0}; return v[rint_(r, 5)]; }
+  case 'p': { static const double v[] = {0.25, 0.3, 0.0, 0.45, -0.5}; return v[rint_(r, 5)]; }
+  case 'J': { static const double v[] = {0.0, 1e-3, 1e-6, 0.1}; return v[rint_(r, 4)]; }
+  case 'K': { static const double v[] = {1.0, 2.5, 1e-3}; return v[rint_(r, 3)]; }
+  case 'v': { static const double v[] = {1000.0, 1.0, 1e-3, 0.1}; return v[rint_(r, 4)]; }
+  case 'u': { static const double v[] = {0.0, 0.0, 0.01, -0.01, 1e-4}; return v[rint_(r, 5)]; }
+  case 'f': { static const double v[] = {10.0, 1e7, -5.0, 0.0, 1.0}; return v[rint_(r, 5)]; }
+  case 'G': { static const double v[] = {0.0, 0.0, 1e10, 1e9}; return v[rint_(r, 4)]; }
+  case 'l': { static const double v[] = {0.0, 0.0, 1.0, 0.1}; return v[rint_(r, 4)]; }
+  default: return runif(r);
+  }
+}
+
+static int enum_max(char role) {
+  switch (role) {
+  case 'P': case 'C': case 'L': case 'T': case 'x': return 1;
+  case 'M': return 3;
+  case 'O': return 2;
+  default: return 1;
+  }
+}
+
+static int pick_tag(rng_t *r, const ctx_t *cx) { return cx->ntags ? cx->tags[rint_(r, cx->ntags)] : rrange(r, 1, 4); }
+static int pick_body(rng_t *r, const ctx_t *cx) { return cx->nbodies ? cx->bodies[rint_(r, cx->nbodies)] : rrange(r, 1, 2); }
+static int pick_node(rng_t *r, const ctx_t *cx) { return cx->base + (cx->nn ? rint_(r, cx->nn) : rint_(r, 4)); }
+
+static int plausible_int(rng_t *r, char role, const ctx_t *cx) {
+  switch (role) {
+  case 'n': return pick_node(r, cx);
+  case 't': return pick_tag(r, cx);
+  case 'b': return pick_body(r, cx);
+  case 'B': return cx->base;
+  case 'c': return rrange(r, 0, 4);
+  case 'f': return chance(r, 0.6) ? G_VALID : rint_(r, NGMSH);
+  case 'm': return chance(r, 0.8) ? 50 : rrange(r, 1, 5);
+  case 'w': return rint_(r, 3);
+  default: return rint_(r, enum_max(role) + 1);
+  }
+}
+
+static int wild_int(rng_t *r, char role, int v, const ctx_t *cx) {
+  switch (rint_(r, 8)) {
+  case 0: return -1;
+  case 1: return INT_MIN;
+  case 2: return role == 'm' ? 1000 : INT_MAX;
+  case 3: return v + 1;
+  case 4: return v - 1;
+  case 5:
+    if (role == 'n') return cx->nn + cx->base;
+    if (role == 'f') return -1;
+    return enum_max(role) + 1;
+  case 6: return role == 'n' ? v + (cx->base ? -1 : 1) : 99;
+  default: return 0;
+  }
+}
+
+/* Keeps the input arrays consistent with the counts (a count larger than an
+ * array would be the caller's error, not the library's). */
+static void fix_arrays(rng_t *r, call_t *c, const ctx_t *cx) {
+  int need[MAXIN] = {-1, -1, -1};
+  switch (c->fn) {
+  case F_SET_MESH:
+    need[0] = c->iv[0] >= 0 ? 2 * c->iv[0] : -1;
+    need[1] = c->iv[1] >= 0 ? 3 * c->iv[1] : -1;
+    need[2] = c->iv[1] >= 0 ? c->iv[1] : -1;
+    break;
+  case F_SET_BOUNDARY_EDGES:
+    need[0] = c->iv[0] >= 0 ? 2 * c->iv[0] : -1;
+    need[1] = c->iv[0] >= 0 ? c->iv[0] : -1;
+    break;
+  case F_ADD_CONTACT_PAIR_WITH_MESH: need[0] = c->iv[2] >= 0 ? 3 * c->iv[2] : -1; break;
+  case F_ELEMENT_STIFFNESS: case F_LAPLACIAN_STIFFNESS: need[0] = 6; break;
+  default: return;
+  }
+  for (int j = 0; j < fn_nin(c->fn); ++j) {
+    if (need[j] < 0 || need[j] == c->in[j].n) continue;
+    size_t el = in_el(c->fn, j);
+    void *p = xmalloc((size_t)need[j] * el + 1);
+    int keep = c->in[j].n < need[j] ? c->in[j].n : need[j];
+    if (keep > 0) memcpy(p, c->in[j].p, (size_t)keep * el);
+    for (int k = keep; k < need[j]; ++k) {
+      char role = FN[c->fn].ink[j];
+      if (role == 'x') {
+        ((double *)p)[k] = rint_(r, 5) * 0.5;
+      } else {
+        int v = role == 'n' ? pick_node(r, cx) : role == 'b' ? pick_body(r, cx) : pick_tag(r, cx);
+        ((int *)p)[k] = v;
+      }
+    }
+    free(c->in[j].p);
+    c->in[j].p = p;
+    c->in[j].n = need[j];
+  }
+}
+
+/* ------------------------------------------------------------------------ */
+/* Scenes                                                                    */
+/* ------------------------------------------------------------------------ */
+
+static void set_mesh_call(case_t *cs, const mesh_t *m, int base) {
+  call_t *c = add_call(cs, F_SET_MESH);
+  c->iv[0] = m->nn;
+  c->iv[1] = m->nt;
+  c->iv[2] = base;
+  in_set(c, 0, m->xy, 2 * m->nn, sizeof(double));
+  in_set(c, 1, NULL, 3 * m->nt, sizeof(int));
+  for (int k = 0; k < 3 * m->nt; ++k) ((int *)c->in[1].p)[k] = m->tri[k] + base;
+  in_set(c, 2, m->body, m->nt, sizeof(int));
+}
+static void edges_call(case_t *cs, const mesh_t *m, int base) {
+  call_t *c = add_call(cs, F_SET_BOUNDARY_EDGES);
+  c->iv[0] = m->ne;
+  in_set(c, 0, NULL, 2 * m->ne, sizeof(int));
+  for (int k = 0; k < 2 * m->ne; ++k) ((int *)c->in[0].p)[k] = m->edge[k] + base;
+  in_set(c, 1, m->tag, m->ne, sizeof(int));
+}
+static call_t *call_i(case_t *cs, int fn, int a, int b) {
+  call_t *c = add_call(cs, fn);
+  c->iv[0] = a;
+  c->iv[1] = b;
+  return c;
+}
+static void material(case_t *cs, int body, double e, double nu, int plane) {
+  call_t *c = call_i(cs, F_SET_MATERIAL, body, plane);
+  c->dv[0] = e;
+  c->dv[1] = nu;
+}
+static void fixc(case_t *cs, int fn, int what, int comp, double v) {
+  call_t *c = call_i(cs, fn, what, comp);
+  c->dv[0] = v;
+}
+static void load2(case_t *cs, int fn, int what, double a, double b) {
+  call_t *c = call_i(cs, fn, what, 0);
+  c->dv[0] = a;
+  c->dv[1] = b;
+}
+static void solve_contact_call(case_t *cs, int law, int test, int maxit, int refac, double ec, double lam) {
+  call_t *c = add_call(cs, F_SOLVE_CONTACT);
+  c->iv[0] = law;
+  c->iv[1] = test;
+  c->iv[2] = maxit;
+  c->iv[3] = refac;
+  c->dv[0] = ec;
+  c->dv[1] = lam;
+}
+static void result_getters(rng_t *r, case_t *cs, int contact) {
+  add_call(cs, F_GET_SIZES);
+  add_call(cs, F_GET_DISPLACEMENTS);
+  if (chance(r, 0.7)) add_call(cs, F_GET_REACTIONS);
+  if (chance(r, 0.5)) add_call(cs, F_GET_STRAINS);
+  if (chance(r, 0.5)) add_call(cs, F_GET_STRESSES);
+  if (chance(r, 0.3)) add_call(cs, F_GET_JACOBIANS);
+  if (chance(r, 0.5)) add_call(cs, F_GET_MATRIX_SIZE);
+  if (chance(r, 0.5)) add_call(cs, F_GET_MATRIX);
+  if (contact) {
+    add_call(cs, F_GET_CONTACT_ACTIVE);
+    if (chance(r, 0.7)) add_call(cs, F_GET_CONTACT_PRESSURE);
+    if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_ELEMENTS);
+    if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_REPORT);
+  }
+  if (chance(r, 0.3)) add_call(cs, F_WARNING_COUNT);
+  if (chance(r, 0.2)) call_i(cs, F_GET_WARNING, 0, 0)->out[0] = (out_spec){LS_FIXED, 512, 0, 0, 0, 0};
+  if (chance(r, 0.2)) add_call(cs, F_LAST_ERROR)->out[0] = (out_spec){LS_FIXED, 512, 0, 0, 0, 0};
+}
+
+/* A unit square of nx × ny cells, body `body`, clamped on the left (u = 0,
+ * v = 0 at the lower-left corner) and pulled on the right by a traction 10:
+ * u = 10 x / E exactly (plane stress). Tags 1 left, 2 right, 3 bottom, 4 top. */
+static void scene_square(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m, int clockwise, int oracle) {
+  /* (Given clockwise, every element has J = -1/n² < 0 < Jmin = h³/λ, with
+   * h = √2/n and λ = 1: tempered, each is |J|/Jmin = n/(2√2) times too
+   * stiff: 2.8, 5.7 or 11.3 times for n = 8, 16, 32.) */
+  int nc = (int[]){8, 16, 32}[rint_(r, 3)];
+  int nx = oracle ? nc : rrange(r, 1, 8), ny = oracle ? nc : rrange(r, 1, 8);
+  int body = (int[]){1, 7, -3, 100}[rint_(r, 4)];
+  int base = rint_(r, 2);
+  double xs[40], ys[40];
+  for (int i = 0; i <= nx; ++i) xs[i] = (double)i / nx;
+  for (int j = 0; j <= ny; ++j) ys[j] = (double)j / ny;
+  int rows[40 * 40];
+  add_grid(m, xs, nx + 1, ys, ny + 1, body, NAN, rows);
+  if (clockwise)
+    for (int t = 0; t < m->nt; ++t) {
+      int a = m->tri[3 * t + 1];
+      m->tri[3 * t + 1] = m->tri[3 * t + 2];
+      m->tri[3 * t + 2] = a;
+    }
+  int *be, nb = boundary_edges(m, &be);
+  for (int e = 0; e < nb; ++e) {
+    const double *p = &m->xy[2 * be[2 * e]], *q = &m->xy[2 * be[2 * e + 1]];
+    int tag = p[0] == 0 && q[0] == 0 ? 1 : p[0] == 1 && q[0] == 1 ? 2 : p[1] == 0 && q[1] == 0 ? 3 : 4;
+    mesh_edge(m, be[2 * e], be[2 * e + 1], tag);
+  }
+  free(be);
+  *cx = (ctx_t){m->nn, m->nt, base, {1, 2, 3, 4}, 4, {body}, 1, m};
+  set_mesh_call(cs, m, base);
+  edges_call(cs, m, base);
+  material(cs, body, 1000.0, 0.25, TFEM_PLANE_MODE_STRESS);
+  int temper = clockwise ? 0 : rint_(r, 3);
+  if (temper == 1) call_i(cs, F_SET_TEMPERING, TFEM_TEMPERING_MODE_LAMBDA, 0)->dv[0] = 1000.0;
+  if (temper == 2) call_i(cs, F_SET_TEMPERING, TFEM_TEMPERING_MODE_OFF, 0);
+  if (chance(r, 0.3)) call_i(cs, F_SET_ORDERING, rint_(r, 3), rint_(r, 2));
+  fixc(cs, F_FIX_EDGES, 1, TFEM_COMPONENT_X, 0.0);
+  fixc(cs, F_FIX, rows[0] + base, TFEM_COMPONENT_Y, 0.0);
+  load2(cs, F_ADD_TRACTION, 2, 10.0, 0.0);
+  add_call(cs, F_SOLVE);
+  call_t *d = NULL;
+  result_getters(r, cs, 0);
+  for (int i = 0; i < cs->n; ++i)
+    if (cs->c[i].fn == F_GET_DISPLACEMENTS) d = &cs->c[i];
+  /* Exact for P1 unless tempering softens the (counter-clockwise) elements:
+   * Jmin = h³/λ with λ = 1 (auto) against J = hx·hy. */
+  double hx = 1.0 / nx, hy = 1.0 / ny, h = sqrt(hx * hx + hy * hy);
+  int exact = temper != 0 || hx * hy >= h * h * h;
+  if (d && (oracle || exact)) {
+    d->oracle = 1;
+    d->or_node = rows[ny * (nx + 1) + nx];
+    d->or_comp = 0;
+    d->or_expect = 10.0 / 1000.0;
+    d->or_rtol = 1e-6;
+  }
+}
+
+/* The seed's two blocks (scenes.rs): Ω1 = [0,1]×[-0.25,0] (body 1, E 1e10)
+ * supported over 2C, Ω2 = [0,1]×[gap,gap+0.25] (body 2, E 1e11) pressed by
+ * 1e7 over 2C, u = 0 on x = 1/2. Tags 1 support, 2 lower contact side,
+ * 3 upper contact side, 4 load. user_mesh: the contact mesh is given. */
+static void scene_two_blocks(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m, int variant) {
+  static const double hs[] = {0.25, 0.125, 0.0625};
+  static const double cc[] = {0.1, 0.2, 0.3};
+  double h = hs[rint_(r, 3)], c = cc[rint_(r, 3)];
+  int user_mesh = variant == 1, literal = variant == 2;
+  if (literal) {
+    h = 1.0 / 32.0;
+    c = 0.3;
+  }
+  double gap = (user_mesh && chance(r, 0.7)) || chance(r, 0.15) ? 0.05 * h : 0.0;
+  double h_up = (!user_mesh && !literal && chance(r, 0.2)) ? 1.5 * h : h;
+  double mid = 0.5, stops[2] = {mid - c, mid + c};
+  static __thread double xs[4096], xs2[4096], ys1[4096], ys2[4096];
+  int nx = subdivide_symmetric(0, 1, stops, 2, h, xs);
+  int nx2 = subdivide_symmetric(0, 1, stops, 2, h_up, xs2);
+  int ny1 = subdivide(-0.25, 0, NULL, 0, h, ys1);
+  int ny2 = subdivide(0, 0.25, NULL, 0, h_up, ys2);
+  for (int j = 0; j < ny2; ++j) ys2[j] += gap;
+  int *lower = xmalloc(sizeof(int) * (size_t)(nx * ny1)), *upper = xmalloc(sizeof(int) * (size_t)(nx2 * ny2));
+  add_grid(m, xs, nx, ys1, ny1, 1, mid, lower);
+  int n_lower = m->nn;
+  add_grid(m, xs2, nx2, ys2, ny2, 2, mid, upper);
+  int *be, nb = boundary_edges(m, &be);
+  for (int e = 0; e < nb; ++e) {
+    int a = be[2 * e], b = be[2 * e + 1];
+    const double *p = &m->xy[2 * a], *q = &m->xy[2 * b];
+    int in_lower = a < n_lower;
+    int loaded = p[0] >= mid - c && p[0] <= mid + c && q[0] >= mid - c && q[0] <= mid + c;
+    int tag = 0;
+    if (in_lower && p[1] == -0.25 && q[1] == -0.25 && loaded) tag = 1;
+    else if (in_lower && p[1] == 0.0 && q[1] == 0.0) tag = 2;
+    else if (!in_lower && p[1] == ys2[0] && q[1] == ys2[0]) tag = 3;
+    else if (!in_lower && p[1] == ys2[ny2 - 1] && q[1] == p[1] && loaded) tag = 4;
+    if (tag) mesh_edge(m, a, b, tag);
+  }
+  free(be);
+  int base = rint_(r, 2);
+  *cx = (ctx_t){m->nn, m->nt, base, {1, 2, 3, 4}, 4, {1, 2}, 2, m};
+  set_mesh_call(cs, m, base);
+  edges_call(cs, m, base);
+  int plane = chance(r, 0.8) ? TFEM_PLANE_MODE_STRAIN : TFEM_PLANE_MODE_STRESS;
+  material(cs, 1, 1e10, 0.3, plane);
+  material(cs, 2, 1e11, 0.3, plane);
+  if (chance(r, 0.2)) call_i(cs, F_SET_TEMPERING, TFEM_TEMPERING_MODE_AUTO, 0);
+  int imid = 0, imid2 = 0;
+  for (int i = 0; i < nx; ++i)
+    if (xs[i] == mid) imid = i;
+  for (int i = 0; i < nx2; ++i)
+    if (xs2[i] == mid) imid2 = i;
+  for (int j = 0; j < ny1; ++j) fixc(cs, F_FIX, lower[j * nx + imid] + base, TFEM_COMPONENT_X, 0.0);
+  for (int j = 0; j < ny2; ++j) fixc(cs, F_FIX, upper[j * nx2 + imid2] + base, TFEM_COMPONENT_X, 0.0);
+  fixc(cs, F_FIX_EDGES, 1, TFEM_COMPONENT_Y, 0.0);
+  call_i(cs, F_ADD_PRESSURE, 4, 0)->dv[0] = 1e7;
+  if (user_mesh) {
+    call_t *p = add_call(cs, F_ADD_CONTACT_PAIR_WITH_MESH);
+    p->iv[0] = 2;
+    p->iv[1] = 3;
+    p->iv[2] = 2 * (nx - 1);
+    in_set(p, 0, NULL, 6 * (nx - 1), sizeof(int));
+    int *t = p->in[0].p, flip = chance(r, 0.3);
+    for (int i = 0; i + 1 < nx; ++i) {
+      int a0 = lower[(ny1 - 1) * nx + i], a1 = lower[(ny1 - 1) * nx + i + 1];
+      int b0 = upper[i], b1 = upper[i + 1];
+      int tri[6] = {a0, a1, b0, a1, b1, b0};
+      if (flip && (i % 2)) {
+        tri[1] = b0;
+        tri[2] = a1;
+      }
+      for (int k = 0; k < 6; ++k) t[6 * i + k] = tri[k] + base;
+    }
+  } else {
+    call_i(cs, F_ADD_CONTACT_PAIR, 2, 3);
+  }
+  if (chance(r, 0.2)) call_i(cs, F_SET_ORDERING, rint_(r, 3), rint_(r, 2));
+  if (literal) {
+    int refac = rint_(r, 2);
+    solve_contact_call(cs, 0, 1, chance(r, 0.3) ? 2 : 50, refac, 0, 0);
+    if (chance(r, 0.5)) result_getters(r, cs, 1);
+    solve_contact_call(cs, 0, 1, 50, 1 - refac, 0, 0);
+  } else if (chance(r, 0.15)) {
+    add_call(cs, F_SOLVE_CONTACT)->in[0].null_ = 1;
+  } else {
+    int law = chance(r, 0.15), test = chance(r, 0.15), refac = chance(r, 0.3);
+    solve_contact_call(cs, law, test, 50, refac, chance(r, 0.1) ? 1e9 : 0, chance(r, 0.1) ? 0.5 : 0);
+  }
+  result_getters(r, cs, 1);
+  free(lower);
+  free(upper);
+}
+
+/* A unit square whose middle row of nodes is lowered onto the row below:
+ * a band of flat (zero-area) and inverted triangles, legal in TFEM. */
+static void scene_degenerate(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
+  int n = 2 * rrange(r, 1, 3);
+  double xs[8], ys[8];
+  for (int i = 0; i <= n; ++i) xs[i] = ys[i] = (double)i / n;
+  int rows[64];
+  add_grid(m, xs, n + 1, ys, n + 1, 1, NAN, rows);
+  double drop = (double[]){1.0, 1.0, 1.5, 0.999999}[rint_(r, 4)] / n;
+  for (int i = 0; i <= n; ++i) m->xy[2 * rows[(n / 2) * (n + 1) + i] + 1] -= drop;
+  int *be, nb = boundary_edges(m, &be);
+  for (int e = 0; e < nb; ++e) {
+    const double *p = &m->xy[2 * be[2 * e]], *q = &m->xy[2 * be[2 * e + 1]];
+    int tag = p[1] == 0 && q[1] == 0 ? 3 : p[1] == 1 && q[1] == 1 ? 4 : p[0] == 0 && q[0] == 0 ? 1 : 2;
+    mesh_edge(m, be[2 * e], be[2 * e + 1], tag);
+  }
+  free(be);
+  int base = rint_(r, 2);
+  *cx = (ctx_t){m->nn, m->nt, base, {1, 2, 3, 4}, 4, {1}, 1, m};
+  set_mesh_call(cs, m, base);
+  edges_call(cs, m, base);
+  material(cs, 1, 1000.0, 0.3, rint_(r, 2));
+  int mode = rint_(r, 4);
+  call_i(cs, F_SET_TEMPERING, mode, 0)->dv[0] = mode == 1 ? 1.0 : mode == 2 ? (chance(r, 0.5) ? 1e-300 : 1e-3) : 0.0;
+  fixc(cs, F_FIX_EDGES, 3, TFEM_COMPONENT_X, 0.0);
+  fixc(cs, F_FIX_EDGES, 3, TFEM_COMPONENT_Y, 0.0);
+  if (chance(r, 0.5)) load2(cs, F_ADD_TRACTION, 4, 0.0, -10.0);
+  else call_i(cs, F_ADD_PRESSURE, 4, 0)->dv[0] = 10.0;
+  if (chance(r, 0.4)) load2(cs, F_SET_BODY_FORCE, 1, 0.0, -1.0);
+  add_call(cs, F_SOLVE);
+  result_getters(r, cs, 0);
+}
+
+/* The unit square of the valid Gmsh file: tags 1 left, 2 right, 3 bottom, 4 top. */
+static void scene_gmsh(rng_t *r, case_t *cs, ctx_t *cx) {
+  int base = rint_(r, 2);
+  *cx = (ctx_t){9, 8, base, {1, 2, 3, 4}, 4, {1}, 1, NULL};
+  call_i(cs, F_LOAD_GMSH, chance(r, 0.7) ? G_VALID : G_CLOCKWISE, base);
+  material(cs, 1, 1000.0, 0.25, TFEM_PLANE_MODE_STRESS);
+  call_i(cs, F_SET_TEMPERING, TFEM_TEMPERING_MODE_LAMBDA, 0)->dv[0] = 1000.0;
+  fixc(cs, F_FIX_EDGES, 1, TFEM_COMPONENT_X, 0.0);
+  fixc(cs, F_FIX_EDGES, 3, TFEM_COMPONENT_Y, 0.0);
+  load2(cs, F_ADD_TRACTION, 2, 10.0, 0.0);
+  add_call(cs, F_SOLVE);
+  result_getters(r, cs, 0);
+}
+
+/* A random small mesh: random points on a coarse lattice (coincident ones
+ * possible), random triangles (repeated or unused nodes possible). */
+static void random_mesh(rng_t *r, mesh_t *m, int nbodies) {
+  int nn = rrange(r, 3, 16), nt = rrange(r, 1, 20);
+  double scale = chance(r, 0.8) ? 1.0 : wild_double(r);
+  for (int i = 0; i < nn; ++i) mesh_node(m, rint_(r, 5) * 0.25 * scale, rint_(r, 5) * 0.25 * scale);
+  for (int t = 0; t < nt; ++t) {
+    int a = rint_(r, nn), b = rint_(r, nn), c = rint_(r, nn);
+    if (chance(r, 0.9)) {
+      while (b == a) b = rint_(r, nn);
+      while (c == a || c == b) c = rint_(r, nn);
+    }
+    mesh_tri(m, a, b, c, 1 + rint_(r, nbodies));
+  }
+  for (int t = 0; t < nt; ++t)
+    for (int k = 0; k < 3; ++k)
+      if (chance(r, 0.3)) mesh_edge(m, m->tri[3 * t + k], m->tri[3 * t + (k + 1) % 3], rrange(r, 1, 4));
+}
+
+/* A random call of any entry point; arguments plausible for the context,
+ * each made wild with probability `wild`. */
+static void random_call(rng_t *r, case_t *cs, const ctx_t *cx, double wild, int at, int forced) {
+  static const int weight[NF] = {
+      [F_VERSION] = 1, [F_LAST_ERROR] = 3, [F_LAST_ERROR_LENGTH] = 2, [F_WARNING_COUNT] = 2,
+      [F_GET_WARNING] = 2, [F_SET_MESH] = 2, [F_LOAD_GMSH] = 2, [F_SET_BOUNDARY_EDGES] = 3,
+      [F_SET_MATERIAL] = 4, [F_SET_TEMPERING] = 3, [F_SET_ORDERING] = 3, [F_FIX] = 4,
+      [F_FIX_EDGES] = 4, [F_CLEAR_CONSTRAINTS] = 2, [F_ADD_PRESSURE] = 3, [F_ADD_TRACTION] = 3,
+      [F_ADD_NODAL_FORCE] = 3, [F_SET_BODY_FORCE] = 2, [F_CLEAR_LOADS] = 2, [F_SOLVE] = 6,
+      [F_GET_SIZES] = 2, [F_GET_DISPLACEMENTS] = 4, [F_GET_STRAINS] = 3, [F_GET_STRESSES] = 3,
+      [F_GET_JACOBIANS] = 3, [F_GET_REACTIONS] = 4, [F_GET_MATRIX_SIZE] = 2, [F_GET_MATRIX] = 3,
+      [F_ELEMENT_STIFFNESS] = 4, [F_LAPLACIAN_STIFFNESS] = 3, [F_ADD_CONTACT_PAIR] = 3,
+      [F_ADD_CONTACT_PAIR_WITH_MESH] = 2, [F_CONTACT_OPTIONS_DEFAULT] = 2, [F_SOLVE_CONTACT] = 5,
+      [F_GET_CONTACT_ACTIVE] = 3, [F_GET_CONTACT_PRESSURE] = 3, [F_GET_CONTACT_ELEMENTS] = 2,
+      [F_GET_CONTACT_REPORT] = 2, [F_DESTROY_NULL] = 1, [F_RECREATE] = 1};
+  int total = 0;
+  for (int f = 0; f < NF; ++f) total += weight[f];
+  int x = rint_(r, total), fn = 0;
+  while (x >= weight[fn]) x -= weight[fn++];
+  if (forced >= 0) fn = forced;
+  call_t tmp;
+  memset(&tmp, 0, sizeof tmp);
+  case_t one = {0};
+  call_t *c = add_call(&one, fn);
+  for (int k = 0; k < fn_ni(fn); ++k) {
+    char role = FN[fn].ir[k];
+    c->iv[k] = plausible_int(r, role, cx);
+    if (chance(r, wild) && role != 'c') c->iv[k] = wild_int(r, role, c->iv[k], cx);
+  }
+  for (int k = 0; k < fn_nd(fn); ++k)
+    c->dv[k] = chance(r, wild) ? wild_double(r) : plausible_double(r, FN[fn].dr[k]);
+  switch (fn) {
+  case F_SET_MESH: {
+    mesh_t rm = {0};
+    if (cx->mesh && chance(r, 0.5)) {
+      const mesh_t *s = cx->mesh;
+      for (int i = 0; i < s->nn; ++i) mesh_node(&rm, s->xy[2 * i], s->xy[2 * i + 1]);
+      for (int t = 0; t < s->nt; ++t) mesh_tri(&rm, s->tri[3 * t], s->tri[3 * t + 1], s->tri[3 * t + 2], s->body[t]);
+    } else {
+      random_mesh(r, &rm, cx->nbodies > 1 ? 2 : 1);
+    }
+    c->iv[0] = rm.nn;
+    c->iv[1] = rm.nt;
+    c->iv[2] = cx->base;
+    in_set(c, 0, rm.xy, 2 * rm.nn, sizeof(double));
+    in_set(c, 1, NULL, 3 * rm.nt, sizeof(int));
+    for (int k = 0; k < 3 * rm.nt; ++k) ((int *)c->in[1].p)[k] = rm.tri[k] + cx->base;
+    in_set(c, 2, rm.body, rm.nt, sizeof(int));
+    mesh_free(&rm);
+    break;
+  }
+  case F_SET_BOUNDARY_EDGES: {
+    /* The scene's edges, most kept; sometimes every edge of one tag left
+     * out (loads on it then name nothing) or an interior edge (a side of
+     * two triangles) given a tag that may carry a load. */
+    const mesh_t *sm = cx->mesh;
+    int ne = 0, cap = (sm ? sm->ne : 0) + 4, drop_tag = chance(r, 0.35) ? pick_tag(r, cx) : INT_MIN;
+    int *en = xmalloc(sizeof(int) * 2 * (size_t)cap), *tg = xmalloc(sizeof(int) * (size_t)cap);
+    if (sm) {
+      double keep = chance(r, 0.5) ? 1.0 : 0.8;
+      for (int e = 0; e < sm->ne; ++e)
+        if (sm->tag[e] != drop_tag && chance(r, keep)) {
+          en[2 * ne] = sm->edge[2 * e] + cx->base;
+          en[2 * ne + 1] = sm->edge[2 * e + 1] + cx->base;
+          tg[ne++] = chance(r, 0.9) ? sm->tag[e] : pick_tag(r, cx);
+        }
+      if (sm->nt > 1 && chance(r, 0.25)) {
+        /* an interior side: a side of a triangle that another one shares */
+        for (int tries = 0; tries < 20; ++tries) {
+          int t = rint_(r, sm->nt), k = rint_(r, 3), n2 = 0;
+          int p = sm->tri[3 * t + k], q = sm->tri[3 * t + (k + 1) % 3];
+          for (int u = 0; u < sm->nt; ++u)
+            for (int kk = 0; kk < 3; ++kk) {
+              int a = sm->tri[3 * u + kk], b = sm->tri[3 * u + (kk + 1) % 3];
+              n2 += (a == p && b == q) || (a == q && b == p);
+            }
+          if (n2 == 2) {
+            en[2 * ne] = p + cx->base;
+            en[2 * ne + 1] = q + cx->base;
+            tg[ne++] = pick_tag(r, cx);
+            break;
+          }
+        }
+      }
+    }
+    if (ne == 0 || chance(r, 0.1)) {
+      en[2 * ne] = pick_node(r, cx);
+      en[2 * ne + 1] = pick_node(r, cx);
+      tg[ne++] = pick_tag(r, cx);
+    }
+    c->iv[0] = ne;
+    in_set(c, 0, en, 2 * ne, sizeof(int));
+    in_set(c, 1, tg, ne, sizeof(int));
+    free(en);
+    free(tg);
+    break;
+  }
+  case F_ADD_CONTACT_PAIR_WITH_MESH: {
+    int nt = rrange(r, 1, 4);
+    c->iv[2] = nt;
+    in_set(c, 0, NULL, 3 * nt, sizeof(int));
+    for (int k = 0; k < 3 * nt; ++k) ((int *)c->in[0].p)[k] = pick_node(r, cx);
+    break;
+  }
+  case F_ELEMENT_STIFFNESS: case F_LAPLACIAN_STIFFNESS: {
+    double xy[6] = {0, 0, 1, 0, 0, 1};
+    if (chance(r, 0.5))
+      for (int k = 0; k < 6; ++k) xy[k] = chance(r, wild) ? wild_double(r) : rint_(r, 5) * 0.5 - 1.0;
+    in_set(c, 0, xy, 6, sizeof(double));
+    break;
+  }
+  case F_SOLVE_CONTACT:
+    if (chance(r, 0.2)) c->in[0].null_ = 1;
+    break;
+  case F_GET_WARNING: case F_LAST_ERROR:
+    c->out[0] = (out_spec){chance(r, 0.7) ? LS_FIXED : LS_EXACT, rint_(r, 3) ? 512 : rint_(r, 40), 0, 0, 0, 0};
+    break;
+  default: break;
+  }
+  fix_arrays(r, c, cx);
+  if (FN[fn].model && chance(r, wild * 0.2)) c->null_model = 1;
+  for (int j = 0; j < fn_nout(fn); ++j) {
+    if (chance(r, wild * 0.3)) c->out[j].null_ = 1;
+    else if (!FN[fn].scalar_out && FN[fn].req[j] != R_36 && FN[fn].req[j] != R_9 && chance(r, wild * 0.5))
+      c->out[j] = (out_spec){LS_REL, chance(r, 0.7) ? -1 : rrange(r, -3, 3), 0, 0, 0, 0};
+  }
+  c->mutated = 1;
+  case_insert_copy(cs, at < 0 ? cs->n : at, c);
+  case_free(&one);
+  (void)tmp;
+}
+
+/* Mutates one argument of call c. */
+static void mutate_arg(rng_t *r, call_t *c, const ctx_t *cx) {
+  int fn = c->fn;
+  c->mutated = 1;
+  for (int tries = 0; tries < 8; ++tries) {
+    switch (rint_(r, 6)) {
+    case 0: /* an int argument */
+      if (fn_ni(fn)) {
+        int k = rint_(r, fn_ni(fn));
+        char role = FN[fn].ir[k];
+        if (role == 'c') {
+          int v = c->iv[k];
+          int opts[6] = {-1, INT_MIN, 0, v + 1, v - 1, 2 * v};
+          c->iv[k] = opts[rint_(r, 6)];
+          fix_arrays(r, c, cx);
+        } else if (role == 'B') {
+          c->iv[k] = (int[]){1 - c->iv[k], 2, -1}[rint_(r, 3)];
+        } else if (role == 'f') {
+          c->iv[k] = rrange(r, -1, NGMSH - 1);
+        } else {
+          c->iv[k] = chance(r, 0.3) ? plausible_int(r, role, cx) : wild_int(r, role, c->iv[k], cx);
+        }
+        return;
+      }
+      break;
+    case 1: /* a double argument */
+      if (fn_nd(fn)) {
+        c->dv[rint_(r, fn_nd(fn))] = wild_double(r);
+        return;
+      }
+      break;
+    case 2: /* an input array: NULL, or one element */
+      if (fn_nin(fn)) {
+        int j = rint_(r, fn_nin(fn));
+        char role = FN[fn].ink[j];
+        if (role == 'o' || chance(r, 0.2) || c->in[j].n == 0) {
+          c->in[j].null_ = 1;
+        } else if (role == 'x') {
+          ((double *)c->in[j].p)[rint_(r, c->in[j].n)] = wild_double(r);
+        } else {
+          int *v = &((int *)c->in[j].p)[rint_(r, c->in[j].n)];
+          *v = role == 'n' ? wild_int(r, 'n', *v, cx) : role == 'b' ? (int[]){0, 99, -1, pick_body(r, cx)}[rint_(r, 4)]
+                                                                     : (int[]){0, 99, -1, pick_tag(r, cx)}[rint_(r, 4)];
+        }
+        return;
+      }
+      break;
+    case 3: /* an output buffer: NULL or the wrong length */
+      if (fn_nout(fn)) {
+        int j = rint_(r, fn_nout(fn));
+        if (FN[fn].scalar_out || FN[fn].req[j] == R_36 || FN[fn].req[j] == R_9 || chance(r, 0.3)) {
+          c->out[j].null_ = 1;
+        } else {
+          long d[] = {-1, -1, -2, 1, 1000};
+          c->out[j].ls = chance(r, 0.2) ? LS_FIXED : LS_REL;
+          c->out[j].delta = c->out[j].ls == LS_FIXED ? rint_(r, 3) : d[rint_(r, 5)];
+        }
+        return;
+      }
+      break;
+    case 4: /* the model */
+      if (FN[fn].model) {
+        c->null_model = 1;
+        return;
+      }
+      break;
+    default: /* options of a contact solve */
+      if (fn == F_SOLVE_CONTACT) {
+        int k = rint_(r, 6);
+        if (k < 4) c->iv[k] = chance(r, 0.5) ? plausible_int(r, FN[fn].ir[k], cx) : wild_int(r, FN[fn].ir[k], c->iv[k], cx);
+        else c->dv[k - 4] = chance(r, 0.5) ? plausible_double(r, FN[fn].dr[k - 4]) : wild_double(r);
+        return;
+      }
+      break;
+    }
+  }
+}
+
+/* Structural and argument mutations of a scene. */
+static void mutate_case(rng_t *r, case_t *cs, const ctx_t *cx) {
+  int n_mut = rrange(r, 1, 4);
+  for (int k = 0; k < n_mut && cs->n > 0; ++k) {
+    int i = rint_(r, cs->n);
+    switch (rint_(r, 13)) {
+    case 0: case 1: case 2: case 3: mutate_arg(r, &cs->c[i], cx); break;
+    case 11: case 12: { /* an extreme magnitude for a physical value */
+      static const double ext[] = {1e300, DBL_MAX, 1e200, 1e155, 1e-300, 4.9406564584124654e-324, 1e-200, 1e30};
+      int tries = 0;
+      while (tries++ < 40 && !(fn_nd(cs->c[i].fn) > 0 && FN[cs->c[i].fn].model)) i = rint_(r, cs->n);
+      call_t *c = &cs->c[i];
+      if (fn_nd(c->fn) > 0) {
+        int k = rint_(r, fn_nd(c->fn));
+        c->dv[k] = ext[rint_(r, 8)] * (c->dv[k] < 0 ? -1 : 1);
+        c->mutated = 1;
+      }
+      break;
+    }
+    case 10: /* new boundary edges, late: a tag gone or naming an interior edge */
+      random_call(r, cs, cx, 0.0, rrange(r, cs->n / 2, cs->n), F_SET_BOUNDARY_EDGES);
+      break;
+    case 4: random_call(r, cs, cx, 0.3, rint_(r, cs->n + 1), -1); break;
+    case 5: if (cs->n > 1) case_delete(cs, i); break;
+    case 6: { /* duplicate, maybe mutated, right after or later */
+      int at = chance(r, 0.5) ? i + 1 : rrange(r, i + 1, cs->n);
+      case_insert_copy(cs, at, &cs->c[i]);
+      cs->c[at].mutated = 1;
+      if (chance(r, 0.5)) mutate_arg(r, &cs->c[at], cx);
+      break;
+    }
+    case 7: if (i + 1 < cs->n) { /* swap neighbours */
+        call_t t = cs->c[i];
+        cs->c[i] = cs->c[i + 1];
+        cs->c[i + 1] = t;
+        cs->c[i].mutated = cs->c[i + 1].mutated = 1;
+      }
+      break;
+    case 8: { /* move a call elsewhere (out of order) */
+      call_t t = cs->c[i];
+      memmove(&cs->c[i], &cs->c[i + 1], (size_t)(cs->n - 1 - i) * sizeof(call_t));
+      int at = rint_(r, cs->n);
+      memmove(&cs->c[at + 1], &cs->c[at], (size_t)(cs->n - 1 - at) * sizeof(call_t));
+      cs->c[at] = t;
+      cs->c[at].mutated = 1;
+      break;
+    }
+    default: { /* a second solve with other options, or a failing one first */
+      int at = rint_(r, cs->n + 1);
+      call_t sc;
+      memset(&sc, 0, sizeof sc);
+      case_t one = {0};
+      call_t *c = add_call(&one, chance(r, 0.5) ? F_SOLVE_CONTACT : F_SOLVE);
+      c->iv[0] = rint_(r, 2);
+      c->iv[1] = rint_(r, 2);
+      c->iv[2] = chance(r, 0.3) ? 1 : 50;
+      c->iv[3] = rint_(r, 2);
+      c->mutated = 1;
+      case_insert_copy(cs, at, c);
+      case_free(&one);
+      (void)sc;
+      break;
+    }
+    }
+  }
+}
+
+/* Builds case number `index` of `seed`. */
+static void gen_case(uint64_t seed, long index, case_t *cs, mesh_t *m) {
+  rng_t r = {mix64(seed * 0x9e3779b97f4a7c15ULL + (uint64_t)index)};
+  memset(cs, 0, sizeof *cs);
+  cs->seed = seed;
+  cs->index = index;
+  ctx_t cx = {0};
+  int kind = rint_(&r, 100);
+  if (kind < 70) {
+    /* (a) a valid scene, mutated (10% left pristine) */
+    int s = rint_(&r, 100);
+    if (s < 22) { cs->kind = "square"; scene_square(&r, cs, &cx, m, 0, 0); }
+    else if (s < 30) { cs->kind = "clockwise_square"; scene_square(&r, cs, &cx, m, 1, 1); }
+    else if (s < 58) { cs->kind = "two_blocks"; scene_two_blocks(&r, cs, &cx, m, 0); }
+    else if (s < 72) { cs->kind = "user_contact_mesh"; scene_two_blocks(&r, cs, &cx, m, 1); }
+    else if (s < 78) { cs->kind = "literal_cycle"; scene_two_blocks(&r, cs, &cx, m, 2); }
+    else if (s < 90) { cs->kind = "degenerate"; scene_degenerate(&r, cs, &cx, m); }
+    else { cs->kind = "gmsh"; scene_gmsh(&r, cs, &cx); }
+    if (!chance(&r, 0.1)) mutate_case(&r, cs, &cx);
+    else cs->pristine = 1;
+  } else {
+    /* (b) a fully random sequence */
+    cs->kind = "random";
+    int nb = rrange(&r, 1, 2);
+    if (chance(&r, 0.75)) {
+      random_mesh(&r, m, nb);
+      cx = (ctx_t){m->nn, m->nt, rint_(&r, 2), {1, 2, 3, 4}, 4, {1, 2}, nb, m};
+      set_mesh_call(cs, m, cx.base);
+      if (chance(&r, 0.8)) edges_call(cs, m, cx.base);
+      for (int b = 1; b <= nb; ++b)
+        if (chance(&r, 0.8)) material(cs, b, plausible_double(&r, 'E'), plausible_double(&r, 'p'), rint_(&r, 2));
+    } else {
+      cx = (ctx_t){rrange(&r, 0, 6), 0, rint_(&r, 2), {1, 2, 3, 4}, 4, {1, 2}, 2, NULL};
+    }
+    int n = rrange(&r, 3, 40);
+    double wild = runif(&r) * 0.5;
+    for (int k = 0; k < n; ++k) random_call(&r, cs, &cx, wild, -1, -1);
+  }
+}
+
+/* ------------------------------------------------------------------------ */
+/* Shared state of a run (visible to forked children)                        */
+/* ------------------------------------------------------------------------ */
+
+typedef struct {
+  int done;
+  int term; /* 0 normal; else V_CRASH, V_ABORT or V_HANG */
+  long counts[NV];
+  long calls;
+  long stderr_bytes;
+  long status_flips; /* replay: a call OK originally failed (part of state_change) */
+} case_result;
+
+typedef struct {
+  int printed[NV]; /* findings printed so far, per class (a print limit) */
+  case_result res[];
+} shared_t;
+
+static shared_t *g_shared;
+static int g_print_limit = 3;
+static int g_verbose = 0;
+
+/* ------------------------------------------------------------------------ */
+/* Guarded output buffers                                                    */
+/* ------------------------------------------------------------------------ */
+
+#define GUARD 64
+#define CANARY 0xCB
+static const uint64_t PAT_D = 0x7FF4DEADBEEF0001ULL; /* a signalling NaN */
+#define PAT_BYTE 0x5A
+
+typedef struct {
+  unsigned char *blk, *p;
+  size_t n, bytes;
+  int kind;
+} gbuf;
+
+static void gb_alloc(gbuf *g, int kind, size_t n) {
+  g->kind = kind;
+  g->n = n;
+  g->bytes = n * ksize(kind);
+  g->blk = xmalloc(g->bytes + 2 * GUARD);
+  g->p = g->blk + GUARD;
+  memset(g->blk, CANARY, GUARD);
+  memset(g->p + g->bytes, CANARY, GUARD);
+  if (kind == K_D)
+    for (size_t i = 0; i < n; ++i) memcpy(g->p + 8 * i, &PAT_D, 8);
+  else
+    memset(g->p, PAT_BYTE, g->bytes);
+}
+static int gb_canary_ok(const gbuf *g) {
+  for (int i = 0; i < GUARD; ++i)
+    if (g->blk[i] != CANARY || g->p[g->bytes + i] != CANARY) return 0;
+  return 1;
+}
+static int gb_is_pattern(const gbuf *g, size_t i) {
+  size_t es = ksize(g->kind);
+  if (g->kind == K_D) return memcmp(g->p + 8 * i, &PAT_D, 8) == 0;
+  for (size_t b = 0; b < es; ++b)
+    if (g->p[i * es + b] != PAT_BYTE) return 0;
+  return 1;
+}
+static int gb_untouched(const gbuf *g) {
+  for (size_t i = 0; i < g->n; ++i)
+    if (!gb_is_pattern(g, i)) return 0;
+  return 1;
+}
+
+/* ------------------------------------------------------------------------ */
+/* The shadow model: what the tester knows the model holds                   */
+/* ------------------------------------------------------------------------ */
+
+typedef struct {
+  int tag, type; /* 0 pressure, 1 traction */
+  double a, b;
+} sh_load;
+
+typedef struct {
+  int has_mesh; /* a mesh was set (by set_mesh or a Gmsh file) */
+  int exact;    /* and it is known here */
+  int nn, nt, base;
+  double *xy;
+  int *tri, *body, *used;
+  int ne;
+  int *edge, *tag;
+  sh_load *load;
+  int nl;
+  double *nforce; /* 2 per node */
+  int bf_body[16];
+  double bf[16][2];
+  int nbf;
+  double *presc; /* 2 per node, NAN: free */
+  int presc_nonempty;
+  int results; /* 0 none, 1 plain solve, 2 contact solve */
+  int matrix_dropped;
+  double relres, cond;
+} shadow_t;
+
+static void sh_clear_mesh(shadow_t *s) {
+  free(s->xy);
+  free(s->tri);
+  free(s->body);
+  free(s->used);
+  free(s->edge);
+  free(s->tag);
+  free(s->load);
+  free(s->nforce);
+  free(s->presc);
+  memset(s, 0, sizeof *s);
+  s->relres = NAN;
+}
+static void sh_new_mesh(shadow_t *s, int nn, const double *xy, int nt, const int *tri0, const int *body, int base) {
+  sh_clear_mesh(s);
+  s->has_mesh = s->exact = 1;
+  s->nn = nn;
+  s->nt = nt;
+  s->base = base;
+  s->xy = xmalloc(sizeof(double) * 2 * (size_t)nn);
+  memcpy(s->xy, xy, sizeof(double) * 2 * (size_t)nn);
+  s->tri = xmalloc(sizeof(int) * 3 * (size_t)nt);
+  for (int k = 0; k < 3 * nt; ++k) s->tri[k] = tri0[k];
+  s->body = xmalloc(sizeof(int) * (size_t)nt);
+  memcpy(s->body, body, sizeof(int) * (size_t)nt);
+  s->used = xcalloc((size_t)nn, sizeof(int));
+  for (int k = 0; k < 3 * nt; ++k) s->used[s->tri[k]] = 1;
+  s->nforce = xcalloc(2 * (size_t)nn, sizeof(double));
+  s->presc = xmalloc(sizeof(double) * 2 * (size_t)nn);
+  for (int g = 0; g < 2 * nn; ++g) s->presc[g] = NAN;
+}
+static void sh_set_edges(shadow_t *s, int ne, const int *edge0, const int *tag) {
+  free(s->edge);
+  free(s->tag);
+  s->ne = ne;
+  s->edge = xmalloc(sizeof(int) * 2 * (size_t)(ne + 1));
+  s->tag = xmalloc(sizeof(int) * (size_t)(ne + 1));
+  for (int k = 0; k < 2 * ne; ++k) s->edge[k] = edge0[k];
+  for (int k = 0; k < ne; ++k) s->tag[k] = tag[k];
+}
+/* The unit square of the valid Gmsh file as the library reads it. */
+static void sh_gmsh_square(shadow_t *s, int base) {
+  double xy[18];
+  for (int k = 0; k < 9; ++k) {
+    xy[2 * k] = 0.5 * (k % 3);
+    xy[2 * k + 1] = 0.5 * (k / 3);
+  }
+  int tri[24], nt = 0, body[8] = {1, 1, 1, 1, 1, 1, 1, 1};
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 2; ++i) {
+      int a = i + 3 * j, b = a + 1, c = a + 4, d = a + 3;
+      int t[6] = {a, b, c, a, c, d};
+      memcpy(&tri[3 * nt], t, sizeof t);
+      nt += 2;
+    }
+  sh_new_mesh(s, 9, xy, 8, tri, body, base);
+  int edge[16] = {0, 3, 3, 6, 2, 5, 5, 8, 0, 1, 1, 2, 6, 7, 7, 8}, tag[8] = {1, 1, 2, 2, 3, 3, 4, 4};
+  sh_set_edges(s, 8, edge, tag);
+}
+/* Owner (the single triangle with the edge) and its third node, or -1. */
+static int sh_owner(const shadow_t *s, int p, int q, int *third) {
+  int owner = -1, count = 0;
+  for (int t = 0; t < s->nt; ++t)
+    for (int k = 0; k < 3; ++k) {
+      int a = s->tri[3 * t + k], b = s->tri[3 * t + (k + 1) % 3];
+      if ((a == p && b == q) || (a == q && b == p)) {
+        ++count;
+        owner = t;
+        *third = s->tri[3 * t + (k + 2) % 3];
+      }
+    }
+  return count == 1 ? owner : -1;
+}
+/* Outward normal of a boundary edge as mesh.rs computes it; 0 if none. */
+static int sh_normal(const shadow_t *s, int p, int q, double n[2]) {
+  int third = 0, t = sh_owner(s, p, q, &third);
+  if (t < 0) return 0;
+  const double *a = &s->xy[2 * p], *c = &s->xy[2 * q], *r = &s->xy[2 * third];
+  double tv[2] = {c[0] - a[0], c[1] - a[1]}, len = hypot(tv[0], tv[1]);
+  if (len == 0.0) return 0;
+  double left[2] = {-tv[1] / len, tv[0] / len};
+  double side = left[0] * (r[0] - a[0]) + left[1] * (r[1] - a[1]);
+  int interior_on_left;
+  if (side != 0.0) {
+    interior_on_left = side > 0.0;
+  } else {
+    int k = 0;
+    while (k < 3 && s->tri[3 * t + k] != p) ++k;
+    interior_on_left = s->tri[3 * t + (k + 1) % 3] == q;
+  }
+  n[0] = interior_on_left ? -left[0] : left[0];
+  n[1] = interior_on_left ? -left[1] : left[1];
+  return 1;
+}
+/* Total external force (x, y) on the nodes that carry unknowns or are
+ * prescribed, as the reactions must balance it; 0 if it cannot be known. */
+static int sh_total_force(const shadow_t *s, double tot[2], double *mag) {
+  double *f = xcalloc(2 * (size_t)s->nn, sizeof(double));
+  int ok = 1;
+  for (int l = 0; l < s->nl && ok; ++l)
+    for (int e = 0; e < s->ne; ++e) {
+      if (s->tag[e] != s->load[l].tag) continue;
+      int p = s->edge[2 * e], q = s->edge[2 * e + 1];
+      const double *xp = &s->xy[2 * p], *xq = &s->xy[2 * q];
+      double len = hypot(xq[0] - xp[0], xq[1] - xp[1]), t[2], n[2];
+      if (s->load[l].type == 1) {
+        t[0] = s->load[l].a;
+        t[1] = s->load[l].b;
+      } else {
+        if (!sh_normal(s, p, q, n)) {
+          ok = 0;
+          break;
+        }
+        t[0] = -s->load[l].a * n[0];
+        t[1] = -s->load[l].a * n[1];
+      }
+      for (int v = 0; v < 2; ++v) {
+        int node = v ? q : p;
+        f[2 * node] += 0.5 * len * t[0];
+        f[2 * node + 1] += 0.5 * len * t[1];
+      }
+    }
+  for (int g = 0; g < 2 * s->nn; ++g) f[g] += s->nforce[g];
+  for (int b = 0; b < s->nbf; ++b)
+    for (int t = 0; t < s->nt; ++t) {
+      if (s->body[t] != s->bf_body[b]) continue;
+      const int *v = &s->tri[3 * t];
+      const double *x1 = &s->xy[2 * v[0]], *x2 = &s->xy[2 * v[1]], *x3 = &s->xy[2 * v[2]];
+      double j = (x2[0] - x1[0]) * (x3[1] - x1[1]) - (x3[0] - x1[0]) * (x2[1] - x1[1]);
+      double area = 0.5 * (j > 0 ? j : 0);
+      for (int k = 0; k < 3; ++k) {
+        f[2 * v[k]] += s->bf[b][0] * area / 3.0;
+        f[2 * v[k] + 1] += s->bf[b][1] * area / 3.0;
+      }
+    }
+  tot[0] = tot[1] = *mag = 0;
+  for (int g = 0; g < 2 * s->nn; ++g)
+    if (s->used[g / 2] || !isnan(s->presc[g])) {
+      tot[g % 2] += f[g];
+      *mag += fabs(f[g]);
+    }
+  free(f);
+  return ok && isfinite(*mag);
+}
+
+/* ------------------------------------------------------------------------ */
+/* The runner: executes a case's calls and checks each                       */
+/* ------------------------------------------------------------------------ */
+
+typedef struct {
+  tfem_model *m;
+  case_t *cs;
+  shadow_t sh;
+  int phase;     /* 0 original, 1 replay */
+  int verbose;
+  int full_prefix; /* calls [0, full_prefix) are all the case's first calls (oracles valid) */
+  int pristine;
+  int mismatch_reported;
+  long counts[NV];
+  long calls;
+  long stderr_bytes;
+  long status_flips;
+  FILE *cfile; /* the C reproducer being written (verbose runs) */
+} runner_t;
+
+static void c_emit_call(FILE *f, const call_t *c, int idx);
+static void c_emit_status(FILE *f, const call_t *c, int idx, int st);
+
+static void finding(runner_t *R, int v, int idx, const char *fmt, ...) {
+  R->counts[v]++;
+  int show = R->verbose;
+  if (!show && g_shared) show = __atomic_fetch_add(&g_shared->printed[v], 1, __ATOMIC_RELAXED) < g_print_limit;
+  if (!show) return;
+  char line[1200];
+  int n = snprintf(line, sizeof line, "VIOLATION %s: seed=%" PRIu64 " case=%ld (%s) call #%d %s: ", V_NAME[v],
+                   R->cs->seed, R->cs->index, R->cs->kind, idx,
+                   idx >= 0 && idx < R->cs->n ? FN[R->cs->c[idx].fn].name : "-");
+  va_list ap;
+  va_start(ap, fmt);
+  if (n < (int)sizeof line) vsnprintf(line + n, sizeof line - (size_t)n, fmt, ap);
+  va_end(ap);
+  size_t L = strlen(line);
+  if (L + 2 > sizeof line) L = sizeof line - 2;
+  line[L] = '\n';
+  line[L + 1] = 0;
+  fputs(line, stdout);
+  fflush(stdout);
+}
+
+static off_t g_err_claimed; /* stderr bytes already attributed to a call */
+
+static off_t fd_size(int fd) {
+  struct stat st;
+  if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) return -1;
+  return st.st_size;
+}
+
+/* A printable excerpt of a message. */
+static void excerpt(const char *s, size_t n, char *out, size_t cap) {
+  size_t k = 0;
+  for (size_t i = 0; i < n && k + 5 < cap; ++i) {
+    unsigned char ch = (unsigned char)s[i];
+    if (ch == '\n') {
+      out[k++] = '\\';
+      out[k++] = 'n';
+    } else if (ch < 32 || ch == 127) {
+      k += (size_t)snprintf(out + k, cap - k, "\\x%02x", ch);
+    } else {
+      out[k++] = (char)ch;
+    }
+  }
+  out[k] = 0;
+}
+
+static long required_len(runner_t *R, const call_t *c, int j) {
+  int rq = FN[c->fn].req[j];
+  int nn = -1, nt = -1, nc = -1;
+  int64_t n = -1, nnz = -1;
+  switch (rq) {
+  case R_SCALAR: return 1;
+  case R_36: return 36;
+  case R_9: return 9;
+  case R_2NN: case R_3NT: case R_NT: case R_NC: case R_3NC:
+    if (tfem_get_sizes(R->m, &nn, &nt, &nc) != TFEM_STATUS_OK) return -1;
+    return rq == R_2NN ? 2L * nn : rq == R_3NT ? 3L * nt : rq == R_NT ? nt : rq == R_NC ? nc : 3L * nc;
+  case R_N1: case R_NNZ: case R_N:
+    if (tfem_get_system_matrix_size(R->m, &n, &nnz) != TFEM_STATUS_OK) return -1;
+    return rq == R_N1 ? (long)n + 1 : rq == R_NNZ ? (long)nnz : (long)n;
+  case R_MSG: return (long)tfem_last_error_length(c->null_model ? NULL : R->m);
+  case R_WARN: {
+    char b[4096];
+    if (tfem_get_warning(R->m, c->iv[0], b, sizeof b) != TFEM_STATUS_OK) return -1;
+    return (long)strlen(b) + 1;
+  }
+  default: return -1;
+  }
+}
+
+static void resolve_outputs(runner_t *R, call_t *c) {
+  for (int j = 0; j < fn_nout(c->fn); ++j) {
+    out_spec *o = &c->out[j];
+    if (o->resolved) continue;
+    o->resolved = 1;
+    o->req = required_len(R, c, j);
+    if (FN[c->fn].scalar_out || FN[c->fn].req[j] == R_36 || FN[c->fn].req[j] == R_9) {
+      o->len = 1;
+      if (FN[c->fn].req[j] == R_36) o->len = 36;
+      if (FN[c->fn].req[j] == R_9) o->len = 9;
+      continue;
+    }
+    long base = o->req >= 0 ? o->req : 16, len;
+    if (o->ls == LS_EXACT) len = base;
+    else if (o->ls == LS_REL) len = base + o->delta;
+    else len = o->delta;
+    if (len < 0) len = 0;
+    if (len > 50000000) len = 50000000;
+    o->len = (size_t)len;
+  }
+}
+
+static void norm_info(const tfem_solve_info *in, tfem_solve_info *out) {
+  memset(out, 0, sizeof *out);
+  out->unknowns = in->unknowns;
+  out->matrix_nnz = in->matrix_nnz;
+  out->factor_nnz = in->factor_nnz;
+  out->factorizations = in->factorizations;
+  out->interface_unknowns = in->interface_unknowns;
+  out->relative_residual = in->relative_residual;
+  out->condition_estimate = in->condition_estimate;
+  out->memory_bytes = in->memory_bytes;
+  out->factorization_bytes = in->factorization_bytes;
+}
+static void norm_report(const tfem_contact_report *in, tfem_contact_report *out) {
+  memset(out, 0, sizeof *out);
+  out->iterations = in->iterations;
+  out->elements = in->elements;
+  out->active = in->active;
+  out->contact_length = in->contact_length;
+  out->max_penetration = in->max_penetration;
+  norm_info(&in->info, &out->info);
+}
+static void norm_options(const tfem_contact_options *in, tfem_contact_options *out) {
+  memset(out, 0, sizeof *out);
+  out->law = in->law;
+  out->contact_modulus = in->contact_modulus;
+  out->lambda = in->lambda;
+  out->inversion_test = in->inversion_test;
+  out->max_iterations = in->max_iterations;
+  out->refactorize = in->refactorize;
+}
+
+/* Normalised bytes of output j (structs without padding and timings). */
+static unsigned char *out_bytes(const gbuf *g, size_t *n) {
+  unsigned char *b;
+  if (g->kind == K_SI) {
+    b = xmalloc(sizeof(tfem_solve_info));
+    norm_info((const tfem_solve_info *)(const void *)g->p, (tfem_solve_info *)(void *)b);
+    *n = sizeof(tfem_solve_info);
+  } else if (g->kind == K_RE) {
+    b = xmalloc(sizeof(tfem_contact_report));
+    norm_report((const tfem_contact_report *)(const void *)g->p, (tfem_contact_report *)(void *)b);
+    *n = sizeof(tfem_contact_report);
+  } else if (g->kind == K_OP) {
+    b = xmalloc(sizeof(tfem_contact_options));
+    norm_options((const tfem_contact_options *)(const void *)g->p, (tfem_contact_options *)(void *)b);
+    *n = sizeof(tfem_contact_options);
+  } else {
+    b = xmalloc(g->bytes);
+    memcpy(b, g->p, g->bytes);
+    *n = g->bytes;
+  }
+  return b;
+}
+
+static int info_bad(const tfem_solve_info *i, char *why, size_t cap) {
+  const double d[] = {i->relative_residual, i->condition_estimate, i->time_analysis, i->time_assembly,
+                      i->time_factorization, i->time_solve, i->time_interface, i->time_total};
+  static const char *const nm[] = {"relative_residual", "condition_estimate", "time_analysis", "time_assembly",
+                                   "time_factorization", "time_solve", "time_interface", "time_total"};
+  for (int k = 0; k < 8; ++k)
+    if (!isfinite(d[k])) {
+      snprintf(why, cap, "info.%s = %g", nm[k], d[k]);
+      return 1;
+    }
+  return 0;
+}
+static int info_insane(const tfem_solve_info *i, char *why, size_t cap) {
+  if (i->unknowns < 0 || i->matrix_nnz < 0 || i->factor_nnz < 0 || i->factorizations < 0 ||
+      i->interface_unknowns < 0 || i->memory_bytes < 0 || i->factorization_bytes < 0 ||
+      i->relative_residual < 0 || i->time_total < 0) {
+    snprintf(why, cap, "negative field in solve info (unknowns %" PRId64 ", nnz %" PRId64 ", residual %g)",
+             i->unknowns, i->matrix_nnz, i->relative_residual);
+    return 1;
+  }
+  return 0;
+}
+
+static const char *fn_name(int fn) { return FN[fn].name; }
+
+/* Runs call idx, checks it (original run) or compares it (replay). */
+static void exec_call(runner_t *R, int idx) {
+  call_t *c = &R->cs->c[idx];
+  int fn = c->fn;
+  tfem_model *m = c->null_model ? NULL : R->m;
+  if (R->phase == 0) resolve_outputs(R, c);
+  const void *in[MAXIN];
+  for (int j = 0; j < MAXIN; ++j) in[j] = c->in[j].null_ ? NULL : c->in[j].p;
+  tfem_contact_options opts = {c->iv[0], c->dv[0], c->dv[1], c->iv[1], c->iv[2], c->iv[3]};
+  gbuf g[MAXOUT];
+  void *o[MAXOUT] = {0};
+  int nout = fn_nout(fn);
+  for (int j = 0; j < nout; ++j) {
+    gb_alloc(&g[j], out_kind(fn, j), c->out[j].len);
+    o[j] = c->out[j].null_ ? NULL : g[j].p;
+  }
+  size_t lel = 0;
+  const char *ver = NULL;
+  const char *path = NULL;
+  if (fn == F_LOAD_GMSH && c->iv[0] >= 0 && c->iv[0] < NGMSH) path = g_path[c->iv[0]];
+  if (R->cfile && R->phase == 0) {
+    c_emit_call(R->cfile, c, idx);
+    fflush(R->cfile);
+  }
+  if (R->verbose && R->phase == 0) {
+    printf("  #%-3d %-34s", idx, fn_name(fn));
+    fflush(stdout);
+  }
+  off_t e0 = fd_size(2);
+  int st = TFEM_STATUS_OK;
+  switch (fn) {
+  case F_VERSION: ver = tfem_version(); break;
+  case F_LAST_ERROR: st = tfem_last_error(m, o[0], c->out[0].len); break;
+  case F_LAST_ERROR_LENGTH: lel = tfem_last_error_length(m); break;
+  case F_WARNING_COUNT: st = tfem_warning_count(m, o[0]); break;
+  case F_GET_WARNING: st = tfem_get_warning(m, c->iv[0], o[0], c->out[0].len); break;
+  case F_SET_MESH: st = tfem_set_mesh(m, c->iv[0], in[0], c->iv[1], in[1], in[2], c->iv[2]); break;
+  case F_LOAD_GMSH: st = tfem_load_gmsh(m, path, c->iv[1]); break;
+  case F_SET_BOUNDARY_EDGES: st = tfem_set_boundary_edges(m, c->iv[0], in[0], in[1]); break;
+  case F_SET_MATERIAL: st = tfem_set_material(m, c->iv[0], c->dv[0], c->dv[1], c->iv[1]); break;
+  case F_SET_TEMPERING: st = tfem_set_tempering(m, c->iv[0], c->dv[0]); break;
+  case F_SET_ORDERING: st = tfem_set_ordering(m, c->iv[0], c->iv[1]); break;
+  case F_FIX: st = tfem_fix(m, c->iv[0], c->iv[1], c->dv[0]); break;
+  case F_FIX_EDGES: st = tfem_fix_edges(m, c->iv[0], c->iv[1], c->dv[0]); break;
+  case F_CLEAR_CONSTRAINTS: st = tfem_clear_constraints(m); break;
+  case F_ADD_PRESSURE: st = tfem_add_pressure(m, c->iv[0], c->dv[0]); break;
+  case F_ADD_TRACTION: st = tfem_add_traction(m, c->iv[0], c->dv[0], c->dv[1]); break;
+  case F_ADD_NODAL_FORCE: st = tfem_add_nodal_force(m, c->iv[0], c->dv[0], c->dv[1]); break;
+  case F_SET_BODY_FORCE: st = tfem_set_body_force(m, c->iv[0], c->dv[0], c->dv[1]); break;
+  case F_CLEAR_LOADS: st = tfem_clear_loads(m); break;
+  case F_SOLVE: st = tfem_solve(m, o[0]); break;
+  case F_GET_SIZES: st = tfem_get_sizes(m, o[0], o[1], o[2]); break;
+  case F_GET_DISPLACEMENTS: st = tfem_get_displacements(m, o[0], c->out[0].len); break;
+  case F_GET_STRAINS: st = tfem_get_element_strains(m, o[0], c->out[0].len); break;
+  case F_GET_STRESSES: st = tfem_get_element_stresses(m, o[0], c->out[0].len); break;
+  case F_GET_JACOBIANS: st = tfem_get_element_jacobians(m, o[0], c->out[0].len); break;
+  case F_GET_REACTIONS: st = tfem_get_reactions(m, o[0], c->out[0].len); break;
+  case F_GET_MATRIX_SIZE: st = tfem_get_system_matrix_size(m, o[0], o[1]); break;
+  case F_GET_MATRIX:
+    st = tfem_get_system_matrix(m, o[0], c->out[0].len, o[1], c->out[1].len, o[2], c->out[2].len, o[3],
+                                c->out[3].len);
+    break;
+  case F_ELEMENT_STIFFNESS: st = tfem_element_stiffness(in[0], c->dv[0], c->dv[1], c->iv[0], c->dv[2], o[0]); break;
+  case F_LAPLACIAN_STIFFNESS: st = tfem_laplacian_stiffness(in[0], c->dv[0], c->dv[1], o[0]); break;
+  case F_ADD_CONTACT_PAIR: st = tfem_add_contact_pair(m, c->iv[0], c->iv[1], o[0]); break;
+  case F_ADD_CONTACT_PAIR_WITH_MESH:
+    st = tfem_add_contact_pair_with_mesh(m, c->iv[0], c->iv[1], c->iv[2], in[0], o[0], o[1]);
+    break;
+  case F_CONTACT_OPTIONS_DEFAULT: st = tfem_contact_options_default(o[0]); break;
+  case F_SOLVE_CONTACT: st = tfem_solve_contact(m, c->in[0].null_ ? NULL : &opts, o[0]); break;
+  case F_GET_CONTACT_ACTIVE: st = tfem_get_contact_active(m, o[0], c->out[0].len); break;
+  case F_GET_CONTACT_PRESSURE: st = tfem_get_contact_pressure(m, o[0], c->out[0].len); break;
+  case F_GET_CONTACT_ELEMENTS: st = tfem_get_contact_elements(m, o[0], c->out[0].len); break;
+  case F_GET_CONTACT_REPORT: st = tfem_get_contact_report(m, o[0]); break;
+  case F_DESTROY_NULL: tfem_destroy(NULL); break;
+  case F_RECREATE:
+    tfem_destroy(R->m);
+    R->m = tfem_create();
+    break;
+  default: break;
+  }
+  off_t e1 = fd_size(2);
+
+  if (R->phase == 1) {
+    /* Replay: the same call must succeed again with the same outputs. */
+    int v = V_NONDET;
+    for (int k = 0; k < idx; ++k)
+      if (R->cs->c[k].status != TFEM_STATUS_OK) v = V_STATE;
+    char why[400] = "";
+    if (st != TFEM_STATUS_OK) {
+      char msg[300] = "";
+      tfem_last_error(FN[fn].model && !c->null_model ? R->m : NULL, msg, sizeof msg);
+      snprintf(why, sizeof why, "OK originally, %s (%d) on replay without the failed calls: %s", status_name(st), st, msg);
+      R->status_flips++;
+    } else if (fn == F_VERSION) {
+      if (!ver || strcmp(ver, (const char *)c->saved[0]) != 0) snprintf(why, sizeof why, "version string differs");
+    } else if (fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH) {
+      for (int j = 0; j < nout && !why[0]; ++j) {
+        if (c->out[j].null_) continue;
+        size_t nb;
+        unsigned char *b = out_bytes(&g[j], &nb);
+        if (nb != c->saved_n[j] || memcmp(b, c->saved[j], nb) != 0) {
+          size_t first = 0, es = ksize(g[j].kind);
+          while (first < nb && b[first] == c->saved[j][first]) ++first;
+          if (g[j].kind == K_D) {
+            size_t e = first / 8;
+            double a, bb;
+            memcpy(&a, c->saved[j] + 8 * e, 8);
+            memcpy(&bb, b + 8 * e, 8);
+            snprintf(why, sizeof why, "output %d differs at element %zu: %.17g originally, %.17g on replay", j, e, a, bb);
+          } else {
+            snprintf(why, sizeof why, "output %d differs at byte %zu (element %zu)", j, first, first / es);
+          }
+        }
+        free(b);
+      }
+    }
+    if (why[0]) {
+      /* Counted once per case; the verbose run shows every difference. */
+      if (!R->mismatch_reported) {
+        finding(R, v, idx, "%s", why);
+      } else if (R->verbose) {
+        finding(R, v, idx, "%s", why);
+        R->counts[v]--;
+      }
+      R->mismatch_reported = 1;
+    }
+    for (int j = 0; j < nout; ++j) free(g[j].blk);
+    return;
+  }
+
+  /* ---- original run: checks ---- */
+  if (R->cfile) {
+    c_emit_status(R->cfile, c, idx, st);
+    fflush(R->cfile);
+  }
+  c->status = st;
+  c->ran = 1;
+  R->calls++;
+  const tfem_model *slot = (FN[fn].model && !c->null_model) ? R->m : NULL;
+  char msg[4096] = "";
+  if (fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && fn != F_VERSION && fn != F_DESTROY_NULL && fn != F_RECREATE)
+    tfem_last_error(slot, msg, sizeof msg);
+  if (R->verbose) {
+    char ex[600];
+    excerpt(msg, strlen(msg), ex, sizeof ex);
+    printf(" -> %s%s%s\n", status_name(st), st ? ": " : "", st ? ex : "");
+  }
+  if (e0 >= 0 && e1 > e0) {
+    /* Bytes are claimed once: with threads, other calls may overlap. */
+    off_t from = __atomic_load_n(&g_err_claimed, __ATOMIC_RELAXED);
+    while (from < e1 && !__atomic_compare_exchange_n(&g_err_claimed, &from, e1, 0, __ATOMIC_RELAXED, __ATOMIC_RELAXED)) {
+    }
+    if (from > e0) e0 = from;
+  }
+  if (e0 >= 0 && e1 > e0) {
+    char text[400] = "", ex[800];
+    ssize_t k = pread(2, text, sizeof text - 1 < (size_t)(e1 - e0) ? sizeof text - 1 : (size_t)(e1 - e0), e0);
+    if (k < 0) k = 0;
+    excerpt(text, (size_t)k, ex, sizeof ex);
+    R->stderr_bytes += (long)(e1 - e0);
+    finding(R, V_STDERR, idx, "%ld bytes on stderr (status %s): \"%s\"", (long)(e1 - e0), status_name(st), ex);
+  }
+  if (st < 0 || st > 14) finding(R, V_BAD_STATUS, idx, "status %d is not a tfem_status", st);
+  if (st == TFEM_STATUS_INTERNAL) {
+    char ex[600];
+    excerpt(msg, strlen(msg), ex, sizeof ex);
+    finding(R, V_INTERNAL, idx, "TFEM_STATUS_INTERNAL: \"%s\"", ex);
+  }
+  for (int j = 0; j < nout; ++j)
+    if (!c->out[j].null_ && !gb_canary_ok(&g[j]))
+      finding(R, V_CANARY, idx, "output %d (declared length %zu) has a canary overwritten", j, c->out[j].len);
+  if (st != TFEM_STATUS_OK && !writes_on_failure(fn))
+    for (int j = 0; j < nout; ++j)
+      if (!c->out[j].null_ && !gb_untouched(&g[j]))
+        finding(R, V_WRITE_ON_FAIL, idx, "output %d written although the status is %s", j, status_name(st));
+  if (c->null_model && FN[fn].model && fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && st != TFEM_STATUS_NULL_POINTER)
+    finding(R, V_OTHER, idx, "NULL model gave %s, not NULL_POINTER", status_name(st));
+
+  /* Messages. */
+  if (fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && fn != F_VERSION && fn != F_DESTROY_NULL && fn != F_RECREATE) {
+    size_t L = tfem_last_error_length(slot), sl = strlen(msg);
+    if (st != TFEM_STATUS_OK) {
+      if (sl == 0) finding(R, V_EMPTY_MSG, idx, "status %s without a message (%s slot)", status_name(st), slot ? "model" : "thread");
+      if (L > MAX_MSG + 1) {
+        char ex[200];
+        excerpt(msg, sl < 120 ? sl : 120, ex, sizeof ex);
+        finding(R, V_LONG_MSG, idx, "message of %zu bytes (status %s): \"%s...\"", L - 1, status_name(st), ex);
+      }
+      if (L <= sizeof msg && L != sl + 1)
+        finding(R, V_LASTERR, idx, "tfem_last_error_length = %zu but the message has %zu bytes", L, sl);
+    } else if (slot && sl != 0) {
+      finding(R, V_LASTERR, idx, "the model's message is not empty after a successful call: \"%.80s\"", msg);
+    } else if (!slot && sl != 0 && !FN[fn].model) {
+      char ex[200];
+      excerpt(msg, sl < 100 ? sl : 100, ex, sizeof ex);
+      finding(R, V_SLOT, idx, "tfem_last_error(NULL) still gives \"%s\" after this successful model-free call", ex);
+    }
+  }
+
+  /* The last-error calls themselves. */
+  if (fn == F_LAST_ERROR) {
+    size_t L = tfem_last_error_length(m);
+    size_t len = c->out[0].len;
+    if (!o[0]) {
+      if (st != TFEM_STATUS_NULL_POINTER) finding(R, V_LASTERR, idx, "NULL buffer gave %s", status_name(st));
+    } else if (len == 0) {
+      if (st != TFEM_STATUS_BUFFER_TOO_SMALL || !gb_untouched(&g[0]))
+        finding(R, V_LASTERR, idx, "zero-length buffer gave %s (or was written)", status_name(st));
+    } else {
+      size_t sl = strnlen((const char *)g[0].p, len);
+      if (sl == len) finding(R, V_LASTERR, idx, "buffer of %zu bytes not NUL-terminated", len);
+      else if (L <= len && (st != TFEM_STATUS_OK || sl + 1 != L))
+        finding(R, V_LASTERR, idx, "message of %zu bytes in a %zu-byte buffer: %s, %zu copied", L - 1, len, status_name(st), sl);
+      else if (L > len && st != TFEM_STATUS_BUFFER_TOO_SMALL)
+        finding(R, V_LASTERR, idx, "message of %zu bytes truncated to %zu without BUFFER_TOO_SMALL", L - 1, len);
+    }
+  }
+  if (fn == F_LAST_ERROR_LENGTH && lel < 1) finding(R, V_LASTERR, idx, "tfem_last_error_length = 0");
+  if (fn == F_VERSION) {
+    int a, b, cc, n = 0;
+    if (!ver || sscanf(ver, "%d.%d.%d%n", &a, &b, &cc, &n) != 3 || ver[n] != 0)
+      finding(R, V_OTHER, idx, "tfem_version() = \"%s\" is not major.minor.patch", ver ? ver : "(null)");
+  }
+
+  /* Outputs of a successful call. */
+  if (st == TFEM_STATUS_OK) {
+    for (int j = 0; j < nout; ++j) {
+      if (c->out[j].null_) continue;
+      const gbuf *b = &g[j];
+      char why[200] = "";
+      if (b->kind == K_D) {
+        for (size_t i = 0; i < b->n; ++i) {
+          double v;
+          memcpy(&v, b->p + 8 * i, 8);
+          if (!gb_is_pattern(b, i) && !isfinite(v)) {
+            size_t bad = 0;
+            for (size_t k = i; k < b->n; ++k) {
+              double w;
+              memcpy(&w, b->p + 8 * k, 8);
+              bad += !gb_is_pattern(b, k) && !isfinite(w);
+            }
+            finding(R, V_NAN_OK, idx, "output %d element %zu = %g (%zu non-finite of %zu)", j, i, v, bad, b->n);
+            break;
+          }
+        }
+      } else if (b->kind == K_SI) {
+        if (info_bad((const tfem_solve_info *)(const void *)b->p, why, sizeof why)) finding(R, V_NAN_OK, idx, "%s", why);
+        else if (info_insane((const tfem_solve_info *)(const void *)b->p, why, sizeof why)) finding(R, V_OTHER, idx, "%s", why);
+      } else if (b->kind == K_RE) {
+        const tfem_contact_report *rp = (const tfem_contact_report *)(const void *)b->p;
+        if (!isfinite(rp->contact_length) || !isfinite(rp->max_penetration))
+          finding(R, V_NAN_OK, idx, "report contact_length = %g, max_penetration = %g", rp->contact_length, rp->max_penetration);
+        else if (info_bad(&rp->info, why, sizeof why)) finding(R, V_NAN_OK, idx, "report %s", why);
+        else if (rp->iterations < 1 || rp->active < 0 || rp->active > rp->elements || rp->contact_length < 0 ||
+                 rp->max_penetration < 0 || info_insane(&rp->info, why, sizeof why))
+          finding(R, V_OTHER, idx, "report: iterations %d, active %d of %d, length %g, penetration %g %s", rp->iterations,
+                  rp->active, rp->elements, rp->contact_length, rp->max_penetration, why);
+      } else if (b->kind == K_OP) {
+        const tfem_contact_options *op = (const tfem_contact_options *)(const void *)b->p;
+        if (!isfinite(op->contact_modulus) || !isfinite(op->lambda)) finding(R, V_NAN_OK, idx, "default options not finite");
+        else if (op->law != 0 || op->inversion_test != 0 || op->max_iterations != 50 || op->refactorize != 0)
+          finding(R, V_OTHER, idx, "default options %d %d %d %d differ from the header's", op->law, op->inversion_test,
+                  op->max_iterations, op->refactorize);
+      }
+      /* Everything required written. */
+      if (!FN[fn].scalar_out && b->kind != K_C && c->out[j].req >= 0 && (size_t)c->out[j].req <= b->n) {
+        for (size_t i = 0; i < (size_t)c->out[j].req; ++i)
+          if (gb_is_pattern(b, i)) {
+            finding(R, V_OTHER, idx, "OK but output %d element %zu of %ld not written", j, i, c->out[j].req);
+            break;
+          }
+      }
+      if (!FN[fn].scalar_out && b->kind != K_C && c->out[j].req >= 0 && (size_t)c->out[j].req > b->n)
+        finding(R, V_OTHER, idx, "OK with output %d of length %zu where %ld are needed", j, b->n, c->out[j].req);
+    }
+    /* Structure of the system matrix. */
+    if (fn == F_GET_MATRIX && !c->out[0].null_ && c->out[0].req >= 1) {
+      const int64_t *cp = (const int64_t *)(const void *)g[0].p, *ri = (const int64_t *)(const void *)g[1].p;
+      const int64_t *dofs = (const int64_t *)(const void *)g[3].p;
+      int64_t n = c->out[0].req - 1, b = R->sh.has_mesh ? R->sh.base : cp[0];
+      int bad = cp[0] != b;
+      for (int64_t j = 0; j < n && !bad; ++j) {
+        bad |= cp[j + 1] < cp[j];
+        for (int64_t p = cp[j] - b; p < cp[j + 1] - b && !bad; ++p)
+          bad |= p < 0 || (size_t)p >= g[1].n || ri[p] - b < 0 || ri[p] - b > j || (p > cp[j] - b && ri[p] <= ri[p - 1]);
+        bad |= dofs[j] < b;
+      }
+      if (bad) finding(R, V_OTHER, idx, "system matrix is not an upper-triangular CSC in the index base");
+    }
+    if (fn == F_GET_CONTACT_ACTIVE && o[0])
+      for (size_t i = 0; i < g[0].n && c->out[0].req >= 0 && i < (size_t)c->out[0].req; ++i) {
+        int v;
+        memcpy(&v, g[0].p + 4 * i, 4);
+        if (v != 0 && v != 1) {
+          finding(R, V_OTHER, idx, "active flag %zu = %d", i, v);
+          break;
+        }
+      }
+    if (fn == F_GET_CONTACT_ELEMENTS && o[0] && R->sh.exact)
+      for (size_t i = 0; c->out[0].req >= 0 && i < (size_t)c->out[0].req && i < g[0].n; ++i) {
+        int v;
+        memcpy(&v, g[0].p + 4 * i, 4);
+        if (v < R->sh.base || v >= R->sh.base + R->sh.nn) {
+          finding(R, V_OTHER, idx, "contact element node %d out of range", v);
+          break;
+        }
+      }
+    if (fn == F_GET_SIZES && R->sh.exact && o[0] && o[1]) {
+      int nn, nt;
+      memcpy(&nn, g[0].p, 4);
+      memcpy(&nt, g[1].p, 4);
+      if (nn != R->sh.nn || nt != R->sh.nt) finding(R, V_OTHER, idx, "sizes %d, %d; the mesh has %d, %d", nn, nt, R->sh.nn, R->sh.nt);
+    }
+    if (c->null_model && FN[fn].model && fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH)
+      finding(R, V_OTHER, idx, "OK with a NULL model");
+  }
+
+  /* ---- the shadow model and the semantic oracles ---- */
+  shadow_t *s = &R->sh;
+  int need_results = fn == F_GET_DISPLACEMENTS || fn == F_GET_STRAINS || fn == F_GET_STRESSES ||
+                     fn == F_GET_REACTIONS || fn == F_GET_MATRIX_SIZE || fn == F_GET_MATRIX;
+  int need_contact = fn == F_GET_CONTACT_ACTIVE || fn == F_GET_CONTACT_PRESSURE || fn == F_GET_CONTACT_ELEMENTS ||
+                     fn == F_GET_CONTACT_REPORT;
+  if (!c->null_model && s->has_mesh && st == TFEM_STATUS_INVALID_STATE) {
+    int matrix = fn == F_GET_MATRIX_SIZE || fn == F_GET_MATRIX;
+    if (need_results && s->results) {
+      if (matrix && s->matrix_dropped)
+        finding(R, V_MATRIX_DROPPED, idx, "no matrix after a failed solve, while the displacements of the solve before it are kept: \"%.160s\"", msg);
+      else
+        finding(R, V_RESULTS_LOST, idx, "INVALID_STATE although the last %s solve succeeded and nothing changed the problem since: \"%.160s\"",
+                s->results == 2 ? "contact" : "plain", msg);
+    } else if (need_contact && s->results == 2) {
+      finding(R, V_RESULTS_LOST, idx, "contact results gone although nothing changed the problem since the contact solve: \"%.160s\"", msg);
+    }
+  }
+  if (!c->null_model && st == TFEM_STATUS_OK && (need_results || need_contact) && !s->results && s->has_mesh)
+    finding(R, V_OTHER, idx, "results returned although the problem changed since the last solve");
+  if (st == TFEM_STATUS_OK && !c->null_model) {
+    switch (fn) {
+    case F_SET_MESH: {
+      int base = c->iv[2];
+      int *tri0 = xmalloc(sizeof(int) * 3 * (size_t)c->iv[1] + 1);
+      for (int k = 0; k < 3 * c->iv[1]; ++k) tri0[k] = ((const int *)c->in[1].p)[k] - base;
+      sh_new_mesh(s, c->iv[0], c->in[0].p, c->iv[1], tri0, c->in[2].p, base);
+      free(tri0);
+      break;
+    }
+    case F_LOAD_GMSH:
+      if (c->iv[0] == G_VALID || c->iv[0] == G_CLOCKWISE) {
+        sh_gmsh_square(s, c->iv[1]);
+      } else {
+        sh_clear_mesh(s);
+        s->has_mesh = 1;
+      }
+      break;
+    case F_SET_BOUNDARY_EDGES:
+      if (s->exact) {
+        int *e0 = xmalloc(sizeof(int) * 2 * (size_t)c->iv[0] + 1);
+        for (int k = 0; k < 2 * c->iv[0]; ++k) e0[k] = ((const int *)c->in[0].p)[k] - s->base;
+        sh_set_edges(s, c->iv[0], e0, c->in[1].p);
+        free(e0);
+      }
+      break;
+    case F_FIX: case F_FIX_EDGES:
+      if (s->exact) {
+        int comp = c->iv[1], reported = 0, nodes[2];
+        double v = c->dv[0];
+        for (int e = 0; e < (fn == F_FIX ? 1 : s->ne); ++e) {
+          if (fn == F_FIX_EDGES && s->tag[e] != c->iv[0]) continue;
+          int nk = fn == F_FIX ? 1 : 2;
+          nodes[0] = fn == F_FIX ? c->iv[0] - s->base : s->edge[2 * e];
+          nodes[1] = fn == F_FIX ? nodes[0] : s->edge[2 * e + 1];
+          for (int k = 0; k < nk; ++k) {
+            double *p = &s->presc[2 * nodes[k] + comp];
+            if (!isnan(*p) && *p != v && !reported) {
+              finding(R, V_DOUBLE_FIX, idx, "component %d of node %d was prescribed to %g and is now set to %g: OK",
+                      comp, nodes[k] + s->base, *p, v);
+              reported = 1;
+            }
+            *p = v;
+          }
+        }
+      }
+      s->presc_nonempty = 1;
+      break;
+    case F_CLEAR_CONSTRAINTS:
+      if (s->exact)
+        for (int g2 = 0; g2 < 2 * s->nn; ++g2) s->presc[g2] = NAN;
+      if (!s->presc_nonempty) goto keep_results;
+      s->presc_nonempty = 0;
+      break;
+    case F_ADD_PRESSURE: case F_ADD_TRACTION:
+      if (s->exact) {
+        s->load = xrealloc(s->load, sizeof(sh_load) * (size_t)(s->nl + 1));
+        s->load[s->nl++] = (sh_load){c->iv[0], fn == F_ADD_TRACTION, c->dv[0], c->dv[1]};
+      }
+      break;
+    case F_ADD_NODAL_FORCE:
+      if (s->exact) {
+        s->nforce[2 * (c->iv[0] - s->base)] += c->dv[0];
+        s->nforce[2 * (c->iv[0] - s->base) + 1] += c->dv[1];
+      }
+      break;
+    case F_SET_BODY_FORCE: {
+      int b = 0;
+      while (b < s->nbf && s->bf_body[b] != c->iv[0]) ++b;
+      if (b < 16) {
+        if (b == s->nbf) s->nbf++;
+        s->bf_body[b] = c->iv[0];
+        s->bf[b][0] = c->dv[0];
+        s->bf[b][1] = c->dv[1];
+      }
+      break;
+    }
+    case F_CLEAR_LOADS:
+      s->nl = 0;
+      s->nbf = 0;
+      if (s->exact) memset(s->nforce, 0, sizeof(double) * 2 * (size_t)s->nn);
+      break;
+    case F_SOLVE: case F_SOLVE_CONTACT: {
+      s->results = fn == F_SOLVE ? 1 : 2;
+      s->matrix_dropped = 0;
+      s->relres = NAN;
+      if (!c->out[0].null_) {
+        const tfem_solve_info *inf = fn == F_SOLVE ? (const tfem_solve_info *)(const void *)g[0].p
+                                                   : &((const tfem_contact_report *)(const void *)g[0].p)->info;
+        s->relres = inf->relative_residual;
+        s->cond = inf->condition_estimate;
+      }
+      if (s->exact)
+        for (int l = 0; l < s->nl; ++l) {
+          int found = 0;
+          for (int e = 0; e < s->ne && !found; ++e) found = s->tag[e] == s->load[l].tag;
+          if (!found) {
+            finding(R, V_DROPPED_LOAD, idx, "the %s on tag %d is ignored: no boundary edge has that tag any more",
+                    s->load[l].type ? "traction" : "pressure", s->load[l].tag);
+            break;
+          }
+        }
+      goto keep_results;
+    }
+    case F_GET_DISPLACEMENTS:
+      if (c->oracle && R->pristine && idx < R->full_prefix && o[0]) {
+        double u;
+        memcpy(&u, g[0].p + 8 * (size_t)(2 * c->or_node + c->or_comp), 8);
+        if (!(fabs(u - c->or_expect) <= c->or_rtol * fabs(c->or_expect)))
+          finding(R, V_ORACLE, idx, "u%c of node %d = %.6g, exact %.6g (ratio %.3g); status OK, %s", c->or_comp ? 'y' : 'x',
+                  c->or_node + s->base, u, c->or_expect, u / c->or_expect,
+                  strcmp(R->cs->kind, "clockwise_square") == 0 ? "mesh given clockwise" : "counter-clockwise mesh");
+      }
+      goto keep_results;
+    case F_GET_REACTIONS:
+      if (s->exact && s->results == 1 && o[0] && isfinite(s->relres) && s->relres < 1e-9 && s->cond < 1e10 &&
+          c->out[0].len >= 2 * (size_t)s->nn) {
+        /* (Only for plain solves without prescribed displacements: with
+         * them, or with the initial-gap loads of contact elements, the
+         * internal forces, and their round-off, are not bounded by the
+         * loads.) */
+        double tot[2], mag, rs[2] = {0, 0}, rmag = 0;
+        int zero_presc = 1;
+        for (int g2 = 0; g2 < 2 * s->nn; ++g2) zero_presc &= isnan(s->presc[g2]) || s->presc[g2] == 0.0;
+        if (zero_presc && sh_total_force(s, tot, &mag)) {
+          for (int g2 = 0; g2 < 2 * s->nn; ++g2) {
+            double v;
+            memcpy(&v, g[0].p + 8 * (size_t)g2, 8);
+            rs[g2 % 2] += v;
+            rmag += fabs(v);
+          }
+          for (int k = 0; k < 2; ++k)
+            if (fabs(rs[k] + tot[k]) > 1e-6 * (mag + rmag) && isfinite(rmag) && mag > 1e-200 && mag < 1e200)
+              finding(R, V_EQUILIBRIUM, idx, "sum of reactions %c = %.9g, applied loads %.9g (imbalance %.3g of %.3g)",
+                      k ? 'y' : 'x', rs[k], tot[k], rs[k] + tot[k], mag + rmag);
+        }
+      }
+      goto keep_results;
+    case F_RECREATE:
+      sh_clear_mesh(s);
+      goto keep_results;
+    default:
+      if (!changes_problem(fn)) goto keep_results;
+      break;
+    }
+    s->results = 0; /* a change of the problem discards the results */
+    s->matrix_dropped = 0;
+  keep_results:;
+  }
+  if (st != TFEM_STATUS_OK && !c->null_model && (fn == F_SOLVE || fn == F_SOLVE_CONTACT)) s->matrix_dropped = 1;
+
+  /* Keep the outputs for the replay. */
+  if (st == TFEM_STATUS_OK) {
+    if (fn == F_VERSION && ver) {
+      c->saved[0] = (unsigned char *)strdup(ver);
+    } else {
+      for (int j = 0; j < nout; ++j)
+        if (!c->out[j].null_) c->saved[j] = out_bytes(&g[j], &c->saved_n[j]);
+    }
+  }
+  for (int j = 0; j < nout; ++j) free(g[j].blk);
+}
+
+/* ------------------------------------------------------------------------ */
+/* The C reproducer                                                          */
+/* ------------------------------------------------------------------------ */
+
+static void c_str(FILE *f, const char *s, size_t n) {
+  fputc('"', f);
+  int col = 0;
+  for (size_t i = 0; i < n; ++i) {
+    unsigned char ch = (unsigned char)s[i];
+    if (ch == '\n') {
+      fputs("\\n\"\n      \"", f);
+      col = 0;
+      continue;
+    }
+    if (ch >= 32 && ch < 127 && ch != '"' && ch != '\\' && ch != '?') {
+      fputc(ch, f);
+      ++col;
+    } else {
+      fprintf(f, "\\%03o", ch);
+      col += 4;
+    }
+    if (col > 90) {
+      fputs("\"\n      \"", f);
+      col = 0;
+    }
+  }
+  fputc('"', f);
+}
+
+static const char *c_type(int kind) {
+  switch (kind) {
+  case K_D: return "double";
+  case K_I: return "int";
+  case K_L: return "int64_t";
+  case K_C: return "char";
+  case K_SI: return "tfem_solve_info";
+  case K_RE: return "tfem_contact_report";
+  default: return "tfem_contact_options";
+  }
+}
+
+static const char *G_REPRO[NGMSH];
+
+static void c_emit_header(FILE *f, const case_t *cs) {
+  fprintf(f,
+          "/* Reproducer of api_fuzz --seed %" PRIu64 " --replay-case %ld (%s scene).\n"
+          " * Build: gcc -std=c11 repro.c -Iinclude -Ltarget/release -ltfem -lm\n"
+          " * Run:   LD_LIBRARY_PATH=target/release ./a.out\n"
+          " * Run A makes every call; run B, on a fresh model, only those that\n"
+          " * succeeded in run A: a difference between the A and B lines of a\n"
+          " * call that succeeded in both means a failed call changed the model. */\n"
+          "#include <math.h>\n#include <stdint.h>\n#include <stdio.h>\n#include <string.h>\n"
+          "#include <sys/stat.h>\n#include \"tfem.h\"\n\n"
+          "#define REPRO_DIR \"/tmp/api_fuzz_repro\"\n"
+          "static const char *L = \"A\";\nstatic int skip(int k);\n"
+          "static inline void show(const tfem_model *m, int k, const char *fn, tfem_status s) {\n"
+          "  char b[4096] = \"\";\n  if (s != TFEM_STATUS_OK) tfem_last_error(m, b, sizeof b);\n"
+          "  printf(\"%%s #%%d %%s -> %%d %%s\\n\", L, k, fn, (int)s, b);\n}\n"
+          "static inline unsigned long long fnv(const void *p, size_t n) {\n"
+          "  unsigned long long h = 1469598103934665603ULL;\n"
+          "  for (size_t i = 0; i < n; ++i) h = (h ^ ((const unsigned char *)p)[i]) * 1099511628211ULL;\n"
+          "  return h;\n}\n"
+          "static inline void dump_d(int k, const char *w, const double *v, size_t n) {\n"
+          "  size_t bad = 0;\n  for (size_t i = 0; i < n; ++i) bad += !isfinite(v[i]);\n"
+          "  printf(\"%%s #%%d %%s: %%zu values, %%zu not finite, hash %%016llx:\", L, k, w, n, bad, fnv(v, n * sizeof *v));\n"
+          "  for (size_t i = 0; i < n && i < 4; ++i) printf(\" %%.17g\", v[i]);\n  printf(\"\\n\");\n}\n"
+          "static inline void dump_i(int k, const char *w, const int *v, size_t n) {\n"
+          "  printf(\"%%s #%%d %%s: %%zu values, hash %%016llx:\", L, k, w, n, fnv(v, n * sizeof *v));\n"
+          "  for (size_t i = 0; i < n && i < 6; ++i) printf(\" %%d\", v[i]);\n  printf(\"\\n\");\n}\n"
+          "static inline void dump_l(int k, const char *w, const int64_t *v, size_t n) {\n"
+          "  printf(\"%%s #%%d %%s: %%zu values, hash %%016llx:\", L, k, w, n, fnv(v, n * sizeof *v));\n"
+          "  for (size_t i = 0; i < n && i < 6; ++i) printf(\" %%lld\", (long long)v[i]);\n  printf(\"\\n\");\n}\n"
+          "static inline void dump_info(int k, const tfem_solve_info *i) {\n"
+          "  printf(\"%%s #%%d info: unknowns %%lld nnz %%lld factorizations %%lld relative_residual %%.17g condition %%.17g\\n\",\n"
+          "         L, k, (long long)i->unknowns, (long long)i->matrix_nnz, (long long)i->factorizations,\n"
+          "         i->relative_residual, i->condition_estimate);\n}\n"
+          "static inline void dump_report(int k, const tfem_contact_report *r) {\n"
+          "  printf(\"%%s #%%d report: iterations %%d elements %%d active %%d contact_length %%.17g max_penetration %%.17g\\n\",\n"
+          "         L, k, r->iterations, r->elements, r->active, r->contact_length, r->max_penetration);\n"
+          "  dump_info(k, &r->info);\n}\n"
+          "static inline void write_file(const char *path, const char *text, size_t n) {\n"
+          "  mkdir(REPRO_DIR, 0700);\n  FILE *f = fopen(path, \"wb\");\n"
+          "  if (f) {\n    fwrite(text, 1, n, f);\n    fclose(f);\n  }\n}\n\n"
+          "static void run(void) {\n  tfem_model *m = tfem_create();\n  tfem_status s;\n  (void)s;\n",
+          cs->seed, cs->index, cs->kind);
+}
+
+static void c_emit_call(FILE *f, const call_t *c, int idx) {
+  int fn = c->fn;
+  char b1[64];
+  const char *M = c->null_model ? "NULL" : "m";
+  fprintf(f, "  if (!skip(%d)) {\n", idx);
+  for (int j = 0; j < fn_nin(fn); ++j) {
+    if (FN[fn].ink[j] == 'o' || c->in[j].null_) continue;
+    if (FN[fn].ink[j] == 'x') {
+      fprintf(f, "    static const double a%d[%d] = {", j, c->in[j].n > 0 ? c->in[j].n : 1);
+      for (int k = 0; k < c->in[j].n; ++k)
+        fprintf(f, "%s%s%s", k ? "," : "", k && k % 6 == 0 ? "\n      " : (k ? " " : ""), cdbl(((double *)c->in[j].p)[k], b1));
+      if (c->in[j].n == 0) fprintf(f, "0");
+    } else {
+      fprintf(f, "    static const int a%d[%d] = {", j, c->in[j].n > 0 ? c->in[j].n : 1);
+      for (int k = 0; k < c->in[j].n; ++k)
+        fprintf(f, "%s%s%d", k ? "," : "", k && k % 12 == 0 ? "\n      " : (k ? " " : ""), ((int *)c->in[j].p)[k]);
+      if (c->in[j].n == 0) fprintf(f, "0");
+    }
+    fprintf(f, "};\n");
+  }
+  for (int j = 0; j < fn_nout(fn); ++j) {
+    if (c->out[j].null_) continue;
+    int k = out_kind(fn, j);
+    if (FN[fn].scalar_out) fprintf(f, "    %s o%d;\n    memset(&o%d, 0x5a, sizeof o%d);\n", c_type(k), j, j, j);
+    else fprintf(f, "    static %s o%d[%zu];\n", c_type(k), j, c->out[j].len ? c->out[j].len : 1);
+  }
+  char a[MAXIN][8], o[MAXOUT][8];
+  for (int j = 0; j < MAXIN; ++j) snprintf(a[j], sizeof a[j], c->in[j].null_ ? "NULL" : "a%d", j);
+  for (int j = 0; j < MAXOUT; ++j)
+    snprintf(o[j], sizeof o[j], c->out[j].null_ ? "NULL" : FN[fn].scalar_out ? "&o%d" : "o%d", j);
+  char d[MAXD][64];
+  for (int k = 0; k < MAXD; ++k) cdbl(c->dv[k], d[k]);
+  const int *I = c->iv;
+  size_t *len = (size_t[]){c->out[0].len, c->out[1].len, c->out[2].len, c->out[3].len};
+  const char *sl = FN[fn].model ? M : "NULL";
+  switch (fn) {
+  case F_VERSION: fprintf(f, "    printf(\"%%s #%d version %%s\\n\", L, tfem_version());\n", idx); break;
+  case F_LAST_ERROR: fprintf(f, "    s = tfem_last_error(%s, %s, %zu);\n", M, o[0], len[0]); break;
+  case F_LAST_ERROR_LENGTH: fprintf(f, "    printf(\"%%s #%d length %%zu\\n\", L, tfem_last_error_length(%s));\n", idx, M); break;
+  case F_WARNING_COUNT: fprintf(f, "    s = tfem_warning_count(%s, %s);\n", M, o[0]); break;
+  case F_GET_WARNING: fprintf(f, "    s = tfem_get_warning(%s, %d, %s, %zu);\n", M, I[0], o[0], len[0]); break;
+  case F_SET_MESH: fprintf(f, "    s = tfem_set_mesh(%s, %d, %s, %d, %s, %s, %d);\n", M, I[0], a[0], I[1], a[1], a[2], I[2]); break;
+  case F_LOAD_GMSH:
+    if (I[0] < 0 || I[0] >= NGMSH) {
+      fprintf(f, "    s = tfem_load_gmsh(%s, NULL, %d);\n", M, I[1]);
+    } else {
+      if (g_text[I[0]] && I[0] != G_DIRECTORY && I[0] != G_NONEXISTENT && I[0] != G_BAD_UTF8) {
+        fprintf(f, "    write_file(%s, ", G_REPRO[I[0]]);
+        c_str(f, g_text[I[0]], g_len[I[0]]);
+        fprintf(f, ", %zu);\n", g_len[I[0]]);
+      }
+      if (I[0] == G_DIRECTORY) fprintf(f, "    mkdir(REPRO_DIR, 0700);\n");
+      fprintf(f, "    s = tfem_load_gmsh(%s, %s, %d);\n", M, G_REPRO[I[0]], I[1]);
+    }
+    break;
+  case F_SET_BOUNDARY_EDGES: fprintf(f, "    s = tfem_set_boundary_edges(%s, %d, %s, %s);\n", M, I[0], a[0], a[1]); break;
+  case F_SET_MATERIAL: fprintf(f, "    s = tfem_set_material(%s, %d, %s, %s, %d);\n", M, I[0], d[0], d[1], I[1]); break;
+  case F_SET_TEMPERING: fprintf(f, "    s = tfem_set_tempering(%s, %d, %s);\n", M, I[0], d[0]); break;
+  case F_SET_ORDERING: fprintf(f, "    s = tfem_set_ordering(%s, %d, %d);\n", M, I[0], I[1]); break;
+  case F_FIX: fprintf(f, "    s = tfem_fix(%s, %d, %d, %s);\n", M, I[0], I[1], d[0]); break;
+  case F_FIX_EDGES: fprintf(f, "    s = tfem_fix_edges(%s, %d, %d, %s);\n", M, I[0], I[1], d[0]); break;
+  case F_CLEAR_CONSTRAINTS: fprintf(f, "    s = tfem_clear_constraints(%s);\n", M); break;
+  case F_ADD_PRESSURE: fprintf(f, "    s = tfem_add_pressure(%s, %d, %s);\n", M, I[0], d[0]); break;
+  case F_ADD_TRACTION: fprintf(f, "    s = tfem_add_traction(%s, %d, %s, %s);\n", M, I[0], d[0], d[1]); break;
+  case F_ADD_NODAL_FORCE: fprintf(f, "    s = tfem_add_nodal_force(%s, %d, %s, %s);\n", M, I[0], d[0], d[1]); break;
+  case F_SET_BODY_FORCE: fprintf(f, "    s = tfem_set_body_force(%s, %d, %s, %s);\n", M, I[0], d[0], d[1]); break;
+  case F_CLEAR_LOADS: fprintf(f, "    s = tfem_clear_loads(%s);\n", M); break;
+  case F_SOLVE: fprintf(f, "    s = tfem_solve(%s, %s);\n", M, o[0]); break;
+  case F_GET_SIZES: fprintf(f, "    s = tfem_get_sizes(%s, %s, %s, %s);\n", M, o[0], o[1], o[2]); break;
+  case F_GET_DISPLACEMENTS: fprintf(f, "    s = tfem_get_displacements(%s, %s, %zu);\n", M, o[0], len[0]); break;
+  case F_GET_STRAINS: fprintf(f, "    s = tfem_get_element_strains(%s, %s, %zu);\n", M, o[0], len[0]); break;
+  case F_GET_STRESSES: fprintf(f, "    s = tfem_get_element_stresses(%s, %s, %zu);\n", M, o[0], len[0]); break;
+  case F_GET_JACOBIANS: fprintf(f, "    s = tfem_get_element_jacobians(%s, %s, %zu);\n", M, o[0], len[0]); break;
+  case F_GET_REACTIONS: fprintf(f, "    s = tfem_get_reactions(%s, %s, %zu);\n", M, o[0], len[0]); break;
+  case F_GET_MATRIX_SIZE: fprintf(f, "    s = tfem_get_system_matrix_size(%s, %s, %s);\n", M, o[0], o[1]); break;
+  case F_GET_MATRIX:
+    fprintf(f, "    s = tfem_get_system_matrix(%s, %s, %zu, %s, %zu, %s, %zu, %s, %zu);\n", M, o[0], len[0], o[1], len[1], o[2],
+            len[2], o[3], len[3]);
+    break;
+  case F_ELEMENT_STIFFNESS: fprintf(f, "    s = tfem_element_stiffness(%s, %s, %s, %d, %s, %s);\n", a[0], d[0], d[1], I[0], d[2], o[0]); break;
+  case F_LAPLACIAN_STIFFNESS: fprintf(f, "    s = tfem_laplacian_stiffness(%s, %s, %s, %s);\n", a[0], d[0], d[1], o[0]); break;
+  case F_ADD_CONTACT_PAIR: fprintf(f, "    s = tfem_add_contact_pair(%s, %d, %d, %s);\n", M, I[0], I[1], o[0]); break;
+  case F_ADD_CONTACT_PAIR_WITH_MESH:
+    fprintf(f, "    s = tfem_add_contact_pair_with_mesh(%s, %d, %d, %d, %s, %s, %s);\n", M, I[0], I[1], I[2], a[0], o[0], o[1]);
+    break;
+  case F_CONTACT_OPTIONS_DEFAULT: fprintf(f, "    s = tfem_contact_options_default(%s);\n", o[0]); break;
+  case F_SOLVE_CONTACT:
+    if (c->in[0].null_) {
+      fprintf(f, "    s = tfem_solve_contact(%s, NULL, %s);\n", M, o[0]);
+    } else {
+      fprintf(f, "    tfem_contact_options opt = {%d, %s, %s, %d, %d, %d};\n", I[0], d[0], d[1], I[1], I[2], I[3]);
+      fprintf(f, "    s = tfem_solve_contact(%s, &opt, %s);\n", M, o[0]);
+    }
+    break;
+  case F_GET_CONTACT_ACTIVE: fprintf(f, "    s = tfem_get_contact_active(%s, %s, %zu);\n", M, o[0], len[0]); break;
+  case F_GET_CONTACT_PRESSURE: fprintf(f, "    s = tfem_get_contact_pressure(%s, %s, %zu);\n", M, o[0], len[0]); break;
+  case F_GET_CONTACT_ELEMENTS: fprintf(f, "    s = tfem_get_contact_elements(%s, %s, %zu);\n", M, o[0], len[0]); break;
+  case F_GET_CONTACT_REPORT: fprintf(f, "    s = tfem_get_contact_report(%s, %s);\n", M, o[0]); break;
+  case F_DESTROY_NULL: fprintf(f, "    tfem_destroy(NULL);\n"); break;
+  case F_RECREATE: fprintf(f, "    tfem_destroy(m);\n    m = tfem_create();\n"); break;
+  default: break;
+  }
+  if (fn != F_VERSION && fn != F_LAST_ERROR_LENGTH && fn != F_DESTROY_NULL && fn != F_RECREATE) {
+    fprintf(f, "    show(%s, %d, \"%s\", s);\n", fn == F_LAST_ERROR ? "NULL" : sl, idx, fn_name(fn));
+    if (fn == F_LAST_ERROR) fprintf(f, "    (void)0; /* (the message shown is the thread's) */\n");
+    int any = 0;
+    for (int j = 0; j < fn_nout(fn); ++j) any |= !c->out[j].null_;
+    if (any) {
+      fprintf(f, "    if (s == TFEM_STATUS_OK) {\n");
+      for (int j = 0; j < fn_nout(fn); ++j) {
+        if (c->out[j].null_) continue;
+        int k = out_kind(fn, j);
+        const char *p = FN[fn].scalar_out ? "&" : "";
+        size_t n = FN[fn].scalar_out ? 1 : c->out[j].len;
+        switch (k) {
+        case K_D: fprintf(f, "      dump_d(%d, \"o%d\", %so%d, %zu);\n", idx, j, p, j, n); break;
+        case K_I: fprintf(f, "      dump_i(%d, \"o%d\", %so%d, %zu);\n", idx, j, p, j, n); break;
+        case K_L: fprintf(f, "      dump_l(%d, \"o%d\", %so%d, %zu);\n", idx, j, p, j, n); break;
+        case K_C: fprintf(f, "      printf(\"%%s #%d text: %%s\\n\", L, o%d);\n", idx, j); break;
+        case K_SI: fprintf(f, "      dump_info(%d, &o%d);\n", idx, j); break;
+        case K_RE: fprintf(f, "      dump_report(%d, &o%d);\n", idx, j); break;
+        default:
+          fprintf(f, "      printf(\"%%s #%d options %%d %%g %%g %%d %%d %%d\\n\", L, o%d.law, o%d.contact_modulus, o%d.lambda, "
+                     "o%d.inversion_test, o%d.max_iterations, o%d.refactorize);\n",
+                  idx, j, j, j, j, j, j);
+          break;
+        }
+      }
+      fprintf(f, "    }\n");
+    }
+  }
+}
+
+static void c_emit_status(FILE *f, const call_t *c, int idx, int st) {
+  (void)c;
+  fprintf(f, "  } /* #%d -> %s */\n", idx, status_name(st));
+}
+
+static void c_emit_tail(FILE *f, const case_t *cs, int died) {
+  fprintf(f, "  tfem_destroy(m);\n}\n\n");
+  if (died) fprintf(f, "/* The process died in the last call above. */\n");
+  fprintf(f, "static int skip_failed = 0;\nstatic int skip(int k) {\n  static const int failed[] = {");
+  int nf = 0;
+  for (int i = 0; i < cs->n; ++i)
+    if (!died && cs->c[i].ran && cs->c[i].status != TFEM_STATUS_OK) fprintf(f, "%s%d", nf++ ? ", " : "", i);
+  if (!nf) fprintf(f, "-1");
+  fprintf(f, "};\n  if (!skip_failed) return 0;\n"
+             "  for (size_t i = 0; i < sizeof failed / sizeof *failed; ++i)\n    if (failed[i] == k) return 1;\n  return 0;\n}\n\n"
+             "int main(void) {\n  L = \"A\";\n  run();\n");
+  if (nf) fprintf(f, "  L = \"B\";\n  skip_failed = 1;\n  run();\n");
+  fprintf(f, "  return 0;\n}\n");
+}
+
+/* ------------------------------------------------------------------------ */
+/* Running a case: original run, checks, replay                              */
+/* ------------------------------------------------------------------------ */
+
+static unsigned char *g_keep; /* calls kept (minimisation); NULL: all */
+static int g_nkeep;
+static FILE *g_cfile;         /* reproducer stream of a verbose run */
+
+static void run_case(uint64_t seed, long index, int verbose, case_result *res) {
+  mesh_t mesh = {0};
+  case_t cs;
+  gen_case(seed, index, &cs, &mesh);
+  int full_prefix = cs.n;
+  if (g_keep) {
+    for (int i = 0; i < cs.n && i < g_nkeep; ++i)
+      if (!g_keep[i] && full_prefix == cs.n) full_prefix = i;
+    for (int i = (cs.n < g_nkeep ? cs.n : g_nkeep) - 1; i >= 0; --i)
+      if (!g_keep[i]) case_delete(&cs, i);
+    if (full_prefix > cs.n) full_prefix = cs.n;
+  }
+  runner_t R;
+  memset(&R, 0, sizeof R);
+  R.cs = &cs;
+  R.verbose = verbose;
+  R.pristine = cs.pristine;
+  R.full_prefix = full_prefix;
+  R.sh.relres = NAN;
+  R.cfile = verbose ? g_cfile : NULL;
+  if (verbose) {
+    printf("case %ld of seed %" PRIu64 ": %s scene%s, %d calls\n", index, seed, cs.kind,
+           cs.pristine ? " (pristine)" : cs.index < 0 ? "" : " (mutated)", cs.n);
+    if (R.cfile) c_emit_header(R.cfile, &cs);
+  }
+  R.m = tfem_create();
+  if (!R.m) finding(&R, V_OTHER, -1, "tfem_create() returned NULL");
+  for (int i = 0; i < cs.n && R.m; ++i) exec_call(&R, i);
+  tfem_destroy(R.m);
+  if (R.cfile) {
+    c_emit_tail(R.cfile, &cs, 0);
+    fflush(R.cfile);
+  }
+  sh_clear_mesh(&R.sh);
+  /* Replay on a fresh model without the calls that failed. */
+  R.phase = 1;
+  R.m = tfem_create();
+  if (verbose) {
+    int nf = 0;
+    for (int i = 0; i < cs.n; ++i) nf += cs.c[i].status != TFEM_STATUS_OK;
+    printf("replay without the %d failed call(s) on a fresh model: ", nf);
+  }
+  long before = 0;
+  for (int v = 0; v < NV; ++v) before += R.counts[v];
+  /* (The message calls are left out: what they read is the failed calls'.) */
+  for (int i = 0; i < cs.n && R.m; ++i)
+    if (cs.c[i].ran && cs.c[i].status == TFEM_STATUS_OK && cs.c[i].fn != F_LAST_ERROR &&
+        cs.c[i].fn != F_LAST_ERROR_LENGTH)
+      exec_call(&R, i);
+  tfem_destroy(R.m);
+  if (verbose) {
+    long after = 0;
+    for (int v = 0; v < NV; ++v) after += R.counts[v];
+    printf("%s\n", after == before ? "identical" : "DIFFERS (see above)");
+  }
+  res->calls = R.calls;
+  res->stderr_bytes = R.stderr_bytes;
+  res->status_flips = R.status_flips;
+  for (int v = 0; v < NV; ++v) res->counts[v] = R.counts[v];
+  res->done = 1;
+  case_free(&cs);
+  mesh_free(&mesh);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Processes: batches in forked children, bisection of the ones that die     */
+/* ------------------------------------------------------------------------ */
+
+typedef struct {
+  uint64_t seed;
+  int threads;
+  double timeout;
+  int no_fork;
+} opts_t;
+
+static opts_t g_opt;
+static long g_first; /* case number of batch position 0 */
+static const int *g_pos;
+static int g_npos, g_next;
+static int g_errfd = -1;
+static char g_errpath[300];
+
+/* Each case runs on a thread of its own, so that it starts with an empty
+ * thread error slot whatever ran before it on the same worker. */
+static void *case_thread(void *arg) {
+  int k = *(int *)arg;
+  run_case(g_opt.seed, g_first + g_pos[k], g_verbose, &g_shared->res[g_pos[k]]);
+  return NULL;
+}
+
+static void *worker(void *arg) {
+  (void)arg;
+  for (;;) {
+    int k = __atomic_fetch_add(&g_next, 1, __ATOMIC_RELAXED);
+    if (k >= g_npos) return NULL;
+    pthread_t th;
+    pthread_attr_t at;
+    pthread_attr_init(&at);
+    pthread_attr_setstacksize(&at, 8u << 20);
+    if (pthread_create(&th, &at, case_thread, &k) == 0) {
+      pthread_join(th, NULL);
+    } else {
+      case_thread(&k);
+    }
+    pthread_attr_destroy(&at);
+  }
+}
+
+static void run_list(const int *pos, int n, int threads) {
+  g_pos = pos;
+  g_npos = n;
+  g_next = 0;
+  if (threads <= 1 || n <= 1) {
+    worker(NULL);
+    return;
+  }
+  pthread_t th[64];
+  int nt = threads < 64 ? threads : 64;
+  for (int t = 0; t < nt; ++t) pthread_create(&th[t], NULL, worker, NULL);
+  for (int t = 0; t < nt; ++t) pthread_join(th[t], NULL);
+}
+
+/* Runs the batch positions pos[] in a child; returns 0 if it ended
+ * normally, else V_CRASH, V_ABORT or V_HANG (with a description). */
+static int spawn(const int *pos, int n, int threads, char *how, size_t cap) {
+  for (int i = 0; i < n; ++i) memset(&g_shared->res[pos[i]], 0, sizeof(case_result));
+  how[0] = 0;
+  if (g_opt.no_fork) {
+    run_list(pos, n, threads);
+    return 0;
+  }
+  if (ftruncate(g_errfd, 0) != 0) { /* ignore */
+  }
+  fflush(stdout);
+  pid_t pid = fork();
+  if (pid < 0) {
+    perror("fork");
+    exit(3);
+  }
+  if (pid == 0) {
+    g_err_claimed = 0;
+    sigset_t none;
+    sigemptyset(&none);
+    sigprocmask(SIG_SETMASK, &none, NULL);
+    dup2(g_errfd, 2);
+    run_list(pos, n, threads);
+    fflush(stdout);
+    if (g_cfile) fflush(g_cfile);
+    _exit(0);
+  }
+  double t0 = now_s();
+  int status = 0;
+  sigset_t chld;
+  sigemptyset(&chld);
+  sigaddset(&chld, SIGCHLD);
+  for (;;) {
+    pid_t w = waitpid(pid, &status, WNOHANG);
+    if (w == pid) break;
+    if (w < 0 && errno != EINTR) {
+      perror("waitpid");
+      exit(3);
+    }
+    double left = g_opt.timeout - (now_s() - t0);
+    if (left <= 0) {
+      kill(pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      snprintf(how, cap, "no result after %.0f s (killed)", g_opt.timeout);
+      return V_HANG;
+    }
+    /* SIGCHLD is blocked: wait for it (or the next second) */
+    struct timespec ts = {left > 1 ? 1 : 0, left > 1 ? 0 : (long)(left * 1e9)};
+    sigtimedwait(&chld, NULL, &ts);
+  }
+  if (WIFEXITED(status) && WEXITSTATUS(status) == 0) return 0;
+  if (WIFSIGNALED(status)) {
+    int sig = WTERMSIG(status);
+    snprintf(how, cap, "killed by signal %d (%s)", sig, strsignal(sig));
+    return sig == SIGABRT ? V_ABORT : V_CRASH;
+  }
+  snprintf(how, cap, "exited with status %d", WEXITSTATUS(status));
+  return V_CRASH;
+}
+
+static void print_stderr_tail(void) {
+  off_t sz = fd_size(g_errfd);
+  if (sz <= 0) return;
+  char buf[2049];
+  off_t from = sz > 2048 ? sz - 2048 : 0;
+  ssize_t k = pread(g_errfd, buf, 2048, from);
+  if (k <= 0) return;
+  buf[k] = 0;
+  printf("    its stderr%s:\n", from ? " (last 2048 bytes)" : "");
+  for (char *line = strtok(buf, "\n"); line; line = strtok(NULL, "\n")) printf("    | %s\n", line);
+}
+
+/* Reruns the positions that did not finish, halving, down to the cases that
+ * kill a process alone. */
+static void bisect(const int *pos, int n) {
+  char how[200];
+  int t = spawn(pos, n, 1, how, sizeof how);
+  if (t == 0) return;
+  int *left = xmalloc(sizeof(int) * (size_t)n), nl = 0;
+  for (int i = 0; i < n; ++i)
+    if (!g_shared->res[pos[i]].done) left[nl++] = pos[i];
+  if (n == 1 || nl == 0) {
+    int p = nl ? left[0] : pos[n - 1];
+    case_result *r = &g_shared->res[p];
+    memset(r, 0, sizeof *r);
+    r->done = 1;
+    r->term = t;
+    r->counts[t] = 1;
+    mesh_t mesh = {0};
+    case_t cs;
+    gen_case(g_opt.seed, g_first + p, &cs, &mesh);
+    printf("VIOLATION %s: seed=%" PRIu64 " case=%ld (%s): the process was %s; rerun: api_fuzz --seed %" PRIu64
+           " --replay-case %ld\n",
+           V_NAME[t], g_opt.seed, g_first + p, cs.kind, how, g_opt.seed, g_first + p);
+    print_stderr_tail();
+    fflush(stdout);
+    case_free(&cs);
+    mesh_free(&mesh);
+  } else if (nl == 1) {
+    bisect(left, 1);
+  } else {
+    bisect(left, nl / 2);
+    bisect(left + nl / 2, nl - nl / 2);
+  }
+  free(left);
+}
+
+static void run_batch(long first, int n) {
+  g_first = first;
+  int *pos = xmalloc(sizeof(int) * (size_t)n);
+  for (int i = 0; i < n; ++i) pos[i] = i;
+  char how[200];
+  int t = spawn(pos, n, g_opt.threads, how, sizeof how);
+  if (t != 0) {
+    int nl = 0;
+    for (int i = 0; i < n; ++i)
+      if (!g_shared->res[i].done) pos[nl++] = i;
+    if (g_verbose) printf("batch from case %ld %s: bisecting %d unfinished case(s)\n", first, how, nl);
+    if (nl) bisect(pos, nl);
+  }
+  free(pos);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Minimisation of one case (--replay-case K --minimize)                     */
+/* ------------------------------------------------------------------------ */
+
+static int case_shows(long index, int target) {
+  int pos = 0;
+  char how[200];
+  g_first = index;
+  int t = spawn(&pos, 1, 1, how, sizeof how);
+  if (target == V_CRASH || target == V_ABORT || target == V_HANG) return t == target;
+  if (target == NV) return t == 0 && g_shared->res[0].status_flips > 0; /* state_change_status */
+  return t == 0 && g_shared->res[0].counts[target] > 0;
+}
+
+static void minimize(long index, int target, int ncalls) {
+  g_nkeep = ncalls;
+  g_keep = xmalloc((size_t)ncalls);
+  memset(g_keep, 1, (size_t)ncalls);
+  unsigned char *trial = xmalloc((size_t)ncalls);
+  int runs = 0;
+  for (int chunks = 2;;) {
+    int kept = 0;
+    for (int i = 0; i < ncalls; ++i) kept += g_keep[i];
+    if (kept <= 1) break;
+    int size = (kept + chunks - 1) / chunks, reduced = 0;
+    for (int start = 0; start < kept && !reduced; start += size) {
+      memcpy(trial, g_keep, (size_t)ncalls);
+      for (int i = 0, k = 0; i < ncalls; ++i)
+        if (g_keep[i]) {
+          if (k >= start && k < start + size) trial[i] = 0;
+          ++k;
+        }
+      unsigned char *save = g_keep;
+      g_keep = trial;
+      int shows = case_shows(index, target);
+      g_keep = save;
+      ++runs;
+      if (shows) {
+        memcpy(g_keep, trial, (size_t)ncalls);
+        chunks = chunks > 2 ? chunks - 1 : 2;
+        reduced = 1;
+      }
+    }
+    if (!reduced) {
+      if (chunks >= kept) break;
+      chunks = 2 * chunks < kept ? 2 * chunks : kept;
+    }
+  }
+  int kept = 0;
+  for (int i = 0; i < ncalls; ++i) kept += g_keep[i];
+  printf("minimised to %d of %d calls in %d runs (still showing %s)\n", kept, ncalls, runs,
+         target == NV ? "state_change_status" : V_NAME[target]);
+  free(trial);
+}
+
+/* ------------------------------------------------------------------------ */
+/* Self-test of the checkers (no library call)                              */
+/* ------------------------------------------------------------------------ */
+
+static int self_test(void) {
+  int bad = 0;
+#define ST(cond)                                           \
+  do {                                                     \
+    if (!(cond)) {                                         \
+      printf("self-test failed: %s (line %d)\n", #cond, __LINE__); \
+      ++bad;                                               \
+    }                                                      \
+  } while (0)
+  for (int kind = K_D; kind <= K_OP; ++kind) {
+    gbuf g;
+    gb_alloc(&g, kind, 4);
+    ST(gb_canary_ok(&g) && gb_untouched(&g));
+    g.p[g.bytes] ^= 1; /* one byte beyond the declared length */
+    ST(!gb_canary_ok(&g));
+    g.p[g.bytes] ^= 1;
+    g.p[-1] ^= 1; /* one byte before */
+    ST(!gb_canary_ok(&g));
+    g.p[-1] ^= 1;
+    ST(gb_canary_ok(&g));
+    g.p[g.bytes - 1] ^= 1; /* inside: a write, not a canary violation */
+    ST(gb_canary_ok(&g) && !gb_untouched(&g));
+    free(g.blk);
+  }
+  gbuf d;
+  gb_alloc(&d, K_D, 2);
+  double qnan = NAN, inf = INFINITY;
+  memcpy(d.p, &qnan, 8);
+  memcpy(d.p + 8, &inf, 8);
+  ST(!gb_is_pattern(&d, 0) && !gb_is_pattern(&d, 1)); /* a NaN written is not the fill pattern */
+  free(d.blk);
+  gbuf z;
+  gb_alloc(&z, K_D, 0);
+  ST(gb_canary_ok(&z) && gb_untouched(&z));
+  z.p[0] ^= 1;
+  ST(!gb_canary_ok(&z));
+  free(z.blk);
+  tfem_solve_info a, b;
+  memset(&a, 0x11, sizeof a);
+  memset(&b, 0x22, sizeof b);
+  a.time_total = 1;
+  b = a;
+  b.time_total = 2;
+  tfem_solve_info na, nb;
+  norm_info(&a, &na);
+  norm_info(&b, &nb);
+  ST(memcmp(&na, &nb, sizeof na) == 0); /* timings are not compared */
+  b.relative_residual = 3;
+  norm_info(&b, &nb);
+  ST(memcmp(&na, &nb, sizeof na) != 0);
+  char c[64];
+  ST(!strcmp(cdbl(-0.0, c), "(-0.0)") && !strcmp(cdbl(1.0, c), "1.0") && !strcmp(cdbl(NAN, c), "NAN"));
+  ST(strtod(cdbl(4.9406564584124654e-324, c), NULL) == 4.9406564584124654e-324);
+  /* Case generation is a pure function of (seed, case). */
+  for (long k = 0; k < 200; ++k) {
+    mesh_t m1 = {0}, m2 = {0};
+    case_t c1, c2;
+    gen_case(7, k, &c1, &m1);
+    gen_case(7, k, &c2, &m2);
+    int same = c1.n == c2.n;
+    for (int i = 0; same && i < c1.n; ++i) {
+      same = c1.c[i].fn == c2.c[i].fn && !memcmp(c1.c[i].iv, c2.c[i].iv, sizeof c1.c[i].iv) &&
+             !memcmp(c1.c[i].dv, c2.c[i].dv, sizeof c1.c[i].dv);
+      for (int j = 0; same && j < MAXIN; ++j)
+        same = c1.c[i].in[j].n == c2.c[i].in[j].n &&
+               (!c1.c[i].in[j].n || !memcmp(c1.c[i].in[j].p, c2.c[i].in[j].p, (size_t)c1.c[i].in[j].n * in_el(c1.c[i].fn, j)));
+    }
+    ST(same);
+    case_free(&c1);
+    case_free(&c2);
+    mesh_free(&m1);
+    mesh_free(&m2);
+  }
+#undef ST
+  printf("api_fuzz self-test: %s\n", bad ? "FAILED" : "passed");
+  return bad ? 1 : 0;
+}
+
+/* ------------------------------------------------------------------------ */
+/* main                                                                      */
+/* ------------------------------------------------------------------------ */
+
+static void usage(void) {
+  printf("usage: api_fuzz [--seed S] [--cases N] [--first K] [--threads T] [--long] [--seconds S]\n"
+         "                [--batch B] [--timeout S] [--print-limit P] [--verbose] [--no-fork]\n"
+         "       api_fuzz --seed S --replay-case K [--minimize [--class NAME]] [--c-file PATH]\n"
+         "         (--class state_change_status: a call OK originally fails on the replay)\n"
+         "       api_fuzz --self-test   (checks the checkers, no library call)\n"
+         "Defaults: seed 1, %d cases from case 0 (about a minute on 2 cores), 1 thread, batches of 25 cases\n"
+         "per forked child, 120 s per batch. --long runs 500 times as many cases (hours);\n"
+         "--seconds stops starting new batches after that many seconds. Exit status 1 if any\n"
+         "violation was found. Classes:",
+         20000);
+  for (int v = 0; v < NV; ++v) printf("%s %s", v ? "," : "", V_NAME[v]);
+  printf("\n");
+}
+
+int main(int argc, char **argv) {
+  long cases = 20000, replay = -1, first_case = 0;
+  int batch = 25, long_mode = 0, do_min = 0, target = -1;
+  double seconds = 0;
+  const char *cpath = NULL;
+  g_opt = (opts_t){1, 1, 120.0, 0};
+  for (int i = 1; i < argc; ++i) {
+    const char *a = argv[i];
+    const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+    if (!strcmp(a, "--seed") && v) g_opt.seed = strtoull(v, NULL, 0), ++i;
+    else if (!strcmp(a, "--cases") && v) cases = strtol(v, NULL, 0), ++i;
+    else if (!strcmp(a, "--first") && v) first_case = strtol(v, NULL, 0), ++i;
+    else if (!strcmp(a, "--threads") && v) g_opt.threads = atoi(v), ++i;
+    else if (!strcmp(a, "--batch") && v) batch = atoi(v), ++i;
+    else if (!strcmp(a, "--timeout") && v) g_opt.timeout = atof(v), ++i;
+    else if (!strcmp(a, "--seconds") && v) seconds = atof(v), ++i;
+    else if (!strcmp(a, "--print-limit") && v) g_print_limit = atoi(v), ++i;
+    else if (!strcmp(a, "--replay-case") && v) replay = strtol(v, NULL, 0), ++i;
+    else if (!strcmp(a, "--c-file") && v) cpath = v, ++i;
+    else if (!strcmp(a, "--class") && v) {
+      for (int k = 0; k < NV; ++k)
+        if (!strcmp(v, V_NAME[k])) target = k;
+      if (!strcmp(v, "state_change_status")) target = NV; /* a status flip on replay */
+      if (target < 0) {
+        usage();
+        return 2;
+      }
+      ++i;
+    } else if (!strcmp(a, "--long")) long_mode = 1;
+    else if (!strcmp(a, "--minimize")) do_min = 1;
+    else if (!strcmp(a, "--verbose")) g_verbose = 1;
+    else if (!strcmp(a, "--no-fork")) g_opt.no_fork = 1;
+    else if (!strcmp(a, "--self-test")) {
+      gmsh_files_init();
+      int rc = self_test();
+      gmsh_files_cleanup();
+      return rc;
+    }
+    else {
+      usage();
+      return !strcmp(a, "--help") ? 0 : 2;
+    }
+  }
+  if (long_mode) cases *= 500;
+  if (batch < 1) batch = 1;
+  if (g_opt.threads < 1) g_opt.threads = 1;
+  setvbuf(stdout, NULL, _IOLBF, 0);
+  sigset_t chld;
+  sigemptyset(&chld);
+  sigaddset(&chld, SIGCHLD);
+  sigprocmask(SIG_BLOCK, &chld, NULL);
+
+  gmsh_files_init();
+  static const char *repro_name[NGMSH];
+  char rb[NGMSH][96];
+  for (int g = 0; g < NGMSH; ++g) {
+    if (g == G_DIRECTORY) snprintf(rb[g], sizeof rb[g], "REPRO_DIR");
+    else if (g == G_BAD_UTF8) snprintf(rb[g], sizeof rb[g], "REPRO_DIR \"/\\377\\376.msh\"");
+    else if (g == G_NONEXISTENT) snprintf(rb[g], sizeof rb[g], "REPRO_DIR \"/does_not_exist.msh\"");
+    else snprintf(rb[g], sizeof rb[g], "REPRO_DIR \"/%s.msh\"", G_NAME[g]);
+    repro_name[g] = rb[g];
+    G_REPRO[g] = repro_name[g];
+  }
+  snprintf(g_errpath, sizeof g_errpath, "%s/stderr", g_dir);
+  g_errfd = open(g_errpath, O_RDWR | O_CREAT | O_TRUNC | O_APPEND, 0600);
+  if (g_errfd < 0) {
+    perror(g_errpath);
+    return 3;
+  }
+  size_t shsize = sizeof(shared_t) + sizeof(case_result) * (size_t)(batch > 1 ? batch : 1);
+  g_shared = mmap(NULL, shsize, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+  if (g_shared == MAP_FAILED) {
+    perror("mmap");
+    return 3;
+  }
+  memset(g_shared, 0, shsize);
+  if (g_opt.no_fork) dup2(g_errfd, 2);
+
+  if (replay >= 0) {
+    /* One case, verbosely, with its C reproducer. */
+    int pos = 0;
+    char how[200];
+    mesh_t mesh = {0};
+    case_t cs;
+    gen_case(g_opt.seed, replay, &cs, &mesh);
+    int ncalls = cs.n;
+    case_free(&cs);
+    mesh_free(&mesh);
+    if (do_min) {
+      g_first = replay;
+      int t = spawn(&pos, 1, 1, how, sizeof how);
+      if (target < 0) {
+        if (t) target = t;
+        else
+          for (int v = 0; v < NV && target < 0; ++v)
+            if (g_shared->res[0].counts[v] > 0) target = v;
+      }
+      if (target < 0) {
+        printf("case %ld shows no violation: nothing to minimise\n", replay);
+      } else {
+        printf("minimising case %ld (%d calls) on %s\n", replay, ncalls, target == NV ? "state_change_status" : V_NAME[target]);
+        minimize(replay, target, ncalls);
+      }
+    }
+    char path[400];
+    snprintf(path, sizeof path, "%s", cpath ? cpath : "");
+    if (!cpath) snprintf(path, sizeof path, "%s/repro.c", g_dir);
+    g_cfile = fopen(path, "w+");
+    if (!g_cfile) {
+      perror(path);
+      return 3;
+    }
+    g_verbose = 1;
+    g_first = replay;
+    int t = spawn(&pos, 1, 1, how, sizeof how);
+    if (t) {
+      /* The child died: close the program it was writing. */
+      fseek(g_cfile, 0, SEEK_END);
+      fprintf(g_cfile, "  } /* the process died here */\n");
+      mesh_t m2 = {0};
+      case_t c2;
+      gen_case(g_opt.seed, replay, &c2, &m2);
+      c_emit_tail(g_cfile, &c2, 1);
+      case_free(&c2);
+      mesh_free(&m2);
+      printf("\nVIOLATION %s: the process was %s\n", V_NAME[t], how);
+      print_stderr_tail();
+    }
+    fflush(g_cfile);
+    printf("\n/* ---------------- C reproducer (%s) ---------------- */\n", cpath ? cpath : "printed only");
+    rewind(g_cfile);
+    char buf[4096];
+    size_t k;
+    while ((k = fread(buf, 1, sizeof buf, g_cfile)) > 0) fwrite(buf, 1, k, stdout);
+    fclose(g_cfile);
+    if (!cpath) unlink(path);
+    long total = t ? 1 : 0;
+    for (int v = 0; v < NV; ++v) total += g_shared->res[0].counts[v];
+    close(g_errfd);
+    unlink(g_errpath);
+    gmsh_files_cleanup();
+    return total ? 1 : 0;
+  }
+
+  double t0 = now_s(), t_progress = t0;
+  long totals[NV] = {0}, ncases[NV] = {0}, firsts[NV][5], calls = 0, done = 0, stderr_bytes = 0;
+  for (long first = first_case; first < first_case + cases; first += batch) {
+    int n = (int)(first_case + cases - first < batch ? first_case + cases - first : batch);
+    run_batch(first, n);
+    for (int i = 0; i < n; ++i) {
+      case_result *r = &g_shared->res[i];
+      if (!r->done) continue;
+      ++done;
+      calls += r->calls;
+      stderr_bytes += r->stderr_bytes;
+      for (int v = 0; v < NV; ++v)
+        if (r->counts[v] > 0) {
+          if (ncases[v] < 5) firsts[v][ncases[v]] = first + i;
+          ncases[v]++;
+          totals[v] += r->counts[v];
+        }
+    }
+    if (now_s() - t_progress > 60) {
+      long v = 0;
+      for (int k = 0; k < NV; ++k) v += totals[k];
+      printf("progress: %ld of %ld cases, %ld calls, %ld violations, %.0f s\n", done, cases, calls, v, now_s() - t0);
+      t_progress = now_s();
+    }
+    if (seconds > 0 && now_s() - t0 > seconds) {
+      printf("time limit of %.0f s reached after %ld cases\n", seconds, done);
+      break;
+    }
+  }
+  double dt = now_s() - t0;
+  /* (tfem_version is a static string: calling it here starts no thread.) */
+  printf("\napi_fuzz: libtfem %s, seed %" PRIu64 ", %ld cases, %ld calls in %.1f s (%d thread%s per child)\n",
+         tfem_version(), g_opt.seed, done, calls, dt, g_opt.threads, g_opt.threads > 1 ? "s" : "");
+  printf("  %-15s %7s %11s  %s\n", "class", "cases", "occurrences", "first cases (rerun with --replay-case K)");
+  long other = 0, any = 0;
+  for (int v = 0; v < NV; ++v) {
+    any += totals[v];
+    if (v != V_CRASH && v != V_ABORT && v != V_HANG && v != V_NAN_OK && v != V_CANARY && v != V_STATE &&
+        v != V_STDERR && v != V_LONG_MSG)
+      other += totals[v];
+    if (!totals[v]) continue;
+    printf("  %-15s %7ld %11ld  ", V_NAME[v], ncases[v], totals[v]);
+    for (long k = 0; k < ncases[v] && k < 5; ++k) printf("%s%ld", k ? " " : "", firsts[v][k]);
+    printf("   %s\n", V_DESC[v]);
+  }
+  printf("SUMMARY cases=%ld calls=%ld crashes=%ld aborts=%ld hangs=%ld nan_inf_ok=%ld canary=%ld state_changes=%ld "
+         "stderr_bytes=%ld long_messages=%ld other_violations=%ld -> %s\n",
+         done, calls, totals[V_CRASH], totals[V_ABORT], totals[V_HANG], totals[V_NAN_OK], totals[V_CANARY],
+         totals[V_STATE], stderr_bytes, totals[V_LONG_MSG], other, any ? "FAIL" : "PASS");
+  close(g_errfd);
+  unlink(g_errpath);
+  gmsh_files_cleanup();
+  return any ? 1 : 0;
+}
