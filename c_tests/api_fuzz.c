@@ -16,7 +16,7 @@
  *     may be written beyond the declared length, nor at all by a failed
  *     call (except the documented truncation of messages);
  *   - every output of an OK call is finite;
- *   - every failed call leaves a non-empty, bounded (<= 300 bytes) message
+ *   - every failed call leaves a non-empty, bounded (<= 512 bytes) message
  *     in the model's slot or the thread's slot, and a successful one an
  *     empty message;
  *   - the library writes nothing on stderr (fd 2 is a file, measured
@@ -84,7 +84,7 @@ enum {
   V_STATE,          /* replay without the failed calls differs */
   V_NONDET,         /* replay differs although no call failed */
   V_STDERR,         /* the library wrote on stderr */
-  V_LONG_MSG,       /* a message longer than 300 bytes */
+  V_LONG_MSG,       /* a message longer than MAX_MSG bytes */
   V_EMPTY_MSG,      /* a failed call without a message */
   V_INTERNAL,       /* TFEM_STATUS_INTERNAL (a caught panic) */
   V_BAD_STATUS,     /* a status outside the enum */
@@ -118,7 +118,7 @@ static const char *const V_DESC[NV] = {
     "replay without the failed calls differs (a failed call changed the model)",
     "replay differs although no call failed (nondeterminism)",
     "library wrote on stderr",
-    "error message longer than 300 bytes",
+    "error message longer than 512 bytes",
     "failed call without a message",
     "TFEM_STATUS_INTERNAL (caught panic)",
     "status outside the tfem_status enum",
@@ -133,7 +133,10 @@ static const char *const V_DESC[NV] = {
     "other contract check",
 };
 
-#define MAX_MSG 300
+/* Messages name the item and say why; what must not happen is an
+ * unbounded one (a denormal printed in full, a whole history, a parser
+ * dump): 512 bytes leaves room for two reasons naming two bodies. */
+#define MAX_MSG 512
 
 /* ------------------------------------------------------------------------ */
 /* Random numbers (splitmix64), deterministic from (seed, case)              */

@@ -43,6 +43,8 @@ san=(-std=c11 -Wall -Wextra -Werror -g -O1 -fsanitize=address,undefined -fno-omi
 mkdir -p build/sanitize
 gcc "${san[@]}" c_tests/api_test.c -o build/sanitize/api_test -L"$lib" -ltfem -lm -Wl,-rpath,"$lib"
 UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 build/sanitize/api_test
+gcc "${san[@]}" c_tests/boundary_test.c -o build/sanitize/boundary_test -L"$lib" -ltfem -lm -Wl,-rpath,"$lib"
+UBSAN_OPTIONS=halt_on_error=1:print_stacktrace=1 build/sanitize/boundary_test
 gcc "${san[@]}" c_tests/api_fuzz.c -o build/sanitize/api_fuzz -L"$lib" -ltfem -lm -lpthread -Wl,-rpath,"$lib"
 gcc -std=c11 -Wall -Wextra -Werror -O2 -Iinclude c_tests/api_fuzz.c -o build/sanitize/api_fuzz_native \
   -L"$lib" -ltfem -lm -lpthread -Wl,-rpath,"$lib"

@@ -62,6 +62,13 @@ fn c_api_test_passes_every_check() {
 }
 
 #[test]
+fn c_boundary_regressions_hold() {
+    let exe = build("boundary_test.c", &["-std=c11"]);
+    let out = run(&exe, &[]);
+    assert!(out.contains(" 0 failed"), "{out}");
+}
+
+#[test]
 fn element_matrices_match_the_independent_eigen_implementation() {
     let eigen = Path::new("/usr/include/eigen3");
     assert!(

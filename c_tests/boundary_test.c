@@ -1,0 +1,483 @@
+/* Regression tests through the C ABI for the defects a legacy user met at
+ * the boundary, each in its own function named after the behaviour it
+ * pins down: no answer is silently wrong, a failed call changes nothing,
+ * no NaN or Inf comes back with OK, nothing is printed on stderr. Also the
+ * outputs a host code needs (contact forces and gaps, the contact mesh
+ * before a solve, external work, the thread count). */
+
+#define _POSIX_C_SOURCE 200809L
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "tfem.h"
+
+static int passed = 0, failed = 0;
+
+#define CHECK(cond)                                                     \
+  do {                                                                  \
+    if (cond) {                                                         \
+      ++passed;                                                         \
+    } else {                                                            \
+      ++failed;                                                         \
+      printf("FAIL %s:%d: %s\n", __FILE__, __LINE__, #cond);            \
+    }                                                                   \
+  } while (0)
+
+static void expect_error(tfem_model *m, tfem_status got, tfem_status expected, const char *needle,
+                         int line) {
+  char msg[512];
+  tfem_last_error(m, msg, sizeof msg);
+  if (got == expected && strstr(msg, needle) != NULL) {
+    ++passed;
+  } else {
+    ++failed;
+    printf("FAIL line %d: status %d (expected %d), message \"%s\" (expected to contain \"%s\")\n",
+           line, (int)got, (int)expected, msg, needle);
+  }
+}
+#define EXPECT_ERROR(m, call, status, needle) expect_error(m, call, status, needle, __LINE__)
+
+static int has_warning(tfem_model *m, const char *needle) {
+  int n = 0;
+  if (tfem_warning_count(m, &n) != TFEM_STATUS_OK) return 0;
+  for (int i = 0; i < n; ++i) {
+    char w[512];
+    if (tfem_get_warning(m, i, w, sizeof w) == TFEM_STATUS_OK && strstr(w, needle)) return 1;
+  }
+  return 0;
+}
+
+static int all_finite(const double *v, int n) {
+  for (int i = 0; i < n; ++i)
+    if (!isfinite(v[i])) return 0;
+  return 1;
+}
+
+/* An nx x ny grid of the rectangle [x0, x0 + w] x [y0, y0 + h], two
+ * triangles per cell (counter-clockwise), appended to the arrays. Tags its
+ * left, right, bottom and top edges tag0 .. tag0 + 3. */
+typedef struct {
+  int nn, nt, ne;
+  double xy[2 * 4096];
+  int tri[3 * 4096], body[4096], edges[2 * 1024], tags[1024];
+} mesh_t;
+
+static void grid(mesh_t *g, int nx, int ny, double x0, double y0, double w, double h, int body,
+                 int tag0) {
+  int first = g->nn;
+  for (int j = 0; j <= ny; ++j)
+    for (int i = 0; i <= nx; ++i) {
+      g->xy[2 * g->nn] = x0 + w * i / nx;
+      g->xy[2 * g->nn + 1] = y0 + h * j / ny;
+      g->nn++;
+    }
+#define ID(i, j) (first + (j) * (nx + 1) + (i))
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) {
+      int a = ID(i, j), b = ID(i + 1, j), c = ID(i + 1, j + 1), d = ID(i, j + 1);
+      int t[6] = {a, b, c, a, c, d};
+      memcpy(&g->tri[3 * g->nt], t, sizeof t);
+      g->body[g->nt++] = body;
+      g->body[g->nt++] = body;
+    }
+  for (int j = 0; j < ny; ++j) {
+    int e[4] = {ID(0, j), ID(0, j + 1), ID(nx, j), ID(nx, j + 1)};
+    memcpy(&g->edges[2 * g->ne], e, sizeof e);
+    g->tags[g->ne++] = tag0;
+    g->tags[g->ne++] = tag0 + 1;
+  }
+  for (int i = 0; i < nx; ++i) {
+    int e[4] = {ID(i, 0), ID(i + 1, 0), ID(i, ny), ID(i + 1, ny)};
+    memcpy(&g->edges[2 * g->ne], e, sizeof e);
+    g->tags[g->ne++] = tag0 + 2;
+    g->tags[g->ne++] = tag0 + 3;
+  }
+#undef ID
+}
+
+/* The block [0,4] x [0,1] (E = 1000, nu = 0.25, plane stress): left edge
+ * (tag 1) u = 0, node 0 v = 0, traction 10 on the right (tag 2). Exact:
+ * u = 10 x / E. Returns the largest error of u over the nodes. */
+static mesh_t G;
+static double tension_error(tfem_model *m) {
+  double u[2 * 4096];
+  if (tfem_get_displacements(m, u, 2 * G.nn) != TFEM_STATUS_OK) return INFINITY;
+  double err = 0;
+  for (int v = 0; v < G.nn; ++v) err = fmax(err, fabs(u[2 * v] - 10.0 * G.xy[2 * v] / 1000.0));
+  return err;
+}
+
+static tfem_model *tension_block(const int *tri) {
+  tfem_model *m = tfem_create();
+  CHECK(tfem_set_mesh(m, G.nn, G.xy, G.nt, tri, G.body, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_set_boundary_edges(m, G.ne, G.edges, G.tags) == TFEM_STATUS_OK);
+  CHECK(tfem_set_material(m, 1, 1000.0, 0.25, TFEM_PLANE_MODE_STRESS) == TFEM_STATUS_OK);
+  CHECK(tfem_set_tempering(m, TFEM_TEMPERING_MODE_LAMBDA, 1e6) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 1, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix(m, 0, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_add_traction(m, 2, 10.0, 0.0) == TFEM_STATUS_OK);
+  return m;
+}
+
+static void a_clockwise_mesh_is_turned_and_solved_exactly(void) {
+  int cw[3 * 4096], mixed[3 * 4096];
+  for (int t = 0; t < G.nt; ++t) {
+    int *c = &G.tri[3 * t];
+    int r[3] = {c[0], c[2], c[1]};
+    memcpy(&cw[3 * t], r, sizeof r);
+    memcpy(&mixed[3 * t], t % 3 == 0 ? r : c, sizeof r);
+  }
+  tfem_model *ccw = tension_block(G.tri);
+  CHECK(tfem_solve(ccw, NULL) == TFEM_STATUS_OK && tension_error(ccw) < 1e-12);
+  CHECK(!has_warning(ccw, "clockwise"));
+  for (int k = 0; k < 2; ++k) {
+    tfem_model *m = tension_block(k == 0 ? cw : mixed);
+    CHECK(has_warning(m, "numbered clockwise") && has_warning(m, "body 1"));
+    CHECK(!has_warning(m, "inverted"));
+    CHECK(tfem_solve(m, NULL) == TFEM_STATUS_OK);
+    CHECK(tension_error(m) < 1e-12);
+    double J[4096];
+    CHECK(tfem_get_element_jacobians(m, J, G.nt) == TFEM_STATUS_OK);
+    int positive = 1;
+    for (int t = 0; t < G.nt; ++t) positive &= J[t] > 0.0;
+    CHECK(positive);
+    tfem_destroy(m);
+  }
+  tfem_destroy(ccw);
+}
+
+static void a_fold_inside_a_counter_clockwise_body_stays_inverted(void) {
+  double xy[2 * 4096];
+  memcpy(xy, G.xy, sizeof xy);
+  /* Node of row 1, column 1 pushed beyond its right neighbour. */
+  int nx = 16, v = 1 * (nx + 1) + 1;
+  xy[2 * v] += 1.5 * 4.0 / nx;
+  tfem_model *m = tfem_create();
+  CHECK(tfem_set_mesh(m, G.nn, xy, G.nt, G.tri, G.body, 0) == TFEM_STATUS_OK);
+  CHECK(has_warning(m, "inverted") && !has_warning(m, "numbered clockwise"));
+  double J[4096];
+  int negative = 0;
+  CHECK(tfem_get_element_jacobians(m, J, G.nt) == TFEM_STATUS_OK);
+  for (int t = 0; t < G.nt; ++t) negative += J[t] < 0.0;
+  CHECK(negative > 0);
+  tfem_destroy(m);
+}
+
+static void resetting_boundary_edges_never_drops_a_load(void) {
+  tfem_model *m = tension_block(G.tri);
+  /* The edges without the loaded tag 2: refused, naming it. */
+  int keep = 0, edges[2 * 1024], tags[1024];
+  for (int e = 0; e < G.ne; ++e)
+    if (G.tags[e] != 2) {
+      edges[2 * keep] = G.edges[2 * e];
+      edges[2 * keep + 1] = G.edges[2 * e + 1];
+      tags[keep++] = G.tags[e];
+    }
+  EXPECT_ERROR(m, tfem_set_boundary_edges(m, keep, edges, tags), TFEM_STATUS_INVALID_ARGUMENT,
+               "tag 2");
+  /* Tag 2 moved onto an interior edge (the diagonal of the first cell). */
+  int interior[2] = {G.tri[0], G.tri[2]}, two = 2;
+  edges[2 * keep] = interior[0];
+  edges[2 * keep + 1] = interior[1];
+  tags[keep] = two;
+  EXPECT_ERROR(m, tfem_set_boundary_edges(m, keep + 1, edges, tags),
+               TFEM_STATUS_INVALID_ARGUMENT, "interior");
+  /* Nothing changed: the load still acts. */
+  CHECK(tfem_solve(m, NULL) == TFEM_STATUS_OK && tension_error(m) < 1e-12);
+  tfem_destroy(m);
+}
+
+static void boundary_groups_can_be_added_one_call_at_a_time(void) {
+  tfem_model *m = tfem_create();
+  CHECK(tfem_set_mesh(m, G.nn, G.xy, G.nt, G.tri, G.body, 0) == TFEM_STATUS_OK);
+  for (int tag = 1; tag <= 4; ++tag) {
+    int n = 0, edges[2 * 1024], tags[1024];
+    for (int e = 0; e < G.ne; ++e)
+      if (G.tags[e] == tag) {
+        edges[2 * n] = G.edges[2 * e];
+        edges[2 * n + 1] = G.edges[2 * e + 1];
+        tags[n++] = tag;
+      }
+    CHECK(tfem_add_boundary_edges(m, n, edges, tags) == TFEM_STATUS_OK);
+    if (tag == 2) {
+      EXPECT_ERROR(m, tfem_add_boundary_edges(m, n, edges, tags), TFEM_STATUS_INVALID_MESH,
+                   "twice");
+    }
+  }
+  CHECK(tfem_set_material(m, 1, 1000.0, 0.25, TFEM_PLANE_MODE_STRESS) == TFEM_STATUS_OK);
+  CHECK(tfem_set_tempering(m, TFEM_TEMPERING_MODE_LAMBDA, 1e6) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 1, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix(m, 0, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_add_traction(m, 2, 10.0, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_solve(m, NULL) == TFEM_STATUS_OK && tension_error(m) < 1e-12);
+  tfem_destroy(m);
+}
+
+static void a_dof_prescribed_twice_with_different_values_is_refused(void) {
+  tfem_model *m = tension_block(G.tri);
+  CHECK(tfem_fix(m, 0, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK); /* same value: fine */
+  EXPECT_ERROR(m, tfem_fix(m, 0, TFEM_COMPONENT_X, 0.5), TFEM_STATUS_INVALID_ARGUMENT, "node 0");
+  EXPECT_ERROR(m, tfem_fix_edges(m, 1, TFEM_COMPONENT_X, 0.25), TFEM_STATUS_INVALID_ARGUMENT,
+               "already prescribed");
+  CHECK(tfem_solve(m, NULL) == TFEM_STATUS_OK && tension_error(m) < 1e-12);
+  tfem_destroy(m);
+}
+
+/* Two 8 x 2 blocks touching along y = 0 (separate nodes): lower [0,1] x
+ * [-0.25, 0] (body 1, E = 1e10), upper [0,1] x [0, 0.25] (body 2,
+ * E = 1e11), nu = 0.3, plane strain; lower bottom v = 0, x held at the
+ * left node of each block; pressure 1e7 on the upper top, and a force of
+ * 3e6 N/m lifting its top left corner (node 45), so that the interface
+ * opens at the left and the active set changes. */
+static mesh_t B;
+static tfem_model *two_blocks(void) {
+  tfem_model *m = tfem_create();
+  CHECK(tfem_set_mesh(m, B.nn, B.xy, B.nt, B.tri, B.body, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_set_boundary_edges(m, B.ne, B.edges, B.tags) == TFEM_STATUS_OK);
+  CHECK(tfem_set_material(m, 1, 1e10, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_set_material(m, 2, 1e11, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 12, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix(m, 0, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix(m, 27, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_add_pressure(m, 23, 1e7) == TFEM_STATUS_OK);
+  CHECK(tfem_add_nodal_force(m, 45, 0.0, 3e6) == TFEM_STATUS_OK);
+  CHECK(tfem_add_contact_pair(m, 13, 22, NULL) == TFEM_STATUS_OK);
+  return m;
+}
+
+/* Every result of a contact solve, bit for bit. */
+typedef struct {
+  double u[2 * 64], r[2 * 64], s[3 * 64], p[64], k[1024];
+  int active[64];
+  tfem_contact_report rep;
+} results_t;
+
+static int results_of(tfem_model *m, results_t *out) {
+  memset(out, 0, sizeof *out);
+  int64_t n = 0, nnz = 0;
+  int ok = tfem_get_displacements(m, out->u, 2 * B.nn) == TFEM_STATUS_OK &&
+           tfem_get_reactions(m, out->r, 2 * B.nn) == TFEM_STATUS_OK &&
+           tfem_get_element_stresses(m, out->s, 3 * B.nt) == TFEM_STATUS_OK &&
+           tfem_get_contact_pressure(m, out->p, 64) == TFEM_STATUS_OK &&
+           tfem_get_contact_active(m, out->active, 64) == TFEM_STATUS_OK &&
+           tfem_get_contact_report(m, &out->rep) == TFEM_STATUS_OK &&
+           tfem_get_system_matrix_size(m, &n, &nnz) == TFEM_STATUS_OK && nnz <= 1024;
+  if (!ok) return 0;
+  int64_t cp[256], ri[1024], dofs[256];
+  return n < 256 && tfem_get_system_matrix(m, cp, 256, ri, 1024, out->k, 1024, dofs, 256) ==
+                        TFEM_STATUS_OK;
+}
+
+static int same_results(const results_t *a, const results_t *b) {
+  return memcmp(a->u, b->u, sizeof a->u) == 0 && memcmp(a->r, b->r, sizeof a->r) == 0 &&
+         memcmp(a->s, b->s, sizeof a->s) == 0 && memcmp(a->p, b->p, sizeof a->p) == 0 &&
+         memcmp(a->k, b->k, sizeof a->k) == 0 && memcmp(a->active, b->active, sizeof a->active) == 0 &&
+         a->rep.iterations == b->rep.iterations && a->rep.active == b->rep.active &&
+         a->rep.contact_length == b->rep.contact_length &&
+         a->rep.max_penetration == b->rep.max_penetration;
+}
+
+static void changing_the_ordering_or_the_threads_keeps_every_result(void) {
+  tfem_model *m = two_blocks();
+  results_t before, after;
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  CHECK(results_of(m, &before));
+  CHECK(tfem_set_ordering(m, TFEM_ORDERING_MODE_AMD, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_set_threads(m, 1) == TFEM_STATUS_OK);
+  int threads = 0;
+  CHECK(tfem_get_threads(m, &threads) == TFEM_STATUS_OK && threads == 1);
+  CHECK(results_of(m, &after) && same_results(&before, &after));
+  /* Solved again on one thread with AMD: the same answer to round-off. */
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK && results_of(m, &after));
+  double err = 0, scale = 0;
+  for (int i = 0; i < 2 * B.nn; ++i) {
+    err = fmax(err, fabs(after.u[i] - before.u[i]));
+    scale = fmax(scale, fabs(before.u[i]));
+  }
+  CHECK(err <= 1e-10 * scale && memcmp(after.active, before.active, sizeof after.active) == 0);
+  CHECK(tfem_set_threads(m, 0) == TFEM_STATUS_OK && tfem_get_threads(m, &threads) == TFEM_STATUS_OK &&
+        threads >= 1);
+  EXPECT_ERROR(m, tfem_set_threads(m, -2), TFEM_STATUS_INVALID_ARGUMENT, "threads = -2");
+  tfem_destroy(m);
+}
+
+static void a_failed_solve_keeps_every_result_and_changes_no_later_solve(void) {
+  tfem_contact_options capped, refactorising, singular;
+  tfem_contact_options_default(&capped);
+  capped.max_iterations = 1;
+  tfem_contact_options_default(&refactorising);
+  refactorising.refactorize = 1;
+  singular = refactorising;
+  singular.contact_modulus = 1e-200;
+
+  tfem_model *fresh = two_blocks();
+  results_t expected, got;
+  CHECK(tfem_solve_contact(fresh, &refactorising, NULL) == TFEM_STATUS_OK);
+  CHECK(results_of(fresh, &expected));
+
+  tfem_model *m = two_blocks();
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  results_t before;
+  CHECK(results_of(m, &before));
+  EXPECT_ERROR(m, tfem_solve_contact(m, &capped, NULL), TFEM_STATUS_NOT_CONVERGED, "history");
+  CHECK(results_of(m, &got) && same_results(&before, &got));
+  CHECK(tfem_solve_contact(m, &singular, NULL) != TFEM_STATUS_OK);
+  CHECK(results_of(m, &got) && same_results(&before, &got));
+  /* A later solve gives what it gives on a fresh model, bit for bit. */
+  CHECK(tfem_solve_contact(m, &refactorising, NULL) == TFEM_STATUS_OK);
+  CHECK(results_of(m, &got) && same_results(&expected, &got));
+  tfem_destroy(m);
+  tfem_destroy(fresh);
+}
+
+static void no_nan_or_inf_comes_back_with_ok(void) {
+  /* Huge loads: the displacements are finite, so is the residual. */
+  tfem_model *m = tension_block(G.tri);
+  CHECK(tfem_clear_loads(m) == TFEM_STATUS_OK);
+  CHECK(tfem_add_traction(m, 2, 1e300, 0.0) == TFEM_STATUS_OK);
+  tfem_solve_info info;
+  tfem_status s = tfem_solve(m, &info);
+  CHECK(s == TFEM_STATUS_OK || s == TFEM_STATUS_NUMERICAL_FAILURE);
+  if (s == TFEM_STATUS_OK) CHECK(isfinite(info.relative_residual) && isfinite(info.condition_estimate));
+  double out[3 * 4096];
+  s = tfem_get_element_stresses(m, out, 3 * G.nt);
+  CHECK(s != TFEM_STATUS_OK || all_finite(out, 3 * G.nt));
+  s = tfem_get_reactions(m, out, 2 * G.nn);
+  CHECK(s != TFEM_STATUS_OK || all_finite(out, 2 * G.nn));
+  double w = 0;
+  s = tfem_get_external_work(m, &w);
+  CHECK(s == TFEM_STATUS_NUMERICAL_FAILURE || (s == TFEM_STATUS_OK && isfinite(w)));
+  tfem_destroy(m);
+
+  /* A residual that used to underflow to 0: the solution underflows
+   * (1e-200 / 1e155), so the residual says it is wrong (~1). */
+  m = tension_block(G.tri);
+  CHECK(tfem_set_material(m, 1, 1e155, 0.25, TFEM_PLANE_MODE_STRESS) == TFEM_STATUS_OK);
+  CHECK(tfem_clear_loads(m) == TFEM_STATUS_OK);
+  CHECK(tfem_add_traction(m, 2, 1e-200, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_solve(m, &info) == TFEM_STATUS_OK && info.relative_residual > 0.5 &&
+        isfinite(info.relative_residual));
+  tfem_destroy(m);
+
+  /* Coordinates whose area overflows: refused, naming a triangle. */
+  double xy[2 * 4096];
+  for (int i = 0; i < 2 * G.nn; ++i) xy[i] = G.xy[i] * 1e300;
+  m = tfem_create();
+  EXPECT_ERROR(m, tfem_set_mesh(m, G.nn, xy, G.nt, G.tri, G.body, 0), TFEM_STATUS_INVALID_MESH,
+               "triangle 0");
+  tfem_destroy(m);
+
+  /* Contact under a pressure at the edge of double precision. */
+  m = two_blocks();
+  CHECK(tfem_clear_loads(m) == TFEM_STATUS_OK && tfem_add_pressure(m, 23, 1.7e308) == TFEM_STATUS_OK);
+  tfem_contact_report rep;
+  s = tfem_solve_contact(m, NULL, &rep);
+  CHECK(s != TFEM_STATUS_OK || (isfinite(rep.max_penetration) && isfinite(rep.contact_length)));
+  if (s == TFEM_STATUS_OK) {
+    CHECK(tfem_get_contact_pressure(m, out, 64) != TFEM_STATUS_OK || all_finite(out, rep.elements));
+  }
+  tfem_destroy(m);
+}
+
+static void messages_stay_short_and_the_thread_slot_is_cleared(void) {
+  double xy[6] = {0, 0, 1, 0, 0, 1}, k[36];
+  char msg[512];
+  CHECK(tfem_element_stiffness(xy, -4.9e-324, 0.3, 0, 0.0, k) == TFEM_STATUS_INVALID_MATERIAL);
+  CHECK(tfem_last_error(NULL, msg, sizeof msg) == TFEM_STATUS_OK && strlen(msg) < 120 &&
+        strstr(msg, "e-324") != NULL);
+  CHECK(tfem_element_stiffness(xy, 1.0, 0.3, 0, 0.0, k) == TFEM_STATUS_OK);
+  CHECK(tfem_last_error(NULL, msg, sizeof msg) == TFEM_STATUS_OK && msg[0] == '\0');
+  CHECK(tfem_last_error_length(NULL) == 1);
+}
+
+static void a_host_gets_contact_forces_gaps_and_the_contact_mesh_before_a_solve(void) {
+  tfem_model *m = two_blocks();
+  int n = 0;
+  CHECK(tfem_get_contact_mesh_size(m, &n) == TFEM_STATUS_OK && n == 16);
+  int nodes[3 * 64], pair[64], apex[64], before[3 * 64];
+  CHECK(tfem_get_contact_mesh(m, before, 3 * 64) == TFEM_STATUS_OK);
+  CHECK(tfem_get_contact_element_pairs(m, pair, 64) == TFEM_STATUS_OK);
+  CHECK(tfem_get_contact_element_apexes(m, apex, 64) == TFEM_STATUS_OK);
+  int consistent = 1;
+  for (int e = 0; e < n; ++e) {
+    consistent &= pair[e] == 0;
+    consistent &= apex[e] == before[3 * e] || apex[e] == before[3 * e + 1] || apex[e] == before[3 * e + 2];
+  }
+  CHECK(consistent);
+  int ba = 0, bb = 0;
+  CHECK(tfem_get_contact_pair_bodies(m, 0, &ba, &bb) == TFEM_STATUS_OK && ba == 1 && bb == 2);
+  EXPECT_ERROR(m, tfem_get_contact_pair_bodies(m, 1, &ba, NULL), TFEM_STATUS_INVALID_ARGUMENT, "pair = 1");
+
+  tfem_contact_report rep;
+  CHECK(tfem_solve_contact(m, NULL, &rep) == TFEM_STATUS_OK);
+  CHECK(tfem_get_contact_elements(m, nodes, 3 * 64) == TFEM_STATUS_OK);
+  CHECK(memcmp(nodes, before, 3 * (size_t)n * sizeof(int)) == 0);
+
+  CHECK(rep.active < n);
+  /* The contact forces balance: zero sum over the pair; on the upper body
+   * they carry the applied loads (1e7 Pa over a length of 1, less the
+   * 3e6 N/m lift). */
+  double f[2 * 64], gap[64];
+  CHECK(tfem_get_contact_forces(m, f, 2 * B.nn) == TFEM_STATUS_OK);
+  double sum_y = 0, upper_y = 0, scale = 0;
+  for (int v = 0; v < B.nn; ++v) {
+    sum_y += f[2 * v + 1];
+    if (v >= 27) upper_y += f[2 * v + 1];
+    scale = fmax(scale, fabs(f[2 * v + 1]));
+  }
+  CHECK(fabs(sum_y) <= 1e-9 * scale && fabs(upper_y - 7e6) <= 1e-6 * 7e6);
+  /* Gaps: at most the reported penetration into, zero off the interface. */
+  CHECK(tfem_get_contact_gaps(m, gap, B.nn) == TFEM_STATUS_OK);
+  double min_gap = 0;
+  for (int v = 0; v < B.nn; ++v) min_gap = fmin(min_gap, gap[v]);
+  CHECK(min_gap < 0 && fabs(-min_gap - rep.max_penetration) <= 1e-12 + 1e-9 * rep.max_penetration);
+  CHECK(gap[0] == 0.0 && gap[B.nn - 1] == 0.0);
+
+  /* The work of the loads: the pressure's consistent nodal forces on the
+   * top edges and the lift, times their displacements. */
+  double w = 0, u[2 * 64];
+  CHECK(tfem_get_external_work(m, &w) == TFEM_STATUS_OK && tfem_get_displacements(m, u, 2 * B.nn) == TFEM_STATUS_OK);
+  double by_hand = 0;
+  for (int i = 0; i < 8; ++i) {
+    int a = 27 + 2 * 9 + i, b = a + 1; /* top row of the upper block */
+    by_hand += -1e7 * 0.125 * 0.5 * (u[2 * a + 1] + u[2 * b + 1]);
+  }
+  by_hand += 3e6 * u[2 * 45 + 1];
+  CHECK(fabs(w - by_hand) <= 1e-12 * fabs(by_hand));
+  tfem_destroy(m);
+}
+
+int main(void) {
+  /* Nothing the library does may reach stderr: it goes to a file, checked
+   * at the end. */
+  fflush(stderr);
+  int saved = dup(2);
+  FILE *capture = tmpfile();
+  dup2(fileno(capture), 2);
+
+  grid(&G, 16, 4, 0.0, 0.0, 4.0, 1.0, 1, 1);
+  grid(&B, 8, 2, 0.0, -0.25, 1.0, 0.25, 1, 10);
+  grid(&B, 8, 2, 0.0, 0.0, 1.0, 0.25, 2, 20);
+
+  a_clockwise_mesh_is_turned_and_solved_exactly();
+  a_fold_inside_a_counter_clockwise_body_stays_inverted();
+  resetting_boundary_edges_never_drops_a_load();
+  boundary_groups_can_be_added_one_call_at_a_time();
+  a_dof_prescribed_twice_with_different_values_is_refused();
+  changing_the_ordering_or_the_threads_keeps_every_result();
+  a_failed_solve_keeps_every_result_and_changes_no_later_solve();
+  no_nan_or_inf_comes_back_with_ok();
+  messages_stay_short_and_the_thread_slot_is_cleared();
+  a_host_gets_contact_forces_gaps_and_the_contact_mesh_before_a_solve();
+
+  fflush(stderr);
+  fseek(capture, 0, SEEK_END);
+  long printed = ftell(capture);
+  dup2(saved, 2);
+  CHECK(printed == 0);
+  printf("boundary_test: %d passed, %d failed\n", passed, failed);
+  return failed == 0 ? 0 : 1;
+}
