@@ -315,6 +315,57 @@ int main(void) {
   tfem_contact_options o;
   CHECK(tfem_contact_options_default(&o) == TFEM_STATUS_OK && o.law == TFEM_CONTACT_LAW_FRICTIONLESS && o.max_iterations > 0);
 
+  /* Gmsh files whose headers lie about their sizes (regression: a $Nodes
+   * header claiming 10^15 nodes aborted the process, 2^62 gave INTERNAL and
+   * a panic message on stderr). Each is an IO error naming $Nodes and the
+   * count, and the model keeps the mesh it had. */
+  {
+    static const char msh[] =
+        "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+        "$Entities\n0 0 1 0\n1 0 0 0 1 1 0 1 7 0\n$EndEntities\n"
+        "$Nodes\n%s\n2 1 0 3\n1\n2\n3\n0 0 0\n1 0 0\n0 1 0\n$EndNodes\n"
+        "$Elements\n1 1 1 1\n2 1 2 1\n1 1 2 3\n$EndElements\n";
+    /* A name of our own in the temporary directory (the stack address
+     * differs from run to run). */
+    char path[512];
+    const char *tmp = getenv("TMPDIR");
+    int here = 0;
+    snprintf(path, sizeof path, "%s/tfem_api_test_%lx.msh", tmp != NULL && tmp[0] != '\0' ? tmp : "/tmp",
+             (unsigned long)(uintptr_t)&here);
+    const char *headers[3] = {"1 3 1 3", "1 1000000000000000 1 3", "1 4611686018427387904 1 3"};
+    const char *counts[3] = {"", "1000000000000000", "4611686018427387904"};
+    m = tfem_create();
+    for (int k = 0; k < 3; ++k) {
+      FILE *f = fopen(path, "w");
+      CHECK(f != NULL);
+      if (f == NULL) break;
+      fprintf(f, msh, headers[k]);
+      fclose(f);
+      tfem_status s = tfem_load_gmsh(m, path, 0);
+      if (k == 0) {
+        CHECK(s == TFEM_STATUS_OK);
+      } else {
+        EXPECT_ERROR(m, s, TFEM_STATUS_IO, "$Nodes");
+        tfem_last_error(m, msg, sizeof msg);
+        CHECK(strstr(msg, counts[k]) != NULL);
+      }
+      /* The mesh of the first file is still there. */
+      int n_nodes = -1, n_triangles = -1;
+      CHECK(tfem_get_sizes(m, &n_nodes, &n_triangles, NULL) == TFEM_STATUS_OK && n_nodes == 3 && n_triangles == 1);
+    }
+    /* The same file cut short. */
+    FILE *f = fopen(path, "w");
+    if (f != NULL) {
+      fputs("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 3 1 3\n2 1 0 3\n1\n2\n", f);
+      fclose(f);
+    }
+    EXPECT_ERROR(m, tfem_load_gmsh(m, path, 0), TFEM_STATUS_IO, "$Nodes");
+    int n_nodes = -1;
+    CHECK(tfem_get_sizes(m, &n_nodes, NULL, NULL) == TFEM_STATUS_OK && n_nodes == 3);
+    remove(path);
+    tfem_destroy(m);
+  }
+
   printf("api_test: %d passed, %d failed\n", passed, failed);
   printf("%d passed, %d failed\n", passed, failed);
   return failed == 0 ? 0 : 1;

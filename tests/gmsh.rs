@@ -213,3 +213,733 @@ fn quadrangles_and_non_planar_nodes_are_rejected() {
         e.message()
     );
 }
+
+// ---------------------------------------------------------------------------
+// Hostile and malformed files: every one is an error naming its section,
+// returned promptly by a process that survives, without a large allocation
+// and without a word on stderr.
+// ---------------------------------------------------------------------------
+
+/// A value of an MSH file: `size_t`, `int`, `double`, or raw ASCII text
+/// (for garbage; in a binary file, its bytes as they are).
+#[derive(Clone, Copy)]
+enum V {
+    S(u64),
+    I(i32),
+    F(f64),
+    Raw(&'static str),
+}
+use V::{F, I, Raw, S};
+
+/// An MSH 4.1 file with the given sections, ASCII or binary (little-endian,
+/// 8-byte `size_t`), laid out as Gmsh does.
+fn msh(binary: bool, sections: &[(&str, Vec<V>)]) -> Vec<u8> {
+    let mut out = Vec::new();
+    if binary {
+        out.extend_from_slice(b"$MeshFormat\n4.1 1 8\n");
+        out.extend_from_slice(&1i32.to_le_bytes());
+        out.push(b'\n');
+    } else {
+        out.extend_from_slice(b"$MeshFormat\n4.1 0 8\n");
+    }
+    out.extend_from_slice(b"$EndMeshFormat\n");
+    for (name, values) in sections {
+        out.extend_from_slice(format!("${name}\n").as_bytes());
+        for (k, v) in values.iter().enumerate() {
+            if binary {
+                match *v {
+                    S(x) => out.extend_from_slice(&x.to_le_bytes()),
+                    I(x) => out.extend_from_slice(&x.to_le_bytes()),
+                    F(x) => out.extend_from_slice(&x.to_le_bytes()),
+                    Raw(x) => out.extend_from_slice(x.as_bytes()),
+                }
+            } else {
+                if k > 0 {
+                    out.push(b' ');
+                }
+                let text = match *v {
+                    S(x) => x.to_string(),
+                    I(x) => x.to_string(),
+                    F(x) => x.to_string(),
+                    Raw(x) => x.to_string(),
+                };
+                out.extend_from_slice(text.as_bytes());
+            }
+        }
+        out.extend_from_slice(format!("\n$End{name}\n").as_bytes());
+    }
+    out
+}
+
+/// Surface 1 in physical group 7.
+fn entities() -> Vec<V> {
+    vec![
+        S(0),
+        S(0),
+        S(1),
+        S(0),
+        I(1),
+        F(0.0),
+        F(0.0),
+        F(0.0),
+        F(1.0),
+        F(1.0),
+        F(0.0),
+        S(1),
+        I(7),
+        S(0),
+    ]
+}
+
+/// Three nodes on surface 1 under the given header (numEntityBlocks,
+/// numNodes, minNodeTag, maxNodeTag), with the given tags and block count.
+fn nodes(header: [u64; 4], in_block: u64, tags: [u64; 3]) -> Vec<V> {
+    let mut v: Vec<V> = header.iter().map(|&x| S(x)).collect();
+    v.extend([I(2), I(1), I(0), S(in_block)]);
+    v.extend(tags.map(S));
+    v.extend([0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0].map(F));
+    v
+}
+
+fn good_nodes() -> Vec<V> {
+    nodes([1, 3, 1, 3], 3, [1, 2, 3])
+}
+
+/// One triangle on surface 1 under the given header (numEntityBlocks,
+/// numElements, minElementTag, maxElementTag) and block count.
+fn elements(header: [u64; 4], in_block: u64) -> Vec<V> {
+    let mut v: Vec<V> = header.iter().map(|&x| S(x)).collect();
+    v.extend([I(2), I(1), I(2), S(in_block), S(1), S(1), S(2), S(3)]);
+    v
+}
+
+fn good_elements() -> Vec<V> {
+    elements([1, 1, 1, 1], 1)
+}
+
+fn triangle(binary: bool) -> Vec<u8> {
+    msh(
+        binary,
+        &[
+            ("Entities", entities()),
+            ("Nodes", good_nodes()),
+            ("Elements", good_elements()),
+        ],
+    )
+}
+
+fn write_bytes(name: &str, bytes: &[u8]) -> PathBuf {
+    let p = out_dir().join(name);
+    std::fs::write(&p, bytes).unwrap();
+    p
+}
+
+const CHILD_FILE: &str = "TFEM_GMSH_TEST_CHILD_FILE";
+const CHILD_ALLOCATE: &str = "TFEM_GMSH_TEST_CHILD_ALLOCATE";
+/// The address-space limit of the child processes: the test binary needs
+/// about 30 MiB of it (glibc reserves 64 MiB per thread arena); reading a
+/// small file must fit in what is left.
+const LIMIT_KIB: u64 = 256 * 1024;
+/// Generous: these files are read in microseconds.
+const PROMPT_SECONDS: f64 = 2.0;
+
+/// Peak resident and virtual memory of this process, in KiB.
+fn peak_memory_kib() -> (u64, u64) {
+    let status = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
+    let field = |name: &str| {
+        status
+            .lines()
+            .find_map(|l| l.strip_prefix(name))
+            .and_then(|v| v.trim().trim_end_matches("kB").trim().parse().ok())
+            .unwrap_or(0)
+    };
+    (field("VmHWM:"), field("VmPeak:"))
+}
+
+/// The body of the child processes spawned by [`in_a_small_address_space`]
+/// (does nothing in a normal test run): reads the file named in the
+/// environment, or tries the allocation asked for, and reports on stdout.
+#[test]
+fn child_process_reads_the_file_its_parent_names() {
+    if let Some(bytes) = std::env::var_os(CHILD_ALLOCATE) {
+        let n: usize = bytes.to_str().unwrap().parse().unwrap();
+        let mut v: Vec<u8> = Vec::new();
+        println!("ALLOCATED {}", v.try_reserve_exact(n).is_ok());
+        return;
+    }
+    let Some(path) = std::env::var_os(CHILD_FILE) else {
+        return;
+    };
+    let start = std::time::Instant::now();
+    let result = read_msh(Path::new(&path), 0);
+    let seconds = start.elapsed().as_secs_f64();
+    let (rss, vm) = peak_memory_kib();
+    let (status, message) = match result {
+        Ok(mesh) => (format!("Ok({} nodes)", mesh.nodes().len()), String::new()),
+        Err(e) => (format!("{:?}", e.status()), e.message().to_string()),
+    };
+    println!(
+        "STATUS {status}\nSECONDS {seconds}\nPEAK_RSS_KIB {rss}\nPEAK_VM_KIB {vm}\nMESSAGE {message}"
+    );
+}
+
+/// Runs this test binary's [`child_process_reads_the_file_its_parent_names`]
+/// under `ulimit -v` with `env` set, and returns its standard output. The
+/// child must exit normally with nothing on stderr (no panic message).
+fn in_a_small_address_space(env: (&str, &str)) -> String {
+    let exe = std::env::current_exe().unwrap();
+    let out = Command::new("sh")
+        .arg("-c")
+        .arg(format!("ulimit -v {LIMIT_KIB} && exec \"$0\" \"$@\""))
+        .arg(&exe)
+        .args([
+            "--exact",
+            "child_process_reads_the_file_its_parent_names",
+            "--nocapture",
+            "--test-threads=1",
+            "--quiet",
+        ])
+        .env(env.0, env.1)
+        .output()
+        .unwrap();
+    let stdout = String::from_utf8_lossy(&out.stdout).to_string();
+    let stderr = String::from_utf8_lossy(&out.stderr).to_string();
+    assert!(
+        out.status.success(),
+        "the child died ({}):\n{stdout}\n{stderr}",
+        out.status
+    );
+    assert!(stderr.is_empty(), "the child wrote on stderr:\n{stderr}");
+    stdout
+}
+
+/// Reads `bytes` (written to `name`) in a child process limited to
+/// [`LIMIT_KIB`] of address space: the result must be `Status::Io` or
+/// `Status::InvalidMesh` with a message containing every one of `needles`
+/// (the section first), returned within [`PROMPT_SECONDS`].
+fn rejected(name: &str, bytes: &[u8], needles: &[&str]) {
+    let path = write_bytes(name, bytes);
+    let out = in_a_small_address_space((CHILD_FILE, path.to_str().unwrap()));
+    let field = |key: &str| {
+        out.lines()
+            .find_map(|l| l.strip_prefix(key))
+            .unwrap_or_else(|| panic!("{key} missing in:\n{out}"))
+            .trim()
+            .to_string()
+    };
+    let (status, message) = (field("STATUS "), field("MESSAGE "));
+    let seconds: f64 = field("SECONDS ").parse().unwrap();
+    println!(
+        "{name}: {status} in {:.3} ms, peak RSS {} KiB, peak VM {} KiB: {message}",
+        seconds * 1e3,
+        field("PEAK_RSS_KIB "),
+        field("PEAK_VM_KIB ")
+    );
+    assert!(
+        status == "Io" || status == "InvalidMesh",
+        "{name}: {status}: {message}"
+    );
+    assert!(
+        message.contains(name),
+        "{name}: the path is missing: {message}"
+    );
+    for needle in needles {
+        assert!(
+            message.contains(needle),
+            "{name}: {needle:?} missing: {message}"
+        );
+    }
+    assert!(seconds < PROMPT_SECONDS, "{name}: {seconds} s");
+}
+
+/// Both encodings of a file built by `make`.
+fn both(name: &str, make: impl Fn(bool) -> Vec<u8>, needles: &[&str]) {
+    for binary in [false, true] {
+        let kind = if binary { "bin" } else { "ascii" };
+        rejected(&format!("{name}_{kind}.msh"), &make(binary), needles);
+    }
+}
+
+const E15: u64 = 1_000_000_000_000_000;
+const P62: u64 = 1 << 62;
+
+#[test]
+fn the_child_address_space_limit_refuses_a_512_mib_allocation_and_allows_a_small_one() {
+    let big = in_a_small_address_space((CHILD_ALLOCATE, &(512usize << 20).to_string()));
+    assert!(big.contains("ALLOCATED false"), "{big}");
+    let small = in_a_small_address_space((CHILD_ALLOCATE, &(16usize << 20).to_string()));
+    assert!(small.contains("ALLOCATED true"), "{small}");
+}
+
+#[test]
+fn the_hand_written_triangle_files_are_read() {
+    for binary in [false, true] {
+        let path = write_bytes(&format!("triangle_{binary}.msh"), &triangle(binary));
+        let mesh = read_msh(&path, 0).unwrap();
+        assert_eq!(mesh.nodes().len(), 3);
+        assert_eq!(mesh.triangles().len(), 1);
+        assert_eq!(mesh.bodies(), &[7]);
+    }
+}
+
+#[test]
+fn a_nodes_header_claiming_10_15_nodes_is_an_io_error_naming_nodes_and_the_count() {
+    both(
+        "nodes_1e15",
+        |b| {
+            msh(
+                b,
+                &[
+                    ("Entities", entities()),
+                    ("Nodes", nodes([1, E15, 1, 3], 3, [1, 2, 3])),
+                    ("Elements", good_elements()),
+                ],
+            )
+        },
+        &["$Nodes", "the number of nodes is 1000000000000000"],
+    );
+}
+
+#[test]
+fn a_nodes_header_claiming_2_62_nodes_is_an_io_error_naming_nodes_and_the_count() {
+    both(
+        "nodes_2e62",
+        |b| {
+            msh(
+                b,
+                &[
+                    ("Entities", entities()),
+                    ("Nodes", nodes([1, P62, 1, 3], 3, [1, 2, 3])),
+                    ("Elements", good_elements()),
+                ],
+            )
+        },
+        &["$Nodes", "the number of nodes is 4611686018427387904"],
+    );
+}
+
+#[test]
+fn a_node_block_claiming_10_15_nodes_is_an_io_error_naming_nodes() {
+    both(
+        "node_block_1e15",
+        |b| {
+            msh(
+                b,
+                &[
+                    ("Entities", entities()),
+                    ("Nodes", nodes([1, 3, 1, 3], E15, [1, 2, 3])),
+                    ("Elements", good_elements()),
+                ],
+            )
+        },
+        &["$Nodes", "entity block 1 of 1", "1000000000000000"],
+    );
+}
+
+#[test]
+fn a_nodes_header_claiming_2_62_entity_blocks_is_an_io_error_naming_nodes() {
+    both(
+        "node_blocks_2e62",
+        |b| {
+            msh(
+                b,
+                &[
+                    ("Entities", entities()),
+                    ("Nodes", nodes([P62, 3, 1, 3], 3, [1, 2, 3])),
+                    ("Elements", good_elements()),
+                ],
+            )
+        },
+        &[
+            "$Nodes",
+            "the number of entity blocks is 4611686018427387904",
+        ],
+    );
+}
+
+#[test]
+fn a_nodes_header_claiming_a_max_node_tag_of_2_62_is_an_io_error_naming_nodes() {
+    both(
+        "max_node_tag_2e62",
+        |b| {
+            msh(
+                b,
+                &[
+                    ("Entities", entities()),
+                    ("Nodes", nodes([1, 3, 1, P62], 3, [1, 2, 3])),
+                    ("Elements", good_elements()),
+                ],
+            )
+        },
+        &["$Nodes", "from 1 to 4611686018427387904"],
+    );
+}
+
+#[test]
+fn node_tags_of_2_62_announced_by_the_header_are_read_without_a_dense_table() {
+    for binary in [false, true] {
+        let bytes = msh(
+            binary,
+            &[
+                ("Entities", entities()),
+                (
+                    "Nodes",
+                    nodes([1, 3, P62, P62 + 2], 3, [P62, P62 + 1, P62 + 2]),
+                ),
+                (
+                    "Elements",
+                    vec![
+                        S(1),
+                        S(1),
+                        S(P62),
+                        S(P62),
+                        I(2),
+                        I(1),
+                        I(2),
+                        S(1),
+                        S(P62),
+                        S(P62),
+                        S(P62 + 1),
+                        S(P62 + 2),
+                    ],
+                ),
+            ],
+        );
+        let path = write_bytes(&format!("tags_2e62_{binary}.msh"), &bytes);
+        let out = in_a_small_address_space((CHILD_FILE, path.to_str().unwrap()));
+        assert!(out.contains("STATUS Ok(3 nodes)"), "{out}");
+    }
+}
+
+#[test]
+fn a_nodes_header_announcing_fewer_nodes_than_the_blocks_hold_is_an_io_error() {
+    both(
+        "nodes_too_few",
+        |b| {
+            msh(
+                b,
+                &[
+                    ("Entities", entities()),
+                    ("Nodes", nodes([1, 2, 1, 3], 3, [1, 2, 3])),
+                    ("Elements", good_elements()),
+                ],
+            )
+        },
+        &["$Nodes", "announces 2 nodes but the blocks hold 3"],
+    );
+}
+
+#[test]
+fn an_elements_header_claiming_10_15_elements_is_an_io_error_naming_elements() {
+    both(
+        "elements_1e15",
+        |b| {
+            msh(
+                b,
+                &[
+                    ("Entities", entities()),
+                    ("Nodes", good_nodes()),
+                    ("Elements", elements([1, E15, 1, 1], 1)),
+                ],
+            )
+        },
+        &["$Elements", "the number of elements is 1000000000000000"],
+    );
+}
+
+#[test]
+fn an_elements_header_claiming_2_62_entity_blocks_is_an_io_error_naming_elements() {
+    both(
+        "element_blocks_2e62",
+        |b| {
+            msh(
+                b,
+                &[
+                    ("Entities", entities()),
+                    ("Nodes", good_nodes()),
+                    ("Elements", elements([P62, 1, 1, 1], 1)),
+                ],
+            )
+        },
+        &[
+            "$Elements",
+            "the number of entity blocks is 4611686018427387904",
+        ],
+    );
+}
+
+#[test]
+fn an_element_block_claiming_2_62_elements_is_an_io_error_naming_elements() {
+    both(
+        "element_block_2e62",
+        |b| {
+            msh(
+                b,
+                &[
+                    ("Entities", entities()),
+                    ("Nodes", good_nodes()),
+                    ("Elements", elements([1, 1, 1, 1], P62)),
+                ],
+            )
+        },
+        &["$Elements", "entity block 1 of 1", "4611686018427387904"],
+    );
+}
+
+#[test]
+fn an_elements_header_claiming_a_max_element_tag_of_2_62_is_an_io_error_naming_elements() {
+    both(
+        "max_element_tag_2e62",
+        |b| {
+            msh(
+                b,
+                &[
+                    ("Entities", entities()),
+                    ("Nodes", good_nodes()),
+                    ("Elements", elements([1, 1, 1, P62], 1)),
+                ],
+            )
+        },
+        &["$Elements", "from 1 to 4611686018427387904"],
+    );
+}
+
+#[test]
+fn entity_counts_of_10_15_are_io_errors_naming_entities() {
+    both(
+        "surfaces_1e15",
+        |b| {
+            let mut e = entities();
+            e[2] = S(E15);
+            msh(
+                b,
+                &[
+                    ("Entities", e),
+                    ("Nodes", good_nodes()),
+                    ("Elements", good_elements()),
+                ],
+            )
+        },
+        &["$Entities", "the number of surfaces is 1000000000000000"],
+    );
+    both(
+        "physical_tags_2e62",
+        |b| {
+            let mut e = entities();
+            e[11] = S(P62);
+            msh(
+                b,
+                &[
+                    ("Entities", e),
+                    ("Nodes", good_nodes()),
+                    ("Elements", good_elements()),
+                ],
+            )
+        },
+        &[
+            "$Entities",
+            "surface 1 of 1",
+            "the number of physical tags is 4611686018427387904",
+        ],
+    );
+}
+
+#[test]
+fn a_count_of_2_64_minus_1_is_an_io_error_naming_its_section() {
+    // What a negative count written as size_t looks like.
+    both(
+        "nodes_minus_1",
+        |b| {
+            msh(
+                b,
+                &[
+                    ("Entities", entities()),
+                    ("Nodes", nodes([1, u64::MAX, 1, 3], 3, [1, 2, 3])),
+                    ("Elements", good_elements()),
+                ],
+            )
+        },
+        &["$Nodes", "18446744073709551615"],
+    );
+}
+
+#[test]
+fn negative_and_garbage_counts_in_ascii_are_io_errors_naming_the_section_and_the_token() {
+    for (k, bad) in ["-5", "abc", "1e3", "0x10", "99999999999999999999999", "+-1"]
+        .into_iter()
+        .enumerate()
+    {
+        let mut n = good_nodes();
+        n[1] = Raw(bad);
+        let bytes = msh(
+            false,
+            &[
+                ("Entities", entities()),
+                ("Nodes", n),
+                ("Elements", good_elements()),
+            ],
+        );
+        rejected(
+            &format!("garbage_count_{k}.msh"),
+            &bytes,
+            &["$Nodes", "the number of nodes", bad],
+        );
+    }
+}
+
+#[test]
+fn malformed_mesh_format_headers_are_io_errors_naming_mesh_format() {
+    for (k, header) in [
+        "$MeshFormat\n4.1 0 99999999999999999999999\n$EndMeshFormat\n",
+        "$MeshFormat\n4.1 1 3\n\x01\x00\x00\x00\n$EndMeshFormat\n",
+        "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n",
+        "$MeshFormat\n4.1 2 8\n$EndMeshFormat\n",
+        "$MeshFormat\n4.1 1 8\n\x02\x00\x00\x00\n$EndMeshFormat\n",
+        "$MeshFormat\n4.1 1 8",
+        "$MeshFormat\n",
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        rejected(
+            &format!("header_{k}.msh"),
+            header.as_bytes(),
+            &["$MeshFormat"],
+        );
+    }
+}
+
+#[test]
+fn empty_nodes_and_elements_sections_are_errors_not_panics() {
+    // mshio computed `num_nodes - 1` here (an overflow panic in debug builds).
+    both(
+        "empty_sections",
+        |b| {
+            msh(
+                b,
+                &[
+                    ("Entities", entities()),
+                    ("Nodes", vec![S(0), S(0), S(1), S(1)]),
+                    ("Elements", vec![S(0), S(0), S(1), S(1)]),
+                ],
+            )
+        },
+        &["$Elements", "no triangles"],
+    );
+}
+
+#[test]
+fn a_long_run_of_blanks_in_an_unknown_section_is_skipped_promptly() {
+    // Quadratic in mshio: 80 kB took 2 s.
+    let mut bytes = triangle(false);
+    let mut section = b"$Comments\n".to_vec();
+    section.resize(section.len() + 4_000_000, b' ');
+    section.extend_from_slice(b"x\n$EndComments\n");
+    bytes.extend_from_slice(&section);
+    let path = write_bytes("long_blanks.msh", &bytes);
+    let start = std::time::Instant::now();
+    read_msh(&path, 0).unwrap();
+    assert!(start.elapsed().as_secs_f64() < PROMPT_SECONDS);
+}
+
+#[test]
+fn an_error_message_does_not_grow_with_the_file() {
+    // mshio's message was a hex dump of the rest of the file.
+    let mut text = format!("{HEADER}$Nodes\n1 x");
+    text.push_str(&"0".repeat(10_000_000));
+    let e = read_msh(&write("long_garbage.msh", &text), 0).unwrap_err();
+    assert_eq!(e.status(), Status::Io);
+    assert!(e.message().len() < 400, "{} bytes", e.message().len());
+    assert!(e.message().contains("$Nodes"), "{}", e.message());
+}
+
+#[test]
+fn every_truncation_of_a_small_file_is_an_error_naming_a_section() {
+    for binary in [false, true] {
+        let full = triangle(binary);
+        let path = out_dir().join(format!("truncated_{binary}.msh"));
+        // The last byte is the final line break, which is optional.
+        for len in 0..full.len() - 1 {
+            std::fs::write(&path, &full[..len]).unwrap();
+            let e = read_msh(&path, 0).unwrap_err();
+            assert!(
+                matches!(e.status(), Status::Io | Status::InvalidMesh),
+                "{len}: {}",
+                e.message()
+            );
+            assert!(
+                ["$MeshFormat", "$Entities", "$Nodes", "$Elements"]
+                    .iter()
+                    .any(|s| e.message().contains(s)),
+                "{len}: {}",
+                e.message()
+            );
+        }
+    }
+}
+
+#[test]
+fn truncations_of_a_gmsh_file_are_errors_naming_a_section() {
+    for binary in [false, true] {
+        let full = std::fs::read(mesh_with_gmsh(0.1, binary)).unwrap();
+        let path = out_dir().join(format!("gmsh_truncated_{binary}.msh"));
+        for k in 0..200 {
+            let len = full.len() * k / 200;
+            std::fs::write(&path, &full[..len]).unwrap();
+            let e = read_msh(&path, 0).unwrap_err();
+            assert!(
+                matches!(e.status(), Status::Io | Status::InvalidMesh),
+                "{len}: {}",
+                e.message()
+            );
+            assert!(e.message().contains("$"), "{len}: {}", e.message());
+        }
+    }
+}
+
+#[test]
+fn no_single_byte_change_of_a_small_file_makes_the_reader_panic() {
+    for binary in [false, true] {
+        let full = triangle(binary);
+        let path = out_dir().join(format!("mutated_{binary}.msh"));
+        for at in 0..full.len() {
+            for b in [0x00, 0x01, 0x7f, 0x80, 0xff, b'9', b'-', b' ', b'$', b'\n'] {
+                let mut bytes = full.clone();
+                bytes[at] = b;
+                std::fs::write(&path, &bytes).unwrap();
+                if let Err(e) = read_msh(&path, 0) {
+                    assert!(
+                        matches!(e.status(), Status::Io | Status::InvalidMesh),
+                        "{at} = {b}: {:?} {}",
+                        e.status(),
+                        e.message()
+                    );
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn a_directory_or_a_device_is_an_io_error_not_an_endless_read() {
+    for path in [out_dir(), PathBuf::from("/dev/zero")] {
+        let e = read_msh(&path, 0).unwrap_err();
+        assert_eq!(e.status(), Status::Io, "{}", e.message());
+    }
+}
+
+#[test]
+fn a_second_nodes_section_is_an_io_error_naming_nodes() {
+    let bytes = msh(
+        false,
+        &[
+            ("Entities", entities()),
+            ("Nodes", good_nodes()),
+            ("Nodes", good_nodes()),
+            ("Elements", good_elements()),
+        ],
+    );
+    let e = read_msh(&write_bytes("two_nodes.msh", &bytes), 0).unwrap_err();
+    assert_eq!(e.status(), Status::Io);
+    assert!(e.message().contains("a second $Nodes"), "{}", e.message());
+}

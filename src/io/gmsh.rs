@@ -1,197 +1,890 @@
-//! Gmsh meshes (MSH 4.1, ASCII or binary) read with the `mshio` crate.
-//! Feature `gmsh`.
+//! Gmsh meshes (MSH 4.1, ASCII or binary). Feature `gmsh`.
 //!
 //! Physical surfaces become bodies (the physical tag is the body tag) and
 //! physical curves become boundary-edge tags, for loads, supports and
 //! contact interfaces. A surface meshed clockwise (normal along −z) is
 //! turned counter-clockwise as a whole. Only 3-node triangles and 2-node lines are accepted;
 //! nodes must lie in the plane z = 0.
+//!
+//! # The reader
+//!
+//! The file is read by a small reader of our own for the subset we use:
+//! `$MeshFormat`, `$Entities`, `$Nodes` and `$Elements`; any other section
+//! (`$PhysicalNames`, `$Periodic`, `$NodeData`, …) is skipped up to its
+//! `$End…` line. It replaced the `mshio` crate (0.4.2), which cannot be
+//! made safe from outside:
+//!
+//! - it panics on malformed headers (`4.1 0 99999999999999999999`: an
+//!   `unwrap` of the data size; `4.1 1 3`: `unimplemented!` for a 3-byte
+//!   `size_t`), and on an empty `$Nodes` or `$Elements` section
+//!   (`num_nodes - 1` underflows) when overflow checks are on; a panic
+//!   prints on the caller's stderr through the default hook even when it
+//!   is caught;
+//! - its error message is a hex dump of the whole rest of the file from
+//!   the error on (a 10 MB file gives a 47 MB message);
+//! - skipping an unknown section is quadratic in a run of blanks (80 kB
+//!   of spaces: 2 s);
+//! - guarding its counts from outside would need a second parser anyway,
+//!   to find the `$Nodes` header behind a binary `$Entities` section.
+//!
+//! (`mshio` itself never preallocated from a count: its repetitions go
+//! through nom 5's `count`, which grows a `Vec` from empty, and its one
+//! `Vec::with_capacity` is the node count of an element type. The abort
+//! came from our own `Vec::with_capacity(num_nodes)`.)
+//!
+//! # Counts in the file
+//!
+//! No allocation is ever sized by a count read from the file: every list
+//! grows by one item per item actually parsed. Each count is moreover
+//! checked, before the items it counts are read, against what the rest of
+//! the file can hold (`Reader::count`: in ASCII every value takes at
+//! least a character and a separator, in binary its exact size), and a
+//! count the file cannot hold is a [`Status::Io`] error naming the
+//! section and the count:
+//!
+//! | count | at least, per item (ASCII values / binary bytes) |
+//! |---|---|
+//! | `$Entities` numPoints | 5 / 4 + 3·8 + s |
+//! | `$Entities` numCurves, numSurfaces, numVolumes | 9 / 4 + 6·8 + 2s |
+//! | `$Entities` numPhysicalTags, numBounding… | 1 / 4 |
+//! | `$Nodes` numEntityBlocks | 4 / 3·4 + s |
+//! | `$Nodes` numNodes | 4 / s + 3·8 |
+//! | `$Nodes` numNodesInBlock | 4 + p / s + (3 + p)·8 (p parametric coordinates) |
+//! | `$Elements` numEntityBlocks | 4 / 3·4 + s |
+//! | `$Elements` numElements | 2 / 2s |
+//! | `$Elements` numElementsInBlock | 1 + k / (1 + k)·s (k nodes per element) |
+//!
+//! (s is the size of `size_t` given in the header, 4 or 8.) The tags are
+//! never used as indices: `minNodeTag`/`maxNodeTag` and
+//! `minElementTag`/`maxElementTag` only have to match the tags in the
+//! file, and node tags are looked up in a hash map, so a tag of 2^62 costs
+//! nothing. After a section, its header's total count and tag range must
+//! match what the blocks held.
+//!
+//! The reader does not panic on any input: every read is bounds-checked,
+//! every number is parsed with overflow checks, and every loop consumes at
+//! least one value per turn. Work and memory are linear in the file size.
 
 use std::collections::HashMap;
-use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::fmt::Display;
+use std::io::Read;
 use std::path::Path;
-
-use mshio::mshfile::ElementType;
 
 use crate::error::{Error, Result, Status};
 use crate::fem::mesh::Mesh;
 
-fn io_error(path: &Path, what: impl std::fmt::Display) -> Error {
-    Error::new(Status::Io, format!("{}: {what}", path.display()))
+/// A failure while reading: the status and the message, without the path
+/// or the section (added by [`read_msh`]).
+struct Fail {
+    status: Status,
+    message: String,
 }
 
-fn mesh_error(path: &Path, what: impl std::fmt::Display) -> Error {
-    Error::new(Status::InvalidMesh, format!("{}: {what}", path.display()))
+impl Fail {
+    /// Content we cannot use ([`Status::InvalidMesh`]).
+    fn mesh(message: impl Into<String>) -> Self {
+        Fail {
+            status: Status::InvalidMesh,
+            message: message.into(),
+        }
+    }
+
+    /// Prefixes the message with where it happened.
+    fn within(self, context: impl Display) -> Self {
+        Fail {
+            message: format!("{context}: {}", self.message),
+            ..self
+        }
+    }
+}
+
+/// A malformed file ([`Status::Io`]).
+impl From<String> for Fail {
+    fn from(message: String) -> Self {
+        Fail {
+            status: Status::Io,
+            message,
+        }
+    }
+}
+
+type Parse<T> = std::result::Result<T, Fail>;
+
+#[derive(Clone, Copy, PartialEq)]
+enum Encoding {
+    Ascii,
+    Binary { size_t: usize, big_endian: bool },
+}
+
+/// What one item of a counted list takes at least in the file.
+#[derive(Clone, Copy)]
+struct Cost {
+    ints: u64,
+    sizes: u64,
+    floats: u64,
+}
+
+const fn cost(ints: u64, sizes: u64, floats: u64) -> Cost {
+    Cost {
+        ints,
+        sizes,
+        floats,
+    }
+}
+
+fn is_blank(b: u8) -> bool {
+    matches!(b, b' ' | b'\t' | b'\n' | b'\r' | b'\x0b' | b'\x0c')
+}
+
+/// A token of the file for a message: at most 24 bytes, quoted.
+fn show(token: &[u8]) -> String {
+    let cut = &token[..token.len().min(24)];
+    let text = String::from_utf8_lossy(cut);
+    if cut.len() < token.len() {
+        format!("{:?}…", text)
+    } else {
+        format!("{:?}", text)
+    }
+}
+
+/// A cursor over the bytes of the file.
+struct Reader<'a> {
+    bytes: &'a [u8],
+    pos: usize,
+    encoding: Encoding,
+}
+
+impl<'a> Reader<'a> {
+    fn left(&self) -> usize {
+        self.bytes.len() - self.pos
+    }
+
+    fn skip_blanks(&mut self) {
+        while self.pos < self.bytes.len() && is_blank(self.bytes[self.pos]) {
+            self.pos += 1;
+        }
+    }
+
+    /// The next blank-separated token, if any.
+    fn token(&mut self) -> Option<&'a [u8]> {
+        self.skip_blanks();
+        let start = self.pos;
+        while self.pos < self.bytes.len() && !is_blank(self.bytes[self.pos]) {
+            self.pos += 1;
+        }
+        (self.pos > start).then(|| &self.bytes[start..self.pos])
+    }
+
+    fn text(&mut self, what: &str) -> Parse<&'a [u8]> {
+        self.token()
+            .ok_or_else(|| format!("the file ends where {what} was expected").into())
+    }
+
+    fn raw<const N: usize>(&mut self, what: &str) -> Parse<[u8; N]> {
+        let end = self.pos.saturating_add(N);
+        let Some(b) = self.bytes.get(self.pos..end) else {
+            return Err(format!("the file ends where {what} was expected").into());
+        };
+        self.pos = end;
+        let mut out = [0; N];
+        out.copy_from_slice(b);
+        Ok(out)
+    }
+
+    /// One line break (`\n` or `\r\n`), exactly: binary data follows.
+    fn line_break(&mut self, after: &str) -> Parse<()> {
+        let rest = &self.bytes[self.pos..];
+        if rest.starts_with(b"\r\n") {
+            self.pos += 2;
+        } else if rest.starts_with(b"\n") {
+            self.pos += 1;
+        } else {
+            return Err(format!("expected a line break after {after}").into());
+        }
+        Ok(())
+    }
+
+    /// A `size_t`.
+    fn size(&mut self, what: &str) -> Parse<u64> {
+        match self.encoding {
+            Encoding::Ascii => {
+                let t = self.text(what)?;
+                std::str::from_utf8(t)
+                    .ok()
+                    .filter(|s| s.bytes().all(|b| b.is_ascii_digit()))
+                    .and_then(|s| s.parse::<u64>().ok())
+                    .ok_or_else(|| {
+                        format!(
+                            "{what} must be an integer from 0 to {}, found {}",
+                            u64::MAX,
+                            show(t)
+                        )
+                        .into()
+                    })
+            }
+            Encoding::Binary {
+                size_t: 4,
+                big_endian,
+            } => {
+                let b = self.raw::<4>(what)?;
+                Ok(u64::from(if big_endian {
+                    u32::from_be_bytes(b)
+                } else {
+                    u32::from_le_bytes(b)
+                }))
+            }
+            Encoding::Binary { big_endian, .. } => {
+                let b = self.raw::<8>(what)?;
+                Ok(if big_endian {
+                    u64::from_be_bytes(b)
+                } else {
+                    u64::from_le_bytes(b)
+                })
+            }
+        }
+    }
+
+    /// An `int`.
+    fn int(&mut self, what: &str) -> Parse<i32> {
+        match self.encoding {
+            Encoding::Ascii => {
+                let t = self.text(what)?;
+                std::str::from_utf8(t)
+                    .ok()
+                    .and_then(|s| s.parse::<i32>().ok())
+                    .ok_or_else(|| {
+                        format!(
+                            "{what} must be an integer from {} to {}, found {}",
+                            i32::MIN,
+                            i32::MAX,
+                            show(t)
+                        )
+                        .into()
+                    })
+            }
+            Encoding::Binary { big_endian, .. } => {
+                let b = self.raw::<4>(what)?;
+                Ok(if big_endian {
+                    i32::from_be_bytes(b)
+                } else {
+                    i32::from_le_bytes(b)
+                })
+            }
+        }
+    }
+
+    /// A `double`.
+    fn float(&mut self, what: &str) -> Parse<f64> {
+        match self.encoding {
+            Encoding::Ascii => {
+                let t = self.text(what)?;
+                std::str::from_utf8(t)
+                    .ok()
+                    .and_then(|s| s.parse::<f64>().ok())
+                    .ok_or_else(|| format!("{what} must be a number, found {}", show(t)).into())
+            }
+            Encoding::Binary { big_endian, .. } => {
+                let b = self.raw::<8>(what)?;
+                Ok(if big_endian {
+                    f64::from_be_bytes(b)
+                } else {
+                    f64::from_le_bytes(b)
+                })
+            }
+        }
+    }
+
+    /// How many items of `cost` the rest of the file can hold at most.
+    fn room_for(&self, cost: Cost) -> u64 {
+        let left = self.left() as u64;
+        match self.encoding {
+            // Every value takes a character, and all but the last of the
+            // file a separator.
+            Encoding::Ascii => (left + 1) / (2 * (cost.ints + cost.sizes + cost.floats)),
+            Encoding::Binary { size_t, .. } => {
+                left / (4 * cost.ints + size_t as u64 * cost.sizes + 8 * cost.floats)
+            }
+        }
+    }
+
+    /// A count of items of `cost`, refused (before anything is read or
+    /// allocated for them) if the rest of the file cannot hold that many.
+    fn count(&mut self, what: &str, cost: Cost) -> Parse<usize> {
+        let n = self.size(what)?;
+        let room = self.room_for(cost);
+        if n > room {
+            return Err(format!(
+                "{what} is {n}, but the {} bytes left in the file can hold at most {room}",
+                self.left()
+            )
+            .into());
+        }
+        // n ≤ room ≤ the length of the file in memory.
+        Ok(n as usize)
+    }
+
+    /// The line break after a section's start tag, before binary data.
+    fn begin_data(&mut self, section: &str) -> Parse<()> {
+        match self.encoding {
+            Encoding::Ascii => Ok(()),
+            Encoding::Binary { .. } => self.line_break(section),
+        }
+    }
+
+    /// The end tag of a section.
+    fn end(&mut self, tag: &str, after: &str) -> Parse<()> {
+        match self.token() {
+            Some(t) if t == tag.as_bytes() => Ok(()),
+            Some(t) => Err(format!("expected {tag} after {after}, found {}", show(t)).into()),
+            None => Err(format!("the file ends before {tag}").into()),
+        }
+    }
+
+    /// Skips an unknown section `$name` up to its `$Endname` token.
+    fn skip_section(&mut self, name: &[u8]) -> Parse<()> {
+        if name.is_empty() || name.len() > 64 {
+            return Err(format!("{} is not a section name", show(name)).into());
+        }
+        let mut end = b"$End".to_vec();
+        end.extend_from_slice(name);
+        let mut from = self.pos;
+        while let Some(k) = self.bytes[from..].iter().position(|&b| b == b'$') {
+            let at = from + k;
+            let after = at + end.len();
+            if self.bytes[at..].starts_with(&end)
+                && at > 0
+                && is_blank(self.bytes[at - 1])
+                && self.bytes.get(after).is_none_or(|&b| is_blank(b))
+            {
+                self.pos = after;
+                return Ok(());
+            }
+            from = at + 1;
+        }
+        Err(format!("the file ends before {}", String::from_utf8_lossy(&end)).into())
+    }
+}
+
+/// The `$MeshFormat` section: the encoding of the rest of the file.
+fn header(r: &mut Reader) -> Parse<Encoding> {
+    match r.token() {
+        Some(b"$MeshFormat") => {}
+        _ => {
+            return Err(
+                "the file does not start with $MeshFormat: not a Gmsh MSH file"
+                    .to_string()
+                    .into(),
+            );
+        }
+    }
+    let version = r.text("the format version")?;
+    if std::str::from_utf8(version)
+        .ok()
+        .and_then(|s| s.parse::<f64>().ok())
+        != Some(4.1)
+    {
+        return Err(format!(
+            "version {} is not supported: only MSH 4.1 is (gmsh -format msh41)",
+            show(version)
+        )
+        .into());
+    }
+    let binary = match r.text("the file type")? {
+        b"0" => false,
+        b"1" => true,
+        t => {
+            return Err(format!(
+                "the file type must be 0 (ASCII) or 1 (binary), found {}",
+                show(t)
+            )
+            .into());
+        }
+    };
+    let size_t = match r.text("the data size")? {
+        b"8" => 8,
+        b"4" => 4,
+        t => {
+            return Err(format!(
+                "the data size (of size_t) must be 4 or 8, found {}",
+                show(t)
+            )
+            .into());
+        }
+    };
+    let encoding = if binary {
+        while r.bytes.get(r.pos).is_some_and(|&b| b == b' ' || b == b'\t') {
+            r.pos += 1;
+        }
+        r.line_break("the data size")?;
+        let one = r.raw::<4>("the binary mark (the integer 1)")?;
+        let big_endian = match (i32::from_le_bytes(one), i32::from_be_bytes(one)) {
+            (1, _) => false,
+            (_, 1) => true,
+            _ => return Err("the binary mark is not the integer 1".to_string().into()),
+        };
+        Encoding::Binary { size_t, big_endian }
+    } else {
+        Encoding::Ascii
+    };
+    r.end("$EndMeshFormat", "the header")?;
+    Ok(encoding)
+}
+
+/// Of `$Entities`: the first physical tag of each curve and surface.
+#[derive(Default)]
+struct Entities {
+    curves: HashMap<i32, Option<i32>>,
+    surfaces: HashMap<i32, Option<i32>>,
+}
+
+fn entities(r: &mut Reader) -> Parse<Entities> {
+    const POINT: Cost = cost(1, 1, 3);
+    const BOUNDED: Cost = cost(1, 2, 6);
+    let counts = [
+        r.count("the number of points", POINT)?,
+        r.count("the number of curves", BOUNDED)?,
+        r.count("the number of surfaces", BOUNDED)?,
+        r.count("the number of volumes", BOUNDED)?,
+    ];
+    let mut out = Entities::default();
+    for (dim, (&n, name)) in counts
+        .iter()
+        .zip(["point", "curve", "surface", "volume"])
+        .enumerate()
+    {
+        for k in 0..n {
+            let (tag, physical) =
+                entity(r, dim).map_err(|f| f.within(format!("{name} {} of {n}", k + 1)))?;
+            match dim {
+                1 => out.curves.insert(tag, physical),
+                2 => out.surfaces.insert(tag, physical),
+                _ => None,
+            };
+        }
+    }
+    Ok(out)
+}
+
+/// One entity of dimension `dim`: its tag and first physical tag.
+fn entity(r: &mut Reader, dim: usize) -> Parse<(i32, Option<i32>)> {
+    const TAG: Cost = cost(1, 0, 0);
+    let tag = r.int("the entity tag")?;
+    // A point has its coordinates, the others their bounding box.
+    for _ in 0..if dim == 0 { 3 } else { 6 } {
+        r.float("a coordinate")?;
+    }
+    let n = r.count("the number of physical tags", TAG)?;
+    let mut first = None;
+    for _ in 0..n {
+        let p = r.int("a physical tag")?;
+        first.get_or_insert(p);
+    }
+    if dim > 0 {
+        let n = r.count("the number of bounding entities", TAG)?;
+        for _ in 0..n {
+            r.int("a bounding entity tag")?;
+        }
+    }
+    Ok((tag, first))
+}
+
+/// Of `$Nodes`: coordinates, tags, and the index of each tag.
+#[derive(Default)]
+struct Nodes {
+    xyz: Vec<[f64; 3]>,
+    tags: Vec<u64>,
+    index_of: HashMap<u64, usize>,
+}
+
+/// A section's header against what its blocks held: `claimed` is the
+/// header's (count, minimum tag, maximum tag), `range` the smallest and
+/// largest tags found.
+fn check_header(
+    what: &str,
+    claimed: (usize, u64, u64),
+    found: usize,
+    range: (u64, u64),
+) -> Parse<()> {
+    let (n, min, max) = claimed;
+    if found != n {
+        return Err(format!("the header announces {n} {what}s but the blocks hold {found}").into());
+    }
+    if n > 0 && range != (min, max) {
+        return Err(format!(
+            "the header gives {what} tags from {min} to {max}, but the tags in the file run from {} to {}",
+            range.0, range.1
+        )
+        .into());
+    }
+    Ok(())
+}
+
+/// The smallest and largest of `tags`.
+fn tag_range(tags: impl Iterator<Item = u64>) -> (u64, u64) {
+    tags.fold((u64::MAX, 0), |(lo, hi), t| (lo.min(t), hi.max(t)))
+}
+
+fn nodes(r: &mut Reader) -> Parse<Nodes> {
+    const BLOCK: Cost = cost(3, 1, 0);
+    const NODE: Cost = cost(0, 1, 3);
+    let n_blocks = r.count("the number of entity blocks", BLOCK)?;
+    let n_nodes = r.count("the number of nodes", NODE)?;
+    let min = r.size("the minimum node tag")?;
+    let max = r.size("the maximum node tag")?;
+    let mut out = Nodes::default();
+    for b in 0..n_blocks {
+        node_block(r, &mut out)
+            .map_err(|f| f.within(format!("entity block {} of {n_blocks}", b + 1)))?;
+    }
+    check_header(
+        "node",
+        (n_nodes, min, max),
+        out.xyz.len(),
+        tag_range(out.tags.iter().copied()),
+    )?;
+    Ok(out)
+}
+
+fn node_block(r: &mut Reader, out: &mut Nodes) -> Parse<()> {
+    let dim = r.int("the entity dimension")?;
+    if !(0..=3).contains(&dim) {
+        return Err(format!("the entity dimension must be 0 to 3, found {dim}").into());
+    }
+    r.int("the entity tag")?;
+    // Parametric nodes carry `dim` parametric coordinates after x y z.
+    let params = match r.int("the parametric flag")? {
+        0 => 0,
+        1 => dim as u64,
+        p => return Err(format!("the parametric flag must be 0 or 1, found {p}").into()),
+    };
+    let n = r.count("the number of nodes in the block", cost(0, 1, 3 + params))?;
+    let first = out.xyz.len();
+    for k in 0..n {
+        let tag = r.size("a node tag")?;
+        if tag == 0 {
+            return Err("node tag 0 is reserved".to_string().into());
+        }
+        if out.index_of.insert(tag, first + k).is_some() {
+            return Err(format!("node {tag} is defined twice").into());
+        }
+        out.tags.push(tag);
+    }
+    for k in 0..n {
+        let mut p = [0.0; 3];
+        for (c, name) in p.iter_mut().zip(["x", "y", "z"]) {
+            *c = r
+                .float(name)
+                .map_err(|f| f.within(format!("node {}", out.tags[first + k])))?;
+        }
+        for _ in 0..params {
+            r.float("a parametric coordinate")?;
+        }
+        out.xyz.push(p);
+    }
+    Ok(())
+}
+
+/// Of `$Elements`: a block of triangles (dimension 2) or lines
+/// (dimension 1) as node tags, `nodes_per` per element.
+struct Block {
+    dim: i32,
+    entity: i32,
+    nodes_per: usize,
+    node_tags: Vec<u64>,
+}
+
+/// A Gmsh element type for a message.
+fn type_name(ty: i32) -> String {
+    let name = match ty {
+        1 => "2-node lines",
+        2 => "3-node triangles",
+        3 => "4-node quadrangles",
+        4 => "4-node tetrahedra",
+        5 => "8-node hexahedra",
+        6 => "6-node prisms",
+        7 => "5-node pyramids",
+        8 => "3-node lines",
+        9 => "6-node triangles",
+        10 => "9-node quadrangles",
+        15 => "1-node points",
+        16 => "8-node quadrangles",
+        20 => "9-node triangles",
+        21 => "10-node triangles",
+        26 => "4-node lines",
+        _ => return format!("Gmsh type {ty}"),
+    };
+    format!("Gmsh type {ty} ({name})")
+}
+
+fn elements(r: &mut Reader) -> Parse<Vec<Block>> {
+    const BLOCK: Cost = cost(3, 1, 0);
+    // The smallest element: a point, its tag and one node.
+    const ELEMENT: Cost = cost(0, 2, 0);
+    let n_blocks = r.count("the number of entity blocks", BLOCK)?;
+    let n_elements = r.count("the number of elements", ELEMENT)?;
+    let min = r.size("the minimum element tag")?;
+    let max = r.size("the maximum element tag")?;
+    let mut blocks = Vec::new();
+    let (mut found, mut range) = (0, (u64::MAX, 0));
+    for b in 0..n_blocks {
+        let block = element_block(r, &mut found, &mut range)
+            .map_err(|f| f.within(format!("entity block {} of {n_blocks}", b + 1)))?;
+        // Points carry nothing we use.
+        if block.dim > 0 {
+            blocks.push(block);
+        }
+    }
+    check_header("element", (n_elements, min, max), found, range)?;
+    Ok(blocks)
+}
+
+/// One block; counts its elements in `found` and widens `range` to their tags.
+fn element_block(r: &mut Reader, found: &mut usize, range: &mut (u64, u64)) -> Parse<Block> {
+    let dim = r.int("the entity dimension")?;
+    let entity = r.int("the entity tag")?;
+    let ty = r.int("the element type")?;
+    let nodes_per = match (dim, ty) {
+        (2, 2) => 3,
+        (1, 1) => 2,
+        (0, 15) => 1,
+        (2, _) => {
+            return Err(Fail::mesh(format!(
+                "surface {entity} has elements of {}: only 3-node triangles are supported",
+                type_name(ty)
+            )));
+        }
+        (1, _) => {
+            return Err(Fail::mesh(format!(
+                "curve {entity} has elements of {}: only 2-node lines are supported",
+                type_name(ty)
+            )));
+        }
+        (0, _) => {
+            return Err(Fail::mesh(format!(
+                "point {entity} has elements of {}: only 1-node points are supported there",
+                type_name(ty)
+            )));
+        }
+        (3, _) => {
+            return Err(Fail::mesh(format!(
+                "volume {entity} has elements of {}: only 2D meshes are supported",
+                type_name(ty)
+            )));
+        }
+        (d, _) => return Err(format!("the entity dimension must be 0 to 3, found {d}").into()),
+    };
+    let n = r.count(
+        "the number of elements in the block",
+        cost(0, 1 + nodes_per as u64, 0),
+    )?;
+    let mut node_tags = Vec::new();
+    for _ in 0..n {
+        let tag = r.size("an element tag")?;
+        *range = (range.0.min(tag), range.1.max(tag));
+        for _ in 0..nodes_per {
+            node_tags.push(
+                r.size("a node tag")
+                    .map_err(|f| f.within(format!("element {tag}")))?,
+            );
+        }
+    }
+    *found += n;
+    Ok(Block {
+        dim,
+        entity,
+        nodes_per,
+        node_tags,
+    })
+}
+
+/// What the file holds, section by section.
+struct MshFile {
+    entities: Option<Entities>,
+    nodes: Option<Nodes>,
+    elements: Option<Vec<Block>>,
+}
+
+/// A failure within a section.
+fn in_section<T>(section: &str, result: Parse<T>) -> Parse<T> {
+    result.map_err(|f| f.within(section))
+}
+
+fn parse(bytes: &[u8]) -> Parse<MshFile> {
+    let mut r = Reader {
+        bytes,
+        pos: 0,
+        encoding: Encoding::Ascii,
+    };
+    r.encoding = in_section("$MeshFormat", header(&mut r))?;
+    let mut file = MshFile {
+        entities: None,
+        nodes: None,
+        elements: None,
+    };
+    // The last section read, for messages.
+    let mut last = "$MeshFormat".to_string();
+    while let Some(tag) = r.token() {
+        let section = match tag {
+            b"$Entities" => "$Entities",
+            b"$Nodes" => "$Nodes",
+            b"$Elements" => "$Elements",
+            t if t.len() > 1 && t.starts_with(b"$") && !t.starts_with(b"$End") => {
+                let name = String::from_utf8_lossy(t).into_owned();
+                let context = format!("{name} (a section after {last}, skipped)");
+                in_section(&context, r.skip_section(&t[1..]))?;
+                last = name;
+                continue;
+            }
+            t => {
+                return Err(Fail::from(format!(
+                    "after {last}: expected a section such as $Nodes, found {}",
+                    show(t)
+                )));
+            }
+        };
+        let present = match section {
+            "$Entities" => file.entities.is_some(),
+            "$Nodes" => file.nodes.is_some(),
+            _ => file.elements.is_some(),
+        };
+        if present {
+            return Err(Fail::from(format!(
+                "{section}: a second {section} section: only one is supported"
+            )));
+        }
+        in_section(section, r.begin_data(section))?;
+        match section {
+            "$Entities" => file.entities = Some(in_section(section, entities(&mut r))?),
+            "$Nodes" => file.nodes = Some(in_section(section, nodes(&mut r))?),
+            _ => file.elements = Some(in_section(section, elements(&mut r))?),
+        }
+        let end = format!("$End{}", &section[1..]);
+        in_section(section, r.end(&end, "the data the header announces"))?;
+        last = section.to_string();
+    }
+    Ok(file)
+}
+
+/// The whole file, refusing what is not a regular file (a device or a
+/// pipe could be endless) and a file too large for memory.
+fn read_file(path: &Path) -> std::io::Result<Vec<u8>> {
+    let file = std::fs::File::open(path)?;
+    let meta = file.metadata()?;
+    if !meta.is_file() {
+        return Err(std::io::Error::other("not a regular file"));
+    }
+    let len = usize::try_from(meta.len()).map_err(std::io::Error::other)?;
+    let mut bytes = Vec::new();
+    bytes
+        .try_reserve_exact(len)
+        .map_err(|_| std::io::Error::other(format!("{len} bytes do not fit in memory")))?;
+    // A file growing meanwhile is read as it was when opened.
+    file.take(len as u64).read_to_end(&mut bytes)?;
+    Ok(bytes)
 }
 
 /// Reads a Gmsh MSH 4.1 file into a validated [`Mesh`] with its tagged
 /// boundary edges. `index_base` only affects how messages number items.
+///
+/// Errors: [`Status::Io`] for a file that cannot be read or is not a
+/// well-formed MSH 4.1 file (the message names the section and what is
+/// wrong, e.g. a count the file cannot hold), [`Status::InvalidMesh`] for
+/// well-formed content we cannot use.
 pub fn read_msh(path: &Path, index_base: usize) -> Result<Mesh> {
-    let bytes = std::fs::read(path).map_err(|e| io_error(path, e))?;
-    // mshio still has a few `expect`s on malformed input: keep them inside.
-    let parsed = catch_unwind(AssertUnwindSafe(|| {
-        mshio::parse_msh_bytes(bytes.as_slice()).map_err(|e| e.to_string())
-    }))
-    .map_err(|_| io_error(path, "malformed MSH file"))?;
-    let msh = parsed.map_err(|e| io_error(path, format!("not a readable MSH 4.1 file: {e}")))?;
-    let data = msh.data;
-    let entities = data
-        .entities
-        .ok_or_else(|| mesh_error(path, "no $Entities section: physical groups are needed"))?;
-    let surface_body: HashMap<i32, Option<i32>> = entities
-        .surfaces
-        .iter()
-        .map(|s| (s.tag, s.physical_tags.first().copied()))
-        .collect();
-    let curve_tag: HashMap<i32, Option<i32>> = entities
-        .curves
-        .iter()
-        .map(|c| (c.tag, c.physical_tags.first().copied()))
-        .collect();
+    let bytes =
+        read_file(path).map_err(|e| Error::new(Status::Io, format!("{}: {e}", path.display())))?;
+    build(&bytes, index_base)
+        .map_err(|f| Error::new(f.status, format!("{}: {}", path.display(), f.message)))
+}
 
-    let node_data = data
+fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
+    let file = parse(bytes)?;
+    let entities = file
+        .entities
+        .ok_or_else(|| Fail::mesh("$Entities: no such section, and physical groups are needed"))?;
+    let nodes = file
         .nodes
-        .ok_or_else(|| mesh_error(path, "no $Nodes section"))?;
-    let mut nodes = Vec::with_capacity(node_data.num_nodes as usize);
-    let mut index_of: HashMap<u64, usize> = HashMap::new();
-    let mut next_tag = node_data.min_node_tag;
-    for block in &node_data.node_blocks {
-        let mut tags: Vec<u64> = match &block.node_tags {
-            Some(map) => {
-                let mut t = vec![0u64; block.nodes.len()];
-                for (&tag, &i) in map {
-                    t[i] = tag;
-                }
-                t
-            }
-            None => (0..block.nodes.len() as u64)
-                .map(|k| next_tag + k)
-                .collect(),
-        };
-        next_tag += block.nodes.len() as u64;
-        for (node, tag) in block.nodes.iter().zip(tags.drain(..)) {
-            index_of.insert(tag, nodes.len());
-            nodes.push([node.x, node.y, node.z]);
-        }
-    }
+        .ok_or_else(|| Fail::mesh("$Nodes: no such section"))?;
+    let blocks = file
+        .elements
+        .ok_or_else(|| Fail::mesh("$Elements: no such section"))?;
+
     let scale = nodes
+        .xyz
         .iter()
         .flat_map(|p| [p[0].abs(), p[1].abs()])
         .fold(0.0, f64::max)
         .max(f64::MIN_POSITIVE);
+    // A NaN z is refused too.
     if let Some((k, p)) = nodes
+        .xyz
         .iter()
         .enumerate()
-        .find(|(_, p)| p[2].abs() > 1e-12 * scale)
+        .find(|(_, p)| p[2].is_nan() || p[2].abs() > 1e-12 * scale)
     {
-        let tag = index_of
-            .iter()
-            .find(|(_, i)| **i == k)
-            .map_or(0, |(t, _)| *t);
-        return Err(mesh_error(
-            path,
-            format!(
-                "node {tag} has z = {}: only 2D meshes in the plane z = 0 are supported",
-                p[2]
-            ),
-        ));
+        return Err(Fail::mesh(format!(
+            "$Nodes: node {} has z = {}: only 2D meshes in the plane z = 0 are supported",
+            nodes.tags[k], p[2]
+        )));
     }
 
-    let elements = data
-        .elements
-        .ok_or_else(|| mesh_error(path, "no $Elements section"))?;
-    let lookup = |tag: u64| -> Result<usize> {
-        index_of.get(&tag).copied().ok_or_else(|| {
-            mesh_error(
-                path,
-                format!("an element refers to node {tag}, which is not defined"),
-            )
+    let lookup = |tag: u64| -> Parse<usize> {
+        nodes.index_of.get(&tag).copied().ok_or_else(|| {
+            Fail::mesh(format!(
+                "$Elements: an element refers to node {tag}, which is not defined in $Nodes"
+            ))
         })
     };
     let (mut triangles, mut bodies, mut edges, mut edge_tags) =
         (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-    for block in &elements.element_blocks {
-        match (block.entity_dim, block.element_type) {
-            (2, ElementType::Tri3) => {
-                let body = surface_body
-                    .get(&block.entity_tag)
-                    .copied()
-                    .flatten()
-                    .ok_or_else(|| {
-                        mesh_error(
-                            path,
-                            format!(
-                                "surface {} has no physical group: every surface must be a body",
-                                block.entity_tag
-                            ),
-                        )
-                    })?;
-                let first = triangles.len();
-                let mut area = 0.0;
-                for e in &block.elements {
-                    let t = [
-                        lookup(e.nodes[0])?,
-                        lookup(e.nodes[1])?,
-                        lookup(e.nodes[2])?,
-                    ];
-                    let [a, b, c] = t.map(|v| nodes[v]);
-                    area += (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
-                    triangles.push(t);
-                    bodies.push(body);
-                }
-                // Gmsh orients a surface's triangles along its normal, which
-                // may be −z: make the surface counter-clockwise as a whole
-                // (individual inverted triangles, if any, stay inverted).
-                if area < 0.0 {
-                    for t in &mut triangles[first..] {
-                        t.swap(1, 2);
-                    }
+    for block in &blocks {
+        if block.dim == 2 {
+            let body = entities
+                .surfaces
+                .get(&block.entity)
+                .copied()
+                .flatten()
+                .ok_or_else(|| {
+                    Fail::mesh(format!(
+                        "$Elements: surface {} has no physical group in $Entities: every surface must be a body",
+                        block.entity
+                    ))
+                })?;
+            let first = triangles.len();
+            let mut area = 0.0;
+            for e in block.node_tags.chunks_exact(block.nodes_per) {
+                let t = [lookup(e[0])?, lookup(e[1])?, lookup(e[2])?];
+                let [a, b, c] = t.map(|v| nodes.xyz[v]);
+                area += (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+                triangles.push(t);
+                bodies.push(body);
+            }
+            // Gmsh orients a surface's triangles along its normal, which
+            // may be −z: make the surface counter-clockwise as a whole
+            // (individual inverted triangles, if any, stay inverted).
+            if area < 0.0 {
+                for t in &mut triangles[first..] {
+                    t.swap(1, 2);
                 }
             }
-            (2, other) => {
-                return Err(mesh_error(
-                    path,
-                    format!(
-                        "surface {} has elements of type {other:?}: only 3-node triangles are supported",
-                        block.entity_tag
-                    ),
-                ));
-            }
-            (1, ElementType::Lin2) => {
-                // Curves without a physical group carry no load or contact.
-                if let Some(tag) = curve_tag.get(&block.entity_tag).copied().flatten() {
-                    for e in &block.elements {
-                        edges.push([lookup(e.nodes[0])?, lookup(e.nodes[1])?]);
-                        edge_tags.push(tag);
-                    }
-                }
-            }
-            (1, other) => {
-                return Err(mesh_error(
-                    path,
-                    format!(
-                        "curve {} has elements of type {other:?}: only 2-node lines are supported",
-                        block.entity_tag
-                    ),
-                ));
-            }
-            (0, _) => {}
-            (d, _) => {
-                return Err(mesh_error(
-                    path,
-                    format!(
-                        "entity {} has dimension {d}: only 2D meshes are supported",
-                        block.entity_tag
-                    ),
-                ));
+        } else if let Some(tag) = entities.curves.get(&block.entity).copied().flatten() {
+            // Curves without a physical group carry no load or contact.
+            for e in block.node_tags.chunks_exact(block.nodes_per) {
+                edges.push([lookup(e[0])?, lookup(e[1])?]);
+                edge_tags.push(tag);
             }
         }
     }
     if triangles.is_empty() {
-        return Err(mesh_error(path, "no triangles in a physical surface"));
+        return Err(Fail::mesh("$Elements: no triangles in a physical surface"));
     }
-    let coords: Vec<[f64; 2]> = nodes.iter().map(|p| [p[0], p[1]]).collect();
-    let mut mesh = Mesh::new(coords, triangles, bodies, index_base)?;
-    mesh.set_boundary_edges(&edges, &edge_tags)?;
+    let coords: Vec<[f64; 2]> = nodes.xyz.iter().map(|p| [p[0], p[1]]).collect();
+    let mesh_error = |e: Error| Fail {
+        status: e.status(),
+        message: e.message().to_string(),
+    };
+    let mut mesh = Mesh::new(coords, triangles, bodies, index_base).map_err(mesh_error)?;
+    mesh.set_boundary_edges(&edges, &edge_tags)
+        .map_err(mesh_error)?;
     Ok(mesh)
 }
