@@ -1626,6 +1626,79 @@ static void sh_clear_mesh(shadow_t *s) {
   memset(s, 0, sizeof *s);
   s->relres = NAN;
 }
+/* The header's orientation rule, written independently of the library:
+ * triangles joined by an edge shared by exactly two triangles of one body
+ * form regions; the numbering of each region is made consistent (neighbours
+ * traverse their shared edge in opposite directions, from the region's
+ * first triangle on) and the region is turned if its signed area is
+ * negative. Turning swaps the last two nodes. */
+typedef struct {
+  int lo, hi, t, fwd;
+} sh_side;
+static int sh_side_cmp(const void *a, const void *b) {
+  const sh_side *x = a, *y = b;
+  if (x->lo != y->lo) return x->lo < y->lo ? -1 : 1;
+  if (x->hi != y->hi) return x->hi < y->hi ? -1 : 1;
+  return x->t < y->t ? -1 : x->t > y->t;
+}
+static double sh_j(const double *xy, const int *v) {
+  const double *a = &xy[2 * v[0]], *b = &xy[2 * v[1]], *c = &xy[2 * v[2]];
+  return (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+}
+static void sh_orient(int nt, int *tri, const int *body, const double *xy) {
+  int any = 0;
+  for (int t = 0; t < nt && !any; ++t) any = sh_j(xy, &tri[3 * t]) < 0;
+  if (!any) return;
+  sh_side *sd = xmalloc(sizeof *sd * 3 * (size_t)nt);
+  for (int t = 0; t < nt; ++t)
+    for (int k = 0; k < 3; ++k) {
+      int p = tri[3 * t + k], q = tri[3 * t + (k + 1) % 3];
+      sd[3 * t + k] = (sh_side){p < q ? p : q, p < q ? q : p, t, p < q};
+    }
+  qsort(sd, 3 * (size_t)nt, sizeof *sd, sh_side_cmp);
+  int *nb = xmalloc(sizeof(int) * 6 * (size_t)nt), *nnb = xcalloc((size_t)nt, sizeof(int));
+  for (size_t i = 0; i < 3 * (size_t)nt;) {
+    size_t j = i + 1;
+    while (j < 3 * (size_t)nt && sd[j].lo == sd[i].lo && sd[j].hi == sd[i].hi) ++j;
+    if (j - i == 2 && body[sd[i].t] == body[sd[i + 1].t]) {
+      int a = sd[i].t, b = sd[i + 1].t, same = sd[i].fwd == sd[i + 1].fwd;
+      nb[2 * (3 * a + nnb[a])] = b, nb[2 * (3 * a + nnb[a]) + 1] = same, nnb[a]++;
+      nb[2 * (3 * b + nnb[b])] = a, nb[2 * (3 * b + nnb[b]) + 1] = same, nnb[b]++;
+    }
+    i = j;
+  }
+  int *flip = xcalloc((size_t)nt, sizeof(int)), *seen = xcalloc((size_t)nt, sizeof(int));
+  int *queue = xmalloc(sizeof(int) * (size_t)nt);
+  for (int root = 0; root < nt; ++root) {
+    if (seen[root]) continue;
+    int head = 0, tail = 0;
+    seen[root] = 1;
+    queue[tail++] = root;
+    double area = 0;
+    while (head < tail) {
+      int t = queue[head++];
+      area += flip[t] ? -sh_j(xy, &tri[3 * t]) : sh_j(xy, &tri[3 * t]);
+      for (int k = 0; k < nnb[t]; ++k) {
+        int u = nb[2 * (3 * t + k)];
+        if (!seen[u]) {
+          seen[u] = 1;
+          flip[u] = flip[t] ^ nb[2 * (3 * t + k) + 1];
+          queue[tail++] = u;
+        }
+      }
+    }
+    if (area < 0)
+      for (int k = 0; k < tail; ++k) flip[queue[k]] ^= 1;
+  }
+  for (int t = 0; t < nt; ++t)
+    if (flip[t]) {
+      int x = tri[3 * t + 1];
+      tri[3 * t + 1] = tri[3 * t + 2];
+      tri[3 * t + 2] = x;
+    }
+  free(sd), free(nb), free(nnb), free(flip), free(seen), free(queue);
+}
+
 static void sh_new_mesh(shadow_t *s, int nn, const double *xy, int nt, const int *tri0, const int *body, int base) {
   sh_clear_mesh(s);
   s->has_mesh = s->exact = 1;
@@ -1638,6 +1711,7 @@ static void sh_new_mesh(shadow_t *s, int nn, const double *xy, int nt, const int
   for (int k = 0; k < 3 * nt; ++k) s->tri[k] = tri0[k];
   s->body = xmalloc(sizeof(int) * (size_t)nt);
   memcpy(s->body, body, sizeof(int) * (size_t)nt);
+  sh_orient(nt, s->tri, s->body, s->xy);
   s->used = xcalloc((size_t)nn, sizeof(int));
   for (int k = 0; k < 3 * nt; ++k) s->used[s->tri[k]] = 1;
   s->nforce = xcalloc(2 * (size_t)nn, sizeof(double));

@@ -1421,7 +1421,7 @@ fn built(report: &mut String) {
          active-set state (`contact_elements()` is an error: there are none). Strains, stresses, \
          reactions and contact pressures are computed only when asked for (accessors), never during \
          the solve. The core library builds without the optional I/O (`--no-default-features`: no \
-         `vtkio`, no `mshio` in the dependency tree; checked in CI).\n"
+         `vtkio` in the dependency tree, no Gmsh reader; checked in CI).\n"
     )
     .unwrap();
 }
