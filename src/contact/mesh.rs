@@ -10,9 +10,15 @@ use crate::error::{Error, Result};
 use crate::fem::element::TriGeometry;
 use crate::fem::mesh::Mesh;
 
-/// Interface nodes and edges of one side of a pair.
-struct Side {
-    body: i32,
+/// One side of a contact interface: a chain of edges of one body, each
+/// with the body's outward normal.
+#[derive(Debug, Clone)]
+pub struct Side {
+    /// The name of the side in messages (a boundary-edge tag, or the host
+    /// code's own surface number).
+    pub tag: i32,
+    /// The body the side bounds.
+    pub body: i32,
     nodes: HashSet<usize>,
     /// edge (min, max) -> outward normal of the body
     edges: HashMap<(usize, usize), [f64; 2]>,
@@ -20,9 +26,73 @@ struct Side {
     oriented: Vec<[usize; 2]>,
 }
 
+impl Side {
+    /// The side made of the boundary edges of `mesh` tagged `tag`, which
+    /// must all bound one body (their owning triangles give the normals).
+    pub fn of_tag(mesh: &Mesh, tag: i32) -> Result<Side> {
+        side_of(mesh, tag)
+    }
+
+    /// The side of body `body` made of `edges` (node pairs indexing `x`),
+    /// each given with its body on the left of p → q (the
+    /// counter-clockwise orientation of a body's boundary). Refuses an
+    /// edge of zero length or given twice, naming it (in `base`).
+    pub fn from_edges(
+        x: &[[f64; 2]],
+        base: usize,
+        tag: i32,
+        body: i32,
+        edges: &[[usize; 2]],
+    ) -> Result<Side> {
+        let mut side = Side {
+            tag,
+            body,
+            nodes: HashSet::new(),
+            edges: HashMap::new(),
+            oriented: Vec::new(),
+        };
+        if edges.is_empty() {
+            return Err(Error::contact(format!("contact side {tag} has no edges")));
+        }
+        for (k, &[p, q]) in edges.iter().enumerate() {
+            let (xp, xq) = (x[p], x[q]);
+            let len = dist(xp, xq);
+            if len.is_nan() || len <= 0.0 {
+                return Err(Error::contact(format!(
+                    "edge {} of contact side {tag} (nodes {}, {}) has zero length",
+                    k + base,
+                    p + base,
+                    q + base
+                )));
+            }
+            // Body on the left of p → q: the outward normal is the right
+            // one, and q → p has the body on its right.
+            let n = [(xq[1] - xp[1]) / len, -(xq[0] - xp[0]) / len];
+            if side.edges.insert((p.min(q), p.max(q)), n).is_some() {
+                return Err(Error::contact(format!(
+                    "edge {} of contact side {tag} (nodes {}, {}) is given twice",
+                    k + base,
+                    p + base,
+                    q + base
+                )));
+            }
+            side.nodes.insert(p);
+            side.nodes.insert(q);
+            side.oriented.push([q, p]);
+        }
+        Ok(side)
+    }
+
+    /// Whether node `v` is on the side.
+    pub fn contains(&self, v: usize) -> bool {
+        self.nodes.contains(&v)
+    }
+}
+
 fn side_of(mesh: &Mesh, tag: i32) -> Result<Side> {
     let mut body = None;
     let mut side = Side {
+        tag,
         body: 0,
         nodes: HashSet::new(),
         edges: HashMap::new(),
@@ -80,6 +150,30 @@ fn side_of(mesh: &Mesh, tag: i32) -> Result<Side> {
     }
 }
 
+/// The node coordinates B is built on and the index base its messages use.
+#[derive(Clone, Copy)]
+pub struct Nodes<'a> {
+    /// Coordinates of every node an element of B may use.
+    pub x: &'a [[f64; 2]],
+    /// The index base of messages.
+    pub base: usize,
+}
+
+impl<'a> Nodes<'a> {
+    /// The nodes of a mesh.
+    pub fn of(mesh: &'a Mesh) -> Nodes<'a> {
+        Nodes {
+            x: mesh.nodes(),
+            base: mesh.index_base(),
+        }
+    }
+
+    /// The corners of a triangle of these nodes.
+    pub fn corners(&self, tri: &[usize; 3]) -> [[f64; 2]; 3] {
+        [self.x[tri[0]], self.x[tri[1]], self.x[tri[2]]]
+    }
+}
+
 /// Resolves the bodies of a pair of tags, checking that they are distinct.
 pub fn pair_bodies(mesh: &Mesh, tag_a: i32, tag_b: i32) -> Result<(i32, i32)> {
     if tag_a == tag_b {
@@ -117,10 +211,19 @@ pub fn build_conforming(
     tag_a: i32,
     tag_b: i32,
 ) -> Result<Vec<ContactElement>> {
-    let a = side_of(mesh, tag_a)?;
-    let b = side_of(mesh, tag_b)?;
-    let x = mesh.nodes();
-    let base = mesh.index_base();
+    let (a, b) = (side_of(mesh, tag_a)?, side_of(mesh, tag_b)?);
+    conforming(Nodes::of(mesh), pair, &a, &b)
+}
+
+/// [`build_conforming`] on two sides.
+pub fn conforming(
+    nodes: Nodes<'_>,
+    pair: usize,
+    a: &Side,
+    b: &Side,
+) -> Result<Vec<ContactElement>> {
+    let (tag_a, tag_b) = (a.tag, b.tag);
+    let (x, base) = (nodes.x, nodes.base);
 
     // Local edge length and averaged outward normal at every node of side a.
     let mut local_h: HashMap<usize, f64> = HashMap::new();
@@ -230,7 +333,7 @@ pub fn build_conforming(
             ([a1, b1, b2], dist(x[a1], x[b1]), b2),
             ([a1, b2, a2], dist(x[a2], x[b2]), a1),
         ] {
-            let geo = TriGeometry::new(&mesh.corners(&tri));
+            let geo = TriGeometry::new(&nodes.corners(&tri));
             elements.push(ContactElement {
                 nodes: tri,
                 normal: n,
@@ -257,10 +360,20 @@ pub fn check_user_mesh(
     tag_b: i32,
     triangles: &[[usize; 3]],
 ) -> Result<(Vec<ContactElement>, usize)> {
-    let a = side_of(mesh, tag_a)?;
-    let b = side_of(mesh, tag_b)?;
-    let x = mesh.nodes();
-    let base = mesh.index_base();
+    let (a, b) = (side_of(mesh, tag_a)?, side_of(mesh, tag_b)?);
+    checked_triangles(Nodes::of(mesh), pair, &a, &b, triangles)
+}
+
+/// [`check_user_mesh`] on two sides.
+pub fn checked_triangles(
+    nodes_of: Nodes<'_>,
+    pair: usize,
+    a: &Side,
+    b: &Side,
+    triangles: &[[usize; 3]],
+) -> Result<(Vec<ContactElement>, usize)> {
+    let (tag_a, tag_b) = (a.tag, b.tag);
+    let (x, base) = (nodes_of.x, nodes_of.base);
     let n_nodes = x.len();
     let mut out = Vec::with_capacity(triangles.len());
     let mut flipped = 0;
@@ -307,7 +420,7 @@ pub fn check_user_mesh(
             )));
         };
         let mut nodes = *tri;
-        let mut geo = TriGeometry::new(&mesh.corners(&nodes));
+        let mut geo = TriGeometry::new(&nodes_of.corners(&nodes));
         // dJ when the side-b nodes move along +n (the gap opens).
         let sens: f64 = (0..3)
             .filter(|&k| !on_a[k])
@@ -320,7 +433,7 @@ pub fn check_user_mesh(
         }
         if sens < 0.0 {
             nodes.swap(1, 2);
-            geo = TriGeometry::new(&mesh.corners(&nodes));
+            geo = TriGeometry::new(&nodes_of.corners(&nodes));
             flipped += 1;
         }
         let apex = tri[(0..3)
@@ -353,11 +466,21 @@ pub fn build_nonconforming(
     tag_a: i32,
     tag_b: i32,
 ) -> Result<Vec<ContactElement>> {
-    let a = side_of(mesh, tag_a)?;
-    let b = side_of(mesh, tag_b)?;
-    let x = mesh.nodes();
-    let chain_a = chain(mesh, &a, tag_a)?;
-    let mut chain_b = chain(mesh, &b, tag_b)?;
+    let (a, b) = (side_of(mesh, tag_a)?, side_of(mesh, tag_b)?);
+    nonconforming(Nodes::of(mesh), pair, &a, &b)
+}
+
+/// [`build_nonconforming`] on two sides.
+pub fn nonconforming(
+    nodes: Nodes<'_>,
+    pair: usize,
+    a: &Side,
+    b: &Side,
+) -> Result<Vec<ContactElement>> {
+    let (tag_a, tag_b) = (a.tag, b.tag);
+    let x = nodes.x;
+    let chain_a = chain(nodes.base, a)?;
+    let mut chain_b = chain(nodes.base, b)?;
     // Each chain has its body on the right; facing each other they run in
     // opposite directions: turn b around.
     chain_b.reverse();
@@ -393,7 +516,7 @@ pub fn build_nonconforming(
         best.1
     };
     let s_b: Vec<f64> = chain_b.iter().map(|&v| project(x[v])).collect();
-    let base = mesh.index_base();
+    let base = nodes.base;
     if let Some(k) = (1..s_b.len()).find(|&k| s_b[k] < s_b[k - 1]) {
         return Err(Error::contact(format!(
             "interface tag {tag_b} folds back along interface tag {tag_a} at node {}: the two interfaces must face each other",
@@ -434,13 +557,13 @@ pub fn build_nonconforming(
             j += 1;
         }
     }
-    Ok(check_user_mesh(mesh, pair, tag_a, tag_b, &tris)?.0)
+    Ok(checked_triangles(nodes, pair, a, b, &tris)?.0)
 }
 
 /// The edges of one side chained into a single polyline, in their
 /// orientation (body on the right).
-fn chain(mesh: &Mesh, side: &Side, tag: i32) -> Result<Vec<usize>> {
-    let base = mesh.index_base();
+fn chain(base: usize, side: &Side) -> Result<Vec<usize>> {
+    let tag = side.tag;
     let mut next: HashMap<usize, usize> = HashMap::new();
     let mut has_prev: HashSet<usize> = HashSet::new();
     for &[p, q] in &side.oriented {
@@ -506,9 +629,15 @@ pub fn build_all(mesh: &Mesh, pairs: &[ContactPair]) -> Result<Vec<ContactElemen
 /// Builds B for a pair: conforming (node-to-node quads) when the nodes of
 /// the two interfaces match, else by triangulating the strip between them.
 pub fn build(mesh: &Mesh, pair: usize, tag_a: i32, tag_b: i32) -> Result<Vec<ContactElement>> {
-    match build_conforming(mesh, pair, tag_a, tag_b) {
+    let (a, b) = (side_of(mesh, tag_a)?, side_of(mesh, tag_b)?);
+    strip(Nodes::of(mesh), pair, &a, &b)
+}
+
+/// [`build`] on two sides.
+pub fn strip(nodes: Nodes<'_>, pair: usize, a: &Side, b: &Side) -> Result<Vec<ContactElement>> {
+    match conforming(nodes, pair, a, b) {
         Ok(elements) => Ok(elements),
-        Err(conforming) => build_nonconforming(mesh, pair, tag_a, tag_b).map_err(|e| {
+        Err(conforming) => nonconforming(nodes, pair, a, b).map_err(|e| {
             Error::contact(format!(
                 "{} (as a conforming interface: {})",
                 e.message(),

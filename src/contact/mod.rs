@@ -26,9 +26,12 @@ pub use law::{
     linearised_opening, opening_coefficient,
 };
 pub use mesh::{
-    build, build_all, build_conforming, build_nonconforming, check_user_mesh, pair_bodies,
+    Nodes, Side, build, build_all, build_conforming, build_nonconforming, check_user_mesh,
+    pair_bodies,
 };
-pub use set::{ContactSet, ElementLaw, initial_active_set};
+pub use set::{
+    ActiveSet, ContactSet, ElementLaw, IterationRecord, element_laws, initial_active_set, softer,
+};
 
 use crate::error::{Error, Result};
 

@@ -1,21 +1,24 @@
 //! The elements of B in one solve: each element's law (constitutive matrix
 //! and tempered Jacobian), its stiffness and initial-gap load, its
 //! unknowns, and the inversion test that decides which elements are
-//! active. Built once per solve from B (which depends only on the mesh and
-//! the pairs) and the solve's options.
+//! active, and the active set a loop carries from iteration to iteration
+//! (with its history and the sets visited: a revisit is a cycle). Built
+//! once per solve from B (which depends only on the mesh and the pairs)
+//! and the solve's options; the built-in solver and a host code's own
+//! loop use the same set.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, HashSet};
 
 use super::law::{
     ContactStiffness, contact_pressure, contact_stiffness, law_matrix, linearised_opening,
     opening_coefficient,
 };
-use super::{ContactElement, ContactOptions, ContactPair, InversionTest};
+use super::mesh::Nodes;
+use super::{ContactElement, ContactOptions, InversionTest};
 use crate::error::{Error, Result, Status, ensure_finite};
-use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
+use crate::fem::assembly::Pattern;
 use crate::fem::element::{TriGeometry, jmin_of_lambda};
 use crate::fem::material::Material;
-use crate::fem::mesh::Mesh;
 
 /// The law of one contact element: its constitutive matrix and its
 /// tempered Jacobian. An active element is inverted, so max(J, Jmin) =
@@ -31,7 +34,7 @@ pub struct ElementLaw {
 
 /// The elements of B with everything a solve needs of them.
 pub struct ContactSet<'a> {
-    mesh: &'a Mesh,
+    nodes: Nodes<'a>,
     elements: &'a [ContactElement],
     options: ContactOptions,
     laws: Vec<ElementLaw>,
@@ -42,22 +45,22 @@ pub struct ContactSet<'a> {
 }
 
 impl<'a> ContactSet<'a> {
-    /// The set of `elements` (B of `pairs` on `mesh`) under `options`, on
-    /// the unknowns of `dofs` with the prescribed displacements
-    /// `prescribed` (a global vector). E_c defaults to the softer body's
-    /// Young's modulus, λ to the mesh size.
+    /// The set of `elements` (B over `nodes`) under `options`, with each
+    /// element's law from [`element_laws`]. `equation(g)` numbers the
+    /// unknown of global DOF g = 2·node + component (`None`: no unknown);
+    /// `prescribed` gives the values of the DOFs without one (a global
+    /// vector; empty: zero), whose share goes into the elements' loads.
     pub fn new(
-        mesh: &'a Mesh,
+        nodes: Nodes<'a>,
         elements: &'a [ContactElement],
-        pairs: &[ContactPair],
-        material: impl Fn(i32) -> Material,
-        (dofs, prescribed): (&DofMap, &[f64]),
+        laws: Vec<ElementLaw>,
+        equation: impl Fn(usize) -> Option<usize>,
+        prescribed: &[f64],
         options: &ContactOptions,
     ) -> Result<ContactSet<'a>> {
-        let laws = element_laws(mesh, elements, pairs, material, options)?;
         let geos: Vec<TriGeometry> = elements
             .iter()
-            .map(|el| TriGeometry::new(&mesh.corners(&el.nodes)))
+            .map(|el| TriGeometry::new(&nodes.corners(&el.nodes)))
             .collect();
         // An active element is inverted, so its T = Jmin: its matrix and
         // initial-gap load do not change between iterations.
@@ -66,22 +69,18 @@ impl<'a> ContactSet<'a> {
             .enumerate()
             .map(|(k, el)| contact_stiffness(&geos[k], &laws[k].d, el.normal, el.j0, laws[k].t))
             .collect();
-        let name = |k: usize| format!("contact element {}", k + mesh.index_base());
+        let name = |k: usize| format!("contact element {}", k + nodes.base);
         let values = stiffness
             .iter()
             .flat_map(|cs| cs.k.iter().chain(&cs.f0).copied());
         ensure_finite(values, 42, "stiffness", name)?;
         let unknowns: Vec<[Option<usize>; 6]> = elements
             .iter()
-            .map(|el| {
-                let mut gd = [0usize; 6];
-                dofs.element_dofs(&el.nodes, &mut gd);
-                gd.map(|g| Some(dofs.free(g)).filter(|&f| f != NOT_FREE))
-            })
+            .map(|el| std::array::from_fn(|a| equation(2 * el.nodes[a / 2] + a % 2)))
             .collect();
-        let loads = element_loads(elements, dofs, &stiffness, &unknowns, prescribed);
+        let loads = element_loads(elements, &stiffness, &unknowns, prescribed);
         Ok(ContactSet {
-            mesh,
+            nodes,
             elements,
             options: *options,
             laws,
@@ -92,9 +91,9 @@ impl<'a> ContactSet<'a> {
         })
     }
 
-    /// The mesh.
-    pub fn mesh(&self) -> &'a Mesh {
-        self.mesh
+    /// The nodes B is built on.
+    pub fn nodes(&self) -> Nodes<'a> {
+        self.nodes
     }
 
     /// Number of elements.
@@ -152,7 +151,7 @@ impl<'a> ContactSet<'a> {
                         linearised_opening(&self.geos[k], law, el.normal, &ue)
                     }
                     InversionTest::Literal => {
-                        let mut x = self.mesh.corners(&el.nodes);
+                        let mut x = self.nodes.corners(&el.nodes);
                         for (i, p) in x.iter_mut().enumerate() {
                             p[0] += ue[2 * i];
                             p[1] += ue[2 * i + 1];
@@ -244,22 +243,21 @@ impl<'a> ContactSet<'a> {
     }
 }
 
-/// Each element's law: D_c of the pair's softer body with E_c, and
-/// T = h³/λ_c.
-fn element_laws(
-    mesh: &Mesh,
+/// Each element's law: D_c of its pair's softer body `soft(pair)` with
+/// E_c (default: that body's E), and T = h³/λ_c (default λ_c: `size`, the
+/// model size). Refuses a T that is not a positive finite number.
+pub fn element_laws(
+    base: usize,
     elements: &[ContactElement],
-    pairs: &[ContactPair],
-    material: impl Fn(i32) -> Material,
+    soft: impl Fn(usize) -> Material,
+    size: f64,
     options: &ContactOptions,
 ) -> Result<Vec<ElementLaw>> {
-    let lambda_c = options.lambda.unwrap_or_else(|| mesh.size());
+    let lambda_c = options.lambda.unwrap_or(size);
     let laws: Vec<ElementLaw> = elements
         .iter()
         .map(|el| {
-            let p = &pairs[el.pair];
-            let (ma, mb) = (material(p.body_a), material(p.body_b));
-            let soft = if mb.young() < ma.young() { mb } else { ma };
+            let soft = soft(el.pair);
             let e_c = options.contact_modulus.unwrap_or(soft.young());
             let d = law_matrix(options.law, e_c, &soft, el.normal);
             let t = jmin_of_lambda(el.h, lambda_c);
@@ -271,28 +269,32 @@ fn element_laws(
             Status::NumericalFailure,
             format!(
                 "contact element {}: Jmin = h³/λ is not a positive finite number",
-                k + mesh.index_base()
+                k + base
             ),
         ));
     }
     Ok(laws)
 }
 
+/// The softer of two materials (the first when equal): the default E_c
+/// and the stick law's ν of a pair.
+pub fn softer(a: Material, b: Material) -> Material {
+    if b.young() < a.young() { b } else { a }
+}
+
 /// Each element's load on its free unknowns: the initial-gap load minus
 /// the share of the prescribed displacements.
 fn element_loads(
     elements: &[ContactElement],
-    dofs: &DofMap,
     stiffness: &[ContactStiffness],
     unknowns: &[[Option<usize>; 6]],
     prescribed: &[f64],
 ) -> Vec<[f64; 6]> {
+    let value = |g: usize| prescribed.get(g).copied().unwrap_or(0.0);
     elements
         .iter()
         .enumerate()
         .map(|(k, el)| {
-            let mut gd = [0usize; 6];
-            dofs.element_dofs(&el.nodes, &mut gd);
             std::array::from_fn(|a| {
                 if unknowns[k][a].is_none() {
                     return 0.0;
@@ -300,13 +302,126 @@ fn element_loads(
                 let mut r = stiffness[k].f0[a];
                 for b in 0..6 {
                     if unknowns[k][b].is_none() {
-                        r -= stiffness[k].k[a * 6 + b] * prescribed[gd[b]];
+                        let g = 2 * el.nodes[b / 2] + b % 2;
+                        r -= stiffness[k].k[a * 6 + b] * value(g);
                     }
                 }
                 r
             })
         })
         .collect()
+}
+
+/// One iteration of an active-set loop.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct IterationRecord {
+    /// Active contact elements used in this iteration's solve.
+    pub active: usize,
+    /// Elements the inversion test switched on after the solve.
+    pub switched_on: usize,
+    /// Elements the inversion test switched off after the solve.
+    pub switched_off: usize,
+}
+
+/// The active set of a loop over the elements of B: the current flags,
+/// the set it started from, the sets visited (coming back to one is a
+/// cycle) and the history of the iterations.
+#[derive(Debug, Clone)]
+pub struct ActiveSet {
+    active: Vec<bool>,
+    initial: Vec<bool>,
+    visited: HashSet<Vec<bool>>,
+    history: Vec<IterationRecord>,
+}
+
+impl ActiveSet {
+    /// A loop starting from `initial`.
+    pub fn new(initial: Vec<bool>) -> ActiveSet {
+        let visited = HashSet::from([initial.clone()]);
+        ActiveSet {
+            active: initial.clone(),
+            initial,
+            visited,
+            history: Vec::new(),
+        }
+    }
+
+    /// The current flags.
+    pub fn active(&self) -> &[bool] {
+        &self.active
+    }
+
+    /// The flags the loop started from.
+    pub fn initial(&self) -> &[bool] {
+        &self.initial
+    }
+
+    /// One record per iteration so far.
+    pub fn history(&self) -> &[IterationRecord] {
+        &self.history
+    }
+
+    /// Takes the inversion test's verdict `next` on the solution of
+    /// iteration `iteration` (solved with the current flags): true when the
+    /// set is settled (unchanged); else the flags become `next`, unless
+    /// they were visited before — a cycle, refused with the history.
+    pub fn advance(&mut self, next: Vec<bool>, iteration: usize) -> Result<bool> {
+        let pairs = || next.iter().zip(&self.active);
+        self.history.push(IterationRecord {
+            active: self.active.iter().filter(|&&a| a).count(),
+            switched_on: pairs().filter(|(n, a)| **n && !**a).count(),
+            switched_off: pairs().filter(|(n, a)| !**n && **a).count(),
+        });
+        if next == self.active {
+            return Ok(true);
+        }
+        if !self.visited.insert(next.clone()) {
+            return Err(self.not_converged(format!(
+                "the active set revisited an earlier state at iteration {iteration} (a cycle)"
+            )));
+        }
+        self.active = next;
+        Ok(false)
+    }
+
+    /// The error of a loop that did not settle in `max_iterations`.
+    pub fn not_settled(&self, max_iterations: usize) -> Error {
+        self.not_converged(format!(
+            "the active set did not settle in {max_iterations} iterations"
+        ))
+    }
+
+    fn not_converged(&self, what: String) -> Error {
+        Error::new(
+            Status::NotConverged,
+            format!("{what}; history {}", format_history(&self.history)),
+        )
+    }
+
+    /// The flags and the history.
+    pub fn into_parts(self) -> (Vec<bool>, Vec<IterationRecord>) {
+        (self.active, self.history)
+    }
+}
+
+/// The history in a message: every iteration up to eight, else the first
+/// three and the last three (a message stays short).
+pub fn format_history(h: &[IterationRecord]) -> String {
+    let item = |r: &IterationRecord| {
+        format!(
+            "[active {}, +{}, -{}]",
+            r.active, r.switched_on, r.switched_off
+        )
+    };
+    let items: Vec<String> = if h.len() <= 8 {
+        h.iter().map(item).collect()
+    } else {
+        let mut v: Vec<String> = h[..3].iter().map(item).collect();
+        v.push(format!("… {} more …", h.len() - 6));
+        v.extend(h[h.len() - 3..].iter().map(item));
+        v
+    };
+    items.join(" ")
 }
 
 /// The active set the loop starts from: per pair, the elements whose gap
@@ -334,4 +449,52 @@ pub fn initial_active_set(elements: &[ContactElement]) -> Vec<bool> {
         .iter()
         .map(|e| gap(e) <= smallest[&e.pair] + 1e-3 * e.h)
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_set_visited_before_is_a_cycle_and_a_new_one_is_not() {
+        let mut set = ActiveSet::new(vec![true, false, true]);
+        assert!(!set.advance(vec![true, true, true], 1).unwrap());
+        assert!(!set.advance(vec![false, false, false], 2).unwrap());
+        let err = set.advance(vec![true, false, true], 3).unwrap_err();
+        assert_eq!(err.status(), Status::NotConverged);
+        assert!(
+            err.message().starts_with(
+                "the active set revisited an earlier state at iteration 3 (a cycle); history \
+                 [active 2, +1, -0] [active 3, +0, -3] [active 0, +2, -0]"
+            ),
+            "{}",
+            err.message()
+        );
+    }
+
+    #[test]
+    fn an_unchanged_set_is_settled_and_recorded() {
+        let mut set = ActiveSet::new(vec![true, true]);
+        assert!(set.advance(vec![true, true], 1).unwrap());
+        assert_eq!(set.history().len(), 1);
+        assert_eq!(set.active(), [true, true]);
+    }
+
+    #[test]
+    fn a_long_history_is_cut_to_its_first_and_last_iterations() {
+        let record = |k: usize| IterationRecord {
+            active: k,
+            switched_on: 0,
+            switched_off: 1,
+        };
+        let short: Vec<IterationRecord> = (0..8).map(record).collect();
+        assert_eq!(format_history(&short).matches("[active").count(), 8);
+        let long: Vec<IterationRecord> = (0..50).map(record).collect();
+        let text = format_history(&long);
+        assert!(text.starts_with("[active 0, +0, -1] [active 1"), "{text}");
+        assert!(
+            text.contains("… 44 more …") && text.ends_with("[active 49, +0, -1]"),
+            "{text}"
+        );
+    }
 }

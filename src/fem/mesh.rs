@@ -118,9 +118,8 @@ impl Mesh {
                 )));
             }
         }
-        let jacobian = |tri: &[usize; 3]| {
-            TriGeometry::new(&[nodes[tri[0]], nodes[tri[1]], nodes[tri[2]]])
-        };
+        let jacobian =
+            |tri: &[usize; 3]| TriGeometry::new(&[nodes[tri[0]], nodes[tri[1]], nodes[tri[2]]]);
         let mut any_clockwise = false;
         for (t, tri) in triangles.iter().enumerate() {
             let geo = jacobian(tri);

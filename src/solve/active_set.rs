@@ -11,7 +11,6 @@
 //! refactorises it. The loop works over the unknowns throughout; the caller
 //! expands the result to global DOFs once.
 
-use std::collections::HashSet;
 use std::time::Instant;
 
 use super::condensed::{Condensed, ElementMatrix};
@@ -19,8 +18,8 @@ use super::diagnostics::add_energy;
 use super::linear::{Structure, check_finite, factor_and_solve};
 use super::report::{IterationRecord, SolveInfo, Timings};
 use super::system::AssembledSystem;
-use crate::contact::{ContactOptions, ContactSet};
-use crate::error::{Error, Result, Status};
+use crate::contact::{ActiveSet, ContactOptions, ContactSet};
+use crate::error::Result;
 use crate::fem::assembly::NOT_FREE;
 use crate::fem::element_loop::ElementLoop;
 use crate::linalg::Cholesky;
@@ -55,17 +54,6 @@ pub(crate) struct Settled {
     pub condensed_bytes: usize,
 }
 
-/// The sets the loop has visited: coming back to one is a cycle.
-#[derive(Default)]
-pub(crate) struct Visited(HashSet<Vec<bool>>);
-
-impl Visited {
-    /// Records `set`; false when it was visited before.
-    pub fn first_visit(&mut self, set: &[bool]) -> bool {
-        self.0.insert(set.to_vec())
-    }
-}
-
 /// The condensed system with the first iteration's solution x₁ it is
 /// relative to and the active set its factor represents.
 struct CondensedState {
@@ -94,10 +82,7 @@ pub(crate) struct ActiveSetLoop<'a, 's> {
     system: &'a mut AssembledSystem,
     timings: &'a mut Timings,
     info: &'a mut SolveInfo,
-    initial: Vec<bool>,
-    active: Vec<bool>,
-    visited: Visited,
-    history: Vec<IterationRecord>,
+    set: ActiveSet,
     condensed: Option<CondensedState>,
     iterate: Iterate,
 }
@@ -110,19 +95,14 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         (chol, system): (&'a mut Cholesky, &'a mut AssembledSystem),
         (timings, info): (&'a mut Timings, &'a mut SolveInfo),
     ) -> ActiveSetLoop<'a, 's> {
-        let initial = input.set.initial_active();
-        let mut visited = Visited::default();
-        visited.first_visit(&initial);
+        let set = ActiveSet::new(input.set.initial_active());
         ActiveSetLoop {
             input,
             chol,
             system,
             timings,
             info,
-            active: initial.clone(),
-            initial,
-            visited,
-            history: Vec::new(),
+            set,
             condensed: None,
             iterate: Iterate::None,
         }
@@ -132,24 +112,15 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
     /// test which are inverted, stop when the set is unchanged, refuse a
     /// set visited before (a cycle) or too many iterations.
     pub fn run(mut self) -> Result<Settled> {
-        for iteration in 1..=self.input.options.max_iterations {
+        let max_iterations = self.input.options.max_iterations;
+        for iteration in 1..=max_iterations {
             self.solve(iteration)?;
             let next = self.inverted();
-            self.record(&next);
-            if next == self.active {
+            if self.set.advance(next, iteration)? {
                 return self.recover();
             }
-            if !self.visited.first_visit(&next) {
-                return Err(self.not_converged(format!(
-                    "the active set revisited an earlier state at iteration {iteration} (a cycle)"
-                )));
-            }
-            self.active = next;
         }
-        Err(self.not_converged(format!(
-            "the active set did not settle in {} iterations",
-            self.input.options.max_iterations
-        )))
+        Err(self.set.not_settled(max_iterations))
     }
 
     /// One iteration's solve with the current active set: a condensed step
@@ -170,7 +141,8 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         let t0 = Instant::now();
         let set = self.input.set;
         let state = self.condensed.as_mut().expect("a condensed system");
-        let sign = |k: usize| if self.active[k] { 1.0 } else { -1.0 };
+        let (active, initial) = (self.set.active(), self.set.initial());
+        let sign = |k: usize| if active[k] { 1.0 } else { -1.0 };
         let element = |k: usize| {
             let matrix = &set.stiffness(k).k;
             (
@@ -182,8 +154,8 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             )
         };
         // Changes since the factorised set, and relative to K₁.
-        let changed = differing(&self.active, &state.factor_active);
-        let relative = differing(&self.active, &self.initial);
+        let changed = differing(active, &state.factor_active);
+        let relative = differing(active, initial);
         // A few changes: update the factor (measured: a rank-1 update costs
         // ~1/20 of a refactorisation at 2000 interface unknowns); many:
         // refactorise Ŝ₁ plus the changes relative to K₁.
@@ -192,7 +164,8 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             && sys.is_factored()
             && sys.update(changed.iter().map(|&k| element(k))).is_ok();
         let factored = updated || sys.factorize(relative.iter().map(|&k| element(k))).is_ok();
-        state.factor_active.clone_from(&self.active);
+        state.factor_active.clear();
+        state.factor_active.extend_from_slice(active);
         if factored {
             let mut g = vec![0.0; sys.len()];
             for &k in &relative {
@@ -218,10 +191,10 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         let (at, set) = (input.at, input.set);
         let t0 = Instant::now();
         let structure = (at.dofs, at.pattern);
+        let active = self.set.active();
         self.system
-            .set_contact(&self.active, set, structure, input.prescribed);
+            .set_contact(active, set, structure, input.prescribed);
         self.timings.assembly += t0.elapsed().as_secs_f64();
-        let active = &self.active;
         let energy = |r: &[f64]| {
             let mut acc = body_energy(input.elements, r);
             for (k, el) in set.elements().iter().enumerate() {
@@ -253,7 +226,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         self.condensed = Some(CondensedState {
             system,
             x1: x,
-            factor_active: self.active.clone(),
+            factor_active: self.set.active().to_vec(),
         });
         self.iterate = Iterate::Reference;
         self.timings.interface += t0.elapsed().as_secs_f64();
@@ -289,24 +262,6 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         })
     }
 
-    /// Records the iteration: the set it solved with and what the test
-    /// switched.
-    fn record(&mut self, next: &[bool]) {
-        let pairs = || next.iter().zip(&self.active);
-        self.history.push(IterationRecord {
-            active: self.active.iter().filter(|&&a| a).count(),
-            switched_on: pairs().filter(|(n, a)| **n && !**a).count(),
-            switched_off: pairs().filter(|(n, a)| !**n && **a).count(),
-        });
-    }
-
-    fn not_converged(&self, what: String) -> Error {
-        Error::new(
-            Status::NotConverged,
-            format!("{what}; history {}", format_history(&self.history)),
-        )
-    }
-
     /// The settled solution over all unknowns, refined against the final
     /// system, which the assembled system then holds.
     fn recover(mut self) -> Result<Settled> {
@@ -316,7 +271,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             .map_or(0, |c| c.system.memory_bytes() + 8 * c.x1.len());
         let context = format!(
             " (contact solution after {} iterations)",
-            self.history.len()
+            self.set.history().len()
         );
         let x = match std::mem::replace(&mut self.iterate, Iterate::None) {
             Iterate::Full(x) => x,
@@ -324,10 +279,11 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             Iterate::Condensed(ui) => self.expand_condensed(ui, &context)?,
             Iterate::None => unreachable!("the loop solved before settling"),
         };
+        let (active, history) = self.set.into_parts();
         Ok(Settled {
             x,
-            active: self.active,
-            history: self.history,
+            active,
+            history,
             condensed_bytes,
         })
     }
@@ -355,14 +311,15 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         let input = &self.input;
         let t0 = Instant::now();
         let structure = (input.at.dofs, input.at.pattern);
+        let active = self.set.active();
         self.system
-            .set_contact(&self.active, input.set, structure, input.prescribed);
+            .set_contact(active, input.set, structure, input.prescribed);
         self.timings.assembly += t0.elapsed().as_secs_f64();
         let t0 = Instant::now();
         let changes = Changes {
             set: input.set,
-            active: &self.active,
-            initial: &self.initial,
+            active,
+            initial: self.set.initial(),
             n: input.at.dofs.n_free(),
         };
         let position = |j: usize| {
@@ -445,26 +402,6 @@ pub(crate) fn body_energy(elements: &ElementLoop<'_>, r: &[f64]) -> (f64, f64) {
         Ok(())
     });
     acc
-}
-
-/// The history in a message: every iteration up to eight, else the first
-/// three and the last three (a message stays short).
-fn format_history(h: &[IterationRecord]) -> String {
-    let item = |r: &IterationRecord| {
-        format!(
-            "[active {}, +{}, -{}]",
-            r.active, r.switched_on, r.switched_off
-        )
-    };
-    let items: Vec<String> = if h.len() <= 8 {
-        h.iter().map(item).collect()
-    } else {
-        let mut v: Vec<String> = h[..3].iter().map(item).collect();
-        v.push(format!("… {} more …", h.len() - 6));
-        v.extend(h[h.len() - 3..].iter().map(item));
-        v
-    };
-    items.join(" ")
 }
 
 #[cfg(test)]
@@ -557,16 +494,11 @@ mod tests {
             test: InversionTest::Linearised,
             ..Default::default()
         };
-        let material = |b: i32| *elements.material(b);
-        let set = ContactSet::new(
-            mesh,
-            contact,
-            p.contact_pairs(),
-            material,
-            (dofs, &prescribed),
-            &options,
-        )
-        .unwrap();
+        let soft = |_pair: usize| *elements.material(1);
+        let laws = crate::contact::element_laws(0, contact, soft, mesh.size(), &options).unwrap();
+        let equation = |g: usize| Some(dofs.free(g)).filter(|&f| f != NOT_FREE);
+        let nodes = crate::contact::Nodes::of(mesh);
+        let set = ContactSet::new(nodes, contact, laws, equation, &prescribed, &options).unwrap();
         let interface = set.interface_unknowns();
         let want = Wanted {
             last: if condense { &interface } else { &[] },
@@ -596,12 +528,14 @@ mod tests {
             options,
         };
         let mut lp = ActiveSetLoop::new(input, (chol, system), (&mut timings, &mut info));
+        // The set switched to `active` (when given) is recorded as the
+        // verdict of an iteration, as the loop would.
         match active {
             // The initial set, solved once (and condensed when asked).
             None => lp.solve(1).unwrap(),
             Some(active) if condense => {
                 lp.solve(1).unwrap();
-                lp.active = active;
+                assert!(!lp.set.advance(active, 1).unwrap());
                 assert!(
                     lp.condensed_step().unwrap(),
                     "the interface matrix is definite"
@@ -609,15 +543,12 @@ mod tests {
                 assert!(matches!(lp.iterate, Iterate::Condensed(_)));
             }
             Some(active) => {
-                lp.active = active;
+                assert!(!lp.set.advance(active, 0).unwrap());
                 lp.solve(1).unwrap();
             }
         }
-        lp.history.push(IterationRecord {
-            active: 0,
-            switched_on: 0,
-            switched_off: 0,
-        });
+        let settled = lp.set.active().to_vec();
+        assert!(lp.set.advance(settled, 2).unwrap());
         (lp.recover().unwrap().x, interface)
     }
 
@@ -666,33 +597,6 @@ mod tests {
     }
 
     #[test]
-    fn a_set_visited_before_is_a_cycle_and_a_new_one_is_not() {
-        let mut visited = Visited::default();
-        assert!(visited.first_visit(&[true, false, true]));
-        assert!(visited.first_visit(&[true, true, true]));
-        assert!(!visited.first_visit(&[true, false, true]));
-        assert!(visited.first_visit(&[false, false, false]));
-    }
-
-    #[test]
-    fn a_long_history_is_cut_to_its_first_and_last_iterations() {
-        let record = |k: usize| IterationRecord {
-            active: k,
-            switched_on: 0,
-            switched_off: 1,
-        };
-        let short: Vec<IterationRecord> = (0..8).map(record).collect();
-        assert_eq!(format_history(&short).matches("[active").count(), 8);
-        let long: Vec<IterationRecord> = (0..50).map(record).collect();
-        let text = format_history(&long);
-        assert!(text.starts_with("[active 0, +0, -1] [active 1"), "{text}");
-        assert!(
-            text.contains("… 44 more …") && text.ends_with("[active 49, +0, -1]"),
-            "{text}"
-        );
-    }
-
-    #[test]
     fn a_loop_that_does_not_settle_stops_at_the_cap_with_its_history() {
         // Pressed on its left quarter only, the upper block lifts off at
         // the right: the first inversion test changes the set.
@@ -721,7 +625,7 @@ mod tests {
         let err = model
             .solve_contact(&capped)
             .expect_err("one iteration is not enough");
-        assert_eq!(err.status(), Status::NotConverged);
+        assert_eq!(err.status(), crate::Status::NotConverged);
         assert!(
             err.message().starts_with(
                 "the active set did not settle in 1 iterations; history [active 16, +0, -"

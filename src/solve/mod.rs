@@ -23,8 +23,12 @@ use linear::{Structure, factor_and_solve};
 use report::{ContactReport, SolveInfo, Timings};
 use session::{Session, Settings, Wanted, factorisation};
 
-use crate::contact::{ContactOptions, ContactPair, ContactSet, ElementLaw};
+use crate::contact::{
+    ContactElement, ContactOptions, ContactPair, ContactSet, ElementLaw, Nodes, element_laws,
+    softer,
+};
 use crate::error::{Result, ensure_finite};
+use crate::fem::assembly::{DofMap, NOT_FREE};
 use crate::fem::body::Softened;
 use crate::fem::element_loop::{ElementLoop, element_values};
 use crate::fem::mesh::Mesh;
@@ -110,7 +114,6 @@ pub(crate) fn restore(
 ) -> Result<()> {
     session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
     if let Some(options) = options {
-        let mesh = input.elements.mesh();
         let Session {
             dofs,
             pattern,
@@ -118,12 +121,35 @@ pub(crate) fn restore(
             system,
             ..
         } = &mut *session;
-        let material = |body: i32| *input.elements.material(body);
-        let geometry = (&*dofs, input.prescribed);
-        let set = ContactSet::new(mesh, contact, input.pairs, material, geometry, options)?;
+        let set = contact_set(input, contact, dofs, options)?;
         system.replay(log, &set, (dofs, pattern), input.prescribed);
     }
     Ok(())
+}
+
+/// The contact set of a built-in solve: B of the session's pairs, each
+/// element's law from its pair's softer body, the session's unknowns.
+fn contact_set<'a>(
+    input: &Input<'a>,
+    contact: &'a [ContactElement],
+    dofs: &DofMap,
+    options: &ContactOptions,
+) -> Result<ContactSet<'a>> {
+    let (mesh, elements) = (input.elements.mesh(), &input.elements);
+    let soft = |pair: usize| {
+        let p = &input.pairs[pair];
+        softer(*elements.material(p.body_a), *elements.material(p.body_b))
+    };
+    let laws = element_laws(mesh.index_base(), contact, soft, mesh.size(), options)?;
+    let equation = |g: usize| Some(dofs.free(g)).filter(|&f| f != NOT_FREE);
+    ContactSet::new(
+        Nodes::of(mesh),
+        contact,
+        laws,
+        equation,
+        input.prescribed,
+        options,
+    )
 }
 
 /// The warning about well-shaped elements that tempering softens.
@@ -217,9 +243,7 @@ fn solve_contact(
         system,
         ..
     } = &mut *session;
-    let material = |body: i32| *input.elements.material(body);
-    let geometry = (&*dofs, input.prescribed);
-    let set = ContactSet::new(mesh, contact, input.pairs, material, geometry, options)?;
+    let set = contact_set(input, contact, dofs, options)?;
     let interface = if options.refactorize {
         Vec::new()
     } else {
@@ -312,7 +336,7 @@ fn contact_outcome(
             max_pen = max_pen.max(-opening / el.edge_length);
         }
     }
-    let name = |k: usize| format!("contact element {}", k + set.mesh().index_base());
+    let name = |k: usize| format!("contact element {}", k + set.nodes().base);
     ensure_finite(pressure.iter().copied(), 1, "contact pressure", name)?;
     ensure_finite([lc, max_pen], 1, "contact length or penetration", |_| {
         "the contact report".to_string()

@@ -50,16 +50,7 @@ pub struct SolveInfo {
     pub timings: Timings,
 }
 
-/// One iteration of the active-set loop.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct IterationRecord {
-    /// Active contact elements used in this iteration's solve.
-    pub active: usize,
-    /// Elements the inversion test switched on after the solve.
-    pub switched_on: usize,
-    /// Elements the inversion test switched off after the solve.
-    pub switched_off: usize,
-}
+pub use crate::contact::IterationRecord;
 
 /// Result of a contact solve.
 #[derive(Debug, Clone, PartialEq)]
