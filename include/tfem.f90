@@ -118,6 +118,23 @@ module tfem
   private :: tfem_get_contact_mesh_i
   private :: tfem_get_contact_element_pairs_i
   private :: tfem_get_contact_element_apexes_i
+  private :: tfem_contact_last_error_i
+  private :: tfem_contact_last_error_str
+  private :: tfem_contact_last_error_str_i
+  private :: tfem_contact_last_error_raw
+  private :: tfem_contact_nodes_i
+  private :: tfem_contact_pattern_i
+  private :: tfem_contact_evaluate_i
+  private :: tfem_contact_gather_i
+  private :: tfem_contact_scatter_add_i
+  private :: tfem_contact_update_i
+  private :: tfem_contact_get_active_i
+  private :: tfem_contact_set_active_i
+  private :: tfem_contact_gaps_i
+  private :: tfem_contact_pressures_i
+  private :: tfem_contact_elements_i
+  private :: tfem_contact_element_equations_i
+  private :: tfem_contact_element_blocks_i
 
   !> The kind of the lengths the generic interfaces accept besides integer(c_size_t): c_int (the
   !! default integer) where size_t is wider, else c_int64_t.
@@ -1061,6 +1078,387 @@ module tfem
     end function tfem_get_threads
   end interface
 
+  interface
+    !> Creates a contact context for a host code that keeps its own elements, assembly, solver and
+    !! Newton loop: node numbers and equation numbers in `index_base` (0 for C, 1 for Fortran).
+    !! Returns NULL if `index_base` is not 0 or 1 (message in `tfem_last_error(NULL, …)`) or memory
+    !! is exhausted. The host then adds the sides of its contact interfaces
+    !! (`tfem_contact_add_side`) and the pairs (`tfem_contact_add_pair`); the first call that needs
+    !! the contact mesh B builds it, after which sides and pairs are fixed.
+    function tfem_contact_create(index_base) &
+        bind(C, name="tfem_contact_create") result(res)
+      import
+      integer(c_int), value :: index_base
+      type(c_ptr) :: res
+    end function tfem_contact_create
+  end interface
+
+  interface
+    !> Destroys a contact context. NULL is a no-op.
+    subroutine tfem_contact_destroy(context) &
+        bind(C, name="tfem_contact_destroy")
+      import
+      type(c_ptr), value :: context
+    end subroutine tfem_contact_destroy
+  end interface
+
+  interface tfem_contact_last_error
+    !> Copies the message of the last failed call on `context` (empty after a successful call) into
+    !! `buffer` (`length` bytes including the final NUL), truncating like `tfem_last_error`.
+    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
+    !! negative length is passed as 0. `buffer` may also be a character string.
+    function tfem_contact_last_error(context, buffer, length) &
+        bind(C, name="tfem_contact_last_error") result(status)
+      import
+      type(c_ptr), value :: context
+      character(kind=c_char), intent(inout) :: buffer(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_contact_last_error
+    module procedure tfem_contact_last_error_i
+    module procedure tfem_contact_last_error_str
+    module procedure tfem_contact_last_error_str_i
+  end interface tfem_contact_last_error
+
+  interface
+    !> Sets the contact options (law, E_c, λ, inversion test, and `max_iterations`: the number of
+    !! `tfem_contact_update` calls of one loop before it counts as not converged; `refactorize` is
+    !! ignored). Only before the contact mesh is built. Defaults: `tfem_contact_options_default`,
+    !! with λ the larger side of the interface nodes' bounding box.
+    function tfem_contact_set_options(context, options) &
+        bind(C, name="tfem_contact_set_options") result(status)
+      import
+      type(c_ptr), value :: context
+      type(tfem_contact_options), intent(in) :: options
+      integer(c_int) :: status
+    end function tfem_contact_set_options
+  end interface
+
+  interface
+    !> Adds one side of a contact interface, of body `body` (Young's modulus `young`, Poisson ratio
+    !! `poisson`, `plane_mode` a `PlaneMode`: the softer side's E is the default E_c, the stick law
+    !! takes its ν): `n_nodes` interface nodes `nodes` (the host's node numbers) with their
+    !! coordinates `xy` (2 per node) and the equations of their x and y unknowns `equations` (2 per
+    !! node, in the index base; a value below the base marks a fixed DOF without an equation), and
+    !! `n_edges` edges `edges` (2 host node numbers each), each given with its body on its left (the
+    !! counter-clockwise boundary orientation). A node of two sides must come with the same
+    !! coordinates and equations. Writes the side's index (0-based) to `side` (may be NULL). On
+    !! error nothing changes. Fortran: `side` is OPTIONAL: omit it to pass NULL.
+    function tfem_contact_add_side(context, tag, body, young, poisson, plane_mode, n_nodes, nodes, xy, &
+        equations, n_edges, edges, side) &
+        bind(C, name="tfem_contact_add_side") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), value :: tag
+      integer(c_int), value :: body
+      real(c_double), value :: young
+      real(c_double), value :: poisson
+      integer(c_int), value :: plane_mode
+      integer(c_int), value :: n_nodes
+      integer(c_int), intent(in) :: nodes(*)
+      real(c_double), intent(in) :: xy(*)
+      integer(c_int64_t), intent(in) :: equations(*)
+      integer(c_int), value :: n_edges
+      integer(c_int), intent(in) :: edges(*)
+      integer(c_int), intent(out), optional :: side
+      integer(c_int) :: status
+    end function tfem_contact_add_side
+  end interface
+
+  interface
+    !> Declares sides `side_a` and `side_b` (on different bodies) a contact pair: the contact mesh B
+    !! is built from their matching nodes, or by triangulating the strip between them. Writes the
+    !! pair's index (0-based) to `pair` (may be NULL). Fortran: `pair` is OPTIONAL: omit it to pass
+    !! NULL.
+    function tfem_contact_add_pair(context, side_a, side_b, pair) &
+        bind(C, name="tfem_contact_add_pair") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), value :: side_a
+      integer(c_int), value :: side_b
+      integer(c_int), intent(out), optional :: pair
+      integer(c_int) :: status
+    end function tfem_contact_add_pair
+  end interface
+
+  interface
+    !> Declares a pair with the host's own contact mesh B: `n_triangles` triangles `connectivity` (3
+    !! host node numbers each) over the interface nodes of the two sides; wrongly oriented ones are
+    !! turned. Writes the pair's index (0-based) to `pair` (may be NULL). Fortran: `pair` is
+    !! OPTIONAL: omit it to pass NULL.
+    function tfem_contact_add_pair_with_mesh(context, side_a, side_b, n_triangles, connectivity, pair) &
+        bind(C, name="tfem_contact_add_pair_with_mesh") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), value :: side_a
+      integer(c_int), value :: side_b
+      integer(c_int), value :: n_triangles
+      integer(c_int), intent(in) :: connectivity(*)
+      integer(c_int), intent(out), optional :: pair
+      integer(c_int) :: status
+    end function tfem_contact_add_pair_with_mesh
+  end interface
+
+  interface
+    !> Builds the contact mesh B (if not yet) and writes the sizes: interface nodes (the length of
+    !! every per-node array: 2 values per node for displacements and residuals), elements of B, and
+    !! entries of the pattern. Any pointer may be NULL. Fortran: `n_nodes`, `n_elements` and
+    !! `n_entries` are OPTIONAL: omit them to pass NULL.
+    function tfem_contact_sizes(context, n_nodes, n_elements, n_entries) &
+        bind(C, name="tfem_contact_sizes") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), intent(out), optional :: n_nodes
+      integer(c_int), intent(out), optional :: n_elements
+      integer(c_int64_t), intent(out), optional :: n_entries
+      integer(c_int) :: status
+    end function tfem_contact_sizes
+  end interface
+
+  interface tfem_contact_nodes
+    !> Copies the interface nodes (host numbers, n_nodes values), in the order of every per-node
+    !! array. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
+    !! tfem_length_kind); a negative length is passed as 0.
+    function tfem_contact_nodes(context, out, length) &
+        bind(C, name="tfem_contact_nodes") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_contact_nodes
+    module procedure tfem_contact_nodes_i
+  end interface tfem_contact_nodes
+
+  interface tfem_contact_pattern
+    !> Copies the fixed pattern of the contact contributions (n_entries rows and columns, in the
+    !! host's equation numbering and index base): element after element of B, each element's 6×6
+    !! block row by row over its DOFs (x then y of its first, second and third node), the DOFs
+    !! without an equation left out; both triangles of each block. Entries repeat where elements
+    !! share a DOF pair: the host sums them. Fortran: `length` takes an integer(c_size_t) or a
+    !! default integer (kind tfem_length_kind); a negative length is passed as 0.
+    function tfem_contact_pattern(context, rows, cols, length) &
+        bind(C, name="tfem_contact_pattern") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int64_t), intent(out) :: rows
+      integer(c_int64_t), intent(inout) :: cols(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_contact_pattern
+    module procedure tfem_contact_pattern_i
+  end interface tfem_contact_pattern
+
+  interface tfem_contact_evaluate
+    !> The contact contributions at the displacements `u` of the interface nodes (2 per node,
+    !! `u_length` = 2·n_nodes): the tangent's values in the pattern's order into `values` (n_entries
+    !! values; zeros for inactive elements; may be NULL), and the contact residual Σ (K_e u_e −
+    !! f0_e) of the active elements, 2 per interface node, into `residual` (may be NULL). A linear
+    !! host adds the values to its matrix and minus the residual at u = 0 (the load of initial gaps)
+    !! to its right-hand side; a Newton host adds the values to its tangent and the residual at its
+    !! current u to its residual. Allocates nothing. Fortran: `residual` is OPTIONAL: omit it to
+    !! pass NULL. `u_length`, `values_length` and `residual_length` take integer(c_size_t) or
+    !! default integers (kind tfem_length_kind), all of one kind; a negative length is passed as 0.
+    function tfem_contact_evaluate(context, u, u_length, values, values_length, residual, residual_length) &
+        bind(C, name="tfem_contact_evaluate") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(in) :: u(*)
+      integer(c_size_t), value :: u_length
+      real(c_double), intent(inout) :: values(*)
+      integer(c_size_t), value :: values_length
+      real(c_double), intent(inout), optional :: residual(*)
+      integer(c_size_t), value :: residual_length
+      integer(c_int) :: status
+    end function tfem_contact_evaluate
+    module procedure tfem_contact_evaluate_i
+  end interface tfem_contact_evaluate
+
+  interface tfem_contact_gather
+    !> Copies into `u` (2 per interface node) the displacements of the interface nodes from the
+    !! host's solution vector `u_equations` (`n_equations` values; entry i is equation i +
+    !! index_base); a DOF without an equation counts as fixed at zero. Fortran: `n_equations` and
+    !! `u_length` take integer(c_size_t) or default integers (kind tfem_length_kind), all of one
+    !! kind; a negative length is passed as 0.
+    function tfem_contact_gather(context, u_equations, n_equations, u, u_length) &
+        bind(C, name="tfem_contact_gather") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(in) :: u_equations(*)
+      integer(c_size_t), value :: n_equations
+      real(c_double), intent(inout) :: u(*)
+      integer(c_size_t), value :: u_length
+      integer(c_int) :: status
+    end function tfem_contact_gather
+    module procedure tfem_contact_gather_i
+  end interface tfem_contact_gather
+
+  interface tfem_contact_scatter_add
+    !> Adds per-node values `residual` (2 per interface node, as `tfem_contact_evaluate` writes
+    !! them) into the host's vector `host_vector` (`n_equations` values, entry i is equation i +
+    !! index_base); DOFs without an equation are left out. Fortran: `residual_length` and
+    !! `n_equations` take integer(c_size_t) or default integers (kind tfem_length_kind), all of one
+    !! kind; a negative length is passed as 0.
+    function tfem_contact_scatter_add(context, residual, residual_length, host_vector, n_equations) &
+        bind(C, name="tfem_contact_scatter_add") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(in) :: residual(*)
+      integer(c_size_t), value :: residual_length
+      real(c_double), intent(inout) :: host_vector(*)
+      integer(c_size_t), value :: n_equations
+      integer(c_int) :: status
+    end function tfem_contact_scatter_add
+    module procedure tfem_contact_scatter_add_i
+  end interface tfem_contact_scatter_add
+
+  interface tfem_contact_update
+    !> The inversion test at the displacements `u` (2 per interface node) of a solve with the
+    !! current active set: the elements found inverted are switched on, the others off; `changed`
+    !! (may be NULL) is set to 1 if the set changed, 0 if it settled. The same test and cycle
+    !! detection as tfem's own loop: a set visited before, or more calls than the options'
+    !! `max_iterations` since the last `tfem_contact_restart`, gives TFEM_STATUS_NOT_CONVERGED with
+    !! the history, the set unchanged. Fortran: `changed` is OPTIONAL: omit it to pass NULL.
+    !! `u_length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
+    !! negative length is passed as 0.
+    function tfem_contact_update(context, u, u_length, changed) &
+        bind(C, name="tfem_contact_update") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(in) :: u(*)
+      integer(c_size_t), value :: u_length
+      integer(c_int), intent(out), optional :: changed
+      integer(c_int) :: status
+    end function tfem_contact_update
+    module procedure tfem_contact_update_i
+  end interface tfem_contact_update
+
+  interface
+    !> Starts a new active-set loop from the current flags (a new load step): the history and the
+    !! sets visited are forgotten.
+    function tfem_contact_restart(context) &
+        bind(C, name="tfem_contact_restart") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int) :: status
+    end function tfem_contact_restart
+  end interface
+
+  interface tfem_contact_get_active
+    !> Copies the active flag (1 active, 0 not) of every element of B. Fortran: `length` takes an
+    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
+    !! as 0.
+    function tfem_contact_get_active(context, out, length) &
+        bind(C, name="tfem_contact_get_active") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_contact_get_active
+    module procedure tfem_contact_get_active_i
+  end interface tfem_contact_get_active
+
+  interface tfem_contact_set_active
+    !> Sets the active flags of the elements of B (n_elements values, 0 or 1): a warm start or a
+    !! restored state; starts a new loop. Fortran: `length` takes an integer(c_size_t) or a default
+    !! integer (kind tfem_length_kind); a negative length is passed as 0.
+    function tfem_contact_set_active(context, active, length) &
+        bind(C, name="tfem_contact_set_active") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), intent(in) :: active(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_contact_set_active
+    module procedure tfem_contact_set_active_i
+  end interface tfem_contact_set_active
+
+  interface tfem_contact_gaps
+    !> Copies the normal gap at every interface node (n_nodes values, model length units) for the
+    !! displacements `u` (2 per interface node): the smallest, over the elements of B at the node,
+    !! of the distance of an element's apex from its interface edge (linearised; negative:
+    !! interpenetration). Fortran: `u_length` and `length` take integer(c_size_t) or default
+    !! integers (kind tfem_length_kind), all of one kind; a negative length is passed as 0.
+    function tfem_contact_gaps(context, u, u_length, out, length) &
+        bind(C, name="tfem_contact_gaps") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(in) :: u(*)
+      integer(c_size_t), value :: u_length
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_contact_gaps
+    module procedure tfem_contact_gaps_i
+  end interface tfem_contact_gaps
+
+  interface tfem_contact_pressures
+    !> Copies the contact pressure of every element of B (n_elements values; a stress, positive in
+    !! compression, zero when inactive) for the displacements `u` (2 per interface node). Fortran:
+    !! `u_length` and `length` take integer(c_size_t) or default integers (kind tfem_length_kind),
+    !! all of one kind; a negative length is passed as 0.
+    function tfem_contact_pressures(context, u, u_length, out, length) &
+        bind(C, name="tfem_contact_pressures") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(in) :: u(*)
+      integer(c_size_t), value :: u_length
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_contact_pressures
+    module procedure tfem_contact_pressures_i
+  end interface tfem_contact_pressures
+
+  interface tfem_contact_elements
+    !> Copies the nodes of every element of B (3 host node numbers each, oriented so that J > 0 when
+    !! the gap opens). Fortran: `length` takes an integer(c_size_t) or a default integer (kind
+    !! tfem_length_kind); a negative length is passed as 0.
+    function tfem_contact_elements(context, out, length) &
+        bind(C, name="tfem_contact_elements") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_contact_elements
+    module procedure tfem_contact_elements_i
+  end interface tfem_contact_elements
+
+  interface tfem_contact_element_equations
+    !> Copies the equations of every element's six DOFs (6 per element, x then y of each node, in
+    !! the index base; index_base − 1 marks a DOF without an equation): with
+    !! `tfem_contact_element_blocks`, the contributions as unassembled element blocks. Fortran:
+    !! `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a negative
+    !! length is passed as 0.
+    function tfem_contact_element_equations(context, out, length) &
+        bind(C, name="tfem_contact_element_equations") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int64_t), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_contact_element_equations
+    module procedure tfem_contact_element_equations_i
+  end interface tfem_contact_element_equations
+
+  interface tfem_contact_element_blocks
+    !> Copies every element's 6×6 tangent block (36 values per element, row-major over its DOFs as
+    !! in `tfem_contact_element_equations`): its stiffness when active, zeros when not. Fortran:
+    !! `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a negative
+    !! length is passed as 0.
+    function tfem_contact_element_blocks(context, out, length) &
+        bind(C, name="tfem_contact_element_blocks") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_contact_element_blocks
+    module procedure tfem_contact_element_blocks_i
+  end interface tfem_contact_element_blocks
+
 contains
 
   pure function c_strlen(buf) result(n)
@@ -1336,6 +1734,177 @@ contains
     integer(c_int) :: status
     status = tfem_get_contact_element_apexes(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_element_apexes_i
+
+  ! tfem_contact_last_error, lengths of kind tfem_length_kind.
+  function tfem_contact_last_error_i(context, buffer, length) result(status)
+    type(c_ptr), value :: context
+    character(kind=c_char), intent(inout) :: buffer(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_last_error(context, buffer, tfem_to_size_t(length))
+  end function tfem_contact_last_error_i
+
+  ! tfem_contact_last_error, character buffers as strings.
+  function tfem_contact_last_error_str(context, buffer, length) result(status)
+    type(c_ptr), value :: context
+    character(kind=c_char, len=*), intent(inout) :: buffer
+    integer(c_size_t), value :: length
+    integer(c_int) :: status
+    status = tfem_contact_last_error_raw(context, buffer, length)
+  end function tfem_contact_last_error_str
+
+  ! tfem_contact_last_error, character buffers as strings, lengths of kind tfem_length_kind.
+  function tfem_contact_last_error_str_i(context, buffer, length) result(status)
+    type(c_ptr), value :: context
+    character(kind=c_char, len=*), intent(inout) :: buffer
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_last_error_raw(context, buffer, tfem_to_size_t(length))
+  end function tfem_contact_last_error_str_i
+
+  ! tfem_contact_last_error, by a specific name (for the strings of the _str specifics).
+  function tfem_contact_last_error_raw(context, buffer, length) result(status)
+    type(c_ptr), value :: context
+    character(kind=c_char), intent(inout) :: buffer(*)
+    integer(c_size_t), value :: length
+    integer(c_int) :: status
+    status = tfem_contact_last_error(context, buffer, length)
+  end function tfem_contact_last_error_raw
+
+  ! tfem_contact_nodes, lengths of kind tfem_length_kind.
+  function tfem_contact_nodes_i(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_nodes(context, out, tfem_to_size_t(length))
+  end function tfem_contact_nodes_i
+
+  ! tfem_contact_pattern, lengths of kind tfem_length_kind.
+  function tfem_contact_pattern_i(context, rows, cols, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(out) :: rows
+    integer(c_int64_t), intent(inout) :: cols(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_pattern(context, rows, cols, tfem_to_size_t(length))
+  end function tfem_contact_pattern_i
+
+  ! tfem_contact_evaluate, lengths of kind tfem_length_kind.
+  function tfem_contact_evaluate_i(context, u, u_length, values, values_length, residual, &
+        residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    real(c_double), intent(inout), optional :: residual(*)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    integer(c_int) :: status
+    status = tfem_contact_evaluate(context, u, tfem_to_size_t(u_length), values, &
+        tfem_to_size_t(values_length), residual, tfem_to_size_t(residual_length))
+  end function tfem_contact_evaluate_i
+
+  ! tfem_contact_gather, lengths of kind tfem_length_kind.
+  function tfem_contact_gather_i(context, u_equations, n_equations, u, u_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u_equations(*)
+    integer(tfem_length_kind), intent(in) :: n_equations
+    real(c_double), intent(inout) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    integer(c_int) :: status
+    status = tfem_contact_gather(context, u_equations, tfem_to_size_t(n_equations), u, &
+        tfem_to_size_t(u_length))
+  end function tfem_contact_gather_i
+
+  ! tfem_contact_scatter_add, lengths of kind tfem_length_kind.
+  function tfem_contact_scatter_add_i(context, residual, residual_length, host_vector, n_equations) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: residual(*)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    real(c_double), intent(inout) :: host_vector(*)
+    integer(tfem_length_kind), intent(in) :: n_equations
+    integer(c_int) :: status
+    status = tfem_contact_scatter_add(context, residual, tfem_to_size_t(residual_length), host_vector, &
+        tfem_to_size_t(n_equations))
+  end function tfem_contact_scatter_add_i
+
+  ! tfem_contact_update, lengths of kind tfem_length_kind.
+  function tfem_contact_update_i(context, u, u_length, changed) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    integer(c_int), intent(out), optional :: changed
+    integer(c_int) :: status
+    status = tfem_contact_update(context, u, tfem_to_size_t(u_length), changed)
+  end function tfem_contact_update_i
+
+  ! tfem_contact_get_active, lengths of kind tfem_length_kind.
+  function tfem_contact_get_active_i(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_get_active(context, out, tfem_to_size_t(length))
+  end function tfem_contact_get_active_i
+
+  ! tfem_contact_set_active, lengths of kind tfem_length_kind.
+  function tfem_contact_set_active_i(context, active, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(in) :: active(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_set_active(context, active, tfem_to_size_t(length))
+  end function tfem_contact_set_active_i
+
+  ! tfem_contact_gaps, lengths of kind tfem_length_kind.
+  function tfem_contact_gaps_i(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_gaps(context, u, tfem_to_size_t(u_length), out, tfem_to_size_t(length))
+  end function tfem_contact_gaps_i
+
+  ! tfem_contact_pressures, lengths of kind tfem_length_kind.
+  function tfem_contact_pressures_i(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_pressures(context, u, tfem_to_size_t(u_length), out, tfem_to_size_t(length))
+  end function tfem_contact_pressures_i
+
+  ! tfem_contact_elements, lengths of kind tfem_length_kind.
+  function tfem_contact_elements_i(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_elements(context, out, tfem_to_size_t(length))
+  end function tfem_contact_elements_i
+
+  ! tfem_contact_element_equations, lengths of kind tfem_length_kind.
+  function tfem_contact_element_equations_i(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_element_equations(context, out, tfem_to_size_t(length))
+  end function tfem_contact_element_equations_i
+
+  ! tfem_contact_element_blocks, lengths of kind tfem_length_kind.
+  function tfem_contact_element_blocks_i(context, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_element_blocks(context, out, tfem_to_size_t(length))
+  end function tfem_contact_element_blocks_i
 
   !> The message of the last failed call on model (omitted or c_null_ptr: this thread's
   !! model-free calls), as a Fortran string.

@@ -234,6 +234,12 @@ typedef enum tfem_component {
 } tfem_component;
 
 /**
+ * Opaque handle to a contact context for a host code. Create with
+ * `tfem_contact_create`, free with `tfem_contact_destroy`.
+ */
+typedef struct tfem_contact tfem_contact;
+
+/**
  * Opaque handle to a model. Create with `tfem_create`, free with
  * `tfem_destroy`.
  */
@@ -813,6 +819,248 @@ enum tfem_status tfem_set_threads(struct tfem_model *model, int threads);
  * `tfem_set_threads`).
  */
 enum tfem_status tfem_get_threads(struct tfem_model *model, int *threads);
+
+/**
+ * Creates a contact context for a host code that keeps its own elements,
+ * assembly, solver and Newton loop: node numbers and equation numbers in
+ * `index_base` (0 for C, 1 for Fortran). Returns NULL if `index_base` is
+ * not 0 or 1 (message in `tfem_last_error(NULL, …)`) or memory is
+ * exhausted. The host then adds the sides of its contact interfaces
+ * (`tfem_contact_add_side`) and the pairs (`tfem_contact_add_pair`); the
+ * first call that needs the contact mesh B builds it, after which sides
+ * and pairs are fixed.
+ */
+struct tfem_contact *tfem_contact_create(int index_base);
+
+/**
+ * Destroys a contact context. NULL is a no-op.
+ */
+void tfem_contact_destroy(struct tfem_contact *context);
+
+/**
+ * Copies the message of the last failed call on `context` (empty after a
+ * successful call) into `buffer` (`length` bytes including the final NUL),
+ * truncating like `tfem_last_error`.
+ */
+enum tfem_status tfem_contact_last_error(const struct tfem_contact *context,
+                                         char *buffer,
+                                         size_t length);
+
+/**
+ * Sets the contact options (law, E_c, λ, inversion test, and
+ * `max_iterations`: the number of `tfem_contact_update` calls of one loop
+ * before it counts as not converged; `refactorize` is ignored). Only
+ * before the contact mesh is built. Defaults: `tfem_contact_options_default`,
+ * with λ the larger side of the interface nodes' bounding box.
+ */
+enum tfem_status tfem_contact_set_options(struct tfem_contact *context,
+                                          const struct tfem_contact_options *options);
+
+/**
+ * Adds one side of a contact interface, of body `body` (Young's modulus
+ * `young`, Poisson ratio `poisson`, `plane_mode` a `PlaneMode`: the
+ * softer side's E is the default E_c, the stick law takes its ν):
+ * `n_nodes` interface nodes `nodes` (the host's node numbers) with their
+ * coordinates `xy` (2 per node) and the equations of their x and y
+ * unknowns `equations` (2 per node, in the index base; a value below the
+ * base marks a fixed DOF without an equation), and `n_edges` edges
+ * `edges` (2 host node numbers each), each given with its body on its
+ * left (the counter-clockwise boundary orientation). A node of two sides
+ * must come with the same coordinates and equations. Writes the side's
+ * index (0-based) to `side` (may be NULL). On error nothing changes.
+ */
+enum tfem_status tfem_contact_add_side(struct tfem_contact *context,
+                                       int tag,
+                                       int body,
+                                       double young,
+                                       double poisson,
+                                       int plane_mode,
+                                       int n_nodes,
+                                       const int *nodes,
+                                       const double *xy,
+                                       const int64_t *equations,
+                                       int n_edges,
+                                       const int *edges,
+                                       int *side);
+
+/**
+ * Declares sides `side_a` and `side_b` (on different bodies) a contact
+ * pair: the contact mesh B is built from their matching nodes, or by
+ * triangulating the strip between them. Writes the pair's index (0-based)
+ * to `pair` (may be NULL).
+ */
+enum tfem_status tfem_contact_add_pair(struct tfem_contact *context,
+                                       int side_a,
+                                       int side_b,
+                                       int *pair);
+
+/**
+ * Declares a pair with the host's own contact mesh B: `n_triangles`
+ * triangles `connectivity` (3 host node numbers each) over the interface
+ * nodes of the two sides; wrongly oriented ones are turned. Writes the
+ * pair's index (0-based) to `pair` (may be NULL).
+ */
+enum tfem_status tfem_contact_add_pair_with_mesh(struct tfem_contact *context,
+                                                 int side_a,
+                                                 int side_b,
+                                                 int n_triangles,
+                                                 const int *connectivity,
+                                                 int *pair);
+
+/**
+ * Builds the contact mesh B (if not yet) and writes the sizes: interface
+ * nodes (the length of every per-node array: 2 values per node for
+ * displacements and residuals), elements of B, and entries of the
+ * pattern. Any pointer may be NULL.
+ */
+enum tfem_status tfem_contact_sizes(struct tfem_contact *context,
+                                    int *n_nodes,
+                                    int *n_elements,
+                                    int64_t *n_entries);
+
+/**
+ * Copies the interface nodes (host numbers, n_nodes values), in the
+ * order of every per-node array.
+ */
+enum tfem_status tfem_contact_nodes(struct tfem_contact *context, int *out, size_t length);
+
+/**
+ * Copies the fixed pattern of the contact contributions (n_entries rows
+ * and columns, in the host's equation numbering and index base): element
+ * after element of B, each element's 6×6 block row by row over its DOFs
+ * (x then y of its first, second and third node), the DOFs without an
+ * equation left out; both triangles of each block. Entries repeat where
+ * elements share a DOF pair: the host sums them.
+ */
+enum tfem_status tfem_contact_pattern(struct tfem_contact *context,
+                                      int64_t *rows,
+                                      int64_t *cols,
+                                      size_t length);
+
+/**
+ * The contact contributions at the displacements `u` of the interface
+ * nodes (2 per node, `u_length` = 2·n_nodes): the tangent's values in the
+ * pattern's order into `values` (n_entries values; zeros for inactive
+ * elements; may be NULL), and the contact residual Σ (K_e u_e − f0_e) of
+ * the active elements, 2 per interface node, into `residual` (may be
+ * NULL). A linear host adds the values to its matrix and minus the
+ * residual at u = 0 (the load of initial gaps) to its right-hand side; a
+ * Newton host adds the values to its tangent and the residual at its
+ * current u to its residual. Allocates nothing.
+ */
+enum tfem_status tfem_contact_evaluate(struct tfem_contact *context,
+                                       const double *u,
+                                       size_t u_length,
+                                       double *values,
+                                       size_t values_length,
+                                       double *residual,
+                                       size_t residual_length);
+
+/**
+ * Copies into `u` (2 per interface node) the displacements of the
+ * interface nodes from the host's solution vector `u_equations`
+ * (`n_equations` values; entry i is equation i + index_base); a DOF
+ * without an equation counts as fixed at zero.
+ */
+enum tfem_status tfem_contact_gather(struct tfem_contact *context,
+                                     const double *u_equations,
+                                     size_t n_equations,
+                                     double *u,
+                                     size_t u_length);
+
+/**
+ * Adds per-node values `residual` (2 per interface node, as
+ * `tfem_contact_evaluate` writes them) into the host's vector
+ * `host_vector` (`n_equations` values, entry i is equation i +
+ * index_base); DOFs without an equation are left out.
+ */
+enum tfem_status tfem_contact_scatter_add(struct tfem_contact *context,
+                                          const double *residual,
+                                          size_t residual_length,
+                                          double *host_vector,
+                                          size_t n_equations);
+
+/**
+ * The inversion test at the displacements `u` (2 per interface node) of
+ * a solve with the current active set: the elements found inverted are
+ * switched on, the others off; `changed` (may be NULL) is set to 1 if the
+ * set changed, 0 if it settled. The same test and cycle detection as
+ * tfem's own loop: a set visited before, or more calls than the options'
+ * `max_iterations` since the last `tfem_contact_restart`, gives
+ * TFEM_STATUS_NOT_CONVERGED with the history, the set unchanged.
+ */
+enum tfem_status tfem_contact_update(struct tfem_contact *context,
+                                     const double *u,
+                                     size_t u_length,
+                                     int *changed);
+
+/**
+ * Starts a new active-set loop from the current flags (a new load step):
+ * the history and the sets visited are forgotten.
+ */
+enum tfem_status tfem_contact_restart(struct tfem_contact *context);
+
+/**
+ * Copies the active flag (1 active, 0 not) of every element of B.
+ */
+enum tfem_status tfem_contact_get_active(struct tfem_contact *context, int *out, size_t length);
+
+/**
+ * Sets the active flags of the elements of B (n_elements values, 0 or
+ * 1): a warm start or a restored state; starts a new loop.
+ */
+enum tfem_status tfem_contact_set_active(struct tfem_contact *context,
+                                         const int *active,
+                                         size_t length);
+
+/**
+ * Copies the normal gap at every interface node (n_nodes values, model
+ * length units) for the displacements `u` (2 per interface node): the
+ * smallest, over the elements of B at the node, of the distance of an
+ * element's apex from its interface edge (linearised; negative:
+ * interpenetration).
+ */
+enum tfem_status tfem_contact_gaps(struct tfem_contact *context,
+                                   const double *u,
+                                   size_t u_length,
+                                   double *out,
+                                   size_t length);
+
+/**
+ * Copies the contact pressure of every element of B (n_elements values;
+ * a stress, positive in compression, zero when inactive) for the
+ * displacements `u` (2 per interface node).
+ */
+enum tfem_status tfem_contact_pressures(struct tfem_contact *context,
+                                        const double *u,
+                                        size_t u_length,
+                                        double *out,
+                                        size_t length);
+
+/**
+ * Copies the nodes of every element of B (3 host node numbers each,
+ * oriented so that J > 0 when the gap opens).
+ */
+enum tfem_status tfem_contact_elements(struct tfem_contact *context, int *out, size_t length);
+
+/**
+ * Copies the equations of every element's six DOFs (6 per element, x
+ * then y of each node, in the index base; index_base − 1 marks a DOF
+ * without an equation): with `tfem_contact_element_blocks`, the
+ * contributions as unassembled element blocks.
+ */
+enum tfem_status tfem_contact_element_equations(struct tfem_contact *context,
+                                                int64_t *out,
+                                                size_t length);
+
+/**
+ * Copies every element's 6×6 tangent block (36 values per element,
+ * row-major over its DOFs as in `tfem_contact_element_equations`): its
+ * stiffness when active, zeros when not.
+ */
+enum tfem_status tfem_contact_element_blocks(struct tfem_contact *context,
+                                             double *out,
+                                             size_t length);
 
 #ifdef __cplusplus
 }  // extern "C"

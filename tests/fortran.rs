@@ -262,9 +262,12 @@ const ANY_POINTER_MAY_BE_NULL: [&str; 3] = [
     "Every pointer may be NULL",
 ];
 
+/// The opaque handles of the C ABI, passed as `type(c_ptr), value`.
+const HANDLES: [&str; 2] = ["struct tfem_model", "struct tfem_contact"];
+
 fn is_handle(ty: &str) -> bool {
-    ty.trim_start_matches("const ")
-        .starts_with("struct tfem_model")
+    let base = ty.trim_start_matches("const ").trim_end_matches('*').trim();
+    HANDLES.contains(&base)
 }
 
 /// The nullability rule. A pointer parameter `p` of a function may be NULL
@@ -340,7 +343,7 @@ fn classify(p: &Proto, k: usize) -> Pass {
     if !ty.ends_with('*') {
         return Pass::Value(base.to_string());
     }
-    if base == "struct tfem_model" {
+    if HANDLES.contains(&base) {
         return Pass::Handle;
     }
     if let Some(s) = base.strip_prefix("struct ") {
@@ -654,7 +657,7 @@ fn result_of(p: &Proto) -> (&'static str, &'static str, &'static str) {
         "void" => ("subroutine", "", ""),
         "enum tfem_status" => ("function", " result(status)", "integer(c_int) :: status"),
         "size_t" => ("function", " result(res)", "integer(c_size_t) :: res"),
-        "const char *" | "struct tfem_model *" => {
+        "const char *" | "struct tfem_model *" | "struct tfem_contact *" => {
             ("function", " result(res)", "type(c_ptr) :: res")
         }
         t => panic!("no Fortran mapping for return type {t}"),
@@ -1103,7 +1106,7 @@ fn every_header_function_has_a_matching_fortran_interface() {
             // Pointers are passed by reference, except the opaque handle,
             // which is a type(c_ptr) passed by value.
             let by_value = decl.contains(", value ::");
-            let handle = ty.contains("struct tfem_model");
+            let handle = is_handle(ty);
             assert_eq!(
                 by_value,
                 handle || !ty.ends_with('*'),
@@ -1116,7 +1119,7 @@ fn every_header_function_has_a_matching_fortran_interface() {
                 "int64_t" => decl.contains("c_int64_t"),
                 "size_t" => decl.contains("c_size_t"),
                 "char" => decl.contains("c_char"),
-                "struct tfem_model" => decl.contains("c_ptr"),
+                "struct tfem_model" | "struct tfem_contact" => decl.contains("c_ptr"),
                 s => decl.contains(s.trim_start_matches("struct ")),
             };
             assert!(kind_ok, "{}: {n} declared `{decl}` for C type {ty}", p.name);

@@ -17,10 +17,12 @@
 //! opening, not on the displacement jump alone, so an element that closes an
 //! initial gap switches on without a force jump.
 
+pub mod host;
 pub mod law;
 pub mod mesh;
 pub mod set;
 
+pub use host::{HostContact, Update};
 pub use law::{
     ContactStiffness, contact_pressure, contact_stiffness, law_matrix, linearised_jacobian,
     linearised_opening, opening_coefficient,

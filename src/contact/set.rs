@@ -7,6 +7,7 @@
 //! and the solve's options; the built-in solver and a host code's own
 //! loop use the same set.
 
+use std::borrow::Cow;
 use std::collections::{BTreeMap, HashSet};
 
 use super::law::{
@@ -34,8 +35,11 @@ pub struct ElementLaw {
 
 /// The elements of B with everything a solve needs of them.
 pub struct ContactSet<'a> {
-    nodes: Nodes<'a>,
-    elements: &'a [ContactElement],
+    /// Coordinates of the nodes of B's elements.
+    x: Cow<'a, [[f64; 2]]>,
+    /// The index base of messages.
+    base: usize,
+    elements: Cow<'a, [ContactElement]>,
     options: ContactOptions,
     laws: Vec<ElementLaw>,
     geos: Vec<TriGeometry>,
@@ -58,6 +62,32 @@ impl<'a> ContactSet<'a> {
         prescribed: &[f64],
         options: &ContactOptions,
     ) -> Result<ContactSet<'a>> {
+        let owners = (Cow::Borrowed(nodes.x), nodes.base, Cow::Borrowed(elements));
+        Self::build(owners, laws, equation, prescribed, options)
+    }
+
+    /// [`ContactSet::new`] owning its nodes' coordinates `x` (messages in
+    /// index base `base`) and its elements.
+    pub fn owned(
+        (x, base, elements): (Vec<[f64; 2]>, usize, Vec<ContactElement>),
+        laws: Vec<ElementLaw>,
+        equation: impl Fn(usize) -> Option<usize>,
+        prescribed: &[f64],
+        options: &ContactOptions,
+    ) -> Result<ContactSet<'static>> {
+        let owners = (Cow::Owned(x), base, Cow::Owned(elements));
+        ContactSet::build(owners, laws, equation, prescribed, options)
+    }
+
+    #[allow(clippy::type_complexity)]
+    fn build(
+        (x, base, elements): (Cow<'a, [[f64; 2]]>, usize, Cow<'a, [ContactElement]>),
+        laws: Vec<ElementLaw>,
+        equation: impl Fn(usize) -> Option<usize>,
+        prescribed: &[f64],
+        options: &ContactOptions,
+    ) -> Result<ContactSet<'a>> {
+        let nodes = Nodes { x: &x, base };
         let geos: Vec<TriGeometry> = elements
             .iter()
             .map(|el| TriGeometry::new(&nodes.corners(&el.nodes)))
@@ -78,9 +108,10 @@ impl<'a> ContactSet<'a> {
             .iter()
             .map(|el| std::array::from_fn(|a| equation(2 * el.nodes[a / 2] + a % 2)))
             .collect();
-        let loads = element_loads(elements, &stiffness, &unknowns, prescribed);
+        let loads = element_loads(&elements, &stiffness, &unknowns, prescribed);
         Ok(ContactSet {
-            nodes,
+            x,
+            base,
             elements,
             options: *options,
             laws,
@@ -92,8 +123,11 @@ impl<'a> ContactSet<'a> {
     }
 
     /// The nodes B is built on.
-    pub fn nodes(&self) -> Nodes<'a> {
-        self.nodes
+    pub fn nodes(&self) -> Nodes<'_> {
+        Nodes {
+            x: &self.x,
+            base: self.base,
+        }
     }
 
     /// Number of elements.
@@ -107,8 +141,8 @@ impl<'a> ContactSet<'a> {
     }
 
     /// The elements of B.
-    pub fn elements(&self) -> &'a [ContactElement] {
-        self.elements
+    pub fn elements(&self) -> &[ContactElement] {
+        &self.elements
     }
 
     /// Each element's law.
@@ -134,7 +168,7 @@ impl<'a> ContactSet<'a> {
 
     /// The active set the loop starts from ([`initial_active_set`]).
     pub fn initial_active(&self) -> Vec<bool> {
-        initial_active_set(self.elements)
+        initial_active_set(&self.elements)
     }
 
     /// The inversion test: which elements are inverted for the element
@@ -151,7 +185,7 @@ impl<'a> ContactSet<'a> {
                         linearised_opening(&self.geos[k], law, el.normal, &ue)
                     }
                     InversionTest::Literal => {
-                        let mut x = self.nodes.corners(&el.nodes);
+                        let mut x = self.nodes().corners(&el.nodes);
                         for (i, p) in x.iter_mut().enumerate() {
                             p[0] += ue[2 * i];
                             p[1] += ue[2 * i + 1];

@@ -1,5 +1,7 @@
-//! The C ABI: a thin translation layer over [`crate::Model`], in three
-//! parts: the entry points (`entry`), the plumbing every entry point shares
+//! The C ABI: a thin translation layer over [`crate::Model`] and
+//! [`crate::contact::HostContact`], in four parts: the entry points of the
+//! model (`entry`) and of the contact context for host codes (`host`), the
+//! plumbing every entry point shares
 //! (handles, panics, errors, caller buffers: `plumbing`) and the `repr(C)`
 //! mirrors of the Rust types with their conversions (`convert`).
 //!
@@ -18,10 +20,12 @@
 
 mod convert;
 mod entry;
+mod host;
 mod plumbing;
 
 pub use convert::{
     OrderingMode, TemperingMode, TfemContactOptions, TfemContactReport, TfemSolveInfo,
 };
 pub use entry::*;
+pub use host::*;
 pub use plumbing::TfemModel;

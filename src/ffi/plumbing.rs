@@ -64,31 +64,55 @@ pub(super) fn guarded<R>(f: impl FnOnce() -> R) -> std::thread::Result<R> {
     result
 }
 
-/// Runs `f` on a model handle, catching panics and recording the message.
+/// A handle that keeps the message of its last failed call.
+pub(super) trait Handle {
+    /// The name of the handle argument in messages.
+    const ARGUMENT: &'static str;
+    /// The handle's error slot.
+    fn last_error(&mut self) -> &mut String;
+}
+
+impl Handle for TfemModel {
+    const ARGUMENT: &'static str = "model";
+    fn last_error(&mut self) -> &mut String {
+        &mut self.last_error
+    }
+}
+
+/// Runs `f` on a handle, catching panics and recording the message in the
+/// handle (in the thread's slot when the handle is NULL).
+pub(super) fn with_handle<H: Handle>(
+    handle: *mut H,
+    f: impl FnOnce(&mut H) -> Result<()>,
+) -> Status {
+    // SAFETY: the caller passes a handle from its create function (or
+    // NULL), used by one thread at a time per the thread contract.
+    let Some(h) = (unsafe { handle.as_mut() }) else {
+        set_global_error(&format!("argument `{}` is NULL", H::ARGUMENT));
+        return Status::NullPointer;
+    };
+    match guarded(|| f(h)) {
+        Ok(Ok(())) => {
+            h.last_error().clear();
+            Status::Ok
+        }
+        Ok(Err(e)) => {
+            *h.last_error() = e.message().to_string();
+            e.status()
+        }
+        Err(p) => {
+            *h.last_error() = panic_message(p.as_ref());
+            Status::Internal
+        }
+    }
+}
+
+/// Runs `f` on a model handle ([`with_handle`]).
 pub(super) fn with_model(
     model: *mut TfemModel,
     f: impl FnOnce(&mut TfemModel) -> Result<()>,
 ) -> Status {
-    // SAFETY: the caller passes a handle from tfem_create (or NULL), used by
-    // one thread at a time per the thread contract.
-    let Some(m) = (unsafe { model.as_mut() }) else {
-        set_global_error("argument `model` is NULL");
-        return Status::NullPointer;
-    };
-    match guarded(|| f(m)) {
-        Ok(Ok(())) => {
-            m.last_error.clear();
-            Status::Ok
-        }
-        Ok(Err(e)) => {
-            m.last_error = e.message().to_string();
-            e.status()
-        }
-        Err(p) => {
-            m.last_error = panic_message(p.as_ref());
-            Status::Internal
-        }
-    }
+    with_handle(model, f)
 }
 
 /// Runs a model-free call, catching panics; errors go to the thread's

@@ -1,0 +1,653 @@
+//! Contact for codes that keep their own elements, assembly, solver and
+//! Newton loop: the host describes the contact interfaces in its own
+//! numbering (the interface nodes, their coordinates, the equation of each
+//! node's x and y unknowns, and the edges of each side), tfem builds the
+//! contact mesh B once and returns, at each evaluation, the contact
+//! contributions in the host's equation numbering.
+//!
+//! B's topology never changes, so the pattern of its contributions is fixed
+//! ([`HostContact::pattern`]: every element's 6×6 block, inactive elements
+//! contributing zeros) and each evaluation only fills values. The law of an
+//! element of B is linear (small strain): an active element contributes its
+//! tempered stiffness K_e to the tangent and its internal force
+//! K_e u_e − f0_e to the residual, f0_e the load of an initial gap (zero
+//! for touching surfaces). A linear host adds the values to its matrix and
+//! f0 (the residual at u = 0, negated) to its right-hand side; a Newton host
+//! adds the values to its tangent and the residual at its current u to its
+//! residual.
+//!
+//! Between solves the host asks [`HostContact::update`] which elements are
+//! inverted (the same test and cycle detection as tfem's own loop, which is
+//! a client of the same [`ContactSet`] and [`ActiveSet`]).
+
+use std::collections::HashMap;
+
+use super::mesh::{Nodes, Side, checked_triangles, strip};
+use super::set::{ActiveSet, ContactSet, element_laws, softer};
+use super::{ContactElement, ContactOptions};
+use crate::error::{Error, Result, ensure_finite};
+use crate::fem::material::Material;
+
+/// A pair of sides, with the contact mesh the host may give for it.
+#[derive(Debug, Clone)]
+struct HostPair {
+    sides: [usize; 2],
+    /// Triangles over local node indices, if the host gave B.
+    triangles: Option<Vec<[usize; 3]>>,
+}
+
+/// What [`HostContact::setup`] builds.
+struct Built {
+    set: ContactSet<'static>,
+    active: ActiveSet,
+    /// The pattern: rows and columns in the host's numbering (index base
+    /// applied), and the (element, a, b) each entry comes from.
+    rows: Vec<i64>,
+    cols: Vec<i64>,
+    entries: Vec<(u32, u8, u8)>,
+}
+
+/// The contact of a host code's bodies (module documentation).
+pub struct HostContact {
+    base: usize,
+    options: ContactOptions,
+    /// The interface nodes: coordinates, host numbers, equations (0-based).
+    x: Vec<[f64; 2]>,
+    node_id: Vec<i64>,
+    local: HashMap<i64, usize>,
+    equation: Vec<[Option<usize>; 2]>,
+    sides: Vec<(Side, Material)>,
+    pairs: Vec<HostPair>,
+    built: Option<Built>,
+}
+
+/// What an active-set update changed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Update {
+    /// Whether the active set changed (false: settled).
+    pub changed: bool,
+    /// Elements switched on.
+    pub switched_on: usize,
+    /// Elements switched off.
+    pub switched_off: usize,
+}
+
+impl HostContact {
+    /// An empty context whose node numbers and equations are in
+    /// `index_base` (0 or 1), under `options` (law, E_c, λ, inversion
+    /// test, and the cap on active-set updates before a loop counts as not
+    /// converged).
+    pub fn new(index_base: usize, options: ContactOptions) -> Result<HostContact> {
+        if index_base > 1 {
+            return Err(Error::argument(format!(
+                "index_base = {index_base} must be 0 or 1"
+            )));
+        }
+        options.validate()?;
+        Ok(HostContact {
+            base: index_base,
+            options,
+            x: Vec::new(),
+            node_id: Vec::new(),
+            local: HashMap::new(),
+            equation: Vec::new(),
+            sides: Vec::new(),
+            pairs: Vec::new(),
+            built: None,
+        })
+    }
+
+    /// The index base of node numbers and equations.
+    pub fn index_base(&self) -> usize {
+        self.base
+    }
+
+    /// Replaces the options (before the contact mesh is built).
+    pub fn set_options(&mut self, options: ContactOptions) -> Result<()> {
+        self.check_open()?;
+        options.validate()?;
+        self.options = options;
+        Ok(())
+    }
+
+    /// The number of interface nodes.
+    pub fn n_nodes(&self) -> usize {
+        self.x.len()
+    }
+
+    /// Adds per-node values (2 per interface node, as a residual) into the
+    /// host's vector indexed by equation (index base applied); DOFs without
+    /// an equation are left out. Checked before anything is added.
+    pub fn scatter_add(&self, per_node: &[f64], host: &mut [f64]) -> Result<()> {
+        if per_node.len() != 2 * self.x.len() {
+            return Err(Error::argument(format!(
+                "`residual` holds {} values but the {} interface nodes need {}",
+                per_node.len(),
+                self.x.len(),
+                2 * self.x.len()
+            )));
+        }
+        self.check_equations(host.len())?;
+        for (v, eq) in self.equation.iter().enumerate() {
+            for c in 0..2 {
+                if let Some(e) = eq[c] {
+                    host[e] += per_node[2 * v + c];
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Refuses a host vector of `n` values that some equation does not fit.
+    fn check_equations(&self, n: usize) -> Result<()> {
+        for (v, eq) in self.equation.iter().enumerate() {
+            if let Some(e) = eq.iter().flatten().find(|&&e| e >= n) {
+                return Err(Error::argument(format!(
+                    "the host vector holds {n} values but interface node {} has equation {}",
+                    self.node_id[v],
+                    e + self.base
+                )));
+            }
+        }
+        Ok(())
+    }
+
+    /// Adds one side of a contact interface, of body `body` with material
+    /// `material` (its E is the default E_c when it is the softer side; the
+    /// stick law takes its ν): its interface nodes (the host's numbers)
+    /// with their coordinates and the equations of their x and y unknowns
+    /// (below the index base: no unknown, the DOF is fixed), and its edges
+    /// (pairs of those node numbers), each with the body on its left. A
+    /// node given by two sides (a corner shared by bodies) must come with
+    /// the same coordinates and equations. Returns the side's index
+    /// (0-based). On error nothing changes.
+    #[allow(clippy::too_many_arguments)]
+    pub fn add_side(
+        &mut self,
+        tag: i32,
+        body: i32,
+        material: Material,
+        nodes: &[i64],
+        xy: &[[f64; 2]],
+        equations: &[[i64; 2]],
+        edges: &[[i64; 2]],
+    ) -> Result<usize> {
+        self.check_open()?;
+        if xy.len() != nodes.len() || equations.len() != nodes.len() {
+            return Err(Error::argument(format!(
+                "side {tag}: {} nodes but {} coordinates and {} equation pairs",
+                nodes.len(),
+                xy.len(),
+                equations.len()
+            )));
+        }
+        let mut fresh: Vec<(i64, [f64; 2], [Option<usize>; 2])> = Vec::new();
+        let mut local = self.local.clone();
+        for (i, (&id, (&p, eq))) in nodes.iter().zip(xy.iter().zip(equations)).enumerate() {
+            let eq = eq.map(|e| usize::try_from(e - self.base as i64).ok());
+            if !(p[0].is_finite() && p[1].is_finite()) {
+                return Err(Error::argument(format!(
+                    "side {tag}: node {id} has coordinates ({:?}, {:?})",
+                    p[0], p[1]
+                )));
+            }
+            match local.get(&id) {
+                Some(&k) => {
+                    let (x0, e0) = match k < self.x.len() {
+                        true => (self.x[k], self.equation[k]),
+                        false => (fresh[k - self.x.len()].1, fresh[k - self.x.len()].2),
+                    };
+                    if x0 != p || e0 != eq {
+                        return Err(Error::argument(format!(
+                            "side {tag}: node {id} (entry {}) is given again with other \
+                             coordinates or equations",
+                            i + self.base
+                        )));
+                    }
+                }
+                None => {
+                    local.insert(id, self.x.len() + fresh.len());
+                    fresh.push((id, p, eq));
+                }
+            }
+        }
+        let mut x = self.x.clone();
+        x.extend(fresh.iter().map(|f| f.1));
+        let mut pairs = Vec::with_capacity(edges.len());
+        for (e, &[p, q]) in edges.iter().enumerate() {
+            let find = |id: i64| {
+                local.get(&id).copied().ok_or_else(|| {
+                    Error::argument(format!(
+                        "side {tag}: edge {} names node {id}, not one of the side's nodes",
+                        e + self.base
+                    ))
+                })
+            };
+            pairs.push([find(p)?, find(q)?]);
+        }
+        let side = Side::from_edges(&x, self.base, tag, body, &pairs)?;
+        self.x = x;
+        for (id, _, eq) in fresh {
+            self.node_id.push(id);
+            self.equation.push(eq);
+        }
+        self.local = local;
+        self.sides.push((side, material));
+        Ok(self.sides.len() - 1)
+    }
+
+    /// Declares sides `a` and `b` (indices from [`HostContact::add_side`],
+    /// on different bodies) a contact pair: B is built from their matching
+    /// nodes, or by triangulating the strip between them. Returns the
+    /// pair's index.
+    pub fn add_pair(&mut self, a: usize, b: usize) -> Result<usize> {
+        self.add_pair_with(a, b, None)
+    }
+
+    /// Declares a pair with the contact mesh B the host gives: triangles
+    /// over interface nodes of the two sides (host numbers). Returns the
+    /// pair's index.
+    pub fn add_pair_with_mesh(
+        &mut self,
+        a: usize,
+        b: usize,
+        triangles: &[[i64; 3]],
+    ) -> Result<usize> {
+        let mut local = Vec::with_capacity(triangles.len());
+        for (t, tri) in triangles.iter().enumerate() {
+            let mut l = [0; 3];
+            for k in 0..3 {
+                l[k] = *self.local.get(&tri[k]).ok_or_else(|| {
+                    Error::argument(format!(
+                        "contact triangle {}: node {} is on no side",
+                        t + self.base,
+                        tri[k]
+                    ))
+                })?;
+            }
+            local.push(l);
+        }
+        self.add_pair_with(a, b, Some(local))
+    }
+
+    fn add_pair_with(
+        &mut self,
+        a: usize,
+        b: usize,
+        triangles: Option<Vec<[usize; 3]>>,
+    ) -> Result<usize> {
+        self.check_open()?;
+        for s in [a, b] {
+            if s >= self.sides.len() {
+                return Err(Error::argument(format!(
+                    "side {s} does not exist ({} sides, 0-based)",
+                    self.sides.len()
+                )));
+            }
+        }
+        let (sa, sb) = (&self.sides[a].0, &self.sides[b].0);
+        if sa.body == sb.body {
+            return Err(Error::contact(format!(
+                "sides {a} and {b} are both on body {}: self-contact is not supported",
+                sa.body
+            )));
+        }
+        // Build it now, so that a bad pair is reported by this call.
+        let pair = HostPair {
+            sides: [a, b],
+            triangles,
+        };
+        self.elements_of(self.pairs.len(), &pair)?;
+        self.pairs.push(pair);
+        Ok(self.pairs.len() - 1)
+    }
+
+    fn check_open(&self) -> Result<()> {
+        match self.built {
+            Some(_) => Err(Error::state(
+                "the contact mesh is built: sides and pairs are fixed (create a new context)",
+            )),
+            None => Ok(()),
+        }
+    }
+
+    fn elements_of(&self, index: usize, pair: &HostPair) -> Result<Vec<ContactElement>> {
+        let nodes = Nodes {
+            x: &self.x,
+            base: self.base,
+        };
+        let (a, b) = (&self.sides[pair.sides[0]].0, &self.sides[pair.sides[1]].0);
+        match &pair.triangles {
+            None => strip(nodes, index, a, b),
+            Some(t) => Ok(checked_triangles(nodes, index, a, b, t)?.0),
+        }
+    }
+
+    /// Builds B of every pair, its laws and the pattern; the sides and
+    /// pairs are fixed from then on. Called by the first call that needs
+    /// them. The active set starts as tfem's own loop does (per pair, the
+    /// elements at the smallest gap).
+    pub fn setup(&mut self) -> Result<()> {
+        if self.built.is_some() {
+            return Ok(());
+        }
+        if self.pairs.is_empty() {
+            return Err(Error::state("no contact pair: call add_pair first"));
+        }
+        let mut elements = Vec::new();
+        for (i, pair) in self.pairs.iter().enumerate() {
+            elements.append(&mut self.elements_of(i, pair)?);
+        }
+        let soft = |pair: usize| {
+            let [a, b] = self.pairs[pair].sides;
+            softer(self.sides[a].1, self.sides[b].1)
+        };
+        let laws = element_laws(self.base, &elements, soft, self.size(), &self.options)?;
+        let equation = |g: usize| self.equation[g / 2][g % 2];
+        let owners = (self.x.clone(), self.base, elements);
+        let set = ContactSet::owned(owners, laws, equation, &[], &self.options)?;
+        let active = ActiveSet::new(set.initial_active());
+        let (mut rows, mut cols, mut entries) = (Vec::new(), Vec::new(), Vec::new());
+        for k in 0..set.len() {
+            let eq = set.unknowns(k);
+            for a in 0..6 {
+                for b in 0..6 {
+                    if let (Some(i), Some(j)) = (eq[a], eq[b]) {
+                        rows.push((i + self.base) as i64);
+                        cols.push((j + self.base) as i64);
+                        entries.push((k as u32, a as u8, b as u8));
+                    }
+                }
+            }
+        }
+        self.built = Some(Built {
+            set,
+            active,
+            rows,
+            cols,
+            entries,
+        });
+        Ok(())
+    }
+
+    /// The default λ: the larger side of the interface nodes' bounding box.
+    fn size(&self) -> f64 {
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for p in &self.x {
+            for k in 0..2 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+        (hi[0] - lo[0]).max(hi[1] - lo[1])
+    }
+
+    fn built(&mut self) -> Result<&mut Built> {
+        self.setup()?;
+        Ok(self.built.as_mut().expect("just built"))
+    }
+
+    /// [`HostContact::built`] borrowing the field only (beside the others).
+    fn ready(built: &mut Option<Built>) -> &mut Built {
+        built.as_mut().expect("set up")
+    }
+
+    /// The interface nodes, in the order of every per-node array (host
+    /// numbers).
+    pub fn nodes(&self) -> &[i64] {
+        &self.node_id
+    }
+
+    /// The elements of B (nodes as indices into [`HostContact::nodes`]).
+    pub fn elements(&mut self) -> Result<&[ContactElement]> {
+        Ok(self.built()?.set.elements())
+    }
+
+    /// The fixed pattern of the contributions: (rows, columns) in the
+    /// host's equation numbering (index base applied). Element after
+    /// element of B; within one, its 6×6 block row by row over its DOFs
+    /// (x then y of its first node, of its second, of its third), the
+    /// entries of DOFs without an equation left out. Both triangles of each
+    /// block; duplicates (a DOF pair shared by elements) are to be summed.
+    pub fn pattern(&mut self) -> Result<(&[i64], &[i64])> {
+        let b = self.built()?;
+        Ok((&b.rows, &b.cols))
+    }
+
+    /// The equation of each of element `k`'s six DOFs (index base
+    /// applied), `None` where the DOF has none.
+    pub fn element_equations(&mut self, k: usize) -> Result<[Option<i64>; 6]> {
+        let base = self.base as i64;
+        let b = self.built()?;
+        if k >= b.set.len() {
+            return Err(Error::argument(format!(
+                "contact element {} does not exist ({} elements)",
+                k + base as usize,
+                b.set.len()
+            )));
+        }
+        Ok(b.set.unknowns(k).map(|e| e.map(|e| e as i64 + base)))
+    }
+
+    /// The 6×6 block (row-major) element `k` contributes to the tangent:
+    /// its stiffness when active, zeros when not.
+    pub fn element_block(&mut self, k: usize, out: &mut [f64; 36]) -> Result<()> {
+        self.element_equations(k)?;
+        let b = self.built()?;
+        *out = match b.active.active()[k] {
+            true => b.set.stiffness(k).k,
+            false => [0.0; 36],
+        };
+        Ok(())
+    }
+
+    /// The active flag of every element of B.
+    pub fn active(&mut self) -> Result<&[bool]> {
+        Ok(self.built()?.active.active())
+    }
+
+    /// Sets the active flags (a warm start, or a restored state); the
+    /// history and cycle detection start anew.
+    pub fn set_active(&mut self, active: &[bool]) -> Result<()> {
+        let b = self.built()?;
+        if active.len() != b.set.len() {
+            return Err(Error::argument(format!(
+                "{} active flags for {} contact elements",
+                active.len(),
+                b.set.len()
+            )));
+        }
+        b.active = ActiveSet::new(active.to_vec());
+        Ok(())
+    }
+
+    /// Starts a new active-set loop from the current flags (a new load
+    /// step): the history and the sets visited are forgotten.
+    pub fn restart(&mut self) -> Result<()> {
+        let b = self.built()?;
+        b.active = ActiveSet::new(b.active.active().to_vec());
+        Ok(())
+    }
+
+    /// Checks a per-node displacement array (2 per interface node).
+    fn check_u(&self, u: &[f64]) -> Result<()> {
+        if u.len() != 2 * self.x.len() {
+            return Err(Error::argument(format!(
+                "`u` holds {} values but the {} interface nodes need {}",
+                u.len(),
+                self.x.len(),
+                2 * self.x.len()
+            )));
+        }
+        let name = |v: usize| format!("interface node {}", self.node_id[v]);
+        ensure_finite(u.iter().copied(), 2, "displacement", name)
+    }
+
+    /// The per-node displacements of the host's solution vector `u_eq`
+    /// (indexed by equation, index base applied); DOFs without an equation
+    /// count as fixed at zero. Checked before anything is written.
+    pub fn gather(&self, u_eq: &[f64], u: &mut [f64]) -> Result<()> {
+        if u.len() != 2 * self.x.len() {
+            return Err(Error::argument(format!(
+                "`u` holds {} values but the {} interface nodes need {}",
+                u.len(),
+                self.x.len(),
+                2 * self.x.len()
+            )));
+        }
+        self.check_equations(u_eq.len())?;
+        for (v, eq) in self.equation.iter().enumerate() {
+            for c in 0..2 {
+                u[2 * v + c] = eq[c].map_or(0.0, |e| u_eq[e]);
+            }
+        }
+        Ok(())
+    }
+
+    /// The contact contributions at the per-node displacements `u`: the
+    /// tangent's values in the order of [`HostContact::pattern`] (zeros for
+    /// inactive elements) into `values` when given, and the residual
+    /// Σ_active (K_e u_e − f0_e), 2 per interface node, into `residual` when
+    /// given. Allocates nothing.
+    pub fn evaluate(
+        &mut self,
+        u: &[f64],
+        values: Option<&mut [f64]>,
+        residual: Option<&mut [f64]>,
+    ) -> Result<()> {
+        self.check_u(u)?;
+        self.setup()?;
+        let n_nodes = self.x.len();
+        let b = Self::ready(&mut self.built);
+        if let Some(values) = values {
+            if values.len() != b.entries.len() {
+                return Err(Error::argument(format!(
+                    "`values` holds {} values but the pattern has {}",
+                    values.len(),
+                    b.entries.len()
+                )));
+            }
+            let active = b.active.active();
+            for (v, &(k, a, c)) in values.iter_mut().zip(&b.entries) {
+                let k = k as usize;
+                *v = match active[k] {
+                    true => b.set.stiffness(k).k[6 * a as usize + c as usize],
+                    false => 0.0,
+                };
+            }
+        }
+        if let Some(residual) = residual {
+            if residual.len() != 2 * n_nodes {
+                return Err(Error::argument(format!(
+                    "`residual` holds {} values but the {} interface nodes need {}",
+                    residual.len(),
+                    n_nodes,
+                    2 * n_nodes
+                )));
+            }
+            residual.fill(0.0);
+            for (k, el) in b.set.elements().iter().enumerate() {
+                if !b.active.active()[k] {
+                    continue;
+                }
+                let cs = b.set.stiffness(k);
+                let ue: [f64; 6] = std::array::from_fn(|a| u[2 * el.nodes[a / 2] + a % 2]);
+                for a in 0..6 {
+                    let ku: f64 = (0..6).map(|c| cs.k[6 * a + c] * ue[c]).sum();
+                    residual[2 * el.nodes[a / 2] + a % 2] += ku - cs.f0[a];
+                }
+            }
+            let name = |v: usize| format!("interface node {}", self.node_id[v]);
+            ensure_finite(residual.iter().copied(), 2, "contact residual", name)?;
+        }
+        Ok(())
+    }
+
+    /// The inversion test at the per-node displacements `u` (the solution
+    /// of a solve with the current active set): switches the elements that
+    /// the test finds inverted on and the others off, and says what
+    /// changed. A set visited before (a cycle), or more updates than the
+    /// options allow, is refused with `NotConverged` and the history; the
+    /// flags then stay as they were.
+    pub fn update(&mut self, u: &[f64]) -> Result<Update> {
+        self.check_u(u)?;
+        let cap = self.options.max_iterations;
+        let b = self.built()?;
+        let elements = b.set.elements();
+        let verdict = b.set.inverted(|k| {
+            let tri = &elements[k].nodes;
+            std::array::from_fn(|a| u[2 * tri[a / 2] + a % 2])
+        });
+        let iteration = b.active.history().len() + 1;
+        if iteration > cap {
+            return Err(b.active.not_settled(cap));
+        }
+        let before: Vec<bool> = b.active.active().to_vec();
+        let settled = b.active.advance(verdict, iteration)?;
+        let now = b.active.active();
+        let on = now.iter().zip(&before).filter(|(n, o)| **n && !**o).count();
+        let off = now.iter().zip(&before).filter(|(n, o)| !**n && **o).count();
+        Ok(Update {
+            changed: !settled,
+            switched_on: on,
+            switched_off: off,
+        })
+    }
+
+    /// The normal gap at every interface node for the displacements `u`
+    /// (linearised; negative: interpenetration): the smallest, over the
+    /// elements of B at the node, of the distance of an element's apex from
+    /// its interface edge.
+    pub fn gaps(&mut self, u: &[f64], out: &mut [f64]) -> Result<()> {
+        self.check_u(u)?;
+        let n = self.x.len();
+        if out.len() != n {
+            return Err(Error::argument(format!(
+                "`gaps` holds {} values but there are {n} interface nodes",
+                out.len()
+            )));
+        }
+        let b = self.built()?;
+        out.fill(f64::INFINITY);
+        for (k, el) in b.set.elements().iter().enumerate() {
+            if el.edge_length <= 0.0 {
+                continue;
+            }
+            let ue: [f64; 6] = std::array::from_fn(|a| u[2 * el.nodes[a / 2] + a % 2]);
+            let g = b.set.opening(k, &ue) / el.edge_length;
+            for &v in &el.nodes {
+                out[v] = out[v].min(g);
+            }
+        }
+        out.iter_mut()
+            .filter(|g| **g == f64::INFINITY)
+            .for_each(|g| *g = 0.0);
+        Ok(())
+    }
+
+    /// The contact pressure of every element of B for the displacements
+    /// `u` (a stress, positive in compression; zero when inactive).
+    pub fn pressures(&mut self, u: &[f64], out: &mut [f64]) -> Result<()> {
+        self.check_u(u)?;
+        let b = self.built()?;
+        if out.len() != b.set.len() {
+            return Err(Error::argument(format!(
+                "`pressures` holds {} values but there are {} contact elements",
+                out.len(),
+                b.set.len()
+            )));
+        }
+        for (k, el) in b.set.elements().iter().enumerate() {
+            out[k] = match b.active.active()[k] {
+                true => {
+                    let ue: [f64; 6] = std::array::from_fn(|a| u[2 * el.nodes[a / 2] + a % 2]);
+                    b.set.pressure(k, &ue)
+                }
+                false => 0.0,
+            };
+        }
+        let base = self.base;
+        let name = |k: usize| format!("contact element {}", k + base);
+        ensure_finite(out.iter().copied(), 1, "contact pressure", name)
+    }
+}

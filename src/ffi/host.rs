@@ -1,0 +1,535 @@
+//! The entry points of the contact context for host codes
+//! ([`crate::contact::HostContact`]): a second handle, `tfem_contact`,
+//! beside `tfem_model`.
+
+use std::ffi::{c_char, c_int};
+
+use super::convert::{TfemContactOptions, options_in, plane};
+use super::plumbing::{
+    Handle, copy_message, copy_out, count, guarded, null, set_global_error, slice_in, with_handle,
+    write,
+};
+use crate::contact::{ContactOptions, HostContact};
+use crate::error::{Error, Result, Status};
+use crate::fem::material::Material;
+
+/// Opaque handle to a contact context for a host code. Create with
+/// `tfem_contact_create`, free with `tfem_contact_destroy`.
+pub struct TfemContact {
+    contact: HostContact,
+    last_error: String,
+}
+
+impl Handle for TfemContact {
+    const ARGUMENT: &'static str = "context";
+    fn last_error(&mut self) -> &mut String {
+        &mut self.last_error
+    }
+}
+
+fn with_context(
+    context: *mut TfemContact,
+    f: impl FnOnce(&mut HostContact) -> Result<()>,
+) -> Status {
+    with_handle(context, |c| f(&mut c.contact))
+}
+
+/// A caller's buffer of exactly `n` values (more is allowed).
+fn out_slice<'a, T>(ptr: *mut T, len: usize, n: usize, what: &str) -> Result<&'a mut [T]> {
+    if ptr.is_null() {
+        return Err(null(what));
+    }
+    if len < n {
+        return Err(Error::new(
+            Status::BufferTooSmall,
+            format!("`{what}` holds {len} values but {n} are needed"),
+        ));
+    }
+    // SAFETY: the caller guarantees `len >= n` writable elements at `ptr`.
+    Ok(unsafe { std::slice::from_raw_parts_mut(ptr, n) })
+}
+
+/// Creates a contact context for a host code that keeps its own elements,
+/// assembly, solver and Newton loop: node numbers and equation numbers in
+/// `index_base` (0 for C, 1 for Fortran). Returns NULL if `index_base` is
+/// not 0 or 1 (message in `tfem_last_error(NULL, …)`) or memory is
+/// exhausted. The host then adds the sides of its contact interfaces
+/// (`tfem_contact_add_side`) and the pairs (`tfem_contact_add_pair`); the
+/// first call that needs the contact mesh B builds it, after which sides
+/// and pairs are fixed.
+#[unsafe(no_mangle)]
+pub extern "C" fn tfem_contact_create(index_base: c_int) -> *mut TfemContact {
+    let made = guarded(|| {
+        let base = usize::try_from(index_base)
+            .map_err(|_| Error::argument(format!("index_base = {index_base} must be 0 or 1")))?;
+        HostContact::new(base, ContactOptions::default())
+    });
+    match made {
+        Ok(Ok(contact)) => {
+            set_global_error("");
+            Box::into_raw(Box::new(TfemContact {
+                contact,
+                last_error: String::new(),
+            }))
+        }
+        Ok(Err(e)) => {
+            set_global_error(e.message());
+            std::ptr::null_mut()
+        }
+        Err(_) => std::ptr::null_mut(),
+    }
+}
+
+/// Destroys a contact context. NULL is a no-op.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_destroy(context: *mut TfemContact) {
+    if !context.is_null() {
+        // SAFETY: a handle from tfem_contact_create, destroyed once.
+        let _ = guarded(|| drop(unsafe { Box::from_raw(context) }));
+    }
+}
+
+/// Copies the message of the last failed call on `context` (empty after a
+/// successful call) into `buffer` (`length` bytes including the final NUL),
+/// truncating like `tfem_last_error`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_last_error(
+    context: *const TfemContact,
+    buffer: *mut c_char,
+    length: usize,
+) -> Status {
+    // SAFETY: a handle from tfem_contact_create, or NULL.
+    match unsafe { context.as_ref() } {
+        Some(c) => copy_message(&c.last_error, buffer, length),
+        None => Status::NullPointer,
+    }
+}
+
+/// Sets the contact options (law, E_c, λ, inversion test, and
+/// `max_iterations`: the number of `tfem_contact_update` calls of one loop
+/// before it counts as not converged; `refactorize` is ignored). Only
+/// before the contact mesh is built. Defaults: `tfem_contact_options_default`,
+/// with λ the larger side of the interface nodes' bounding box.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_set_options(
+    context: *mut TfemContact,
+    options: *const TfemContactOptions,
+) -> Status {
+    with_context(context, |c| {
+        // SAFETY: NULL or a caller-owned options struct.
+        let o = unsafe { options.as_ref() }.ok_or_else(|| null("options"))?;
+        c.set_options(options_in(o)?)
+    })
+}
+
+/// Adds one side of a contact interface, of body `body` (Young's modulus
+/// `young`, Poisson ratio `poisson`, `plane_mode` a `PlaneMode`: the
+/// softer side's E is the default E_c, the stick law takes its ν):
+/// `n_nodes` interface nodes `nodes` (the host's node numbers) with their
+/// coordinates `xy` (2 per node) and the equations of their x and y
+/// unknowns `equations` (2 per node, in the index base; a value below the
+/// base marks a fixed DOF without an equation), and `n_edges` edges
+/// `edges` (2 host node numbers each), each given with its body on its
+/// left (the counter-clockwise boundary orientation). A node of two sides
+/// must come with the same coordinates and equations. Writes the side's
+/// index (0-based) to `side` (may be NULL). On error nothing changes.
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn tfem_contact_add_side(
+    context: *mut TfemContact,
+    tag: c_int,
+    body: c_int,
+    young: f64,
+    poisson: f64,
+    plane_mode: c_int,
+    n_nodes: c_int,
+    nodes: *const c_int,
+    xy: *const f64,
+    equations: *const i64,
+    n_edges: c_int,
+    edges: *const c_int,
+    side: *mut c_int,
+) -> Status {
+    with_context(context, |c| {
+        let material = Material::new(young, poisson, plane(plane_mode)?, &format!("body {body}"))?;
+        let nn = count(n_nodes, "n_nodes")?;
+        let ne = count(n_edges, "n_edges")?;
+        let ids: Vec<i64> = slice_in(nodes, nn, "nodes")?
+            .iter()
+            .map(|&v| v as i64)
+            .collect();
+        let xy: Vec<[f64; 2]> = slice_in(xy, 2 * nn, "xy")?
+            .chunks_exact(2)
+            .map(|p| [p[0], p[1]])
+            .collect();
+        let eq: Vec<[i64; 2]> = slice_in(equations, 2 * nn, "equations")?
+            .chunks_exact(2)
+            .map(|e| [e[0], e[1]])
+            .collect();
+        let edges: Vec<[i64; 2]> = slice_in(edges, 2 * ne, "edges")?
+            .chunks_exact(2)
+            .map(|e| [e[0] as i64, e[1] as i64])
+            .collect();
+        let s = c.add_side(tag, body, material, &ids, &xy, &eq, &edges)?;
+        if !side.is_null() {
+            write(side, s as c_int, "side")?;
+        }
+        Ok(())
+    })
+}
+
+/// Declares sides `side_a` and `side_b` (on different bodies) a contact
+/// pair: the contact mesh B is built from their matching nodes, or by
+/// triangulating the strip between them. Writes the pair's index (0-based)
+/// to `pair` (may be NULL).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_add_pair(
+    context: *mut TfemContact,
+    side_a: c_int,
+    side_b: c_int,
+    pair: *mut c_int,
+) -> Status {
+    with_context(context, |c| {
+        let a = count(side_a, "side_a")?;
+        let b = count(side_b, "side_b")?;
+        let p = c.add_pair(a, b)?;
+        if !pair.is_null() {
+            write(pair, p as c_int, "pair")?;
+        }
+        Ok(())
+    })
+}
+
+/// Declares a pair with the host's own contact mesh B: `n_triangles`
+/// triangles `connectivity` (3 host node numbers each) over the interface
+/// nodes of the two sides; wrongly oriented ones are turned. Writes the
+/// pair's index (0-based) to `pair` (may be NULL).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_add_pair_with_mesh(
+    context: *mut TfemContact,
+    side_a: c_int,
+    side_b: c_int,
+    n_triangles: c_int,
+    connectivity: *const c_int,
+    pair: *mut c_int,
+) -> Status {
+    with_context(context, |c| {
+        let a = count(side_a, "side_a")?;
+        let b = count(side_b, "side_b")?;
+        let nt = count(n_triangles, "n_triangles")?;
+        let tris: Vec<[i64; 3]> = slice_in(connectivity, 3 * nt, "connectivity")?
+            .chunks_exact(3)
+            .map(|t| [t[0] as i64, t[1] as i64, t[2] as i64])
+            .collect();
+        let p = c.add_pair_with_mesh(a, b, &tris)?;
+        if !pair.is_null() {
+            write(pair, p as c_int, "pair")?;
+        }
+        Ok(())
+    })
+}
+
+/// Builds the contact mesh B (if not yet) and writes the sizes: interface
+/// nodes (the length of every per-node array: 2 values per node for
+/// displacements and residuals), elements of B, and entries of the
+/// pattern. Any pointer may be NULL.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_sizes(
+    context: *mut TfemContact,
+    n_nodes: *mut c_int,
+    n_elements: *mut c_int,
+    n_entries: *mut i64,
+) -> Status {
+    with_context(context, |c| {
+        let entries = c.pattern()?.0.len();
+        let elements = c.elements()?.len();
+        if !n_nodes.is_null() {
+            write(n_nodes, c.n_nodes() as c_int, "n_nodes")?;
+        }
+        if !n_elements.is_null() {
+            write(n_elements, elements as c_int, "n_elements")?;
+        }
+        if !n_entries.is_null() {
+            write(n_entries, entries as i64, "n_entries")?;
+        }
+        Ok(())
+    })
+}
+
+/// Copies the interface nodes (host numbers, n_nodes values), in the
+/// order of every per-node array.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_nodes(
+    context: *mut TfemContact,
+    out: *mut c_int,
+    length: usize,
+) -> Status {
+    with_context(context, |c| {
+        let v: Vec<c_int> = c.nodes().iter().map(|&n| n as c_int).collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies the fixed pattern of the contact contributions (n_entries rows
+/// and columns, in the host's equation numbering and index base): element
+/// after element of B, each element's 6×6 block row by row over its DOFs
+/// (x then y of its first, second and third node), the DOFs without an
+/// equation left out; both triangles of each block. Entries repeat where
+/// elements share a DOF pair: the host sums them.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_pattern(
+    context: *mut TfemContact,
+    rows: *mut i64,
+    cols: *mut i64,
+    length: usize,
+) -> Status {
+    with_context(context, |c| {
+        let (r, k) = c.pattern()?;
+        let n = r.len();
+        out_slice(rows, length, n, "rows")?;
+        out_slice(cols, length, n, "cols")?;
+        copy_out(r, rows, length, "rows")?;
+        copy_out(k, cols, length, "cols")
+    })
+}
+
+/// The contact contributions at the displacements `u` of the interface
+/// nodes (2 per node, `u_length` = 2·n_nodes): the tangent's values in the
+/// pattern's order into `values` (n_entries values; zeros for inactive
+/// elements; may be NULL), and the contact residual Σ (K_e u_e − f0_e) of
+/// the active elements, 2 per interface node, into `residual` (may be
+/// NULL). A linear host adds the values to its matrix and minus the
+/// residual at u = 0 (the load of initial gaps) to its right-hand side; a
+/// Newton host adds the values to its tangent and the residual at its
+/// current u to its residual. Allocates nothing.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_evaluate(
+    context: *mut TfemContact,
+    u: *const f64,
+    u_length: usize,
+    values: *mut f64,
+    values_length: usize,
+    residual: *mut f64,
+    residual_length: usize,
+) -> Status {
+    with_context(context, |c| {
+        let u = slice_in(u, u_length, "u")?;
+        let entries = c.pattern()?.0.len();
+        let n = 2 * c.n_nodes();
+        let values = match values.is_null() {
+            true => None,
+            false => Some(out_slice(values, values_length, entries, "values")?),
+        };
+        let residual = match residual.is_null() {
+            true => None,
+            false => Some(out_slice(residual, residual_length, n, "residual")?),
+        };
+        c.evaluate(u, values, residual)
+    })
+}
+
+/// Copies into `u` (2 per interface node) the displacements of the
+/// interface nodes from the host's solution vector `u_equations`
+/// (`n_equations` values; entry i is equation i + index_base); a DOF
+/// without an equation counts as fixed at zero.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_gather(
+    context: *mut TfemContact,
+    u_equations: *const f64,
+    n_equations: usize,
+    u: *mut f64,
+    u_length: usize,
+) -> Status {
+    with_context(context, |c| {
+        let host = slice_in(u_equations, n_equations, "u_equations")?;
+        let n = 2 * c.n_nodes();
+        c.gather(host, out_slice(u, u_length, n, "u")?)
+    })
+}
+
+/// Adds per-node values `residual` (2 per interface node, as
+/// `tfem_contact_evaluate` writes them) into the host's vector
+/// `host_vector` (`n_equations` values, entry i is equation i +
+/// index_base); DOFs without an equation are left out.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_scatter_add(
+    context: *mut TfemContact,
+    residual: *const f64,
+    residual_length: usize,
+    host_vector: *mut f64,
+    n_equations: usize,
+) -> Status {
+    with_context(context, |c| {
+        let r = slice_in(residual, residual_length, "residual")?;
+        c.scatter_add(
+            r,
+            out_slice(host_vector, n_equations, n_equations, "host_vector")?,
+        )
+    })
+}
+
+/// The inversion test at the displacements `u` (2 per interface node) of
+/// a solve with the current active set: the elements found inverted are
+/// switched on, the others off; `changed` (may be NULL) is set to 1 if the
+/// set changed, 0 if it settled. The same test and cycle detection as
+/// tfem's own loop: a set visited before, or more calls than the options'
+/// `max_iterations` since the last `tfem_contact_restart`, gives
+/// TFEM_STATUS_NOT_CONVERGED with the history, the set unchanged.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_update(
+    context: *mut TfemContact,
+    u: *const f64,
+    u_length: usize,
+    changed: *mut c_int,
+) -> Status {
+    with_context(context, |c| {
+        let u = slice_in(u, u_length, "u")?;
+        let update = c.update(u)?;
+        if !changed.is_null() {
+            write(changed, c_int::from(update.changed), "changed")?;
+        }
+        Ok(())
+    })
+}
+
+/// Starts a new active-set loop from the current flags (a new load step):
+/// the history and the sets visited are forgotten.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_restart(context: *mut TfemContact) -> Status {
+    with_context(context, |c| c.restart())
+}
+
+/// Copies the active flag (1 active, 0 not) of every element of B.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_get_active(
+    context: *mut TfemContact,
+    out: *mut c_int,
+    length: usize,
+) -> Status {
+    with_context(context, |c| {
+        let v: Vec<c_int> = c.active()?.iter().map(|&a| c_int::from(a)).collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Sets the active flags of the elements of B (n_elements values, 0 or
+/// 1): a warm start or a restored state; starts a new loop.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_set_active(
+    context: *mut TfemContact,
+    active: *const c_int,
+    length: usize,
+) -> Status {
+    with_context(context, |c| {
+        let a = slice_in(active, length, "active")?;
+        if let Some(k) = a.iter().position(|&v| v != 0 && v != 1) {
+            return Err(Error::argument(format!(
+                "active[{k}] = {} must be 0 or 1",
+                a[k]
+            )));
+        }
+        let flags: Vec<bool> = a.iter().map(|&v| v == 1).collect();
+        c.set_active(&flags)
+    })
+}
+
+/// Copies the normal gap at every interface node (n_nodes values, model
+/// length units) for the displacements `u` (2 per interface node): the
+/// smallest, over the elements of B at the node, of the distance of an
+/// element's apex from its interface edge (linearised; negative:
+/// interpenetration).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_gaps(
+    context: *mut TfemContact,
+    u: *const f64,
+    u_length: usize,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_context(context, |c| {
+        let u = slice_in(u, u_length, "u")?;
+        let n = c.n_nodes();
+        let out = out_slice(out, length, n, "out")?;
+        c.gaps(u, out)
+    })
+}
+
+/// Copies the contact pressure of every element of B (n_elements values;
+/// a stress, positive in compression, zero when inactive) for the
+/// displacements `u` (2 per interface node).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_pressures(
+    context: *mut TfemContact,
+    u: *const f64,
+    u_length: usize,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_context(context, |c| {
+        let u = slice_in(u, u_length, "u")?;
+        let n = c.elements()?.len();
+        let out = out_slice(out, length, n, "out")?;
+        c.pressures(u, out)
+    })
+}
+
+/// Copies the nodes of every element of B (3 host node numbers each,
+/// oriented so that J > 0 when the gap opens).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_elements(
+    context: *mut TfemContact,
+    out: *mut c_int,
+    length: usize,
+) -> Status {
+    with_context(context, |c| {
+        let ids = c.nodes().to_vec();
+        let v: Vec<c_int> = c
+            .elements()?
+            .iter()
+            .flat_map(|e| e.nodes.map(|n| ids[n] as c_int))
+            .collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies the equations of every element's six DOFs (6 per element, x
+/// then y of each node, in the index base; index_base − 1 marks a DOF
+/// without an equation): with `tfem_contact_element_blocks`, the
+/// contributions as unassembled element blocks.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_element_equations(
+    context: *mut TfemContact,
+    out: *mut i64,
+    length: usize,
+) -> Status {
+    with_context(context, |c| {
+        let none = c.index_base() as i64 - 1;
+        let n = c.elements()?.len();
+        let mut v = Vec::with_capacity(6 * n);
+        for k in 0..n {
+            v.extend(c.element_equations(k)?.map(|e| e.unwrap_or(none)));
+        }
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies every element's 6×6 tangent block (36 values per element,
+/// row-major over its DOFs as in `tfem_contact_element_equations`): its
+/// stiffness when active, zeros when not.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_element_blocks(
+    context: *mut TfemContact,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_context(context, |c| {
+        let n = c.elements()?.len();
+        let out = out_slice(out, length, 36 * n, "out")?;
+        let mut block = [0.0; 36];
+        for k in 0..n {
+            c.element_block(k, &mut block)?;
+            out[36 * k..36 * k + 36].copy_from_slice(&block);
+        }
+        Ok(())
+    })
+}

@@ -1,0 +1,247 @@
+//! `HostContact`: a host code with its own P1 assembly, its own (dense)
+//! solver and its own active-set loop, taking only the contact
+//! contributions from tfem, reproduces tfem's built-in contact solve of the
+//! seed scene.
+
+use std::collections::BTreeMap;
+
+use nalgebra::{DMatrix, DVector};
+use tfem::contact::HostContact;
+use tfem::element::{Jmin, TriGeometry, elasticity_stiffness};
+use tfem::scenes::{TAG_CONTACT_LOWER, TAG_CONTACT_UPPER, TwoBlocks};
+use tfem::{ContactOptions, Mesh, Model, Status};
+
+/// The host's view of a problem: its equations (one per free DOF, in
+/// global DOF order), its stiffness matrix and load vector.
+struct Host {
+    equation: Vec<Option<usize>>,
+    k: DMatrix<f64>,
+    f: DVector<f64>,
+}
+
+fn host_of(model: &Model) -> Host {
+    let mesh = model.mesh().unwrap();
+    let fixed: BTreeMap<usize, f64> = model.constraints().collect();
+    assert!(fixed.values().all(|&v| v == 0.0), "the scene fixes at zero");
+    let mut equation = vec![None; 2 * mesh.nodes().len()];
+    let mut n = 0;
+    for (g, e) in equation.iter_mut().enumerate() {
+        if !fixed.contains_key(&g) && mesh.node_body()[g / 2].is_some() {
+            *e = Some(n);
+            n += 1;
+        }
+    }
+    let mut k = DMatrix::zeros(n, n);
+    for (tri, body) in mesh.triangles().iter().zip(mesh.body_of()) {
+        let geo = TriGeometry::new(&mesh.corners(tri));
+        let d = model.material(*body).unwrap().d_matrix();
+        // Plain P1 (no tempering): the host's own element.
+        let ke = elasticity_stiffness(&geo, &d, Jmin::Off).unwrap();
+        for a in 0..6 {
+            for b in 0..6 {
+                let (ga, gb) = (2 * tri[a / 2] + a % 2, 2 * tri[b / 2] + b % 2);
+                if let (Some(i), Some(j)) = (equation[ga], equation[gb]) {
+                    k[(i, j)] += ke[a][b];
+                }
+            }
+        }
+    }
+    let load = model.load_vector().unwrap();
+    let mut f = DVector::zeros(n);
+    for (g, e) in equation.iter().enumerate() {
+        if let Some(i) = e {
+            f[*i] += load[g];
+        }
+    }
+    Host { equation, k, f }
+}
+
+/// A contact side from the mesh's edges tagged `tag`, in the host's
+/// numbering, each edge turned so that its body lies on its left.
+fn add_side(hc: &mut HostContact, model: &Model, host: &Host, tag: i32) -> usize {
+    add_side_based(hc, model, host, tag, 0)
+}
+
+/// [`add_side`] with the equations given in index base `base`.
+fn add_side_based(hc: &mut HostContact, model: &Model, host: &Host, tag: i32, base: i64) -> usize {
+    let mesh: &Mesh = model.mesh().unwrap();
+    let mut edges = Vec::new();
+    let mut nodes = Vec::new();
+    for e in mesh.boundary_edges().iter().filter(|e| e.tag == tag) {
+        let (_, third) = e.owner.unwrap();
+        let [p, q] = e.nodes;
+        let (a, b, c) = (mesh.nodes()[p], mesh.nodes()[q], mesh.nodes()[third]);
+        let left = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) > 0.0;
+        edges.push(if left {
+            [p as i64, q as i64]
+        } else {
+            [q as i64, p as i64]
+        });
+        nodes.extend([p, q]);
+    }
+    nodes.sort_unstable();
+    nodes.dedup();
+    let body = mesh.body_of()[e_owner(mesh, tag)];
+    let xy: Vec<[f64; 2]> = nodes.iter().map(|&v| mesh.nodes()[v]).collect();
+    let eq: Vec<[i64; 2]> = nodes
+        .iter()
+        .map(|&v| [0, 1].map(|c| host.equation[2 * v + c].map_or(base - 1, |e| e as i64 + base)))
+        .collect();
+    let ids: Vec<i64> = nodes.iter().map(|&v| v as i64).collect();
+    let material = *model.material(body).unwrap();
+    hc.add_side(tag, body, material, &ids, &xy, &eq, &edges)
+        .unwrap()
+}
+
+fn e_owner(mesh: &Mesh, tag: i32) -> usize {
+    let e = mesh.boundary_edges().iter().find(|e| e.tag == tag).unwrap();
+    e.owner.unwrap().0
+}
+
+#[test]
+fn a_host_loop_with_its_own_assembly_reproduces_the_built_in_contact_solve() {
+    for c in [0.1, 0.3] {
+        let scene = TwoBlocks {
+            c,
+            mesh_size: 1.0 / 32.0,
+            ..Default::default()
+        };
+        let mut built_in = scene.build().unwrap();
+        built_in
+            .model
+            .solve_contact(&ContactOptions::default())
+            .unwrap();
+        let expected = built_in.model.displacements().unwrap();
+        let model = &built_in.model;
+
+        let host = host_of(model);
+        let mut hc = HostContact::new(0, ContactOptions::default()).unwrap();
+        let a = add_side(&mut hc, model, &host, TAG_CONTACT_LOWER);
+        let b = add_side(&mut hc, model, &host, TAG_CONTACT_UPPER);
+        hc.add_pair(a, b).unwrap();
+        let (rows, cols) = hc.pattern().unwrap();
+        let (rows, cols) = (rows.to_vec(), cols.to_vec());
+        let n_if = hc.nodes().len();
+        let mut values = vec![0.0; rows.len()];
+        let (mut u_if, mut r0) = (vec![0.0; 2 * n_if], vec![0.0; 2 * n_if]);
+        let mut iterations = 0;
+        let u = loop {
+            iterations += 1;
+            // Linear host: K + K_c and f − r_c(0).
+            let zero = vec![0.0; 2 * n_if];
+            hc.evaluate(&zero, Some(&mut values), Some(&mut r0))
+                .unwrap();
+            let mut k = host.k.clone();
+            for ((&i, &j), &v) in rows.iter().zip(&cols).zip(&values) {
+                k[(i as usize, j as usize)] += v;
+            }
+            let mut f = host.f.clone();
+            for (v, eq) in hc.nodes().iter().map(|&v| v as usize).enumerate() {
+                for comp in 0..2 {
+                    if let Some(e) = host.equation[2 * eq + comp] {
+                        f[e] -= r0[2 * v + comp];
+                    }
+                }
+            }
+            let u = k.cholesky().expect("positive definite").solve(&f);
+            hc.gather(u.as_slice(), &mut u_if).unwrap();
+            if !hc.update(&u_if).unwrap().changed {
+                break u;
+            }
+        };
+        assert!(iterations > 1, "the set changes in the seed scene");
+        let (mut err, mut scale) = (0.0f64, 0.0f64);
+        for (g, e) in host.equation.iter().enumerate() {
+            let mine = e.map_or(0.0, |e| u[e]);
+            err = err.max((mine - expected[g / 2][g % 2]).abs());
+            scale = scale.max(expected[g / 2][g % 2].abs());
+        }
+        assert!(
+            err <= 1e-10 * scale,
+            "2C/L = {}: host vs built-in {err:e} of {scale:e}",
+            2.0 * c
+        );
+        assert_eq!(
+            hc.active().unwrap(),
+            built_in.model.contact_active().unwrap(),
+            "the same active set"
+        );
+    }
+}
+
+#[test]
+fn the_pattern_holds_each_element_block_row_by_row_in_the_hosts_numbering() {
+    let scene = TwoBlocks {
+        mesh_size: 1.0 / 8.0,
+        ..Default::default()
+    };
+    let built = scene.build().unwrap();
+    let host = host_of(&built.model);
+    // 1-based equations (0 marks a DOF without one).
+    let mut hc = HostContact::new(1, ContactOptions::default()).unwrap();
+    let model = &built.model;
+    let a = add_side_based(&mut hc, model, &host, TAG_CONTACT_LOWER, 1);
+    let b = add_side_based(&mut hc, model, &host, TAG_CONTACT_UPPER, 1);
+    hc.add_pair(a, b).unwrap();
+    let n = hc.elements().unwrap().len();
+    let (rows, cols) = hc.pattern().unwrap();
+    let (rows, cols) = (rows.to_vec(), cols.to_vec());
+    let mut at = 0;
+    for k in 0..n {
+        let eq = hc.element_equations(k).unwrap();
+        for ea in eq.iter() {
+            for eb in eq.iter() {
+                if let (Some(i), Some(j)) = (ea, eb) {
+                    assert_eq!((rows[at], cols[at]), (*i, *j), "entry {at}");
+                    at += 1;
+                }
+            }
+        }
+    }
+    assert_eq!(at, rows.len());
+    assert!(rows.iter().chain(&cols).all(|&r| r >= 1));
+    let fixed_dofs = (0..n)
+        .flat_map(|k| hc.element_equations(k).unwrap())
+        .filter(Option::is_none)
+        .count();
+    assert!(
+        fixed_dofs > 0,
+        "the symmetry line's x DOFs have no equation"
+    );
+}
+
+#[test]
+fn bad_host_input_names_the_node_the_side_or_the_buffer() {
+    let material = tfem::Material::new(1e3, 0.3, tfem::PlaneMode::Strain, "side").unwrap();
+    let mut hc = HostContact::new(0, ContactOptions::default()).unwrap();
+    let xy = [[0.0, 0.0], [1.0, 0.0]];
+    let eq = [[0, 1], [2, 3]];
+    let err = hc
+        .add_side(5, 1, material, &[10, 11], &xy, &eq, &[[10, 12]])
+        .unwrap_err();
+    assert!(err.message().contains("node 12"), "{}", err.message());
+    let err = hc
+        .add_side(
+            5,
+            1,
+            material,
+            &[10, 11],
+            &[[0.0, 0.0], [0.0, 0.0]],
+            &eq,
+            &[[10, 11]],
+        )
+        .unwrap_err();
+    assert!(err.message().contains("zero length"), "{}", err.message());
+    let s0 = hc
+        .add_side(5, 1, material, &[10, 11], &xy, &eq, &[[10, 11]])
+        .unwrap();
+    let err = hc
+        .add_side(6, 2, material, &[10], &[[0.5, 0.0]], &[[0, 1]], &[])
+        .unwrap_err();
+    assert!(err.message().contains("node 10"), "{}", err.message());
+    let err = hc.add_pair(s0, s0).unwrap_err();
+    assert_eq!(err.status(), Status::InvalidContact);
+    let err = hc.add_pair(s0, 3).unwrap_err();
+    assert!(err.message().contains("side 3"), "{}", err.message());
+    assert_eq!(hc.pattern().unwrap_err().status(), Status::InvalidState);
+}
