@@ -164,3 +164,52 @@ fn assemble_columns(
     })?;
     Ok(softened)
 }
+
+/// The load on the unknowns alone (what [`assemble`] writes into `rhs`,
+/// to the last bit): external forces minus the prescribed displacements'
+/// share, for new loads on an unchanged stiffness. Visits only the elements
+/// with a prescribed DOF of nonzero value.
+pub fn rhs(
+    elements: &ElementLoop<'_>,
+    dofs: &DofMap,
+    f_ext: &[f64],
+    prescribed: &[f64],
+) -> Result<Vec<f64>> {
+    let mut rhs = vec![0.0; dofs.n_free()];
+    for (g, &f) in f_ext.iter().enumerate() {
+        let fg = dofs.free(g);
+        if fg != NOT_FREE {
+            rhs[fg] += f;
+        }
+    }
+    let mut k = [[0.0; 6]; 6];
+    let select = |_: usize, tri: &[usize; 3]| -> Option<[usize; 6]> {
+        let gd: [usize; 6] = std::array::from_fn(|q| 2 * tri[q / 2] + q % 2);
+        let loaded = gd
+            .iter()
+            .any(|&g| dofs.free(g) == NOT_FREE && prescribed[g] != 0.0);
+        loaded.then_some(gd)
+    };
+    elements.visit(select, |el, gd| {
+        let free = gd.map(|g| dofs.free(g));
+        if !free.contains(&NOT_FREE) {
+            return Ok(());
+        }
+        elements.stiffness_into(el, &mut k)?;
+        let ke = k.as_flattened();
+        for a in 0..6 {
+            if free[a] == NOT_FREE {
+                continue;
+            }
+            let mut r = 0.0;
+            for b in 0..6 {
+                if free[b] == NOT_FREE {
+                    r -= ke[a * 6 + b] * prescribed[gd[b]];
+                }
+            }
+            rhs[free[a]] += r;
+        }
+        Ok(())
+    })?;
+    Ok(rhs)
+}

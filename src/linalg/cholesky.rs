@@ -25,6 +25,8 @@ use faer::sparse::linalg::cholesky::{
 use faer::sparse::{SparseColMatRef, SymbolicSparseColMatRef};
 use faer::{Conj, Mat, MatMut, Par, Side};
 
+use std::sync::{Mutex, PoisonError};
+
 use faer::perm::PermRef;
 
 use super::ordering::{Graph, Ordering, nested_dissection, split_in_two};
@@ -126,7 +128,8 @@ struct Whole {
     symbolic: SymbolicCholesky<usize>,
     l_values: Vec<f64>,
     factor_req: faer::dyn_stack::StackReq,
-    solve_mem: MemBuffer,
+    /// The solve workspace (behind a lock, so that solves take `&self`).
+    solve_mem: Mutex<MemBuffer>,
     solve_bytes: usize,
     par: Par,
 }
@@ -412,15 +415,15 @@ impl Cholesky {
     }
 
     /// x ← K⁻¹x with the factor of K.
-    fn solve_unscaled(&mut self, x: &mut [f64]) {
-        match &mut self.engine {
+    fn solve_unscaled(&self, x: &mut [f64]) {
+        match &self.engine {
             Engine::Whole(w) => w.solve(x),
             Engine::Split(sp) => sp.solve(x),
         }
     }
 
     /// x ← S⁻¹x = D⁻¹K⁻¹D⁻¹x for the scaled matrix S = DKD.
-    fn solve_scaled(&mut self, x: &mut [f64]) {
+    fn solve_scaled(&self, x: &mut [f64]) {
         x.iter_mut().zip(&self.scale).for_each(|(v, s)| *v /= s);
         self.solve_unscaled(x);
         x.iter_mut().zip(&self.scale).for_each(|(v, s)| *v /= s);
@@ -466,7 +469,7 @@ impl Cholesky {
 
     /// Solves K x = b in place (b over the unknowns, unscaled). Requires a
     /// successful [`Cholesky::factorize`].
-    pub fn solve(&mut self, b: &mut [f64]) -> Result<()> {
+    pub fn solve(&self, b: &mut [f64]) -> Result<()> {
         if !self.factored {
             return Err(Error::state("solve before a successful factorisation"));
         }
@@ -522,7 +525,7 @@ impl Whole {
             symbolic,
             l_values,
             factor_req,
-            solve_mem,
+            solve_mem: Mutex::new(solve_mem),
             solve_bytes: solve_req.unaligned_bytes_required(),
             par,
         })
@@ -591,11 +594,15 @@ impl Whole {
             .is_ok())
     }
 
-    fn solve(&mut self, x: &mut [f64]) {
+    fn solve(&self, x: &mut [f64]) {
         let n = x.len();
         let llt = LltRef::new(&self.symbolic, &self.l_values);
         let rhs = MatMut::from_column_major_slice_mut(x, n, 1);
-        llt.solve_in_place_with_conj(Conj::No, rhs, self.par, MemStack::new(&mut self.solve_mem));
+        let mut mem = self
+            .solve_mem
+            .lock()
+            .unwrap_or_else(PoisonError::into_inner);
+        llt.solve_in_place_with_conj(Conj::No, rhs, self.par, MemStack::new(&mut mem));
     }
 
     /// The trailing m×m block of the factor, rows scaled by `scale`.

@@ -24,26 +24,44 @@ pub fn refine(
     x: &mut [f64],
     solve: &mut dyn FnMut(&mut [f64]) -> Result<()>,
 ) -> Result<()> {
-    let inf = |v: &[f64]| v.iter().fold(0.0f64, |m, a| m.max(a.abs()));
+    let product = |v: &[f64], y: &mut [f64]| pattern.sym_mul(values, v, y);
+    refine_by(&product, norm_inf(pattern, values), rhs, x, solve)
+}
+
+/// ‖K‖∞ of the symmetric matrix with upper triangle `values` on `pattern`.
+pub fn norm_inf(pattern: &Pattern, values: &[f64]) -> f64 {
     // One n-vector at a time: this runs near the solve's memory peak.
-    let k_norm = {
-        let mut row_sums = vec![0.0f64; x.len()];
-        let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
-        for j in 0..x.len() {
-            for p in cp[j]..cp[j + 1] {
-                row_sums[ri[p]] += values[p].abs();
-                if ri[p] != j {
-                    row_sums[j] += values[p].abs();
-                }
+    let mut row_sums = vec![0.0f64; pattern.n()];
+    let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
+    for j in 0..pattern.n() {
+        for p in cp[j]..cp[j + 1] {
+            row_sums[ri[p]] += values[p].abs();
+            if ri[p] != j {
+                row_sums[j] += values[p].abs();
             }
         }
-        inf(&row_sums)
-    };
+    }
+    inf(&row_sums)
+}
+
+fn inf(v: &[f64]) -> f64 {
+    v.iter().fold(0.0f64, |m, a| m.max(a.abs()))
+}
+
+/// [`refine`] with K given by its product y = K v and its ‖K‖∞ (which only
+/// the stopping test reads).
+pub fn refine_by(
+    product: &dyn Fn(&[f64], &mut [f64]),
+    k_norm: f64,
+    rhs: &[f64],
+    x: &mut [f64],
+    solve: &mut dyn FnMut(&mut [f64]) -> Result<()>,
+) -> Result<()> {
     let f_norm = inf(rhs);
     let mut r = vec![0.0; x.len()];
     let mut previous = f64::INFINITY;
     for _ in 0..3 {
-        pattern.sym_mul(values, x, &mut r);
+        product(x, &mut r);
         r.iter_mut().zip(rhs).for_each(|(k, b)| *k = b - *k);
         let rn = inf(&r);
         let omega = rn / (k_norm * inf(x) + f_norm);

@@ -31,6 +31,8 @@
 //! two surfaces, which would otherwise join the two bodies. Each
 //! factorisation checks that they are still zero.
 
+use std::sync::{Mutex, PoisonError};
+
 use faer::dyn_stack::{MemBuffer, MemStack, StackReq};
 use faer::linalg::cholesky::llt::factor::{
     LltRegularization, cholesky_in_place, cholesky_in_place_scratch,
@@ -132,7 +134,8 @@ struct Part {
     l_values: Vec<f64>,
     factor_req: StackReq,
     /// Workspace of the triangular solves (the longest supernode pattern).
-    solve_mem: MemBuffer,
+    /// The solve workspace (behind a lock, so that solves take `&self`).
+    solve_mem: Mutex<MemBuffer>,
 }
 
 impl SplitCholesky {
@@ -351,8 +354,8 @@ impl SplitCholesky {
     }
 
     /// x ← K⁻¹x with the last successful factorisation.
-    pub(crate) fn solve(&mut self, x: &mut [f64]) {
-        let [pa, pb] = &mut self.parts;
+    pub(crate) fn solve(&self, x: &mut [f64]) {
+        let [pa, pb] = &self.parts;
         let xr: &[f64] = x;
         let t = self.top.len();
         // Allocated on this thread (see `factorize`).
@@ -527,7 +530,7 @@ impl Part {
             symbolic,
             l_values,
             factor_req,
-            solve_mem,
+            solve_mem: Mutex::new(solve_mem),
         })
     }
 
@@ -675,7 +678,7 @@ impl Part {
 
     /// Forward substitution of the part: w = L⁻¹[b_own; 0], and
     /// c = L_TT w_T = −L_TA y (y = L_AA⁻¹ b_own), over the separator.
-    fn forward(&mut self, b: &[f64], w: &mut [f64], c: &mut [f64]) {
+    fn forward(&self, b: &[f64], w: &mut [f64], c: &mut [f64]) {
         let first = self.own.len();
         for (k, &u) in self.own.iter().enumerate() {
             w[k] = b[u];
@@ -688,7 +691,12 @@ impl Part {
             Conj::No,
             MatMut::from_column_major_slice_mut(w, n, 1),
             Par::Seq,
-            MemStack::new(&mut self.solve_mem),
+            MemStack::new(
+                &mut self
+                    .solve_mem
+                    .lock()
+                    .unwrap_or_else(PoisonError::into_inner),
+            ),
         );
         let wt = &w[first..];
         for Trailing {
@@ -708,7 +716,7 @@ impl Part {
 
     /// Back substitution of the part given the separator values x_T:
     /// w_own ← L_AA⁻ᵀ(y − L_TAᵀ x_T).
-    fn backward(&mut self, w: &mut [f64], x_top: &[f64]) {
+    fn backward(&self, w: &mut [f64], x_top: &[f64]) {
         let first = self.own.len();
         // w_T = L_TTᵀ x_T, so that the transposed solve recovers x_T there
         // and subtracts L_TAᵀ x_T from the part.
@@ -733,7 +741,12 @@ impl Part {
             Conj::No,
             MatMut::from_column_major_slice_mut(w, n, 1),
             Par::Seq,
-            MemStack::new(&mut self.solve_mem),
+            MemStack::new(
+                &mut self
+                    .solve_mem
+                    .lock()
+                    .unwrap_or_else(PoisonError::into_inner),
+            ),
         );
     }
 }

@@ -30,6 +30,7 @@ pub struct Problem {
     loads: Loads,
     pairs: Vec<ContactPair>,
     structure: u64,
+    stiffness: u64,
     revision: u64,
 }
 
@@ -61,6 +62,7 @@ impl Problem {
             loads: Loads::default(),
             pairs: Vec::new(),
             structure: 0,
+            stiffness: 0,
             revision: 0,
         }
     }
@@ -70,7 +72,15 @@ impl Problem {
         self.revision += 1;
         if structural {
             self.structure += 1;
+            self.stiffness += 1;
         }
+    }
+
+    /// Counts a change of the stiffness (materials, tempering) that leaves
+    /// the structure alone.
+    fn changed_stiffness(&mut self) {
+        self.changed(false);
+        self.stiffness += 1;
     }
 
     /// The revision: moves with every change.
@@ -82,6 +92,12 @@ impl Problem {
     /// set of prescribed DOFs and the contact pairs.
     pub fn structure(&self) -> u64 {
         self.structure
+    }
+
+    /// The stiffness epoch: moves with the structure, the materials and the
+    /// tempering — not with the loads.
+    pub fn stiffness(&self) -> u64 {
+        self.stiffness
     }
 
     /// The mesh, or an error naming the missing call.
@@ -212,7 +228,7 @@ impl Problem {
             }
         }
         self.materials.insert(body, material);
-        self.changed(false);
+        self.changed_stiffness();
         Ok(())
     }
 
@@ -225,7 +241,7 @@ impl Problem {
     pub fn set_tempering(&mut self, tempering: Tempering) -> Result<()> {
         tempering.validate()?;
         self.tempering = tempering;
-        self.changed(false);
+        self.changed_stiffness();
         Ok(())
     }
 

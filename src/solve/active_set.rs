@@ -23,7 +23,7 @@ use crate::error::Result;
 use crate::fem::assembly::NOT_FREE;
 use crate::fem::element_loop::ElementLoop;
 use crate::linalg::Cholesky;
-use crate::linalg::refine::refine;
+use crate::linalg::refine::{norm_inf, refine, refine_by};
 
 /// What the loop works with, borrowed from the session and the problem.
 pub(crate) struct LoopInput<'a, 's> {
@@ -54,12 +54,36 @@ pub(crate) struct Settled {
     pub condensed_bytes: usize,
 }
 
-/// The condensed system with the first iteration's solution x₁ it is
-/// relative to and the active set its factor represents.
-struct CondensedState {
-    system: Condensed,
-    x1: Vec<f64>,
-    factor_active: Vec<bool>,
+/// The condensed system with the solution x₁ of K₁ it is relative to, the
+/// contact set K₁ holds (the reference of every change) and the set its
+/// factor currently represents.
+pub(crate) struct CondensedState {
+    /// The interface system.
+    pub system: Condensed,
+    /// K₁⁻¹ times the right-hand side of K₁'s system.
+    pub x1: Vec<f64>,
+    /// The contact set K₁ holds.
+    pub reference: Vec<bool>,
+    /// The set the interface factor represents.
+    pub factor_active: Vec<bool>,
+}
+
+/// How a loop that may stop at the interface settled.
+pub(crate) enum Outcome {
+    /// Settled on the interface: its values, with the condensed state they
+    /// are relative to; the whole field is [`expand`]ed when needed.
+    Interface {
+        /// The condensed state (its factor that of the final set).
+        state: CondensedState,
+        /// The interface values.
+        ui: Vec<f64>,
+        /// The final set.
+        active: Vec<bool>,
+        /// One record per iteration.
+        history: Vec<IterationRecord>,
+    },
+    /// Settled after a full solve (the condensation ended).
+    Full(Settled),
 }
 
 /// The current solution of the loop.
@@ -108,6 +132,56 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         }
     }
 
+    /// A loop that resumes from a condensed state (K₁ factorised, its
+    /// interface system made) and starts from the set `warm`.
+    pub fn resume(
+        input: LoopInput<'a, 's>,
+        (chol, system): (&'a mut Cholesky, &'a mut AssembledSystem),
+        (timings, info): (&'a mut Timings, &'a mut SolveInfo),
+        state: CondensedState,
+        warm: Vec<bool>,
+    ) -> ActiveSetLoop<'a, 's> {
+        ActiveSetLoop {
+            input,
+            chol,
+            system,
+            timings,
+            info,
+            set: ActiveSet::new(warm),
+            condensed: Some(state),
+            iterate: Iterate::None,
+        }
+    }
+
+    /// Runs the loop like [`ActiveSetLoop::run`], but stops at the
+    /// interface when the last iterate is condensed.
+    pub fn run_to_interface(mut self) -> Result<Outcome> {
+        let max_iterations = self.input.options.max_iterations;
+        for iteration in 1..=max_iterations {
+            self.solve(iteration)?;
+            let next = self.inverted();
+            if self.set.advance(next, iteration)? {
+                return match std::mem::replace(&mut self.iterate, Iterate::None) {
+                    Iterate::Condensed(ui) => {
+                        let (active, history) = self.set.into_parts();
+                        let state = self.condensed.expect("a condensed iterate");
+                        Ok(Outcome::Interface {
+                            state,
+                            ui,
+                            active,
+                            history,
+                        })
+                    }
+                    other => {
+                        self.iterate = other;
+                        self.recover().map(Outcome::Full)
+                    }
+                };
+            }
+        }
+        Err(self.set.not_settled(max_iterations))
+    }
+
     /// Runs the loop (docs/method.md §3): solve with the active elements,
     /// test which are inverted, stop when the set is unchanged, refuse a
     /// set visited before (a cycle) or too many iterations.
@@ -141,7 +215,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         let t0 = Instant::now();
         let set = self.input.set;
         let state = self.condensed.as_mut().expect("a condensed system");
-        let (active, initial) = (self.set.active(), self.set.initial());
+        let active = self.set.active();
         let sign = |k: usize| if active[k] { 1.0 } else { -1.0 };
         let element = |k: usize| {
             let matrix = &set.stiffness(k).k;
@@ -155,7 +229,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         };
         // Changes since the factorised set, and relative to K₁.
         let changed = differing(active, &state.factor_active);
-        let relative = differing(active, initial);
+        let relative = differing(active, &state.reference);
         // A few changes: update the factor (measured: a rank-1 update costs
         // ~1/20 of a refactorisation at 2000 interface unknowns); many:
         // refactorise Ŝ₁ plus the changes relative to K₁.
@@ -226,6 +300,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         self.condensed = Some(CondensedState {
             system,
             x1: x,
+            reference: self.set.active().to_vec(),
             factor_active: self.set.active().to_vec(),
         });
         self.iterate = Iterate::Reference;
@@ -302,12 +377,9 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         Ok(x)
     }
 
-    /// The last iterate is condensed: recovers the whole field,
-    /// u = x₁ + K₁⁻¹ P(Δg + ΔC u_I), refined against K itself.
+    /// The last iterate is condensed: recovers the whole field.
     fn expand_condensed(&mut self, ui: Vec<f64>, context: &str) -> Result<Vec<f64>> {
-        let CondensedState {
-            system: sys, x1, ..
-        } = self.condensed.take().expect("condensed");
+        let state = self.condensed.take().expect("condensed");
         let input = &self.input;
         let t0 = Instant::now();
         let structure = (input.at.dofs, input.at.pattern);
@@ -316,38 +388,87 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             .set_contact(active, input.set, structure, input.prescribed);
         self.timings.assembly += t0.elapsed().as_secs_f64();
         let t0 = Instant::now();
-        let changes = Changes {
+        let (values, rhs) = (self.system.values(), self.system.rhs());
+        let pattern = input.at.pattern;
+        let target = Target {
+            at: input.at,
             set: input.set,
             active,
-            initial: self.set.initial(),
-            n: input.at.dofs.n_free(),
+            product: &|v: &[f64], y: &mut [f64]| pattern.sym_mul(values, v, y),
+            k_norm: &|| norm_inf(pattern, values),
+            rhs,
         };
-        let position = |j: usize| {
-            sys.position(j)
-                .expect("coupled unknowns are on the interface")
-        };
-        let mut x = changes.product(&|j| ui[position(j)], true);
-        // Near the solve's memory peak: free the vectors done with.
-        drop(ui);
-        self.chol.solve(&mut x)?;
-        x.iter_mut().zip(&x1).for_each(|(a, b)| *a += b);
-        drop(x1);
-        let chol = &mut *self.chol;
-        let mut solve = |r: &mut [f64]| -> Result<()> {
-            // K δ = r: y = K₁⁻¹r, S δ_I = S₁ y_I, δ = y + K₁⁻¹PΔC δ_I.
-            chol.solve(r)?;
-            let di = sys.solve(&sys.gather(r), &vec![0.0; sys.len()])?;
-            let mut p = changes.product(&|j| di[position(j)], false);
-            chol.solve(&mut p)?;
-            r.iter_mut().zip(&p).for_each(|(a, b)| *a += b);
-            Ok(())
-        };
-        let (values, rhs) = (self.system.values(), self.system.rhs());
-        refine(input.at.pattern, values, rhs, &mut x, &mut solve)?;
+        let CondensedState {
+            system,
+            x1,
+            reference,
+            ..
+        } = state;
+        let x = expand(target, self.chol, (&system, &reference), x1, ui)?;
         self.timings.solve += t0.elapsed().as_secs_f64();
         check_finite(input.at, &x, context)?;
         Ok(x)
     }
+}
+
+/// The system a condensed solution is expanded for: the contact set with
+/// its active flags, and the matrix (its product and norm) and right-hand
+/// side of that set (for the refinement).
+pub(crate) struct Target<'t, 's> {
+    /// Mesh, unknowns and pattern.
+    pub at: Structure<'t>,
+    /// The elements of B.
+    pub set: &'t ContactSet<'s>,
+    /// The final set.
+    pub active: &'t [bool],
+    /// y = K v with the matrix of the final set.
+    pub product: &'t dyn Fn(&[f64], &mut [f64]),
+    /// ‖K‖∞, computed when the refinement needs it.
+    pub k_norm: &'t dyn Fn() -> f64,
+    /// The right-hand side of the final set.
+    pub rhs: &'t [f64],
+}
+
+/// Recovers the whole field from the interface values `ui` of the final
+/// set, u = x₁ + K₁⁻¹ P(Δg + ΔC u_I) — ΔC and Δg the changes of the
+/// contact elements' matrices and loads relative to K₁'s set — refined
+/// against the final matrix itself. One sparse solve (and one per
+/// refinement step, normally none).
+pub(crate) fn expand(
+    target: Target<'_, '_>,
+    chol: &Cholesky,
+    (sys, reference): (&Condensed, &[bool]),
+    x1: Vec<f64>,
+    ui: Vec<f64>,
+) -> Result<Vec<f64>> {
+    let changes = Changes {
+        set: target.set,
+        active: target.active,
+        initial: reference,
+        n: target.at.dofs.n_free(),
+    };
+    let position = |j: usize| {
+        sys.position(j)
+            .expect("coupled unknowns are on the interface")
+    };
+    let mut x = changes.product(&|j| ui[position(j)], true);
+    // Near the solve's memory peak: free the vectors done with.
+    drop(ui);
+    chol.solve(&mut x)?;
+    x.iter_mut().zip(&x1).for_each(|(a, b)| *a += b);
+    drop(x1);
+    let mut solve = |r: &mut [f64]| -> Result<()> {
+        // K δ = r: y = K₁⁻¹r, S δ_I = S₁ y_I, δ = y + K₁⁻¹PΔC δ_I.
+        chol.solve(r)?;
+        let di = sys.solve(&sys.gather(r), &vec![0.0; sys.len()])?;
+        let mut p = changes.product(&|j| di[position(j)], false);
+        chol.solve(&mut p)?;
+        r.iter_mut().zip(&p).for_each(|(a, b)| *a += b);
+        Ok(())
+    };
+    let k_norm = (target.k_norm)();
+    refine_by(target.product, k_norm, target.rhs, &mut x, &mut solve)?;
+    Ok(x)
 }
 
 /// The contact elements whose state differs between K₁ (the initial set)
