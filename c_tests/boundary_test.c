@@ -9,6 +9,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <stdint.h>
 #include <string.h>
 #include <unistd.h>
 
@@ -450,6 +451,55 @@ static void a_host_gets_contact_forces_gaps_and_the_contact_mesh_before_a_solve(
   tfem_destroy(m);
 }
 
+static void a_load_history_steps_reverts_and_restarts_bit_for_bit(void) {
+  tfem_model *m = two_blocks();
+  tfem_contact_report rep;
+  int64_t factorisations = 0;
+  for (int k = 1; k <= 4; ++k) {
+    CHECK(tfem_step(m, k / 4.0, NULL, &rep) == TFEM_STATUS_OK);
+    factorisations += rep.info.factorizations;
+  }
+  CHECK(factorisations == 1);
+  /* The last step is the one-step answer. */
+  tfem_model *one = two_blocks();
+  CHECK(tfem_solve_contact(one, NULL, NULL) == TFEM_STATUS_OK);
+  double u[2 * 64], v[2 * 64];
+  CHECK(tfem_get_displacements(m, u, 2 * B.nn) == TFEM_STATUS_OK);
+  CHECK(tfem_get_displacements(one, v, 2 * B.nn) == TFEM_STATUS_OK);
+  double err = 0, scale = 0;
+  for (int i = 0; i < 2 * B.nn; ++i) {
+    err = fmax(err, fabs(u[i] - v[i]));
+    scale = fmax(scale, fabs(v[i]));
+  }
+  CHECK(err <= 1e-12 * scale);
+  /* Save the state, step on, restore it in a new model: the same bits. */
+  size_t size = 0;
+  CHECK(tfem_get_contact_state_size(m, &size) == TFEM_STATUS_OK && size > 0);
+  uint8_t *state = malloc(size);
+  CHECK(state != NULL && tfem_get_contact_state(m, state, size) == TFEM_STATUS_OK);
+  EXPECT_ERROR(m, tfem_get_contact_state(m, state, size - 1), TFEM_STATUS_BUFFER_TOO_SMALL, "buffer");
+  CHECK(tfem_step(m, 1.5, NULL, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_get_displacements(m, u, 2 * B.nn) == TFEM_STATUS_OK);
+  tfem_model *restarted = two_blocks();
+  CHECK(tfem_set_contact_state(restarted, state, size) == TFEM_STATUS_OK);
+  CHECK(tfem_step(restarted, 1.5, NULL, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_get_displacements(restarted, v, 2 * B.nn) == TFEM_STATUS_OK);
+  CHECK(memcmp(u, v, 2 * (size_t)B.nn * sizeof(double)) == 0);
+  /* Revert: back to the state of factor 1. */
+  CHECK(tfem_revert_step(m) == TFEM_STATUS_OK);
+  CHECK(tfem_get_displacements(m, v, 2 * B.nn) == TFEM_STATUS_OK);
+  CHECK(fabs(v[1] - u[1] / 1.5) <= 1e-9 * fabs(u[1]) + 1e-30);
+  EXPECT_ERROR(m, tfem_revert_step(m), TFEM_STATUS_INVALID_STATE, "no load step");
+  state[0] ^= 0xff;
+  EXPECT_ERROR(restarted, tfem_set_contact_state(restarted, state, size), TFEM_STATUS_INVALID_ARGUMENT,
+               "magic");
+  EXPECT_ERROR(m, tfem_step(m, NAN, NULL, NULL), TFEM_STATUS_INVALID_ARGUMENT, "load_factor");
+  free(state);
+  tfem_destroy(restarted);
+  tfem_destroy(one);
+  tfem_destroy(m);
+}
+
 int main(void) {
   /* Nothing the library does may reach stderr: it goes to a file, checked
    * at the end. */
@@ -472,6 +522,7 @@ int main(void) {
   no_nan_or_inf_comes_back_with_ok();
   messages_stay_short_and_the_thread_slot_is_cleared();
   a_host_gets_contact_forces_gaps_and_the_contact_mesh_before_a_solve();
+  a_load_history_steps_reverts_and_restarts_bit_for_bit();
 
   fflush(stderr);
   fseek(capture, 0, SEEK_END);

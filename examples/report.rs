@@ -978,6 +978,32 @@ fn peak_rss() -> Option<f64> {
 /// JSON line. ORDERING: `nd`, `amd` or `nd-one-tree`; MODE: `condensed`
 /// (the default loop), `refactorize`, or `single` (its first iteration
 /// only).
+/// A proportional history of `steps` load steps of the seed scene (factors
+/// k/steps), its last step's displacements recovered, timed as a whole.
+fn history_run(model: &mut tfem::Model, steps: usize, rss_mesh: Option<f64>) -> ! {
+    let options = ContactOptions::default();
+    let t0 = Instant::now();
+    let (mut factorizations, mut iterations) = (0, 0);
+    for k in 1..=steps {
+        let r = model.step(k as f64 / steps as f64, &options).expect("a load step");
+        factorizations += r.info.factorizations;
+        iterations += r.iterations;
+    }
+    let stepping = t0.elapsed().as_secs_f64();
+    let u = model.displacements().expect("the last step's field");
+    let total = t0.elapsed().as_secs_f64();
+    println!(
+        "{}",
+        serde_json::json!({
+            "steps": steps, "total": total, "stepping": stepping, "recovery": total - stepping,
+            "factorizations": factorizations, "iterations": iterations,
+            "u_checksum": u.iter().flatten().sum::<f64>(),
+            "rss_mesh": rss_mesh, "rss_peak": peak_rss(),
+        })
+    );
+    std::process::exit(0)
+}
+
 fn speed_run(n: usize, ordering: &str, mode: &str) -> ! {
     let rss0 = peak_rss();
     let mut s = TwoBlocks {
@@ -997,6 +1023,9 @@ fn speed_run(n: usize, ordering: &str, mode: &str) -> ! {
     // solve of the seed scene's matrix with the initial contact set), whose
     // peak memory is what a factorisation + solve of that matrix takes in
     // this library; the solve then stops short of convergence.
+    if let Some(steps) = mode.strip_prefix("history") {
+        history_run(&mut s.model, steps.parse().expect("a step count"), rss_mesh);
+    }
     let single = mode == "single";
     let mut options = ContactOptions {
         refactorize: mode != "condensed",
@@ -1436,6 +1465,44 @@ fn median(mut v: Vec<f64>) -> f64 {
     v[v.len() / 2]
 }
 
+fn histories(report: &mut String, a: &Args) {
+    let levels: Vec<usize> = if a.quick { vec![64] } else { vec![512, 1024] };
+    let f = |v: &Value, k: &str| v[k].as_f64().unwrap_or(f64::NAN);
+    writeln!(report, "## Load histories\n").unwrap();
+    writeln!(
+        report,
+        "The seed scene (2C/L = 0.2) loaded in 100 proportional steps (factors k/100, \
+         `Model::step`), the last step's displacements recovered, against one contact solve of \
+         the full load; each run in its own process. One factorisation serves the whole history \
+         (the first step's); every later step is dense work on the contact interface, \
+         warm-started from the step before. The last step equals the one-step answer to \
+         round-off (`tests/history.rs`).\n"
+    )
+    .unwrap();
+    writeln!(report, "| h | unknowns | one solve [s] | 100 steps [s] | of which recovery [s] | ratio | factorisations | active-set iterations | peak RSS one solve / history [MB] |\n|---|---|---|---|---|---|---|---|---|").unwrap();
+    for &n in &levels {
+        let (Some(one), Some(h)) = (child(n, "nd", "condensed"), child(n, "nd", "history100")) else {
+            writeln!(report, "| 1/{n} | run failed |").unwrap();
+            continue;
+        };
+        writeln!(
+            report,
+            "| 1/{n} | {} | {:.2} | {:.2} | {:.2} | {:.2} | {} | {} | {:.0} / {:.0} |",
+            one["unknowns"],
+            f(&one, "total"),
+            f(&h, "total"),
+            f(&h, "recovery"),
+            f(&h, "total") / f(&one, "total"),
+            h["factorizations"],
+            h["iterations"],
+            f(&one, "rss_peak") / 1e6,
+            f(&h, "rss_peak") / 1e6,
+        )
+        .unwrap();
+    }
+    writeln!(report).unwrap();
+}
+
 fn host_codes(report: &mut String, a: &Args) {
     let levels: Vec<usize> = if a.quick {
         vec![32, 64]
@@ -1626,6 +1693,7 @@ fn main() {
     hertz(&mut report, &a);
     stability(&mut report, &a);
     speed(&mut report, &a);
+    histories(&mut report, &a);
     host_codes(&mut report, &a);
     built(&mut report);
     // Every section, hence every table, names where and when it was measured.

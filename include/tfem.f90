@@ -118,6 +118,8 @@ module tfem
   private :: tfem_get_contact_mesh_i
   private :: tfem_get_contact_element_pairs_i
   private :: tfem_get_contact_element_apexes_i
+  private :: tfem_get_contact_state_i
+  private :: tfem_set_contact_state_i
   private :: tfem_contact_last_error_i
   private :: tfem_contact_last_error_str
   private :: tfem_contact_last_error_str_i
@@ -1079,6 +1081,87 @@ module tfem
   end interface
 
   interface
+    !> One quasi-static load step: the contact problem with the loads and prescribed displacements
+    !! as set, scaled by `load_factor`, warm-started from the contact state of the last step (the
+    !! initial set of a contact solve for the first, or a state given by `tfem_set_contact_state`).
+    !! One factorisation serves every step while the stiffness (mesh, constraints, materials,
+    !! tempering, contact pairs) and the contact options (`options` may be NULL: defaults;
+    !! `max_iterations` may change) are unchanged: a step is dense work on the contact interface,
+    !! plus one sparse solve when the loads changed since the last step (a non-proportional
+    !! history). Its displacements, and everything computed from them, are recovered on first
+    !! request (one sparse solve); the system matrix of a step is not available. The step is
+    !! accepted as it is: `tfem_revert_step` undoes it. `report` may be NULL. On error the model is
+    !! unchanged. Fortran: `options` and `report` are OPTIONAL: omit them to pass NULL.
+    function tfem_step(model, load_factor, options, report) &
+        bind(C, name="tfem_step") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), value :: load_factor
+      type(tfem_contact_options), intent(in), optional :: options
+      type(tfem_contact_report), intent(inout), optional :: report
+      integer(c_int) :: status
+    end function tfem_step
+  end interface
+
+  interface
+    !> Undoes the last load step: its results, and the contact state the next step starts from, go
+    !! back to what they were before it. Once per step.
+    function tfem_revert_step(model) &
+        bind(C, name="tfem_revert_step") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int) :: status
+    end function tfem_revert_step
+  end interface
+
+  interface
+    !> Writes to `size` the number of bytes of the contact state of the last load step (see
+    !! `tfem_get_contact_state`).
+    function tfem_get_contact_state_size(model, size) &
+        bind(C, name="tfem_get_contact_state_size") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_size_t), intent(out) :: size
+      integer(c_int) :: status
+    end function tfem_get_contact_state_size
+  end interface
+
+  interface tfem_get_contact_state
+    !> Copies the contact state of the last load step into `buffer` (`length` bytes, at least
+    !! `tfem_get_contact_state_size`): the active set and the factor of the condensed interface
+    !! system, so that `tfem_set_contact_state` continues the history bit for bit (a restart, in
+    !! this model or another one holding the same problem). Fortran: `length` takes an
+    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
+    !! as 0.
+    function tfem_get_contact_state(model, buffer, length) &
+        bind(C, name="tfem_get_contact_state") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int8_t), intent(inout) :: buffer(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_state
+    module procedure tfem_get_contact_state_i
+  end interface tfem_get_contact_state
+
+  interface tfem_set_contact_state
+    !> Continues the load history from a contact state (`length` bytes from `tfem_get_contact_state`
+    !! of the same problem): the next `tfem_step` starts from it. Refused, naming why, if the bytes
+    !! are not such a state or belong to another contact mesh; the model is then unchanged. Fortran:
+    !! `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a negative
+    !! length is passed as 0.
+    function tfem_set_contact_state(model, buffer, length) &
+        bind(C, name="tfem_set_contact_state") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int8_t), intent(in) :: buffer(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_set_contact_state
+    module procedure tfem_set_contact_state_i
+  end interface tfem_set_contact_state
+
+  interface
     !> Creates a contact context for a host code that keeps its own elements, assembly, solver and
     !! Newton loop: node numbers and equation numbers in `index_base` (0 for C, 1 for Fortran).
     !! Returns NULL if `index_base` is not 0 or 1 (message in `tfem_last_error(NULL, …)`) or memory
@@ -1734,6 +1817,24 @@ contains
     integer(c_int) :: status
     status = tfem_get_contact_element_apexes(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_element_apexes_i
+
+  ! tfem_get_contact_state, lengths of kind tfem_length_kind.
+  function tfem_get_contact_state_i(model, buffer, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int8_t), intent(inout) :: buffer(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_state(model, buffer, tfem_to_size_t(length))
+  end function tfem_get_contact_state_i
+
+  ! tfem_set_contact_state, lengths of kind tfem_length_kind.
+  function tfem_set_contact_state_i(model, buffer, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int8_t), intent(in) :: buffer(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_set_contact_state(model, buffer, tfem_to_size_t(length))
+  end function tfem_set_contact_state_i
 
   ! tfem_contact_last_error, lengths of kind tfem_length_kind.
   function tfem_contact_last_error_i(context, buffer, length) result(status)

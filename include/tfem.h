@@ -821,6 +821,58 @@ enum tfem_status tfem_set_threads(struct tfem_model *model, int threads);
 enum tfem_status tfem_get_threads(struct tfem_model *model, int *threads);
 
 /**
+ * One quasi-static load step: the contact problem with the loads and
+ * prescribed displacements as set, scaled by `load_factor`, warm-started
+ * from the contact state of the last step (the initial set of a contact
+ * solve for the first, or a state given by `tfem_set_contact_state`).
+ * One factorisation serves every step while the stiffness (mesh,
+ * constraints, materials, tempering, contact pairs) and the contact
+ * options (`options` may be NULL: defaults; `max_iterations` may change)
+ * are unchanged: a step is dense work on the contact interface, plus one
+ * sparse solve when the loads changed since the last step (a
+ * non-proportional history). Its displacements, and everything computed
+ * from them, are recovered on first request (one sparse solve); the
+ * system matrix of a step is not available. The step is accepted as it
+ * is: `tfem_revert_step` undoes it. `report` may be NULL. On error the
+ * model is unchanged.
+ */
+enum tfem_status tfem_step(struct tfem_model *model,
+                           double load_factor,
+                           const struct tfem_contact_options *options,
+                           struct tfem_contact_report *report);
+
+/**
+ * Undoes the last load step: its results, and the contact state the next
+ * step starts from, go back to what they were before it. Once per step.
+ */
+enum tfem_status tfem_revert_step(struct tfem_model *model);
+
+/**
+ * Writes to `size` the number of bytes of the contact state of the last
+ * load step (see `tfem_get_contact_state`).
+ */
+enum tfem_status tfem_get_contact_state_size(struct tfem_model *model, size_t *size);
+
+/**
+ * Copies the contact state of the last load step into `buffer` (`length`
+ * bytes, at least `tfem_get_contact_state_size`): the active set and the
+ * factor of the condensed interface system, so that
+ * `tfem_set_contact_state` continues the history bit for bit (a restart,
+ * in this model or another one holding the same problem).
+ */
+enum tfem_status tfem_get_contact_state(struct tfem_model *model, uint8_t *buffer, size_t length);
+
+/**
+ * Continues the load history from a contact state (`length` bytes from
+ * `tfem_get_contact_state` of the same problem): the next `tfem_step`
+ * starts from it. Refused, naming why, if the bytes are not such a state
+ * or belong to another contact mesh; the model is then unchanged.
+ */
+enum tfem_status tfem_set_contact_state(struct tfem_model *model,
+                                        const uint8_t *buffer,
+                                        size_t length);
+
+/**
  * Creates a contact context for a host code that keeps its own elements,
  * assembly, solver and Newton loop: node numbers and equation numbers in
  * `index_base` (0 for C, 1 for Fortran). Returns NULL if `index_base` is

@@ -373,6 +373,7 @@ fn kind_of(base: &str) -> &'static str {
         "double" => "real(c_double)",
         "int" => "integer(c_int)",
         "int64_t" => "integer(c_int64_t)",
+        "uint8_t" => "integer(c_int8_t)",
         "size_t" => "integer(c_size_t)",
         "char" => "character(kind=c_char)",
         t => panic!("no Fortran mapping for parameter type {t}"),
@@ -1117,6 +1118,7 @@ fn every_header_function_has_a_matching_fortran_interface() {
                 "double" => decl.contains("c_double"),
                 "int" => decl.contains("c_int"),
                 "int64_t" => decl.contains("c_int64_t"),
+                "uint8_t" => decl.contains("c_int8_t"),
                 "size_t" => decl.contains("c_size_t"),
                 "char" => decl.contains("c_char"),
                 "struct tfem_model" | "struct tfem_contact" => decl.contains("c_ptr"),
@@ -1392,6 +1394,7 @@ fn every_function_takes_default_integer_lengths_and_omitted_nullables() {
                             "double" => ("rd", "real(c_double) :: rd(64) = 0"),
                             "int" => ("ia", "integer(c_int) :: ia(64) = 0"),
                             "int64_t" => ("la", "integer(c_int64_t) :: la(64) = 0"),
+                            "uint8_t" => ("ba", "integer(c_int8_t) :: ba(64) = 0"),
                             "char" if string => ("cs", "character(len=64) :: cs = ''"),
                             "char" => ("ca", "character(kind=c_char) :: ca(64) = ''"),
                             t => panic!("no actual argument for {t}"),
@@ -1405,6 +1408,7 @@ fn every_function_takes_default_integer_lengths_and_omitted_nullables() {
                             "double" => ("sd", "real(c_double)"),
                             "int" => ("si", "integer(c_int)"),
                             "int64_t" => ("sl", "integer(c_int64_t)"),
+                            "size_t" => ("sz", "integer(c_size_t)"),
                             t => panic!("no actual argument for {t}"),
                         };
                         (format!("{v}{k}"), format!("{t} :: {v}{k}"))

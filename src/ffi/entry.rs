@@ -1063,3 +1063,89 @@ pub unsafe extern "C" fn tfem_get_threads(model: *mut TfemModel, threads: *mut c
         write(threads, n, "threads")
     })
 }
+
+/// One quasi-static load step: the contact problem with the loads and
+/// prescribed displacements as set, scaled by `load_factor`, warm-started
+/// from the contact state of the last step (the initial set of a contact
+/// solve for the first, or a state given by `tfem_set_contact_state`).
+/// One factorisation serves every step while the stiffness (mesh,
+/// constraints, materials, tempering, contact pairs) and the contact
+/// options (`options` may be NULL: defaults; `max_iterations` may change)
+/// are unchanged: a step is dense work on the contact interface, plus one
+/// sparse solve when the loads changed since the last step (a
+/// non-proportional history). Its displacements, and everything computed
+/// from them, are recovered on first request (one sparse solve); the
+/// system matrix of a step is not available. The step is accepted as it
+/// is: `tfem_revert_step` undoes it. `report` may be NULL. On error the
+/// model is unchanged.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_step(
+    model: *mut TfemModel,
+    load_factor: f64,
+    options: *const TfemContactOptions,
+    report: *mut TfemContactReport,
+) -> Status {
+    with_model(model, |m| {
+        // SAFETY: NULL or a caller-owned options struct.
+        let opts = match unsafe { options.as_ref() } {
+            None => ContactOptions::default(),
+            Some(o) => options_in(o)?,
+        };
+        let r = m.model.step(load_factor, &opts)?;
+        if !report.is_null() {
+            write(report, report_out(&r), "report")?;
+        }
+        Ok(())
+    })
+}
+
+/// Undoes the last load step: its results, and the contact state the next
+/// step starts from, go back to what they were before it. Once per step.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_revert_step(model: *mut TfemModel) -> Status {
+    with_model(model, |m| m.model.revert_step())
+}
+
+/// Writes to `size` the number of bytes of the contact state of the last
+/// load step (see `tfem_get_contact_state`).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_state_size(
+    model: *mut TfemModel,
+    size: *mut usize,
+) -> Status {
+    with_model(model, |m| {
+        write(size, m.model.contact_state()?.len(), "size")
+    })
+}
+
+/// Copies the contact state of the last load step into `buffer` (`length`
+/// bytes, at least `tfem_get_contact_state_size`): the active set and the
+/// factor of the condensed interface system, so that
+/// `tfem_set_contact_state` continues the history bit for bit (a restart,
+/// in this model or another one holding the same problem).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_state(
+    model: *mut TfemModel,
+    buffer: *mut u8,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        copy_out(&m.model.contact_state()?, buffer, length, "buffer")
+    })
+}
+
+/// Continues the load history from a contact state (`length` bytes from
+/// `tfem_get_contact_state` of the same problem): the next `tfem_step`
+/// starts from it. Refused, naming why, if the bytes are not such a state
+/// or belong to another contact mesh; the model is then unchanged.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_set_contact_state(
+    model: *mut TfemModel,
+    buffer: *const u8,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let bytes = slice_in(buffer, length, "buffer")?;
+        m.model.set_contact_state(bytes)
+    })
+}

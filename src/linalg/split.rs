@@ -374,7 +374,7 @@ impl SplitCholesky {
         solve_upper_triangular_in_place(self.top_factor.as_ref().transpose(), r.as_mut(), Par::Seq);
         let r = r.col(0).try_as_col_major().expect("a column").as_slice();
         rayon::join(|| pa.backward(&mut wa, r), || pb.backward(&mut wb, r));
-        for (part, w) in [(&*pa, &wa), (&*pb, &wb)] {
+        for (part, w) in [(pa, &wa), (pb, &wb)] {
             for (k, &u) in part.own.iter().enumerate() {
                 x[u] = w[k];
             }

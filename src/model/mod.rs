@@ -13,6 +13,7 @@
 pub mod problem;
 pub mod solution;
 
+use std::sync::OnceLock;
 use std::time::Instant;
 
 pub use problem::Problem;
@@ -25,8 +26,9 @@ use crate::fem::element::{Tempering, TriGeometry};
 use crate::fem::material::Material;
 use crate::fem::mesh::Mesh;
 use crate::linalg::Ordering;
+use crate::solve::history::{self, StepState};
 use crate::solve::session::{Session, Settings};
-use crate::solve::{self, Input, Outcome};
+use crate::solve::{self, Field, Input, Outcome};
 
 /// A displacement component.
 #[repr(C)]
@@ -59,6 +61,12 @@ pub struct Model {
     session: Option<Session>,
     solution: Option<Solution>,
     solve_warnings: Vec<String>,
+    /// Before the last load step: its results and contact state
+    /// ([`Model::revert_step`]).
+    undo: Option<(Option<Solution>, StepState)>,
+    /// A contact state to continue from at the next load step, when no
+    /// history holds it ([`Model::set_contact_state`]).
+    restored: Option<StepState>,
 }
 
 impl Default for Model {
@@ -77,6 +85,8 @@ impl Model {
             session: None,
             solution: None,
             solve_warnings: Vec::new(),
+            undo: None,
+            restored: None,
         }
     }
 
@@ -361,13 +371,22 @@ impl Model {
             lambda: self.problem.tempering_lambda(),
             settings: self.settings,
         };
+        // A solve ends a load history: a step's field waiting for recovery
+        // is recovered first (the results of a failed solve stay).
+        if let Some(s) = self.solution.as_ref().filter(|s| s.pending.is_some()) {
+            if s.revision == self.problem.revision() {
+                self.field()?;
+            }
+        }
         let session = session_of(&mut self.session, &self.problem, &mut timings)?;
         let revision = self.problem.revision();
         let outcome = match solve::solve(session, &input, options, &mut timings) {
             Ok(outcome) => outcome,
             Err(e) => {
-                // The results of this revision stay: so does their matrix.
-                if let Some(s) = self.solution.as_ref().filter(|s| s.revision == revision) {
+                // The results of this revision stay: so does their matrix
+                // (a load step's results have none).
+                let current = self.solution.as_ref().filter(|s| s.revision == revision);
+                if let Some(s) = current.filter(|s| !s.step) {
                     let options = s.contact.as_ref().map(|c| &c.options);
                     if solve::restore(session, &input, options, &s.log).is_ok() {
                         session.set_system_of(Some(revision));
@@ -388,7 +407,172 @@ impl Model {
             revision,
         );
         self.solve_warnings = warnings;
+        self.undo = None;
         Ok(self.solution.insert(solution))
+    }
+
+    /// One quasi-static load step: the contact problem with the loads and
+    /// prescribed displacements as set, scaled by `load_factor`,
+    /// warm-started from the contact state of the last step (the initial
+    /// set of a contact solve for the first, or a state given by
+    /// [`Model::set_contact_state`]). One factorisation serves every step
+    /// while the stiffness (mesh, constraints, materials, tempering, pairs)
+    /// and the options are unchanged: a step is dense work on the contact
+    /// interface, plus one sparse solve when the loads changed since the
+    /// last step (a non-proportional history). Its displacements, and
+    /// everything computed from them, are recovered on first request (one
+    /// sparse solve). The step is accepted as it is; [`Model::revert_step`]
+    /// undoes it. On error the model is unchanged.
+    pub fn step(&mut self, load_factor: f64, options: &ContactOptions) -> Result<ContactReport> {
+        options.validate()?;
+        self.in_pool(|m| m.run_step(load_factor, options))
+    }
+
+    fn run_step(&mut self, t: f64, options: &ContactOptions) -> Result<ContactReport> {
+        let t_start = Instant::now();
+        self.problem.check_ready(true)?;
+        let mut timings = Timings::default();
+        let prescribed = self.problem.prescribed_vector()?;
+        let f_ext = self.problem.load_vector()?;
+        let input = Input {
+            elements: self.problem.elements()?,
+            pairs: self.problem.contact_pairs(),
+            prescribed: &prescribed,
+            f_ext: &f_ext,
+            lambda: self.problem.tempering_lambda(),
+            settings: self.settings,
+        };
+        let stiffness = self.problem.stiffness();
+        // A step that starts a new history ends the old one: a step's field
+        // waiting for recovery is recovered first.
+        let continues = self
+            .session
+            .as_ref()
+            .is_some_and(|s| history::continues(s, options, stiffness));
+        if !continues && self.solution.as_ref().is_some_and(|s| s.pending.is_some()) {
+            let _ = self.field();
+        }
+        let session = session_of(&mut self.session, &self.problem, &mut timings)?;
+        let revision = self.problem.revision();
+        let restored = self.restored.as_ref();
+        let key = (options, stiffness, revision);
+        let (outcome, before) = history::step(session, &input, key, (t, restored), &mut timings)?;
+        self.restored = None;
+        let elements = &session.contact;
+        let f_scaled: Vec<f64> = f_ext.iter().map(|f| t * f).collect();
+        let (mut solution, warnings) = solution_of(
+            outcome,
+            f_scaled,
+            (elements, Some(*options)),
+            timings,
+            t_start,
+            revision,
+        );
+        solution.step = true;
+        self.solve_warnings = warnings;
+        self.undo = Some((self.solution.take(), before));
+        let solution = self.solution.insert(solution);
+        Ok(solution
+            .contact
+            .as_ref()
+            .map(|c| c.report.clone())
+            .expect("a step has a contact state"))
+    }
+
+    /// Undoes the last load step: its results, and the contact state the
+    /// next step starts from, go back to what they were before it. Once.
+    pub fn revert_step(&mut self) -> Result<()> {
+        let (solution, state) = self
+            .undo
+            .take()
+            .ok_or_else(|| Error::state("no load step to revert"))?;
+        self.solution = solution;
+        match self.session.as_mut().and_then(|s| s.history.as_mut()) {
+            Some(history) => history.set_state(&state)?,
+            None => self.restored = Some(state),
+        }
+        Ok(())
+    }
+
+    /// The contact state of the last load step, as bytes: the active set
+    /// and the factor of the condensed interface system, so that
+    /// [`Model::set_contact_state`] continues bit for bit (in this model or
+    /// another one holding the same problem).
+    pub fn contact_state(&self) -> Result<Vec<u8>> {
+        let history = self.session.as_ref().and_then(|s| s.history.as_ref());
+        let state = match (history, &self.restored) {
+            (_, Some(state)) => state.clone(),
+            (Some(h), None) => h.step_state(),
+            (None, None) => return Err(Error::state("no load step yet: no contact state")),
+        };
+        Ok(encode(&state, self.contact_fingerprint()?))
+    }
+
+    /// Continues the load history from `bytes` (from
+    /// [`Model::contact_state`] of the same problem): the next
+    /// [`Model::step`] starts from that contact state. Refused, with the
+    /// model unchanged, if the bytes are not such a state or belong to
+    /// another contact mesh.
+    pub fn set_contact_state(&mut self, bytes: &[u8]) -> Result<()> {
+        let state = decode(bytes, self.contact_fingerprint()?)?;
+        match self.session.as_mut().and_then(|s| s.history.as_mut()) {
+            Some(history) => {
+                let before = history.step_state();
+                if let Err(e) = history.set_state(&state) {
+                    history.set_state(&before)?;
+                    return Err(e);
+                }
+            }
+            None => self.restored = Some(state),
+        }
+        self.undo = None;
+        Ok(())
+    }
+
+    /// A fingerprint of the contact mesh B of the declared pairs.
+    fn contact_fingerprint(&self) -> Result<u64> {
+        let b = self.contact_mesh()?;
+        let mut h = 0xcbf2_9ce4_8422_2325u64;
+        let mut eat = |v: u64| {
+            for byte in v.to_le_bytes() {
+                h = (h ^ byte as u64).wrapping_mul(0x100_0000_01b3);
+            }
+        };
+        eat(b.len() as u64);
+        for e in &b {
+            e.nodes.iter().for_each(|&n| eat(n as u64));
+            eat(e.pair as u64);
+        }
+        Ok(h)
+    }
+
+    /// The field of the current solution, recovered now if it waits.
+    fn field(&self) -> Result<&[f64]> {
+        let solution = self.solution()?;
+        if let Some(u) = solution.u.get() {
+            return Ok(u);
+        }
+        let pending = solution
+            .pending
+            .as_ref()
+            .expect("a field or a pending step");
+        let session = self
+            .session
+            .as_ref()
+            .ok_or_else(|| Error::state("the load step's session is gone"))?;
+        let prescribed = self.problem.prescribed_vector()?;
+        let f_ext = self.problem.load_vector()?;
+        let input = Input {
+            elements: self.problem.elements()?,
+            pairs: self.problem.contact_pairs(),
+            prescribed: &prescribed,
+            f_ext: &f_ext,
+            lambda: self.problem.tempering_lambda(),
+            settings: self.settings,
+        };
+        let u = history::recover(session, &input, pending)?;
+        let _ = solution.u.set(u);
+        Ok(solution.u.get().expect("just set"))
     }
 
     fn solution(&self) -> Result<&Solution> {
@@ -404,13 +588,13 @@ impl Model {
 
     /// Nodal displacements [u, v] of the last solve.
     pub fn displacements(&self) -> Result<Vec<[f64; 2]>> {
-        Ok(self.solution()?.displacements())
+        Ok(Solution::displacements(self.field()?))
     }
 
     /// Work of the external loads, Σ f·u (per unit thickness): for a
     /// pressure load, the compliance ∫ p (−u·n).
     pub fn external_work(&self) -> Result<f64> {
-        self.solution()?.external_work()
+        self.solution()?.external_work(self.field()?)
     }
 
     /// Statistics of the last solve.
@@ -436,12 +620,12 @@ impl Model {
     /// request: B̂u / max(J, Jmin), the usual strain for J >= Jmin and the
     /// tempered one below (consistent with the tempered energy).
     pub fn element_strains(&self) -> Result<Vec<[f64; 3]>> {
-        self.solution()?.strains(&self.problem)
+        self.solution()?.strains(&self.problem, self.field()?)
     }
 
     /// Element stresses [σ_xx, σ_yy, σ_xy] = D ε, computed on request.
     pub fn element_stresses(&self) -> Result<Vec<[f64; 3]>> {
-        self.solution()?.stresses(&self.problem)
+        self.solution()?.stresses(&self.problem, self.field()?)
     }
 
     /// J (twice the signed area) of every triangle in the initial
@@ -458,7 +642,7 @@ impl Model {
     /// Reaction forces [R_x, R_y] per node: K u − f at prescribed DOFs (zero
     /// elsewhere), computed on request.
     pub fn reactions(&self) -> Result<Vec<[f64; 2]>> {
-        self.solution()?.reactions(&self.problem)
+        self.solution()?.reactions(&self.problem, self.field()?)
     }
 
     fn contact_solution(&self) -> Result<&ContactSolution> {
@@ -493,7 +677,8 @@ impl Model {
     /// solve, [f_x, f_y] per node (zero off the interfaces; force per unit
     /// thickness), computed on request. It sums to zero over each pair.
     pub fn contact_forces(&self) -> Result<Vec<[f64; 2]>> {
-        self.solution()?.contact_forces(&self.problem)
+        self.solution()?
+            .contact_forces(&self.problem, self.field()?)
     }
 
     /// The normal gap at every node of the last contact solve (zero off the
@@ -501,7 +686,7 @@ impl Model {
     /// request: the smallest distance, over the elements of B at the node,
     /// of an element's apex from its interface edge (deformed, linearised).
     pub fn contact_gaps(&self) -> Result<Vec<f64>> {
-        self.solution()?.contact_gaps(&self.problem)
+        self.solution()?.contact_gaps(&self.problem, self.field()?)
     }
 
     /// The contact mesh B of the declared pairs, available before any
@@ -561,13 +746,95 @@ fn solution_of(
             options: options.expect("a contact solve has options"),
         }
     });
+    let (u, pending) = match outcome.u {
+        Field::Global(u) => (OnceLock::from(u), None),
+        Field::Pending(p) => (OnceLock::new(), Some(p)),
+    };
     let solution = Solution {
         revision,
-        u: outcome.u,
+        u,
+        pending,
         f_ext,
         info,
         contact,
         log: outcome.log,
+        step: false,
     };
     (solution, outcome.warnings)
+}
+
+/// The bytes of a contact state: a magic word, the fingerprint of B, then
+/// the flags and the interface factor, little-endian.
+const STATE_MAGIC: &[u8; 8] = b"TFEMCS01";
+
+fn encode(state: &StepState, fingerprint: u64) -> Vec<u8> {
+    let n = state.warm.len();
+    let packed = &state.factor.packed;
+    let mut out = Vec::with_capacity(8 + 24 + 2 * n + 8 * packed.len() + 9);
+    out.extend_from_slice(STATE_MAGIC);
+    out.extend_from_slice(&fingerprint.to_le_bytes());
+    out.extend_from_slice(&(n as u64).to_le_bytes());
+    out.extend_from_slice(&(packed.len() as u64).to_le_bytes());
+    out.extend(state.warm.iter().map(|&a| u8::from(a)));
+    out.extend(state.factor_active.iter().map(|&a| u8::from(a)));
+    out.push(u8::from(state.factor.factored));
+    out.extend_from_slice(&state.factor.min_eigenvalue.to_le_bytes());
+    for v in packed {
+        out.extend_from_slice(&v.to_le_bytes());
+    }
+    out
+}
+
+fn decode(bytes: &[u8], fingerprint: u64) -> Result<StepState> {
+    let bad = |why: &str| Error::argument(format!("not a contact state of this model: {why}"));
+    let mut at = 0usize;
+    let mut take = |n: usize| -> Result<&[u8]> {
+        let slice = bytes
+            .get(at..at.checked_add(n).ok_or_else(|| bad("too long"))?)
+            .ok_or_else(|| bad("it is cut short"))?;
+        at += n;
+        Ok(slice)
+    };
+    let word = |b: &[u8]| u64::from_le_bytes(b.try_into().expect("8 bytes"));
+    if take(8)? != STATE_MAGIC {
+        return Err(bad("no magic word"));
+    }
+    if word(take(8)?) != fingerprint {
+        return Err(bad("it belongs to another contact mesh"));
+    }
+    let n = usize::try_from(word(take(8)?)).map_err(|_| bad("size"))?;
+    let m = usize::try_from(word(take(8)?)).map_err(|_| bad("size"))?;
+    let flags = |b: &[u8]| -> Result<Vec<bool>> {
+        b.iter()
+            .map(|&v| match v {
+                0 => Ok(false),
+                1 => Ok(true),
+                _ => Err(bad("a flag is neither 0 nor 1")),
+            })
+            .collect()
+    };
+    let warm = flags(take(n)?)?;
+    let factor_active = flags(take(n)?)?;
+    let factored = flags(take(1)?)?[0];
+    let min_eigenvalue = f64::from_le_bytes(take(8)?.try_into().expect("8 bytes"));
+    let packed_bytes = take(m.checked_mul(8).ok_or_else(|| bad("size"))?)?;
+    let packed: Vec<f64> = packed_bytes
+        .chunks_exact(8)
+        .map(|c| f64::from_le_bytes(c.try_into().expect("8 bytes")))
+        .collect();
+    if at != bytes.len() {
+        return Err(bad("bytes left over"));
+    }
+    if !packed.iter().all(|v| v.is_finite()) || min_eigenvalue.is_nan() {
+        return Err(bad("a factor value is not finite"));
+    }
+    Ok(StepState {
+        warm,
+        factor_active,
+        factor: crate::solve::condensed::FactorSnapshot {
+            packed,
+            factored,
+            min_eigenvalue,
+        },
+    })
 }

@@ -6,9 +6,12 @@ use super::problem::Problem;
 use crate::contact::{
     ContactElement, ContactOptions, ElementLaw, contact_stiffness, linearised_opening,
 };
+use std::sync::OnceLock;
+
 use crate::error::{Error, Result, ensure_finite};
 use crate::fem::element::{TriGeometry, b_hat, tempered_jacobian};
 use crate::fem::element_loop::element_values;
+use crate::solve::history::Pending;
 
 pub use crate::solve::report::{ContactReport, IterationRecord, SolveInfo, Timings};
 pub use crate::solve::system::SystemMatrix;
@@ -18,8 +21,11 @@ pub use crate::solve::system::SystemMatrix;
 pub(crate) struct Solution {
     /// The problem revision it solves.
     pub revision: u64,
-    /// Displacements over every global DOF.
-    pub u: Vec<f64>,
+    /// Displacements over every global DOF: set by the solve, or recovered
+    /// on first request from `pending` (a load step).
+    pub u: OnceLock<Vec<f64>>,
+    /// A load step's interface values, when its field waits for recovery.
+    pub pending: Option<Pending>,
     /// External forces over every global DOF.
     pub f_ext: Vec<f64>,
     /// Statistics.
@@ -29,6 +35,8 @@ pub(crate) struct Solution {
     /// The contact elements its final system switched after the bodies'
     /// part, to rebuild that system after a failed solve.
     pub log: Vec<Vec<usize>>,
+    /// Whether a load step made it (it then has no system matrix).
+    pub step: bool,
 }
 
 /// The contact state of a solution.
@@ -49,20 +57,20 @@ pub(crate) struct ContactSolution {
 }
 
 impl Solution {
-    /// Nodal displacements [u, v].
-    pub fn displacements(&self) -> Vec<[f64; 2]> {
-        self.u.chunks_exact(2).map(|c| [c[0], c[1]]).collect()
+    /// Nodal displacements [u, v] of the field `u`.
+    pub fn displacements(u: &[f64]) -> Vec<[f64; 2]> {
+        u.chunks_exact(2).map(|c| [c[0], c[1]]).collect()
     }
 
     /// Work of the external loads, Σ f·u.
-    pub fn external_work(&self) -> Result<f64> {
-        let w = self.f_ext.iter().zip(&self.u).map(|(f, u)| f * u).sum();
+    pub fn external_work(&self, u: &[f64]) -> Result<f64> {
+        let w = self.f_ext.iter().zip(u).map(|(f, u)| f * u).sum();
         ensure_finite([w], 1, "work", |_| "the external loads".to_string())?;
         Ok(w)
     }
 
     /// Element strains [ε_xx, ε_yy, γ_xy]: B̂u / max(J, Jmin).
-    pub fn strains(&self, problem: &Problem) -> Result<Vec<[f64; 3]>> {
+    pub fn strains(&self, problem: &Problem, u: &[f64]) -> Result<Vec<[f64; 3]>> {
         let elements = problem.elements()?;
         let mut out = Vec::with_capacity(elements.mesh().triangles().len());
         elements.for_each(|el| {
@@ -71,7 +79,7 @@ impl Solution {
                 return Ok(());
             };
             let b = b_hat(&el.geo);
-            let ue = element_values(&self.u, el.nodes);
+            let ue = element_values(u, el.nodes);
             out.push(std::array::from_fn(|r| {
                 (0..6).map(|c| b[r][c] * ue[c]).sum::<f64>() / t
             }));
@@ -85,8 +93,8 @@ impl Solution {
     }
 
     /// Element stresses [σ_xx, σ_yy, σ_xy] = D ε.
-    pub fn stresses(&self, problem: &Problem) -> Result<Vec<[f64; 3]>> {
-        let strains = self.strains(problem)?;
+    pub fn stresses(&self, problem: &Problem, u: &[f64]) -> Result<Vec<[f64; 3]>> {
+        let strains = self.strains(problem, u)?;
         let elements = problem.elements()?;
         let stresses: Vec<[f64; 3]> = strains
             .iter()
@@ -105,12 +113,12 @@ impl Solution {
 
     /// Reaction forces [R_x, R_y] per node: K u − f at prescribed DOFs
     /// (zero elsewhere), the active contact elements included.
-    pub fn reactions(&self, problem: &Problem) -> Result<Vec<[f64; 2]>> {
+    pub fn reactions(&self, problem: &Problem, u: &[f64]) -> Result<Vec<[f64; 2]>> {
         let elements = problem.elements()?;
         let mesh = elements.mesh();
-        let mut r = vec![0.0; self.u.len()];
+        let mut r = vec![0.0; u.len()];
         let mut add = |tri: &[usize; 3], ke: &[f64; 36], f0: Option<&[f64; 6]>| {
-            let ue = element_values(&self.u, tri);
+            let ue = element_values(u, tri);
             for a in 0..6 {
                 let g = 2 * tri[a / 2] + a % 2;
                 if problem.is_prescribed(g) {
@@ -145,10 +153,10 @@ impl Solution {
     /// The force the contact exerts on every node, [f_x, f_y] per node
     /// (zero off the interfaces): minus the internal force K_e u_e − f0_e
     /// of the active elements of B. It sums to zero over each pair.
-    pub fn contact_forces(&self, problem: &Problem) -> Result<Vec<[f64; 2]>> {
+    pub fn contact_forces(&self, problem: &Problem, u: &[f64]) -> Result<Vec<[f64; 2]>> {
         let c = self.contact_state()?;
         let mesh = problem.mesh_ref()?;
-        let mut f = vec![0.0; self.u.len()];
+        let mut f = vec![0.0; u.len()];
         for (k, el) in c.elements.iter().enumerate() {
             if !c.active[k] {
                 continue;
@@ -156,7 +164,7 @@ impl Solution {
             let geo = TriGeometry::new(&mesh.corners(&el.nodes));
             let law = &c.laws[k];
             let cs = contact_stiffness(&geo, &law.d, el.normal, el.j0, law.t);
-            let ue = element_values(&self.u, &el.nodes);
+            let ue = element_values(u, &el.nodes);
             for a in 0..6 {
                 let ku: f64 = (0..6).map(|b| cs.k[a * 6 + b] * ue[b]).sum();
                 f[2 * el.nodes[a / 2] + a % 2] -= ku - cs.f0[a];
@@ -171,7 +179,7 @@ impl Solution {
     /// element's apex from its interface edge in the deformed configuration
     /// (linearised, the opening over the edge length). Negative: the
     /// bodies interpenetrate there.
-    pub fn contact_gaps(&self, problem: &Problem) -> Result<Vec<f64>> {
+    pub fn contact_gaps(&self, problem: &Problem, u: &[f64]) -> Result<Vec<f64>> {
         let c = self.contact_state()?;
         let mesh = problem.mesh_ref()?;
         let mut gap = vec![f64::INFINITY; mesh.nodes().len()];
@@ -180,7 +188,7 @@ impl Solution {
                 continue;
             }
             let geo = TriGeometry::new(&mesh.corners(&el.nodes));
-            let ue = element_values(&self.u, &el.nodes);
+            let ue = element_values(u, &el.nodes);
             let g = linearised_opening(&geo, c.options.law, el.normal, &ue) / el.edge_length;
             for &v in &el.nodes {
                 gap[v] = gap[v].min(g);

@@ -19,7 +19,7 @@ use super::linear::{Structure, check_finite, factor_and_solve};
 use super::report::{IterationRecord, SolveInfo, Timings};
 use super::system::AssembledSystem;
 use crate::contact::{ActiveSet, ContactOptions, ContactSet};
-use crate::error::Result;
+use crate::error::{Error, Result};
 use crate::fem::assembly::NOT_FREE;
 use crate::fem::element_loop::ElementLoop;
 use crate::linalg::Cholesky;
@@ -74,7 +74,7 @@ pub(crate) enum Outcome {
     /// are relative to; the whole field is [`expand`]ed when needed.
     Interface {
         /// The condensed state (its factor that of the final set).
-        state: CondensedState,
+        state: Box<CondensedState>,
         /// The interface values.
         ui: Vec<f64>,
         /// The final set.
@@ -83,7 +83,7 @@ pub(crate) enum Outcome {
         history: Vec<IterationRecord>,
     },
     /// Settled after a full solve (the condensation ended).
-    Full(Settled),
+    Full(Box<Settled>),
 }
 
 /// The current solution of the loop.
@@ -154,17 +154,27 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
     }
 
     /// Runs the loop like [`ActiveSetLoop::run`], but stops at the
-    /// interface when the last iterate is condensed.
-    pub fn run_to_interface(mut self) -> Result<Outcome> {
+    /// interface when the last iterate is condensed. On error, gives back
+    /// the condensed state it was resumed with (its factor possibly
+    /// changed), if the loop still held it.
+    pub fn run_to_interface(
+        mut self,
+    ) -> std::result::Result<Outcome, Box<(Error, Option<CondensedState>)>> {
         let max_iterations = self.input.options.max_iterations;
         for iteration in 1..=max_iterations {
-            self.solve(iteration)?;
-            let next = self.inverted();
-            if self.set.advance(next, iteration)? {
+            let settled = self.solve(iteration).and_then(|()| {
+                let next = self.inverted();
+                self.set.advance(next, iteration)
+            });
+            let settled = match settled {
+                Ok(s) => s,
+                Err(e) => return Err(Box::new((e, self.condensed.take()))),
+            };
+            if settled {
                 return match std::mem::replace(&mut self.iterate, Iterate::None) {
                     Iterate::Condensed(ui) => {
                         let (active, history) = self.set.into_parts();
-                        let state = self.condensed.expect("a condensed iterate");
+                        let state = Box::new(self.condensed.expect("a condensed iterate"));
                         Ok(Outcome::Interface {
                             state,
                             ui,
@@ -174,12 +184,15 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
                     }
                     other => {
                         self.iterate = other;
-                        self.recover().map(Outcome::Full)
+                        self.recover()
+                            .map(|s| Outcome::Full(Box::new(s)))
+                            .map_err(|e| Box::new((e, None)))
                     }
                 };
             }
         }
-        Err(self.set.not_settled(max_iterations))
+        let e = self.set.not_settled(max_iterations);
+        Err(Box::new((e, self.condensed.take())))
     }
 
     /// Runs the loop (docs/method.md §3): solve with the active elements,

@@ -41,6 +41,17 @@ fn singular_error(eig: f64) -> Error {
     )
 }
 
+/// A copy of a condensed system's factor ([`Condensed::factor_snapshot`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FactorSnapshot {
+    /// The lower triangle, packed by columns.
+    pub packed: Vec<f64>,
+    /// Whether it is usable.
+    pub factored: bool,
+    /// Its smallest-eigenvalue bound.
+    pub min_eigenvalue: f64,
+}
+
 /// Marks an unknown outside the interface.
 const OUTSIDE: u32 = u32::MAX;
 
@@ -287,6 +298,43 @@ impl Condensed {
     /// Whether the current factor is usable.
     pub fn is_factored(&self) -> bool {
         self.factored
+    }
+
+    /// The current factor (lower triangle packed by columns), whether it
+    /// is usable, and its eigenvalue bound: enough to continue exactly
+    /// where this system is ([`Condensed::restore_factor`]).
+    pub fn factor_snapshot(&self) -> FactorSnapshot {
+        let n = self.len();
+        let mut packed = Vec::with_capacity(packed_len(n));
+        pack_lower(self.factor.as_ref(), &mut packed);
+        FactorSnapshot {
+            packed,
+            factored: self.factored,
+            min_eigenvalue: self.min_eigenvalue,
+        }
+    }
+
+    /// Puts back a factor from [`Condensed::factor_snapshot`] of a system
+    /// of the same size.
+    pub fn restore_factor(&mut self, snapshot: &FactorSnapshot) -> Result<()> {
+        let n = self.len();
+        if snapshot.packed.len() != packed_len(n) {
+            return Err(Error::argument(format!(
+                "the saved interface factor holds {} values, not the {} of {n} interface unknowns",
+                snapshot.packed.len(),
+                packed_len(n)
+            )));
+        }
+        let mut f = self.factor.as_mut();
+        for j in 0..n {
+            let start = packed_start(n, j);
+            for i in j..n {
+                f[(i, j)] = snapshot.packed[start + i - j];
+            }
+        }
+        self.factored = snapshot.factored;
+        self.min_eigenvalue = snapshot.min_eigenvalue;
+        Ok(())
     }
 
     /// Inverse-iteration bound of the smallest eigenvalue of the freshly

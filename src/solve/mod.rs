@@ -11,6 +11,7 @@
 pub(crate) mod active_set;
 pub mod condensed;
 pub(crate) mod diagnostics;
+pub(crate) mod history;
 pub(crate) mod linear;
 pub mod report;
 pub(crate) mod session;
@@ -50,10 +51,19 @@ pub(crate) struct Input<'a> {
     pub settings: Settings,
 }
 
+/// The displacements a solve produced.
+pub(crate) enum Field {
+    /// Over every global DOF.
+    Global(Vec<f64>),
+    /// A load step's interface values, the whole field recovered when
+    /// asked for ([`history::recover`]).
+    Pending(history::Pending),
+}
+
 /// What a successful solve produced.
 pub(crate) struct Outcome {
-    /// Displacements over every global DOF.
-    pub u: Vec<f64>,
+    /// The displacements.
+    pub u: Field,
     /// How the final system was assembled: the contact elements switched
     /// after the bodies' part ([`restore`] replays it).
     pub log: Vec<Vec<usize>>,
@@ -85,6 +95,8 @@ pub(crate) fn solve(
     timings: &mut Timings,
 ) -> Result<Outcome> {
     session.set_system_of(None);
+    // A solve refactorises and reassembles: a load history's K₁ is gone.
+    session.history = None;
     let mesh = input.elements.mesh();
     let t0 = std::time::Instant::now();
     let softened = session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
@@ -121,7 +133,7 @@ pub(crate) fn restore(
             system,
             ..
         } = &mut *session;
-        let set = contact_set(input, contact, dofs, options)?;
+        let set = contact_set(input, input.prescribed, contact, dofs, options)?;
         system.replay(log, &set, (dofs, pattern), input.prescribed);
     }
     Ok(())
@@ -129,8 +141,9 @@ pub(crate) fn restore(
 
 /// The contact set of a built-in solve: B of the session's pairs, each
 /// element's law from its pair's softer body, the session's unknowns.
-fn contact_set<'a>(
+pub(crate) fn contact_set<'a>(
     input: &Input<'a>,
+    prescribed: &[f64],
     contact: &'a [ContactElement],
     dofs: &DofMap,
     options: &ContactOptions,
@@ -147,13 +160,13 @@ fn contact_set<'a>(
         contact,
         laws,
         equation,
-        input.prescribed,
+        prescribed,
         options,
     )
 }
 
 /// The warning about well-shaped elements that tempering softens.
-fn softening_warning(
+pub(crate) fn softening_warning(
     mesh: &Mesh,
     softened: Softened,
     lambda: Option<f64>,
@@ -217,7 +230,7 @@ fn solve_plain(
     finite_statistics(&info)?;
     conditioning_warning(&info, &mut warnings);
     Ok(Outcome {
-        u: dofs.expand(&x, input.prescribed),
+        u: Field::Global(dofs.expand(&x, input.prescribed)),
         log: Vec::new(),
         info,
         contact: None,
@@ -243,7 +256,7 @@ fn solve_contact(
         system,
         ..
     } = &mut *session;
-    let set = contact_set(input, contact, dofs, options)?;
+    let set = contact_set(input, input.prescribed, contact, dofs, options)?;
     let interface = if options.refactorize {
         Vec::new()
     } else {
@@ -286,9 +299,10 @@ fn solve_contact(
     conditioning_warning(&info, &mut warnings);
     let u = dofs.expand(&settled.x, input.prescribed);
     drop(settled.x);
-    let contact = contact_outcome(&set, &u, settled.active, settled.history, info)?;
+    let ue_of = |tri: &[usize; 3]| element_values(&u, tri);
+    let contact = contact_outcome(&set, ue_of, settled.active, settled.history, info)?;
     Ok(Outcome {
-        u,
+        u: Field::Global(u),
         log: system.log().to_vec(),
         info,
         contact: Some(contact),
@@ -307,7 +321,7 @@ fn session_memory(
 
 /// Refuses statistics that overflowed (a relative residual or condition
 /// estimate of a system scaled beyond double precision).
-fn finite_statistics(info: &SolveInfo) -> Result<()> {
+pub(crate) fn finite_statistics(info: &SolveInfo) -> Result<()> {
     let values = [info.relative_residual, info.condition_estimate];
     ensure_finite(values, 1, "relative residual or condition estimate", |_| {
         "the solved system".to_string()
@@ -315,9 +329,9 @@ fn finite_statistics(info: &SolveInfo) -> Result<()> {
 }
 
 /// Pressures, contact length and penetration of the settled set.
-fn contact_outcome(
+pub(crate) fn contact_outcome(
     set: &ContactSet<'_>,
-    u: &[f64],
+    ue_of: impl Fn(&[usize; 3]) -> [f64; 6],
     active: Vec<bool>,
     history: Vec<report::IterationRecord>,
     info: SolveInfo,
@@ -328,7 +342,7 @@ fn contact_outcome(
         if !active[k] {
             continue;
         }
-        let ue = element_values(u, &el.nodes);
+        let ue = ue_of(&el.nodes);
         pressure[k] = set.pressure(k, &ue);
         lc += 0.5 * el.edge_length;
         let opening = set.opening(k, &ue);

@@ -44,7 +44,8 @@ pub(crate) struct Analysis {
     zeros: Vec<usize>,
     /// The settings it was made with.
     settings: Settings,
-    chol: Cholesky,
+    /// The factorisation.
+    pub chol: Cholesky,
 }
 
 /// What a solve asks of the analysis. An analysis is reused only when it
@@ -82,6 +83,8 @@ pub(crate) struct Session {
     /// The revision of the problem whose solution `system` holds the final
     /// matrix of, if any.
     system_of: Option<u64>,
+    /// A load history's state (K₁ factorised once for every step).
+    pub history: Option<super::history::History>,
 }
 
 impl Session {
@@ -112,6 +115,7 @@ impl Session {
             analysis: None,
             system,
             system_of: None,
+            history: None,
         })
     }
 

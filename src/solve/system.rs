@@ -52,6 +52,11 @@ impl AssembledSystem {
         &self.rhs
     }
 
+    /// Which contact elements the system holds.
+    pub fn contact(&self) -> &[bool] {
+        &self.contact
+    }
+
     /// Bytes of the matrix values.
     pub fn memory_bytes(&self) -> usize {
         8 * self.values.len()

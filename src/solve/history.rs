@@ -1,0 +1,555 @@
+//! Quasi-static load histories: a sequence of contact solves whose loads
+//! and prescribed displacements change from step to step while the
+//! stiffness does not. One factorisation serves the whole history.
+//!
+//! The first step factorises K₁ — the bodies plus the contact set a
+//! contact solve starts from — with the interface unknowns numbered last,
+//! and keeps its condensed interface system (Ŝ₁, a dense factor) and two
+//! solutions of K₁: x_load for the loads and prescribed displacements at
+//! factor 1 (with K₁'s contact loads less their gap part), and x_gap for
+//! the loads of K₁'s initial gaps. Everything a step needs is linear in its
+//! load factor t: K₁'s solution is x₁(t) = t·x_load + x_gap, and each
+//! contact element's load is t·(its load at 1) + (1 − t)·(its gap load).
+//! A step is then the condensed active-set loop alone, warm-started from
+//! the set of the step before: dense interface work, no sparse solve. New
+//! loads (a non-proportional history) cost one sparse solve (x_load anew).
+//! The whole field of a step is recovered when asked for
+//! ([`recover`]): one sparse solve.
+
+use std::time::Instant;
+
+use super::active_set::{
+    ActiveSetLoop, CondensedState, LoopInput, Outcome as LoopOutcome, Target, body_energy, expand,
+};
+use super::condensed::{Condensed, FactorSnapshot};
+use super::linear::{Structure, check_finite, factor_and_solve};
+use super::report::{SolveInfo, Timings};
+use super::session::{Session, Wanted, factorisation};
+use super::{Field, Input, Outcome, contact_outcome, contact_set, finite_statistics};
+use crate::contact::{ContactOptions, ContactSet};
+use crate::error::{Error, Result, Status};
+use crate::fem::assembly::NOT_FREE;
+use crate::fem::body;
+use crate::linalg::refine::norm_inf;
+
+/// What a history is valid for: the problem's stiffness epoch and the
+/// contact options that make K₁ (all but the iteration cap).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Key {
+    /// The problem's stiffness epoch.
+    pub stiffness: u64,
+    /// The contact options, with the iteration cap left out.
+    options: ContactOptions,
+}
+
+impl Key {
+    /// The key of a problem of stiffness epoch `stiffness` under `options`.
+    pub fn new(stiffness: u64, options: &ContactOptions) -> Key {
+        Key {
+            stiffness,
+            options: ContactOptions {
+                max_iterations: 1,
+                ..*options
+            },
+        }
+    }
+}
+
+/// The contact state a history carries from step to step: the warm start
+/// and the interface factor, which a restart needs to continue bit for bit.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct StepState {
+    /// The active set of the last step (the next one starts from it).
+    pub warm: Vec<bool>,
+    /// The set the interface factor represents.
+    pub factor_active: Vec<bool>,
+    /// The interface factor.
+    pub factor: FactorSnapshot,
+}
+
+/// A step whose whole field is recovered when asked for.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Pending {
+    /// The history it belongs to.
+    pub key: Key,
+    /// The load factor.
+    pub t: f64,
+    /// The interface values.
+    pub ui: Vec<f64>,
+    /// The final set.
+    pub active: Vec<bool>,
+}
+
+/// The state of a load history (module documentation).
+pub(crate) struct History {
+    key: Key,
+    /// The problem revision whose loads `x_load` solves.
+    loads: u64,
+    /// K₁'s condensed state (lent to the loop during a step).
+    state: Option<CondensedState>,
+    x_load: Vec<f64>,
+    x_gap: Vec<f64>,
+    /// The bodies' right-hand side at factor 1.
+    rhs_body: Vec<f64>,
+    /// The active set of the last step.
+    warm: Vec<bool>,
+    /// The statistics of K₁'s solve (the residual a step reports).
+    first: SolveInfo,
+}
+
+impl History {
+    fn condensed(&self) -> &CondensedState {
+        self.state.as_ref().expect("the condensed state is back")
+    }
+
+    /// The contact state to continue from ([`History::set_state`]).
+    pub fn step_state(&self) -> StepState {
+        let state = self.condensed();
+        StepState {
+            warm: self.warm.clone(),
+            factor_active: state.factor_active.clone(),
+            factor: state.system.factor_snapshot(),
+        }
+    }
+
+    /// Continues from `state` (from [`History::state`] of a history of the
+    /// same problem).
+    pub fn set_state(&mut self, state: &StepState) -> Result<()> {
+        let n = self.warm.len();
+        if state.warm.len() != n || state.factor_active.len() != n {
+            return Err(Error::argument(format!(
+                "the contact state is of {} contact elements, the model has {n}",
+                state.warm.len()
+            )));
+        }
+        let condensed = self.state.as_mut().expect("the condensed state is back");
+        condensed.system.restore_factor(&state.factor)?;
+        condensed.factor_active.clone_from(&state.factor_active);
+        self.warm.clone_from(&state.warm);
+        Ok(())
+    }
+}
+
+/// One load step at factor `t` of the loads and prescribed displacements
+/// of `input` (revision `revision` of a problem of stiffness epoch
+/// `key.stiffness`), warm-started from the last step's set: starts a
+/// history when there is none for `key`. On error the history is as it
+/// was. A step whose condensed system turns out singular is solved whole
+/// (and the history ends).
+pub(crate) fn step(
+    session: &mut Session,
+    input: &Input<'_>,
+    (options, stiffness, revision): (&ContactOptions, u64, u64),
+    (t, restored): (f64, Option<&StepState>),
+    timings: &mut Timings,
+) -> Result<(Outcome, StepState)> {
+    let key = Key::new(stiffness, options);
+    if !(t.is_finite() && t.abs() <= 1e300) {
+        return Err(Error::argument(format!(
+            "load_factor = {t:?} must be finite"
+        )));
+    }
+    let mut warnings = Vec::new();
+    let current = session.history.as_ref().is_some_and(|h| h.key == key);
+    let mut factorizations = 0;
+    if !current {
+        session.history = None;
+        let mut history = begin(session, input, key, revision, timings, &mut warnings)?;
+        if let Some(state) = restored {
+            history.set_state(state)?;
+        }
+        factorizations = history.first.factorizations;
+        session.history = Some(history);
+    } else if session
+        .history
+        .as_ref()
+        .is_some_and(|h| h.loads != revision)
+    {
+        new_loads(session, input, revision, timings)?;
+    }
+    let (mut outcome, before) =
+        step_in_history(session, input, (key, options), t, timings, warnings)?;
+    outcome.info.factorizations += factorizations;
+    if let Some(c) = outcome.contact.as_mut() {
+        c.report.info.factorizations += factorizations;
+    }
+    Ok((outcome, before))
+}
+
+/// Whether a step under `options` on a problem of stiffness epoch
+/// `stiffness` continues the session's history.
+pub(crate) fn continues(session: &Session, options: &ContactOptions, stiffness: u64) -> bool {
+    let key = Key::new(stiffness, options);
+    session.history.as_ref().is_some_and(|h| h.key == key)
+}
+
+/// Starts a history: the bodies' part at factor 1, K₁ with the initial
+/// contact set, its factorisation (the only one) and condensed interface
+/// system, and its two solutions.
+fn begin(
+    session: &mut Session,
+    input: &Input<'_>,
+    key: Key,
+    revision: u64,
+    timings: &mut Timings,
+    warnings: &mut Vec<String>,
+) -> Result<History> {
+    session.set_system_of(None);
+    let t0 = Instant::now();
+    let softened = session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
+    timings.assembly += t0.elapsed().as_secs_f64();
+    super::softening_warning(input.elements.mesh(), softened, input.lambda, warnings);
+    let rhs_body = session.system.rhs().to_vec();
+    let mesh = input.elements.mesh();
+    let Session {
+        dofs,
+        pattern,
+        contact,
+        analysis,
+        system,
+        ..
+    } = &mut *session;
+    let set = contact_set(input, input.prescribed, contact, dofs, &key.options)?;
+    let interface = set.interface_unknowns();
+    if key.options.refactorize || !Condensed::worthwhile(interface.len(), pattern.nnz()) {
+        return Err(Error::new(
+            Status::InvalidArgument,
+            format!(
+                "a load history condenses the contact interface: {} interface unknowns are too \
+                 many for it (or `refactorize` is set); solve each step with solve_contact",
+                interface.len()
+            ),
+        ));
+    }
+    let zeros = set.structural_zeros(pattern, system.values());
+    let want = Wanted {
+        last: &interface,
+        zeros: &zeros,
+    };
+    let mut info = SolveInfo::default();
+    let chol = factorisation(
+        analysis,
+        (mesh, dofs, pattern),
+        input.settings,
+        want,
+        timings,
+        &mut info,
+    )?;
+    let reference = set.initial_active();
+    let t0 = Instant::now();
+    system.set_contact(&reference, &set, (dofs, pattern), input.prescribed);
+    timings.assembly += t0.elapsed().as_secs_f64();
+    let at = Structure {
+        mesh,
+        dofs,
+        pattern,
+    };
+    let energy = |r: &[f64]| body_energy(&input.elements, r);
+    let context = " (the first load step)";
+    let x = factor_and_solve(at, chol, system, &energy, true, context, timings, &mut info)?;
+    info.relative_residual = system.relative_residual(pattern, &x);
+    info.condition_estimate = chol.condition_estimate();
+    finite_statistics(&info)?;
+    // The gap part of K₁'s contact loads, solved apart: it does not scale.
+    let gap = gap_loads(&set, &reference, dofs.n_free());
+    let (x_load, x_gap) = match gap.iter().any(|&g| g != 0.0) {
+        false => (x, Vec::new()),
+        true => {
+            let mut x_gap = gap.clone();
+            chol.solve(&mut x_gap)?;
+            let mut x_load = system.rhs().to_vec();
+            x_load.iter_mut().zip(&gap).for_each(|(a, g)| *a -= g);
+            chol.solve(&mut x_load)?;
+            (x_load, x_gap)
+        }
+    };
+    let t0 = Instant::now();
+    let condensed = Condensed::new(chol, interface)?;
+    timings.interface += t0.elapsed().as_secs_f64();
+    info.interface_unknowns = condensed.len();
+    Ok(History {
+        key,
+        loads: revision,
+        state: Some(CondensedState {
+            system: condensed,
+            x1: Vec::new(),
+            reference: reference.clone(),
+            factor_active: reference.clone(),
+        }),
+        x_load,
+        x_gap,
+        rhs_body,
+        warm: reference,
+        first: info,
+    })
+}
+
+/// The gap loads f0 of the elements of `active`, over the unknowns.
+fn gap_loads(set: &ContactSet<'_>, active: &[bool], n: usize) -> Vec<f64> {
+    let mut g = vec![0.0; n];
+    for k in (0..set.len()).filter(|&k| active[k]) {
+        for (a, e) in set.unknowns(k).iter().enumerate() {
+            if let Some(i) = e {
+                g[*i] += set.stiffness(k).f0[a];
+            }
+        }
+    }
+    g
+}
+
+/// New loads on the same stiffness: x_load anew (one sparse solve).
+fn new_loads(
+    session: &mut Session,
+    input: &Input<'_>,
+    revision: u64,
+    timings: &mut Timings,
+) -> Result<()> {
+    let t0 = Instant::now();
+    let rhs_body = body::rhs(
+        &input.elements,
+        &session.dofs,
+        input.f_ext,
+        input.prescribed,
+    )?;
+    let history = session.history.as_mut().expect("a history");
+    let options = history.key.options;
+    let set = contact_set(
+        input,
+        input.prescribed,
+        &session.contact,
+        &session.dofs,
+        &options,
+    )?;
+    let mut a = rhs_body.clone();
+    let reference = &history.condensed().reference;
+    for k in (0..set.len()).filter(|&k| reference[k]) {
+        let (load, f0) = (set.load(k), &set.stiffness(k).f0);
+        for (q, e) in set.unknowns(k).iter().enumerate() {
+            if let Some(i) = e {
+                a[*i] += load[q] - f0[q];
+            }
+        }
+    }
+    timings.assembly += t0.elapsed().as_secs_f64();
+    let t0 = Instant::now();
+    let chol = &session
+        .analysis
+        .as_ref()
+        .expect("the history's factor")
+        .chol;
+    chol.solve(&mut a)?;
+    timings.solve += t0.elapsed().as_secs_f64();
+    history.x_load = a;
+    history.rhs_body = rhs_body;
+    history.loads = revision;
+    Ok(())
+}
+
+/// The scaled prescribed displacements of a step.
+fn scaled(v: &[f64], t: f64) -> Vec<f64> {
+    v.iter().map(|a| t * a).collect()
+}
+
+/// The condensed loop of one step from the warm start.
+fn step_in_history(
+    session: &mut Session,
+    input: &Input<'_>,
+    (key, options): (Key, &ContactOptions),
+    t: f64,
+    timings: &mut Timings,
+    mut warnings: Vec<String>,
+) -> Result<(Outcome, StepState)> {
+    let mesh = input.elements.mesh();
+    let prescribed = scaled(input.prescribed, t);
+    let Session {
+        dofs,
+        pattern,
+        contact,
+        analysis,
+        system,
+        history,
+        ..
+    } = &mut *session;
+    let h = history.as_mut().expect("a history");
+    let set = contact_set(input, &prescribed, contact, dofs, options)?;
+    let chol = &mut analysis.as_mut().expect("the history's factor").chol;
+    let before = h.step_state();
+    let mut condensed = h.state.take().expect("the condensed state is back");
+    condensed.x1 = h.x_load.iter().map(|a| t * a).collect();
+    if !h.x_gap.is_empty() {
+        condensed
+            .x1
+            .iter_mut()
+            .zip(&h.x_gap)
+            .for_each(|(a, b)| *a += b);
+    }
+    let mut info = SolveInfo {
+        unknowns: dofs.n_free(),
+        matrix_nnz: pattern.nnz(),
+        factor_nnz: chol.factor_nnz(),
+        factorization_bytes: chol.factorization_bytes(),
+        split_factorization: chol.is_split(),
+        interface_unknowns: condensed.system.len(),
+        ..Default::default()
+    };
+    let loop_input = LoopInput {
+        at: Structure {
+            mesh,
+            dofs,
+            pattern,
+        },
+        elements: &input.elements,
+        set: &set,
+        prescribed: &prescribed,
+        interface: None,
+        options: *options,
+    };
+    let warm = h.warm.clone();
+    let run = ActiveSetLoop::resume(
+        loop_input,
+        (chol, system),
+        (timings, &mut info),
+        condensed,
+        warm,
+    )
+    .run_to_interface();
+    match run {
+        Ok(LoopOutcome::Interface {
+            state,
+            ui,
+            active,
+            history: records,
+        }) => {
+            h.state = Some(*state);
+            h.warm.clone_from(&active);
+            info.relative_residual = h.first.relative_residual;
+            info.condition_estimate = chol.condition_estimate();
+            info.timings = *timings;
+            finite_statistics(&info)?;
+            let x1 = &h.condensed().x1;
+            let sys = &h.condensed().system;
+            let value = |g: usize| match dofs.free(g) {
+                NOT_FREE => prescribed[g],
+                i => sys.position(i).map_or(x1[i], |p| ui[p]),
+            };
+            let ue_of = |tri: &[usize; 3]| std::array::from_fn(|a| value(2 * tri[a / 2] + a % 2));
+            let contact = contact_outcome(&set, ue_of, active.clone(), records, info)?;
+            let pending = Pending { key, t, ui, active };
+            let outcome = Outcome {
+                u: Field::Pending(pending),
+                log: Vec::new(),
+                info,
+                contact: Some(contact),
+                warnings,
+            };
+            Ok((outcome, before))
+        }
+        Ok(LoopOutcome::Full(settled)) => {
+            // The condensed system was singular: solved whole, K₁ is gone.
+            *history = None;
+            info.relative_residual = system.relative_residual(pattern, &settled.x);
+            info.condition_estimate = chol.condition_estimate();
+            info.timings = *timings;
+            finite_statistics(&info)?;
+            super::diagnostics::conditioning_warning(&info, &mut warnings);
+            let u = dofs.expand(&settled.x, &prescribed);
+            let ue_of = |tri: &[usize; 3]| crate::fem::element_loop::element_values(&u, tri);
+            let contact = contact_outcome(&set, ue_of, settled.active, settled.history, info)?;
+            let outcome = Outcome {
+                u: Field::Global(u),
+                log: Vec::new(),
+                info,
+                contact: Some(contact),
+                warnings,
+            };
+            Ok((outcome, before))
+        }
+        Err(failed) => {
+            let (e, state) = *failed;
+            match state {
+                Some(mut state) => {
+                    state.x1 = Vec::new();
+                    h.state = Some(state);
+                    h.set_state(&before)?;
+                }
+                // The loop refactorised: K₁ is gone.
+                None => *history = None,
+            }
+            Err(e)
+        }
+    }
+}
+
+/// The whole field of a pending step (global DOFs): u = x₁(t) +
+/// K₁⁻¹P(Δg + ΔC u_I), refined against the matrix of the step's set.
+pub(crate) fn recover(session: &Session, input: &Input<'_>, pending: &Pending) -> Result<Vec<f64>> {
+    let stale = || Error::state("the load step's factorisation is gone: run the step again");
+    let h = session.history.as_ref().ok_or_else(stale)?;
+    if h.key != pending.key || h.warm != pending.active {
+        return Err(stale());
+    }
+    let t = pending.t;
+    let mesh = input.elements.mesh();
+    let prescribed = scaled(input.prescribed, t);
+    let Session {
+        dofs,
+        pattern,
+        contact,
+        analysis,
+        system,
+        ..
+    } = session;
+    let set = contact_set(input, &prescribed, contact, dofs, &h.key.options)?;
+    let chol = &analysis.as_ref().ok_or_else(stale)?.chol;
+    let mut x1: Vec<f64> = h.x_load.iter().map(|a| t * a).collect();
+    if !h.x_gap.is_empty() {
+        x1.iter_mut().zip(&h.x_gap).for_each(|(a, b)| *a += b);
+    }
+    // The step's system: the assembled one (of whatever set it holds) plus
+    // the contact elements that differ, and its right-hand side at t.
+    let active = &pending.active;
+    let held = system.contact();
+    let mut rhs: Vec<f64> = h.rhs_body.iter().map(|a| t * a).collect();
+    for k in (0..set.len()).filter(|&k| active[k]) {
+        for (q, e) in set.unknowns(k).iter().enumerate() {
+            if let Some(i) = e {
+                rhs[*i] += set.load(k)[q];
+            }
+        }
+    }
+    let values = system.values();
+    let product = |v: &[f64], y: &mut [f64]| {
+        pattern.sym_mul(values, v, y);
+        for k in (0..set.len()).filter(|&k| active[k] != held[k]) {
+            let sign = if active[k] { 1.0 } else { -1.0 };
+            let (eq, ke) = (set.unknowns(k), &set.stiffness(k).k);
+            for a in 0..6 {
+                let Some(i) = eq[a] else { continue };
+                let mut acc = 0.0;
+                for b in 0..6 {
+                    if let Some(j) = eq[b] {
+                        acc += ke[6 * a + b] * v[j];
+                    }
+                }
+                y[i] += sign * acc;
+            }
+        }
+    };
+    let at = Structure {
+        mesh,
+        dofs,
+        pattern,
+    };
+    let target = Target {
+        at,
+        set: &set,
+        active,
+        product: &product,
+        k_norm: &|| norm_inf(pattern, values),
+        rhs: &rhs,
+    };
+    let state = (&h.condensed().system, &h.condensed().reference[..]);
+    let x = expand(target, chol, state, x1, pending.ui.clone())?;
+    check_finite(at, &x, &format!(" (load step at factor {t:?})"))?;
+    Ok(dofs.expand(&x, &prescribed))
+}

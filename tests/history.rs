@@ -1,0 +1,193 @@
+//! Quasi-static load histories (`Model::step`): one factorisation serves
+//! every step, a proportional frictionless history equals the one-step
+//! answer, a step can be reverted, and the contact state saved to bytes
+//! and restored continues bit for bit.
+
+use tfem::scenes::{TAG_LOAD, TwoBlocks};
+use tfem::{ContactOptions, Model, Status};
+
+fn scene(c: f64) -> Model {
+    TwoBlocks {
+        c,
+        mesh_size: 1.0 / 32.0,
+        ..Default::default()
+    }
+    .build()
+    .unwrap()
+    .model
+}
+
+fn bits(u: &[[f64; 2]]) -> Vec<u64> {
+    u.iter().flatten().map(|v| v.to_bits()).collect()
+}
+
+fn relative_difference(a: &[[f64; 2]], b: &[[f64; 2]]) -> f64 {
+    let scale = b.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+    let diff = a
+        .iter()
+        .flatten()
+        .zip(b.iter().flatten())
+        .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+    diff / scale
+}
+
+#[test]
+fn a_proportional_history_ends_at_the_one_step_answer_with_one_factorisation() {
+    let options = ContactOptions::default();
+    let mut one = scene(0.1);
+    one.solve_contact(&options).unwrap();
+    let expected = one.displacements().unwrap();
+    let mut model = scene(0.1);
+    let mut factorisations = 0;
+    for k in 1..=20 {
+        let report = model.step(k as f64 / 20.0, &options).unwrap();
+        factorisations += report.info.factorizations;
+        if k > 1 {
+            assert_eq!(
+                report.iterations, 1,
+                "step {k} settles at once (warm start)"
+            );
+        }
+    }
+    assert_eq!(factorisations, 1);
+    let last = model.displacements().unwrap();
+    assert!(relative_difference(&last, &expected) < 1e-12);
+    assert_eq!(
+        model.contact_active().unwrap(),
+        one.contact_active().unwrap()
+    );
+}
+
+#[test]
+fn a_frictionless_step_scales_with_its_load_factor() {
+    let options = ContactOptions::default();
+    let mut model = scene(0.2);
+    model.step(1.0, &options).unwrap();
+    let full = model.displacements().unwrap();
+    model.step(0.25, &options).unwrap();
+    let quarter: Vec<[f64; 2]> = model.displacements().unwrap();
+    let scaled: Vec<[f64; 2]> = full.iter().map(|u| [0.25 * u[0], 0.25 * u[1]]).collect();
+    assert!(relative_difference(&quarter, &scaled) < 1e-12);
+}
+
+#[test]
+fn new_loads_between_steps_give_the_answer_of_a_fresh_solve() {
+    let options = ContactOptions::default();
+    let mut model = scene(0.1);
+    model.step(1.0, &options).unwrap();
+    model.clear_loads();
+    model.add_pressure(TAG_LOAD, 2.5e7).unwrap();
+    let report = model.step(1.0, &options).unwrap();
+    assert_eq!(
+        report.info.factorizations, 0,
+        "the stiffness did not change"
+    );
+    let mut fresh = scene(0.1);
+    fresh.clear_loads();
+    fresh.add_pressure(TAG_LOAD, 2.5e7).unwrap();
+    fresh.solve_contact(&options).unwrap();
+    let d = relative_difference(
+        &model.displacements().unwrap(),
+        &fresh.displacements().unwrap(),
+    );
+    assert!(d < 1e-12, "{d:e}");
+}
+
+#[test]
+fn a_reverted_step_leaves_the_results_and_the_next_step_as_before() {
+    let options = ContactOptions::default();
+    let mut model = scene(0.3);
+    model.step(0.5, &options).unwrap();
+    let after_first = bits(&model.displacements().unwrap());
+    model.step(1.0, &options).unwrap();
+    let second = bits(&model.displacements().unwrap());
+    model.revert_step().unwrap();
+    assert_eq!(bits(&model.displacements().unwrap()), after_first);
+    assert_eq!(
+        model.revert_step().unwrap_err().status(),
+        Status::InvalidState
+    );
+    model.step(1.0, &options).unwrap();
+    assert_eq!(bits(&model.displacements().unwrap()), second);
+}
+
+#[test]
+fn a_restored_contact_state_continues_bit_for_bit_in_a_new_model() {
+    let options = ContactOptions::default();
+    let mut model = scene(0.2);
+    for k in 1..=3 {
+        model.step(k as f64 / 4.0, &options).unwrap();
+    }
+    let state = model.contact_state().unwrap();
+    model.step(1.0, &options).unwrap();
+    let expected = bits(&model.displacements().unwrap());
+    let report = model.contact_report().unwrap().clone();
+
+    let mut other = scene(0.2);
+    other.set_contact_state(&state).unwrap();
+    let again = other.step(1.0, &options).unwrap();
+    assert_eq!(bits(&other.displacements().unwrap()), expected);
+    assert_eq!(again.active, report.active);
+    // In the same model too.
+    model.set_contact_state(&state).unwrap();
+    model.step(1.0, &options).unwrap();
+    assert_eq!(bits(&model.displacements().unwrap()), expected);
+}
+
+#[test]
+fn a_contact_state_of_another_mesh_or_cut_short_is_refused() {
+    let options = ContactOptions::default();
+    let mut model = scene(0.2);
+    model.step(1.0, &options).unwrap();
+    let state = model.contact_state().unwrap();
+    let mut other = TwoBlocks {
+        mesh_size: 1.0 / 16.0,
+        ..Default::default()
+    }
+    .build()
+    .unwrap()
+    .model;
+    let err = other.set_contact_state(&state).unwrap_err();
+    assert!(
+        err.message().contains("another contact mesh"),
+        "{}",
+        err.message()
+    );
+    let err = model
+        .set_contact_state(&state[..state.len() - 3])
+        .unwrap_err();
+    assert!(err.message().contains("cut short"), "{}", err.message());
+    assert_eq!(
+        scene(0.2).contact_state().unwrap_err().status(),
+        Status::InvalidState
+    );
+}
+
+#[test]
+fn a_failed_step_changes_nothing() {
+    let options = ContactOptions::default();
+    let capped = ContactOptions {
+        max_iterations: 1,
+        ..options
+    };
+    let run = |fail: bool| {
+        let mut model = scene(0.1);
+        model.step(0.5, &options).unwrap();
+        if fail {
+            // From the state of step 1, unloading needs more than one
+            // iteration: capped, the step fails.
+            let err = model.step(-0.5, &capped);
+            assert!(err.is_err(), "the capped step must fail");
+        }
+        let kept = bits(&model.displacements().unwrap());
+        model.step(1.0, &options).unwrap();
+        (kept, bits(&model.displacements().unwrap()))
+    };
+    let (kept, with_failure) = run(true);
+    let (first, without) = run(false);
+    assert_eq!(kept, first, "the results of step 1 stay");
+    assert_eq!(
+        with_failure, without,
+        "the next step is as if nothing failed"
+    );
+}
