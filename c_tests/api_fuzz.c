@@ -7,11 +7,13 @@
  * Each case is a sequence of calls generated from (seed, case number) alone:
  * either a valid scene built here (a unit square clamped and pulled, the
  * seed's two blocks in contact, a clockwise mesh, a user-made contact mesh,
- * a Gmsh file, the literal-test cycle) mutated (wrong indices, counts,
+ * a Gmsh file, the literal-test cycle; boundary edges set at once or one
+ * group at a time, threads set anywhere) mutated (wrong indices, counts,
  * NULLs, short buffers, NaN/Inf/denormal/huge values, wrong enums, index
- * base, calls inserted, deleted, duplicated, reordered), or a fully random
- * sequence of any entry points. Every call is checked against the header's
- * promises:
+ * base, calls inserted, deleted, duplicated, reordered, a group of edges
+ * added twice or late, threads set to 1/2/0/negative around the solves),
+ * or a fully random sequence of any entry points. Every call is checked
+ * against the header's promises:
  *   - output buffers are allocated with canaries before and after; nothing
  *     may be written beyond the declared length, nor at all by a failed
  *     call (except the documented truncation of messages);
@@ -25,11 +27,20 @@
  *     a batch that dies is bisected down to the case);
  *   - bit-identical replay: the case is run again on a fresh model without
  *     the calls that failed, and every output of every OK call must be
- *     identical (a failed call must leave the model as it was);
- *   - a few semantic oracles: exact solutions of the pristine scenes,
- *     global equilibrium of the reactions, loads on tags that no longer
- *     exist, conflicting prescribed values, results that vanish without a
- *     change of the problem.
+ *     identical (a failed call must leave the model as it was; the
+ *     tfem_set_threads calls are replayed too, so like is compared with
+ *     like: results may differ in round-off between thread counts only);
+ *   - semantic oracles, against a shadow model of what the case declared:
+ *     exact solutions of the pristine scenes, global equilibrium of the
+ *     reactions, boundary edges that leave a load or a contact pair without
+ *     edges or give an edge a tag it has (must be refused), conflicting
+ *     prescribed values (must be refused), results that vanish or change
+ *     without a solve or a change of the problem, contact forces summing to
+ *     zero per pair and balancing loads and reactions per body, the
+ *     smallest contact gap against the report's penetration, the contact
+ *     mesh before a solve against the contact elements after it, apexes,
+ *     pair indices and bodies, the external work against sum f.u, the
+ *     thread count set. A summary line counts the oracle checks made.
  * --replay-case K reruns one case verbosely and prints it as a C program
  * (a reproducer a developer can paste); --minimize first shrinks it to the
  * fewest calls that still show the violation.
@@ -96,6 +107,12 @@ enum {
   V_DOUBLE_FIX,     /* a DOF prescribed twice with different values: OK */
   V_RESULTS_LOST,   /* results vanished without a change of the problem */
   V_MATRIX_DROPPED, /* a failed solve dropped the matrix, kept the results */
+  V_DOUBLE_EDGE,    /* an edge given a tag it already has: OK */
+  V_RESULTS_CHANGED,/* displacements or matrix changed without a solve or a change */
+  V_CONTACT,        /* contact forces, gaps, mesh, apexes, pairs: oracles */
+  V_WORK,           /* external work differs from sum f.u */
+  V_THREADS,        /* tfem_set_threads / tfem_get_threads not as documented */
+  V_NULL_ARG,       /* NULL pointer handling not as documented */
   V_OTHER,          /* other contract checks (sizes, structure, sanity) */
   NV
 };
@@ -105,7 +122,8 @@ static const char *const V_NAME[NV] = {
     "write_on_fail",  "state_change",  "nondeterminism", "stderr",        "long_message",
     "empty_message",  "internal",      "bad_status",    "thread_slot",    "last_error_api",
     "oracle",         "dropped_load",  "equilibrium",   "double_fix",     "results_lost",
-    "matrix_dropped", "other",
+    "matrix_dropped", "double_edge",   "results_changed", "contact",      "external_work",
+    "threads",        "null_pointer",  "other",
 };
 
 static const char *const V_DESC[NV] = {
@@ -130,8 +148,31 @@ static const char *const V_DESC[NV] = {
     "a DOF prescribed twice with different values is accepted silently",
     "results vanished without a change of the problem",
     "a failed solve dropped the system matrix but kept the results",
+    "an edge given again with a tag it already has is accepted (its loads would count twice)",
+    "displacements or system matrix changed without a successful solve or a change of the problem",
+    "contact oracle: pair or body balance of the contact forces, gaps vs penetration, mesh, apexes, pairs",
+    "tfem_get_external_work differs from the sum of f.u over the loads known here",
+    "tfem_set_threads / tfem_get_threads not as documented",
+    "NULL pointer: OK with a required one, or refused where the header allows NULL",
     "other contract check",
 };
+
+/* Oracles checked (not vacuous): counted when they could conclude. */
+enum {
+  O_PAIR_SUM,      /* contact forces of a pair sum to zero */
+  O_BODY_BALANCE,  /* contact forces + loads + reactions on a body */
+  O_GAP_PEN,       /* smallest gap = -max_penetration */
+  O_WORK,          /* external work = sum f.u */
+  O_MESH_EQ,       /* contact mesh before = contact elements after */
+  O_APEX,          /* apexes are element nodes */
+  O_THREADS,       /* tfem_get_threads = the n set */
+  O_DISP_KEPT,     /* displacements and system matrix bit-identical while kept */
+  O_EDGES_REFUSED, /* boundary edges refused as the header requires */
+  O_FIX_REFUSED,   /* a different value for a prescribed DOF refused */
+  NO
+};
+static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetration", "work", "mesh_eq",
+                                       "apex", "threads", "results_kept", "edges_refused", "fix_refused"};
 
 /* Messages name the item and say why; what must not happen is an
  * unbounded one (a denormal printed in full, a whole history, a parser
@@ -262,6 +303,17 @@ enum {
   F_GET_CONTACT_PRESSURE,
   F_GET_CONTACT_ELEMENTS,
   F_GET_CONTACT_REPORT,
+  F_ADD_BOUNDARY_EDGES,
+  F_GET_EXTERNAL_WORK,
+  F_GET_CONTACT_FORCES,
+  F_GET_CONTACT_GAPS,
+  F_GET_CONTACT_MESH_SIZE,
+  F_GET_CONTACT_MESH,
+  F_GET_CONTACT_ELEMENT_PAIRS,
+  F_GET_CONTACT_ELEMENT_APEXES,
+  F_GET_CONTACT_PAIR_BODIES,
+  F_SET_THREADS,
+  F_GET_THREADS,
   F_DESTROY_NULL, /* tfem_destroy(NULL) */
   F_RECREATE,     /* tfem_destroy(m); m = tfem_create() */
   NF
@@ -282,7 +334,7 @@ static size_t ksize(int k) {
 }
 
 /* Required lengths of output buffers. */
-enum { R_SCALAR, R_2NN, R_3NT, R_NT, R_NC, R_3NC, R_N1, R_NNZ, R_N, R_MSG, R_WARN, R_36, R_9 };
+enum { R_SCALAR, R_2NN, R_3NT, R_NT, R_NC, R_3NC, R_N1, R_NNZ, R_N, R_MSG, R_WARN, R_36, R_9, R_NN, R_CM, R_3CM };
 
 #define MAXI 6
 #define MAXD 4
@@ -302,7 +354,8 @@ typedef struct {
 
 /* int roles: c count, B index base, f gmsh file, n node, t tag, b body,
  *   P plane, M tempering mode, O ordering, x 0/1 flag, C component,
- *   L law, T inversion test, m max iterations, w warning index
+ *   L law, T inversion test, m max iterations, w warning index,
+ *   q contact pair index, h threads
  * double roles: E young, p poisson, J jmin, K kappa, v tempering value,
  *   u displacement, f force, G contact modulus, l lambda */
 static const fndesc FN[NF] = {
@@ -345,6 +398,17 @@ static const fndesc FN[NF] = {
     [F_GET_CONTACT_PRESSURE] = {"tfem_get_contact_pressure", 1, "", "", "", "d", {R_NC}, 0},
     [F_GET_CONTACT_ELEMENTS] = {"tfem_get_contact_elements", 1, "", "", "", "i", {R_3NC}, 0},
     [F_GET_CONTACT_REPORT] = {"tfem_get_contact_report", 1, "", "", "", "R", {R_SCALAR}, 1},
+    [F_ADD_BOUNDARY_EDGES] = {"tfem_add_boundary_edges", 1, "c", "", "nt", "", {0}, 0},
+    [F_GET_EXTERNAL_WORK] = {"tfem_get_external_work", 1, "", "", "", "d", {R_SCALAR}, 1},
+    [F_GET_CONTACT_FORCES] = {"tfem_get_contact_forces", 1, "", "", "", "d", {R_2NN}, 0},
+    [F_GET_CONTACT_GAPS] = {"tfem_get_contact_gaps", 1, "", "", "", "d", {R_NN}, 0},
+    [F_GET_CONTACT_MESH_SIZE] = {"tfem_get_contact_mesh_size", 1, "", "", "", "i", {R_SCALAR}, 1},
+    [F_GET_CONTACT_MESH] = {"tfem_get_contact_mesh", 1, "", "", "", "i", {R_3CM}, 0},
+    [F_GET_CONTACT_ELEMENT_PAIRS] = {"tfem_get_contact_element_pairs", 1, "", "", "", "i", {R_CM}, 0},
+    [F_GET_CONTACT_ELEMENT_APEXES] = {"tfem_get_contact_element_apexes", 1, "", "", "", "i", {R_CM}, 0},
+    [F_GET_CONTACT_PAIR_BODIES] = {"tfem_get_contact_pair_bodies", 1, "q", "", "", "ii", {R_SCALAR, R_SCALAR}, 1},
+    [F_SET_THREADS] = {"tfem_set_threads", 1, "h", "", "", "", {0}, 0},
+    [F_GET_THREADS] = {"tfem_get_threads", 1, "", "", "", "i", {R_SCALAR}, 1},
     [F_DESTROY_NULL] = {"tfem_destroy(NULL)", 0, "", "", "", "", {0}, 0},
     [F_RECREATE] = {"tfem_destroy+tfem_create", 0, "", "", "", "", {0}, 0},
 };
@@ -367,10 +431,20 @@ static int out_kind(int f, int j) {
 /* Functions whose failure may write (documented truncation of messages). */
 static int writes_on_failure(int f) { return f == F_LAST_ERROR || f == F_GET_WARNING; }
 
+/* Output pointers the header allows to be NULL ("may be NULL"). */
+static int out_nullable(int f, int j) {
+  switch (f) {
+  case F_SOLVE: case F_GET_SIZES: case F_GET_MATRIX_SIZE: case F_ADD_CONTACT_PAIR:
+  case F_ADD_CONTACT_PAIR_WITH_MESH: case F_SOLVE_CONTACT: case F_GET_CONTACT_PAIR_BODIES:
+    return 1;
+  default: (void)j; return 0;
+  }
+}
+
 /* Does a successful call of f change the problem (and so discard results)? */
 static int changes_problem(int f) {
   switch (f) {
-  case F_SET_MESH: case F_LOAD_GMSH: case F_SET_BOUNDARY_EDGES: case F_SET_MATERIAL:
+  case F_SET_MESH: case F_LOAD_GMSH: case F_SET_BOUNDARY_EDGES: case F_ADD_BOUNDARY_EDGES: case F_SET_MATERIAL:
   case F_SET_TEMPERING: case F_FIX: case F_FIX_EDGES: case F_ADD_PRESSURE:
   case F_ADD_TRACTION: case F_ADD_NODAL_FORCE: case F_SET_BODY_FORCE: case F_CLEAR_LOADS:
   case F_ADD_CONTACT_PAIR: case F_ADD_CONTACT_PAIR_WITH_MESH:
@@ -851,11 +925,17 @@ static int plausible_int(rng_t *r, char role, const ctx_t *cx) {
   case 'f': return chance(r, 0.6) ? G_VALID : rint_(r, NGMSH);
   case 'm': return chance(r, 0.8) ? 50 : rrange(r, 1, 5);
   case 'w': return rint_(r, 3);
+  case 'q': return chance(r, 0.8) ? 0 : rrange(r, -1, 2);
+  case 'h': return (int[]){0, 1, 2, 1}[rint_(r, 4)];
   default: return rint_(r, enum_max(role) + 1);
   }
 }
 
 static int wild_int(rng_t *r, char role, int v, const ctx_t *cx) {
+  /* Threads: negative, or a few more than the cores. (Not INT_MAX: the
+   * library would start threads until the system refuses, for minutes;
+   * see c_tests/README.md.) */
+  if (role == 'h') return (int[]){-1, INT_MIN, -7, 3, 8, 0}[rint_(r, 6)];
   switch (rint_(r, 8)) {
   case 0: return -1;
   case 1: return INT_MIN;
@@ -881,7 +961,7 @@ static void fix_arrays(rng_t *r, call_t *c, const ctx_t *cx) {
     need[1] = c->iv[1] >= 0 ? 3 * c->iv[1] : -1;
     need[2] = c->iv[1] >= 0 ? c->iv[1] : -1;
     break;
-  case F_SET_BOUNDARY_EDGES:
+  case F_SET_BOUNDARY_EDGES: case F_ADD_BOUNDARY_EDGES:
     need[0] = c->iv[0] >= 0 ? 2 * c->iv[0] : -1;
     need[1] = c->iv[0] >= 0 ? c->iv[0] : -1;
     break;
@@ -931,6 +1011,52 @@ static void edges_call(case_t *cs, const mesh_t *m, int base) {
   for (int k = 0; k < 2 * m->ne; ++k) ((int *)c->in[0].p)[k] = m->edge[k] + base;
   in_set(c, 1, m->tag, m->ne, sizeof(int));
 }
+/* One group of boundary edges (those tagged `tag`), given the tag `as_tag`,
+ * through `fn` (tfem_set_boundary_edges or tfem_add_boundary_edges). */
+static call_t *group_call(case_t *cs, const mesh_t *m, int base, int fn, int tag, int as_tag) {
+  call_t *c = add_call(cs, fn);
+  int n = 0;
+  for (int e = 0; e < m->ne; ++e) n += m->tag[e] == tag;
+  c->iv[0] = n;
+  in_set(c, 0, NULL, 2 * n, sizeof(int));
+  in_set(c, 1, NULL, n, sizeof(int));
+  for (int e = 0, k = 0; e < m->ne; ++e)
+    if (m->tag[e] == tag) {
+      ((int *)c->in[0].p)[2 * k] = m->edge[2 * e] + base;
+      ((int *)c->in[0].p)[2 * k + 1] = m->edge[2 * e + 1] + base;
+      ((int *)c->in[1].p)[k++] = as_tag;
+    }
+  return c;
+}
+/* The distinct tags of a mesh's edges, ascending (at most 16). */
+static int mesh_tags(const mesh_t *m, int *tags) {
+  int n = 0;
+  for (int e = 0; e < m->ne; ++e) {
+    int k = 0;
+    while (k < n && tags[k] != m->tag[e]) ++k;
+    if (k == n && n < 16) tags[n++] = m->tag[e];
+  }
+  for (int i = 1; i < n; ++i)
+    for (int j = i; j > 0 && tags[j - 1] > tags[j]; --j) {
+      int t = tags[j];
+      tags[j] = tags[j - 1];
+      tags[j - 1] = t;
+    }
+  return n;
+}
+/* The boundary edges of a scene: one tfem_set_boundary_edges (60%), or one
+ * group (tag) at a time: tfem_set_boundary_edges with the first group and
+ * tfem_add_boundary_edges for each other (20%), or tfem_add_boundary_edges
+ * only (20%). */
+static void edges_calls(rng_t *r, case_t *cs, const mesh_t *m, int base) {
+  int v = rint_(r, 10), tags[16], nt = mesh_tags(m, tags);
+  if (v < 6 || nt == 0) {
+    edges_call(cs, m, base);
+    return;
+  }
+  for (int k = 0; k < nt; ++k)
+    group_call(cs, m, base, k == 0 && v < 8 ? F_SET_BOUNDARY_EDGES : F_ADD_BOUNDARY_EDGES, tags[k], tags[k]);
+}
 static call_t *call_i(case_t *cs, int fn, int a, int b) {
   call_t *c = add_call(cs, fn);
   c->iv[0] = a;
@@ -969,11 +1095,22 @@ static void result_getters(rng_t *r, case_t *cs, int contact) {
   if (chance(r, 0.3)) add_call(cs, F_GET_JACOBIANS);
   if (chance(r, 0.5)) add_call(cs, F_GET_MATRIX_SIZE);
   if (chance(r, 0.5)) add_call(cs, F_GET_MATRIX);
+  if (chance(r, 0.4)) add_call(cs, F_GET_EXTERNAL_WORK);
+  if (chance(r, 0.15)) add_call(cs, F_GET_THREADS);
   if (contact) {
     add_call(cs, F_GET_CONTACT_ACTIVE);
     if (chance(r, 0.7)) add_call(cs, F_GET_CONTACT_PRESSURE);
     if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_ELEMENTS);
     if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_REPORT);
+    if (chance(r, 0.6)) add_call(cs, F_GET_CONTACT_FORCES);
+    if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_GAPS);
+    if (chance(r, 0.25)) add_call(cs, F_GET_CONTACT_MESH_SIZE);
+    if (chance(r, 0.25)) add_call(cs, F_GET_CONTACT_MESH);
+    if (chance(r, 0.2)) add_call(cs, F_GET_CONTACT_ELEMENT_PAIRS);
+    if (chance(r, 0.2)) add_call(cs, F_GET_CONTACT_ELEMENT_APEXES);
+    if (chance(r, 0.2)) call_i(cs, F_GET_CONTACT_PAIR_BODIES, 0, 0);
+  } else if (chance(r, 0.1)) {
+    add_call(cs, chance(r, 0.5) ? F_GET_CONTACT_MESH_SIZE : F_GET_CONTACT_FORCES);
   }
   if (chance(r, 0.3)) add_call(cs, F_WARNING_COUNT);
   if (chance(r, 0.2)) call_i(cs, F_GET_WARNING, 0, 0)->out[0] = (out_spec){LS_FIXED, 512, 0, 0, 0, 0};
@@ -1011,7 +1148,7 @@ static void scene_square(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m, int clockwi
   free(be);
   *cx = (ctx_t){m->nn, m->nt, base, {1, 2, 3, 4}, 4, {body}, 1, m};
   set_mesh_call(cs, m, base);
-  edges_call(cs, m, base);
+  edges_calls(r, cs, m, base);
   material(cs, body, 1000.0, 0.25, TFEM_PLANE_MODE_STRESS);
   int temper = clockwise ? 0 : rint_(r, 3);
   if (temper == 1) call_i(cs, F_SET_TEMPERING, TFEM_TEMPERING_MODE_LAMBDA, 0)->dv[0] = 1000.0;
@@ -1081,7 +1218,7 @@ static void scene_two_blocks(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m, int var
   int base = rint_(r, 2);
   *cx = (ctx_t){m->nn, m->nt, base, {1, 2, 3, 4}, 4, {1, 2}, 2, m};
   set_mesh_call(cs, m, base);
-  edges_call(cs, m, base);
+  edges_calls(r, cs, m, base);
   int plane = chance(r, 0.8) ? TFEM_PLANE_MODE_STRAIN : TFEM_PLANE_MODE_STRESS;
   material(cs, 1, 1e10, 0.3, plane);
   material(cs, 2, 1e11, 0.3, plane);
@@ -1114,6 +1251,14 @@ static void scene_two_blocks(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m, int var
     }
   } else {
     call_i(cs, F_ADD_CONTACT_PAIR, 2, 3);
+  }
+  if (chance(r, 0.5)) {
+    /* the contact mesh B, before any solve */
+    if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_MESH_SIZE);
+    add_call(cs, F_GET_CONTACT_MESH);
+    if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_ELEMENT_PAIRS);
+    if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_ELEMENT_APEXES);
+    if (chance(r, 0.5)) call_i(cs, F_GET_CONTACT_PAIR_BODIES, 0, 0);
   }
   if (chance(r, 0.2)) call_i(cs, F_SET_ORDERING, rint_(r, 3), rint_(r, 2));
   if (literal) {
@@ -1152,7 +1297,7 @@ static void scene_degenerate(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
   int base = rint_(r, 2);
   *cx = (ctx_t){m->nn, m->nt, base, {1, 2, 3, 4}, 4, {1}, 1, m};
   set_mesh_call(cs, m, base);
-  edges_call(cs, m, base);
+  edges_calls(r, cs, m, base);
   material(cs, 1, 1000.0, 0.3, rint_(r, 2));
   int mode = rint_(r, 4);
   call_i(cs, F_SET_TEMPERING, mode, 0)->dv[0] = mode == 1 ? 1.0 : mode == 2 ? (chance(r, 0.5) ? 1e-300 : 1e-3) : 0.0;
@@ -1212,7 +1357,11 @@ static void random_call(rng_t *r, case_t *cs, const ctx_t *cx, double wild, int 
       [F_ELEMENT_STIFFNESS] = 4, [F_LAPLACIAN_STIFFNESS] = 3, [F_ADD_CONTACT_PAIR] = 3,
       [F_ADD_CONTACT_PAIR_WITH_MESH] = 2, [F_CONTACT_OPTIONS_DEFAULT] = 2, [F_SOLVE_CONTACT] = 5,
       [F_GET_CONTACT_ACTIVE] = 3, [F_GET_CONTACT_PRESSURE] = 3, [F_GET_CONTACT_ELEMENTS] = 2,
-      [F_GET_CONTACT_REPORT] = 2, [F_DESTROY_NULL] = 1, [F_RECREATE] = 1};
+      [F_GET_CONTACT_REPORT] = 2, [F_ADD_BOUNDARY_EDGES] = 3, [F_GET_EXTERNAL_WORK] = 3,
+      [F_GET_CONTACT_FORCES] = 3, [F_GET_CONTACT_GAPS] = 3, [F_GET_CONTACT_MESH_SIZE] = 2,
+      [F_GET_CONTACT_MESH] = 2, [F_GET_CONTACT_ELEMENT_PAIRS] = 2, [F_GET_CONTACT_ELEMENT_APEXES] = 2,
+      [F_GET_CONTACT_PAIR_BODIES] = 2, [F_SET_THREADS] = 2, [F_GET_THREADS] = 2,
+      [F_DESTROY_NULL] = 1, [F_RECREATE] = 1};
   int total = 0;
   for (int f = 0; f < NF; ++f) total += weight[f];
   int x = rint_(r, total), fn = 0;
@@ -1284,6 +1433,42 @@ static void random_call(rng_t *r, case_t *cs, const ctx_t *cx, double wild, int 
       }
     }
     if (ne == 0 || chance(r, 0.1)) {
+      en[2 * ne] = pick_node(r, cx);
+      en[2 * ne + 1] = pick_node(r, cx);
+      tg[ne++] = pick_tag(r, cx);
+    }
+    c->iv[0] = ne;
+    in_set(c, 0, en, 2 * ne, sizeof(int));
+    in_set(c, 1, tg, ne, sizeof(int));
+    free(en);
+    free(tg);
+    break;
+  }
+  case F_ADD_BOUNDARY_EDGES: {
+    /* One group of the scene's edges (a tag), most often as it is (a
+     * group given again), or under another tag, sometimes with an
+     * interior side (it cannot carry a load) or random nodes. */
+    const mesh_t *sm = cx->mesh;
+    int ne = 0, cap = (sm ? sm->ne : 0) + 4;
+    int *en = xmalloc(sizeof(int) * 2 * (size_t)cap), *tg = xmalloc(sizeof(int) * (size_t)cap);
+    if (sm && sm->ne) {
+      int tag = sm->tag[rint_(r, sm->ne)];
+      int as = chance(r, 0.6) ? tag : chance(r, 0.5) ? 5 : pick_tag(r, cx);
+      double keep = chance(r, 0.7) ? 1.0 : 0.6;
+      for (int e = 0; e < sm->ne; ++e)
+        if (sm->tag[e] == tag && chance(r, keep)) {
+          en[2 * ne] = sm->edge[2 * e] + cx->base;
+          en[2 * ne + 1] = sm->edge[2 * e + 1] + cx->base;
+          tg[ne++] = as;
+        }
+      if (sm->nt > 1 && chance(r, 0.15)) {
+        int t = rint_(r, sm->nt), k = rint_(r, 3);
+        en[2 * ne] = sm->tri[3 * t + k] + cx->base;
+        en[2 * ne + 1] = sm->tri[3 * t + (k + 1) % 3] + cx->base;
+        tg[ne++] = as;
+      }
+    }
+    if (ne == 0 || chance(r, 0.05)) {
       en[2 * ne] = pick_node(r, cx);
       en[2 * ne + 1] = pick_node(r, cx);
       tg[ne++] = pick_tag(r, cx);
@@ -1413,8 +1598,46 @@ static void mutate_case(rng_t *r, case_t *cs, const ctx_t *cx) {
   int n_mut = rrange(r, 1, 4);
   for (int k = 0; k < n_mut && cs->n > 0; ++k) {
     int i = rint_(r, cs->n);
-    switch (rint_(r, 13)) {
+    switch (rint_(r, 16)) {
     case 0: case 1: case 2: case 3: mutate_arg(r, &cs->c[i], cx); break;
+    case 13: { /* threads set (1, 2, 0 or negative) somewhere, around the solves */
+      int at = rint_(r, cs->n + 1);
+      case_t one = {0};
+      call_t *c = add_call(&one, F_SET_THREADS);
+      c->iv[0] = (int[]){1, 2, 0, -1, INT_MIN, 1, 2, 3}[rint_(r, 8)];
+      c->mutated = 1;
+      case_insert_copy(cs, at, c);
+      if (chance(r, 0.5)) {
+        case_t two = {0};
+        add_call(&two, F_GET_THREADS)->mutated = 1;
+        case_insert_copy(cs, at + 1, &two.c[0]);
+        case_free(&two);
+      }
+      case_free(&one);
+      break;
+    }
+    case 14: { /* a group of boundary edges added twice */
+      int adds[64], na = 0;
+      for (int k2 = 0; k2 < cs->n && na < 64; ++k2)
+        if (cs->c[k2].fn == F_ADD_BOUNDARY_EDGES) adds[na++] = k2;
+      if (na) {
+        int src = adds[rint_(r, na)];
+        int at = rrange(r, src + 1, cs->n);
+        case_insert_copy(cs, at, &cs->c[src]);
+        cs->c[at].mutated = 1;
+      } else if (cx->mesh && cx->mesh->ne) {
+        int tags[16], nt = mesh_tags(cx->mesh, tags), tag = tags[rint_(r, nt)];
+        case_t one = {0};
+        call_t *c = group_call(&one, cx->mesh, cx->base, F_ADD_BOUNDARY_EDGES, tag, tag);
+        c->mutated = 1;
+        case_insert_copy(cs, rint_(r, cs->n + 1), c);
+        case_free(&one);
+      }
+      break;
+    }
+    case 15: /* a group added late: again, under another tag, or with an interior side */
+      random_call(r, cs, cx, 0.0, rrange(r, cs->n / 2, cs->n), F_ADD_BOUNDARY_EDGES);
+      break;
     case 11: case 12: { /* an extreme magnitude for a physical value */
       static const double ext[] = {1e300, DBL_MAX, 1e200, 1e155, 1e-300, 4.9406564584124654e-324, 1e-200, 1e30};
       int tries = 0;
@@ -1493,6 +1716,22 @@ static void gen_case(uint64_t seed, long index, case_t *cs, mesh_t *m) {
     else if (s < 78) { cs->kind = "literal_cycle"; scene_two_blocks(&r, cs, &cx, m, 2); }
     else if (s < 90) { cs->kind = "degenerate"; scene_degenerate(&r, cs, &cx, m); }
     else { cs->kind = "gmsh"; scene_gmsh(&r, cs, &cx); }
+    if (chance(&r, 0.15)) {
+      /* results kept, bit for bit, by tfem_set_threads and tfem_set_ordering */
+      if (chance(&r, 0.6)) call_i(cs, F_SET_THREADS, (int[]){1, 2, 0}[rint_(&r, 3)], 0);
+      else call_i(cs, F_SET_ORDERING, rint_(&r, 3), rint_(&r, 2));
+      add_call(cs, F_GET_DISPLACEMENTS);
+      if (chance(&r, 0.5)) add_call(cs, F_GET_MATRIX);
+      if (chance(&r, 0.5)) add_call(cs, F_GET_REACTIONS);
+    }
+    if (chance(&r, 0.25)) {
+      /* the model's own pool (1 or 2 threads) or the process-wide one, set
+       * anywhere (results do not depend on it beyond round-off) */
+      case_t one = {0};
+      call_i(&one, F_SET_THREADS, (int[]){1, 2, 0}[rint_(&r, 3)], 0);
+      case_insert_copy(cs, rint_(&r, cs->n + 1), &one.c[0]);
+      case_free(&one);
+    }
     if (!chance(&r, 0.1)) mutate_case(&r, cs, &cx);
     else cs->pristine = 1;
   } else {
@@ -1503,7 +1742,7 @@ static void gen_case(uint64_t seed, long index, case_t *cs, mesh_t *m) {
       random_mesh(&r, m, nb);
       cx = (ctx_t){m->nn, m->nt, rint_(&r, 2), {1, 2, 3, 4}, 4, {1, 2}, nb, m};
       set_mesh_call(cs, m, cx.base);
-      if (chance(&r, 0.8)) edges_call(cs, m, cx.base);
+      if (chance(&r, 0.8)) edges_calls(&r, cs, m, cx.base);
       for (int b = 1; b <= nb; ++b)
         if (chance(&r, 0.8)) material(cs, b, plausible_double(&r, 'E'), plausible_double(&r, 'p'), rint_(&r, 2));
     } else {
@@ -1526,6 +1765,7 @@ typedef struct {
   long calls;
   long stderr_bytes;
   long status_flips; /* replay: a call OK originally failed (part of state_change) */
+  long oracles[NO];
 } case_result;
 
 typedef struct {
@@ -1609,10 +1849,34 @@ typedef struct {
   double *presc; /* 2 per node, NAN: free */
   int presc_nonempty;
   int results; /* 0 none, 1 plain solve, 2 contact solve */
+  int contact_test; /* inversion test of the last contact solve */
   int matrix_dropped;
   double relres, cond;
+  /* contact pairs declared since the mesh (tags; 16 at most kept) */
+  int npairs;
+  int pair_tag[16][2];
+  /* The following survive a new mesh (they are the model's). */
+  int threads;     /* set by tfem_set_threads (0: the process-wide pool) */
+  long prob_gen;   /* changes of the problem */
+  long sol_gen;    /* changes of the results (solves, changes of the problem) */
+  /* snapshots: the contact mesh B, the contact elements of a contact solve
+   * (both in the index base, with the problem generation they belong to),
+   * and the displacements (a hash, with the results generation) */
+  int *cmesh, *celem;
+  long ncmesh, ncelem, cmesh_gen, celem_gen;
+  int cmesh_idx, celem_idx;
+  uint64_t disp_hash, mat_hash;
+  long disp_gen, mat_gen;
+  int disp_idx, mat_idx;
 } shadow_t;
 
+static void sh_init(shadow_t *s) {
+  memset(s, 0, sizeof *s);
+  s->relres = NAN;
+  s->cmesh_gen = s->celem_gen = s->disp_gen = s->mat_gen = -1;
+}
+/* Forgets the mesh and everything on it; keeps what belongs to the model
+ * (threads, generations: a new mesh is a new problem). */
 static void sh_clear_mesh(shadow_t *s) {
   free(s->xy);
   free(s->tri);
@@ -1623,8 +1887,14 @@ static void sh_clear_mesh(shadow_t *s) {
   free(s->load);
   free(s->nforce);
   free(s->presc);
-  memset(s, 0, sizeof *s);
-  s->relres = NAN;
+  free(s->cmesh);
+  free(s->celem);
+  int threads = s->threads;
+  long pg = s->prob_gen, sg = s->sol_gen;
+  sh_init(s);
+  s->threads = threads;
+  s->prob_gen = pg + 1;
+  s->sol_gen = sg + 1;
 }
 /* The header's orientation rule, written independently of the library:
  * triangles joined by an edge shared by exactly two triangles of one body
@@ -1781,10 +2051,13 @@ static int sh_normal(const shadow_t *s, int p, int q, double n[2]) {
   n[1] = interior_on_left ? -left[1] : left[1];
   return 1;
 }
-/* Total external force (x, y) on the nodes that carry unknowns or are
- * prescribed, as the reactions must balance it; 0 if it cannot be known. */
-static int sh_total_force(const shadow_t *s, double tot[2], double *mag) {
-  double *f = xcalloc(2 * (size_t)s->nn, sizeof(double));
+/* The external nodal forces f (2 per node, zeroed here) as the library
+ * assembles them (pressures and tractions split equally between an edge's
+ * nodes, point forces, body forces split equally between the corners of
+ * each triangle of positive J); 0 if they cannot be known (a pressure on
+ * an edge without an outward normal) or are not finite. */
+static int sh_nodal_forces(const shadow_t *s, double *f) {
+  memset(f, 0, sizeof(double) * 2 * (size_t)s->nn);
   int ok = 1;
   for (int l = 0; l < s->nl && ok; ++l)
     for (int e = 0; e < s->ne; ++e) {
@@ -1822,6 +2095,14 @@ static int sh_total_force(const shadow_t *s, double tot[2], double *mag) {
         f[2 * v[k] + 1] += s->bf[b][1] * area / 3.0;
       }
     }
+  for (int g = 0; g < 2 * s->nn && ok; ++g) ok = isfinite(f[g]);
+  return ok;
+}
+/* Total external force (x, y) on the nodes that carry unknowns or are
+ * prescribed, as the reactions must balance it; 0 if it cannot be known. */
+static int sh_total_force(const shadow_t *s, double tot[2], double *mag) {
+  double *f = xmalloc(sizeof(double) * 2 * (size_t)s->nn + 1);
+  int ok = sh_nodal_forces(s, f);
   tot[0] = tot[1] = *mag = 0;
   for (int g = 0; g < 2 * s->nn; ++g)
     if (s->used[g / 2] || !isnan(s->presc[g])) {
@@ -1830,6 +2111,101 @@ static int sh_total_force(const shadow_t *s, double tot[2], double *mag) {
     }
   free(f);
   return ok && isfinite(*mag);
+}
+
+/* The loads and contact pairs declared, against the shadow's current
+ * edges (tfem_set_boundary_edges / tfem_add_boundary_edges must refuse
+ * edges that leave one without): a loaded tag needs edges, each a side of
+ * exactly one triangle with a length (an outward normal); a pair's tags
+ * need edges. Returns 1 and says why when one is left without. */
+static int sh_orphan(const shadow_t *s, char *why, size_t cap) {
+  for (int l = 0; l < s->nl; ++l) {
+    int tag = s->load[l].tag, any = 0;
+    for (int e = 0; e < s->ne; ++e) {
+      if (s->tag[e] != tag) continue;
+      any = 1;
+      double n[2];
+      if (!sh_normal(s, s->edge[2 * e], s->edge[2 * e + 1], n)) {
+        snprintf(why, cap, "the %s on tag %d now acts on edge (%d, %d), interior or of zero length",
+                 s->load[l].type ? "traction" : "pressure", tag, s->edge[2 * e] + s->base, s->edge[2 * e + 1] + s->base);
+        return 1;
+      }
+    }
+    if (!any) {
+      snprintf(why, cap, "the %s on tag %d has no edge left", s->load[l].type ? "traction" : "pressure", tag);
+      return 1;
+    }
+  }
+  for (int k = 0; k < s->npairs && k < 16; ++k)
+    for (int side = 0; side < 2; ++side) {
+      int tag = s->pair_tag[k][side], any = 0;
+      for (int e = 0; e < s->ne && !any; ++e) any = s->tag[e] == tag;
+      if (!any) {
+        snprintf(why, cap, "contact pair %d (tags %d, %d) has no edge tagged %d left", k, s->pair_tag[k][0],
+                 s->pair_tag[k][1], tag);
+        return 1;
+      }
+    }
+  return 0;
+}
+
+/* The first edge (0-based nodes, either direction) given twice with one
+ * tag among edges [from, ne) of the shadow, or of [from, ne) against
+ * [0, from); -1 if none. */
+static int sh_double_edge(const shadow_t *s, int from) {
+  for (int e = from; e < s->ne; ++e) {
+    int p = s->edge[2 * e], q = s->edge[2 * e + 1];
+    int lo = p < q ? p : q, hi = p < q ? q : p;
+    for (int f = 0; f < e; ++f) {
+      int a = s->edge[2 * f], b = s->edge[2 * f + 1];
+      if (s->tag[f] == s->tag[e] && (a < b ? a : b) == lo && (a < b ? b : a) == hi) return e;
+    }
+  }
+  return -1;
+}
+
+/* The body of every node (0-based): INT_MIN unused, INT_MAX on two bodies. */
+static int *sh_node_bodies(const shadow_t *s) {
+  int *nb = xmalloc(sizeof(int) * (size_t)s->nn + 1);
+  for (int i = 0; i < s->nn; ++i) nb[i] = INT_MIN;
+  for (int t = 0; t < s->nt; ++t)
+    for (int k = 0; k < 3; ++k) {
+      int *v = &nb[s->tri[3 * t + k]];
+      if (*v == INT_MIN) *v = s->body[t];
+      else if (*v != s->body[t]) *v = INT_MAX;
+    }
+  return nb;
+}
+
+/* The contact mesh B (nodes in the index base) and the pair of each of
+ * its elements, read with extra calls; the number of elements, or -1. */
+static long fetch_contact_mesh(tfem_model *m, int **nodes, int **pairs) {
+  int n = -1;
+  *nodes = NULL;
+  if (pairs) *pairs = NULL;
+  if (tfem_get_contact_mesh_size(m, &n) != TFEM_STATUS_OK || n < 0) return -1;
+  *nodes = xmalloc(sizeof(int) * 3 * (size_t)n + 1);
+  if (tfem_get_contact_mesh(m, *nodes, 3 * (size_t)n) != TFEM_STATUS_OK) {
+    free(*nodes);
+    *nodes = NULL;
+    return -1;
+  }
+  if (pairs) {
+    *pairs = xmalloc(sizeof(int) * (size_t)n + 1);
+    if (tfem_get_contact_element_pairs(m, *pairs, (size_t)n) != TFEM_STATUS_OK) {
+      free(*nodes);
+      free(*pairs);
+      *nodes = *pairs = NULL;
+      return -1;
+    }
+  }
+  return n;
+}
+
+static uint64_t fnv64(const void *p, size_t n) {
+  uint64_t h = 1469598103934665603ULL;
+  for (size_t i = 0; i < n; ++i) h = (h ^ ((const unsigned char *)p)[i]) * 1099511628211ULL;
+  return h;
 }
 
 /* ------------------------------------------------------------------------ */
@@ -1849,6 +2225,7 @@ typedef struct {
   long calls;
   long stderr_bytes;
   long status_flips;
+  long oracles[NO];
   FILE *cfile; /* the C reproducer being written (verbose runs) */
 } runner_t;
 
@@ -1909,9 +2286,12 @@ static long required_len(runner_t *R, const call_t *c, int j) {
   case R_SCALAR: return 1;
   case R_36: return 36;
   case R_9: return 9;
-  case R_2NN: case R_3NT: case R_NT: case R_NC: case R_3NC:
+  case R_2NN: case R_3NT: case R_NT: case R_NC: case R_3NC: case R_NN:
     if (tfem_get_sizes(R->m, &nn, &nt, &nc) != TFEM_STATUS_OK) return -1;
-    return rq == R_2NN ? 2L * nn : rq == R_3NT ? 3L * nt : rq == R_NT ? nt : rq == R_NC ? nc : 3L * nc;
+    return rq == R_2NN ? 2L * nn : rq == R_3NT ? 3L * nt : rq == R_NT ? nt : rq == R_NC ? nc : rq == R_NN ? nn : 3L * nc;
+  case R_CM: case R_3CM:
+    if (tfem_get_contact_mesh_size(R->m, &nc) != TFEM_STATUS_OK) return -1;
+    return rq == R_CM ? nc : 3L * nc;
   case R_N1: case R_NNZ: case R_N:
     if (tfem_get_system_matrix_size(R->m, &n, &nnz) != TFEM_STATUS_OK) return -1;
     return rq == R_N1 ? (long)n + 1 : rq == R_NNZ ? (long)nnz : (long)n;
@@ -2026,6 +2406,200 @@ static int info_insane(const tfem_solve_info *i, char *why, size_t cap) {
 
 static const char *fn_name(int fn) { return FN[fn].name; }
 
+/* Output j was passed, long enough for everything required. */
+static int out_full(const call_t *c, int j) {
+  return !c->out[j].null_ && c->out[j].req >= 0 && c->out[j].len >= (size_t)c->out[j].req;
+}
+
+/* The round-off of sums of element forces K_e u_e - f0_e over n nodes: the
+ * terms are bounded by max |K_ij| (the system matrix of the last solve,
+ * contact elements included) times max |u| + the largest initial gap
+ * `gap` (the initial-gap loads f0 of the contact elements are of the size
+ * of K times the gap), and the forces themselves can be far smaller (a
+ * block moving rigidly by 0.0125 to close a gap, E = 1e11, loads of 1 N:
+ * sums of 1e-7; no load at all, initial-gap loads cancelling: 1e-7). -1 if
+ * it cannot be known. */
+static double roundoff_scale(tfem_model *m, int nn, double gap) {
+  int64_t n = -1, nnz = -1;
+  if (tfem_get_system_matrix_size(m, &n, &nnz) != TFEM_STATUS_OK || n < 0 || nnz < 0) return -1;
+  int64_t *cp = xmalloc(sizeof(int64_t) * (size_t)(n + 1)), *ri = xmalloc(sizeof(int64_t) * (size_t)nnz + 1);
+  int64_t *dofs = xmalloc(sizeof(int64_t) * (size_t)n + 1);
+  double *val = xmalloc(sizeof(double) * (size_t)nnz + 1), *u = xmalloc(sizeof(double) * 2 * (size_t)nn + 1);
+  double kmax = 0, umax = 0, scale = -1;
+  if (tfem_get_system_matrix(m, cp, (size_t)n + 1, ri, (size_t)nnz, val, (size_t)nnz, dofs, (size_t)n) == TFEM_STATUS_OK &&
+      tfem_get_displacements(m, u, 2 * (size_t)nn) == TFEM_STATUS_OK) {
+    for (int64_t k = 0; k < nnz; ++k) kmax = fmax(kmax, fabs(val[k]));
+    for (int g = 0; g < 2 * nn; ++g) umax = fmax(umax, fabs(u[g]));
+    scale = 32 * DBL_EPSILON * nn * kmax * (umax + gap);
+  }
+  free(cp), free(ri), free(dofs), free(val), free(u);
+  return isfinite(scale) ? scale : -1;
+}
+
+/* tfem_get_contact_forces (2 per node, after a contact solve): zero off
+ * the contact elements; the forces of a pair sum to zero (1e-9 of their
+ * magnitude; the whole interface when pairs share nodes); on each body
+ * the contact forces, the loads known here and the reactions sum to zero
+ * (1e-8 of their magnitudes; an accurate solve, nodes of one body each);
+ * both sums give or take the round-off of the element forces
+ * (roundoff_scale). Only without prescribed displacements: with them the
+ * element forces are not bounded by the loads (a displacement of 1e11
+ * prescribed gives sums of 1e4 on forces of 1e7). */
+static void oracle_contact_forces(runner_t *R, int idx, const double *fc) {
+  shadow_t *s = &R->sh;
+  int nn = s->nn, *cm, *cp;
+  long ne = fetch_contact_mesh(R->m, &cm, &cp);
+  if (ne < 0) return;
+  int zero_presc = 1;
+  for (int g2 = 0; g2 < 2 * nn; ++g2) zero_presc &= isnan(s->presc[g2]) || s->presc[g2] == 0.0;
+  double gap = 0; /* the largest initial gap: height of a contact element over its longest side */
+  for (long e = 0; e < ne; ++e) {
+    long v[3];
+    for (int k = 0; k < 3; ++k) v[k] = (long)cm[3 * e + k] - s->base;
+    if (v[0] < 0 || v[1] < 0 || v[2] < 0 || v[0] >= nn || v[1] >= nn || v[2] >= nn) continue;
+    int vi[3] = {(int)v[0], (int)v[1], (int)v[2]};
+    double L = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double *a = &s->xy[2 * vi[k]], *b = &s->xy[2 * vi[(k + 1) % 3]];
+      L = fmax(L, hypot(b[0] - a[0], b[1] - a[1]));
+    }
+    if (L > 0) gap = fmax(gap, fabs(sh_j(s->xy, vi)) / L);
+  }
+  double ro = zero_presc ? roundoff_scale(R->m, nn, gap) : -1;
+  zero_presc &= ro >= 0;
+  int *pair_of = xmalloc(sizeof(int) * (size_t)nn + 1), shared = 0, npairs = 0, bad = 0;
+  for (int v = 0; v < nn; ++v) pair_of[v] = -1;
+  for (long e = 0; e < ne && !bad; ++e) {
+    if (cp[e] < 0 || cp[e] >= 1000) bad = 1;
+    else if (cp[e] + 1 > npairs) npairs = cp[e] + 1;
+    for (int k = 0; k < 3 && !bad; ++k) {
+      long v = (long)cm[3 * e + k] - s->base;
+      if (v < 0 || v >= nn) bad = 1;
+      else if (pair_of[v] == -1) pair_of[v] = cp[e];
+      else if (pair_of[v] != cp[e]) pair_of[v] = -2, shared = 1;
+    }
+  }
+  for (int v = 0; v < nn && !bad; ++v)
+    if (pair_of[v] == -1 && (fc[2 * v] != 0.0 || fc[2 * v + 1] != 0.0)) {
+      finding(R, V_CONTACT, idx, "contact force (%g, %g) at node %d, which is in no contact element", fc[2 * v],
+              fc[2 * v + 1], v + s->base);
+      break;
+    }
+  for (int k = 0; k < (shared ? 1 : npairs) && !bad && zero_presc; ++k) {
+    double sum[2] = {0, 0}, mag = 0;
+    for (int v = 0; v < nn; ++v)
+      if (shared ? pair_of[v] != -1 : pair_of[v] == k)
+        for (int d = 0; d < 2; ++d) sum[d] += fc[2 * v + d], mag += fabs(fc[2 * v + d]);
+    R->oracles[O_PAIR_SUM] += isfinite(mag) && mag > 0 && ro < 1e-6 * mag;
+    for (int d = 0; d < 2; ++d)
+      if (isfinite(mag) && fabs(sum[d]) > 1e-9 * mag + ro) {
+        finding(R, V_CONTACT, idx, "the contact forces of %s%d sum to %c = %.6g (of magnitude %.6g): not zero",
+                shared ? "the pairs sharing nodes, from pair " : "pair ", k, d ? 'y' : 'x', sum[d], mag + ro);
+        break;
+      }
+  }
+  tfem_contact_report rep;
+  if (!bad && zero_presc && tfem_get_contact_report(R->m, &rep) == TFEM_STATUS_OK && isfinite(rep.info.relative_residual) &&
+      rep.info.relative_residual < 1e-10) {
+    double *f = xmalloc(sizeof(double) * 2 * (size_t)nn + 1), *re = xmalloc(sizeof(double) * 2 * (size_t)nn + 1);
+    int *nb = sh_node_bodies(s), one_body = 1;
+    for (int v = 0; v < nn; ++v) one_body &= nb[v] != INT_MAX;
+    if (one_body && sh_nodal_forces(s, f) && tfem_get_reactions(R->m, re, 2 * (size_t)nn) == TFEM_STATUS_OK) {
+      int bodies[16], nbo = 0;
+      for (int t = 0; t < s->nt; ++t) {
+        int k = 0;
+        while (k < nbo && bodies[k] != s->body[t]) ++k;
+        if (k == nbo && nbo < 16) bodies[nbo++] = s->body[t];
+      }
+      for (int k = 0; k < nbo; ++k) {
+        double sum[2] = {0, 0}, mag = 0;
+        for (int v = 0; v < nn; ++v)
+          if (nb[v] == bodies[k])
+            for (int d = 0; d < 2; ++d) {
+              sum[d] += f[2 * v + d] + re[2 * v + d] + fc[2 * v + d];
+              mag += fabs(f[2 * v + d]) + fabs(re[2 * v + d]) + fabs(fc[2 * v + d]);
+            }
+        R->oracles[O_BODY_BALANCE] += isfinite(mag) && mag < 1e200 && mag > 0 && ro < 1e-6 * mag;
+        for (int d = 0; d < 2; ++d)
+          if (isfinite(mag) && mag < 1e200 && fabs(sum[d]) > 1e-8 * mag + ro) {
+            finding(R, V_CONTACT, idx,
+                    "on body %d, contact forces + loads + reactions sum to %c = %.6g (of magnitude %.6g, round-off "
+                    "%.3g; relative residual %.3g): not balanced",
+                    bodies[k], d ? 'y' : 'x', sum[d], mag, ro, rep.info.relative_residual);
+            k = nbo;
+            break;
+          }
+      }
+    }
+    free(f);
+    free(re);
+    free(nb);
+  }
+  free(pair_of);
+  free(cm);
+  free(cp);
+}
+
+/* tfem_get_contact_gaps (per node, after a contact solve): zero off the
+ * contact elements; where the report gives a penetration, the smallest
+ * gap is minus it (1e-14 relative: the library computes both from the
+ * elements' openings; equal to the bit so far, 8 ulps apart once under the
+ * literal test at 6e197). Only with the
+ * linearised inversion test: the literal one leaves elements inactive
+ * whose linearised opening is negative (its second-order term), so the
+ * smallest gap can be below minus the penetration of the active ones
+ * (seen: -6e197 against 1e197 with 1e200 prescribed). */
+static void oracle_gaps(runner_t *R, int idx, const double *gap) {
+  shadow_t *s = &R->sh;
+  int *cm;
+  long ne = fetch_contact_mesh(R->m, &cm, NULL);
+  if (ne < 0) return;
+  char *in = xcalloc((size_t)s->nn + 1, 1);
+  int bad = 0;
+  for (long e = 0; e < 3 * ne && !bad; ++e) {
+    long v = (long)cm[e] - s->base;
+    if (v < 0 || v >= s->nn) bad = 1;
+    else in[v] = 1;
+  }
+  double mn = INFINITY;
+  for (int v = 0; v < s->nn && !bad; ++v) {
+    if (!in[v] && gap[v] != 0.0) {
+      finding(R, V_CONTACT, idx, "gap %g at node %d, which is in no contact element", gap[v], v + s->base);
+      bad = 1;
+    }
+    if (gap[v] < mn) mn = gap[v];
+  }
+  tfem_contact_report rep;
+  int checked = !bad && s->contact_test == TFEM_INVERSION_TEST_LINEARISED &&
+                tfem_get_contact_report(R->m, &rep) == TFEM_STATUS_OK && rep.max_penetration > 0;
+  R->oracles[O_GAP_PEN] += checked;
+  if (checked && !(fabs(mn + rep.max_penetration) <= 1e-14 * rep.max_penetration))
+    finding(R, V_CONTACT, idx, "smallest gap %.17g, but the report's max_penetration is %.17g (relative difference %.3g)",
+            mn, rep.max_penetration, fabs(mn + rep.max_penetration) / rep.max_penetration);
+  free(in);
+  free(cm);
+}
+
+/* tfem_get_external_work: the sum of f.u over the loads known here and the
+ * displacements (relative 1e-10 of the sum of |f.u|). */
+static void oracle_work(runner_t *R, int idx, double w) {
+  shadow_t *s = &R->sh;
+  size_t n2 = 2 * (size_t)s->nn;
+  double *f = xmalloc(sizeof(double) * n2 + 1), *u = xmalloc(sizeof(double) * n2 + 1);
+  if (sh_nodal_forces(s, f) && tfem_get_displacements(R->m, u, n2) == TFEM_STATUS_OK) {
+    double sum = 0, mag = 0;
+    for (size_t g = 0; g < n2; ++g) {
+      sum += f[g] * u[g];
+      mag += fabs(f[g] * u[g]);
+    }
+    R->oracles[O_WORK] += isfinite(mag) && mag < 1e300 && mag > 0;
+    if (isfinite(mag) && mag < 1e300 && !(fabs(w - sum) <= 1e-10 * mag + 1e-290))
+      finding(R, V_WORK, idx, "work %.17g, but the sum of f.u over the loads is %.17g (of magnitude %.3g)", w, sum, mag);
+  }
+  free(f);
+  free(u);
+}
+
 /* Runs call idx, checks it (original run) or compares it (replay). */
 static void exec_call(runner_t *R, int idx) {
   call_t *c = &R->cs->c[idx];
@@ -2100,6 +2674,17 @@ static void exec_call(runner_t *R, int idx) {
   case F_GET_CONTACT_PRESSURE: st = tfem_get_contact_pressure(m, o[0], c->out[0].len); break;
   case F_GET_CONTACT_ELEMENTS: st = tfem_get_contact_elements(m, o[0], c->out[0].len); break;
   case F_GET_CONTACT_REPORT: st = tfem_get_contact_report(m, o[0]); break;
+  case F_ADD_BOUNDARY_EDGES: st = tfem_add_boundary_edges(m, c->iv[0], in[0], in[1]); break;
+  case F_GET_EXTERNAL_WORK: st = tfem_get_external_work(m, o[0]); break;
+  case F_GET_CONTACT_FORCES: st = tfem_get_contact_forces(m, o[0], c->out[0].len); break;
+  case F_GET_CONTACT_GAPS: st = tfem_get_contact_gaps(m, o[0], c->out[0].len); break;
+  case F_GET_CONTACT_MESH_SIZE: st = tfem_get_contact_mesh_size(m, o[0]); break;
+  case F_GET_CONTACT_MESH: st = tfem_get_contact_mesh(m, o[0], c->out[0].len); break;
+  case F_GET_CONTACT_ELEMENT_PAIRS: st = tfem_get_contact_element_pairs(m, o[0], c->out[0].len); break;
+  case F_GET_CONTACT_ELEMENT_APEXES: st = tfem_get_contact_element_apexes(m, o[0], c->out[0].len); break;
+  case F_GET_CONTACT_PAIR_BODIES: st = tfem_get_contact_pair_bodies(m, c->iv[0], o[0], o[1]); break;
+  case F_SET_THREADS: st = tfem_set_threads(m, c->iv[0]); break;
+  case F_GET_THREADS: st = tfem_get_threads(m, o[0]); break;
   case F_DESTROY_NULL: tfem_destroy(NULL); break;
   case F_RECREATE:
     tfem_destroy(R->m);
@@ -2204,6 +2789,22 @@ static void exec_call(runner_t *R, int idx) {
         finding(R, V_WRITE_ON_FAIL, idx, "output %d written although the status is %s", j, status_name(st));
   if (c->null_model && FN[fn].model && fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && st != TFEM_STATUS_NULL_POINTER)
     finding(R, V_OTHER, idx, "NULL model gave %s, not NULL_POINTER", status_name(st));
+  /* NULL pointers other than the model: a required one must be refused, an
+   * optional one ("may be NULL") accepted. (An input array of no element
+   * may be NULL.) */
+  if (FN[fn].model && !c->null_model && fn != F_LAST_ERROR) {
+    int req_null = -1, opt_null = -1;
+    for (int j = 0; j < nout; ++j)
+      if (c->out[j].null_) *(out_nullable(fn, j) ? &opt_null : &req_null) = j;
+    for (int j = 0; j < fn_nin(fn); ++j)
+      if (c->in[j].null_ && (FN[fn].ink[j] == 'o' || c->in[j].n > 0))
+        *(FN[fn].ink[j] == 'o' ? &opt_null : &req_null) = 10 + j;
+    if (req_null >= 0 && st == TFEM_STATUS_OK)
+      finding(R, V_NULL_ARG, idx, "OK although %s %d is NULL", req_null >= 10 ? "input" : "output", req_null % 10);
+    if (opt_null >= 0 && req_null < 0 && st == TFEM_STATUS_NULL_POINTER)
+      finding(R, V_NULL_ARG, idx, "NULL_POINTER although only %s %d, which may be NULL, is NULL: \"%.160s\"",
+              opt_null >= 10 ? "input" : "output", opt_null % 10, msg);
+  }
 
   /* Messages. */
   if (fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && fn != F_VERSION && fn != F_DESTROY_NULL && fn != F_RECREATE) {
@@ -2347,9 +2948,13 @@ static void exec_call(runner_t *R, int idx) {
   /* ---- the shadow model and the semantic oracles ---- */
   shadow_t *s = &R->sh;
   int need_results = fn == F_GET_DISPLACEMENTS || fn == F_GET_STRAINS || fn == F_GET_STRESSES ||
-                     fn == F_GET_REACTIONS || fn == F_GET_MATRIX_SIZE || fn == F_GET_MATRIX;
+                     fn == F_GET_REACTIONS || fn == F_GET_MATRIX_SIZE || fn == F_GET_MATRIX ||
+                     fn == F_GET_EXTERNAL_WORK;
   int need_contact = fn == F_GET_CONTACT_ACTIVE || fn == F_GET_CONTACT_PRESSURE || fn == F_GET_CONTACT_ELEMENTS ||
-                     fn == F_GET_CONTACT_REPORT;
+                     fn == F_GET_CONTACT_REPORT || fn == F_GET_CONTACT_FORCES || fn == F_GET_CONTACT_GAPS;
+  if (st != TFEM_STATUS_OK && st != TFEM_STATUS_NULL_POINTER && !c->null_model && fn == F_GET_CONTACT_PAIR_BODIES &&
+      s->has_mesh && c->iv[0] >= 0 && c->iv[0] < s->npairs)
+    finding(R, V_CONTACT, idx, "%s for pair %d of the %d declared: \"%.160s\"", status_name(st), c->iv[0], s->npairs, msg);
   if (!c->null_model && s->has_mesh && st == TFEM_STATUS_INVALID_STATE) {
     int matrix = fn == F_GET_MATRIX_SIZE || fn == F_GET_MATRIX;
     if (need_results && s->results) {
@@ -2364,6 +2969,74 @@ static void exec_call(runner_t *R, int idx) {
   }
   if (!c->null_model && st == TFEM_STATUS_OK && (need_results || need_contact) && !s->results && s->has_mesh)
     finding(R, V_OTHER, idx, "results returned although the problem changed since the last solve");
+  if (!c->null_model && s->exact && (fn == F_SET_BOUNDARY_EDGES || fn == F_ADD_BOUNDARY_EDGES) && c->iv[0] >= 0 &&
+      (c->iv[0] == 0 || (!c->in[0].null_ && !c->in[1].null_ && c->in[0].n >= 2 * c->iv[0] && c->in[1].n >= c->iv[0]))) {
+    /* The edges the call asks for (set replaces, add appends), and the
+     * header's refusals: an edge given a tag it already has, a load or a
+     * pair left without edges. OK: the shadow takes them, and a refusal
+     * missed is a finding; refused: counted when the edges were otherwise
+     * valid. */
+    int from = fn == F_ADD_BOUNDARY_EDGES ? s->ne : 0, n = c->iv[0], valid = 1, in_range = 1;
+    const int *en = c->in[0].p, *tg = c->in[1].p;
+    int *e0 = xmalloc(sizeof(int) * 2 * (size_t)(from + n) + 1), *t0 = xmalloc(sizeof(int) * (size_t)(from + n) + 1);
+    if (from) {
+      memcpy(e0, s->edge, sizeof(int) * 2 * (size_t)from);
+      memcpy(t0, s->tag, sizeof(int) * (size_t)from);
+    }
+    for (int k = 0; k < n; ++k) {
+      long pl = (long)en[2 * k] - s->base, ql = (long)en[2 * k + 1] - s->base;
+      if (pl < 0 || ql < 0 || pl >= s->nn || ql >= s->nn || pl == ql) {
+        valid = in_range = 0;
+        if (st == TFEM_STATUS_OK) finding(R, V_OTHER, idx, "OK with edge %d (nodes %d, %d): out of range or both ends equal", k, en[2 * k], en[2 * k + 1]);
+        break;
+      }
+      int p = (int)pl, q = (int)ql, side = 0;
+      for (int t = 0; t < s->nt && !side; ++t)
+        for (int kk = 0; kk < 3; ++kk) {
+          int a = s->tri[3 * t + kk], b = s->tri[3 * t + (kk + 1) % 3];
+          side |= (a == p && b == q) || (a == q && b == p);
+        }
+      valid &= side;
+      e0[2 * (from + k)] = p;
+      e0[2 * (from + k) + 1] = q;
+      t0[from + k] = tg[k];
+    }
+    if (valid || (st == TFEM_STATUS_OK && in_range)) {
+      int old_ne = s->ne, *old_e = s->edge, *old_t = s->tag;
+      s->edge = e0, s->tag = t0, s->ne = from + n;
+      int d = sh_double_edge(s, from);
+      char why[300];
+      int orphan = sh_orphan(s, why, sizeof why);
+      if (st == TFEM_STATUS_OK) {
+        if (d >= 0)
+          finding(R, V_DOUBLE_EDGE, idx, "edge (%d, %d) given tag %d %s: OK", s->edge[2 * d] + s->base,
+                  s->edge[2 * d + 1] + s->base, s->tag[d], fn == F_SET_BOUNDARY_EDGES ? "twice" : "again");
+        if (orphan) finding(R, V_DROPPED_LOAD, idx, "%s, yet the call is OK (the header: refused, naming the tag)", why);
+        free(old_e), free(old_t);
+        e0 = t0 = NULL;
+      } else {
+        R->oracles[O_EDGES_REFUSED] += d >= 0 || orphan;
+        s->edge = old_e, s->tag = old_t, s->ne = old_ne;
+      }
+    }
+    free(e0);
+    free(t0);
+  }
+  if (!c->null_model && s->exact && st != TFEM_STATUS_OK && (fn == F_FIX || fn == F_FIX_EDGES) && isfinite(c->dv[0]) &&
+      (c->iv[1] == 0 || c->iv[1] == 1)) {
+    /* a different value for a prescribed DOF: refused, as required */
+    int conflict = 0;
+    for (int e = 0; e < (fn == F_FIX ? 1 : s->ne) && !conflict; ++e) {
+      if (fn == F_FIX_EDGES && s->tag[e] != c->iv[0]) continue;
+      for (int k = 0; k < 2; ++k) {
+        long node = fn == F_FIX ? (long)c->iv[0] - s->base : s->edge[2 * e + k];
+        if (node < 0 || node >= s->nn) break;
+        double pv = s->presc[2 * node + c->iv[1]];
+        conflict |= !isnan(pv) && pv != c->dv[0];
+      }
+    }
+    R->oracles[O_FIX_REFUSED] += conflict;
+  }
   if (st == TFEM_STATUS_OK && !c->null_model) {
     switch (fn) {
     case F_SET_MESH: {
@@ -2382,14 +3055,8 @@ static void exec_call(runner_t *R, int idx) {
         s->has_mesh = 1;
       }
       break;
-    case F_SET_BOUNDARY_EDGES:
-      if (s->exact) {
-        int *e0 = xmalloc(sizeof(int) * 2 * (size_t)c->iv[0] + 1);
-        for (int k = 0; k < 2 * c->iv[0]; ++k) e0[k] = ((const int *)c->in[0].p)[k] - s->base;
-        sh_set_edges(s, c->iv[0], e0, c->in[1].p);
-        free(e0);
-      }
-      break;
+    case F_SET_BOUNDARY_EDGES: case F_ADD_BOUNDARY_EDGES:
+      break; /* (the shadow's edges: below) */
     case F_FIX: case F_FIX_EDGES:
       if (s->exact) {
         int comp = c->iv[1], reported = 0, nodes[2];
@@ -2446,9 +3113,135 @@ static void exec_call(runner_t *R, int idx) {
       s->nbf = 0;
       if (s->exact) memset(s->nforce, 0, sizeof(double) * 2 * (size_t)s->nn);
       break;
+    case F_ADD_CONTACT_PAIR: case F_ADD_CONTACT_PAIR_WITH_MESH:
+      if (!c->out[0].null_) {
+        int pr;
+        memcpy(&pr, g[0].p, sizeof pr);
+        if (pr != s->npairs) finding(R, V_CONTACT, idx, "pair index %d, but %d pairs were declared before", pr, s->npairs);
+      }
+      if (s->npairs < 16) {
+        s->pair_tag[s->npairs][0] = c->iv[0];
+        s->pair_tag[s->npairs][1] = c->iv[1];
+      }
+      s->npairs++;
+      break;
+    case F_SET_THREADS:
+      if (c->iv[0] < 0) finding(R, V_THREADS, idx, "tfem_set_threads(%d) is OK", c->iv[0]);
+      s->threads = c->iv[0];
+      goto keep_results;
+    case F_GET_THREADS:
+      if (!c->out[0].null_) {
+        int n;
+        memcpy(&n, g[0].p, sizeof n);
+        if (n < 1 || (s->threads >= 1 && n != s->threads))
+          finding(R, V_THREADS, idx, "%d threads, after tfem_set_threads(%d)", n, s->threads);
+        R->oracles[O_THREADS] += s->threads >= 1;
+      }
+      goto keep_results;
+    case F_GET_CONTACT_PAIR_BODIES:
+      if (s->has_mesh && (c->iv[0] < 0 || c->iv[0] >= s->npairs)) {
+        finding(R, V_CONTACT, idx, "OK for pair %d, but %d pairs were declared", c->iv[0], s->npairs);
+      } else if (s->exact && c->iv[0] < 16) {
+        /* a pair's body is that of the triangles owning its tag's edges */
+        for (int side = 0; side < 2; ++side) {
+          if (c->out[side].null_) continue;
+          int b, found = 0, owned = 0, third;
+          memcpy(&b, g[side].p, sizeof b);
+          for (int e = 0; e < s->ne && !found; ++e) {
+            if (s->tag[e] != s->pair_tag[c->iv[0]][side]) continue;
+            int t = sh_owner(s, s->edge[2 * e], s->edge[2 * e + 1], &third);
+            if (t >= 0) owned = 1, found = s->body[t] == b;
+          }
+          if (owned && !found)
+            finding(R, V_CONTACT, idx, "body_%c = %d, but no edge tagged %d is on that body", 'a' + side, b,
+                    s->pair_tag[c->iv[0]][side]);
+        }
+      }
+      goto keep_results;
+    case F_GET_CONTACT_MESH_SIZE:
+      if (s->exact && s->npairs == 0 && !c->out[0].null_) {
+        int n;
+        memcpy(&n, g[0].p, sizeof n);
+        if (n != 0) finding(R, V_CONTACT, idx, "%d contact elements without any contact pair", n);
+      }
+      goto keep_results;
+    case F_GET_CONTACT_MESH: case F_GET_CONTACT_ELEMENTS:
+      if (out_full(c, 0) && s->exact) {
+        /* the contact mesh before a solve is the contact elements after it */
+        long n = c->out[0].req;
+        const int *v = (const int *)(const void *)g[0].p;
+        for (long k = 0; k < n && fn == F_GET_CONTACT_MESH; ++k)
+          if (v[k] < s->base || v[k] >= s->base + s->nn) {
+            finding(R, V_CONTACT, idx, "contact element node %d out of range", v[k]);
+            break;
+          }
+        int mesh = fn == F_GET_CONTACT_MESH;
+        if (!mesh && s->results != 2) goto keep_results;
+        int *other = mesh ? s->celem : s->cmesh;
+        long no = mesh ? s->ncelem : s->ncmesh, og = mesh ? s->celem_gen : s->cmesh_gen;
+        R->oracles[O_MESH_EQ] += og == s->prob_gen;
+        if (og == s->prob_gen && (no != n || (n && memcmp(other, v, sizeof(int) * (size_t)n) != 0))) {
+          long k = 0;
+          while (k < n && k < no && other[k] == v[k]) ++k;
+          finding(R, V_CONTACT, idx, "%ld contact element nodes, %ld %s of call #%d (first difference at %ld)", n, no,
+                  mesh ? "in the contact elements" : "in the contact mesh", mesh ? s->celem_idx : s->cmesh_idx, k);
+        }
+        int **mine = mesh ? &s->cmesh : &s->celem;
+        free(*mine);
+        *mine = xmalloc(sizeof(int) * (size_t)n + 1);
+        if (n) memcpy(*mine, v, sizeof(int) * (size_t)n);
+        if (mesh) s->ncmesh = n, s->cmesh_gen = s->prob_gen, s->cmesh_idx = idx;
+        else s->ncelem = n, s->celem_gen = s->prob_gen, s->celem_idx = idx;
+      }
+      goto keep_results;
+    case F_GET_CONTACT_ELEMENT_PAIRS:
+      if (out_full(c, 0) && s->has_mesh)
+        for (long k = 0; k < c->out[0].req; ++k) {
+          int v;
+          memcpy(&v, g[0].p + sizeof(int) * (size_t)k, sizeof v);
+          if (v < 0 || v >= s->npairs) {
+            finding(R, V_CONTACT, idx, "element %ld belongs to pair %d, but %d pairs were declared", k, v, s->npairs);
+            break;
+          }
+        }
+      goto keep_results;
+    case F_GET_CONTACT_ELEMENT_APEXES:
+      if (out_full(c, 0) && s->exact) {
+        int *cm;
+        long ne = fetch_contact_mesh(R->m, &cm, NULL);
+        R->oracles[O_APEX] += ne > 0;
+        for (long k = 0; k < ne && k < c->out[0].req; ++k) {
+          int v;
+          memcpy(&v, g[0].p + sizeof(int) * (size_t)k, sizeof v);
+          if (v != cm[3 * k] && v != cm[3 * k + 1] && v != cm[3 * k + 2]) {
+            finding(R, V_CONTACT, idx, "apex %d of element %ld is not one of its nodes %d %d %d", v, k, cm[3 * k],
+                    cm[3 * k + 1], cm[3 * k + 2]);
+            break;
+          }
+        }
+        free(cm);
+      }
+      goto keep_results;
+    case F_GET_CONTACT_FORCES:
+      if (out_full(c, 0) && s->exact && s->results == 2 && c->out[0].req == 2L * s->nn)
+        oracle_contact_forces(R, idx, (const double *)(const void *)g[0].p);
+      goto keep_results;
+    case F_GET_CONTACT_GAPS:
+      if (out_full(c, 0) && s->exact && s->results == 2 && c->out[0].req == s->nn)
+        oracle_gaps(R, idx, (const double *)(const void *)g[0].p);
+      goto keep_results;
+    case F_GET_EXTERNAL_WORK:
+      if (!c->out[0].null_ && s->exact && s->results) {
+        double w;
+        memcpy(&w, g[0].p, sizeof w);
+        oracle_work(R, idx, w);
+      }
+      goto keep_results;
     case F_SOLVE: case F_SOLVE_CONTACT: {
       s->results = fn == F_SOLVE ? 1 : 2;
       s->matrix_dropped = 0;
+      s->sol_gen++;
+      s->contact_test = fn == F_SOLVE_CONTACT && !c->in[0].null_ ? c->iv[1] : TFEM_INVERSION_TEST_LINEARISED;
       s->relres = NAN;
       if (!c->out[0].null_) {
         const tfem_solve_info *inf = fn == F_SOLVE ? (const tfem_solve_info *)(const void *)g[0].p
@@ -2477,6 +3270,19 @@ static void exec_call(runner_t *R, int idx) {
                   c->or_node + s->base, u, c->or_expect, u / c->or_expect,
                   strcmp(R->cs->kind, "clockwise_square") == 0 ? "mesh given clockwise" : "counter-clockwise mesh");
       }
+      if (out_full(c, 0) && s->results) {
+        /* results are kept, bit for bit, until a solve succeeds or the
+         * problem changes (tfem_set_threads, tfem_set_ordering and failed
+         * solves keep them) */
+        uint64_t h = fnv64(g[0].p, sizeof(double) * (size_t)c->out[0].req);
+        R->oracles[O_DISP_KEPT] += s->disp_gen == s->sol_gen;
+        if (s->disp_gen == s->sol_gen && h != s->disp_hash)
+          finding(R, V_RESULTS_CHANGED, idx, "displacements differ from those of call #%d, although no solve succeeded "
+                  "and nothing changed the problem since", s->disp_idx);
+        s->disp_hash = h;
+        s->disp_gen = s->sol_gen;
+        s->disp_idx = idx;
+      }
       goto keep_results;
     case F_GET_REACTIONS:
       if (s->exact && s->results == 1 && o[0] && isfinite(s->relres) && s->relres < 1e-9 && s->cond < 1e10 &&
@@ -2502,8 +3308,23 @@ static void exec_call(runner_t *R, int idx) {
         }
       }
       goto keep_results;
+    case F_GET_MATRIX:
+      if (out_full(c, 0) && out_full(c, 1) && out_full(c, 2) && out_full(c, 3) && s->results) {
+        /* the matrix too is kept, bit for bit (a failed solve rebuilds it) */
+        uint64_t h = 0;
+        for (int j = 0; j < 4; ++j) h = h * 31 + fnv64(g[j].p, ksize(g[j].kind) * (size_t)c->out[j].req);
+        R->oracles[O_DISP_KEPT] += s->mat_gen == s->sol_gen;
+        if (s->mat_gen == s->sol_gen && h != s->mat_hash)
+          finding(R, V_RESULTS_CHANGED, idx, "system matrix differs from that of call #%d, although no solve succeeded "
+                  "and nothing changed the problem since", s->mat_idx);
+        s->mat_hash = h;
+        s->mat_gen = s->sol_gen;
+        s->mat_idx = idx;
+      }
+      goto keep_results;
     case F_RECREATE:
       sh_clear_mesh(s);
+      s->threads = 0;
       goto keep_results;
     default:
       if (!changes_problem(fn)) goto keep_results;
@@ -2511,6 +3332,8 @@ static void exec_call(runner_t *R, int idx) {
     }
     s->results = 0; /* a change of the problem discards the results */
     s->matrix_dropped = 0;
+    s->prob_gen++;
+    s->sol_gen++;
   keep_results:;
   }
   if (st != TFEM_STATUS_OK && !c->null_model && (fn == F_SOLVE || fn == F_SOLVE_CONTACT)) s->matrix_dropped = 1;
@@ -2712,6 +3535,23 @@ static void c_emit_call(FILE *f, const call_t *c, int idx) {
   case F_GET_CONTACT_PRESSURE: fprintf(f, "    s = tfem_get_contact_pressure(%s, %s, %zu);\n", M, o[0], len[0]); break;
   case F_GET_CONTACT_ELEMENTS: fprintf(f, "    s = tfem_get_contact_elements(%s, %s, %zu);\n", M, o[0], len[0]); break;
   case F_GET_CONTACT_REPORT: fprintf(f, "    s = tfem_get_contact_report(%s, %s);\n", M, o[0]); break;
+  case F_ADD_BOUNDARY_EDGES: fprintf(f, "    s = tfem_add_boundary_edges(%s, %d, %s, %s);\n", M, I[0], a[0], a[1]); break;
+  case F_GET_EXTERNAL_WORK: fprintf(f, "    s = tfem_get_external_work(%s, %s);\n", M, o[0]); break;
+  case F_GET_CONTACT_FORCES: fprintf(f, "    s = tfem_get_contact_forces(%s, %s, %zu);\n", M, o[0], len[0]); break;
+  case F_GET_CONTACT_GAPS: fprintf(f, "    s = tfem_get_contact_gaps(%s, %s, %zu);\n", M, o[0], len[0]); break;
+  case F_GET_CONTACT_MESH_SIZE: fprintf(f, "    s = tfem_get_contact_mesh_size(%s, %s);\n", M, o[0]); break;
+  case F_GET_CONTACT_MESH: fprintf(f, "    s = tfem_get_contact_mesh(%s, %s, %zu);\n", M, o[0], len[0]); break;
+  case F_GET_CONTACT_ELEMENT_PAIRS:
+    fprintf(f, "    s = tfem_get_contact_element_pairs(%s, %s, %zu);\n", M, o[0], len[0]);
+    break;
+  case F_GET_CONTACT_ELEMENT_APEXES:
+    fprintf(f, "    s = tfem_get_contact_element_apexes(%s, %s, %zu);\n", M, o[0], len[0]);
+    break;
+  case F_GET_CONTACT_PAIR_BODIES:
+    fprintf(f, "    s = tfem_get_contact_pair_bodies(%s, %d, %s, %s);\n", M, I[0], o[0], o[1]);
+    break;
+  case F_SET_THREADS: fprintf(f, "    s = tfem_set_threads(%s, %d);\n", M, I[0]); break;
+  case F_GET_THREADS: fprintf(f, "    s = tfem_get_threads(%s, %s);\n", M, o[0]); break;
   case F_DESTROY_NULL: fprintf(f, "    tfem_destroy(NULL);\n"); break;
   case F_RECREATE: fprintf(f, "    tfem_destroy(m);\n    m = tfem_create();\n"); break;
   default: break;
@@ -2793,7 +3633,7 @@ static void run_case(uint64_t seed, long index, int verbose, case_result *res) {
   R.verbose = verbose;
   R.pristine = cs.pristine;
   R.full_prefix = full_prefix;
-  R.sh.relres = NAN;
+  sh_init(&R.sh);
   R.cfile = verbose ? g_cfile : NULL;
   if (verbose) {
     printf("case %ld of seed %" PRIu64 ": %s scene%s, %d calls\n", index, seed, cs.kind,
@@ -2833,6 +3673,7 @@ static void run_case(uint64_t seed, long index, int verbose, case_result *res) {
   res->calls = R.calls;
   res->stderr_bytes = R.stderr_bytes;
   res->status_flips = R.status_flips;
+  for (int o = 0; o < NO; ++o) res->oracles[o] = R.oracles[o];
   for (int v = 0; v < NV; ++v) res->counts[v] = R.counts[v];
   res->done = 1;
   case_free(&cs);
@@ -3133,6 +3974,37 @@ static int self_test(void) {
   char c[64];
   ST(!strcmp(cdbl(-0.0, c), "(-0.0)") && !strcmp(cdbl(1.0, c), "1.0") && !strcmp(cdbl(NAN, c), "NAN"));
   ST(strtod(cdbl(4.9406564584124654e-324, c), NULL) == 4.9406564584124654e-324);
+  /* The shadow's boundary-edge rules: a unit square of two triangles, a
+   * pressure on tag 1 (the bottom edge 0-1). */
+  {
+    shadow_t sh;
+    sh_init(&sh);
+    double xy[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    int tri[6] = {0, 1, 2, 0, 2, 3}, body[2] = {1, 1};
+    sh_new_mesh(&sh, 4, xy, 2, tri, body, 0);
+    int e1[4] = {0, 1, 1, 2}, t1[2] = {1, 2};
+    sh_set_edges(&sh, 2, e1, t1);
+    sh.load = xmalloc(sizeof(sh_load));
+    sh.load[sh.nl++] = (sh_load){1, 0, 1.0, 0.0};
+    char why[300];
+    ST(!sh_orphan(&sh, why, sizeof why) && sh_double_edge(&sh, 0) < 0);
+    int e2[6] = {0, 1, 1, 2, 1, 0}, t2[3] = {1, 2, 1}; /* 0-1 tagged 1 twice */
+    sh_set_edges(&sh, 3, e2, t2);
+    ST(sh_double_edge(&sh, 0) == 2 && sh_double_edge(&sh, 3) < 0);
+    int e3[4] = {1, 2, 0, 2}, t3[2] = {2, 1}; /* tag 1 only on the diagonal, interior */
+    sh_set_edges(&sh, 2, e3, t3);
+    ST(sh_orphan(&sh, why, sizeof why) && strstr(why, "interior"));
+    int e4[2] = {1, 2}, t4[1] = {2}; /* tag 1 gone */
+    sh_set_edges(&sh, 1, e4, t4);
+    ST(sh_orphan(&sh, why, sizeof why) && strstr(why, "no edge left"));
+    double f[8];
+    sh_set_edges(&sh, 2, e1, t1);
+    ST(sh_nodal_forces(&sh, f) && f[1] == 0.5 && f[3] == 0.5 && f[0] == 0.0); /* pressure 1 on y = 0 pushes up */
+    sh.threads = 3;
+    sh_clear_mesh(&sh);
+    ST(sh.threads == 3 && sh.nn == 0 && sh.cmesh_gen == -1);
+    sh_clear_mesh(&sh);
+  }
   /* Case generation is a pure function of (seed, case). */
   for (long k = 0; k < 200; ++k) {
     mesh_t m1 = {0}, m2 = {0};
@@ -3322,7 +4194,7 @@ int main(int argc, char **argv) {
   }
 
   double t0 = now_s(), t_progress = t0;
-  long totals[NV] = {0}, ncases[NV] = {0}, firsts[NV][5], calls = 0, done = 0, stderr_bytes = 0;
+  long totals[NV] = {0}, ncases[NV] = {0}, firsts[NV][5], calls = 0, done = 0, stderr_bytes = 0, oracles[NO] = {0};
   for (long first = first_case; first < first_case + cases; first += batch) {
     int n = (int)(first_case + cases - first < batch ? first_case + cases - first : batch);
     run_batch(first, n);
@@ -3332,6 +4204,7 @@ int main(int argc, char **argv) {
       ++done;
       calls += r->calls;
       stderr_bytes += r->stderr_bytes;
+      for (int o = 0; o < NO; ++o) oracles[o] += r->oracles[o];
       for (int v = 0; v < NV; ++v)
         if (r->counts[v] > 0) {
           if (ncases[v] < 5) firsts[v][ncases[v]] = first + i;
@@ -3366,6 +4239,9 @@ int main(int argc, char **argv) {
     for (long k = 0; k < ncases[v] && k < 5; ++k) printf("%s%ld", k ? " " : "", firsts[v][k]);
     printf("   %s\n", V_DESC[v]);
   }
+  printf("  oracles checked:");
+  for (int o = 0; o < NO; ++o) printf(" %s=%ld", O_NAME[o], oracles[o]);
+  printf("\n");
   printf("SUMMARY cases=%ld calls=%ld crashes=%ld aborts=%ld hangs=%ld nan_inf_ok=%ld canary=%ld state_changes=%ld "
          "stderr_bytes=%ld long_messages=%ld other_violations=%ld -> %s\n",
          done, calls, totals[V_CRASH], totals[V_ABORT], totals[V_HANG], totals[V_NAN_OK], totals[V_CANARY],
