@@ -9,6 +9,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <limits.h>
 #include <stdint.h>
 #include <string.h>
 #include <unistd.h>
@@ -302,6 +303,7 @@ static void changing_the_ordering_or_the_threads_keeps_every_result(void) {
   CHECK(tfem_set_threads(m, 0) == TFEM_STATUS_OK && tfem_get_threads(m, &threads) == TFEM_STATUS_OK &&
         threads >= 1);
   EXPECT_ERROR(m, tfem_set_threads(m, -2), TFEM_STATUS_INVALID_ARGUMENT, "threads = -2");
+  EXPECT_ERROR(m, tfem_set_threads(m, 2147483647), TFEM_STATUS_INVALID_ARGUMENT, "more than 1024");
   tfem_destroy(m);
 }
 

@@ -985,7 +985,9 @@ fn history_run(model: &mut tfem::Model, steps: usize, rss_mesh: Option<f64>) -> 
     let t0 = Instant::now();
     let (mut factorizations, mut iterations) = (0, 0);
     for k in 1..=steps {
-        let r = model.step(k as f64 / steps as f64, &options).expect("a load step");
+        let r = model
+            .step(k as f64 / steps as f64, &options)
+            .expect("a load step");
         factorizations += r.info.factorizations;
         iterations += r.iterations;
     }
@@ -1481,7 +1483,8 @@ fn histories(report: &mut String, a: &Args) {
     .unwrap();
     writeln!(report, "| h | unknowns | one solve [s] | 100 steps [s] | of which recovery [s] | ratio | factorisations | active-set iterations | peak RSS one solve / history [MB] |\n|---|---|---|---|---|---|---|---|---|").unwrap();
     for &n in &levels {
-        let (Some(one), Some(h)) = (child(n, "nd", "condensed"), child(n, "nd", "history100")) else {
+        let (Some(one), Some(h)) = (child(n, "nd", "condensed"), child(n, "nd", "history100"))
+        else {
             writeln!(report, "| 1/{n} | run failed |").unwrap();
             continue;
         };

@@ -169,7 +169,10 @@ fn run(args: &Args, c: f64, h: f64) -> Result<Run, tfem::Error> {
             factorizations += report.info.factorizations;
             last = Some(report);
         }
-        (scene.measure(last.expect("one step at least"))?, factorizations)
+        (
+            scene.measure(last.expect("one step at least"))?,
+            factorizations,
+        )
     };
     Ok(Run {
         scene,

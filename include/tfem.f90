@@ -1056,10 +1056,11 @@ module tfem
   end interface
 
   interface
-    !> Sets the number of threads the model's solves run on: `threads` >= 1 gives the model a pool
-    !! of its own (1: no parallelism at all, for a host that runs its own OpenMP or MPI threads); 0
-    !! (the default) uses the process-wide pool, with as many threads as cores or the environment
-    !! variable RAYON_NUM_THREADS. Results do not depend on it beyond round-off, and are kept.
+    !> Sets the number of threads the model's solves run on: 1 <= `threads` <= 1024 gives the model
+    !! a pool of its own (1: no parallelism at all, for a host that runs its own OpenMP or MPI
+    !! threads); 0 (the default) uses the process-wide pool, with as many threads as cores or the
+    !! environment variable RAYON_NUM_THREADS. Results do not depend on it beyond round-off, and are
+    !! kept.
     function tfem_set_threads(model, threads) &
         bind(C, name="tfem_set_threads") result(status)
       import

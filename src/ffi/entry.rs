@@ -1039,8 +1039,8 @@ pub unsafe extern "C" fn tfem_get_contact_pair_bodies(
     })
 }
 
-/// Sets the number of threads the model's solves run on: `threads` >= 1
-/// gives the model a pool of its own (1: no parallelism at all, for a
+/// Sets the number of threads the model's solves run on: 1 <= `threads`
+/// <= 1024 gives the model a pool of its own (1: no parallelism at all, for a
 /// host that runs its own OpenMP or MPI threads); 0 (the default) uses
 /// the process-wide pool, with as many threads as cores or the
 /// environment variable RAYON_NUM_THREADS. Results do not depend on it

@@ -76,6 +76,9 @@ impl Default for Model {
 }
 
 impl Model {
+    /// The most threads [`Model::set_threads`] accepts.
+    pub const MAX_THREADS: usize = 1024;
+
     /// An empty model (no mesh, default tempering [`Tempering::Auto`]).
     pub fn new() -> Model {
         Model {
@@ -132,13 +135,21 @@ impl Model {
         self.settings.parallel_subtrees = on;
     }
 
-    /// Runs the solves on `threads` threads of the model's own pool (1: no
+    /// Runs the solves on `threads` threads (at most [`Model::MAX_THREADS`])
+    /// of the model's own pool (1: no
     /// parallelism at all, for a host that runs its own threads); 0 goes
     /// back to rayon's global pool (as many threads as cores, or
     /// `RAYON_NUM_THREADS`). Results do not depend on it beyond round-off
     /// (from 20 000 unknowns, two threads or more factorise two subtrees
     /// at once); they are kept.
     pub fn set_threads(&mut self, threads: usize) -> Result<()> {
+        if threads > Model::MAX_THREADS {
+            return Err(Error::argument(format!(
+                "threads = {threads} is more than {} (a count gone wrong would exhaust the \
+                 machine's threads)",
+                Model::MAX_THREADS
+            )));
+        }
         self.pool = match threads {
             0 => None,
             n => Some(std::sync::Arc::new(
