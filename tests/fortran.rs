@@ -1614,3 +1614,71 @@ fn fortran_seed_scene_example_matches_the_rust_numbers() {
     );
     assert_eq!(value("iterations") as usize, r.report.iterations);
 }
+
+#[test]
+fn fortran_host_with_its_own_skyline_solver_reproduces_the_built_in_contact_solve() {
+    use tfem::scenes::TwoBlocks;
+    // examples/host_skyline.f90 keeps its own P1 elements, equation
+    // numbering, skyline LDLᵀ and active-set loop, and takes only the
+    // contact from tfem_contact_* (index_base = 1); it solves the same mesh
+    // with tfem_solve_contact and prints both. Two mesh sizes, two widths.
+    let exe = build_fortran(&[&root().join("examples/host_skyline.f90")], "host_skyline");
+    for (ratio, cells) in [(0.2, 32), (0.6, 32), (0.2, 64), (0.6, 64)] {
+        let out = run(&exe, &[&ratio.to_string(), &cells.to_string()]);
+        let fields = |name: &str| -> Vec<String> {
+            let line = out
+                .lines()
+                .find(|l| l.split_whitespace().next() == Some(name))
+                .unwrap_or_else(|| panic!("{name} missing in {out}"));
+            line.split_whitespace().skip(1).map(String::from).collect()
+        };
+        let number = |name: &str, k: usize| -> f64 { fields(name)[k].parse().unwrap() };
+        let case = format!("2C/L = {ratio}, h = 1/{cells}");
+        let rel = number("relative_difference", 0);
+        assert!(rel <= 1e-10, "{case}: host vs built-in {rel:e}\n{out}");
+        // At these sizes the skyline agrees without its refinement step too.
+        let plain = number("relative_difference_unrefined", 0);
+        assert!(plain <= 1e-10, "{case}: unrefined {plain:e}\n{out}");
+        assert_eq!(fields("same_active_set"), ["T"], "{case}\n{out}");
+        assert_eq!(fields("same_element_order"), ["T"], "{case}\n{out}");
+        let (host, tfem) = (number("iterations", 0), number("iterations", 1));
+        assert_eq!(host, tfem, "{case}: active-set iterations");
+        assert_eq!(number("unknowns", 0), number("unknowns", 1), "{case}");
+        // The contact couples the two interface rows, outside the bodies'
+        // profile: the host had to raise those columns.
+        let outside = number("outside_body_profile", 0);
+        assert!(
+            outside > 0.0,
+            "{case}: the contact stays in the body profile?\n{out}"
+        );
+        assert!(out.contains("agreement ok"), "{out}");
+        // The host's numbers are the seed scene's (the Rust scene, same mesh).
+        let mut s = TwoBlocks {
+            c: 0.5 * ratio,
+            mesh_size: 1.0 / cells as f64,
+            ..Default::default()
+        }
+        .build()
+        .unwrap();
+        let r = s.solve(&tfem::ContactOptions::default()).unwrap();
+        let lc = number("lc", 0);
+        assert!(
+            (lc - r.lc).abs() <= 1e-12 * r.lc,
+            "{case}: lc {lc} vs {}",
+            r.lc
+        );
+        // Displacements: to 1e-10 of the largest, as the example checks.
+        let scale = number("max_displacement", 0);
+        for (name, rust) in [("gap_edge", r.gap_edge), ("v_top", r.v_top)] {
+            let host = number(name, 0);
+            assert!(
+                (host - rust).abs() <= 1e-10 * scale,
+                "{case}: {name} host {host} vs Rust {rust}"
+            );
+        }
+        assert_eq!(
+            host as usize, r.report.iterations,
+            "{case}: Rust iterations"
+        );
+    }
+}
