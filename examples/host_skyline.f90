@@ -213,7 +213,7 @@ program host_skyline
   ! pointer neither const nor followed by a length for one output value),
   ! so an array does not match: pass its first element, from which the C
   ! function writes the n_entries values.
-  call ccheck(tfem_contact_pattern(ctx, rows(1), cols, int(n_entries, c_size_t)), &
+  call ccheck(tfem_contact_pattern(ctx, rows, cols, int(n_entries, c_size_t)), &
       'tfem_contact_pattern')
 
   ! =========================================================================

@@ -1315,17 +1315,18 @@ module tfem
   end interface tfem_contact_nodes
 
   interface tfem_contact_pattern
-    !> Copies the fixed pattern of the contact contributions (n_entries rows and columns, in the
-    !! host's equation numbering and index base): element after element of B, each element's 6×6
-    !! block row by row over its DOFs (x then y of its first, second and third node), the DOFs
-    !! without an equation left out; both triangles of each block. Entries repeat where elements
-    !! share a DOF pair: the host sums them. Fortran: `length` takes an integer(c_size_t) or a
-    !! default integer (kind tfem_length_kind); a negative length is passed as 0.
+    !> Copies the fixed pattern of the contact contributions into `rows` (n_entries values) and
+    !! `cols` (n_entries values), in the host's equation numbering and index base: element after
+    !! element of B, each element's 6×6 block row by row over its DOFs (x then y of its first,
+    !! second and third node), the DOFs without an equation left out; both triangles of each block.
+    !! Entries repeat where elements share a DOF pair: the host sums them. Fortran: `length` takes
+    !! an integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is
+    !! passed as 0.
     function tfem_contact_pattern(context, rows, cols, length) &
         bind(C, name="tfem_contact_pattern") result(status)
       import
       type(c_ptr), value :: context
-      integer(c_int64_t), intent(out) :: rows
+      integer(c_int64_t), intent(inout) :: rows(*)
       integer(c_int64_t), intent(inout) :: cols(*)
       integer(c_size_t), value :: length
       integer(c_int) :: status
@@ -1336,20 +1337,21 @@ module tfem
   interface tfem_contact_evaluate
     !> The contact contributions at the displacements `u` of the interface nodes (2 per node,
     !! `u_length` = 2·n_nodes): the tangent's values in the pattern's order into `values` (n_entries
-    !! values; zeros for inactive elements; may be NULL), and the contact residual Σ (K_e u_e −
-    !! f0_e) of the active elements, 2 per interface node, into `residual` (may be NULL). A linear
-    !! host adds the values to its matrix and minus the residual at u = 0 (the load of initial gaps)
-    !! to its right-hand side; a Newton host adds the values to its tangent and the residual at its
-    !! current u to its residual. Allocates nothing. Fortran: `residual` is OPTIONAL: omit it to
-    !! pass NULL. `u_length`, `values_length` and `residual_length` take integer(c_size_t) or
-    !! default integers (kind tfem_length_kind), all of one kind; a negative length is passed as 0.
+    !! values, zeros for inactive elements), and the contact residual Σ (K_e u_e − f0_e) of the
+    !! active elements, 2 per interface node, into `residual`. `values` may be NULL; `residual` may
+    !! be NULL. A linear host adds the values to its matrix and minus the residual at u = 0 (the
+    !! load of initial gaps) to its right-hand side; a Newton host adds the values to its tangent
+    !! and the residual at its current u to its residual. Allocates nothing. Fortran: `values` and
+    !! `residual` are OPTIONAL: omit them to pass NULL. `u_length`, `values_length` and
+    !! `residual_length` take integer(c_size_t) or default integers (kind tfem_length_kind), all of
+    !! one kind; a negative length is passed as 0.
     function tfem_contact_evaluate(context, u, u_length, values, values_length, residual, residual_length) &
         bind(C, name="tfem_contact_evaluate") result(status)
       import
       type(c_ptr), value :: context
       real(c_double), intent(in) :: u(*)
       integer(c_size_t), value :: u_length
-      real(c_double), intent(inout) :: values(*)
+      real(c_double), intent(inout), optional :: values(*)
       integer(c_size_t), value :: values_length
       real(c_double), intent(inout), optional :: residual(*)
       integer(c_size_t), value :: residual_length
@@ -1542,6 +1544,19 @@ module tfem
     end function tfem_contact_element_blocks
     module procedure tfem_contact_element_blocks_i
   end interface tfem_contact_element_blocks
+
+  interface
+    !> Writes the contact length of the current active set to `length`: half the summed
+    !! interface-edge length of the active elements of B (each point of an interface is covered by
+    !! one element with its edge on each side), model length units.
+    function tfem_contact_length(context, length) &
+        bind(C, name="tfem_contact_length") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(out) :: length
+      integer(c_int) :: status
+    end function tfem_contact_length
+  end interface
 
 contains
 
@@ -1885,7 +1900,7 @@ contains
   ! tfem_contact_pattern, lengths of kind tfem_length_kind.
   function tfem_contact_pattern_i(context, rows, cols, length) result(status)
     type(c_ptr), value :: context
-    integer(c_int64_t), intent(out) :: rows
+    integer(c_int64_t), intent(inout) :: rows(*)
     integer(c_int64_t), intent(inout) :: cols(*)
     integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
@@ -1898,7 +1913,7 @@ contains
     type(c_ptr), value :: context
     real(c_double), intent(in) :: u(*)
     integer(tfem_length_kind), intent(in) :: u_length
-    real(c_double), intent(inout) :: values(*)
+    real(c_double), intent(inout), optional :: values(*)
     integer(tfem_length_kind), intent(in) :: values_length
     real(c_double), intent(inout), optional :: residual(*)
     integer(tfem_length_kind), intent(in) :: residual_length

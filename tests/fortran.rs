@@ -334,7 +334,8 @@ enum Pass {
 
 /// Reads how parameter `k` of `p` is passed. A pointer is an array when it
 /// points to char, is const (an input), is followed by a `size_t` length
-/// (the header's buffer convention) or its doc says "`name` (N values";
+/// (the header's buffer convention) or its doc says "`name` (N values"
+/// (N digits or the name of a size, such as n_entries);
 /// any other non-const pointer is a scalar output.
 fn classify(p: &Proto, k: usize) -> Pass {
     let (ty, name) = &p.params[k];
@@ -354,9 +355,14 @@ fn classify(p: &Proto, k: usize) -> Pass {
     }
     let next_is_length = p.params.get(k + 1).is_some_and(|(t, _)| t == "size_t");
     let sized = p.doc.match_indices(&format!("`{name}` (")).any(|(at, m)| {
+        // A count: digits, or a size's name such as n_entries.
         let rest = &p.doc[at + m.len()..];
-        let digits = rest.chars().take_while(char::is_ascii_digit).count();
-        digits > 0 && rest[digits..].starts_with(" values")
+        let count = rest
+            .char_indices()
+            .take_while(|&(_, c)| c.is_ascii_alphanumeric() || c == '_')
+            .last()
+            .map_or(0, |(i, c)| i + c.len_utf8());
+        count > 0 && rest[count..].starts_with(" values")
     });
     if base == "char" || konst || next_is_length || sized {
         Pass::Array {

@@ -441,6 +441,20 @@ impl HostContact {
         Ok(())
     }
 
+    /// The contact length of the current active set: half the summed
+    /// interface-edge length of the active elements.
+    pub fn contact_length(&mut self) -> Result<f64> {
+        let b = self.built()?;
+        let active = b.active.active();
+        Ok(b.set
+            .elements()
+            .iter()
+            .zip(active)
+            .filter(|(_, a)| **a)
+            .map(|(e, _)| 0.5 * e.edge_length)
+            .sum())
+    }
+
     /// The active flag of every element of B.
     pub fn active(&mut self) -> Result<&[bool]> {
         Ok(self.built()?.active.active())

@@ -270,8 +270,9 @@ pub unsafe extern "C" fn tfem_contact_nodes(
     })
 }
 
-/// Copies the fixed pattern of the contact contributions (n_entries rows
-/// and columns, in the host's equation numbering and index base): element
+/// Copies the fixed pattern of the contact contributions into `rows`
+/// (n_entries values) and `cols` (n_entries values), in the host's
+/// equation numbering and index base: element
 /// after element of B, each element's 6×6 block row by row over its DOFs
 /// (x then y of its first, second and third node), the DOFs without an
 /// equation left out; both triangles of each block. Entries repeat where
@@ -295,10 +296,10 @@ pub unsafe extern "C" fn tfem_contact_pattern(
 
 /// The contact contributions at the displacements `u` of the interface
 /// nodes (2 per node, `u_length` = 2·n_nodes): the tangent's values in the
-/// pattern's order into `values` (n_entries values; zeros for inactive
-/// elements; may be NULL), and the contact residual Σ (K_e u_e − f0_e) of
-/// the active elements, 2 per interface node, into `residual` (may be
-/// NULL). A linear host adds the values to its matrix and minus the
+/// pattern's order into `values` (n_entries values, zeros for inactive
+/// elements), and the contact residual Σ (K_e u_e − f0_e) of the active
+/// elements, 2 per interface node, into `residual`. `values` may be NULL;
+/// `residual` may be NULL. A linear host adds the values to its matrix and minus the
 /// residual at u = 0 (the load of initial gaps) to its right-hand side; a
 /// Newton host adds the values to its tangent and the residual at its
 /// current u to its residual. Allocates nothing.
@@ -532,4 +533,16 @@ pub unsafe extern "C" fn tfem_contact_element_blocks(
         }
         Ok(())
     })
+}
+
+/// Writes the contact length of the current active set to `length`: half
+/// the summed interface-edge length of the active elements of B (each
+/// point of an interface is covered by one element with its edge on each
+/// side), model length units.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_length(
+    context: *mut TfemContact,
+    length: *mut f64,
+) -> Status {
+    with_context(context, |c| write(length, c.contact_length()?, "length"))
 }
