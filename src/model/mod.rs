@@ -618,7 +618,14 @@ impl Model {
     /// outlives a failed solve (which rebuilds it, to the last bit, in the
     /// storage it borrowed).
     pub fn system_matrix(&self) -> Result<SystemMatrix<'_>> {
-        let revision = self.solution()?.revision;
+        let solution = self.solution()?;
+        if solution.step {
+            return Err(Error::state(
+                "a load step keeps no system matrix (its factorisation is the history's first): \
+                 call solve_contact for one",
+            ));
+        }
+        let revision = solution.revision;
         self.session
             .as_ref()
             .and_then(|s| s.system_matrix(revision))
