@@ -20,6 +20,7 @@
 pub mod law;
 pub mod mesh;
 pub mod set;
+pub mod traction;
 
 pub use law::{
     ContactStiffness, contact_pressure, contact_stiffness, law_matrix, linearised_jacobian,
