@@ -2,7 +2,9 @@
 //! the load of an initial gap, the contact pressure and the linearised
 //! opening that the inversion test reads.
 
-use super::ContactLaw;
+use std::collections::BTreeMap;
+
+use super::{ContactElement, ContactLaw};
 use crate::fem::element::{TriGeometry, b_hat};
 use crate::fem::material::Material;
 
@@ -136,4 +138,126 @@ pub fn linearised_jacobian(geo: &TriGeometry, ue: &[f64; 6]) -> f64 {
         + (0..3)
             .map(|i| geo.g[i][0] * ue[2 * i] + geo.g[i][1] * ue[2 * i + 1])
             .sum::<f64>()
+}
+
+/// The penalty length h_c of each pair (indexed by pair): the shortest
+/// interface edge of the pair's elements of B (docs/method.md §6.11). One
+/// length per pair keeps the penalty κ = E_c λ / h_c² uniform along the
+/// interface, which the patch test requires.
+pub fn penalty_lengths(elements: &[ContactElement]) -> BTreeMap<usize, f64> {
+    let mut h: BTreeMap<usize, f64> = BTreeMap::new();
+    for el in elements {
+        let v = h.entry(el.pair).or_insert(f64::INFINITY);
+        *v = v.min(el.edge_length);
+    }
+    h
+}
+
+/// The tempered Jacobian of every element of B (docs/method.md §6.11):
+/// T_e = ℓ_e h_c² / λ, with ℓ_e the element's interface edge and h_c its
+/// pair's penalty length ([`penalty_lengths`]). Its stiffness is then
+/// κ ℓ_e / 2 on the gap at its apex, κ = E_c λ / h_c², and its pressure
+/// −E_c o_e / T_e = −κ × (the gap at its apex) is the contact traction,
+/// whatever the shape of the triangle: any triangulation of the strip then
+/// passes the patch test exactly. On a conforming interface of edges h it
+/// is the seed's Jmin = h³/λ (to the bit when every edge has the same
+/// length).
+pub fn contact_jmins(elements: &[ContactElement], lambda: f64) -> Vec<f64> {
+    let h = penalty_lengths(elements);
+    elements
+        .iter()
+        .map(|el| {
+            let hc = h[&el.pair];
+            (el.edge_length / lambda) * hc * hc
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::mesh::{Nodes, Side, conforming, nonconforming};
+    use crate::fem::element::jmin_of_lambda;
+    use crate::fem::material::{Material, PlaneMode};
+
+    /// Two straight interfaces along y = 0 with nodes at `xa` (side a, the
+    /// body below) and `xb` (side b, above): nodes, sides.
+    fn sides(xa: &[f64], xb: &[f64]) -> (Vec<[f64; 2]>, Side, Side) {
+        let mut x: Vec<[f64; 2]> = xa.iter().map(|&v| [v, 0.0]).collect();
+        x.extend(xb.iter().map(|&v| [v, 0.0]));
+        let na = xa.len();
+        // Body on the left of p → q: below for a (right to left), above
+        // for b (left to right).
+        let ea: Vec<[usize; 2]> = (0..na - 1).map(|i| [i + 1, i]).collect();
+        let eb: Vec<[usize; 2]> = (0..xb.len() - 1).map(|i| [na + i, na + i + 1]).collect();
+        let a = Side::from_edges(&x, 0, 1, 1, &ea).unwrap();
+        let b = Side::from_edges(&x, 0, 2, 2, &eb).unwrap();
+        (x, a, b)
+    }
+
+    #[test]
+    fn a_uniform_conforming_interface_keeps_the_seeds_jmin_to_the_bit() {
+        let xs: Vec<f64> = (0..=16).map(|i| i as f64 / 16.0).collect();
+        let (x, a, b) = sides(&xs, &xs);
+        let nodes = Nodes { x: &x, base: 0 };
+        let elements = conforming(nodes, 0, &a, &b).unwrap();
+        let lambda = 1.0;
+        for (el, t) in elements.iter().zip(contact_jmins(&elements, lambda)) {
+            assert_eq!(t, jmin_of_lambda(el.h, lambda));
+        }
+    }
+
+    #[test]
+    fn a_uniform_gap_across_any_strip_loads_both_sides_with_a_uniform_traction() {
+        // docs/method.md §6.11, the patch-test theorem: 5 against 7 jittered
+        // edges over [0, 1].
+        let xa = [0.0, 0.17, 0.43, 0.58, 0.81, 1.0];
+        let xb = [0.0, 0.12, 0.33, 0.41, 0.62, 0.7, 0.93, 1.0];
+        let (x, a, b) = sides(&xa, &xb);
+        let nodes = Nodes { x: &x, base: 0 };
+        let elements = nonconforming(nodes, 0, &a, &b).unwrap();
+        let (e_c, lambda) = (2.0, 3.0);
+        let soft = Material::new(e_c, 0.3, PlaneMode::Strain, "soft").unwrap();
+        let jmins = contact_jmins(&elements, lambda);
+        let hc = penalty_lengths(&elements)[&0];
+        let kappa = e_c * lambda / (hc * hc);
+        // Side b moved by g along n = (0, 1): the gap g everywhere.
+        let g = -1e-3;
+        let mut force = vec![0.0; x.len()];
+        for (el, &t) in elements.iter().zip(&jmins) {
+            let geo = TriGeometry::new(&nodes.corners(&el.nodes));
+            let d = law_matrix(ContactLaw::Frictionless, e_c, &soft, el.normal);
+            let cs = contact_stiffness(&geo, &d, el.normal, el.j0, t);
+            let ue: [f64; 6] = std::array::from_fn(|c| {
+                if c % 2 == 1 && el.nodes[c / 2] >= xa.len() {
+                    g
+                } else {
+                    0.0
+                }
+            });
+            for r in 0..6 {
+                if r % 2 == 1 {
+                    force[el.nodes[r / 2]] -= (0..6).map(|c| cs.k[r * 6 + c] * ue[c]).sum::<f64>();
+                }
+            }
+            // The element's pressure is the traction −κ g.
+            let p = contact_pressure(&geo, &d, el.normal, el.j0, t, &ue);
+            assert!((p + kappa * g).abs() < 1e-12 * kappa * g.abs(), "{p}");
+        }
+        let tributary =
+            |xs: &[f64], i: usize| 0.5 * (xs[(i + 1).min(xs.len() - 1)] - xs[i.saturating_sub(1)]);
+        for (i, f) in force.iter().enumerate() {
+            let (m, sign) = if i < xa.len() {
+                (tributary(&xa, i), 1.0)
+            } else {
+                (tributary(&xb, i - xa.len()), -1.0)
+            };
+            // Compression pushes side a down and side b up.
+            let expected = sign * kappa * g * m;
+            assert!(
+                (f - expected).abs() < 1e-12 * kappa * g.abs(),
+                "node {i}: {f} vs {expected}"
+            );
+        }
+    }
 }

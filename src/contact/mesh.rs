@@ -452,14 +452,16 @@ pub fn checked_triangles(
     Ok((out, flipped))
 }
 
-/// Builds B for a pair whose interface nodes do not match (docs/method.md §5):
-/// both interfaces are chained into polylines running the same way, every
-/// node gets the arclength parameter of its projection on the first
+/// Builds B for a pair whose interface nodes do not match (docs/method.md §5,
+/// §6.11): both interfaces are chained into polylines running the same way,
+/// every node gets the arclength parameter of its projection on the first
 /// polyline (extended beyond its ends), and the strip between them is
-/// triangulated by advancing along whichever polyline has the nearer next
-/// node, over the range where the two interfaces face each other (plus one
-/// edge at each end). Each triangle has an edge on one interface and a node
-/// on the other; orientation and normals are set as for a user mesh.
+/// triangulated by advancing along whichever polyline's next edge has the
+/// nearer midpoint, over the range where the two interfaces face each other
+/// (plus one edge at each end): every edge's apex is the node of the other
+/// side nearest to its midpoint. Each triangle has an edge on one interface
+/// and a node on the other; orientation and normals are set as for a user
+/// mesh.
 pub fn build_nonconforming(
     mesh: &Mesh,
     pair: usize,
@@ -547,7 +549,10 @@ pub fn nonconforming(
         } else if j + 1 == cb.len() {
             true
         } else {
-            sa[i + 1] <= sb[j + 1]
+            // The next edge whose midpoint comes first: each edge's apex is
+            // then the node of the other side nearest to its midpoint
+            // (docs/method.md §6.11).
+            sa[i] + sa[i + 1] <= sb[j] + sb[j + 1]
         };
         if advance_a {
             tris.push([ca[i], ca[i + 1], cb[j]]);

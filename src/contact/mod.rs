@@ -21,6 +21,7 @@ pub mod host;
 pub mod law;
 pub mod mesh;
 pub mod set;
+pub mod traction;
 
 pub use host::{HostContact, Update};
 pub use law::{

@@ -11,14 +11,14 @@ use std::borrow::Cow;
 use std::collections::{BTreeMap, HashSet};
 
 use super::law::{
-    ContactStiffness, contact_pressure, contact_stiffness, law_matrix, linearised_opening,
-    opening_coefficient,
+    ContactStiffness, contact_jmins, contact_pressure, contact_stiffness, law_matrix,
+    linearised_opening, opening_coefficient,
 };
 use super::mesh::Nodes;
 use super::{ContactElement, ContactOptions, InversionTest};
 use crate::error::{Error, Result, Status, ensure_finite};
 use crate::fem::assembly::Pattern;
-use crate::fem::element::{TriGeometry, jmin_of_lambda};
+use crate::fem::element::TriGeometry;
 use crate::fem::material::Material;
 
 /// The law of one contact element: its constitutive matrix and its
@@ -29,7 +29,7 @@ use crate::fem::material::Material;
 pub struct ElementLaw {
     /// Constitutive matrix D_c (Voigt, engineering shear).
     pub d: [[f64; 3]; 3],
-    /// Tempered Jacobian T = Jmin = h³/λ.
+    /// Tempered Jacobian T = Jmin = ℓ_e h_c²/λ (docs/method.md §6.11).
     pub t: f64,
 }
 
@@ -278,8 +278,9 @@ impl<'a> ContactSet<'a> {
 }
 
 /// Each element's law: D_c of its pair's softer body `soft(pair)` with
-/// E_c (default: that body's E), and T = h³/λ_c (default λ_c: `size`, the
-/// model size). Refuses a T that is not a positive finite number.
+/// E_c (default: that body's E), and T = ℓ_e h_c²/λ_c (ℓ_e its interface
+/// edge, h_c its pair's shortest one, default λ_c: `size`, the model size;
+/// docs/method.md §6.11). Refuses a T that is not a positive finite number.
 pub fn element_laws(
     base: usize,
     elements: &[ContactElement],
@@ -288,13 +289,15 @@ pub fn element_laws(
     options: &ContactOptions,
 ) -> Result<Vec<ElementLaw>> {
     let lambda_c = options.lambda.unwrap_or(size);
+    // docs/method.md §6.11: T_e = ℓ_e h_c² / λ, not h_e³ / λ.
+    let jmins = contact_jmins(elements, lambda_c);
     let laws: Vec<ElementLaw> = elements
         .iter()
-        .map(|el| {
+        .zip(jmins)
+        .map(|(el, t)| {
             let soft = soft(el.pair);
             let e_c = options.contact_modulus.unwrap_or(soft.young());
             let d = law_matrix(options.law, e_c, &soft, el.normal);
-            let t = jmin_of_lambda(el.h, lambda_c);
             ElementLaw { d, t }
         })
         .collect();
@@ -302,7 +305,7 @@ pub fn element_laws(
         return Err(Error::new(
             Status::NumericalFailure,
             format!(
-                "contact element {}: Jmin = h³/λ is not a positive finite number",
+                "contact element {}: Jmin = ℓ_e h_c²/λ is not a positive finite number",
                 k + base
             ),
         ));

@@ -5,6 +5,7 @@
 //! x = L/2 ± C, mirror-symmetric about x = L/2.
 
 pub mod hertz;
+pub mod patch;
 
 use super::meshgen::{Diagonal, MeshBuilder, subdivide, subdivide_symmetric};
 use crate::contact::ContactOptions;

@@ -1,0 +1,181 @@
+//! The contact traction read back at the interface nodes and the actual
+//! interpenetration of the two deformed interfaces (docs/method.md §6.11).
+//!
+//! With T_e = ℓ_e h_c²/λ the force of every element of B is κ ℓ_e/2 times
+//! the gap at its apex, and the nodal forces of a uniform gap are the
+//! consistent loads of a uniform traction on both sides: the contact force
+//! on a node over its tributary length (half its interface edges) is a
+//! traction. An element's own gap is its apex's distance from the line of
+//! its interface edge, which may be extended beyond the edge; the actual
+//! overlap of a node is measured against the edge of the other side its
+//! projection falls on.
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use super::ContactElement;
+use super::mesh::Nodes;
+use crate::fem::element::TriGeometry;
+
+/// The contact pressure at one interface node.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NodalPressure {
+    /// The node (0-based).
+    pub node: usize,
+    /// Normal contact force on the node over its tributary length,
+    /// positive in compression.
+    pub pressure: f64,
+    /// Half the length of the node's interface edges.
+    pub tributary: f64,
+}
+
+/// Position of the apex in `el.nodes`.
+fn apex_position(el: &ContactElement) -> usize {
+    el.nodes.iter().position(|&v| v == el.apex).unwrap_or(2)
+}
+
+/// For each element of B, whether its interface edge lies on side a (the
+/// side its normal points away from): its apex is then on side b, and
+/// moving the apex along +n opens the element (J grows).
+pub fn edge_on_side_a(nodes: Nodes<'_>, elements: &[ContactElement]) -> Vec<bool> {
+    elements
+        .iter()
+        .map(|el| {
+            let geo = TriGeometry::new(&nodes.corners(&el.nodes));
+            let g = geo.g[apex_position(el)];
+            g[0] * el.normal[0] + g[1] * el.normal[1] > 0.0
+        })
+        .collect()
+}
+
+/// The side of every node of B (true: side a) and its tributary length
+/// (half the summed length of the interface edges it ends: each interface
+/// edge is the edge of exactly one element of B).
+fn sides_and_tributaries(
+    elements: &[ContactElement],
+    on_a: &[bool],
+) -> (BTreeMap<usize, bool>, BTreeMap<usize, f64>) {
+    let mut side = BTreeMap::new();
+    let mut tributary = BTreeMap::new();
+    for (el, &a) in elements.iter().zip(on_a) {
+        for &v in &el.nodes {
+            if v == el.apex {
+                side.insert(v, !a);
+                tributary.entry(v).or_insert(0.0);
+            } else {
+                side.insert(v, a);
+                *tributary.entry(v).or_insert(0.0) += 0.5 * el.edge_length;
+            }
+        }
+    }
+    (side, tributary)
+}
+
+/// The contact pressure at every node of B from the contact forces
+/// `force` on the nodes (e.g. `Model::contact_forces`): the normal force
+/// on the node over its tributary length, positive when it pushes the node
+/// into its body. Sorted by node.
+pub fn nodal_pressures(
+    nodes: Nodes<'_>,
+    elements: &[ContactElement],
+    force: impl Fn(usize) -> [f64; 2],
+) -> Vec<NodalPressure> {
+    let on_a = edge_on_side_a(nodes, elements);
+    let (side, tributary) = sides_and_tributaries(elements, &on_a);
+    // The normal of a node: that of an element whose edge it ends, else of
+    // one it is the apex of (both point from a to b).
+    let mut normal: BTreeMap<usize, [f64; 2]> = BTreeMap::new();
+    for el in elements {
+        for &v in &el.nodes {
+            if v != el.apex {
+                normal.insert(v, el.normal);
+            } else {
+                normal.entry(v).or_insert(el.normal);
+            }
+        }
+    }
+    side.iter()
+        .map(|(&node, &on_side_a)| {
+            let (f, n, m) = (force(node), normal[&node], tributary[&node]);
+            let fnormal = f[0] * n[0] + f[1] * n[1];
+            // n points from a to b: compression pushes a along −n, b along +n.
+            let push = if on_side_a { -fnormal } else { fnormal };
+            NodalPressure {
+                node,
+                pressure: if m > 0.0 { push / m } else { 0.0 },
+                tributary: m,
+            }
+        })
+        .collect()
+}
+
+/// The largest interpenetration of the deformed interfaces (linearised:
+/// positions X + u along the initial normals; 0 when none) for the nodal
+/// displacements `disp`: over the nodes of B, how far a node lies beyond
+/// the interface edge of the other side that its projection falls on
+/// (interpolated on that edge, not extended). An element's own
+/// −opening/ℓ_e measures its apex against the extended line of its edge,
+/// which overstates the overlap when the apex lies beyond the edge's ends.
+pub fn max_overlap(
+    nodes: Nodes<'_>,
+    elements: &[ContactElement],
+    disp: impl Fn(usize) -> [f64; 2],
+) -> f64 {
+    let on_a = edge_on_side_a(nodes, elements);
+    let x = nodes.x;
+    // Elements at every node, to find the edges near a node.
+    let mut at: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
+    for (k, el) in elements.iter().enumerate() {
+        for &v in &el.nodes {
+            at.entry(v).or_default().push(k);
+        }
+    }
+    let (side, _) = sides_and_tributaries(elements, &on_a);
+    let point = |w: usize| {
+        let uw = disp(w);
+        [x[w][0] + uw[0], x[w][1] + uw[1]]
+    };
+    let mut worst = 0.0f64;
+    for (&v, &v_on_a) in &side {
+        // Candidate edges: those of the elements within two steps of v.
+        let mut near: BTreeSet<usize> = BTreeSet::new();
+        for &k in &at[&v] {
+            for &w in &elements[k].nodes {
+                near.extend(at[&w].iter().copied());
+            }
+        }
+        let mut best: Option<(f64, f64)> = None; // (distance, gap)
+        for &k in &near {
+            let el = &elements[k];
+            if on_a[k] == v_on_a {
+                continue; // an edge of v's own side
+            }
+            let mut base = el.nodes.iter().copied().filter(|&w| w != el.apex);
+            let (Some(p), Some(q)) = (base.next(), base.next()) else {
+                continue;
+            };
+            let d = [x[q][0] - x[p][0], x[q][1] - x[p][1]];
+            let len2 = d[0] * d[0] + d[1] * d[1];
+            let t = ((x[v][0] - x[p][0]) * d[0] + (x[v][1] - x[p][1]) * d[1]) / len2;
+            if !(-1e-12..=1.0 + 1e-12).contains(&t) {
+                continue;
+            }
+            let at_t = |a: [f64; 2], b: [f64; 2]| {
+                [(1.0 - t) * a[0] + t * b[0], (1.0 - t) * a[1] + t * b[1]]
+            };
+            let c = at_t(x[p], x[q]);
+            let dist = (x[v][0] - c[0]).hypot(x[v][1] - c[1]);
+            let (on_edge, xv) = (at_t(point(p), point(q)), point(v));
+            // Gap along n (from a to b): b's point minus a's point.
+            let (pa, pb) = if v_on_a { (xv, on_edge) } else { (on_edge, xv) };
+            let n = el.normal;
+            let gap = n[0] * (pb[0] - pa[0]) + n[1] * (pb[1] - pa[1]);
+            if best.is_none_or(|(bd, _)| dist < bd) {
+                best = Some((dist, gap));
+            }
+        }
+        if let Some((_, gap)) = best {
+            worst = worst.max(-gap);
+        }
+    }
+    worst
+}
