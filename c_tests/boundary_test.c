@@ -496,10 +496,105 @@ static void a_load_history_steps_reverts_and_restarts_bit_for_bit(void) {
   EXPECT_ERROR(restarted, tfem_set_contact_state(restarted, state, size), TFEM_STATUS_INVALID_ARGUMENT,
                "magic");
   EXPECT_ERROR(m, tfem_step(m, NAN, NULL, NULL), TFEM_STATUS_INVALID_ARGUMENT, "load_factor");
+  /* A first step that fails leaves no history behind (found by the API
+   * fuzzer: the state of the failed step was kept). */
+  tfem_model *fresh = two_blocks();
+  tfem_contact_options capped;
+  tfem_contact_options_default(&capped);
+  capped.max_iterations = 1;
+  EXPECT_ERROR(fresh, tfem_step(fresh, 1.0, &capped, NULL), TFEM_STATUS_NOT_CONVERGED, "");
+  EXPECT_ERROR(fresh, tfem_get_contact_state_size(fresh, &size), TFEM_STATUS_INVALID_STATE, "no load step");
+  tfem_destroy(fresh);
   free(state);
   tfem_destroy(restarted);
   tfem_destroy(one);
   tfem_destroy(m);
+}
+
+static void expect_contact_error(tfem_contact *c, tfem_status got, tfem_status expected,
+                                 const char *needle, const char *needle2, int line) {
+  char msg[512];
+  tfem_contact_last_error(c, msg, sizeof msg);
+  if (got == expected && strstr(msg, needle) != NULL && strstr(msg, needle2) != NULL) {
+    ++passed;
+  } else {
+    ++failed;
+    printf("FAIL line %d: status %d (expected %d), message \"%s\" (expected \"%s\" and \"%s\")\n",
+           line, (int)got, (int)expected, msg, needle, needle2);
+  }
+}
+
+/* A host code that gives one side of an interface clockwise (its body on
+ * the right of every edge) turned its normals inward: B would start
+ * inverted. Refused when the pair is declared, naming both sides; a side
+ * with one edge turned against its neighbours is refused at once, naming
+ * the edge. Two flat sides of 5 nodes on y = 0: the lower body below
+ * (tag 3), the upper body above (tag 4). */
+static void a_host_side_given_clockwise_is_refused(void) {
+  int lower[5], upper[5];
+  double xy[10];
+  int64_t eq_lower[10], eq_upper[10];
+  for (int i = 0; i < 5; ++i) {
+    lower[i] = 100 + i;
+    upper[i] = 200 + i;
+    xy[2 * i] = 0.25 * i;
+    xy[2 * i + 1] = 0.0;
+    eq_lower[2 * i] = 2 * i;
+    eq_lower[2 * i + 1] = 2 * i + 1;
+    eq_upper[2 * i] = 10 + 2 * i;
+    eq_upper[2 * i + 1] = 11 + 2 * i;
+  }
+  /* Counter-clockwise: the lower body's top runs in +x, the upper body's
+   * bottom in -x. */
+  int ccw_lower[8], ccw_upper[8], cw_lower[8], one_turned[8];
+  for (int e = 0; e < 4; ++e) {
+    ccw_lower[2 * e] = lower[e], ccw_lower[2 * e + 1] = lower[e + 1];
+    ccw_upper[2 * e] = upper[e + 1], ccw_upper[2 * e + 1] = upper[e];
+    cw_lower[2 * e] = lower[e + 1], cw_lower[2 * e + 1] = lower[e];
+    one_turned[2 * e] = ccw_lower[2 * e], one_turned[2 * e + 1] = ccw_lower[2 * e + 1];
+  }
+  one_turned[4] = lower[3], one_turned[5] = lower[2]; /* edge 2 turned */
+
+  int a = -1, b = -1, pair = -7;
+  tfem_contact *c = tfem_contact_create(0);
+  CHECK(tfem_contact_add_side(c, 3, 1, 1e9, 0.3, 0, 5, lower, xy, eq_lower, 4, cw_lower, &a) == TFEM_STATUS_OK);
+  CHECK(tfem_contact_add_side(c, 4, 2, 1e9, 0.3, 0, 5, upper, xy, eq_upper, 4, ccw_upper, &b) == TFEM_STATUS_OK);
+  expect_contact_error(c, tfem_contact_add_pair(c, a, b, &pair), TFEM_STATUS_INVALID_CONTACT, "side 3",
+                       "side 4", __LINE__);
+  CHECK(pair == -7);
+  int n_nodes = -1, n_elements = -1;
+  int64_t n_pattern = -1;
+  CHECK(tfem_contact_sizes(c, &n_nodes, &n_elements, &n_pattern) != TFEM_STATUS_OK); /* no pair */
+  tfem_contact_destroy(c);
+
+  c = tfem_contact_create(0);
+  expect_contact_error(c, tfem_contact_add_side(c, 3, 1, 1e9, 0.3, 0, 5, lower, xy, eq_lower, 4, one_turned, &a),
+                       TFEM_STATUS_INVALID_CONTACT, "edge 2 of contact side 3", "left", __LINE__);
+  /* The same context takes the right side afterwards, and the pair. */
+  CHECK(tfem_contact_add_side(c, 3, 1, 1e9, 0.3, 0, 5, lower, xy, eq_lower, 4, ccw_lower, &a) == TFEM_STATUS_OK);
+  CHECK(tfem_contact_add_side(c, 4, 2, 1e9, 0.3, 0, 5, upper, xy, eq_upper, 4, ccw_upper, &b) == TFEM_STATUS_OK);
+  CHECK(tfem_contact_add_pair(c, a, b, &pair) == TFEM_STATUS_OK && pair == 0);
+  CHECK(tfem_contact_sizes(c, &n_nodes, &n_elements, &n_pattern) == TFEM_STATUS_OK && n_nodes == 10 &&
+        n_elements == 8);
+  /* An evaluation that overflows fails with NUMERICAL_FAILURE and writes
+   * nothing (found by the API fuzzer: the buffers were written first). */
+  double u[20], r[20], p[8], *values = malloc((size_t)n_pattern * sizeof(double));
+  int on[8] = {1, 1, 1, 1, 1, 1, 1, 1};
+  CHECK(values != NULL && tfem_contact_set_active(c, on, 8) == TFEM_STATUS_OK);
+  for (int i = 0; i < 20; ++i) u[i] = (i % 2 ? -1e300 : 1e300) * (i < 10 ? 1 : -1), r[i] = 7.0;
+  for (int i = 0; i < 8; ++i) p[i] = 7.0;
+  for (int64_t k = 0; k < n_pattern; ++k) values[k] = 7.0;
+  expect_contact_error(c, tfem_contact_evaluate(c, u, 20, values, (size_t)n_pattern, r, 20),
+                       TFEM_STATUS_NUMERICAL_FAILURE, "not finite", "interface node", __LINE__);
+  expect_contact_error(c, tfem_contact_pressures(c, u, 20, p, 8), TFEM_STATUS_NUMERICAL_FAILURE, "not finite",
+                       "contact element", __LINE__);
+  int untouched = 1;
+  for (int i = 0; i < 20; ++i) untouched &= r[i] == 7.0;
+  for (int i = 0; i < 8; ++i) untouched &= p[i] == 7.0;
+  for (int64_t k = 0; k < n_pattern; ++k) untouched &= values[k] == 7.0;
+  CHECK(untouched);
+  free(values);
+  tfem_contact_destroy(c);
 }
 
 int main(void) {
@@ -525,6 +620,7 @@ int main(void) {
   messages_stay_short_and_the_thread_slot_is_cleared();
   a_host_gets_contact_forces_gaps_and_the_contact_mesh_before_a_solve();
   a_load_history_steps_reverts_and_restarts_bit_for_bit();
+  a_host_side_given_clockwise_is_refused();
 
   fflush(stderr);
   fseek(capture, 0, SEEK_END);

@@ -1590,6 +1590,168 @@ fn host_codes(report: &mut String, a: &Args) {
     writeln!(report).unwrap();
 }
 
+/// The Q4 host of examples/host_q4.cpp (its own bilinear quadrilaterals,
+/// Eigen's sparse Cholesky, tfem_contact's contributions) beside tfem's P1
+/// on the seed scene at 2C/L = 0.4: error against run time. Needs g++ and
+/// Eigen (Debian's libeigen3-dev, which the README's test command installs);
+/// without them the section says so.
+fn q4_host(report: &mut String, a: &Args) {
+    let levels: Vec<usize> = if a.quick {
+        vec![16, 32]
+    } else {
+        vec![16, 32, 64, 128, 256, 512]
+    };
+    writeln!(
+        report,
+        "## Error against run time: a Q4 host code beside P1\n\n\
+         `examples/host_q4.cpp`, a host code with its own bilinear quadrilaterals (2×2 Gauss), its \
+         own assembly, Eigen's SimplicialLLT and its own active-set loop on tfem's contact \
+         contributions (`tfem_contact_*`), against tfem's own P1 solve, on the seed scene at \
+         2C/L = 0.4 (same h: the Q4 mesh has half as many cells as P1 has triangles, hence about \
+         the same unknowns). Relative errors against the shipped reference. Times: the whole \
+         solve without the mesh; the host refactorises at every active-set iteration.\n"
+    )
+    .unwrap();
+    let lib = std::env::current_exe()
+        .ok()
+        .and_then(|e| e.parent()?.parent().map(Path::to_path_buf))
+        .unwrap_or_default();
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let exe = lib.join("report_host_q4");
+    let eigen = Path::new("/usr/include/eigen3");
+    let built = lib.join("libtfem.so").exists()
+        && eigen.exists()
+        && std::process::Command::new("g++")
+            .args(["-O2", "-std=c++17", "-I/usr/include/eigen3"])
+            .arg(format!("-I{}", root.join("include").display()))
+            .arg(root.join("examples/host_q4.cpp"))
+            .arg("-o")
+            .arg(&exe)
+            .arg(format!("-L{}", lib.display()))
+            .arg("-ltfem")
+            .arg(format!("-Wl,-rpath,{}", lib.display()))
+            .status()
+            .is_ok_and(|s| s.success());
+    if !built {
+        writeln!(
+            report,
+            "Not measured: g++, Eigen (/usr/include/eigen3) or {}/libtfem.so missing \
+             (`cargo build --release --lib`).\n",
+            lib.display()
+        )
+        .unwrap();
+        return;
+    }
+    let mut args: Vec<String> = vec!["--c".into(), "0.2".into(), "--json".into()];
+    for &n in &levels {
+        args.extend(["--n".into(), n.to_string()]);
+    }
+    args.extend(["--reference".into(), a.reference.display().to_string()]);
+    let out = match std::process::Command::new(&exe).args(&args).output() {
+        Ok(o) if o.status.success() => String::from_utf8_lossy(&o.stdout).to_string(),
+        Ok(o) => {
+            writeln!(
+                report,
+                "host_q4 failed: {}\n",
+                String::from_utf8_lossy(&o.stderr)
+            )
+            .unwrap();
+            return;
+        }
+        Err(e) => {
+            writeln!(report, "host_q4 did not run: {e}\n").unwrap();
+            return;
+        }
+    };
+    let q4: Vec<Value> = out
+        .lines()
+        .filter(|l| l.starts_with("{\"element\""))
+        .filter_map(|l| serde_json::from_str(l).ok())
+        .collect();
+    let case = reference(a).map(|r| r["cases"]["canonical_0.4"].clone());
+    writeln!(
+        report,
+        "| h | P1 unknowns | P1 time [s] | P1 err gap_edge | P1 err v_top | P1 err compliance | Q4 unknowns | Q4 time [s] | Q4 iterations | Q4 err gap_edge | Q4 err v_top | Q4 err compliance |\n|---|---|---|---|---|---|---|---|---|---|---|---|"
+    )
+    .unwrap();
+    let mut errs: [Vec<f64>; 6] = Default::default();
+    let mut hs = Vec::new();
+    for (&n, q) in levels.iter().zip(&q4) {
+        let mut s = TwoBlocks {
+            c: 0.2,
+            mesh_size: 1.0 / n as f64,
+            ..Default::default()
+        }
+        .build()
+        .expect("scene");
+        let t0 = Instant::now();
+        let r = s.solve(&ContactOptions::default()).expect("P1 solve");
+        let t = t0.elapsed().as_secs_f64();
+        let rel = |name: &str, v: f64| -> f64 {
+            case.as_ref()
+                .and_then(|cs| cs[name]["value"].as_f64())
+                .map_or(f64::NAN, |rv| (v - rv) / rv)
+        };
+        let p1 = [
+            rel("gap_edge", r.gap_edge),
+            rel("v_top", r.v_top),
+            rel("compliance", r.compliance),
+        ];
+        let qe = ["gap_edge", "v_top", "compliance"].map(|k| {
+            q[format!("{k}_relative_error")]
+                .as_f64()
+                .unwrap_or(f64::NAN)
+        });
+        hs.push(1.0 / n as f64);
+        for k in 0..3 {
+            errs[k].push(p1[k]);
+            errs[3 + k].push(qe[k]);
+        }
+        writeln!(
+            report,
+            "| 1/{n} | {} | {t:.3} | {:+.2e} | {:+.2e} | {:+.2e} | {} | {:.3} | {} | {:+.2e} | {:+.2e} | {:+.2e} |",
+            r.report.info.unknowns,
+            p1[0],
+            p1[1],
+            p1[2],
+            q["unknowns"],
+            q["time_total_s"].as_f64().unwrap_or(f64::NAN),
+            q["iterations"],
+            qe[0],
+            qe[1],
+            qe[2]
+        )
+        .unwrap();
+    }
+    if hs.len() >= 3 {
+        let k0 = hs.len() - 3;
+        let rate = |e: &[f64]| fitted_rate_of(&hs[k0..], &e[k0..]);
+        writeln!(
+            report,
+            "\nFitted log-log rates over the three finest sizes: P1 gap_edge {:.2}, v_top {:.2}, \
+             compliance {:.2}; Q4 gap_edge {:.2}, v_top {:.2}, compliance {:.2}.",
+            rate(&errs[0]),
+            rate(&errs[1]),
+            rate(&errs[2]),
+            rate(&errs[3]),
+            rate(&errs[4]),
+            rate(&errs[5])
+        )
+        .unwrap();
+    }
+    writeln!(report).unwrap();
+}
+
+/// Least-squares slope of log|e| against log h.
+fn fitted_rate_of(h: &[f64], e: &[f64]) -> f64 {
+    let n = h.len() as f64;
+    let (x, y): (Vec<f64>, Vec<f64>) = h.iter().zip(e).map(|(h, e)| (h.ln(), e.abs().ln())).unzip();
+    let (mx, my) = (x.iter().sum::<f64>() / n, y.iter().sum::<f64>() / n);
+    let sxy: f64 = x.iter().zip(&y).map(|(x, y)| (x - mx) * (y - my)).sum();
+    let sxx: f64 = x.iter().map(|x| (x - mx) * (x - mx)).sum();
+    sxy / sxx
+}
+
 fn built(report: &mut String) {
     writeln!(report, "## What each scene built\n").unwrap();
     writeln!(report, "| scene | contact elements in B | matrix nnz | factor nnz | memory [MB] |\n|---|---|---|---|---|").unwrap();
@@ -1699,6 +1861,7 @@ fn main() {
     speed(&mut report, &a);
     histories(&mut report, &a);
     host_codes(&mut report, &a);
+    q4_host(&mut report, &a);
     built(&mut report);
     // Every section, hence every table, names where and when it was measured.
     let mut report: String = report

@@ -1225,7 +1225,8 @@ module tfem
     !! coordinates `xy` (2 per node) and the equations of their x and y unknowns `equations` (2 per
     !! node, in the index base; a value below the base marks a fixed DOF without an equation), and
     !! `n_edges` edges `edges` (2 host node numbers each), each given with its body on its left (the
-    !! counter-clockwise boundary orientation). A node of two sides must come with the same
+    !! counter-clockwise boundary orientation); an edge that runs against its neighbour is refused
+    !! (TFEM_STATUS_INVALID_CONTACT, naming it). A node of two sides must come with the same
     !! coordinates and equations. Writes the side's index (0-based) to `side` (may be NULL). On
     !! error nothing changes. Fortran: `side` is OPTIONAL: omit it to pass NULL.
     function tfem_contact_add_side(context, tag, body, young, poisson, plane_mode, n_nodes, nodes, xy, &
@@ -1251,9 +1252,10 @@ module tfem
 
   interface
     !> Declares sides `side_a` and `side_b` (on different bodies) a contact pair: the contact mesh B
-    !! is built from their matching nodes, or by triangulating the strip between them. Writes the
-    !! pair's index (0-based) to `pair` (may be NULL). Fortran: `pair` is OPTIONAL: omit it to pass
-    !! NULL.
+    !! is built from their matching nodes, or by triangulating the strip between them. Two sides
+    !! whose outward normals point the same way (one of them given clockwise) are refused with
+    !! TFEM_STATUS_INVALID_CONTACT naming both. Writes the pair's index (0-based) to `pair` (may be
+    !! NULL). Fortran: `pair` is OPTIONAL: omit it to pass NULL.
     function tfem_contact_add_pair(context, side_a, side_b, pair) &
         bind(C, name="tfem_contact_add_pair") result(status)
       import
@@ -1341,10 +1343,12 @@ module tfem
     !! active elements, 2 per interface node, into `residual`. `values` may be NULL; `residual` may
     !! be NULL. A linear host adds the values to its matrix and minus the residual at u = 0 (the
     !! load of initial gaps) to its right-hand side; a Newton host adds the values to its tangent
-    !! and the residual at its current u to its residual. Allocates nothing. Fortran: `values` and
-    !! `residual` are OPTIONAL: omit them to pass NULL. `u_length`, `values_length` and
-    !! `residual_length` take integer(c_size_t) or default integers (kind tfem_length_kind), all of
-    !! one kind; a negative length is passed as 0.
+    !! and the residual at its current u to its residual. The contact law is linear in u for a given
+    !! active set: the values depend on the active set only, not on `u`, and change only when
+    !! `tfem_contact_update` or `tfem_contact_set_active` changes the set. Allocates nothing.
+    !! Fortran: `values` and `residual` are OPTIONAL: omit them to pass NULL. `u_length`,
+    !! `values_length` and `residual_length` take integer(c_size_t) or default integers (kind
+    !! tfem_length_kind), all of one kind; a negative length is passed as 0.
     function tfem_contact_evaluate(context, u, u_length, values, values_length, residual, residual_length) &
         bind(C, name="tfem_contact_evaluate") result(status)
       import
@@ -1404,9 +1408,12 @@ module tfem
     !! (may be NULL) is set to 1 if the set changed, 0 if it settled. The same test and cycle
     !! detection as tfem's own loop: a set visited before, or more calls than the options'
     !! `max_iterations` since the last `tfem_contact_restart`, gives TFEM_STATUS_NOT_CONVERGED with
-    !! the history, the set unchanged. Fortran: `changed` is OPTIONAL: omit it to pass NULL.
-    !! `u_length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
-    !! negative length is passed as 0.
+    !! the history, the set unchanged. Call it with converged displacements of the host's problem
+    !! for the current set (after its Newton loop, not at every Newton iteration): the test judges
+    !! the solution, and a mid-Newton iterate may switch elements that the converged state would
+    !! not. Fortran: `changed` is OPTIONAL: omit it to pass NULL. `u_length` takes an
+    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
+    !! as 0.
     function tfem_contact_update(context, u, u_length, changed) &
         bind(C, name="tfem_contact_update") result(status)
       import

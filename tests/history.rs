@@ -191,3 +191,66 @@ fn a_failed_step_changes_nothing() {
         "the next step is as if nothing failed"
     );
 }
+
+#[test]
+fn a_failed_first_step_leaves_no_history() {
+    let options = ContactOptions::default();
+    let capped = ContactOptions {
+        max_iterations: 1,
+        ..options
+    };
+    let run = |fail: bool| {
+        let mut model = scene(0.1);
+        if fail {
+            // From the initial set the seed scene needs several iterations.
+            let err = model.step(1.0, &capped).unwrap_err();
+            assert_eq!(err.status(), Status::NotConverged);
+            assert_eq!(
+                model.contact_state().unwrap_err().status(),
+                Status::InvalidState,
+                "no step was taken: no contact state"
+            );
+        }
+        let report = model.step(0.5, &options).unwrap();
+        let half = bits(&model.displacements().unwrap());
+        let state = model.contact_state().unwrap();
+        (report.info.factorizations, half, state)
+    };
+    assert_eq!(run(true), run(false), "as if the failed step never ran");
+}
+
+#[test]
+fn a_step_that_fails_on_new_loads_keeps_the_history_and_the_next_step() {
+    let options = ContactOptions::default();
+    let capped = ContactOptions {
+        max_iterations: 1,
+        ..options
+    };
+    let run = |fail: bool| {
+        let mut model = scene(0.1);
+        model.step(1.0, &options).unwrap();
+        // A load off the axis: the upper block tilts and the contact set
+        // moves by more than one iteration allows.
+        let nodes = model.mesh().unwrap().nodes();
+        let corner = (0..nodes.len())
+            .max_by(|&a, &b| {
+                let key = |v: usize| (nodes[v][1], -nodes[v][0]);
+                key(a).partial_cmp(&key(b)).unwrap()
+            })
+            .unwrap();
+        model.add_nodal_force(corner, [0.0, -4e6]).unwrap();
+        if fail {
+            assert!(
+                model.step(1.0, &capped).is_err(),
+                "the capped step must fail"
+            );
+        }
+        let report = model.step(0.5, &options).unwrap();
+        (
+            report.info.factorizations,
+            bits(&model.displacements().unwrap()),
+            model.contact_state().unwrap(),
+        )
+    };
+    assert_eq!(run(true), run(false), "as if the failed step never ran");
+}

@@ -64,6 +64,45 @@ fn add_side(hc: &mut HostContact, model: &Model, host: &Host, tag: i32) -> usize
 
 /// [`add_side`] with the equations given in index base `base`.
 fn add_side_based(hc: &mut HostContact, model: &Model, host: &Host, tag: i32, base: i64) -> usize {
+    side_args(model, host, tag, base, |_| false)
+        .add(hc)
+        .unwrap()
+}
+
+/// What [`HostContact::add_side`] is given for the mesh edges tagged `tag`;
+/// the edges for which `reverse(k)` holds are turned to have their body on
+/// the right (a host's mistake).
+struct SideArgs {
+    tag: i32,
+    body: i32,
+    material: tfem::Material,
+    ids: Vec<i64>,
+    xy: Vec<[f64; 2]>,
+    eq: Vec<[i64; 2]>,
+    edges: Vec<[i64; 2]>,
+}
+
+impl SideArgs {
+    fn add(&self, hc: &mut HostContact) -> tfem::Result<usize> {
+        hc.add_side(
+            self.tag,
+            self.body,
+            self.material,
+            &self.ids,
+            &self.xy,
+            &self.eq,
+            &self.edges,
+        )
+    }
+}
+
+fn side_args(
+    model: &Model,
+    host: &Host,
+    tag: i32,
+    base: i64,
+    reverse: impl Fn(usize) -> bool,
+) -> SideArgs {
     let mesh: &Mesh = model.mesh().unwrap();
     let mut edges = Vec::new();
     let mut nodes = Vec::new();
@@ -72,7 +111,8 @@ fn add_side_based(hc: &mut HostContact, model: &Model, host: &Host, tag: i32, ba
         let [p, q] = e.nodes;
         let (a, b, c) = (mesh.nodes()[p], mesh.nodes()[q], mesh.nodes()[third]);
         let left = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]) > 0.0;
-        edges.push(if left {
+        let flip = reverse(edges.len());
+        edges.push(if left != flip {
             [p as i64, q as i64]
         } else {
             [q as i64, p as i64]
@@ -89,8 +129,15 @@ fn add_side_based(hc: &mut HostContact, model: &Model, host: &Host, tag: i32, ba
         .collect();
     let ids: Vec<i64> = nodes.iter().map(|&v| v as i64).collect();
     let material = *model.material(body).unwrap();
-    hc.add_side(tag, body, material, &ids, &xy, &eq, &edges)
-        .unwrap()
+    SideArgs {
+        tag,
+        body,
+        material,
+        ids,
+        xy,
+        eq,
+        edges,
+    }
 }
 
 fn e_owner(mesh: &Mesh, tag: i32) -> usize {
@@ -244,4 +291,52 @@ fn bad_host_input_names_the_node_the_side_or_the_buffer() {
     let err = hc.add_pair(s0, 3).unwrap_err();
     assert!(err.message().contains("side 3"), "{}", err.message());
     assert_eq!(hc.pattern().unwrap_err().status(), Status::InvalidState);
+}
+
+/// The seed scene's host (h = 1/8) and its two sides, the lower one built
+/// with `reverse_lower` deciding which of its edges are turned around.
+fn reversed_scene(
+    reverse_lower: impl Fn(usize) -> bool,
+    reverse_upper: impl Fn(usize) -> bool,
+) -> (HostContact, tfem::Result<usize>, tfem::Result<usize>) {
+    let scene = TwoBlocks {
+        mesh_size: 1.0 / 8.0,
+        ..Default::default()
+    };
+    let built = scene.build().unwrap();
+    let host = host_of(&built.model);
+    let mut hc = HostContact::new(0, ContactOptions::default()).unwrap();
+    let a = side_args(&built.model, &host, TAG_CONTACT_LOWER, 0, reverse_lower).add(&mut hc);
+    let b = side_args(&built.model, &host, TAG_CONTACT_UPPER, 0, reverse_upper).add(&mut hc);
+    (hc, a, b)
+}
+
+#[test]
+fn a_side_given_clockwise_is_refused_naming_both_sides() {
+    for (lower, upper) in [(true, false), (false, true)] {
+        let (mut hc, a, b) = reversed_scene(move |_| lower, move |_| upper);
+        let err = hc.add_pair(a.unwrap(), b.unwrap()).unwrap_err();
+        assert_eq!(err.status(), Status::InvalidContact);
+        let m = err.message();
+        assert!(
+            m.contains(&format!("side {TAG_CONTACT_LOWER}"))
+                && m.contains(&format!("side {TAG_CONTACT_UPPER}"))
+                && m.contains("left"),
+            "{m}"
+        );
+        // Nothing was added: the context still has no pair.
+        assert_eq!(hc.pattern().unwrap_err().status(), Status::InvalidState);
+    }
+}
+
+#[test]
+fn a_side_with_one_edge_turned_around_is_refused_naming_the_edge() {
+    let (_, a, _) = reversed_scene(|k| k == 3, |_| false);
+    let err = a.unwrap_err();
+    assert_eq!(err.status(), Status::InvalidContact);
+    let m = err.message();
+    assert!(
+        m.contains(&format!("side {TAG_CONTACT_LOWER}")) && m.contains("edge"),
+        "{m}"
+    );
 }

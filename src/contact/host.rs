@@ -22,7 +22,7 @@
 
 use std::collections::HashMap;
 
-use super::mesh::{Nodes, Side, checked_triangles, strip};
+use super::mesh::{Nodes, Side, check_facing, checked_triangles, strip};
 use super::set::{ActiveSet, ContactSet, element_laws, softer};
 use super::{ContactElement, ContactOptions};
 use crate::error::{Error, Result, ensure_finite};
@@ -45,6 +45,10 @@ struct Built {
     rows: Vec<i64>,
     cols: Vec<i64>,
     entries: Vec<(u32, u8, u8)>,
+    /// Per-node values (2 per interface node) computed here and checked
+    /// before they reach a caller's buffer: a failed call writes nothing,
+    /// and evaluation allocates nothing.
+    scratch: Vec<f64>,
 }
 
 /// The contact of a host code's bodies (module documentation).
@@ -319,7 +323,10 @@ impl HostContact {
         let (a, b) = (&self.sides[pair.sides[0]].0, &self.sides[pair.sides[1]].0);
         match &pair.triangles {
             None => strip(nodes, index, a, b),
-            Some(t) => Ok(checked_triangles(nodes, index, a, b, t)?.0),
+            Some(t) => {
+                check_facing(&self.x, a, b)?;
+                Ok(checked_triangles(nodes, index, a, b, t)?.0)
+            }
         }
     }
 
@@ -366,6 +373,7 @@ impl HostContact {
             rows,
             cols,
             entries,
+            scratch: vec![0.0; 2 * self.x.len()],
         });
         Ok(())
     }
@@ -533,46 +541,61 @@ impl HostContact {
         self.setup()?;
         let n_nodes = self.x.len();
         let b = Self::ready(&mut self.built);
-        if let Some(values) = values {
-            if values.len() != b.entries.len() {
-                return Err(Error::argument(format!(
-                    "`values` holds {} values but the pattern has {}",
-                    values.len(),
-                    b.entries.len()
-                )));
-            }
-            let active = b.active.active();
-            for (v, &(k, a, c)) in values.iter_mut().zip(&b.entries) {
-                let k = k as usize;
-                *v = match active[k] {
-                    true => b.set.stiffness(k).k[6 * a as usize + c as usize],
-                    false => 0.0,
-                };
-            }
+        // Every check first, then the writes: on error the caller's
+        // buffers are as they were.
+        if let Some(values) = &values
+            && values.len() != b.entries.len()
+        {
+            return Err(Error::argument(format!(
+                "`values` holds {} values but the pattern has {}",
+                values.len(),
+                b.entries.len()
+            )));
         }
-        if let Some(residual) = residual {
-            if residual.len() != 2 * n_nodes {
-                return Err(Error::argument(format!(
-                    "`residual` holds {} values but the {} interface nodes need {}",
-                    residual.len(),
-                    n_nodes,
-                    2 * n_nodes
-                )));
-            }
-            residual.fill(0.0);
+        if let Some(residual) = &residual
+            && residual.len() != 2 * n_nodes
+        {
+            return Err(Error::argument(format!(
+                "`residual` holds {} values but the {} interface nodes need {}",
+                residual.len(),
+                n_nodes,
+                2 * n_nodes
+            )));
+        }
+        let active = b.active.active();
+        let value = |&(k, a, c): &(u32, u8, u8)| match active[k as usize] {
+            true => b.set.stiffness(k as usize).k[6 * a as usize + c as usize],
+            false => 0.0,
+        };
+        if values.is_some() {
+            let base = self.base;
+            let name = |k: usize| format!("pattern entry {}", k + base);
+            ensure_finite(b.entries.iter().map(value), 1, "contact tangent", name)?;
+        }
+        if residual.is_some() {
+            let r = &mut b.scratch;
+            r.fill(0.0);
             for (k, el) in b.set.elements().iter().enumerate() {
-                if !b.active.active()[k] {
+                if !active[k] {
                     continue;
                 }
                 let cs = b.set.stiffness(k);
                 let ue: [f64; 6] = std::array::from_fn(|a| u[2 * el.nodes[a / 2] + a % 2]);
                 for a in 0..6 {
                     let ku: f64 = (0..6).map(|c| cs.k[6 * a + c] * ue[c]).sum();
-                    residual[2 * el.nodes[a / 2] + a % 2] += ku - cs.f0[a];
+                    r[2 * el.nodes[a / 2] + a % 2] += ku - cs.f0[a];
                 }
             }
             let name = |v: usize| format!("interface node {}", self.node_id[v]);
-            ensure_finite(residual.iter().copied(), 2, "contact residual", name)?;
+            ensure_finite(r.iter().copied(), 2, "contact residual", name)?;
+        }
+        if let Some(values) = values {
+            for (v, e) in values.iter_mut().zip(&b.entries) {
+                *v = value(e);
+            }
+        }
+        if let Some(residual) = residual {
+            residual.copy_from_slice(&b.scratch);
         }
         Ok(())
     }
@@ -621,21 +644,26 @@ impl HostContact {
                 out.len()
             )));
         }
-        let b = self.built()?;
-        out.fill(f64::INFINITY);
+        self.setup()?;
+        let b = Self::ready(&mut self.built);
+        let g = &mut b.scratch[..n];
+        g.fill(f64::INFINITY);
         for (k, el) in b.set.elements().iter().enumerate() {
             if el.edge_length <= 0.0 {
                 continue;
             }
             let ue: [f64; 6] = std::array::from_fn(|a| u[2 * el.nodes[a / 2] + a % 2]);
-            let g = b.set.opening(k, &ue) / el.edge_length;
+            let gap = b.set.opening(k, &ue) / el.edge_length;
             for &v in &el.nodes {
-                out[v] = out[v].min(g);
+                g[v] = g[v].min(gap);
             }
         }
-        out.iter_mut()
+        g.iter_mut()
             .filter(|g| **g == f64::INFINITY)
             .for_each(|g| *g = 0.0);
+        let name = |v: usize| format!("interface node {}", self.node_id[v]);
+        ensure_finite(g.iter().copied(), 1, "normal gap", name)?;
+        out.copy_from_slice(g);
         Ok(())
     }
 
@@ -643,7 +671,9 @@ impl HostContact {
     /// `u` (a stress, positive in compression; zero when inactive).
     pub fn pressures(&mut self, u: &[f64], out: &mut [f64]) -> Result<()> {
         self.check_u(u)?;
-        let b = self.built()?;
+        self.setup()?;
+        let base = self.base;
+        let b = Self::ready(&mut self.built);
         if out.len() != b.set.len() {
             return Err(Error::argument(format!(
                 "`pressures` holds {} values but there are {} contact elements",
@@ -651,17 +681,27 @@ impl HostContact {
                 b.set.len()
             )));
         }
-        for (k, el) in b.set.elements().iter().enumerate() {
-            out[k] = match b.active.active()[k] {
-                true => {
-                    let ue: [f64; 6] = std::array::from_fn(|a| u[2 * el.nodes[a / 2] + a % 2]);
-                    b.set.pressure(k, &ue)
-                }
-                false => 0.0,
-            };
-        }
-        let base = self.base;
+        let elements = b.set.elements();
+        let pressure = |k: usize| match b.active.active()[k] {
+            true => {
+                let tri = &elements[k].nodes;
+                let ue: [f64; 6] = std::array::from_fn(|a| u[2 * tri[a / 2] + a % 2]);
+                b.set.pressure(k, &ue)
+            }
+            false => 0.0,
+        };
+        // Checked before anything is written (a pass more: cheap beside
+        // an allocation, which evaluation avoids).
         let name = |k: usize| format!("contact element {}", k + base);
-        ensure_finite(out.iter().copied(), 1, "contact pressure", name)
+        ensure_finite(
+            (0..elements.len()).map(pressure),
+            1,
+            "contact pressure",
+            name,
+        )?;
+        for (k, p) in out.iter_mut().enumerate() {
+            *p = pressure(k);
+        }
+        Ok(())
     }
 }

@@ -54,6 +54,11 @@ impl Side {
         if edges.is_empty() {
             return Err(Error::contact(format!("contact side {tag} has no edges")));
         }
+        // The edge that starts, and the one that ends, at each node: along
+        // a chain of consistently oriented edges each node starts and ends
+        // at most one.
+        let mut starts: HashMap<usize, usize> = HashMap::new();
+        let mut ends: HashMap<usize, usize> = HashMap::new();
         for (k, &[p, q]) in edges.iter().enumerate() {
             let (xp, xq) = (x[p], x[q]);
             let len = dist(xp, xq);
@@ -75,6 +80,19 @@ impl Side {
                     p + base,
                     q + base
                 )));
+            }
+            for (v, seen) in [(p, &mut starts), (q, &mut ends)] {
+                if let Some(j) = seen.insert(v, k) {
+                    return Err(Error::contact(format!(
+                        "edge {} of contact side {tag} (nodes {}, {}) runs against edge {} at node {}: \
+                         give every edge with its body on its left (counter-clockwise)",
+                        k + base,
+                        p + base,
+                        q + base,
+                        j + base,
+                        v + base
+                    )));
+                }
             }
             side.nodes.insert(p);
             side.nodes.insert(q);
@@ -638,8 +656,45 @@ pub fn build(mesh: &Mesh, pair: usize, tag_a: i32, tag_b: i32) -> Result<Vec<Con
     strip(Nodes::of(mesh), pair, &a, &b)
 }
 
+/// Refuses two sides whose outward normals point the same way: facing
+/// each other, their length-weighted mean normals are opposed. A host that
+/// gives one side's edges with the body on the right (clockwise) turns its
+/// normals inward, and B would start inverted everywhere. Sides that curl
+/// round (mean normal shorter than half their length, e.g. a closed ring)
+/// are not judged by their mean.
+pub fn check_facing(x: &[[f64; 2]], a: &Side, b: &Side) -> Result<()> {
+    let mean = |s: &Side| {
+        let (mut n, mut len) = ([0.0, 0.0], 0.0);
+        for (&(p, q), m) in &s.edges {
+            let l = dist(x[p], x[q]);
+            n[0] += m[0] * l;
+            n[1] += m[1] * l;
+            len += l;
+        }
+        (n, n[0].hypot(n[1]) >= 0.5 * len)
+    };
+    let ((na, ja), (nb, jb)) = (mean(a), mean(b));
+    if ja && jb && na[0] * nb[0] + na[1] * nb[1] > 0.0 {
+        let unit = |n: [f64; 2]| {
+            let l = n[0].hypot(n[1]);
+            format!("({:.3}, {:.3})", n[0] / l, n[1] / l)
+        };
+        return Err(Error::contact(format!(
+            "contact side {} (outward normal {}) and side {} (outward normal {}) do not face each \
+             other: one of them is given with its body on the right; give every edge with its \
+             body on its left (counter-clockwise)",
+            a.tag,
+            unit(na),
+            b.tag,
+            unit(nb)
+        )));
+    }
+    Ok(())
+}
+
 /// [`build`] on two sides.
 pub fn strip(nodes: Nodes<'_>, pair: usize, a: &Side, b: &Side) -> Result<Vec<ContactElement>> {
+    check_facing(nodes.x, a, b)?;
     match conforming(nodes, pair, a, b) {
         Ok(elements) => Ok(elements),
         Err(conforming) => nonconforming(nodes, pair, a, b).map_err(|e| {

@@ -130,8 +130,10 @@ pub unsafe extern "C" fn tfem_contact_set_options(
 /// unknowns `equations` (2 per node, in the index base; a value below the
 /// base marks a fixed DOF without an equation), and `n_edges` edges
 /// `edges` (2 host node numbers each), each given with its body on its
-/// left (the counter-clockwise boundary orientation). A node of two sides
-/// must come with the same coordinates and equations. Writes the side's
+/// left (the counter-clockwise boundary orientation); an edge that runs
+/// against its neighbour is refused (TFEM_STATUS_INVALID_CONTACT, naming
+/// it). A node of two sides must come with the same coordinates and
+/// equations. Writes the side's
 /// index (0-based) to `side` (may be NULL). On error nothing changes.
 #[unsafe(no_mangle)]
 #[allow(clippy::too_many_arguments)]
@@ -180,7 +182,9 @@ pub unsafe extern "C" fn tfem_contact_add_side(
 
 /// Declares sides `side_a` and `side_b` (on different bodies) a contact
 /// pair: the contact mesh B is built from their matching nodes, or by
-/// triangulating the strip between them. Writes the pair's index (0-based)
+/// triangulating the strip between them. Two sides whose outward normals
+/// point the same way (one of them given clockwise) are refused with
+/// TFEM_STATUS_INVALID_CONTACT naming both. Writes the pair's index (0-based)
 /// to `pair` (may be NULL).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_add_pair(
@@ -302,7 +306,10 @@ pub unsafe extern "C" fn tfem_contact_pattern(
 /// `residual` may be NULL. A linear host adds the values to its matrix and minus the
 /// residual at u = 0 (the load of initial gaps) to its right-hand side; a
 /// Newton host adds the values to its tangent and the residual at its
-/// current u to its residual. Allocates nothing.
+/// current u to its residual. The contact law is linear in u for a given
+/// active set: the values depend on the active set only, not on `u`, and
+/// change only when `tfem_contact_update` or `tfem_contact_set_active`
+/// changes the set. Allocates nothing.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_evaluate(
     context: *mut TfemContact,
@@ -375,7 +382,11 @@ pub unsafe extern "C" fn tfem_contact_scatter_add(
 /// set changed, 0 if it settled. The same test and cycle detection as
 /// tfem's own loop: a set visited before, or more calls than the options'
 /// `max_iterations` since the last `tfem_contact_restart`, gives
-/// TFEM_STATUS_NOT_CONVERGED with the history, the set unchanged.
+/// TFEM_STATUS_NOT_CONVERGED with the history, the set unchanged. Call
+/// it with converged displacements of the host's problem for the current
+/// set (after its Newton loop, not at every Newton iteration): the test
+/// judges the solution, and a mid-Newton iterate may switch elements that
+/// the converged state would not.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_update(
     context: *mut TfemContact,

@@ -394,15 +394,7 @@ impl Model {
         let outcome = match solve::solve(session, &input, options, &mut timings) {
             Ok(outcome) => outcome,
             Err(e) => {
-                // The results of this revision stay: so does their matrix
-                // (a load step's results have none).
-                let current = self.solution.as_ref().filter(|s| s.revision == revision);
-                if let Some(s) = current.filter(|s| !s.step) {
-                    let options = s.contact.as_ref().map(|c| &c.options);
-                    if solve::restore(session, &input, options, &s.log).is_ok() {
-                        session.set_system_of(Some(revision));
-                    }
-                }
+                keep_matrix(session, &input, self.solution.as_ref(), revision);
                 return Err(e);
             }
         };
@@ -467,7 +459,14 @@ impl Model {
         let revision = self.problem.revision();
         let restored = self.restored.as_ref();
         let key = (options, stiffness, revision);
-        let (outcome, before) = history::step(session, &input, key, (t, restored), &mut timings)?;
+        let (outcome, before) =
+            match history::step(session, &input, key, (t, restored), &mut timings) {
+                Ok(stepped) => stepped,
+                Err(e) => {
+                    keep_matrix(session, &input, self.solution.as_ref(), revision);
+                    return Err(e);
+                }
+            };
         self.restored = None;
         let elements = &session.contact;
         let f_scaled: Vec<f64> = f_ext.iter().map(|f| t * f).collect();
@@ -717,6 +716,24 @@ impl Model {
 
 /// The session of the problem's structure in `slot`, built (and timed as
 /// analysis) when there is none of that structure.
+/// After a failed solve or step: the results of this revision stay, and
+/// so does their matrix (a load step's results have none), rebuilt in the
+/// session the failed call overwrote.
+fn keep_matrix(
+    session: &mut Session,
+    input: &Input<'_>,
+    solution: Option<&Solution>,
+    revision: u64,
+) {
+    let current = solution.filter(|s| s.revision == revision);
+    if let Some(s) = current.filter(|s| !s.step) {
+        let options = s.contact.as_ref().map(|c| &c.options);
+        if solve::restore(session, input, options, &s.log).is_ok() {
+            session.set_system_of(Some(revision));
+        }
+    }
+}
+
 fn session_of<'s>(
     slot: &'s mut Option<Session>,
     p: &Problem,

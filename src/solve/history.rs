@@ -152,7 +152,13 @@ pub(crate) fn step(
     let mut warnings = Vec::new();
     let current = session.history.as_ref().is_some_and(|h| h.key == key);
     let mut factorizations = 0;
+    // What a failed step must put back: the loads of the history it
+    // continues (a pending earlier step is recovered from them).
+    let mut old_loads = None;
     if !current {
+        // A new history: the old one (another key) is over, its factor is
+        // overwritten, and a failed start leaves no history at all (as
+        // before the first step).
         session.history = None;
         let mut history = begin(session, input, key, revision, timings, &mut warnings)?;
         if let Some(state) = restored {
@@ -165,10 +171,26 @@ pub(crate) fn step(
         .as_ref()
         .is_some_and(|h| h.loads != revision)
     {
-        new_loads(session, input, revision, timings)?;
+        old_loads = Some(new_loads(session, input, revision, timings)?);
     }
-    let (mut outcome, before) =
-        step_in_history(session, input, (key, options), t, timings, warnings)?;
+    let stepped = step_in_history(session, input, (key, options), t, timings, warnings);
+    let (mut outcome, before) = match stepped {
+        Ok(done) => done,
+        Err(e) => {
+            match (current, session.history.as_mut()) {
+                (false, _) => session.history = None,
+                (true, Some(h)) => {
+                    if let Some((x_load, rhs_body, loads)) = old_loads {
+                        h.x_load = x_load;
+                        h.rhs_body = rhs_body;
+                        h.loads = loads;
+                    }
+                }
+                (true, None) => {}
+            }
+            return Err(e);
+        }
+    };
     outcome.info.factorizations += factorizations;
     if let Some(c) = outcome.contact.as_mut() {
         c.report.info.factorizations += factorizations;
@@ -298,12 +320,14 @@ fn gap_loads(set: &ContactSet<'_>, active: &[bool], n: usize) -> Vec<f64> {
 }
 
 /// New loads on the same stiffness: x_load anew (one sparse solve).
+/// Returns the loads replaced (x_load, the bodies' right-hand side and
+/// their revision), which a failed step puts back.
 fn new_loads(
     session: &mut Session,
     input: &Input<'_>,
     revision: u64,
     timings: &mut Timings,
-) -> Result<()> {
+) -> Result<(Vec<f64>, Vec<f64>, u64)> {
     let t0 = Instant::now();
     let rhs_body = body::rhs(
         &input.elements,
@@ -339,10 +363,10 @@ fn new_loads(
         .chol;
     chol.solve(&mut a)?;
     timings.solve += t0.elapsed().as_secs_f64();
-    history.x_load = a;
-    history.rhs_body = rhs_body;
-    history.loads = revision;
-    Ok(())
+    let x_load = std::mem::replace(&mut history.x_load, a);
+    let old_rhs = std::mem::replace(&mut history.rhs_body, rhs_body);
+    let loads = std::mem::replace(&mut history.loads, revision);
+    Ok((x_load, old_rhs, loads))
 }
 
 /// The scaled prescribed displacements of a step.
