@@ -114,6 +114,8 @@ enum {
   V_THREADS,        /* tfem_set_threads / tfem_get_threads not as documented */
   V_NULL_ARG,       /* NULL pointer handling not as documented */
   V_OTHER,          /* other contract checks (sizes, structure, sanity) */
+  V_STEP,           /* a load step repeated (revert, restored state) differs */
+  V_HOST,           /* contact context: pattern, gather, scatter, flags, values */
   NV
 };
 
@@ -123,7 +125,7 @@ static const char *const V_NAME[NV] = {
     "empty_message",  "internal",      "bad_status",    "thread_slot",    "last_error_api",
     "oracle",         "dropped_load",  "equilibrium",   "double_fix",     "results_lost",
     "matrix_dropped", "double_edge",   "results_changed", "contact",      "external_work",
-    "threads",        "null_pointer",  "other",
+    "threads",        "null_pointer",  "other",          "step_repeat",  "host_contact",
 };
 
 static const char *const V_DESC[NV] = {
@@ -155,6 +157,8 @@ static const char *const V_DESC[NV] = {
     "tfem_set_threads / tfem_get_threads not as documented",
     "NULL pointer: OK with a required one, or refused where the header allows NULL",
     "other contract check",
+    "a load step repeated after tfem_revert_step or tfem_set_contact_state differs from the original",
+    "contact context: pattern, gather, scatter_add, active flags, pressures or values inconsistent",
 };
 
 /* Oracles checked (not vacuous): counted when they could conclude. */
@@ -169,10 +173,15 @@ enum {
   O_DISP_KEPT,     /* displacements and system matrix bit-identical while kept */
   O_EDGES_REFUSED, /* boundary edges refused as the header requires */
   O_FIX_REFUSED,   /* a different value for a prescribed DOF refused */
+  O_STEP_REPEAT,   /* a step repeated bit for bit (revert, restored state) */
+  O_HOST_PATTERN,  /* pattern = element equations; evaluate values = blocks */
+  O_HOST_GATHER,   /* gather / scatter_add exact against the element equations */
+  O_HOST_ACTIVE,   /* set_active then get_active; pressures zero where inactive */
   NO
 };
 static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetration", "work", "mesh_eq",
-                                       "apex", "threads", "results_kept", "edges_refused", "fix_refused"};
+                                       "apex", "threads", "results_kept", "edges_refused", "fix_refused",
+                                       "step_repeat", "host_pattern", "host_gather", "host_active"};
 
 /* Messages name the item and say why; what must not happen is an
  * unbounded one (a denormal printed in full, a whole history, a parser
@@ -314,19 +323,51 @@ enum {
   F_GET_CONTACT_PAIR_BODIES,
   F_SET_THREADS,
   F_GET_THREADS,
+  /* load steps */
+  F_STEP,
+  F_REVERT_STEP,
+  F_GET_CONTACT_STATE_SIZE,
+  F_GET_CONTACT_STATE,
+  F_SET_CONTACT_STATE,
+  /* the contact context for host codes (a second handle) */
+  F_CONTACT_CREATE,
+  F_CONTACT_DESTROY,
+  F_CONTACT_LAST_ERROR,
+  F_CONTACT_SET_OPTIONS,
+  F_CONTACT_ADD_SIDE,
+  F_CONTACT_ADD_PAIR,
+  F_CONTACT_ADD_PAIR_WITH_MESH,
+  F_CONTACT_SIZES,
+  F_CONTACT_NODES,
+  F_CONTACT_PATTERN,
+  F_CONTACT_EVALUATE,
+  F_CONTACT_GATHER,
+  F_CONTACT_SCATTER_ADD,
+  F_CONTACT_UPDATE,
+  F_CONTACT_RESTART,
+  F_CONTACT_GET_ACTIVE,
+  F_CONTACT_SET_ACTIVE,
+  F_CONTACT_GAPS,
+  F_CONTACT_PRESSURES,
+  F_CONTACT_ELEMENTS,
+  F_CONTACT_ELEMENT_EQUATIONS,
+  F_CONTACT_ELEMENT_BLOCKS,
+  F_CONTACT_LENGTH,
   F_DESTROY_NULL, /* tfem_destroy(NULL) */
   F_RECREATE,     /* tfem_destroy(m); m = tfem_create() */
   NF
 };
 
-/* Output kinds. */
-enum { K_D, K_I, K_L, K_C, K_SI, K_RE, K_OP };
+/* Output kinds (K_Z size_t, K_U8 the bytes of a contact state). */
+enum { K_D, K_I, K_L, K_C, K_SI, K_RE, K_OP, K_Z, K_U8 };
 static size_t ksize(int k) {
   switch (k) {
   case K_D: return sizeof(double);
   case K_I: return sizeof(int);
   case K_L: return sizeof(int64_t);
   case K_C: return 1;
+  case K_Z: return sizeof(size_t);
+  case K_U8: return 1;
   case K_SI: return sizeof(tfem_solve_info);
   case K_RE: return sizeof(tfem_contact_report);
   default: return sizeof(tfem_contact_options);
@@ -334,19 +375,25 @@ static size_t ksize(int k) {
 }
 
 /* Required lengths of output buffers. */
-enum { R_SCALAR, R_2NN, R_3NT, R_NT, R_NC, R_3NC, R_N1, R_NNZ, R_N, R_MSG, R_WARN, R_36, R_9, R_NN, R_CM, R_3CM };
+enum { R_SCALAR, R_2NN, R_3NT, R_NT, R_NC, R_3NC, R_N1, R_NNZ, R_N, R_MSG, R_WARN, R_36, R_9, R_NN, R_CM, R_3CM,
+       /* the contact state; a context's interface nodes (x1, x2), elements of B (x1, x3, x6, x36), pattern
+        * entries, message, the host's equations */
+       R_STATE, R_CN, R_2CN, R_CE, R_3CE, R_6CE, R_36CE, R_CP, R_CMSG, R_NEQ };
 
 #define MAXI 6
 #define MAXD 4
-#define MAXIN 3
+#define MAXIN 4
 #define MAXOUT 4
 
 typedef struct {
   const char *name;
-  int model;       /* 1: the first argument is the model */
+  int model;       /* 1: the first argument is the model; 2: the contact context */
   const char *ir;  /* roles of the int arguments */
   const char *dr;  /* roles of the double arguments */
-  const char *ink; /* input arrays: 'x' coords (double), 'n' node indices, 'b' bodies, 't' tags, 'o' options */
+  const char *ink; /* input arrays: 'x' coords (double), 'n' node indices, 'b' bodies, 't' tags, 'o' options
+                    * (may be NULL), 'r' options (required), 'h' host node numbers, 'q' host equations
+                    * (int64); made when the call runs (runtime inputs, from a recipe in the int
+                    * arguments): 'U' doubles, 'a' active flags, 's' contact state bytes */
   const char *outk; /* output kinds: d i l c S R O; upper-case letter = scalar pointer */
   unsigned char req[MAXOUT];
   int scalar_out;   /* outputs are single objects (pointer, no length) */
@@ -355,9 +402,11 @@ typedef struct {
 /* int roles: c count, B index base, f gmsh file, n node, t tag, b body,
  *   P plane, M tempering mode, O ordering, x 0/1 flag, C component,
  *   L law, T inversion test, m max iterations, w warning index,
- *   q contact pair index, h threads
+ *   q contact pair index, h threads, s side index, R recipe of a runtime
+ *   input (see make_inputs), D its length offset, k its seed, S contact
+ *   state mode, A active-flags recipe, g host-vector recipe
  * double roles: E young, p poisson, J jmin, K kappa, v tempering value,
- *   u displacement, f force, G contact modulus, l lambda */
+ *   u displacement, f force, G contact modulus, l lambda, a load factor */
 static const fndesc FN[NF] = {
     [F_VERSION] = {"tfem_version", 0, "", "", "", "", {0}, 0},
     [F_LAST_ERROR] = {"tfem_last_error", 1, "", "", "", "c", {R_MSG}, 0},
@@ -409,6 +458,34 @@ static const fndesc FN[NF] = {
     [F_GET_CONTACT_PAIR_BODIES] = {"tfem_get_contact_pair_bodies", 1, "q", "", "", "ii", {R_SCALAR, R_SCALAR}, 1},
     [F_SET_THREADS] = {"tfem_set_threads", 1, "h", "", "", "", {0}, 0},
     [F_GET_THREADS] = {"tfem_get_threads", 1, "", "", "", "i", {R_SCALAR}, 1},
+    [F_STEP] = {"tfem_step", 1, "LTmx", "Gla", "o", "R", {R_SCALAR}, 1},
+    [F_REVERT_STEP] = {"tfem_revert_step", 1, "", "", "", "", {0}, 0},
+    [F_GET_CONTACT_STATE_SIZE] = {"tfem_get_contact_state_size", 1, "", "", "", "z", {R_SCALAR}, 1},
+    [F_GET_CONTACT_STATE] = {"tfem_get_contact_state", 1, "", "", "", "u", {R_STATE}, 0},
+    [F_SET_CONTACT_STATE] = {"tfem_set_contact_state", 1, "SDk", "", "s", "", {0}, 0},
+    [F_CONTACT_CREATE] = {"tfem_contact_create", 0, "B", "", "", "", {0}, 0},
+    [F_CONTACT_DESTROY] = {"tfem_contact_destroy", 2, "", "", "", "", {0}, 0},
+    [F_CONTACT_LAST_ERROR] = {"tfem_contact_last_error", 2, "", "", "", "c", {R_CMSG}, 0},
+    [F_CONTACT_SET_OPTIONS] = {"tfem_contact_set_options", 2, "LTmx", "Gl", "r", "", {0}, 0},
+    [F_CONTACT_ADD_SIDE] = {"tfem_contact_add_side", 2, "tbPcc", "Ep", "hxqh", "i", {R_SCALAR}, 1},
+    [F_CONTACT_ADD_PAIR] = {"tfem_contact_add_pair", 2, "ss", "", "", "i", {R_SCALAR}, 1},
+    [F_CONTACT_ADD_PAIR_WITH_MESH] = {"tfem_contact_add_pair_with_mesh", 2, "ssc", "", "h", "i", {R_SCALAR}, 1},
+    [F_CONTACT_SIZES] = {"tfem_contact_sizes", 2, "", "", "", "iil", {R_SCALAR, R_SCALAR, R_SCALAR}, 1},
+    [F_CONTACT_NODES] = {"tfem_contact_nodes", 2, "", "", "", "i", {R_CN}, 0},
+    [F_CONTACT_PATTERN] = {"tfem_contact_pattern", 2, "", "", "", "ll", {R_CP, R_CP}, 0},
+    [F_CONTACT_EVALUATE] = {"tfem_contact_evaluate", 2, "RDk", "", "U", "dd", {R_CP, R_2CN}, 0},
+    [F_CONTACT_GATHER] = {"tfem_contact_gather", 2, "gDk", "", "U", "d", {R_2CN}, 0},
+    [F_CONTACT_SCATTER_ADD] = {"tfem_contact_scatter_add", 2, "RDk", "", "UU", "d", {R_NEQ}, 0},
+    [F_CONTACT_UPDATE] = {"tfem_contact_update", 2, "RDk", "", "U", "i", {R_SCALAR}, 1},
+    [F_CONTACT_RESTART] = {"tfem_contact_restart", 2, "", "", "", "", {0}, 0},
+    [F_CONTACT_GET_ACTIVE] = {"tfem_contact_get_active", 2, "", "", "", "i", {R_CE}, 0},
+    [F_CONTACT_SET_ACTIVE] = {"tfem_contact_set_active", 2, "ADk", "", "a", "", {0}, 0},
+    [F_CONTACT_GAPS] = {"tfem_contact_gaps", 2, "RDk", "", "U", "d", {R_CN}, 0},
+    [F_CONTACT_PRESSURES] = {"tfem_contact_pressures", 2, "RDk", "", "U", "d", {R_CE}, 0},
+    [F_CONTACT_ELEMENTS] = {"tfem_contact_elements", 2, "", "", "", "i", {R_3CE}, 0},
+    [F_CONTACT_ELEMENT_EQUATIONS] = {"tfem_contact_element_equations", 2, "", "", "", "l", {R_6CE}, 0},
+    [F_CONTACT_ELEMENT_BLOCKS] = {"tfem_contact_element_blocks", 2, "", "", "", "d", {R_36CE}, 0},
+    [F_CONTACT_LENGTH] = {"tfem_contact_length", 2, "", "", "", "d", {R_SCALAR}, 1},
     [F_DESTROY_NULL] = {"tfem_destroy(NULL)", 0, "", "", "", "", {0}, 0},
     [F_RECREATE] = {"tfem_destroy+tfem_create", 0, "", "", "", "", {0}, 0},
 };
@@ -425,17 +502,23 @@ static int out_kind(int f, int j) {
   case 'c': return K_C;
   case 'S': return K_SI;
   case 'R': return K_RE;
+  case 'z': return K_Z;
+  case 'u': return K_U8;
   default: return K_OP;
   }
 }
 /* Functions whose failure may write (documented truncation of messages). */
-static int writes_on_failure(int f) { return f == F_LAST_ERROR || f == F_GET_WARNING; }
+static int writes_on_failure(int f) { return f == F_LAST_ERROR || f == F_GET_WARNING || f == F_CONTACT_LAST_ERROR; }
+/* The input arrays made when the call runs (from a recipe). */
+static int in_runtime(int f, int j) { char r = FN[f].ink[j]; return r == 'U' || r == 'a' || r == 's'; }
 
 /* Output pointers the header allows to be NULL ("may be NULL"). */
 static int out_nullable(int f, int j) {
   switch (f) {
   case F_SOLVE: case F_GET_SIZES: case F_GET_MATRIX_SIZE: case F_ADD_CONTACT_PAIR:
   case F_ADD_CONTACT_PAIR_WITH_MESH: case F_SOLVE_CONTACT: case F_GET_CONTACT_PAIR_BODIES:
+  case F_STEP: case F_CONTACT_ADD_SIDE: case F_CONTACT_ADD_PAIR: case F_CONTACT_ADD_PAIR_WITH_MESH:
+  case F_CONTACT_SIZES: case F_CONTACT_EVALUATE: case F_CONTACT_UPDATE:
     return 1;
   default: (void)j; return 0;
   }
@@ -487,6 +570,10 @@ typedef struct {
   int oracle;
   int or_node, or_comp;
   double or_expect, or_rtol;
+  /* end-of-case oracles of a pristine scene (see case_oracles): the role
+   * of the call and its group */
+  int tag, grp;
+  int in_made; /* runtime inputs made (the replay passes the same) */
   /* original run */
   int status;
   int ran;
@@ -501,6 +588,11 @@ typedef struct {
   long index;
   const char *kind;
   int pristine; /* a scene left unmutated: its oracles apply */
+  /* A host scene coupled to a model of the same bodies: host node number
+   * = hm_mul * model node (0-based) + hm_off; host equation e (0-based) is
+   * the model's DOF hmap[e] (2 node + component); neq equations. */
+  int coupled, hm_mul, hm_off, neq;
+  int *hmap;
 } case_t;
 
 static void in_set(call_t *c, int j, const void *v, int n, size_t el) {
@@ -509,7 +601,10 @@ static void in_set(call_t *c, int j, const void *v, int n, size_t el) {
   if (n > 0 && v) memcpy(c->in[j].p, v, (size_t)n * el);
   c->in[j].n = n > 0 ? n : 0;
 }
-static size_t in_el(int fn, int j) { return FN[fn].ink[j] == 'x' ? sizeof(double) : sizeof(int); }
+static size_t in_el(int fn, int j) {
+  char r = FN[fn].ink[j];
+  return r == 'x' || r == 'U' ? sizeof(double) : r == 'q' ? sizeof(int64_t) : r == 's' ? 1 : sizeof(int);
+}
 
 static call_t *add_call(case_t *cs, int fn) {
   if (cs->n == cs->cap) {
@@ -545,6 +640,7 @@ static void call_free(call_t *c) {
 static void case_free(case_t *cs) {
   for (int i = 0; i < cs->n; ++i) call_free(&cs->c[i]);
   free(cs->c);
+  free(cs->hmap);
   memset(cs, 0, sizeof *cs);
 }
 static void case_insert_copy(case_t *cs, int at, const call_t *src) {
@@ -869,6 +965,9 @@ typedef struct {
   int tags[8], ntags;
   int bodies[4], nbodies;
   const mesh_t *mesh; /* the scene's mesh (0-based), or NULL */
+  /* a contact context: its index base, host node numbers in use, sides */
+  int hbase, nh, nsides;
+  int hids[64];
 } ctx_t;
 
 static double wild_double(rng_t *r) {
@@ -898,6 +997,7 @@ static double plausible_double(rng_t *r, char role) {
   case 'f': { static const double v[] = {10.0, 1e7, -5.0, 0.0, 1.0}; return v[rint_(r, 5)]; }
   case 'G': { static const double v[] = {0.0, 0.0, 1e10, 1e9}; return v[rint_(r, 4)]; }
   case 'l': { static const double v[] = {0.0, 0.0, 1.0, 0.1}; return v[rint_(r, 4)]; }
+  case 'a': { static const double v[] = {1.0, 0.5, 0.25, 2.0, 0.0, -0.5, 1.0}; return v[rint_(r, 7)]; }
   default: return runif(r);
   }
 }
@@ -914,6 +1014,7 @@ static int enum_max(char role) {
 static int pick_tag(rng_t *r, const ctx_t *cx) { return cx->ntags ? cx->tags[rint_(r, cx->ntags)] : rrange(r, 1, 4); }
 static int pick_body(rng_t *r, const ctx_t *cx) { return cx->nbodies ? cx->bodies[rint_(r, cx->nbodies)] : rrange(r, 1, 2); }
 static int pick_node(rng_t *r, const ctx_t *cx) { return cx->base + (cx->nn ? rint_(r, cx->nn) : rint_(r, 4)); }
+static int pick_hnode(rng_t *r, const ctx_t *cx) { return cx->nh && chance(r, 0.95) ? cx->hids[rint_(r, cx->nh)] : rrange(r, -2, 40); }
 
 static int plausible_int(rng_t *r, char role, const ctx_t *cx) {
   switch (role) {
@@ -927,6 +1028,13 @@ static int plausible_int(rng_t *r, char role, const ctx_t *cx) {
   case 'w': return rint_(r, 3);
   case 'q': return chance(r, 0.8) ? 0 : rrange(r, -1, 2);
   case 'h': return (int[]){0, 1, 2, 1}[rint_(r, 4)];
+  case 's': return rint_(r, cx->nsides > 1 ? cx->nsides : 2);
+  case 'R': return (int[]){0, 0, 1, 1, 1, 1, 2, 2, 3, 4}[rint_(r, 10)];
+  case 'D': return chance(r, 0.9) ? 0 : (int[]){-1, 1, -2, 7}[rint_(r, 4)];
+  case 'k': return rint_(r, 1000);
+  case 'S': return chance(r, 0.6) ? 0 : rint_(r, 6);
+  case 'A': return rint_(r, 6);
+  case 'g': return rint_(r, 4);
   default: return rint_(r, enum_max(role) + 1);
   }
 }
@@ -954,7 +1062,7 @@ static int wild_int(rng_t *r, char role, int v, const ctx_t *cx) {
 /* Keeps the input arrays consistent with the counts (a count larger than an
  * array would be the caller's error, not the library's). */
 static void fix_arrays(rng_t *r, call_t *c, const ctx_t *cx) {
-  int need[MAXIN] = {-1, -1, -1};
+  int need[MAXIN] = {-1, -1, -1, -1};
   switch (c->fn) {
   case F_SET_MESH:
     need[0] = c->iv[0] >= 0 ? 2 * c->iv[0] : -1;
@@ -967,6 +1075,13 @@ static void fix_arrays(rng_t *r, call_t *c, const ctx_t *cx) {
     break;
   case F_ADD_CONTACT_PAIR_WITH_MESH: need[0] = c->iv[2] >= 0 ? 3 * c->iv[2] : -1; break;
   case F_ELEMENT_STIFFNESS: case F_LAPLACIAN_STIFFNESS: need[0] = 6; break;
+  case F_CONTACT_ADD_SIDE:
+    need[0] = c->iv[3] >= 0 && c->iv[3] < 100000 ? c->iv[3] : -1;
+    need[1] = need[0] >= 0 ? 2 * need[0] : -1;
+    need[2] = need[1];
+    need[3] = c->iv[4] >= 0 && c->iv[4] < 100000 ? 2 * c->iv[4] : -1;
+    break;
+  case F_CONTACT_ADD_PAIR_WITH_MESH: need[0] = c->iv[2] >= 0 && c->iv[2] < 100000 ? 3 * c->iv[2] : -1; break;
   default: return;
   }
   for (int j = 0; j < fn_nin(c->fn); ++j) {
@@ -979,6 +1094,10 @@ static void fix_arrays(rng_t *r, call_t *c, const ctx_t *cx) {
       char role = FN[c->fn].ink[j];
       if (role == 'x') {
         ((double *)p)[k] = rint_(r, 5) * 0.5;
+      } else if (role == 'q') {
+        ((int64_t *)p)[k] = rrange(r, cx->hbase - 1, cx->hbase + 40);
+      } else if (role == 'h') {
+        ((int *)p)[k] = pick_hnode(r, cx);
       } else {
         int v = role == 'n' ? pick_node(r, cx) : role == 'b' ? pick_body(r, cx) : pick_tag(r, cx);
         ((int *)p)[k] = v;
@@ -1146,7 +1265,7 @@ static void scene_square(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m, int clockwi
     mesh_edge(m, be[2 * e], be[2 * e + 1], tag);
   }
   free(be);
-  *cx = (ctx_t){m->nn, m->nt, base, {1, 2, 3, 4}, 4, {body}, 1, m};
+  *cx = (ctx_t){m->nn, m->nt, base, {1, 2, 3, 4}, 4, {body}, 1, m, 0, 0, 0, {0}};
   set_mesh_call(cs, m, base);
   edges_calls(r, cs, m, base);
   material(cs, body, 1000.0, 0.25, TFEM_PLANE_MODE_STRESS);
@@ -1216,7 +1335,7 @@ static void scene_two_blocks(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m, int var
   }
   free(be);
   int base = rint_(r, 2);
-  *cx = (ctx_t){m->nn, m->nt, base, {1, 2, 3, 4}, 4, {1, 2}, 2, m};
+  *cx = (ctx_t){m->nn, m->nt, base, {1, 2, 3, 4}, 4, {1, 2}, 2, m, 0, 0, 0, {0}};
   set_mesh_call(cs, m, base);
   edges_calls(r, cs, m, base);
   int plane = chance(r, 0.8) ? TFEM_PLANE_MODE_STRAIN : TFEM_PLANE_MODE_STRESS;
@@ -1295,7 +1414,7 @@ static void scene_degenerate(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
   }
   free(be);
   int base = rint_(r, 2);
-  *cx = (ctx_t){m->nn, m->nt, base, {1, 2, 3, 4}, 4, {1}, 1, m};
+  *cx = (ctx_t){m->nn, m->nt, base, {1, 2, 3, 4}, 4, {1}, 1, m, 0, 0, 0, {0}};
   set_mesh_call(cs, m, base);
   edges_calls(r, cs, m, base);
   material(cs, 1, 1000.0, 0.3, rint_(r, 2));
@@ -1313,7 +1432,7 @@ static void scene_degenerate(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
 /* The unit square of the valid Gmsh file: tags 1 left, 2 right, 3 bottom, 4 top. */
 static void scene_gmsh(rng_t *r, case_t *cs, ctx_t *cx) {
   int base = rint_(r, 2);
-  *cx = (ctx_t){9, 8, base, {1, 2, 3, 4}, 4, {1}, 1, NULL};
+  *cx = (ctx_t){9, 8, base, {1, 2, 3, 4}, 4, {1}, 1, NULL, 0, 0, 0, {0}};
   call_i(cs, F_LOAD_GMSH, chance(r, 0.7) ? G_VALID : G_CLOCKWISE, base);
   material(cs, 1, 1000.0, 0.25, TFEM_PLANE_MODE_STRESS);
   call_i(cs, F_SET_TEMPERING, TFEM_TEMPERING_MODE_LAMBDA, 0)->dv[0] = 1000.0;
@@ -1326,6 +1445,201 @@ static void scene_gmsh(rng_t *r, case_t *cs, ctx_t *cx) {
 
 /* A random small mesh: random points on a coarse lattice (coincident ones
  * possible), random triangles (repeated or unused nodes possible). */
+
+/* Roles of calls in the value oracles of the step and host scenes (call_t.tag). */
+enum { T_NONE, T_REF_STEP, T_REF_DISP, T_CMP_STEP, T_CMP_DISP };
+
+static call_t *step_call(case_t *cs, double factor, int opts, int tag) {
+  call_t *c = add_call(cs, F_STEP);
+  c->iv[0] = TFEM_CONTACT_LAW_FRICTIONLESS;
+  c->iv[1] = TFEM_INVERSION_TEST_LINEARISED;
+  c->iv[2] = 50;
+  c->iv[3] = 0;
+  c->dv[2] = factor;
+  c->in[0].null_ = !opts;
+  c->tag = tag;
+  return c;
+}
+
+/* Load steps on the two blocks: a history of steps, one repeated after
+ * tfem_revert_step and after tfem_set_contact_state of the state saved
+ * before it (both must give the same results bit for bit), loads changed
+ * between steps, a state that is not one. */
+static void scene_steps(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
+  scene_two_blocks(r, cs, cx, m, chance(r, 0.3));
+  if (chance(r, 0.6)) /* no contact solve before the steps */
+    for (int i = 0; i < cs->n; ++i)
+      if (cs->c[i].fn == F_SOLVE_CONTACT) {
+        while (cs->n > i) case_delete(cs, cs->n - 1);
+        break;
+      }
+  int opts = chance(r, 0.5);
+  double a1 = chance(r, 0.5) ? 0.5 : 0.25, a2 = chance(r, 0.8) ? 1.0 : 2.0;
+  step_call(cs, a1, opts, T_NONE);
+  if (chance(r, 0.3)) result_getters(r, cs, 1);
+  else add_call(cs, F_GET_DISPLACEMENTS);
+  add_call(cs, F_GET_CONTACT_STATE_SIZE);
+  add_call(cs, F_GET_CONTACT_STATE);
+  step_call(cs, a2, opts, T_REF_STEP);
+  add_call(cs, F_GET_DISPLACEMENTS)->tag = T_REF_DISP;
+  if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_ACTIVE);
+  add_call(cs, F_REVERT_STEP);
+  if (chance(r, 0.3)) add_call(cs, F_GET_DISPLACEMENTS);
+  step_call(cs, a2, opts, T_CMP_STEP);
+  add_call(cs, F_GET_DISPLACEMENTS)->tag = T_CMP_DISP;
+  call_t *c = add_call(cs, F_SET_CONTACT_STATE); /* the state after step a1 */
+  c->iv[0] = 0;
+  step_call(cs, a2, opts, T_CMP_STEP);
+  add_call(cs, F_GET_DISPLACEMENTS)->tag = T_CMP_DISP;
+  if (chance(r, 0.3)) add_call(cs, F_REVERT_STEP), add_call(cs, F_REVERT_STEP);
+  if (chance(r, 0.4)) {
+    c = add_call(cs, F_SET_CONTACT_STATE); /* not a state, or a damaged one */
+    c->iv[0] = rrange(r, 1, 5);
+    c->iv[2] = rint_(r, 1000);
+  }
+  if (chance(r, 0.5)) { /* a non-proportional history */
+    call_i(cs, F_ADD_PRESSURE, 4, 0)->dv[0] = 5e6;
+    step_call(cs, chance(r, 0.5) ? 1.5 : -0.5, opts, T_NONE);
+  } else {
+    step_call(cs, 1.5, !opts, T_NONE); /* other options: a new history */
+  }
+  if (chance(r, 0.5)) result_getters(r, cs, 1);
+  else add_call(cs, F_GET_DISPLACEMENTS), add_call(cs, F_GET_CONTACT_REPORT);
+  add_call(cs, F_GET_CONTACT_STATE_SIZE);
+}
+
+/* The interface of tag `tag` of mesh m as one side of a contact context:
+ * host node numbers mul * node + off, equations 2 node + component (in the
+ * index base; the x DOFs of the nodes at x = 0.5, fixed in the model, have
+ * none). */
+static void host_side_call(case_t *cs, const mesh_t *m, int tag, int body, double young, int plane, int base, int mul,
+                           int off) {
+  int ne = 0, nn = 0, *nodes = xmalloc(sizeof(int) * 2 * (size_t)m->ne + 1);
+  for (int e = 0; e < m->ne; ++e)
+    if (m->tag[e] == tag) {
+      ++ne;
+      for (int k = 0; k < 2; ++k) {
+        int v = m->edge[2 * e + k], seen = 0;
+        for (int i = 0; i < nn && !seen; ++i) seen = nodes[i] == v;
+        if (!seen) nodes[nn++] = v;
+      }
+    }
+  call_t *c = add_call(cs, F_CONTACT_ADD_SIDE);
+  c->iv[0] = tag;
+  c->iv[1] = body;
+  c->iv[2] = plane;
+  c->iv[3] = nn;
+  c->iv[4] = ne;
+  c->dv[0] = young;
+  c->dv[1] = 0.3;
+  in_set(c, 0, NULL, nn, sizeof(int));
+  in_set(c, 1, NULL, 2 * nn, sizeof(double));
+  in_set(c, 2, NULL, 2 * nn, sizeof(int64_t));
+  in_set(c, 3, NULL, 2 * ne, sizeof(int));
+  for (int i = 0; i < nn; ++i) {
+    int v = nodes[i];
+    ((int *)c->in[0].p)[i] = mul * v + off;
+    ((double *)c->in[1].p)[2 * i] = m->xy[2 * v];
+    ((double *)c->in[1].p)[2 * i + 1] = m->xy[2 * v + 1];
+    ((int64_t *)c->in[2].p)[2 * i] = m->xy[2 * v] == 0.5 ? base - 1 : 2 * v + base;
+    ((int64_t *)c->in[2].p)[2 * i + 1] = 2 * v + 1 + base;
+  }
+  for (int e = 0, k = 0; e < m->ne; ++e)
+    if (m->tag[e] == tag) {
+      ((int *)c->in[3].p)[2 * k] = mul * m->edge[2 * e] + off;
+      ((int *)c->in[3].p)[2 * k + 1] = mul * m->edge[2 * e + 1] + off;
+      ++k;
+    }
+  free(nodes);
+}
+
+static call_t *rt_call(case_t *cs, int fn, int recipe, int k) {
+  call_t *c = add_call(cs, fn);
+  c->iv[0] = recipe;
+  c->iv[2] = k;
+  return c;
+}
+
+/* A host code on the two blocks: the model solves them (tfem_solve_contact)
+ * and a contact context holds the same interface, its equations those of
+ * the model's DOFs (2 node + component), so the model's displacements are
+ * the host's solution vector. Every entry point of the context, in the
+ * order of a host's active-set loop. */
+static void scene_host(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
+  int variant = chance(r, 0.4);
+  scene_two_blocks(r, cs, cx, m, variant);
+  int base = rint_(r, 2), mul = chance(r, 0.5) ? 1 : 3, off = chance(r, 0.5) ? base : 7;
+  cs->coupled = 1;
+  cs->hm_mul = mul;
+  cs->hm_off = off;
+  cs->neq = 2 * m->nn;
+  cx->hbase = base;
+  cx->nh = 0;
+  for (int e = 0; e < m->ne && cx->nh < 64; ++e)
+    if (m->tag[e] == 2 || m->tag[e] == 3) cx->hids[cx->nh++] = mul * m->edge[2 * e] + off;
+  cx->nsides = 2;
+  call_i(cs, F_CONTACT_CREATE, base, 0);
+  if (chance(r, 0.3)) {
+    call_t *c = add_call(cs, F_CONTACT_SET_OPTIONS);
+    c->iv[0] = chance(r, 0.8) ? 0 : 1;
+    c->iv[1] = chance(r, 0.8) ? 0 : 1;
+    c->iv[2] = chance(r, 0.7) ? 50 : 3;
+    c->dv[0] = chance(r, 0.7) ? 0 : 1e9;
+    c->dv[1] = chance(r, 0.7) ? 0 : 0.5;
+  }
+  int plane = chance(r, 0.8) ? TFEM_PLANE_MODE_STRAIN : TFEM_PLANE_MODE_STRESS;
+  host_side_call(cs, m, 2, 1, 1e10, plane, base, mul, off);
+  host_side_call(cs, m, 3, 2, 1e11, plane, base, mul, off);
+  call_t *um = NULL;
+  for (int i = 0; i < cs->n && variant; ++i)
+    if (cs->c[i].fn == F_ADD_CONTACT_PAIR_WITH_MESH) um = &cs->c[i];
+  if (um && um->in[0].p && !um->in[0].null_) {
+    call_t *c = add_call(cs, F_CONTACT_ADD_PAIR_WITH_MESH);
+    um = NULL;
+    for (int i = 0; i < cs->n; ++i)
+      if (cs->c[i].fn == F_ADD_CONTACT_PAIR_WITH_MESH) um = &cs->c[i];
+    int nt = um->iv[2] > 0 && um->in[0].n >= 3 * um->iv[2] ? um->iv[2] : 0, mb = um->iv[2] >= 0 ? 0 : 0;
+    (void)mb;
+    c->iv[0] = 0;
+    c->iv[1] = 1;
+    c->iv[2] = nt;
+    in_set(c, 0, NULL, 3 * nt, sizeof(int));
+    /* (the model's contact triangles are in the model's index base) */
+    int mbase = 0;
+    for (int i = 0; i < cs->n; ++i)
+      if (cs->c[i].fn == F_SET_MESH) mbase = cs->c[i].iv[2];
+    for (int k = 0; k < 3 * nt; ++k) ((int *)c->in[0].p)[k] = mul * (((int *)um->in[0].p)[k] - mbase) + off;
+  } else {
+    call_i(cs, F_CONTACT_ADD_PAIR, 0, 1);
+  }
+  add_call(cs, F_CONTACT_SIZES);
+  add_call(cs, F_CONTACT_NODES);
+  add_call(cs, F_CONTACT_PATTERN);
+  if (chance(r, 0.6)) add_call(cs, F_CONTACT_ELEMENT_EQUATIONS);
+  if (chance(r, 0.5)) add_call(cs, F_CONTACT_ELEMENT_BLOCKS);
+  if (chance(r, 0.5)) add_call(cs, F_CONTACT_ELEMENTS);
+  rt_call(cs, F_CONTACT_EVALUATE, 0, rint_(r, 1000)); /* the initial-gap load */
+  rt_call(cs, F_CONTACT_GATHER, 2, rint_(r, 1000));   /* the model's displacements */
+  rt_call(cs, F_CONTACT_UPDATE, 2, rint_(r, 1000));
+  add_call(cs, F_CONTACT_GET_ACTIVE);
+  rt_call(cs, F_CONTACT_EVALUATE, 2, rint_(r, 1000));
+  rt_call(cs, F_CONTACT_SCATTER_ADD, 1, rint_(r, 1000));
+  add_call(cs, F_CONTACT_LENGTH);
+  rt_call(cs, F_CONTACT_GAPS, 2, rint_(r, 1000));
+  rt_call(cs, F_CONTACT_PRESSURES, 2, rint_(r, 1000));
+  rt_call(cs, F_CONTACT_SET_ACTIVE, chance(r, 0.5) ? 3 : 2, rint_(r, 1000));
+  add_call(cs, F_CONTACT_GET_ACTIVE);
+  if (chance(r, 0.5)) add_call(cs, F_CONTACT_RESTART);
+  rt_call(cs, F_CONTACT_UPDATE, chance(r, 0.5) ? 0 : 1, rint_(r, 1000));
+  rt_call(cs, F_CONTACT_UPDATE, 2, rint_(r, 1000));
+  rt_call(cs, F_CONTACT_PRESSURES, 1, rint_(r, 1000));
+  if (chance(r, 0.3)) add_call(cs, F_CONTACT_LAST_ERROR)->out[0] = (out_spec){LS_FIXED, 512, 0, 0, 0, 0};
+  if (chance(r, 0.2)) {
+    add_call(cs, F_CONTACT_DESTROY);
+    add_call(cs, F_CONTACT_LENGTH);
+  }
+}
+
 static void random_mesh(rng_t *r, mesh_t *m, int nbodies) {
   int nn = rrange(r, 3, 16), nt = rrange(r, 1, 20);
   double scale = chance(r, 0.8) ? 1.0 : wild_double(r);
@@ -1361,7 +1675,15 @@ static void random_call(rng_t *r, case_t *cs, const ctx_t *cx, double wild, int 
       [F_GET_CONTACT_FORCES] = 3, [F_GET_CONTACT_GAPS] = 3, [F_GET_CONTACT_MESH_SIZE] = 2,
       [F_GET_CONTACT_MESH] = 2, [F_GET_CONTACT_ELEMENT_PAIRS] = 2, [F_GET_CONTACT_ELEMENT_APEXES] = 2,
       [F_GET_CONTACT_PAIR_BODIES] = 2, [F_SET_THREADS] = 2, [F_GET_THREADS] = 2,
-      [F_DESTROY_NULL] = 1, [F_RECREATE] = 1};
+      [F_DESTROY_NULL] = 1, [F_RECREATE] = 1,
+      [F_STEP] = 4, [F_REVERT_STEP] = 2, [F_GET_CONTACT_STATE_SIZE] = 2, [F_GET_CONTACT_STATE] = 2,
+      [F_SET_CONTACT_STATE] = 2, [F_CONTACT_CREATE] = 3, [F_CONTACT_DESTROY] = 1, [F_CONTACT_LAST_ERROR] = 1,
+      [F_CONTACT_SET_OPTIONS] = 1, [F_CONTACT_ADD_SIDE] = 3, [F_CONTACT_ADD_PAIR] = 2,
+      [F_CONTACT_ADD_PAIR_WITH_MESH] = 1, [F_CONTACT_SIZES] = 1, [F_CONTACT_NODES] = 1, [F_CONTACT_PATTERN] = 1,
+      [F_CONTACT_EVALUATE] = 2, [F_CONTACT_GATHER] = 1, [F_CONTACT_SCATTER_ADD] = 1, [F_CONTACT_UPDATE] = 2,
+      [F_CONTACT_RESTART] = 1, [F_CONTACT_GET_ACTIVE] = 1, [F_CONTACT_SET_ACTIVE] = 1, [F_CONTACT_GAPS] = 1,
+      [F_CONTACT_PRESSURES] = 1, [F_CONTACT_ELEMENTS] = 1, [F_CONTACT_ELEMENT_EQUATIONS] = 1,
+      [F_CONTACT_ELEMENT_BLOCKS] = 1, [F_CONTACT_LENGTH] = 1};
   int total = 0;
   for (int f = 0; f < NF; ++f) total += weight[f];
   int x = rint_(r, total), fn = 0;
@@ -1494,10 +1816,17 @@ static void random_call(rng_t *r, case_t *cs, const ctx_t *cx, double wild, int 
     in_set(c, 0, xy, 6, sizeof(double));
     break;
   }
-  case F_SOLVE_CONTACT:
+  case F_SOLVE_CONTACT: case F_STEP:
     if (chance(r, 0.2)) c->in[0].null_ = 1;
     break;
-  case F_GET_WARNING: case F_LAST_ERROR:
+  case F_CONTACT_ADD_PAIR_WITH_MESH: {
+    int nt = rrange(r, 1, 4);
+    c->iv[2] = nt;
+    in_set(c, 0, NULL, 3 * nt, sizeof(int));
+    for (int k = 0; k < 3 * nt; ++k) ((int *)c->in[0].p)[k] = pick_hnode(r, cx);
+    break;
+  }
+  case F_GET_WARNING: case F_LAST_ERROR: case F_CONTACT_LAST_ERROR:
     c->out[0] = (out_spec){chance(r, 0.7) ? LS_FIXED : LS_EXACT, rint_(r, 3) ? 512 : rint_(r, 40), 0, 0, 0, 0};
     break;
   default: break;
@@ -1550,8 +1879,15 @@ static void mutate_arg(rng_t *r, call_t *c, const ctx_t *cx) {
       if (fn_nin(fn)) {
         int j = rint_(r, fn_nin(fn));
         char role = FN[fn].ink[j];
-        if (role == 'o' || chance(r, 0.2) || c->in[j].n == 0) {
+        if (fn == F_CONTACT_SCATTER_ADD && j == 1) break; /* (the host vector's content, not an argument) */
+        if (role == 'o' || role == 'r' || in_runtime(fn, j) || chance(r, 0.2) || c->in[j].n == 0) {
           c->in[j].null_ = 1;
+        } else if (role == 'q') {
+          int64_t *v = &((int64_t *)c->in[j].p)[rint_(r, c->in[j].n)];
+          *v = (int64_t[]){-1, -2, INT64_MIN, INT64_MAX, *v + 1, 1000000}[rint_(r, 6)];
+        } else if (role == 'h') {
+          int *v = &((int *)c->in[j].p)[rint_(r, c->in[j].n)];
+          *v = (int[]){-1, INT_MIN, INT_MAX, *v + 1, pick_hnode(r, cx)}[rint_(r, 5)];
         } else if (role == 'x') {
           ((double *)c->in[j].p)[rint_(r, c->in[j].n)] = wild_double(r);
         } else {
@@ -1582,7 +1918,7 @@ static void mutate_arg(rng_t *r, call_t *c, const ctx_t *cx) {
       }
       break;
     default: /* options of a contact solve */
-      if (fn == F_SOLVE_CONTACT) {
+      if (fn == F_SOLVE_CONTACT || fn == F_STEP || fn == F_CONTACT_SET_OPTIONS) {
         int k = rint_(r, 6);
         if (k < 4) c->iv[k] = chance(r, 0.5) ? plausible_int(r, FN[fn].ir[k], cx) : wild_int(r, FN[fn].ir[k], c->iv[k], cx);
         else c->dv[k - 4] = chance(r, 0.5) ? plausible_double(r, FN[fn].dr[k - 4]) : wild_double(r);
@@ -1708,8 +2044,11 @@ static void gen_case(uint64_t seed, long index, case_t *cs, mesh_t *m) {
   int kind = rint_(&r, 100);
   if (kind < 70) {
     /* (a) a valid scene, mutated (10% left pristine) */
-    int s = rint_(&r, 100);
-    if (s < 22) { cs->kind = "square"; scene_square(&r, cs, &cx, m, 0, 0); }
+    int s = rint_(&r, 116);
+    if (s >= 100) {
+      if (s < 108) { cs->kind = "steps"; scene_steps(&r, cs, &cx, m); }
+      else { cs->kind = "host"; scene_host(&r, cs, &cx, m); }
+    } else if (s < 22) { cs->kind = "square"; scene_square(&r, cs, &cx, m, 0, 0); }
     else if (s < 30) { cs->kind = "clockwise_square"; scene_square(&r, cs, &cx, m, 1, 1); }
     else if (s < 58) { cs->kind = "two_blocks"; scene_two_blocks(&r, cs, &cx, m, 0); }
     else if (s < 72) { cs->kind = "user_contact_mesh"; scene_two_blocks(&r, cs, &cx, m, 1); }
@@ -1732,7 +2071,7 @@ static void gen_case(uint64_t seed, long index, case_t *cs, mesh_t *m) {
       case_insert_copy(cs, rint_(&r, cs->n + 1), &one.c[0]);
       case_free(&one);
     }
-    if (!chance(&r, 0.1)) mutate_case(&r, cs, &cx);
+    if (!chance(&r, s >= 100 ? 0.35 : 0.1)) mutate_case(&r, cs, &cx);
     else cs->pristine = 1;
   } else {
     /* (b) a fully random sequence */
@@ -1740,13 +2079,13 @@ static void gen_case(uint64_t seed, long index, case_t *cs, mesh_t *m) {
     int nb = rrange(&r, 1, 2);
     if (chance(&r, 0.75)) {
       random_mesh(&r, m, nb);
-      cx = (ctx_t){m->nn, m->nt, rint_(&r, 2), {1, 2, 3, 4}, 4, {1, 2}, nb, m};
+      cx = (ctx_t){m->nn, m->nt, rint_(&r, 2), {1, 2, 3, 4}, 4, {1, 2}, nb, m, 0, 0, 0, {0}};
       set_mesh_call(cs, m, cx.base);
       if (chance(&r, 0.8)) edges_calls(&r, cs, m, cx.base);
       for (int b = 1; b <= nb; ++b)
         if (chance(&r, 0.8)) material(cs, b, plausible_double(&r, 'E'), plausible_double(&r, 'p'), rint_(&r, 2));
     } else {
-      cx = (ctx_t){rrange(&r, 0, 6), 0, rint_(&r, 2), {1, 2, 3, 4}, 4, {1, 2}, 2, NULL};
+      cx = (ctx_t){rrange(&r, 0, 6), 0, rint_(&r, 2), {1, 2, 3, 4}, 4, {1, 2}, 2, NULL, 0, 0, 0, {0}};
     }
     int n = rrange(&r, 3, 40);
     double wild = runif(&r) * 0.5;
@@ -1848,7 +2187,10 @@ typedef struct {
   int nbf;
   double *presc; /* 2 per node, NAN: free */
   int presc_nonempty;
-  int results; /* 0 none, 1 plain solve, 2 contact solve */
+  int results; /* 0 none, 1 plain solve, 2 contact solve, 3 load step */
+  int pre_results, pre_valid; /* the results before the last step (tfem_revert_step) */
+  int no_matrix;   /* results of a step: no system matrix */
+  int res_unknown; /* results not known here (a step reverted that was not seen) */
   int contact_test; /* inversion test of the last contact solve */
   int matrix_dropped;
   double relres, cond;
@@ -2227,6 +2569,18 @@ typedef struct {
   long status_flips;
   long oracles[NO];
   FILE *cfile; /* the C reproducer being written (verbose runs) */
+  /* the contact context (NULL: none), its index base, B built (a call
+   * needing it succeeded) */
+  tfem_contact *ctx;
+  int cbase, cbuilt;
+  /* contact states saved (tfem_get_contact_state): the last, the one before */
+  unsigned char *st_last, *st_prev;
+  size_t n_last, n_prev;
+  /* the reference of the repeated step (report fields, displacements) */
+  int ref_ok, ref_disp_ok;
+  tfem_contact_report ref_rep;
+  uint64_t ref_disp;
+  int ref_idx;
 } runner_t;
 
 static void c_emit_call(FILE *f, const call_t *c, int idx);
@@ -2278,6 +2632,7 @@ static void excerpt(const char *s, size_t n, char *out, size_t cap) {
   out[k] = 0;
 }
 
+static int ctx_sizes(runner_t *R, int *nn, int *ne, int64_t *np);
 static long required_len(runner_t *R, const call_t *c, int j) {
   int rq = FN[c->fn].req[j];
   int nn = -1, nt = -1, nc = -1;
@@ -2296,6 +2651,26 @@ static long required_len(runner_t *R, const call_t *c, int j) {
     if (tfem_get_system_matrix_size(R->m, &n, &nnz) != TFEM_STATUS_OK) return -1;
     return rq == R_N1 ? (long)n + 1 : rq == R_NNZ ? (long)nnz : (long)n;
   case R_MSG: return (long)tfem_last_error_length(c->null_model ? NULL : R->m);
+  case R_STATE: {
+    size_t z = 0;
+    if (c->null_model || tfem_get_contact_state_size(R->m, &z) != TFEM_STATUS_OK) return -1;
+    return (long)z;
+  }
+  case R_CMSG: {
+    static __thread char b[65536];
+    if (c->null_model || !R->ctx) return -1;
+    b[0] = 0;
+    tfem_contact_last_error(R->ctx, b, sizeof b);
+    return (long)strlen(b) + 1;
+  }
+  case R_NEQ: return R->cs->coupled ? R->cs->neq : -1;
+  case R_CN: case R_2CN: case R_CE: case R_3CE: case R_6CE: case R_36CE: case R_CP: {
+    int cn, ce;
+    int64_t np;
+    if (c->null_model || !ctx_sizes(R, &cn, &ce, &np)) return -1;
+    return rq == R_CN ? cn : rq == R_2CN ? 2L * cn : rq == R_CE ? ce : rq == R_3CE ? 3L * ce : rq == R_6CE ? 6L * ce
+         : rq == R_36CE ? 36L * ce : (long)np;
+  }
   case R_WARN: {
     char b[4096];
     if (tfem_get_warning(R->m, c->iv[0], b, sizeof b) != TFEM_STATUS_OK) return -1;
@@ -2601,11 +2976,301 @@ static void oracle_work(runner_t *R, int idx, double w) {
 }
 
 /* Runs call idx, checks it (original run) or compares it (replay). */
+/* ---- the contact context (a second handle) and load steps ---- */
+
+/* Sizes of the context's contact mesh B, once a call that builds it
+ * succeeded (asking earlier would build it: a change the replay, which
+ * makes no such call, would not see). */
+static int ctx_sizes(runner_t *R, int *nn, int *ne, int64_t *np) {
+  int a = -1, b = -1;
+  int64_t e = -1;
+  if (!R->ctx || !R->cbuilt || tfem_contact_sizes(R->ctx, &a, &b, &e) != TFEM_STATUS_OK || a < 0 || b < 0 || e < 0)
+    return 0;
+  if (nn) *nn = a;
+  if (ne) *ne = b;
+  if (np) *np = e;
+  return 1;
+}
+
+/* The elements of B (3 host nodes each), their equations (6 each) and
+ * active flags; NULL if unknown. */
+typedef struct {
+  int ne, nn;
+  int64_t np;
+  int *elem, *active, *nodes;
+  int64_t *eq;
+} ctx_view;
+static void cv_free(ctx_view *v) {
+  free(v->elem), free(v->active), free(v->eq), free(v->nodes);
+  memset(v, 0, sizeof *v);
+}
+static int ctx_view_get(runner_t *R, ctx_view *v) {
+  memset(v, 0, sizeof *v);
+  if (!ctx_sizes(R, &v->nn, &v->ne, &v->np)) return 0;
+  v->elem = xmalloc(sizeof(int) * 3 * (size_t)v->ne + 1);
+  v->active = xmalloc(sizeof(int) * (size_t)v->ne + 1);
+  v->nodes = xmalloc(sizeof(int) * (size_t)v->nn + 1);
+  v->eq = xmalloc(sizeof(int64_t) * 6 * (size_t)v->ne + 1);
+  if (tfem_contact_elements(R->ctx, v->elem, 3 * (size_t)v->ne) != TFEM_STATUS_OK ||
+      tfem_contact_get_active(R->ctx, v->active, (size_t)v->ne) != TFEM_STATUS_OK ||
+      tfem_contact_nodes(R->ctx, v->nodes, (size_t)v->nn) != TFEM_STATUS_OK ||
+      tfem_contact_element_equations(R->ctx, v->eq, 6 * (size_t)v->ne) != TFEM_STATUS_OK) {
+    cv_free(v);
+    return 0;
+  }
+  return 1;
+}
+/* The equation (0-based, -1 none, -2 unknown) of DOF comp of interface node i. */
+static int64_t cv_eq(const ctx_view *v, int i, int comp, int base) {
+  for (int k = 0; k < v->ne; ++k)
+    for (int a = 0; a < 3; ++a)
+      if (v->elem[3 * k + a] == v->nodes[i]) {
+        int64_t e = v->eq[6 * k + 2 * a + comp];
+        return e < base ? -1 : e - base;
+      }
+  return -2;
+}
+
+static void rt_fill(rng_t *q, double *u, int n, int recipe, const double *model_u, int k) {
+  for (int i = 0; i < n; ++i) {
+    switch (recipe) {
+    case 1: u[i] = (runif(q) - 0.5) * 2e-3; break;
+    case 2: u[i] = model_u ? model_u[i] : 0.0; break;
+    case 3: u[i] = (runif(q) - 0.5) * 2e-3; break;
+    case 4: u[i] = (runif(q) - 0.5) * 2e150; break;
+    default: u[i] = 0.0; break;
+    }
+  }
+  if (recipe == 3 && n > 0) u[k % n] = (double[]){NAN, INFINITY, -INFINITY, 1e308, -DBL_MAX}[k % 5];
+}
+
+/* Makes the runtime inputs of call c (once: the replay passes the same
+ * bytes) from its recipe: the int arguments recipe, length offset, seed. */
+static void make_inputs(runner_t *R, call_t *c, int idx) {
+  int fn = c->fn;
+  if (c->in_made) return;
+  c->in_made = 1;
+  int rec = c->iv[0], dl = c->iv[1], k = c->iv[2] < 0 ? -(c->iv[2] + 1) : c->iv[2];
+  if (dl < -100000 || dl > 100000) dl = dl < 0 ? -100000 : 100000;
+  rng_t q = {mix64(0x5eedULL + (uint64_t)k * 7919u + (uint64_t)idx)};
+  int cn = -1, ce = -1;
+  ctx_sizes(R, &cn, &ce, NULL);
+  /* the model's displacements, when the case couples the two (host equation = model DOF) */
+  int mnn = -1, mnt, mnc;
+  double *mu = NULL;
+  if (R->cs->coupled && R->m && tfem_get_sizes(R->m, &mnn, &mnt, &mnc) == TFEM_STATUS_OK && mnn > 0) {
+    mu = xmalloc(sizeof(double) * 2 * (size_t)mnn);
+    if (tfem_get_displacements(R->m, mu, 2 * (size_t)mnn) != TFEM_STATUS_OK) free(mu), mu = NULL;
+  }
+  for (int j = 0; j < fn_nin(fn); ++j) {
+    if (!in_runtime(fn, j)) continue;
+    char role = FN[fn].ink[j];
+    if (role == 'U') {
+      long base;
+      double *src = NULL;
+      if (fn == F_CONTACT_GATHER) {
+        base = R->cs->coupled ? R->cs->neq : 2 + k % 20;
+        if (mu && R->cs->neq == 2 * mnn) src = mu;
+      } else if (fn == F_CONTACT_SCATTER_ADD && j == 1) {
+        base = (long)c->out[0].len;
+        dl = 0;
+      } else {
+        base = cn >= 0 ? 2L * cn : 2 + 2 * (k % 6);
+        if (mu && cn >= 0 && R->cs->hm_mul > 0) {
+          /* the model's displacements at the interface nodes */
+          int *nodes = xmalloc(sizeof(int) * (size_t)cn + 1);
+          src = xmalloc(sizeof(double) * 2 * (size_t)cn + 1);
+          if (tfem_contact_nodes(R->ctx, nodes, (size_t)cn) == TFEM_STATUS_OK) {
+            for (int i = 0; i < cn; ++i) {
+              long v = ((long)nodes[i] - R->cs->hm_off) / R->cs->hm_mul;
+              int ok = v >= 0 && v < mnn && v * R->cs->hm_mul + R->cs->hm_off == nodes[i];
+              src[2 * i] = ok ? mu[2 * v] : 0.0;
+              src[2 * i + 1] = ok ? mu[2 * v + 1] : 0.0;
+            }
+          } else {
+            memset(src, 0, sizeof(double) * 2 * (size_t)cn);
+          }
+          free(nodes);
+        }
+      }
+      long n = base + dl;
+      if (n < 0) n = 0;
+      if (n > 4000000) n = 4000000;
+      double *u = xcalloc((size_t)n + 1, sizeof(double));
+      long ns = src ? (fn == F_CONTACT_GATHER ? 2L * mnn : 2L * cn) : 0;
+      double *full = xcalloc((size_t)(n > ns ? n : ns) + 1, sizeof(double));
+      if (src) memcpy(full, src, sizeof(double) * (size_t)ns);
+      rt_fill(&q, u, (int)n, fn == F_CONTACT_SCATTER_ADD && j == 1 ? (rec == 0 ? 0 : 1) : rec, full, k);
+      in_set(c, j, u, (int)n, sizeof(double));
+      free(u), free(full);
+      if (src && src != mu) free(src);
+    } else if (role == 'a') {
+      long n = (ce >= 0 ? ce : 1 + k % 8) + dl;
+      if (n < 0) n = 0;
+      if (n > 4000000) n = 4000000;
+      int *a = xcalloc((size_t)n + 1, sizeof(int));
+      if (rec == 3 && ce >= 0) {
+        int *cur = xcalloc((size_t)ce + 1, sizeof(int));
+        if (tfem_contact_get_active(R->ctx, cur, (size_t)ce) == TFEM_STATUS_OK)
+          for (long i = 0; i < n && i < ce; ++i) a[i] = cur[i];
+        free(cur);
+      } else {
+        for (long i = 0; i < n; ++i) a[i] = rec == 1 ? 1 : (rec == 2 || rec == 4) ? (int)(rnext(&q) & 1) : 0;
+        if (rec == 4 && n > 0) a[k % n] = (int[]){2, -1, INT_MIN, INT_MAX}[k % 4];
+      }
+      in_set(c, j, a, (int)n, sizeof(int));
+      free(a);
+    } else if (role == 's') {
+      /* 0 the state saved last, 1 the one before, 2 the last with a byte
+       * changed, 3 bytes that are no state, 4 none, 5 the last cut short */
+      const unsigned char *src = rec == 1 ? R->st_prev : R->st_last;
+      size_t sn = rec == 1 ? R->n_prev : R->n_last;
+      unsigned char *b;
+      long n;
+      if (rec == 4) {
+        n = 0;
+        b = xmalloc(1);
+      } else if (!src || rec == 3 || rec < 0 || rec > 5) {
+        n = k % 300;
+        b = xmalloc((size_t)n + 1);
+        for (long i = 0; i < n; ++i) b[i] = (unsigned char)rnext(&q);
+      } else {
+        n = (long)sn + (rec == 5 ? -(long)sn / 2 - 1 : dl);
+        if (n < 0) n = 0;
+        b = xcalloc((size_t)n + 1, 1);
+        memcpy(b, src, (size_t)n < sn ? (size_t)n : sn);
+        if (rec == 2 && n > 0) b[k % n] ^= (unsigned char)(1u << (k % 8));
+      }
+      in_set(c, j, b, (int)n, 1);
+      free(b);
+    }
+  }
+  free(mu);
+}
+
+/* Value oracles of the contact context (each from the library's own
+ * outputs: the element equations, blocks and flags). */
+static void oracle_host(runner_t *R, int idx, const call_t *c, gbuf *g) {
+  int fn = c->fn;
+  ctx_view v;
+  if (!ctx_view_get(R, &v)) return;
+  int base = R->cbase;
+  if (fn == F_CONTACT_PATTERN || fn == F_CONTACT_EVALUATE) {
+    /* the pattern: element after element, its DOFs with an equation, row by row */
+    const int64_t *rows = fn == F_CONTACT_PATTERN ? (const int64_t *)(const void *)g[0].p : NULL;
+    const int64_t *cols = fn == F_CONTACT_PATTERN ? (const int64_t *)(const void *)g[1].p : NULL;
+    const double *val = fn == F_CONTACT_EVALUATE && !c->out[0].null_ ? (const double *)(const void *)g[0].p : NULL;
+    size_t cap = fn == F_CONTACT_PATTERN ? c->out[0].len : c->out[0].len;
+    double *blk = NULL;
+    if (val) {
+      blk = xmalloc(sizeof(double) * 36 * (size_t)v.ne + 1);
+      if (tfem_contact_element_blocks(R->ctx, blk, 36 * (size_t)v.ne) != TFEM_STATUS_OK) {
+        free(blk);
+        cv_free(&v);
+        return;
+      }
+    }
+    int64_t p = 0;
+    int bad = 0;
+    for (int k = 0; k < v.ne && !bad; ++k)
+      for (int a = 0; a < 6 && !bad; ++a) {
+        if (v.eq[6 * k + a] < base) continue;
+        for (int b = 0; b < 6 && !bad; ++b) {
+          if (v.eq[6 * k + b] < base) continue;
+          if ((size_t)p < cap) {
+            if (rows && (rows[p] != v.eq[6 * k + a] || cols[p] != v.eq[6 * k + b])) {
+              finding(R, V_HOST, idx, "pattern entry %" PRId64 " = (%" PRId64 ", %" PRId64 "), element %d's DOFs %d, %d have "
+                      "equations %" PRId64 ", %" PRId64, p, rows[p], cols[p], k, a, b, v.eq[6 * k + a], v.eq[6 * k + b]);
+              bad = 1;
+            }
+            if (val && val[p] != blk[36 * k + 6 * a + b] && !(val[p] == 0 && blk[36 * k + 6 * a + b] == 0)) {
+              finding(R, V_HOST, idx, "value %" PRId64 " = %.17g, element %d's block (%d, %d) = %.17g (active %d)", p, val[p], k,
+                      a, b, blk[36 * k + 6 * a + b], v.active[k]);
+              bad = 1;
+            }
+          }
+          ++p;
+        }
+      }
+    if (!bad && p != v.np) finding(R, V_HOST, idx, "%" PRId64 " pattern entries from the element equations, sizes says %" PRId64, p, v.np);
+    R->oracles[O_HOST_PATTERN]++;
+    free(blk);
+  } else if (fn == F_CONTACT_GATHER || fn == F_CONTACT_SCATTER_ADD) {
+    /* gather: u of a DOF = its equation's entry (0 without one); scatter:
+     * the host vector's entry += the residual of each DOF with that equation */
+    const double *in = c->in[0].p;
+    size_t neq = fn == F_CONTACT_GATHER ? (size_t)c->in[0].n : c->out[0].len;
+    const double *out = (const double *)(const void *)g[0].p, *before = c->in[1].p;
+    double *expect = NULL;
+    if (fn == F_CONTACT_SCATTER_ADD) {
+      expect = xmalloc(sizeof(double) * neq + 1);
+      memcpy(expect, before, sizeof(double) * neq);
+    }
+    int bad = 0;
+    for (int i = 0; i < v.nn && !bad; ++i)
+      for (int comp = 0; comp < 2 && !bad; ++comp) {
+        int64_t e = cv_eq(&v, i, comp, base);
+        if (e == -2) continue;
+        if (e >= (int64_t)neq) {
+          finding(R, V_HOST, idx, "OK with equation %" PRId64 " of node %d beyond the %zu given", e + base, v.nodes[i], neq);
+          bad = 1;
+        } else if (fn == F_CONTACT_GATHER) {
+          double want = e < 0 ? 0.0 : in[e];
+          if (memcmp(&want, &out[2 * i + comp], 8) != 0 && !(want == 0 && out[2 * i + comp] == 0)) {
+            finding(R, V_HOST, idx, "u[%d] of node %d = %.17g, its equation %" PRId64 " holds %.17g", 2 * i + comp, v.nodes[i],
+                    out[2 * i + comp], e + base, want);
+            bad = 1;
+          }
+        } else if (e >= 0) {
+          expect[e] += in[2 * i + comp];
+        }
+      }
+    if (fn == F_CONTACT_SCATTER_ADD)
+      for (size_t e = 0; e < neq && !bad; ++e)
+        if (!(fabs(out[e] - expect[e]) <= 1e-13 * fabs(expect[e]))) {
+          finding(R, V_HOST, idx, "host vector entry %zu = %.17g, expected %.17g", e, out[e], expect[e]);
+          bad = 1;
+        }
+    free(expect);
+    R->oracles[O_HOST_GATHER]++;
+  } else if (fn == F_CONTACT_SET_ACTIVE) {
+    const int *a = c->in[0].p;
+    for (int k = 0; k < v.ne; ++k)
+      if (v.active[k] != a[k]) {
+        finding(R, V_HOST, idx, "element %d set to %d, tfem_contact_get_active gives %d", k, a[k], v.active[k]);
+        break;
+      }
+    R->oracles[O_HOST_ACTIVE]++;
+  } else if (fn == F_CONTACT_PRESSURES) {
+    const double *pr = (const double *)(const void *)g[0].p;
+    for (int k = 0; k < v.ne; ++k)
+      if (!v.active[k] && pr[k] != 0) {
+        finding(R, V_HOST, idx, "pressure %.17g of inactive element %d", pr[k], k);
+        break;
+      }
+    R->oracles[O_HOST_ACTIVE]++;
+  } else if (fn == F_CONTACT_LENGTH) {
+    double L;
+    memcpy(&L, g[0].p, 8);
+    int na = 0;
+    for (int k = 0; k < v.ne; ++k) na += v.active[k];
+    if (L < 0 || (na == 0 && L != 0)) finding(R, V_HOST, idx, "contact length %.17g with %d active elements", L, na);
+  }
+  cv_free(&v);
+}
+
 static void exec_call(runner_t *R, int idx) {
   call_t *c = &R->cs->c[idx];
   int fn = c->fn;
+  /* (a context's call without a context passes NULL) */
+  if (R->phase == 0 && FN[fn].model == 2 && !R->ctx) c->null_model = 1;
   tfem_model *m = c->null_model ? NULL : R->m;
-  if (R->phase == 0) resolve_outputs(R, c);
+  tfem_contact *hc = c->null_model ? NULL : R->ctx;
+  if (R->phase == 0) {
+    resolve_outputs(R, c);
+    if (fn == F_CONTACT_PATTERN) c->out[1].len = c->out[0].len; /* (one length for both) */
+    make_inputs(R, c, idx);
+  }
   const void *in[MAXIN];
   for (int j = 0; j < MAXIN; ++j) in[j] = c->in[j].null_ ? NULL : c->in[j].p;
   tfem_contact_options opts = {c->iv[0], c->dv[0], c->dv[1], c->iv[1], c->iv[2], c->iv[3]};
@@ -2616,6 +3281,10 @@ static void exec_call(runner_t *R, int idx) {
     gb_alloc(&g[j], out_kind(fn, j), c->out[j].len);
     o[j] = c->out[j].null_ ? NULL : g[j].p;
   }
+  /* tfem_contact_scatter_add adds to the host's vector: it starts with the values made for it */
+  if (fn == F_CONTACT_SCATTER_ADD && c->in[1].p && g[0].n <= (size_t)c->in[1].n)
+    memcpy(g[0].p, c->in[1].p, sizeof(double) * g[0].n);
+  size_t ulen = c->in[0].n > 0 ? (size_t)c->in[0].n : 0;
   size_t lel = 0;
   const char *ver = NULL;
   const char *path = NULL;
@@ -2685,6 +3354,53 @@ static void exec_call(runner_t *R, int idx) {
   case F_GET_CONTACT_PAIR_BODIES: st = tfem_get_contact_pair_bodies(m, c->iv[0], o[0], o[1]); break;
   case F_SET_THREADS: st = tfem_set_threads(m, c->iv[0]); break;
   case F_GET_THREADS: st = tfem_get_threads(m, o[0]); break;
+  case F_STEP: st = tfem_step(m, c->dv[2], c->in[0].null_ ? NULL : &opts, o[0]); break;
+  case F_REVERT_STEP: st = tfem_revert_step(m); break;
+  case F_GET_CONTACT_STATE_SIZE: st = tfem_get_contact_state_size(m, o[0]); break;
+  case F_GET_CONTACT_STATE: st = tfem_get_contact_state(m, o[0], c->out[0].len); break;
+  case F_SET_CONTACT_STATE: st = tfem_set_contact_state(m, in[0], ulen); break;
+  case F_CONTACT_CREATE: {
+    tfem_contact *nc = tfem_contact_create(c->iv[0]);
+    if (nc) {
+      tfem_contact_destroy(R->ctx);
+      R->ctx = nc;
+      R->cbase = c->iv[0];
+      R->cbuilt = 0;
+    } else {
+      st = TFEM_STATUS_INVALID_ARGUMENT; /* (NULL: the message is the thread's) */
+    }
+    break;
+  }
+  case F_CONTACT_DESTROY:
+    tfem_contact_destroy(hc);
+    if (hc) R->ctx = NULL, R->cbuilt = 0;
+    break;
+  case F_CONTACT_LAST_ERROR: st = tfem_contact_last_error(hc, o[0], c->out[0].len); break;
+  case F_CONTACT_SET_OPTIONS: st = tfem_contact_set_options(hc, c->in[0].null_ ? NULL : &opts); break;
+  case F_CONTACT_ADD_SIDE:
+    st = tfem_contact_add_side(hc, c->iv[0], c->iv[1], c->dv[0], c->dv[1], c->iv[2], c->iv[3], in[0], in[1], in[2],
+                               c->iv[4], in[3], o[0]);
+    break;
+  case F_CONTACT_ADD_PAIR: st = tfem_contact_add_pair(hc, c->iv[0], c->iv[1], o[0]); break;
+  case F_CONTACT_ADD_PAIR_WITH_MESH: st = tfem_contact_add_pair_with_mesh(hc, c->iv[0], c->iv[1], c->iv[2], in[0], o[0]); break;
+  case F_CONTACT_SIZES: st = tfem_contact_sizes(hc, o[0], o[1], o[2]); break;
+  case F_CONTACT_NODES: st = tfem_contact_nodes(hc, o[0], c->out[0].len); break;
+  case F_CONTACT_PATTERN: st = tfem_contact_pattern(hc, o[0], o[1], c->out[0].len); break;
+  case F_CONTACT_EVALUATE:
+    st = tfem_contact_evaluate(hc, in[0], ulen, o[0], c->out[0].len, o[1], c->out[1].len);
+    break;
+  case F_CONTACT_GATHER: st = tfem_contact_gather(hc, in[0], ulen, o[0], c->out[0].len); break;
+  case F_CONTACT_SCATTER_ADD: st = tfem_contact_scatter_add(hc, in[0], ulen, o[0], c->out[0].len); break;
+  case F_CONTACT_UPDATE: st = tfem_contact_update(hc, in[0], ulen, o[0]); break;
+  case F_CONTACT_RESTART: st = tfem_contact_restart(hc); break;
+  case F_CONTACT_GET_ACTIVE: st = tfem_contact_get_active(hc, o[0], c->out[0].len); break;
+  case F_CONTACT_SET_ACTIVE: st = tfem_contact_set_active(hc, in[0], ulen); break;
+  case F_CONTACT_GAPS: st = tfem_contact_gaps(hc, in[0], ulen, o[0], c->out[0].len); break;
+  case F_CONTACT_PRESSURES: st = tfem_contact_pressures(hc, in[0], ulen, o[0], c->out[0].len); break;
+  case F_CONTACT_ELEMENTS: st = tfem_contact_elements(hc, o[0], c->out[0].len); break;
+  case F_CONTACT_ELEMENT_EQUATIONS: st = tfem_contact_element_equations(hc, o[0], c->out[0].len); break;
+  case F_CONTACT_ELEMENT_BLOCKS: st = tfem_contact_element_blocks(hc, o[0], c->out[0].len); break;
+  case F_CONTACT_LENGTH: st = tfem_contact_length(hc, o[0]); break;
   case F_DESTROY_NULL: tfem_destroy(NULL); break;
   case F_RECREATE:
     tfem_destroy(R->m);
@@ -2702,7 +3418,8 @@ static void exec_call(runner_t *R, int idx) {
     char why[400] = "";
     if (st != TFEM_STATUS_OK) {
       char msg[300] = "";
-      tfem_last_error(FN[fn].model && !c->null_model ? R->m : NULL, msg, sizeof msg);
+      if (FN[fn].model == 2 && hc) tfem_contact_last_error(hc, msg, sizeof msg);
+      else tfem_last_error(FN[fn].model == 1 && !c->null_model ? R->m : NULL, msg, sizeof msg);
       snprintf(why, sizeof why, "OK originally, %s (%d) on replay without the failed calls: %s", status_name(st), st, msg);
       R->status_flips++;
     } else if (fn == F_VERSION) {
@@ -2750,10 +3467,14 @@ static void exec_call(runner_t *R, int idx) {
   c->status = st;
   c->ran = 1;
   R->calls++;
-  const tfem_model *slot = (FN[fn].model && !c->null_model) ? R->m : NULL;
-  char msg[4096] = "";
-  if (fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && fn != F_VERSION && fn != F_DESTROY_NULL && fn != F_RECREATE)
-    tfem_last_error(slot, msg, sizeof msg);
+  const tfem_model *slot = (FN[fn].model == 1 && !c->null_model) ? R->m : NULL;
+  int hslot = FN[fn].model == 2 && hc; /* the message is the context's */
+  int msg_fn = fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && fn != F_VERSION && fn != F_DESTROY_NULL &&
+               fn != F_RECREATE && fn != F_CONTACT_LAST_ERROR && fn != F_CONTACT_DESTROY;
+  static __thread char msg[65536];
+  msg[0] = 0;
+  if (msg_fn && hslot) tfem_contact_last_error(hc, msg, sizeof msg);
+  else if (msg_fn) tfem_last_error(slot, msg, 4096);
   if (R->verbose) {
     char ex[600];
     excerpt(msg, strlen(msg), ex, sizeof ex);
@@ -2785,19 +3506,23 @@ static void exec_call(runner_t *R, int idx) {
       finding(R, V_CANARY, idx, "output %d (declared length %zu) has a canary overwritten", j, c->out[j].len);
   if (st != TFEM_STATUS_OK && !writes_on_failure(fn))
     for (int j = 0; j < nout; ++j)
-      if (!c->out[j].null_ && !gb_untouched(&g[j]))
+      if (!c->out[j].null_ && (fn == F_CONTACT_SCATTER_ADD ? c->in[1].p && g[0].n <= (size_t)c->in[1].n &&
+                                                              memcmp(g[0].p, c->in[1].p, sizeof(double) * g[0].n) != 0
+                                                        : !gb_untouched(&g[j])))
         finding(R, V_WRITE_ON_FAIL, idx, "output %d written although the status is %s", j, status_name(st));
-  if (c->null_model && FN[fn].model && fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && st != TFEM_STATUS_NULL_POINTER)
+  if (c->null_model && FN[fn].model && fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && fn != F_CONTACT_DESTROY &&
+      st != TFEM_STATUS_NULL_POINTER)
     finding(R, V_OTHER, idx, "NULL model gave %s, not NULL_POINTER", status_name(st));
   /* NULL pointers other than the model: a required one must be refused, an
    * optional one ("may be NULL") accepted. (An input array of no element
    * may be NULL.) */
-  if (FN[fn].model && !c->null_model && fn != F_LAST_ERROR) {
+  if (FN[fn].model && !c->null_model && fn != F_LAST_ERROR && fn != F_CONTACT_LAST_ERROR) {
     int req_null = -1, opt_null = -1;
     for (int j = 0; j < nout; ++j)
       if (c->out[j].null_) *(out_nullable(fn, j) ? &opt_null : &req_null) = j;
     for (int j = 0; j < fn_nin(fn); ++j)
-      if (c->in[j].null_ && (FN[fn].ink[j] == 'o' || c->in[j].n > 0))
+      if (c->in[j].null_ && (FN[fn].ink[j] == 'o' || FN[fn].ink[j] == 'r' || c->in[j].n > 0) &&
+          !(fn == F_CONTACT_SCATTER_ADD && j == 1))
         *(FN[fn].ink[j] == 'o' ? &opt_null : &req_null) = 10 + j;
     if (req_null >= 0 && st == TFEM_STATUS_OK)
       finding(R, V_NULL_ARG, idx, "OK although %s %d is NULL", req_null >= 10 ? "input" : "output", req_null % 10);
@@ -2807,8 +3532,8 @@ static void exec_call(runner_t *R, int idx) {
   }
 
   /* Messages. */
-  if (fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && fn != F_VERSION && fn != F_DESTROY_NULL && fn != F_RECREATE) {
-    size_t L = tfem_last_error_length(slot), sl = strlen(msg);
+  if (msg_fn) {
+    size_t sl = strlen(msg), L = hslot ? sl + 1 : tfem_last_error_length(slot);
     if (st != TFEM_STATUS_OK) {
       if (sl == 0) finding(R, V_EMPTY_MSG, idx, "status %s without a message (%s slot)", status_name(st), slot ? "model" : "thread");
       if (L > MAX_MSG + 1) {
@@ -2816,11 +3541,11 @@ static void exec_call(runner_t *R, int idx) {
         excerpt(msg, sl < 120 ? sl : 120, ex, sizeof ex);
         finding(R, V_LONG_MSG, idx, "message of %zu bytes (status %s): \"%s...\"", L - 1, status_name(st), ex);
       }
-      if (L <= sizeof msg && L != sl + 1)
+      if (L <= 4096 && L != sl + 1)
         finding(R, V_LASTERR, idx, "tfem_last_error_length = %zu but the message has %zu bytes", L, sl);
-    } else if (slot && sl != 0) {
+    } else if ((slot || hslot) && sl != 0) {
       finding(R, V_LASTERR, idx, "the model's message is not empty after a successful call: \"%.80s\"", msg);
-    } else if (!slot && sl != 0 && !FN[fn].model) {
+    } else if (!slot && !hslot && sl != 0 && !FN[fn].model) {
       char ex[200];
       excerpt(msg, sl < 100 ? sl : 100, ex, sizeof ex);
       finding(R, V_SLOT, idx, "tfem_last_error(NULL) still gives \"%s\" after this successful model-free call", ex);
@@ -2828,8 +3553,14 @@ static void exec_call(runner_t *R, int idx) {
   }
 
   /* The last-error calls themselves. */
-  if (fn == F_LAST_ERROR) {
-    size_t L = tfem_last_error_length(m);
+  if (fn == F_LAST_ERROR || (fn == F_CONTACT_LAST_ERROR && hc)) {
+    size_t L = fn == F_LAST_ERROR ? tfem_last_error_length(m) : 0;
+    if (fn == F_CONTACT_LAST_ERROR) {
+      static __thread char b[65536];
+      b[0] = 0;
+      tfem_contact_last_error(hc, b, sizeof b);
+      L = strlen(b) + 1;
+    }
     size_t len = c->out[0].len;
     if (!o[0]) {
       if (st != TFEM_STATUS_NULL_POINTER) finding(R, V_LASTERR, idx, "NULL buffer gave %s", status_name(st));
@@ -2845,6 +3576,8 @@ static void exec_call(runner_t *R, int idx) {
         finding(R, V_LASTERR, idx, "message of %zu bytes truncated to %zu without BUFFER_TOO_SMALL", L - 1, len);
     }
   }
+  if (fn == F_CONTACT_CREATE && (st == TFEM_STATUS_OK) != (c->iv[0] == 0 || c->iv[0] == 1))
+    finding(R, V_OTHER, idx, "tfem_contact_create(%d) %s", c->iv[0], st ? "returned NULL" : "made a context");
   if (fn == F_LAST_ERROR_LENGTH && lel < 1) finding(R, V_LASTERR, idx, "tfem_last_error_length = 0");
   if (fn == F_VERSION) {
     int a, b, cc, n = 0;
@@ -2858,7 +3591,12 @@ static void exec_call(runner_t *R, int idx) {
       if (c->out[j].null_) continue;
       const gbuf *b = &g[j];
       char why[200] = "";
-      if (b->kind == K_D) {
+      /* (gather and scatter_add copy and add the host's own values: a
+       * non-finite value given comes back) */
+      int passed_through = 0;
+      if ((fn == F_CONTACT_GATHER || fn == F_CONTACT_SCATTER_ADD) && c->in[0].p)
+        for (int i = 0; i < c->in[0].n && !passed_through; ++i) passed_through = !isfinite(((const double *)c->in[0].p)[i]);
+      if (b->kind == K_D && !passed_through) {
         for (size_t i = 0; i < b->n; ++i) {
           double v;
           memcpy(&v, b->p + 8 * i, 8);
@@ -2893,7 +3631,8 @@ static void exec_call(runner_t *R, int idx) {
                   op->max_iterations, op->refactorize);
       }
       /* Everything required written. */
-      if (!FN[fn].scalar_out && b->kind != K_C && c->out[j].req >= 0 && (size_t)c->out[j].req <= b->n) {
+      /* (a state's bytes, like a message's, may be the pattern's) */
+      if (!FN[fn].scalar_out && b->kind != K_C && b->kind != K_U8 && c->out[j].req >= 0 && (size_t)c->out[j].req <= b->n) {
         for (size_t i = 0; i < (size_t)c->out[j].req; ++i)
           if (gb_is_pattern(b, i)) {
             finding(R, V_OTHER, idx, "OK but output %d element %zu of %ld not written", j, i, c->out[j].req);
@@ -2917,7 +3656,12 @@ static void exec_call(runner_t *R, int idx) {
       }
       if (bad) finding(R, V_OTHER, idx, "system matrix is not an upper-triangular CSC in the index base");
     }
-    if (fn == F_GET_CONTACT_ACTIVE && o[0])
+    if (fn == F_CONTACT_UPDATE && o[0]) {
+      int v;
+      memcpy(&v, g[0].p, 4);
+      if (v != 0 && v != 1) finding(R, V_OTHER, idx, "changed = %d", v);
+    }
+    if ((fn == F_GET_CONTACT_ACTIVE || fn == F_CONTACT_GET_ACTIVE) && o[0])
       for (size_t i = 0; i < g[0].n && c->out[0].req >= 0 && i < (size_t)c->out[0].req; ++i) {
         int v;
         memcpy(&v, g[0].p + 4 * i, 4);
@@ -2941,8 +3685,60 @@ static void exec_call(runner_t *R, int idx) {
       memcpy(&nt, g[1].p, 4);
       if (nn != R->sh.nn || nt != R->sh.nt) finding(R, V_OTHER, idx, "sizes %d, %d; the mesh has %d, %d", nn, nt, R->sh.nn, R->sh.nt);
     }
-    if (c->null_model && FN[fn].model && fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH)
+    if (c->null_model && FN[fn].model && fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && fn != F_CONTACT_DESTROY)
       finding(R, V_OTHER, idx, "OK with a NULL model");
+  }
+
+  /* ---- the contact context and load steps ---- */
+  if (st == TFEM_STATUS_OK && !c->null_model && FN[fn].model == 2 && fn != F_CONTACT_DESTROY &&
+      fn != F_CONTACT_LAST_ERROR && fn != F_CONTACT_SET_OPTIONS && fn != F_CONTACT_ADD_SIDE &&
+      fn != F_CONTACT_ADD_PAIR && fn != F_CONTACT_ADD_PAIR_WITH_MESH)
+    R->cbuilt = 1; /* (a call that needs the contact mesh B succeeded) */
+  if (st == TFEM_STATUS_OK && hc) {
+    int full0 = out_full(c, 0);
+    if ((fn == F_CONTACT_PATTERN && full0 && out_full(c, 1)) || (fn == F_CONTACT_EVALUATE && full0) ||
+        ((fn == F_CONTACT_GATHER || fn == F_CONTACT_SCATTER_ADD) && full0 && !c->in[0].null_) ||
+        (fn == F_CONTACT_SET_ACTIVE && !c->in[0].null_) || (fn == F_CONTACT_PRESSURES && full0) ||
+        (fn == F_CONTACT_LENGTH && !c->out[0].null_))
+      oracle_host(R, idx, c, g);
+  }
+  if (st == TFEM_STATUS_OK && !c->null_model && fn == F_GET_CONTACT_STATE && out_full(c, 0)) {
+    free(R->st_prev);
+    R->st_prev = R->st_last, R->n_prev = R->n_last;
+    R->n_last = (size_t)c->out[0].req;
+    R->st_last = xmalloc(R->n_last + 1);
+    memcpy(R->st_last, g[0].p, R->n_last);
+  }
+  if (c->tag != T_NONE && R->pristine && idx < R->full_prefix) {
+    /* a step repeated after tfem_revert_step or tfem_set_contact_state of
+     * the state before it: the same results, bit for bit (all the calls
+     * since the reference successful) */
+    int all_ok = st == TFEM_STATUS_OK;
+    for (int k = R->ref_idx; k < idx && all_ok && (c->tag == T_CMP_STEP || c->tag == T_CMP_DISP); ++k)
+      all_ok = R->cs->c[k].status == TFEM_STATUS_OK;
+    if (c->tag == T_REF_STEP) {
+      R->ref_ok = all_ok && !c->out[0].null_;
+      R->ref_idx = idx;
+      R->ref_disp_ok = 0;
+      if (R->ref_ok) memcpy(&R->ref_rep, g[0].p, sizeof R->ref_rep);
+    } else if (c->tag == T_REF_DISP && all_ok && out_full(c, 0)) {
+      R->ref_disp = fnv64(g[0].p, sizeof(double) * (size_t)c->out[0].req);
+      R->ref_disp_ok = 1;
+    } else if (c->tag == T_CMP_STEP && all_ok && R->ref_ok && !c->out[0].null_) {
+      tfem_contact_report b;
+      const tfem_contact_report *a = &R->ref_rep;
+      memcpy(&b, g[0].p, sizeof b);
+      R->oracles[O_STEP_REPEAT]++;
+      if (a->iterations != b.iterations || a->elements != b.elements || a->active != b.active ||
+          memcmp(&a->contact_length, &b.contact_length, 8) || memcmp(&a->max_penetration, &b.max_penetration, 8))
+        finding(R, V_STEP, idx, "report (iterations %d, active %d of %d, length %.17g, penetration %.17g), call #%d gave "
+                "(%d, %d of %d, %.17g, %.17g)", b.iterations, b.active, b.elements, b.contact_length, b.max_penetration,
+                R->ref_idx, a->iterations, a->active, a->elements, a->contact_length, a->max_penetration);
+    } else if (c->tag == T_CMP_DISP && all_ok && R->ref_disp_ok && out_full(c, 0)) {
+      R->oracles[O_STEP_REPEAT]++;
+      if (fnv64(g[0].p, sizeof(double) * (size_t)c->out[0].req) != R->ref_disp)
+        finding(R, V_STEP, idx, "displacements differ from those after the step of call #%d", R->ref_idx);
+    }
   }
 
   /* ---- the shadow model and the semantic oracles ---- */
@@ -2955,19 +3751,22 @@ static void exec_call(runner_t *R, int idx) {
   if (st != TFEM_STATUS_OK && st != TFEM_STATUS_NULL_POINTER && !c->null_model && fn == F_GET_CONTACT_PAIR_BODIES &&
       s->has_mesh && c->iv[0] >= 0 && c->iv[0] < s->npairs)
     finding(R, V_CONTACT, idx, "%s for pair %d of the %d declared: \"%.160s\"", status_name(st), c->iv[0], s->npairs, msg);
-  if (!c->null_model && s->has_mesh && st == TFEM_STATUS_INVALID_STATE) {
+  if (!c->null_model && s->has_mesh && st == TFEM_STATUS_INVALID_STATE && !s->res_unknown) {
     int matrix = fn == F_GET_MATRIX_SIZE || fn == F_GET_MATRIX;
-    if (need_results && s->results) {
+    if (matrix && s->no_matrix) {
+      /* (the system matrix of a step is not available) */
+    } else if (need_results && s->results) {
       if (matrix && s->matrix_dropped)
         finding(R, V_MATRIX_DROPPED, idx, "no matrix after a failed solve, while the displacements of the solve before it are kept: \"%.160s\"", msg);
       else
         finding(R, V_RESULTS_LOST, idx, "INVALID_STATE although the last %s solve succeeded and nothing changed the problem since: \"%.160s\"",
-                s->results == 2 ? "contact" : "plain", msg);
+                s->results == 2 ? "contact" : s->results == 3 ? "load step" : "plain", msg);
     } else if (need_contact && s->results == 2) {
       finding(R, V_RESULTS_LOST, idx, "contact results gone although nothing changed the problem since the contact solve: \"%.160s\"", msg);
     }
   }
-  if (!c->null_model && st == TFEM_STATUS_OK && (need_results || need_contact) && !s->results && s->has_mesh)
+  if (!c->null_model && st == TFEM_STATUS_OK && (need_results || need_contact) && !s->results && s->has_mesh &&
+      !s->res_unknown)
     finding(R, V_OTHER, idx, "results returned although the problem changed since the last solve");
   if (!c->null_model && s->exact && (fn == F_SET_BOUNDARY_EDGES || fn == F_ADD_BOUNDARY_EDGES) && c->iv[0] >= 0 &&
       (c->iv[0] == 0 || (!c->in[0].null_ && !c->in[1].null_ && c->in[0].n >= 2 * c->iv[0] && c->in[1].n >= c->iv[0]))) {
@@ -3231,14 +4030,32 @@ static void exec_call(runner_t *R, int idx) {
         oracle_gaps(R, idx, (const double *)(const void *)g[0].p);
       goto keep_results;
     case F_GET_EXTERNAL_WORK:
-      if (!c->out[0].null_ && s->exact && s->results) {
+      if (!c->out[0].null_ && s->exact && s->results && s->results != 3) { /* (a step's loads are scaled) */
         double w;
         memcpy(&w, g[0].p, sizeof w);
         oracle_work(R, idx, w);
       }
       goto keep_results;
+    case F_STEP:
+      s->pre_results = s->results;
+      s->pre_valid = 1;
+      s->results = 3;
+      s->no_matrix = 1;
+      s->res_unknown = 0;
+      s->sol_gen++;
+      goto keep_results;
+    case F_REVERT_STEP:
+      /* the results before the step (unknown if the step is not known here) */
+      if (s->pre_valid) s->results = s->pre_results;
+      else s->res_unknown = 1;
+      s->pre_valid = 0;
+      s->sol_gen++;
+      goto keep_results;
     case F_SOLVE: case F_SOLVE_CONTACT: {
       s->results = fn == F_SOLVE ? 1 : 2;
+      s->no_matrix = 0;
+      s->res_unknown = 0;
+      s->pre_valid = 0;
       s->matrix_dropped = 0;
       s->sol_gen++;
       s->contact_test = fn == F_SOLVE_CONTACT && !c->in[0].null_ ? c->iv[1] : TFEM_INVERSION_TEST_LINEARISED;
@@ -3331,6 +4148,8 @@ static void exec_call(runner_t *R, int idx) {
       break;
     }
     s->results = 0; /* a change of the problem discards the results */
+    s->res_unknown = 0;
+    s->pre_valid = 0;
     s->matrix_dropped = 0;
     s->prob_gen++;
     s->sol_gen++;
@@ -3385,6 +4204,8 @@ static const char *c_type(int kind) {
   case K_I: return "int";
   case K_L: return "int64_t";
   case K_C: return "char";
+  case K_Z: return "size_t";
+  case K_U8: return "uint8_t";
   case K_SI: return "tfem_solve_info";
   case K_RE: return "tfem_contact_report";
   default: return "tfem_contact_options";
@@ -3407,6 +4228,10 @@ static void c_emit_header(FILE *f, const case_t *cs) {
           "static const char *L = \"A\";\nstatic int skip(int k);\n"
           "static inline void show(const tfem_model *m, int k, const char *fn, tfem_status s) {\n"
           "  char b[4096] = \"\";\n  if (s != TFEM_STATUS_OK) tfem_last_error(m, b, sizeof b);\n"
+          "  printf(\"%%s #%%d %%s -> %%d %%s\\n\", L, k, fn, (int)s, b);\n}\n"
+          "static inline void show_c(const tfem_contact *c, int k, const char *fn, tfem_status s) {\n"
+          "  char b[4096] = \"\";\n  if (s != TFEM_STATUS_OK) {\n    if (c) tfem_contact_last_error(c, b, sizeof b);\n"
+          "    else tfem_last_error(NULL, b, sizeof b);\n  }\n"
           "  printf(\"%%s #%%d %%s -> %%d %%s\\n\", L, k, fn, (int)s, b);\n}\n"
           "static inline unsigned long long fnv(const void *p, size_t n) {\n"
           "  unsigned long long h = 1469598103934665603ULL;\n"
@@ -3433,7 +4258,7 @@ static void c_emit_header(FILE *f, const case_t *cs) {
           "static inline void write_file(const char *path, const char *text, size_t n) {\n"
           "  mkdir(REPRO_DIR, 0700);\n  FILE *f = fopen(path, \"wb\");\n"
           "  if (f) {\n    fwrite(text, 1, n, f);\n    fclose(f);\n  }\n}\n\n"
-          "static void run(void) {\n  tfem_model *m = tfem_create();\n  tfem_status s;\n  (void)s;\n",
+          "static void run(void) {\n  tfem_model *m = tfem_create();\n  tfem_contact *cx = NULL;\n  tfem_status s;\n  (void)s;\n",
           cs->seed, cs->index, cs->kind);
 }
 
@@ -3443,8 +4268,15 @@ static void c_emit_call(FILE *f, const call_t *c, int idx) {
   const char *M = c->null_model ? "NULL" : "m";
   fprintf(f, "  if (!skip(%d)) {\n", idx);
   for (int j = 0; j < fn_nin(fn); ++j) {
-    if (FN[fn].ink[j] == 'o' || c->in[j].null_) continue;
-    if (FN[fn].ink[j] == 'x') {
+    char role = FN[fn].ink[j];
+    if (role == 'o' || role == 'r' || c->in[j].null_ || (fn == F_CONTACT_SCATTER_ADD && j == 1 && c->out[0].null_)) continue;
+    if (role == 'q' || role == 's') {
+      fprintf(f, "    static const %s a%d[%d] = {", role == 'q' ? "int64_t" : "uint8_t", j, c->in[j].n > 0 ? c->in[j].n : 1);
+      for (int k = 0; k < c->in[j].n; ++k)
+        fprintf(f, "%s%s%lld", k ? "," : "", k && k % 12 == 0 ? "\n      " : (k ? " " : ""),
+                role == 'q' ? (long long)((int64_t *)c->in[j].p)[k] : (long long)((unsigned char *)c->in[j].p)[k]);
+      if (c->in[j].n == 0) fprintf(f, "0");
+    } else if (role == 'x' || role == 'U') {
       fprintf(f, "    static const double a%d[%d] = {", j, c->in[j].n > 0 ? c->in[j].n : 1);
       for (int k = 0; k < c->in[j].n; ++k)
         fprintf(f, "%s%s%s", k ? "," : "", k && k % 6 == 0 ? "\n      " : (k ? " " : ""), cdbl(((double *)c->in[j].p)[k], b1));
@@ -3471,7 +4303,9 @@ static void c_emit_call(FILE *f, const call_t *c, int idx) {
   for (int k = 0; k < MAXD; ++k) cdbl(c->dv[k], d[k]);
   const int *I = c->iv;
   size_t *len = (size_t[]){c->out[0].len, c->out[1].len, c->out[2].len, c->out[3].len};
-  const char *sl = FN[fn].model ? M : "NULL";
+  const char *sl = FN[fn].model == 1 ? M : "NULL";
+  const char *H = c->null_model ? "NULL" : "cx";
+  size_t ul = c->in[0].n > 0 ? (size_t)c->in[0].n : 0;
   switch (fn) {
   case F_VERSION: fprintf(f, "    printf(\"%%s #%d version %%s\\n\", L, tfem_version());\n", idx); break;
   case F_LAST_ERROR: fprintf(f, "    s = tfem_last_error(%s, %s, %zu);\n", M, o[0], len[0]); break;
@@ -3552,12 +4386,71 @@ static void c_emit_call(FILE *f, const call_t *c, int idx) {
     break;
   case F_SET_THREADS: fprintf(f, "    s = tfem_set_threads(%s, %d);\n", M, I[0]); break;
   case F_GET_THREADS: fprintf(f, "    s = tfem_get_threads(%s, %s);\n", M, o[0]); break;
+  case F_STEP:
+    if (c->in[0].null_) {
+      fprintf(f, "    s = tfem_step(%s, %s, NULL, %s);\n", M, d[2], o[0]);
+    } else {
+      fprintf(f, "    tfem_contact_options opt = {%d, %s, %s, %d, %d, %d};\n", I[0], d[0], d[1], I[1], I[2], I[3]);
+      fprintf(f, "    s = tfem_step(%s, %s, &opt, %s);\n", M, d[2], o[0]);
+    }
+    break;
+  case F_REVERT_STEP: fprintf(f, "    s = tfem_revert_step(%s);\n", M); break;
+  case F_GET_CONTACT_STATE_SIZE: fprintf(f, "    s = tfem_get_contact_state_size(%s, %s);\n", M, o[0]); break;
+  case F_GET_CONTACT_STATE: fprintf(f, "    s = tfem_get_contact_state(%s, (uint8_t *)%s, %zu);\n", M, o[0], len[0]); break;
+  case F_SET_CONTACT_STATE: fprintf(f, "    s = tfem_set_contact_state(%s, %s, %zu);\n", M, a[0], ul); break;
+  case F_CONTACT_CREATE:
+    fprintf(f, "    tfem_contact *nc = tfem_contact_create(%d);\n    s = nc ? TFEM_STATUS_OK : TFEM_STATUS_INVALID_ARGUMENT;\n"
+               "    if (nc) {\n      tfem_contact_destroy(cx);\n      cx = nc;\n    }\n", I[0]);
+    break;
+  case F_CONTACT_DESTROY:
+    fprintf(f, "    tfem_contact_destroy(%s);\n", H);
+    if (!c->null_model) fprintf(f, "    cx = NULL;\n");
+    break;
+  case F_CONTACT_LAST_ERROR: fprintf(f, "    s = tfem_contact_last_error(%s, %s, %zu);\n", H, o[0], len[0]); break;
+  case F_CONTACT_SET_OPTIONS:
+    if (c->in[0].null_) {
+      fprintf(f, "    s = tfem_contact_set_options(%s, NULL);\n", H);
+    } else {
+      fprintf(f, "    tfem_contact_options opt = {%d, %s, %s, %d, %d, %d};\n", I[0], d[0], d[1], I[1], I[2], I[3]);
+      fprintf(f, "    s = tfem_contact_set_options(%s, &opt);\n", H);
+    }
+    break;
+  case F_CONTACT_ADD_SIDE:
+    fprintf(f, "    s = tfem_contact_add_side(%s, %d, %d, %s, %s, %d, %d, %s, %s, %s, %d, %s, %s);\n", H, I[0], I[1], d[0], d[1],
+            I[2], I[3], a[0], a[1], a[2], I[4], a[3], o[0]);
+    break;
+  case F_CONTACT_ADD_PAIR: fprintf(f, "    s = tfem_contact_add_pair(%s, %d, %d, %s);\n", H, I[0], I[1], o[0]); break;
+  case F_CONTACT_ADD_PAIR_WITH_MESH:
+    fprintf(f, "    s = tfem_contact_add_pair_with_mesh(%s, %d, %d, %d, %s, %s);\n", H, I[0], I[1], I[2], a[0], o[0]);
+    break;
+  case F_CONTACT_SIZES: fprintf(f, "    s = tfem_contact_sizes(%s, %s, %s, %s);\n", H, o[0], o[1], o[2]); break;
+  case F_CONTACT_NODES: fprintf(f, "    s = tfem_contact_nodes(%s, %s, %zu);\n", H, o[0], len[0]); break;
+  case F_CONTACT_PATTERN: fprintf(f, "    s = tfem_contact_pattern(%s, %s, %s, %zu);\n", H, o[0], o[1], len[0]); break;
+  case F_CONTACT_EVALUATE:
+    fprintf(f, "    s = tfem_contact_evaluate(%s, %s, %zu, %s, %zu, %s, %zu);\n", H, a[0], ul, o[0], len[0], o[1], len[1]);
+    break;
+  case F_CONTACT_GATHER: fprintf(f, "    s = tfem_contact_gather(%s, %s, %zu, %s, %zu);\n", H, a[0], ul, o[0], len[0]); break;
+  case F_CONTACT_SCATTER_ADD:
+    if (!c->out[0].null_) fprintf(f, "    memcpy(o0, a1, sizeof o0);\n");
+    fprintf(f, "    s = tfem_contact_scatter_add(%s, %s, %zu, %s, %zu);\n", H, a[0], ul, o[0], len[0]);
+    break;
+  case F_CONTACT_UPDATE: fprintf(f, "    s = tfem_contact_update(%s, %s, %zu, %s);\n", H, a[0], ul, o[0]); break;
+  case F_CONTACT_RESTART: fprintf(f, "    s = tfem_contact_restart(%s);\n", H); break;
+  case F_CONTACT_GET_ACTIVE: fprintf(f, "    s = tfem_contact_get_active(%s, %s, %zu);\n", H, o[0], len[0]); break;
+  case F_CONTACT_SET_ACTIVE: fprintf(f, "    s = tfem_contact_set_active(%s, %s, %zu);\n", H, a[0], ul); break;
+  case F_CONTACT_GAPS: fprintf(f, "    s = tfem_contact_gaps(%s, %s, %zu, %s, %zu);\n", H, a[0], ul, o[0], len[0]); break;
+  case F_CONTACT_PRESSURES: fprintf(f, "    s = tfem_contact_pressures(%s, %s, %zu, %s, %zu);\n", H, a[0], ul, o[0], len[0]); break;
+  case F_CONTACT_ELEMENTS: fprintf(f, "    s = tfem_contact_elements(%s, %s, %zu);\n", H, o[0], len[0]); break;
+  case F_CONTACT_ELEMENT_EQUATIONS: fprintf(f, "    s = tfem_contact_element_equations(%s, %s, %zu);\n", H, o[0], len[0]); break;
+  case F_CONTACT_ELEMENT_BLOCKS: fprintf(f, "    s = tfem_contact_element_blocks(%s, %s, %zu);\n", H, o[0], len[0]); break;
+  case F_CONTACT_LENGTH: fprintf(f, "    s = tfem_contact_length(%s, %s);\n", H, o[0]); break;
   case F_DESTROY_NULL: fprintf(f, "    tfem_destroy(NULL);\n"); break;
   case F_RECREATE: fprintf(f, "    tfem_destroy(m);\n    m = tfem_create();\n"); break;
   default: break;
   }
-  if (fn != F_VERSION && fn != F_LAST_ERROR_LENGTH && fn != F_DESTROY_NULL && fn != F_RECREATE) {
-    fprintf(f, "    show(%s, %d, \"%s\", s);\n", fn == F_LAST_ERROR ? "NULL" : sl, idx, fn_name(fn));
+  if (fn != F_VERSION && fn != F_LAST_ERROR_LENGTH && fn != F_DESTROY_NULL && fn != F_RECREATE && fn != F_CONTACT_DESTROY) {
+    if (FN[fn].model == 2 && fn != F_CONTACT_LAST_ERROR) fprintf(f, "    show_c(%s, %d, \"%s\", s);\n", H, idx, fn_name(fn));
+    else fprintf(f, "    show(%s, %d, \"%s\", s);\n", fn == F_LAST_ERROR || fn == F_CONTACT_LAST_ERROR ? "NULL" : sl, idx, fn_name(fn));
     if (fn == F_LAST_ERROR) fprintf(f, "    (void)0; /* (the message shown is the thread's) */\n");
     int any = 0;
     for (int j = 0; j < fn_nout(fn); ++j) any |= !c->out[j].null_;
@@ -3573,6 +4466,8 @@ static void c_emit_call(FILE *f, const call_t *c, int idx) {
         case K_I: fprintf(f, "      dump_i(%d, \"o%d\", %so%d, %zu);\n", idx, j, p, j, n); break;
         case K_L: fprintf(f, "      dump_l(%d, \"o%d\", %so%d, %zu);\n", idx, j, p, j, n); break;
         case K_C: fprintf(f, "      printf(\"%%s #%d text: %%s\\n\", L, o%d);\n", idx, j); break;
+        case K_Z: fprintf(f, "      printf(\"%%s #%d size %%zu\\n\", L, o%d);\n", idx, j); break;
+        case K_U8: fprintf(f, "      printf(\"%%s #%d bytes hash %%016llx\\n\", L, fnv(o%d, %zu));\n", idx, j, n); break;
         case K_SI: fprintf(f, "      dump_info(%d, &o%d);\n", idx, j); break;
         case K_RE: fprintf(f, "      dump_report(%d, &o%d);\n", idx, j); break;
         default:
@@ -3593,7 +4488,7 @@ static void c_emit_status(FILE *f, const call_t *c, int idx, int st) {
 }
 
 static void c_emit_tail(FILE *f, const case_t *cs, int died) {
-  fprintf(f, "  tfem_destroy(m);\n}\n\n");
+  fprintf(f, "  tfem_destroy(m);\n  tfem_contact_destroy(cx);\n}\n\n");
   if (died) fprintf(f, "/* The process died in the last call above. */\n");
   fprintf(f, "static int skip_failed = 0;\nstatic int skip(int k) {\n  static const int failed[] = {");
   int nf = 0;
@@ -3644,6 +4539,9 @@ static void run_case(uint64_t seed, long index, int verbose, case_result *res) {
   if (!R.m) finding(&R, V_OTHER, -1, "tfem_create() returned NULL");
   for (int i = 0; i < cs.n && R.m; ++i) exec_call(&R, i);
   tfem_destroy(R.m);
+  tfem_contact_destroy(R.ctx);
+  R.ctx = NULL;
+  R.cbuilt = 0;
   if (R.cfile) {
     c_emit_tail(R.cfile, &cs, 0);
     fflush(R.cfile);
@@ -3662,9 +4560,12 @@ static void run_case(uint64_t seed, long index, int verbose, case_result *res) {
   /* (The message calls are left out: what they read is the failed calls'.) */
   for (int i = 0; i < cs.n && R.m; ++i)
     if (cs.c[i].ran && cs.c[i].status == TFEM_STATUS_OK && cs.c[i].fn != F_LAST_ERROR &&
-        cs.c[i].fn != F_LAST_ERROR_LENGTH)
+        cs.c[i].fn != F_LAST_ERROR_LENGTH && cs.c[i].fn != F_CONTACT_LAST_ERROR)
       exec_call(&R, i);
   tfem_destroy(R.m);
+  tfem_contact_destroy(R.ctx);
+  R.ctx = NULL;
+  free(R.st_last), free(R.st_prev);
   if (verbose) {
     long after = 0;
     for (int v = 0; v < NV; ++v) after += R.counts[v];
