@@ -34,8 +34,19 @@ fn main() {
             .unwrap_or(CattaneoMindlin::default().half_width),
         ..CattaneoMindlin::default()
     };
+    // E_cylinder / E_block from the environment (CATTANEO_E_RATIO), default 1:
+    // β ≠ 0 shows how far the β = 0 solution is then.
+    let base = CattaneoMindlin {
+        e_cylinder: base.e_block
+            * std::env::var("CATTANEO_E_RATIO")
+                .ok()
+                .and_then(|v| v.parse().ok())
+                .unwrap_or(1.0),
+        ..base
+    };
     println!(
-        "Cattaneo–Mindlin, plane strain, equal bodies (β = {:.1e}), μ = {}, a = {}R; tangential steps Q/(μP) = {ratios:?}\n",
+        "Cattaneo–Mindlin, plane strain, E_cylinder/E_block = {}, Dundurs β = {:.3}, μ = {}, a = {}R; tangential steps Q/(μP) = {ratios:?}\n",
+        base.e_cylinder / base.e_block,
         base.dundurs_beta(),
         base.mu,
         base.half_width / base.radius

@@ -33,7 +33,10 @@
 //! **Solution.** The free DOFs of the pair nodes (I) are kept and the rest
 //! (R) condensed once: S = K_II − K_IR K_RR⁻¹ K_RI (sparse Cholesky of K_RR,
 //! |I| solves), so each iteration is a dense LU of [S −Cᵀ; rows of the sets]
-//! of size |I| + 2·pairs, and each step two solves with K_RR. The bodies
+//! of size |I| + 2·pairs, and each step two solves with K_RR. When S is
+//! positive definite (no body floats) the iterations work on the
+//! multipliers alone: u_I = S⁻¹(g + Cᵀλ), a dense system of size 2·pairs
+//! on W = C S⁻¹ Cᵀ, computed once ([`FrictionalOracle::is_dual`]). The bodies
 //! must be held by the prescribed displacements or by the pair nodes (K_RR
 //! positive definite); a body held only by contact is allowed (S singular,
 //! the saddle system is not).
@@ -303,6 +306,19 @@ enum PairDof {
     Prescribed(usize),
 }
 
+/// The multiplier form of the condensed problem, when S is positive
+/// definite (every body held by its prescribed displacements).
+struct Dual {
+    /// Dense Cholesky factor of S.
+    s_llt: faer::linalg::solvers::Llt<f64>,
+    /// Z = S⁻¹Cᵀ (|I| × 2·pairs).
+    z: Mat<f64>,
+    /// scale · C Z.
+    w: Mat<f64>,
+    /// max |w|.
+    w_scale: f64,
+}
+
 /// The assembled and condensed problem: build once, then solve histories or
 /// single steps (cheaply: the condensation is the expensive part).
 pub struct FrictionalOracle {
@@ -321,6 +337,7 @@ pub struct FrictionalOracle {
     rest: Vec<usize>,
     k_rr: Option<Llt<usize, f64>>,
     schur: Mat<f64>,
+    dual: Option<Dual>,
     /// Complementarity parameter (force per length).
     c: f64,
     /// Scale of the constraint rows and multiplier columns.
@@ -520,7 +537,10 @@ impl FrictionalOracle {
                 scale = scale.max(schur[(i, j)].abs());
             }
         }
+        let scale = if scale > 0.0 { scale } else { 1.0 };
+        let dual = Self::dual(&schur, &pair_dofs, scale);
         Ok(FrictionalOracle {
+            dual,
             n,
             pairs,
             x,
@@ -535,9 +555,76 @@ impl FrictionalOracle {
             k_rr,
             schur,
             c,
-            scale: if scale > 0.0 { scale } else { 1.0 },
+            scale,
             setup_seconds: t0.elapsed().as_secs_f64(),
         })
+    }
+
+    /// Z and W when S is positive definite (its Cholesky pivots above
+    /// 10⁻¹² of its largest diagonal: no body floats).
+    fn dual(schur: &Mat<f64>, pair_dofs: &[[PairDof; 4]], scale: f64) -> Option<Dual> {
+        let ni = schur.nrows();
+        let m = pair_dofs.len();
+        if ni == 0 || m == 0 {
+            return None;
+        }
+        let s_llt = schur.llt(Side::Lower).ok()?;
+        let dmax = (0..ni).map(|i| schur[(i, i)]).fold(0.0, f64::max);
+        let l = s_llt.L();
+        if (0..ni).any(|i| l[(i, i)] * l[(i, i)] < 1e-12 * dmax) {
+            return None;
+        }
+        // Cᵀ: column 2p the normal row of pair p (v_b − v_a), 2p + 1 the
+        // tangential one (u_b − u_a), on the unknown DOFs.
+        let rows = |r: usize| -> [(PairDof, f64); 2] {
+            let d = pair_dofs[r / 2];
+            if r % 2 == 0 {
+                [(d[1], -1.0), (d[3], 1.0)]
+            } else {
+                [(d[0], -1.0), (d[2], 1.0)]
+            }
+        };
+        let mut z = Mat::<f64>::zeros(ni, 2 * m);
+        for j in 0..2 * m {
+            for (d, c) in rows(j) {
+                if let PairDof::Unknown(i) = d {
+                    z[(i, j)] += c;
+                }
+            }
+        }
+        s_llt.solve_in_place_with_conj(Conj::No, z.as_mut());
+        let mut w = Mat::<f64>::zeros(2 * m, 2 * m);
+        let mut w_scale = 0.0f64;
+        for j in 0..2 * m {
+            for r in 0..2 * m {
+                let mut v = 0.0;
+                for (d, c) in rows(r) {
+                    if let PairDof::Unknown(i) = d {
+                        v += c * z[(i, j)];
+                    }
+                }
+                w[(r, j)] = scale * v;
+                w_scale = w_scale.max(w[(r, j)].abs());
+            }
+        }
+        Some(Dual {
+            s_llt,
+            z,
+            w,
+            w_scale: if w_scale > 0.0 { w_scale } else { 1.0 },
+        })
+    }
+
+    /// Whether the multiplier (dual) form is used: S positive definite.
+    pub fn is_dual(&self) -> bool {
+        self.dual.is_some()
+    }
+
+    /// Drops the multiplier form: every iteration solves the saddle-point
+    /// system (to check one form against the other).
+    pub fn saddle_only(mut self) -> FrictionalOracle {
+        self.dual = None;
+        self
     }
 
     /// The node pairs (lower node, upper node), sorted by lower node.
@@ -608,6 +695,193 @@ impl FrictionalOracle {
             )));
         }
         Ok(())
+    }
+
+    /// Known part (prescribed values) of up − lo for a pair component.
+    fn known(lo: PairDof, up: PairDof, loads: &LoadCase) -> f64 {
+        let v = |d: PairDof| match d {
+            PairDof::Prescribed(g) => loads.prescribed[g],
+            PairDof::Unknown(_) => 0.0,
+        };
+        v(up) - v(lo)
+    }
+
+    /// The linear system of one set of pair states, [S −Cᵀ; rows of the
+    /// sets], by dense LU: returns (u_I, λ/scale per pair (n, t)).
+    fn solve_saddle(
+        &self,
+        set: &[(PairState, i8)],
+        mu: f64,
+        g_i: &[f64],
+        prev_jump: &[f64],
+        loads: &LoadCase,
+    ) -> Result<Vec<f64>> {
+        let ni = self.interface.len();
+        let size = ni + 2 * self.pairs.len();
+        let s = self.scale;
+        let mut a = Mat::<f64>::zeros(size, size);
+        let mut rhs = vec![0.0; size];
+        for j in 0..ni {
+            for i in 0..ni {
+                a[(i, j)] = self.schur[(i, j)];
+            }
+        }
+        rhs[..ni].copy_from_slice(g_i);
+        for (p, d) in self.pair_dofs.iter().enumerate() {
+            let (rn, rt) = (ni + 2 * p, ni + 2 * p + 1);
+            // Forces: +λ on the upper node, −λ on the lower one.
+            for (k, sign) in [(0, -1.0), (2, 1.0)] {
+                if let PairDof::Unknown(i) = d[k] {
+                    a[(i, rt)] -= sign * s;
+                }
+                if let PairDof::Unknown(i) = d[k + 1] {
+                    a[(i, rn)] -= sign * s;
+                }
+            }
+            let known = |lo, up| Self::known(lo, up, loads);
+            let (state, sign) = set[p];
+            if state == PairState::Open {
+                a[(rn, rn)] = s;
+                a[(rt, rt)] = s;
+                continue;
+            }
+            for (k, c) in [(1, -1.0), (3, 1.0)] {
+                if let PairDof::Unknown(i) = d[k] {
+                    a[(rn, i)] = c * s;
+                }
+            }
+            rhs[rn] = s * (-self.gap0[p] - known(d[1], d[3]));
+            if self.tangent_prescribed[p] {
+                a[(rt, rt)] = s;
+            } else if state == PairState::Stick {
+                for (k, c) in [(0, -1.0), (2, 1.0)] {
+                    if let PairDof::Unknown(i) = d[k] {
+                        a[(rt, i)] = c * s;
+                    }
+                }
+                rhs[rt] = s * (prev_jump[p] - known(d[0], d[2]));
+            } else {
+                // λₜ = −μ σ λₙ.
+                a[(rt, rt)] = s;
+                a[(rt, rn)] = s * mu * sign as f64;
+            }
+        }
+        let lu = a.partial_piv_lu();
+        let mut x = rhs.clone();
+        lu.solve_in_place_with_conj(
+            Conj::No,
+            MatMut::from_column_major_slice_mut(&mut x, size, 1),
+        );
+        // One step of iterative refinement.
+        let mut r = rhs.clone();
+        for j in 0..size {
+            if x[j] != 0.0 {
+                for i in 0..size {
+                    r[i] -= a[(i, j)] * x[j];
+                }
+            }
+        }
+        lu.solve_in_place_with_conj(
+            Conj::No,
+            MatMut::from_column_major_slice_mut(&mut r, size, 1),
+        );
+        x.iter_mut().zip(&r).for_each(|(a, b)| *a += b);
+        if x.iter().any(|v| !v.is_finite()) {
+            return Err(singular("the saddle-point system of the contact sets"));
+        }
+        Ok(x)
+    }
+
+    /// The same system on the multipliers alone when S is positive
+    /// definite: u_I = u₀ + Z λ (Z = S⁻¹Cᵀ), the kinematic rows
+    /// C Z λ = r − C u₀, the others as in the saddle system.
+    fn solve_dual(
+        &self,
+        dual: &Dual,
+        set: &[(PairState, i8)],
+        mu: f64,
+        u0: &[f64],
+        prev_jump: &[f64],
+        loads: &LoadCase,
+    ) -> Result<Vec<f64>> {
+        let ni = self.interface.len();
+        let m = self.pairs.len();
+        let (s, ws) = (self.scale, dual.w_scale);
+        // C u₀ per row.
+        let cu0: Vec<f64> = (0..2 * m)
+            .map(|r| {
+                let (p, t) = (r / 2, r % 2);
+                let d = self.pair_dofs[p];
+                let (lo, up) = if t == 0 { (d[1], d[3]) } else { (d[0], d[2]) };
+                let v = |d: PairDof| match d {
+                    PairDof::Unknown(i) => u0[i],
+                    PairDof::Prescribed(_) => 0.0,
+                };
+                v(up) - v(lo)
+            })
+            .collect();
+        let mut a = Mat::<f64>::zeros(2 * m, 2 * m);
+        let mut rhs = vec![0.0; 2 * m];
+        for (p, d) in self.pair_dofs.iter().enumerate() {
+            let (rn, rt) = (2 * p, 2 * p + 1);
+            let (state, sign) = set[p];
+            if state == PairState::Open {
+                a[(rn, rn)] = ws;
+                a[(rt, rt)] = ws;
+                continue;
+            }
+            for j in 0..2 * m {
+                a[(rn, j)] = dual.w[(rn, j)];
+            }
+            rhs[rn] = -self.gap0[p] - Self::known(d[1], d[3], loads) - cu0[rn];
+            if self.tangent_prescribed[p] {
+                a[(rt, rt)] = ws;
+            } else if state == PairState::Stick {
+                for j in 0..2 * m {
+                    a[(rt, j)] = dual.w[(rt, j)];
+                }
+                rhs[rt] = prev_jump[p] - Self::known(d[0], d[2], loads) - cu0[rt];
+            } else {
+                a[(rt, rt)] = ws;
+                a[(rt, rn)] = ws * mu * sign as f64;
+            }
+        }
+        // Unknowns y = λ/s; the kinematic rows are s W y = r − C u₀.
+        let lu = a.partial_piv_lu();
+        let mut y = rhs.clone();
+        lu.solve_in_place_with_conj(
+            Conj::No,
+            MatMut::from_column_major_slice_mut(&mut y, 2 * m, 1),
+        );
+        let mut r = rhs.clone();
+        for j in 0..2 * m {
+            if y[j] != 0.0 {
+                for i in 0..2 * m {
+                    r[i] -= a[(i, j)] * y[j];
+                }
+            }
+        }
+        lu.solve_in_place_with_conj(
+            Conj::No,
+            MatMut::from_column_major_slice_mut(&mut r, 2 * m, 1),
+        );
+        y.iter_mut().zip(&r).for_each(|(a, b)| *a += b);
+        if y.iter().any(|v| !v.is_finite()) {
+            return Err(singular("the multiplier system of the contact sets"));
+        }
+        // u_I = u₀ + Z λ, λ = s y.
+        let mut x = Vec::with_capacity(ni + 2 * m);
+        x.extend_from_slice(u0);
+        for (j, &yj) in y.iter().enumerate() {
+            if yj != 0.0 {
+                let f = s * yj;
+                for i in 0..ni {
+                    x[i] += dual.z[(i, j)] * f;
+                }
+            }
+        }
+        x.extend_from_slice(&y);
+        Ok(x)
     }
 
     /// Solves a load history from the undeformed, unloaded state.
@@ -691,8 +965,19 @@ impl FrictionalOracle {
         let g_i: Vec<f64> = self.interface.iter().map(|&g| b[g] - ky[g]).collect();
 
         let ni = self.interface.len();
-        let size = ni + 2 * m;
         let s = self.scale;
+        // With S positive definite: u₀ = S⁻¹ g.
+        let u0 = match &self.dual {
+            Some(dual) => {
+                let mut u0 = g_i.clone();
+                dual.s_llt.solve_in_place_with_conj(
+                    Conj::No,
+                    MatMut::from_column_major_slice_mut(&mut u0, ni, 1),
+                );
+                u0
+            }
+            None => Vec::new(),
+        };
         let value = |d: PairDof, x: &[f64]| match d {
             PairDof::Unknown(i) => x[i],
             PairDof::Prescribed(g) => loads.prescribed[g],
@@ -710,82 +995,10 @@ impl FrictionalOracle {
                 ));
             }
             seen.insert(set.clone());
-            let mut a = Mat::<f64>::zeros(size, size);
-            let mut rhs = vec![0.0; size];
-            for j in 0..ni {
-                for i in 0..ni {
-                    a[(i, j)] = self.schur[(i, j)];
-                }
-            }
-            rhs[..ni].copy_from_slice(&g_i);
-            for (p, d) in self.pair_dofs.iter().enumerate() {
-                let (rn, rt) = (ni + 2 * p, ni + 2 * p + 1);
-                // Forces: +λ on the upper node, −λ on the lower one.
-                for (k, sign) in [(0, -1.0), (2, 1.0)] {
-                    if let PairDof::Unknown(i) = d[k] {
-                        a[(i, rt)] -= sign * s;
-                    }
-                    if let PairDof::Unknown(i) = d[k + 1] {
-                        a[(i, rn)] -= sign * s;
-                    }
-                }
-                let known = |lo: PairDof, up: PairDof| -> f64 {
-                    let v = |d: PairDof| match d {
-                        PairDof::Prescribed(g) => loads.prescribed[g],
-                        PairDof::Unknown(_) => 0.0,
-                    };
-                    v(up) - v(lo)
-                };
-                let (state, sign) = set[p];
-                if state == PairState::Open {
-                    a[(rn, rn)] = s;
-                    a[(rt, rt)] = s;
-                    continue;
-                }
-                for (k, c) in [(1, -1.0), (3, 1.0)] {
-                    if let PairDof::Unknown(i) = d[k] {
-                        a[(rn, i)] = c * s;
-                    }
-                }
-                rhs[rn] = s * (-self.gap0[p] - known(d[1], d[3]));
-                if self.tangent_prescribed[p] {
-                    a[(rt, rt)] = s;
-                } else if state == PairState::Stick {
-                    for (k, c) in [(0, -1.0), (2, 1.0)] {
-                        if let PairDof::Unknown(i) = d[k] {
-                            a[(rt, i)] = c * s;
-                        }
-                    }
-                    rhs[rt] = s * (prev_jump[p] - known(d[0], d[2]));
-                } else {
-                    // λₜ = −μ σ λₙ.
-                    a[(rt, rt)] = s;
-                    a[(rt, rn)] = s * mu * sign as f64;
-                }
-            }
-            let lu = a.partial_piv_lu();
-            let mut x = rhs.clone();
-            lu.solve_in_place_with_conj(
-                Conj::No,
-                MatMut::from_column_major_slice_mut(&mut x, size, 1),
-            );
-            // One step of iterative refinement.
-            let mut r = rhs.clone();
-            for j in 0..size {
-                if x[j] != 0.0 {
-                    for i in 0..size {
-                        r[i] -= a[(i, j)] * x[j];
-                    }
-                }
-            }
-            lu.solve_in_place_with_conj(
-                Conj::No,
-                MatMut::from_column_major_slice_mut(&mut r, size, 1),
-            );
-            x.iter_mut().zip(&r).for_each(|(a, b)| *a += b);
-            if x.iter().any(|v| !v.is_finite()) {
-                return Err(singular("the saddle-point system of the contact sets"));
-            }
+            let x = match &self.dual {
+                Some(dual) => self.solve_dual(dual, &set, mu, &u0, &prev_jump, loads),
+                None => self.solve_saddle(&set, mu, &g_i, &prev_jump, loads),
+            }?;
             let lambda_n: Vec<f64> = (0..m).map(|p| s * x[ni + 2 * p]).collect();
             let lambda_t: Vec<f64> = (0..m).map(|p| s * x[ni + 2 * p + 1]).collect();
             let gap: Vec<f64> = (0..m)
