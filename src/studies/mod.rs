@@ -1,6 +1,7 @@
 //! The verification harness, outside the shipped core (Cargo feature
-//! `studies`, off by default): the seed's scenes and Hertz contact
-//! ([`scenes`]), an independent exact contact solver ([`oracle`]),
+//! `studies`, off by default): the seed's scenes, Hertz contact and
+//! Cattaneo–Mindlin ([`scenes`]), independent exact contact solvers,
+//! frictionless and Coulomb-frictional ([`oracle`]),
 //! manufactured solutions and norms ([`verification`]), a tempered Poisson
 //! solver ([`laplace`]), structured and graded triangulations
 //! ([`meshgen`]) and the quadrature their norms use ([`quadrature`]).

@@ -4,6 +4,16 @@
 //! nothing with the TFEM contact path but the body stiffness, so on the same
 //! mesh it gives the exact discrete frictionless solution TFEM approximates
 //! (TFEM's penalty-like contact elements converge to it as h → 0).
+//!
+//! [`frictional`] adds the quasi-static Coulomb friction oracle on the same
+//! node pairs ([`frictional_oracle`], [`FrictionalOracle`]).
+
+pub mod frictional;
+
+pub use frictional::{
+    FrictionalOracle, FrictionalSolution, FrictionalStep, LoadCase, LoadHistory, PairResult,
+    PairState, frictional_oracle,
+};
 
 use std::collections::{BTreeSet, HashMap};
 

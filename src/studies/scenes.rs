@@ -4,6 +4,7 @@
 //! Meshed by the built-in structured triangulator with nodes on x = L/2 and
 //! x = L/2 ± C, mirror-symmetric about x = L/2.
 
+pub mod cattaneo;
 pub mod hertz;
 pub mod patch;
 

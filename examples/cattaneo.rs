@@ -1,0 +1,125 @@
+//! Cattaneo–Mindlin with the exact frictional oracle: a cylinder pressed on
+//! a block (Hertz half-width a = 0.005R by default), then sheared by Q < μP in steps;
+//! stick half-width c and shear traction q(x) against Johnson §7.1 as the
+//! mesh is refined.
+//!
+//! `cargo run --release --example cattaneo -- [levels…]` (levels k: h = a/k,
+//! default 8 16 32 64).
+
+use tfem::scenes::cattaneo::CattaneoMindlin;
+use tfem::verification::fitted_rate;
+
+fn main() {
+    let levels: Vec<f64> = {
+        let v: Vec<f64> = std::env::args()
+            .skip(1)
+            .filter_map(|a| a.parse().ok())
+            .collect();
+        if v.is_empty() {
+            vec![8.0, 16.0, 32.0, 64.0]
+        } else {
+            v
+        }
+    };
+    // Q/(μP) of the tangential steps (CATTANEO_RATIOS, comma-separated).
+    let ratios: Vec<f64> = std::env::var("CATTANEO_RATIOS")
+        .ok()
+        .map(|v| v.split(',').filter_map(|r| r.trim().parse().ok()).collect())
+        .unwrap_or_else(|| vec![0.15, 0.3, 0.45, 0.6]);
+    // a/R from the environment (CATTANEO_A_OVER_R), default the scene's.
+    let base = CattaneoMindlin {
+        half_width: std::env::var("CATTANEO_A_OVER_R")
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(CattaneoMindlin::default().half_width),
+        ..CattaneoMindlin::default()
+    };
+    // E_cylinder / E_block from the environment (CATTANEO_E_RATIO), default 1:
+    // β ≠ 0 shows how far the β = 0 solution is then.
+    let base = CattaneoMindlin {
+        e_cylinder: base.e_block
+            * std::env::var("CATTANEO_E_RATIO")
+                .ok()
+                .and_then(|v| v.parse().ok())
+                .unwrap_or(1.0),
+        ..base
+    };
+    println!(
+        "Cattaneo–Mindlin, plane strain, E_cylinder/E_block = {}, Dundurs β = {:.3}, μ = {}, a = {}R; tangential steps Q/(μP) = {ratios:?}\n",
+        base.e_cylinder / base.e_block,
+        base.dundurs_beta(),
+        base.mu,
+        base.half_width / base.radius
+    );
+    println!(
+        "| h | nodes | pairs | setup [s] | step | Q/(μP) | trials | iterations | time [s] | open/stick/slip | err a | err c | err c (fit) | c left, right / c | err q (L2) | err q (max/μp₀) | misclassified | min dissipation |"
+    );
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    let mut table: Vec<Vec<[f64; 5]>> = Vec::new();
+    for &k in &levels {
+        let cm = CattaneoMindlin {
+            mesh_size: base.half_width / k,
+            ..base
+        };
+        let scene = cm.build().unwrap();
+        let sol = scene.solve(&cm, &ratios).unwrap();
+        let p_drift = sol
+            .tangential
+            .iter()
+            .map(|s| ((s.p - sol.normal.p) / sol.normal.p).abs())
+            .fold(0.0, f64::max);
+        eprintln!("a/{k}: P drift over the tangential steps {p_drift:.1e}");
+        let mut row = Vec::new();
+        for (i, s) in std::iter::once(&sol.normal)
+            .chain(&sol.tangential)
+            .enumerate()
+        {
+            let ea = (s.a - s.analytic.a) / s.analytic.a;
+            let ec = (s.c - s.analytic.c) / s.analytic.a;
+            let ef = (s.c_fit - s.analytic.c) / s.analytic.a;
+            let [o, st, sl] = s.step.counts();
+            let dmin = s
+                .step
+                .pairs
+                .iter()
+                .map(|p| p.dissipation())
+                .fold(f64::INFINITY, f64::min);
+            println!(
+                "| a/{k} | {} | {} | {:.2} | {i} | {:.3} | {} | {} | {:.2} | {o}/{st}/{sl} | {ea:+.2e} | {ec:+.2e} | {ef:+.2e} | {:.4}, {:.4} | {:.2e} | {:.2e} | {} | {dmin:.1e} |",
+                sol.nodes,
+                sol.pairs,
+                sol.setup_seconds,
+                s.q / (cm.mu * s.p),
+                s.trials,
+                s.step.iterations,
+                s.seconds,
+                s.c_sides[0] / s.analytic.c,
+                s.c_sides[1] / s.analytic.c,
+                s.q_error_l2,
+                s.q_error_max,
+                s.misclassified,
+            );
+            row.push([ea.abs(), ec.abs(), ef.abs(), s.q_error_l2, s.q_error_max]);
+        }
+        table.push(row);
+    }
+    if levels.len() >= 2 {
+        let h: Vec<f64> = levels.iter().map(|k| 1.0 / k).collect();
+        println!("\nfitted rates over the levels:\n");
+        println!("| step | a | c | c (fit) | q (L2) | q (max) |\n|---|---|---|---|---|---|");
+        for i in 0..table[0].len() {
+            let rate = |j: usize| {
+                let e: Vec<f64> = table.iter().map(|r| r[i][j]).collect();
+                fitted_rate(&h, &e)
+            };
+            println!(
+                "| {i} | {:.2} | {:.2} | {:.2} | {:.2} | {:.2} |",
+                rate(0),
+                rate(1),
+                rate(2),
+                rate(3),
+                rate(4)
+            );
+        }
+    }
+}
