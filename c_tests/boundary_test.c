@@ -511,6 +511,35 @@ static void a_load_history_steps_reverts_and_restarts_bit_for_bit(void) {
   tfem_destroy(m);
 }
 
+/* A failed solve or a failed step with other options after a load step
+ * leaves the history as it was: the next step continues it without a
+ * factorisation, bit for bit as if the failed call had not been made
+ * (found by the API fuzzer: the failed call ended the history). */
+static void a_failed_call_between_load_steps_keeps_the_history(void) {
+  tfem_contact_options capped, other;
+  tfem_contact_options_default(&capped);
+  capped.max_iterations = 1;
+  other = capped;
+  other.contact_modulus = 5e9; /* another history: it starts with its own K1 */
+  double u[2][2 * 64];
+  int64_t factorisations[2] = {-1, -1};
+  for (int failing = 0; failing < 2; ++failing) {
+    tfem_model *m = two_blocks();
+    tfem_contact_report rep;
+    CHECK(tfem_step(m, 0.5, NULL, NULL) == TFEM_STATUS_OK);
+    if (failing) {
+      EXPECT_ERROR(m, tfem_solve_contact(m, &capped, NULL), TFEM_STATUS_NOT_CONVERGED, "did not settle");
+      EXPECT_ERROR(m, tfem_step(m, 1.0, &other, NULL), TFEM_STATUS_NOT_CONVERGED, "did not settle");
+    }
+    CHECK(tfem_step(m, 1.0, NULL, &rep) == TFEM_STATUS_OK);
+    factorisations[failing] = rep.info.factorizations;
+    CHECK(tfem_get_displacements(m, u[failing], 2 * B.nn) == TFEM_STATUS_OK);
+    tfem_destroy(m);
+  }
+  CHECK(factorisations[0] == 0 && factorisations[1] == 0);
+  CHECK(memcmp(u[0], u[1], 2 * (size_t)B.nn * sizeof(double)) == 0);
+}
+
 static void expect_contact_error(tfem_contact *c, tfem_status got, tfem_status expected,
                                  const char *needle, const char *needle2, int line) {
   char msg[512];
@@ -621,6 +650,7 @@ int main(void) {
   a_host_gets_contact_forces_gaps_and_the_contact_mesh_before_a_solve();
   a_load_history_steps_reverts_and_restarts_bit_for_bit();
   a_host_side_given_clockwise_is_refused();
+  a_failed_call_between_load_steps_keeps_the_history();
 
   fflush(stderr);
   fseek(capture, 0, SEEK_END);

@@ -391,10 +391,16 @@ impl Model {
         }
         let session = session_of(&mut self.session, &self.problem, &mut timings)?;
         let revision = self.problem.revision();
+        // A solve ends a load history; a failed one must not (the next step
+        // continues it as if the solve had not been tried).
+        let kept = history::keep(session, revision);
         let outcome = match solve::solve(session, &input, options, &mut timings) {
             Ok(outcome) => outcome,
             Err(e) => {
                 keep_matrix(session, &input, self.solution.as_ref(), revision);
+                if let Some(kept) = kept.as_ref().filter(|_| session.history.is_none()) {
+                    history::rebuild(session, &input, revision, kept);
+                }
                 return Err(e);
             }
         };

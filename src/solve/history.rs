@@ -95,6 +95,9 @@ pub(crate) struct History {
     warm: Vec<bool>,
     /// The statistics of K₁'s solve (the residual a step reports).
     first: SolveInfo,
+    /// Whether x_load was solved apart for new loads ([`new_loads`]) rather
+    /// than with K₁'s first solve: a rebuilt history redoes the same.
+    loads_apart: bool,
 }
 
 impl History {
@@ -130,6 +133,28 @@ impl History {
     }
 }
 
+/// What rebuilds a history destroyed by a failed call ([`rebuild`]): its
+/// key, its contact state, and whether its x_load is solved apart (for new
+/// loads) rather than with K₁'s first solve.
+pub(crate) struct Kept {
+    key: Key,
+    state: StepState,
+    loads_apart: bool,
+    /// The statistics of the first solve (its residual is every step's).
+    first: SolveInfo,
+}
+
+/// The session's history as a failed call at problem revision `revision`
+/// would have to put it back (a copy of its interface factor), if any.
+pub(crate) fn keep(session: &Session, revision: u64) -> Option<Kept> {
+    session.history.as_ref().map(|h| Kept {
+        key: h.key,
+        state: h.step_state(),
+        loads_apart: h.loads_apart || h.loads != revision,
+        first: h.first.clone(),
+    })
+}
+
 /// One load step at factor `t` of the loads and prescribed displacements
 /// of `input` (revision `revision` of a problem of stiffness epoch
 /// `key.stiffness`), warm-started from the last step's set: starts a
@@ -152,18 +177,33 @@ pub(crate) fn step(
     let mut warnings = Vec::new();
     let current = session.history.as_ref().is_some_and(|h| h.key == key);
     let mut factorizations = 0;
-    // What a failed step must put back: the loads of the history it
-    // continues (a pending earlier step is recovered from them).
+    // What a failed step must put back: the history it continues or
+    // replaces (a pending earlier step is recovered from it, and the next
+    // step continues it), and the loads it held.
     let mut old_loads = None;
+    let mut replaced = None;
     if !current {
-        // A new history: the old one (another key) is over, its factor is
-        // overwritten, and a failed start leaves no history at all (as
-        // before the first step).
+        // A history of other options on the same stiffness can be rebuilt
+        // exactly if this one fails to start; one of another stiffness is
+        // over in any case.
+        replaced = keep(session, revision).filter(|k| k.key.stiffness == key.stiffness);
         session.history = None;
-        let mut history = begin(session, input, key, revision, timings, &mut warnings)?;
-        if let Some(state) = restored {
-            history.set_state(state)?;
-        }
+        let started =
+            begin(session, input, key, revision, timings, &mut warnings).and_then(|mut history| {
+                if let Some(state) = restored {
+                    history.set_state(state)?;
+                }
+                Ok(history)
+            });
+        let history = match started {
+            Ok(history) => history,
+            Err(e) => {
+                if let Some(kept) = &replaced {
+                    rebuild(session, input, revision, kept);
+                }
+                return Err(e);
+            }
+        };
         factorizations = history.first.factorizations;
         session.history = Some(history);
     } else if session
@@ -176,9 +216,14 @@ pub(crate) fn step(
     let stepped = step_in_history(session, input, (key, options), t, timings, warnings);
     let (mut outcome, before) = match stepped {
         Ok(done) => done,
-        Err(e) => {
+        Err((e, lost)) => {
             match (current, session.history.as_mut()) {
-                (false, _) => session.history = None,
+                (false, _) => {
+                    session.history = None;
+                    if let Some(kept) = &replaced {
+                        rebuild(session, input, revision, kept);
+                    }
+                }
                 (true, Some(h)) => {
                     if let Some((x_load, rhs_body, loads)) = old_loads {
                         h.x_load = x_load;
@@ -186,7 +231,22 @@ pub(crate) fn step(
                         h.loads = loads;
                     }
                 }
-                (true, None) => {}
+                // The loop refactorised and lost K₁: the history is rebuilt
+                // as it was before the step (its loads are this revision's:
+                // a failed step on new loads changed none of its results).
+                (true, None) => {
+                    if let Some((state, apart)) = lost {
+                        let state = *state;
+                        let loads_apart = apart || old_loads.is_some();
+                        let kept = Kept {
+                            key,
+                            state: state.0,
+                            loads_apart,
+                            first: state.1,
+                        };
+                        rebuild(session, input, revision, &kept);
+                    }
+                }
             }
             return Err(e);
         }
@@ -203,6 +263,37 @@ pub(crate) fn step(
 pub(crate) fn continues(session: &Session, options: &ContactOptions, stiffness: u64) -> bool {
     let key = Key::new(stiffness, options);
     session.history.as_ref().is_some_and(|h| h.key == key)
+}
+
+/// Rebuilds, after a failed call at problem revision `revision`, the
+/// history it destroyed, in the state kept before: the same factorisation of the same
+/// matrix, the same solves, then the saved interface factor and warm
+/// start, so that what follows is bit for bit what would have followed
+/// without the failed step. A rebuild that fails leaves no history (the
+/// next step starts one; a pending step's field is then lost, with a
+/// message saying so).
+pub(crate) fn rebuild(session: &mut Session, input: &Input<'_>, revision: u64, kept: &Kept) {
+    let (mut timings, mut warnings) = (Timings::default(), Vec::new());
+    let rebuilt = begin(
+        session,
+        input,
+        kept.key,
+        revision,
+        &mut timings,
+        &mut warnings,
+    )
+    .and_then(|mut history| {
+        history.set_state(&kept.state)?;
+        history.first = kept.first.clone();
+        Ok(history)
+    });
+    session.history = rebuilt.ok();
+    if kept.loads_apart
+        && session.history.is_some()
+        && new_loads(session, input, revision, &mut timings).is_err()
+    {
+        session.history = None;
+    }
 }
 
 /// Starts a history: the bodies' part at factor 1, K₁ with the initial
@@ -303,6 +394,7 @@ fn begin(
         rhs_body,
         warm: reference,
         first: info,
+        loads_apart: false,
     })
 }
 
@@ -366,6 +458,7 @@ fn new_loads(
     let x_load = std::mem::replace(&mut history.x_load, a);
     let old_rhs = std::mem::replace(&mut history.rhs_body, rhs_body);
     let loads = std::mem::replace(&mut history.loads, revision);
+    history.loads_apart = true;
     Ok((x_load, old_rhs, loads))
 }
 
@@ -382,7 +475,8 @@ fn step_in_history(
     t: f64,
     timings: &mut Timings,
     mut warnings: Vec<String>,
-) -> Result<(Outcome, StepState)> {
+) -> std::result::Result<(Outcome, StepState), (Error, Option<(Box<(StepState, SolveInfo)>, bool)>)>
+{
     let mesh = input.elements.mesh();
     let prescribed = scaled(input.prescribed, t);
     let Session {
@@ -395,7 +489,7 @@ fn step_in_history(
         ..
     } = &mut *session;
     let h = history.as_mut().expect("a history");
-    let set = contact_set(input, &prescribed, contact, dofs, options)?;
+    let set = contact_set(input, &prescribed, contact, dofs, options).map_err(|e| (e, None))?;
     let chol = &mut analysis.as_mut().expect("the history's factor").chol;
     let before = h.step_state();
     let mut condensed = h.state.take().expect("the condensed state is back");
@@ -445,19 +539,36 @@ fn step_in_history(
             history: records,
         }) => {
             h.state = Some(*state);
-            h.warm.clone_from(&active);
             info.relative_residual = h.first.relative_residual;
             info.condition_estimate = chol.condition_estimate();
             info.timings = *timings;
-            finite_statistics(&info)?;
-            let x1 = &h.condensed().x1;
-            let sys = &h.condensed().system;
-            let value = |g: usize| match dofs.free(g) {
-                NOT_FREE => prescribed[g],
-                i => sys.position(i).map_or(x1[i], |p| ui[p]),
+            // Everything that can fail before the history moves on: on
+            // error it is back where it was.
+            let judged = finite_statistics(&info).and_then(|()| {
+                let x1 = &h.condensed().x1;
+                let sys = &h.condensed().system;
+                let value = |g: usize| match dofs.free(g) {
+                    NOT_FREE => prescribed[g],
+                    i => sys.position(i).map_or(x1[i], |p| ui[p]),
+                };
+                let ue_of =
+                    |tri: &[usize; 3]| std::array::from_fn(|a| value(2 * tri[a / 2] + a % 2));
+                contact_outcome(&set, ue_of, active.clone(), records, info)
+            });
+            let contact = match judged {
+                Ok(contact) => contact,
+                Err(e) => {
+                    return match h.set_state(&before) {
+                        Ok(()) => Err((e, None)),
+                        Err(_) => {
+                            let (loads_apart, first) = (h.loads_apart, h.first.clone());
+                            *history = None;
+                            Err((e, Some((Box::new((before, first)), loads_apart))))
+                        }
+                    };
+                }
             };
-            let ue_of = |tri: &[usize; 3]| std::array::from_fn(|a| value(2 * tri[a / 2] + a % 2));
-            let contact = contact_outcome(&set, ue_of, active.clone(), records, info)?;
+            h.warm.clone_from(&active);
             let pending = Pending { key, t, ui, active };
             let outcome = Outcome {
                 u: Field::Pending(pending),
@@ -469,16 +580,25 @@ fn step_in_history(
             Ok((outcome, before))
         }
         Ok(LoopOutcome::Full(settled)) => {
-            // The condensed system was singular: solved whole, K₁ is gone.
+            // The condensed system was singular: solved whole, K₁ is gone
+            // (rebuilt by the caller if this step fails after all).
+            let (loads_apart, first) = (h.loads_apart, h.first.clone());
             *history = None;
+            let lost = |e| {
+                (
+                    e,
+                    Some((Box::new((before.clone(), first.clone())), loads_apart)),
+                )
+            };
             info.relative_residual = system.relative_residual(pattern, &settled.x);
             info.condition_estimate = chol.condition_estimate();
             info.timings = *timings;
-            finite_statistics(&info)?;
+            finite_statistics(&info).map_err(lost)?;
             super::diagnostics::conditioning_warning(&info, &mut warnings);
             let u = dofs.expand(&settled.x, &prescribed);
             let ue_of = |tri: &[usize; 3]| crate::fem::element_loop::element_values(&u, tri);
-            let contact = contact_outcome(&set, ue_of, settled.active, settled.history, info)?;
+            let contact = contact_outcome(&set, ue_of, settled.active, settled.history, info)
+                .map_err(lost)?;
             let outcome = Outcome {
                 u: Field::Global(u),
                 log: Vec::new(),
@@ -494,12 +614,22 @@ fn step_in_history(
                 Some(mut state) => {
                     state.x1 = Vec::new();
                     h.state = Some(state);
-                    h.set_state(&before)?;
+                    match h.set_state(&before) {
+                        Ok(()) => Err((e, None)),
+                        Err(_) => {
+                            let (loads_apart, first) = (h.loads_apart, h.first.clone());
+                            *history = None;
+                            Err((e, Some((Box::new((before, first)), loads_apart))))
+                        }
+                    }
                 }
-                // The loop refactorised: K₁ is gone.
-                None => *history = None,
+                // The loop refactorised: K₁ is gone; the caller rebuilds it.
+                None => {
+                    let (loads_apart, first) = (h.loads_apart, h.first.clone());
+                    *history = None;
+                    Err((e, Some((Box::new((before, first)), loads_apart))))
+                }
             }
-            Err(e)
         }
     }
 }
