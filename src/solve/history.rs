@@ -151,7 +151,7 @@ pub(crate) fn keep(session: &Session, revision: u64) -> Option<Kept> {
         key: h.key,
         state: h.step_state(),
         loads_apart: h.loads_apart || h.loads != revision,
-        first: h.first.clone(),
+        first: h.first,
     })
 }
 
@@ -235,15 +235,8 @@ pub(crate) fn step(
                 // as it was before the step (its loads are this revision's:
                 // a failed step on new loads changed none of its results).
                 (true, None) => {
-                    if let Some((state, apart)) = lost {
-                        let state = *state;
-                        let loads_apart = apart || old_loads.is_some();
-                        let kept = Kept {
-                            key,
-                            state: state.0,
-                            loads_apart,
-                            first: state.1,
-                        };
+                    if let Some(mut kept) = lost {
+                        kept.loads_apart |= old_loads.is_some();
                         rebuild(session, input, revision, &kept);
                     }
                 }
@@ -284,7 +277,7 @@ pub(crate) fn rebuild(session: &mut Session, input: &Input<'_>, revision: u64, k
     )
     .and_then(|mut history| {
         history.set_state(&kept.state)?;
-        history.first = kept.first.clone();
+        history.first = kept.first;
         Ok(history)
     });
     session.history = rebuilt.ok();
@@ -467,6 +460,10 @@ fn scaled(v: &[f64], t: f64) -> Vec<f64> {
     v.iter().map(|a| t * a).collect()
 }
 
+/// A failed step's error, with what rebuilds the history if the step
+/// destroyed it.
+type StepFailure = (Error, Option<Box<Kept>>);
+
 /// The condensed loop of one step from the warm start.
 fn step_in_history(
     session: &mut Session,
@@ -475,8 +472,7 @@ fn step_in_history(
     t: f64,
     timings: &mut Timings,
     mut warnings: Vec<String>,
-) -> std::result::Result<(Outcome, StepState), (Error, Option<(Box<(StepState, SolveInfo)>, bool)>)>
-{
+) -> std::result::Result<(Outcome, StepState), StepFailure> {
     let mesh = input.elements.mesh();
     let prescribed = scaled(input.prescribed, t);
     let Session {
@@ -561,9 +557,17 @@ fn step_in_history(
                     return match h.set_state(&before) {
                         Ok(()) => Err((e, None)),
                         Err(_) => {
-                            let (loads_apart, first) = (h.loads_apart, h.first.clone());
+                            let (loads_apart, first) = (h.loads_apart, h.first);
                             *history = None;
-                            Err((e, Some((Box::new((before, first)), loads_apart))))
+                            Err((
+                                e,
+                                Some(Box::new(Kept {
+                                    key,
+                                    state: before,
+                                    loads_apart,
+                                    first,
+                                })),
+                            ))
                         }
                     };
                 }
@@ -582,12 +586,17 @@ fn step_in_history(
         Ok(LoopOutcome::Full(settled)) => {
             // The condensed system was singular: solved whole, K₁ is gone
             // (rebuilt by the caller if this step fails after all).
-            let (loads_apart, first) = (h.loads_apart, h.first.clone());
+            let (loads_apart, first) = (h.loads_apart, h.first);
             *history = None;
             let lost = |e| {
                 (
                     e,
-                    Some((Box::new((before.clone(), first.clone())), loads_apart)),
+                    Some(Box::new(Kept {
+                        key,
+                        state: before.clone(),
+                        loads_apart,
+                        first,
+                    })),
                 )
             };
             info.relative_residual = system.relative_residual(pattern, &settled.x);
@@ -617,17 +626,33 @@ fn step_in_history(
                     match h.set_state(&before) {
                         Ok(()) => Err((e, None)),
                         Err(_) => {
-                            let (loads_apart, first) = (h.loads_apart, h.first.clone());
+                            let (loads_apart, first) = (h.loads_apart, h.first);
                             *history = None;
-                            Err((e, Some((Box::new((before, first)), loads_apart))))
+                            Err((
+                                e,
+                                Some(Box::new(Kept {
+                                    key,
+                                    state: before,
+                                    loads_apart,
+                                    first,
+                                })),
+                            ))
                         }
                     }
                 }
                 // The loop refactorised: K₁ is gone; the caller rebuilds it.
                 None => {
-                    let (loads_apart, first) = (h.loads_apart, h.first.clone());
+                    let (loads_apart, first) = (h.loads_apart, h.first);
                     *history = None;
-                    Err((e, Some((Box::new((before, first)), loads_apart))))
+                    Err((
+                        e,
+                        Some(Box::new(Kept {
+                            key,
+                            state: before,
+                            loads_apart,
+                            first,
+                        })),
+                    ))
                 }
             }
         }
