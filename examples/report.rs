@@ -1725,7 +1725,10 @@ fn q4_host(report: &mut String, a: &Args) {
     }
     if hs.len() >= 3 {
         let k0 = hs.len() - 3;
-        let rate = |e: &[f64]| fitted_rate_of(&hs[k0..], &e[k0..]);
+        let rate = |e: &[f64]| {
+            let e: Vec<f64> = e[k0..].iter().map(|v| v.abs()).collect();
+            fitted_rate(&hs[k0..], &e)
+        };
         writeln!(
             report,
             "\nFitted log-log rates over the three finest sizes: P1 gap_edge {:.2}, v_top {:.2}, \
@@ -1740,16 +1743,6 @@ fn q4_host(report: &mut String, a: &Args) {
         .unwrap();
     }
     writeln!(report).unwrap();
-}
-
-/// Least-squares slope of log|e| against log h.
-fn fitted_rate_of(h: &[f64], e: &[f64]) -> f64 {
-    let n = h.len() as f64;
-    let (x, y): (Vec<f64>, Vec<f64>) = h.iter().zip(e).map(|(h, e)| (h.ln(), e.abs().ln())).unzip();
-    let (mx, my) = (x.iter().sum::<f64>() / n, y.iter().sum::<f64>() / n);
-    let sxy: f64 = x.iter().zip(&y).map(|(x, y)| (x - mx) * (y - my)).sum();
-    let sxx: f64 = x.iter().map(|x| (x - mx) * (x - mx)).sum();
-    sxy / sxx
 }
 
 fn built(report: &mut String) {

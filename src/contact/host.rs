@@ -161,7 +161,8 @@ impl HostContact {
     /// stick law takes its ν): its interface nodes (the host's numbers)
     /// with their coordinates and the equations of their x and y unknowns
     /// (below the index base: no unknown, the DOF is fixed), and its edges
-    /// (pairs of those node numbers), each with the body on its left. A
+    /// (pairs of those node numbers), each with the body on its left (an
+    /// edge running against its neighbour is refused, naming it). A
     /// node given by two sides (a corner shared by bodies) must come with
     /// the same coordinates and equations. Returns the side's index
     /// (0-based). On error nothing changes.
@@ -242,7 +243,9 @@ impl HostContact {
 
     /// Declares sides `a` and `b` (indices from [`HostContact::add_side`],
     /// on different bodies) a contact pair: B is built from their matching
-    /// nodes, or by triangulating the strip between them. Returns the
+    /// nodes, or by triangulating the strip between them. Two sides whose
+    /// normals point the same way where they face each other (one given
+    /// clockwise) are refused, naming both ([`check_facing`]). Returns the
     /// pair's index.
     pub fn add_pair(&mut self, a: usize, b: usize) -> Result<usize> {
         self.add_pair_with(a, b, None)
@@ -321,12 +324,12 @@ impl HostContact {
             base: self.base,
         };
         let (a, b) = (&self.sides[pair.sides[0]].0, &self.sides[pair.sides[1]].0);
+        // The host's sides carry the normals it gave (a mesh's come from
+        // its triangles): a side given clockwise is refused here.
+        check_facing(&self.x, a, b)?;
         match &pair.triangles {
             None => strip(nodes, index, a, b),
-            Some(t) => {
-                check_facing(&self.x, a, b)?;
-                Ok(checked_triangles(nodes, index, a, b, t)?.0)
-            }
+            Some(t) => Ok(checked_triangles(nodes, index, a, b, t)?.0),
         }
     }
 
@@ -646,23 +649,25 @@ impl HostContact {
         }
         self.setup()?;
         let b = Self::ready(&mut self.built);
+        // NaN marks a node no element has reached yet (f64::min would
+        // swallow a NaN gap, and an infinite one would pass for "none").
         let g = &mut b.scratch[..n];
-        g.fill(f64::INFINITY);
+        g.fill(f64::NAN);
         for (k, el) in b.set.elements().iter().enumerate() {
             if el.edge_length <= 0.0 {
                 continue;
             }
             let ue: [f64; 6] = std::array::from_fn(|a| u[2 * el.nodes[a / 2] + a % 2]);
             let gap = b.set.opening(k, &ue) / el.edge_length;
+            if !gap.is_finite() {
+                let name = |k: usize| format!("contact element {}", k + self.base);
+                return ensure_finite([gap], 1, "normal gap", |_| name(k));
+            }
             for &v in &el.nodes {
-                g[v] = g[v].min(gap);
+                g[v] = if g[v].is_nan() { gap } else { g[v].min(gap) };
             }
         }
-        g.iter_mut()
-            .filter(|g| **g == f64::INFINITY)
-            .for_each(|g| *g = 0.0);
-        let name = |v: usize| format!("interface node {}", self.node_id[v]);
-        ensure_finite(g.iter().copied(), 1, "normal gap", name)?;
+        g.iter_mut().filter(|g| g.is_nan()).for_each(|g| *g = 0.0);
         out.copy_from_slice(g);
         Ok(())
     }

@@ -36,7 +36,8 @@ impl Side {
     /// The side of body `body` made of `edges` (node pairs indexing `x`),
     /// each given with its body on the left of p → q (the
     /// counter-clockwise orientation of a body's boundary). Refuses an
-    /// edge of zero length or given twice, naming it (in `base`).
+    /// edge of zero length, given twice, or running against its neighbour
+    /// (a node that starts or ends two edges), naming it (in `base`).
     pub fn from_edges(
         x: &[[f64; 2]],
         base: usize,
@@ -656,37 +657,45 @@ pub fn build(mesh: &Mesh, pair: usize, tag_a: i32, tag_b: i32) -> Result<Vec<Con
     strip(Nodes::of(mesh), pair, &a, &b)
 }
 
-/// Refuses two sides whose outward normals point the same way: facing
-/// each other, their length-weighted mean normals are opposed. A host that
-/// gives one side's edges with the body on the right (clockwise) turns its
-/// normals inward, and B would start inverted everywhere. Sides that curl
-/// round (mean normal shorter than half their length, e.g. a closed ring)
-/// are not judged by their mean.
+/// Refuses two sides whose outward normals point the same way where they
+/// face each other: one of them given with its body on the right
+/// (clockwise), its normals turned inward, would start every element of B
+/// inverted. Judged locally, so that curved sides facing each other over
+/// any arc pass: up to 64 edges of `a`, evenly spread, each against the
+/// edge of `b` with the nearest midpoint; refused when more of them point
+/// the same way as their partner than against it. Two sides both given
+/// clockwise cannot be told from two given right from the interface alone:
+/// the contract (body on the left) is the caller's.
 pub fn check_facing(x: &[[f64; 2]], a: &Side, b: &Side) -> Result<()> {
-    let mean = |s: &Side| {
-        let (mut n, mut len) = ([0.0, 0.0], 0.0);
-        for (&(p, q), m) in &s.edges {
-            let l = dist(x[p], x[q]);
-            n[0] += m[0] * l;
-            n[1] += m[1] * l;
-            len += l;
+    let mid = |[p, q]: [usize; 2]| [0.5 * (x[p][0] + x[q][0]), 0.5 * (x[p][1] + x[q][1])];
+    // Outward normal of an oriented edge (body on its right): its left normal.
+    let normal = |[p, q]: [usize; 2]| [-(x[q][1] - x[p][1]), x[q][0] - x[p][0]];
+    let step = a.oriented.len().div_ceil(64).max(1);
+    let (mut same, mut opposed) = (0usize, 0usize);
+    for &ea in a.oriented.iter().step_by(step) {
+        let ma = mid(ea);
+        let nearest = b.oriented.iter().min_by(|&&e, &&f| {
+            let (me, mf) = (mid(e), mid(f));
+            let d = |m: [f64; 2]| (m[0] - ma[0]).hypot(m[1] - ma[1]);
+            d(me).total_cmp(&d(mf))
+        });
+        let Some(&eb) = nearest else { continue };
+        let (na, nb) = (normal(ea), normal(eb));
+        let dot = na[0] * nb[0] + na[1] * nb[1];
+        if dot > 0.0 {
+            same += 1;
+        } else if dot < 0.0 {
+            opposed += 1;
         }
-        (n, n[0].hypot(n[1]) >= 0.5 * len)
-    };
-    let ((na, ja), (nb, jb)) = (mean(a), mean(b));
-    if ja && jb && na[0] * nb[0] + na[1] * nb[1] > 0.0 {
-        let unit = |n: [f64; 2]| {
-            let l = n[0].hypot(n[1]);
-            format!("({:.3}, {:.3})", n[0] / l, n[1] / l)
-        };
+    }
+    if same > opposed {
         return Err(Error::contact(format!(
-            "contact side {} (outward normal {}) and side {} (outward normal {}) do not face each \
-             other: one of them is given with its body on the right; give every edge with its \
-             body on its left (counter-clockwise)",
+            "contact side {} and side {} do not face each other: their outward normals point the \
+             same way at {same} of {} sampled edges, so one of them is given with its body on the \
+             right; give every edge with its body on its left (counter-clockwise)",
             a.tag,
-            unit(na),
             b.tag,
-            unit(nb)
+            same + opposed
         )));
     }
     Ok(())
@@ -694,7 +703,6 @@ pub fn check_facing(x: &[[f64; 2]], a: &Side, b: &Side) -> Result<()> {
 
 /// [`build`] on two sides.
 pub fn strip(nodes: Nodes<'_>, pair: usize, a: &Side, b: &Side) -> Result<Vec<ContactElement>> {
-    check_facing(nodes.x, a, b)?;
     match conforming(nodes, pair, a, b) {
         Ok(elements) => Ok(elements),
         Err(conforming) => nonconforming(nodes, pair, a, b).map_err(|e| {

@@ -393,13 +393,16 @@ impl Model {
         let revision = self.problem.revision();
         // A solve ends a load history; a failed one must not (the next step
         // continues it as if the solve had not been tried).
-        let kept = history::keep(session, revision);
+        let saved = history::save(session, revision, self.problem.stiffness());
+        let had_matrix = session.system_matrix(revision).is_some();
         let outcome = match solve::solve(session, &input, options, &mut timings) {
             Ok(outcome) => outcome,
             Err(e) => {
-                keep_matrix(session, &input, self.solution.as_ref(), revision);
-                if let Some(kept) = kept.as_ref().filter(|_| session.history.is_none()) {
-                    history::rebuild(session, &input, revision, kept);
+                if had_matrix {
+                    keep_matrix(session, &input, self.solution.as_ref(), revision);
+                }
+                if let Some(saved) = saved {
+                    history::restore(session, &input, revision, saved);
                 }
                 return Err(e);
             }
@@ -465,11 +468,14 @@ impl Model {
         let revision = self.problem.revision();
         let restored = self.restored.as_ref();
         let key = (options, stiffness, revision);
+        let had_matrix = session.system_matrix(revision).is_some();
         let (outcome, before) =
             match history::step(session, &input, key, (t, restored), &mut timings) {
                 Ok(stepped) => stepped,
                 Err(e) => {
-                    keep_matrix(session, &input, self.solution.as_ref(), revision);
+                    if had_matrix && session.system_matrix(revision).is_none() {
+                        keep_matrix(session, &input, self.solution.as_ref(), revision);
+                    }
                     return Err(e);
                 }
             };
@@ -720,8 +726,6 @@ impl Model {
     }
 }
 
-/// The session of the problem's structure in `slot`, built (and timed as
-/// analysis) when there is none of that structure.
 /// After a failed solve or step: the results of this revision stay, and
 /// so does their matrix (a load step's results have none), rebuilt in the
 /// session the failed call overwrote.
@@ -740,6 +744,8 @@ fn keep_matrix(
     }
 }
 
+/// The session of the problem's structure in `slot`, built (and timed as
+/// analysis) when there is none of that structure.
 fn session_of<'s>(
     slot: &'s mut Option<Session>,
     p: &Problem,

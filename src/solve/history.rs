@@ -115,6 +115,16 @@ impl History {
         }
     }
 
+    /// What rebuilds this history in `state` ([`rebuild`]).
+    fn kept(&self, state: StepState) -> Box<Kept> {
+        Box::new(Kept {
+            key: self.key,
+            state,
+            loads_apart: self.loads_apart,
+            first: self.first,
+        })
+    }
+
     /// Continues from `state` (from [`History::state`] of a history of the
     /// same problem).
     pub fn set_state(&mut self, state: &StepState) -> Result<()> {
@@ -136,6 +146,7 @@ impl History {
 /// What rebuilds a history destroyed by a failed call ([`rebuild`]): its
 /// key, its contact state, and whether its x_load is solved apart (for new
 /// loads) rather than with K₁'s first solve.
+#[derive(Clone)]
 pub(crate) struct Kept {
     key: Key,
     state: StepState,
@@ -144,15 +155,39 @@ pub(crate) struct Kept {
     first: SolveInfo,
 }
 
-/// The session's history as a failed call at problem revision `revision`
-/// would have to put it back (a copy of its interface factor), if any.
-pub(crate) fn keep(session: &Session, revision: u64) -> Option<Kept> {
-    session.history.as_ref().map(|h| Kept {
-        key: h.key,
-        state: h.step_state(),
-        loads_apart: h.loads_apart || h.loads != revision,
-        first: h.first,
+/// A history taken out of the session before a call that may replace
+/// it, to be put back if the call fails ([`restore`]).
+pub(crate) enum Saved {
+    /// Of the current stiffness: its sparse factor will be overwritten, so
+    /// it is rebuilt from what it was.
+    Rebuild(Box<Kept>),
+    /// Of an older stiffness: no step continues it and nothing uses its
+    /// sparse factor any more, but its contact state is still the
+    /// model's; it goes back as it is.
+    Stale(Box<History>),
+}
+
+/// Takes the session's history out before a call at problem revision
+/// `revision` and stiffness epoch `stiffness` that replaces or ends it.
+pub(crate) fn save(session: &mut Session, revision: u64, stiffness: u64) -> Option<Saved> {
+    let h = session.history.take()?;
+    Some(match h.key.stiffness == stiffness {
+        true => Saved::Rebuild(Box::new(Kept {
+            key: h.key,
+            state: h.step_state(),
+            loads_apart: h.loads_apart || h.loads != revision,
+            first: h.first,
+        })),
+        false => Saved::Stale(Box::new(h)),
     })
+}
+
+/// Puts back, after a failed call, the history [`save`] took out.
+pub(crate) fn restore(session: &mut Session, input: &Input<'_>, revision: u64, saved: Saved) {
+    match saved {
+        Saved::Rebuild(kept) => rebuild(session, input, revision, &kept),
+        Saved::Stale(history) => session.history = Some(*history),
+    }
 }
 
 /// One load step at factor `t` of the loads and prescribed displacements
@@ -183,11 +218,8 @@ pub(crate) fn step(
     let mut old_loads = None;
     let mut replaced = None;
     if !current {
-        // A history of other options on the same stiffness can be rebuilt
-        // exactly if this one fails to start; one of another stiffness is
-        // over in any case.
-        replaced = keep(session, revision).filter(|k| k.key.stiffness == key.stiffness);
-        session.history = None;
+        // The history this one replaces goes back if this step fails.
+        replaced = save(session, revision, stiffness);
         let started =
             begin(session, input, key, revision, timings, &mut warnings).and_then(|mut history| {
                 if let Some(state) = restored {
@@ -198,8 +230,9 @@ pub(crate) fn step(
         let history = match started {
             Ok(history) => history,
             Err(e) => {
-                if let Some(kept) = &replaced {
-                    rebuild(session, input, revision, kept);
+                session.history = None;
+                if let Some(saved) = replaced {
+                    restore(session, input, revision, saved);
                 }
                 return Err(e);
             }
@@ -220,8 +253,8 @@ pub(crate) fn step(
             match (current, session.history.as_mut()) {
                 (false, _) => {
                     session.history = None;
-                    if let Some(kept) = &replaced {
-                        rebuild(session, input, revision, kept);
+                    if let Some(saved) = replaced {
+                        restore(session, input, revision, saved);
                     }
                 }
                 (true, Some(h)) => {
@@ -265,7 +298,7 @@ pub(crate) fn continues(session: &Session, options: &ContactOptions, stiffness: 
 /// without the failed step. A rebuild that fails leaves no history (the
 /// next step starts one; a pending step's field is then lost, with a
 /// message saying so).
-pub(crate) fn rebuild(session: &mut Session, input: &Input<'_>, revision: u64, kept: &Kept) {
+fn rebuild(session: &mut Session, input: &Input<'_>, revision: u64, kept: &Kept) {
     let (mut timings, mut warnings) = (Timings::default(), Vec::new());
     let rebuilt = begin(
         session,
@@ -554,22 +587,7 @@ fn step_in_history(
             let contact = match judged {
                 Ok(contact) => contact,
                 Err(e) => {
-                    return match h.set_state(&before) {
-                        Ok(()) => Err((e, None)),
-                        Err(_) => {
-                            let (loads_apart, first) = (h.loads_apart, h.first);
-                            *history = None;
-                            Err((
-                                e,
-                                Some(Box::new(Kept {
-                                    key,
-                                    state: before,
-                                    loads_apart,
-                                    first,
-                                })),
-                            ))
-                        }
-                    };
+                    return Err((e, back_to(history, before)));
                 }
             };
             h.warm.clone_from(&active);
@@ -586,19 +604,9 @@ fn step_in_history(
         Ok(LoopOutcome::Full(settled)) => {
             // The condensed system was singular: solved whole, K₁ is gone
             // (rebuilt by the caller if this step fails after all).
-            let (loads_apart, first) = (h.loads_apart, h.first);
+            let kept = h.kept(before.clone());
             *history = None;
-            let lost = |e| {
-                (
-                    e,
-                    Some(Box::new(Kept {
-                        key,
-                        state: before.clone(),
-                        loads_apart,
-                        first,
-                    })),
-                )
-            };
+            let lost = |e| (e, Some(kept.clone()));
             info.relative_residual = system.relative_residual(pattern, &settled.x);
             info.condition_estimate = chol.condition_estimate();
             info.timings = *timings;
@@ -623,38 +631,29 @@ fn step_in_history(
                 Some(mut state) => {
                     state.x1 = Vec::new();
                     h.state = Some(state);
-                    match h.set_state(&before) {
-                        Ok(()) => Err((e, None)),
-                        Err(_) => {
-                            let (loads_apart, first) = (h.loads_apart, h.first);
-                            *history = None;
-                            Err((
-                                e,
-                                Some(Box::new(Kept {
-                                    key,
-                                    state: before,
-                                    loads_apart,
-                                    first,
-                                })),
-                            ))
-                        }
-                    }
+                    Err((e, back_to(history, before)))
                 }
                 // The loop refactorised: K₁ is gone; the caller rebuilds it.
                 None => {
-                    let (loads_apart, first) = (h.loads_apart, h.first);
+                    let kept = h.kept(before);
                     *history = None;
-                    Err((
-                        e,
-                        Some(Box::new(Kept {
-                            key,
-                            state: before,
-                            loads_apart,
-                            first,
-                        })),
-                    ))
+                    Err((e, Some(kept)))
                 }
             }
+        }
+    }
+}
+
+/// Puts the history back in `before` after a failed step; if even that
+/// fails, drops it and returns what rebuilds it.
+fn back_to(history: &mut Option<History>, before: StepState) -> Option<Box<Kept>> {
+    let h = history.as_mut()?;
+    match h.set_state(&before) {
+        Ok(()) => None,
+        Err(_) => {
+            let kept = h.kept(before);
+            *history = None;
+            Some(kept)
         }
     }
 }
