@@ -9,7 +9,7 @@ use super::convert::{
 };
 use super::plumbing::{
     LAST_ERROR, TfemModel, copy_message, copy_out, count, guarded, map_out, null, slice_in,
-    with_model, without_model, write,
+    with_model, without_model, write, write_optional,
 };
 use crate::contact::ContactOptions;
 use crate::error::{Error, Result, Status};
@@ -468,9 +468,7 @@ pub unsafe extern "C" fn tfem_clear_loads(model: *mut TfemModel) -> Status {
 pub unsafe extern "C" fn tfem_solve(model: *mut TfemModel, info: *mut TfemSolveInfo) -> Status {
     with_model(model, |m| {
         let i = m.model.solve()?;
-        if !info.is_null() {
-            write(info, info_out(&i), "info")?;
-        }
+        write_optional(info, info_out(&i));
         Ok(())
     })
 }
@@ -490,15 +488,9 @@ pub unsafe extern "C" fn tfem_get_sizes(
             .mesh()
             .ok_or_else(|| Error::state("no mesh: call tfem_set_mesh first"))?;
         let nc = m.model.contact_elements().map(|c| c.len()).unwrap_or(0);
-        if !n_nodes.is_null() {
-            write(n_nodes, mesh.nodes().len() as c_int, "n_nodes")?;
-        }
-        if !n_triangles.is_null() {
-            write(n_triangles, mesh.triangles().len() as c_int, "n_triangles")?;
-        }
-        if !n_contact_elements.is_null() {
-            write(n_contact_elements, nc as c_int, "n_contact_elements")?;
-        }
+        write_optional(n_nodes, mesh.nodes().len() as c_int);
+        write_optional(n_triangles, mesh.triangles().len() as c_int);
+        write_optional(n_contact_elements, nc as c_int);
         Ok(())
     })
 }
@@ -588,12 +580,8 @@ pub unsafe extern "C" fn tfem_get_system_matrix_size(
 ) -> Status {
     with_model(model, |m| {
         let k = m.model.system_matrix()?;
-        if !n.is_null() {
-            write(n, k.n() as i64, "n")?;
-        }
-        if !nnz.is_null() {
-            write(nnz, k.values.len() as i64, "nnz")?;
-        }
+        write_optional(n, k.n() as i64);
+        write_optional(nnz, k.values.len() as i64);
         Ok(())
     })
 }
@@ -712,9 +700,7 @@ pub unsafe extern "C" fn tfem_add_contact_pair(
 ) -> Status {
     with_model(model, |m| {
         let p = m.model.add_contact_pair(tag_a, tag_b)?;
-        if !pair.is_null() {
-            write(pair, p as c_int, "pair")?;
-        }
+        write_optional(pair, p as c_int);
         Ok(())
     })
 }
@@ -746,12 +732,8 @@ pub unsafe extern "C" fn tfem_add_contact_pair_with_mesh(
             ]);
         }
         let (p, f) = m.model.add_contact_pair_with_mesh(tag_a, tag_b, &tris)?;
-        if !pair.is_null() {
-            write(pair, p as c_int, "pair")?;
-        }
-        if !flipped.is_null() {
-            write(flipped, f as c_int, "flipped")?;
-        }
+        write_optional(pair, p as c_int);
+        write_optional(flipped, f as c_int);
         Ok(())
     })
 }
@@ -794,9 +776,7 @@ pub unsafe extern "C" fn tfem_solve_contact(
             Some(o) => options_in(o)?,
         };
         let r = m.model.solve_contact(&opts)?;
-        if !report.is_null() {
-            write(report, report_out(&r), "report")?;
-        }
+        write_optional(report, report_out(&r));
         Ok(())
     })
 }
@@ -1029,12 +1009,8 @@ pub unsafe extern "C" fn tfem_get_contact_pair_bodies(
                 ))
             })?;
         let (a, b) = (p.body_a, p.body_b);
-        if !body_a.is_null() {
-            write(body_a, a, "body_a")?;
-        }
-        if !body_b.is_null() {
-            write(body_b, b, "body_b")?;
-        }
+        write_optional(body_a, a);
+        write_optional(body_b, b);
         Ok(())
     })
 }
@@ -1092,9 +1068,7 @@ pub unsafe extern "C" fn tfem_step(
             Some(o) => options_in(o)?,
         };
         let r = m.model.step(load_factor, &opts)?;
-        if !report.is_null() {
-            write(report, report_out(&r), "report")?;
-        }
+        write_optional(report, report_out(&r));
         Ok(())
     })
 }

@@ -7,7 +7,7 @@ use std::ffi::{c_char, c_int};
 use super::convert::{TfemContactOptions, options_in, plane};
 use super::plumbing::{
     Handle, copy_message, copy_out, count, guarded, null, set_global_error, slice_in, with_handle,
-    write,
+    write, write_optional,
 };
 use crate::contact::{ContactOptions, HostContact};
 use crate::error::{Error, Result, Status};
@@ -173,9 +173,7 @@ pub unsafe extern "C" fn tfem_contact_add_side(
             .map(|e| [e[0] as i64, e[1] as i64])
             .collect();
         let s = c.add_side(tag, body, material, &ids, &xy, &eq, &edges)?;
-        if !side.is_null() {
-            write(side, s as c_int, "side")?;
-        }
+        write_optional(side, s as c_int);
         Ok(())
     })
 }
@@ -197,9 +195,7 @@ pub unsafe extern "C" fn tfem_contact_add_pair(
         let a = count(side_a, "side_a")?;
         let b = count(side_b, "side_b")?;
         let p = c.add_pair(a, b)?;
-        if !pair.is_null() {
-            write(pair, p as c_int, "pair")?;
-        }
+        write_optional(pair, p as c_int);
         Ok(())
     })
 }
@@ -226,9 +222,7 @@ pub unsafe extern "C" fn tfem_contact_add_pair_with_mesh(
             .map(|t| [t[0] as i64, t[1] as i64, t[2] as i64])
             .collect();
         let p = c.add_pair_with_mesh(a, b, &tris)?;
-        if !pair.is_null() {
-            write(pair, p as c_int, "pair")?;
-        }
+        write_optional(pair, p as c_int);
         Ok(())
     })
 }
@@ -247,15 +241,9 @@ pub unsafe extern "C" fn tfem_contact_sizes(
     with_context(context, |c| {
         let entries = c.pattern()?.0.len();
         let elements = c.elements()?.len();
-        if !n_nodes.is_null() {
-            write(n_nodes, c.n_nodes() as c_int, "n_nodes")?;
-        }
-        if !n_elements.is_null() {
-            write(n_elements, elements as c_int, "n_elements")?;
-        }
-        if !n_entries.is_null() {
-            write(n_entries, entries as i64, "n_entries")?;
-        }
+        write_optional(n_nodes, c.n_nodes() as c_int);
+        write_optional(n_elements, elements as c_int);
+        write_optional(n_entries, entries as i64);
         Ok(())
     })
 }
@@ -397,9 +385,7 @@ pub unsafe extern "C" fn tfem_contact_update(
     with_context(context, |c| {
         let u = slice_in(u, u_length, "u")?;
         let update = c.update(u)?;
-        if !changed.is_null() {
-            write(changed, c_int::from(update.changed), "changed")?;
-        }
+        write_optional(changed, c_int::from(update.changed));
         Ok(())
     })
 }

@@ -193,6 +193,15 @@ pub(super) fn map_out<T: Copy, U>(
     Ok(())
 }
 
+/// Writes `value` to an output the header documents as "may be NULL":
+/// nothing when it is.
+pub(super) fn write_optional<T>(out: *mut T, value: T) {
+    if !out.is_null() {
+        // SAFETY: non-null pointer to a caller-owned T.
+        unsafe { out.write(value) };
+    }
+}
+
 pub(super) fn write<T>(out: *mut T, value: T, what: &str) -> Result<()> {
     if out.is_null() {
         return Err(null(what));
