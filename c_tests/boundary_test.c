@@ -626,6 +626,80 @@ static void a_host_side_given_clockwise_is_refused(void) {
   tfem_contact_destroy(c);
 }
 
+/* Coulomb friction through the C ABI: bad coefficients are refused naming
+ * the pair and change nothing; μ = 0 is the frictionless solve bit for bit;
+ * with μ > 0 every element obeys Coulomb's law, dissipates nothing
+ * negative, and a frictional load history restarts bit for bit. */
+static void friction_obeys_coulomb_and_restarts_bit_for_bit(void) {
+  tfem_model *plain = two_blocks();
+  tfem_model *m = two_blocks();
+  EXPECT_ERROR(m, tfem_set_friction(m, 0, -0.1), TFEM_STATUS_INVALID_ARGUMENT, "pair 0");
+  EXPECT_ERROR(m, tfem_set_friction(m, 0, NAN), TFEM_STATUS_INVALID_ARGUMENT, "pair 0");
+  EXPECT_ERROR(m, tfem_set_friction(m, 1, 0.3), TFEM_STATUS_INVALID_ARGUMENT, "pair 1");
+  EXPECT_ERROR(m, tfem_set_friction(m, -1, 0.3), TFEM_STATUS_INVALID_ARGUMENT, "pair -1");
+  CHECK(tfem_set_friction(m, 0, 0.0) == TFEM_STATUS_OK);
+  results_t a, b;
+  CHECK(tfem_solve_contact(plain, NULL, NULL) == TFEM_STATUS_OK && results_of(plain, &a));
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK && results_of(m, &b));
+  CHECK(same_results(&a, &b));
+
+  double mu = 0.1;
+  CHECK(tfem_set_friction(m, 0, mu) == TFEM_STATUS_OK);
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  int n = 0;
+  CHECK(tfem_get_sizes(m, NULL, NULL, &n) == TFEM_STATUS_OK && n > 0 && n <= 64);
+  double p[64], tau[64], d[64];
+  int state[64], slips = 0, sticks = 0;
+  CHECK(tfem_get_contact_pressure(m, p, (size_t)n) == TFEM_STATUS_OK);
+  CHECK(tfem_get_contact_shear(m, tau, (size_t)n) == TFEM_STATUS_OK);
+  CHECK(tfem_get_contact_friction_state(m, state, (size_t)n) == TFEM_STATUS_OK);
+  CHECK(tfem_get_contact_dissipation(m, d, (size_t)n) == TFEM_STATUS_OK);
+  EXPECT_ERROR(m, tfem_get_contact_shear(m, tau, (size_t)n - 1), TFEM_STATUS_BUFFER_TOO_SMALL, "out");
+  for (int k = 0; k < n; ++k) {
+    double limit = mu * p[k];
+    if (state[k] == 0) CHECK(tau[k] == 0.0 && p[k] == 0.0);
+    if (state[k] == 1) {
+      CHECK(fabs(tau[k]) <= limit * (1 + 1e-9));
+      ++sticks;
+    }
+    if (state[k] == 2) {
+      CHECK(fabs(fabs(tau[k]) - limit) <= 1e-9 * limit);
+      ++slips;
+    }
+    CHECK(d[k] >= 0.0);
+  }
+  CHECK(sticks > 0 && slips > 0);
+
+  /* A non-proportional history moved by tfem_set_prescribed: a state saved
+   * after the first step restarts the second bit for bit. */
+  tfem_model *h = two_blocks();
+  CHECK(tfem_set_friction(h, 0, mu) == TFEM_STATUS_OK);
+  EXPECT_ERROR(h, tfem_set_prescribed(h, 45, TFEM_COMPONENT_X, 1e-6), TFEM_STATUS_INVALID_ARGUMENT,
+               "not prescribed");
+  CHECK(tfem_step(h, 1.0, NULL, NULL) == TFEM_STATUS_OK);
+  size_t size = 0;
+  CHECK(tfem_get_contact_state_size(h, &size) == TFEM_STATUS_OK && size > 0);
+  uint8_t *saved = malloc(size);
+  CHECK(saved != NULL && tfem_get_contact_state(h, saved, size) == TFEM_STATUS_OK);
+  CHECK(tfem_set_prescribed(h, 27, TFEM_COMPONENT_X, 2e-5) == TFEM_STATUS_OK);
+  tfem_contact_report rep;
+  CHECK(tfem_step(h, 1.0, NULL, &rep) == TFEM_STATUS_OK && rep.info.factorizations == 0);
+  double u[2 * 64], v[2 * 64];
+  CHECK(tfem_get_displacements(h, u, 2 * B.nn) == TFEM_STATUS_OK);
+  tfem_model *r = two_blocks();
+  CHECK(tfem_set_friction(r, 0, mu) == TFEM_STATUS_OK);
+  CHECK(tfem_set_prescribed(r, 27, TFEM_COMPONENT_X, 2e-5) == TFEM_STATUS_OK);
+  CHECK(tfem_set_contact_state(r, saved, size) == TFEM_STATUS_OK);
+  CHECK(tfem_step(r, 1.0, NULL, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_get_displacements(r, v, 2 * B.nn) == TFEM_STATUS_OK);
+  CHECK(memcmp(u, v, 2 * (size_t)B.nn * sizeof(double)) == 0);
+  free(saved);
+  tfem_destroy(r);
+  tfem_destroy(h);
+  tfem_destroy(m);
+  tfem_destroy(plain);
+}
+
 int main(void) {
   /* Nothing the library does may reach stderr: it goes to a file, checked
    * at the end. */
@@ -651,6 +725,7 @@ int main(void) {
   a_load_history_steps_reverts_and_restarts_bit_for_bit();
   a_host_side_given_clockwise_is_refused();
   a_failed_call_between_load_steps_keeps_the_history();
+  friction_obeys_coulomb_and_restarts_bit_for_bit();
 
   fflush(stderr);
   fseek(capture, 0, SEEK_END);

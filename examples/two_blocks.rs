@@ -90,6 +90,10 @@ struct Args {
     /// E_c of the contact elements [Pa] (default: the softer block's E).
     #[arg(long)]
     ec: Option<f64>,
+    /// Coulomb's friction coefficient μ of the interface (0: frictionless,
+    /// bit for bit).
+    #[arg(long, default_value_t = 0.0)]
+    mu: f64,
     /// Load in this many proportional steps (factors k/steps, one
     /// factorisation for all of them); 1 solves the full load at once.
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
@@ -124,6 +128,7 @@ impl Args {
             mesh_size: h,
             upper_mesh_size: self.upper_mesh_size,
             gap: self.gap,
+            mu: self.mu,
             ..Default::default()
         }
     }
@@ -198,8 +203,11 @@ fn reference_case(args: &Args, c: f64) -> Option<Value> {
         ("p", s.p),
         ("L", s.length),
     ];
-    let plain =
-        matches!(args.law, Law::Frictionless) && s.gap == 0.0 && s.upper_mesh_size.is_none();
+    // The reference values are those of frictionless contact.
+    let plain = matches!(args.law, Law::Frictionless)
+        && s.gap == 0.0
+        && s.upper_mesh_size.is_none()
+        && s.mu == 0.0;
     all["cases"]
         .as_object()?
         .values()
@@ -270,6 +278,11 @@ fn single(args: &Args) -> i32 {
             "time_solve_s": info.timings.solve,
             "steps": args.steps,
             "factorizations": r.factorizations,
+            "factorisations": r.factorizations,
+            "mu": args.mu,
+            "stick_length": r.result.stick_length,
+            "slip_edge": r.result.slip_edge,
+            "max_shear": r.result.max_shear,
         });
         if let Some(case) = &reference {
             for (k, v) in outputs(&r.result) {
@@ -315,6 +328,12 @@ fn single(args: &Args) -> i32 {
                 }
                 None => println!("{k:<12} {v:>15.6e} {:>15} {:>12} {:>10}", "-", "-", "-"),
             }
+        }
+        if args.mu > 0.0 {
+            println!(
+                "friction μ = {}: stick length {:.6e} m, slip at the edge {:+.6e} m, max shear {:.6e} Pa",
+                args.mu, r.result.stick_length, r.result.slip_edge, r.result.max_shear
+            );
         }
         println!(
             "\nmax interpenetration {:.3e} m, support reaction {:.6e} N/m (p·2C = {:.6e})",

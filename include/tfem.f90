@@ -120,6 +120,9 @@ module tfem
   private :: tfem_get_contact_element_apexes_i
   private :: tfem_get_contact_state_i
   private :: tfem_set_contact_state_i
+  private :: tfem_get_contact_shear_i
+  private :: tfem_get_contact_friction_state_i
+  private :: tfem_get_contact_dissipation_i
   private :: tfem_contact_last_error_i
   private :: tfem_contact_last_error_str
   private :: tfem_contact_last_error_str_i
@@ -1163,6 +1166,87 @@ module tfem
   end interface tfem_set_contact_state
 
   interface
+    !> Sets Coulomb's friction coefficient μ ≥ 0 of contact pair `pair` (0-based, from
+    !! `tfem_add_contact_pair`): stick while the shear stays within μ times the pressure, slip
+    !! against the slip of the step beyond (docs/method.md §6.14). 0, the default, is frictionless,
+    !! bit for bit. A negative or non-finite μ, or an unknown pair, is refused
+    !! (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load history.
+    function tfem_set_friction(model, pair, mu) &
+        bind(C, name="tfem_set_friction") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: pair
+      real(c_double), value :: mu
+      integer(c_int) :: status
+    end function tfem_set_friction
+  end interface
+
+  interface
+    !> Changes the value of displacement component `comp` (0 x, 1 y) of `node`, prescribed before by
+    !! `tfem_fix` or `tfem_fix_edges`: the loads of a non-proportional load history, which goes on
+    !! with the same factorisation (the set of prescribed DOFs is unchanged). A node not prescribed
+    !! in that component is refused, naming it.
+    function tfem_set_prescribed(model, node, comp, value) &
+        bind(C, name="tfem_set_prescribed") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: node
+      integer(c_int), value :: comp
+      real(c_double), value :: value
+      integer(c_int) :: status
+    end function tfem_set_prescribed
+  end interface
+
+  interface tfem_get_contact_shear
+    !> Copies the shear traction τ = n·σ·t (Pa in SI; t = (−n_y, n_x), n the element's normal, see
+    !! `tfem_get_contact_mesh`) of every contact element of the last contact solve or step
+    !! (n_contact_elements values): 0 when open, |τ| ≤ μp when sticking, μp when slipping; all 0
+    !! when frictionless. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
+    !! tfem_length_kind); a negative length is passed as 0.
+    function tfem_get_contact_shear(model, out, length) &
+        bind(C, name="tfem_get_contact_shear") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_shear
+    module procedure tfem_get_contact_shear_i
+  end interface tfem_get_contact_shear
+
+  interface tfem_get_contact_friction_state
+    !> Copies the frictional state of every contact element of the last contact solve or step
+    !! (n_contact_elements values): 0 open, 1 stick, 2 slip (a frictionless solve: 2 where active).
+    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
+    !! negative length is passed as 0.
+    function tfem_get_contact_friction_state(model, out, length) &
+        bind(C, name="tfem_get_contact_friction_state") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_friction_state
+    module procedure tfem_get_contact_friction_state_i
+  end interface tfem_get_contact_friction_state
+
+  interface tfem_get_contact_dissipation
+    !> Copies the energy dissipated by slip in the last step (or solve) at every contact element
+    !! (n_contact_elements values, J per unit thickness in SI): ½ τ Δγ_p ≥ 0; all 0 when
+    !! frictionless. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
+    !! tfem_length_kind); a negative length is passed as 0.
+    function tfem_get_contact_dissipation(model, out, length) &
+        bind(C, name="tfem_get_contact_dissipation") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_dissipation
+    module procedure tfem_get_contact_dissipation_i
+  end interface tfem_get_contact_dissipation
+
+  interface
     !> Creates a contact context for a host code that keeps its own elements, assembly, solver and
     !! Newton loop: node numbers and equation numbers in `index_base` (0 for C, 1 for Fortran).
     !! Returns NULL if `index_base` is not 0 or 1 (message in `tfem_last_error(NULL, …)`) or memory
@@ -1858,6 +1942,33 @@ contains
     integer(c_int) :: status
     status = tfem_set_contact_state(model, buffer, tfem_to_size_t(length))
   end function tfem_set_contact_state_i
+
+  ! tfem_get_contact_shear, lengths of kind tfem_length_kind.
+  function tfem_get_contact_shear_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_shear(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_shear_i
+
+  ! tfem_get_contact_friction_state, lengths of kind tfem_length_kind.
+  function tfem_get_contact_friction_state_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_friction_state(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_friction_state_i
+
+  ! tfem_get_contact_dissipation, lengths of kind tfem_length_kind.
+  function tfem_get_contact_dissipation_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_dissipation(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_dissipation_i
 
   ! tfem_contact_last_error, lengths of kind tfem_length_kind.
   function tfem_contact_last_error_i(context, buffer, length) result(status)

@@ -873,6 +873,48 @@ enum tfem_status tfem_set_contact_state(struct tfem_model *model,
                                         size_t length);
 
 /**
+ * Sets Coulomb's friction coefficient μ ≥ 0 of contact pair `pair`
+ * (0-based, from `tfem_add_contact_pair`): stick while the shear stays
+ * within μ times the pressure, slip against the slip of the step beyond
+ * (docs/method.md §6.14). 0, the default, is frictionless, bit for bit.
+ * A negative or non-finite μ, or an unknown pair, is refused
+ * (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load
+ * history.
+ */
+enum tfem_status tfem_set_friction(struct tfem_model *model, int pair, double mu);
+
+/**
+ * Changes the value of displacement component `comp` (0 x, 1 y) of
+ * `node`, prescribed before by `tfem_fix` or `tfem_fix_edges`: the loads of
+ * a non-proportional load history, which goes on with the same
+ * factorisation (the set of prescribed DOFs is unchanged). A node not
+ * prescribed in that component is refused, naming it.
+ */
+enum tfem_status tfem_set_prescribed(struct tfem_model *model, int node, int comp, double value);
+
+/**
+ * Copies the shear traction τ = n·σ·t (Pa in SI; t = (−n_y, n_x), n the
+ * element's normal, see `tfem_get_contact_mesh`) of every contact element
+ * of the last contact solve or step (n_contact_elements values): 0 when
+ * open, |τ| ≤ μp when sticking, μp when slipping; all 0 when frictionless.
+ */
+enum tfem_status tfem_get_contact_shear(struct tfem_model *model, double *out, size_t length);
+
+/**
+ * Copies the frictional state of every contact element of the last
+ * contact solve or step (n_contact_elements values): 0 open, 1 stick,
+ * 2 slip (a frictionless solve: 2 where active).
+ */
+enum tfem_status tfem_get_contact_friction_state(struct tfem_model *model, int *out, size_t length);
+
+/**
+ * Copies the energy dissipated by slip in the last step (or solve) at
+ * every contact element (n_contact_elements values, J per unit thickness
+ * in SI): ½ τ Δγ_p ≥ 0; all 0 when frictionless.
+ */
+enum tfem_status tfem_get_contact_dissipation(struct tfem_model *model, double *out, size_t length);
+
+/**
  * Creates a contact context for a host code that keeps its own elements,
  * assembly, solver and Newton loop: node numbers and equation numbers in
  * `index_base` (0 for C, 1 for Fortran). Returns NULL if `index_base` is

@@ -140,6 +140,56 @@ pub fn linearised_jacobian(geo: &TriGeometry, ue: &[f64; 6]) -> f64 {
             .sum::<f64>()
 }
 
+/// The shear vector b_t = ½ B̂ᵀ s of an element with corners `x` and
+/// interface normal `n` (docs/method.md §6.15), s = [2 n_x t_x, 2 n_y t_y,
+/// n_x t_y + n_y t_x] the engineering shear strain γ_nt of a Voigt strain,
+/// t = (−n_y, n_x), and B̂ that of the element flattened onto its interface
+/// line (each corner projected along n). It carries the whole tangential
+/// side of the frictional law: γ(u) = 2 b_t·u_e (in B̂u units, like the
+/// opening); a shear stress τ on the element puts the nodal forces τ b_t;
+/// and the stick stiffness is the rank-one (2 G_c / T) b_t b_tᵀ.
+///
+/// Why flattened: the B̂ of an element with a gap also reads the rotation
+/// of its edges (∂u_n/∂t times the gap), so its "slip" would move with the
+/// normal closing of a curved gap, and its slip traction would push
+/// normally; the flattened element reads the tangential jump alone (exactly
+/// the unflattened one on a touching interface).
+pub fn shear_vector(x: &[[f64; 2]; 3], n: [f64; 2]) -> [f64; 6] {
+    let t = [-n[1], n[0]];
+    let c = [
+        (x[0][0] + x[1][0] + x[2][0]) / 3.0,
+        (x[0][1] + x[1][1] + x[2][1]) / 3.0,
+    ];
+    let flat: [[f64; 2]; 3] = std::array::from_fn(|i| {
+        let s = (x[i][0] - c[0]) * t[0] + (x[i][1] - c[1]) * t[1];
+        [c[0] + s * t[0], c[1] + s * t[1]]
+    });
+    let geo = TriGeometry::new(&flat);
+    let s = [
+        2.0 * n[0] * t[0],
+        2.0 * n[1] * t[1],
+        n[0] * t[1] + n[1] * t[0],
+    ];
+    let b = b_hat(&geo);
+    std::array::from_fn(|a| 0.5 * (b[0][a] * s[0] + b[1][a] * s[1] + b[2][a] * s[2]))
+}
+
+/// The stick stiffness (2 G_c / T) b_t b_tᵀ of an element with shear
+/// vector `bt` ([`shear_vector`]) and G_c / T = `g_over_t`: the tangential
+/// part of the stick state, no load of its own.
+pub fn stick_stiffness(bt: &[f64; 6], g_over_t: f64) -> ContactStiffness {
+    let mut k = [0.0; 36];
+    for a in 0..6 {
+        for c in a..6 {
+            // Mirrored, not recomputed: exactly symmetric for the Cholesky.
+            let v = 2.0 * g_over_t * bt[a] * bt[c];
+            k[a * 6 + c] = v;
+            k[c * 6 + a] = v;
+        }
+    }
+    ContactStiffness { k, f0: [0.0; 6] }
+}
+
 /// The penalty length h_c of each pair (indexed by pair): the shortest
 /// interface edge of the pair's elements of B (docs/method.md §6.11). One
 /// length per pair keeps the penalty κ = E_c λ / h_c² uniform along the

@@ -26,14 +26,15 @@ pub mod traction;
 pub use host::{HostContact, Update};
 pub use law::{
     ContactStiffness, contact_pressure, contact_stiffness, law_matrix, linearised_jacobian,
-    linearised_opening, opening_coefficient,
+    linearised_opening, opening_coefficient, shear_vector, stick_stiffness,
 };
 pub use mesh::{
     Nodes, Side, build, build_all, build_conforming, build_nonconforming, check_user_mesh,
     pair_bodies,
 };
 pub use set::{
-    ActiveSet, ContactSet, ElementLaw, IterationRecord, element_laws, initial_active_set, softer,
+    ActiveSet, ContactSet, ElementLaw, FrictionOutcome, FrictionState, IterationRecord,
+    element_laws, initial_active_set, softer,
 };
 
 use crate::error::{Error, Result};
@@ -143,6 +144,9 @@ pub struct ContactPair {
     pub body_b: i32,
     /// A contact mesh handed over by the user (0-based nodes), if any.
     pub user_mesh: Option<Vec<[usize; 3]>>,
+    /// Coulomb's friction coefficient μ ≥ 0 (0: frictionless; docs/method.md
+    /// §6.15).
+    pub friction: f64,
 }
 
 /// One element of the contact mesh B.

@@ -12,7 +12,7 @@ use std::collections::{BTreeMap, HashSet};
 
 use super::law::{
     ContactStiffness, contact_jmins, contact_pressure, contact_stiffness, law_matrix,
-    linearised_opening, opening_coefficient,
+    linearised_opening, opening_coefficient, shear_vector, stick_stiffness,
 };
 use super::mesh::Nodes;
 use super::{ContactElement, ContactOptions, InversionTest};
@@ -46,6 +46,45 @@ pub struct ContactSet<'a> {
     stiffness: Vec<ContactStiffness>,
     unknowns: Vec<[Option<usize>; 6]>,
     loads: Vec<[f64; 6]>,
+    friction: Option<Friction>,
+}
+
+/// The tangential side of the frictional law (docs/method.md §6.15), per
+/// element of B: μ, G_c/T, the shear vector b_t, the stick part (matrix and
+/// its prescribed share) and the slip γ_p the step starts from.
+struct Friction {
+    mu: Vec<f64>,
+    g_over_t: Vec<f64>,
+    bt: Vec<[f64; 6]>,
+    stick: Vec<ContactStiffness>,
+    stick_loads: Vec<[f64; 6]>,
+    anchors: Vec<f64>,
+}
+
+/// The frictional state of the elements of B after a converged step
+/// ([`ContactSet::friction_outcome`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct FrictionOutcome {
+    /// Per element: 0 open, 1 stick, 2 slip.
+    pub state: Vec<u8>,
+    /// Per element: the shear traction τ = n·σ·t (t = (−n_y, n_x)), Pa.
+    pub shear: Vec<f64>,
+    /// Per element: the energy dissipated by slip in the step (per unit
+    /// thickness), ½ τ Δγ_p ≥ 0.
+    pub dissipation: Vec<f64>,
+    /// What the next step starts from.
+    pub next: FrictionState,
+}
+
+/// What a frictional step carries to the next: per element of B, the slip
+/// γ_p (the stress-free shear, in B̂u units) and the friction load factor c
+/// of the last solve (element loads c·b_t).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct FrictionState {
+    /// γ_p per element.
+    pub anchors: Vec<f64>,
+    /// c per element.
+    pub loads: Vec<f64>,
 }
 
 impl<'a> ContactSet<'a> {
@@ -119,7 +158,80 @@ impl<'a> ContactSet<'a> {
             stiffness,
             unknowns,
             loads,
+            friction: None,
         })
+    }
+
+    /// Makes the set frictional (docs/method.md §6.15): Coulomb's law with
+    /// coefficient `mu[k]` and stick shear modulus `shear_modulus[k]` for
+    /// element k, starting from the slip `anchors` (empty: none). Every
+    /// element then has two parts ([`ContactSet::parts`]): its normal part,
+    /// and its stick part k + n. `prescribed` as in [`ContactSet::new`].
+    pub fn with_friction(
+        mut self,
+        mu: &[f64],
+        shear_modulus: &[f64],
+        anchors: &[f64],
+        prescribed: &[f64],
+    ) -> Result<ContactSet<'a>> {
+        let n = self.len();
+        if mu.len() != n || shear_modulus.len() != n || !(anchors.is_empty() || anchors.len() == n)
+        {
+            return Err(Error::argument(format!(
+                "friction data of {} / {} / {} elements for {n} contact elements",
+                mu.len(),
+                shear_modulus.len(),
+                anchors.len()
+            )));
+        }
+        let g_over_t: Vec<f64> = (0..n).map(|k| shear_modulus[k] / self.laws[k].t).collect();
+        let bt: Vec<[f64; 6]> = (0..n)
+            .map(|k| {
+                let el = &self.elements[k];
+                shear_vector(&self.nodes().corners(&el.nodes), el.normal)
+            })
+            .collect();
+        let stick: Vec<ContactStiffness> = (0..n)
+            .map(|k| stick_stiffness(&bt[k], g_over_t[k]))
+            .collect();
+        let name = |k: usize| format!("contact element {}", k + self.base);
+        let values = stick.iter().flat_map(|cs| cs.k.iter().copied());
+        ensure_finite(values, 36, "stick stiffness", name)?;
+        let stick_loads = element_loads(&self.elements, &stick, &self.unknowns, prescribed);
+        let anchors = if anchors.is_empty() {
+            vec![0.0; n]
+        } else {
+            anchors.to_vec()
+        };
+        self.friction = Some(Friction {
+            mu: mu.to_vec(),
+            g_over_t,
+            bt,
+            stick,
+            stick_loads,
+            anchors,
+        });
+        Ok(self)
+    }
+
+    /// Whether the set is frictional.
+    pub fn is_frictional(&self) -> bool {
+        self.friction.is_some()
+    }
+
+    /// Number of parts: one per element (its normal part), plus its stick
+    /// part when frictional (part k + n of element k). Active flags, the
+    /// matrices and loads of the active-set loop run over parts.
+    pub fn parts(&self) -> usize {
+        match self.friction {
+            Some(_) => 2 * self.len(),
+            None => self.len(),
+        }
+    }
+
+    /// The element of part `p`.
+    pub fn element_of(&self, p: usize) -> usize {
+        if p < self.len() { p } else { p - self.len() }
     }
 
     /// The nodes B is built on.
@@ -150,25 +262,174 @@ impl<'a> ContactSet<'a> {
         &self.laws
     }
 
-    /// The stiffness and initial-gap load of element `k` when active.
+    /// The stiffness and initial-gap load of part `k` when active
+    /// ([`ContactSet::parts`]).
     pub fn stiffness(&self, k: usize) -> &ContactStiffness {
-        &self.stiffness[k]
+        match &self.friction {
+            Some(f) if k >= self.len() => &f.stick[k - self.len()],
+            _ => &self.stiffness[k],
+        }
     }
 
-    /// The unknown of each of element `k`'s six DOFs (`None`: prescribed).
+    /// The unknown of each of part `k`'s six DOFs (`None`: prescribed).
     pub fn unknowns(&self, k: usize) -> &[Option<usize>; 6] {
-        &self.unknowns[k]
+        &self.unknowns[self.element_of(k)]
     }
 
-    /// Element `k`'s load on its unknowns when active: its initial-gap load
+    /// Part `k`'s load on its unknowns when active: its initial-gap load
     /// minus the prescribed displacements' share (zero on prescribed DOFs).
     pub fn load(&self, k: usize) -> &[f64; 6] {
-        &self.loads[k]
+        match &self.friction {
+            Some(f) if k >= self.len() => &f.stick_loads[k - self.len()],
+            _ => &self.loads[k],
+        }
     }
 
-    /// The active set the loop starts from ([`initial_active_set`]).
+    /// The active set the loop starts from ([`initial_active_set`]), over
+    /// parts: a frictional element starts sticking.
     pub fn initial_active(&self) -> Vec<bool> {
-        initial_active_set(&self.elements)
+        let mut active = initial_active_set(&self.elements);
+        if self.friction.is_some() {
+            active.extend_from_within(..);
+        }
+        active
+    }
+
+    /// The friction loads that go with the active flags `active` (over
+    /// parts) and the slip state `anchors` at the loop's start: c = G_c γ_p/T
+    /// of every sticking element (its stick part's stress-free shear), zero
+    /// elsewhere; the slipping elements' c comes from the loop. Empty when
+    /// frictionless.
+    pub fn stick_loads(&self, active: &[bool]) -> Vec<f64> {
+        let Some(f) = &self.friction else {
+            return Vec::new();
+        };
+        let n = self.len();
+        (0..n)
+            .map(|k| match active[n + k] {
+                true => f.g_over_t[k] * f.anchors[k],
+                false => 0.0,
+            })
+            .collect()
+    }
+
+    /// Adds the friction loads Σ_e (c_e − c_ref,e) b_t,e, `add(unknown,
+    /// value)`, for the load factors `c` against a reference `c_ref`
+    /// (empty: zero). Nothing when frictionless.
+    pub fn add_friction_loads(&self, c: &[f64], c_ref: &[f64], mut add: impl FnMut(usize, f64)) {
+        let Some(f) = &self.friction else { return };
+        for (k, &ck) in c.iter().enumerate() {
+            let dc = ck - c_ref.get(k).copied().unwrap_or(0.0);
+            if dc == 0.0 {
+                continue;
+            }
+            for (a, e) in self.unknowns[k].iter().enumerate() {
+                if let Some(i) = e {
+                    add(*i, dc * f.bt[k][a]);
+                }
+            }
+        }
+    }
+
+    /// The verdict of the frictional law on element displacements
+    /// `values(k)` of a solve with the flags `current` (over parts) and
+    /// friction load factors `c` (docs/method.md §6.15): the active flags
+    /// over parts — the inversion test for the normal parts, and for each
+    /// active element whether it sticks — and the next load factors:
+    /// G_c γ_p/T when sticking, −μ p sign(τ) when slipping, 0 when open.
+    ///
+    /// A sticking element slips when its shear τ = (G_c/T)(γ − γ_p) exceeds
+    /// μ p, along τ. A slipping element (shear τ_s = −c) keeps slipping
+    /// while its slip Δγ_p = γ − γ_p − τ_s T/G_c goes along τ_s, and sticks
+    /// when its slip turns back: the smallest change that can restore the
+    /// dissipation's sign. (Judging it by its trial shear (G_c/T)(γ − γ_p)
+    /// instead, the penalty G_c/T magnifies any sway of the bodies past μp:
+    /// slip zones swap direction from iteration to iteration and never
+    /// stick.) An element that was not active in the solve starts sticking:
+    /// its pressure and shear were those of a free element. Frictionless:
+    /// the inversion test and no loads.
+    pub fn verdict(
+        &self,
+        (current, c): (&[bool], &[f64]),
+        values: impl Fn(usize) -> [f64; 6],
+    ) -> (Vec<bool>, Vec<f64>) {
+        let normal = self.inverted(&values);
+        let Some(f) = &self.friction else {
+            return (normal, Vec::new());
+        };
+        let n = self.len();
+        let mut flags = normal.clone();
+        flags.resize(2 * n, false);
+        let mut next = vec![0.0; n];
+        for k in (0..n).filter(|&k| normal[k]) {
+            let ue = values(k);
+            let limit = f.mu[k] * self.pressure(k, &ue).max(0.0);
+            let gamma = 2.0 * dot6(&f.bt[k], &ue);
+            let shear = f.g_over_t[k] * (gamma - f.anchors[k]);
+            // The direction it slips in, if it slips.
+            let slips_along = if !current[k] {
+                None
+            } else if current[n + k] {
+                (shear.abs() > limit).then_some(shear)
+            } else {
+                let tau = -c[k];
+                let slip = gamma - f.anchors[k] - tau / f.g_over_t[k];
+                match tau == 0.0 {
+                    // No traction to judge the slip by: its shear decides.
+                    true => (shear.abs() > limit).then_some(shear),
+                    false => (slip * tau >= 0.0).then_some(tau),
+                }
+            };
+            match slips_along {
+                Some(direction) => next[k] = -limit.copysign(direction),
+                None => {
+                    flags[n + k] = true;
+                    next[k] = f.g_over_t[k] * f.anchors[k];
+                }
+            }
+        }
+        (flags, next)
+    }
+
+    /// The frictional state of a converged solve: flags over parts, load
+    /// factors `c` it was solved with, element displacements `values(k)`.
+    /// `None` when frictionless.
+    pub fn friction_outcome(
+        &self,
+        active: &[bool],
+        c: &[f64],
+        values: impl Fn(usize) -> [f64; 6],
+    ) -> Option<FrictionOutcome> {
+        let f = self.friction.as_ref()?;
+        let n = self.len();
+        let mut out = FrictionOutcome {
+            state: vec![0; n],
+            shear: vec![0.0; n],
+            dissipation: vec![0.0; n],
+            next: FrictionState {
+                anchors: f.anchors.clone(),
+                loads: c.to_vec(),
+            },
+        };
+        for k in 0..n {
+            let gamma = 2.0 * dot6(&f.bt[k], &values(k));
+            let anchor = &mut out.next.anchors[k];
+            if !active[k] {
+                // An open element forgets its slip: it closes stress-free.
+                *anchor = gamma;
+            } else if active[n + k] {
+                out.state[k] = 1;
+                out.shear[k] = f.g_over_t[k] * (gamma - f.anchors[k]);
+            } else {
+                out.state[k] = 2;
+                let tau = -c[k];
+                out.shear[k] = tau;
+                // Stress-free at the slipped position: τ = (G_c/T)(γ − γ_p).
+                *anchor = gamma - tau / f.g_over_t[k];
+                out.dissipation[k] = 0.5 * tau * (*anchor - f.anchors[k]);
+            }
+        }
+        Some(out)
     }
 
     /// The inversion test: which elements are inverted for the element
@@ -220,7 +481,8 @@ impl<'a> ContactSet<'a> {
     pub fn interface_unknowns(&self) -> Vec<usize> {
         let (test, law) = (self.options.test, self.options.law);
         let mut set = Vec::new();
-        for (k, cs) in self.stiffness.iter().enumerate() {
+        for part in 0..self.parts() {
+            let (k, cs) = (self.element_of(part), self.stiffness(part));
             for a in 0..6 {
                 let Some(i) = self.unknowns[k][a] else {
                     continue;
@@ -252,7 +514,8 @@ impl<'a> ContactSet<'a> {
     /// of the two surfaces are not coupled at all. Sorted.
     pub fn structural_zeros(&self, pattern: &Pattern, body: &[f64]) -> Vec<usize> {
         let (mut zero, mut nonzero) = (Vec::new(), Vec::new());
-        for (u, cs) in self.unknowns.iter().zip(&self.stiffness) {
+        for part in 0..self.parts() {
+            let (u, cs) = (self.unknowns(part), self.stiffness(part));
             for a in 0..6 {
                 for b in a..6 {
                     let (Some(i), Some(j)) = (u[a], u[b]) else {
@@ -317,6 +580,10 @@ pub fn element_laws(
 /// and the stick law's ν of a pair.
 pub fn softer(a: Material, b: Material) -> Material {
     if b.young() < a.young() { b } else { a }
+}
+
+fn dot6(a: &[f64; 6], b: &[f64; 6]) -> f64 {
+    (0..6).map(|i| a[i] * b[i]).sum()
 }
 
 /// Each element's load on its free unknowns: the initial-gap load minus
@@ -403,12 +670,41 @@ impl ActiveSet {
     /// set is settled (unchanged); else the flags become `next`, unless
     /// they were visited before — a cycle, refused with the history.
     pub fn advance(&mut self, next: Vec<bool>, iteration: usize) -> Result<bool> {
-        let pairs = || next.iter().zip(&self.active);
-        self.history.push(IterationRecord {
-            active: self.active.iter().filter(|&&a| a).count(),
-            switched_on: pairs().filter(|(n, a)| **n && !**a).count(),
-            switched_off: pairs().filter(|(n, a)| !**n && **a).count(),
-        });
+        self.advance_with(next, (&[], false), iteration)
+    }
+
+    /// [`ActiveSet::advance`] for a loop whose loads also move (the slip
+    /// tractions of a frictional solve, `loads`): settled only when the
+    /// flags and the loads (`loads_moved` false) both stand still. A cycle
+    /// is a revisit of the same flags with the same loads, to the bit: the
+    /// same system solved again.
+    pub fn advance_with(
+        &mut self,
+        next: Vec<bool>,
+        (loads, loads_moved): (&[f64], bool),
+        iteration: usize,
+    ) -> Result<bool> {
+        if !loads.is_empty() {
+            let key = loads.iter().fold(0xcbf2_9ce4_8422_2325u64, |h, v| {
+                (h ^ v.to_bits()).wrapping_mul(0x100_0000_01b3)
+            });
+            let mut state = next.clone();
+            // The loads' fingerprint, as flags, beside the set's flags.
+            state.extend((0..64).map(|b| key >> b & 1 == 1));
+            self.history.push(self.record(&next));
+            if next == self.active && !loads_moved {
+                return Ok(true);
+            }
+            if !self.visited.insert(state) {
+                return Err(self.not_converged(format!(
+                    "the active set and the slip tractions revisited an earlier state at \
+                     iteration {iteration} (a cycle)"
+                )));
+            }
+            self.active = next;
+            return Ok(false);
+        }
+        self.history.push(self.record(&next));
         if next == self.active {
             return Ok(true);
         }
@@ -419,6 +715,15 @@ impl ActiveSet {
         }
         self.active = next;
         Ok(false)
+    }
+
+    fn record(&self, next: &[bool]) -> IterationRecord {
+        let pairs = || next.iter().zip(&self.active);
+        IterationRecord {
+            active: self.active.iter().filter(|&&a| a).count(),
+            switched_on: pairs().filter(|(n, a)| **n && !**a).count(),
+            switched_off: pairs().filter(|(n, a)| !**n && **a).count(),
+        }
     }
 
     /// The error of a loop that did not settle in `max_iterations`.

@@ -1123,3 +1123,90 @@ pub unsafe extern "C" fn tfem_set_contact_state(
         m.model.set_contact_state(bytes)
     })
 }
+
+/// Sets Coulomb's friction coefficient μ ≥ 0 of contact pair `pair`
+/// (0-based, from `tfem_add_contact_pair`): stick while the shear stays
+/// within μ times the pressure, slip against the slip of the step beyond
+/// (docs/method.md §6.15). 0, the default, is frictionless, bit for bit.
+/// A negative or non-finite μ, or an unknown pair, is refused
+/// (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load
+/// history.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_set_friction(model: *mut TfemModel, pair: c_int, mu: f64) -> Status {
+    with_model(model, |m| {
+        let p = usize::try_from(pair).map_err(|_| {
+            Error::argument(format!(
+                "contact pair {pair} does not exist (pairs are 0-based)"
+            ))
+        })?;
+        m.model.set_friction(p, mu)
+    })
+}
+
+/// Changes the value of displacement component `comp` (0 x, 1 y) of
+/// `node`, prescribed before by `tfem_fix` or `tfem_fix_edges`: the loads of
+/// a non-proportional load history, which goes on with the same
+/// factorisation (the set of prescribed DOFs is unchanged). A node not
+/// prescribed in that component is refused, naming it.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_set_prescribed(
+    model: *mut TfemModel,
+    node: c_int,
+    comp: c_int,
+    value: f64,
+) -> Status {
+    with_model(model, |m| {
+        let n = m.n_nodes()?;
+        let v = m.index(node, n, "node")?;
+        m.model.set_prescribed(v, component(comp)?, value)
+    })
+}
+
+/// Copies the shear traction τ = n·σ·t (Pa in SI; t = (−n_y, n_x), n the
+/// element's normal, see `tfem_get_contact_mesh`) of every contact element
+/// of the last contact solve or step (n_contact_elements values): 0 when
+/// open, |τ| ≤ μp when sticking, μp when slipping; all 0 when frictionless.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_shear(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        copy_out(&m.model.contact_shear()?, out, length, "out")
+    })
+}
+
+/// Copies the frictional state of every contact element of the last
+/// contact solve or step (n_contact_elements values): 0 open, 1 stick,
+/// 2 slip (a frictionless solve: 2 where active).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_friction_state(
+    model: *mut TfemModel,
+    out: *mut c_int,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let v: Vec<c_int> = m
+            .model
+            .contact_friction_state()?
+            .iter()
+            .map(|&s| c_int::from(s))
+            .collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies the energy dissipated by slip in the last step (or solve) at
+/// every contact element (n_contact_elements values, J per unit thickness
+/// in SI): ½ τ Δγ_p ≥ 0; all 0 when frictionless.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_dissipation(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        copy_out(&m.model.contact_dissipation()?, out, length, "out")
+    })
+}

@@ -309,6 +309,18 @@ impl Model {
         self.edit(|p| p.add_contact_pair_with_mesh(tag_a, tag_b, triangles))
     }
 
+    /// Sets Coulomb's friction coefficient μ ≥ 0 of contact pair `pair`
+    /// (docs/method.md §6.15; 0, the default, is frictionless bit for bit).
+    pub fn set_friction(&mut self, pair: usize, mu: f64) -> Result<()> {
+        self.edit(|p| p.set_friction(pair, mu))
+    }
+
+    /// Changes the value of a displacement component fixed before (a
+    /// non-proportional load history goes on: the stiffness is the same).
+    pub fn set_prescribed(&mut self, node: usize, component: Component, value: f64) -> Result<()> {
+        self.edit(|p| p.set_prescribed(node, component, value))
+    }
+
     /// Removes every contact pair.
     pub fn clear_contact_pairs(&mut self) {
         let _ = self.edit(|p| {
@@ -697,6 +709,40 @@ impl Model {
         Ok(&self.contact_solution()?.pressure)
     }
 
+    /// The shear traction τ = n·σ·t (t = (−n_y, n_x), n the element's
+    /// normal) of every element of B in the last contact solve: zero when
+    /// open, |τ| ≤ μ p when sticking, μ p when slipping; all zero when the
+    /// solve was frictionless.
+    pub fn contact_shear(&self) -> Result<Vec<f64>> {
+        let c = self.contact_solution()?;
+        Ok(match &c.friction {
+            Some(f) => f.shear.clone(),
+            None => vec![0.0; c.elements.len()],
+        })
+    }
+
+    /// The frictional state of every element of B in the last contact
+    /// solve: 0 open, 1 stick, 2 slip (a frictionless solve: 2 where
+    /// active, its surfaces slide freely).
+    pub fn contact_friction_state(&self) -> Result<Vec<u8>> {
+        let c = self.contact_solution()?;
+        Ok(match &c.friction {
+            Some(f) => f.state.clone(),
+            None => c.active.iter().map(|&a| if a { 2 } else { 0 }).collect(),
+        })
+    }
+
+    /// The energy dissipated by slip in the last step (or solve) at every
+    /// element of B, per unit thickness: ½ τ Δγ_p ≥ 0 (docs/method.md
+    /// §6.15); zero when frictionless.
+    pub fn contact_dissipation(&self) -> Result<Vec<f64>> {
+        let c = self.contact_solution()?;
+        Ok(match &c.friction {
+            Some(f) => f.dissipation.clone(),
+            None => vec![0.0; c.elements.len()],
+        })
+    }
+
     /// The report of the last contact solve.
     pub fn contact_report(&self) -> Result<&ContactReport> {
         Ok(&self.contact_solution()?.report)
@@ -789,6 +835,7 @@ fn solution_of(
             active: c.active,
             pressure: c.pressure,
             laws: c.laws,
+            friction: c.friction,
             report,
             options: options.expect("a contact solve has options"),
         }
@@ -828,6 +875,15 @@ fn encode(state: &StepState, fingerprint: u64) -> Vec<u8> {
     out.extend_from_slice(&state.factor.min_eigenvalue.to_le_bytes());
     for v in packed {
         out.extend_from_slice(&v.to_le_bytes());
+    }
+    // Frictional states go on with their slip and loads; a frictionless
+    // state keeps its bytes as they were.
+    let f = &state.friction;
+    if !f.anchors.is_empty() {
+        out.extend_from_slice(&(f.anchors.len() as u64).to_le_bytes());
+        for v in f.anchors.iter().chain(&f.loads) {
+            out.extend_from_slice(&v.to_le_bytes());
+        }
     }
     out
 }
@@ -869,6 +925,26 @@ fn decode(bytes: &[u8], fingerprint: u64) -> Result<StepState> {
         .chunks_exact(8)
         .map(|c| f64::from_le_bytes(c.try_into().expect("8 bytes")))
         .collect();
+    let mut friction = crate::contact::FrictionState::default();
+    // Bytes read so far: the header, two flag sets, the factor.
+    let read = 32 + 2 * n + 9 + 8 * m;
+    if read < bytes.len() {
+        let f = usize::try_from(word(take(8)?)).map_err(|_| bad("size"))?;
+        let values = take(f.checked_mul(16).ok_or_else(|| bad("size"))?)?;
+        let mut v = values
+            .chunks_exact(8)
+            .map(|c| f64::from_le_bytes(c.try_into().expect("8 bytes")));
+        friction.anchors = v.by_ref().take(f).collect();
+        friction.loads = v.collect();
+        if !friction
+            .anchors
+            .iter()
+            .chain(&friction.loads)
+            .all(|x| x.is_finite())
+        {
+            return Err(bad("a friction value is not finite"));
+        }
+    }
     if at != bytes.len() {
         return Err(bad("bytes left over"));
     }
@@ -883,5 +959,6 @@ fn decode(bytes: &[u8], fingerprint: u64) -> Result<StepState> {
             factored,
             min_eigenvalue,
         },
+        friction,
     })
 }

@@ -276,6 +276,35 @@ impl Problem {
         Ok(())
     }
 
+    /// Changes the value of a displacement component [`Problem::fix`]ed
+    /// before: the loads of a non-proportional load history. The set of
+    /// prescribed DOFs, so the stiffness, stays: a load history goes on.
+    pub fn set_prescribed(&mut self, node: usize, component: Component, value: f64) -> Result<()> {
+        self.check_node(node)?;
+        let base = self.mesh_ref()?.index_base();
+        if !value.is_finite() {
+            return Err(Error::argument(format!(
+                "prescribed displacement {value:?} of node {} is not finite",
+                node + base
+            )));
+        }
+        let g = 2 * node + component as usize;
+        match self.prescribed.get_mut(&g) {
+            None => Err(Error::argument(format!(
+                "node {} {} is not prescribed: fix it first",
+                node + base,
+                if g % 2 == 0 { "u_x" } else { "u_y" }
+            ))),
+            Some(v) => {
+                if v.to_bits() != value.to_bits() {
+                    *v = value;
+                    self.changed(false);
+                }
+                Ok(())
+            }
+        }
+    }
+
     /// Refuses to prescribe global DOF `g` a value other than the one it
     /// already has: one of the two would silently win (a corner shared by
     /// two constrained edges, say).
@@ -428,6 +457,7 @@ impl Problem {
             body_a,
             body_b,
             user_mesh: None,
+            friction: 0.0,
         });
         self.changed(true);
         Ok(self.pairs.len() - 1)
@@ -456,9 +486,37 @@ impl Problem {
             body_a,
             body_b,
             user_mesh: Some(elements.iter().map(|e| e.nodes).collect()),
+            friction: 0.0,
         });
         self.changed(true);
         Ok((self.pairs.len() - 1, flipped))
+    }
+
+    /// Sets Coulomb's friction coefficient μ of contact pair `pair` (0, the
+    /// default, is frictionless, bit for bit; docs/method.md §6.15). μ must
+    /// be finite and ≥ 0 (a tied interface is [`ContactLaw::Stick`]).
+    /// Changing μ starts a new load history.
+    ///
+    /// [`ContactLaw::Stick`]: crate::contact::ContactLaw::Stick
+    pub fn set_friction(&mut self, pair: usize, mu: f64) -> Result<()> {
+        let n = self.pairs.len();
+        let Some(p) = self.pairs.get_mut(pair) else {
+            return Err(Error::argument(format!(
+                "contact pair {pair} does not exist ({n} declared)"
+            )));
+        };
+        if !(mu.is_finite() && mu >= 0.0) {
+            return Err(Error::argument(format!(
+                "friction coefficient mu = {mu:?} of contact pair {pair} must be finite and >= 0"
+            )));
+        }
+        if p.friction.to_bits() != mu.to_bits() {
+            p.friction = mu;
+            // μ decides which unknowns are on the interface, not the
+            // structure: a new K₁, the same pattern.
+            self.changed_stiffness();
+        }
+        Ok(())
     }
 
     /// Removes every contact pair.

@@ -4,7 +4,8 @@
 
 use super::problem::Problem;
 use crate::contact::{
-    ContactElement, ContactOptions, ElementLaw, contact_stiffness, linearised_opening,
+    ContactElement, ContactOptions, ElementLaw, FrictionOutcome, contact_stiffness,
+    linearised_opening, shear_vector,
 };
 use std::sync::OnceLock;
 
@@ -50,6 +51,8 @@ pub(crate) struct ContactSolution {
     pub pressure: Vec<f64>,
     /// Each element's law.
     pub laws: Vec<ElementLaw>,
+    /// The frictional state, when frictional (docs/method.md §6.15).
+    pub friction: Option<FrictionOutcome>,
     /// The report.
     pub report: ContactReport,
     /// The options of the solve.
@@ -161,13 +164,19 @@ impl Solution {
             if !c.active[k] {
                 continue;
             }
-            let geo = TriGeometry::new(&mesh.corners(&el.nodes));
+            let corners = mesh.corners(&el.nodes);
+            let geo = TriGeometry::new(&corners);
             let law = &c.laws[k];
             let cs = contact_stiffness(&geo, &law.d, el.normal, el.j0, law.t);
             let ue = element_values(u, &el.nodes);
+            // The shear traction τ of a frictional element acts through b_t.
+            let (tau, bt) = match &c.friction {
+                Some(fr) => (fr.shear[k], shear_vector(&corners, el.normal)),
+                None => (0.0, [0.0; 6]),
+            };
             for a in 0..6 {
                 let ku: f64 = (0..6).map(|b| cs.k[a * 6 + b] * ue[b]).sum();
-                f[2 * el.nodes[a / 2] + a % 2] -= ku - cs.f0[a];
+                f[2 * el.nodes[a / 2] + a % 2] -= ku - cs.f0[a] + tau * bt[a];
             }
         }
         ensure_finite(f.iter().copied(), 2, "contact force", |v| mesh.node_name(v))?;

@@ -46,8 +46,10 @@ pub(crate) struct LoopInput<'a, 's> {
 pub(crate) struct Settled {
     /// The solution over the unknowns.
     pub x: Vec<f64>,
-    /// The active set.
+    /// The active set (over the set's parts).
     pub active: Vec<bool>,
+    /// The friction load factors (empty when frictionless).
+    pub friction: Vec<f64>,
     /// One record per iteration.
     pub history: Vec<IterationRecord>,
     /// Bytes the condensed system held (0 when not condensed).
@@ -66,6 +68,8 @@ pub(crate) struct CondensedState {
     pub reference: Vec<bool>,
     /// The set the interface factor represents.
     pub factor_active: Vec<bool>,
+    /// The friction load factors in K₁'s right-hand side (empty: none).
+    pub friction_ref: Vec<f64>,
 }
 
 /// How a loop that may stop at the interface settled.
@@ -79,6 +83,8 @@ pub(crate) enum Outcome {
         ui: Vec<f64>,
         /// The final set.
         active: Vec<bool>,
+        /// The final friction load factors (empty when frictionless).
+        friction: Vec<f64>,
         /// One record per iteration.
         history: Vec<IterationRecord>,
     },
@@ -107,9 +113,17 @@ pub(crate) struct ActiveSetLoop<'a, 's> {
     timings: &'a mut Timings,
     info: &'a mut SolveInfo,
     set: ActiveSet,
+    /// The friction load factors of the next solve (docs/method.md §6.15;
+    /// empty when frictionless).
+    friction: Vec<f64>,
     condensed: Option<CondensedState>,
     iterate: Iterate,
 }
+
+/// Slip tractions that moved by less than this, relative to the largest
+/// friction load, have converged: the fixed point on μ p has reached
+/// round-off of the interface solve.
+const FRICTION_TOL: f64 = 1e-11;
 
 impl<'a, 's> ActiveSetLoop<'a, 's> {
     /// A loop that starts from the set's initial active elements;
@@ -119,27 +133,30 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         (chol, system): (&'a mut Cholesky, &'a mut AssembledSystem),
         (timings, info): (&'a mut Timings, &'a mut SolveInfo),
     ) -> ActiveSetLoop<'a, 's> {
-        let set = ActiveSet::new(input.set.initial_active());
+        let initial = input.set.initial_active();
+        let friction = input.set.stick_loads(&initial);
         ActiveSetLoop {
             input,
             chol,
             system,
             timings,
             info,
-            set,
+            set: ActiveSet::new(initial),
+            friction,
             condensed: None,
             iterate: Iterate::None,
         }
     }
 
     /// A loop that resumes from a condensed state (K₁ factorised, its
-    /// interface system made) and starts from the set `warm`.
+    /// interface system made) and starts from the set `warm` with the
+    /// friction load factors `friction` (empty when frictionless).
     pub fn resume(
         input: LoopInput<'a, 's>,
         (chol, system): (&'a mut Cholesky, &'a mut AssembledSystem),
         (timings, info): (&'a mut Timings, &'a mut SolveInfo),
         state: CondensedState,
-        warm: Vec<bool>,
+        (warm, friction): (Vec<bool>, Vec<f64>),
     ) -> ActiveSetLoop<'a, 's> {
         ActiveSetLoop {
             input,
@@ -148,9 +165,25 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             timings,
             info,
             set: ActiveSet::new(warm),
+            friction,
             condensed: Some(state),
             iterate: Iterate::None,
         }
+    }
+
+    /// Judges the iterate (the inversion test and, when frictional,
+    /// Coulomb's law) and moves the flags and friction loads to the
+    /// verdict: true when both stand still.
+    fn advance(&mut self, iteration: usize) -> Result<bool> {
+        let (next, friction) = self.verdict();
+        let scale = friction.iter().fold(0.0f64, |m, c| m.max(c.abs()));
+        let moved = friction
+            .iter()
+            .zip(&self.friction)
+            .any(|(a, b)| (a - b).abs() > FRICTION_TOL * scale);
+        self.friction = friction;
+        self.set
+            .advance_with(next, (&self.friction, moved), iteration)
     }
 
     /// Runs the loop like [`ActiveSetLoop::run`], but stops at the
@@ -162,10 +195,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
     ) -> std::result::Result<Outcome, Box<(Error, Option<CondensedState>)>> {
         let max_iterations = self.input.options.max_iterations;
         for iteration in 1..=max_iterations {
-            let settled = self.solve(iteration).and_then(|()| {
-                let next = self.inverted();
-                self.set.advance(next, iteration)
-            });
+            let settled = self.solve(iteration).and_then(|()| self.advance(iteration));
             let settled = match settled {
                 Ok(s) => s,
                 Err(e) => return Err(Box::new((e, self.condensed.take()))),
@@ -179,6 +209,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
                             state,
                             ui,
                             active,
+                            friction: self.friction,
                             history,
                         })
                     }
@@ -202,8 +233,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         let max_iterations = self.input.options.max_iterations;
         for iteration in 1..=max_iterations {
             self.solve(iteration)?;
-            let next = self.inverted();
-            if self.set.advance(next, iteration)? {
+            if self.advance(iteration)? {
                 return self.recover();
             }
         }
@@ -262,6 +292,12 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
                     }
                 }
             }
+            // Friction loads are on the interface (where b_t is).
+            set.add_friction_loads(&self.friction, &state.friction_ref, |i, v| {
+                g[sys
+                    .position(i)
+                    .expect("friction loads are on the interface")] += v;
+            });
             self.iterate = Iterate::Condensed(sys.solve(&sys.gather(&state.x1), &g)?);
         } else {
             self.condensed = None;
@@ -281,6 +317,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         let active = self.set.active();
         self.system
             .set_contact(active, set, structure, input.prescribed);
+        self.system.set_friction_loads(set, &self.friction);
         self.timings.assembly += t0.elapsed().as_secs_f64();
         let energy = |r: &[f64]| {
             let mut acc = body_energy(input.elements, r);
@@ -315,6 +352,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             x1: x,
             reference: self.set.active().to_vec(),
             factor_active: self.set.active().to_vec(),
+            friction_ref: self.friction.clone(),
         });
         self.iterate = Iterate::Reference;
         self.timings.interface += t0.elapsed().as_secs_f64();
@@ -334,11 +372,13 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         }
     }
 
-    /// The inversion test on the current iterate.
-    fn inverted(&self) -> Vec<bool> {
+    /// The contact law's verdict on the current iterate
+    /// ([`ContactSet::verdict`]).
+    fn verdict(&self) -> (Vec<bool>, Vec<f64>) {
         let (dofs, prescribed) = (self.input.at.dofs, self.input.prescribed);
         let elements = self.input.set.elements();
-        self.input.set.inverted(|k| {
+        let current = (self.set.active(), &self.friction[..]);
+        self.input.set.verdict(current, |k| {
             let tri = &elements[k].nodes;
             std::array::from_fn(|a| {
                 let g = 2 * tri[a / 2] + a % 2;
@@ -371,6 +411,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         Ok(Settled {
             x,
             active,
+            friction: self.friction,
             history,
             condensed_bytes,
         })
@@ -392,13 +433,20 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
 
     /// The last iterate is condensed: recovers the whole field.
     fn expand_condensed(&mut self, ui: Vec<f64>, context: &str) -> Result<Vec<f64>> {
-        let state = self.condensed.take().expect("condensed");
+        let CondensedState {
+            system,
+            x1,
+            reference,
+            friction_ref,
+            ..
+        } = self.condensed.take().expect("condensed");
         let input = &self.input;
         let t0 = Instant::now();
         let structure = (input.at.dofs, input.at.pattern);
         let active = self.set.active();
         self.system
             .set_contact(active, input.set, structure, input.prescribed);
+        self.system.set_friction_loads(input.set, &self.friction);
         self.timings.assembly += t0.elapsed().as_secs_f64();
         let t0 = Instant::now();
         let (values, rhs) = (self.system.values(), self.system.rhs());
@@ -410,13 +458,8 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             product: &|v: &[f64], y: &mut [f64]| pattern.sym_mul(values, v, y),
             k_norm: &|| norm_inf(pattern, values),
             rhs,
+            friction: (&self.friction, &friction_ref),
         };
-        let CondensedState {
-            system,
-            x1,
-            reference,
-            ..
-        } = state;
         let x = expand(target, self.chol, (&system, &reference), x1, ui)?;
         self.timings.solve += t0.elapsed().as_secs_f64();
         check_finite(input.at, &x, context)?;
@@ -440,6 +483,9 @@ pub(crate) struct Target<'t, 's> {
     pub k_norm: &'t dyn Fn() -> f64,
     /// The right-hand side of the final set.
     pub rhs: &'t [f64],
+    /// The final friction load factors and those of K₁'s right-hand side
+    /// (empty: none).
+    pub friction: (&'t [f64], &'t [f64]),
 }
 
 /// Recovers the whole field from the interface values `ui` of the final
@@ -459,6 +505,7 @@ pub(crate) fn expand(
         active: target.active,
         initial: reference,
         n: target.at.dofs.n_free(),
+        friction: target.friction,
     };
     let position = |j: usize| {
         sys.position(j)
@@ -491,6 +538,8 @@ struct Changes<'c, 's> {
     active: &'c [bool],
     initial: &'c [bool],
     n: usize,
+    /// The final friction load factors and K₁'s.
+    friction: (&'c [f64], &'c [f64]),
 }
 
 impl Changes<'_, '_> {
@@ -516,6 +565,10 @@ impl Changes<'_, '_> {
                 }
                 p[i] += removed * r;
             }
+        }
+        if with_load {
+            let (c, c_ref) = self.friction;
+            set.add_friction_loads(c, c_ref, |i, v| p[i] += v);
         }
         p
     }

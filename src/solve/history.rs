@@ -26,7 +26,7 @@ use super::linear::{Structure, check_finite, factor_and_solve};
 use super::report::{SolveInfo, Timings};
 use super::session::{Session, Wanted, factorisation};
 use super::{Field, Input, Outcome, contact_outcome, contact_set, finite_statistics};
-use crate::contact::{ContactOptions, ContactSet};
+use crate::contact::{ContactOptions, ContactSet, FrictionState};
 use crate::error::{Error, Result, Status};
 use crate::fem::assembly::NOT_FREE;
 use crate::fem::body;
@@ -65,6 +65,9 @@ pub(crate) struct StepState {
     pub factor_active: Vec<bool>,
     /// The interface factor.
     pub factor: FactorSnapshot,
+    /// The slip and friction loads of the last step (empty when
+    /// frictionless; docs/method.md §6.15).
+    pub friction: FrictionState,
 }
 
 /// A step whose whole field is recovered when asked for.
@@ -78,6 +81,8 @@ pub(crate) struct Pending {
     pub ui: Vec<f64>,
     /// The final set.
     pub active: Vec<bool>,
+    /// The friction load factors it was solved with (empty: none).
+    pub friction: Vec<f64>,
 }
 
 /// The state of a load history (module documentation).
@@ -93,6 +98,11 @@ pub(crate) struct History {
     rhs_body: Vec<f64>,
     /// The active set of the last step.
     warm: Vec<bool>,
+    /// The slip and friction loads of the last step (empty: frictionless
+    /// or none yet).
+    friction: FrictionState,
+    /// Whether the contact set is frictional (two parts per element).
+    frictional: bool,
     /// The statistics of K₁'s solve (the residual a step reports).
     first: SolveInfo,
     /// Whether x_load was solved apart for new loads ([`new_loads`]) rather
@@ -112,6 +122,7 @@ impl History {
             warm: self.warm.clone(),
             factor_active: state.factor_active.clone(),
             factor: state.system.factor_snapshot(),
+            friction: self.friction.clone(),
         }
     }
 
@@ -131,14 +142,25 @@ impl History {
         let n = self.warm.len();
         if state.warm.len() != n || state.factor_active.len() != n {
             return Err(Error::argument(format!(
-                "the contact state is of {} contact elements, the model has {n}",
+                "the contact state is of {} contact parts, the model has {n}",
                 state.warm.len()
+            )));
+        }
+        let f = &state.friction;
+        let elements = if self.frictional { n / 2 } else { 0 };
+        let sizes = [f.anchors.len(), f.loads.len()];
+        if sizes.iter().any(|&m| m != 0 && m != elements) || sizes[0] != sizes[1] {
+            return Err(Error::argument(format!(
+                "the contact state's friction data ({} / {} values) do not fit {elements} \
+                 frictional contact elements",
+                sizes[0], sizes[1]
             )));
         }
         let condensed = self.state.as_mut().expect("the condensed state is back");
         condensed.system.restore_factor(&state.factor)?;
         condensed.factor_active.clone_from(&state.factor_active);
         self.warm.clone_from(&state.warm);
+        self.friction.clone_from(&state.friction);
         Ok(())
     }
 }
@@ -348,7 +370,7 @@ fn begin(
         system,
         ..
     } = &mut *session;
-    let set = contact_set(input, input.prescribed, contact, dofs, &key.options)?;
+    let set = contact_set(input, input.prescribed, contact, dofs, &key.options, &[])?;
     let interface = set.interface_unknowns();
     if key.options.refactorize || !Condensed::worthwhile(interface.len(), pattern.nnz()) {
         return Err(Error::new(
@@ -414,11 +436,15 @@ fn begin(
             x1: Vec::new(),
             reference: reference.clone(),
             factor_active: reference.clone(),
+            // K₁'s right-hand side holds no friction load.
+            friction_ref: Vec::new(),
         }),
         x_load,
         x_gap,
         rhs_body,
         warm: reference,
+        friction: FrictionState::default(),
+        frictional: set.is_frictional(),
         first: info,
         loads_apart: false,
     })
@@ -427,7 +453,7 @@ fn begin(
 /// The gap loads f0 of the elements of `active`, over the unknowns.
 fn gap_loads(set: &ContactSet<'_>, active: &[bool], n: usize) -> Vec<f64> {
     let mut g = vec![0.0; n];
-    for k in (0..set.len()).filter(|&k| active[k]) {
+    for k in (0..set.parts()).filter(|&k| active[k]) {
         for (a, e) in set.unknowns(k).iter().enumerate() {
             if let Some(i) = e {
                 g[*i] += set.stiffness(k).f0[a];
@@ -461,10 +487,11 @@ fn new_loads(
         &session.contact,
         &session.dofs,
         &options,
+        &[],
     )?;
     let mut a = rhs_body.clone();
     let reference = &history.condensed().reference;
-    for k in (0..set.len()).filter(|&k| reference[k]) {
+    for k in (0..set.parts()).filter(|&k| reference[k]) {
         let (load, f0) = (set.load(k), &set.stiffness(k).f0);
         for (q, e) in set.unknowns(k).iter().enumerate() {
             if let Some(i) = e {
@@ -518,7 +545,9 @@ fn step_in_history(
         ..
     } = &mut *session;
     let h = history.as_mut().expect("a history");
-    let set = contact_set(input, &prescribed, contact, dofs, options).map_err(|e| (e, None))?;
+    let anchors = &h.friction.anchors;
+    let set =
+        contact_set(input, &prescribed, contact, dofs, options, anchors).map_err(|e| (e, None))?;
     let chol = &mut analysis.as_mut().expect("the history's factor").chol;
     let before = h.step_state();
     let mut condensed = h.state.take().expect("the condensed state is back");
@@ -552,12 +581,16 @@ fn step_in_history(
         options: *options,
     };
     let warm = h.warm.clone();
+    let friction = match h.friction.loads.is_empty() {
+        true => set.stick_loads(&warm),
+        false => h.friction.loads.clone(),
+    };
     let run = ActiveSetLoop::resume(
         loop_input,
         (chol, system),
         (timings, &mut info),
         condensed,
-        warm,
+        (warm, friction),
     )
     .run_to_interface();
     match run {
@@ -565,6 +598,7 @@ fn step_in_history(
             state,
             ui,
             active,
+            friction,
             history: records,
         }) => {
             h.state = Some(*state);
@@ -582,7 +616,7 @@ fn step_in_history(
                 };
                 let ue_of =
                     |tri: &[usize; 3]| std::array::from_fn(|a| value(2 * tri[a / 2] + a % 2));
-                contact_outcome(&set, ue_of, active.clone(), records, info)
+                contact_outcome(&set, ue_of, (active.clone(), &friction), records, info)
             });
             let contact = match judged {
                 Ok(contact) => contact,
@@ -591,7 +625,16 @@ fn step_in_history(
                 }
             };
             h.warm.clone_from(&active);
-            let pending = Pending { key, t, ui, active };
+            if let Some(f) = contact.friction.as_ref() {
+                h.friction = f.next.clone();
+            }
+            let pending = Pending {
+                key,
+                t,
+                ui,
+                active,
+                friction,
+            };
             let outcome = Outcome {
                 u: Field::Pending(pending),
                 log: Vec::new(),
@@ -614,8 +657,9 @@ fn step_in_history(
             super::diagnostics::conditioning_warning(&info, &mut warnings);
             let u = dofs.expand(&settled.x, &prescribed);
             let ue_of = |tri: &[usize; 3]| crate::fem::element_loop::element_values(&u, tri);
-            let contact = contact_outcome(&set, ue_of, settled.active, settled.history, info)
-                .map_err(lost)?;
+            let verdict = (settled.active, &settled.friction[..]);
+            let contact =
+                contact_outcome(&set, ue_of, verdict, settled.history, info).map_err(lost)?;
             let outcome = Outcome {
                 u: Field::Global(u),
                 log: Vec::new(),
@@ -677,7 +721,7 @@ pub(crate) fn recover(session: &Session, input: &Input<'_>, pending: &Pending) -
         system,
         ..
     } = session;
-    let set = contact_set(input, &prescribed, contact, dofs, &h.key.options)?;
+    let set = contact_set(input, &prescribed, contact, dofs, &h.key.options, &[])?;
     let chol = &analysis.as_ref().ok_or_else(stale)?.chol;
     let mut x1: Vec<f64> = h.x_load.iter().map(|a| t * a).collect();
     if !h.x_gap.is_empty() {
@@ -688,17 +732,18 @@ pub(crate) fn recover(session: &Session, input: &Input<'_>, pending: &Pending) -
     let active = &pending.active;
     let held = system.contact();
     let mut rhs: Vec<f64> = h.rhs_body.iter().map(|a| t * a).collect();
-    for k in (0..set.len()).filter(|&k| active[k]) {
+    for k in (0..set.parts()).filter(|&k| active[k]) {
         for (q, e) in set.unknowns(k).iter().enumerate() {
             if let Some(i) = e {
                 rhs[*i] += set.load(k)[q];
             }
         }
     }
+    set.add_friction_loads(&pending.friction, &[], |i, v| rhs[i] += v);
     let values = system.values();
     let product = |v: &[f64], y: &mut [f64]| {
         pattern.sym_mul(values, v, y);
-        for k in (0..set.len()).filter(|&k| active[k] != held[k]) {
+        for k in (0..set.parts()).filter(|&k| active[k] != held.get(k).copied().unwrap_or(false)) {
             let sign = if active[k] { 1.0 } else { -1.0 };
             let (eq, ke) = (set.unknowns(k), &set.stiffness(k).k);
             for a in 0..6 {
@@ -725,6 +770,8 @@ pub(crate) fn recover(session: &Session, input: &Input<'_>, pending: &Pending) -
         product: &product,
         k_norm: &|| norm_inf(pattern, values),
         rhs: &rhs,
+        // K₁'s right-hand side of a history holds no friction load.
+        friction: (&pending.friction, &[]),
     };
     let state = (&h.condensed().system, &h.condensed().reference[..]);
     let x = expand(target, chol, state, x1, pending.ui.clone())?;

@@ -25,8 +25,8 @@ use report::{ContactReport, SolveInfo, Timings};
 use session::{Session, Settings, Wanted, factorisation};
 
 use crate::contact::{
-    ContactElement, ContactOptions, ContactPair, ContactSet, ElementLaw, Nodes, element_laws,
-    softer,
+    ContactElement, ContactLaw, ContactOptions, ContactPair, ContactSet, ElementLaw,
+    FrictionOutcome, Nodes, element_laws, softer,
 };
 use crate::error::{Result, ensure_finite};
 use crate::fem::assembly::{DofMap, NOT_FREE};
@@ -83,6 +83,8 @@ pub(crate) struct ContactOutcome {
     pub pressure: Vec<f64>,
     /// Each element's law.
     pub laws: Vec<ElementLaw>,
+    /// The frictional state (docs/method.md §6.15), when frictional.
+    pub friction: Option<FrictionOutcome>,
     /// The report (its `info` filled by the caller).
     pub report: ContactReport,
 }
@@ -133,20 +135,23 @@ pub(crate) fn restore(
             system,
             ..
         } = &mut *session;
-        let set = contact_set(input, input.prescribed, contact, dofs, options)?;
+        let set = contact_set(input, input.prescribed, contact, dofs, options, &[])?;
         system.replay(log, &set, (dofs, pattern), input.prescribed);
     }
     Ok(())
 }
 
 /// The contact set of a built-in solve: B of the session's pairs, each
-/// element's law from its pair's softer body, the session's unknowns.
+/// element's law from its pair's softer body, the session's unknowns;
+/// frictional (docs/method.md §6.15) when a pair has μ > 0 under the
+/// frictionless law, starting from the slip `anchors` (empty: none).
 pub(crate) fn contact_set<'a>(
     input: &Input<'a>,
     prescribed: &[f64],
     contact: &'a [ContactElement],
     dofs: &DofMap,
     options: &ContactOptions,
+    anchors: &[f64],
 ) -> Result<ContactSet<'a>> {
     let (mesh, elements) = (input.elements.mesh(), &input.elements);
     let soft = |pair: usize| {
@@ -155,14 +160,36 @@ pub(crate) fn contact_set<'a>(
     };
     let laws = element_laws(mesh.index_base(), contact, soft, mesh.size(), options)?;
     let equation = |g: usize| Some(dofs.free(g)).filter(|&f| f != NOT_FREE);
-    ContactSet::new(
+    let set = ContactSet::new(
         Nodes::of(mesh),
         contact,
         laws,
         equation,
         prescribed,
         options,
-    )
+    )?;
+    // μ = 0 everywhere is the frictionless set itself, bit for bit; the
+    // stick law already ties the surfaces.
+    let frictional =
+        options.law == ContactLaw::Frictionless && input.pairs.iter().any(|p| p.friction > 0.0);
+    if !frictional {
+        return Ok(set);
+    }
+    let mu: Vec<f64> = contact
+        .iter()
+        .map(|e| input.pairs[e.pair].friction)
+        .collect();
+    // The stick part's shear modulus: G_c = E_c / (2(1 + ν)) of the pair's
+    // softer body, as in the stick law.
+    let shear: Vec<f64> = contact
+        .iter()
+        .map(|e| {
+            let s = soft(e.pair);
+            let e_c = options.contact_modulus.unwrap_or(s.young());
+            e_c / (2.0 * (1.0 + s.poisson()))
+        })
+        .collect();
+    set.with_friction(&mu, &shear, anchors, prescribed)
 }
 
 /// The warning about well-shaped elements that tempering softens.
@@ -256,7 +283,7 @@ fn solve_contact(
         system,
         ..
     } = &mut *session;
-    let set = contact_set(input, input.prescribed, contact, dofs, options)?;
+    let set = contact_set(input, input.prescribed, contact, dofs, options, &[])?;
     let interface = if options.refactorize {
         Vec::new()
     } else {
@@ -300,7 +327,8 @@ fn solve_contact(
     let u = dofs.expand(&settled.x, input.prescribed);
     drop(settled.x);
     let ue_of = |tri: &[usize; 3]| element_values(&u, tri);
-    let contact = contact_outcome(&set, ue_of, settled.active, settled.history, info)?;
+    let verdict = (settled.active, &settled.friction[..]);
+    let contact = contact_outcome(&set, ue_of, verdict, settled.history, info)?;
     Ok(Outcome {
         u: Field::Global(u),
         log: system.log().to_vec(),
@@ -328,14 +356,23 @@ pub(crate) fn finite_statistics(info: &SolveInfo) -> Result<()> {
     })
 }
 
-/// Pressures, contact length and penetration of the settled set.
+/// Pressures, contact length and penetration of the settled set (flags over
+/// parts, with its friction load factors), and its frictional state.
 pub(crate) fn contact_outcome(
     set: &ContactSet<'_>,
     ue_of: impl Fn(&[usize; 3]) -> [f64; 6],
-    active: Vec<bool>,
+    (mut active, friction): (Vec<bool>, &[f64]),
     history: Vec<report::IterationRecord>,
     info: SolveInfo,
 ) -> Result<ContactOutcome> {
+    let elements = set.elements();
+    let friction = set.friction_outcome(&active, friction, |k| ue_of(&elements[k].nodes));
+    if let Some(f) = &friction {
+        let name = |k: usize| format!("contact element {}", k + set.nodes().base);
+        ensure_finite(f.shear.iter().copied(), 1, "shear traction", name)?;
+        ensure_finite(f.dissipation.iter().copied(), 1, "slip dissipation", name)?;
+    }
+    active.truncate(set.len());
     let mut pressure = vec![0.0; set.len()];
     let (mut lc, mut max_pen) = (0.0, 0.0f64);
     for (k, el) in set.elements().iter().enumerate() {
@@ -368,6 +405,7 @@ pub(crate) fn contact_outcome(
         active,
         pressure,
         laws: set.laws().to_vec(),
+        friction,
         report,
     })
 }

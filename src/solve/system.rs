@@ -23,6 +23,9 @@ pub(crate) struct AssembledSystem {
     /// one list per update, in order: replaying it onto the bodies' part
     /// rebuilds the system to the last bit.
     log: Vec<Vec<usize>>,
+    /// The friction load factors c the right-hand side holds (empty: none;
+    /// docs/method.md §6.15).
+    friction: Vec<f64>,
 }
 
 impl AssembledSystem {
@@ -39,6 +42,7 @@ impl AssembledSystem {
             rhs: Vec::new(),
             contact: Vec::new(),
             log: Vec::new(),
+            friction: Vec::new(),
         }
     }
 
@@ -74,6 +78,7 @@ impl AssembledSystem {
         self.rhs = vec![0.0; target.dofs.n_free()];
         self.contact = vec![false; n_contact];
         self.log.clear();
+        self.friction.clear();
         let (values, rhs) = (&mut self.values, &mut self.rhs);
         body::assemble(elements, target, f_ext, prescribed, values, rhs)
     }
@@ -89,10 +94,24 @@ impl AssembledSystem {
         structure: (&DofMap, &Pattern),
         prescribed: &[f64],
     ) {
-        let changed: Vec<usize> = (0..set.len())
+        // A frictional set has a stick part per element besides its
+        // normal part.
+        if self.contact.len() < set.parts() {
+            self.contact.resize(set.parts(), false);
+        }
+        let changed: Vec<usize> = (0..set.parts())
             .filter(|&k| active[k] != self.contact[k])
             .collect();
         self.toggle(changed, set, structure, prescribed);
+    }
+
+    /// Makes the right-hand side hold the friction loads of the load
+    /// factors `c` (docs/method.md §6.15) in place of those it held.
+    pub fn set_friction_loads(&mut self, set: &ContactSet<'_>, c: &[f64]) {
+        let rhs = &mut self.rhs;
+        set.add_friction_loads(c, &self.friction, |i, v| rhs[i] += v);
+        self.friction.clear();
+        self.friction.extend_from_slice(c);
     }
 
     /// The contact elements switched since the bodies' part was assembled
@@ -129,7 +148,7 @@ impl AssembledSystem {
         for &k in &ks {
             let sign = if self.contact[k] { -1.0 } else { 1.0 };
             let cs = set.stiffness(k);
-            let nodes = &set.elements()[k].nodes;
+            let nodes = &set.elements()[set.element_of(k)].nodes;
             let ke = cs.k.map(|v| sign * v);
             let f0 = cs.f0.map(|v| sign * v);
             self.scatter(dofs, pattern, nodes, &ke, &f0, prescribed);

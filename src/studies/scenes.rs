@@ -60,6 +60,8 @@ pub struct TwoBlocks {
     pub support: bool,
     /// Plane mode of both bodies.
     pub plane: PlaneMode,
+    /// Coulomb's friction coefficient μ of the interface (0: frictionless).
+    pub mu: f64,
 }
 
 impl Default for TwoBlocks {
@@ -80,6 +82,7 @@ impl Default for TwoBlocks {
             symmetry: true,
             support: true,
             plane: PlaneMode::Strain,
+            mu: 0.0,
         }
     }
 }
@@ -111,6 +114,13 @@ pub struct TwoBlocksResult {
     pub compliance: f64,
     /// Sum of the support reactions (vertical).
     pub support_reaction: f64,
+    /// Length of the interface in contact that sticks (reference
+    /// configuration; 0 when frictionless).
+    pub stick_length: f64,
+    /// u_x of Ω2 minus u_x of Ω1 at (0, 0).
+    pub slip_edge: f64,
+    /// Largest shear traction |τ| on the interface (0 when frictionless).
+    pub max_shear: f64,
     /// The contact report.
     pub report: ContactReport,
 }
@@ -202,7 +212,8 @@ impl TwoBlocks {
             model.fix_edges(TAG_SUPPORT, Component::Y, 0.0)?;
         }
         model.add_pressure(TAG_LOAD, self.p)?;
-        model.add_contact_pair(TAG_CONTACT_LOWER, TAG_CONTACT_UPPER)?;
+        let pair = model.add_contact_pair(TAG_CONTACT_LOWER, TAG_CONTACT_UPPER)?;
+        model.set_friction(pair, self.mu)?;
         Ok(TwoBlocksScene {
             model,
             corner_lower,
@@ -230,12 +241,25 @@ impl TwoBlocksScene {
             .filter(|(g, _)| g % 2 == 1)
             .map(|(g, _)| r[g / 2][1])
             .sum();
+        let state = self.model.contact_friction_state()?;
+        let b = self.model.contact_mesh()?;
+        // Half of each element's edge: two elements of B face each edge
+        // pair, as in ℓc.
+        let stick_length = b
+            .iter()
+            .zip(&state)
+            .filter(|(_, s)| **s == 1)
+            .fold(0.0, |l, (e, _)| l + 0.5 * e.edge_length);
+        let shear = self.model.contact_shear()?;
         Ok(TwoBlocksResult {
             lc: report.contact_length,
             gap_edge: u[self.corner_upper][1] - u[self.corner_lower][1],
             v_top: u[self.top_center][1],
             compliance: self.model.external_work()?,
             support_reaction,
+            stick_length,
+            slip_edge: u[self.corner_upper][0] - u[self.corner_lower][0],
+            max_shear: shear.iter().fold(0.0, |m: f64, t| m.max(t.abs())),
             report,
         })
     }

@@ -52,12 +52,16 @@
 //! (μp − |q| = μp₀(c/a)√(1 − x²/c²) inside c), from the last two stick nodes
 //! counted from the centre; each on both sides, averaged.
 
+use crate::contact::ContactOptions;
 use crate::error::{Error, Result};
 use crate::fem::element::Tempering;
 use crate::fem::material::{Material, PlaneMode};
 use crate::model::{Component, Model};
+use crate::solve::report::ContactReport;
 use crate::studies::meshgen::{Diagonal, MeshBuilder, graded};
-use crate::studies::oracle::frictional::{FrictionalOracle, FrictionalStep, LoadCase, PairState};
+use crate::studies::oracle::frictional::{
+    FrictionalOracle, FrictionalStep, LoadCase, PairResult, PairState,
+};
 
 /// Tag of the block's supported (clamped) bottom.
 pub const TAG_SUPPORT: i32 = 1;
@@ -641,6 +645,189 @@ impl CattaneoScene {
             misclassified,
             seconds: t0.elapsed().as_secs_f64(),
             step,
+        })
+    }
+}
+
+/// The scene solved by TFEM's frictional contact elements (docs/method.md
+/// §6.15) instead of the oracle: load steps of the model itself, the
+/// platen moved by [`Model::set_prescribed`], secant iterations on whole
+/// steps (each trial reverted), measured like the oracle's steps from the
+/// nodal contact forces of each block/cylinder node pair.
+pub struct TfemCattaneo {
+    /// The normal step, then one per ratio.
+    pub steps: Vec<CattaneoStep>,
+    /// Total active-set iterations of the accepted steps.
+    pub iterations: usize,
+    /// Factorisations over the whole run (trials included).
+    pub factorisations: usize,
+    /// Least slip dissipation of any element in any accepted step (≥ 0).
+    pub min_dissipation: f64,
+    /// Wall time of the whole run (trials included).
+    pub seconds: f64,
+}
+
+impl CattaneoScene {
+    /// Node pairs (block top node, cylinder node) at equal x, with their x
+    /// and tributary length, sorted by x.
+    fn node_pairs(&self) -> Result<Vec<(usize, usize, f64, f64)>> {
+        let mesh = self
+            .model
+            .mesh()
+            .ok_or_else(|| Error::state("cattaneo: no mesh"))?;
+        let x = mesh.nodes();
+        let side = |tag: i32| {
+            let mut v: Vec<usize> = mesh
+                .boundary_edges()
+                .iter()
+                .filter(|e| e.tag == tag)
+                .flat_map(|e| e.nodes)
+                .collect();
+            v.sort_by(|&a, &b| x[a][0].total_cmp(&x[b][0]));
+            v.dedup();
+            v
+        };
+        let (lower, upper) = (side(TAG_BLOCK_TOP), side(TAG_CYLINDER));
+        let mut pairs = Vec::new();
+        for (i, &l) in lower.iter().enumerate() {
+            let Some(&u) = upper.iter().find(|&&u| x[u][0] == x[l][0]) else {
+                continue;
+            };
+            let left = if i > 0 { x[lower[i - 1]][0] } else { x[l][0] };
+            let right = lower.get(i + 1).map_or(x[l][0], |&r| x[r][0]);
+            pairs.push((l, u, x[l][0], 0.5 * (right - left)));
+        }
+        Ok(pairs)
+    }
+
+    /// The TFEM step at platen displacement (δₜ, −δₙ), as the oracle's
+    /// step type; `mu` classifies the pairs (slip: |λₜ| = μλₙ to 1e-9).
+    fn tfem_step(&mut self, platen: [f64; 2], mu: f64) -> Result<(FrictionalStep, ContactReport)> {
+        let t0 = std::time::Instant::now();
+        for &v in &self.platen {
+            self.model.set_prescribed(v, Component::X, platen[0])?;
+            self.model.set_prescribed(v, Component::Y, platen[1])?;
+        }
+        let report = self.model.step(1.0, &ContactOptions::default())?;
+        let f = self.model.contact_forces()?;
+        let u: Vec<f64> = self
+            .model
+            .displacements()?
+            .iter()
+            .flat_map(|d| *d)
+            .collect();
+        let pairs = self
+            .node_pairs()?
+            .into_iter()
+            .map(|(lower, upper, x, length)| {
+                let [ft, fnorm] = f[upper];
+                let state = if fnorm <= 0.0 {
+                    PairState::Open
+                } else if ft.abs() >= mu * fnorm * (1.0 - 1e-9) {
+                    PairState::Slip
+                } else {
+                    PairState::Stick
+                };
+                PairResult {
+                    lower,
+                    upper,
+                    x,
+                    length,
+                    state,
+                    normal_force: fnorm.max(0.0),
+                    tangential_force: ft,
+                    normal: fnorm.max(0.0) / length,
+                    tangential: ft / length,
+                    gap: 0.0,
+                    jump: u[2 * upper] - u[2 * lower],
+                    slip_increment: f64::NAN,
+                }
+            })
+            .collect();
+        let step = FrictionalStep {
+            u,
+            reactions: Vec::new(),
+            pairs,
+            iterations: report.iterations,
+            seconds: t0.elapsed().as_secs_f64(),
+        };
+        Ok((step, report))
+    }
+
+    /// Solves the scene with TFEM's frictional elements (μ = `cm.mu` on the
+    /// pair): the normal step to the load P of the target a, then one
+    /// tangential step per ratio Q/(μP), each found by secant iterations
+    /// on a step that is reverted until it hits its target (to 1e-9).
+    pub fn solve_tfem(&mut self, cm: &CattaneoMindlin, ratios: &[f64]) -> Result<TfemCattaneo> {
+        let t_start = std::time::Instant::now();
+        self.model.set_friction(0, cm.mu)?;
+        let tol = 1e-9;
+        let target = self.load;
+        let (mut factorisations, mut iterations) = (0, 0);
+        let mut min_dissipation = f64::INFINITY;
+        let mut steps = Vec::new();
+        // Secant on one step's residual; the last trial is kept.
+        let mut secant = |scene: &mut CattaneoScene,
+                          platen: &dyn Fn(f64) -> [f64; 2],
+                          residual: &dyn Fn(&FrictionalStep) -> f64,
+                          (x0, y0, guess): (f64, f64, f64),
+                          scale: f64|
+         -> Result<(f64, FrictionalStep, usize)> {
+            let mut pts = vec![(x0, y0)];
+            let mut x = guess;
+            for trial in 1..=40 {
+                let (s, report) = scene.tfem_step(platen(x), cm.mu)?;
+                factorisations += report.info.factorizations;
+                let y = residual(&s);
+                if y.abs() <= tol * scale {
+                    iterations += report.iterations;
+                    let d = scene.model.contact_dissipation()?;
+                    min_dissipation = d.iter().fold(min_dissipation, |m, &v| m.min(v));
+                    return Ok((x, s, trial));
+                }
+                scene.model.revert_step()?;
+                pts.push((x, y));
+                let ((xa, ya), (xb, yb)) = (pts[pts.len() - 2], pts[pts.len() - 1]);
+                x = xb - yb * (xb - xa) / (yb - ya);
+            }
+            Err(Error::new(
+                crate::error::Status::NotConverged,
+                "cattaneo (TFEM): a load target was not reached",
+            ))
+        };
+        let t0 = std::time::Instant::now();
+        let p_of = |s: &FrictionalStep| s.contact_resultant()[0] - target;
+        let d0 = target / cm.e_star();
+        let (dn, normal, trials) =
+            secant(self, &|dn| [0.0, -dn], &p_of, (0.0, -target, d0), target)?;
+        steps.push(self.measure(cm, normal, [0.0, -dn], 0.0, trials, t0)?);
+        let mut slope = cm.e_star();
+        for &ratio in ratios {
+            let t0 = std::time::Instant::now();
+            let prev = steps.last().expect("the normal step");
+            let dt_prev = prev.platen[0];
+            let residual = |s: &FrictionalStep| {
+                let [p, lt] = s.contact_resultant();
+                -lt - ratio * cm.mu * p
+            };
+            let y_prev = residual(&prev.step);
+            let guess = dt_prev - y_prev / slope;
+            let (dt, step, trials) = secant(
+                self,
+                &|dt| [dt, -dn],
+                &residual,
+                (dt_prev, y_prev, guess),
+                cm.mu * target,
+            )?;
+            slope = -y_prev / (dt - dt_prev);
+            steps.push(self.measure(cm, step, [dt, -dn], ratio, trials, t0)?);
+        }
+        Ok(TfemCattaneo {
+            steps,
+            iterations,
+            factorisations,
+            min_dissipation,
+            seconds: t_start.elapsed().as_secs_f64(),
         })
     }
 }
