@@ -78,6 +78,17 @@ program fortran_api_test
   call expect(maxval(abs(ku - f(dofs))) < 1e-12_dp, 'K u = f through the matrix')
   status = tfem_get_displacements(m, u, 11_c_size_t)
   call expect(status == TFEM_STATUS_BUFFER_TOO_SMALL, 'short buffer')
+  ! Friction and moved prescribed values: pairs are 0-based, nodes 1-based.
+  status = tfem_set_friction(m, 0_c_int, 0.3_dp)
+  call expect(status == TFEM_STATUS_INVALID_ARGUMENT .and. index(tfem_error_message(m), 'pair 0') > 0, &
+      'friction of a pair that does not exist')
+  status = tfem_set_prescribed(m, 3_c_int, TFEM_COMPONENT_Y, 1._dp)
+  call expect(status == TFEM_STATUS_INVALID_ARGUMENT .and. index(tfem_error_message(m), 'node 3') > 0, &
+      'moving a value that is not prescribed, named 1-based')
+  call expect(tfem_set_prescribed(m, 1_c_int, TFEM_COMPONENT_Y, 1e-3_dp) == TFEM_STATUS_OK, 'move a prescribed value')
+  call expect(tfem_solve(m, info) == TFEM_STATUS_OK, 'solve after the move')
+  call expect(tfem_get_displacements(m, u, int(size(u), c_size_t)) == TFEM_STATUS_OK, 'moved displacements')
+  call expect(abs(u(2) - 1e-3_dp) < 1e-15_dp, 'the moved value holds')
   call tfem_destroy(m)
 
   write (*, '(a, i0, a, i0, a)') 'fortran_api_test: ', passed, ' passed, ', failed, ' failed'

@@ -1168,7 +1168,7 @@ module tfem
   interface
     !> Sets Coulomb's friction coefficient μ ≥ 0 of contact pair `pair` (0-based, from
     !! `tfem_add_contact_pair`): stick while the shear stays within μ times the pressure, slip
-    !! against the slip of the step beyond (docs/method.md §6.14). 0, the default, is frictionless,
+    !! against the slip of the step beyond (docs/method.md §6.15). 0, the default, is frictionless,
     !! bit for bit. A negative or non-finite μ, or an unknown pair, is refused
     !! (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load history.
     function tfem_set_friction(model, pair, mu) &
