@@ -6,6 +6,7 @@
 
 pub mod cattaneo;
 pub mod hertz;
+pub mod lame;
 pub mod patch;
 
 use super::meshgen::{Diagonal, MeshBuilder, subdivide, subdivide_symmetric};
