@@ -6,7 +6,9 @@
 
 pub mod cattaneo;
 pub mod hertz;
+pub mod lame;
 pub mod patch;
+pub mod punch;
 
 use super::meshgen::{Diagonal, MeshBuilder, subdivide, subdivide_symmetric};
 use crate::contact::ContactOptions;
