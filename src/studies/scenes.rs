@@ -7,6 +7,9 @@
 pub mod cattaneo;
 pub mod hertz;
 pub mod patch;
+pub mod ring;
+pub mod stack;
+pub mod wall;
 
 use super::meshgen::{Diagonal, MeshBuilder, subdivide, subdivide_symmetric};
 use crate::contact::ContactOptions;
