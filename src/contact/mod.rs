@@ -20,6 +20,7 @@
 pub mod host;
 pub mod law;
 pub mod mesh;
+pub mod pairing;
 pub mod set;
 pub mod traction;
 

@@ -564,3 +564,78 @@ impl Problem {
         ))
     }
 }
+
+/// Automatic contact pairing (docs/method.md §6.16).
+impl Problem {
+    /// Declares a contact pair for every two tags of different bodies
+    /// whose boundary edges face each other within `tolerance`, a distance
+    /// in model units (some edge of the one within `tolerance` of some edge
+    /// of the other, normals opposed, overlapping along the interface: see
+    /// [`contact::pairing`]). `tags`: the tags to consider (each must name
+    /// boundary edges of one body, else an error naming it), or `None` for
+    /// every tag that can be a contact side. Pairs already declared (either
+    /// way round) are skipped; tags of one body never pair. Returns the
+    /// indices of the pairs added, in increasing (tag_a, tag_b) order with
+    /// tag_a < tag_b: empty when nothing faces within the tolerance. All
+    /// or nothing: if the contact mesh of one pair cannot be built, the
+    /// error names it and no pair is added.
+    pub fn add_contact_pairs_auto(
+        &mut self,
+        tags: Option<&[i32]>,
+        tolerance: f64,
+    ) -> Result<Vec<usize>> {
+        let mesh = self.mesh_ref()?;
+        let found = contact::pairing::facing_pairs(mesh, tags, tolerance)?;
+        let mut new = Vec::new();
+        for f in found {
+            let declared = self.pairs.iter().chain(&new).any(|p: &ContactPair| {
+                (p.tag_a, p.tag_b) == (f.tag_a, f.tag_b) || (p.tag_a, p.tag_b) == (f.tag_b, f.tag_a)
+            });
+            if declared {
+                continue;
+            }
+            // Built now so that a bad interface is reported by this call.
+            contact::build(mesh, self.pairs.len() + new.len(), f.tag_a, f.tag_b).map_err(|e| {
+                Error::contact(format!(
+                    "automatic pairing: tags {} (body {}) and {} (body {}) face each other \
+                     within {:e}, but their contact mesh cannot be built: {}",
+                    f.tag_a,
+                    f.body_a,
+                    f.tag_b,
+                    f.body_b,
+                    f.distance,
+                    e.message()
+                ))
+            })?;
+            new.push(ContactPair {
+                tag_a: f.tag_a,
+                tag_b: f.tag_b,
+                body_a: f.body_a,
+                body_b: f.body_b,
+                user_mesh: None,
+            });
+        }
+        let first = self.pairs.len();
+        if !new.is_empty() {
+            self.pairs.append(&mut new);
+            self.changed(true);
+        }
+        Ok((first..self.pairs.len()).collect())
+    }
+}
+
+/// Automatic contact pairing on the model (docs/method.md §6.16).
+impl super::Model {
+    /// [`Problem::add_contact_pairs_auto`]: declares a contact pair for
+    /// every two tags of different bodies facing each other within
+    /// `tolerance` (model units) and returns the indices of the pairs
+    /// added (empty when none faces within the tolerance). On error
+    /// nothing changes.
+    pub fn add_contact_pairs_auto(
+        &mut self,
+        tags: Option<&[i32]>,
+        tolerance: f64,
+    ) -> Result<Vec<usize>> {
+        self.edit(|p| p.add_contact_pairs_auto(tags, tolerance))
+    }
+}

@@ -9,6 +9,9 @@ pub mod hertz;
 pub mod lame;
 pub mod patch;
 pub mod punch;
+pub mod ring;
+pub mod stack;
+pub mod wall;
 
 use super::meshgen::{Diagonal, MeshBuilder, subdivide, subdivide_symmetric};
 use crate::contact::ContactOptions;

@@ -1,0 +1,303 @@
+//! Automatic contact pairing: which tagged boundaries of different bodies
+//! face each other (docs/method.md §6.16).
+//!
+//! Two tags *face each other within a tolerance* δ (a distance in model
+//! units, δ ≥ 0) when some boundary edge e of the one and some boundary
+//! edge f of the other, bounding different bodies,
+//!
+//! * are at most δ apart: the shortest Euclidean distance between the two
+//!   segments (0 when they touch or cross) is ≤ δ;
+//! * have opposed outward normals: n_e · n_f ≤ −cos 30° (the two faces are
+//!   parallel to within 30° and turned towards each other, so two faces of
+//!   stacked blocks that only share a corner — side by side, normals
+//!   parallel, or at a right angle — never pair);
+//! * overlap along the interface: f projected on the line of e covers a
+//!   part of e of positive length (more than 1e-9 of the shorter edge), so
+//!   faces that meet at a single corner point do not pair.
+//!
+//! A tag is a candidate side only if all its edges are boundary edges of one
+//! body (a contact side must be: [`super::mesh::Side`]). Edges of the same
+//! body never pair (self-contact is not supported), whatever their
+//! distance. The tolerance should stay below the thickness of the bodies:
+//! a δ larger than a body's thickness pairs faces across it.
+//!
+//! The search bins the edges in a uniform grid (cells of the larger of δ
+//! and the mean edge length), so its cost is linear in the number of
+//! candidate edges for meshes of bounded grading.
+
+use std::collections::{BTreeMap, HashMap};
+
+use crate::error::{Error, Result};
+use crate::fem::mesh::Mesh;
+
+/// The largest angle between the turned-around outward normals of two edges
+/// that face each other: 30°, as cos 30°.
+pub const FACING_COSINE: f64 = 0.866_025_403_784_438_6;
+
+/// Smallest overlap along the interface, relative to the shorter edge, for
+/// two edges to face each other (above round-off, so that a shared corner
+/// does not count).
+pub const MIN_OVERLAP: f64 = 1e-9;
+
+/// Two tags found facing each other.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FacingPair {
+    /// The smaller of the two tags.
+    pub tag_a: i32,
+    /// The larger of the two tags.
+    pub tag_b: i32,
+    /// The body `tag_a` bounds.
+    pub body_a: i32,
+    /// The body `tag_b` bounds.
+    pub body_b: i32,
+    /// The smallest distance between two facing edges of the two tags.
+    pub distance: f64,
+}
+
+/// One candidate edge.
+struct Edge {
+    p: [f64; 2],
+    q: [f64; 2],
+    normal: [f64; 2],
+    body: i32,
+    tag: i32,
+}
+
+/// Checks a pairing tolerance: finite and ≥ 0.
+pub fn check_tolerance(tolerance: f64) -> Result<()> {
+    if tolerance.is_finite() && tolerance >= 0.0 {
+        Ok(())
+    } else {
+        Err(Error::argument(format!(
+            "contact pairing tolerance {tolerance:?} must be a finite distance >= 0"
+        )))
+    }
+}
+
+/// The edges of the candidate tags. With `tags` given, each must name
+/// boundary edges of one body (else an error naming it); with `None`, the
+/// tags that cannot be a contact side (interior edges, several bodies) are
+/// left out.
+fn candidate_edges(mesh: &Mesh, tags: Option<&[i32]>) -> Result<Vec<Edge>> {
+    let wanted: Option<Vec<i32>> = tags.map(|t| {
+        let mut t = t.to_vec();
+        t.sort_unstable();
+        t.dedup();
+        t
+    });
+    let base = mesh.index_base();
+    // Per tag: its edges, or why it cannot be a side.
+    let mut by_tag: BTreeMap<i32, std::result::Result<Vec<Edge>, String>> = BTreeMap::new();
+    for (k, e) in mesh.boundary_edges().iter().enumerate() {
+        if wanted
+            .as_ref()
+            .is_some_and(|w| w.binary_search(&e.tag).is_err())
+        {
+            continue;
+        }
+        let entry = by_tag.entry(e.tag).or_insert_with(|| Ok(Vec::new()));
+        let Ok(list) = entry else { continue };
+        let owner = e.owner.map(|(t, _)| t);
+        let normal = mesh.outward_normal(e);
+        let (Some(t), Some(normal)) = (owner, normal) else {
+            *entry = Err(format!(
+                "boundary edge {} (tag {}) is interior to the mesh or of zero length: \
+                 it cannot bound a contact interface",
+                k + base,
+                e.tag
+            ));
+            continue;
+        };
+        let body = mesh.body_of()[t];
+        if let Some(first) = list.first().filter(|f| f.body != body) {
+            *entry = Err(format!(
+                "tag {} spans bodies {} and {body}: each side of a pair must lie on one body",
+                e.tag, first.body
+            ));
+            continue;
+        }
+        let [p, q] = e.nodes;
+        list.push(Edge {
+            p: mesh.nodes()[p],
+            q: mesh.nodes()[q],
+            normal,
+            body,
+            tag: e.tag,
+        });
+    }
+    if let Some(w) = &wanted {
+        if let Some(t) = w.iter().find(|t| !by_tag.contains_key(t)) {
+            return Err(Error::argument(format!(
+                "contact pairing: no boundary edge has tag {t}"
+            )));
+        }
+    }
+    let mut out = Vec::new();
+    for (tag, edges) in by_tag {
+        match edges {
+            Ok(mut e) => out.append(&mut e),
+            Err(why) if wanted.is_some() => {
+                return Err(Error::contact(format!(
+                    "contact pairing: tag {tag} cannot be a contact side: {why}"
+                )));
+            }
+            Err(_) => {}
+        }
+    }
+    Ok(out)
+}
+
+fn sub(a: [f64; 2], b: [f64; 2]) -> [f64; 2] {
+    [a[0] - b[0], a[1] - b[1]]
+}
+
+fn dot(a: [f64; 2], b: [f64; 2]) -> f64 {
+    a[0] * b[0] + a[1] * b[1]
+}
+
+fn cross(a: [f64; 2], b: [f64; 2]) -> f64 {
+    a[0] * b[1] - a[1] * b[0]
+}
+
+/// Distance from point `x` to segment [p, q].
+fn point_segment(x: [f64; 2], p: [f64; 2], q: [f64; 2]) -> f64 {
+    let d = sub(q, p);
+    let len2 = dot(d, d);
+    let t = if len2 > 0.0 {
+        (dot(sub(x, p), d) / len2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let c = [p[0] + t * d[0], p[1] + t * d[1]];
+    (x[0] - c[0]).hypot(x[1] - c[1])
+}
+
+/// Shortest distance between segments [a, b] and [c, d]: zero when they
+/// cross, else the least of the four point-to-segment distances.
+pub fn segment_distance(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> f64 {
+    let (ab, cd) = (sub(b, a), sub(d, c));
+    let (s1, s2) = (cross(ab, sub(c, a)), cross(ab, sub(d, a)));
+    let (s3, s4) = (cross(cd, sub(a, c)), cross(cd, sub(b, c)));
+    if s1 * s2 < 0.0 && s3 * s4 < 0.0 {
+        return 0.0;
+    }
+    point_segment(a, c, d)
+        .min(point_segment(b, c, d))
+        .min(point_segment(c, a, b))
+        .min(point_segment(d, a, b))
+}
+
+/// Whether two edges face each other (normals opposed, positive overlap
+/// along the first): the distance is checked apart.
+fn facing(e: &Edge, f: &Edge) -> bool {
+    if dot(e.normal, f.normal) > -FACING_COSINE {
+        return false;
+    }
+    let d = sub(e.q, e.p);
+    let len_e = dot(d, d).sqrt();
+    let len_f = sub(f.q, f.p)[0].hypot(sub(f.q, f.p)[1]);
+    // Abscissas of f's ends along e, from e.p.
+    let (t0, t1) = (dot(sub(f.p, e.p), d) / len_e, dot(sub(f.q, e.p), d) / len_e);
+    let overlap = t0.max(t1).min(len_e) - t0.min(t1).max(0.0);
+    overlap > MIN_OVERLAP * len_e.min(len_f)
+}
+
+/// The pairs of tags of different bodies whose boundary edges face each
+/// other within `tolerance` (see the module documentation for how it is
+/// measured), sorted by (tag_a, tag_b) with tag_a < tag_b. `tags`: the tags
+/// to consider (each must name boundary edges of one body, else an error
+/// naming it), or `None` for every tag that can be a contact side. An
+/// empty result means no two tags face each other within the tolerance.
+pub fn facing_pairs(mesh: &Mesh, tags: Option<&[i32]>, tolerance: f64) -> Result<Vec<FacingPair>> {
+    check_tolerance(tolerance)?;
+    let edges = candidate_edges(mesh, tags)?;
+    if edges.len() < 2 {
+        return Ok(Vec::new());
+    }
+    // A uniform grid of cells of the larger of δ and the mean edge length,
+    // coarsened if it would hold many more cells than edges.
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    let mut total = 0.0;
+    for e in &edges {
+        for k in 0..2 {
+            lo[k] = lo[k].min(e.p[k]).min(e.q[k]);
+            hi[k] = hi[k].max(e.p[k]).max(e.q[k]);
+        }
+        total += sub(e.q, e.p)[0].hypot(sub(e.q, e.p)[1]);
+    }
+    let extent = (hi[0] - lo[0]).max(hi[1] - lo[1]);
+    let mut cell = (total / edges.len() as f64).max(tolerance);
+    let cap = (4 * edges.len()) as f64;
+    if (extent / cell).powi(2) > cap {
+        cell = extent / cap.sqrt();
+    }
+    let index = |x: f64, k: usize| -> i64 { ((x - lo[k]) / cell).floor() as i64 };
+    let cells_of = |e: &Edge, grow: f64| {
+        let (x0, x1) = (e.p[0].min(e.q[0]) - grow, e.p[0].max(e.q[0]) + grow);
+        let (y0, y1) = (e.p[1].min(e.q[1]) - grow, e.p[1].max(e.q[1]) + grow);
+        (index(x0, 0)..=index(x1, 0))
+            .flat_map(move |i| (index(y0, 1)..=index(y1, 1)).map(move |j| (i, j)))
+    };
+    let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
+    for (k, e) in edges.iter().enumerate() {
+        for c in cells_of(e, 0.0) {
+            grid.entry(c).or_default().push(k);
+        }
+    }
+    let mut seen = vec![usize::MAX; edges.len()];
+    let mut found: BTreeMap<(i32, i32), FacingPair> = BTreeMap::new();
+    for (k, e) in edges.iter().enumerate() {
+        for c in cells_of(e, tolerance) {
+            let Some(list) = grid.get(&c) else { continue };
+            for &m in list {
+                if m <= k || seen[m] == k {
+                    continue;
+                }
+                seen[m] = k;
+                let f = &edges[m];
+                if f.body == e.body || !facing(e, f) {
+                    continue;
+                }
+                let distance = segment_distance(e.p, e.q, f.p, f.q);
+                if distance > tolerance {
+                    continue;
+                }
+                let (a, b) = if e.tag < f.tag { (e, f) } else { (f, e) };
+                let entry = found.entry((a.tag, b.tag)).or_insert(FacingPair {
+                    tag_a: a.tag,
+                    tag_b: b.tag,
+                    body_a: a.body,
+                    body_b: b.body,
+                    distance,
+                });
+                entry.distance = entry.distance.min(distance);
+            }
+        }
+    }
+    Ok(found.into_values().collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn crossing_segments_are_at_distance_zero() {
+        let d = segment_distance([0.0, 0.0], [1.0, 1.0], [0.0, 1.0], [1.0, 0.0]);
+        assert_eq!(d, 0.0);
+    }
+
+    #[test]
+    fn parallel_segments_are_at_their_offset() {
+        let d = segment_distance([0.0, 0.0], [1.0, 0.0], [0.5, 0.25], [2.0, 0.25]);
+        assert!((d - 0.25).abs() < 1e-15);
+    }
+
+    #[test]
+    fn a_negative_or_nan_tolerance_is_refused_by_name() {
+        for t in [-1.0, f64::NAN, f64::INFINITY] {
+            let e = check_tolerance(t).unwrap_err();
+            assert!(e.message().contains("tolerance"), "{}", e.message());
+        }
+    }
+}
