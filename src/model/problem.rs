@@ -613,6 +613,7 @@ impl Problem {
                 body_a: f.body_a,
                 body_b: f.body_b,
                 user_mesh: None,
+                friction: 0.0,
             });
         }
         let first = self.pairs.len();
