@@ -102,7 +102,9 @@ fn main() -> Result<()> {
         );
     }
 
-    println!("\n## One step against 4 and 10 proportional steps, and a load–unload path (h = 1/64)\n");
+    println!(
+        "\n## One step against 4 and 10 proportional steps, and a load–unload path (h = 1/64)\n"
+    );
     println!("| 2C/L | μ | path | gap_edge | slip_edge | stick_length | factorisations |");
     println!("|---|---|---|---|---|---|---|");
     for (c, mu) in [(0.2, 0.1), (0.2, 0.3), (0.2, 1.0), (0.1, 0.3)] {
@@ -137,7 +139,9 @@ fn main() -> Result<()> {
     }
 
     println!("\n## TFEM against the frictional oracle on the same mesh (2C/L = 0.4)\n");
-    println!("| μ | h | slip_edge TFEM | slip_edge oracle | rel. diff | gap_edge rel. diff | oracle stick/slip pairs |");
+    println!(
+        "| μ | h | slip_edge TFEM | slip_edge oracle | rel. diff | gap_edge rel. diff | oracle stick/slip pairs |"
+    );
     println!("|---|---|---|---|---|---|---|");
     for mu in [0.1, 0.3, 1.0] {
         for h in [1.0 / 16.0, 1.0 / 32.0, 1.0 / 64.0] {
@@ -160,7 +164,9 @@ fn main() -> Result<()> {
     }
 
     println!("\n## Cost: 100 proportional steps against one solve (2C/L = 0.4)\n");
-    println!("| μ | h | unknowns | one solve [s] | 100 steps [s] | ratio | factorisations | iterations (one solve) |");
+    println!(
+        "| μ | h | unknowns | one solve [s] | 100 steps [s] | ratio | factorisations | iterations (one solve) |"
+    );
     println!("|---|---|---|---|---|---|---|---|");
     for &h in &cost_h {
         for mu in [0.0, 0.3] {
