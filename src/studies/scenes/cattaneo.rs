@@ -654,6 +654,10 @@ impl CattaneoScene {
 /// platen moved by [`Model::set_prescribed`], secant iterations on whole
 /// steps (each trial reverted), measured like the oracle's steps from the
 /// nodal contact forces of each block/cylinder node pair.
+///
+/// Not converging yet: the normal step closes a curved gap with friction,
+/// and the active-set loop cycles between stick and slip at the edge of
+/// contact (NOT_CONVERGED at a/8 and a/16 with the default cap; §6.15).
 pub struct TfemCattaneo {
     /// The normal step, then one per ratio.
     pub steps: Vec<CattaneoStep>,
