@@ -790,13 +790,7 @@ pub unsafe extern "C" fn tfem_get_contact_active(
     length: usize,
 ) -> Status {
     with_model(model, |m| {
-        let v: Vec<c_int> = m
-            .model
-            .contact_active()?
-            .iter()
-            .map(|&a| c_int::from(a))
-            .collect();
-        copy_out(&v, out, length, "out")
+        map_out(m.model.contact_active()?, out, length, "out", c_int::from)
     })
 }
 
@@ -1187,13 +1181,8 @@ pub unsafe extern "C" fn tfem_get_contact_friction_state(
     length: usize,
 ) -> Status {
     with_model(model, |m| {
-        let v: Vec<c_int> = m
-            .model
-            .contact_friction_state()?
-            .iter()
-            .map(|&s| c_int::from(s))
-            .collect();
-        copy_out(&v, out, length, "out")
+        let state = m.model.contact_friction_state()?;
+        map_out(&state, out, length, "out", c_int::from)
     })
 }
 
