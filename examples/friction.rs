@@ -184,15 +184,23 @@ fn main() -> Result<()> {
     println!("|---|---|---|---|---|---|---|---|");
     for &h in &cost_h {
         for mu in [0.0, 0.3] {
-            let (r1, t1, _) = run(scene(0.2, h, mu), 1)?;
-            let (_, t100, f) = run(scene(0.2, h, mu), 100)?;
-            println!(
-                "| {mu} | 1/{:.0} | {} | {t1:.3} | {t100:.3} | {:.2}× | {f} | {} |",
-                1.0 / h,
-                r1.report.info.unknowns,
-                t100 / t1,
-                r1.report.iterations
-            );
+            let rows = run(scene(0.2, h, mu), 1)
+                .and_then(|one| run(scene(0.2, h, mu), 100).map(|many| (one, many)));
+            match rows {
+                Ok(((r1, t1, _), (_, t100, f))) => println!(
+                    "| {mu} | 1/{:.0} | {} | {t1:.3} | {t100:.3} | {:.2}× | {f} | {} |",
+                    1.0 / h,
+                    r1.report.info.unknowns,
+                    t100 / t1,
+                    r1.report.iterations
+                ),
+                Err(e) => println!(
+                    "| {mu} | 1/{:.0} | {:?}: {} | | | | | |",
+                    1.0 / h,
+                    e.status(),
+                    e.message().split(';').next().unwrap_or("")
+                ),
+            }
         }
     }
 
