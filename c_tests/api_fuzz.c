@@ -353,6 +353,10 @@ enum {
   F_CONTACT_ELEMENT_EQUATIONS,
   F_CONTACT_ELEMENT_BLOCKS,
   F_CONTACT_LENGTH,
+  /* friction results */
+  F_GET_CONTACT_SHEAR,
+  F_GET_CONTACT_FRICTION_STATE,
+  F_GET_CONTACT_DISSIPATION,
   F_DESTROY_NULL, /* tfem_destroy(NULL) */
   F_RECREATE,     /* tfem_destroy(m); m = tfem_create() */
   NF
@@ -486,6 +490,9 @@ static const fndesc FN[NF] = {
     [F_CONTACT_ELEMENT_EQUATIONS] = {"tfem_contact_element_equations", 2, "", "", "", "l", {R_6CE}, 0},
     [F_CONTACT_ELEMENT_BLOCKS] = {"tfem_contact_element_blocks", 2, "", "", "", "d", {R_36CE}, 0},
     [F_CONTACT_LENGTH] = {"tfem_contact_length", 2, "", "", "", "d", {R_SCALAR}, 1},
+    [F_GET_CONTACT_SHEAR] = {"tfem_get_contact_shear", 1, "", "", "", "d", {R_NC}, 0},
+    [F_GET_CONTACT_FRICTION_STATE] = {"tfem_get_contact_friction_state", 1, "", "", "", "i", {R_NC}, 0},
+    [F_GET_CONTACT_DISSIPATION] = {"tfem_get_contact_dissipation", 1, "", "", "", "d", {R_NC}, 0},
     [F_DESTROY_NULL] = {"tfem_destroy(NULL)", 0, "", "", "", "", {0}, 0},
     [F_RECREATE] = {"tfem_destroy+tfem_create", 0, "", "", "", "", {0}, 0},
 };
@@ -1223,6 +1230,9 @@ static void result_getters(rng_t *r, case_t *cs, int contact) {
     if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_REPORT);
     if (chance(r, 0.6)) add_call(cs, F_GET_CONTACT_FORCES);
     if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_GAPS);
+    if (chance(r, 0.2)) add_call(cs, F_GET_CONTACT_SHEAR);
+    if (chance(r, 0.2)) add_call(cs, F_GET_CONTACT_FRICTION_STATE);
+    if (chance(r, 0.2)) add_call(cs, F_GET_CONTACT_DISSIPATION);
     if (chance(r, 0.25)) add_call(cs, F_GET_CONTACT_MESH_SIZE);
     if (chance(r, 0.25)) add_call(cs, F_GET_CONTACT_MESH);
     if (chance(r, 0.2)) add_call(cs, F_GET_CONTACT_ELEMENT_PAIRS);
@@ -1683,7 +1693,8 @@ static void random_call(rng_t *r, case_t *cs, const ctx_t *cx, double wild, int 
       [F_CONTACT_EVALUATE] = 2, [F_CONTACT_GATHER] = 1, [F_CONTACT_SCATTER_ADD] = 1, [F_CONTACT_UPDATE] = 2,
       [F_CONTACT_RESTART] = 1, [F_CONTACT_GET_ACTIVE] = 1, [F_CONTACT_SET_ACTIVE] = 1, [F_CONTACT_GAPS] = 1,
       [F_CONTACT_PRESSURES] = 1, [F_CONTACT_ELEMENTS] = 1, [F_CONTACT_ELEMENT_EQUATIONS] = 1,
-      [F_CONTACT_ELEMENT_BLOCKS] = 1, [F_CONTACT_LENGTH] = 1};
+      [F_CONTACT_ELEMENT_BLOCKS] = 1, [F_CONTACT_LENGTH] = 1, [F_GET_CONTACT_SHEAR] = 1,
+      [F_GET_CONTACT_FRICTION_STATE] = 1, [F_GET_CONTACT_DISSIPATION] = 1};
   int total = 0;
   for (int f = 0; f < NF; ++f) total += weight[f];
   int x = rint_(r, total), fn = 0;
@@ -3401,6 +3412,9 @@ static void exec_call(runner_t *R, int idx) {
   case F_CONTACT_ELEMENT_EQUATIONS: st = tfem_contact_element_equations(hc, o[0], c->out[0].len); break;
   case F_CONTACT_ELEMENT_BLOCKS: st = tfem_contact_element_blocks(hc, o[0], c->out[0].len); break;
   case F_CONTACT_LENGTH: st = tfem_contact_length(hc, o[0]); break;
+  case F_GET_CONTACT_SHEAR: st = tfem_get_contact_shear(m, o[0], c->out[0].len); break;
+  case F_GET_CONTACT_FRICTION_STATE: st = tfem_get_contact_friction_state(m, o[0], c->out[0].len); break;
+  case F_GET_CONTACT_DISSIPATION: st = tfem_get_contact_dissipation(m, o[0], c->out[0].len); break;
   case F_DESTROY_NULL: tfem_destroy(NULL); break;
   case F_RECREATE:
     tfem_destroy(R->m);
@@ -3747,7 +3761,9 @@ static void exec_call(runner_t *R, int idx) {
                      fn == F_GET_REACTIONS || fn == F_GET_MATRIX_SIZE || fn == F_GET_MATRIX ||
                      fn == F_GET_EXTERNAL_WORK;
   int need_contact = fn == F_GET_CONTACT_ACTIVE || fn == F_GET_CONTACT_PRESSURE || fn == F_GET_CONTACT_ELEMENTS ||
-                     fn == F_GET_CONTACT_REPORT || fn == F_GET_CONTACT_FORCES || fn == F_GET_CONTACT_GAPS;
+                     fn == F_GET_CONTACT_REPORT || fn == F_GET_CONTACT_FORCES || fn == F_GET_CONTACT_GAPS ||
+                     fn == F_GET_CONTACT_SHEAR || fn == F_GET_CONTACT_FRICTION_STATE ||
+                     fn == F_GET_CONTACT_DISSIPATION;
   if (st != TFEM_STATUS_OK && st != TFEM_STATUS_NULL_POINTER && !c->null_model && fn == F_GET_CONTACT_PAIR_BODIES &&
       s->has_mesh && c->iv[0] >= 0 && c->iv[0] < s->npairs)
     finding(R, V_CONTACT, idx, "%s for pair %d of the %d declared: \"%.160s\"", status_name(st), c->iv[0], s->npairs, msg);
@@ -4444,6 +4460,13 @@ static void c_emit_call(FILE *f, const call_t *c, int idx) {
   case F_CONTACT_ELEMENT_EQUATIONS: fprintf(f, "    s = tfem_contact_element_equations(%s, %s, %zu);\n", H, o[0], len[0]); break;
   case F_CONTACT_ELEMENT_BLOCKS: fprintf(f, "    s = tfem_contact_element_blocks(%s, %s, %zu);\n", H, o[0], len[0]); break;
   case F_CONTACT_LENGTH: fprintf(f, "    s = tfem_contact_length(%s, %s);\n", H, o[0]); break;
+  case F_GET_CONTACT_SHEAR: fprintf(f, "    s = tfem_get_contact_shear(%s, %s, %zu);\n", M, o[0], len[0]); break;
+  case F_GET_CONTACT_FRICTION_STATE:
+    fprintf(f, "    s = tfem_get_contact_friction_state(%s, %s, %zu);\n", M, o[0], len[0]);
+    break;
+  case F_GET_CONTACT_DISSIPATION:
+    fprintf(f, "    s = tfem_get_contact_dissipation(%s, %s, %zu);\n", M, o[0], len[0]);
+    break;
   case F_DESTROY_NULL: fprintf(f, "    tfem_destroy(NULL);\n"); break;
   case F_RECREATE: fprintf(f, "    tfem_destroy(m);\n    m = tfem_create();\n"); break;
   default: break;
