@@ -235,7 +235,7 @@ static void a_dof_prescribed_twice_with_different_values_is_refused(void) {
  * 3e6 N/m lifting its top left corner (node 45), so that the interface
  * opens at the left and the active set changes. */
 static mesh_t B;
-static tfem_model *two_blocks(void) {
+static tfem_model *two_blocks_unpaired(void) {
   tfem_model *m = tfem_create();
   CHECK(tfem_set_mesh(m, B.nn, B.xy, B.nt, B.tri, B.body, 0) == TFEM_STATUS_OK);
   CHECK(tfem_set_boundary_edges(m, B.ne, B.edges, B.tags) == TFEM_STATUS_OK);
@@ -246,6 +246,10 @@ static tfem_model *two_blocks(void) {
   CHECK(tfem_fix(m, 27, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
   CHECK(tfem_add_pressure(m, 23, 1e7) == TFEM_STATUS_OK);
   CHECK(tfem_add_nodal_force(m, 45, 0.0, 3e6) == TFEM_STATUS_OK);
+  return m;
+}
+static tfem_model *two_blocks(void) {
+  tfem_model *m = two_blocks_unpaired();
   CHECK(tfem_add_contact_pair(m, 13, 22, NULL) == TFEM_STATUS_OK);
   return m;
 }
@@ -700,6 +704,36 @@ static void friction_obeys_coulomb_and_restarts_bit_for_bit(void) {
   tfem_destroy(plain);
 }
 
+/* Automatic pairing through the C ABI: the facing tags of the two blocks
+ * are found and solve bit for bit as the declared pair; bad tolerances and
+ * unknown tags are refused, naming them, with nothing added. */
+static void facing_tags_are_paired_automatically(void) {
+  tfem_model *declared = two_blocks();
+  tfem_model *m = two_blocks_unpaired();
+  int first = -1, count = -1, nc = -1;
+  EXPECT_ERROR(m, tfem_add_contact_pairs_auto(m, 0, NULL, -1.0, &first, &count), TFEM_STATUS_INVALID_ARGUMENT,
+               "tolerance");
+  EXPECT_ERROR(m, tfem_add_contact_pairs_auto(m, 0, NULL, NAN, NULL, NULL), TFEM_STATUS_INVALID_ARGUMENT,
+               "tolerance");
+  const int unknown[2] = {13, 99};
+  EXPECT_ERROR(m, tfem_add_contact_pairs_auto(m, 2, unknown, 1e-6, NULL, NULL), TFEM_STATUS_INVALID_ARGUMENT, "99");
+  EXPECT_ERROR(m, tfem_add_contact_pairs_auto(m, 2, NULL, 1e-6, NULL, NULL), TFEM_STATUS_NULL_POINTER, "tags");
+  CHECK(tfem_get_contact_mesh_size(m, &nc) == TFEM_STATUS_OK && nc == 0);
+  CHECK(tfem_add_contact_pairs_auto(m, 0, NULL, 1e-6, &first, &count) == TFEM_STATUS_OK);
+  CHECK(first == 0 && count == 1);
+  int bodies[2] = {0, 0};
+  CHECK(tfem_get_contact_pair_bodies(m, 0, &bodies[0], &bodies[1]) == TFEM_STATUS_OK);
+  CHECK((bodies[0] == 1 && bodies[1] == 2) || (bodies[0] == 2 && bodies[1] == 1));
+  /* Again: the pair is declared already, nothing is added. */
+  CHECK(tfem_add_contact_pairs_auto(m, 0, NULL, 1e-6, &first, &count) == TFEM_STATUS_OK && count == 0);
+  results_t a, b;
+  CHECK(tfem_solve_contact(declared, NULL, NULL) == TFEM_STATUS_OK && results_of(declared, &a));
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK && results_of(m, &b));
+  CHECK(same_results(&a, &b));
+  tfem_destroy(m);
+  tfem_destroy(declared);
+}
+
 int main(void) {
   /* Nothing the library does may reach stderr: it goes to a file, checked
    * at the end. */
@@ -726,6 +760,7 @@ int main(void) {
   a_host_side_given_clockwise_is_refused();
   a_failed_call_between_load_steps_keeps_the_history();
   friction_obeys_coulomb_and_restarts_bit_for_bit();
+  facing_tags_are_paired_automatically();
 
   fflush(stderr);
   fseek(capture, 0, SEEK_END);

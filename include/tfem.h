@@ -915,6 +915,27 @@ enum tfem_status tfem_get_contact_friction_state(struct tfem_model *model, int *
 enum tfem_status tfem_get_contact_dissipation(struct tfem_model *model, double *out, size_t length);
 
 /**
+ * Declares a contact pair for every two boundary tags of different bodies
+ * whose edges face each other within `tolerance` (model length units: some
+ * edge of the one within `tolerance` of some edge of the other, outward
+ * normals opposed within 30°, overlapping along the interface;
+ * docs/method.md §6.16). `tags` (`n_tags` values) restricts the search to
+ * those tags; `n_tags` = 0 (`tags` may then be NULL) considers every tag
+ * that can be a contact side. Pairs already declared are skipped, tags of
+ * one body never pair. The pairs added get the indices `first`,
+ * `first + 1`, … `first + count − 1` (both outputs may be NULL; `count` = 0
+ * when nothing faces within the tolerance). A negative or non-finite
+ * tolerance, an unknown tag or an interface whose contact mesh cannot be
+ * built is refused, naming it, and nothing is added.
+ */
+enum tfem_status tfem_add_contact_pairs_auto(struct tfem_model *model,
+                                             int n_tags,
+                                             const int *tags,
+                                             double tolerance,
+                                             int *first,
+                                             int *count);
+
+/**
  * Creates a contact context for a host code that keeps its own elements,
  * assembly, solver and Newton loop: node numbers and equation numbers in
  * `index_base` (0 for C, 1 for Fortran). Returns NULL if `index_base` is

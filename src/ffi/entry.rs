@@ -1199,3 +1199,39 @@ pub unsafe extern "C" fn tfem_get_contact_dissipation(
         copy_out(&m.model.contact_dissipation()?, out, length, "out")
     })
 }
+
+/// Declares a contact pair for every two boundary tags of different bodies
+/// whose edges face each other within `tolerance` (model length units: some
+/// edge of the one within `tolerance` of some edge of the other, outward
+/// normals opposed within 30°, overlapping along the interface;
+/// docs/method.md §6.16). `tags` (`n_tags` values) restricts the search to
+/// those tags; `n_tags` = 0 (`tags` may then be NULL) considers every tag
+/// that can be a contact side. Pairs already declared are skipped, tags of
+/// one body never pair. The pairs added get the indices `first`,
+/// `first + 1`, … `first + count − 1` (both outputs may be NULL; `count` = 0
+/// when nothing faces within the tolerance). A negative or non-finite
+/// tolerance, an unknown tag or an interface whose contact mesh cannot be
+/// built is refused, naming it, and nothing is added.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_add_contact_pairs_auto(
+    model: *mut TfemModel,
+    n_tags: c_int,
+    tags: *const c_int,
+    tolerance: f64,
+    first: *mut c_int,
+    count: *mut c_int,
+) -> Status {
+    with_model(model, |m| {
+        let n = usize::try_from(n_tags)
+            .map_err(|_| Error::argument(format!("n_tags = {n_tags} must be >= 0")))?;
+        let tags = match n {
+            0 => None,
+            _ => Some(slice_in(tags, n, "tags")?),
+        };
+        let before = m.model.contact_pairs().len();
+        let added = m.model.add_contact_pairs_auto(tags, tolerance)?;
+        write_optional(first, before as c_int);
+        write_optional(count, added.len() as c_int);
+        Ok(())
+    })
+}

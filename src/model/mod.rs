@@ -309,6 +309,19 @@ impl Model {
         self.edit(|p| p.add_contact_pair_with_mesh(tag_a, tag_b, triangles))
     }
 
+    /// [`Problem::add_contact_pairs_auto`] (docs/method.md §6.16): declares
+    /// a contact pair for every two tags of different bodies facing each
+    /// other within `tolerance` (model units) and returns the indices of the
+    /// pairs added (empty when none faces within the tolerance). On error
+    /// nothing changes.
+    pub fn add_contact_pairs_auto(
+        &mut self,
+        tags: Option<&[i32]>,
+        tolerance: f64,
+    ) -> Result<Vec<usize>> {
+        self.edit(|p| p.add_contact_pairs_auto(tags, tolerance))
+    }
+
     /// Sets Coulomb's friction coefficient μ ≥ 0 of contact pair `pair`
     /// (docs/method.md §6.15; 0, the default, is frictionless bit for bit).
     pub fn set_friction(&mut self, pair: usize, mu: f64) -> Result<()> {

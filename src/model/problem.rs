@@ -624,19 +624,3 @@ impl Problem {
         Ok((first..self.pairs.len()).collect())
     }
 }
-
-/// Automatic contact pairing on the model (docs/method.md §6.16).
-impl super::Model {
-    /// [`Problem::add_contact_pairs_auto`]: declares a contact pair for
-    /// every two tags of different bodies facing each other within
-    /// `tolerance` (model units) and returns the indices of the pairs
-    /// added (empty when none faces within the tolerance). On error
-    /// nothing changes.
-    pub fn add_contact_pairs_auto(
-        &mut self,
-        tags: Option<&[i32]>,
-        tolerance: f64,
-    ) -> Result<Vec<usize>> {
-        self.edit(|p| p.add_contact_pairs_auto(tags, tolerance))
-    }
-}
