@@ -1250,21 +1250,23 @@ module tfem
     !> Declares a contact pair for every two boundary tags of different bodies whose edges face each
     !! other within `tolerance` (model length units: some edge of the one within `tolerance` of some
     !! edge of the other, outward normals opposed within 30°, overlapping along the interface;
-    !! docs/method.md §6.16). `tags` (`n_tags` values) restricts the search to those tags; `n_tags`
-    !! = 0 (`tags` may then be NULL) considers every tag that can be a contact side. Pairs already
-    !! declared are skipped, tags of one body never pair. The pairs added get the indices `first`,
-    !! `first + 1`, … `first + count − 1` (both outputs may be NULL; `count` = 0 when nothing faces
-    !! within the tolerance). A negative or non-finite tolerance, an unknown tag or an interface
-    !! whose contact mesh cannot be built is refused, naming it, and nothing is added.
+    !! docs/method.md §6.16). `tags` (`n_tags` values) restricts the search to those tags; with
+    !! `n_tags` = 0 every tag that can be a contact side is considered, and `tags` may be NULL.
+    !! Pairs already declared are skipped, tags of one body never pair. The pairs added get
+    !! consecutive indices: writes the first to `first` (may be NULL) and their number, 0 when
+    !! nothing faces within the tolerance, to `count` (may be NULL). A negative or non-finite
+    !! tolerance, an unknown tag or an interface whose contact mesh cannot be built is refused,
+    !! naming it, and nothing is added. Fortran: `tags`, `first` and `count` are OPTIONAL: omit them
+    !! to pass NULL.
     function tfem_add_contact_pairs_auto(model, n_tags, tags, tolerance, first, count) &
         bind(C, name="tfem_add_contact_pairs_auto") result(status)
       import
       type(c_ptr), value :: model
       integer(c_int), value :: n_tags
-      integer(c_int), intent(in) :: tags(*)
+      integer(c_int), intent(in), optional :: tags(*)
       real(c_double), value :: tolerance
-      integer(c_int), intent(out) :: first
-      integer(c_int), intent(out) :: count
+      integer(c_int), intent(out), optional :: first
+      integer(c_int), intent(out), optional :: count
       integer(c_int) :: status
     end function tfem_add_contact_pairs_auto
   end interface

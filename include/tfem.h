@@ -920,13 +920,13 @@ enum tfem_status tfem_get_contact_dissipation(struct tfem_model *model, double *
  * edge of the one within `tolerance` of some edge of the other, outward
  * normals opposed within 30°, overlapping along the interface;
  * docs/method.md §6.16). `tags` (`n_tags` values) restricts the search to
- * those tags; `n_tags` = 0 (`tags` may then be NULL) considers every tag
- * that can be a contact side. Pairs already declared are skipped, tags of
- * one body never pair. The pairs added get the indices `first`,
- * `first + 1`, … `first + count − 1` (both outputs may be NULL; `count` = 0
- * when nothing faces within the tolerance). A negative or non-finite
- * tolerance, an unknown tag or an interface whose contact mesh cannot be
- * built is refused, naming it, and nothing is added.
+ * those tags; with `n_tags` = 0 every tag that can be a contact side is
+ * considered, and `tags` may be NULL. Pairs already declared are skipped,
+ * tags of one body never pair. The pairs added get consecutive indices:
+ * writes the first to `first` (may be NULL) and their number, 0 when
+ * nothing faces within the tolerance, to `count` (may be NULL). A negative
+ * or non-finite tolerance, an unknown tag or an interface whose contact
+ * mesh cannot be built is refused, naming it, and nothing is added.
  */
 enum tfem_status tfem_add_contact_pairs_auto(struct tfem_model *model,
                                              int n_tags,
