@@ -34,7 +34,7 @@ pub use mesh::{
     pair_bodies,
 };
 pub use set::{
-    ActiveSet, ContactSet, ElementLaw, FrictionOutcome, FrictionState, IterationRecord,
+    ActiveSet, ContactSet, ElementLaw, FrictionOutcome, FrictionState, IterationRecord, Verdict,
     element_laws, initial_active_set, softer,
 };
 

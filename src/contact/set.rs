@@ -61,6 +61,15 @@ struct Friction {
     anchors: Vec<f64>,
 }
 
+/// The verdict of the contact law on a solve ([`ContactSet::verdict`]).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct Verdict {
+    /// The active flags over parts.
+    pub flags: Vec<bool>,
+    /// The friction load factors (empty when frictionless).
+    pub loads: Vec<f64>,
+}
+
 /// The frictional state of the elements of B after a converged step
 /// ([`ContactSet::friction_outcome`]).
 #[derive(Debug, Clone, PartialEq)]
@@ -331,6 +340,42 @@ impl<'a> ContactSet<'a> {
         }
     }
 
+    /// The elements that slip under the flags `active` (over parts):
+    /// active and not sticking. Empty when frictionless.
+    pub fn slipping(&self, active: &[bool]) -> Vec<usize> {
+        if self.friction.is_none() {
+            return Vec::new();
+        }
+        let n = self.len();
+        (0..n).filter(|&k| active[k] && !active[n + k]).collect()
+    }
+
+    /// The slip traction of element `k` as a function of its displacements
+    /// (docs/method.md §6.15): its friction load c b_t with c = s μ p(u_e),
+    /// the pressure affine in u_e; p(0) is
+    /// [`ContactSet::pressure`] of zero displacements. Gives (μ, b_t, ∇p);
+    /// `None` when frictionless.
+    pub fn slip_coupling(&self, k: usize) -> Option<(f64, [f64; 6], [f64; 6])> {
+        let f = self.friction.as_ref()?;
+        let p0 = self.pressure(k, &[0.0; 6]);
+        // Exact differences: the pressure is affine in u_e.
+        let gradient = std::array::from_fn(|c| {
+            let mut e = [0.0; 6];
+            e[c] = 1.0;
+            self.pressure(k, &e) - p0
+        });
+        Some((f.mu[k], f.bt[k], gradient))
+    }
+
+    /// The friction load factor of slipping element `k` at element
+    /// displacements `ue`, slipping the way the factor `c` it was solved
+    /// with does: μ max(p, 0) with the sign of `c` — bit for bit what
+    /// [`ContactSet::verdict`] gives it when it keeps slipping.
+    pub fn slip_load(&self, k: usize, ue: &[f64; 6], c: f64) -> f64 {
+        let mu = self.friction.as_ref().map_or(0.0, |f| f.mu[k]);
+        (mu * self.pressure(k, ue).max(0.0)).copysign(c)
+    }
+
     /// The verdict of the frictional law on element displacements
     /// `values(k)` of a solve with the flags `current` (over parts) and
     /// friction load factors `c` (docs/method.md §6.15): the active flags
@@ -352,10 +397,13 @@ impl<'a> ContactSet<'a> {
         &self,
         (current, c): (&[bool], &[f64]),
         values: impl Fn(usize) -> [f64; 6],
-    ) -> (Vec<bool>, Vec<f64>) {
+    ) -> Verdict {
         let normal = self.inverted(&values);
         let Some(f) = &self.friction else {
-            return (normal, Vec::new());
+            return Verdict {
+                flags: normal,
+                ..Verdict::default()
+            };
         };
         let n = self.len();
         let mut flags = normal.clone();
@@ -388,7 +436,7 @@ impl<'a> ContactSet<'a> {
                 }
             }
         }
-        (flags, next)
+        Verdict { flags, loads: next }
     }
 
     /// The frictional state of a converged solve: flags over parts, load
@@ -685,12 +733,7 @@ impl ActiveSet {
         iteration: usize,
     ) -> Result<bool> {
         if !loads.is_empty() {
-            let key = loads.iter().fold(0xcbf2_9ce4_8422_2325u64, |h, v| {
-                (h ^ v.to_bits()).wrapping_mul(0x100_0000_01b3)
-            });
-            let mut state = next.clone();
-            // The loads' fingerprint, as flags, beside the set's flags.
-            state.extend((0..64).map(|b| key >> b & 1 == 1));
+            let state = Self::state_key(&next, loads);
             self.history.push(self.record(&next));
             if next == self.active && !loads_moved {
                 return Ok(true);
@@ -715,6 +758,16 @@ impl ActiveSet {
         }
         self.active = next;
         Ok(false)
+    }
+
+    /// The flags with the loads' fingerprint, as flags, beside them.
+    fn state_key(next: &[bool], loads: &[f64]) -> Vec<bool> {
+        let key = loads.iter().fold(0xcbf2_9ce4_8422_2325u64, |h, v| {
+            (h ^ v.to_bits()).wrapping_mul(0x100_0000_01b3)
+        });
+        let mut state = next.to_vec();
+        state.extend((0..64).map(|b| key >> b & 1 == 1));
+        state
     }
 
     fn record(&self, next: &[bool]) -> IterationRecord {

@@ -11,16 +11,17 @@
 //! refactorises it. The loop works over the unknowns throughout; the caller
 //! expands the result to global DOFs once.
 
+use std::borrow::Cow;
 use std::time::Instant;
 
-use super::condensed::{Condensed, ElementMatrix};
+use super::condensed::{Condensed, ElementMatrix, LowRank};
 use super::diagnostics::add_energy;
 use super::linear::{Structure, check_finite, factor_and_solve};
 use super::report::{IterationRecord, SolveInfo, Timings};
 use super::system::AssembledSystem;
-use crate::contact::{ActiveSet, ContactOptions, ContactSet};
+use crate::contact::{ActiveSet, ContactOptions, ContactSet, Verdict};
 use crate::error::{Error, Result};
-use crate::fem::assembly::NOT_FREE;
+use crate::fem::assembly::{DofMap, NOT_FREE};
 use crate::fem::element_loop::ElementLoop;
 use crate::linalg::Cholesky;
 use crate::linalg::refine::{norm_inf, refine, refine_by};
@@ -120,6 +121,9 @@ pub(crate) struct ActiveSetLoop<'a, 's> {
     mixing: Anderson,
     condensed: Option<CondensedState>,
     iterate: Iterate,
+    /// Whether the last solve held the slip loads implicit (its slip loads
+    /// follow from the flags and their signs).
+    coupled: bool,
 }
 
 /// Anderson mixing (type II, memory [`Anderson::MEMORY`]) of a fixed-point
@@ -229,6 +233,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             mixing: Anderson::default(),
             condensed: None,
             iterate: Iterate::None,
+            coupled: false,
         }
     }
 
@@ -253,6 +258,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             mixing: Anderson::default(),
             condensed: Some(state),
             iterate: Iterate::None,
+            coupled: false,
         }
     }
 
@@ -260,7 +266,10 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
     /// Coulomb's law) and moves the flags and friction loads to the
     /// verdict: true when both stand still.
     fn advance(&mut self, iteration: usize) -> Result<bool> {
-        let (next, friction) = self.verdict();
+        let Verdict {
+            flags: next,
+            loads: friction,
+        } = self.verdict();
         let scale = friction.iter().fold(0.0f64, |m, c| m.max(c.abs()));
         let moved = friction
             .iter()
@@ -277,8 +286,32 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
                 friction
             }
         };
-        self.set
-            .advance_with(next, (&self.friction, moved), iteration)
+        let key = self.state_loads(&next, &self.friction).into_owned();
+        self.set.advance_with(next, (&key, moved), iteration)
+    }
+
+    /// The loads that, with the flags `flags`, tell the loop's states
+    /// apart ([`ActiveSet::advance_with`]): a coupled solve's slip loads
+    /// follow from its flags and their signs (rounding aside, which depends
+    /// on the way the factor got there), so only their signs count; else
+    /// every bit of every load.
+    fn state_loads<'l>(&self, flags: &[bool], loads: &'l [f64]) -> Cow<'l, [f64]> {
+        if !self.coupled || loads.is_empty() {
+            return Cow::Borrowed(loads);
+        }
+        let n = loads.len();
+        let slipping = |k: usize| flags[k] && !flags[n + k];
+        Cow::Owned(
+            (0..n)
+                .map(|k| {
+                    if slipping(k) {
+                        loads[k].signum()
+                    } else {
+                        loads[k]
+                    }
+                })
+                .collect(),
+        )
     }
 
     /// Runs the loop like [`ActiveSetLoop::run`], but stops at the
@@ -387,13 +420,48 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
                     }
                 }
             }
-            // Friction loads are on the interface (where b_t is).
-            set.add_friction_loads(&self.friction, &state.friction_ref, |i, v| {
-                g[sys
-                    .position(i)
-                    .expect("friction loads are on the interface")] += v;
-            });
-            self.iterate = Iterate::Condensed(sys.solve(&sys.gather(&state.x1), &g)?);
+            let y = sys.gather(&state.x1);
+            let (dofs, prescribed) = (self.input.at.dofs, self.input.prescribed);
+            let slipping = set.slipping(active);
+            let coupled = match slipping.is_empty() {
+                true => None,
+                false => {
+                    let (coupling, loads) = slip_coupling(
+                        set,
+                        (dofs, prescribed),
+                        sys,
+                        (&state.x1, &self.friction),
+                        &slipping,
+                    );
+                    let mut g = g.clone();
+                    add_friction_loads(set, sys, (&loads, &state.friction_ref), &mut g);
+                    sys.solve_with(&y, &g, &coupling)?
+                }
+            };
+            self.coupled = coupled.is_some() || slipping.is_empty();
+            let ui = match coupled {
+                Some(ui) => {
+                    // The slip loads the solve implied, as the verdict reads
+                    // them.
+                    for &k in &slipping {
+                        let tri = &set.elements()[k].nodes;
+                        let ue = std::array::from_fn(|a| {
+                            let g = 2 * tri[a / 2] + a % 2;
+                            match dofs.free(g) {
+                                NOT_FREE => prescribed[g],
+                                i => sys.position(i).map_or(state.x1[i], |p| ui[p]),
+                            }
+                        });
+                        self.friction[k] = set.slip_load(k, &ue, self.friction[k]);
+                    }
+                    ui
+                }
+                None => {
+                    add_friction_loads(set, sys, (&self.friction, &state.friction_ref), &mut g);
+                    sys.solve(&y, &g)?
+                }
+            };
+            self.iterate = Iterate::Condensed(ui);
         } else {
             self.condensed = None;
         }
@@ -413,6 +481,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         self.system
             .set_contact(active, set, structure, input.prescribed);
         self.system.set_friction_loads(set, &self.friction);
+        self.coupled = false;
         self.timings.assembly += t0.elapsed().as_secs_f64();
         let energy = |r: &[f64]| {
             let mut acc = body_energy(input.elements, r);
@@ -469,7 +538,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
 
     /// The contact law's verdict on the current iterate
     /// ([`ContactSet::verdict`]).
-    fn verdict(&self) -> (Vec<bool>, Vec<f64>) {
+    fn verdict(&self) -> Verdict {
         let (dofs, prescribed) = (self.input.at.dofs, self.input.prescribed);
         let elements = self.input.set.elements();
         let current = (self.set.active(), &self.friction[..]);
@@ -560,6 +629,68 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         check_finite(input.at, &x, context)?;
         Ok(x)
     }
+}
+
+/// Adds the friction loads Σ_e (c_e − c_ref,e) b_t,e to the interface
+/// right-hand side `g` (they are on the interface, where b_t is).
+fn add_friction_loads(
+    set: &ContactSet<'_>,
+    sys: &Condensed,
+    (c, c_ref): (&[f64], &[f64]),
+    g: &mut [f64],
+) {
+    set.add_friction_loads(c, c_ref, |i, v| {
+        g[sys
+            .position(i)
+            .expect("friction loads are on the interface")] += v;
+    });
+}
+
+/// The slip coupling of the slipping elements `(k, c_k)` on the interface
+/// (docs/method.md §6.15): element k's friction load c b_t with
+/// c = s μ p(u_e), s the sign of c_k and the pressure p affine in u_e, is
+/// the unsymmetric rank-one term −s μ b_t ∇pᵀ on the interface unknowns
+/// (moved to the matrix) plus the load s μ p(u_e⁰) b_t, u_e⁰ the element's
+/// values off the interface (prescribed, or x₁'s). Gives the change
+/// U Vᵀ and the friction load factors with that constant part in place of
+/// the slipping elements' c_k (the others unchanged).
+fn slip_coupling(
+    set: &ContactSet<'_>,
+    (dofs, prescribed): (&DofMap, &[f64]),
+    sys: &Condensed,
+    (x1, c): (&[f64], &[f64]),
+    slipping: &[usize],
+) -> (LowRank, Vec<f64>) {
+    let mut change = LowRank::default();
+    let mut loads = c.to_vec();
+    for &k in slipping {
+        let (mu, bt, gradient) = set.slip_coupling(k).expect("a frictional set");
+        let s = c[k].signum();
+        let tri = &set.elements()[k].nodes;
+        let (mut u, mut v) = (Vec::with_capacity(6), Vec::with_capacity(6));
+        let rest: [f64; 6] = std::array::from_fn(|a| {
+            let g = 2 * tri[a / 2] + a % 2;
+            match dofs.free(g) {
+                NOT_FREE => prescribed[g],
+                i => match sys.position(i) {
+                    Some(p) => {
+                        if bt[a] != 0.0 {
+                            u.push((p, -s * mu * bt[a]));
+                        }
+                        if gradient[a] != 0.0 {
+                            v.push((p, gradient[a]));
+                        }
+                        0.0
+                    }
+                    None => x1[i],
+                },
+            }
+        });
+        loads[k] = s * mu * set.pressure(k, &rest);
+        change.u.push(u);
+        change.v.push(v);
+    }
+    (change, loads)
 }
 
 /// The system a condensed solution is expanded for: the contact set with
