@@ -206,11 +206,12 @@ static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetrat
                                        "step_repeat", "host_pattern", "host_gather", "host_active",
                                        "coulomb", "friction_args", "prescribed", "auto_pairs", "twin"};
 
-/* A library defect this tester found (c_tests/README.md, "friction,
- * prescribed values, automatic pairs"): with friction (mu > 0 on a pair),
- * a DOF prescribed at a node of a contact element leaves the contact
- * forces + loads + reactions of that node's body unbalanced (the x sum of
- * the upper block: -1.3e5 of 1.2e7 with four cells a side, mu = 0.3). The
+/* A library defect this tester found (c_tests/README.md, "The 3 entry
+ * points of friction, prescribed values and automatic pairs"): with
+ * friction (mu > 0 on a pair), a DOF prescribed at a node of a contact
+ * element leaves the contact forces + loads + reactions of that node's
+ * body unbalanced (the x sum of the upper block: -1.3e5 of 1.2e7 with
+ * four cells a side, mu = 0.3). The
  * body balance of such results is skipped so that CI stays green; build
  * with -DAPI_FUZZ_FRICTION_REACTIONS=1 to check it (it then fails). */
 #ifndef API_FUZZ_FRICTION_REACTIONS
@@ -4121,6 +4122,7 @@ static void exec_call(runner_t *R, int idx) {
   if (st == TFEM_STATUS_INTERNAL && (fn == F_SOLVE_CONTACT || fn == F_STEP) && strstr(msg, "index out of bounds")) {
     for (int k = 0; k < R->sh.npairs && k < 64; ++k) known_panic |= R->sh.pair_mu[k] != 0.0;
     known_panic |= R->sh.npairs > 64;
+    if (known_panic) R->sh.res_unknown = 1; /* (what a panic leaves is not known here: matrix dropped, seed 15 case 9800) */
   }
 #endif
   if (st == TFEM_STATUS_INTERNAL && !known_panic) {
