@@ -474,7 +474,12 @@ impl<'a> ContactSet<'a> {
                 out.shear[k] = tau;
                 // Stress-free at the slipped position: τ = (G_c/T)(γ − γ_p).
                 *anchor = gamma - tau / f.g_over_t[k];
-                out.dissipation[k] = 0.5 * tau * (*anchor - f.anchors[k]);
+                // The slip as the verdict judged it, which let it slip only
+                // along τ; here γ is read from the refined field, so a slip
+                // that vanishes may turn back in round-off: that counts
+                // zero, not a negative dissipation.
+                let slip = gamma - f.anchors[k] - tau / f.g_over_t[k];
+                out.dissipation[k] = (0.5 * tau * slip).max(0.0);
             }
         }
         Some(out)

@@ -797,7 +797,12 @@ fn keep_matrix(
     let current = solution.filter(|s| s.revision == revision);
     if let Some(s) = current.filter(|s| !s.step) {
         let options = s.contact.as_ref().map(|c| &c.options);
-        if solve::restore(session, input, options, &s.log).is_ok() {
+        let friction = s
+            .contact
+            .as_ref()
+            .and_then(|c| c.friction.as_ref())
+            .map_or(&[][..], |f| &f.next.loads[..]);
+        if solve::restore(session, input, options, (&s.log, friction)).is_ok() {
             session.set_system_of(Some(revision));
         }
     }

@@ -137,10 +137,20 @@ impl Solution {
         if let Some(c) = &self.contact {
             for (k, el) in c.elements.iter().enumerate() {
                 if c.active[k] {
-                    let geo = TriGeometry::new(&mesh.corners(&el.nodes));
+                    let corners = mesh.corners(&el.nodes);
+                    let geo = TriGeometry::new(&corners);
                     let law = &c.laws[k];
                     let cs = contact_stiffness(&geo, &law.d, el.normal, el.j0, law.t);
-                    add(&el.nodes, &cs.k, Some(&cs.f0));
+                    // The shear traction τ of a frictional element acts
+                    // through b_t, on prescribed DOFs too.
+                    let f0 = match &c.friction {
+                        Some(fr) => {
+                            let bt = shear_vector(&corners, el.normal);
+                            std::array::from_fn(|a| cs.f0[a] - fr.shear[k] * bt[a])
+                        }
+                        None => cs.f0,
+                    };
+                    add(&el.nodes, &cs.k, Some(&f0));
                 }
             }
         }

@@ -124,7 +124,7 @@ pub(crate) fn restore(
     session: &mut Session,
     input: &Input<'_>,
     options: Option<&ContactOptions>,
-    log: &[Vec<usize>],
+    (log, friction): (&[Vec<usize>], &[f64]),
 ) -> Result<()> {
     session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
     if let Some(options) = options {
@@ -137,6 +137,7 @@ pub(crate) fn restore(
         } = &mut *session;
         let set = contact_set(input, input.prescribed, contact, dofs, options, &[])?;
         system.replay(log, &set, (dofs, pattern), input.prescribed);
+        system.set_friction_loads(&set, friction);
     }
     Ok(())
 }

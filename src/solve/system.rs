@@ -129,6 +129,11 @@ impl AssembledSystem {
         structure: (&DofMap, &Pattern),
         prescribed: &[f64],
     ) {
+        // A frictional set has a stick part per element besides its normal
+        // part (as in set_contact).
+        if self.contact.len() < set.parts() {
+            self.contact.resize(set.parts(), false);
+        }
         for ks in log {
             self.toggle(ks.clone(), set, structure, prescribed);
         }
