@@ -2836,7 +2836,13 @@ fn seed_steps(scene: TwoBlocks, steps: usize) -> Result<SeedRun, String> {
         let rep = sc
             .model
             .step(k as f64 / steps as f64, &options)
-            .map_err(|e| format!("step {k}/{steps}: {}", failure(&e)))?;
+            .map_err(|e| {
+                format!(
+                    "step {k}/{steps} (after {:.1} s): {}",
+                    t0.elapsed().as_secs_f64(),
+                    failure(&e)
+                )
+            })?;
         factorizations += rep.info.factorizations;
         iterations += rep.iterations;
         last = Some(rep);
@@ -3177,8 +3183,9 @@ fn calculix(report: &mut String, _a: &Args) {
          CalculiX's process alone (deck generation and parsing excluded) against tfem's build and \
          solve of every step, one run each. Differences (tfem − CalculiX)/CalculiX of the outputs \
          (CalculiX prints 7 digits); both are discretisations of the same problem with different \
-         contact formulations, so the differences are not errors of either, but should shrink with \
-         h. The 67k case is run in 1 step only (100 CalculiX increments there take 6–8 minutes \
+         contact formulations (a penalty node-to-surface law, tfem's strip B), so the differences \
+         are not errors of either: they measure how far the two codes' answers lie apart on one \
+         mesh. The 67k case is run in 1 step only (100 CalculiX increments there take 6–8 minutes \
          each); 265k in 1 step only, when ≥ 10 GB are free (CalculiX took 8.5 GB) and the CalculiX part has \
          taken less than 6 minutes so far.\n",
         version,
