@@ -214,8 +214,9 @@ static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetrat
  * four cells a side, mu = 0.3). The
  * body balance of such results is skipped so that CI stays green; build
  * with -DAPI_FUZZ_FRICTION_REACTIONS=1 to check it (it then fails). */
+/* Fixed (c_tests/README.md): checked unless built with -DAPI_FUZZ_FRICTION_REACTIONS=0. */
 #ifndef API_FUZZ_FRICTION_REACTIONS
-#define API_FUZZ_FRICTION_REACTIONS 0
+#define API_FUZZ_FRICTION_REACTIONS 1
 #endif
 
 /* Another (same README section): after frictional load steps in which
@@ -224,8 +225,9 @@ static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetrat
  * step's factorisation is gone"); frictionless, or asked for first, they
  * stay. The results are taken as not known here after such a call unless
  * built with -DAPI_FUZZ_FRICTION_STATE_RESULTS=1 (then results_lost). */
+/* Fixed (c_tests/README.md): checked unless built with -DAPI_FUZZ_FRICTION_STATE_RESULTS=0. */
 #ifndef API_FUZZ_FRICTION_STATE_RESULTS
-#define API_FUZZ_FRICTION_STATE_RESULTS 0
+#define API_FUZZ_FRICTION_STATE_RESULTS 1
 #endif
 
 /* A third (same README section), a panic across the C ABI: after a contact
@@ -234,8 +236,9 @@ static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetrat
  * returns TFEM_STATUS_INTERNAL "index out of bounds: the len is 8 but the
  * index is 8" instead of NOT_CONVERGED. Not counted (with friction set,
  * for that message) unless built with -DAPI_FUZZ_FRICTION_PANIC=1. */
+/* Fixed (c_tests/README.md): checked unless built with -DAPI_FUZZ_FRICTION_PANIC=0. */
 #ifndef API_FUZZ_FRICTION_PANIC
-#define API_FUZZ_FRICTION_PANIC 0
+#define API_FUZZ_FRICTION_PANIC 1
 #endif
 
 /* A fourth (same README section), small: the dissipation of a slipping
@@ -245,8 +248,9 @@ static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetrat
  * round-off of tau times a slip) unless built with
  * -DAPI_FUZZ_DISSIPATION_SIGN=1 (then any negative value is a finding, as
  * in c_tests/boundary_test.c). */
+/* Fixed (c_tests/README.md): checked unless built with -DAPI_FUZZ_DISSIPATION_SIGN=0. */
 #ifndef API_FUZZ_DISSIPATION_SIGN
-#define API_FUZZ_DISSIPATION_SIGN 0
+#define API_FUZZ_DISSIPATION_SIGN 1
 #endif
 
 /* Messages name the item and say why; what must not happen is an

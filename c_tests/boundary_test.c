@@ -630,6 +630,108 @@ static void a_host_side_given_clockwise_is_refused(void) {
   tfem_contact_destroy(c);
 }
 
+/* Defects the API fuzzer found at the friction boundary (c_tests/README.md),
+ * each a regression test: a failed solve after a frictional one is
+ * NOT_CONVERGED, not an internal error, and keeps every result; reactions
+ * carry the frictional shear at a prescribed interface node, so that
+ * loads, contact forces and reactions balance on each body; a contact
+ * state set after frictional steps keeps the last step's displacements. */
+/* The API fuzzer's reproducer: two 4x1-cell blocks on y = 0 (rows of 5
+ * nodes at y = -0.25, 0, 0, 0.25; E 1e10 below, 1e11 above), v = 0 on the
+ * bottom, u = 0 at node 0 and at node 10 (the upper block's bottom left,
+ * on the interface), pressure 1e7 and traction (1e6, 0) on the top. */
+static tfem_model *four_cell_blocks(double mu) {
+  double xy[40], ys[4] = {-0.25, 0.0, 0.0, 0.25};
+  int tri[48], body[16], edges[32], tags[16], nt = 0, ne = 0;
+  for (int r = 0; r < 4; ++r)
+    for (int i = 0; i <= 4; ++i) xy[2 * (5 * r + i)] = i / 4.0, xy[2 * (5 * r + i) + 1] = ys[r];
+  for (int b = 0; b < 2; ++b)
+    for (int i = 0; i < 4; ++i) {
+      int p = 10 * b + i, q = p + 5;
+      tri[3 * nt] = p, tri[3 * nt + 1] = p + 1, tri[3 * nt + 2] = q + 1, body[nt++] = b + 1;
+      tri[3 * nt] = p, tri[3 * nt + 1] = q + 1, tri[3 * nt + 2] = q, body[nt++] = b + 1;
+    }
+  for (int r = 0; r < 4; ++r)
+    for (int i = 0; i < 4; ++i) {
+      int p = 5 * r + i, fwd = r == 0 || r == 2;
+      edges[2 * ne] = fwd ? p : p + 1, edges[2 * ne + 1] = fwd ? p + 1 : p, tags[ne++] = r + 1;
+    }
+  tfem_model *m = tfem_create();
+  CHECK(tfem_set_mesh(m, 20, xy, nt, tri, body, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_set_boundary_edges(m, ne, edges, tags) == TFEM_STATUS_OK);
+  CHECK(tfem_set_material(m, 1, 1e10, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_set_material(m, 2, 1e11, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 1, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix(m, 0, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix(m, 10, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_add_pressure(m, 4, 1e7) == TFEM_STATUS_OK);
+  CHECK(tfem_add_traction(m, 4, 1e6, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_add_contact_pair(m, 2, 3, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_set_friction(m, 0, mu) == TFEM_STATUS_OK);
+  return m;
+}
+
+static tfem_model *two_blocks_pushed_sideways(void) {
+  tfem_model *m = two_blocks();
+  CHECK(tfem_add_nodal_force(m, 53, 1e6, 0.0) == TFEM_STATUS_OK); /* top right corner */
+  CHECK(tfem_set_friction(m, 0, 0.1) == TFEM_STATUS_OK);
+  return m;
+}
+static void fuzz_found_defects_at_the_friction_boundary(void) {
+  tfem_model *m = two_blocks_pushed_sideways();
+  results_t a, b;
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK && results_of(m, &a));
+  tfem_contact_options one = {0, 0.0, 0.0, 0, 1, 0};
+  EXPECT_ERROR(m, tfem_solve_contact(m, &one, NULL), TFEM_STATUS_NOT_CONVERGED, "settle");
+  CHECK(results_of(m, &b) && same_results(&a, &b));
+
+  /* The only x load is the upper body's 1e6 at node 53 (a pressure on a
+   * horizontal top, a vertical nodal force besides): each body's x loads,
+   * reactions and contact forces sum to zero; node 27, prescribed in x, is
+   * on the interface. */
+  double f[2 * 64], r[2 * 64];
+  CHECK(tfem_get_contact_forces(m, f, 2 * B.nn) == TFEM_STATUS_OK);
+  CHECK(tfem_get_reactions(m, r, 2 * B.nn) == TFEM_STATUS_OK);
+  for (int body = 0; body < 2; ++body) {
+    double sum = body ? 1e6 : 0.0, size = 0.0;
+    for (int v = 27 * body; v < 27 * (body + 1); ++v) {
+      sum += f[2 * v] + r[2 * v];
+      size += fabs(f[2 * v]) + fabs(r[2 * v]);
+    }
+    CHECK(size > 0.0 && fabs(sum) <= 1e-9 * size);
+  }
+  tfem_destroy(m);
+  /* The same on the fuzzer's scene: the upper block carries the top's x
+   * traction 1e6 × its width 1. */
+  m = four_cell_blocks(0.3);
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_get_contact_forces(m, f, 40) == TFEM_STATUS_OK && tfem_get_reactions(m, r, 40) == TFEM_STATUS_OK);
+  double x_sum = 1e6, x_size = 1e6;
+  for (int v = 10; v < 20; ++v) x_sum += f[2 * v] + r[2 * v], x_size += fabs(f[2 * v]) + fabs(r[2 * v]);
+  CHECK(fabs(x_sum) <= 1e-9 * x_size);
+  tfem_destroy(m);
+
+  tfem_model *h = two_blocks_pushed_sideways(), *twin = two_blocks_pushed_sideways();
+  double u[2 * 64], v[2 * 64];
+  size_t size = 0;
+  for (int k = 0; k < 2; ++k) CHECK(tfem_step(k ? twin : h, 0.5, NULL, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_get_contact_state_size(h, &size) == TFEM_STATUS_OK && size > 0);
+  uint8_t *saved = malloc(size);
+  CHECK(saved != NULL && tfem_get_contact_state(h, saved, size) == TFEM_STATUS_OK);
+  for (int k = 0; k < 2; ++k) {
+    tfem_model *x = k ? twin : h;
+    CHECK(tfem_step(x, 1.0, NULL, NULL) == TFEM_STATUS_OK);
+    CHECK(tfem_step(x, 1.0, NULL, NULL) == TFEM_STATUS_OK);
+  }
+  CHECK(tfem_set_contact_state(h, saved, size) == TFEM_STATUS_OK);
+  CHECK(tfem_get_displacements(h, u, 2 * B.nn) == TFEM_STATUS_OK);
+  CHECK(tfem_get_displacements(twin, v, 2 * B.nn) == TFEM_STATUS_OK);
+  CHECK(memcmp(u, v, 2 * (size_t)B.nn * sizeof(double)) == 0);
+  free(saved);
+  tfem_destroy(h);
+  tfem_destroy(twin);
+}
+
 /* Coulomb friction through the C ABI: bad coefficients are refused naming
  * the pair and change nothing; μ = 0 is the frictionless solve bit for bit;
  * with μ > 0 every element obeys Coulomb's law, dissipates nothing
@@ -760,6 +862,7 @@ int main(void) {
   a_host_side_given_clockwise_is_refused();
   a_failed_call_between_load_steps_keeps_the_history();
   friction_obeys_coulomb_and_restarts_bit_for_bit();
+  fuzz_found_defects_at_the_friction_boundary();
   facing_tags_are_paired_automatically();
 
   fflush(stderr);

@@ -61,6 +61,14 @@ struct Friction {
     anchors: Vec<f64>,
 }
 
+/// How far past its switch, relative to its own traction, a frictional
+/// element must be to switch: a sticking one slips when |τ| > μp(1 + tol), a
+/// slipping one sticks when its slip turned back by more than tol of its
+/// shear's compliance |τ|T/G_c. Without it, a step that repeats the last
+/// one's loads (zero slip, |τ| = μp) judges round-off: its slip zone
+/// switched between stick and slip for ever (found by the C boundary test).
+pub const SWITCH_TOL: f64 = 1e-9;
+
 /// The verdict of the contact law on a solve ([`ContactSet::verdict`]).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Verdict {
@@ -418,14 +426,14 @@ impl<'a> ContactSet<'a> {
             let slips_along = if !current[k] {
                 None
             } else if current[n + k] {
-                (shear.abs() > limit).then_some(shear)
+                (shear.abs() > limit * (1.0 + SWITCH_TOL)).then_some(shear)
             } else {
                 let tau = -c[k];
                 let slip = gamma - f.anchors[k] - tau / f.g_over_t[k];
                 match tau == 0.0 {
                     // No traction to judge the slip by: its shear decides.
                     true => (shear.abs() > limit).then_some(shear),
-                    false => (slip * tau >= 0.0).then_some(tau),
+                    false => (slip * tau >= -SWITCH_TOL * tau * tau / f.g_over_t[k]).then_some(tau),
                 }
             };
             match slips_along {

@@ -562,6 +562,12 @@ impl Model {
     /// another contact mesh.
     pub fn set_contact_state(&mut self, bytes: &[u8]) -> Result<()> {
         let state = decode(bytes, self.contact_fingerprint()?)?;
+        // A step's field waits on the history's contact state, which this
+        // replaces: recover it first, so that the results stay readable.
+        // (A field that can no longer be recovered stays as it was.)
+        if self.solution.as_ref().is_some_and(|s| s.u.get().is_none()) {
+            let _ = self.field();
+        }
         match self.session.as_mut().and_then(|s| s.history.as_mut()) {
             Some(history) => {
                 let before = history.step_state();

@@ -104,8 +104,9 @@ impl LowRank {
     }
 }
 
-/// Z = S⁻¹U and the LU factors of the capacitance matrix I + VᵀZ of a
-/// [`LowRank`] change, for the factor of generation `generation`.
+/// Ẑ = Ŝ⁻¹Û and the LU factors of the capacitance matrix I + V̂ᵀẐ of a
+/// [`LowRank`] change (scaled: Û = diag(s)U, V̂ = diag(s)V), for the factor
+/// of generation `generation`.
 struct Capacitance {
     generation: u64,
     change: LowRank,
@@ -414,6 +415,16 @@ impl Condensed {
         if !self.factored {
             return Err(Error::state("interface solve before a factorisation"));
         }
+        let mut x = self.scaled_rhs(y, g);
+        self.solve_scaled(&mut x);
+        for (xk, s) in x.iter_mut().zip(&self.scale) {
+            *xk *= s;
+        }
+        Ok(x)
+    }
+
+    /// The scaled right-hand side diag(s)(S₁y + g) of [`Condensed::solve`].
+    fn scaled_rhs(&self, y: &[f64], g: &[f64]) -> Vec<f64> {
         let n = self.len();
         let yh: Vec<f64> = (0..n).map(|k| y[k] / self.scale[k]).collect();
         // x = Ŝ₁ŷ from the packed lower triangle, column by column: the
@@ -432,11 +443,33 @@ impl Condensed {
         for k in 0..n {
             x[k] += self.scale[k] * g[k];
         }
-        self.solve_scaled(&mut x);
-        for k in 0..n {
-            x[k] *= self.scale[k];
+        x
+    }
+
+    /// (LLᵀ + ÛV̂ᵀ) x̂ for a scaled x̂: the coupled matrix as the factor
+    /// holds it.
+    fn coupled_product(&self, xh: &[f64], change: &LowRank) -> Vec<f64> {
+        let n = self.len();
+        let l = self.factor.as_ref();
+        // w = Lᵀx̂ (lower triangle only), then LLᵀx̂ = L w.
+        let mut w = vec![0.0; n];
+        for (j, wj) in w.iter_mut().enumerate() {
+            *wj = (j..n).map(|i| l[(i, j)] * xh[i]).sum();
         }
-        Ok(x)
+        let mut out = vec![0.0; n];
+        for (j, &wj) in w.iter().enumerate() {
+            for (i, o) in out.iter_mut().enumerate().skip(j) {
+                *o += l[(i, j)] * wj;
+            }
+        }
+        for (u, v) in change.u.iter().zip(&change.v) {
+            // Vᵀx = V̂ᵀx̂ with V̂ = DV and x = Dx̂.
+            let vx: f64 = v.iter().map(|&(p, c)| c * self.scale[p] * xh[p]).sum();
+            for &(p, c) in u {
+                out[p] += self.scale[p] * c * vx;
+            }
+        }
+        out
     }
 
     /// Solves (S + U Vᵀ) u_I = S₁ y_I + g_I like [`Condensed::solve`], with
@@ -455,64 +488,98 @@ impl Condensed {
         g: &[f64],
         change: &LowRank,
     ) -> Result<Option<Vec<f64>>> {
-        let mut x = self.solve(y, g)?;
-        let m = change.rank();
-        if m == 0 {
-            return Ok(Some(x));
+        if change.rank() == 0 {
+            return self.solve(y, g).map(Some);
         }
+        if !self.factored {
+            return Err(Error::state("interface solve before a factorisation"));
+        }
+        if !self.capacitance_for(change) {
+            return Ok(None);
+        }
+        let b = self.scaled_rhs(y, g);
+        let mut x = b.clone();
+        self.woodbury_scaled(&mut x, change);
+        // One step of refinement against the factor and the change: the
+        // formula loses what the capacitance matrix's condition costs.
+        let ax = self.coupled_product(&x, change);
+        let mut r: Vec<f64> = b.iter().zip(&ax).map(|(b, a)| b - a).collect();
+        self.woodbury_scaled(&mut r, change);
+        for ((xk, rk), s) in x.iter_mut().zip(&r).zip(&self.scale) {
+            *xk = (*xk + rk) * s;
+        }
+        Ok(Some(x))
+    }
+
+    /// Makes Ẑ = Ŝ⁻¹Û and the LU factors of I + V̂ᵀẐ those of `change`
+    /// and the current factor; false when the capacitance matrix is
+    /// singular (its smallest LU pivot below 1e-12 of the largest).
+    fn capacitance_for(&mut self, change: &LowRank) -> bool {
         let fresh = self
             .capacitance
             .as_ref()
             .is_some_and(|c| c.generation == self.generation && &c.change == change);
-        if !fresh {
-            self.capacitance = None;
-            let n = self.len();
-            let mut z = Mat::<f64>::zeros(n, m);
-            for (j, col) in change.u.iter().enumerate() {
-                for &(p, v) in col {
-                    z[(p, j)] += self.scale[p] * v;
-                }
+        if fresh {
+            return true;
+        }
+        self.capacitance = None;
+        let (n, m) = (self.len(), change.rank());
+        let mut z = Mat::<f64>::zeros(n, m);
+        for (j, col) in change.u.iter().enumerate() {
+            for &(p, v) in col {
+                z[(p, j)] += self.scale[p] * v;
             }
-            solve_lower_triangular_in_place(self.factor.as_ref(), z.as_mut(), self.par);
-            solve_upper_triangular_in_place(self.factor.as_ref().transpose(), z.as_mut(), self.par);
-            for j in 0..m {
-                for p in 0..n {
-                    z[(p, j)] *= self.scale[p];
-                }
-            }
-            let cap = nalgebra::DMatrix::from_fn(m, m, |i, j| {
-                let vz: f64 = change.v[i].iter().map(|&(p, v)| v * z[(p, j)]).sum();
-                vz + if i == j { 1.0 } else { 0.0 }
-            });
-            let lu = cap.lu();
-            let pivots = lu.u().diagonal();
-            let (lo, hi) = pivots.iter().fold((f64::INFINITY, 0.0f64), |(lo, hi), d| {
+        }
+        solve_lower_triangular_in_place(self.factor.as_ref(), z.as_mut(), self.par);
+        solve_upper_triangular_in_place(self.factor.as_ref().transpose(), z.as_mut(), self.par);
+        let cap = nalgebra::DMatrix::from_fn(m, m, |i, j| {
+            let vz: f64 = change.v[i]
+                .iter()
+                .map(|&(p, v)| v * self.scale[p] * z[(p, j)])
+                .sum();
+            vz + if i == j { 1.0 } else { 0.0 }
+        });
+        let lu = cap.lu();
+        let (lo, hi) = lu
+            .u()
+            .diagonal()
+            .iter()
+            .fold((f64::INFINITY, 0.0f64), |(lo, hi), d| {
                 (lo.min(d.abs()), hi.max(d.abs()))
             });
-            if !(lo > 1e-12 * hi) {
-                return Ok(None);
-            }
-            self.capacitance = Some(Capacitance {
-                generation: self.generation,
-                change: change.clone(),
-                z,
-                lu,
-            });
+        // (NaN pivots fail too.)
+        let regular = lo > 1e-12 * hi;
+        if !regular {
+            return false;
         }
-        let c = self.capacitance.as_ref().expect("the capacitance system");
-        let t = nalgebra::DVector::from_fn(m, |i, _| {
-            change.v[i].iter().map(|&(p, v)| v * x[p]).sum::<f64>()
+        self.capacitance = Some(Capacitance {
+            generation: self.generation,
+            change: change.clone(),
+            z,
+            lu,
         });
-        let Some(w) = c.lu.solve(&t) else {
-            return Ok(None);
-        };
+        true
+    }
+
+    /// x̂ ← (Ŝ + ÛV̂ᵀ)⁻¹x̂ by the Sherman–Morrison–Woodbury formula with the
+    /// capacitance system of [`Condensed::capacitance_for`].
+    fn woodbury_scaled(&self, x: &mut [f64], change: &LowRank) {
+        self.solve_scaled(x);
+        let c = self.capacitance.as_ref().expect("the capacitance system");
+        let m = change.rank();
+        let t = nalgebra::DVector::from_fn(m, |i, _| {
+            change.v[i]
+                .iter()
+                .map(|&(p, v)| v * self.scale[p] * x[p])
+                .sum::<f64>()
+        });
+        let w = c.lu.solve(&t).expect("a regular capacitance matrix");
         for j in 0..m {
             let wj = w[j];
             for (p, xp) in x.iter_mut().enumerate() {
                 *xp -= c.z[(p, j)] * wj;
             }
         }
-        Ok(Some(x))
     }
 
     /// Gathers the interface values of a vector over the free unknowns.
