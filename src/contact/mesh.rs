@@ -24,6 +24,8 @@ pub struct Side {
     edges: HashMap<(usize, usize), [f64; 2]>,
     /// edges as given, oriented so that the body lies on their right
     oriented: Vec<[usize; 2]>,
+    /// node -> nodal outward normal ([`nodal_normals`])
+    node_normals: HashMap<usize, [f64; 2]>,
 }
 
 impl Side {
@@ -51,6 +53,7 @@ impl Side {
             nodes: HashSet::new(),
             edges: HashMap::new(),
             oriented: Vec::new(),
+            node_normals: HashMap::new(),
         };
         if edges.is_empty() {
             return Err(Error::contact(format!("contact side {tag} has no edges")));
@@ -99,6 +102,7 @@ impl Side {
             side.nodes.insert(q);
             side.oriented.push([q, p]);
         }
+        side.node_normals = nodal_normals(&side.edges);
         Ok(side)
     }
 
@@ -106,6 +110,46 @@ impl Side {
     pub fn contains(&self, v: usize) -> bool {
         self.nodes.contains(&v)
     }
+}
+
+/// `v` scaled to unit length.
+fn unit(v: [f64; 2]) -> [f64; 2] {
+    let l = v[0].hypot(v[1]);
+    [v[0] / l, v[1] / l]
+}
+
+/// The outward normal of a side at each of its nodes: the normalised sum of
+/// the normals of the side's edges that end there. On a side that
+/// discretises a curve by chords it is the normal of the curve at the node
+/// to O(h²) (exactly on a circle cut into equal chords), where either
+/// chord's own normal is off by half the turn between them; the end node of
+/// an open side keeps its one edge's normal. Where every edge at a node has
+/// the same normal to the bit (a straight side), the node keeps it
+/// unchanged, so straight interfaces are built exactly as with edge
+/// normals. The elements of a conforming B measure the gap of their node
+/// pair along it (docs/method.md §6.2).
+fn nodal_normals(edges: &HashMap<(usize, usize), [f64; 2]>) -> HashMap<usize, [f64; 2]> {
+    let mut at: HashMap<usize, Vec<[f64; 2]>> = HashMap::new();
+    for (&(p, q), &n) in edges {
+        at.entry(p).or_default().push(n);
+        at.entry(q).or_default().push(n);
+    }
+    at.into_iter()
+        .map(|(v, mut ns)| {
+            if ns.iter().all(|&n| n == ns[0]) {
+                return (v, ns[0]);
+            }
+            // A fixed order of summation (the map's order is not).
+            ns.sort_unstable_by(|m, n| m[0].total_cmp(&n[0]).then(m[1].total_cmp(&n[1])));
+            (
+                v,
+                unit(
+                    ns.iter()
+                        .fold([0.0, 0.0], |s, n| [s[0] + n[0], s[1] + n[1]]),
+                ),
+            )
+        })
+        .collect()
 }
 
 fn side_of(mesh: &Mesh, tag: i32) -> Result<Side> {
@@ -116,6 +160,7 @@ fn side_of(mesh: &Mesh, tag: i32) -> Result<Side> {
         nodes: HashSet::new(),
         edges: HashMap::new(),
         oriented: Vec::new(),
+        node_normals: HashMap::new(),
     };
     let b = mesh.index_base();
     for (k, e) in mesh.boundary_edges().iter().enumerate() {
@@ -164,6 +209,7 @@ fn side_of(mesh: &Mesh, tag: i32) -> Result<Side> {
         ))),
         Some(bd) => {
             side.body = bd;
+            side.node_normals = nodal_normals(&side.edges);
             Ok(side)
         }
     }
@@ -308,12 +354,31 @@ pub fn conforming(
         });
         let Some((_, va)) = matched else {
             let hint = match best {
-                Some((d, va)) => format!("nearest is node {} at distance {d:.3e}", va + base),
-                None => "no node of the other side within half an edge".to_string(),
+                Some((d, va)) => {
+                    let h = hb.min(local_h[&va]);
+                    let n = normal_a[&va];
+                    let nn = n[0].hypot(n[1]).max(f64::MIN_POSITIVE);
+                    let off = [x[vb][0] - x[va][0], x[vb][1] - x[va][1]];
+                    let normal_part = (off[0] * n[0] + off[1] * n[1]) / nn;
+                    let tangential = (d * d - normal_part * normal_part).max(0.0).sqrt();
+                    format!(
+                        "the nearest, node {}, is {d:.3e} away, {tangential:.3e} of it along the \
+                         interface (a match is at most h/2 = {:.3e} away and {:.3e} along it, \
+                         h = {h:.3e} the shorter local edge)",
+                        va + base,
+                        0.5 * h,
+                        TANGENTIAL_TOL * h
+                    )
+                }
+                None => format!(
+                    "no node of tag {tag_a} lies within half an edge ({radius:.3e}) of it along the interface"
+                ),
             };
             return Err(Error::contact(format!(
-                "node {} (contact tag {tag_b}) has no matching node on tag {tag_a}: {hint} \
-                 (non-conforming interfaces are not supported yet; hand over the contact mesh instead)",
+                "node {} (contact tag {tag_b}) has no matching node on tag {tag_a}: {hint}; \
+                 the two sides are not a matching (conforming) interface. Non-matching sides are \
+                 supported by the strip triangulation of B (contact::build, which every contact \
+                 pair uses, falls back to it; docs/method.md §6.11), or hand over a contact mesh",
                 vb + base
             )));
         };
@@ -347,15 +412,19 @@ pub fn conforming(
                 b2 + base
             )));
         }
-        let n = a.edges[&(a1.min(b1), a1.max(b1))];
-        for (tri, edge_len, apex) in [
-            ([a1, b1, b2], dist(x[a1], x[b1]), b2),
-            ([a1, b2, a2], dist(x[a2], x[b2]), a1),
+        // Each triangle is a spring on one node pair, (b1, b2) or (a1, a2):
+        // it measures the pair's gap along side a's nodal normal there, not
+        // along the chord's normal, which on a curved interface is tilted
+        // by half the chords' turn and reads tangential slip as an opening
+        // (docs/method.md §6.2; the same on a straight interface).
+        for (tri, edge_len, apex, normal) in [
+            ([a1, b1, b2], dist(x[a1], x[b1]), b2, a.node_normals[&b1]),
+            ([a1, b2, a2], dist(x[a2], x[b2]), a1, a.node_normals[&a1]),
         ] {
             let geo = TriGeometry::new(&nodes.corners(&tri));
             elements.push(ContactElement {
                 nodes: tri,
-                normal: n,
+                normal,
                 j0: geo.j,
                 h: geo.h,
                 edge_length: edge_len,
@@ -707,7 +776,8 @@ pub fn strip(nodes: Nodes<'_>, pair: usize, a: &Side, b: &Side) -> Result<Vec<Co
         Ok(elements) => Ok(elements),
         Err(conforming) => nonconforming(nodes, pair, a, b).map_err(|e| {
             Error::contact(format!(
-                "{} (as a conforming interface: {})",
+                "{} (B was to be the strip triangulation because the sides do not match as a \
+                 conforming interface: {})",
                 e.message(),
                 conforming.message()
             ))

@@ -355,7 +355,7 @@ impl Lame {
 /// when `map` is), and returns the grid's nodes by row (`rows[j][i]` at
 /// `map(xs[i], ys[j])`). The four triangles of a cell are pushed one after
 /// the other.
-fn criss_cross(
+pub(crate) fn criss_cross(
     mb: &mut MeshBuilder,
     xs: &[f64],
     ys: &[f64],

@@ -33,6 +33,7 @@ use crate::fem::material::{Material, PlaneMode};
 use crate::model::solution::ContactReport;
 use crate::model::{Component, Model};
 use crate::studies::meshgen::{Diagonal, MeshBuilder};
+use crate::studies::scenes::lame::criss_cross;
 
 /// Tag of the inner ring's outer arc (contact side a).
 pub const TAG_INNER: i32 = 2;
@@ -62,6 +63,11 @@ pub struct Rings {
     pub alpha1: f64,
     /// Cells along the quarter circle (radial cells: about square at R2).
     pub cells: usize,
+    /// Each cell split into four triangles by its centre (true, the
+    /// default: the mesh is mirror-symmetric about both axes, so the
+    /// rollers are exact symmetry conditions of the discrete full ring)
+    /// or into two by its "/" diagonal (a chiral mesh).
+    pub criss_cross: bool,
 }
 
 impl Default for Rings {
@@ -77,6 +83,7 @@ impl Default for Rings {
             alpha0: 1e7,
             alpha1: 1e6,
             cells: 16,
+            criss_cross: true,
         }
     }
 }
@@ -227,8 +234,9 @@ pub struct RingScene {
 #[derive(Debug, Clone, PartialEq)]
 pub struct RingResult {
     /// max over interface nodes |p_h − p_c| / max p_c, p_h the nodal
-    /// pressure (`contact::traction::nodal_pressures`: the normal contact
-    /// force on the node over its tributary length).
+    /// pressure: the radial contact force on the node (the direction of the
+    /// analytic traction) over its tributary length
+    /// (`contact::traction::nodal_pressures`' half edges).
     pub max_error: f64,
     /// The same error of the cos 2θ amplitude alone: |p2_h − p2| / |p2|,
     /// p2_h the least-squares fit of p0_h + p2_h cos 2θ to the nodal
@@ -282,20 +290,15 @@ impl Rings {
             }
         };
         let mut b = MeshBuilder::new();
-        let inner = b.add_mapped_grid(
-            &radii(self.r3, self.r2),
-            &thetas,
-            polar,
-            1,
-            Diagonal::Forward,
-        );
-        let outer = b.add_mapped_grid(
-            &radii(self.r2, self.r1),
-            &thetas,
-            polar,
-            2,
-            Diagonal::Forward,
-        );
+        let grid = |b: &mut MeshBuilder, rs: &[f64], body: i32| {
+            if self.criss_cross {
+                criss_cross(b, rs, &thetas, polar, body)
+            } else {
+                b.add_mapped_grid(rs, &thetas, polar, body, Diagonal::Forward)
+            }
+        };
+        let inner = grid(&mut b, &radii(self.r3, self.r2), 1);
+        let outer = grid(&mut b, &radii(self.r2, self.r1), 2);
         // rows[j][i]: angle j, radius i.
         let last = |g: &Vec<Vec<usize>>| g[0].len() - 1;
         let arc =
@@ -384,23 +387,32 @@ impl RingScene {
         let f = self.model.contact_forces()?;
         let elements = self.model.contact_elements()?;
         let x = mesh.nodes();
-        let pressures = nodal_pressures(Nodes::of(mesh), elements, |v| f[v]);
+        // The contact pushes the inner ring inwards and the outer one
+        // outwards: the pressure is ∓ the radial force over the tributary
+        // length. (The library's normal at an end node is its one chord's,
+        // tilted by half a cell from the radial direction.)
+        let inner: std::collections::BTreeSet<usize> = self.interface[..self.interface.len() / 2]
+            .iter()
+            .copied()
+            .collect();
+        let pressures: Vec<(usize, f64)> = nodal_pressures(Nodes::of(mesh), elements, |v| f[v])
+            .iter()
+            .map(|q| {
+                let (v, r) = (q.node, x[q.node][0].hypot(x[q.node][1]));
+                let radial = (f[v][0] * x[v][0] + f[v][1] * x[v][1]) / r;
+                let sign = if inner.contains(&v) { -1.0 } else { 1.0 };
+                (v, sign * radial / q.tributary)
+            })
+            .collect();
         let scale = self.exact.p0 + self.exact.p2.abs();
         let mut max_error = 0.0f64;
         // Least squares of p0_h + p2_h c over the nodes (c = cos 2θ).
         let (mut s1, mut sc, mut scc, mut sp, mut spc) = (0.0, 0.0, 0.0, 0.0, 0.0);
-        for q in &pressures {
-            let theta = x[q.node][1].atan2(x[q.node][0]);
-            max_error =
-                max_error.max((q.pressure - self.exact.contact_pressure(theta)).abs() / scale);
+        for &(v, p) in &pressures {
+            let theta = x[v][1].atan2(x[v][0]);
+            max_error = max_error.max((p - self.exact.contact_pressure(theta)).abs() / scale);
             let c = (2.0 * theta).cos();
-            (s1, sc, scc, sp, spc) = (
-                s1 + 1.0,
-                sc + c,
-                scc + c * c,
-                sp + q.pressure,
-                spc + q.pressure * c,
-            );
+            (s1, sc, scc, sp, spc) = (s1 + 1.0, sc + c, scc + c * c, sp + p, spc + p * c);
         }
         let p2_h = (s1 * spc - sc * sp) / (s1 * scc - sc * sc);
         let released = self.model.contact_active()?.iter().filter(|a| !**a).count();
