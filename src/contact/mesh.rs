@@ -343,24 +343,24 @@ pub fn conforming(
                 best = Some((d, va));
             }
         }
-        let matched = best.filter(|&(d, va)| {
+        // The local h of a candidate and the offset's part along the
+        // interface (across its normal at va).
+        let along = |d: f64, va: usize| {
             let h = hb.min(local_h[&va]);
             let n = normal_a[&va];
             let nn = n[0].hypot(n[1]).max(f64::MIN_POSITIVE);
             let off = [x[vb][0] - x[va][0], x[vb][1] - x[va][1]];
             let normal_part = (off[0] * n[0] + off[1] * n[1]) / nn;
-            let tangential = (d * d - normal_part * normal_part).max(0.0).sqrt();
+            (h, (d * d - normal_part * normal_part).max(0.0).sqrt())
+        };
+        let matched = best.filter(|&(d, va)| {
+            let (h, tangential) = along(d, va);
             d <= 0.5 * h && tangential <= TANGENTIAL_TOL * h
         });
         let Some((_, va)) = matched else {
             let hint = match best {
                 Some((d, va)) => {
-                    let h = hb.min(local_h[&va]);
-                    let n = normal_a[&va];
-                    let nn = n[0].hypot(n[1]).max(f64::MIN_POSITIVE);
-                    let off = [x[vb][0] - x[va][0], x[vb][1] - x[va][1]];
-                    let normal_part = (off[0] * n[0] + off[1] * n[1]) / nn;
-                    let tangential = (d * d - normal_part * normal_part).max(0.0).sqrt();
+                    let (h, tangential) = along(d, va);
                     format!(
                         "the nearest, node {}, is {d:.3e} away, {tangential:.3e} of it along the \
                          interface (a match is at most h/2 = {:.3e} away and {:.3e} along it, \

@@ -451,13 +451,8 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
                     // The slip loads the solve implied, as the verdict reads
                     // them.
                     for &k in &slipping {
-                        let tri = &set.elements()[k].nodes;
-                        let ue = std::array::from_fn(|a| {
-                            let g = 2 * tri[a / 2] + a % 2;
-                            match dofs.free(g) {
-                                NOT_FREE => prescribed[g],
-                                i => sys.position(i).map_or(state.x1[i], |p| ui[p]),
-                            }
+                        let ue = element_values(set, (dofs, prescribed), k, |i| {
+                            sys.position(i).map_or(state.x1[i], |p| ui[p])
                         });
                         self.friction[k] = set.slip_load(k, &ue, self.friction[k]);
                     }
@@ -546,19 +541,10 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
     /// The contact law's verdict on the current iterate
     /// ([`ContactSet::verdict`]).
     fn verdict(&self) -> Verdict {
-        let (dofs, prescribed) = (self.input.at.dofs, self.input.prescribed);
-        let elements = self.input.set.elements();
+        let at = (self.input.at.dofs, self.input.prescribed);
+        let set = self.input.set;
         let current = (self.set.active(), &self.friction[..]);
-        self.input.set.verdict(current, |k| {
-            let tri = &elements[k].nodes;
-            std::array::from_fn(|a| {
-                let g = 2 * tri[a / 2] + a % 2;
-                match dofs.free(g) {
-                    NOT_FREE => prescribed[g],
-                    i => self.value(i),
-                }
-            })
-        })
+        set.verdict(current, |k| element_values(set, at, k, |i| self.value(i)))
     }
 
     /// The settled solution over all unknowns, refined against the final
@@ -609,46 +595,34 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         }))
     }
 
-    /// Sets the slip loads to those of the pressures of the field `x`
-    /// (over the unknowns).
-    fn take_slip_loads(&mut self, x: &[f64]) {
+    /// The slip loads of the slipping elements, (k, c_k), that go with the
+    /// pressures of the field `x` (over the unknowns).
+    fn slip_loads_of(&self, x: &[f64]) -> Vec<(usize, f64)> {
         let set = self.input.set;
-        let (dofs, prescribed) = (self.input.at.dofs, self.input.prescribed);
-        for k in set.slipping(self.set.active()) {
-            let tri = &set.elements()[k].nodes;
-            let ue = std::array::from_fn(|a| {
-                let g = 2 * tri[a / 2] + a % 2;
-                match dofs.free(g) {
-                    NOT_FREE => prescribed[g],
-                    i => x[i],
-                }
-            });
-            self.friction[k] = set.slip_load(k, &ue, self.friction[k]);
+        let at = (self.input.at.dofs, self.input.prescribed);
+        set.slipping(self.set.active())
+            .into_iter()
+            .map(|k| {
+                let ue = element_values(set, at, k, |i| x[i]);
+                (k, set.slip_load(k, &ue, self.friction[k]))
+            })
+            .collect()
+    }
+
+    /// Sets the slip loads to those of the pressures of the field `x`.
+    fn take_slip_loads(&mut self, x: &[f64]) {
+        for (k, c) in self.slip_loads_of(x) {
+            self.friction[k] = c;
         }
     }
 
     /// Whether the slip loads agree with the pressures of the field `x`
-    /// (over the unknowns) to [`FRICTION_TOL`] of the largest.
+    /// to [`FRICTION_TOL`] of the largest.
     fn slip_loads_hold(&self, x: &[f64]) -> bool {
-        let set = self.input.set;
-        let slipping = set.slipping(self.set.active());
-        if slipping.is_empty() {
-            return true;
-        }
-        let (dofs, prescribed) = (self.input.at.dofs, self.input.prescribed);
         let scale = self.friction.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-        slipping.iter().all(|&k| {
-            let tri = &set.elements()[k].nodes;
-            let ue = std::array::from_fn(|a| {
-                let g = 2 * tri[a / 2] + a % 2;
-                match dofs.free(g) {
-                    NOT_FREE => prescribed[g],
-                    i => x[i],
-                }
-            });
-            let c = set.slip_load(k, &ue, self.friction[k]);
-            (c - self.friction[k]).abs() <= FRICTION_TOL * scale
-        })
+        self.slip_loads_of(x)
+            .iter()
+            .all(|&(k, c)| (c - self.friction[k]).abs() <= FRICTION_TOL * scale)
     }
 
     /// Settled at once: x₁ is the answer, not yet refined.
@@ -722,6 +696,24 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         check_finite(self.input.at, &x, context)?;
         Ok(x)
     }
+}
+
+/// The displacements of element `k` of `set`: prescribed values where its
+/// DOFs have no unknown, `value(i)` of unknown i elsewhere.
+fn element_values(
+    set: &ContactSet<'_>,
+    (dofs, prescribed): (&DofMap, &[f64]),
+    k: usize,
+    value: impl Fn(usize) -> f64,
+) -> [f64; 6] {
+    let tri = &set.elements()[k].nodes;
+    std::array::from_fn(|a| {
+        let g = 2 * tri[a / 2] + a % 2;
+        match dofs.free(g) {
+            NOT_FREE => prescribed[g],
+            i => value(i),
+        }
+    })
 }
 
 /// Adds the friction loads Σ_e (c_e − c_ref,e) b_t,e to the interface
@@ -819,18 +811,8 @@ pub(crate) fn expand(
     x1: Vec<f64>,
     ui: Vec<f64>,
 ) -> Result<Vec<f64>> {
-    let changes = Changes {
-        set: target.set,
-        active: target.active,
-        initial: reference,
-        n: target.at.dofs.n_free(),
-        friction: target.friction,
-    };
-    let position = |j: usize| {
-        sys.position(j)
-            .expect("coupled unknowns are on the interface")
-    };
-    let mut x = changes.product(&|j| ui[position(j)], true);
+    let changes = Changes::of(&target, reference);
+    let mut x = changes.product(&|j| ui[interface_position(sys, j)], true);
     // Near the solve's memory peak: free the vectors done with.
     drop(ui);
     chol.solve(&mut x)?;
@@ -849,22 +831,12 @@ pub(crate) fn refine_expanded(
     (sys, reference): (&Condensed, &[bool]),
     x: &mut [f64],
 ) -> Result<()> {
-    let changes = Changes {
-        set: target.set,
-        active: target.active,
-        initial: reference,
-        n: target.at.dofs.n_free(),
-        friction: target.friction,
-    };
-    let position = |j: usize| {
-        sys.position(j)
-            .expect("coupled unknowns are on the interface")
-    };
+    let changes = Changes::of(&target, reference);
     let mut solve = |r: &mut [f64]| -> Result<()> {
         // K δ = r: y = K₁⁻¹r, S δ_I = S₁ y_I, δ = y + K₁⁻¹PΔC δ_I.
         chol.solve(r)?;
         let di = sys.solve(&sys.gather(r), &vec![0.0; sys.len()])?;
-        let mut p = changes.product(&|j| di[position(j)], false);
+        let mut p = changes.product(&|j| di[interface_position(sys, j)], false);
         chol.solve(&mut p)?;
         r.iter_mut().zip(&p).for_each(|(a, b)| *a += b);
         Ok(())
@@ -884,7 +856,24 @@ struct Changes<'c, 's> {
     friction: (&'c [f64], &'c [f64]),
 }
 
-impl Changes<'_, '_> {
+/// The interface position of an unknown a contact element couples.
+fn interface_position(sys: &Condensed, j: usize) -> usize {
+    sys.position(j)
+        .expect("coupled unknowns are on the interface")
+}
+
+impl<'c, 's> Changes<'c, 's> {
+    /// The changes of `target`'s set relative to K₁'s set `reference`.
+    fn of(target: &Target<'c, 's>, reference: &'c [bool]) -> Changes<'c, 's> {
+        Changes {
+            set: target.set,
+            active: target.active,
+            initial: reference,
+            n: target.at.dofs.n_free(),
+            friction: target.friction,
+        }
+    }
+
     /// p = ΔC v_I − Δg over the unknowns (the load only `with_load`),
     /// ΔC = C₁ − C and Δg = g₁ − g: what the elements removed since K₁ took
     /// out of it and its load, minus what the added ones put in. `v` gives
