@@ -248,3 +248,36 @@ fn reverting_a_frictional_step_restores_its_slip_state_bit_for_bit() {
             .all(|(a, b)| a.to_bits() == b.to_bits())
     );
 }
+
+#[test]
+fn each_proportional_step_after_the_first_settles_in_one_iteration() {
+    // The slip loads are implicit in the condensed solve: a step whose
+    // stick/slip state does not change is one solve, as without friction.
+    for mu in [0.1, 0.3, 1.0] {
+        let mut scene = seed(1.0 / 64.0, mu);
+        for k in 1..=10 {
+            let r = scene
+                .model
+                .step(k as f64 / 10.0, &ContactOptions::default())
+                .unwrap();
+            if k > 1 {
+                assert_eq!(r.iterations, 1, "μ = {mu}, step {k}");
+            }
+        }
+    }
+}
+
+#[test]
+fn a_step_that_repeats_the_last_loads_settles_at_once_without_slip() {
+    // Zero slip and |τ| = μp exactly: round-off must not switch the slip
+    // zone between stick and slip (it cycled before the switch tolerance).
+    let mut scene = seed(1.0 / 32.0, 0.3);
+    scene.model.step(1.0, &ContactOptions::default()).unwrap();
+    let before = displacements(&scene);
+    let r = scene.model.step(1.0, &ContactOptions::default()).unwrap();
+    assert_eq!(r.iterations, 1);
+    let d = relative_difference(&displacements(&scene), &before);
+    assert!(d < 1e-9, "{d:e}");
+    let slip_energy: f64 = scene.model.contact_dissipation().unwrap().iter().sum();
+    assert!(slip_energy.abs() < 1e-12, "{slip_energy:e}");
+}
