@@ -362,23 +362,19 @@ pub fn conforming(
                 Some((d, va)) => {
                     let (h, tangential) = along(d, va);
                     format!(
-                        "the nearest, node {}, is {d:.3e} away, {tangential:.3e} of it along the \
-                         interface (a match is at most h/2 = {:.3e} away and {:.3e} along it, \
-                         h = {h:.3e} the shorter local edge)",
+                        "nearest node {} is {d:.3e} away, {tangential:.3e} along the interface \
+                         (a match: at most {:.3e} away, {:.3e} along)",
                         va + base,
                         0.5 * h,
                         TANGENTIAL_TOL * h
                     )
                 }
-                None => format!(
-                    "no node of tag {tag_a} lies within half an edge ({radius:.3e}) of it along the interface"
-                ),
+                None => format!("no node of tag {tag_a} within half an edge ({radius:.3e})"),
             };
             return Err(Error::contact(format!(
                 "node {} (contact tag {tag_b}) has no matching node on tag {tag_a}: {hint}; \
-                 the two sides are not a matching (conforming) interface. Non-matching sides are \
-                 supported by the strip triangulation of B (contact::build, which every contact \
-                 pair uses, falls back to it; docs/method.md §6.11), or hand over a contact mesh",
+                 non-matching sides take the strip triangulation of B (docs/method.md §6.11) \
+                 or a handed-over contact mesh",
                 vb + base
             )));
         };
@@ -775,11 +771,15 @@ pub fn strip(nodes: Nodes<'_>, pair: usize, a: &Side, b: &Side) -> Result<Vec<Co
     match conforming(nodes, pair, a, b) {
         Ok(elements) => Ok(elements),
         Err(conforming) => nonconforming(nodes, pair, a, b).map_err(|e| {
+            // The strip's reason comes first; the conforming test's, cut
+            // short, says why the strip was tried (messages stay short).
+            let mut why: String = conforming.message().chars().take(160).collect();
+            if why.len() < conforming.message().len() {
+                why.push('…');
+            }
             Error::contact(format!(
-                "{} (B was to be the strip triangulation because the sides do not match as a \
-                 conforming interface: {})",
-                e.message(),
-                conforming.message()
+                "{} (as the strip triangulation; as a conforming interface: {why})",
+                e.message()
             ))
         }),
     }
