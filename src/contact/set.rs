@@ -382,6 +382,32 @@ impl<'a> ContactSet<'a> {
             .collect()
     }
 
+    /// The flags a step starts from after a step that ended with the flags
+    /// `warm` and the friction loads `loads` (its [`FrictionState`], which
+    /// this set was built with): `warm`, with the stick part on for every
+    /// element that closed in that step. Those ended without a stick part
+    /// (they carried no shear) and stick from the step's end, with the load
+    /// c = G_c γ_p/T that [`ContactSet::friction_outcome`] gave them; left
+    /// as they were, they would start the step slipping with c = 0, in no
+    /// direction. Unchanged when frictionless.
+    pub fn warm_flags(&self, warm: &[bool], loads: &[f64]) -> Vec<bool> {
+        let mut flags = warm.to_vec();
+        let Some(f) = &self.friction else {
+            return flags;
+        };
+        let n = self.len();
+        if loads.len() != n || warm.len() != 2 * n {
+            return flags;
+        }
+        for k in 0..n {
+            let closed = !f.anchors[k].is_nan() && loads[k] == f.g_over_t[k] * f.anchors[k];
+            if warm[k] && !warm[n + k] && closed {
+                flags[n + k] = true;
+            }
+        }
+        flags
+    }
+
     /// Whether element `k` was open at the step's start (its anchor is
     /// NaN): closed in this step, it carries no shear until the next.
     pub fn closing(&self, k: usize) -> bool {
@@ -515,9 +541,11 @@ impl<'a> ContactSet<'a> {
                 *anchor = f64::NAN;
             } else if anchor.is_nan() {
                 // Closed in this step without shear: stress-free where the
-                // step left it.
+                // step left it, sticking from there (its stick load, which
+                // [`ContactSet::warm_flags`] recognises).
                 out.state[k] = 1;
                 *anchor = gamma;
+                out.next.loads[k] = f.g_over_t[k] * gamma;
             } else if active[n + k] {
                 out.state[k] = 1;
                 out.shear[k] = f.g_over_t[k] * (gamma - f.anchors[k]);
