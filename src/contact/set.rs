@@ -69,6 +69,11 @@ struct Friction {
 /// switched between stick and slip for ever (found by the C boundary test).
 pub const SWITCH_TOL: f64 = 1e-9;
 
+/// How far beyond its pair's smallest gap, relative to its size, an
+/// element's gap may be (round-off of the coordinates) for the element to
+/// close with the first point of contact ([`ContactSet::with_friction`]).
+pub const TOUCHING: f64 = 1e-9;
+
 /// The verdict of the contact law on a solve ([`ContactSet::verdict`]).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Verdict {
@@ -82,7 +87,8 @@ pub struct Verdict {
 /// ([`ContactSet::friction_outcome`]).
 #[derive(Debug, Clone, PartialEq)]
 pub struct FrictionOutcome {
-    /// Per element: 0 open, 1 stick, 2 slip.
+    /// Per element: 0 open, 1 stick (also an element that closed in the
+    /// step, which carries no shear in it), 2 slip.
     pub state: Vec<u8>,
     /// Per element: the shear traction τ = n·σ·t (t = (−n_y, n_x)), Pa.
     pub shear: Vec<f64>,
@@ -98,7 +104,8 @@ pub struct FrictionOutcome {
 /// of the last solve (element loads c·b_t).
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct FrictionState {
-    /// γ_p per element.
+    /// γ_p per element; NaN for an element open at the end of the step,
+    /// which has no slip to remember ([`ContactSet::closing`]).
     pub anchors: Vec<f64>,
     /// c per element.
     pub loads: Vec<f64>,
@@ -181,7 +188,11 @@ impl<'a> ContactSet<'a> {
 
     /// Makes the set frictional (docs/method.md §6.15): Coulomb's law with
     /// coefficient `mu[k]` and stick shear modulus `shear_modulus[k]` for
-    /// element k, starting from the slip `anchors` (empty: none). Every
+    /// element k, starting from the slip `anchors` (empty: none for the
+    /// elements at their pair's smallest gap, [`TOUCHING`], NaN, open, for
+    /// the others). A
+    /// NaN anchor marks an element open at the step's start: should it
+    /// close, it carries no shear in this step ([`ContactSet::verdict`]). Every
     /// element then has two parts ([`ContactSet::parts`]): its normal part,
     /// and its stick part k + n. `prescribed` as in [`ContactSet::new`].
     pub fn with_friction(
@@ -216,7 +227,13 @@ impl<'a> ContactSet<'a> {
         ensure_finite(values, 36, "stick stiffness", name)?;
         let stick_loads = element_loads(&self.elements, &stick, &self.unknowns, prescribed);
         let anchors = if anchors.is_empty() {
-            vec![0.0; n]
+            // The elements at their pair's smallest gap (to round-off) close
+            // first, all together: they stick from the unloaded state. The
+            // others close later along the load, where is not known: open.
+            within_smallest_gap(&self.elements, TOUCHING)
+                .into_iter()
+                .map(|first| if first { 0.0 } else { f64::NAN })
+                .collect()
         } else {
             anchors.to_vec()
         };
@@ -303,11 +320,15 @@ impl<'a> ContactSet<'a> {
     }
 
     /// The active set the loop starts from ([`initial_active_set`]), over
-    /// parts: a frictional element starts sticking.
+    /// parts: a frictional element starts sticking, unless it closes in
+    /// this step ([`ContactSet::closing`]).
     pub fn initial_active(&self) -> Vec<bool> {
         let mut active = initial_active_set(&self.elements);
         if self.friction.is_some() {
-            active.extend_from_within(..);
+            let stick: Vec<bool> = (0..self.len())
+                .map(|k| active[k] && !self.closing(k))
+                .collect();
+            active.extend(stick);
         }
         active
     }
@@ -323,7 +344,7 @@ impl<'a> ContactSet<'a> {
         };
         let n = self.len();
         (0..n)
-            .map(|k| match active[n + k] {
+            .map(|k| match active[n + k] && !f.anchors[k].is_nan() {
                 true => f.g_over_t[k] * f.anchors[k],
                 false => 0.0,
             })
@@ -349,13 +370,50 @@ impl<'a> ContactSet<'a> {
     }
 
     /// The elements that slip under the flags `active` (over parts):
-    /// active and not sticking. Empty when frictionless.
+    /// active, not sticking, and not closing in this step (those carry no
+    /// shear). Empty when frictionless.
     pub fn slipping(&self, active: &[bool]) -> Vec<usize> {
-        if self.friction.is_none() {
+        let Some(f) = &self.friction else {
             return Vec::new();
-        }
+        };
         let n = self.len();
-        (0..n).filter(|&k| active[k] && !active[n + k]).collect()
+        (0..n)
+            .filter(|&k| active[k] && !active[n + k] && !f.anchors[k].is_nan())
+            .collect()
+    }
+
+    /// The flags a step starts from after a step that ended with the flags
+    /// `warm` and the friction loads `loads` (its [`FrictionState`], which
+    /// this set was built with): `warm`, with the stick part on for every
+    /// element that closed in that step. Those ended without a stick part
+    /// (they carried no shear) and stick from the step's end, with the load
+    /// c = G_c γ_p/T that [`ContactSet::friction_outcome`] gave them; left
+    /// as they were, they would start the step slipping with c = 0, in no
+    /// direction. Unchanged when frictionless.
+    pub fn warm_flags(&self, warm: &[bool], loads: &[f64]) -> Vec<bool> {
+        let mut flags = warm.to_vec();
+        let Some(f) = &self.friction else {
+            return flags;
+        };
+        let n = self.len();
+        if loads.len() != n || warm.len() != 2 * n {
+            return flags;
+        }
+        for k in 0..n {
+            let closed = !f.anchors[k].is_nan() && loads[k] == f.g_over_t[k] * f.anchors[k];
+            if warm[k] && !warm[n + k] && closed {
+                flags[n + k] = true;
+            }
+        }
+        flags
+    }
+
+    /// Whether element `k` was open at the step's start (its anchor is
+    /// NaN): closed in this step, it carries no shear until the next.
+    pub fn closing(&self, k: usize) -> bool {
+        self.friction
+            .as_ref()
+            .is_some_and(|f| f.anchors[k].is_nan())
     }
 
     /// The slip traction of element `k` as a function of its displacements
@@ -399,8 +457,14 @@ impl<'a> ContactSet<'a> {
     /// instead, the penalty G_c/T magnifies any sway of the bodies past μp:
     /// slip zones swap direction from iteration to iteration and never
     /// stick.) An element that was not active in the solve starts sticking:
-    /// its pressure and shear were those of a free element. Frictionless:
-    /// the inversion test and no loads.
+    /// its pressure and shear were those of a free element. An element open
+    /// at the step's start ([`ContactSet::closing`]) that closes has its
+    /// normal part only, no shear, for the rest of the step: where along the
+    /// step it closed, hence its stress-free shear, is not known until the
+    /// step ends, and anchored at the step's start, a closing element on a
+    /// curved gap (whose γ moved while it was open) took a shear that opened
+    /// it again, and the edge of contact cycled. Frictionless: the inversion
+    /// test and no loads.
     pub fn verdict(
         &self,
         (current, c): (&[bool], &[f64]),
@@ -417,7 +481,7 @@ impl<'a> ContactSet<'a> {
         let mut flags = normal.clone();
         flags.resize(2 * n, false);
         let mut next = vec![0.0; n];
-        for k in (0..n).filter(|&k| normal[k]) {
+        for k in (0..n).filter(|&k| normal[k] && !f.anchors[k].is_nan()) {
             let ue = values(k);
             let limit = f.mu[k] * self.pressure(k, &ue).max(0.0);
             let gamma = 2.0 * dot6(&f.bt[k], &ue);
@@ -471,8 +535,17 @@ impl<'a> ContactSet<'a> {
             let gamma = 2.0 * dot6(&f.bt[k], &values(k));
             let anchor = &mut out.next.anchors[k];
             if !active[k] {
-                // An open element forgets its slip: it closes stress-free.
+                // An open element forgets its slip: should it close, it
+                // carries no shear in that step, and sticks from where the
+                // step left it.
+                *anchor = f64::NAN;
+            } else if anchor.is_nan() {
+                // Closed in this step without shear: stress-free where the
+                // step left it, sticking from there (its stick load, which
+                // [`ContactSet::warm_flags`] recognises).
+                out.state[k] = 1;
                 *anchor = gamma;
+                out.next.loads[k] = f.g_over_t[k] * gamma;
             } else if active[n + k] {
                 out.state[k] = 1;
                 out.shear[k] = f.g_over_t[k] * (gamma - f.anchors[k]);
@@ -841,6 +914,12 @@ pub fn format_history(h: &[IterationRecord]) -> String {
 /// that the loop grows the set instead of releasing a glued interface one
 /// element at a time.
 pub fn initial_active_set(elements: &[ContactElement]) -> Vec<bool> {
+    within_smallest_gap(elements, 1e-3)
+}
+
+/// Per element: whether its gap is within `tol` of its size of its pair's
+/// smallest gap.
+fn within_smallest_gap(elements: &[ContactElement], tol: f64) -> Vec<bool> {
     let gap = |e: &ContactElement| {
         if e.edge_length > 0.0 {
             e.j0 / e.edge_length
@@ -855,7 +934,7 @@ pub fn initial_active_set(elements: &[ContactElement]) -> Vec<bool> {
     }
     elements
         .iter()
-        .map(|e| gap(e) <= smallest[&e.pair] + 1e-3 * e.h)
+        .map(|e| gap(e) <= smallest[&e.pair] + tol * e.h)
         .collect()
 }
 

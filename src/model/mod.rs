@@ -960,12 +960,9 @@ fn decode(bytes: &[u8], fingerprint: u64) -> Result<StepState> {
             .map(|c| f64::from_le_bytes(c.try_into().expect("8 bytes")));
         friction.anchors = v.by_ref().take(f).collect();
         friction.loads = v.collect();
-        if !friction
-            .anchors
-            .iter()
-            .chain(&friction.loads)
-            .all(|x| x.is_finite())
-        {
+        // A NaN anchor is an open element's (docs/method.md §6.15).
+        let anchors_ok = friction.anchors.iter().all(|x| x.is_finite() || x.is_nan());
+        if !anchors_ok || !friction.loads.iter().all(|x| x.is_finite()) {
             return Err(bad("a friction value is not finite"));
         }
     }

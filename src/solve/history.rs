@@ -580,7 +580,7 @@ fn step_in_history(
         interface: None,
         options: *options,
     };
-    let warm = h.warm.clone();
+    let warm = set.warm_flags(&h.warm, &h.friction.loads);
     let friction = match h.friction.loads.is_empty() {
         true => set.stick_loads(&warm),
         false => h.friction.loads.clone(),

@@ -759,7 +759,8 @@ impl CattaneoScene {
     }
 
     /// Solves the scene with TFEM's frictional elements (μ = `cm.mu` on the
-    /// pair): the normal step to the load P of the target a, then one
+    /// pair): the normal step to the load P of the target a (in
+    /// `cm.normal_steps` equal increments of δₙ), then one
     /// tangential step per ratio Q/(μP), each found by secant iterations
     /// on a step that is reverted until it hits its target (to 1e-9).
     pub fn solve_tfem(&mut self, cm: &CattaneoMindlin, ratios: &[f64]) -> Result<TfemCattaneo> {
@@ -802,8 +803,33 @@ impl CattaneoScene {
         let t0 = std::time::Instant::now();
         let p_of = |s: &FrictionalStep| s.contact_resultant()[0] - target;
         let d0 = target / cm.e_star();
-        let (dn, normal, trials) =
+        let (mut dn, mut normal, mut trials) =
             secant(self, &|dn| [0.0, -dn], &p_of, (0.0, -target, d0), target)?;
+        let ns = cm.normal_steps.max(1);
+        // The increments' counts (the secant holds the totals borrowed).
+        let (mut inc_factorisations, mut inc_iterations) = (0, 0);
+        if ns > 1 {
+            // The same load in `ns` equal increments of δₙ (the last one
+            // found by the secant again): an element that closes in an
+            // increment carries no shear in it and sticks from its end
+            // (docs/method.md §6.15), so increments resolve where along the
+            // load each element closes.
+            self.model.revert_step()?;
+            for i in 1..ns {
+                let (_, report) = self.tfem_step([0.0, -dn * i as f64 / ns as f64], cm.mu)?;
+                inc_factorisations += report.info.factorizations;
+                inc_iterations += report.iterations;
+            }
+            let y = p_of(&self.tfem_step([0.0, -dn], cm.mu)?.0);
+            self.model.revert_step()?;
+            (dn, normal, trials) = secant(
+                self,
+                &|dn| [0.0, -dn],
+                &p_of,
+                (dn, y, dn * (1.0 + 1e-3)),
+                target,
+            )?;
+        }
         steps.push(self.measure(cm, normal, [0.0, -dn], 0.0, trials, t0)?);
         let mut slope = cm.e_star();
         for &ratio in ratios {
@@ -828,8 +854,8 @@ impl CattaneoScene {
         }
         Ok(TfemCattaneo {
             steps,
-            iterations,
-            factorisations,
+            iterations: iterations + inc_iterations,
+            factorisations: factorisations + inc_factorisations,
             min_dissipation,
             seconds: t_start.elapsed().as_secs_f64(),
         })
