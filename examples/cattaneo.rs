@@ -1,7 +1,8 @@
-//! Cattaneo–Mindlin with the exact frictional oracle: a cylinder pressed on
-//! a block (Hertz half-width a = 0.005R by default), then sheared by Q < μP in steps;
-//! stick half-width c and shear traction q(x) against Johnson §7.1 as the
-//! mesh is refined.
+//! Cattaneo–Mindlin with the exact frictional oracle, then with TFEM's
+//! frictional elements: a cylinder pressed on a block (Hertz half-width
+//! a = 0.005R by default), then sheared by Q < μP in steps; stick
+//! half-width c and shear traction q(x) against Johnson §7.1 as the mesh
+//! is refined.
 //!
 //! `cargo run --release --example cattaneo -- [levels…]` (levels k: h = a/k,
 //! default 8 16 32 64).
@@ -131,6 +132,67 @@ fn main() {
                 q(3),
                 q(4)
             );
+        }
+    }
+
+    // TFEM on the same meshes: the normal step, then the same tangential
+    // steps, each hit by a secant on the platen's displacement.
+    println!(
+        "\nTFEM's frictional elements (docs/method.md §6.15) on the same meshes:\n\n\
+         | h | step | Q/(μP) | trials | contact iterations | time [s] | err a | err c (fit) | err q (L2) | err q (max/μp₀) |\n\
+         |---|---|---|---|---|---|---|---|---|---|"
+    );
+    let mut table: Vec<Vec<[f64; 2]>> = Vec::new();
+    for &k in &levels {
+        let cm = CattaneoMindlin {
+            mesh_size: base.half_width / k,
+            ..base
+        };
+        let mut scene = cm.build().unwrap();
+        let out = match scene.solve_tfem(&cm, &ratios) {
+            Ok(out) => out,
+            Err(e) => {
+                println!("| a/{k} | {e} | | | | | | | | |");
+                continue;
+            }
+        };
+        let mut row = Vec::new();
+        for (i, s) in out.steps.iter().enumerate() {
+            let ea = (s.a - s.analytic.a) / s.analytic.a;
+            let ef = (s.c_fit - s.analytic.c) / s.analytic.a;
+            let (ql2, qmax) = match i {
+                0 => ("–".to_string(), format!("{:.2e}", s.q_error_max)),
+                _ => (
+                    format!("{:.2e}", s.q_error_l2),
+                    format!("{:.2e}", s.q_error_max),
+                ),
+            };
+            println!(
+                "| a/{k} | {i} | {:.3} | {} | {} | {:.2} | {ea:+.2e} | {ef:+.2e} | {ql2} | {qmax} |",
+                s.q / (cm.mu * s.p),
+                s.trials,
+                s.step.iterations,
+                s.seconds,
+            );
+            row.push([ef.abs(), s.q_error_l2]);
+        }
+        println!(
+            "| a/{k} | all | | | {} | {:.2} | factorisations {} | min dissipation {:.1e} | | |",
+            out.iterations, out.seconds, out.factorisations, out.min_dissipation
+        );
+        table.push(row);
+    }
+    if table.len() >= 2 && table.len() == levels.len() {
+        let h: Vec<f64> = levels.iter().map(|k| 1.0 / k).collect();
+        println!(
+            "\nTFEM's fitted rates over the levels:\n\n| step | c (fit) | q (L2) |\n|---|---|---|"
+        );
+        for i in 1..table[0].len() {
+            let rate = |j: usize| {
+                let e: Vec<f64> = table.iter().map(|r| r[i][j]).collect();
+                fitted_rate(&h, &e)
+            };
+            println!("| {i} | {:.2} | {:.2} |", rate(0), rate(1));
         }
     }
 }

@@ -1170,7 +1170,10 @@ module tfem
     !! `tfem_add_contact_pair`): stick while the shear stays within μ times the pressure, slip
     !! against the slip of the step beyond (docs/method.md §6.15). 0, the default, is frictionless,
     !! bit for bit. A negative or non-finite μ, or an unknown pair, is refused
-    !! (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load history.
+    !! (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load history; turning
+    !! friction on or off rebuilds the pair's contact mesh, whose elements then measure every point
+    !! of the interface along the first side's normal there (frictional) or along their own edges'
+    !! normals (frictionless).
     function tfem_set_friction(model, pair, mu) &
         bind(C, name="tfem_set_friction") result(status)
       import

@@ -879,7 +879,10 @@ enum tfem_status tfem_set_contact_state(struct tfem_model *model,
  * (docs/method.md §6.15). 0, the default, is frictionless, bit for bit.
  * A negative or non-finite μ, or an unknown pair, is refused
  * (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load
- * history.
+ * history; turning friction on or off rebuilds the pair's contact mesh,
+ * whose elements then measure every point of the interface along the
+ * first side's normal there (frictional) or along their own edges'
+ * normals (frictionless).
  */
 enum tfem_status tfem_set_friction(struct tfem_model *model, int pair, double mu);
 

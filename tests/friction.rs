@@ -281,3 +281,28 @@ fn a_step_that_repeats_the_last_loads_settles_at_once_without_slip() {
     let slip_energy: f64 = scene.model.contact_dissipation().unwrap().iter().sum();
     assert!(slip_energy.abs() < 1e-12, "{slip_energy:e}");
 }
+
+#[test]
+fn unloading_from_twice_the_load_at_mu_one_settles_with_positive_dissipation() {
+    // It cycled before (docs/method.md §6.15): an edge element opened while
+    // its neighbours stuck and closed again sticking, with the shear of the
+    // slip its nodes made while it was open, which opened it again. Closing
+    // again, it now slips along that shear.
+    for h in [1.0 / 64.0, 1.0 / 256.0] {
+        let mut s = seed(h, 1.0);
+        let options = ContactOptions::default();
+        let mut slip = Vec::new();
+        for t in [1.0, 2.0, 1.0] {
+            let report = s.model.step(t, &options).unwrap();
+            slip.push(s.measure(report).unwrap().slip_edge);
+        }
+        let d: Vec<f64> = s.model.contact_dissipation().unwrap();
+        assert!(d.iter().all(|&v| v >= 0.0));
+        // Measured: the unloading step dissipates 0.10 (h = 1/64) and 0.083
+        // J/m (1/256), and leaves the corner slid by 1.26 and 1.24 times
+        // its first-step value (path dependence).
+        let total: f64 = d.iter().sum();
+        assert!(total > 0.05, "h = {h}: dissipation {total}");
+        assert!(slip[2] > 1.1 * slip[0], "h = {h}: slip_edge {slip:?}");
+    }
+}

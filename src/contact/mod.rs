@@ -31,7 +31,7 @@ pub use law::{
 };
 pub use mesh::{
     Nodes, Side, build, build_all, build_conforming, build_nonconforming, check_user_mesh,
-    pair_bodies,
+    pair_bodies, shared_normals,
 };
 pub use set::{
     ActiveSet, ContactSet, ElementLaw, FrictionOutcome, FrictionState, IterationRecord, Verdict,

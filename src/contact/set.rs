@@ -456,8 +456,15 @@ impl<'a> ContactSet<'a> {
     /// dissipation's sign. (Judging it by its trial shear (G_c/T)(γ − γ_p)
     /// instead, the penalty G_c/T magnifies any sway of the bodies past μp:
     /// slip zones swap direction from iteration to iteration and never
-    /// stick.) An element that was not active in the solve starts sticking:
-    /// its pressure and shear were those of a free element. An element open
+    /// stick.) An element that was not active in the solve but was closed
+    /// at the step's start closes again slipping along its trial shear
+    /// (G_c/T)(γ − γ_p), with the load factor ±0 (its direction): its
+    /// pressure was that of a free element, so μp is not known yet, and
+    /// its trial shear, from the slip its nodes made while it was open, is
+    /// as large as that slip (G_c/T is the penalty's); closed sticking, it
+    /// took that shear, which pulled it open again, and the edge of
+    /// contact cycled (Cattaneo–Mindlin at a/64). A slip that turns back
+    /// in the next solve sticks. An element open
     /// at the step's start ([`ContactSet::closing`]) that closes has its
     /// normal part only, no shear, for the rest of the step: where along the
     /// step it closed, hence its stress-free shear, is not known until the
@@ -488,6 +495,13 @@ impl<'a> ContactSet<'a> {
             let shear = f.g_over_t[k] * (gamma - f.anchors[k]);
             // The direction it slips in, if it slips.
             let slips_along = if !current[k] {
+                // Closing again: it slips along its trial shear, with a
+                // load of zero that the next solve makes μp (a coupled
+                // solve at once), and sticks there if its slip turns back.
+                if shear != 0.0 {
+                    next[k] = -(0.0f64.copysign(shear));
+                    continue;
+                }
                 None
             } else if current[n + k] {
                 (shear.abs() > limit * (1.0 + SWITCH_TOL)).then_some(shear)

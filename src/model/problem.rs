@@ -495,7 +495,11 @@ impl Problem {
     /// Sets Coulomb's friction coefficient μ of contact pair `pair` (0, the
     /// default, is frictionless, bit for bit; docs/method.md §6.15). μ must
     /// be finite and ≥ 0 (a tied interface is [`ContactLaw::Stick`]).
-    /// Changing μ starts a new load history.
+    /// Changing μ starts a new load history; turning friction on or off
+    /// rebuilds the pair's B, whose elements measure along
+    /// [`shared_normals`] when frictional.
+    ///
+    /// [`shared_normals`]: crate::contact::shared_normals
     ///
     /// [`ContactLaw::Stick`]: crate::contact::ContactLaw::Stick
     pub fn set_friction(&mut self, pair: usize, mu: f64) -> Result<()> {
@@ -511,10 +515,16 @@ impl Problem {
             )));
         }
         if p.friction.to_bits() != mu.to_bits() {
+            // A frictional pair's B measures along shared normals
+            // (contact::shared_normals): turning friction on or off rebuilds
+            // B. Otherwise μ decides which unknowns are on the interface,
+            // not the structure: a new K₁, the same pattern.
+            let rebuild = (p.friction > 0.0) != (mu > 0.0);
             p.friction = mu;
-            // μ decides which unknowns are on the interface, not the
-            // structure: a new K₁, the same pattern.
-            self.changed_stiffness();
+            match rebuild {
+                true => self.changed(true),
+                false => self.changed_stiffness(),
+            }
         }
         Ok(())
     }

@@ -705,8 +705,8 @@ impl CattaneoScene {
     }
 
     /// The TFEM step at platen displacement (δₜ, −δₙ), as the oracle's
-    /// step type; `mu` classifies the pairs (slip: |λₜ| = μλₙ to 1e-9).
-    fn tfem_step(&mut self, platen: [f64; 2], mu: f64) -> Result<(FrictionalStep, ContactReport)> {
+    /// step type.
+    fn tfem_step(&mut self, platen: [f64; 2]) -> Result<(FrictionalStep, ContactReport)> {
         let t0 = std::time::Instant::now();
         for &v in &self.platen {
             self.model.set_prescribed(v, Component::X, platen[0])?;
@@ -720,17 +720,28 @@ impl CattaneoScene {
             .iter()
             .flat_map(|d| *d)
             .collect();
+        // A pair's state is that of the elements of B measuring it (their
+        // apex is one of its nodes): slip if one slips, else stick if one
+        // sticks. Its nodal forces add two elements' tractions, whose ratio
+        // is μ only where both slip with the same weights.
+        let mut state_at = vec![0u8; f.len()];
+        let states = self.model.contact_friction_state()?;
+        for (el, &st) in self.model.contact_mesh()?.iter().zip(&states) {
+            state_at[el.apex] = state_at[el.apex].max(match st {
+                1 => 1,
+                2 => 2,
+                _ => 0,
+            });
+        }
         let pairs = self
             .node_pairs()?
             .into_iter()
             .map(|(lower, upper, x, length)| {
                 let [ft, fnorm] = f[upper];
-                let state = if fnorm <= 0.0 {
-                    PairState::Open
-                } else if ft.abs() >= mu * fnorm * (1.0 - 1e-9) {
-                    PairState::Slip
-                } else {
-                    PairState::Stick
+                let state = match state_at[lower].max(state_at[upper]) {
+                    0 => PairState::Open,
+                    1 => PairState::Stick,
+                    _ => PairState::Slip,
                 };
                 PairResult {
                     lower,
@@ -781,7 +792,7 @@ impl CattaneoScene {
             let mut pts = vec![(x0, y0)];
             let mut x = guess;
             for trial in 1..=40 {
-                let (s, report) = scene.tfem_step(platen(x), cm.mu)?;
+                let (s, report) = scene.tfem_step(platen(x))?;
                 factorisations += report.info.factorizations;
                 let y = residual(&s);
                 if y.abs() <= tol * scale {
@@ -816,11 +827,11 @@ impl CattaneoScene {
             // load each element closes.
             self.model.revert_step()?;
             for i in 1..ns {
-                let (_, report) = self.tfem_step([0.0, -dn * i as f64 / ns as f64], cm.mu)?;
+                let (_, report) = self.tfem_step([0.0, -dn * i as f64 / ns as f64])?;
                 inc_factorisations += report.info.factorizations;
                 inc_iterations += report.iterations;
             }
-            let y = p_of(&self.tfem_step([0.0, -dn], cm.mu)?.0);
+            let y = p_of(&self.tfem_step([0.0, -dn])?.0);
             self.model.revert_step()?;
             (dn, normal, trials) = secant(
                 self,
