@@ -6,6 +6,7 @@
 //!   cargo run --release --example hertz                  # equal moduli
 //!   cargo run --release --example hertz -- --contrast 100 # cylinder 100× stiffer
 //!   cargo run --release --example hertz -- --cylinder-mesh-ratio 2.5  # non-matching
+//!   cargo run --release --example hertz -- --history  # the active-set loop per level
 
 use tfem::ContactOptions;
 use tfem::scenes::hertz::Hertz;
@@ -15,6 +16,7 @@ fn main() {
     let mut contrast = 1.0;
     let mut ratio = 1.0;
     let mut half_width = Hertz::default().half_width;
+    let mut history = false;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {
@@ -36,9 +38,10 @@ fn main() {
                     .and_then(|v| v.parse().ok())
                     .expect("--cylinder-mesh-ratio r")
             }
+            "--history" => history = true,
             other => {
                 eprintln!(
-                    "unknown argument {other}; use --contrast E2/E1, --half-width a, --cylinder-mesh-ratio r"
+                    "unknown argument {other}; use --contrast E2/E1, --half-width a, --cylinder-mesh-ratio r, --history"
                 );
                 std::process::exit(2);
             }
@@ -65,6 +68,7 @@ fn main() {
     );
     println!("|---|---|---|---|---|---|---|---|---|---|---|---|");
     let (mut hs, mut ea, mut ep) = (Vec::new(), Vec::new(), Vec::new());
+    let mut loops = Vec::new();
     for k in [2.0, 4.0, 8.0, 16.0, 32.0, 64.0] {
         let hz = Hertz {
             mesh_size: base.half_width / k,
@@ -89,11 +93,26 @@ fn main() {
                     r.p0_fit,
                     rel(r.p0_fit, r.p0_exact),
                 );
+                // Per iteration: the elements the solve used, then how many
+                // its inversion test switched on and off.
+                let steps: Vec<String> = r
+                    .report
+                    .history
+                    .iter()
+                    .map(|s| format!("{} +{} -{}", s.active, s.switched_on, s.switched_off))
+                    .collect();
+                loops.push(format!("h = a/{k}: {}", steps.join(", ")));
                 hs.push(1.0 / k);
                 ea.push(rel(r.a, r.a_exact).abs());
                 ep.push(rel(r.p0, r.p0_exact).abs());
             }
             Err(e) => println!("| 1/{k} | {}: {} |", e.status().name(), e.message()),
+        }
+    }
+    if history {
+        println!("active-set loop (active, switched on, switched off per iteration):");
+        for l in &loops {
+            println!("{l}");
         }
     }
     if hs.len() >= 2 {
