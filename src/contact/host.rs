@@ -614,7 +614,7 @@ impl HostContact {
         let cap = self.options.max_iterations;
         let b = self.built()?;
         let elements = b.set.elements();
-        let verdict = b.set.inverted(|k| {
+        let verdict = b.set.inverted(b.active.active(), |k| {
             let tri = &elements[k].nodes;
             std::array::from_fn(|a| u[2 * tri[a / 2] + a % 2])
         });

@@ -47,6 +47,10 @@ pub struct ContactSet<'a> {
     unknowns: Vec<[Option<usize>; 6]>,
     loads: Vec<[f64; 6]>,
     friction: Option<Friction>,
+    /// Per element whose apex projects beyond its interface edge: the
+    /// element with the same apex whose edge lies under it, its support
+    /// ([`supports`]).
+    supports: Vec<Option<usize>>,
 }
 
 /// The tangential side of the frictional law (docs/method.md §6.15), per
@@ -172,6 +176,7 @@ impl<'a> ContactSet<'a> {
             .map(|el| std::array::from_fn(|a| equation(2 * el.nodes[a / 2] + a % 2)))
             .collect();
         let loads = element_loads(&elements, &stiffness, &unknowns, prescribed);
+        let supports = supports(nodes, &elements);
         Ok(ContactSet {
             x,
             base,
@@ -183,6 +188,7 @@ impl<'a> ContactSet<'a> {
             unknowns,
             loads,
             friction: None,
+            supports,
         })
     }
 
@@ -477,7 +483,7 @@ impl<'a> ContactSet<'a> {
         (current, c): (&[bool], &[f64]),
         values: impl Fn(usize) -> [f64; 6],
     ) -> Verdict {
-        let normal = self.inverted(&values);
+        let normal = self.inverted(current, &values);
         let Some(f) = &self.friction else {
             return Verdict {
                 flags: normal,
@@ -581,15 +587,23 @@ impl<'a> ContactSet<'a> {
     }
 
     /// The inversion test: which elements are inverted for the element
-    /// displacements `values(k)` of element `k`.
-    pub fn inverted(&self, values: impl Fn(usize) -> [f64; 6]) -> Vec<bool> {
+    /// displacements `values(k)` of element `k`, the flags `current` (over
+    /// parts) being those the displacements were solved with. An element
+    /// whose apex projects beyond its interface edge reads the gap on the
+    /// edge's line extended to the apex, off the other body's surface by
+    /// its bend there (docs/method.md §6.11): it switches on only when its
+    /// support, the element with the same apex whose edge lies under it, is
+    /// inverted too (the apex has crossed the other body's surface), and
+    /// once on it stays on while it is inverted.
+    pub fn inverted(&self, current: &[bool], values: impl Fn(usize) -> [f64; 6]) -> Vec<bool> {
         let (law, test) = (self.options.law, self.options.test);
-        self.elements
+        let j: Vec<f64> = self
+            .elements
             .iter()
             .enumerate()
             .map(|(k, el)| {
                 let ue = values(k);
-                let j = match test {
+                match test {
                     InversionTest::Linearised => {
                         linearised_opening(&self.geos[k], law, el.normal, &ue)
                     }
@@ -601,9 +615,11 @@ impl<'a> ContactSet<'a> {
                         }
                         TriGeometry::new(&x).j
                     }
-                };
-                j < 0.0
+                }
             })
+            .collect();
+        (0..j.len())
+            .map(|k| j[k] < 0.0 && (current[k] || self.supports[k].is_none_or(|a| j[a] < 0.0)))
             .collect()
     }
 
@@ -917,6 +933,44 @@ pub fn format_history(h: &[IterationRecord]) -> String {
         v
     };
     items.join(" ")
+}
+
+/// Per element of B whose apex projects beyond its interface edge (strip
+/// triangulations of non-matching interfaces, docs/method.md §6.11): its
+/// support, the element of the same pair with the same apex whose edge the
+/// apex projects onto, if any (the first). `None` for every other element,
+/// and for all of a conforming B, where each node is the apex of one
+/// element.
+fn supports(nodes: Nodes<'_>, elements: &[ContactElement]) -> Vec<Option<usize>> {
+    // Whether the apex projects on the edge (its ends included); a
+    // degenerate edge counts as over it, and has no support.
+    let over = |e: &ContactElement| {
+        let mut edge = e
+            .nodes
+            .iter()
+            .filter(|&&v| v != e.apex)
+            .map(|&v| nodes.x[v]);
+        let (Some(p), Some(q)) = (edge.next(), edge.next()) else {
+            return true;
+        };
+        let c = nodes.x[e.apex];
+        let d = [q[0] - p[0], q[1] - p[1]];
+        let s = ((c[0] - p[0]) * d[0] + (c[1] - p[1]) * d[1]) / (d[0] * d[0] + d[1] * d[1]);
+        s.is_nan() || (0.0..=1.0).contains(&s)
+    };
+    let over: Vec<bool> = elements.iter().map(over).collect();
+    let mut under: BTreeMap<(usize, usize), usize> = BTreeMap::new();
+    for (k, e) in elements.iter().enumerate().filter(|&(k, _)| over[k]) {
+        under.entry((e.pair, e.apex)).or_insert(k);
+    }
+    elements
+        .iter()
+        .enumerate()
+        .map(|(k, e)| match over[k] {
+            true => None,
+            false => under.get(&(e.pair, e.apex)).copied(),
+        })
+        .collect()
 }
 
 /// The active set the loop starts from: per pair, the elements whose gap
