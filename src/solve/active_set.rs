@@ -419,50 +419,10 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         state.factor_active.clear();
         state.factor_active.extend_from_slice(active);
         if factored {
-            let mut g = vec![0.0; sys.len()];
-            for &k in &relative {
-                for a in 0..6 {
-                    if let Some(p) = set.unknowns(k)[a].and_then(|i| sys.position(i)) {
-                        g[p] += sign(k) * set.load(k)[a];
-                    }
-                }
-            }
-            let y = sys.gather(&state.x1);
-            let (dofs, prescribed) = (self.input.at.dofs, self.input.prescribed);
-            let slipping = set.slipping(active);
-            let coupled = match slipping.is_empty() {
-                true => None,
-                false => {
-                    let (coupling, loads) = slip_coupling(
-                        set,
-                        (dofs, prescribed),
-                        sys,
-                        (&state.x1, &self.friction),
-                        &slipping,
-                    );
-                    let mut g = g.clone();
-                    add_friction_loads(set, sys, (&loads, &state.friction_ref), &mut g);
-                    sys.solve_with(&y, &g, &coupling)?
-                }
-            };
-            self.coupled = coupled.is_some() || slipping.is_empty();
-            let ui = match coupled {
-                Some(ui) => {
-                    // The slip loads the solve implied, as the verdict reads
-                    // them.
-                    for &k in &slipping {
-                        let ue = element_values(set, (dofs, prescribed), k, |i| {
-                            sys.position(i).map_or(state.x1[i], |p| ui[p])
-                        });
-                        self.friction[k] = set.slip_load(k, &ue, self.friction[k]);
-                    }
-                    ui
-                }
-                None => {
-                    add_friction_loads(set, sys, (&self.friction, &state.friction_ref), &mut g);
-                    sys.solve(&y, &g)?
-                }
-            };
+            let at = (self.input.at.dofs, self.input.prescribed);
+            let (ui, coupled) =
+                interface_solve(set, at, state, (active, &relative), &mut self.friction)?;
+            self.coupled = coupled;
             self.iterate = Iterate::Condensed(ui);
         } else {
             self.condensed = None;
@@ -696,6 +656,56 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         check_finite(self.input.at, &x, context)?;
         Ok(x)
     }
+}
+
+/// Solves the interface system of the factored condensed `state` for the
+/// flags `active` (`relative`: the parts that differ from K₁'s set). With
+/// slipping elements their slip loads are implicit (docs/method.md §6.15)
+/// and `friction` becomes the loads the solve implied, as the verdict reads
+/// them; without, or when the coupled solve declines, the loads `friction`
+/// are explicit. Gives u_I, and whether the slip loads were implicit (or
+/// there were none).
+fn interface_solve(
+    set: &ContactSet<'_>,
+    (dofs, prescribed): (&DofMap, &[f64]),
+    state: &mut CondensedState,
+    (active, relative): (&[bool], &[usize]),
+    friction: &mut [f64],
+) -> Result<(Vec<f64>, bool)> {
+    let sys = &mut state.system;
+    let sign = |k: usize| if active[k] { 1.0 } else { -1.0 };
+    let mut g = vec![0.0; sys.len()];
+    for &k in relative {
+        for a in 0..6 {
+            if let Some(p) = set.unknowns(k)[a].and_then(|i| sys.position(i)) {
+                g[p] += sign(k) * set.load(k)[a];
+            }
+        }
+    }
+    let y = sys.gather(&state.x1);
+    let slipping = set.slipping(active);
+    if !slipping.is_empty() {
+        let (coupling, loads) = slip_coupling(
+            set,
+            (dofs, prescribed),
+            sys,
+            (&state.x1, friction),
+            &slipping,
+        );
+        let mut g = g.clone();
+        add_friction_loads(set, sys, (&loads, &state.friction_ref), &mut g);
+        if let Some(ui) = sys.solve_with(&y, &g, &coupling)? {
+            for &k in &slipping {
+                let ue = element_values(set, (dofs, prescribed), k, |i| {
+                    sys.position(i).map_or(state.x1[i], |p| ui[p])
+                });
+                friction[k] = set.slip_load(k, &ue, friction[k]);
+            }
+            return Ok((ui, true));
+        }
+    }
+    add_friction_loads(set, sys, (friction, &state.friction_ref), &mut g);
+    Ok((sys.solve(&y, &g)?, slipping.is_empty()))
 }
 
 /// The displacements of element `k` of `set`: prescribed values where its
