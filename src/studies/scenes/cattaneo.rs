@@ -727,11 +727,7 @@ impl CattaneoScene {
         let mut state_at = vec![0u8; f.len()];
         let states = self.model.contact_friction_state()?;
         for (el, &st) in self.model.contact_mesh()?.iter().zip(&states) {
-            state_at[el.apex] = state_at[el.apex].max(match st {
-                1 => 1,
-                2 => 2,
-                _ => 0,
-            });
+            state_at[el.apex] = state_at[el.apex].max(st);
         }
         let pairs = self
             .node_pairs()?
