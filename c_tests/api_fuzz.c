@@ -1381,9 +1381,9 @@ static void scene_square(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m, int clockwi
   for (int i = 0; i < cs->n; ++i)
     if (cs->c[i].fn == F_GET_DISPLACEMENTS) d = &cs->c[i];
   /* Exact for P1 unless tempering softens the (counter-clockwise) elements:
-   * Jmin = h³/λ with λ = 1 (auto) against J = hx·hy. */
+   * Jmin = min(h³/λ, h²/10) with λ = 1 (auto) against J = hx·hy. */
   double hx = 1.0 / nx, hy = 1.0 / ny, h = sqrt(hx * hx + hy * hy);
-  int exact = temper != 0 || hx * hy >= h * h * h;
+  int exact = temper != 0 || hx * hy >= fmin(h * h * h, 0.1 * h * h);
   if (d && (oracle || exact)) {
     d->oracle = 1;
     d->or_node = rows[ny * (nx + 1) + nx];

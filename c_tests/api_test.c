@@ -206,9 +206,14 @@ int main(void) {
   EXPECT_ERROR(m, tfem_add_contact_pair(m, 1, 42, NULL), TFEM_STATUS_INVALID_CONTACT, "tag 42");
 
   /* A good solve. This mesh is as coarse as the body (h ~ lambda = 2 by
-   * default): tempering would soften healthy elements, and says so. */
+   * default): the default tempering leaves its healthy elements alone, an
+   * explicit lambda = 2 (h^3/lambda > J) softens them, and says so. */
   restrain_and_load(m, 0);
   int nw = -1;
+  CHECK(tfem_solve(m, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_warning_count(m, &nw) == TFEM_STATUS_OK && nw == 0);
+  check_tension(m);
+  CHECK(tfem_set_tempering(m, TFEM_TEMPERING_MODE_LAMBDA, 2.0) == TFEM_STATUS_OK);
   CHECK(tfem_solve(m, NULL) == TFEM_STATUS_OK);
   CHECK(tfem_warning_count(m, &nw) == TFEM_STATUS_OK && nw == 1);
   CHECK(tfem_get_warning(m, 0, msg, sizeof msg) == TFEM_STATUS_OK && strstr(msg, "softens") != NULL);

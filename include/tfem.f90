@@ -182,7 +182,8 @@ module tfem
   integer(c_int), parameter :: TFEM_STATUS_IO = 14
 
   ! enum tfem_tempering_mode: How Jmin is chosen (argument `mode` of `tfem_set_tempering`).
-  !> Jmin = h³/λ, λ = larger side of the mesh's bounding box (default).
+  !> Jmin = min(h³/λ, h²/10), λ = larger side of the mesh's bounding box (default): an element whose
+  !! apex stands at least a tenth of its longest edge h above it is never softened.
   integer(c_int), parameter :: TFEM_TEMPERING_MODE_AUTO = 0
   !> Jmin = h³/λ with λ = `value` (a length in model units).
   integer(c_int), parameter :: TFEM_TEMPERING_MODE_LAMBDA = 1

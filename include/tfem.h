@@ -128,7 +128,9 @@ typedef enum tfem_status {
  */
 typedef enum tfem_tempering_mode {
   /**
-   * Jmin = h³/λ, λ = larger side of the mesh's bounding box (default).
+   * Jmin = min(h³/λ, h²/10), λ = larger side of the mesh's bounding box
+   * (default): an element whose apex stands at least a tenth of its
+   * longest edge h above it is never softened.
    */
   TFEM_TEMPERING_MODE_AUTO = 0,
   /**

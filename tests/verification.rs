@@ -6,7 +6,7 @@ use tfem::meshgen::{Diagonal, MeshBuilder, unit_square};
 use tfem::verification::{
     StudyPoint, fitted_rate, run_manufactured_elasticity, run_manufactured_laplace,
 };
-use tfem::{Component, Material, Model, PlaneMode, Tempering};
+use tfem::{Component, Material, Model, PlaneMode, Tempering, TriGeometry};
 
 fn steel_like() -> Material {
     Material::new(1.0, 0.3, PlaneMode::Strain, "body 1").unwrap()
@@ -126,22 +126,62 @@ fn patch_test_transmits_uniform_traction_on_an_irregular_mesh() {
     );
 }
 
-#[test]
-fn tempering_that_softens_well_shaped_elements_is_warned_about() {
-    // h = 1/6 of the model: the default λ (the model size) is not ≫ h, so
-    // Jmin = h³/λ exceeds the J of the flatter, still healthy, elements.
-    let b = irregular_square();
-    let boundary: Vec<usize> = b.boundary_edges().into_iter().flatten().collect();
+/// The mesh of `b`, clamped on x = 0 and loaded by a body-force-like nodal
+/// load, solved with `tempering`: displacements and warnings.
+fn clamped(b: MeshBuilder, tempering: Tempering) -> (Vec<[f64; 2]>, Vec<String>) {
+    let n = b.nodes.len();
+    let left: Vec<usize> = (0..n).filter(|&v| b.nodes[v][0] == 0.0).collect();
     let mut model = Model::new();
     model.set_mesh(b.build().unwrap());
     model.set_material(1, steel_like()).unwrap();
-    for &v in &boundary {
+    model.set_tempering(tempering).unwrap();
+    for &v in &left {
         model.fix(v, Component::X, 0.0).unwrap();
         model.fix(v, Component::Y, 0.0).unwrap();
     }
+    for v in 0..n {
+        model.add_nodal_force(v, [1e-3, -2e-3]).unwrap();
+    }
     model.solve().unwrap();
-    let w = model.warnings().join("\n");
+    (model.displacements().unwrap(), model.warnings())
+}
+
+#[test]
+fn tempering_that_softens_well_shaped_elements_is_warned_about() {
+    // h = 1/6 of the model: with λ = the model size, Jmin = h³/λ exceeds
+    // the J of the flatter, still healthy, elements.
+    let (_, warnings) = clamped(irregular_square(), Tempering::Lambda(1.0));
+    let w = warnings.join("\n");
     assert!(w.contains("softens") && w.contains("increase λ"), "{w}");
+}
+
+#[test]
+fn default_tempering_leaves_well_shaped_elements_of_a_coarse_mesh_alone() {
+    // A 2 × 3 grid of the unit square (cells 0.5 × 0.2 and 0.5 × 0.4):
+    // h_e ≈ λ/2, so the seed's Jmin = h³/λ exceeds every J, but every
+    // element stands at least h_e/10 tall and the default caps Jmin at
+    // h_e²/10: plain FEM to the last bit.
+    let coarse = || {
+        let mut b = MeshBuilder::new();
+        b.add_grid(
+            &[0.0, 0.5, 1.0],
+            &[0.0, 0.4, 0.6, 1.0],
+            1,
+            Diagonal::MirroredAt(0.5),
+        );
+        b
+    };
+    let mesh = coarse().build().unwrap();
+    for t in mesh.triangles() {
+        let g = TriGeometry::new(&mesh.corners(t));
+        assert!(g.j >= 0.1 * g.h * g.h && g.j < g.h * g.h * g.h, "{g:?}");
+    }
+    let (auto, warnings) = clamped(coarse(), Tempering::Auto);
+    let (plain, _) = clamped(coarse(), Tempering::Off);
+    assert!(warnings.is_empty(), "{warnings:?}");
+    assert_eq!(auto, plain);
+    let (softened, _) = clamped(coarse(), Tempering::Lambda(1.0));
+    assert_ne!(softened, plain);
 }
 
 #[test]

@@ -4,7 +4,7 @@
 //! threads at once, each writing only its half of the columns.
 
 use super::assembly::{Columns, DofMap, NOT_FREE, Pattern, Slots};
-use super::element::Jmin;
+use super::element::{Jmin, WELL_SHAPED};
 use super::element_loop::ElementLoop;
 use crate::error::{Error, Result};
 
@@ -135,7 +135,7 @@ fn assemble_columns(
     elements.visit(select, |el, (gd, free, owns)| {
         let e = el.index;
         if let Jmin::Tempered(jmin) = el.jmin {
-            if owns && el.geo.j < jmin && el.geo.j >= 0.1 * el.geo.h * el.geo.h {
+            if owns && el.geo.j < jmin && el.geo.j >= WELL_SHAPED * el.geo.h * el.geo.h {
                 softened.0 += 1;
                 softened.1.get_or_insert(e);
             }

@@ -72,9 +72,11 @@ impl TriGeometry {
 /// How Jmin is chosen (docs/method.md §2).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Tempering {
-    /// Jmin = h_e³/λ with λ = the larger side of the mesh's bounding box
-    /// (the default; the seed's λ = 1 m for its 1 m model). It scales with the
-    /// model, so metres and millimetres give the same physical answer.
+    /// Jmin = min(h_e³/λ, [`WELL_SHAPED`] h_e²) with λ = the larger side of
+    /// the mesh's bounding box (the default; the seed's λ = 1 m for its 1 m
+    /// model). It scales with the model, so metres and millimetres give the
+    /// same physical answer. The cap, which acts only where h_e > λ/10,
+    /// leaves every well-shaped element untouched (docs/method.md §6.1).
     Auto,
     /// Jmin = h_e³/λ with this λ, a length in model units.
     Lambda(f64),
@@ -99,12 +101,19 @@ impl Tempering {
     }
 }
 
+/// The shape quality J/h_e² (the apex's height over the longest edge) from
+/// which an element counts as well-shaped: [`Tempering::Auto`] never
+/// softens it, and a solve warns when another policy does.
+pub const WELL_SHAPED: f64 = 0.1;
+
 impl Tempering {
     /// The Jmin of an element of longest edge `geo.h` in a model whose
     /// bounding box's larger side is `model_size` (the automatic λ).
     pub fn jmin(&self, geo: &TriGeometry, model_size: f64) -> Jmin {
         match *self {
-            Tempering::Auto => Jmin::from_lambda(geo.h, model_size),
+            Tempering::Auto => {
+                Jmin::Tempered(jmin_of_lambda(geo.h, model_size).min(WELL_SHAPED * geo.h * geo.h))
+            }
             Tempering::Lambda(l) => Jmin::from_lambda(geo.h, l),
             Tempering::Fixed(j) => Jmin::Tempered(j),
             Tempering::Off => Jmin::Off,

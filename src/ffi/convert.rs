@@ -16,7 +16,9 @@ use crate::model::solution::{ContactReport, SolveInfo};
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum TemperingMode {
-    /// Jmin = h³/λ, λ = larger side of the mesh's bounding box (default).
+    /// Jmin = min(h³/λ, h²/10), λ = larger side of the mesh's bounding box
+    /// (default): an element whose apex stands at least a tenth of its
+    /// longest edge h above it is never softened.
     Auto = 0,
     /// Jmin = h³/λ with λ = `value` (a length in model units).
     Lambda = 1,
