@@ -386,6 +386,7 @@ enum {
   F_GET_EXTERNAL_WORK,
   F_GET_CONTACT_FORCES,
   F_GET_CONTACT_GAPS,
+  F_GET_CONTACT_NODAL_PRESSURES,
   F_GET_CONTACT_MESH_SIZE,
   F_GET_CONTACT_MESH,
   F_GET_CONTACT_ELEMENT_PAIRS,
@@ -531,6 +532,7 @@ static const fndesc FN[NF] = {
     [F_GET_EXTERNAL_WORK] = {"tfem_get_external_work", 1, "", "", "", "d", {R_SCALAR}, 1},
     [F_GET_CONTACT_FORCES] = {"tfem_get_contact_forces", 1, "", "", "", "d", {R_2NN}, 0},
     [F_GET_CONTACT_GAPS] = {"tfem_get_contact_gaps", 1, "", "", "", "d", {R_NN}, 0},
+    [F_GET_CONTACT_NODAL_PRESSURES] = {"tfem_get_contact_nodal_pressures", 1, "", "", "", "d", {R_NN}, 0},
     [F_GET_CONTACT_MESH_SIZE] = {"tfem_get_contact_mesh_size", 1, "", "", "", "i", {R_SCALAR}, 1},
     [F_GET_CONTACT_MESH] = {"tfem_get_contact_mesh", 1, "", "", "", "i", {R_3CM}, 0},
     [F_GET_CONTACT_ELEMENT_PAIRS] = {"tfem_get_contact_element_pairs", 1, "", "", "", "i", {R_CM}, 0},
@@ -1319,6 +1321,7 @@ static void result_getters(rng_t *r, case_t *cs, int contact) {
     if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_REPORT);
     if (chance(r, 0.6)) add_call(cs, F_GET_CONTACT_FORCES);
     if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_GAPS);
+    if (chance(r, 0.4)) add_call(cs, F_GET_CONTACT_NODAL_PRESSURES);
     if (chance(r, 0.2)) add_call(cs, F_GET_CONTACT_SHEAR);
     if (chance(r, 0.2)) add_call(cs, F_GET_CONTACT_FRICTION_STATE);
     if (chance(r, 0.2)) add_call(cs, F_GET_CONTACT_DISSIPATION);
@@ -2009,7 +2012,7 @@ static void random_call(rng_t *r, case_t *cs, const ctx_t *cx, double wild, int 
       [F_ADD_CONTACT_PAIR_WITH_MESH] = 2, [F_CONTACT_OPTIONS_DEFAULT] = 2, [F_SOLVE_CONTACT] = 5,
       [F_GET_CONTACT_ACTIVE] = 3, [F_GET_CONTACT_PRESSURE] = 3, [F_GET_CONTACT_ELEMENTS] = 2,
       [F_GET_CONTACT_REPORT] = 2, [F_ADD_BOUNDARY_EDGES] = 3, [F_GET_EXTERNAL_WORK] = 3,
-      [F_GET_CONTACT_FORCES] = 3, [F_GET_CONTACT_GAPS] = 3, [F_GET_CONTACT_MESH_SIZE] = 2,
+      [F_GET_CONTACT_FORCES] = 3, [F_GET_CONTACT_GAPS] = 3, [F_GET_CONTACT_NODAL_PRESSURES] = 2, [F_GET_CONTACT_MESH_SIZE] = 2,
       [F_GET_CONTACT_MESH] = 2, [F_GET_CONTACT_ELEMENT_PAIRS] = 2, [F_GET_CONTACT_ELEMENT_APEXES] = 2,
       [F_GET_CONTACT_PAIR_BODIES] = 2, [F_SET_THREADS] = 2, [F_GET_THREADS] = 2,
       [F_DESTROY_NULL] = 1, [F_RECREATE] = 1,
@@ -3279,6 +3282,28 @@ static void oracle_contact_forces(runner_t *R, int idx, const double *fc) {
   free(cp);
 }
 
+/* tfem_get_contact_nodal_pressures (per node, after a contact solve):
+ * zero off the nodes of the contact elements. */
+static void oracle_nodal_pressures(runner_t *R, int idx, const double *p) {
+  shadow_t *s = &R->sh;
+  int *cm;
+  long ne = fetch_contact_mesh(R->m, &cm, NULL);
+  if (ne < 0) return;
+  char *in = xcalloc((size_t)s->nn + 1, 1);
+  for (long e = 0; e < 3 * ne; ++e) {
+    long v = (long)cm[e] - s->base;
+    if (v >= 0 && v < s->nn) in[v] = 1;
+  }
+  for (int v = 0; v < s->nn; ++v)
+    if (!in[v] && p[v] != 0.0) {
+      finding(R, V_CONTACT, idx, "nodal contact pressure %g at node %d, which no contact element touches", p[v],
+              v + s->base);
+      break;
+    }
+  free(in);
+  free(cm);
+}
+
 /* tfem_get_contact_gaps (per node, after a contact solve): zero off the
  * contact elements; where the report gives a penetration, the smallest
  * gap is minus it (1e-14 relative: the library computes both from the
@@ -3995,6 +4020,7 @@ static void exec_call(runner_t *R, int idx) {
   case F_GET_EXTERNAL_WORK: st = tfem_get_external_work(m, o[0]); break;
   case F_GET_CONTACT_FORCES: st = tfem_get_contact_forces(m, o[0], c->out[0].len); break;
   case F_GET_CONTACT_GAPS: st = tfem_get_contact_gaps(m, o[0], c->out[0].len); break;
+  case F_GET_CONTACT_NODAL_PRESSURES: st = tfem_get_contact_nodal_pressures(m, o[0], c->out[0].len); break;
   case F_GET_CONTACT_MESH_SIZE: st = tfem_get_contact_mesh_size(m, o[0]); break;
   case F_GET_CONTACT_MESH: st = tfem_get_contact_mesh(m, o[0], c->out[0].len); break;
   case F_GET_CONTACT_ELEMENT_PAIRS: st = tfem_get_contact_element_pairs(m, o[0], c->out[0].len); break;
@@ -4414,6 +4440,7 @@ static void exec_call(runner_t *R, int idx) {
                      fn == F_GET_EXTERNAL_WORK;
   int need_contact = fn == F_GET_CONTACT_ACTIVE || fn == F_GET_CONTACT_PRESSURE || fn == F_GET_CONTACT_ELEMENTS ||
                      fn == F_GET_CONTACT_REPORT || fn == F_GET_CONTACT_FORCES || fn == F_GET_CONTACT_GAPS ||
+                     fn == F_GET_CONTACT_NODAL_PRESSURES ||
                      fn == F_GET_CONTACT_SHEAR || fn == F_GET_CONTACT_FRICTION_STATE ||
                      fn == F_GET_CONTACT_DISSIPATION;
   if (st != TFEM_STATUS_OK && st != TFEM_STATUS_NULL_POINTER && !c->null_model && fn == F_GET_CONTACT_PAIR_BODIES &&
@@ -4731,6 +4758,10 @@ static void exec_call(runner_t *R, int idx) {
     case F_GET_CONTACT_GAPS:
       if (out_full(c, 0) && s->exact && s->results == 2 && c->out[0].req == s->nn)
         oracle_gaps(R, idx, (const double *)(const void *)g[0].p);
+      goto keep_results;
+    case F_GET_CONTACT_NODAL_PRESSURES:
+      if (out_full(c, 0) && s->exact && s->results == 2 && c->out[0].req == s->nn)
+        oracle_nodal_pressures(R, idx, (const double *)(const void *)g[0].p);
       goto keep_results;
     case F_GET_EXTERNAL_WORK:
       if (!c->out[0].null_ && s->exact && s->results && s->results != 3) { /* (a step's loads are scaled) */
@@ -5148,6 +5179,9 @@ static void c_emit_call(FILE *f, const call_t *c, int idx) {
   case F_GET_EXTERNAL_WORK: fprintf(f, "    s = tfem_get_external_work(%s, %s);\n", M, o[0]); break;
   case F_GET_CONTACT_FORCES: fprintf(f, "    s = tfem_get_contact_forces(%s, %s, %zu);\n", M, o[0], len[0]); break;
   case F_GET_CONTACT_GAPS: fprintf(f, "    s = tfem_get_contact_gaps(%s, %s, %zu);\n", M, o[0], len[0]); break;
+  case F_GET_CONTACT_NODAL_PRESSURES:
+    fprintf(f, "    s = tfem_get_contact_nodal_pressures(%s, %s, %zu);\n", M, o[0], len[0]);
+    break;
   case F_GET_CONTACT_MESH_SIZE: fprintf(f, "    s = tfem_get_contact_mesh_size(%s, %s);\n", M, o[0]); break;
   case F_GET_CONTACT_MESH: fprintf(f, "    s = tfem_get_contact_mesh(%s, %s, %zu);\n", M, o[0], len[0]); break;
   case F_GET_CONTACT_ELEMENT_PAIRS:

@@ -836,6 +836,40 @@ static void facing_tags_are_paired_automatically(void) {
   tfem_destroy(declared);
 }
 
+/* Two blocks meshed 6 and 4 cells across (3:2, no interface node but the
+ * ends faces another) under a uniform pressure: every interface node reads
+ * the pressure, the others read zero. */
+static mesh_t N;
+static void a_non_matching_interface_reads_a_uniform_pressure_at_every_node(void) {
+  tfem_model *m = tfem_create();
+  CHECK(tfem_set_mesh(m, N.nn, N.xy, N.nt, N.tri, N.body, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_set_boundary_edges(m, N.ne, N.edges, N.tags) == TFEM_STATUS_OK);
+  CHECK(tfem_set_material(m, 1, 1e10, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_set_material(m, 2, 1e10, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 32, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix(m, 0, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix(m, 21, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK); /* the upper block's first node */
+  CHECK(tfem_add_pressure(m, 43, 1e7) == TFEM_STATUS_OK);
+  CHECK(tfem_add_contact_pair(m, 33, 42, NULL) == TFEM_STATUS_OK);
+  double p[64];
+  EXPECT_ERROR(m, tfem_get_contact_nodal_pressures(m, p, 64), TFEM_STATUS_INVALID_STATE, "solve");
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  EXPECT_ERROR(m, tfem_get_contact_nodal_pressures(m, p, (size_t)N.nn - 1), TFEM_STATUS_BUFFER_TOO_SMALL, "out");
+  CHECK(tfem_get_contact_nodal_pressures(m, p, (size_t)N.nn) == TFEM_STATUS_OK);
+  int on_interface = 0;
+  for (int v = 0; v < N.nn; ++v) {
+    double y = N.xy[2 * v + 1];
+    if (y == 0.0) {
+      on_interface++;
+      CHECK(fabs(p[v] / 1e7 - 1.0) < 1e-9);
+    } else {
+      CHECK(p[v] == 0.0);
+    }
+  }
+  CHECK(on_interface == 7 + 5);
+  tfem_destroy(m);
+}
+
 int main(void) {
   /* Nothing the library does may reach stderr: it goes to a file, checked
    * at the end. */
@@ -847,6 +881,8 @@ int main(void) {
   grid(&G, 16, 4, 0.0, 0.0, 4.0, 1.0, 1, 1);
   grid(&B, 8, 2, 0.0, -0.25, 1.0, 0.25, 1, 10);
   grid(&B, 8, 2, 0.0, 0.0, 1.0, 0.25, 2, 20);
+  grid(&N, 6, 2, 0.0, -0.25, 1.0, 0.25, 1, 30);
+  grid(&N, 4, 2, 0.0, 0.0, 1.0, 0.25, 2, 40);
 
   a_clockwise_mesh_is_turned_and_solved_exactly();
   a_fold_inside_a_counter_clockwise_body_stays_inverted();
@@ -864,6 +900,7 @@ int main(void) {
   friction_obeys_coulomb_and_restarts_bit_for_bit();
   fuzz_found_defects_at_the_friction_boundary();
   facing_tags_are_paired_automatically();
+  a_non_matching_interface_reads_a_uniform_pressure_at_every_node();
 
   fflush(stderr);
   fseek(capture, 0, SEEK_END);

@@ -114,6 +114,7 @@ module tfem
   private :: tfem_get_contact_pressure_i
   private :: tfem_get_contact_elements_i
   private :: tfem_get_contact_forces_i
+  private :: tfem_get_contact_nodal_pressures_i
   private :: tfem_get_contact_gaps_i
   private :: tfem_get_contact_mesh_i
   private :: tfem_get_contact_element_pairs_i
@@ -964,6 +965,25 @@ module tfem
     end function tfem_get_contact_forces
     module procedure tfem_get_contact_forces_i
   end interface tfem_get_contact_forces
+
+  interface tfem_get_contact_nodal_pressures
+    !> Copies the contact pressure at every node in the last contact solve (n_nodes values; force
+    !! per unit area, Pa in SI, positive in compression; zero off the contact interfaces), computed
+    !! on request: the traction read from both sides of the interface (the mean of a node's normal
+    !! contact force over half its interface edges and the other side's, interpolated where the node
+    !! faces it). Exact for a uniform pressure on matching and non-matching interfaces alike.
+    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
+    !! negative length is passed as 0.
+    function tfem_get_contact_nodal_pressures(model, out, length) &
+        bind(C, name="tfem_get_contact_nodal_pressures") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_nodal_pressures
+    module procedure tfem_get_contact_nodal_pressures_i
+  end interface tfem_get_contact_nodal_pressures
 
   interface tfem_get_contact_gaps
     !> Copies the normal gap at every node in the last contact solve (n_nodes values, model length
@@ -1917,6 +1937,15 @@ contains
     integer(c_int) :: status
     status = tfem_get_contact_forces(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_forces_i
+
+  ! tfem_get_contact_nodal_pressures, lengths of kind tfem_length_kind.
+  function tfem_get_contact_nodal_pressures_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_nodal_pressures(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_nodal_pressures_i
 
   ! tfem_get_contact_gaps, lengths of kind tfem_length_kind.
   function tfem_get_contact_gaps_i(model, out, length) result(status)

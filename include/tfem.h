@@ -757,6 +757,19 @@ enum tfem_status tfem_get_external_work(struct tfem_model *model, double *work);
 enum tfem_status tfem_get_contact_forces(struct tfem_model *model, double *out, size_t length);
 
 /**
+ * Copies the contact pressure at every node in the last contact solve
+ * (n_nodes values; force per unit area, Pa in SI, positive in compression;
+ * zero off the contact interfaces), computed on request: the traction
+ * read from both sides of the interface (the mean of a node's normal
+ * contact force over half its interface edges and the other side's,
+ * interpolated where the node faces it). Exact for a uniform pressure on
+ * matching and non-matching interfaces alike.
+ */
+enum tfem_status tfem_get_contact_nodal_pressures(struct tfem_model *model,
+                                                  double *out,
+                                                  size_t length);
+
+/**
  * Copies the normal gap at every node in the last contact solve
  * (n_nodes values, model length units; zero off the contact interfaces),
  * computed on request: the smallest, over the contact elements at the

@@ -178,3 +178,48 @@ fn a_non_matching_loop_takes_at_most_one_iteration_more_than_a_matching_one() {
         );
     }
 }
+
+#[test]
+fn the_traction_read_from_both_sides_is_near_the_hertz_peak_on_non_matching_meshes() {
+    // Measured p₀ at the axis, block's lumped reading against both sides'
+    // mean (`interface_pressures`): cylinder 2.5× coarser, a/32: +9.7e-2
+    // against +1.2e-2; cylinder 2.5× finer: +3.3e-2 against -2.1e-3
+    // (matching: -1.6e-3).
+    for (ratio, bound) in [(2.5, 2e-2), (0.4, 4e-3)] {
+        let rs = run(
+            Hertz {
+                cylinder_mesh_ratio: ratio,
+                ..Default::default()
+            },
+            &[32.0],
+        );
+        let r = &rs[0];
+        let (lumped, both) = (rel(r.p0, r.p0_exact), rel(r.p0_interface, r.p0_exact));
+        assert!(
+            both < bound && both < lumped / 4.0,
+            "ratio {ratio}: {both:e} against {lumped:e}"
+        );
+    }
+}
+
+#[test]
+fn on_matching_meshes_both_sides_read_the_same_traction() {
+    // Facing nodes inside 0.8a read the same traction, up to the
+    // cylinder's tributary being measured along its chords (longer by
+    // ~(x/R)²/2 than along x). (At the edge of contact the two sides'
+    // last loaded nodes differ by ~1 % of their small pressure.)
+    let r = &run(Hertz::default(), &[16.0])[0];
+    let inside = |p: &(f64, f64)| p.1 > 0.0 && p.0 <= 0.8 * r.a_exact;
+    let lumped: Vec<(f64, f64)> = r.pressure.iter().copied().filter(inside).collect();
+    let mut compared = 0;
+    for ((x, p), (xi, pi)) in lumped.iter().zip(&r.interface_pressure) {
+        assert_eq!(x, xi);
+        let slope2 = x * x; // (x/R)², R = 1
+        assert!(
+            (p - pi).abs() <= (slope2 + 1e-9) * r.p0_exact,
+            "x = {x}: {p} against {pi}"
+        );
+        compared += 1;
+    }
+    assert!(compared > 10, "{compared} nodes in contact");
+}

@@ -49,6 +49,11 @@ fn check(test: &PatchTest, r: &PatchResult) {
     );
     assert!(within(r.nodal_pressure), "{name}: {:?}", r.nodal_pressure);
     assert!(within(r.traction), "{name}: {:?}", r.traction);
+    assert!(
+        within(r.interface_traction),
+        "{name}: {:?}",
+        r.interface_traction
+    );
     // One uniform overlap: the report's, the harness's and the library's.
     let pen = r.penetration;
     assert!(pen > 0.0, "{name}");

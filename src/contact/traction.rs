@@ -108,6 +108,100 @@ pub fn nodal_pressures(
         .collect()
 }
 
+/// The interface edge of the other side that each node of B faces: for
+/// every node, the nearest edge of the other side (among those of the
+/// elements within two steps) that its projection falls on, as (p, q, t)
+/// with the point (1 − t) x_p + t x_q, in the initial configuration.
+/// Nodes beyond the other side's ends face nothing.
+fn facing_edges(
+    nodes: Nodes<'_>,
+    elements: &[ContactElement],
+    on_a: &[bool],
+    side: &BTreeMap<usize, bool>,
+) -> BTreeMap<usize, Option<(usize, usize, f64)>> {
+    let x = nodes.x;
+    let mut at: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
+    for (k, el) in elements.iter().enumerate() {
+        for &v in &el.nodes {
+            at.entry(v).or_default().push(k);
+        }
+    }
+    side.iter()
+        .map(|(&v, &v_on_a)| {
+            let mut near: BTreeSet<usize> = BTreeSet::new();
+            for &k in &at[&v] {
+                for &w in &elements[k].nodes {
+                    near.extend(at[&w].iter().copied());
+                }
+            }
+            let mut best: Option<(f64, (usize, usize, f64))> = None;
+            for &k in &near {
+                let el = &elements[k];
+                if on_a[k] == v_on_a {
+                    continue; // an edge of v's own side
+                }
+                let mut base = el.nodes.iter().copied().filter(|&w| w != el.apex);
+                let (Some(p), Some(q)) = (base.next(), base.next()) else {
+                    continue;
+                };
+                let d = [x[q][0] - x[p][0], x[q][1] - x[p][1]];
+                let len2 = d[0] * d[0] + d[1] * d[1];
+                let t = ((x[v][0] - x[p][0]) * d[0] + (x[v][1] - x[p][1]) * d[1]) / len2;
+                if !(-1e-12..=1.0 + 1e-12).contains(&t) {
+                    continue;
+                }
+                let t = t.clamp(0.0, 1.0);
+                let c = [x[p][0] + t * d[0], x[p][1] + t * d[1]];
+                let dist = (x[v][0] - c[0]).hypot(x[v][1] - c[1]);
+                if best.is_none_or(|(bd, _)| dist < bd) {
+                    best = Some((dist, (p, q, t)));
+                }
+            }
+            (v, best.map(|(_, e)| e))
+        })
+        .collect()
+}
+
+/// The contact traction at every node of B read from both sides at once:
+/// the mean of the node's own [`nodal_pressures`] value and the other
+/// side's, interpolated on the edge the node faces (docs/method.md §6.11,
+/// "Pressure as a traction"). One value per point of the interface:
+/// nodes that face each other get the same one. A uniform traction is read
+/// exactly, as by [`nodal_pressures`]; on a curved non-matching interface
+/// the two sides' lumped values err at the scale of the meshes with
+/// opposite signs, and their mean is up to 9× closer to the traction.
+/// Nodes that face no edge (beyond the other side's ends) keep their own
+/// value. Sorted by node.
+pub fn interface_pressures(
+    nodes: Nodes<'_>,
+    elements: &[ContactElement],
+    force: impl Fn(usize) -> [f64; 2],
+) -> Vec<NodalPressure> {
+    let own = nodal_pressures(nodes, elements, force);
+    let at: BTreeMap<usize, NodalPressure> = own.iter().map(|q| (q.node, *q)).collect();
+    let on_a = edge_on_side_a(nodes, elements);
+    let (side, _) = sides_and_tributaries(elements, &on_a);
+    let facing = facing_edges(nodes, elements, &on_a, &side);
+    own.iter()
+        .map(|q| {
+            // A node without tributary (an apex only) carries no value.
+            let value = |w: usize| Some(at[&w]).filter(|r| r.tributary > 0.0);
+            let other = facing[&q.node].and_then(|(p, r, t)| match (value(p), value(r)) {
+                (Some(vp), Some(vr)) => Some((1.0 - t) * vp.pressure + t * vr.pressure),
+                (Some(vp), None) => Some(vp.pressure),
+                (None, Some(vr)) => Some(vr.pressure),
+                (None, None) => None,
+            });
+            let pressure = match (q.tributary > 0.0, other) {
+                (true, Some(o)) => 0.5 * (q.pressure + o),
+                (false, Some(o)) => o,
+                (_, None) => q.pressure,
+            };
+            NodalPressure { pressure, ..*q }
+        })
+        .collect()
+}
+
 /// The largest interpenetration of the deformed interfaces (linearised:
 /// positions X + u along the initial normals; 0 when none) for the nodal
 /// displacements `disp`: over the nodes of B, how far a node lies beyond
@@ -121,61 +215,34 @@ pub fn max_overlap(
     disp: impl Fn(usize) -> [f64; 2],
 ) -> f64 {
     let on_a = edge_on_side_a(nodes, elements);
-    let x = nodes.x;
-    // Elements at every node, to find the edges near a node.
-    let mut at: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
-    for (k, el) in elements.iter().enumerate() {
-        for &v in &el.nodes {
-            at.entry(v).or_default().push(k);
-        }
-    }
     let (side, _) = sides_and_tributaries(elements, &on_a);
+    let facing = facing_edges(nodes, elements, &on_a, &side);
+    let x = nodes.x;
     let point = |w: usize| {
         let uw = disp(w);
         [x[w][0] + uw[0], x[w][1] + uw[1]]
     };
+    // The normal of the element whose edge (p, q) is.
+    let normal: BTreeMap<(usize, usize), [f64; 2]> = elements
+        .iter()
+        .filter_map(|el| {
+            let mut base = el.nodes.iter().copied().filter(|&w| w != el.apex);
+            Some(((base.next()?, base.next()?), el.normal))
+        })
+        .collect();
     let mut worst = 0.0f64;
     for (&v, &v_on_a) in &side {
-        // Candidate edges: those of the elements within two steps of v.
-        let mut near: BTreeSet<usize> = BTreeSet::new();
-        for &k in &at[&v] {
-            for &w in &elements[k].nodes {
-                near.extend(at[&w].iter().copied());
-            }
-        }
-        let mut best: Option<(f64, f64)> = None; // (distance, gap)
-        for &k in &near {
-            let el = &elements[k];
-            if on_a[k] == v_on_a {
-                continue; // an edge of v's own side
-            }
-            let mut base = el.nodes.iter().copied().filter(|&w| w != el.apex);
-            let (Some(p), Some(q)) = (base.next(), base.next()) else {
-                continue;
-            };
-            let d = [x[q][0] - x[p][0], x[q][1] - x[p][1]];
-            let len2 = d[0] * d[0] + d[1] * d[1];
-            let t = ((x[v][0] - x[p][0]) * d[0] + (x[v][1] - x[p][1]) * d[1]) / len2;
-            if !(-1e-12..=1.0 + 1e-12).contains(&t) {
-                continue;
-            }
-            let at_t = |a: [f64; 2], b: [f64; 2]| {
-                [(1.0 - t) * a[0] + t * b[0], (1.0 - t) * a[1] + t * b[1]]
-            };
-            let c = at_t(x[p], x[q]);
-            let dist = (x[v][0] - c[0]).hypot(x[v][1] - c[1]);
-            let (on_edge, xv) = (at_t(point(p), point(q)), point(v));
-            // Gap along n (from a to b): b's point minus a's point.
-            let (pa, pb) = if v_on_a { (xv, on_edge) } else { (on_edge, xv) };
-            let n = el.normal;
-            let gap = n[0] * (pb[0] - pa[0]) + n[1] * (pb[1] - pa[1]);
-            if best.is_none_or(|(bd, _)| dist < bd) {
-                best = Some((dist, gap));
-            }
-        }
-        if let Some((_, gap)) = best {
-            worst = worst.max(-gap);
-        }
+        let Some((p, q, t)) = facing[&v] else {
+            continue;
+        };
+        let (pp, pq) = (point(p), point(q));
+        let on_edge = [(1.0 - t) * pp[0] + t * pq[0], (1.0 - t) * pp[1] + t * pq[1]];
+        let xv = point(v);
+        // Gap along n (from a to b): b's point minus a's point.
+        let (pa, pb) = if v_on_a { (xv, on_edge) } else { (on_edge, xv) };
+        let n = normal[&(p, q)];
+        let gap = n[0] * (pb[0] - pa[0]) + n[1] * (pb[1] - pa[1]);
+        worst = worst.max(-gap);
     }
     worst
 }

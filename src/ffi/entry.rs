@@ -883,6 +883,24 @@ pub unsafe extern "C" fn tfem_get_contact_forces(
     })
 }
 
+/// Copies the contact pressure at every node in the last contact solve
+/// (n_nodes values; force per unit area, Pa in SI, positive in compression;
+/// zero off the contact interfaces), computed on request: the traction
+/// read from both sides of the interface (the mean of a node's normal
+/// contact force over half its interface edges and the other side's,
+/// interpolated where the node faces it). Exact for a uniform pressure on
+/// matching and non-matching interfaces alike.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_nodal_pressures(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        copy_out(&m.model.contact_nodal_pressures()?, out, length, "out")
+    })
+}
+
 /// Copies the normal gap at every node in the last contact solve
 /// (n_nodes values, model length units; zero off the contact interfaces),
 /// computed on request: the smallest, over the contact elements at the

@@ -775,6 +775,27 @@ impl Model {
             .contact_forces(&self.problem, self.field()?)
     }
 
+    /// The contact pressure at every node of the last contact solve (force
+    /// per unit area, positive in compression; zero off the interfaces),
+    /// computed on request: the interface traction read from both sides
+    /// (`contact::traction::interface_pressures`, docs/method.md §6.11) —
+    /// exact for a uniform traction, matching or not, and on a curved
+    /// non-matching interface much closer to the traction than either
+    /// side's own nodal forces. A node on several pairs (a corner shared by
+    /// three bodies) mixes them; read the elements' pressures there.
+    pub fn contact_nodal_pressures(&self) -> Result<Vec<f64>> {
+        let mesh = self.problem.mesh_ref()?;
+        let f = self.contact_forces()?;
+        let mut p = vec![0.0; mesh.nodes().len()];
+        let nodes = crate::contact::mesh::Nodes::of(mesh);
+        for q in
+            crate::contact::traction::interface_pressures(nodes, self.contact_elements()?, |v| f[v])
+        {
+            p[q.node] = q.pressure;
+        }
+        Ok(p)
+    }
+
     /// The normal gap at every node of the last contact solve (zero off the
     /// interfaces; negative where the bodies interpenetrate), computed on
     /// request: the smallest distance, over the elements of B at the node,

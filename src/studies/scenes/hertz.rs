@@ -17,6 +17,8 @@
 use std::collections::{BTreeMap, BTreeSet};
 
 use crate::contact::ContactOptions;
+use crate::contact::mesh::Nodes;
+use crate::contact::traction::interface_pressures;
 use crate::error::{Error, Result};
 use crate::fem::element::{Jmin, Tempering, TriGeometry, elasticity_stiffness};
 use crate::fem::material::{Material, PlaneMode};
@@ -107,6 +109,12 @@ pub struct HertzResult {
     pub p0_fit: f64,
     /// Nodal pressures (x, p) on the block's top edge.
     pub pressure: Vec<(f64, f64)>,
+    /// The interface traction read from both sides
+    /// (`contact::traction::interface_pressures`) at the block's top nodes
+    /// in contact, (x, p), sorted by x.
+    pub interface_pressure: Vec<(f64, f64)>,
+    /// Its value on the axis.
+    pub p0_interface: f64,
     /// The contact report.
     pub report: ContactReport,
 }
@@ -308,6 +316,18 @@ impl HertzScene {
         } else {
             (f64::NAN, f64::NAN)
         };
+        let f = self.model.contact_forces()?;
+        let traction: BTreeMap<usize, f64> =
+            interface_pressures(Nodes::of(mesh), self.model.contact_elements()?, |v| f[v])
+                .into_iter()
+                .map(|q| (q.node, q.pressure))
+                .collect();
+        let interface_pressure: Vec<(f64, f64)> = self
+            .block_top
+            .iter()
+            .filter_map(|v| Some((mesh.nodes()[*v][0], *traction.get(v)?)))
+            .collect();
+        let p0_interface = interface_pressure.first().map_or(0.0, |p| p.1);
         let load = self.load;
         let a_exact = hertz.half_width;
         Ok(HertzResult {
@@ -318,6 +338,8 @@ impl HertzScene {
             a_fit,
             p0_fit,
             pressure,
+            interface_pressure,
+            p0_interface,
             report,
         })
     }

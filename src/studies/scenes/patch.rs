@@ -14,7 +14,7 @@
 
 use crate::contact::ContactOptions;
 use crate::contact::mesh::Nodes;
-use crate::contact::traction::{max_overlap, nodal_pressures};
+use crate::contact::traction::{interface_pressures, max_overlap, nodal_pressures};
 use crate::error::{Error, Result};
 use crate::fem::element::{Tempering, TriGeometry};
 use crate::fem::material::{Material, PlaneMode};
@@ -124,6 +124,9 @@ pub struct PatchResult {
     /// over the interface nodes, / p (the library's recovery; the range
     /// above is this harness's own).
     pub traction: (f64, f64),
+    /// The same for `contact::traction::interface_pressures` (both sides'
+    /// mean).
+    pub interface_traction: (f64, f64),
     /// `contact::traction::max_overlap` (the library's measure of the
     /// actual interpenetration).
     pub overlap: f64,
@@ -329,6 +332,11 @@ impl PatchScene {
                 .into_iter()
                 .map(|q| q.pressure / p),
         );
+        let interface_traction = range(
+            &mut interface_pressures(nodes, elements, |v| f[v])
+                .into_iter()
+                .map(|q| q.pressure / p),
+        );
         let overlap = max_overlap(nodes, elements, |v| u[v]);
         Ok(PatchResult {
             max_error,
@@ -340,6 +348,7 @@ impl PatchScene {
             reported_penetration: report.max_penetration,
             penetration,
             traction,
+            interface_traction,
             overlap,
             report,
         })
