@@ -3282,26 +3282,39 @@ static void oracle_contact_forces(runner_t *R, int idx, const double *fc) {
   free(cp);
 }
 
+/* The nodes of the current contact mesh: a flag per node (nn + 1 bytes, to
+ * free), or NULL when the mesh cannot be read or names a node out of range. */
+static char *contact_nodes(runner_t *R) {
+  shadow_t *s = &R->sh;
+  int *cm;
+  long ne = fetch_contact_mesh(R->m, &cm, NULL);
+  if (ne < 0) return NULL;
+  char *in = xcalloc((size_t)s->nn + 1, 1);
+  for (long e = 0; e < 3 * ne; ++e) {
+    long v = (long)cm[e] - s->base;
+    if (v < 0 || v >= s->nn) {
+      free(in);
+      in = NULL;
+      break;
+    }
+    in[v] = 1;
+  }
+  free(cm);
+  return in;
+}
+
 /* tfem_get_contact_nodal_pressures (per node, after a contact solve):
  * zero off the nodes of the contact elements. */
 static void oracle_nodal_pressures(runner_t *R, int idx, const double *p) {
   shadow_t *s = &R->sh;
-  int *cm;
-  long ne = fetch_contact_mesh(R->m, &cm, NULL);
-  if (ne < 0) return;
-  char *in = xcalloc((size_t)s->nn + 1, 1);
-  for (long e = 0; e < 3 * ne; ++e) {
-    long v = (long)cm[e] - s->base;
-    if (v >= 0 && v < s->nn) in[v] = 1;
-  }
-  for (int v = 0; v < s->nn; ++v)
+  char *in = contact_nodes(R);
+  for (int v = 0; in && v < s->nn; ++v)
     if (!in[v] && p[v] != 0.0) {
       finding(R, V_CONTACT, idx, "nodal contact pressure %g at node %d, which no contact element touches", p[v],
               v + s->base);
       break;
     }
   free(in);
-  free(cm);
 }
 
 /* tfem_get_contact_gaps (per node, after a contact solve): zero off the
@@ -3315,16 +3328,8 @@ static void oracle_nodal_pressures(runner_t *R, int idx, const double *p) {
  * (seen: -6e197 against 1e197 with 1e200 prescribed). */
 static void oracle_gaps(runner_t *R, int idx, const double *gap) {
   shadow_t *s = &R->sh;
-  int *cm;
-  long ne = fetch_contact_mesh(R->m, &cm, NULL);
-  if (ne < 0) return;
-  char *in = xcalloc((size_t)s->nn + 1, 1);
-  int bad = 0;
-  for (long e = 0; e < 3 * ne && !bad; ++e) {
-    long v = (long)cm[e] - s->base;
-    if (v < 0 || v >= s->nn) bad = 1;
-    else in[v] = 1;
-  }
+  char *in = contact_nodes(R);
+  int bad = in == NULL;
   double mn = INFINITY;
   for (int v = 0; v < s->nn && !bad; ++v) {
     if (!in[v] && gap[v] != 0.0) {
@@ -3341,7 +3346,6 @@ static void oracle_gaps(runner_t *R, int idx, const double *gap) {
     finding(R, V_CONTACT, idx, "smallest gap %.17g, but the report's max_penetration is %.17g (relative difference %.3g)",
             mn, rep.max_penetration, fabs(mn + rep.max_penetration) / rep.max_penetration);
   free(in);
-  free(cm);
 }
 
 /* tfem_get_external_work: the sum of f.u over the loads known here and the
