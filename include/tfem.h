@@ -761,8 +761,8 @@ enum tfem_status tfem_get_contact_forces(struct tfem_model *model, double *out, 
  * (n_nodes values; force per unit area, Pa in SI, positive in compression;
  * zero off the contact interfaces), computed on request: the traction
  * read from both sides of the interface (the mean of a node's normal
- * contact force over half its interface edges and the other side's,
- * interpolated where the node faces it). Exact for a uniform pressure on
+ * contact force over half its interface edges and the other side's
+ * forces over their tributaries near it). Exact for a uniform pressure on
  * matching and non-matching interfaces alike.
  */
 enum tfem_status tfem_get_contact_nodal_pressures(struct tfem_model *model,

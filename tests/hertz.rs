@@ -180,12 +180,13 @@ fn a_non_matching_loop_takes_at_most_one_iteration_more_than_a_matching_one() {
 }
 
 #[test]
-fn the_traction_read_from_both_sides_is_near_the_hertz_peak_on_non_matching_meshes() {
-    // Measured p₀ at the axis, block's lumped reading against both sides'
-    // mean (`interface_pressures`): cylinder 2.5× coarser, a/32: +9.7e-2
-    // against +1.2e-2; cylinder 2.5× finer: +3.3e-2 against -2.1e-3
-    // (matching: -1.6e-3).
-    for (ratio, bound) in [(2.5, 2e-2), (0.4, 4e-3)] {
+fn the_traction_read_from_both_sides_is_smoother_on_non_matching_meshes() {
+    // Largest |p_node − p_H(x)|/p₀ over the block's nodes within 0.8a at
+    // a/32, the block's own reading against both sides'
+    // (`interface_pressures`). Measured: cylinder 2.5× coarser 1.05e-1
+    // against 2.83e-2; 2.5× finer 3.31e-2 against 9.22e-3 (matching:
+    // 1.60e-3 either way).
+    for (ratio, bound) in [(2.5, 4e-2), (0.4, 1.5e-2)] {
         let rs = run(
             Hertz {
                 cylinder_mesh_ratio: ratio,
@@ -194,10 +195,13 @@ fn the_traction_read_from_both_sides_is_near_the_hertz_peak_on_non_matching_mesh
             &[32.0],
         );
         let r = &rs[0];
-        let (lumped, both) = (rel(r.p0, r.p0_exact), rel(r.p0_interface, r.p0_exact));
+        let (own, both) = (
+            r.inner_error(&r.pressure),
+            r.inner_error(&r.interface_pressure),
+        );
         assert!(
-            both < bound && both < lumped / 4.0,
-            "ratio {ratio}: {both:e} against {lumped:e}"
+            both < bound && both < own / 2.5,
+            "ratio {ratio}: {both:e} against {own:e}"
         );
     }
 }

@@ -887,8 +887,8 @@ pub unsafe extern "C" fn tfem_get_contact_forces(
 /// (n_nodes values; force per unit area, Pa in SI, positive in compression;
 /// zero off the contact interfaces), computed on request: the traction
 /// read from both sides of the interface (the mean of a node's normal
-/// contact force over half its interface edges and the other side's,
-/// interpolated where the node faces it). Exact for a uniform pressure on
+/// contact force over half its interface edges and the other side's
+/// forces over their tributaries near it). Exact for a uniform pressure on
 /// matching and non-matching interfaces alike.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_contact_nodal_pressures(

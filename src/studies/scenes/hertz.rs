@@ -232,6 +232,20 @@ impl Hertz {
     }
 }
 
+impl HertzResult {
+    /// The largest error of nodal pressures `p` ((x, p) pairs) against
+    /// p₀√(1 − x²/a²) over the inner 80 % of the contact, over p₀.
+    pub fn inner_error(&self, p: &[(f64, f64)]) -> f64 {
+        let a = self.a_exact;
+        p.iter()
+            .filter(|(x, _)| x.abs() <= 0.8 * a)
+            .map(|(x, q)| {
+                (q - self.p0_exact * (1.0 - x * x / (a * a)).sqrt()).abs() / self.p0_exact
+            })
+            .fold(0.0, f64::max)
+    }
+}
+
 impl HertzScene {
     /// Solves and measures.
     pub fn solve(&mut self, hertz: &Hertz, options: &ContactOptions) -> Result<HertzResult> {
