@@ -97,7 +97,9 @@ pub struct HertzResult {
     /// Analytic peak pressure p₀.
     pub p0_exact: f64,
     /// Contact half-width: where the nodal pressure ends (p² extrapolated
-    /// linearly to zero from the last two loaded nodes of the block).
+    /// linearly to zero from the last two loaded nodes of the block, at
+    /// most to the first unloaded node; when the last is not the smaller,
+    /// halfway to the first unloaded node).
     pub a: f64,
     /// Peak pressure: the block's nodal contact force at x = 0 over its
     /// tributary length.
@@ -308,7 +310,17 @@ impl HertzScene {
             .unwrap_or(pressure.len());
         let a = if last >= 2 {
             let ((x1, p1), (x2, p2)) = (pressure[last - 2], pressure[last - 1]);
-            x2 + p2 * p2 * (x2 - x1) / (p1 * p1 - p2 * p2)
+            // The edge lies before the first unloaded node, x3. Lumpy
+            // pressures (a non-matching interface) need not fall towards
+            // it: then no extrapolation, halfway to x3.
+            let x3 = pressure.get(last).map_or(f64::INFINITY, |p| p.0);
+            if p1 > p2 {
+                (x2 + p2 * p2 * (x2 - x1) / (p1 * p1 - p2 * p2)).min(x3)
+            } else if x3.is_finite() {
+                0.5 * (x2 + x3)
+            } else {
+                x2
+            }
         } else {
             f64::NAN
         };
