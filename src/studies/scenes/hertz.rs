@@ -113,7 +113,7 @@ pub struct HertzResult {
     pub pressure: Vec<(f64, f64)>,
     /// The interface traction read from both sides
     /// (`contact::traction::interface_pressures`) at the block's top nodes
-    /// in contact, (x, p), sorted by x.
+    /// that are nodes of B, (x, p), sorted by x.
     pub interface_pressure: Vec<(f64, f64)>,
     /// Its value on the axis.
     pub p0_interface: f64,
