@@ -653,11 +653,8 @@ impl CattaneoScene {
 /// §6.15) instead of the oracle: load steps of the model itself, the
 /// platen moved by [`Model::set_prescribed`], secant iterations on whole
 /// steps (each trial reverted), measured like the oracle's steps from the
-/// nodal contact forces of each block/cylinder node pair.
-///
-/// Not converging yet: the normal step closes a curved gap with friction,
-/// and the active-set loop cycles between stick and slip at the edge of
-/// contact (NOT_CONVERGED at a/8 and a/16 with the default cap; §6.15).
+/// nodal contact forces of each block/cylinder node pair (docs/report.md,
+/// "Cattaneo–Mindlin partial slip", gives its errors against the oracle's).
 pub struct TfemCattaneo {
     /// The normal step, then one per ratio.
     pub steps: Vec<CattaneoStep>,
@@ -671,10 +668,14 @@ pub struct TfemCattaneo {
     pub seconds: f64,
 }
 
+/// A block top node and the cylinder node at its x, with that x and its
+/// tributary length.
+type NodePair = (usize, usize, f64, f64);
+
 impl CattaneoScene {
     /// Node pairs (block top node, cylinder node) at equal x, with their x
     /// and tributary length, sorted by x.
-    fn node_pairs(&self) -> Result<Vec<(usize, usize, f64, f64)>> {
+    fn node_pairs(&self) -> Result<Vec<NodePair>> {
         let mesh = self
             .model
             .mesh()
@@ -706,7 +707,11 @@ impl CattaneoScene {
 
     /// The TFEM step at platen displacement (δₜ, −δₙ), as the oracle's
     /// step type.
-    fn tfem_step(&mut self, platen: [f64; 2]) -> Result<(FrictionalStep, ContactReport)> {
+    fn tfem_step(
+        &mut self,
+        platen: [f64; 2],
+        (apexes, node_pairs): (&[usize], &[NodePair]),
+    ) -> Result<(FrictionalStep, ContactReport)> {
         let t0 = std::time::Instant::now();
         for &v in &self.platen {
             self.model.set_prescribed(v, Component::X, platen[0])?;
@@ -726,13 +731,12 @@ impl CattaneoScene {
         // is μ only where both slip with the same weights.
         let mut state_at = vec![0u8; f.len()];
         let states = self.model.contact_friction_state()?;
-        for (el, &st) in self.model.contact_mesh()?.iter().zip(&states) {
-            state_at[el.apex] = state_at[el.apex].max(st);
+        for (&apex, &st) in apexes.iter().zip(&states) {
+            state_at[apex] = state_at[apex].max(st);
         }
-        let pairs = self
-            .node_pairs()?
-            .into_iter()
-            .map(|(lower, upper, x, length)| {
+        let pairs = node_pairs
+            .iter()
+            .map(|&(lower, upper, x, length)| {
                 let [ft, fnorm] = f[upper];
                 let state = match state_at[lower].max(state_at[upper]) {
                     0 => PairState::Open,
@@ -773,6 +777,15 @@ impl CattaneoScene {
     pub fn solve_tfem(&mut self, cm: &CattaneoMindlin, ratios: &[f64]) -> Result<TfemCattaneo> {
         let t_start = std::time::Instant::now();
         self.model.set_friction(0, cm.mu)?;
+        // B and the node pairs stay the same over every step and trial.
+        let apexes: Vec<usize> = self
+            .model
+            .contact_mesh()?
+            .iter()
+            .map(|el| el.apex)
+            .collect();
+        let node_pairs = self.node_pairs()?;
+        let fixed = (apexes.as_slice(), node_pairs.as_slice());
         let tol = 1e-9;
         let target = self.load;
         let (mut factorisations, mut iterations) = (0, 0);
@@ -788,7 +801,7 @@ impl CattaneoScene {
             let mut pts = vec![(x0, y0)];
             let mut x = guess;
             for trial in 1..=40 {
-                let (s, report) = scene.tfem_step(platen(x))?;
+                let (s, report) = scene.tfem_step(platen(x), fixed)?;
                 factorisations += report.info.factorizations;
                 let y = residual(&s);
                 if y.abs() <= tol * scale {
@@ -823,11 +836,11 @@ impl CattaneoScene {
             // load each element closes.
             self.model.revert_step()?;
             for i in 1..ns {
-                let (_, report) = self.tfem_step([0.0, -dn * i as f64 / ns as f64])?;
+                let (_, report) = self.tfem_step([0.0, -dn * i as f64 / ns as f64], fixed)?;
                 inc_factorisations += report.info.factorizations;
                 inc_iterations += report.iterations;
             }
-            let y = p_of(&self.tfem_step([0.0, -dn])?.0);
+            let y = p_of(&self.tfem_step([0.0, -dn], fixed)?.0);
             self.model.revert_step()?;
             (dn, normal, trials) = secant(
                 self,
