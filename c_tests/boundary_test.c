@@ -870,6 +870,61 @@ static void a_non_matching_interface_reads_a_uniform_pressure_at_every_node(void
   tfem_destroy(m);
 }
 
+/* Three bodies: a lower block, and two blocks B and C side by side on it
+ * touching at x = 0.5, pressed down by p and together by q (frictionless,
+ * three pairs). Exact: uniform stress, p on every bed node, q on every
+ * three pairs). Exact: uniform stress, p on every bed node, q on every
+ * head-joint node. Where B and C meet the lower block, its node lies on
+ * two bed pairs and reads p; the corners of B and C lie on a bed and a
+ * head pair and read the mean of their faces' pressures over equal
+ * tributaries, (p + q) / 2. Found wrong at these three nodes: the pairs
+ * were read together, each counting the edge beyond its end and one
+ * normal for both faces. */
+static mesh_t T;
+static void a_node_on_several_pairs_reads_their_forces_over_their_tributaries(void) {
+  const double p = 1e7, q = 4e6;
+  tfem_model *m = tfem_create();
+  CHECK(tfem_set_mesh(m, T.nn, T.xy, T.nt, T.tri, T.body, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_set_boundary_edges(m, T.ne, T.edges, T.tags) == TFEM_STATUS_OK);
+  for (int b = 1; b <= 3; ++b)
+    CHECK(tfem_set_material(m, b, 1e10, 0.3, TFEM_PLANE_MODE_STRESS) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 52, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix(m, 0, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix(m, 27, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK); /* B's first node */
+  CHECK(tfem_add_pressure(m, 63, p) == TFEM_STATUS_OK);
+  CHECK(tfem_add_pressure(m, 73, p) == TFEM_STATUS_OK);
+  CHECK(tfem_add_pressure(m, 60, q) == TFEM_STATUS_OK);
+  CHECK(tfem_add_pressure(m, 71, q) == TFEM_STATUS_OK);
+  CHECK(tfem_add_contact_pair(m, 53, 62, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_add_contact_pair(m, 53, 72, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_add_contact_pair(m, 61, 70, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  double r[128];
+  CHECK(tfem_get_contact_nodal_pressures(m, r, (size_t)T.nn) == TFEM_STATUS_OK);
+  int bed = 0, head = 0, corners = 0, shared = 0;
+  for (int v = 0; v < T.nn; ++v) {
+    double x = T.xy[2 * v], y = T.xy[2 * v + 1];
+    int on_bed = y == 0.0, on_head = x == 0.5 && y >= 0.0 && v >= 27;
+    double want = 0.0;
+    if (on_bed && on_head) {
+      want = 0.5 * (p + q);
+      corners++;
+    } else if (on_bed) {
+      want = p;
+      bed++;
+      shared += x == 0.5;
+    } else if (on_head) {
+      want = q;
+      head++;
+    }
+    CHECK(fabs(r[v] - want) <= 1e-9 * p);
+  }
+  /* 9 lower bed nodes, 4 + 4 upper ones besides the 2 corners, 2 + 2
+   * head-joint nodes above the corners. */
+  CHECK(bed == 9 + 4 + 4 && corners == 2 && head == 4 && shared == 1);
+  tfem_destroy(m);
+}
+
 int main(void) {
   /* Nothing the library does may reach stderr: it goes to a file, checked
    * at the end. */
@@ -883,6 +938,9 @@ int main(void) {
   grid(&B, 8, 2, 0.0, 0.0, 1.0, 0.25, 2, 20);
   grid(&N, 6, 2, 0.0, -0.25, 1.0, 0.25, 1, 30);
   grid(&N, 4, 2, 0.0, 0.0, 1.0, 0.25, 2, 40);
+  grid(&T, 8, 2, 0.0, -0.25, 1.0, 0.25, 1, 50);
+  grid(&T, 4, 2, 0.0, 0.0, 0.5, 0.25, 2, 60);
+  grid(&T, 4, 2, 0.5, 0.0, 0.5, 0.25, 3, 70);
 
   a_clockwise_mesh_is_turned_and_solved_exactly();
   a_fold_inside_a_counter_clockwise_body_stays_inverted();
@@ -901,6 +959,7 @@ int main(void) {
   fuzz_found_defects_at_the_friction_boundary();
   facing_tags_are_paired_automatically();
   a_non_matching_interface_reads_a_uniform_pressure_at_every_node();
+  a_node_on_several_pairs_reads_their_forces_over_their_tributaries();
 
   fflush(stderr);
   fseek(capture, 0, SEEK_END);

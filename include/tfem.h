@@ -761,9 +761,14 @@ enum tfem_status tfem_get_contact_forces(struct tfem_model *model, double *out, 
  * (n_nodes values; force per unit area, Pa in SI, positive in compression;
  * zero off the contact interfaces), computed on request: the traction
  * read from both sides of the interface (the mean of a node's normal
- * contact force over half its interface edges and the other side's
- * forces over their tributaries near it). Exact for a uniform pressure on
- * matching and non-matching interfaces alike.
+ * contact force over its tributary — half its interface edges, as far as
+ * they face the other side — and the other side's forces over their
+ * tributaries near it). Exact for a uniform pressure on matching and
+ * non-matching interfaces alike. Each pair is read with its own forces; a
+ * node on several pairs (where three bodies meet) gets their normal
+ * forces over their tributaries together: the pressure where two pairs
+ * continue one face, the tributary-weighted mean of its faces' pressures
+ * at a corner.
  */
 enum tfem_status tfem_get_contact_nodal_pressures(struct tfem_model *model,
                                                   double *out,

@@ -9,7 +9,14 @@
 //! its interface edge, which may be extended beyond the edge; the actual
 //! overlap of a node is measured against the edge of the other side its
 //! projection falls on.
+//!
+//! Each pair is read on its own: a node's tributary is the part of its
+//! interface edges that faces the other side of *that* pair (B reaches one
+//! edge beyond the other side's end, which faces nothing), and its force
+//! is that pair's. A node on several pairs (where three bodies meet) reads
+//! its pairs' normal forces over their tributaries together.
 
+use std::borrow::Cow;
 use std::collections::{BTreeMap, BTreeSet};
 
 use super::ContactElement;
@@ -47,40 +54,179 @@ pub fn edge_on_side_a(nodes: Nodes<'_>, elements: &[ContactElement]) -> Vec<bool
         .collect()
 }
 
-/// The side of every node of B (true: side a) and its tributary length
-/// (half the summed length of the interface edges it ends: each interface
-/// edge is the edge of exactly one element of B).
-fn sides_and_tributaries(
-    elements: &[ContactElement],
-    on_a: &[bool],
-) -> (BTreeMap<usize, bool>, BTreeMap<usize, f64>) {
+/// The part of each element's interface edge that faces the other side
+/// of its pair: the edge clipped at the other side's end nodes that lie
+/// near it (within an edge length of it), each of which bounds the other
+/// side towards its one neighbour. B reaches one edge beyond the other
+/// side's ends (`contact::mesh::nonconforming`); that edge faces nothing
+/// past the end. The elements must be of one pair.
+fn facing_lengths(nodes: Nodes<'_>, elements: &[ContactElement], on_a: &[bool]) -> Vec<f64> {
+    let x = nodes.x;
+    let edge_of = |el: &ContactElement| {
+        let mut base = el.nodes.iter().copied().filter(|&w| w != el.apex);
+        (
+            base.next().unwrap_or(el.apex),
+            base.next().unwrap_or(el.apex),
+        )
+    };
+    // Per side: the nodes that end one edge of it, with that edge's other
+    // node.
+    let mut ends: [BTreeMap<usize, Vec<usize>>; 2] = [BTreeMap::new(), BTreeMap::new()];
+    for (el, &a) in elements.iter().zip(on_a) {
+        let (p, q) = edge_of(el);
+        let side = &mut ends[usize::from(a)];
+        side.entry(p).or_default().push(q);
+        side.entry(q).or_default().push(p);
+    }
+    let end_nodes: [Vec<(usize, usize)>; 2] = ends.map(|side| {
+        side.into_iter()
+            .filter_map(|(v, n)| (n.len() == 1).then(|| (v, n[0])))
+            .collect()
+    });
+    elements
+        .iter()
+        .zip(on_a)
+        .map(|(el, &a)| {
+            let (p, q) = edge_of(el);
+            let d = [x[q][0] - x[p][0], x[q][1] - x[p][1]];
+            let len2 = d[0] * d[0] + d[1] * d[1];
+            let (mut lo, mut hi) = (0.0f64, 1.0f64);
+            for &(e, f) in &end_nodes[usize::from(!a)] {
+                let r = [x[e][0] - x[p][0], x[e][1] - x[p][1]];
+                let t = (r[0] * d[0] + r[1] * d[1]) / len2;
+                let c = t.clamp(0.0, 1.0);
+                let off = [r[0] - c * d[0], r[1] - c * d[1]];
+                if off[0] * off[0] + off[1] * off[1] > len2 {
+                    continue; // not near this edge
+                }
+                let inward = (x[f][0] - x[e][0]) * d[0] + (x[f][1] - x[e][1]) * d[1];
+                if inward > 0.0 {
+                    lo = lo.max(t);
+                } else if inward < 0.0 {
+                    hi = hi.min(t);
+                }
+            }
+            el.edge_length * (hi - lo).max(0.0)
+        })
+        .collect()
+}
+
+/// The side of every node of B (true: side a).
+fn node_sides(elements: &[ContactElement], on_a: &[bool]) -> BTreeMap<usize, bool> {
     let mut side = BTreeMap::new();
-    let mut tributary = BTreeMap::new();
     for (el, &a) in elements.iter().zip(on_a) {
         for &v in &el.nodes {
-            if v == el.apex {
-                side.insert(v, !a);
-                tributary.entry(v).or_insert(0.0);
-            } else {
-                side.insert(v, a);
-                *tributary.entry(v).or_insert(0.0) += 0.5 * el.edge_length;
+            side.insert(v, if v == el.apex { !a } else { a });
+        }
+    }
+    side
+}
+
+/// The tributary length of every node of B: half the summed length of the
+/// interface edges it ends, each counted as far as it faces the other side
+/// ([`facing_lengths`]; each interface edge is the edge of exactly one
+/// element of B); zero for a node that is only an apex. The elements must
+/// be of one pair.
+fn tributaries(
+    nodes: Nodes<'_>,
+    elements: &[ContactElement],
+    on_a: &[bool],
+) -> BTreeMap<usize, f64> {
+    let facing = facing_lengths(nodes, elements, on_a);
+    let mut tributary = BTreeMap::new();
+    for (el, &length) in elements.iter().zip(&facing) {
+        for &v in &el.nodes {
+            let m = tributary.entry(v).or_insert(0.0);
+            if v != el.apex {
+                *m += 0.5 * length;
             }
         }
     }
-    (side, tributary)
+    tributary
+}
+
+/// The elements of B grouped by pair, in pair order (one pair: borrowed).
+fn by_pair(elements: &[ContactElement]) -> Vec<(usize, Cow<'_, [ContactElement]>)> {
+    match elements.first() {
+        None => Vec::new(),
+        Some(first) if elements.iter().all(|el| el.pair == first.pair) => {
+            vec![(first.pair, Cow::Borrowed(elements))]
+        }
+        Some(_) => {
+            let mut groups: BTreeMap<usize, Vec<ContactElement>> = BTreeMap::new();
+            for el in elements {
+                groups.entry(el.pair).or_default().push(el.clone());
+            }
+            groups
+                .into_iter()
+                .map(|(pair, els)| (pair, Cow::Owned(els)))
+                .collect()
+        }
+    }
+}
+
+/// Each pair's readings `read(pair, its elements)` put together: a node
+/// on one pair keeps that pair's; a node on several reads their normal
+/// forces over their tributaries together, Σ p_k m_k / Σ m_k (the plain
+/// mean of the p_k where no pair gives it a tributary). Sorted by node.
+fn per_pair(
+    elements: &[ContactElement],
+    mut read: impl FnMut(usize, &[ContactElement]) -> Vec<NodalPressure>,
+) -> Vec<NodalPressure> {
+    let mut at: BTreeMap<usize, Vec<NodalPressure>> = BTreeMap::new();
+    for (pair, els) in by_pair(elements) {
+        for q in read(pair, &els) {
+            at.entry(q.node).or_default().push(q);
+        }
+    }
+    at.into_values()
+        .map(|qs| {
+            if let [one] = qs.as_slice() {
+                return *one;
+            }
+            let m: f64 = qs.iter().map(|q| q.tributary).sum();
+            let pressure = if m > 0.0 {
+                qs.iter().map(|q| q.pressure * q.tributary).sum::<f64>() / m
+            } else {
+                qs.iter().map(|q| q.pressure).sum::<f64>() / qs.len() as f64
+            };
+            NodalPressure {
+                node: qs[0].node,
+                pressure,
+                tributary: m,
+            }
+        })
+        .collect()
 }
 
 /// The contact pressure at every node of B from the contact forces
-/// `force` on the nodes (e.g. `Model::contact_forces`): the normal force
-/// on the node over its tributary length, positive when it pushes the node
-/// into its body. Sorted by node.
+/// `force(pair, node)` of each pair's elements on the node (e.g.
+/// `Model::contact_forces` when there is one pair): the normal force on
+/// the node over its tributary length (the part of its interface edges
+/// that faces the other side), positive when it pushes the node into its
+/// body. A node on several pairs reads their normal forces over their
+/// tributaries together. Sorted by node.
 pub fn nodal_pressures(
+    nodes: Nodes<'_>,
+    elements: &[ContactElement],
+    force: impl Fn(usize, usize) -> [f64; 2],
+) -> Vec<NodalPressure> {
+    per_pair(elements, |pair, els| {
+        own_pressures(nodes, els, |v| force(pair, v))
+    })
+}
+
+/// [`nodal_pressures`] of the elements of one pair.
+fn own_pressures(
     nodes: Nodes<'_>,
     elements: &[ContactElement],
     force: impl Fn(usize) -> [f64; 2],
 ) -> Vec<NodalPressure> {
     let on_a = edge_on_side_a(nodes, elements);
-    let (side, tributary) = sides_and_tributaries(elements, &on_a);
+    let (side, tributary) = (
+        node_sides(elements, &on_a),
+        tributaries(nodes, elements, &on_a),
+    );
     // The normal of a node: that of an element whose edge it ends, else of
     // one it is the apex of (both point from a to b).
     let mut normal: BTreeMap<usize, [f64; 2]> = BTreeMap::new();
@@ -172,17 +318,29 @@ fn facing_edges(
 /// [`nodal_pressures`]; on a curved non-matching interface the two sides'
 /// own readings err at the scale of the meshes with opposite signs, and
 /// this one is 3–4× closer to the traction (Hertz). Nodes that face
-/// nothing (beyond the other side's ends) keep their own value. Sorted by
-/// node.
+/// nothing (beyond the other side's ends) keep their own value. Each pair
+/// is read on its own (`force(pair, node)`, as for [`nodal_pressures`]); a
+/// node on several pairs reads them together. Sorted by node.
 pub fn interface_pressures(
+    nodes: Nodes<'_>,
+    elements: &[ContactElement],
+    force: impl Fn(usize, usize) -> [f64; 2],
+) -> Vec<NodalPressure> {
+    per_pair(elements, |pair, els| {
+        both_sides(nodes, els, |v| force(pair, v))
+    })
+}
+
+/// [`interface_pressures`] of the elements of one pair.
+fn both_sides(
     nodes: Nodes<'_>,
     elements: &[ContactElement],
     force: impl Fn(usize) -> [f64; 2],
 ) -> Vec<NodalPressure> {
-    let own = nodal_pressures(nodes, elements, force);
+    let own = own_pressures(nodes, elements, force);
     let at: BTreeMap<usize, NodalPressure> = own.iter().map(|q| (q.node, *q)).collect();
     let on_a = edge_on_side_a(nodes, elements);
-    let (side, _) = sides_and_tributaries(elements, &on_a);
+    let side = node_sides(elements, &on_a);
     let facing = facing_edges(nodes, elements, &on_a, &side);
     // The other side's reading at node i: Σ_j w_ij F_j / Σ_j w_ij m_j over
     // its nodes j, F_j = p_j m_j the normal force, w_ij = φ_j(x_i) + φ_i(x_j)
@@ -234,7 +392,7 @@ pub fn max_overlap(
     disp: impl Fn(usize) -> [f64; 2],
 ) -> f64 {
     let on_a = edge_on_side_a(nodes, elements);
-    let (side, _) = sides_and_tributaries(elements, &on_a);
+    let side = node_sides(elements, &on_a);
     let facing = facing_edges(nodes, elements, &on_a, &side);
     let x = nodes.x;
     let point = |w: usize| {
@@ -264,4 +422,43 @@ pub fn max_overlap(
         worst = worst.max(-gap);
     }
     worst
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::mesh::{Side, nonconforming};
+
+    /// Side a along y = 0 at `xa` (body below), side b at `xb` (body
+    /// above), and the strip between them.
+    fn strip(xa: &[f64], xb: &[f64]) -> (Vec<[f64; 2]>, Vec<ContactElement>) {
+        let mut x: Vec<[f64; 2]> = xa.iter().map(|&v| [v, 0.0]).collect();
+        x.extend(xb.iter().map(|&v| [v, 0.0]));
+        let na = xa.len();
+        let ea: Vec<[usize; 2]> = (0..na - 1).map(|i| [i + 1, i]).collect();
+        let eb: Vec<[usize; 2]> = (0..xb.len() - 1).map(|i| [na + i, na + i + 1]).collect();
+        let a = Side::from_edges(&x, 0, 1, 1, &ea).unwrap();
+        let b = Side::from_edges(&x, 0, 2, 2, &eb).unwrap();
+        let elements = nonconforming(Nodes { x: &x, base: 0 }, 0, &a, &b).unwrap();
+        (x, elements)
+    }
+
+    #[test]
+    fn an_edge_beyond_the_other_sides_end_faces_nothing() {
+        // Side b covers [0, 1.5] of side a's [0, 3]: B reaches side a's edge
+        // [1, 2], which b's end cuts in half, and the edge beyond it, which
+        // faces nothing.
+        let (x, elements) = strip(&[0.0, 1.0, 2.0, 3.0], &[0.0, 0.75, 1.5]);
+        let nodes = Nodes { x: &x, base: 0 };
+        let on_a = edge_on_side_a(nodes, &elements);
+        let m = tributaries(nodes, &elements, &on_a);
+        assert_eq!(m[&0], 0.5);
+        assert_eq!(m[&1], 0.5 + 0.25);
+        assert_eq!(m[&2], 0.25);
+        assert_eq!(m.get(&3).copied().unwrap_or(0.0), 0.0);
+        // Side b lies wholly over a: its tributaries are its half edges.
+        assert_eq!(m[&4], 0.375);
+        assert_eq!(m[&5], 0.75);
+        assert_eq!(m[&6], 0.375);
+    }
 }

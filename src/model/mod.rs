@@ -781,15 +781,23 @@ impl Model {
     /// (`contact::traction::interface_pressures`, docs/method.md §6.11) —
     /// exact for a uniform traction, matching or not, and on a curved
     /// non-matching interface much closer to the traction than either
-    /// side's own nodal forces. A node on several pairs (a corner shared by
-    /// three bodies) mixes them; read the elements' pressures there.
+    /// side's own nodal forces. Each pair is read with its own forces over
+    /// the part of a node's edges that faces its other side; a node on
+    /// several pairs (where three bodies meet) gets their normal forces
+    /// over their tributaries together, Σ p_k m_k / Σ m_k: the pressure
+    /// where its pairs continue one face (a head joint ending on a bed
+    /// face), the tributary-weighted mean of its faces' pressures at a
+    /// corner.
     pub fn contact_nodal_pressures(&self) -> Result<Vec<f64>> {
         let mesh = self.problem.mesh_ref()?;
-        let f = self.contact_forces()?;
+        let f = self
+            .solution()?
+            .contact_forces_by_pair(&self.problem, self.field()?)?;
         let mut p = vec![0.0; mesh.nodes().len()];
         let nodes = crate::contact::mesh::Nodes::of(mesh);
+        let force = |pair: usize, v: usize| f.get(&(pair, v)).copied().unwrap_or([0.0; 2]);
         for q in
-            crate::contact::traction::interface_pressures(nodes, self.contact_elements()?, |v| f[v])
+            crate::contact::traction::interface_pressures(nodes, self.contact_elements()?, force)
         {
             p[q.node] = q.pressure;
         }

@@ -7,6 +7,7 @@ use crate::contact::{
     ContactElement, ContactOptions, ElementLaw, FrictionOutcome, contact_stiffness,
     linearised_opening, shear_vector,
 };
+use std::collections::BTreeMap;
 use std::sync::OnceLock;
 
 use crate::error::{Error, Result, ensure_finite};
@@ -167,9 +168,43 @@ impl Solution {
     /// (zero off the interfaces): minus the internal force K_e u_e − f0_e
     /// of the active elements of B. It sums to zero over each pair.
     pub fn contact_forces(&self, problem: &Problem, u: &[f64]) -> Result<Vec<[f64; 2]>> {
-        let c = self.contact_state()?;
         let mesh = problem.mesh_ref()?;
         let mut f = vec![0.0; u.len()];
+        self.for_each_element_force(problem, u, |_, g, v| f[g] += v)?;
+        ensure_finite(f.iter().copied(), 2, "contact force", |v| mesh.node_name(v))?;
+        Ok(f.chunks_exact(2).map(|c| [c[0], c[1]]).collect())
+    }
+
+    /// [`Solution::contact_forces`] of each pair apart: (pair, node) → the
+    /// force of that pair's elements on the node. A node on several pairs
+    /// (where three bodies meet) has one entry per pair.
+    pub fn contact_forces_by_pair(
+        &self,
+        problem: &Problem,
+        u: &[f64],
+    ) -> Result<BTreeMap<(usize, usize), [f64; 2]>> {
+        let mesh = problem.mesh_ref()?;
+        let mut f: BTreeMap<(usize, usize), [f64; 2]> = BTreeMap::new();
+        self.for_each_element_force(problem, u, |pair, g, v| {
+            f.entry((pair, g / 2)).or_insert([0.0; 2])[g % 2] += v;
+        })?;
+        let nodes: Vec<usize> = f.keys().map(|&(_, v)| v).collect();
+        ensure_finite(f.values().flatten().copied(), 2, "contact force", |i| {
+            mesh.node_name(nodes[i])
+        })?;
+        Ok(f)
+    }
+
+    /// Calls `add(pair, global DOF, value)` with every active element's
+    /// contact force on each of its DOFs: −(K_e u_e − f0_e + τ b_t).
+    fn for_each_element_force(
+        &self,
+        problem: &Problem,
+        u: &[f64],
+        mut add: impl FnMut(usize, usize, f64),
+    ) -> Result<()> {
+        let c = self.contact_state()?;
+        let mesh = problem.mesh_ref()?;
         for (k, el) in c.elements.iter().enumerate() {
             if !c.active[k] {
                 continue;
@@ -186,11 +221,14 @@ impl Solution {
             };
             for a in 0..6 {
                 let ku: f64 = (0..6).map(|b| cs.k[a * 6 + b] * ue[b]).sum();
-                f[2 * el.nodes[a / 2] + a % 2] -= ku - cs.f0[a] + tau * bt[a];
+                add(
+                    el.pair,
+                    2 * el.nodes[a / 2] + a % 2,
+                    -(ku - cs.f0[a] + tau * bt[a]),
+                );
             }
         }
-        ensure_finite(f.iter().copied(), 2, "contact force", |v| mesh.node_name(v))?;
-        Ok(f.chunks_exact(2).map(|c| [c[0], c[1]]).collect())
+        Ok(())
     }
 
     /// The normal gap at every node (zero off the interfaces): the

@@ -344,7 +344,7 @@ impl HertzScene {
         };
         let f = self.model.contact_forces()?;
         let traction: BTreeMap<usize, f64> =
-            interface_pressures(Nodes::of(mesh), self.model.contact_elements()?, |v| f[v])
+            interface_pressures(Nodes::of(mesh), self.model.contact_elements()?, |_, v| f[v])
                 .into_iter()
                 .map(|q| (q.node, q.pressure))
                 .collect();

@@ -328,12 +328,12 @@ impl PatchScene {
         let elements = model.contact_elements()?;
         let nodes = Nodes::of(mesh);
         let traction = range(
-            &mut nodal_pressures(nodes, elements, |v| f[v])
+            &mut nodal_pressures(nodes, elements, |_, v| f[v])
                 .into_iter()
                 .map(|q| q.pressure / p),
         );
         let interface_traction = range(
-            &mut interface_pressures(nodes, elements, |v| f[v])
+            &mut interface_pressures(nodes, elements, |_, v| f[v])
                 .into_iter()
                 .map(|q| q.pressure / p),
         );

@@ -395,7 +395,7 @@ impl RingScene {
             .iter()
             .copied()
             .collect();
-        let pressures: Vec<(usize, f64)> = nodal_pressures(Nodes::of(mesh), elements, |v| f[v])
+        let pressures: Vec<(usize, f64)> = nodal_pressures(Nodes::of(mesh), elements, |_, v| f[v])
             .iter()
             .map(|q| {
                 let (v, r) = (q.node, x[q.node][0].hypot(x[q.node][1]));
