@@ -100,6 +100,17 @@ static void grid(mesh_t *g, int nx, int ny, double x0, double y0, double w, doub
 #undef ID
 }
 
+/* A model of the grids in g with their boundary edges; bodies 1 ..
+ * `bodies` of Young's modulus e * ratio^(b - 1), nu = 0.3, plane `mode`. */
+static tfem_model *model_of(const mesh_t *g, int bodies, double e, double ratio, int mode) {
+  tfem_model *m = tfem_create();
+  CHECK(tfem_set_mesh(m, g->nn, g->xy, g->nt, g->tri, g->body, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_set_boundary_edges(m, g->ne, g->edges, g->tags) == TFEM_STATUS_OK);
+  for (int b = 1; b <= bodies; ++b, e *= ratio)
+    CHECK(tfem_set_material(m, b, e, 0.3, mode) == TFEM_STATUS_OK);
+  return m;
+}
+
 /* The block [0,4] x [0,1] (E = 1000, nu = 0.25, plane stress): left edge
  * (tag 1) u = 0, node 0 v = 0, traction 10 on the right (tag 2). Exact:
  * u = 10 x / E. Returns the largest error of u over the nodes. */
@@ -236,11 +247,7 @@ static void a_dof_prescribed_twice_with_different_values_is_refused(void) {
  * opens at the left and the active set changes. */
 static mesh_t B;
 static tfem_model *two_blocks_unpaired(void) {
-  tfem_model *m = tfem_create();
-  CHECK(tfem_set_mesh(m, B.nn, B.xy, B.nt, B.tri, B.body, 0) == TFEM_STATUS_OK);
-  CHECK(tfem_set_boundary_edges(m, B.ne, B.edges, B.tags) == TFEM_STATUS_OK);
-  CHECK(tfem_set_material(m, 1, 1e10, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
-  CHECK(tfem_set_material(m, 2, 1e11, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  tfem_model *m = model_of(&B, 2, 1e10, 10.0, TFEM_PLANE_MODE_STRAIN);
   CHECK(tfem_fix_edges(m, 12, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
   CHECK(tfem_fix(m, 0, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
   CHECK(tfem_fix(m, 27, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
@@ -841,11 +848,7 @@ static void facing_tags_are_paired_automatically(void) {
  * the pressure, the others read zero. */
 static mesh_t N;
 static void a_non_matching_interface_reads_a_uniform_pressure_at_every_node(void) {
-  tfem_model *m = tfem_create();
-  CHECK(tfem_set_mesh(m, N.nn, N.xy, N.nt, N.tri, N.body, 0) == TFEM_STATUS_OK);
-  CHECK(tfem_set_boundary_edges(m, N.ne, N.edges, N.tags) == TFEM_STATUS_OK);
-  CHECK(tfem_set_material(m, 1, 1e10, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
-  CHECK(tfem_set_material(m, 2, 1e10, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  tfem_model *m = model_of(&N, 2, 1e10, 1.0, TFEM_PLANE_MODE_STRAIN);
   CHECK(tfem_fix_edges(m, 32, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
   CHECK(tfem_fix(m, 0, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
   CHECK(tfem_fix(m, 21, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK); /* the upper block's first node */
@@ -883,11 +886,7 @@ static void a_non_matching_interface_reads_a_uniform_pressure_at_every_node(void
 static mesh_t T;
 static void a_node_on_several_pairs_reads_their_forces_over_their_tributaries(void) {
   const double p = 1e7, q = 4e6;
-  tfem_model *m = tfem_create();
-  CHECK(tfem_set_mesh(m, T.nn, T.xy, T.nt, T.tri, T.body, 0) == TFEM_STATUS_OK);
-  CHECK(tfem_set_boundary_edges(m, T.ne, T.edges, T.tags) == TFEM_STATUS_OK);
-  for (int b = 1; b <= 3; ++b)
-    CHECK(tfem_set_material(m, b, 1e10, 0.3, TFEM_PLANE_MODE_STRESS) == TFEM_STATUS_OK);
+  tfem_model *m = model_of(&T, 3, 1e10, 1.0, TFEM_PLANE_MODE_STRESS);
   CHECK(tfem_fix_edges(m, 52, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
   CHECK(tfem_fix(m, 0, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
   CHECK(tfem_fix(m, 27, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK); /* B's first node */
