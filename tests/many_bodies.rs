@@ -272,7 +272,7 @@ fn a_confined_wall_under_uniform_pressure_converges_to_the_uniform_stress() {
     // σ_xx between the jambs, open their penalty overlap σ_xx/κ,
     // κ = E λ/h², at every joint, a consistency error of O(h²/λ) in ε_xx:
     // the stress error falls as h² (measured 1.35e-3 p at h = 1/8).
-    let (mut h, mut e) = (Vec::new(), Vec::new());
+    let (mut h, mut e, mut pn) = (Vec::new(), Vec::new(), Vec::new());
     for n in [8, 16, 32] {
         let wall = Wall {
             mesh_size: 1.0 / n as f64,
@@ -284,50 +284,49 @@ fn a_confined_wall_under_uniform_pressure_converges_to_the_uniform_stress() {
         assert_eq!(r.released, 0);
         h.push(wall.mesh_size);
         e.push(r.max_uniform_error);
+        pn.push(r.max_nodal_pressure_error);
     }
     let rate = fitted_rate(&h, &e);
     assert!((rate - 2.0).abs() < 0.2, "rate {rate}, errors {e:?}");
+    // The nodal pressures, on nodes of one pair or several, follow.
+    let rate = fitted_rate(&h, &pn);
+    assert!((rate - 2.0).abs() < 0.2, "nodal rate {rate}, errors {pn:?}");
 }
 
 #[test]
 fn every_node_of_a_wall_reads_the_pressure_of_the_faces_it_lies_on() {
     // Uniform pressure, h = 1/8 (square cells: a node's tributary on each
-    // of its faces is h/2). Bed joints carry p exactly; head joints carry
+    // of its joints is h/2). Bed joints carry p exactly; head joints carry
     // q = ν/(1−ν) p up to the penalty's O(h²/λ) error of the scene (its
     // stress error). A node where a head joint ends on a bed face lies on
     // two bed pairs and reads p; a block's corner lies on a bed and a head
-    // pair and reads their mean, (p + q)/2.
+    // pair and reads their mean, (p + q)/2 (`WallScene::face_pressures`).
     let wall = Wall::default();
     let mut scene = wall.build().unwrap();
     let r = scene.solve(&wall, &ContactOptions::default()).unwrap();
     let pressures = scene.model.contact_nodal_pressures().unwrap();
     let elements = scene.model.contact_elements().unwrap();
-    let mut bed_pair = std::collections::BTreeMap::new();
-    let mut pairs_at: std::collections::BTreeMap<usize, std::collections::BTreeSet<usize>> =
-        Default::default();
-    for el in elements {
-        bed_pair.insert(el.pair, el.normal[1].abs() > 0.5);
-        for &v in &el.nodes {
-            pairs_at.entry(v).or_default().insert(el.pair);
-        }
-    }
-    let q = wall.poisson / (1.0 - wall.poisson);
+    let pairs_at = |v: usize| {
+        let pairs: std::collections::BTreeSet<usize> = elements
+            .iter()
+            .filter(|el| el.nodes.contains(&v))
+            .map(|el| el.pair)
+            .collect();
+        pairs.len()
+    };
     let (mut on_two_beds, mut corners) = (0, 0);
-    for (&v, pairs) in &pairs_at {
-        let beds = pairs.iter().filter(|&&k| bed_pair[&k]).count();
-        let heads = pairs.len() - beds;
-        let want = (beds as f64 + q * heads as f64) / pairs.len() as f64;
+    for (v, want, on_head) in scene.face_pressures(&wall).unwrap() {
         let got = pressures[v] / wall.p;
-        if heads == 0 {
-            assert!((got - 1.0).abs() < 1e-10, "bed node {v}: {got}");
-            on_two_beds += usize::from(beds == 2);
-        } else {
+        if on_head {
             // A head-joint node reads the joint's σ_xx, whose error is the
             // scene's stress error (equal to 11 digits, measured): a 1e-6
             // relative margin for the reading's round-off.
             let tol = r.max_uniform_error * (1.0 + 1e-6);
             assert!((got - want).abs() <= tol, "node {v}: {got} against {want}");
-            corners += usize::from(beds == 1 && heads == 1);
+            corners += usize::from(pairs_at(v) == 2);
+        } else {
+            assert!((got - 1.0).abs() < 1e-10, "bed node {v}: {got}");
+            on_two_beds += usize::from(pairs_at(v) == 2);
         }
     }
     assert!(on_two_beds > 0 && corners > 0, "{on_two_beds} {corners}");

@@ -17,6 +17,8 @@
 //! uniform: σ_yy = −p and, from ε_xx = 0 in plane strain,
 //! σ_xx = −ν/(1 − ν) p, τ_xy = 0, every joint closed.
 
+use std::collections::{BTreeMap, BTreeSet};
+
 use crate::contact::ContactOptions;
 use crate::error::{Error, Result};
 use crate::fem::material::{Material, PlaneMode};
@@ -101,6 +103,10 @@ pub struct WallResult {
     /// Largest stress error against the uniform solution (meaningful for
     /// a uniform pressure without weight), / p.
     pub max_uniform_error: f64,
+    /// Largest |p_node − p_faces| / p over the nodes of B
+    /// (`Model::contact_nodal_pressures` against [`WallScene::face_pressures`];
+    /// meaningful for a uniform pressure without weight).
+    pub max_nodal_pressure_error: f64,
     /// Elements of B released at convergence.
     pub released: usize,
     /// The contact report.
@@ -225,9 +231,41 @@ impl Wall {
 }
 
 impl WallScene {
+    /// The exact contact pressure, over p, at every node of B under a
+    /// uniform pressure without weight: the mean of the pressures of the
+    /// joints it lies on — 1 on a bed joint, ν/(1 − ν) on a head joint —
+    /// its tributaries on them being equal (square cells, h/2 each), as
+    /// `Model::contact_nodal_pressures` weighs them; with whether it lies
+    /// on a head joint. Sorted by node.
+    pub fn face_pressures(&self, wall: &Wall) -> Result<Vec<(usize, f64, bool)>> {
+        let q = wall.poisson / (1.0 - wall.poisson);
+        let mut bed = BTreeMap::new();
+        let mut pairs_at: BTreeMap<usize, BTreeSet<usize>> = BTreeMap::new();
+        for el in self.model.contact_elements()? {
+            bed.insert(el.pair, el.normal[1].abs() > el.normal[0].abs());
+            for &v in &el.nodes {
+                pairs_at.entry(v).or_default().insert(el.pair);
+            }
+        }
+        Ok(pairs_at
+            .into_iter()
+            .map(|(v, pairs)| {
+                let beds = pairs.iter().filter(|k| bed[*k]).count();
+                let heads = pairs.len() - beds;
+                let want = (beds as f64 + q * heads as f64) / pairs.len() as f64;
+                (v, want, heads > 0)
+            })
+            .collect())
+    }
+
     /// Solves and checks equilibrium (and the uniform stress).
     pub fn solve(&mut self, wall: &Wall, options: &ContactOptions) -> Result<WallResult> {
         let report = self.model.solve_contact(options)?;
+        self.measure(wall, report)
+    }
+
+    /// The checks of the last solve (its `report`).
+    pub fn measure(&self, wall: &Wall, report: ContactReport) -> Result<WallResult> {
         let mesh = self.model.mesh().ok_or_else(|| Error::state("no mesh"))?;
         let f_ext = self.model.load_vector()?;
         let reactions = self.model.reactions()?;
@@ -266,8 +304,15 @@ impl WallScene {
             .map(|s| ((s[0] - sxx).powi(2) + (s[1] - syy).powi(2) + s[2].powi(2)).sqrt())
             .fold(0.0, f64::max)
             / wall.p;
+        let read = self.model.contact_nodal_pressures()?;
+        let max_nodal_pressure_error = self
+            .face_pressures(wall)?
+            .iter()
+            .map(|&(v, want, _)| (read[v] / wall.p - want).abs())
+            .fold(0.0, f64::max);
         Ok(WallResult {
             block_imbalance,
+            max_nodal_pressure_error,
             contact_imbalance: contact_sum[0].hypot(contact_sum[1]) / total_load,
             top_course_support: -top_contact / top_load,
             max_uniform_error,
