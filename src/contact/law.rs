@@ -226,29 +226,14 @@ pub fn contact_jmins(elements: &[ContactElement], lambda: f64) -> Vec<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::contact::mesh::{Nodes, Side, conforming, nonconforming};
+    use crate::contact::mesh::{Nodes, conforming, nonconforming, straight_sides};
     use crate::fem::element::jmin_of_lambda;
     use crate::fem::material::{Material, PlaneMode};
-
-    /// Two straight interfaces along y = 0 with nodes at `xa` (side a, the
-    /// body below) and `xb` (side b, above): nodes, sides.
-    fn sides(xa: &[f64], xb: &[f64]) -> (Vec<[f64; 2]>, Side, Side) {
-        let mut x: Vec<[f64; 2]> = xa.iter().map(|&v| [v, 0.0]).collect();
-        x.extend(xb.iter().map(|&v| [v, 0.0]));
-        let na = xa.len();
-        // Body on the left of p → q: below for a (right to left), above
-        // for b (left to right).
-        let ea: Vec<[usize; 2]> = (0..na - 1).map(|i| [i + 1, i]).collect();
-        let eb: Vec<[usize; 2]> = (0..xb.len() - 1).map(|i| [na + i, na + i + 1]).collect();
-        let a = Side::from_edges(&x, 0, 1, 1, &ea).unwrap();
-        let b = Side::from_edges(&x, 0, 2, 2, &eb).unwrap();
-        (x, a, b)
-    }
 
     #[test]
     fn a_uniform_conforming_interface_keeps_the_seeds_jmin_to_the_bit() {
         let xs: Vec<f64> = (0..=16).map(|i| i as f64 / 16.0).collect();
-        let (x, a, b) = sides(&xs, &xs);
+        let (x, a, b) = straight_sides(&xs, &xs);
         let nodes = Nodes { x: &x, base: 0 };
         let elements = conforming(nodes, 0, &a, &b).unwrap();
         let lambda = 1.0;
@@ -263,7 +248,7 @@ mod tests {
         // edges over [0, 1].
         let xa = [0.0, 0.17, 0.43, 0.58, 0.81, 1.0];
         let xb = [0.0, 0.12, 0.33, 0.41, 0.62, 0.7, 0.93, 1.0];
-        let (x, a, b) = sides(&xa, &xb);
+        let (x, a, b) = straight_sides(&xa, &xb);
         let nodes = Nodes { x: &x, base: 0 };
         let elements = nonconforming(nodes, 0, &a, &b).unwrap();
         let (e_c, lambda) = (2.0, 3.0);

@@ -842,3 +842,19 @@ pub fn strip(nodes: Nodes<'_>, pair: usize, a: &Side, b: &Side) -> Result<Vec<Co
         }),
     }
 }
+
+/// Two straight interfaces along y = 0 with nodes at `xa` (side a, the
+/// body below) and `xb` (side b, above): nodes, sides. For tests.
+#[cfg(test)]
+pub(crate) fn straight_sides(xa: &[f64], xb: &[f64]) -> (Vec<[f64; 2]>, Side, Side) {
+    let mut x: Vec<[f64; 2]> = xa.iter().map(|&v| [v, 0.0]).collect();
+    x.extend(xb.iter().map(|&v| [v, 0.0]));
+    let na = xa.len();
+    // Body on the left of p → q: below for a (right to left), above for b
+    // (left to right).
+    let ea: Vec<[usize; 2]> = (0..na - 1).map(|i| [i + 1, i]).collect();
+    let eb: Vec<[usize; 2]> = (0..xb.len() - 1).map(|i| [na + i, na + i + 1]).collect();
+    let a = Side::from_edges(&x, 0, 1, 1, &ea).unwrap();
+    let b = Side::from_edges(&x, 0, 2, 2, &eb).unwrap();
+    (x, a, b)
+}

@@ -427,18 +427,12 @@ pub fn max_overlap(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::contact::mesh::{Side, nonconforming};
+    use crate::contact::mesh::{nonconforming, straight_sides};
 
     /// Side a along y = 0 at `xa` (body below), side b at `xb` (body
     /// above), and the strip between them.
     fn strip(xa: &[f64], xb: &[f64]) -> (Vec<[f64; 2]>, Vec<ContactElement>) {
-        let mut x: Vec<[f64; 2]> = xa.iter().map(|&v| [v, 0.0]).collect();
-        x.extend(xb.iter().map(|&v| [v, 0.0]));
-        let na = xa.len();
-        let ea: Vec<[usize; 2]> = (0..na - 1).map(|i| [i + 1, i]).collect();
-        let eb: Vec<[usize; 2]> = (0..xb.len() - 1).map(|i| [na + i, na + i + 1]).collect();
-        let a = Side::from_edges(&x, 0, 1, 1, &ea).unwrap();
-        let b = Side::from_edges(&x, 0, 2, 2, &eb).unwrap();
+        let (x, a, b) = straight_sides(xa, xb);
         let elements = nonconforming(Nodes { x: &x, base: 0 }, 0, &a, &b).unwrap();
         (x, elements)
     }
