@@ -873,6 +873,37 @@ static void a_non_matching_interface_reads_a_uniform_pressure_at_every_node(void
   tfem_destroy(m);
 }
 
+/* A host equation below the index base marks a fixed DOF, INT64_MIN too:
+ * at base 1 it overflowed (found by the fuzzer) into equation 2^63 - 1, and
+ * the pattern, the element equations and gather went wrong. The context
+ * must be the same as with base - 1 as the marker. */
+static void an_equation_of_int64_min_marks_a_fixed_dof_at_any_base(void) {
+  for (int base = 0; base <= 1; ++base) {
+    int64_t entries[2] = {-1, -1}, eqs[2][64];
+    int n_nodes[2] = {0, 0}, n_elements[2] = {0, 0};
+    for (int variant = 0; variant < 2; ++variant) {
+      tfem_contact *c = tfem_contact_create(base);
+      int na[2] = {1, 2}, nb[2] = {3, 4}, ea[2] = {1, 2}, eb[2] = {3, 4};
+      double xa[4] = {1.0, 0.0, 0.0, 0.0}, xb[4] = {0.0, -0.01, 1.0, -0.01};
+      int64_t qa[4] = {base + 0, base + 1, base + 2, base + 3};
+      int64_t qb[4] = {variant ? INT64_MIN : base - 1, base + 5, base + 6, base + 7};
+      CHECK(tfem_contact_add_side(c, 1, 1, 1e10, 0.3, 0, 2, na, xa, qa, 1, ea, NULL) == TFEM_STATUS_OK);
+      CHECK(tfem_contact_add_side(c, 2, 2, 1e10, 0.3, 0, 2, nb, xb, qb, 1, eb, NULL) == TFEM_STATUS_OK);
+      CHECK(tfem_contact_add_pair(c, 0, 1, NULL) == TFEM_STATUS_OK);
+      CHECK(tfem_contact_sizes(c, &n_nodes[variant], &n_elements[variant], &entries[variant]) ==
+            TFEM_STATUS_OK);
+      CHECK(n_elements[variant] > 0 && 6 * n_elements[variant] <= 64);
+      CHECK(tfem_contact_element_equations(c, eqs[variant], (size_t)(6 * n_elements[variant])) ==
+            TFEM_STATUS_OK);
+      double host[8] = {0}, u[8];
+      CHECK(tfem_contact_gather(c, host, 8, u, (size_t)(2 * n_nodes[variant])) == TFEM_STATUS_OK);
+      tfem_contact_destroy(c);
+    }
+    CHECK(entries[0] == entries[1] && n_elements[0] == n_elements[1]);
+    for (int i = 0; i < 6 * n_elements[0]; ++i) CHECK(eqs[0][i] == eqs[1][i] && eqs[1][i] >= base - 1);
+  }
+}
+
 /* Three bodies: a lower block, and two blocks B and C side by side on it
  * touching at x = 0.5, pressed down by p and together by q (frictionless,
  * three pairs). Exact: uniform stress, p on every bed node, q on every
@@ -959,6 +990,7 @@ int main(void) {
   facing_tags_are_paired_automatically();
   a_non_matching_interface_reads_a_uniform_pressure_at_every_node();
   a_node_on_several_pairs_reads_their_forces_over_their_tributaries();
+  an_equation_of_int64_min_marks_a_fixed_dof_at_any_base();
 
   fflush(stderr);
   fseek(capture, 0, SEEK_END);

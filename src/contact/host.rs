@@ -189,7 +189,12 @@ impl HostContact {
         let mut fresh: Vec<(i64, [f64; 2], [Option<usize>; 2])> = Vec::new();
         let mut local = self.local.clone();
         for (i, (&id, (&p, eq))) in nodes.iter().zip(xy.iter().zip(equations)).enumerate() {
-            let eq = eq.map(|e| usize::try_from(e - self.base as i64).ok());
+            // Below the base is no equation: i64::MIN too, without the
+            // subtraction overflowing (found by the fuzzer at base 1).
+            let eq = eq.map(|e| {
+                e.checked_sub(self.base as i64)
+                    .and_then(|e| usize::try_from(e).ok())
+            });
             if !(p[0].is_finite() && p[1].is_finite()) {
                 return Err(Error::argument(format!(
                     "side {tag}: node {id} has coordinates ({:?}, {:?})",
