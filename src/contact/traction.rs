@@ -11,9 +11,10 @@
 //! projection falls on.
 //!
 //! Each pair is read on its own: a node's tributary is the part of its
-//! interface edges that faces the other side of *that* pair (B reaches one
-//! edge beyond the other side's end, which faces nothing), and its force
-//! is that pair's. A node on several pairs (where three bodies meet) reads
+//! interface edges that faces the other side of *that* pair (covered by
+//! the other side's edges projected on it: B reaches one edge beyond the
+//! other side's end, which faces nothing past it), and its force is that
+//! pair's. A node on several pairs (where three bodies meet) reads
 //! its pairs' normal forces over their tributaries together.
 
 use std::borrow::Cow;
@@ -31,7 +32,9 @@ pub struct NodalPressure {
     /// Normal contact force on the node over its tributary length,
     /// positive in compression.
     pub pressure: f64,
-    /// Half the length of the node's interface edges.
+    /// Its tributary length: half its interface edges, as far as they face
+    /// the other side of its pair (summed over its pairs for a node on
+    /// several).
     pub tributary: f64,
 }
 
@@ -55,11 +58,17 @@ pub fn edge_on_side_a(nodes: Nodes<'_>, elements: &[ContactElement]) -> Vec<bool
 }
 
 /// The part of each element's interface edge that faces the other side
-/// of its pair: the edge clipped at the other side's end nodes that lie
-/// near it (within an edge length of it), each of which bounds the other
-/// side towards its one neighbour. B reaches one edge beyond the other
-/// side's ends (`contact::mesh::nonconforming`); that edge faces nothing
-/// past the end. The elements must be of one pair.
+/// of its pair: the length of the edge covered by the other side's edges
+/// near it (those of the elements within two steps), each projected on the
+/// edge's line. B reaches one edge beyond the other side's end
+/// (`contact::mesh::nonconforming`), which is covered only up to that end;
+/// a side in pieces leaves its gaps uncovered. The other side's edges are
+/// projected along the edge, not along the normal: on a curved interface
+/// with a gap, the edge at the end of the concave side loses about g/2R of
+/// its length. An interface edge wholly covered, as every one of a strip
+/// but those at the other side's ends, keeps its length to the bit; a pair
+/// whose elements all have their edge on one side (a user's B) is not
+/// clipped. The elements must be of one pair.
 fn facing_lengths(nodes: Nodes<'_>, elements: &[ContactElement], on_a: &[bool]) -> Vec<f64> {
     let x = nodes.x;
     let edge_of = |el: &ContactElement| {
@@ -69,44 +78,60 @@ fn facing_lengths(nodes: Nodes<'_>, elements: &[ContactElement], on_a: &[bool]) 
             base.next().unwrap_or(el.apex),
         )
     };
-    // Per side: the nodes that end one edge of it, with that edge's other
-    // node.
-    let mut ends: [BTreeMap<usize, Vec<usize>>; 2] = [BTreeMap::new(), BTreeMap::new()];
-    for (el, &a) in elements.iter().zip(on_a) {
-        let (p, q) = edge_of(el);
-        let side = &mut ends[usize::from(a)];
-        side.entry(p).or_default().push(q);
-        side.entry(q).or_default().push(p);
+    let mut at: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
+    for (k, el) in elements.iter().enumerate() {
+        for &v in &el.nodes {
+            at.entry(v).or_default().push(k);
+        }
     }
-    let end_nodes: [Vec<(usize, usize)>; 2] = ends.map(|side| {
-        side.into_iter()
-            .filter_map(|(v, n)| (n.len() == 1).then(|| (v, n[0])))
-            .collect()
-    });
+    let has_side = [false, true].map(|side| on_a.contains(&side));
     elements
         .iter()
-        .zip(on_a)
-        .map(|(el, &a)| {
+        .enumerate()
+        .map(|(k, el)| {
+            if !has_side[usize::from(!on_a[k])] {
+                return el.edge_length;
+            }
             let (p, q) = edge_of(el);
             let d = [x[q][0] - x[p][0], x[q][1] - x[p][1]];
             let len2 = d[0] * d[0] + d[1] * d[1];
-            let (mut lo, mut hi) = (0.0f64, 1.0f64);
-            for &(e, f) in &end_nodes[usize::from(!a)] {
-                let r = [x[e][0] - x[p][0], x[e][1] - x[p][1]];
-                let t = (r[0] * d[0] + r[1] * d[1]) / len2;
-                let c = t.clamp(0.0, 1.0);
-                let off = [r[0] - c * d[0], r[1] - c * d[1]];
-                if off[0] * off[0] + off[1] * off[1] > len2 {
-                    continue; // not near this edge
-                }
-                let inward = (x[f][0] - x[e][0]) * d[0] + (x[f][1] - x[e][1]) * d[1];
-                if inward > 0.0 {
-                    lo = lo.max(t);
-                } else if inward < 0.0 {
-                    hi = hi.min(t);
+            let t = |w: usize| ((x[w][0] - x[p][0]) * d[0] + (x[w][1] - x[p][1]) * d[1]) / len2;
+            let mut near: BTreeSet<usize> = BTreeSet::new();
+            for &v in &el.nodes {
+                for &j in &at[&v] {
+                    for &w in &elements[j].nodes {
+                        near.extend(at[&w].iter().copied());
+                    }
                 }
             }
-            el.edge_length * (hi - lo).max(0.0)
+            let mut spans: Vec<(f64, f64)> = near
+                .iter()
+                .filter(|&&j| on_a[j] != on_a[k])
+                .map(|&j| {
+                    let (r, s) = edge_of(&elements[j]);
+                    let (tr, ts) = (t(r), t(s));
+                    (tr.min(ts).clamp(0.0, 1.0), tr.max(ts).clamp(0.0, 1.0))
+                })
+                .filter(|(lo, hi)| hi > lo)
+                .collect();
+            spans.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
+            // The union of the spans: merge the overlapping ones.
+            let mut covered = 0.0;
+            let mut current: Option<(f64, f64)> = None;
+            for (lo, hi) in spans {
+                current = match current {
+                    Some((a, b)) if lo <= b => Some((a, b.max(hi))),
+                    Some((a, b)) => {
+                        covered += b - a;
+                        Some((lo, hi))
+                    }
+                    None => Some((lo, hi)),
+                };
+            }
+            if let Some((a, b)) = current {
+                covered += b - a;
+            }
+            el.edge_length * covered
         })
         .collect()
 }
@@ -168,7 +193,9 @@ fn by_pair(elements: &[ContactElement]) -> Vec<(usize, Cow<'_, [ContactElement]>
 /// Each pair's readings `read(pair, its elements)` put together: a node
 /// on one pair keeps that pair's; a node on several reads their normal
 /// forces over their tributaries together, Σ p_k m_k / Σ m_k (the plain
-/// mean of the p_k where no pair gives it a tributary). Sorted by node.
+/// mean of the p_k where no pair gives it a tributary; a pair that gives
+/// it none, where it is only an apex, then counts for nothing beside one
+/// that does). Sorted by node.
 fn per_pair(
     elements: &[ContactElement],
     mut read: impl FnMut(usize, &[ContactElement]) -> Vec<NodalPressure>,
@@ -427,7 +454,7 @@ pub fn max_overlap(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::contact::mesh::{nonconforming, straight_sides};
+    use crate::contact::mesh::{Side, conforming, nonconforming, straight_sides};
 
     /// Side a along y = 0 at `xa` (body below), side b at `xb` (body
     /// above), and the strip between them.
@@ -454,5 +481,54 @@ mod tests {
         assert_eq!(m[&4], 0.375);
         assert_eq!(m[&5], 0.75);
         assert_eq!(m[&6], 0.375);
+    }
+
+    /// The tributaries of a pair's nodes.
+    fn tributaries_of(x: &[[f64; 2]], elements: &[ContactElement]) -> BTreeMap<usize, f64> {
+        let nodes = Nodes { x, base: 0 };
+        tributaries(nodes, elements, &edge_on_side_a(nodes, elements))
+    }
+
+    #[test]
+    fn a_corner_of_the_interface_clips_no_edge_whatever_its_angle() {
+        // Body a is an L: its top y = 0 over [0, 3] and a leg up from the
+        // origin to (eps, 0.8); body b sits in the corner, its nodes on a's.
+        // The leg ends the other side near the floor's first edge: any
+        // angle, even one off 90° by round-off, must leave the floor whole.
+        for eps in [0.0, 1e-12, -1e-12, 0.15] {
+            let floor = [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [3.0, 0.0], [eps, 0.8]];
+            let x: Vec<[f64; 2]> = floor.iter().chain(&floor).copied().collect();
+            let a = Side::from_edges(&x, 0, 1, 1, &[[3, 2], [2, 1], [1, 0], [0, 4]]).unwrap();
+            let b = Side::from_edges(&x, 0, 2, 2, &[[9, 5], [5, 6], [6, 7], [7, 8]]).unwrap();
+            let elements = conforming(Nodes { x: &x, base: 0 }, 0, &a, &b).unwrap();
+            let m = tributaries_of(&x, &elements);
+            for (v, want) in [(1, 1.0), (2, 1.0), (3, 0.5), (6, 1.0), (7, 1.0), (8, 0.5)] {
+                assert_eq!(m[&v], want, "eps {eps:e}, node {v}");
+            }
+        }
+    }
+
+    #[test]
+    fn a_side_in_two_pieces_keeps_every_edge() {
+        let xs = [0.0, 1.0, 1.5, 2.5];
+        let x: Vec<[f64; 2]> = xs.iter().chain(&xs).map(|&v| [v, 0.0]).collect();
+        let a = Side::from_edges(&x, 0, 1, 1, &[[1, 0], [3, 2]]).unwrap();
+        let b = Side::from_edges(&x, 0, 2, 2, &[[4, 5], [6, 7]]).unwrap();
+        let elements = conforming(Nodes { x: &x, base: 0 }, 0, &a, &b).unwrap();
+        for (v, m) in tributaries_of(&x, &elements) {
+            assert_eq!(m, 0.5, "node {v}");
+        }
+    }
+
+    #[test]
+    fn a_gap_wider_than_an_edge_clips_as_a_closed_one() {
+        for gap in [0.0, 0.5, 1.5] {
+            let (mut x, elements) = strip(&[0.0, 1.0, 2.0, 3.0], &[0.0, 0.75, 1.5]);
+            for p in x.iter_mut().skip(4) {
+                p[1] = gap;
+            }
+            let m = tributaries_of(&x, &elements);
+            assert_eq!((m[&0], m[&1], m[&2]), (0.5, 0.75, 0.25), "gap {gap}");
+        }
     }
 }

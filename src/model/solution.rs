@@ -188,9 +188,10 @@ impl Solution {
         self.for_each_element_force(problem, u, |pair, g, v| {
             f.entry((pair, g / 2)).or_insert([0.0; 2])[g % 2] += v;
         })?;
-        let nodes: Vec<usize> = f.keys().map(|&(_, v)| v).collect();
+        let keys: Vec<(usize, usize)> = f.keys().copied().collect();
         ensure_finite(f.values().flatten().copied(), 2, "contact force", |i| {
-            mesh.node_name(nodes[i])
+            let (pair, v) = keys[i];
+            format!("{} (contact pair {pair})", mesh.node_name(v))
         })?;
         Ok(f)
     }
