@@ -57,6 +57,35 @@ pub fn edge_on_side_a(nodes: Nodes<'_>, elements: &[ContactElement]) -> Vec<bool
         .collect()
 }
 
+/// The elements of B at each of their nodes.
+fn elements_at(elements: &[ContactElement]) -> BTreeMap<usize, Vec<usize>> {
+    let mut at: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
+    for (k, el) in elements.iter().enumerate() {
+        for &v in &el.nodes {
+            at.entry(v).or_default().push(k);
+        }
+    }
+    at
+}
+
+/// The elements within two steps of the nodes `from`: those at a node of
+/// an element at one of them.
+fn near_elements(
+    at: &BTreeMap<usize, Vec<usize>>,
+    elements: &[ContactElement],
+    from: &[usize],
+) -> BTreeSet<usize> {
+    let mut near = BTreeSet::new();
+    for v in from {
+        for &k in &at[v] {
+            for &w in &elements[k].nodes {
+                near.extend(at[&w].iter().copied());
+            }
+        }
+    }
+    near
+}
+
 /// The part of each element's interface edge that faces the other side
 /// of its pair: the length of the edge covered by the other side's edges
 /// near it (those of the elements within two steps), each projected on the
@@ -78,12 +107,7 @@ fn facing_lengths(nodes: Nodes<'_>, elements: &[ContactElement], on_a: &[bool]) 
             base.next().unwrap_or(el.apex),
         )
     };
-    let mut at: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
-    for (k, el) in elements.iter().enumerate() {
-        for &v in &el.nodes {
-            at.entry(v).or_default().push(k);
-        }
-    }
+    let at = elements_at(elements);
     let has_side = [false, true].map(|side| on_a.contains(&side));
     elements
         .iter()
@@ -96,14 +120,7 @@ fn facing_lengths(nodes: Nodes<'_>, elements: &[ContactElement], on_a: &[bool]) 
             let d = [x[q][0] - x[p][0], x[q][1] - x[p][1]];
             let len2 = d[0] * d[0] + d[1] * d[1];
             let t = |w: usize| ((x[w][0] - x[p][0]) * d[0] + (x[w][1] - x[p][1]) * d[1]) / len2;
-            let mut near: BTreeSet<usize> = BTreeSet::new();
-            for &v in &el.nodes {
-                for &j in &at[&v] {
-                    for &w in &elements[j].nodes {
-                        near.extend(at[&w].iter().copied());
-                    }
-                }
-            }
+            let near = near_elements(&at, elements, &el.nodes);
             let mut spans: Vec<(f64, f64)> = near
                 .iter()
                 .filter(|&&j| on_a[j] != on_a[k])
@@ -293,20 +310,10 @@ fn facing_edges(
     side: &BTreeMap<usize, bool>,
 ) -> BTreeMap<usize, Option<(usize, usize, f64)>> {
     let x = nodes.x;
-    let mut at: BTreeMap<usize, Vec<usize>> = BTreeMap::new();
-    for (k, el) in elements.iter().enumerate() {
-        for &v in &el.nodes {
-            at.entry(v).or_default().push(k);
-        }
-    }
+    let at = elements_at(elements);
     side.iter()
         .map(|(&v, &v_on_a)| {
-            let mut near: BTreeSet<usize> = BTreeSet::new();
-            for &k in &at[&v] {
-                for &w in &elements[k].nodes {
-                    near.extend(at[&w].iter().copied());
-                }
-            }
+            let near = near_elements(&at, elements, &[v]);
             let mut best: Option<(f64, (usize, usize, f64))> = None;
             for &k in &near {
                 let el = &elements[k];
