@@ -5,13 +5,15 @@
  * outputs a host code needs (contact forces and gaps, the contact mesh
  * before a solve, external work, the thread count). */
 
-#define _POSIX_C_SOURCE 200809L
+#define _DEFAULT_SOURCE /* MAP_ANONYMOUS, MAP_NORESERVE */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <limits.h>
 #include <stdint.h>
 #include <string.h>
+#include <sys/mman.h>
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include "tfem.h"
@@ -955,6 +957,61 @@ static void a_node_on_several_pairs_reads_their_forces_over_their_tributaries(vo
   tfem_destroy(m);
 }
 
+/* An honest array the machine cannot copy: INT_MAX nodes, 32 GiB of
+ * coordinates (a read-only mapping of zero pages, reserved no memory), in
+ * an address space capped at 512 MiB above what the process uses. The
+ * library's copy must fail as TFEM_STATUS_OUT_OF_MEMORY naming the array
+ * and leave the model and the contact context unchanged. Found aborting
+ * the host in Rust's infallible allocation. Skipped under AddressSanitizer,
+ * whose shadow memory cannot live under an address-space cap, and where
+ * the mapping is refused (strict overcommit). */
+static void an_array_too_large_to_copy_is_out_of_memory_not_an_abort(void) {
+#if defined(__SANITIZE_ADDRESS__)
+  printf("skipped under AddressSanitizer: %s\n", __func__);
+#else
+  size_t bytes = (size_t)INT_MAX * 2 * sizeof(double);
+  void *zeros = mmap(NULL, bytes, PROT_READ, MAP_PRIVATE | MAP_ANONYMOUS | MAP_NORESERVE, -1, 0);
+  if (zeros == MAP_FAILED) {
+    printf("skipped, no %zu-byte mapping: %s\n", bytes, __func__);
+    return;
+  }
+  long pages = 0;
+  FILE *statm = fopen("/proc/self/statm", "r");
+  CHECK(statm != NULL && fscanf(statm, "%ld", &pages) == 1);
+  if (statm) fclose(statm);
+  struct rlimit saved, capped;
+  CHECK(getrlimit(RLIMIT_AS, &saved) == 0);
+  capped = saved;
+  capped.rlim_cur = (rlim_t)pages * (rlim_t)sysconf(_SC_PAGESIZE) + ((rlim_t)512 << 20);
+
+  tfem_model *m = tfem_create();
+  CHECK(tfem_set_mesh(m, G.nn, G.xy, G.nt, G.tri, G.body, 0) == TFEM_STATUS_OK);
+  tfem_contact *c = tfem_contact_create(0);
+  CHECK(setrlimit(RLIMIT_AS, &capped) == 0);
+  int one[3] = {0, 0, 0};
+  EXPECT_ERROR(m, tfem_set_mesh(m, INT_MAX, zeros, 1, one, one, 0), TFEM_STATUS_OUT_OF_MEMORY,
+               "`xy`");
+  tfem_status side = tfem_contact_add_side(c, 1, 1, 1.0, 0.3, 0, INT_MAX, zeros, zeros, zeros, 0,
+                                           NULL, NULL);
+  char msg[512];
+  tfem_contact_last_error(c, msg, sizeof msg);
+  CHECK(side == TFEM_STATUS_OUT_OF_MEMORY && strstr(msg, "`nodes`") != NULL);
+  CHECK(setrlimit(RLIMIT_AS, &saved) == 0);
+  munmap(zeros, bytes);
+
+  int nn = -1, nt = -1;
+  CHECK(tfem_get_sizes(m, &nn, &nt, NULL) == TFEM_STATUS_OK && nn == G.nn && nt == G.nt);
+  int na[2] = {0, 1}, ea[2] = {0, 1}, first = -1;
+  double xa[4] = {0.0, 0.0, 1.0, 0.0};
+  int64_t qa[4] = {0, 1, 2, 3};
+  CHECK(tfem_contact_add_side(c, 1, 1, 1.0, 0.3, 0, 2, na, xa, qa, 1, ea, &first) ==
+            TFEM_STATUS_OK &&
+        first == 0);
+  tfem_contact_destroy(c);
+  tfem_destroy(m);
+#endif
+}
+
 int main(void) {
   /* Nothing the library does may reach stderr: it goes to a file, checked
    * at the end. */
@@ -991,6 +1048,7 @@ int main(void) {
   a_non_matching_interface_reads_a_uniform_pressure_at_every_node();
   a_node_on_several_pairs_reads_their_forces_over_their_tributaries();
   an_equation_of_int64_min_marks_a_fixed_dof_at_any_base();
+  an_array_too_large_to_copy_is_out_of_memory_not_an_abort();
 
   fflush(stderr);
   fseek(capture, 0, SEEK_END);

@@ -177,7 +177,8 @@ module tfem
   integer(c_int), parameter :: TFEM_STATUS_NUMERICAL_FAILURE = 11
   !> An internal error (a caught panic): please report it.
   integer(c_int), parameter :: TFEM_STATUS_INTERNAL = 12
-  !> Memory for the factorisation could not be allocated.
+  !> Memory could not be allocated: for the factorisation, or for the library's copy of a caller's
+  !! array (the message names the array).
   integer(c_int), parameter :: TFEM_STATUS_OUT_OF_MEMORY = 13
   !> A file could not be read or written (the message names it).
   integer(c_int), parameter :: TFEM_STATUS_IO = 14

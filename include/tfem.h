@@ -114,7 +114,8 @@ typedef enum tfem_status {
    */
   TFEM_STATUS_INTERNAL = 12,
   /**
-   * Memory for the factorisation could not be allocated.
+   * Memory could not be allocated: for the factorisation, or for the
+   * library's copy of a caller's array (the message names the array).
    */
   TFEM_STATUS_OUT_OF_MEMORY = 13,
   /**

@@ -37,7 +37,8 @@ pub enum Status {
     NumericalFailure = 11,
     /// An internal error (a caught panic): please report it.
     Internal = 12,
-    /// Memory for the factorisation could not be allocated.
+    /// Memory could not be allocated: for the factorisation, or for the
+    /// library's copy of a caller's array (the message names the array).
     OutOfMemory = 13,
     /// A file could not be read or written (the message names it).
     Io = 14,

@@ -8,8 +8,8 @@ use super::convert::{
     jmin_arg, options_in, plane, report_out,
 };
 use super::plumbing::{
-    LAST_ERROR, TfemModel, copy_message, copy_out, count, guarded, map_out, null, slice_in,
-    with_model, without_model, write, write_optional,
+    LAST_ERROR, TfemModel, copy_in, copy_message, copy_out, count, guarded, map_out, null, reserve,
+    slice_in, with_model, without_model, write, write_optional,
 };
 use crate::contact::ContactOptions;
 use crate::error::{Error, Result, Status};
@@ -160,8 +160,8 @@ pub unsafe extern "C" fn tfem_set_mesh(
         let xy = slice_in(xy, 2 * nn, "xy")?;
         let conn = slice_in(connectivity, 3 * nt, "connectivity")?;
         let bodies = slice_in(body_of_triangle, nt, "body_of_triangle")?;
-        let nodes: Vec<[f64; 2]> = xy.chunks_exact(2).map(|c| [c[0], c[1]]).collect();
-        let mut tris = Vec::with_capacity(nt);
+        let nodes = copy_in(xy, 2, "xy", |c| [c[0], c[1]])?;
+        let mut tris = reserve(nt, "connectivity")?;
         for (t, c) in conn.chunks_exact(3).enumerate() {
             let mut tri = [0usize; 3];
             for k in 0..3 {
@@ -177,7 +177,8 @@ pub unsafe extern "C" fn tfem_set_mesh(
             }
             tris.push(tri);
         }
-        let mesh = Mesh::new(nodes, tris, bodies.to_vec(), base)?;
+        let bodies = copy_in(bodies, 1, "body_of_triangle", |b| b[0])?;
+        let mesh = Mesh::new(nodes, tris, bodies, base)?;
         m.model.set_mesh(mesh);
         m.index_base = base;
         Ok(())
@@ -265,7 +266,7 @@ fn edges_in<'t>(
     let ne = count(n_edges, "n_edges")?;
     let en = slice_in(edge_nodes, 2 * ne, "edge_nodes")?;
     let tags = slice_in(tags, ne, "tags")?;
-    let mut edges = Vec::with_capacity(ne);
+    let mut edges = reserve(ne, "edge_nodes")?;
     for c in en.chunks_exact(2) {
         edges.push([
             m.index(c[0], n, "edge node")?,
@@ -723,7 +724,7 @@ pub unsafe extern "C" fn tfem_add_contact_pair_with_mesh(
         let n = m.n_nodes()?;
         let nt = count(n_triangles, "n_triangles")?;
         let conn = slice_in(connectivity, 3 * nt, "connectivity")?;
-        let mut tris = Vec::with_capacity(nt);
+        let mut tris = reserve(nt, "connectivity")?;
         for c in conn.chunks_exact(3) {
             tris.push([
                 m.index(c[0], n, "contact node")?,

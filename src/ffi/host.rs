@@ -6,8 +6,8 @@ use std::ffi::{c_char, c_int};
 
 use super::convert::{TfemContactOptions, options_in, plane};
 use super::plumbing::{
-    Handle, copy_message, copy_out, count, guarded, null, set_global_error, slice_in, with_handle,
-    write, write_optional,
+    Handle, copy_in, copy_message, copy_out, count, guarded, null, set_global_error, slice_in,
+    with_handle, write, write_optional,
 };
 use crate::contact::{ContactOptions, HostContact};
 use crate::error::{Error, Result, Status};
@@ -156,22 +156,17 @@ pub unsafe extern "C" fn tfem_contact_add_side(
         let material = Material::new(young, poisson, plane(plane_mode)?, &format!("body {body}"))?;
         let nn = count(n_nodes, "n_nodes")?;
         let ne = count(n_edges, "n_edges")?;
-        let ids: Vec<i64> = slice_in(nodes, nn, "nodes")?
-            .iter()
-            .map(|&v| v as i64)
-            .collect();
-        let xy: Vec<[f64; 2]> = slice_in(xy, 2 * nn, "xy")?
-            .chunks_exact(2)
-            .map(|p| [p[0], p[1]])
-            .collect();
-        let eq: Vec<[i64; 2]> = slice_in(equations, 2 * nn, "equations")?
-            .chunks_exact(2)
-            .map(|e| [e[0], e[1]])
-            .collect();
-        let edges: Vec<[i64; 2]> = slice_in(edges, 2 * ne, "edges")?
-            .chunks_exact(2)
-            .map(|e| [e[0] as i64, e[1] as i64])
-            .collect();
+        let ids = copy_in(slice_in(nodes, nn, "nodes")?, 1, "nodes", |v| v[0] as i64)?;
+        let xy = copy_in(slice_in(xy, 2 * nn, "xy")?, 2, "xy", |p| [p[0], p[1]])?;
+        let eq = copy_in(
+            slice_in(equations, 2 * nn, "equations")?,
+            2,
+            "equations",
+            |e| [e[0], e[1]],
+        )?;
+        let edges = copy_in(slice_in(edges, 2 * ne, "edges")?, 2, "edges", |e| {
+            [e[0] as i64, e[1] as i64]
+        })?;
         let s = c.add_side(tag, body, material, &ids, &xy, &eq, &edges)?;
         write_optional(side, s as c_int);
         Ok(())
@@ -217,10 +212,12 @@ pub unsafe extern "C" fn tfem_contact_add_pair_with_mesh(
         let a = count(side_a, "side_a")?;
         let b = count(side_b, "side_b")?;
         let nt = count(n_triangles, "n_triangles")?;
-        let tris: Vec<[i64; 3]> = slice_in(connectivity, 3 * nt, "connectivity")?
-            .chunks_exact(3)
-            .map(|t| [t[0] as i64, t[1] as i64, t[2] as i64])
-            .collect();
+        let tris = copy_in(
+            slice_in(connectivity, 3 * nt, "connectivity")?,
+            3,
+            "connectivity",
+            |t| [t[0] as i64, t[1] as i64, t[2] as i64],
+        )?;
         let p = c.add_pair_with_mesh(a, b, &tris)?;
         write_optional(pair, p as c_int);
         Ok(())
