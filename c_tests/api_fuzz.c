@@ -4320,11 +4320,11 @@ static void exec_call(runner_t *R, int idx) {
       if (c->out[j].null_) continue;
       const gbuf *b = &g[j];
       char why[200] = "";
-      /* (gather and scatter_add copy and add the host's own values: a
-       * non-finite value given comes back) */
+      /* (scatter_add adds to the host's own vector: a non-finite value
+       * already in it stays; gather and scatter_add refuse one they read) */
       int passed_through = 0;
-      if ((fn == F_CONTACT_GATHER || fn == F_CONTACT_SCATTER_ADD) && c->in[0].p)
-        for (int i = 0; i < c->in[0].n && !passed_through; ++i) passed_through = !isfinite(((const double *)c->in[0].p)[i]);
+      if (fn == F_CONTACT_SCATTER_ADD && c->in[1].p)
+        for (int i = 0; i < c->in[1].n && !passed_through; ++i) passed_through = !isfinite(((const double *)c->in[1].p)[i]);
       if (b->kind == K_D && !passed_through) {
         for (size_t i = 0; i < b->n; ++i) {
           double v;

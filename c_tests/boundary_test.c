@@ -957,6 +957,48 @@ static void a_node_on_several_pairs_reads_their_forces_over_their_tributaries(vo
   tfem_destroy(m);
 }
 
+/* A host's NaN or Inf is refused where it enters the contact context, named
+ * by node and equation, and nothing is written: gather would otherwise hand
+ * it back as a displacement with OK, scatter_add add it into the host's
+ * vector. An entry at an equation no interface node uses is not read. */
+static void a_non_finite_host_value_is_refused_by_gather_and_scatter_add(void) {
+  const int base = 1;
+  tfem_contact *c = tfem_contact_create(base);
+  int na[2] = {1, 2}, nb[2] = {3, 4}, ea[2] = {1, 2}, eb[2] = {3, 4};
+  double xa[4] = {1.0, 0.0, 0.0, 0.0}, xb[4] = {0.0, -0.01, 1.0, -0.01};
+  int64_t qa[4] = {1, 2, 3, 4}, qb[4] = {0, 6, 7, 8}; /* equation 5 is nobody's */
+  CHECK(tfem_contact_add_side(c, 1, 1, 1e10, 0.3, 0, 2, na, xa, qa, 1, ea, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_contact_add_side(c, 2, 2, 1e10, 0.3, 0, 2, nb, xb, qb, 1, eb, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_contact_add_pair(c, 0, 1, NULL) == TFEM_STATUS_OK);
+  char msg[512];
+  double host[8] = {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8}, u[8];
+  for (int k = 0; k < 8; ++k) u[k] = -7.0;
+
+  host[6] = NAN; /* equation 7: node 4, x */
+  CHECK(tfem_contact_gather(c, host, 8, u, 8) == TFEM_STATUS_INVALID_ARGUMENT);
+  tfem_contact_last_error(c, msg, sizeof msg);
+  CHECK(strstr(msg, "`u_equations`") && strstr(msg, "interface node 4") && strstr(msg, "equation 7"));
+  int untouched = 1;
+  for (int k = 0; k < 8; ++k) untouched &= u[k] == -7.0;
+  CHECK(untouched);
+
+  host[6] = 0.7;
+  host[4] = INFINITY; /* equation 5: no interface node's */
+  CHECK(tfem_contact_gather(c, host, 8, u, 8) == TFEM_STATUS_OK && all_finite(u, 8));
+
+  double residual[8] = {1, 2, 3, 4, 5, 6, 7, 8}, vector[8] = {0};
+  residual[3] = -INFINITY; /* node 2, y */
+  CHECK(tfem_contact_scatter_add(c, residual, 8, vector, 8) == TFEM_STATUS_INVALID_ARGUMENT);
+  tfem_contact_last_error(c, msg, sizeof msg);
+  CHECK(strstr(msg, "`residual`") && strstr(msg, "interface node 2"));
+  int zero = 1;
+  for (int k = 0; k < 8; ++k) zero &= vector[k] == 0.0;
+  CHECK(zero);
+  residual[3] = 4.0;
+  CHECK(tfem_contact_scatter_add(c, residual, 8, vector, 8) == TFEM_STATUS_OK && vector[3] == 4.0);
+  tfem_contact_destroy(c);
+}
+
 /* An honest array the machine cannot copy: INT_MAX nodes, 32 GiB of
  * coordinates (a read-only mapping of zero pages, reserved no memory), in
  * an address space capped at 512 MiB above what the process uses. The
@@ -1049,6 +1091,7 @@ int main(void) {
   a_node_on_several_pairs_reads_their_forces_over_their_tributaries();
   an_equation_of_int64_min_marks_a_fixed_dof_at_any_base();
   an_array_too_large_to_copy_is_out_of_memory_not_an_abort();
+  a_non_finite_host_value_is_refused_by_gather_and_scatter_add();
 
   fflush(stderr);
   fseek(capture, 0, SEEK_END);

@@ -1504,9 +1504,11 @@ module tfem
   interface tfem_contact_gather
     !> Copies into `u` (2 per interface node) the displacements of the interface nodes from the
     !! host's solution vector `u_equations` (`n_equations` values; entry i is equation i +
-    !! index_base); a DOF without an equation counts as fixed at zero. Fortran: `n_equations` and
-    !! `u_length` take integer(c_size_t) or default integers (kind tfem_length_kind), all of one
-    !! kind; a negative length is passed as 0.
+    !! index_base); a DOF without an equation counts as fixed at zero. A non-finite entry at an
+    !! interface node's equation is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node and the
+    !! equation); `u` is then unchanged. Fortran: `n_equations` and `u_length` take
+    !! integer(c_size_t) or default integers (kind tfem_length_kind), all of one kind; a negative
+    !! length is passed as 0.
     function tfem_contact_gather(context, u_equations, n_equations, u, u_length) &
         bind(C, name="tfem_contact_gather") result(status)
       import
@@ -1523,9 +1525,10 @@ module tfem
   interface tfem_contact_scatter_add
     !> Adds per-node values `residual` (2 per interface node, as `tfem_contact_evaluate` writes
     !! them) into the host's vector `host_vector` (`n_equations` values, entry i is equation i +
-    !! index_base); DOFs without an equation are left out. Fortran: `residual_length` and
-    !! `n_equations` take integer(c_size_t) or default integers (kind tfem_length_kind), all of one
-    !! kind; a negative length is passed as 0.
+    !! index_base); DOFs without an equation are left out. A non-finite value in `residual` is
+    !! refused (TFEM_STATUS_INVALID_ARGUMENT naming the node); `host_vector` is then unchanged.
+    !! Fortran: `residual_length` and `n_equations` take integer(c_size_t) or default integers (kind
+    !! tfem_length_kind), all of one kind; a negative length is passed as 0.
     function tfem_contact_scatter_add(context, residual, residual_length, host_vector, n_equations) &
         bind(C, name="tfem_contact_scatter_add") result(status)
       import

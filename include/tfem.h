@@ -1107,7 +1107,9 @@ enum tfem_status tfem_contact_evaluate(struct tfem_contact *context,
  * Copies into `u` (2 per interface node) the displacements of the
  * interface nodes from the host's solution vector `u_equations`
  * (`n_equations` values; entry i is equation i + index_base); a DOF
- * without an equation counts as fixed at zero.
+ * without an equation counts as fixed at zero. A non-finite entry at an
+ * interface node's equation is refused (TFEM_STATUS_INVALID_ARGUMENT
+ * naming the node and the equation); `u` is then unchanged.
  */
 enum tfem_status tfem_contact_gather(struct tfem_contact *context,
                                      const double *u_equations,
@@ -1119,7 +1121,9 @@ enum tfem_status tfem_contact_gather(struct tfem_contact *context,
  * Adds per-node values `residual` (2 per interface node, as
  * `tfem_contact_evaluate` writes them) into the host's vector
  * `host_vector` (`n_equations` values, entry i is equation i +
- * index_base); DOFs without an equation are left out.
+ * index_base); DOFs without an equation are left out. A non-finite value
+ * in `residual` is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node);
+ * `host_vector` is then unchanged.
  */
 enum tfem_status tfem_contact_scatter_add(struct tfem_contact *context,
                                           const double *residual,

@@ -121,7 +121,8 @@ impl HostContact {
 
     /// Adds per-node values (2 per interface node, as a residual) into the
     /// host's vector indexed by equation (index base applied); DOFs without
-    /// an equation are left out. Checked before anything is added.
+    /// an equation are left out; a non-finite value is refused, naming its
+    /// node. Checked before anything is added.
     pub fn scatter_add(&self, per_node: &[f64], host: &mut [f64]) -> Result<()> {
         if per_node.len() != 2 * self.x.len() {
             return Err(Error::argument(format!(
@@ -132,10 +133,45 @@ impl HostContact {
             )));
         }
         self.check_equations(host.len())?;
+        self.check_finite(
+            "residual",
+            |v, c| per_node[2 * v + c],
+            |v, c| self.equation[v][c],
+        )?;
         for (v, eq) in self.equation.iter().enumerate() {
             for c in 0..2 {
                 if let Some(e) = eq[c] {
                     host[e] += per_node[2 * v + c];
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Refuses a non-finite value of an interface node's DOF, `value(v, c)`
+    /// of node v, component c, read from the caller's array `what` (at the
+    /// host equation `equation(v, c)` when it has one). A host's NaN would
+    /// otherwise come back as a result with OK (`gather`) or be added into
+    /// its vector (`scatter_add`), far from where it arose.
+    fn check_finite(
+        &self,
+        what: &str,
+        value: impl Fn(usize, usize) -> f64,
+        equation: impl Fn(usize, usize) -> Option<usize>,
+    ) -> Result<()> {
+        for v in 0..self.x.len() {
+            for c in 0..2 {
+                let x = value(v, c);
+                if !x.is_finite() {
+                    let at = match equation(v, c) {
+                        Some(e) => format!(" (equation {})", e + self.base),
+                        None => String::new(),
+                    };
+                    return Err(Error::argument(format!(
+                        "`{what}`: the {} value of interface node {}{at} is {x}, not finite",
+                        ["x", "y"][c],
+                        self.node_id[v]
+                    )));
                 }
             }
         }
@@ -515,7 +551,8 @@ impl HostContact {
 
     /// The per-node displacements of the host's solution vector `u_eq`
     /// (indexed by equation, index base applied); DOFs without an equation
-    /// count as fixed at zero. Checked before anything is written.
+    /// count as fixed at zero; a non-finite entry at an interface node's
+    /// equation is refused, naming both. Checked before anything is written.
     pub fn gather(&self, u_eq: &[f64], u: &mut [f64]) -> Result<()> {
         if u.len() != 2 * self.x.len() {
             return Err(Error::argument(format!(
@@ -526,6 +563,9 @@ impl HostContact {
             )));
         }
         self.check_equations(u_eq.len())?;
+        let equation = |v: usize, c: usize| self.equation[v][c];
+        let value = |v: usize, c: usize| equation(v, c).map_or(0.0, |e| u_eq[e]);
+        self.check_finite("u_equations", value, equation)?;
         for (v, eq) in self.equation.iter().enumerate() {
             for c in 0..2 {
                 u[2 * v + c] = eq[c].map_or(0.0, |e| u_eq[e]);

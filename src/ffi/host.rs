@@ -324,7 +324,9 @@ pub unsafe extern "C" fn tfem_contact_evaluate(
 /// Copies into `u` (2 per interface node) the displacements of the
 /// interface nodes from the host's solution vector `u_equations`
 /// (`n_equations` values; entry i is equation i + index_base); a DOF
-/// without an equation counts as fixed at zero.
+/// without an equation counts as fixed at zero. A non-finite entry at an
+/// interface node's equation is refused (TFEM_STATUS_INVALID_ARGUMENT
+/// naming the node and the equation); `u` is then unchanged.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_gather(
     context: *mut TfemContact,
@@ -343,7 +345,9 @@ pub unsafe extern "C" fn tfem_contact_gather(
 /// Adds per-node values `residual` (2 per interface node, as
 /// `tfem_contact_evaluate` writes them) into the host's vector
 /// `host_vector` (`n_equations` values, entry i is equation i +
-/// index_base); DOFs without an equation are left out.
+/// index_base); DOFs without an equation are left out. A non-finite value
+/// in `residual` is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node);
+/// `host_vector` is then unchanged.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_scatter_add(
     context: *mut TfemContact,
