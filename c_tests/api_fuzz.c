@@ -432,6 +432,7 @@ enum {
   F_SET_FRICTION,
   F_SET_PRESCRIBED,
   F_ADD_CONTACT_PAIRS_AUTO,
+  F_GET_CONTACT_PAIR_NODAL_PRESSURES,
   F_DESTROY_NULL, /* tfem_destroy(NULL) */
   F_RECREATE,     /* tfem_destroy(m); m = tfem_create() */
   F_TWIN,         /* not a call: the twin-model oracle (see oracle_twin) */
@@ -574,6 +575,7 @@ static const fndesc FN[NF] = {
     [F_SET_FRICTION] = {"tfem_set_friction", 1, "q", "y", "", "", {0}, 0},
     [F_SET_PRESCRIBED] = {"tfem_set_prescribed", 1, "nC", "u", "", "", {0}, 0},
     [F_ADD_CONTACT_PAIRS_AUTO] = {"tfem_add_contact_pairs_auto", 1, "c", "d", "t", "ii", {R_SCALAR, R_SCALAR}, 1},
+    [F_GET_CONTACT_PAIR_NODAL_PRESSURES] = {"tfem_get_contact_pair_nodal_pressures", 1, "q", "", "", "d", {R_NN}, 0},
     [F_DESTROY_NULL] = {"tfem_destroy(NULL)", 0, "", "", "", "", {0}, 0},
     [F_RECREATE] = {"tfem_destroy+tfem_create", 0, "", "", "", "", {0}, 0},
     [F_TWIN] = {"(twin model oracle)", 0, "", "", "", "", {0}, 0},
@@ -1327,6 +1329,7 @@ static void result_getters(rng_t *r, case_t *cs, int contact) {
     if (chance(r, 0.6)) add_call(cs, F_GET_CONTACT_FORCES);
     if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_GAPS);
     if (chance(r, 0.4)) add_call(cs, F_GET_CONTACT_NODAL_PRESSURES);
+    if (chance(r, 0.3)) add_call(cs, F_GET_CONTACT_PAIR_NODAL_PRESSURES);
     if (chance(r, 0.2)) add_call(cs, F_GET_CONTACT_SHEAR);
     if (chance(r, 0.2)) add_call(cs, F_GET_CONTACT_FRICTION_STATE);
     if (chance(r, 0.2)) add_call(cs, F_GET_CONTACT_DISSIPATION);
@@ -2030,7 +2033,7 @@ static void random_call(rng_t *r, case_t *cs, const ctx_t *cx, double wild, int 
       [F_CONTACT_PRESSURES] = 1, [F_CONTACT_ELEMENTS] = 1, [F_CONTACT_ELEMENT_EQUATIONS] = 1,
       [F_CONTACT_ELEMENT_BLOCKS] = 1, [F_CONTACT_LENGTH] = 1, [F_GET_CONTACT_SHEAR] = 1,
       [F_GET_CONTACT_FRICTION_STATE] = 1, [F_GET_CONTACT_DISSIPATION] = 1, [F_SET_FRICTION] = 2,
-      [F_SET_PRESCRIBED] = 2, [F_ADD_CONTACT_PAIRS_AUTO] = 2};
+      [F_SET_PRESCRIBED] = 2, [F_ADD_CONTACT_PAIRS_AUTO] = 2, [F_GET_CONTACT_PAIR_NODAL_PRESSURES] = 2};
   int total = 0;
   for (int f = 0; f < NF; ++f) total += weight[f];
   int x = rint_(r, total), fn = 0;
@@ -4062,6 +4065,9 @@ static void exec_call(runner_t *R, int idx) {
   case F_GET_CONTACT_FORCES: st = tfem_get_contact_forces(m, o[0], c->out[0].len); break;
   case F_GET_CONTACT_GAPS: st = tfem_get_contact_gaps(m, o[0], c->out[0].len); break;
   case F_GET_CONTACT_NODAL_PRESSURES: st = tfem_get_contact_nodal_pressures(m, o[0], c->out[0].len); break;
+  case F_GET_CONTACT_PAIR_NODAL_PRESSURES:
+    st = tfem_get_contact_pair_nodal_pressures(m, c->iv[0], o[0], c->out[0].len);
+    break;
   case F_GET_CONTACT_MESH_SIZE: st = tfem_get_contact_mesh_size(m, o[0]); break;
   case F_GET_CONTACT_MESH: st = tfem_get_contact_mesh(m, o[0], c->out[0].len); break;
   case F_GET_CONTACT_ELEMENT_PAIRS: st = tfem_get_contact_element_pairs(m, o[0], c->out[0].len); break;
@@ -4481,7 +4487,7 @@ static void exec_call(runner_t *R, int idx) {
                      fn == F_GET_EXTERNAL_WORK;
   int need_contact = fn == F_GET_CONTACT_ACTIVE || fn == F_GET_CONTACT_PRESSURE || fn == F_GET_CONTACT_ELEMENTS ||
                      fn == F_GET_CONTACT_REPORT || fn == F_GET_CONTACT_FORCES || fn == F_GET_CONTACT_GAPS ||
-                     fn == F_GET_CONTACT_NODAL_PRESSURES ||
+                     fn == F_GET_CONTACT_NODAL_PRESSURES || fn == F_GET_CONTACT_PAIR_NODAL_PRESSURES ||
                      fn == F_GET_CONTACT_SHEAR || fn == F_GET_CONTACT_FRICTION_STATE ||
                      fn == F_GET_CONTACT_DISSIPATION;
   if (st != TFEM_STATUS_OK && st != TFEM_STATUS_NULL_POINTER && !c->null_model && fn == F_GET_CONTACT_PAIR_BODIES &&
@@ -4802,6 +4808,12 @@ static void exec_call(runner_t *R, int idx) {
       goto keep_results;
     case F_GET_CONTACT_NODAL_PRESSURES:
       if (out_full(c, 0) && s->exact && s->results == 2 && c->out[0].req == s->nn)
+        oracle_nodal_pressures(R, idx, (const double *)(const void *)g[0].p);
+      goto keep_results;
+    case F_GET_CONTACT_PAIR_NODAL_PRESSURES:
+      if (s->has_mesh && (c->iv[0] < 0 || c->iv[0] >= s->npairs))
+        finding(R, V_CONTACT, idx, "OK for contact pair %d of the %d declared", c->iv[0], s->npairs);
+      else if (out_full(c, 0) && s->exact && s->results == 2 && c->out[0].req == s->nn)
         oracle_nodal_pressures(R, idx, (const double *)(const void *)g[0].p);
       goto keep_results;
     case F_GET_EXTERNAL_WORK:
@@ -5222,6 +5234,9 @@ static void c_emit_call(FILE *f, const call_t *c, int idx) {
   case F_GET_CONTACT_GAPS: fprintf(f, "    s = tfem_get_contact_gaps(%s, %s, %zu);\n", M, o[0], len[0]); break;
   case F_GET_CONTACT_NODAL_PRESSURES:
     fprintf(f, "    s = tfem_get_contact_nodal_pressures(%s, %s, %zu);\n", M, o[0], len[0]);
+    break;
+  case F_GET_CONTACT_PAIR_NODAL_PRESSURES:
+    fprintf(f, "    s = tfem_get_contact_pair_nodal_pressures(%s, %d, %s, %zu);\n", M, I[0], o[0], len[0]);
     break;
   case F_GET_CONTACT_MESH_SIZE: fprintf(f, "    s = tfem_get_contact_mesh_size(%s, %s);\n", M, o[0]); break;
   case F_GET_CONTACT_MESH: fprintf(f, "    s = tfem_get_contact_mesh(%s, %s, %zu);\n", M, o[0], len[0]); break;

@@ -954,6 +954,33 @@ static void a_node_on_several_pairs_reads_their_forces_over_their_tributaries(vo
   /* 9 lower bed nodes, 4 + 4 upper ones besides the 2 corners, 2 + 2
    * head-joint nodes above the corners. */
   CHECK(bed == 9 + 4 + 4 && corners == 2 && head == 4 && shared == 1);
+
+  /* Pair by pair, each node reads its face of that pair alone: p on the
+   * two bed pairs (the shared node on both), q on the head pair, the
+   * corners p on their bed pair and q on the head pair; 0 off the pair,
+   * including the nodes of its strip beyond the other side's end. */
+  for (int pair = 0; pair < 3; ++pair) {
+    CHECK(tfem_get_contact_pair_nodal_pressures(m, pair, r, (size_t)T.nn) == TFEM_STATUS_OK);
+    int on = 0, right = 1;
+    for (int v = 0; v < T.nn; ++v) {
+      double x = T.xy[2 * v], y = T.xy[2 * v + 1];
+      int body = v < 27 ? 1 : v < 42 ? 2 : 3; /* the lower block, B, C */
+      int in_pair = pair == 0 ? y == 0.0 && x <= 0.5 && body != 3
+                  : pair == 1 ? y == 0.0 && x >= 0.5 && body != 2
+                              : x == 0.5 && y >= 0.0 && body != 1;
+      double want = in_pair ? (pair == 2 ? q : p) : 0.0;
+      on += in_pair;
+      if (fabs(r[v] - want) > 1e-9 * p) {
+        right = 0;
+        printf("pair %d node %d (%g, %g): %.10g, want %.10g\n", pair, v, x, y, r[v], want);
+      }
+    }
+    CHECK(right && on == (pair == 2 ? 6 : 10));
+  }
+  EXPECT_ERROR(m, tfem_get_contact_pair_nodal_pressures(m, 3, r, (size_t)T.nn), TFEM_STATUS_INVALID_ARGUMENT,
+               "contact pair 3");
+  EXPECT_ERROR(m, tfem_get_contact_pair_nodal_pressures(m, -1, r, (size_t)T.nn), TFEM_STATUS_INVALID_ARGUMENT,
+               "contact pair -1");
   tfem_destroy(m);
 }
 

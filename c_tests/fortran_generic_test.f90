@@ -21,7 +21,7 @@ program fortran_generic_test
       0._dp, 1._dp, 1._dp, 1._dp, 1._dp, 2._dp, 0._dp, 2._dp]
   integer :: conn2(12) = [1, 2, 3, 1, 3, 4, 5, 6, 7, 5, 7, 8], body2(4) = [1, 1, 2, 2]
   integer :: edges2(8) = [1, 2, 4, 3, 5, 6, 8, 7], tags2(4) = [1, 2, 3, 4]
-  real(dp) :: u(12), r(12), jac(4), stiff(36), err, pressure(8), nodal(8)
+  real(dp) :: u(12), r(12), jac(4), stiff(36), err, pressure(8), nodal(8), alone(8)
   integer :: status, n_tri, n_con, pair, flipped, flipped_ccw, i, active(8), n_warnings, n12 = 12
   integer(c_int64_t) :: n, nnz, n_only, nnz_only
   integer(c_int64_t), allocatable :: col_ptr(:), row_idx(:), dofs(:)
@@ -164,6 +164,11 @@ program fortran_generic_test
   call expect(status == TFEM_STATUS_OK .and. all(nodal([1, 2, 7, 8]) == 0._dp) .and. &
       abs(nodal(3) - nodal(6)) < 1e-12_dp .and. abs(nodal(4) - nodal(5)) < 1e-12_dp .and. &
       abs(0.5_dp * (nodal(3) + nodal(4)) - 1._dp) < 1e-9_dp, 'nodal contact pressures')
+  ! One pair: read alone (0-based pair index) it is the same reading.
+  status = tfem_get_contact_pair_nodal_pressures(c, 0, alone, 8)
+  call expect(status == TFEM_STATUS_OK .and. all(alone == nodal), 'nodal pressures of pair 0')
+  call expect(tfem_get_contact_pair_nodal_pressures(c, 1, alone, 8) == TFEM_STATUS_INVALID_ARGUMENT, &
+      'nodal pressures of an unknown pair')
   call tfem_destroy(c)
 
   ! A contact pair with a user mesh across a gap: pair index kept, flip count omitted.

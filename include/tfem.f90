@@ -115,6 +115,7 @@ module tfem
   private :: tfem_get_contact_elements_i
   private :: tfem_get_contact_forces_i
   private :: tfem_get_contact_nodal_pressures_i
+  private :: tfem_get_contact_pair_nodal_pressures_i
   private :: tfem_get_contact_gaps_i
   private :: tfem_get_contact_mesh_i
   private :: tfem_get_contact_element_pairs_i
@@ -988,6 +989,28 @@ module tfem
     end function tfem_get_contact_nodal_pressures
     module procedure tfem_get_contact_nodal_pressures_i
   end interface tfem_get_contact_nodal_pressures
+
+  interface tfem_get_contact_pair_nodal_pressures
+    !> Copies the contact pressure of contact pair `pair` (0-based, from `tfem_add_contact_pair` or
+    !! `tfem_add_contact_pairs_auto`) alone at every node in the last contact solve (n_nodes values,
+    !! as `tfem_get_contact_nodal_pressures`; zero off that pair), computed on request from that
+    !! pair's forces over that pair's tributaries: a node where three bodies meet reads each face on
+    !! its own (at a block's corner, the bed's pressure on the bed pair and the head joint's on the
+    !! head pair), where `tfem_get_contact_nodal_pressures` gives their tributary-weighted mean. An
+    !! unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT naming it). Fortran: `length` takes an
+    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
+    !! as 0.
+    function tfem_get_contact_pair_nodal_pressures(model, pair, out, length) &
+        bind(C, name="tfem_get_contact_pair_nodal_pressures") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: pair
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_pair_nodal_pressures
+    module procedure tfem_get_contact_pair_nodal_pressures_i
+  end interface tfem_get_contact_pair_nodal_pressures
 
   interface tfem_get_contact_gaps
     !> Copies the normal gap at every node in the last contact solve (n_nodes values, model length
@@ -1953,6 +1976,16 @@ contains
     integer(c_int) :: status
     status = tfem_get_contact_nodal_pressures(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_nodal_pressures_i
+
+  ! tfem_get_contact_pair_nodal_pressures, lengths of kind tfem_length_kind.
+  function tfem_get_contact_pair_nodal_pressures_i(model, pair, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: pair
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_pair_nodal_pressures(model, pair, out, tfem_to_size_t(length))
+  end function tfem_get_contact_pair_nodal_pressures_i
 
   ! tfem_get_contact_gaps, lengths of kind tfem_length_kind.
   function tfem_get_contact_gaps_i(model, out, length) result(status)

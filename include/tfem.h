@@ -776,6 +776,23 @@ enum tfem_status tfem_get_contact_nodal_pressures(struct tfem_model *model,
                                                   size_t length);
 
 /**
+ * Copies the contact pressure of contact pair `pair` (0-based, from
+ * `tfem_add_contact_pair` or `tfem_add_contact_pairs_auto`) alone at every
+ * node in the last contact solve (n_nodes values, as
+ * `tfem_get_contact_nodal_pressures`; zero off that pair), computed on
+ * request from that pair's forces over that pair's tributaries: a node
+ * where three bodies meet reads each face on its own (at a block's
+ * corner, the bed's pressure on the bed pair and the head joint's on the
+ * head pair), where `tfem_get_contact_nodal_pressures` gives their
+ * tributary-weighted mean. An unknown pair is refused
+ * (TFEM_STATUS_INVALID_ARGUMENT naming it).
+ */
+enum tfem_status tfem_get_contact_pair_nodal_pressures(struct tfem_model *model,
+                                                       int pair,
+                                                       double *out,
+                                                       size_t length);
+
+/**
  * Copies the normal gap at every node in the last contact solve
  * (n_nodes values, model length units; zero off the contact interfaces),
  * computed on request: the smallest, over the contact elements at the

@@ -333,6 +333,54 @@ fn every_node_of_a_wall_reads_the_pressure_of_the_faces_it_lies_on() {
 }
 
 #[test]
+fn each_pair_of_a_wall_read_alone_gives_its_own_face_pressure_at_the_corners() {
+    // `Model::contact_pair_nodal_pressures`: a bed pair reads p at every
+    // node it gives a value, a head pair q = ν/(1−ν) p within the scene's
+    // stress error (as in the test above), a block's corner included —
+    // where the pairs read together give the mean (p + q)/2. Every node
+    // the pairs together load is read by at least one pair alone, and
+    // each corner by two.
+    let wall = Wall::default();
+    let mut scene = wall.build().unwrap();
+    let r = scene.solve(&wall, &ContactOptions::default()).unwrap();
+    let q = wall.poisson / (1.0 - wall.poisson);
+    let head_tol = r.max_uniform_error * (1.0 + 1e-6);
+    let elements = scene.model.contact_elements().unwrap().to_vec();
+    let together = scene.model.contact_nodal_pressures().unwrap();
+    let mut read_by = vec![0usize; together.len()];
+    for pair in 0..scene.model.contact_pairs().len() {
+        let el = elements.iter().find(|el| el.pair == pair).unwrap();
+        let bed = el.normal[1].abs() > el.normal[0].abs();
+        let (want, tol) = if bed { (1.0, 1e-10) } else { (q, head_tol) };
+        let alone = scene.model.contact_pair_nodal_pressures(pair).unwrap();
+        for (v, &pv) in alone.iter().enumerate().filter(|(_, pv)| **pv != 0.0) {
+            read_by[v] += 1;
+            let got = pv / wall.p;
+            assert!(
+                (got - want).abs() <= tol,
+                "pair {pair} node {v}: {got} against {want}"
+            );
+        }
+    }
+    let mut corners = 0;
+    for (v, &t) in together.iter().enumerate().filter(|(_, t)| **t != 0.0) {
+        assert!(read_by[v] >= 1, "node {v} read by no pair alone");
+        if (t / wall.p - 0.5 * (1.0 + q)).abs() <= head_tol {
+            assert_eq!(read_by[v], 2, "corner {v}");
+            corners += 1;
+        }
+    }
+    assert!(corners > 0);
+    let n = scene.model.contact_pairs().len();
+    let e = scene.model.contact_pair_nodal_pressures(n).unwrap_err();
+    assert!(
+        e.message().contains(&format!("contact pair {n}")),
+        "{}",
+        e.message()
+    );
+}
+
+#[test]
 fn a_wall_with_an_eccentric_load_converges_without_cycling_and_balances_its_loads() {
     // Self-weight ρg = 2e4 N/m³ and p = 1e6 over the left third of the
     // top: joints open under the unloaded part. The loop must end on a

@@ -907,6 +907,38 @@ pub unsafe extern "C" fn tfem_get_contact_nodal_pressures(
     })
 }
 
+/// Copies the contact pressure of contact pair `pair` (0-based, from
+/// `tfem_add_contact_pair` or `tfem_add_contact_pairs_auto`) alone at every
+/// node in the last contact solve (n_nodes values, as
+/// `tfem_get_contact_nodal_pressures`; zero off that pair), computed on
+/// request from that pair's forces over that pair's tributaries: a node
+/// where three bodies meet reads each face on its own (at a block's
+/// corner, the bed's pressure on the bed pair and the head joint's on the
+/// head pair), where `tfem_get_contact_nodal_pressures` gives their
+/// tributary-weighted mean. An unknown pair is refused
+/// (TFEM_STATUS_INVALID_ARGUMENT naming it).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_pair_nodal_pressures(
+    model: *mut TfemModel,
+    pair: c_int,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let p = usize::try_from(pair).map_err(|_| {
+            Error::argument(format!(
+                "contact pair {pair} does not exist (pairs are 0-based)"
+            ))
+        })?;
+        copy_out(
+            &m.model.contact_pair_nodal_pressures(p)?,
+            out,
+            length,
+            "out",
+        )
+    })
+}
+
 /// Copies the normal gap at every node in the last contact solve
 /// (n_nodes values, model length units; zero off the contact interfaces),
 /// computed on request: the smallest, over the contact elements at the

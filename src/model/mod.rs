@@ -789,6 +789,35 @@ impl Model {
     /// face), the tributary-weighted mean of its faces' pressures at a
     /// corner.
     pub fn contact_nodal_pressures(&self) -> Result<Vec<f64>> {
+        self.interface_pressures(self.contact_elements()?)
+    }
+
+    /// The contact pressure of pair `pair` (0-based) alone at every node of
+    /// the last contact solve (zero off that pair), computed on request:
+    /// as [`Model::contact_nodal_pressures`] with that pair's forces over
+    /// that pair's tributaries only, so that a node where three bodies meet
+    /// reads each face on its own (at a block's corner, the bed's pressure
+    /// on the bed pair and the head joint's on the head pair). An unknown
+    /// pair is refused, naming it.
+    pub fn contact_pair_nodal_pressures(&self, pair: usize) -> Result<Vec<f64>> {
+        let n = self.contact_pairs().len();
+        if pair >= n {
+            return Err(Error::argument(format!(
+                "contact pair {pair} does not exist ({n} declared, 0-based)"
+            )));
+        }
+        let elements: Vec<ContactElement> = self
+            .contact_elements()?
+            .iter()
+            .filter(|el| el.pair == pair)
+            .cloned()
+            .collect();
+        self.interface_pressures(&elements)
+    }
+
+    /// `contact::traction::interface_pressures` of `elements` (of the last
+    /// contact solve) at every node, zero elsewhere.
+    fn interface_pressures(&self, elements: &[ContactElement]) -> Result<Vec<f64>> {
         let mesh = self.problem.mesh_ref()?;
         let f = self
             .solution()?
@@ -796,9 +825,7 @@ impl Model {
         let mut p = vec![0.0; mesh.nodes().len()];
         let nodes = crate::contact::mesh::Nodes::of(mesh);
         let force = |pair: usize, v: usize| f.get(&(pair, v)).copied().unwrap_or([0.0; 2]);
-        for q in
-            crate::contact::traction::interface_pressures(nodes, self.contact_elements()?, force)
-        {
+        for q in crate::contact::traction::interface_pressures(nodes, elements, force) {
             p[q.node] = q.pressure;
         }
         Ok(p)
