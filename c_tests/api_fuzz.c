@@ -199,12 +199,14 @@ enum {
   O_PRESCRIBED,    /* tfem_set_prescribed accepted or refused as the shadow expects */
   O_AUTO_PAIRS,    /* first/count of tfem_add_contact_pairs_auto against the pairs */
   O_TWIN,          /* results equal to a twin model's */
+  O_PAIR_PRESSURE, /* one pair's nodal pressures against all pairs' */
   NO
 };
 static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetration", "work", "mesh_eq",
                                        "apex", "threads", "results_kept", "edges_refused", "fix_refused",
                                        "step_repeat", "host_pattern", "host_gather", "host_active",
-                                       "coulomb", "friction_args", "prescribed", "auto_pairs", "twin"};
+                                       "coulomb", "friction_args", "prescribed", "auto_pairs", "twin",
+                                       "pair_pressure"};
 
 /* A library defect this tester found (c_tests/README.md, "The 3 entry
  * points of friction, prescribed values and automatic pairs"): with
@@ -3325,6 +3327,51 @@ static void oracle_nodal_pressures(runner_t *R, int idx, const double *p) {
   free(in);
 }
 
+/* tfem_get_contact_pair_nodal_pressures (pair k, after a contact solve):
+ * zero off the nodes of pair k's contact elements; at a node on pair k's
+ * elements only, tfem_get_contact_nodal_pressures' value to the bit (the
+ * same reading of the same elements). */
+static void oracle_pair_nodal_pressures(runner_t *R, int idx, int pair, const double *p) {
+  shadow_t *s = &R->sh;
+  int *cm, *cp;
+  long ne = fetch_contact_mesh(R->m, &cm, &cp);
+  if (ne < 0) return;
+  int nn = s->nn, bad = 0;
+  int *pair_of = xmalloc(sizeof(int) * (size_t)nn + 1); /* -1 none, -2 several */
+  char *on_k = xcalloc((size_t)nn + 1, 1);
+  double *all = xmalloc(sizeof(double) * (size_t)nn + 1);
+  for (int v = 0; v < nn; ++v) pair_of[v] = -1;
+  for (long e = 0; e < ne && !bad; ++e)
+    for (int k = 0; k < 3 && !bad; ++k) {
+      long v = (long)cm[3 * e + k] - s->base;
+      if (v < 0 || v >= nn) bad = 1;
+      else {
+        on_k[v] |= cp[e] == pair;
+        pair_of[v] = pair_of[v] == -1 || pair_of[v] == cp[e] ? cp[e] : -2;
+      }
+    }
+  if (!bad && tfem_get_contact_nodal_pressures(R->m, all, (size_t)nn) == TFEM_STATUS_OK) {
+    R->oracles[O_PAIR_PRESSURE]++;
+    for (int v = 0; v < nn; ++v) {
+      if (!on_k[v] && p[v] != 0.0) {
+        finding(R, V_CONTACT, idx, "pair %d: nodal pressure %g at node %d, on no element of that pair", pair, p[v],
+                v + s->base);
+        break;
+      }
+      if (pair_of[v] == pair && memcmp(&p[v], &all[v], sizeof(double)) != 0) {
+        finding(R, V_CONTACT, idx, "pair %d: nodal pressure %.17g at node %d, on that pair only, read %.17g with all",
+                pair, p[v], v + s->base, all[v]);
+        break;
+      }
+    }
+  }
+  free(cm);
+  free(cp);
+  free(pair_of);
+  free(on_k);
+  free(all);
+}
+
 /* tfem_get_contact_gaps (per node, after a contact solve): zero off the
  * contact elements; where the report gives a penetration, the smallest
  * gap is minus it (1e-14 relative: the library computes both from the
@@ -4814,7 +4861,7 @@ static void exec_call(runner_t *R, int idx) {
       if (s->has_mesh && (c->iv[0] < 0 || c->iv[0] >= s->npairs))
         finding(R, V_CONTACT, idx, "OK for contact pair %d of the %d declared", c->iv[0], s->npairs);
       else if (out_full(c, 0) && s->exact && s->results == 2 && c->out[0].req == s->nn)
-        oracle_nodal_pressures(R, idx, (const double *)(const void *)g[0].p);
+        oracle_pair_nodal_pressures(R, idx, c->iv[0], (const double *)(const void *)g[0].p);
       goto keep_results;
     case F_GET_EXTERNAL_WORK:
       if (!c->out[0].null_ && s->exact && s->results && s->results != 3) { /* (a step's loads are scaled) */

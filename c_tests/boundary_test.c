@@ -958,7 +958,9 @@ static void a_node_on_several_pairs_reads_their_forces_over_their_tributaries(vo
   /* Pair by pair, each node reads its face of that pair alone: p on the
    * two bed pairs (the shared node on both), q on the head pair, the
    * corners p on their bed pair and q on the head pair; 0 off the pair,
-   * including the nodes of its strip beyond the other side's end. */
+   * including the nodes of its strip beyond the other side's end (which
+   * ends on a node here: one ending inside an edge gives the first node
+   * past it the other side's pressure near the end, as the header says). */
   for (int pair = 0; pair < 3; ++pair) {
     CHECK(tfem_get_contact_pair_nodal_pressures(m, pair, r, (size_t)T.nn) == TFEM_STATUS_OK);
     int on = 0, right = 1;
@@ -1026,14 +1028,17 @@ static void a_non_finite_host_value_is_refused_by_gather_and_scatter_add(void) {
   tfem_contact_destroy(c);
 }
 
-/* An honest array the machine cannot copy: INT_MAX nodes, 32 GiB of
- * coordinates (a read-only mapping of zero pages, reserved no memory), in
- * an address space capped at 512 MiB above what the process uses. The
- * library's copy must fail as TFEM_STATUS_OUT_OF_MEMORY naming the array
- * and leave the model and the contact context unchanged. Found aborting
- * the host in Rust's infallible allocation. Skipped under AddressSanitizer,
- * whose shadow memory cannot live under an address-space cap, and where
- * the mapping is refused (strict overcommit). */
+/* Honest arrays the machine cannot hold: INT_MAX nodes, 32 GiB of
+ * coordinates (a read-only mapping of zero pages, which reserves no
+ * memory), in an address space capped at 512 MiB above what the process
+ * uses. The library's copy must fail as TFEM_STATUS_OUT_OF_MEMORY naming
+ * the array and leave the model and the contact context unchanged; so must
+ * the first structures it builds from a copy that fits (16 Mi contact
+ * triangles or 24 Mi edges: 384 MiB each, under the cap, then as much
+ * again). Found aborting the host in Rust's infallible allocation.
+ * Skipped under AddressSanitizer, whose shadow memory cannot live under an
+ * address-space cap, and wherever the cap cannot be set or does not bite
+ * (a 1 GiB malloc must fail under it). */
 static void an_array_too_large_to_copy_is_out_of_memory_not_an_abort(void) {
 #if defined(__SANITIZE_ADDRESS__)
   printf("skipped under AddressSanitizer: %s\n", __func__);
@@ -1046,36 +1051,67 @@ static void an_array_too_large_to_copy_is_out_of_memory_not_an_abort(void) {
   }
   long pages = 0;
   FILE *statm = fopen("/proc/self/statm", "r");
-  CHECK(statm != NULL && fscanf(statm, "%ld", &pages) == 1);
+  int have_size = statm != NULL && fscanf(statm, "%ld", &pages) == 1;
   if (statm) fclose(statm);
   struct rlimit saved, capped;
-  CHECK(getrlimit(RLIMIT_AS, &saved) == 0);
+  if (!have_size || getrlimit(RLIMIT_AS, &saved) != 0) {
+    printf("skipped, no process size or address-space limit: %s\n", __func__);
+    munmap(zeros, bytes);
+    return;
+  }
   capped = saved;
   capped.rlim_cur = (rlim_t)pages * (rlim_t)sysconf(_SC_PAGESIZE) + ((rlim_t)512 << 20);
+  if (saved.rlim_max != RLIM_INFINITY && capped.rlim_cur > saved.rlim_max) {
+    printf("skipped, hard address-space limit too low: %s\n", __func__);
+    munmap(zeros, bytes);
+    return;
+  }
 
   tfem_model *m = tfem_create();
-  CHECK(tfem_set_mesh(m, G.nn, G.xy, G.nt, G.tri, G.body, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_set_mesh(m, B.nn, B.xy, B.nt, B.tri, B.body, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_set_boundary_edges(m, B.ne, B.edges, B.tags) == TFEM_STATUS_OK);
   tfem_contact *c = tfem_contact_create(0);
+  int na[2] = {0, 1}, nb[2] = {2, 3}, ea[2] = {0, 1}, eb[2] = {2, 3};
+  double xa[4] = {0.0, 0.0, 1.0, 0.0}, xb[4] = {1.0, 0.0, 0.0, 0.0};
+  int64_t qa[4] = {0, 1, 2, 3}, qb[4] = {4, 5, 6, 7};
+  CHECK(tfem_contact_add_side(c, 1, 1, 1.0, 0.3, 0, 2, na, xa, qa, 1, ea, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_contact_add_side(c, 2, 2, 1.0, 0.3, 0, 2, nb, xb, qb, 1, eb, NULL) == TFEM_STATUS_OK);
+
   CHECK(setrlimit(RLIMIT_AS, &capped) == 0);
-  int one[3] = {0, 0, 0};
-  EXPECT_ERROR(m, tfem_set_mesh(m, INT_MAX, zeros, 1, one, one, 0), TFEM_STATUS_OUT_OF_MEMORY,
-               "`xy`");
-  tfem_status side = tfem_contact_add_side(c, 1, 1, 1.0, 0.3, 0, INT_MAX, zeros, zeros, zeros, 0,
-                                           NULL, NULL);
-  char msg[512];
-  tfem_contact_last_error(c, msg, sizeof msg);
-  CHECK(side == TFEM_STATUS_OUT_OF_MEMORY && strstr(msg, "`nodes`") != NULL);
-  CHECK(setrlimit(RLIMIT_AS, &saved) == 0);
+  void *probe = malloc((size_t)1 << 30);
+  if (probe != NULL) {
+    free(probe);
+    CHECK(setrlimit(RLIMIT_AS, &saved) == 0);
+    printf("skipped, the address-space cap does not bite: %s\n", __func__);
+  } else {
+    const int tris = 16 << 20, edges = 24 << 20;
+    int one[3] = {0, 0, 0};
+    char msg[512];
+    EXPECT_ERROR(m, tfem_set_mesh(m, INT_MAX, zeros, 1, one, one, 0), TFEM_STATUS_OUT_OF_MEMORY, "`xy`");
+    EXPECT_ERROR(m, tfem_set_boundary_edges(m, edges, zeros, zeros), TFEM_STATUS_OUT_OF_MEMORY,
+                 "boundary edges");
+    EXPECT_ERROR(m, tfem_add_contact_pair_with_mesh(m, 13, 22, tris, zeros, NULL, NULL),
+                 TFEM_STATUS_OUT_OF_MEMORY, "contact mesh");
+    tfem_status st = tfem_contact_add_side(c, 3, 3, 1.0, 0.3, 0, INT_MAX, zeros, zeros, zeros, 0, NULL, NULL);
+    tfem_contact_last_error(c, msg, sizeof msg);
+    CHECK(st == TFEM_STATUS_OUT_OF_MEMORY && strstr(msg, "`nodes`") != NULL);
+    st = tfem_contact_add_side(c, 3, 3, 1.0, 0.3, 0, 2, na, xa, qa, edges, zeros, NULL);
+    tfem_contact_last_error(c, msg, sizeof msg);
+    CHECK(st == TFEM_STATUS_OUT_OF_MEMORY && strstr(msg, "side 3") != NULL);
+    st = tfem_contact_add_pair_with_mesh(c, 0, 1, tris, zeros, NULL);
+    tfem_contact_last_error(c, msg, sizeof msg);
+    CHECK(st == TFEM_STATUS_OUT_OF_MEMORY && strstr(msg, "contact mesh") != NULL);
+    CHECK(setrlimit(RLIMIT_AS, &saved) == 0);
+  }
   munmap(zeros, bytes);
 
-  int nn = -1, nt = -1;
-  CHECK(tfem_get_sizes(m, &nn, &nt, NULL) == TFEM_STATUS_OK && nn == G.nn && nt == G.nt);
-  int na[2] = {0, 1}, ea[2] = {0, 1}, first = -1;
-  double xa[4] = {0.0, 0.0, 1.0, 0.0};
-  int64_t qa[4] = {0, 1, 2, 3};
-  CHECK(tfem_contact_add_side(c, 1, 1, 1.0, 0.3, 0, 2, na, xa, qa, 1, ea, &first) ==
-            TFEM_STATUS_OK &&
-        first == 0);
+  /* Nothing changed: the model's mesh, edges and pairs, the context's sides. */
+  int nn = -1, nt = -1, pair = -1, side = -1;
+  CHECK(tfem_get_sizes(m, &nn, &nt, NULL) == TFEM_STATUS_OK && nn == B.nn && nt == B.nt);
+  CHECK(tfem_add_contact_pair(m, 13, 22, &pair) == TFEM_STATUS_OK && pair == 0);
+  CHECK(tfem_contact_add_side(c, 3, 3, 1.0, 0.3, 0, 2, na, xa, qa, 1, ea, &side) == TFEM_STATUS_OK &&
+        side == 2);
+  CHECK(tfem_contact_add_pair(c, 0, 1, &pair) == TFEM_STATUS_OK && pair == 0);
   tfem_contact_destroy(c);
   tfem_destroy(m);
 #endif

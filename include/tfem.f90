@@ -179,7 +179,8 @@ module tfem
   !> An internal error (a caught panic): please report it.
   integer(c_int), parameter :: TFEM_STATUS_INTERNAL = 12
   !> Memory could not be allocated: for the factorisation, or for the library's copy of a caller's
-  !! array (the message names the array).
+  !! array and the first structures built from it (the message names them). Other allocations are
+  !! not checked: where they fail, the process aborts.
   integer(c_int), parameter :: TFEM_STATUS_OUT_OF_MEMORY = 13
   !> A file could not be read or written (the message names it).
   integer(c_int), parameter :: TFEM_STATUS_IO = 14
@@ -993,13 +994,16 @@ module tfem
   interface tfem_get_contact_pair_nodal_pressures
     !> Copies the contact pressure of contact pair `pair` (0-based, from `tfem_add_contact_pair` or
     !! `tfem_add_contact_pairs_auto`) alone at every node in the last contact solve (n_nodes values,
-    !! as `tfem_get_contact_nodal_pressures`; zero off that pair), computed on request from that
-    !! pair's forces over that pair's tributaries: a node where three bodies meet reads each face on
-    !! its own (at a block's corner, the bed's pressure on the bed pair and the head joint's on the
-    !! head pair), where `tfem_get_contact_nodal_pressures` gives their tributary-weighted mean. An
-    !! unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT naming it). Fortran: `length` takes an
-    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
-    !! as 0.
+    !! as `tfem_get_contact_nodal_pressures`; zero off that pair's contact mesh), computed on
+    !! request from that pair's forces over that pair's tributaries: a node where three bodies meet
+    !! reads each face on its own (at a block's corner, the bed's pressure on the bed pair and the
+    !! head joint's on the head pair), where `tfem_get_contact_nodal_pressures` gives their
+    !! tributary-weighted mean. As there, where one side ends inside an edge of the other, the first
+    !! node of the other side past that end reads the other side's pressure near that end. An
+    !! unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT naming it); before a contact solve, or
+    !! after a change (declaring a pair is one), there are no results (TFEM_STATUS_INVALID_STATE).
+    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
+    !! negative length is passed as 0.
     function tfem_get_contact_pair_nodal_pressures(model, pair, out, length) &
         bind(C, name="tfem_get_contact_pair_nodal_pressures") result(status)
       import

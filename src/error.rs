@@ -38,7 +38,9 @@ pub enum Status {
     /// An internal error (a caught panic): please report it.
     Internal = 12,
     /// Memory could not be allocated: for the factorisation, or for the
-    /// library's copy of a caller's array (the message names the array).
+    /// library's copy of a caller's array and the first structures built
+    /// from it (the message names them). Other allocations are not checked:
+    /// where they fail, the process aborts.
     OutOfMemory = 13,
     /// A file could not be read or written (the message names it).
     Io = 14,
@@ -139,6 +141,40 @@ pub(crate) fn ensure_finite(
             ),
         )),
     }
+}
+
+/// The error for a contact pair index `pair` that is not one of the `n`
+/// declared (0-based).
+pub(crate) fn no_pair(pair: impl std::fmt::Display, n: usize) -> Error {
+    Error::argument(format!(
+        "contact pair {pair} does not exist ({n} declared, 0-based)"
+    ))
+}
+
+/// An empty vector with room for `n` items, reserved fallibly: memory for
+/// `what` (sized by a caller's count) that cannot be had is
+/// [`Status::OutOfMemory`] naming it, where Rust's infallible allocation
+/// would abort the process — a host code with it.
+pub(crate) fn reserved<T>(n: usize, what: &str) -> Result<Vec<T>> {
+    let mut v = Vec::new();
+    v.try_reserve_exact(n)
+        .map_err(|_| out_of_memory::<T>(n, what))?;
+    Ok(v)
+}
+
+/// Grows `v` fallibly by room for `n` more items (see [`reserved`]).
+pub(crate) fn reserve_more<T>(v: &mut Vec<T>, n: usize, what: &str) -> Result<()> {
+    v.try_reserve(n).map_err(|_| out_of_memory::<T>(n, what))
+}
+
+fn out_of_memory<T>(n: usize, what: &str) -> Error {
+    Error::new(
+        Status::OutOfMemory,
+        format!(
+            "{what}: no memory for {n} items ({} bytes)",
+            n.saturating_mul(std::mem::size_of::<T>())
+        ),
+    )
 }
 
 /// Result type of the tfem API.

@@ -25,7 +25,7 @@ use std::collections::HashMap;
 use super::mesh::{Nodes, Side, check_facing, checked_triangles, strip};
 use super::set::{ActiveSet, ContactSet, element_laws, softer};
 use super::{ContactElement, ContactOptions};
-use crate::error::{Error, Result, ensure_finite};
+use crate::error::{Error, Result, Status, ensure_finite, reserve_more, reserved};
 use crate::fem::material::Material;
 
 /// A pair of sides, with the contact mesh the host may give for it.
@@ -222,8 +222,22 @@ impl HostContact {
                 equations.len()
             )));
         }
-        let mut fresh: Vec<(i64, [f64; 2], [Option<usize>; 2])> = Vec::new();
-        let mut local = self.local.clone();
+        // Every structure sized by the caller's counts is reserved
+        // fallibly before any work (`error::reserved`).
+        let what = format!("side {tag}");
+        let mut fresh: Vec<(i64, [f64; 2], [Option<usize>; 2])> = reserved(nodes.len(), &what)?;
+        let mut pairs = reserved(edges.len(), &what)?;
+        let mut x = reserved(self.x.len() + nodes.len(), &what)?;
+        let mut local = HashMap::new();
+        local
+            .try_reserve(self.local.len() + nodes.len())
+            .map_err(|_| {
+                Error::new(
+                    Status::OutOfMemory,
+                    format!("{what}: no memory for its nodes"),
+                )
+            })?;
+        local.extend(self.local.iter().map(|(&k, &v)| (k, v)));
         for (i, (&id, (&p, eq))) in nodes.iter().zip(xy.iter().zip(equations)).enumerate() {
             // Below the base is no equation: i64::MIN too, without the
             // subtraction overflowing (found by the fuzzer at base 1).
@@ -257,9 +271,10 @@ impl HostContact {
                 }
             }
         }
-        let mut x = self.x.clone();
+        x.extend_from_slice(&self.x);
         x.extend(fresh.iter().map(|f| f.1));
-        let mut pairs = Vec::with_capacity(edges.len());
+        reserve_more(&mut self.node_id, fresh.len(), &what)?;
+        reserve_more(&mut self.equation, fresh.len(), &what)?;
         for (e, &[p, q]) in edges.iter().enumerate() {
             let find = |id: i64| {
                 local.get(&id).copied().ok_or_else(|| {
@@ -301,7 +316,7 @@ impl HostContact {
         b: usize,
         triangles: &[[i64; 3]],
     ) -> Result<usize> {
-        let mut local = Vec::with_capacity(triangles.len());
+        let mut local = reserved(triangles.len(), "the contact mesh")?;
         for (t, tri) in triangles.iter().enumerate() {
             let mut l = [0; 3];
             for k in 0..3 {

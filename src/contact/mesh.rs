@@ -6,7 +6,7 @@
 use std::collections::{HashMap, HashSet};
 
 use super::{ContactElement, ContactPair};
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, reserved};
 use crate::fem::element::TriGeometry;
 use crate::fem::mesh::Mesh;
 
@@ -513,7 +513,7 @@ pub fn checked_triangles(
     let (tag_a, tag_b) = (a.tag, b.tag);
     let (x, base) = (nodes_of.x, nodes_of.base);
     let n_nodes = x.len();
-    let mut out = Vec::with_capacity(triangles.len());
+    let mut out = reserved(triangles.len(), "the contact mesh")?;
     let mut flipped = 0;
     for (t, tri) in triangles.iter().enumerate() {
         let name = format!("contact triangle {}", t + base);

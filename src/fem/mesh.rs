@@ -291,7 +291,7 @@ impl Mesh {
                 )
             })
             .collect();
-        let mut out = Vec::with_capacity(edges.len());
+        let mut out = crate::error::reserved(edges.len(), "the boundary edges")?;
         for (e, (&[p, q], &tag)) in edges.iter().zip(tags).enumerate() {
             if p >= n || q >= n {
                 return Err(Error::mesh(format!(

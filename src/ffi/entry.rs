@@ -910,13 +910,17 @@ pub unsafe extern "C" fn tfem_get_contact_nodal_pressures(
 /// Copies the contact pressure of contact pair `pair` (0-based, from
 /// `tfem_add_contact_pair` or `tfem_add_contact_pairs_auto`) alone at every
 /// node in the last contact solve (n_nodes values, as
-/// `tfem_get_contact_nodal_pressures`; zero off that pair), computed on
-/// request from that pair's forces over that pair's tributaries: a node
-/// where three bodies meet reads each face on its own (at a block's
-/// corner, the bed's pressure on the bed pair and the head joint's on the
-/// head pair), where `tfem_get_contact_nodal_pressures` gives their
-/// tributary-weighted mean. An unknown pair is refused
-/// (TFEM_STATUS_INVALID_ARGUMENT naming it).
+/// `tfem_get_contact_nodal_pressures`; zero off that pair's contact
+/// mesh), computed on request from that pair's forces over that pair's
+/// tributaries: a node where three bodies meet reads each face on its own
+/// (at a block's corner, the bed's pressure on the bed pair and the head
+/// joint's on the head pair), where `tfem_get_contact_nodal_pressures`
+/// gives their tributary-weighted mean. As there, where one side ends
+/// inside an edge of the other, the first node of the other side past
+/// that end reads the other side's pressure near that end.
+/// An unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT naming it);
+/// before a contact solve, or after a change (declaring a pair is one),
+/// there are no results (TFEM_STATUS_INVALID_STATE).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_contact_pair_nodal_pressures(
     model: *mut TfemModel,
@@ -925,11 +929,8 @@ pub unsafe extern "C" fn tfem_get_contact_pair_nodal_pressures(
     length: usize,
 ) -> Status {
     with_model(model, |m| {
-        let p = usize::try_from(pair).map_err(|_| {
-            Error::argument(format!(
-                "contact pair {pair} does not exist (pairs are 0-based)"
-            ))
-        })?;
+        let n = m.model.contact_pairs().len();
+        let p = usize::try_from(pair).map_err(|_| crate::error::no_pair(pair, n))?;
         copy_out(
             &m.model.contact_pair_nodal_pressures(p)?,
             out,
@@ -1187,11 +1188,8 @@ pub unsafe extern "C" fn tfem_set_contact_state(
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_set_friction(model: *mut TfemModel, pair: c_int, mu: f64) -> Status {
     with_model(model, |m| {
-        let p = usize::try_from(pair).map_err(|_| {
-            Error::argument(format!(
-                "contact pair {pair} does not exist (pairs are 0-based)"
-            ))
-        })?;
+        let n = m.model.contact_pairs().len();
+        let p = usize::try_from(pair).map_err(|_| crate::error::no_pair(pair, n))?;
         m.model.set_friction(p, mu)
     })
 }

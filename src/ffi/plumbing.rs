@@ -146,22 +146,10 @@ pub(super) fn slice_in<'a, T>(ptr: *const T, len: usize, what: &str) -> Result<&
     Ok(unsafe { std::slice::from_raw_parts(ptr, len) })
 }
 
-/// An empty vector with room for `n` items, reserved fallibly: the copy of
-/// a caller's array that the memory cannot hold is
-/// TFEM_STATUS_OUT_OF_MEMORY naming the array, where Rust's infallible
-/// allocation would abort the host process.
+/// An empty vector with room for `n` items of the copy of the caller's
+/// array `what`, reserved fallibly (`error::reserved`).
 pub(super) fn reserve<U>(n: usize, what: &str) -> Result<Vec<U>> {
-    let mut v = Vec::new();
-    v.try_reserve_exact(n).map_err(|_| {
-        Error::new(
-            Status::OutOfMemory,
-            format!(
-                "`{what}`: no memory for a copy of {n} items ({} bytes)",
-                n.saturating_mul(std::mem::size_of::<U>())
-            ),
-        )
-    })?;
-    Ok(v)
+    crate::error::reserved(n, &format!("`{what}`"))
 }
 
 /// A caller's array read in items of `chunk` values, each mapped by `f`,

@@ -793,7 +793,9 @@ impl Model {
     }
 
     /// The contact pressure of pair `pair` (0-based) alone at every node of
-    /// the last contact solve (zero off that pair), computed on request:
+    /// the last contact solve (zero off that pair's contact mesh; the first
+    /// node past an end of the other side that falls inside an edge reads
+    /// the other side's pressure near that end), computed on request:
     /// as [`Model::contact_nodal_pressures`] with that pair's forces over
     /// that pair's tributaries only, so that a node where three bodies meet
     /// reads each face on its own (at a block's corner, the bed's pressure
@@ -802,9 +804,7 @@ impl Model {
     pub fn contact_pair_nodal_pressures(&self, pair: usize) -> Result<Vec<f64>> {
         let n = self.contact_pairs().len();
         if pair >= n {
-            return Err(Error::argument(format!(
-                "contact pair {pair} does not exist ({n} declared, 0-based)"
-            )));
+            return Err(crate::error::no_pair(pair, n));
         }
         let elements: Vec<ContactElement> = self
             .contact_elements()?

@@ -505,9 +505,7 @@ impl Problem {
     pub fn set_friction(&mut self, pair: usize, mu: f64) -> Result<()> {
         let n = self.pairs.len();
         let Some(p) = self.pairs.get_mut(pair) else {
-            return Err(Error::argument(format!(
-                "contact pair {pair} does not exist ({n} declared)"
-            )));
+            return Err(crate::error::no_pair(pair, n));
         };
         if !(mu.is_finite() && mu >= 0.0) {
             return Err(Error::argument(format!(
