@@ -81,6 +81,7 @@ use tfem::contact::mesh::Nodes;
 use tfem::contact::traction::max_overlap;
 use tfem::element::{TriGeometry, b_hat};
 use tfem::scenes::hertz::{Hertz, TAG_BLOCK_TOP, TAG_CYLINDER};
+use tfem::scenes::nodes_by_x;
 use tfem::scenes::patch::{PatchTest, TAG_CONTACT_LOWER, TAG_CONTACT_UPPER};
 use tfem::{ContactOptions, Model};
 
@@ -98,17 +99,7 @@ struct WeightedGap {
 
 /// The nodes of the edges tagged `tag`, sorted by x.
 fn side_nodes(model: &Model, tag: i32) -> Vec<usize> {
-    let mesh = model.mesh().expect("mesh");
-    let mut v: Vec<usize> = mesh
-        .boundary_edges()
-        .iter()
-        .filter(|e| e.tag == tag)
-        .flat_map(|e| e.nodes)
-        .collect();
-    v.sort_unstable();
-    v.dedup();
-    v.sort_by(|&a, &b| mesh.nodes()[a][0].total_cmp(&mesh.nodes()[b][0]));
-    v
+    nodes_by_x(model.mesh().expect("mesh"), tag)
 }
 
 /// Solves [a b; c d] [x; y] = r (None when singular).

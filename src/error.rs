@@ -167,7 +167,8 @@ pub(crate) fn reserve_more<T>(v: &mut Vec<T>, n: usize, what: &str) -> Result<()
     v.try_reserve(n).map_err(|_| out_of_memory::<T>(n, what))
 }
 
-fn out_of_memory<T>(n: usize, what: &str) -> Error {
+/// The error for memory for `n` items of `T` of `what` that cannot be had.
+pub(crate) fn out_of_memory<T>(n: usize, what: &str) -> Error {
     Error::new(
         Status::OutOfMemory,
         format!(

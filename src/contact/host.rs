@@ -25,7 +25,7 @@ use std::collections::HashMap;
 use super::mesh::{Nodes, Side, check_facing, checked_triangles, strip};
 use super::set::{ActiveSet, ContactSet, element_laws, softer};
 use super::{ContactElement, ContactOptions};
-use crate::error::{Error, Result, Status, ensure_finite, reserve_more, reserved};
+use crate::error::{Error, Result, ensure_finite, out_of_memory, reserve_more, reserved};
 use crate::fem::material::Material;
 
 /// A pair of sides, with the contact mesh the host may give for it.
@@ -229,14 +229,10 @@ impl HostContact {
         let mut pairs = reserved(edges.len(), &what)?;
         let mut x = reserved(self.x.len() + nodes.len(), &what)?;
         let mut local = HashMap::new();
+        let room = self.local.len() + nodes.len();
         local
-            .try_reserve(self.local.len() + nodes.len())
-            .map_err(|_| {
-                Error::new(
-                    Status::OutOfMemory,
-                    format!("{what}: no memory for its nodes"),
-                )
-            })?;
+            .try_reserve(room)
+            .map_err(|_| out_of_memory::<(i64, usize)>(room, &what))?;
         local.extend(self.local.iter().map(|(&k, &v)| (k, v)));
         for (i, (&id, (&p, eq))) in nodes.iter().zip(xy.iter().zip(equations)).enumerate() {
             // Below the base is no equation: i64::MIN too, without the

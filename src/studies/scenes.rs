@@ -18,6 +18,7 @@ use crate::contact::ContactOptions;
 use crate::error::{Error, Result};
 use crate::fem::element::Tempering;
 use crate::fem::material::{Material, PlaneMode};
+use crate::fem::mesh::Mesh;
 use crate::model::solution::ContactReport;
 use crate::model::{Component, Model};
 
@@ -268,4 +269,20 @@ impl TwoBlocksScene {
             report,
         })
     }
+}
+
+/// The nodes of the boundary edges tagged `tag`, each once, sorted by x
+/// (a side along x: a contact side of the Hertz, Cattaneo or patch scenes).
+pub fn nodes_by_x(mesh: &Mesh, tag: i32) -> Vec<usize> {
+    let mut v: Vec<usize> = mesh
+        .boundary_edges()
+        .iter()
+        .filter(|e| e.tag == tag)
+        .flat_map(|e| e.nodes)
+        .collect();
+    v.sort_unstable();
+    v.dedup();
+    let x = mesh.nodes();
+    v.sort_by(|&a, &b| x[a][0].total_cmp(&x[b][0]));
+    v
 }

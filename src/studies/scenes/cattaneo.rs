@@ -681,18 +681,10 @@ impl CattaneoScene {
             .mesh()
             .ok_or_else(|| Error::state("cattaneo: no mesh"))?;
         let x = mesh.nodes();
-        let side = |tag: i32| {
-            let mut v: Vec<usize> = mesh
-                .boundary_edges()
-                .iter()
-                .filter(|e| e.tag == tag)
-                .flat_map(|e| e.nodes)
-                .collect();
-            v.sort_by(|&a, &b| x[a][0].total_cmp(&x[b][0]));
-            v.dedup();
-            v
-        };
-        let (lower, upper) = (side(TAG_BLOCK_TOP), side(TAG_CYLINDER));
+        let (lower, upper) = (
+            super::nodes_by_x(mesh, TAG_BLOCK_TOP),
+            super::nodes_by_x(mesh, TAG_CYLINDER),
+        );
         let mut pairs = Vec::new();
         for (i, &l) in lower.iter().enumerate() {
             let Some(&u) = upper.iter().find(|&&u| x[u][0] == x[l][0]) else {
