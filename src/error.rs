@@ -37,10 +37,16 @@ pub enum Status {
     NumericalFailure = 11,
     /// An internal error (a caught panic): please report it.
     Internal = 12,
-    /// Memory could not be allocated: for the factorisation, or for the
-    /// library's copy of a caller's array and the first structures built
-    /// from it (the message names them). Other allocations are not checked:
-    /// where they fail, the process aborts.
+    /// Memory could not be allocated (the message names what for): the
+    /// library's copy of a caller's array and the structures a mesh or a
+    /// contact side derives from it; every stage of a solve, a load step
+    /// or a step's recovery, checked before the stage starts (set-up,
+    /// ordering, factorisation, vectors, the threads and their dense
+    /// kernels' buffers). The bounds checked are conservative: a call may
+    /// be refused a little before memory is truly exhausted. Other
+    /// allocations (declarations, results read after a solve, files) are
+    /// small beside these and not checked: where they fail, the process
+    /// aborts.
     OutOfMemory = 13,
     /// A file could not be read or written (the message names it).
     Io = 14,
@@ -165,6 +171,27 @@ pub(crate) fn reserved<T>(n: usize, what: &str) -> Result<Vec<T>> {
 /// Grows `v` fallibly by room for `n` more items (see [`reserved`]).
 pub(crate) fn reserve_more<T>(v: &mut Vec<T>, n: usize, what: &str) -> Result<()> {
     v.try_reserve(n).map_err(|_| out_of_memory::<T>(n, what))
+}
+
+/// Checks that `bytes` more memory can be had now, by reserving them and
+/// giving them back: for a stage whose own allocations are not checked
+/// one by one (they would abort the host when memory runs out), so that it
+/// fails before it starts, with TFEM_STATUS_OUT_OF_MEMORY naming `what`.
+/// Under an address-space limit (`ulimit -v`) the check is exact up to
+/// fragmentation; without one it refuses only what the system would never
+/// grant. `bytes` must bound the stage's peak.
+pub(crate) fn preflight(bytes: usize, what: &str) -> Result<()> {
+    let mut room: Vec<u8> = Vec::new();
+    room.try_reserve_exact(bytes).map_err(|_| {
+        Error::new(
+            Status::OutOfMemory,
+            format!("{what}: no memory for the {bytes} bytes it needs"),
+        )
+    })?;
+    // An allocation nothing reads may be optimised away, and the check
+    // with it (measured: the mesh's check passed under any limit).
+    std::hint::black_box(room.as_mut_ptr());
+    Ok(())
 }
 
 /// The error for memory for `n` items of `T` of `what` that cannot be had.

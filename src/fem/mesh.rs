@@ -12,7 +12,7 @@ use std::collections::{BTreeMap, HashMap, HashSet};
 
 use super::element::TriGeometry;
 use super::orientation::{Turned, orient};
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, preflight};
 
 /// A tagged boundary edge, with the triangle that owns it.
 #[derive(Debug, Clone, PartialEq)]
@@ -55,6 +55,83 @@ fn list<T: std::fmt::Display>(items: &[T]) -> String {
     format!("{}{}", shown.join(", "), more)
 }
 
+/// The checks of [`Mesh::new`] on its raw data, each error naming the node
+/// or triangle in the caller's numbering (`index_base`). Gives whether some
+/// triangle is numbered clockwise (its Jacobian is at hand here).
+fn validate(
+    nodes: &[[f64; 2]],
+    triangles: &[[usize; 3]],
+    body_of: &[i32],
+    index_base: usize,
+) -> Result<bool> {
+    let b = index_base;
+    if nodes.is_empty() {
+        return Err(Error::mesh("empty mesh: no nodes"));
+    }
+    if triangles.is_empty() {
+        return Err(Error::mesh("empty mesh: no triangles"));
+    }
+    if body_of.len() != triangles.len() {
+        return Err(Error::mesh(format!(
+            "{} body tags for {} triangles",
+            body_of.len(),
+            triangles.len()
+        )));
+    }
+    if let Some(i) = nodes
+        .iter()
+        .position(|p| !(p[0].is_finite() && p[1].is_finite()))
+    {
+        return Err(Error::mesh(format!(
+            "node {}: coordinates ({:?}, {:?}) are not finite",
+            i + b,
+            nodes[i][0],
+            nodes[i][1]
+        )));
+    }
+    let n = nodes.len();
+    for (t, tri) in triangles.iter().enumerate() {
+        for &v in tri {
+            if v >= n {
+                return Err(Error::mesh(format!(
+                    "triangle {}: node index {} is out of range ({} nodes, index base {})",
+                    t + b,
+                    v + b,
+                    n,
+                    b
+                )));
+            }
+        }
+        if tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] {
+            return Err(Error::mesh(format!(
+                "triangle {}: node {} is repeated ({}, {}, {})",
+                t + b,
+                if tri[0] == tri[1] || tri[0] == tri[2] {
+                    tri[0] + b
+                } else {
+                    tri[1] + b
+                },
+                tri[0] + b,
+                tri[1] + b,
+                tri[2] + b
+            )));
+        }
+    }
+    let mut any_clockwise = false;
+    for (t, tri) in triangles.iter().enumerate() {
+        let geo = TriGeometry::new(&[nodes[tri[0]], nodes[tri[1]], nodes[tri[2]]]);
+        if !(geo.j.is_finite() && geo.h.is_finite()) {
+            return Err(Error::mesh(format!(
+                "triangle {}: its size or area overflows (coordinates too large for double \
+                 precision: rescale the model)",
+                t + b
+            )));
+        }
+        any_clockwise |= geo.j < 0.0;
+    }
+    Ok(any_clockwise)
+}
+
 impl Mesh {
     /// Validates and builds a mesh from 0-based data. `index_base` (0 or 1)
     /// only changes how indices are printed in messages, so that a Fortran
@@ -65,73 +142,19 @@ impl Mesh {
         mut body_of: Vec<i32>,
         index_base: usize,
     ) -> Result<Mesh> {
-        let b = index_base;
-        if nodes.is_empty() {
-            return Err(Error::mesh("empty mesh: no nodes"));
-        }
-        if triangles.is_empty() {
-            return Err(Error::mesh("empty mesh: no triangles"));
-        }
-        if body_of.len() != triangles.len() {
-            return Err(Error::mesh(format!(
-                "{} body tags for {} triangles",
-                body_of.len(),
-                triangles.len()
-            )));
-        }
-        if let Some(i) = nodes
-            .iter()
-            .position(|p| !(p[0].is_finite() && p[1].is_finite()))
-        {
-            return Err(Error::mesh(format!(
-                "node {}: coordinates ({:?}, {:?}) are not finite",
-                i + b,
-                nodes[i][0],
-                nodes[i][1]
-            )));
-        }
+        let any_clockwise = validate(&nodes, &triangles, &body_of, index_base)?;
         let n = nodes.len();
-        for (t, tri) in triangles.iter().enumerate() {
-            for &v in tri {
-                if v >= n {
-                    return Err(Error::mesh(format!(
-                        "triangle {}: node index {} is out of range ({} nodes, index base {})",
-                        t + b,
-                        v + b,
-                        n,
-                        b
-                    )));
-                }
-            }
-            if tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] {
-                return Err(Error::mesh(format!(
-                    "triangle {}: node {} is repeated ({}, {}, {})",
-                    t + b,
-                    if tri[0] == tri[1] || tri[0] == tri[2] {
-                        tri[0] + b
-                    } else {
-                        tri[1] + b
-                    },
-                    tri[0] + b,
-                    tri[1] + b,
-                    tri[2] + b
-                )));
-            }
-        }
+        // What the mesh derives from its data: each node's body, a sort of
+        // the nodes for duplicates, unused nodes (8 bytes per node each);
+        // the bodies' tags, the Jacobians, the orientation's flags, regions
+        // and edge adjacency (at most 128 bytes per triangle).
+        let need = n
+            .saturating_mul(24)
+            .saturating_add(triangles.len().saturating_mul(128))
+            .saturating_add(1 << 20);
+        preflight(need, "the mesh's derived arrays")?;
         let jacobian =
             |tri: &[usize; 3]| TriGeometry::new(&[nodes[tri[0]], nodes[tri[1]], nodes[tri[2]]]);
-        let mut any_clockwise = false;
-        for (t, tri) in triangles.iter().enumerate() {
-            let geo = jacobian(tri);
-            if !(geo.j.is_finite() && geo.h.is_finite()) {
-                return Err(Error::mesh(format!(
-                    "triangle {}: its size or area overflows (coordinates too large for double \
-                     precision: rescale the model)",
-                    t + b
-                )));
-            }
-            any_clockwise |= geo.j < 0.0;
-        }
         // (No array of Jacobians unless some triangle is clockwise: 17 MB
         // at 1M unknowns, held in the allocator's pool afterwards.)
         let turned = if any_clockwise {

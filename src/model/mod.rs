@@ -370,6 +370,18 @@ impl Model {
         self.in_pool(|m| m.run(None).map(|s| s.info))
     }
 
+    /// Checks, before a solve or a recovery, that the memory it takes
+    /// before its own checks ([`crate::solve::memory`]) can be had, and
+    /// has the threads that will factorise take the dense kernels'
+    /// buffers ([`crate::linalg::workspace`]): TFEM_STATUS_OUT_OF_MEMORY
+    /// otherwise, before anything is touched.
+    fn check_memory(&self) -> Result<()> {
+        crate::linalg::workspace::ensure()?;
+        let n_global = self.problem.mesh_ref()?.nodes().len() * 2;
+        let need = crate::solve::memory::solve_bytes(n_global, 0);
+        crate::error::preflight(need, "the solve's vectors")
+    }
+
     /// Runs `f` in the model's thread pool.
     fn in_pool<R: Send>(&mut self, f: impl FnOnce(&mut Model) -> R + Send) -> R {
         match self.pool.clone() {
@@ -396,6 +408,7 @@ impl Model {
     fn run(&mut self, options: Option<&ContactOptions>) -> Result<&Solution> {
         let t_start = Instant::now();
         self.problem.check_ready(options.is_some())?;
+        self.check_memory()?;
         let mut timings = Timings::default();
         let prescribed = self.problem.prescribed_vector()?;
         let f_ext = self.problem.load_vector()?;
@@ -468,6 +481,7 @@ impl Model {
     fn run_step(&mut self, t: f64, options: &ContactOptions) -> Result<ContactReport> {
         let t_start = Instant::now();
         self.problem.check_ready(true)?;
+        self.check_memory()?;
         let mut timings = Timings::default();
         let prescribed = self.problem.prescribed_vector()?;
         let f_ext = self.problem.load_vector()?;
@@ -613,6 +627,7 @@ impl Model {
             .session
             .as_ref()
             .ok_or_else(|| Error::state("the load step's session is gone"))?;
+        self.check_memory()?;
         let prescribed = self.problem.prescribed_vector()?;
         let f_ext = self.problem.load_vector()?;
         let input = Input {

@@ -19,16 +19,17 @@
 use std::time::Instant;
 
 use super::active_set::{
-    ActiveSetLoop, CondensedState, LoopInput, Outcome as LoopOutcome, Target, body_energy, expand,
+    ActiveSetLoop, CondensedState, LoopInput, Outcome as LoopOutcome, Settled, Target, body_energy,
+    expand,
 };
 use super::condensed::{Condensed, FactorSnapshot};
 use super::linear::{Structure, check_finite, factor_and_solve};
-use super::report::{SolveInfo, Timings};
+use super::report::{IterationRecord, SolveInfo, Timings};
 use super::session::{Session, Wanted, factorisation};
 use super::{Field, Input, Outcome, contact_outcome, contact_set, finite_statistics};
 use crate::contact::{ContactOptions, ContactSet, FrictionState};
 use crate::error::{Error, Result, Status};
-use crate::fem::assembly::NOT_FREE;
+use crate::fem::assembly::{DofMap, NOT_FREE};
 use crate::fem::body;
 use crate::linalg::refine::norm_inf;
 
@@ -113,6 +114,15 @@ pub(crate) struct History {
 impl History {
     fn condensed(&self) -> &CondensedState {
         self.state.as_ref().expect("the condensed state is back")
+    }
+
+    /// K₁'s solution at load factor `t`: t·x_load + x_gap.
+    fn x1_at(&self, t: f64) -> Vec<f64> {
+        let mut x1: Vec<f64> = self.x_load.iter().map(|a| t * a).collect();
+        if !self.x_gap.is_empty() {
+            x1.iter_mut().zip(&self.x_gap).for_each(|(a, b)| *a += b);
+        }
+        x1
     }
 
     /// The contact state to continue from ([`History::set_state`]).
@@ -531,7 +541,7 @@ fn step_in_history(
     (key, options): (Key, &ContactOptions),
     t: f64,
     timings: &mut Timings,
-    mut warnings: Vec<String>,
+    warnings: Vec<String>,
 ) -> std::result::Result<(Outcome, StepState), StepFailure> {
     let mesh = input.elements.mesh();
     let prescribed = scaled(input.prescribed, t);
@@ -551,14 +561,7 @@ fn step_in_history(
     let chol = &mut analysis.as_mut().expect("the history's factor").chol;
     let before = h.step_state();
     let mut condensed = h.state.take().expect("the condensed state is back");
-    condensed.x1 = h.x_load.iter().map(|a| t * a).collect();
-    if !h.x_gap.is_empty() {
-        condensed
-            .x1
-            .iter_mut()
-            .zip(&h.x_gap)
-            .for_each(|(a, b)| *a += b);
-    }
+    condensed.x1 = h.x1_at(t);
     let mut info = SolveInfo {
         unknowns: dofs.n_free(),
         matrix_nnz: pattern.nnz(),
@@ -593,6 +596,14 @@ fn step_in_history(
         (warm, friction),
     )
     .run_to_interface();
+    let step = Step {
+        set: &set,
+        prescribed: &prescribed,
+        dofs,
+        at: (key, t),
+        before,
+        warnings,
+    };
     match run {
         Ok(LoopOutcome::Interface {
             state,
@@ -605,69 +616,17 @@ fn step_in_history(
             info.relative_residual = h.first.relative_residual;
             info.condition_estimate = chol.condition_estimate();
             info.timings = *timings;
-            // Everything that can fail before the history moves on: on
-            // error it is back where it was.
-            let judged = finite_statistics(&info).and_then(|()| {
-                let x1 = &h.condensed().x1;
-                let sys = &h.condensed().system;
-                let value = |g: usize| match dofs.free(g) {
-                    NOT_FREE => prescribed[g],
-                    i => sys.position(i).map_or(x1[i], |p| ui[p]),
-                };
-                let ue_of =
-                    |tri: &[usize; 3]| std::array::from_fn(|a| value(2 * tri[a / 2] + a % 2));
-                contact_outcome(&set, ue_of, (active.clone(), &friction), records, info)
-            });
-            let contact = match judged {
-                Ok(contact) => contact,
-                Err(e) => {
-                    return Err((e, back_to(history, before)));
-                }
-            };
-            h.warm.clone_from(&active);
-            if let Some(f) = contact.friction.as_ref() {
-                h.friction = f.next.clone();
-            }
-            let pending = Pending {
-                key,
-                t,
-                ui,
-                active,
-                friction,
-            };
-            let outcome = Outcome {
-                u: Field::Pending(pending),
-                log: Vec::new(),
-                info,
-                contact: Some(contact),
-                warnings,
-            };
-            Ok((outcome, before))
+            on_interface(history, step, (ui, active, friction, records), info)
         }
         Ok(LoopOutcome::Full(settled)) => {
             // The condensed system was singular: solved whole, K₁ is gone
             // (rebuilt by the caller if this step fails after all).
-            let kept = h.kept(before.clone());
+            let kept = h.kept(step.before.clone());
             *history = None;
-            let lost = |e| (e, Some(kept.clone()));
             info.relative_residual = system.relative_residual(pattern, &settled.x);
             info.condition_estimate = chol.condition_estimate();
             info.timings = *timings;
-            finite_statistics(&info).map_err(lost)?;
-            super::diagnostics::conditioning_warning(&info, &mut warnings);
-            let u = dofs.expand(&settled.x, &prescribed);
-            let ue_of = |tri: &[usize; 3]| crate::fem::element_loop::element_values(&u, tri);
-            let verdict = (settled.active, &settled.friction[..]);
-            let contact =
-                contact_outcome(&set, ue_of, verdict, settled.history, info).map_err(lost)?;
-            let outcome = Outcome {
-                u: Field::Global(u),
-                log: Vec::new(),
-                info,
-                contact: Some(contact),
-                warnings,
-            };
-            Ok((outcome, before))
+            on_full_solve(step, *settled, info).map_err(|e| (e, Some(kept)))
         }
         Err(failed) => {
             let (e, state) = *failed;
@@ -675,17 +634,99 @@ fn step_in_history(
                 Some(mut state) => {
                     state.x1 = Vec::new();
                     h.state = Some(state);
-                    Err((e, back_to(history, before)))
+                    Err((e, back_to(history, step.before)))
                 }
                 // The loop refactorised: K₁ is gone; the caller rebuilds it.
                 None => {
-                    let kept = h.kept(before);
+                    let kept = h.kept(step.before);
                     *history = None;
                     Err((e, Some(kept)))
                 }
             }
         }
     }
+}
+
+/// A step being judged: what its loop solved with, and the history's state
+/// before it (to go back to on error).
+struct Step<'a, 's> {
+    set: &'a ContactSet<'s>,
+    prescribed: &'a [f64],
+    dofs: &'a DofMap,
+    /// The history's key and the step's load factor.
+    at: (Key, f64),
+    before: StepState,
+    warnings: Vec<String>,
+}
+
+/// The outcome of a step whose loop settled on the interface (values `ui`
+/// with the final set, friction loads and records): its field stays
+/// pending. Everything that can fail comes before the history moves on, so
+/// that on error it is back where it was.
+fn on_interface(
+    history: &mut Option<History>,
+    step: Step<'_, '_>,
+    (ui, active, friction, records): (Vec<f64>, Vec<bool>, Vec<f64>, Vec<IterationRecord>),
+    info: SolveInfo,
+) -> std::result::Result<(Outcome, StepState), StepFailure> {
+    let h = history.as_mut().expect("a history");
+    let judged = finite_statistics(&info).and_then(|()| {
+        let x1 = &h.condensed().x1;
+        let sys = &h.condensed().system;
+        let value = |g: usize| match step.dofs.free(g) {
+            NOT_FREE => step.prescribed[g],
+            i => sys.position(i).map_or(x1[i], |p| ui[p]),
+        };
+        let ue_of = |tri: &[usize; 3]| std::array::from_fn(|a| value(2 * tri[a / 2] + a % 2));
+        contact_outcome(step.set, ue_of, (active.clone(), &friction), records, info)
+    });
+    let contact = match judged {
+        Ok(contact) => contact,
+        Err(e) => return Err((e, back_to(history, step.before))),
+    };
+    h.warm.clone_from(&active);
+    if let Some(f) = contact.friction.as_ref() {
+        h.friction = f.next.clone();
+    }
+    let (key, t) = step.at;
+    let pending = Pending {
+        key,
+        t,
+        ui,
+        active,
+        friction,
+    };
+    let outcome = Outcome {
+        u: Field::Pending(pending),
+        log: Vec::new(),
+        info,
+        contact: Some(contact),
+        warnings: step.warnings,
+    };
+    Ok((outcome, step.before))
+}
+
+/// The outcome of a step whose loop ended with a full solve (`settled`,
+/// the history already dropped): its whole field at once.
+fn on_full_solve(
+    mut step: Step<'_, '_>,
+    settled: Settled,
+    info: SolveInfo,
+) -> Result<(Outcome, StepState)> {
+    finite_statistics(&info)?;
+    super::diagnostics::conditioning_warning(&info, &mut step.warnings);
+    let u = step.dofs.expand(&settled.x, step.prescribed);
+    let ue_of = |tri: &[usize; 3]| crate::fem::element_loop::element_values(&u, tri);
+    let verdict = (settled.active, &settled.friction[..]);
+    let contact = contact_outcome(step.set, ue_of, verdict, settled.history, info)?;
+    let outcome = Outcome {
+        u: Field::Global(u),
+        log: Vec::new(),
+        info,
+        contact: Some(contact),
+        warnings: step.warnings,
+    };
+    Ok((outcome, step.before))
 }
 
 /// Puts the history back in `before` after a failed step; if even that
@@ -723,10 +764,7 @@ pub(crate) fn recover(session: &Session, input: &Input<'_>, pending: &Pending) -
     } = session;
     let set = contact_set(input, &prescribed, contact, dofs, &h.key.options, &[])?;
     let chol = &analysis.as_ref().ok_or_else(stale)?.chol;
-    let mut x1: Vec<f64> = h.x_load.iter().map(|a| t * a).collect();
-    if !h.x_gap.is_empty() {
-        x1.iter_mut().zip(&h.x_gap).for_each(|(a, b)| *a += b);
-    }
+    let x1 = h.x1_at(t);
     // The step's system: the assembled one (of whatever set it holds) plus
     // the contact elements that differ, and its right-hand side at t.
     let active = &pending.active;

@@ -13,6 +13,7 @@ pub mod condensed;
 pub(crate) mod diagnostics;
 pub(crate) mod history;
 pub(crate) mod linear;
+pub(crate) mod memory;
 pub mod report;
 pub(crate) mod session;
 pub mod system;

@@ -8,10 +8,11 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 
+use super::memory;
 use super::report::{SolveInfo, Timings};
 use super::system::{AssembledSystem, SystemMatrix};
 use crate::contact::{self, ContactElement, ContactPair};
-use crate::error::Result;
+use crate::error::{Result, preflight};
 use crate::fem::assembly::{DofMap, Pattern, Slots};
 use crate::fem::body::{Softened, Target};
 use crate::fem::element_loop::ElementLoop;
@@ -97,9 +98,11 @@ impl Session {
         pairs: &[ContactPair],
     ) -> Result<Session> {
         let n_nodes = mesh.nodes().len();
+        let contact = contact::build_all(mesh, pairs)?;
+        let need = memory::session_bytes(n_nodes, mesh.triangles().len(), contact.len());
+        preflight(need, "the solve's set-up (unknowns and matrix pattern)")?;
         let used = mesh.node_body();
         let dofs = DofMap::new(n_nodes, 2, |g| used[g / 2].is_some() && !is_prescribed(g));
-        let contact = contact::build_all(mesh, pairs)?;
         let mut elements: Vec<[usize; 3]> = mesh.triangles().to_vec();
         elements.extend(contact.iter().map(|e| e.nodes));
         let pattern = Pattern::build(&dofs, n_nodes, &elements);
@@ -191,6 +194,8 @@ pub(crate) fn factorisation<'a>(
         let last = want.last;
         // Drop the old factor first: two at once may not fit in memory.
         *analysis = None;
+        let need = memory::analysis_bytes(pattern.n(), pattern.nnz());
+        preflight(need, "the symbolic analysis (ordering)")?;
         // The unknowns' coordinates are only needed here (17 MB at 1M
         // unknowns), so they are not kept.
         let coords: Vec<[f64; 2]> = dofs
@@ -214,6 +219,10 @@ pub(crate) fn factorisation<'a>(
         });
         timings.analysis += t0.elapsed().as_secs_f64();
     }
+    // What the solve takes besides the factor, now that it holds its
+    // memory (with the interface condensed, its dense matrices too).
+    let need = memory::solve_bytes(mesh.nodes().len() * 2, want.last.len());
+    preflight(need, "the solve's vectors and interface matrices")?;
     let chol = &mut analysis.as_mut().expect("just analysed").chol;
     info.factor_nnz = chol.factor_nnz();
     info.factorization_bytes = chol.factorization_bytes();
