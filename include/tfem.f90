@@ -178,9 +178,13 @@ module tfem
   integer(c_int), parameter :: TFEM_STATUS_NUMERICAL_FAILURE = 11
   !> An internal error (a caught panic): please report it.
   integer(c_int), parameter :: TFEM_STATUS_INTERNAL = 12
-  !> Memory could not be allocated: for the factorisation, or for the library's copy of a caller's
-  !! array and the first structures built from it (the message names them). Other allocations are
-  !! not checked: where they fail, the process aborts.
+  !> Memory could not be allocated (the message names what for): the library's copy of a caller's
+  !! array and the structures a mesh or a contact side derives from it; every stage of a solve, a
+  !! load step or a step's recovery, checked before the stage starts (set-up, ordering,
+  !! factorisation, vectors, the threads and their dense kernels' buffers). The bounds checked are
+  !! conservative: a call may be refused a little before memory is truly exhausted. Other
+  !! allocations (declarations, results read after a solve, files) are small beside these and not
+  !! checked: where they fail, the process aborts.
   integer(c_int), parameter :: TFEM_STATUS_OUT_OF_MEMORY = 13
   !> A file could not be read or written (the message names it).
   integer(c_int), parameter :: TFEM_STATUS_IO = 14

@@ -114,10 +114,16 @@ typedef enum tfem_status {
    */
   TFEM_STATUS_INTERNAL = 12,
   /**
-   * Memory could not be allocated: for the factorisation, or for the
-   * library's copy of a caller's array and the first structures built
-   * from it (the message names them). Other allocations are not checked:
-   * where they fail, the process aborts.
+   * Memory could not be allocated (the message names what for): the
+   * library's copy of a caller's array and the structures a mesh or a
+   * contact side derives from it; every stage of a solve, a load step
+   * or a step's recovery, checked before the stage starts (set-up,
+   * ordering, factorisation, vectors, the threads and their dense
+   * kernels' buffers). The bounds checked are conservative: a call may
+   * be refused a little before memory is truly exhausted. Other
+   * allocations (declarations, results read after a solve, files) are
+   * small beside these and not checked: where they fail, the process
+   * aborts.
    */
   TFEM_STATUS_OUT_OF_MEMORY = 13,
   /**
@@ -237,6 +243,12 @@ typedef enum tfem_component {
    */
   TFEM_COMPONENT_Y = 1,
 } tfem_component;
+
+/**
+ * How long a refinement goes on: at most `steps` corrections, each of
+ * which must shrink the residual by `contraction` at least.
+ */
+typedef struct Budget Budget;
 
 /**
  * Opaque handle to a contact context for a host code. Create with

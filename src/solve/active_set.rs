@@ -24,7 +24,7 @@ use crate::error::{Error, Result};
 use crate::fem::assembly::{DofMap, NOT_FREE};
 use crate::fem::element_loop::ElementLoop;
 use crate::linalg::Cholesky;
-use crate::linalg::refine::{norm_inf, refine, refine_by};
+use crate::linalg::refine::{Budget, norm_inf, refine, refine_by};
 
 /// What the loop works with, borrowed from the session and the problem.
 pub(crate) struct LoopInput<'a, 's> {
@@ -211,6 +211,15 @@ impl Anderson {
 /// slip load at h = 1/256 (seed scene, μ = 1), so 1e-11 never settled
 /// there; 1e-9 keeps a margin of 30.
 const FRICTION_TOL: f64 = 1e-9;
+
+/// The backward error a field recovered from the condensed interface must
+/// be refined to, or the loop finishes with a full solve instead: a
+/// contact force is a penalty stiffness times an opening a millionth of the
+/// displacements, and at 1e-8 (measured: Hertz with the cylinder mesh 10×
+/// finer, h = a/32, after three corrections) the forces read from the
+/// field were wrong by five times the peak pressure; at 1e-12, by 1e-4 of
+/// it.
+pub(crate) const RECOVERED: f64 = 1e-12;
 
 /// Passes that bring a condensed solve's slip loads to its recovered field
 /// before the loop goes on with full solves instead.
@@ -516,12 +525,13 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         }
     }
 
-    /// [`ActiveSetLoop::recover`], or the loop back (`Err`) when the slip
-    /// loads of a condensed iterate disagree with the pressures of the
-    /// recovered field by more than [`FRICTION_TOL`]: the interface solve
-    /// lost that much to round-off (measured: 0.7 % on a model with a DOF
-    /// prescribed at 1e30). The loop then goes on with full solves of the
-    /// assembled system, which holds the final set.
+    /// [`ActiveSetLoop::recover`], or the loop back (`Err`) when the field
+    /// recovered from a condensed iterate is not refined below
+    /// [`RECOVERED`], or its slip loads disagree with its pressures by more
+    /// than [`FRICTION_TOL`]: the interface solve lost that much to
+    /// round-off (measured: 0.7 % on a model with a DOF prescribed at
+    /// 1e30). The loop then goes on with full solves of the assembled
+    /// system, which holds the final set.
     #[allow(clippy::type_complexity)]
     fn recover_or_go_on(mut self) -> Result<std::result::Result<Settled, Box<Self>>> {
         let condensed_bytes = self
@@ -536,8 +546,8 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             Iterate::Full(x) => x,
             Iterate::Reference => self.refine_reference(&context)?,
             Iterate::Condensed(ui) => {
-                let x = self.expand_condensed(ui, &context)?;
-                if !self.slip_loads_hold(&x) {
+                let (x, omega) = self.expand_condensed(ui, &context)?;
+                if omega.is_nan() || omega > RECOVERED || !self.slip_loads_hold(&x) {
                     self.coupled = false;
                     return Ok(Err(Box::new(self)));
                 }
@@ -599,8 +609,9 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         Ok(x)
     }
 
-    /// The last iterate is condensed: recovers the whole field.
-    fn expand_condensed(&mut self, ui: Vec<f64>, context: &str) -> Result<Vec<f64>> {
+    /// The last iterate is condensed: recovers the whole field, with its
+    /// backward error.
+    fn expand_condensed(&mut self, ui: Vec<f64>, context: &str) -> Result<(Vec<f64>, f64)> {
         let CondensedState {
             system,
             x1,
@@ -628,7 +639,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             rhs,
             friction: (&self.friction, &friction_ref),
         };
-        let mut x = expand(target, self.chol, (&system, &reference), x1, ui)?;
+        let (mut x, mut omega) = expand(target, self.chol, (&system, &reference), x1, ui)?;
         // The slip loads came from the interface solve; the refined field's
         // pressures differ by its round-off (measured 1e-10 to 5e-9 of the
         // largest slip load from 67k to 1M unknowns, seed scene, μ = 0.3):
@@ -650,11 +661,11 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
                 rhs,
                 friction: (&self.friction, &friction_ref),
             };
-            refine_expanded(target, self.chol, (&system, &reference), &mut x)?;
+            omega = refine_expanded(target, self.chol, (&system, &reference), &mut x)?;
         }
         self.timings.solve += t0.elapsed().as_secs_f64();
         check_finite(self.input.at, &x, context)?;
-        Ok(x)
+        Ok((x, omega))
     }
 }
 
@@ -812,15 +823,16 @@ pub(crate) struct Target<'t, 's> {
 /// Recovers the whole field from the interface values `ui` of the final
 /// set, u = x₁ + K₁⁻¹ P(Δg + ΔC u_I) — ΔC and Δg the changes of the
 /// contact elements' matrices and loads relative to K₁'s set — refined
-/// against the final matrix itself. One sparse solve (and one per
-/// refinement step, normally none).
+/// against the final matrix itself, with its backward error
+/// ([`refine_expanded`]). One sparse solve (and two per refinement step,
+/// normally none).
 pub(crate) fn expand(
     target: Target<'_, '_>,
     chol: &Cholesky,
     (sys, reference): (&Condensed, &[bool]),
     x1: Vec<f64>,
     ui: Vec<f64>,
-) -> Result<Vec<f64>> {
+) -> Result<(Vec<f64>, f64)> {
     let changes = Changes::of(&target, reference);
     let mut x = changes.product(&|j| ui[interface_position(sys, j)], true);
     // Near the solve's memory peak: free the vectors done with.
@@ -828,19 +840,20 @@ pub(crate) fn expand(
     chol.solve(&mut x)?;
     x.iter_mut().zip(&x1).for_each(|(a, b)| *a += b);
     drop(x1);
-    refine_expanded(target, chol, (sys, reference), &mut x)?;
-    Ok(x)
+    let omega = refine_expanded(target, chol, (sys, reference), &mut x)?;
+    Ok((x, omega))
 }
 
 /// Refines a field `x` of the final set against its matrix and right-hand
 /// side (`target`), each correction solved through the condensed system
-/// like [`expand`].
+/// like [`expand`], which is only an approximate inverse of the final
+/// matrix ([`Budget::APPROXIMATE`]); gives the backward error reached.
 pub(crate) fn refine_expanded(
     target: Target<'_, '_>,
     chol: &Cholesky,
     (sys, reference): (&Condensed, &[bool]),
     x: &mut [f64],
-) -> Result<()> {
+) -> Result<f64> {
     let changes = Changes::of(&target, reference);
     let mut solve = |r: &mut [f64]| -> Result<()> {
         // K δ = r: y = K₁⁻¹r, S δ_I = S₁ y_I, δ = y + K₁⁻¹PΔC δ_I.
@@ -852,7 +865,14 @@ pub(crate) fn refine_expanded(
         Ok(())
     };
     let k_norm = (target.k_norm)();
-    refine_by(target.product, k_norm, target.rhs, x, &mut solve)
+    refine_by(
+        target.product,
+        k_norm,
+        target.rhs,
+        x,
+        &mut solve,
+        Budget::APPROXIMATE,
+    )
 }
 
 /// The contact elements whose state differs between K₁ (the initial set)

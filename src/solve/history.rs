@@ -19,8 +19,8 @@
 use std::time::Instant;
 
 use super::active_set::{
-    ActiveSetLoop, CondensedState, LoopInput, Outcome as LoopOutcome, Settled, Target, body_energy,
-    expand,
+    ActiveSetLoop, CondensedState, LoopInput, Outcome as LoopOutcome, RECOVERED, Settled, Target,
+    body_energy, expand,
 };
 use super::condensed::{Condensed, FactorSnapshot};
 use super::linear::{Structure, check_finite, factor_and_solve};
@@ -812,7 +812,18 @@ pub(crate) fn recover(session: &Session, input: &Input<'_>, pending: &Pending) -
         friction: (&pending.friction, &[]),
     };
     let state = (&h.condensed().system, &h.condensed().reference[..]);
-    let x = expand(target, chol, state, x1, pending.ui.clone())?;
-    check_finite(at, &x, &format!(" (load step at factor {t:?})"))?;
+    let (x, omega) = expand(target, chol, state, x1, pending.ui.clone())?;
+    let context = format!(" (load step at factor {t:?})");
+    check_finite(at, &x, &context)?;
+    if omega.is_nan() || omega > RECOVERED {
+        return Err(Error::new(
+            Status::NumericalFailure,
+            format!(
+                "the field could not be recovered from the condensed interface to working \
+                 accuracy (backward error {omega:.1e}, above {RECOVERED:.0e}){context}: solve \
+                 with refactorize set"
+            ),
+        ));
+    }
     Ok(dofs.expand(&x, &prescribed))
 }

@@ -17,11 +17,8 @@ const WORD: usize = 8;
 /// The room a stage gets beyond its arrays: the allocator's fragmentation
 /// and the small allocations nobody counts.
 fn with_margin(words: usize) -> usize {
-    words
-        .saturating_mul(WORD)
-        .saturating_mul(5)
-        .saturating_div(4)
-        .saturating_add(1 << 20)
+    let bytes = words.saturating_mul(WORD);
+    bytes.saturating_add(bytes / 4).saturating_add(1 << 20)
 }
 
 /// An upper bound of the stored entries of the stiffness matrix's upper
