@@ -778,9 +778,12 @@ enum tfem_status tfem_get_contact_forces(struct tfem_model *model, double *out, 
  * read from both sides of the interface (the mean of a node's normal
  * contact force over its tributary — half its interface edges, as far as
  * they face the other side — and the other side's forces over their
- * tributaries near it). Exact for a uniform pressure on matching and
- * non-matching interfaces alike. Each pair is read with its own forces; a
- * node on several pairs (where three bodies meet) gets their normal
+ * tributaries near it); where the other side is more than 1.5 times
+ * coarser, a node takes the other side's reading there, interpolated
+ * (the coarser side's reading is the closer to the traction). Exact for a
+ * uniform pressure on matching and non-matching interfaces alike. Each
+ * pair is read with its own forces; a node on several pairs (where three
+ * bodies meet) gets their normal
  * forces over their tributaries together: the pressure where two pairs
  * continue one face, the tributary-weighted mean of its faces' pressures
  * at a corner.
