@@ -71,6 +71,7 @@ use tfem::contact::mesh::Nodes;
 use tfem::contact::traction::{NodalPressure, interface_pressures, nodal_pressures};
 use tfem::scenes::hertz::{Hertz, HertzResult, TAG_BLOCK_TOP, TAG_CYLINDER};
 use tfem::scenes::nodes_by_x;
+use tfem::verification::body_forces;
 use tfem::{ContactOptions, Mesh, Model};
 
 /// One side of the interface: its nodes sorted by x, their x and the
@@ -205,25 +206,7 @@ fn readings(model: &Model, block: &Side, cylinder: &Side) -> Readings {
     // bodies' own (tempered) elements at the interface nodes, where no
     // other load acts. Equal in exact arithmetic, but the strip's K_e u_e
     // is κ (huge) times overlaps of ~1e-10 and can lose every digit.
-    let u = model.displacements().expect("u");
-    let mut fbody = vec![[0.0; 2]; x.len()];
-    let body = model.problem().elements().expect("elements");
-    body.for_each(|el| {
-        let ke = body.stiffness(el)?;
-        for a in 0..6 {
-            fbody[el.nodes[a / 2]][a % 2] += (0..6)
-                .map(|b| ke[6 * a + b] * u[el.nodes[b / 2]][b % 2])
-                .sum::<f64>();
-        }
-        Ok(())
-    })
-    .expect("body forces");
-    // Less the supports' reactions (the axis nodes' u_x = 0): what remains
-    // at an interface node is the contact force alone.
-    for (fb, r) in fbody.iter_mut().zip(model.reactions().expect("reactions")) {
-        fb[0] -= r[0];
-        fb[1] -= r[1];
-    }
+    let fbody = body_forces(model).expect("body forces");
     // Equilibrium at the interface nodes: K u of the bodies = the contact
     // force there; how far apart the two readings are, over the largest.
     let fmax = f.iter().fold(0.0f64, |m, v| m.max(v[1].abs()));

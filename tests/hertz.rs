@@ -9,7 +9,7 @@
 
 use tfem::ContactOptions;
 use tfem::scenes::hertz::{Hertz, HertzResult};
-use tfem::verification::fitted_rate;
+use tfem::verification::{body_forces, fitted_rate};
 
 fn run(base: Hertz, levels: &[f64]) -> Vec<HertzResult> {
     levels
@@ -225,7 +225,10 @@ fn the_finer_side_reads_the_coarser_sides_traction_as_closely_as_a_mortar() {
     let mortar = [1.92e-2, 1.42e-2, 8.72e-3];
     for ((k, r), m) in levels.iter().zip(&rs).zip(mortar) {
         let both = r.inner_error(&r.interface_pressure);
-        assert!(both < 1.15 * m, "a/{k}: {both:.3e} against the mortar's {m:.3e}");
+        assert!(
+            both < 1.15 * m,
+            "a/{k}: {both:.3e} against the mortar's {m:.3e}"
+        );
     }
 }
 
@@ -252,31 +255,11 @@ fn on_matching_meshes_both_sides_read_the_same_traction() {
 }
 
 /// The largest |K u − f_contact| over the nodes of B, over the largest
-/// contact force: the bodies' own elements' forces at the interface nodes
-/// (less the supports' reactions; no other load acts there) against the
-/// contact forces read from the strip. Equal in exact arithmetic; the
-/// strip's forces are a penalty stiffness times openings a millionth of
-/// the displacements, so they are the first to show a field not solved to
-/// working accuracy.
+/// contact force: the bodies' own forces at the interface nodes
+/// ([`body_forces`]) against the contact forces read from the strip.
 fn interface_imbalance(model: &tfem::Model) -> f64 {
-    let u = model.displacements().unwrap();
     let f = model.contact_forces().unwrap();
-    let mut fbody = vec![[0.0f64; 2]; u.len()];
-    let body = model.problem().elements().unwrap();
-    body.for_each(|el| {
-        let ke = body.stiffness(el)?;
-        for a in 0..6 {
-            fbody[el.nodes[a / 2]][a % 2] += (0..6)
-                .map(|b| ke[6 * a + b] * u[el.nodes[b / 2]][b % 2])
-                .sum::<f64>();
-        }
-        Ok(())
-    })
-    .unwrap();
-    for (fb, r) in fbody.iter_mut().zip(model.reactions().unwrap()) {
-        fb[0] -= r[0];
-        fb[1] -= r[1];
-    }
+    let fbody = body_forces(model).unwrap();
     let fmax = f
         .iter()
         .fold(0.0f64, |m, v| m.max(v[0].abs().max(v[1].abs())));
