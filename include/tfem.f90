@@ -174,7 +174,9 @@ module tfem
   integer(c_int), parameter :: TFEM_STATUS_DEGENERATE_ELEMENT = 9
   !> A contact pair or contact mesh is invalid (the message names it).
   integer(c_int), parameter :: TFEM_STATUS_INVALID_CONTACT = 10
-  !> A computed result is not finite (overflow); nothing was returned.
+  !> A computed result is not finite (overflow), or a load step's field, recovered when first read,
+  !! could not be refined to working accuracy (the message says which; solve with
+  !! `tfem_solve_contact` instead of load steps there); nothing was returned.
   integer(c_int), parameter :: TFEM_STATUS_NUMERICAL_FAILURE = 11
   !> An internal error (a caught panic): please report it.
   integer(c_int), parameter :: TFEM_STATUS_INTERNAL = 12
@@ -979,13 +981,14 @@ module tfem
     !! on request: the traction read from both sides of the interface (the mean of a node's normal
     !! contact force over its tributary — half its interface edges, as far as they face the other
     !! side — and the other side's forces over their tributaries near it); where the other side is
-    !! more than 1.5 times coarser, a node takes the other side's reading there, interpolated (the
-    !! coarser side's reading is the closer to the traction). Exact for a uniform pressure on
-    !! matching and non-matching interfaces alike. Each pair is read with its own forces; a node on
-    !! several pairs (where three bodies meet) gets their normal forces over their tributaries
-    !! together: the pressure where two pairs continue one face, the tributary-weighted mean of its
-    !! faces' pressures at a corner. Fortran: `length` takes an integer(c_size_t) or a default
-    !! integer (kind tfem_length_kind); a negative length is passed as 0.
+    !! more than 1.8 times coarser, a node takes the other side's reading there, interpolated (the
+    !! coarser side's reading is the closer to the traction), blended with its own from 1.2 times.
+    !! Exact for a uniform pressure on matching and non-matching interfaces alike. Each pair is read
+    !! with its own forces; a node on several pairs (where three bodies meet) gets their normal
+    !! forces over their tributaries together: the pressure where two pairs continue one face, the
+    !! tributary-weighted mean of its faces' pressures at a corner. Fortran: `length` takes an
+    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
+    !! as 0.
     function tfem_get_contact_nodal_pressures(model, out, length) &
         bind(C, name="tfem_get_contact_nodal_pressures") result(status)
       import

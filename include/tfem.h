@@ -106,7 +106,10 @@ typedef enum tfem_status {
    */
   TFEM_STATUS_INVALID_CONTACT = 10,
   /**
-   * A computed result is not finite (overflow); nothing was returned.
+   * A computed result is not finite (overflow), or a load step's field,
+   * recovered when first read, could not be refined to working accuracy
+   * (the message says which; solve with `tfem_solve_contact` instead of
+   * load steps there); nothing was returned.
    */
   TFEM_STATUS_NUMERICAL_FAILURE = 11,
   /**
@@ -243,12 +246,6 @@ typedef enum tfem_component {
    */
   TFEM_COMPONENT_Y = 1,
 } tfem_component;
-
-/**
- * How long a refinement goes on: at most `steps` corrections, each of
- * which must shrink the residual by `contraction` at least.
- */
-typedef struct Budget Budget;
 
 /**
  * Opaque handle to a contact context for a host code. Create with
@@ -778,9 +775,10 @@ enum tfem_status tfem_get_contact_forces(struct tfem_model *model, double *out, 
  * read from both sides of the interface (the mean of a node's normal
  * contact force over its tributary — half its interface edges, as far as
  * they face the other side — and the other side's forces over their
- * tributaries near it); where the other side is more than 1.5 times
+ * tributaries near it); where the other side is more than 1.8 times
  * coarser, a node takes the other side's reading there, interpolated
- * (the coarser side's reading is the closer to the traction). Exact for a
+ * (the coarser side's reading is the closer to the traction), blended
+ * with its own from 1.2 times. Exact for a
  * uniform pressure on matching and non-matching interfaces alike. Each
  * pair is read with its own forces; a node on several pairs (where three
  * bodies meet) gets their normal

@@ -348,8 +348,8 @@ fn facing_edges(
 /// w_ij = φ_j(x_i) + φ_i(x_j) — interpolated where that side is coarser,
 /// averaged over the node's support where it is finer (docs/method.md
 /// §6.11, "Pressure as a traction", (6.12)); then a node of a side more
-/// than 1.5× finer than the edge it faces takes that edge's values,
-/// interpolated ((6.13)). One value per point of a matching interface. A
+/// than 1.8× finer than the edge it faces takes that edge's values,
+/// interpolated, blended with its own from 1.2× ((6.13)). One value per point of a matching interface. A
 /// uniform traction is read exactly, as by [`nodal_pressures`]; on a
 /// curved non-matching interface the two sides' own readings err at the
 /// scale of the meshes with opposite signs, and this one is 3–6× closer
@@ -418,15 +418,17 @@ fn both_sides(
     from_the_coarser_side(nodes, elements, &facing, read)
 }
 
-/// How much longer the other side's edge must be than a node's own edges
-/// for the node to take the other side's reading: clearly coarser, so that
-/// nearly matching (jittered) meshes keep reading both sides alike.
-const COARSER: f64 = 1.5;
+/// From how much longer the other side's edge than a node's own edges
+/// the node starts to take the other side's reading, and from how much it
+/// takes it alone ([`from_the_coarser_side`]): a blend in between, so that
+/// no mesh ratio (2:3 is 1.5, a jittered one anything near) flips the
+/// reading node by node; nearly matching meshes read both sides alike.
+const COARSER: (f64, f64) = (1.2, 1.8);
 
 /// The both-sides reading `read`, with each node whose facing edge of the
-/// other side is more than [`COARSER`] times as long as its own edges
-/// given that edge's reading instead, interpolated at the node's
-/// projection. Where one side is coarser, its (6.12) averages the finer
+/// other side is r times as long as its own edges given that edge's
+/// reading instead, interpolated at the node's projection, for r ≥ 1.8
+/// ([`COARSER`]); blended linearly with its own from r = 1.2. Where one side is coarser, its (6.12) averages the finer
 /// side's lumps over its support and is as close to the traction as a
 /// mortar's (Hertz, cylinder 2.5× coarser, a/64: 9.6e-3 of p₀ within 0.8a,
 /// the mortar prototype 8.7e-3), while the finer side's reads them (1.9e-2):
@@ -456,10 +458,11 @@ fn from_the_coarser_side(
             let Some(&(sum, n)) = own.get(&q.node) else {
                 return *q;
             };
-            let other = (x[r][0] - x[p][0]).hypot(x[r][1] - x[p][1]);
+            let ratio = (x[r][0] - x[p][0]).hypot(x[r][1] - x[p][1]) / (sum / n as f64);
+            let w = ((ratio - COARSER.0) / (COARSER.1 - COARSER.0)).clamp(0.0, 1.0);
             match (value.get(&p), value.get(&r)) {
-                (Some(vp), Some(vr)) if other > COARSER * sum / n as f64 => NodalPressure {
-                    pressure: (1.0 - t) * vp + t * vr,
+                (Some(vp), Some(vr)) if w > 0.0 => NodalPressure {
+                    pressure: (1.0 - w) * q.pressure + w * ((1.0 - t) * vp + t * vr),
                     ..*q
                 },
                 _ => *q,

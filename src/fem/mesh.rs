@@ -146,11 +146,13 @@ impl Mesh {
         let n = nodes.len();
         // What the mesh derives from its data: each node's body, a sort of
         // the nodes for duplicates, unused nodes (8 bytes per node each);
-        // the bodies' tags, the Jacobians, the orientation's flags, regions
-        // and edge adjacency (at most 128 bytes per triangle).
+        // the bodies' tags; with a clockwise triangle, the Jacobians and the
+        // orientation's edge list (three 32-byte entries per triangle) and
+        // neighbour lists (about 80 bytes per triangle).
+        let per_triangle = if any_clockwise { 256 } else { 64 };
         let need = n
             .saturating_mul(24)
-            .saturating_add(triangles.len().saturating_mul(128))
+            .saturating_add(triangles.len().saturating_mul(per_triangle))
             .saturating_add(1 << 20);
         preflight(need, "the mesh's derived arrays")?;
         let jacobian =

@@ -890,9 +890,10 @@ pub unsafe extern "C" fn tfem_get_contact_forces(
 /// read from both sides of the interface (the mean of a node's normal
 /// contact force over its tributary — half its interface edges, as far as
 /// they face the other side — and the other side's forces over their
-/// tributaries near it); where the other side is more than 1.5 times
+/// tributaries near it); where the other side is more than 1.8 times
 /// coarser, a node takes the other side's reading there, interpolated
-/// (the coarser side's reading is the closer to the traction). Exact for a
+/// (the coarser side's reading is the closer to the traction), blended
+/// with its own from 1.2 times. Exact for a
 /// uniform pressure on matching and non-matching interfaces alike. Each
 /// pair is read with its own forces; a node on several pairs (where three
 /// bodies meet) gets their normal

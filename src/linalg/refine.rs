@@ -89,8 +89,8 @@ fn inf(v: &[f64]) -> f64 {
 
 /// [`refine`] with K given by its product y = K v and its ‖K‖∞ (which only
 /// the stopping test reads), within `budget`. Gives the backward error of
-/// the refined x (NaN for a non-finite residual, which the finiteness
-/// check reports).
+/// the refined x (0 for a zero residual; NaN for a non-finite one, which
+/// the finiteness check reports).
 pub fn refine_by(
     product: &dyn Fn(&[f64], &mut [f64]),
     k_norm: f64,
@@ -107,6 +107,11 @@ pub fn refine_by(
         product(x, &mut r);
         r.iter_mut().zip(rhs).for_each(|(k, b)| *k = b - *k);
         let rn = inf(&r);
+        if rn == 0.0 {
+            // Solved exactly (a zero field for a zero right-hand side too,
+            // where the ratio below would be 0/0).
+            return Ok(0.0);
+        }
         let omega = rn / (k_norm * inf(x) + f_norm);
         if rn.is_nan() || omega.is_nan() {
             return Ok(f64::NAN);

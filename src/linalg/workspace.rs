@@ -29,18 +29,24 @@ thread_local! {
 /// stacked ones.
 const FALLBACK_CACHE: usize = 64 << 20;
 
-/// An upper bound of one thread's packing buffer: twice the largest cache
-/// the system lists, plus a page-rounding margin.
+/// An upper bound of one thread's packing buffer: private-gemm takes twice
+/// the largest of its last-level cache share, four times its L2 and 1 MiB;
+/// bounded here by twice the largest of the caches the system lists (four
+/// times for a second-level one), plus a page-rounding margin.
 pub fn buffer_bound() -> usize {
-    2 * largest_cache().unwrap_or(FALLBACK_CACHE) + (1 << 20)
+    2 * largest_cache().unwrap_or(FALLBACK_CACHE).max(1 << 20) + (1 << 20)
 }
 
-/// The largest cache of CPU 0 in Linux's sysfs (sizes like "32768K").
+/// The largest cache of CPU 0 in Linux's sysfs (sizes like "32768K"), an
+/// L2 counted four times.
 fn largest_cache() -> Option<usize> {
     let dir = std::fs::read_dir("/sys/devices/system/cpu/cpu0/cache").ok()?;
     dir.filter_map(|e| e.ok())
-        .filter_map(|e| std::fs::read_to_string(e.path().join("size")).ok())
-        .filter_map(|s| parse_size(s.trim()))
+        .filter_map(|e| {
+            let size = parse_size(std::fs::read_to_string(e.path().join("size")).ok()?.trim())?;
+            let level = std::fs::read_to_string(e.path().join("level")).ok()?;
+            Some(if level.trim() == "2" { 4 * size } else { size })
+        })
         .max()
 }
 
@@ -73,7 +79,7 @@ pub fn ensure() -> Result<()> {
         // cannot be started then leave it unusable for good (every later
         // parallel call panics), so their stacks are checked first.
         preflight(
-            global_pool_threads().saturating_mul(THREAD_BOUND),
+            global_pool_threads().saturating_mul(thread_bound()),
             "the global thread pool's threads",
         )?;
     }
@@ -101,9 +107,15 @@ pub fn ensure() -> Result<()> {
 /// pool running.
 static GLOBAL_POOL_STARTED: AtomicBool = AtomicBool::new(false);
 
-/// An upper bound of what one pool thread takes: Rust's default stack
-/// (2 MiB), its guard page and rayon's per-thread state.
-const THREAD_BOUND: usize = 3 << 20;
+/// An upper bound of what one pool thread takes: its stack (Rust's default
+/// 2 MiB, or `RUST_MIN_STACK`), its guard page and rayon's per-thread state.
+fn thread_bound() -> usize {
+    let stack = std::env::var("RUST_MIN_STACK")
+        .ok()
+        .and_then(|v| v.parse::<usize>().ok())
+        .unwrap_or(2 << 20);
+    stack.saturating_add(1 << 20)
+}
 
 /// The threads rayon's global pool starts with: `RAYON_NUM_THREADS` when
 /// set to a positive count, else the available parallelism.

@@ -370,16 +370,18 @@ impl Model {
         self.in_pool(|m| m.run(None).map(|s| s.info))
     }
 
-    /// Checks, before a solve or a recovery, that the memory it takes
-    /// before its own checks ([`crate::solve::memory`]) can be had, and
+    /// Checks, before a solve, a load step or a recovery, that the memory
+    /// it takes besides the stages that check their own (the vectors, and
+    /// the dense work on `n_interface` condensed unknowns of a history that
+    /// goes on; [`crate::solve::memory`]) can be had, and
     /// has the threads that will factorise take the dense kernels'
     /// buffers ([`crate::linalg::workspace`]): TFEM_STATUS_OUT_OF_MEMORY
     /// otherwise, before anything is touched.
-    fn check_memory(&self) -> Result<()> {
+    fn check_memory(&self, n_interface: usize) -> Result<()> {
         crate::linalg::workspace::ensure()?;
         let n_global = self.problem.mesh_ref()?.nodes().len() * 2;
-        let need = crate::solve::memory::solve_bytes(n_global, 0);
-        crate::error::preflight(need, "the solve's vectors")
+        let need = crate::solve::memory::solve_bytes(n_global, n_interface);
+        crate::error::preflight(need, "the solve's vectors and interface matrices")
     }
 
     /// Runs `f` in the model's thread pool.
@@ -408,7 +410,7 @@ impl Model {
     fn run(&mut self, options: Option<&ContactOptions>) -> Result<&Solution> {
         let t_start = Instant::now();
         self.problem.check_ready(options.is_some())?;
-        self.check_memory()?;
+        self.check_memory(0)?;
         let mut timings = Timings::default();
         let prescribed = self.problem.prescribed_vector()?;
         let f_ext = self.problem.load_vector()?;
@@ -421,10 +423,12 @@ impl Model {
             settings: self.settings,
         };
         // A solve ends a load history: a step's field waiting for recovery
-        // is recovered first (the results of a failed solve stay).
+        // is recovered first (the results of a failed solve stay). A field
+        // that cannot be recovered does not stop the solve, which replaces
+        // it.
         if let Some(s) = self.solution.as_ref().filter(|s| s.pending.is_some()) {
             if s.revision == self.problem.revision() {
-                self.field()?;
+                let _ = self.field();
             }
         }
         let session = session_of(&mut self.session, &self.problem, &mut timings)?;
@@ -481,7 +485,7 @@ impl Model {
     fn run_step(&mut self, t: f64, options: &ContactOptions) -> Result<ContactReport> {
         let t_start = Instant::now();
         self.problem.check_ready(true)?;
-        self.check_memory()?;
+        self.check_memory(self.session.as_ref().map_or(0, |s| s.interface_len()))?;
         let mut timings = Timings::default();
         let prescribed = self.problem.prescribed_vector()?;
         let f_ext = self.problem.load_vector()?;
@@ -627,18 +631,26 @@ impl Model {
             .session
             .as_ref()
             .ok_or_else(|| Error::state("the load step's session is gone"))?;
-        self.check_memory()?;
-        let prescribed = self.problem.prescribed_vector()?;
-        let f_ext = self.problem.load_vector()?;
-        let input = Input {
-            elements: self.problem.elements()?,
-            pairs: self.problem.contact_pairs(),
-            prescribed: &prescribed,
-            f_ext: &f_ext,
-            lambda: self.problem.tempering_lambda(),
-            settings: self.settings,
+        // On the model's threads, like the step itself (a host that asked
+        // for one thread gets no other).
+        let recover = || -> Result<Vec<f64>> {
+            self.check_memory(session.interface_len())?;
+            let prescribed = self.problem.prescribed_vector()?;
+            let f_ext = self.problem.load_vector()?;
+            let input = Input {
+                elements: self.problem.elements()?,
+                pairs: self.problem.contact_pairs(),
+                prescribed: &prescribed,
+                f_ext: &f_ext,
+                lambda: self.problem.tempering_lambda(),
+                settings: self.settings,
+            };
+            history::recover(session, &input, pending)
         };
-        let u = history::recover(session, &input, pending)?;
+        let u = match &self.pool {
+            Some(pool) => pool.install(recover)?,
+            None => recover()?,
+        };
         let _ = solution.u.set(u);
         Ok(solution.u.get().expect("just set"))
     }

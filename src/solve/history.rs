@@ -116,6 +116,11 @@ impl History {
         self.state.as_ref().expect("the condensed state is back")
     }
 
+    /// The condensed unknowns (0 while its state is out).
+    pub fn interface_len(&self) -> usize {
+        self.state.as_ref().map_or(0, |c| c.system.len())
+    }
+
     /// K₁'s solution at load factor `t`: t·x_load + x_gap.
     fn x1_at(&self, t: f64) -> Vec<f64> {
         let mut x1: Vec<f64> = self.x_load.iter().map(|a| t * a).collect();
@@ -821,7 +826,7 @@ pub(crate) fn recover(session: &Session, input: &Input<'_>, pending: &Pending) -
             format!(
                 "the field could not be recovered from the condensed interface to working \
                  accuracy (backward error {omega:.1e}, above {RECOVERED:.0e}){context}: solve \
-                 with refactorize set"
+                 this problem with solve_contact instead of load steps"
             ),
         ));
     }

@@ -127,6 +127,11 @@ impl Session {
         self.structure
     }
 
+    /// The condensed unknowns of its load history (0 without one).
+    pub fn interface_len(&self) -> usize {
+        self.history.as_ref().map_or(0, |h| h.interface_len())
+    }
+
     /// Assembles the bodies' part into the system (no contact element in)
     /// for the global vectors (external forces, prescribed values) `loads`.
     /// Returns the elements tempering softens.
