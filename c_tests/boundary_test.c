@@ -1198,15 +1198,26 @@ static int same(const double *u, const double *u_ref, int n) {
  * take their dense kernels' buffers, so that the cap bites on the solve's
  * own stages. */
 static int solve_under_cap(double mib, const char *mode) {
-  int step = strcmp(mode, "step") == 0, mesh = strcmp(mode, "mesh") == 0;
-  int cold = strcmp(mode, "cold") == 0;
+  int step = strcmp(mode, "step") == 0, clockwise = strcmp(mode, "clockwise") == 0;
+  int mesh = clockwise || strcmp(mode, "mesh") == 0;
+  int cold = strcmp(mode, "cold") == 0, split = strcmp(mode, "split") == 0;
   blocks_t g;
   tfem_model *ref = tfem_create(), *m = tfem_create();
+  /* "split": 2 x 110^2 cells (49k unknowns), so that with two threads or
+   * more the factorisation is split into two concurrent subtrees. */
   /* The mesh's copy and its own arrays must outgrow the allocator's
    * slack to be capped: a larger mesh there, and no model set before. */
-  if (!blocks_of(mesh ? 100 : 30, &g) || !ref || !m ||
+  if (!blocks_of(mesh ? 100 : split ? 110 : 30, &g) || !ref || !m ||
       (!mesh && (!pressed(ref, &g) || !pressed(m, &g))))
     return 2;
+  /* "clockwise": the upper block's triangles numbered clockwise, which the
+   * mesh turns (its orientation pass takes the most memory per triangle). */
+  for (int t = 0; clockwise && t < g.nt; ++t)
+    if (g.body[t] == 2) {
+      int keep = g.tri[3 * t + 1];
+      g.tri[3 * t + 1] = g.tri[3 * t + 2];
+      g.tri[3 * t + 2] = keep;
+    }
   int nn = 2 * g.nn, nt = g.nt;
   double *u_ref = malloc(sizeof(double) * nn), *u = malloc(sizeof(double) * nn);
   double *s = malloc(sizeof(double) * 3 * nt), *p = malloc(sizeof(double) * g.nn);
@@ -1293,11 +1304,13 @@ static void a_solve_under_any_memory_limit_fails_cleanly_or_succeeds(void) {
 #else
   /* "cold": no solve before, so that the threads take their dense
    * kernels' buffers (64 MiB each here, with an allocator arena each) in
-   * the capped solve: larger steps. */
-  const char *modes[4] = {"mesh", "solve", "step", "cold"};
-  for (int k = 0; k < 4; ++k) {
+   * the capped solve: larger steps. "split": 49k unknowns, whose
+   * factorisation is split into two concurrent subtrees on two threads or
+   * more: 0.1 MiB steps. */
+  const char *modes[6] = {"mesh", "clockwise", "solve", "step", "split", "cold"};
+  for (int k = 0; k < 6; ++k) {
     int tried = 0, refused = 0, solved = 0, bad = 0;
-    double by = k == 3 ? 2.0 : 0.05;
+    double by = k == 5 ? 2.0 : k == 4 ? 0.1 : 0.05;
     for (double mib = 0.0; mib < 2048.0 && !solved && !bad; mib += by) {
       char cap[32];
       snprintf(cap, sizeof cap, "%.2f", mib);
