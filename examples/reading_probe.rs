@@ -71,7 +71,7 @@ use tfem::contact::mesh::Nodes;
 use tfem::contact::traction::{NodalPressure, interface_pressures, nodal_pressures};
 use tfem::scenes::hertz::{Hertz, HertzResult, TAG_BLOCK_TOP, TAG_CYLINDER};
 use tfem::scenes::nodes_by_x;
-use tfem::verification::body_forces;
+use tfem::verification::{body_forces, contact_imbalance};
 use tfem::{ContactOptions, Mesh, Model};
 
 /// One side of the interface: its nodes sorted by x, their x and the
@@ -209,19 +209,9 @@ fn readings(model: &Model, block: &Side, cylinder: &Side) -> Readings {
     let fbody = body_forces(model).expect("body forces");
     // Equilibrium at the interface nodes: K u of the bodies = the contact
     // force there; how far apart the two readings are, over the largest.
-    let fmax = f.iter().fold(0.0f64, |m, v| m.max(v[1].abs()));
-    let off = elements
-        .iter()
-        .flat_map(|el| el.nodes)
-        .map(|v| {
-            (fbody[v][1] - f[v][1])
-                .abs()
-                .max((fbody[v][0] - f[v][0]).abs())
-        })
-        .fold(0.0f64, f64::max);
     eprintln!(
         "  largest |K u − contact force| at a node of B: {:.2e} of the largest contact force",
-        off / fmax
+        contact_imbalance(model).expect("imbalance")
     );
     let own_body = map(nodal_pressures(nodes, elements, |_, v| fbody[v]));
     let both_body = map(interface_pressures(nodes, elements, |_, v| fbody[v]));

@@ -9,7 +9,7 @@
 
 use tfem::ContactOptions;
 use tfem::scenes::hertz::{Hertz, HertzResult};
-use tfem::verification::{body_forces, fitted_rate};
+use tfem::verification::{contact_imbalance, fitted_rate};
 
 fn run(base: Hertz, levels: &[f64]) -> Vec<HertzResult> {
     levels
@@ -254,29 +254,6 @@ fn on_matching_meshes_both_sides_read_the_same_traction() {
     assert!(compared > 10, "{compared} nodes in contact");
 }
 
-/// The largest |K u − f_contact| over the nodes of B, over the largest
-/// contact force: the bodies' own forces at the interface nodes
-/// ([`body_forces`]) against the contact forces read from the strip.
-fn interface_imbalance(model: &tfem::Model) -> f64 {
-    let f = model.contact_forces().unwrap();
-    let fbody = body_forces(model).unwrap();
-    let fmax = f
-        .iter()
-        .fold(0.0f64, |m, v| m.max(v[0].abs().max(v[1].abs())));
-    let off = model
-        .contact_elements()
-        .unwrap()
-        .iter()
-        .flat_map(|el| el.nodes)
-        .map(|v| {
-            (fbody[v][0] - f[v][0])
-                .abs()
-                .max((fbody[v][1] - f[v][1]).abs())
-        })
-        .fold(0.0f64, f64::max);
-    off / fmax
-}
-
 #[test]
 fn the_contact_forces_balance_the_bodies_where_the_condensed_solve_loses_digits() {
     // The cylinder's mesh 10× finer than the block's at h = a/32 (589k
@@ -293,7 +270,7 @@ fn the_contact_forces_balance_the_bodies_where_the_condensed_solve_loses_digits(
     };
     let mut s = hz.build().unwrap();
     let r = s.solve(&hz, &ContactOptions::default()).unwrap();
-    let imbalance = interface_imbalance(&s.model);
+    let imbalance = contact_imbalance(&s.model).unwrap();
     assert!(imbalance < 1e-4, "imbalance {imbalance:.2e}");
     let inner = r.inner_error(&r.interface_pressure);
     assert!(inner < 1e-2, "both-sides reading off by {inner:.2e} of p0");

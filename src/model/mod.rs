@@ -414,14 +414,7 @@ impl Model {
         let mut timings = Timings::default();
         let prescribed = self.problem.prescribed_vector()?;
         let f_ext = self.problem.load_vector()?;
-        let input = Input {
-            elements: self.problem.elements()?,
-            pairs: self.problem.contact_pairs(),
-            prescribed: &prescribed,
-            f_ext: &f_ext,
-            lambda: self.problem.tempering_lambda(),
-            settings: self.settings,
-        };
+        let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
         // A solve ends a load history: a step's field waiting for recovery
         // is recovered first (the results of a failed solve stay). A field
         // that cannot be recovered does not stop the solve, which replaces
@@ -489,14 +482,7 @@ impl Model {
         let mut timings = Timings::default();
         let prescribed = self.problem.prescribed_vector()?;
         let f_ext = self.problem.load_vector()?;
-        let input = Input {
-            elements: self.problem.elements()?,
-            pairs: self.problem.contact_pairs(),
-            prescribed: &prescribed,
-            f_ext: &f_ext,
-            lambda: self.problem.tempering_lambda(),
-            settings: self.settings,
-        };
+        let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
         let stiffness = self.problem.stiffness();
         // A step that starts a new history ends the old one: a step's field
         // waiting for recovery is recovered first.
@@ -637,14 +623,7 @@ impl Model {
             self.check_memory(session.interface_len())?;
             let prescribed = self.problem.prescribed_vector()?;
             let f_ext = self.problem.load_vector()?;
-            let input = Input {
-                elements: self.problem.elements()?,
-                pairs: self.problem.contact_pairs(),
-                prescribed: &prescribed,
-                f_ext: &f_ext,
-                lambda: self.problem.tempering_lambda(),
-                settings: self.settings,
-            };
+            let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
             history::recover(session, &input, pending)
         };
         let u = match &self.pool {
@@ -895,6 +874,24 @@ fn keep_matrix(
             session.set_system_of(Some(revision));
         }
     }
+}
+
+/// What a solve reads of `problem` with `settings`, and its global vectors
+/// of prescribed displacements and external forces.
+fn input_of<'a>(
+    problem: &'a Problem,
+    settings: Settings,
+    prescribed: &'a [f64],
+    f_ext: &'a [f64],
+) -> Result<Input<'a>> {
+    Ok(Input {
+        elements: problem.elements()?,
+        pairs: problem.contact_pairs(),
+        prescribed,
+        f_ext,
+        lambda: problem.tempering_lambda(),
+        settings,
+    })
 }
 
 /// The session of the problem's structure in `slot`, built (and timed as

@@ -47,6 +47,29 @@ pub fn body_forces(model: &Model) -> Result<Vec<[f64; 2]>> {
     Ok(f)
 }
 
+/// The largest |K u − f_contact| over the nodes of the contact elements,
+/// over the largest contact force component: the bodies' own forces
+/// ([`body_forces`]) against the contact forces read from B, which a field
+/// solved to working accuracy makes equal.
+pub fn contact_imbalance(model: &Model) -> Result<f64> {
+    let f = model.contact_forces()?;
+    let fbody = body_forces(model)?;
+    let fmax = f
+        .iter()
+        .fold(0.0f64, |m, v| m.max(v[0].abs().max(v[1].abs())));
+    let off = model
+        .contact_elements()?
+        .iter()
+        .flat_map(|el| el.nodes)
+        .map(|v| {
+            (fbody[v][0] - f[v][0])
+                .abs()
+                .max((fbody[v][1] - f[v][1]).abs())
+        })
+        .fold(0.0f64, f64::max);
+    Ok(off / fmax)
+}
+
 /// Consistent nodal forces ∫ b φ_i of a body-force field over the mesh
 /// (flat and inverted triangles carry no area).
 pub fn nodal_loads(mesh: &Mesh, body_force: impl Fn([f64; 2]) -> [f64; 2]) -> Vec<[f64; 2]> {
