@@ -174,9 +174,8 @@ module tfem
   integer(c_int), parameter :: TFEM_STATUS_DEGENERATE_ELEMENT = 9
   !> A contact pair or contact mesh is invalid (the message names it).
   integer(c_int), parameter :: TFEM_STATUS_INVALID_CONTACT = 10
-  !> A computed result is not finite (overflow), or a load step's field, recovered when first read,
-  !! could not be refined to working accuracy (the message says which; solve with
-  !! `tfem_solve_contact` instead of load steps there); nothing was returned.
+  !> A computed result is not finite (overflow), or a solve could not reach working accuracy even
+  !! with a factorisation of its own matrix (the message says which); nothing was returned.
   integer(c_int), parameter :: TFEM_STATUS_NUMERICAL_FAILURE = 11
   !> An internal error (a caught panic): please report it.
   integer(c_int), parameter :: TFEM_STATUS_INTERNAL = 12

@@ -106,10 +106,9 @@ typedef enum tfem_status {
    */
   TFEM_STATUS_INVALID_CONTACT = 10,
   /**
-   * A computed result is not finite (overflow), or a load step's field,
-   * recovered when first read, could not be refined to working accuracy
-   * (the message says which; solve with `tfem_solve_contact` instead of
-   * load steps there); nothing was returned.
+   * A computed result is not finite (overflow), or a solve could not
+   * reach working accuracy even with a factorisation of its own matrix
+   * (the message says which); nothing was returned.
    */
   TFEM_STATUS_NUMERICAL_FAILURE = 11,
   /**

@@ -33,10 +33,9 @@ pub enum Status {
     DegenerateElement = 9,
     /// A contact pair or contact mesh is invalid (the message names it).
     InvalidContact = 10,
-    /// A computed result is not finite (overflow), or a load step's field,
-    /// recovered when first read, could not be refined to working accuracy
-    /// (the message says which; solve with `tfem_solve_contact` instead of
-    /// load steps there); nothing was returned.
+    /// A computed result is not finite (overflow), or a solve could not
+    /// reach working accuracy even with a factorisation of its own matrix
+    /// (the message says which); nothing was returned.
     NumericalFailure = 11,
     /// An internal error (a caught panic): please report it.
     Internal = 12,

@@ -213,7 +213,8 @@ impl Anderson {
 const FRICTION_TOL: f64 = 1e-9;
 
 /// The backward error a field recovered from the condensed interface must
-/// be refined to, or the loop finishes with a full solve instead: a
+/// be refined to, or the loop finishes with a full solve instead (and a
+/// load step's field is solved by a factorisation of its own matrix): a
 /// contact force is a penalty stiffness times an opening a millionth of the
 /// displacements, and at 1e-8 (measured: Hertz with the cylinder mesh 10×
 /// finer, h = a/32, after three corrections) the forces read from the

@@ -49,6 +49,13 @@ pub(crate) struct Analysis {
     pub chol: Cholesky,
 }
 
+impl Analysis {
+    /// The settings it was made with.
+    pub fn settings(&self) -> Settings {
+        self.settings
+    }
+}
+
 /// What a solve asks of the analysis. An analysis is reused only when it
 /// was made for exactly this request and the same settings, so that a
 /// solve's result never depends on the solves before it (a refactorising
@@ -179,6 +186,32 @@ fn triangle_slots(mesh: &Mesh, dofs: &DofMap, pattern: &Pattern) -> Vec<Slots> {
     slots
 }
 
+/// A new symbolic analysis of `pattern` as `want` asks with `settings`,
+/// once the memory it takes is checked.
+pub(crate) fn analyse(
+    (mesh, dofs, pattern): (&Mesh, &DofMap, &Pattern),
+    settings: Settings,
+    want: Wanted<'_>,
+) -> Result<Cholesky> {
+    let need = memory::analysis_bytes(pattern.n(), pattern.nnz());
+    preflight(need, "the symbolic analysis (ordering)")?;
+    // The unknowns' coordinates are only needed here (17 MB at 1M
+    // unknowns), so they are not kept.
+    let coords: Vec<[f64; 2]> = dofs
+        .free_to_global()
+        .iter()
+        .map(|&g| mesh.nodes()[g / 2])
+        .collect();
+    let params = AnalyseParams {
+        ordering: settings.ordering,
+        coords: Some(&coords),
+        last: want.last,
+        zeros: want.zeros,
+        parallel_subtrees: settings.parallel_subtrees,
+    };
+    Cholesky::analyse(pattern, &params)
+}
+
 /// The factorisation of `analysis`, analysed as `want` asks with
 /// `settings`: the existing one while it fits, else a new symbolic
 /// analysis (timed). Fills the factor's sizes into `info`.
@@ -199,23 +232,7 @@ pub(crate) fn factorisation<'a>(
         let last = want.last;
         // Drop the old factor first: two at once may not fit in memory.
         *analysis = None;
-        let need = memory::analysis_bytes(pattern.n(), pattern.nnz());
-        preflight(need, "the symbolic analysis (ordering)")?;
-        // The unknowns' coordinates are only needed here (17 MB at 1M
-        // unknowns), so they are not kept.
-        let coords: Vec<[f64; 2]> = dofs
-            .free_to_global()
-            .iter()
-            .map(|&g| mesh.nodes()[g / 2])
-            .collect();
-        let params = AnalyseParams {
-            ordering: settings.ordering,
-            coords: Some(&coords),
-            last,
-            zeros: want.zeros,
-            parallel_subtrees: settings.parallel_subtrees,
-        };
-        let chol = Cholesky::analyse(pattern, &params)?;
+        let chol = analyse((mesh, dofs, pattern), settings, want)?;
         *analysis = Some(Analysis {
             last: last.to_vec(),
             zeros: want.zeros.to_vec(),
