@@ -28,12 +28,14 @@ use super::condensed::{Condensed, FactorSnapshot};
 use super::diagnostics::singular_error;
 use super::linear::{Structure, check_finite, factor_and_solve};
 use super::report::{IterationRecord, SolveInfo, Timings};
-use super::session::{Session, Settings, Wanted, analyse, factorisation};
+use super::session::{Analysis, Session, Settings, Wanted, analyse, factorisation};
+use super::system::AssembledSystem;
 use super::{Field, Input, Outcome, contact_outcome, contact_set, finite_statistics};
 use crate::contact::{ContactOptions, ContactSet, FrictionState};
 use crate::error::{Error, Result, Status, reserved};
 use crate::fem::assembly::{DofMap, NOT_FREE};
 use crate::fem::body;
+use crate::linalg::Cholesky;
 use crate::linalg::refine::{Budget, norm_inf, refine_by};
 
 /// What a history is valid for: the problem's stiffness epoch and the
@@ -373,13 +375,7 @@ fn begin(
     timings: &mut Timings,
     warnings: &mut Vec<String>,
 ) -> Result<History> {
-    session.set_system_of(None);
-    let t0 = Instant::now();
-    let softened = session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
-    timings.assembly += t0.elapsed().as_secs_f64();
-    super::softening_warning(input.elements.mesh(), softened, input.lambda, warnings);
-    let rhs_body = session.system.rhs().to_vec();
-    let mesh = input.elements.mesh();
+    let rhs_body = assemble_bodies(session, input, timings, warnings)?;
     let Session {
         dofs,
         pattern,
@@ -390,58 +386,16 @@ fn begin(
     } = &mut *session;
     let set = contact_set(input, input.prescribed, contact, dofs, &key.options, &[])?;
     let interface = set.interface_unknowns();
-    if key.options.refactorize || !Condensed::worthwhile(interface.len(), pattern.nnz()) {
-        return Err(Error::new(
-            Status::InvalidArgument,
-            format!(
-                "a load history condenses the contact interface: {} interface unknowns are too \
-                 many for it (or `refactorize` is set); solve each step with solve_contact",
-                interface.len()
-            ),
-        ));
-    }
-    let zeros = set.structural_zeros(pattern, system.values());
-    let want = Wanted {
-        last: &interface,
-        zeros: &zeros,
-    };
-    let mut info = SolveInfo::default();
-    let chol = factorisation(
-        analysis,
-        (mesh, dofs, pattern),
-        input.settings,
-        want,
-        timings,
-        &mut info,
-    )?;
-    let reference = set.initial_active();
-    let t0 = Instant::now();
-    system.set_contact(&reference, &set, (dofs, pattern), input.prescribed);
-    timings.assembly += t0.elapsed().as_secs_f64();
+    check_condensable(&key.options, interface.len(), pattern.nnz())?;
     let at = Structure {
-        mesh,
+        mesh: input.elements.mesh(),
         dofs,
         pattern,
     };
-    let energy = |r: &[f64]| body_energy(&input.elements, r);
-    let context = " (the first load step)";
-    let x = factor_and_solve(at, chol, system, &energy, true, context, timings, &mut info)?;
-    info.relative_residual = system.relative_residual(pattern, &x);
-    info.condition_estimate = chol.condition_estimate();
-    finite_statistics(&info)?;
-    // The gap part of K₁'s contact loads, solved apart: it does not scale.
-    let gap = gap_loads(&set, &reference, dofs.n_free());
-    let (x_load, x_gap) = match gap.iter().any(|&g| g != 0.0) {
-        false => (x, Vec::new()),
-        true => {
-            let mut x_gap = gap.clone();
-            chol.solve(&mut x_gap)?;
-            let mut x_load = system.rhs().to_vec();
-            x_load.iter_mut().zip(&gap).for_each(|(a, g)| *a -= g);
-            chol.solve(&mut x_load)?;
-            (x_load, x_gap)
-        }
-    };
+    let reference = set.initial_active();
+    let k1 = (&set, &interface[..], &reference[..]);
+    let (chol, x, mut info) = solve_k1(analysis, at, system, input, k1, timings)?;
+    let (x_load, x_gap) = split_gap(chol, system, (&set, &reference), x)?;
     let t0 = Instant::now();
     let condensed = Condensed::new(chol, interface)?;
     timings.interface += t0.elapsed().as_secs_f64();
@@ -466,6 +420,101 @@ fn begin(
         first: info,
         loads_apart: false,
     })
+}
+
+/// Assembles the bodies' part at factor 1 into the session's system, which
+/// then holds no solve's final matrix, and warns of the elements tempering
+/// softens. Gives the bodies' right-hand side.
+fn assemble_bodies(
+    session: &mut Session,
+    input: &Input<'_>,
+    timings: &mut Timings,
+    warnings: &mut Vec<String>,
+) -> Result<Vec<f64>> {
+    session.set_system_of(None);
+    let t0 = Instant::now();
+    let softened = session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
+    timings.assembly += t0.elapsed().as_secs_f64();
+    super::softening_warning(input.elements.mesh(), softened, input.lambda, warnings);
+    Ok(session.system.rhs().to_vec())
+}
+
+/// Refuses a history that could not condense its interface: one of
+/// `interface` unknowns not worth condensing beside a matrix of `nnz`
+/// values, or `options` that ask for refactorisation.
+fn check_condensable(options: &ContactOptions, interface: usize, nnz: usize) -> Result<()> {
+    if options.refactorize || !Condensed::worthwhile(interface, nnz) {
+        return Err(Error::new(
+            Status::InvalidArgument,
+            format!(
+                "a load history condenses the contact interface: {} interface unknowns are too \
+                 many for it (or `refactorize` is set); solve each step with solve_contact",
+                interface
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// K₁ — the bodies `system` holds plus the elements of `reference` in
+/// `set` — factorised with the `interface` unknowns numbered last, and
+/// solved at factor 1 (refined). Gives the factor, the solution and the
+/// solve's statistics.
+fn solve_k1<'a>(
+    analysis: &'a mut Option<Analysis>,
+    at: Structure<'_>,
+    system: &mut AssembledSystem,
+    input: &Input<'_>,
+    (set, interface, reference): (&ContactSet<'_>, &[usize], &[bool]),
+    timings: &mut Timings,
+) -> Result<(&'a mut Cholesky, Vec<f64>, SolveInfo)> {
+    // The zeros are the bodies' alone: no contact element is in yet.
+    let zeros = set.structural_zeros(at.pattern, system.values());
+    let want = Wanted {
+        last: interface,
+        zeros: &zeros,
+    };
+    let mut info = SolveInfo::default();
+    let chol = factorisation(
+        analysis,
+        (at.mesh, at.dofs, at.pattern),
+        input.settings,
+        want,
+        timings,
+        &mut info,
+    )?;
+    let t0 = Instant::now();
+    system.set_contact(reference, set, (at.dofs, at.pattern), input.prescribed);
+    timings.assembly += t0.elapsed().as_secs_f64();
+    let energy = |r: &[f64]| body_energy(&input.elements, r);
+    let context = " (the first load step)";
+    let x = factor_and_solve(at, chol, system, &energy, true, context, timings, &mut info)?;
+    info.relative_residual = system.relative_residual(at.pattern, &x);
+    info.condition_estimate = chol.condition_estimate();
+    finite_statistics(&info)?;
+    Ok((chol, x, info))
+}
+
+/// K₁'s solution `x` at factor 1 split into x_load and x_gap (module
+/// documentation): the gap part of the contact loads of `reference` does
+/// not scale with the load factor, so it is solved apart. Without gap
+/// loads, x is x_load and x_gap is empty.
+fn split_gap(
+    chol: &Cholesky,
+    system: &AssembledSystem,
+    (set, reference): (&ContactSet<'_>, &[bool]),
+    x: Vec<f64>,
+) -> Result<(Vec<f64>, Vec<f64>)> {
+    let gap = gap_loads(set, reference, x.len());
+    if gap.iter().all(|&g| g == 0.0) {
+        return Ok((x, Vec::new()));
+    }
+    let mut x_gap = gap.clone();
+    chol.solve(&mut x_gap)?;
+    let mut x_load = system.rhs().to_vec();
+    x_load.iter_mut().zip(&gap).for_each(|(a, g)| *a -= g);
+    chol.solve(&mut x_load)?;
+    Ok((x_load, x_gap))
 }
 
 /// The gap loads f0 of the elements of `active`, over the unknowns.
