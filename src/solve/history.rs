@@ -33,7 +33,7 @@ use super::system::AssembledSystem;
 use super::{Field, Input, Outcome, contact_outcome, contact_set, finite_statistics};
 use crate::contact::{ContactOptions, ContactSet, FrictionState};
 use crate::error::{Error, Result, Status, reserved};
-use crate::fem::assembly::{DofMap, NOT_FREE};
+use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
 use crate::fem::body;
 use crate::linalg::Cholesky;
 use crate::linalg::refine::{Budget, norm_inf, refine_by};
@@ -824,42 +824,10 @@ pub(crate) fn recover(session: &Session, input: &Input<'_>, pending: &Pending) -
     let set = contact_set(input, &prescribed, contact, dofs, &h.key.options, &[])?;
     let chol = &analysis.as_ref().ok_or_else(stale)?.chol;
     let x1 = h.x1_at(t);
-    // The step's system: the assembled one (of whatever set it holds) plus
-    // the contact elements that differ, and its right-hand side at t.
     let active = &pending.active;
-    let held = system.contact();
-    let mut rhs: Vec<f64> = h.rhs_body.iter().map(|a| t * a).collect();
-    for k in (0..set.parts()).filter(|&k| active[k]) {
-        for (q, e) in set.unknowns(k).iter().enumerate() {
-            if let Some(i) = e {
-                rhs[*i] += set.load(k)[q];
-            }
-        }
-    }
-    set.add_friction_loads(&pending.friction, &[], |i, v| rhs[i] += v);
-    let values = system.values();
-    // The contact elements whose state differs from the assembled system's,
-    // with the sign that brings them to the step's set.
-    let changed: Vec<(usize, f64)> = (0..set.parts())
-        .filter(|&k| active[k] != held.get(k).copied().unwrap_or(false))
-        .map(|k| (k, if active[k] { 1.0 } else { -1.0 }))
-        .collect();
-    let product = |v: &[f64], y: &mut [f64]| {
-        pattern.sym_mul(values, v, y);
-        for &(k, sign) in &changed {
-            let (eq, ke) = (set.unknowns(k), &set.stiffness(k).k);
-            for a in 0..6 {
-                let Some(i) = eq[a] else { continue };
-                let mut acc = 0.0;
-                for b in 0..6 {
-                    if let Some(j) = eq[b] {
-                        acc += ke[6 * a + b] * v[j];
-                    }
-                }
-                y[i] += sign * acc;
-            }
-        }
-    };
+    let rhs = step_rhs(&set, &h.rhs_body, pending);
+    let matrix = StepMatrix::of(pattern, system, &set, active);
+    let product = |v: &[f64], y: &mut [f64]| matrix.mul(v, y);
     let at = Structure {
         mesh,
         dofs,
@@ -870,7 +838,7 @@ pub(crate) fn recover(session: &Session, input: &Input<'_>, pending: &Pending) -
         set: &set,
         active,
         product: &product,
-        k_norm: &|| norm_inf(pattern, values),
+        k_norm: &|| norm_inf(pattern, matrix.values),
         rhs: &rhs,
         // K₁'s right-hand side of a history holds no friction load.
         friction: (&pending.friction, &[]),
@@ -887,8 +855,7 @@ pub(crate) fn recover(session: &Session, input: &Input<'_>, pending: &Pending) -
         // does, but beside K₁, which the steps after still need.
         drop(x);
         let settings = analysis.as_ref().ok_or_else(stale)?.settings();
-        let step = (values, &changed[..], &rhs[..]);
-        (x, omega) = solved_whole(at, settings, &set, step, &context)?;
+        (x, omega) = solved_whole(at, settings, &matrix, &rhs, &context)?;
     }
     if omega.is_nan() || omega > RECOVERED {
         return Err(Error::new(
@@ -902,15 +869,80 @@ pub(crate) fn recover(session: &Session, input: &Input<'_>, pending: &Pending) -
     Ok(dofs.expand(&x, &prescribed))
 }
 
-/// The field of a step's system by a factorisation of its own matrix: the
-/// assembled `values` with the contact elements of `changed` added (+1) or
-/// taken out (−1), and its right-hand side `rhs`. Gives the field and its
-/// backward error after refinement.
+/// The right-hand side of a pending step's system: the bodies' loads
+/// `rhs_body` (at factor 1) scaled to the step, with its active contact
+/// elements' loads and its friction loads.
+fn step_rhs(set: &ContactSet<'_>, rhs_body: &[f64], pending: &Pending) -> Vec<f64> {
+    let mut rhs: Vec<f64> = rhs_body.iter().map(|a| pending.t * a).collect();
+    for k in (0..set.parts()).filter(|&k| pending.active[k]) {
+        for (q, e) in set.unknowns(k).iter().enumerate() {
+            if let Some(i) = e {
+                rhs[*i] += set.load(k)[q];
+            }
+        }
+    }
+    set.add_friction_loads(&pending.friction, &[], |i, v| rhs[i] += v);
+    rhs
+}
+
+/// A step's matrix: the assembled `values` (of whatever set they hold)
+/// with the contact elements whose state differs added (+1) or taken out
+/// (−1).
+struct StepMatrix<'a, 's> {
+    pattern: &'a Pattern,
+    values: &'a [f64],
+    set: &'a ContactSet<'s>,
+    changed: Vec<(usize, f64)>,
+}
+
+impl<'a, 's> StepMatrix<'a, 's> {
+    /// The matrix of the flags `active` from `system`'s.
+    fn of(
+        pattern: &'a Pattern,
+        system: &'a AssembledSystem,
+        set: &'a ContactSet<'s>,
+        active: &[bool],
+    ) -> StepMatrix<'a, 's> {
+        let held = system.contact();
+        let changed = (0..set.parts())
+            .filter(|&k| active[k] != held.get(k).copied().unwrap_or(false))
+            .map(|k| (k, if active[k] { 1.0 } else { -1.0 }))
+            .collect();
+        StepMatrix {
+            pattern,
+            values: system.values(),
+            set,
+            changed,
+        }
+    }
+
+    /// y = K v.
+    fn mul(&self, v: &[f64], y: &mut [f64]) {
+        self.pattern.sym_mul(self.values, v, y);
+        for &(k, sign) in &self.changed {
+            let (eq, ke) = (self.set.unknowns(k), &self.set.stiffness(k).k);
+            for a in 0..6 {
+                let Some(i) = eq[a] else { continue };
+                let mut acc = 0.0;
+                for b in 0..6 {
+                    if let Some(j) = eq[b] {
+                        acc += ke[6 * a + b] * v[j];
+                    }
+                }
+                y[i] += sign * acc;
+            }
+        }
+    }
+}
+
+/// The field of a step's system (`step`, right-hand side `rhs`) by a
+/// factorisation of its own matrix. Gives the field and its backward error
+/// after refinement.
 fn solved_whole(
     at: Structure<'_>,
     settings: Settings,
-    set: &ContactSet<'_>,
-    (values, changed, rhs): (&[f64], &[(usize, f64)], &[f64]),
+    step: &StepMatrix<'_, '_>,
+    rhs: &[f64],
     context: &str,
 ) -> Result<(Vec<f64>, f64)> {
     let whole = Wanted {
@@ -918,11 +950,11 @@ fn solved_whole(
         zeros: &[],
     };
     let mut chol = analyse((at.mesh, at.dofs, at.pattern), settings, whole)?;
-    let mut matrix = reserved::<f64>(values.len(), "the load step's matrix")?;
-    matrix.extend_from_slice(values);
-    for &(k, sign) in changed {
-        let free = set.unknowns(k).map(|e| e.unwrap_or(NOT_FREE));
-        let ke = set.stiffness(k).k.map(|v| sign * v);
+    let mut matrix = reserved::<f64>(step.values.len(), "the load step's matrix")?;
+    matrix.extend_from_slice(step.values);
+    for &(k, sign) in &step.changed {
+        let free = step.set.unknowns(k).map(|e| e.unwrap_or(NOT_FREE));
+        let ke = step.set.stiffness(k).k.map(|v| sign * v);
         at.pattern.add_element(&mut matrix, &free, &ke);
     }
     chol.factorize(at.pattern, &matrix)
