@@ -1153,9 +1153,11 @@ module tfem
     !! `max_iterations` may change) are unchanged: a step is dense work on the contact interface,
     !! plus one sparse solve when the loads changed since the last step (a non-proportional
     !! history). Its displacements, and everything computed from them, are recovered on first
-    !! request (one sparse solve); the system matrix of a step is not available. The step is
-    !! accepted as it is: `tfem_revert_step` undoes it. `report` may be NULL. On error the model is
-    !! unchanged. Fortran: `options` and `report` are OPTIONAL: omit them to pass NULL.
+    !! request (one sparse solve, or, where that cannot reach working accuracy on a very
+    !! non-matching interface, a factorisation of the step's own matrix, made and dropped at that
+    !! request); the system matrix of a step is not available. The step is accepted as it is:
+    !! `tfem_revert_step` undoes it. `report` may be NULL. On error the model is unchanged. Fortran:
+    !! `options` and `report` are OPTIONAL: omit them to pass NULL.
     function tfem_step(model, load_factor, options, report) &
         bind(C, name="tfem_step") result(status)
       import

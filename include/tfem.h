@@ -887,8 +887,10 @@ enum tfem_status tfem_get_threads(struct tfem_model *model, int *threads);
  * are unchanged: a step is dense work on the contact interface, plus one
  * sparse solve when the loads changed since the last step (a
  * non-proportional history). Its displacements, and everything computed
- * from them, are recovered on first request (one sparse solve); the
- * system matrix of a step is not available. The step is accepted as it
+ * from them, are recovered on first request (one sparse solve, or, where
+ * that cannot reach working accuracy on a very non-matching interface, a
+ * factorisation of the step's own matrix, made and dropped at that
+ * request); the system matrix of a step is not available. The step is accepted as it
  * is: `tfem_revert_step` undoes it. `report` may be NULL. On error the
  * model is unchanged.
  */

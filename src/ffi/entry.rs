@@ -1105,8 +1105,10 @@ pub unsafe extern "C" fn tfem_get_threads(model: *mut TfemModel, threads: *mut c
 /// are unchanged: a step is dense work on the contact interface, plus one
 /// sparse solve when the loads changed since the last step (a
 /// non-proportional history). Its displacements, and everything computed
-/// from them, are recovered on first request (one sparse solve); the
-/// system matrix of a step is not available. The step is accepted as it
+/// from them, are recovered on first request (one sparse solve, or, where
+/// that cannot reach working accuracy on a very non-matching interface, a
+/// factorisation of the step's own matrix, made and dropped at that
+/// request); the system matrix of a step is not available. The step is accepted as it
 /// is: `tfem_revert_step` undoes it. `report` may be NULL. On error the
 /// model is unchanged.
 #[unsafe(no_mangle)]

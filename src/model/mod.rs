@@ -468,7 +468,9 @@ impl Model {
     /// interface, plus one sparse solve when the loads changed since the
     /// last step (a non-proportional history). Its displacements, and
     /// everything computed from them, are recovered on first request (one
-    /// sparse solve). The step is accepted as it is; [`Model::revert_step`]
+    /// sparse solve, or, where that cannot reach working accuracy on a very
+    /// non-matching interface, a factorisation of the step's own matrix,
+    /// made and dropped at that request). The step is accepted as it is; [`Model::revert_step`]
     /// undoes it. On error the model is unchanged.
     pub fn step(&mut self, load_factor: f64, options: &ContactOptions) -> Result<ContactReport> {
         options.validate()?;
