@@ -253,34 +253,13 @@ pub(crate) fn step(
     }
     let mut warnings = Vec::new();
     let current = session.history.as_ref().is_some_and(|h| h.key == key);
-    let mut factorizations = 0;
     // What a failed step must put back: the history it continues or
     // replaces (a pending earlier step is recovered from it, and the next
     // step continues it), and the loads it held.
-    let mut old_loads = None;
-    let mut replaced = None;
+    let (mut factorizations, mut replaced, mut old_loads) = (0, None, None);
     if !current {
-        // The history this one replaces goes back if this step fails.
-        replaced = save(session, revision, stiffness);
-        let started =
-            begin(session, input, key, revision, timings, &mut warnings).and_then(|mut history| {
-                if let Some(state) = restored {
-                    history.set_state(state)?;
-                }
-                Ok(history)
-            });
-        let history = match started {
-            Ok(history) => history,
-            Err(e) => {
-                session.history = None;
-                if let Some(saved) = replaced {
-                    restore(session, input, revision, saved);
-                }
-                return Err(e);
-            }
-        };
-        factorizations = history.first.factorizations;
-        session.history = Some(history);
+        let at = (key, revision, restored);
+        (factorizations, replaced) = start(session, input, at, timings, &mut warnings)?;
     } else if session
         .history
         .as_ref()
@@ -292,30 +271,13 @@ pub(crate) fn step(
     let (mut outcome, before) = match stepped {
         Ok(done) => done,
         Err((e, lost)) => {
-            match (current, session.history.as_mut()) {
-                (false, _) => {
-                    session.history = None;
-                    if let Some(saved) = replaced {
-                        restore(session, input, revision, saved);
-                    }
-                }
-                (true, Some(h)) => {
-                    if let Some((x_load, rhs_body, loads)) = old_loads {
-                        h.x_load = x_load;
-                        h.rhs_body = rhs_body;
-                        h.loads = loads;
-                    }
-                }
-                // The loop refactorised and lost K₁: the history is rebuilt
-                // as it was before the step (its loads are this revision's:
-                // a failed step on new loads changed none of its results).
-                (true, None) => {
-                    if let Some(mut kept) = lost {
-                        kept.loads_apart |= old_loads.is_some();
-                        rebuild(session, input, revision, &kept);
-                    }
-                }
-            }
+            let undo = Undo {
+                current,
+                replaced,
+                old_loads,
+                lost,
+            };
+            put_back(session, input, revision, undo);
             return Err(e);
         }
     };
@@ -591,6 +553,82 @@ fn scaled(v: &[f64], t: f64) -> Vec<f64> {
 /// destroyed it.
 type StepFailure = (Error, Option<Box<Kept>>);
 
+/// Starts a history for `key` at problem revision `revision` (at the
+/// contact state `restored` if given), saving the session's history it
+/// replaces; if it cannot start, the session is back as it was. Gives the
+/// factorisations made and the history replaced.
+fn start(
+    session: &mut Session,
+    input: &Input<'_>,
+    (key, revision, restored): (Key, u64, Option<&StepState>),
+    timings: &mut Timings,
+    warnings: &mut Vec<String>,
+) -> Result<(usize, Option<Saved>)> {
+    let replaced = save(session, revision, key.stiffness);
+    let started =
+        begin(session, input, key, revision, timings, warnings).and_then(|mut history| {
+            if let Some(state) = restored {
+                history.set_state(state)?;
+            }
+            Ok(history)
+        });
+    match started {
+        Ok(history) => {
+            let factorizations = history.first.factorizations;
+            session.history = Some(history);
+            Ok((factorizations, replaced))
+        }
+        Err(e) => {
+            session.history = None;
+            if let Some(saved) = replaced {
+                restore(session, input, revision, saved);
+            }
+            Err(e)
+        }
+    }
+}
+
+/// What puts the session back after a failed step.
+struct Undo {
+    /// Whether the step continued the session's history (else it started
+    /// one in place of `replaced`).
+    current: bool,
+    replaced: Option<Saved>,
+    /// The history's loads before the step's new ones (x_load, the
+    /// bodies' right-hand side, the loads' revision).
+    old_loads: Option<(Vec<f64>, Vec<f64>, u64)>,
+    /// What rebuilds the history if the step lost K₁.
+    lost: Option<Box<Kept>>,
+}
+
+/// Puts the session's history back as it was before a failed step.
+fn put_back(session: &mut Session, input: &Input<'_>, revision: u64, undo: Undo) {
+    match (undo.current, session.history.as_mut()) {
+        (false, _) => {
+            session.history = None;
+            if let Some(saved) = undo.replaced {
+                restore(session, input, revision, saved);
+            }
+        }
+        (true, Some(h)) => {
+            if let Some((x_load, rhs_body, loads)) = undo.old_loads {
+                h.x_load = x_load;
+                h.rhs_body = rhs_body;
+                h.loads = loads;
+            }
+        }
+        // The loop refactorised and lost K₁: the history is rebuilt as it
+        // was before the step (its loads are this revision's: a failed
+        // step on new loads changed none of its results).
+        (true, None) => {
+            if let Some(mut kept) = undo.lost {
+                kept.loads_apart |= undo.old_loads.is_some();
+                rebuild(session, input, revision, &kept);
+            }
+        }
+    }
+}
+
 /// The condensed loop of one step from the warm start.
 fn step_in_history(
     session: &mut Session,
@@ -619,15 +657,7 @@ fn step_in_history(
     let before = h.step_state();
     let mut condensed = h.state.take().expect("the condensed state is back");
     condensed.x1 = h.x1_at(t);
-    let mut info = SolveInfo {
-        unknowns: dofs.n_free(),
-        matrix_nnz: pattern.nnz(),
-        factor_nnz: chol.factor_nnz(),
-        factorization_bytes: chol.factorization_bytes(),
-        split_factorization: chol.is_split(),
-        interface_unknowns: condensed.system.len(),
-        ..Default::default()
-    };
+    let mut info = step_info((dofs, pattern), chol, condensed.system.len());
     let loop_input = LoopInput {
         at: Structure {
             mesh,
@@ -640,17 +670,12 @@ fn step_in_history(
         interface: None,
         options: *options,
     };
-    let warm = set.warm_flags(&h.warm, &h.friction.loads);
-    let friction = match h.friction.loads.is_empty() {
-        true => set.stick_loads(&warm),
-        false => h.friction.loads.clone(),
-    };
     let run = ActiveSetLoop::resume(
         loop_input,
         (chol, system),
         (timings, &mut info),
         condensed,
-        (warm, friction),
+        warm_start(&set, h),
     )
     .run_to_interface();
     let step = Step {
@@ -685,21 +710,55 @@ fn step_in_history(
             info.timings = *timings;
             on_full_solve(step, *settled, info).map_err(|e| (e, Some(kept)))
         }
-        Err(failed) => {
-            let (e, state) = *failed;
-            match state {
-                Some(mut state) => {
-                    state.x1 = Vec::new();
-                    h.state = Some(state);
-                    Err((e, back_to(history, step.before)))
-                }
-                // The loop refactorised: K₁ is gone; the caller rebuilds it.
-                None => {
-                    let kept = h.kept(step.before);
-                    *history = None;
-                    Err((e, Some(kept)))
-                }
-            }
+        Err(failed) => Err(on_loop_error(history, step.before, *failed)),
+    }
+}
+
+/// The flags and friction loads a step of `h` starts from: the last
+/// step's, or, where it left no friction loads, those of sticking.
+fn warm_start(set: &ContactSet<'_>, h: &History) -> (Vec<bool>, Vec<f64>) {
+    let warm = set.warm_flags(&h.warm, &h.friction.loads);
+    let friction = match h.friction.loads.is_empty() {
+        true => set.stick_loads(&warm),
+        false => h.friction.loads.clone(),
+    };
+    (warm, friction)
+}
+
+/// The statistics a step starts from: the sizes of its unknowns, matrix
+/// and factor, with `interface` unknowns condensed.
+fn step_info((dofs, pattern): (&DofMap, &Pattern), chol: &Cholesky, interface: usize) -> SolveInfo {
+    SolveInfo {
+        unknowns: dofs.n_free(),
+        matrix_nnz: pattern.nnz(),
+        factor_nnz: chol.factor_nnz(),
+        factorization_bytes: chol.factorization_bytes(),
+        split_factorization: chol.is_split(),
+        interface_unknowns: interface,
+        ..Default::default()
+    }
+}
+
+/// The history after a step's loop failed with `e` (and `state`, the
+/// condensed state, if K₁ survived): back at `before`, or dropped with what
+/// rebuilds it.
+fn on_loop_error(
+    history: &mut Option<History>,
+    before: StepState,
+    (e, state): (Error, Option<CondensedState>),
+) -> StepFailure {
+    let h = history.as_mut().expect("a history");
+    match state {
+        Some(mut state) => {
+            state.x1 = Vec::new();
+            h.state = Some(state);
+            (e, back_to(history, before))
+        }
+        // The loop refactorised: K₁ is gone; the caller rebuilds it.
+        None => {
+            let kept = h.kept(before);
+            *history = None;
+            (e, Some(kept))
         }
     }
 }
