@@ -341,55 +341,102 @@ pub fn conforming(
     a: &Side,
     b: &Side,
 ) -> Result<Vec<ContactElement>> {
-    let (tag_a, tag_b) = (a.tag, b.tag);
-    let (x, base) = (nodes.x, nodes.base);
+    let partner_of_a = match_nodes(nodes, a, b)?;
+    quads(nodes, pair, a, b, &partner_of_a)
+}
 
-    // Local edge length and averaged outward normal at every node of side a.
-    let mut local_h: HashMap<usize, f64> = HashMap::new();
-    let mut normal_a: HashMap<usize, [f64; 2]> = HashMap::new();
-    for (&(p, q), n) in &a.edges {
-        let l = dist(x[p], x[q]);
-        for v in [p, q] {
-            let h = local_h.entry(v).or_insert(f64::INFINITY);
-            *h = h.min(l);
-            let m = normal_a.entry(v).or_insert([0.0, 0.0]);
-            m[0] += n[0];
-            m[1] += n[1];
+/// The lengths a match across the interface is judged by.
+struct Scales {
+    /// node of either side -> the length of its shortest edge on its side
+    local_h: HashMap<usize, f64>,
+    /// node of side a -> the sum of the outward normals of its edges (not
+    /// of unit length)
+    normal_a: HashMap<usize, [f64; 2]>,
+}
+
+impl Scales {
+    /// The scales at the nodes of sides `a` and `b`.
+    fn of(x: &[[f64; 2]], a: &Side, b: &Side) -> Scales {
+        let mut local_h: HashMap<usize, f64> = HashMap::new();
+        let mut normal_a: HashMap<usize, [f64; 2]> = HashMap::new();
+        for (&(p, q), n) in &a.edges {
+            let l = dist(x[p], x[q]);
+            for v in [p, q] {
+                let h = local_h.entry(v).or_insert(f64::INFINITY);
+                *h = h.min(l);
+                let m = normal_a.entry(v).or_insert([0.0, 0.0]);
+                m[0] += n[0];
+                m[1] += n[1];
+            }
         }
-    }
-    for &(p, q) in b.edges.keys() {
-        let l = dist(x[p], x[q]);
-        for v in [p, q] {
-            let h = local_h.entry(v).or_insert(f64::INFINITY);
-            *h = h.min(l);
+        for &(p, q) in b.edges.keys() {
+            let l = dist(x[p], x[q]);
+            for v in [p, q] {
+                let h = local_h.entry(v).or_insert(f64::INFINITY);
+                *h = h.min(l);
+            }
         }
+        Scales { local_h, normal_a }
     }
 
-    // Candidates along the major axis of side a.
-    let mut a_nodes: Vec<usize> = a.nodes.iter().copied().collect();
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    for &v in &a_nodes {
-        for k in 0..2 {
-            lo[k] = lo[k].min(x[v][k]);
-            hi[k] = hi[k].max(x[v][k]);
-        }
+    /// For node `vb` of side b (local length `hb`) at distance `d` from
+    /// node `va` of side a: the local length of the pair (the smaller) and
+    /// the offset's part along the interface (across the normal at `va`).
+    /// An initial gap is the normal part, which may be up to half an edge;
+    /// the part along is what says the nodes do not face each other.
+    fn along(&self, x: &[[f64; 2]], hb: f64, vb: usize, va: usize, d: f64) -> (f64, f64) {
+        let h = hb.min(self.local_h[&va]);
+        let n = self.normal_a[&va];
+        // The sum of the edge normals only gives a direction; its length is
+        // kept away from zero for a side folding back on itself, whose
+        // normals cancel at the fold.
+        let nn = n[0].hypot(n[1]).max(f64::MIN_POSITIVE);
+        let off = [x[vb][0] - x[va][0], x[vb][1] - x[va][1]];
+        let normal_part = (off[0] * n[0] + off[1] * n[1]) / nn;
+        (h, (d * d - normal_part * normal_part).max(0.0).sqrt())
     }
-    let axis = usize::from(hi[1] - lo[1] > hi[0] - lo[0]);
-    a_nodes.sort_unstable_by(|&p, &q| x[p][axis].total_cmp(&x[q][axis]).then(p.cmp(&q)));
-    let keys: Vec<f64> = a_nodes.iter().map(|&v| x[v][axis]).collect();
+}
 
-    let mut partner_of_b: HashMap<usize, usize> = HashMap::new();
-    let mut partner_of_a: HashMap<usize, usize> = HashMap::new();
-    let mut b_nodes: Vec<usize> = b.nodes.iter().copied().collect();
-    b_nodes.sort_unstable();
-    for &vb in &b_nodes {
-        let hb = local_h[&vb];
-        let radius = 0.5 * hb;
-        let key = x[vb][axis];
-        let start = keys.partition_point(|&k| k < key - radius);
+/// The nodes of side a sorted along the axis (x or y) over which the side
+/// extends further, so that the candidates for a node of side b, within
+/// half an edge of it, are found by bisection rather than among every node
+/// of side a (n² on a long interface).
+struct AxisOrder {
+    /// 0 for x, 1 for y
+    axis: usize,
+    /// the nodes of side a by their coordinate along `axis`, then by index
+    /// (so that the order does not depend on the side's set)
+    nodes: Vec<usize>,
+    /// their coordinates along `axis`
+    keys: Vec<f64>,
+}
+
+impl AxisOrder {
+    /// The nodes of side `a` in order.
+    fn of(x: &[[f64; 2]], a: &Side) -> AxisOrder {
+        let mut nodes: Vec<usize> = a.nodes.iter().copied().collect();
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for &v in &nodes {
+            for k in 0..2 {
+                lo[k] = lo[k].min(x[v][k]);
+                hi[k] = hi[k].max(x[v][k]);
+            }
+        }
+        let axis = usize::from(hi[1] - lo[1] > hi[0] - lo[0]);
+        nodes.sort_unstable_by(|&p, &q| x[p][axis].total_cmp(&x[q][axis]).then(p.cmp(&q)));
+        let keys: Vec<f64> = nodes.iter().map(|&v| x[v][axis]).collect();
+        AxisOrder { axis, nodes, keys }
+    }
+
+    /// The node nearest to node `vb` and its distance, among those within
+    /// `radius` of it along the axis (of equally near ones, the first in
+    /// the order); `None` when there are none.
+    fn nearest(&self, x: &[[f64; 2]], vb: usize, radius: f64) -> Option<(f64, usize)> {
+        let key = x[vb][self.axis];
+        let start = self.keys.partition_point(|&k| k < key - radius);
         let mut best: Option<(f64, usize)> = None;
-        for (idx, &va) in a_nodes.iter().enumerate().skip(start) {
-            if keys[idx] > key + radius {
+        for (idx, &va) in self.nodes.iter().enumerate().skip(start) {
+            if self.keys[idx] > key + radius {
                 break;
             }
             let d = dist(x[va], x[vb]);
@@ -397,40 +444,32 @@ pub fn conforming(
                 best = Some((d, va));
             }
         }
-        // The local h of a candidate and the offset's part along the
-        // interface (across its normal at va).
-        let along = |d: f64, va: usize| {
-            let h = hb.min(local_h[&va]);
-            let n = normal_a[&va];
-            let nn = n[0].hypot(n[1]).max(f64::MIN_POSITIVE);
-            let off = [x[vb][0] - x[va][0], x[vb][1] - x[va][1]];
-            let normal_part = (off[0] * n[0] + off[1] * n[1]) / nn;
-            (h, (d * d - normal_part * normal_part).max(0.0).sqrt())
-        };
+        best
+    }
+}
+
+/// The node of side b matched to each node of side a, by the criteria of
+/// [`build_conforming`]. Refuses, naming the node, a node of either side
+/// left without a match, or a node of side a matched twice.
+fn match_nodes(nodes: Nodes<'_>, a: &Side, b: &Side) -> Result<HashMap<usize, usize>> {
+    let (tag_a, tag_b) = (a.tag, b.tag);
+    let (x, base) = (nodes.x, nodes.base);
+    let scales = Scales::of(x, a, b);
+    let order = AxisOrder::of(x, a);
+    let mut partner_of_a: HashMap<usize, usize> = HashMap::new();
+    // In index order, so that which node an error names does not depend on
+    // the order of the side's set.
+    let mut b_nodes: Vec<usize> = b.nodes.iter().copied().collect();
+    b_nodes.sort_unstable();
+    for &vb in &b_nodes {
+        let hb = scales.local_h[&vb];
+        let best = order.nearest(x, vb, 0.5 * hb);
         let matched = best.filter(|&(d, va)| {
-            let (h, tangential) = along(d, va);
+            let (h, tangential) = scales.along(x, hb, vb, va, d);
             d <= 0.5 * h && tangential <= TANGENTIAL_TOL * h
         });
         let Some((_, va)) = matched else {
-            let hint = match best {
-                Some((d, va)) => {
-                    let (h, tangential) = along(d, va);
-                    format!(
-                        "nearest node {} is {d:.3e} away, {tangential:.3e} along the interface \
-                         (a match: at most {:.3e} away, {:.3e} along)",
-                        va + base,
-                        0.5 * h,
-                        TANGENTIAL_TOL * h
-                    )
-                }
-                None => format!("no node of tag {tag_a} within half an edge ({radius:.3e})"),
-            };
-            return Err(Error::contact(format!(
-                "node {} (contact tag {tag_b}) has no matching node on tag {tag_a}: {hint}; \
-                 non-matching sides take the strip triangulation of B (docs/method.md §6.11) \
-                 or a handed-over contact mesh",
-                vb + base
-            )));
+            return Err(unmatched(nodes, &scales, a, b, vb, best));
         };
         if let Some(prev) = partner_of_a.insert(va, vb) {
             return Err(Error::contact(format!(
@@ -440,16 +479,69 @@ pub fn conforming(
                 va + base
             )));
         }
-        partner_of_b.insert(vb, va);
     }
-    if let Some(&va) = a_nodes.iter().find(|v| !partner_of_a.contains_key(v)) {
+    // Every node of side b has a partner of its own; a node of side a left
+    // over is one the other side lacks.
+    if let Some(&va) = order.nodes.iter().find(|v| !partner_of_a.contains_key(v)) {
         return Err(Error::contact(format!(
             "node {} (contact tag {tag_a}) has no matching node on tag {tag_b} \
              (the interfaces differ in extent or are non-conforming)",
             va + base
         )));
     }
+    Ok(partner_of_a)
+}
 
+/// The error for node `vb` of side b, which has no match on side a: it
+/// names the nearest candidate (`best`) with how far it is from being a
+/// match, so that a user can tell a near miss (a tolerance) from sides that
+/// do not conform, and points to what takes non-matching sides.
+fn unmatched(
+    nodes: Nodes<'_>,
+    scales: &Scales,
+    a: &Side,
+    b: &Side,
+    vb: usize,
+    best: Option<(f64, usize)>,
+) -> Error {
+    let (tag_a, tag_b) = (a.tag, b.tag);
+    let (x, base) = (nodes.x, nodes.base);
+    let hb = scales.local_h[&vb];
+    let radius = 0.5 * hb;
+    let hint = match best {
+        Some((d, va)) => {
+            let (h, tangential) = scales.along(x, hb, vb, va, d);
+            format!(
+                "nearest node {} is {d:.3e} away, {tangential:.3e} along the interface \
+                 (a match: at most {:.3e} away, {:.3e} along)",
+                va + base,
+                0.5 * h,
+                TANGENTIAL_TOL * h
+            )
+        }
+        None => format!("no node of tag {tag_a} within half an edge ({radius:.3e})"),
+    };
+    Error::contact(format!(
+        "node {} (contact tag {tag_b}) has no matching node on tag {tag_a}: {hint}; \
+         non-matching sides take the strip triangulation of B (docs/method.md §6.11) \
+         or a handed-over contact mesh",
+        vb + base
+    ))
+}
+
+/// The two triangles of the flat quad between each edge of side a and the
+/// nodes of side b matched to its ends (`partner_of_a`, from
+/// [`match_nodes`]). Refuses an edge whose partners are not an edge of
+/// side b (the sides match node by node but not edge by edge), naming it.
+fn quads(
+    nodes: Nodes<'_>,
+    pair: usize,
+    a: &Side,
+    b: &Side,
+    partner_of_a: &HashMap<usize, usize>,
+) -> Result<Vec<ContactElement>> {
+    let (tag_a, tag_b) = (a.tag, b.tag);
+    let (x, base) = (nodes.x, nodes.base);
     let mut elements = Vec::with_capacity(2 * a.oriented.len());
     for &[a1, b1] in &a.oriented {
         let (a2, b2) = (partner_of_a[&a1], partner_of_a[&b1]);
