@@ -890,9 +890,9 @@ enum tfem_status tfem_get_threads(struct tfem_model *model, int *threads);
  * from them, are recovered on first request (one sparse solve, or, where
  * that cannot reach working accuracy on a very non-matching interface, a
  * factorisation of the step's own matrix, made and dropped at that
- * request); the system matrix of a step is not available. The step is accepted as it
- * is: `tfem_revert_step` undoes it. `report` may be NULL. On error the
- * model is unchanged.
+ * request); the system matrix of a step is not available. The step is
+ * accepted as it is: `tfem_revert_step` undoes it. `report` may be NULL.
+ * On error the model is unchanged.
  */
 enum tfem_status tfem_step(struct tfem_model *model,
                            double load_factor,

@@ -1108,9 +1108,9 @@ pub unsafe extern "C" fn tfem_get_threads(model: *mut TfemModel, threads: *mut c
 /// from them, are recovered on first request (one sparse solve, or, where
 /// that cannot reach working accuracy on a very non-matching interface, a
 /// factorisation of the step's own matrix, made and dropped at that
-/// request); the system matrix of a step is not available. The step is accepted as it
-/// is: `tfem_revert_step` undoes it. `report` may be NULL. On error the
-/// model is unchanged.
+/// request); the system matrix of a step is not available. The step is
+/// accepted as it is: `tfem_revert_step` undoes it. `report` may be NULL.
+/// On error the model is unchanged.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_step(
     model: *mut TfemModel,

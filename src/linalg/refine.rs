@@ -83,17 +83,22 @@ pub fn norm_inf(pattern: &Pattern, values: &[f64]) -> f64 {
     inf(&row_sums)
 }
 
+/// ‖v‖∞, NaN if any entry is (`f64::max` would pass over it, and a NaN
+/// residual would read as zero).
 fn inf(v: &[f64]) -> f64 {
-    v.iter().fold(0.0f64, |m, a| m.max(a.abs()))
+    v.iter()
+        .try_fold(0.0f64, |m, a| (!a.is_nan()).then(|| m.max(a.abs())))
+        .unwrap_or(f64::NAN)
 }
 
 /// [`refine`] with K given by its product y = K v and its ‖K‖∞ (which only
 /// the stopping test reads), within `budget`. Gives the backward error of
 /// the refined x (0 for a zero residual; NaN for a non-finite one, which
-/// the finiteness check reports). A correction that makes the residual
-/// larger is taken back: with an approximate inverse a step can diverge
-/// (measured: ×19 on a load step's field, Hertz with the cylinder's mesh 40×
-/// finer), and x is left at the best iterate.
+/// the finiteness check reports). A correction that does not leave a
+/// smaller residual (larger, or not finite) is taken back: with an
+/// approximate inverse a step can diverge (measured: ×19 on a load step's
+/// field, Hertz with the cylinder's mesh 40× finer), and x is left at the
+/// best iterate.
 pub fn refine_by(
     product: &dyn Fn(&[f64], &mut [f64]),
     k_norm: f64,
@@ -104,14 +109,20 @@ pub fn refine_by(
 ) -> Result<f64> {
     let f_norm = inf(rhs);
     let mut r = vec![0.0; x.len()];
-    // The last correction, to take back if it made things worse.
-    let mut last: Vec<f64> = Vec::new();
+    // The iterate before the last correction, to go back to (a copy, as
+    // x − correction is not x again when the correction is huge).
+    let mut best: Vec<f64> = Vec::new();
     let (mut previous, mut previous_omega) = (f64::INFINITY, f64::NAN);
     let mut step = 0;
     loop {
         product(x, &mut r);
         r.iter_mut().zip(rhs).for_each(|(k, b)| *k = b - *k);
         let rn = inf(&r);
+        // (rn is NaN when the correction was not finite.)
+        if step > 0 && (rn > previous || rn.is_nan()) {
+            x.copy_from_slice(&best);
+            return Ok(previous_omega);
+        }
         if rn == 0.0 {
             // Solved exactly (a zero field for a zero right-hand side too,
             // where the ratio below would be 0/0).
@@ -121,19 +132,15 @@ pub fn refine_by(
         if rn.is_nan() || omega.is_nan() {
             return Ok(f64::NAN);
         }
-        if rn > previous {
-            x.iter_mut().zip(&last).for_each(|(a, d)| *a -= d);
-            return Ok(previous_omega);
-        }
         if omega <= BACKWARD_ERROR_TOL || rn > budget.contraction * previous || step == budget.steps
         {
             return Ok(omega);
         }
         (previous, previous_omega) = (rn, omega);
         solve(&mut r)?;
+        best.clear();
+        best.extend_from_slice(x);
         x.iter_mut().zip(&r).for_each(|(a, d)| *a += d);
-        std::mem::swap(&mut last, &mut r);
-        r.resize(x.len(), 0.0);
         step += 1;
     }
 }
@@ -184,14 +191,13 @@ mod tests {
         assert!(omega < 1e-9, "twenty steps reach 0.3²⁰: {omega:e}");
     }
 
-    #[test]
-    fn a_correction_that_makes_the_residual_larger_is_taken_back() {
-        // A first correction that halves the residual, then one that
-        // overshoots by a factor of 20.
+    /// Refines from x = 0 with corrections `gain[i]` times the exact one
+    /// at the i-th step; gives x and the backward error.
+    fn refined_with(gains: &[f64]) -> ([f64; 3], f64) {
         let mut calls = 0;
         let mut solve = |r: &mut [f64]| {
+            let gain = gains[calls];
             calls += 1;
-            let gain = if calls == 1 { 0.5 } else { 20.0 };
             r.iter_mut()
                 .zip([1.0, 2.0, 4.0])
                 .for_each(|(r, k)| *r *= gain / k);
@@ -200,8 +206,35 @@ mod tests {
         let mut x = [0.0; 3];
         let omega =
             refine_by(&product, 4.0, &RHS, &mut x, &mut solve, Budget::APPROXIMATE).unwrap();
-        assert_eq!(x, [0.5; 3], "the first correction's iterate");
-        // Residual 0.5 × (1, 2, 4) against ‖K‖ ‖x‖ + ‖f‖ = 4 × 0.5 + 4.
-        assert_eq!(omega, 2.0 / 6.0);
+        (x, omega)
+    }
+
+    #[test]
+    fn a_correction_that_makes_the_residual_larger_is_taken_back() {
+        // A first correction that gets x to 0.3, then one that overshoots
+        // by a factor of 20, or so far that x − correction is not x.
+        for overshoot in [20.0, 1e17, 1e300] {
+            let (x, omega) = refined_with(&[0.3, overshoot]);
+            assert_eq!(x, [0.3; 3], "the first correction's iterate");
+            // Residual 0.7 × (1, 2, 4) against ‖K‖ ‖x‖ + ‖f‖ = 4 × 0.3 + 4.
+            assert_eq!(omega, 0.7 * 4.0 / (4.0 * 0.3 + 4.0));
+        }
+    }
+
+    #[test]
+    fn a_correction_that_is_not_finite_is_taken_back() {
+        for bad in [f64::NAN, f64::INFINITY] {
+            let (x, omega) = refined_with(&[0.3, bad]);
+            assert_eq!(x, [0.3; 3]);
+            assert_eq!(omega, 0.7 * 4.0 / (4.0 * 0.3 + 4.0));
+        }
+    }
+
+    #[test]
+    fn a_residual_that_is_not_finite_reads_as_nan_not_as_solved() {
+        let mut x = [f64::NAN, 1.0, 1.0];
+        let mut solve = |_: &mut [f64]| Ok(());
+        let omega = refine_by(&product, 4.0, &RHS, &mut x, &mut solve, Budget::DIRECT).unwrap();
+        assert!(omega.is_nan());
     }
 }

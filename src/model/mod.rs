@@ -470,8 +470,8 @@ impl Model {
     /// everything computed from them, are recovered on first request (one
     /// sparse solve, or, where that cannot reach working accuracy on a very
     /// non-matching interface, a factorisation of the step's own matrix,
-    /// made and dropped at that request). The step is accepted as it is; [`Model::revert_step`]
-    /// undoes it. On error the model is unchanged.
+    /// made and dropped at that request). The step is accepted as it is;
+    /// [`Model::revert_step`] undoes it. On error the model is unchanged.
     pub fn step(&mut self, load_factor: f64, options: &ContactOptions) -> Result<ContactReport> {
         options.validate()?;
         self.in_pool(|m| m.run_step(load_factor, options))

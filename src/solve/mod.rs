@@ -11,6 +11,8 @@
 pub(crate) mod active_set;
 pub mod condensed;
 pub(crate) mod diagnostics;
+#[cfg(test)]
+mod fixtures;
 pub(crate) mod history;
 pub(crate) mod linear;
 pub(crate) mod memory;
