@@ -965,7 +965,7 @@ mod tests {
     use super::*;
     use crate::contact::InversionTest;
     use crate::model::{Component, Problem};
-    use crate::solve::fixtures::two_blocks;
+    use crate::solve::fixtures::{assembled, contact_set, two_blocks};
     use crate::solve::session::{Session, Settings, Wanted, factorisation};
 
     /// Solves `p` with the active set `active` held fixed: one loop
@@ -977,15 +977,9 @@ mod tests {
         active: Option<Vec<bool>>,
         condense: bool,
     ) -> (Vec<f64>, Vec<usize>) {
+        let (mut session, prescribed) = assembled(p);
         let mesh = p.mesh().unwrap();
-        let prescribed_dof = |g| p.is_prescribed(g);
-        let mut session = Session::new(0, mesh, prescribed_dof, p.contact_pairs()).unwrap();
         let elements = p.elements().unwrap();
-        let prescribed = p.prescribed_vector().unwrap();
-        let f_ext = p.load_vector().unwrap();
-        session
-            .assemble_body(&elements, (&f_ext, &prescribed))
-            .unwrap();
         let Session {
             dofs,
             pattern,
@@ -998,11 +992,7 @@ mod tests {
             test: InversionTest::Linearised,
             ..Default::default()
         };
-        let soft = |_pair: usize| *elements.material(1);
-        let laws = crate::contact::element_laws(0, contact, soft, mesh.size(), &options).unwrap();
-        let equation = |g: usize| Some(dofs.free(g)).filter(|&f| f != NOT_FREE);
-        let nodes = crate::contact::Nodes::of(mesh);
-        let set = ContactSet::new(nodes, contact, laws, equation, &prescribed, &options).unwrap();
+        let set = contact_set(p, (contact, dofs), &prescribed, &options);
         let interface = set.interface_unknowns();
         let want = Wanted {
             last: if condense { &interface } else { &[] },

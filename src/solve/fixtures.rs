@@ -1,5 +1,8 @@
 //! Small models for the solver's unit tests.
 
+use super::session::Session;
+use crate::contact::{ContactElement, ContactOptions, ContactSet, Nodes, element_laws};
+use crate::fem::assembly::{DofMap, NOT_FREE};
 use crate::fem::material::{Material, PlaneMode};
 use crate::fem::mesh::Mesh;
 use crate::model::{Component, Problem};
@@ -53,4 +56,43 @@ pub(crate) fn two_blocks(n: usize, loaded: usize) -> Problem {
     p.add_pressure(22, 1.0).unwrap();
     p.add_contact_pair(11, 20).unwrap();
     p
+}
+
+/// `p`'s session with the bodies' part assembled, and `p`'s prescribed
+/// values.
+pub(crate) fn assembled(p: &Problem) -> (Session, Vec<f64>) {
+    let mesh = p.mesh().unwrap();
+    let prescribed_dof = |g| p.is_prescribed(g);
+    let mut session = Session::new(0, mesh, prescribed_dof, p.contact_pairs()).unwrap();
+    let elements = p.elements().unwrap();
+    let prescribed = p.prescribed_vector().unwrap();
+    let f_ext = p.load_vector().unwrap();
+    session
+        .assemble_body(&elements, (&f_ext, &prescribed))
+        .unwrap();
+    (session, prescribed)
+}
+
+/// The contact set of `p`'s `contact` elements over the unknowns `dofs`,
+/// E_c that of body 1.
+pub(crate) fn contact_set<'a>(
+    p: &'a Problem,
+    (contact, dofs): (&'a [ContactElement], &DofMap),
+    prescribed: &[f64],
+    options: &ContactOptions,
+) -> ContactSet<'a> {
+    let mesh = p.mesh().unwrap();
+    let elements = p.elements().unwrap();
+    let soft = |_pair: usize| *elements.material(1);
+    let laws = element_laws(0, contact, soft, mesh.size(), options).unwrap();
+    let equation = |g: usize| Some(dofs.free(g)).filter(|&f| f != NOT_FREE);
+    ContactSet::new(
+        Nodes::of(mesh),
+        contact,
+        laws,
+        equation,
+        prescribed,
+        options,
+    )
+    .unwrap()
 }

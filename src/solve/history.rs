@@ -1035,8 +1035,7 @@ fn solved_whole(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::contact::{Nodes, element_laws};
-    use crate::solve::fixtures::two_blocks;
+    use crate::solve::fixtures::{assembled, contact_set, two_blocks};
 
     fn inf(v: &[f64]) -> f64 {
         v.iter().fold(0.0f64, |m, a| m.max(a.abs()))
@@ -1046,15 +1045,8 @@ mod tests {
     fn a_step_matrix_is_the_assembled_matrix_of_the_steps_set_and_is_solved_whole() {
         for frictional in [false, true] {
             let p = two_blocks(6, 6);
+            let (mut session, prescribed) = assembled(&p);
             let mesh = p.mesh().unwrap();
-            let prescribed_dof = |g| p.is_prescribed(g);
-            let mut session = Session::new(0, mesh, prescribed_dof, p.contact_pairs()).unwrap();
-            let elements = p.elements().unwrap();
-            let prescribed = p.prescribed_vector().unwrap();
-            let f_ext = p.load_vector().unwrap();
-            session
-                .assemble_body(&elements, (&f_ext, &prescribed))
-                .unwrap();
             let Session {
                 dofs,
                 pattern,
@@ -1063,12 +1055,7 @@ mod tests {
                 ..
             } = &mut session;
             let options = ContactOptions::default();
-            let soft = |_pair: usize| *elements.material(1);
-            let laws = element_laws(0, contact, soft, mesh.size(), &options).unwrap();
-            let equation = |g: usize| Some(dofs.free(g)).filter(|&f| f != NOT_FREE);
-            let nodes = Nodes::of(mesh);
-            let mut set =
-                ContactSet::new(nodes, contact, laws, equation, &prescribed, &options).unwrap();
+            let mut set = contact_set(&p, (contact, dofs), &prescribed, &options);
             if frictional {
                 let n = set.len();
                 let (mu, g) = (vec![0.3; n], vec![400.0; n]);
