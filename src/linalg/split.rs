@@ -198,12 +198,19 @@ impl SplitCholesky {
         );
         let (pa, pb) = (pa?, pb?);
         let t = top.len();
+        // Allocated last, once both parts hold their factors' memory: where
+        // that leaves no room for it, the analysis fails cleanly.
+        let mut top_factor = Mat::new();
+        top_factor
+            .try_reserve(t, t)
+            .map_err(|_| oom("dense separator block"))?;
+        top_factor.resize_with(t, t, |_, _| 0.0);
         Ok(Some(SplitCholesky {
             parts: [pa, pb],
             top,
             owner,
             local,
-            top_factor: Mat::zeros(t, t),
+            top_factor,
             zeros: (0..is_zero.len()).filter(|&p| is_zero[p]).collect(),
             keep_schur: false,
             schur: None,
