@@ -1,0 +1,47 @@
+//! Load histories: one factorisation for a hundred steps.
+
+use std::fmt::Write as _;
+
+use serde_json::Value;
+
+use crate::Args;
+use crate::speed::child;
+
+pub(crate) fn histories(report: &mut String, a: &Args) {
+    let levels: Vec<usize> = if a.quick { vec![64] } else { vec![512, 1024] };
+    let f = |v: &Value, k: &str| v[k].as_f64().unwrap_or(f64::NAN);
+    writeln!(report, "## Load histories\n").unwrap();
+    writeln!(
+        report,
+        "The seed scene (2C/L = 0.2) loaded in 100 proportional steps (factors k/100, \
+         `Model::step`), the last step's displacements recovered, against one contact solve of \
+         the full load; each run in its own process. One factorisation serves the whole history \
+         (the first step's); every later step is dense work on the contact interface, \
+         warm-started from the step before. The last step equals the one-step answer to \
+         round-off (`tests/history.rs`).\n"
+    )
+    .unwrap();
+    writeln!(report, "| h | unknowns | one solve [s] | 100 steps [s] | of which recovery [s] | ratio | factorisations | active-set iterations | peak RSS one solve / history [MB] |\n|---|---|---|---|---|---|---|---|---|").unwrap();
+    for &n in &levels {
+        let (Some(one), Some(h)) = (child(n, "nd", "condensed"), child(n, "nd", "history100"))
+        else {
+            writeln!(report, "| 1/{n} | run failed |").unwrap();
+            continue;
+        };
+        writeln!(
+            report,
+            "| 1/{n} | {} | {:.2} | {:.2} | {:.2} | {:.2} | {} | {} | {:.0} / {:.0} |",
+            one["unknowns"],
+            f(&one, "total"),
+            f(&h, "total"),
+            f(&h, "recovery"),
+            f(&h, "total") / f(&one, "total"),
+            h["factorizations"],
+            h["iterations"],
+            f(&one, "rss_peak") / 1e6,
+            f(&h, "rss_peak") / 1e6,
+        )
+        .unwrap();
+    }
+    writeln!(report).unwrap();
+}
