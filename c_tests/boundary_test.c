@@ -525,6 +525,48 @@ static void a_load_history_steps_reverts_and_restarts_bit_for_bit(void) {
   tfem_destroy(m);
 }
 
+/* Found by a probe of load histories: reverting a step after friction was
+ * turned on brought back the contact state of the old contact mesh, and
+ * every later step was refused; a state restored into a model of another
+ * stiffness brought its interface factor along (contact pressures off by
+ * tens of percent, status OK); a changed byte went unnoticed. */
+static void a_contact_state_never_outlives_its_problem(void) {
+  tfem_model *m = two_blocks();
+  CHECK(tfem_step(m, 0.5, NULL, NULL) == TFEM_STATUS_OK);
+  size_t size = 0;
+  CHECK(tfem_get_contact_state_size(m, &size) == TFEM_STATUS_OK && size > 0);
+  uint8_t *state = malloc(size);
+  CHECK(state != NULL && tfem_get_contact_state(m, state, size) == TFEM_STATUS_OK);
+  CHECK(tfem_step(m, 1.0, NULL, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_set_friction(m, 0, 0.3) == TFEM_STATUS_OK);
+  EXPECT_ERROR(m, tfem_revert_step(m), TFEM_STATUS_INVALID_STATE, "cannot be reverted");
+  CHECK(tfem_step(m, 1.0, NULL, NULL) == TFEM_STATUS_OK);
+  /* The upper block three times stiffer, the same contact mesh: the step
+   * starts from the state's set with this model's own interface factor. */
+  tfem_model *stiffer = two_blocks(), *one = two_blocks();
+  CHECK(tfem_set_material(stiffer, 2, 3e11, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_set_material(one, 2, 3e11, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_set_contact_state(stiffer, state, size) == TFEM_STATUS_OK);
+  CHECK(tfem_step(stiffer, 1.0, NULL, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_solve_contact(one, NULL, NULL) == TFEM_STATUS_OK);
+  double p[64], q[64], err = 0, scale = 0;
+  int n = 0;
+  CHECK(tfem_get_contact_mesh_size(one, &n) == TFEM_STATUS_OK && n > 0 && n <= 64);
+  CHECK(tfem_get_contact_pressure(stiffer, p, 64) == TFEM_STATUS_OK);
+  CHECK(tfem_get_contact_pressure(one, q, 64) == TFEM_STATUS_OK);
+  for (int k = 0; k < n; ++k) {
+    err = fmax(err, fabs(p[k] - q[k]));
+    scale = fmax(scale, fabs(q[k]));
+  }
+  CHECK(scale > 0 && err <= 1e-9 * scale);
+  state[size / 2] ^= 0x10;
+  EXPECT_ERROR(one, tfem_set_contact_state(one, state, size), TFEM_STATUS_INVALID_ARGUMENT, "changed");
+  free(state);
+  tfem_destroy(one);
+  tfem_destroy(stiffer);
+  tfem_destroy(m);
+}
+
 /* A failed solve or a failed step with other options after a load step
  * leaves the history as it was: the next step continues it without a
  * factorisation, bit for bit as if the failed call had not been made
@@ -1379,6 +1421,7 @@ int main(int argc, char **argv) {
   messages_stay_short_and_the_thread_slot_is_cleared();
   a_host_gets_contact_forces_gaps_and_the_contact_mesh_before_a_solve();
   a_load_history_steps_reverts_and_restarts_bit_for_bit();
+  a_contact_state_never_outlives_its_problem();
   a_host_side_given_clockwise_is_refused();
   a_failed_call_between_load_steps_keeps_the_history();
   friction_obeys_coulomb_and_restarts_bit_for_bit();

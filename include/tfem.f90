@@ -1156,8 +1156,11 @@ module tfem
     !! request (one sparse solve, or, where that cannot reach working accuracy on a very
     !! non-matching interface, a factorisation of the step's own matrix, made and dropped at that
     !! request); the system matrix of a step is not available. The step is accepted as it is:
-    !! `tfem_revert_step` undoes it. `report` may be NULL. On error the model is unchanged. Fortran:
-    !! `options` and `report` are OPTIONAL: omit them to pass NULL.
+    !! `tfem_revert_step` undoes it. `report` may be NULL. A history condenses the contact
+    !! interface, so options with `refactorize` set, or an interface too large to condense (see
+    !! `TfemContactOptions`), are refused with TFEM_STATUS_INVALID_ARGUMENT: solve each step with
+    !! `tfem_solve_contact` then. `load_factor` must be finite, at most 1e300 in magnitude. On error
+    !! the model is unchanged. Fortran: `options` and `report` are OPTIONAL: omit them to pass NULL.
     function tfem_step(model, load_factor, options, report) &
         bind(C, name="tfem_step") result(status)
       import
@@ -1171,7 +1174,9 @@ module tfem
 
   interface
     !> Undoes the last load step: its results, and the contact state the next step starts from, go
-    !! back to what they were before it. Once per step.
+    !! back to what they were before it. Once per step. Refused with TFEM_STATUS_INVALID_STATE, the
+    !! model unchanged, once the mesh, its boundary edges, the contact pairs or friction on/off have
+    !! changed since that step (its contact state belongs to the contact mesh before the change).
     function tfem_revert_step(model) &
         bind(C, name="tfem_revert_step") result(status)
       import
@@ -1211,11 +1216,16 @@ module tfem
   end interface tfem_get_contact_state
 
   interface tfem_set_contact_state
-    !> Continues the load history from a contact state (`length` bytes from `tfem_get_contact_state`
-    !! of the same problem): the next `tfem_step` starts from it. Refused, naming why, if the bytes
-    !! are not such a state or belong to another contact mesh; the model is then unchanged. Fortran:
-    !! `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a negative
-    !! length is passed as 0.
+    !> Continues the load history from a contact state (`length` bytes from
+    !! `tfem_get_contact_state`): the next `tfem_step` starts from it. Refused, naming why, if the
+    !! bytes are not such a state, belong to another contact mesh, or are frictional where no pair
+    !! has friction; the model is then unchanged. From a history of the same problem (the same
+    !! geometry, materials, constraints and options) the steps go on bit for bit; from one whose
+    !! interface system differs (the same contact mesh, another shape or stiffness), from its active
+    !! set and slip state, with the interface factor of this problem. If the mesh, its boundary
+    !! edges, the pairs or friction on/off change before the next step, that step starts afresh and
+    !! warns. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
+    !! tfem_length_kind); a negative length is passed as 0.
     function tfem_set_contact_state(model, buffer, length) &
         bind(C, name="tfem_set_contact_state") result(status)
       import

@@ -892,7 +892,11 @@ enum tfem_status tfem_get_threads(struct tfem_model *model, int *threads);
  * factorisation of the step's own matrix, made and dropped at that
  * request); the system matrix of a step is not available. The step is
  * accepted as it is: `tfem_revert_step` undoes it. `report` may be NULL.
- * On error the model is unchanged.
+ * A history condenses the contact interface, so options with
+ * `refactorize` set, or an interface too large to condense (see
+ * `TfemContactOptions`), are refused with TFEM_STATUS_INVALID_ARGUMENT:
+ * solve each step with `tfem_solve_contact` then. `load_factor` must be
+ * finite, at most 1e300 in magnitude. On error the model is unchanged.
  */
 enum tfem_status tfem_step(struct tfem_model *model,
                            double load_factor,
@@ -902,6 +906,10 @@ enum tfem_status tfem_step(struct tfem_model *model,
 /**
  * Undoes the last load step: its results, and the contact state the next
  * step starts from, go back to what they were before it. Once per step.
+ * Refused with TFEM_STATUS_INVALID_STATE, the model unchanged, once the
+ * mesh, its boundary edges, the contact pairs or friction on/off have
+ * changed since that step (its contact state belongs to the contact mesh
+ * before the change).
  */
 enum tfem_status tfem_revert_step(struct tfem_model *model);
 
@@ -922,9 +930,16 @@ enum tfem_status tfem_get_contact_state(struct tfem_model *model, uint8_t *buffe
 
 /**
  * Continues the load history from a contact state (`length` bytes from
- * `tfem_get_contact_state` of the same problem): the next `tfem_step`
- * starts from it. Refused, naming why, if the bytes are not such a state
- * or belong to another contact mesh; the model is then unchanged.
+ * `tfem_get_contact_state`): the next `tfem_step` starts from it. Refused,
+ * naming why, if the bytes are not such a state, belong to another
+ * contact mesh, or are frictional where no pair has friction; the model
+ * is then unchanged. From a history of the same problem (the same
+ * geometry, materials, constraints and options) the steps go on bit for
+ * bit; from one whose interface system differs (the same contact mesh,
+ * another shape or stiffness), from its active set and slip state, with
+ * the interface factor of this problem. If the mesh, its boundary edges,
+ * the pairs or friction on/off change before the next step, that step
+ * starts afresh and warns.
  */
 enum tfem_status tfem_set_contact_state(struct tfem_model *model,
                                         const uint8_t *buffer,

@@ -163,6 +163,165 @@ fn a_contact_state_of_another_mesh_or_cut_short_is_refused() {
     );
 }
 
+/// The largest difference of the contact pressures of `a` and `b` over
+/// the largest pressure of `b`.
+fn pressure_difference(a: &Model, b: &Model) -> f64 {
+    let (a, b) = (a.contact_pressure().unwrap(), b.contact_pressure().unwrap());
+    let scale = b.iter().fold(0.0f64, |m, p| m.max(p.abs()));
+    let diff = a
+        .iter()
+        .zip(b)
+        .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
+    diff / scale
+}
+
+/// Found by a probe of load histories: a state restored into a model of
+/// the same contact mesh but another interface system (another gap or
+/// stiffness) brought its interface factor along, and the step solved
+/// the wrong interface problem: contact pressures off by 40 % with OK,
+/// while the displacements, recovered whole, were right.
+#[test]
+fn a_contact_state_of_another_gap_or_stiffness_continues_from_its_set_with_this_problems_factor() {
+    let options = ContactOptions::default();
+    let mut saved = scene(0.3);
+    saved.step(0.5, &options).unwrap();
+    let state = saved.contact_state().unwrap();
+    let variants = [
+        TwoBlocks {
+            c: 0.3,
+            gap: 1e-4,
+            mesh_size: 1.0 / 32.0,
+            ..Default::default()
+        },
+        TwoBlocks {
+            c: 0.3,
+            e2: 3.0 * TwoBlocks::default().e2,
+            mesh_size: 1.0 / 32.0,
+            ..Default::default()
+        },
+    ];
+    for scene in variants {
+        let mut restarted = scene.build().unwrap().model;
+        restarted.set_contact_state(&state).unwrap();
+        restarted.step(1.0, &options).unwrap();
+        let mut one = scene.build().unwrap().model;
+        one.solve_contact(&options).unwrap();
+        let du = relative_difference(
+            &restarted.displacements().unwrap(),
+            &one.displacements().unwrap(),
+        );
+        let dp = pressure_difference(&restarted, &one);
+        assert!(
+            du <= 1e-10 && dp <= 1e-9,
+            "gap {} e2 {}: du {du:.1e} dp {dp:.1e}",
+            scene.gap,
+            scene.e2
+        );
+    }
+}
+
+/// Found by the same probe: once friction was turned on (or the mesh
+/// replaced) after a step, reverting that step brought back the state of
+/// the old contact mesh, and every later step was refused.
+#[test]
+fn a_step_cannot_be_reverted_once_friction_is_turned_on_and_the_next_step_starts_afresh() {
+    let options = ContactOptions::default();
+    let mut model = scene(0.3);
+    model.step(0.5, &options).unwrap();
+    model.step(1.0, &options).unwrap();
+    model.set_friction(0, 0.3).unwrap();
+    let err = model.revert_step().unwrap_err();
+    assert_eq!(err.status(), Status::InvalidState);
+    assert!(
+        err.message().contains("cannot be reverted"),
+        "{}",
+        err.message()
+    );
+    model.step(1.0, &options).unwrap();
+    let mut one = scene(0.3);
+    one.set_friction(0, 0.3).unwrap();
+    one.step(1.0, &options).unwrap();
+    assert_eq!(
+        bits(&model.displacements().unwrap()),
+        bits(&one.displacements().unwrap())
+    );
+}
+
+#[test]
+fn a_step_cannot_be_reverted_once_the_mesh_is_replaced() {
+    let options = ContactOptions::default();
+    let mut model = scene(0.3);
+    model.step(1.0, &options).unwrap();
+    let mesh = model.mesh().unwrap().clone();
+    model.set_mesh(mesh);
+    let err = model.revert_step().unwrap_err();
+    assert_eq!(err.status(), Status::InvalidState);
+}
+
+/// Found by the same probe: a model that had not stepped took a state of
+/// another friction setting, and every later step was refused; a state
+/// from a frictionless history is refused where a pair has friction only
+/// at the step, whose law decides (the stick law has one part per
+/// element), with a message that says which.
+#[test]
+fn a_frictional_contact_state_is_refused_where_no_pair_has_friction() {
+    let options = ContactOptions::default();
+    let mut frictional = scene(0.3);
+    frictional.set_friction(0, 0.3).unwrap();
+    frictional.step(0.5, &options).unwrap();
+    let state = frictional.contact_state().unwrap();
+    let mut plain = scene(0.3);
+    let err = plain.set_contact_state(&state).unwrap_err();
+    assert!(err.message().contains("frictional"), "{}", err.message());
+    plain.step(1.0, &options).unwrap();
+}
+
+/// Found by the same probe (598 states with one byte changed): a changed
+/// factor value was restored as it was.
+#[test]
+fn a_contact_state_with_a_changed_byte_is_refused() {
+    let options = ContactOptions::default();
+    let mut model = scene(0.3);
+    model.step(0.5, &options).unwrap();
+    let state = model.contact_state().unwrap();
+    for at in [state.len() / 2, state.len() - 1] {
+        let mut changed = state.clone();
+        changed[at] ^= 0x10;
+        let err = scene(0.3).set_contact_state(&changed).unwrap_err();
+        assert_eq!(err.status(), Status::InvalidArgument, "byte {at}");
+    }
+    scene(0.3).set_contact_state(&state).unwrap();
+}
+
+/// States saved by the first version (magic `TFEMCS01`: no fingerprint
+/// of the interface system, no checksum) are still read; their factor's
+/// system is not known, so the step starts from their set with this
+/// problem's own factor.
+#[test]
+fn a_contact_state_of_the_first_format_is_still_read_and_continues_from_its_set() {
+    let options = ContactOptions::default();
+    let mut model = scene(0.3);
+    model.step(0.5, &options).unwrap();
+    let state = model.contact_state().unwrap();
+    assert_eq!(&state[..8], b"TFEMCS02");
+    let mut first: Vec<u8> = b"TFEMCS01".to_vec();
+    first.extend_from_slice(&state[8..16]);
+    first.extend_from_slice(&state[32..]);
+    let mut restarted = scene(0.3);
+    restarted.set_contact_state(&first).unwrap();
+    restarted.step(1.0, &options).unwrap();
+    model.step(1.0, &options).unwrap();
+    let du = relative_difference(
+        &restarted.displacements().unwrap(),
+        &model.displacements().unwrap(),
+    );
+    assert!(du <= 1e-12, "{du:.1e}");
+    assert_eq!(
+        restarted.contact_active().unwrap(),
+        model.contact_active().unwrap()
+    );
+}
+
 #[test]
 fn a_failed_step_changes_nothing() {
     let options = ContactOptions::default();

@@ -1110,7 +1110,11 @@ pub unsafe extern "C" fn tfem_get_threads(model: *mut TfemModel, threads: *mut c
 /// factorisation of the step's own matrix, made and dropped at that
 /// request); the system matrix of a step is not available. The step is
 /// accepted as it is: `tfem_revert_step` undoes it. `report` may be NULL.
-/// On error the model is unchanged.
+/// A history condenses the contact interface, so options with
+/// `refactorize` set, or an interface too large to condense (see
+/// `TfemContactOptions`), are refused with TFEM_STATUS_INVALID_ARGUMENT:
+/// solve each step with `tfem_solve_contact` then. `load_factor` must be
+/// finite, at most 1e300 in magnitude. On error the model is unchanged.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_step(
     model: *mut TfemModel,
@@ -1132,6 +1136,10 @@ pub unsafe extern "C" fn tfem_step(
 
 /// Undoes the last load step: its results, and the contact state the next
 /// step starts from, go back to what they were before it. Once per step.
+/// Refused with TFEM_STATUS_INVALID_STATE, the model unchanged, once the
+/// mesh, its boundary edges, the contact pairs or friction on/off have
+/// changed since that step (its contact state belongs to the contact mesh
+/// before the change).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_revert_step(model: *mut TfemModel) -> Status {
     with_model(model, |m| m.model.revert_step())
@@ -1166,9 +1174,16 @@ pub unsafe extern "C" fn tfem_get_contact_state(
 }
 
 /// Continues the load history from a contact state (`length` bytes from
-/// `tfem_get_contact_state` of the same problem): the next `tfem_step`
-/// starts from it. Refused, naming why, if the bytes are not such a state
-/// or belong to another contact mesh; the model is then unchanged.
+/// `tfem_get_contact_state`): the next `tfem_step` starts from it. Refused,
+/// naming why, if the bytes are not such a state, belong to another
+/// contact mesh, or are frictional where no pair has friction; the model
+/// is then unchanged. From a history of the same problem (the same
+/// geometry, materials, constraints and options) the steps go on bit for
+/// bit; from one whose interface system differs (the same contact mesh,
+/// another shape or stiffness), from its active set and slip state, with
+/// the interface factor of this problem. If the mesh, its boundary edges,
+/// the pairs or friction on/off change before the next step, that step
+/// starts afresh and warns.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_set_contact_state(
     model: *mut TfemModel,

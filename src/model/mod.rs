@@ -63,10 +63,19 @@ pub struct Model {
     solve_warnings: Vec<String>,
     /// Before the last load step: its results and contact state
     /// ([`Model::revert_step`]).
-    undo: Option<(Option<Solution>, StepState)>,
+    undo: Option<(Option<Solution>, KeptState)>,
     /// A contact state to continue from at the next load step, when no
     /// history holds it ([`Model::set_contact_state`]).
-    restored: Option<StepState>,
+    restored: Option<KeptState>,
+}
+
+/// A contact state the model keeps, with the structure epoch of the
+/// problem whose contact mesh it belongs to: once the mesh, its boundary
+/// edges, the pairs or friction on/off change, it belongs to none.
+#[derive(Clone)]
+struct KeptState {
+    structure: u64,
+    state: StepState,
 }
 
 impl Default for Model {
@@ -497,7 +506,16 @@ impl Model {
         }
         let session = session_of(&mut self.session, &self.problem, &mut timings)?;
         let revision = self.problem.revision();
-        let restored = self.restored.as_ref();
+        let structure = self.problem.structure();
+        let dropped = self
+            .restored
+            .as_ref()
+            .is_some_and(|k| k.structure != structure);
+        let restored = self
+            .restored
+            .as_ref()
+            .filter(|k| k.structure == structure)
+            .map(|k| &k.state);
         let key = (options, stiffness, revision);
         let had_matrix = session.system_matrix(revision).is_some();
         let (outcome, before) =
@@ -523,7 +541,21 @@ impl Model {
         );
         solution.step = true;
         self.solve_warnings = warnings;
-        self.undo = Some((self.solution.take(), before));
+        if dropped {
+            self.solve_warnings.push(
+                "the contact state given to set_contact_state (or brought back by revert_step) \
+                 belonged to the contact mesh before the last change of the mesh, its boundary \
+                 edges, the contact pairs or friction on/off: this step started afresh"
+                    .to_string(),
+            );
+        }
+        self.undo = Some((
+            self.solution.take(),
+            KeptState {
+                structure,
+                state: before,
+            },
+        ));
         let solution = self.solution.insert(solution);
         Ok(solution
             .contact
@@ -534,15 +566,29 @@ impl Model {
 
     /// Undoes the last load step: its results, and the contact state the
     /// next step starts from, go back to what they were before it. Once.
+    ///
+    /// Refused (the model unchanged) once the mesh, its boundary edges,
+    /// the contact pairs or friction on/off have changed since that step:
+    /// its contact state belongs to the contact mesh before the change.
     pub fn revert_step(&mut self) -> Result<()> {
-        let (solution, state) = self
+        let (_, before) = self
             .undo
-            .take()
+            .as_ref()
             .ok_or_else(|| Error::state("no load step to revert"))?;
+        if before.structure != self.problem.structure() {
+            return Err(Error::state(
+                "the last load step cannot be reverted: the mesh, its boundary edges, the \
+                 contact pairs or friction on/off changed since, and its contact state belongs \
+                 to the contact mesh before",
+            ));
+        }
+        if let Some(history) = self.session.as_mut().and_then(|s| s.history.as_mut()) {
+            history.set_state(&before.state)?;
+        }
+        let (solution, before) = self.undo.take().expect("checked above");
         self.solution = solution;
-        match self.session.as_mut().and_then(|s| s.history.as_mut()) {
-            Some(history) => history.set_state(&state)?,
-            None => self.restored = Some(state),
+        if self.session.as_ref().is_none_or(|s| s.history.is_none()) {
+            self.restored = Some(before);
         }
         Ok(())
     }
@@ -554,7 +600,7 @@ impl Model {
     pub fn contact_state(&self) -> Result<Vec<u8>> {
         let history = self.session.as_ref().and_then(|s| s.history.as_ref());
         let state = match (history, &self.restored) {
-            (_, Some(state)) => state.clone(),
+            (_, Some(kept)) => kept.state.clone(),
             (Some(h), None) => h.step_state(),
             (None, None) => return Err(Error::state("no load step yet: no contact state")),
         };
@@ -562,12 +608,33 @@ impl Model {
     }
 
     /// Continues the load history from `bytes` (from
-    /// [`Model::contact_state`] of the same problem): the next
-    /// [`Model::step`] starts from that contact state. Refused, with the
-    /// model unchanged, if the bytes are not such a state or belong to
-    /// another contact mesh.
+    /// [`Model::contact_state`]): the next [`Model::step`] starts from that
+    /// contact state. Refused, with the model unchanged, if the bytes are
+    /// not such a state, belong to another contact mesh, or are frictional
+    /// where no pair has friction. From a history of the same problem the
+    /// steps go on bit for bit; from one whose interface system differs
+    /// (the same contact mesh, another shape or stiffness) they start from
+    /// its active set and slip state with this problem's own interface
+    /// factor. A structure change before the next step (mesh, boundary
+    /// edges, pairs, friction on/off) drops the state, with a warning.
     pub fn set_contact_state(&mut self, bytes: &[u8]) -> Result<()> {
         let state = decode(bytes, self.contact_fingerprint()?)?;
+        // Without a history to check it against, check it against the
+        // contact mesh: its parts are the elements', or twice as many when
+        // a pair has friction (and the step's law is frictionless).
+        let elements = self.contact_mesh()?.len();
+        let frictional = self
+            .problem
+            .contact_pairs()
+            .iter()
+            .any(|p| p.friction > 0.0);
+        state.fits(elements, false).or_else(|e| {
+            if frictional {
+                state.fits(elements, true)
+            } else {
+                Err(e)
+            }
+        })?;
         // A step's field waits on the history's contact state, which this
         // replaces: recover it first, so that the results stay readable.
         // (A field that can no longer be recovered stays as it was.)
@@ -582,7 +649,12 @@ impl Model {
                     return Err(e);
                 }
             }
-            None => self.restored = Some(state),
+            None => {
+                self.restored = Some(KeptState {
+                    structure: self.problem.structure(),
+                    state,
+                })
+            }
         }
         self.undo = None;
         Ok(())
@@ -963,16 +1035,25 @@ fn solution_of(
     (solution, outcome.warnings)
 }
 
-/// The bytes of a contact state: a magic word, the fingerprint of B, then
-/// the flags and the interface factor, little-endian.
-const STATE_MAGIC: &[u8; 8] = b"TFEMCS01";
+/// The bytes of a contact state: a magic word, the fingerprint of B, the
+/// fingerprint of the interface system the history began with, a checksum
+/// of what follows, then the flags, the interface factor and the friction
+/// state, little-endian.
+const STATE_MAGIC: &[u8; 8] = b"TFEMCS02";
+/// The first version's magic word: the same bytes without the interface
+/// system's fingerprint. Still read, as a state whose factor is not
+/// restored (its system is not known).
+const STATE_MAGIC_1: &[u8; 8] = b"TFEMCS01";
 
 fn encode(state: &StepState, fingerprint: u64) -> Vec<u8> {
     let n = state.warm.len();
     let packed = &state.factor.packed;
-    let mut out = Vec::with_capacity(8 + 24 + 2 * n + 8 * packed.len() + 9);
+    let mut out = Vec::with_capacity(8 + 40 + 2 * n + 8 * packed.len() + 9);
     out.extend_from_slice(STATE_MAGIC);
     out.extend_from_slice(&fingerprint.to_le_bytes());
+    // 0: not known (read back as such).
+    out.extend_from_slice(&state.base.unwrap_or(0).to_le_bytes());
+    out.extend_from_slice(&[0; 8]);
     out.extend_from_slice(&(n as u64).to_le_bytes());
     out.extend_from_slice(&(packed.len() as u64).to_le_bytes());
     out.extend(state.warm.iter().map(|&a| u8::from(a)));
@@ -991,7 +1072,17 @@ fn encode(state: &StepState, fingerprint: u64) -> Vec<u8> {
             out.extend_from_slice(&v.to_le_bytes());
         }
     }
+    let sum = checksum(&out[32..]);
+    out[24..32].copy_from_slice(&sum.to_le_bytes());
     out
+}
+
+/// FNV-1a of `bytes`: a state changed on its way back (a flipped bit, a
+/// truncation that still parses) is refused rather than restored.
+fn checksum(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325u64, |h, &b| {
+        (h ^ b as u64).wrapping_mul(0x100_0000_01b3)
+    })
 }
 
 fn decode(bytes: &[u8], fingerprint: u64) -> Result<StepState> {
@@ -1005,12 +1096,24 @@ fn decode(bytes: &[u8], fingerprint: u64) -> Result<StepState> {
         Ok(slice)
     };
     let word = |b: &[u8]| u64::from_le_bytes(b.try_into().expect("8 bytes"));
-    if take(8)? != STATE_MAGIC {
-        return Err(bad("no magic word"));
-    }
+    let magic = take(8)?;
+    let version = match magic {
+        m if m == STATE_MAGIC => 2,
+        m if m == STATE_MAGIC_1 => 1,
+        _ => return Err(bad("no magic word")),
+    };
     if word(take(8)?) != fingerprint {
         return Err(bad("it belongs to another contact mesh"));
     }
+    // The checksum is checked once the bytes have parsed, so that a
+    // state cut short says so.
+    let (base, sum) = match version {
+        1 => (None, None),
+        _ => (
+            Some(word(take(8)?)).filter(|&b| b != 0),
+            Some(word(take(8)?)),
+        ),
+    };
     let n = usize::try_from(word(take(8)?)).map_err(|_| bad("size"))?;
     let m = usize::try_from(word(take(8)?)).map_err(|_| bad("size"))?;
     let flags = |b: &[u8]| -> Result<Vec<bool>> {
@@ -1033,7 +1136,8 @@ fn decode(bytes: &[u8], fingerprint: u64) -> Result<StepState> {
         .collect();
     let mut friction = crate::contact::FrictionState::default();
     // Bytes read so far: the header, two flag sets, the factor.
-    let read = 32 + 2 * n + 9 + 8 * m;
+    let header = if version == 1 { 32 } else { 48 };
+    let read = header + 2 * n + 9 + 8 * m;
     if read < bytes.len() {
         let f = usize::try_from(word(take(8)?)).map_err(|_| bad("size"))?;
         let values = take(f.checked_mul(16).ok_or_else(|| bad("size"))?)?;
@@ -1051,6 +1155,9 @@ fn decode(bytes: &[u8], fingerprint: u64) -> Result<StepState> {
     if at != bytes.len() {
         return Err(bad("bytes left over"));
     }
+    if sum.is_some_and(|sum| sum != checksum(&bytes[32..])) {
+        return Err(bad("its bytes were changed (checksum)"));
+    }
     if !packed.iter().all(|v| v.is_finite()) || min_eigenvalue.is_nan() {
         return Err(bad("a factor value is not finite"));
     }
@@ -1063,5 +1170,6 @@ fn decode(bytes: &[u8], fingerprint: u64) -> Result<StepState> {
             min_eigenvalue,
         },
         friction,
+        base,
     })
 }

@@ -342,6 +342,24 @@ impl Condensed {
         self.factored
     }
 
+    /// A fingerprint of the current factor's bits (lower triangle, by
+    /// columns): two systems with the same fingerprint are, to a 64-bit
+    /// hash, the same system factorised the same way. Hashed in place: a
+    /// copy would cost n²/2 values.
+    pub fn factor_fingerprint(&self) -> u64 {
+        let n = self.len();
+        let mut h = 0xcbf2_9ce4_8422_2325u64 ^ n as u64;
+        for j in 0..n {
+            for v in self.factor.col(j).subrows(j, n - j).iter() {
+                // FNV-1a over 64-bit words, with the high bits folded back
+                // so that every bit of every value reaches the result.
+                h = (h ^ v.to_bits()).wrapping_mul(0x100_0000_01b3);
+                h ^= h >> 29;
+            }
+        }
+        h
+    }
+
     /// The current factor (lower triangle packed by columns), whether it
     /// is usable, and its eigenvalue bound: enough to continue exactly
     /// where this system is ([`Condensed::restore_factor`]).

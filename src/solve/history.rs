@@ -75,6 +75,44 @@ pub(crate) struct StepState {
     /// The slip and friction loads of the last step (empty when
     /// frictionless; docs/method.md §6.15).
     pub friction: FrictionState,
+    /// The fingerprint of the interface system the history began with
+    /// ([`History::set_state`] restores `factor` only into the same one);
+    /// `None` when not known (a state saved by an older version).
+    pub base: Option<u64>,
+}
+
+impl StepState {
+    /// Whether this state can continue a history of `elements` contact
+    /// elements, frictional (two parts each, with their slip and loads)
+    /// or not.
+    pub fn fits(&self, elements: usize, frictional: bool) -> Result<()> {
+        let parts = if frictional { 2 * elements } else { elements };
+        if self.warm.len() != parts || self.factor_active.len() != parts {
+            let kind = |n: usize| match n {
+                _ if n == elements => "frictionless",
+                _ if n == 2 * elements => "frictional",
+                _ => "of another contact mesh",
+            };
+            return Err(Error::argument(format!(
+                "the contact state is of {} contact parts ({}), this step's contact set has \
+                 {parts} ({}): its friction or contact law differ from the state's history",
+                self.warm.len(),
+                kind(self.warm.len()),
+                kind(parts)
+            )));
+        }
+        let f = &self.friction;
+        let frictional_elements = if frictional { elements } else { 0 };
+        let sizes = [f.anchors.len(), f.loads.len()];
+        if sizes.iter().any(|&m| m != 0 && m != frictional_elements) || sizes[0] != sizes[1] {
+            return Err(Error::argument(format!(
+                "the contact state's friction data ({} / {} values) do not fit \
+                 {frictional_elements} frictional contact elements",
+                sizes[0], sizes[1]
+            )));
+        }
+        Ok(())
+    }
 }
 
 /// A step whose whole field is recovered when asked for.
@@ -115,6 +153,10 @@ pub(crate) struct History {
     /// Whether x_load was solved apart for new loads ([`new_loads`]) rather
     /// than with K₁'s first solve: a rebuilt history redoes the same.
     loads_apart: bool,
+    /// The fingerprint of K₁'s interface factor
+    /// ([`Condensed::factor_fingerprint`]): what a saved state's factor
+    /// must have grown from to be restored.
+    base: u64,
 }
 
 impl History {
@@ -144,6 +186,7 @@ impl History {
             factor_active: state.factor_active.clone(),
             factor: state.system.factor_snapshot(),
             friction: self.friction.clone(),
+            base: Some(self.base),
         }
     }
 
@@ -157,29 +200,23 @@ impl History {
         })
     }
 
-    /// Continues from `state` (from [`History::state`] of a history of the
-    /// same problem).
+    /// Continues from `state` (from [`History::step_state`]): from its
+    /// active set and friction state, and, when it comes from a history
+    /// of this very interface system (the same fingerprint), from its
+    /// interface factor too, so that the steps go on bit for bit. A
+    /// factor grown from another system (another geometry, stiffness or
+    /// contact modulus under the same contact mesh) would solve the wrong
+    /// interface problem: this history's own factor stays, and the loop
+    /// updates it to the state's set.
     pub fn set_state(&mut self, state: &StepState) -> Result<()> {
-        let n = self.warm.len();
-        if state.warm.len() != n || state.factor_active.len() != n {
-            return Err(Error::argument(format!(
-                "the contact state is of {} contact parts, the model has {n}",
-                state.warm.len()
-            )));
+        let parts = self.warm.len();
+        let elements = if self.frictional { parts / 2 } else { parts };
+        state.fits(elements, self.frictional)?;
+        if state.base == Some(self.base) {
+            let condensed = self.state.as_mut().expect("the condensed state is back");
+            condensed.system.restore_factor(&state.factor)?;
+            condensed.factor_active.clone_from(&state.factor_active);
         }
-        let f = &state.friction;
-        let elements = if self.frictional { n / 2 } else { 0 };
-        let sizes = [f.anchors.len(), f.loads.len()];
-        if sizes.iter().any(|&m| m != 0 && m != elements) || sizes[0] != sizes[1] {
-            return Err(Error::argument(format!(
-                "the contact state's friction data ({} / {} values) do not fit {elements} \
-                 frictional contact elements",
-                sizes[0], sizes[1]
-            )));
-        }
-        let condensed = self.state.as_mut().expect("the condensed state is back");
-        condensed.system.restore_factor(&state.factor)?;
-        condensed.factor_active.clone_from(&state.factor_active);
         self.warm.clone_from(&state.warm);
         self.friction.clone_from(&state.friction);
         Ok(())
@@ -249,7 +286,7 @@ pub(crate) fn step(
     let key = Key::new(stiffness, options);
     if !(t.is_finite() && t.abs() <= 1e300) {
         return Err(Error::argument(format!(
-            "load_factor = {t:?} must be finite"
+            "load_factor = {t:?} must be finite and at most 1e300 in magnitude"
         )));
     }
     let mut warnings = Vec::new();
@@ -361,6 +398,7 @@ fn begin(
     let (x_load, x_gap) = split_gap(chol, system, (&set, &reference), x)?;
     let t0 = Instant::now();
     let condensed = Condensed::new(chol, interface)?;
+    let base = condensed.factor_fingerprint();
     timings.interface += t0.elapsed().as_secs_f64();
     info.interface_unknowns = condensed.len();
     Ok(History {
@@ -382,6 +420,7 @@ fn begin(
         frictional: set.is_frictional(),
         first: info,
         loads_apart: false,
+        base,
     })
 }
 
@@ -406,17 +445,20 @@ fn assemble_bodies(
 /// `interface` unknowns not worth condensing beside a matrix of `nnz`
 /// values, or `options` that ask for refactorisation.
 fn check_condensable(options: &ContactOptions, interface: usize, nnz: usize) -> Result<()> {
-    if options.refactorize || !Condensed::worthwhile(interface, nnz) {
-        return Err(Error::new(
-            Status::InvalidArgument,
-            format!(
-                "a load history condenses the contact interface: {} interface unknowns are too \
-                 many for it (or `refactorize` is set); solve each step with solve_contact",
-                interface
-            ),
-        ));
-    }
-    Ok(())
+    let why = if options.refactorize {
+        "the options ask for `refactorize`".to_string()
+    } else if !Condensed::worthwhile(interface, nnz) {
+        format!("{interface} interface unknowns are too many for it")
+    } else {
+        return Ok(());
+    };
+    Err(Error::new(
+        Status::InvalidArgument,
+        format!(
+            "a load history condenses the contact interface, and {why}; solve each step with \
+             solve_contact"
+        ),
+    ))
 }
 
 /// K₁ — the bodies `system` holds plus the elements of `reference` in
