@@ -276,6 +276,29 @@ fn a_frictional_contact_state_is_refused_where_no_pair_has_friction() {
     plain.step(1.0, &options).unwrap();
 }
 
+/// A state set for the next step belongs to the contact mesh of the
+/// moment: turning friction on rebuilds B, and the step starts afresh
+/// instead of being refused (it was, at every later step), and says so.
+#[test]
+fn a_restored_state_dropped_by_a_structure_change_warns_and_the_step_starts_afresh() {
+    let options = ContactOptions::default();
+    let mut saved = scene(0.3);
+    saved.step(0.5, &options).unwrap();
+    let state = saved.contact_state().unwrap();
+    let mut model = scene(0.3);
+    model.set_contact_state(&state).unwrap();
+    model.set_friction(0, 0.3).unwrap();
+    model.step(1.0, &options).unwrap();
+    assert!(
+        model
+            .warnings()
+            .iter()
+            .any(|w| w.contains("started afresh")),
+        "{:?}",
+        model.warnings()
+    );
+}
+
 /// Found by the same probe (598 states with one byte changed): a changed
 /// factor value was restored as it was.
 #[test]
