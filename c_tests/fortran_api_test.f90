@@ -6,7 +6,7 @@ program fortran_api_test
   implicit none
   integer, parameter :: dp = c_double
   integer :: passed = 0, failed = 0
-  type(c_ptr) :: m
+  type(c_ptr) :: m, ctx
   ! A 2 x 1 rectangle of 4 triangles (nodes 1..6), body 7; left edge tag 1,
   ! right edge tag 2.
   real(dp) :: xy(12) = [0._dp, 0._dp, 1._dp, 0._dp, 2._dp, 0._dp, 0._dp, 1._dp, 1._dp, 1._dp, 2._dp, 1._dp]
@@ -14,7 +14,7 @@ program fortran_api_test
   integer(c_int) :: body(4) = 7
   integer(c_int) :: edges(4) = [1, 4, 3, 6], tags(2) = [1, 2]
   real(dp) :: u(12), r(12), err
-  integer(c_int) :: status, bad(12)
+  integer(c_int) :: status, bad(12), pair
   type(tfem_solve_info) :: info
   character(len=:), allocatable :: msg
   integer :: i, j
@@ -90,6 +90,14 @@ program fortran_api_test
   call expect(tfem_get_displacements(m, u, int(size(u), c_size_t)) == TFEM_STATUS_OK, 'moved displacements')
   call expect(abs(u(2) - 1e-3_dp) < 1e-15_dp, 'the moved value holds')
   call tfem_destroy(m)
+
+  ! A contact context keeps its own messages, read as a Fortran string.
+  ctx = tfem_contact_create(1_c_int)
+  status = tfem_contact_add_pair(ctx, 0_c_int, 1_c_int, pair)
+  call expect(status == TFEM_STATUS_INVALID_ARGUMENT .and. len(tfem_contact_error_message(ctx)) > 0 &
+      .and. index(tfem_contact_error_message(ctx), 'side') > 0, 'a contact context''s message: ' &
+      //tfem_contact_error_message(ctx))
+  call tfem_contact_destroy(ctx)
 
   write (*, '(a, i0, a, i0, a)') 'fortran_api_test: ', passed, ' passed, ', failed, ' failed'
   write (*, '(i0, a, i0, a)') passed, ' passed, ', failed, ' failed'

@@ -480,14 +480,8 @@ contains
   subroutine ccheck(status, what)
     integer(c_int), intent(in) :: status
     character(len=*), intent(in) :: what
-    character(len=1024) :: msg
-    integer(c_int) :: st
-    integer :: n
     if (status == TFEM_STATUS_OK) return
-    st = tfem_contact_last_error(ctx, msg, len(msg))
-    n = index(msg, c_null_char) - 1
-    if (n < 0) n = len_trim(msg)
-    write (*, '(2a, i0, 2a)') what, ': tfem error ', status, ': ', msg(1:n)
+    write (*, '(2a, i0, 2a)') what, ': tfem error ', status, ': ', tfem_contact_error_message(ctx)
     stop 1
   end subroutine ccheck
 

@@ -53,6 +53,7 @@
 ! - Functions returning a tfem_status return an integer(c_int): compare it with the
 !   TFEM_STATUS_* parameters below. tfem_error_message([model]) returns the last error as a
 !   Fortran string (model omitted: the calling thread's model-free calls);
+!   tfem_contact_error_message(context) that of a contact context;
 !   tfem_warning_message(model, index) and tfem_version_string() return strings too.
 ! - Indices: pass index_base = 1 to tfem_set_mesh (or tfem_load_gmsh) and every node, triangle
 !   and edge number of later calls and messages is 1-based, like Fortran arrays. Numbers that a
@@ -2282,6 +2283,25 @@ contains
       msg(i:i) = buf(i)
     end do
   end function tfem_error_message
+
+  !> The message of the last failed call on the contact context (from
+  !! tfem_contact_create), as a Fortran string: a context keeps its own messages,
+  !! which tfem_error_message, reading a model's, does not see.
+  function tfem_contact_error_message(context) result(msg)
+    type(c_ptr), intent(in) :: context
+    character(len=:), allocatable :: msg
+    character(kind=c_char) :: buf(4096)
+    integer(c_int) :: status
+    integer :: i, n
+    buf(1) = c_null_char
+    status = tfem_contact_last_error(context, buf, size(buf, kind=c_size_t))
+    n = c_strlen(buf)
+    if (status /= TFEM_STATUS_OK .and. status /= TFEM_STATUS_BUFFER_TOO_SMALL) n = 0
+    allocate(character(len=n) :: msg)
+    do i = 1, n
+      msg(i:i) = buf(i)
+    end do
+  end function tfem_contact_error_message
 
   !> Warning number index (0-based) of model, as a Fortran string.
   function tfem_warning_message(model, index) result(msg)

@@ -415,6 +415,7 @@ In Fortran (`use tfem`), where it differs from the C conventions above
 - Functions returning a tfem_status return an integer(c_int): compare it with the
   TFEM_STATUS_* parameters below. tfem_error_message([model]) returns the last error as a
   Fortran string (model omitted: the calling thread's model-free calls);
+  tfem_contact_error_message(context) that of a contact context;
   tfem_warning_message(model, index) and tfem_version_string() return strings too.
 - Indices: pass index_base = 1 to tfem_set_mesh (or tfem_load_gmsh) and every node, triangle
   and edge number of later calls and messages is 1-based, like Fortran arrays. Numbers that a
@@ -932,6 +933,24 @@ fn generate(header: &str) -> String {
          \x20     msg(i:i) = buf(i)\n\
          \x20   end do\n\
          \x20 end function tfem_error_message\n\n\
+         \x20 !> The message of the last failed call on the contact context (from\n\
+         \x20 !! tfem_contact_create), as a Fortran string: a context keeps its own messages,\n\
+         \x20 !! which tfem_error_message, reading a model's, does not see.\n\
+         \x20 function tfem_contact_error_message(context) result(msg)\n\
+         \x20   type(c_ptr), intent(in) :: context\n\
+         \x20   character(len=:), allocatable :: msg\n\
+         \x20   character(kind=c_char) :: buf(4096)\n\
+         \x20   integer(c_int) :: status\n\
+         \x20   integer :: i, n\n\
+         \x20   buf(1) = c_null_char\n\
+         \x20   status = tfem_contact_last_error(context, buf, size(buf, kind=c_size_t))\n\
+         \x20   n = c_strlen(buf)\n\
+         \x20   if (status /= TFEM_STATUS_OK .and. status /= TFEM_STATUS_BUFFER_TOO_SMALL) n = 0\n\
+         \x20   allocate(character(len=n) :: msg)\n\
+         \x20   do i = 1, n\n\
+         \x20     msg(i:i) = buf(i)\n\
+         \x20   end do\n\
+         \x20 end function tfem_contact_error_message\n\n\
          \x20 !> Warning number index (0-based) of model, as a Fortran string.\n\
          \x20 function tfem_warning_message(model, index) result(msg)\n\
          \x20   type(c_ptr), intent(in) :: model\n\
