@@ -604,7 +604,7 @@ impl Model {
             (Some(h), None) => h.step_state(),
             (None, None) => return Err(Error::state("no load step yet: no contact state")),
         };
-        Ok(encode(&state, self.contact_fingerprint()?))
+        Ok(encode(&state, fingerprint_of(&self.contact_mesh()?)))
     }
 
     /// Continues the load history from `bytes` (from
@@ -618,11 +618,12 @@ impl Model {
     /// factor. A structure change before the next step (mesh, boundary
     /// edges, pairs, friction on/off) drops the state, with a warning.
     pub fn set_contact_state(&mut self, bytes: &[u8]) -> Result<()> {
-        let state = decode(bytes, self.contact_fingerprint()?)?;
+        let b = self.contact_mesh()?;
+        let state = decode(bytes, fingerprint_of(&b))?;
         // Without a history to check it against, check it against the
         // contact mesh: its parts are the elements', or twice as many when
         // a pair has friction (and the step's law is frictionless).
-        let elements = self.contact_mesh()?.len();
+        let elements = b.len();
         let frictional = self
             .problem
             .contact_pairs()
@@ -658,23 +659,6 @@ impl Model {
         }
         self.undo = None;
         Ok(())
-    }
-
-    /// A fingerprint of the contact mesh B of the declared pairs.
-    fn contact_fingerprint(&self) -> Result<u64> {
-        let b = self.contact_mesh()?;
-        let mut h = 0xcbf2_9ce4_8422_2325u64;
-        let mut eat = |v: u64| {
-            for byte in v.to_le_bytes() {
-                h = (h ^ byte as u64).wrapping_mul(0x100_0000_01b3);
-            }
-        };
-        eat(b.len() as u64);
-        for e in &b {
-            e.nodes.iter().for_each(|&n| eat(n as u64));
-            eat(e.pair as u64);
-        }
-        Ok(h)
     }
 
     /// The field of the current solution, recovered now if it waits.
@@ -1172,4 +1156,21 @@ fn decode(bytes: &[u8], fingerprint: u64) -> Result<StepState> {
         friction,
         base,
     })
+}
+
+/// A fingerprint of the contact mesh `b` (its elements' nodes and pairs),
+/// which a contact state names so that it is restored into its own.
+fn fingerprint_of(b: &[ContactElement]) -> u64 {
+    let mut h = 0xcbf2_9ce4_8422_2325u64;
+    let mut eat = |v: u64| {
+        for byte in v.to_le_bytes() {
+            h = (h ^ byte as u64).wrapping_mul(0x100_0000_01b3);
+        }
+    };
+    eat(b.len() as u64);
+    for e in b {
+        e.nodes.iter().for_each(|&n| eat(n as u64));
+        eat(e.pair as u64);
+    }
+    h
 }
