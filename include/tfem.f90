@@ -1439,8 +1439,11 @@ module tfem
     !> Declares sides `side_a` and `side_b` (on different bodies) a contact pair: the contact mesh B
     !! is built from their matching nodes, or by triangulating the strip between them. Two sides
     !! whose outward normals point the same way (one of them given clockwise) are refused with
-    !! TFEM_STATUS_INVALID_CONTACT naming both. Writes the pair's index (0-based) to `pair` (may be
-    !! NULL). Fortran: `pair` is OPTIONAL: omit it to pass NULL.
+    !! TFEM_STATUS_INVALID_CONTACT naming both. A pair of two sides already paired (either way
+    !! round) is refused with TFEM_STATUS_INVALID_ARGUMENT naming it: it would double their contact.
+    !! Messages name a side by its index and tag ("side 0 (tag 101)") and nodes by the host's
+    !! numbers. Writes the pair's index (0-based) to `pair` (may be NULL). Fortran: `pair` is
+    !! OPTIONAL: omit it to pass NULL.
     function tfem_contact_add_pair(context, side_a, side_b, pair) &
         bind(C, name="tfem_contact_add_pair") result(status)
       import
@@ -1455,8 +1458,10 @@ module tfem
   interface
     !> Declares a pair with the host's own contact mesh B: `n_triangles` triangles `connectivity` (3
     !! host node numbers each) over the interface nodes of the two sides; wrongly oriented ones are
-    !! turned. Writes the pair's index (0-based) to `pair` (may be NULL). Fortran: `pair` is
-    !! OPTIONAL: omit it to pass NULL.
+    !! turned. A triangle given twice (the same three nodes) is refused (TFEM_STATUS_INVALID_CONTACT
+    !! naming both triangles), and so is a pair already declared, as by `tfem_contact_add_pair`.
+    !! Writes the pair's index (0-based) to `pair` (may be NULL). Fortran: `pair` is OPTIONAL: omit
+    !! it to pass NULL.
     function tfem_contact_add_pair_with_mesh(context, side_a, side_b, n_triangles, connectivity, pair) &
         bind(C, name="tfem_contact_add_pair_with_mesh") result(status)
       import
@@ -1530,8 +1535,10 @@ module tfem
     !! load of initial gaps) to its right-hand side; a Newton host adds the values to its tangent
     !! and the residual at its current u to its residual. The contact law is linear in u for a given
     !! active set: the values depend on the active set only, not on `u`, and change only when
-    !! `tfem_contact_update` or `tfem_contact_set_active` changes the set. Allocates nothing.
-    !! Fortran: `values` and `residual` are OPTIONAL: omit them to pass NULL. `u_length`,
+    !! `tfem_contact_update` or `tfem_contact_set_active` changes the set. A non-finite value in `u`
+    !! is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node and the value); a result that
+    !! overflows is TFEM_STATUS_NUMERICAL_FAILURE; either way the buffers are unchanged. Allocates
+    !! nothing. Fortran: `values` and `residual` are OPTIONAL: omit them to pass NULL. `u_length`,
     !! `values_length` and `residual_length` take integer(c_size_t) or default integers (kind
     !! tfem_length_kind), all of one kind; a negative length is passed as 0.
     function tfem_contact_evaluate(context, u, u_length, values, values_length, residual, residual_length) &
@@ -1574,9 +1581,12 @@ module tfem
     !> Adds per-node values `residual` (2 per interface node, as `tfem_contact_evaluate` writes
     !! them) into the host's vector `host_vector` (`n_equations` values, entry i is equation i +
     !! index_base); DOFs without an equation are left out. A non-finite value in `residual` is
-    !! refused (TFEM_STATUS_INVALID_ARGUMENT naming the node); `host_vector` is then unchanged.
-    !! Fortran: `residual_length` and `n_equations` take integer(c_size_t) or default integers (kind
-    !! tfem_length_kind), all of one kind; a negative length is passed as 0.
+    !! refused (TFEM_STATUS_INVALID_ARGUMENT naming the node), and so is a sum that would not be
+    !! finite: an entry of `host_vector` that is not finite already (TFEM_STATUS_INVALID_ARGUMENT),
+    !! or an overflow (TFEM_STATUS_NUMERICAL_FAILURE), naming the node and the equation.
+    !! `host_vector` is then unchanged. Fortran: `residual_length` and `n_equations` take
+    !! integer(c_size_t) or default integers (kind tfem_length_kind), all of one kind; a negative
+    !! length is passed as 0.
     function tfem_contact_scatter_add(context, residual, residual_length, host_vector, n_equations) &
         bind(C, name="tfem_contact_scatter_add") result(status)
       import
@@ -1599,7 +1609,8 @@ module tfem
     !! the history, the set unchanged. Call it with converged displacements of the host's problem
     !! for the current set (after its Newton loop, not at every Newton iteration): the test judges
     !! the solution, and a mid-Newton iterate may switch elements that the converged state would
-    !! not. Fortran: `changed` is OPTIONAL: omit it to pass NULL. `u_length` takes an
+    !! not. A non-finite value in `u` is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node and
+    !! the value). Fortran: `changed` is OPTIONAL: omit it to pass NULL. `u_length` takes an
     !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
     !! as 0.
     function tfem_contact_update(context, u, u_length, changed) &
@@ -1659,8 +1670,12 @@ module tfem
     !> Copies the normal gap at every interface node (n_nodes values, model length units) for the
     !! displacements `u` (2 per interface node): the smallest, over the elements of B at the node,
     !! of the distance of an element's apex from its interface edge (linearised; negative:
-    !! interpenetration). Fortran: `u_length` and `length` take integer(c_size_t) or default
-    !! integers (kind tfem_length_kind), all of one kind; a negative length is passed as 0.
+    !! interpenetration). A node in no element of B (on a part of its side that faces nothing of the
+    !! other, beyond the other side's end) has no gap and reads 0, as if touching: it is not in
+    !! contact, and no contact force acts there; tell such nodes by their absence from
+    !! `tfem_contact_elements`. A non-finite value in `u` is refused (TFEM_STATUS_INVALID_ARGUMENT
+    !! naming the node and the value). Fortran: `u_length` and `length` take integer(c_size_t) or
+    !! default integers (kind tfem_length_kind), all of one kind; a negative length is passed as 0.
     function tfem_contact_gaps(context, u, u_length, out, length) &
         bind(C, name="tfem_contact_gaps") result(status)
       import
@@ -1676,9 +1691,10 @@ module tfem
 
   interface tfem_contact_pressures
     !> Copies the contact pressure of every element of B (n_elements values; a stress, positive in
-    !! compression, zero when inactive) for the displacements `u` (2 per interface node). Fortran:
-    !! `u_length` and `length` take integer(c_size_t) or default integers (kind tfem_length_kind),
-    !! all of one kind; a negative length is passed as 0.
+    !! compression, zero when inactive) for the displacements `u` (2 per interface node). A
+    !! non-finite value in `u` is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node and the
+    !! value). Fortran: `u_length` and `length` take integer(c_size_t) or default integers (kind
+    !! tfem_length_kind), all of one kind; a negative length is passed as 0.
     function tfem_contact_pressures(context, u, u_length, out, length) &
         bind(C, name="tfem_contact_pressures") result(status)
       import
@@ -1743,7 +1759,7 @@ module tfem
   interface
     !> Writes the contact length of the current active set to `length`: half the summed
     !! interface-edge length of the active elements of B (each point of an interface is covered by
-    !! one element with its edge on each side), model length units.
+    !! one element with its edge on each side), model length units; +0.0 when no element is active.
     function tfem_contact_length(context, length) &
         bind(C, name="tfem_contact_length") result(status)
       import

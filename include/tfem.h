@@ -1081,8 +1081,11 @@ enum tfem_status tfem_contact_add_side(struct tfem_contact *context,
  * pair: the contact mesh B is built from their matching nodes, or by
  * triangulating the strip between them. Two sides whose outward normals
  * point the same way (one of them given clockwise) are refused with
- * TFEM_STATUS_INVALID_CONTACT naming both. Writes the pair's index (0-based)
- * to `pair` (may be NULL).
+ * TFEM_STATUS_INVALID_CONTACT naming both. A pair of two sides already
+ * paired (either way round) is refused with TFEM_STATUS_INVALID_ARGUMENT
+ * naming it: it would double their contact. Messages name a side by its
+ * index and tag ("side 0 (tag 101)") and nodes by the host's numbers.
+ * Writes the pair's index (0-based) to `pair` (may be NULL).
  */
 enum tfem_status tfem_contact_add_pair(struct tfem_contact *context,
                                        int side_a,
@@ -1092,8 +1095,11 @@ enum tfem_status tfem_contact_add_pair(struct tfem_contact *context,
 /**
  * Declares a pair with the host's own contact mesh B: `n_triangles`
  * triangles `connectivity` (3 host node numbers each) over the interface
- * nodes of the two sides; wrongly oriented ones are turned. Writes the
- * pair's index (0-based) to `pair` (may be NULL).
+ * nodes of the two sides; wrongly oriented ones are turned. A triangle
+ * given twice (the same three nodes) is refused
+ * (TFEM_STATUS_INVALID_CONTACT naming both triangles), and so is a pair
+ * already declared, as by `tfem_contact_add_pair`. Writes the pair's
+ * index (0-based) to `pair` (may be NULL).
  */
 enum tfem_status tfem_contact_add_pair_with_mesh(struct tfem_contact *context,
                                                  int side_a,
@@ -1145,7 +1151,10 @@ enum tfem_status tfem_contact_pattern(struct tfem_contact *context,
  * current u to its residual. The contact law is linear in u for a given
  * active set: the values depend on the active set only, not on `u`, and
  * change only when `tfem_contact_update` or `tfem_contact_set_active`
- * changes the set. Allocates nothing.
+ * changes the set. A non-finite value in `u` is refused
+ * (TFEM_STATUS_INVALID_ARGUMENT naming the node and the value); a result
+ * that overflows is TFEM_STATUS_NUMERICAL_FAILURE; either way the buffers
+ * are unchanged. Allocates nothing.
  */
 enum tfem_status tfem_contact_evaluate(struct tfem_contact *context,
                                        const double *u,
@@ -1174,8 +1183,11 @@ enum tfem_status tfem_contact_gather(struct tfem_contact *context,
  * `tfem_contact_evaluate` writes them) into the host's vector
  * `host_vector` (`n_equations` values, entry i is equation i +
  * index_base); DOFs without an equation are left out. A non-finite value
- * in `residual` is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node);
- * `host_vector` is then unchanged.
+ * in `residual` is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node),
+ * and so is a sum that would not be finite: an entry of `host_vector`
+ * that is not finite already (TFEM_STATUS_INVALID_ARGUMENT), or an
+ * overflow (TFEM_STATUS_NUMERICAL_FAILURE), naming the node and the
+ * equation. `host_vector` is then unchanged.
  */
 enum tfem_status tfem_contact_scatter_add(struct tfem_contact *context,
                                           const double *residual,
@@ -1194,7 +1206,8 @@ enum tfem_status tfem_contact_scatter_add(struct tfem_contact *context,
  * it with converged displacements of the host's problem for the current
  * set (after its Newton loop, not at every Newton iteration): the test
  * judges the solution, and a mid-Newton iterate may switch elements that
- * the converged state would not.
+ * the converged state would not. A non-finite value in `u` is refused
+ * (TFEM_STATUS_INVALID_ARGUMENT naming the node and the value).
  */
 enum tfem_status tfem_contact_update(struct tfem_contact *context,
                                      const double *u,
@@ -1225,7 +1238,12 @@ enum tfem_status tfem_contact_set_active(struct tfem_contact *context,
  * length units) for the displacements `u` (2 per interface node): the
  * smallest, over the elements of B at the node, of the distance of an
  * element's apex from its interface edge (linearised; negative:
- * interpenetration).
+ * interpenetration). A node in no element of B (on a part of its side
+ * that faces nothing of the other, beyond the other side's end) has no
+ * gap and reads 0, as if touching: it is not in contact, and no contact
+ * force acts there; tell such nodes by their absence from
+ * `tfem_contact_elements`. A non-finite value in `u` is refused
+ * (TFEM_STATUS_INVALID_ARGUMENT naming the node and the value).
  */
 enum tfem_status tfem_contact_gaps(struct tfem_contact *context,
                                    const double *u,
@@ -1236,7 +1254,8 @@ enum tfem_status tfem_contact_gaps(struct tfem_contact *context,
 /**
  * Copies the contact pressure of every element of B (n_elements values;
  * a stress, positive in compression, zero when inactive) for the
- * displacements `u` (2 per interface node).
+ * displacements `u` (2 per interface node). A non-finite value in `u` is
+ * refused (TFEM_STATUS_INVALID_ARGUMENT naming the node and the value).
  */
 enum tfem_status tfem_contact_pressures(struct tfem_contact *context,
                                         const double *u,
@@ -1273,7 +1292,7 @@ enum tfem_status tfem_contact_element_blocks(struct tfem_contact *context,
  * Writes the contact length of the current active set to `length`: half
  * the summed interface-edge length of the active elements of B (each
  * point of an interface is covered by one element with its edge on each
- * side), model length units.
+ * side), model length units; +0.0 when no element is active.
  */
 enum tfem_status tfem_contact_length(struct tfem_contact *context, double *length);
 

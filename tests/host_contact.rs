@@ -319,8 +319,8 @@ fn a_side_given_clockwise_is_refused_naming_both_sides() {
         assert_eq!(err.status(), Status::InvalidContact);
         let m = err.message();
         assert!(
-            m.contains(&format!("side {TAG_CONTACT_LOWER}"))
-                && m.contains(&format!("side {TAG_CONTACT_UPPER}"))
+            m.contains(&format!("side 0 (tag {TAG_CONTACT_LOWER})"))
+                && m.contains(&format!("side 1 (tag {TAG_CONTACT_UPPER})"))
                 && m.contains("left"),
             "{m}"
         );
@@ -336,7 +336,53 @@ fn a_side_with_one_edge_turned_around_is_refused_naming_the_edge() {
     assert_eq!(err.status(), Status::InvalidContact);
     let m = err.message();
     assert!(
-        m.contains(&format!("side {TAG_CONTACT_LOWER}")) && m.contains("edge"),
+        m.contains(&format!("side 0 (tag {TAG_CONTACT_LOWER})")) && m.contains("edge 3"),
         "{m}"
     );
+}
+
+/// Side a (body 1, below) over x ∈ [−3, 2] on y = 0, side b (body 2,
+/// above) over [0, 2] on y = 0.5: the nodes of a at x = −3, −2, −1 face
+/// nothing and are in no element of B. They read a gap of 0 (documented:
+/// no gap, not in contact), the nodes that face b read the gap 0.5.
+#[test]
+fn a_node_facing_nothing_is_in_no_element_and_reads_a_zero_gap() {
+    let material = tfem::Material::new(1e9, 0.3, tfem::PlaneMode::Strain, "side").unwrap();
+    let mut hc = HostContact::new(0, ContactOptions::default()).unwrap();
+    let ids_a: Vec<i64> = (40..46).collect();
+    let xy_a: Vec<[f64; 2]> = (0..6).map(|i| [i as f64 - 3.0, 0.0]).collect();
+    let eq_a: Vec<[i64; 2]> = (0..6).map(|i| [2 * i, 2 * i + 1]).collect();
+    let edges_a: Vec<[i64; 2]> = (40..45).map(|v| [v + 1, v]).collect();
+    let a = hc
+        .add_side(1, 1, material, &ids_a, &xy_a, &eq_a, &edges_a)
+        .unwrap();
+    let xy_b = [[0.0, 0.5], [1.0, 0.5], [2.0, 0.5]];
+    let eq_b = [[12, 13], [14, 15], [16, 17]];
+    let b = hc
+        .add_side(
+            2,
+            2,
+            material,
+            &[20, 21, 22],
+            &xy_b,
+            &eq_b,
+            &[[20, 21], [21, 22]],
+        )
+        .unwrap();
+    hc.add_pair(a, b).unwrap();
+    let n = hc.n_nodes();
+    let mut gaps = vec![f64::NAN; n];
+    hc.gaps(&vec![0.0; 2 * n], &mut gaps).unwrap();
+    let in_b: Vec<bool> = {
+        let elements = hc.elements().unwrap();
+        (0..n)
+            .map(|v| elements.iter().any(|e| e.nodes.contains(&v)))
+            .collect()
+    };
+    for (v, &id) in hc.nodes().iter().enumerate() {
+        let facing_nothing = [40, 41, 42].contains(&id);
+        assert_eq!(in_b[v], !facing_nothing, "node {id}");
+        let expected = if facing_nothing { 0.0 } else { 0.5 };
+        assert!((gaps[v] - expected).abs() < 1e-12, "node {id}: {}", gaps[v]);
+    }
 }

@@ -25,7 +25,7 @@ use std::collections::HashMap;
 use super::mesh::{Nodes, Side, check_facing, checked_triangles, strip};
 use super::set::{ActiveSet, ContactSet, element_laws, softer};
 use super::{ContactElement, ContactOptions};
-use crate::error::{Error, Result, ensure_finite, out_of_memory, reserve_more, reserved};
+use crate::error::{Error, Result, Status, ensure_finite, out_of_memory, reserve_more, reserved};
 use crate::fem::material::Material;
 
 /// A pair of sides, with the contact mesh the host may give for it.
@@ -60,6 +60,9 @@ pub struct HostContact {
     node_id: Vec<i64>,
     local: HashMap<i64, usize>,
     equation: Vec<[Option<usize>; 2]>,
+    /// Whether two DOFs share an equation (a host's tied DOFs): then
+    /// [`HostContact::scatter_add`] checks running sums.
+    shared_equations: bool,
     sides: Vec<(Side, Material)>,
     pairs: Vec<HostPair>,
     built: Option<Built>,
@@ -95,6 +98,7 @@ impl HostContact {
             node_id: Vec::new(),
             local: HashMap::new(),
             equation: Vec::new(),
+            shared_equations: false,
             sides: Vec::new(),
             pairs: Vec::new(),
             built: None,
@@ -122,7 +126,10 @@ impl HostContact {
     /// Adds per-node values (2 per interface node, as a residual) into the
     /// host's vector indexed by equation (index base applied); DOFs without
     /// an equation are left out; a non-finite value is refused, naming its
-    /// node. Checked before anything is added.
+    /// node, and so is a sum that would not be finite (an entry of the
+    /// host's vector that is not finite: `InvalidArgument`; an overflow:
+    /// `NumericalFailure`), naming the node and the equation. Checked
+    /// before anything is added.
     pub fn scatter_add(&self, per_node: &[f64], host: &mut [f64]) -> Result<()> {
         if per_node.len() != 2 * self.x.len() {
             return Err(Error::argument(format!(
@@ -138,6 +145,7 @@ impl HostContact {
             |v, c| per_node[2 * v + c],
             |v, c| self.equation[v][c],
         )?;
+        self.check_sums(per_node, host)?;
         for (v, eq) in self.equation.iter().enumerate() {
             for c in 0..2 {
                 if let Some(e) = eq[c] {
@@ -173,6 +181,60 @@ impl HostContact {
                         self.node_id[v]
                     )));
                 }
+            }
+        }
+        Ok(())
+    }
+
+    /// Refuses the addition of `per_node` into `host` (as
+    /// [`HostContact::scatter_add`] makes it) when an entry it touches is
+    /// not finite before, or would not be after: the sums in the order of
+    /// the addition, so that the host's vector is not written on error.
+    /// Where no two DOFs share an equation (the common case, known from
+    /// [`HostContact::add_side`]) one pass over the interface DOFs without
+    /// allocation; else the running sums of the shared equations.
+    fn check_sums(&self, per_node: &[f64], host: &[f64]) -> Result<()> {
+        let mut running: HashMap<usize, f64> = HashMap::new();
+        if self.shared_equations {
+            let n = 2 * self.x.len();
+            running
+                .try_reserve(n)
+                .map_err(|_| out_of_memory::<(usize, f64)>(n, "the sums of `residual`"))?;
+        }
+        for (v, eq) in self.equation.iter().enumerate() {
+            for (c, e) in eq.iter().enumerate() {
+                let Some(e) = *e else { continue };
+                let before = match self.shared_equations {
+                    true => *running.entry(e).or_insert(host[e]),
+                    false => host[e],
+                };
+                let sum = before + per_node[2 * v + c];
+                if self.shared_equations {
+                    running.insert(e, sum);
+                }
+                if sum.is_finite() {
+                    continue;
+                }
+                let at = format!(
+                    "equation {} ({} of interface node {})",
+                    e + self.base,
+                    ["x", "y"][c],
+                    self.node_id[v]
+                );
+                return Err(match host[e].is_finite() {
+                    false => Error::argument(format!(
+                        "`host_vector` holds {} at {at}, not finite",
+                        host[e]
+                    )),
+                    true => Error::new(
+                        Status::NumericalFailure,
+                        format!(
+                            "adding `residual` into `host_vector` at {at} overflows \
+                             ({before:e} + {:e}): rescale the model or its loads",
+                            per_node[2 * v + c]
+                        ),
+                    ),
+                });
             }
         }
         Ok(())
@@ -214,9 +276,13 @@ impl HostContact {
         edges: &[[i64; 2]],
     ) -> Result<usize> {
         self.check_open()?;
+        // The side in messages, as every message of the context names it
+        // (`Side::name`): its index, which pairs are declared with, and
+        // the host's tag.
+        let side_name = format!("side {} (tag {tag})", self.sides.len());
         if xy.len() != nodes.len() || equations.len() != nodes.len() {
             return Err(Error::argument(format!(
-                "side {tag}: {} nodes but {} coordinates and {} equation pairs",
+                "{side_name}: {} nodes but {} coordinates and {} equation pairs",
                 nodes.len(),
                 xy.len(),
                 equations.len()
@@ -224,7 +290,7 @@ impl HostContact {
         }
         // Every structure sized by the caller's counts is reserved
         // fallibly before any work (`error::reserved`).
-        let what = format!("side {tag}");
+        let what = side_name.clone();
         let mut fresh: Vec<(i64, [f64; 2], [Option<usize>; 2])> = reserved(nodes.len(), &what)?;
         let mut pairs = reserved(edges.len(), &what)?;
         let mut x = reserved(self.x.len() + nodes.len(), &what)?;
@@ -243,7 +309,7 @@ impl HostContact {
             });
             if !(p[0].is_finite() && p[1].is_finite()) {
                 return Err(Error::argument(format!(
-                    "side {tag}: node {id} has coordinates ({:?}, {:?})",
+                    "{side_name}: node {id} has coordinates ({:?}, {:?})",
                     p[0], p[1]
                 )));
             }
@@ -255,7 +321,7 @@ impl HostContact {
                     };
                     if x0 != p || e0 != eq {
                         return Err(Error::argument(format!(
-                            "side {tag}: node {id} (entry {}) is given again with other \
+                            "{side_name}: node {id} (entry {}) is given again with other \
                              coordinates or equations",
                             i + self.base
                         )));
@@ -275,20 +341,33 @@ impl HostContact {
             let find = |id: i64| {
                 local.get(&id).copied().ok_or_else(|| {
                     Error::argument(format!(
-                        "side {tag}: edge {} names node {id}, not one of the side's nodes",
+                        "{side_name}: edge {} names node {id}, not one of the side's nodes",
                         e + self.base
                     ))
                 })
             };
             pairs.push([find(p)?, find(q)?]);
         }
-        let side = Side::from_edges(&x, self.base, tag, body, &pairs)?;
+        let mut ids = reserved(x.len(), &what)?;
+        ids.extend_from_slice(&self.node_id);
+        ids.extend(fresh.iter().map(|f| f.0));
+        let named = Nodes {
+            x: &x,
+            base: self.base,
+            ids: Some(&ids),
+        };
+        let side = Side::from_edges(named, self.sides.len(), tag, body, &pairs)?;
+        let n_dofs = 2 * (self.equation.len() + fresh.len());
+        let equations = self.equation.iter().chain(fresh.iter().map(|f| &f.2));
+        let shared =
+            self.shared_equations || shares_equations(equations.flatten().copied(), n_dofs, &what)?;
         self.x = x;
         for (id, _, eq) in fresh {
             self.node_id.push(id);
             self.equation.push(eq);
         }
         self.local = local;
+        self.shared_equations = shared;
         self.sides.push((side, material));
         Ok(self.sides.len() - 1)
     }
@@ -297,14 +376,16 @@ impl HostContact {
     /// on different bodies) a contact pair: B is built from their matching
     /// nodes, or by triangulating the strip between them. Two sides whose
     /// normals point the same way where they face each other (one given
-    /// clockwise) are refused, naming both ([`check_facing`]). Returns the
-    /// pair's index.
+    /// clockwise) are refused, naming both ([`check_facing`]); so are two
+    /// sides already paired (either way round: their contact would count
+    /// twice). Returns the pair's index.
     pub fn add_pair(&mut self, a: usize, b: usize) -> Result<usize> {
         self.add_pair_with(a, b, None)
     }
 
     /// Declares a pair with the contact mesh B the host gives: triangles
-    /// over interface nodes of the two sides (host numbers). Returns the
+    /// over interface nodes of the two sides (host numbers), each given
+    /// once (a repeated triangle is refused, naming both). Returns the
     /// pair's index.
     pub fn add_pair_with_mesh(
         &mut self,
@@ -347,8 +428,23 @@ impl HostContact {
         let (sa, sb) = (&self.sides[a].0, &self.sides[b].0);
         if sa.body == sb.body {
             return Err(Error::contact(format!(
-                "sides {a} and {b} are both on body {}: self-contact is not supported",
+                "{} and {} are both on body {}: self-contact is not supported",
+                sa.name(),
+                sb.name(),
                 sa.body
+            )));
+        }
+        // A pair declared twice (either way round) would be two copies of
+        // its B, doubling the contact stiffness, residual and length.
+        if let Some(p) = self
+            .pairs
+            .iter()
+            .position(|p| p.sides == [a, b] || p.sides == [b, a])
+        {
+            return Err(Error::argument(format!(
+                "contact pair ({a}, {b}) of {} and {} is already declared (pair {p})",
+                sa.name(),
+                sb.name()
             )));
         }
         // Build it now, so that a bad pair is reported by this call.
@@ -374,6 +470,7 @@ impl HostContact {
         let nodes = Nodes {
             x: &self.x,
             base: self.base,
+            ids: Some(&self.node_id),
         };
         let (a, b) = (&self.sides[pair.sides[0]].0, &self.sides[pair.sides[1]].0);
         // The host's sides carry the normals it gave (a mesh's come from
@@ -505,17 +602,18 @@ impl HostContact {
     }
 
     /// The contact length of the current active set: half the summed
-    /// interface-edge length of the active elements.
+    /// interface-edge length of the active elements (+0.0 when none is).
     pub fn contact_length(&mut self) -> Result<f64> {
         let b = self.built()?;
         let active = b.active.active();
+        // Folded from +0.0: `Sum` for f64 starts from −0.0, which an empty
+        // active set would return.
         Ok(b.set
             .elements()
             .iter()
             .zip(active)
             .filter(|(_, a)| **a)
-            .map(|(e, _)| 0.5 * e.edge_length)
-            .sum())
+            .fold(0.0, |sum, (e, _)| sum + 0.5 * e.edge_length))
     }
 
     /// The active flag of every element of B.
@@ -546,7 +644,8 @@ impl HostContact {
         Ok(())
     }
 
-    /// Checks a per-node displacement array (2 per interface node).
+    /// Checks a per-node displacement array (2 per interface node): its
+    /// length, and every value finite (`InvalidArgument` naming the node).
     fn check_u(&self, u: &[f64]) -> Result<()> {
         if u.len() != 2 * self.x.len() {
             return Err(Error::argument(format!(
@@ -556,8 +655,10 @@ impl HostContact {
                 2 * self.x.len()
             )));
         }
-        let name = |v: usize| format!("interface node {}", self.node_id[v]);
-        ensure_finite(u.iter().copied(), 2, "displacement", name)
+        // A non-finite displacement is the caller's input, not an
+        // overflow of tfem's: refused as such, naming the node.
+        let equation = |v: usize, c: usize| self.equation[v][c];
+        self.check_finite("u", |v, c| u[2 * v + c], equation)
     }
 
     /// The per-node displacements of the host's solution vector `u_eq`
@@ -589,7 +690,9 @@ impl HostContact {
     /// tangent's values in the order of [`HostContact::pattern`] (zeros for
     /// inactive elements) into `values` when given, and the residual
     /// Σ_active (K_e u_e − f0_e), 2 per interface node, into `residual` when
-    /// given. Allocates nothing.
+    /// given. A non-finite `u` is refused (`InvalidArgument`, naming the
+    /// node and the value; so in every call taking `u`), a result that
+    /// overflows is `NumericalFailure`. Allocates nothing.
     pub fn evaluate(
         &mut self,
         u: &[f64],
@@ -693,7 +796,10 @@ impl HostContact {
     /// The normal gap at every interface node for the displacements `u`
     /// (linearised; negative: interpenetration): the smallest, over the
     /// elements of B at the node, of the distance of an element's apex from
-    /// its interface edge.
+    /// its interface edge. A node in no element of B (on a part of its side
+    /// beyond the other side's end, facing nothing) has no gap and reads 0:
+    /// it is not in contact (no force acts there); such nodes are those
+    /// absent from [`HostContact::elements`].
     pub fn gaps(&mut self, u: &[f64], out: &mut [f64]) -> Result<()> {
         self.check_u(u)?;
         let n = self.x.len();
@@ -765,4 +871,17 @@ impl HostContact {
         }
         Ok(())
     }
+}
+
+/// Whether two of the `equations` (those of every interface DOF, `None`
+/// without one; `n` of them) are the same: a host's tied DOFs.
+fn shares_equations(
+    mut equations: impl Iterator<Item = Option<usize>>,
+    n: usize,
+    what: &str,
+) -> Result<bool> {
+    let mut seen = std::collections::HashSet::new();
+    seen.try_reserve(n)
+        .map_err(|_| out_of_memory::<usize>(n, what))?;
+    Ok(!equations.all(|e| e.is_none_or(|e| seen.insert(e))))
 }

@@ -234,7 +234,7 @@ mod tests {
     fn a_uniform_conforming_interface_keeps_the_seeds_jmin_to_the_bit() {
         let xs: Vec<f64> = (0..=16).map(|i| i as f64 / 16.0).collect();
         let (x, a, b) = straight_sides(&xs, &xs);
-        let nodes = Nodes { x: &x, base: 0 };
+        let nodes = Nodes::new(&x, 0);
         let elements = conforming(nodes, 0, &a, &b).unwrap();
         let lambda = 1.0;
         for (el, t) in elements.iter().zip(contact_jmins(&elements, lambda)) {
@@ -249,7 +249,7 @@ mod tests {
         let xa = [0.0, 0.17, 0.43, 0.58, 0.81, 1.0];
         let xb = [0.0, 0.12, 0.33, 0.41, 0.62, 0.7, 0.93, 1.0];
         let (x, a, b) = straight_sides(&xa, &xb);
-        let nodes = Nodes { x: &x, base: 0 };
+        let nodes = Nodes::new(&x, 0);
         let elements = nonconforming(nodes, 0, &a, &b).unwrap();
         let (e_c, lambda) = (2.0, 3.0);
         let soft = Material::new(e_c, 0.3, PlaneMode::Strain, "soft").unwrap();

@@ -6,7 +6,7 @@
 use std::collections::{HashMap, HashSet};
 
 use super::{ContactElement, ContactPair};
-use crate::error::{Error, Result, reserved};
+use crate::error::{Error, Result, out_of_memory, reserved};
 use crate::fem::element::TriGeometry;
 use crate::fem::mesh::Mesh;
 
@@ -19,6 +19,10 @@ pub struct Side {
     pub tag: i32,
     /// The body the side bounds.
     pub body: i32,
+    /// The side's index in the host code's context
+    /// ([`crate::contact::HostContact::add_side`]), `None` for a side of a
+    /// mesh (known by its tag alone).
+    index: Option<usize>,
     nodes: HashSet<usize>,
     /// edge (min, max) -> outward normal of the body
     edges: HashMap<(usize, usize), [f64; 2]>,
@@ -35,28 +39,34 @@ impl Side {
         side_of(mesh, tag)
     }
 
-    /// The side of body `body` made of `edges` (node pairs indexing `x`),
-    /// each given with its body on the left of p → q (the
-    /// counter-clockwise orientation of a body's boundary). Refuses an
-    /// edge of zero length, given twice, or running against its neighbour
-    /// (a node that starts or ends two edges), naming it (in `base`).
+    /// Side `index` of a host code's context, of body `body`, made of
+    /// `edges` (node pairs indexing `nodes`), each given with its body on
+    /// the left of p → q (the counter-clockwise orientation of a body's
+    /// boundary). Refuses an edge of zero length, given twice, or running
+    /// against its neighbour (a node that starts or ends two edges), naming
+    /// it (its position in `base`, its nodes as [`Nodes::name`] gives them).
     pub fn from_edges(
-        x: &[[f64; 2]],
-        base: usize,
+        nodes: Nodes<'_>,
+        index: usize,
         tag: i32,
         body: i32,
         edges: &[[usize; 2]],
     ) -> Result<Side> {
+        let (x, base) = (nodes.x, nodes.base);
         let mut side = Side {
             tag,
             body,
+            index: Some(index),
             nodes: HashSet::new(),
             edges: HashMap::new(),
             oriented: Vec::new(),
             node_normals: HashMap::new(),
         };
         if edges.is_empty() {
-            return Err(Error::contact(format!("contact side {tag} has no edges")));
+            return Err(Error::contact(format!(
+                "contact {} has no edges",
+                side.name()
+            )));
         }
         // The edge that starts, and the one that ends, at each node: along
         // a chain of consistently oriented edges each node starts and ends
@@ -68,10 +78,11 @@ impl Side {
             let len = dist(xp, xq);
             if len.is_nan() || len <= 0.0 {
                 return Err(Error::contact(format!(
-                    "edge {} of contact side {tag} (nodes {}, {}) has zero length",
+                    "edge {} (nodes {}, {}) of contact {} has zero length",
                     k + base,
-                    p + base,
-                    q + base
+                    nodes.name(p),
+                    nodes.name(q),
+                    side.name()
                 )));
             }
             // Body on the left of p → q: the outward normal is the right
@@ -79,22 +90,24 @@ impl Side {
             let n = [(xq[1] - xp[1]) / len, -(xq[0] - xp[0]) / len];
             if side.edges.insert((p.min(q), p.max(q)), n).is_some() {
                 return Err(Error::contact(format!(
-                    "edge {} of contact side {tag} (nodes {}, {}) is given twice",
+                    "edge {} (nodes {}, {}) of contact {} is given twice",
                     k + base,
-                    p + base,
-                    q + base
+                    nodes.name(p),
+                    nodes.name(q),
+                    side.name()
                 )));
             }
             for (v, seen) in [(p, &mut starts), (q, &mut ends)] {
                 if let Some(j) = seen.insert(v, k) {
                     return Err(Error::contact(format!(
-                        "edge {} of contact side {tag} (nodes {}, {}) runs against edge {} at node {}: \
+                        "edge {} (nodes {}, {}) of contact {} runs against edge {} at node {}: \
                          give every edge with its body on its left (counter-clockwise)",
                         k + base,
-                        p + base,
-                        q + base,
+                        nodes.name(p),
+                        nodes.name(q),
+                        side.name(),
                         j + base,
-                        v + base
+                        nodes.name(v)
                     )));
                 }
             }
@@ -109,6 +122,16 @@ impl Side {
     /// Whether node `v` is on the side.
     pub fn contains(&self, v: usize) -> bool {
         self.nodes.contains(&v)
+    }
+
+    /// The side in messages: `tag 3` for a side of a mesh, `side 0 (tag
+    /// 3)` for a host code's side, whose tag is its own number and whose
+    /// index is what its pairs are declared with.
+    pub fn name(&self) -> String {
+        match self.index {
+            Some(i) => format!("side {i} (tag {})", self.tag),
+            None => format!("tag {}", self.tag),
+        }
     }
 }
 
@@ -211,6 +234,7 @@ fn side_of(mesh: &Mesh, tag: i32) -> Result<Side> {
     let mut side = Side {
         tag,
         body: 0,
+        index: None,
         nodes: HashSet::new(),
         edges: HashMap::new(),
         oriented: Vec::new(),
@@ -269,21 +293,35 @@ fn side_of(mesh: &Mesh, tag: i32) -> Result<Side> {
     }
 }
 
-/// The node coordinates B is built on and the index base its messages use.
+/// The node coordinates B is built on and how its messages name nodes.
 #[derive(Clone, Copy)]
 pub struct Nodes<'a> {
     /// Coordinates of every node an element of B may use.
     pub x: &'a [[f64; 2]],
     /// The index base of messages.
     pub base: usize,
+    /// The caller's own number of each node, where it is not its index
+    /// plus `base` (a host code's node numbers); `None`: the index.
+    pub ids: Option<&'a [i64]>,
 }
 
 impl<'a> Nodes<'a> {
+    /// The nodes `x`, named by their index plus `base`.
+    pub fn new(x: &'a [[f64; 2]], base: usize) -> Nodes<'a> {
+        Nodes { x, base, ids: None }
+    }
+
     /// The nodes of a mesh.
     pub fn of(mesh: &'a Mesh) -> Nodes<'a> {
-        Nodes {
-            x: mesh.nodes(),
-            base: mesh.index_base(),
+        Nodes::new(mesh.nodes(), mesh.index_base())
+    }
+
+    /// Node `v` in messages: the caller's number of it (in the index base
+    /// in use), never a position inside a side or a pair.
+    pub fn name(&self, v: usize) -> i64 {
+        match self.ids {
+            Some(ids) => ids[v],
+            None => (v + self.base) as i64,
         }
     }
 
@@ -452,8 +490,8 @@ impl AxisOrder {
 /// [`build_conforming`]. Refuses, naming the node, a node of either side
 /// left without a match, or a node of side a matched twice.
 fn match_nodes(nodes: Nodes<'_>, a: &Side, b: &Side) -> Result<HashMap<usize, usize>> {
-    let (tag_a, tag_b) = (a.tag, b.tag);
-    let (x, base) = (nodes.x, nodes.base);
+    let (name_a, name_b) = (a.name(), b.name());
+    let x = nodes.x;
     let scales = Scales::of(x, a, b);
     let order = AxisOrder::of(x, a);
     let mut partner_of_a: HashMap<usize, usize> = HashMap::new();
@@ -473,10 +511,10 @@ fn match_nodes(nodes: Nodes<'_>, a: &Side, b: &Side) -> Result<HashMap<usize, us
         };
         if let Some(prev) = partner_of_a.insert(va, vb) {
             return Err(Error::contact(format!(
-                "nodes {} and {} (tag {tag_b}) both match node {} (tag {tag_a})",
-                prev + base,
-                vb + base,
-                va + base
+                "nodes {} and {} ({name_b}) both match node {} ({name_a})",
+                nodes.name(prev),
+                nodes.name(vb),
+                nodes.name(va)
             )));
         }
     }
@@ -484,9 +522,9 @@ fn match_nodes(nodes: Nodes<'_>, a: &Side, b: &Side) -> Result<HashMap<usize, us
     // over is one the other side lacks.
     if let Some(&va) = order.nodes.iter().find(|v| !partner_of_a.contains_key(v)) {
         return Err(Error::contact(format!(
-            "node {} (contact tag {tag_a}) has no matching node on tag {tag_b} \
+            "node {} (contact {name_a}) has no matching node on {name_b} \
              (the interfaces differ in extent or are non-conforming)",
-            va + base
+            nodes.name(va)
         )));
     }
     Ok(partner_of_a)
@@ -504,8 +542,8 @@ fn unmatched(
     vb: usize,
     best: Option<(f64, usize)>,
 ) -> Error {
-    let (tag_a, tag_b) = (a.tag, b.tag);
-    let (x, base) = (nodes.x, nodes.base);
+    let (name_a, name_b) = (a.name(), b.name());
+    let x = nodes.x;
     let hb = scales.local_h[&vb];
     let radius = 0.5 * hb;
     let hint = match best {
@@ -514,18 +552,18 @@ fn unmatched(
             format!(
                 "nearest node {} is {d:.3e} away, {tangential:.3e} along the interface \
                  (a match: at most {:.3e} away, {:.3e} along)",
-                va + base,
+                nodes.name(va),
                 0.5 * h,
                 TANGENTIAL_TOL * h
             )
         }
-        None => format!("no node of tag {tag_a} within half an edge ({radius:.3e})"),
+        None => format!("no node of {name_a} within half an edge ({radius:.3e})"),
     };
     Error::contact(format!(
-        "node {} (contact tag {tag_b}) has no matching node on tag {tag_a}: {hint}; \
+        "node {} (contact {name_b}) has no matching node on {name_a}: {hint}; \
          non-matching sides take the strip triangulation of B (docs/method.md §6.11) \
          or a handed-over contact mesh",
-        vb + base
+        nodes.name(vb)
     ))
 }
 
@@ -540,18 +578,19 @@ fn quads(
     b: &Side,
     partner_of_a: &HashMap<usize, usize>,
 ) -> Result<Vec<ContactElement>> {
-    let (tag_a, tag_b) = (a.tag, b.tag);
-    let (x, base) = (nodes.x, nodes.base);
+    let x = nodes.x;
     let mut elements = Vec::with_capacity(2 * a.oriented.len());
     for &[a1, b1] in &a.oriented {
         let (a2, b2) = (partner_of_a[&a1], partner_of_a[&b1]);
         if !b.edges.contains_key(&(a2.min(b2), a2.max(b2))) {
             return Err(Error::contact(format!(
-                "edge ({}, {}) of tag {tag_a} faces nodes {} and {} that are not an edge of tag {tag_b}",
-                a1 + base,
-                b1 + base,
-                a2 + base,
-                b2 + base
+                "edge ({}, {}) of {} faces nodes {} and {} that are not an edge of {}",
+                nodes.name(a1),
+                nodes.name(b1),
+                a.name(),
+                nodes.name(a2),
+                nodes.name(b2),
+                b.name()
             )));
         }
         // Each triangle is a spring on one node pair, (b1, b2) or (a1, a2):
@@ -602,10 +641,15 @@ pub fn checked_triangles(
     b: &Side,
     triangles: &[[usize; 3]],
 ) -> Result<(Vec<ContactElement>, usize)> {
-    let (tag_a, tag_b) = (a.tag, b.tag);
+    let (name_a, name_b) = (a.name(), b.name());
     let (x, base) = (nodes_of.x, nodes_of.base);
     let n_nodes = x.len();
     let mut out = reserved(triangles.len(), "the contact mesh")?;
+    // Each triangle's nodes, sorted -> its index: a triangle given twice
+    // would be two elements of B on one spot, doubling its contact.
+    let mut seen: HashMap<[usize; 3], usize> = HashMap::new();
+    seen.try_reserve(triangles.len())
+        .map_err(|_| out_of_memory::<([usize; 3], usize)>(triangles.len(), "the contact mesh"))?;
     let mut flipped = 0;
     for (t, tri) in triangles.iter().enumerate() {
         let name = format!("contact triangle {}", t + base);
@@ -618,11 +662,23 @@ pub fn checked_triangles(
         if tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] {
             return Err(Error::contact(format!("{name}: a node is repeated")));
         }
+        let mut key = *tri;
+        key.sort_unstable();
+        if let Some(first) = seen.insert(key, t) {
+            return Err(Error::contact(format!(
+                "{name} repeats contact triangle {} (nodes {}, {}, {}): each element of B \
+                 is given once",
+                first + base,
+                nodes_of.name(tri[0]),
+                nodes_of.name(tri[1]),
+                nodes_of.name(tri[2])
+            )));
+        }
         let on_a: Vec<bool> = tri.iter().map(|v| a.nodes.contains(v)).collect();
         if let Some(k) = (0..3).find(|&k| !on_a[k] && !b.nodes.contains(&tri[k])) {
             return Err(Error::contact(format!(
-                "{name}: node {} is on neither interface (tags {tag_a}, {tag_b})",
-                tri[k] + base
+                "{name}: node {} is on neither interface ({name_a}, {name_b})",
+                nodes_of.name(tri[k])
             )));
         }
         let count_a = on_a.iter().filter(|&&s| s).count();
@@ -643,10 +699,10 @@ pub fn checked_triangles(
         };
         let Some(normal) = normal else {
             return Err(Error::contact(format!(
-                "{name}: nodes {} and {} are not an edge of interface tag {}",
-                p + base,
-                q + base,
-                if same_on_a { tag_a } else { tag_b }
+                "{name}: nodes {} and {} are not an edge of interface {}",
+                nodes_of.name(p),
+                nodes_of.name(q),
+                if same_on_a { &name_a } else { &name_b }
             )));
         };
         let mut nodes = *tri;
@@ -709,10 +765,10 @@ pub fn nonconforming(
     a: &Side,
     b: &Side,
 ) -> Result<Vec<ContactElement>> {
-    let (tag_a, tag_b) = (a.tag, b.tag);
+    let (name_a, name_b) = (a.name(), b.name());
     let x = nodes.x;
-    let chain_a = chain(nodes.base, a)?;
-    let mut chain_b = chain(nodes.base, b)?;
+    let chain_a = chain(nodes, a)?;
+    let mut chain_b = chain(nodes, b)?;
     // Each chain has its body on the right; facing each other they run in
     // opposite directions: turn b around.
     chain_b.reverse();
@@ -748,17 +804,16 @@ pub fn nonconforming(
         best.1
     };
     let s_b: Vec<f64> = chain_b.iter().map(|&v| project(x[v])).collect();
-    let base = nodes.base;
     if let Some(k) = (1..s_b.len()).find(|&k| s_b[k] < s_b[k - 1]) {
         return Err(Error::contact(format!(
-            "interface tag {tag_b} folds back along interface tag {tag_a} at node {}: the two interfaces must face each other",
-            chain_b[k] + base
+            "interface {name_b} folds back along interface {name_a} at node {}: the two interfaces must face each other",
+            nodes.name(chain_b[k])
         )));
     }
     let (lo, hi) = (s_b[0].max(0.0), s_b[s_b.len() - 1].min(total));
     if hi.is_nan() || hi <= lo {
         return Err(Error::contact(format!(
-            "interfaces tags {tag_a} and {tag_b} do not face each other (no overlap along the interface)"
+            "interfaces {name_a} and {name_b} do not face each other (no overlap along the interface)"
         )));
     }
     // Keep the part of each chain over [lo, hi] plus one node beyond each end.
@@ -797,15 +852,15 @@ pub fn nonconforming(
 
 /// The edges of one side chained into a single polyline, in their
 /// orientation (body on the right).
-fn chain(base: usize, side: &Side) -> Result<Vec<usize>> {
-    let tag = side.tag;
+fn chain(nodes: Nodes<'_>, side: &Side) -> Result<Vec<usize>> {
+    let name = side.name();
     let mut next: HashMap<usize, usize> = HashMap::new();
     let mut has_prev: HashSet<usize> = HashSet::new();
     for &[p, q] in &side.oriented {
         if next.insert(p, q).is_some() {
             return Err(Error::contact(format!(
-                "interface tag {tag} branches at node {}: it must be a single chain of edges",
-                p + base
+                "interface {name} branches at node {}: it must be a single chain of edges",
+                nodes.name(p)
             )));
         }
         has_prev.insert(q);
@@ -819,12 +874,12 @@ fn chain(base: usize, side: &Side) -> Result<Vec<usize>> {
         [s] => *s,
         [] => {
             return Err(Error::contact(format!(
-                "interface tag {tag} is a closed loop: open it into a chain of edges"
+                "interface {name} is a closed loop: open it into a chain of edges"
             )));
         }
         _ => {
             return Err(Error::contact(format!(
-                "interface tag {tag} has {} separate pieces: use one contact pair per piece",
+                "interface {name} has {} separate pieces: use one contact pair per piece",
                 starts.len()
             )));
         }
@@ -840,8 +895,8 @@ fn chain(base: usize, side: &Side) -> Result<Vec<usize>> {
     }
     if out.len() != side.oriented.len() + 1 {
         return Err(Error::contact(format!(
-            "interface tag {tag} is not a single chain of edges (near node {})",
-            v + base
+            "interface {name} is not a single chain of edges (near node {})",
+            nodes.name(v)
         )));
     }
     Ok(out)
@@ -905,11 +960,11 @@ pub fn check_facing(x: &[[f64; 2]], a: &Side, b: &Side) -> Result<()> {
     }
     if same > opposed {
         return Err(Error::contact(format!(
-            "contact side {} and side {} do not face each other: their outward normals point the \
+            "contact {} and {} do not face each other: their outward normals point the \
              same way at {same} of {} sampled edges, so one of them is given with its body on the \
              right; give every edge with its body on its left (counter-clockwise)",
-            a.tag,
-            b.tag,
+            a.name(),
+            b.name(),
             same + opposed
         )));
     }
@@ -946,7 +1001,7 @@ pub(crate) fn straight_sides(xa: &[f64], xb: &[f64]) -> (Vec<[f64; 2]>, Side, Si
     // (left to right).
     let ea: Vec<[usize; 2]> = (0..na - 1).map(|i| [i + 1, i]).collect();
     let eb: Vec<[usize; 2]> = (0..xb.len() - 1).map(|i| [na + i, na + i + 1]).collect();
-    let a = Side::from_edges(&x, 0, 1, 1, &ea).unwrap();
-    let b = Side::from_edges(&x, 0, 2, 2, &eb).unwrap();
+    let a = Side::from_edges(Nodes::new(&x, 0), 0, 1, 1, &ea).unwrap();
+    let b = Side::from_edges(Nodes::new(&x, 0), 1, 2, 2, &eb).unwrap();
     (x, a, b)
 }

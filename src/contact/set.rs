@@ -154,7 +154,7 @@ impl<'a> ContactSet<'a> {
         prescribed: &[f64],
         options: &ContactOptions,
     ) -> Result<ContactSet<'a>> {
-        let nodes = Nodes { x: &x, base };
+        let nodes = Nodes::new(&x, base);
         let geos: Vec<TriGeometry> = elements
             .iter()
             .map(|el| TriGeometry::new(&nodes.corners(&el.nodes)))
@@ -276,10 +276,7 @@ impl<'a> ContactSet<'a> {
 
     /// The nodes B is built on.
     pub fn nodes(&self) -> Nodes<'_> {
-        Nodes {
-            x: &self.x,
-            base: self.base,
-        }
+        Nodes::new(&self.x, self.base)
     }
 
     /// Number of elements.

@@ -525,7 +525,7 @@ mod tests {
     /// above), and the strip between them.
     fn strip(xa: &[f64], xb: &[f64]) -> (Vec<[f64; 2]>, Vec<ContactElement>) {
         let (x, a, b) = straight_sides(xa, xb);
-        let elements = nonconforming(Nodes { x: &x, base: 0 }, 0, &a, &b).unwrap();
+        let elements = nonconforming(Nodes::new(&x, 0), 0, &a, &b).unwrap();
         (x, elements)
     }
 
@@ -535,7 +535,7 @@ mod tests {
         // [1, 2], which b's end cuts in half, and the edge beyond it, which
         // faces nothing.
         let (x, elements) = strip(&[0.0, 1.0, 2.0, 3.0], &[0.0, 0.75, 1.5]);
-        let nodes = Nodes { x: &x, base: 0 };
+        let nodes = Nodes::new(&x, 0);
         let on_a = edge_on_side_a(nodes, &elements);
         let m = tributaries(nodes, &elements, &on_a);
         assert_eq!(m[&0], 0.5);
@@ -550,7 +550,7 @@ mod tests {
 
     /// The tributaries of a pair's nodes.
     fn tributaries_of(x: &[[f64; 2]], elements: &[ContactElement]) -> BTreeMap<usize, f64> {
-        let nodes = Nodes { x, base: 0 };
+        let nodes = Nodes::new(x, 0);
         tributaries(nodes, elements, &edge_on_side_a(nodes, elements))
     }
 
@@ -563,9 +563,23 @@ mod tests {
         for eps in [0.0, 1e-12, -1e-12, 0.15] {
             let floor = [[0.0, 0.0], [1.0, 0.0], [2.0, 0.0], [3.0, 0.0], [eps, 0.8]];
             let x: Vec<[f64; 2]> = floor.iter().chain(&floor).copied().collect();
-            let a = Side::from_edges(&x, 0, 1, 1, &[[3, 2], [2, 1], [1, 0], [0, 4]]).unwrap();
-            let b = Side::from_edges(&x, 0, 2, 2, &[[9, 5], [5, 6], [6, 7], [7, 8]]).unwrap();
-            let elements = conforming(Nodes { x: &x, base: 0 }, 0, &a, &b).unwrap();
+            let a = Side::from_edges(
+                Nodes::new(&x, 0),
+                0,
+                1,
+                1,
+                &[[3, 2], [2, 1], [1, 0], [0, 4]],
+            )
+            .unwrap();
+            let b = Side::from_edges(
+                Nodes::new(&x, 0),
+                1,
+                2,
+                2,
+                &[[9, 5], [5, 6], [6, 7], [7, 8]],
+            )
+            .unwrap();
+            let elements = conforming(Nodes::new(&x, 0), 0, &a, &b).unwrap();
             let m = tributaries_of(&x, &elements);
             for (v, want) in [(1, 1.0), (2, 1.0), (3, 0.5), (6, 1.0), (7, 1.0), (8, 0.5)] {
                 assert_eq!(m[&v], want, "eps {eps:e}, node {v}");
@@ -577,9 +591,9 @@ mod tests {
     fn a_side_in_two_pieces_keeps_every_edge() {
         let xs = [0.0, 1.0, 1.5, 2.5];
         let x: Vec<[f64; 2]> = xs.iter().chain(&xs).map(|&v| [v, 0.0]).collect();
-        let a = Side::from_edges(&x, 0, 1, 1, &[[1, 0], [3, 2]]).unwrap();
-        let b = Side::from_edges(&x, 0, 2, 2, &[[4, 5], [6, 7]]).unwrap();
-        let elements = conforming(Nodes { x: &x, base: 0 }, 0, &a, &b).unwrap();
+        let a = Side::from_edges(Nodes::new(&x, 0), 0, 1, 1, &[[1, 0], [3, 2]]).unwrap();
+        let b = Side::from_edges(Nodes::new(&x, 0), 1, 2, 2, &[[4, 5], [6, 7]]).unwrap();
+        let elements = conforming(Nodes::new(&x, 0), 0, &a, &b).unwrap();
         for (v, m) in tributaries_of(&x, &elements) {
             assert_eq!(m, 0.5, "node {v}");
         }

@@ -177,8 +177,11 @@ pub unsafe extern "C" fn tfem_contact_add_side(
 /// pair: the contact mesh B is built from their matching nodes, or by
 /// triangulating the strip between them. Two sides whose outward normals
 /// point the same way (one of them given clockwise) are refused with
-/// TFEM_STATUS_INVALID_CONTACT naming both. Writes the pair's index (0-based)
-/// to `pair` (may be NULL).
+/// TFEM_STATUS_INVALID_CONTACT naming both. A pair of two sides already
+/// paired (either way round) is refused with TFEM_STATUS_INVALID_ARGUMENT
+/// naming it: it would double their contact. Messages name a side by its
+/// index and tag ("side 0 (tag 101)") and nodes by the host's numbers.
+/// Writes the pair's index (0-based) to `pair` (may be NULL).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_add_pair(
     context: *mut TfemContact,
@@ -197,8 +200,11 @@ pub unsafe extern "C" fn tfem_contact_add_pair(
 
 /// Declares a pair with the host's own contact mesh B: `n_triangles`
 /// triangles `connectivity` (3 host node numbers each) over the interface
-/// nodes of the two sides; wrongly oriented ones are turned. Writes the
-/// pair's index (0-based) to `pair` (may be NULL).
+/// nodes of the two sides; wrongly oriented ones are turned. A triangle
+/// given twice (the same three nodes) is refused
+/// (TFEM_STATUS_INVALID_CONTACT naming both triangles), and so is a pair
+/// already declared, as by `tfem_contact_add_pair`. Writes the pair's
+/// index (0-based) to `pair` (may be NULL).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_add_pair_with_mesh(
     context: *mut TfemContact,
@@ -294,7 +300,10 @@ pub unsafe extern "C" fn tfem_contact_pattern(
 /// current u to its residual. The contact law is linear in u for a given
 /// active set: the values depend on the active set only, not on `u`, and
 /// change only when `tfem_contact_update` or `tfem_contact_set_active`
-/// changes the set. Allocates nothing.
+/// changes the set. A non-finite value in `u` is refused
+/// (TFEM_STATUS_INVALID_ARGUMENT naming the node and the value); a result
+/// that overflows is TFEM_STATUS_NUMERICAL_FAILURE; either way the buffers
+/// are unchanged. Allocates nothing.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_evaluate(
     context: *mut TfemContact,
@@ -346,8 +355,11 @@ pub unsafe extern "C" fn tfem_contact_gather(
 /// `tfem_contact_evaluate` writes them) into the host's vector
 /// `host_vector` (`n_equations` values, entry i is equation i +
 /// index_base); DOFs without an equation are left out. A non-finite value
-/// in `residual` is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node);
-/// `host_vector` is then unchanged.
+/// in `residual` is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node),
+/// and so is a sum that would not be finite: an entry of `host_vector`
+/// that is not finite already (TFEM_STATUS_INVALID_ARGUMENT), or an
+/// overflow (TFEM_STATUS_NUMERICAL_FAILURE), naming the node and the
+/// equation. `host_vector` is then unchanged.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_scatter_add(
     context: *mut TfemContact,
@@ -375,7 +387,8 @@ pub unsafe extern "C" fn tfem_contact_scatter_add(
 /// it with converged displacements of the host's problem for the current
 /// set (after its Newton loop, not at every Newton iteration): the test
 /// judges the solution, and a mid-Newton iterate may switch elements that
-/// the converged state would not.
+/// the converged state would not. A non-finite value in `u` is refused
+/// (TFEM_STATUS_INVALID_ARGUMENT naming the node and the value).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_update(
     context: *mut TfemContact,
@@ -436,7 +449,12 @@ pub unsafe extern "C" fn tfem_contact_set_active(
 /// length units) for the displacements `u` (2 per interface node): the
 /// smallest, over the elements of B at the node, of the distance of an
 /// element's apex from its interface edge (linearised; negative:
-/// interpenetration).
+/// interpenetration). A node in no element of B (on a part of its side
+/// that faces nothing of the other, beyond the other side's end) has no
+/// gap and reads 0, as if touching: it is not in contact, and no contact
+/// force acts there; tell such nodes by their absence from
+/// `tfem_contact_elements`. A non-finite value in `u` is refused
+/// (TFEM_STATUS_INVALID_ARGUMENT naming the node and the value).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_gaps(
     context: *mut TfemContact,
@@ -455,7 +473,8 @@ pub unsafe extern "C" fn tfem_contact_gaps(
 
 /// Copies the contact pressure of every element of B (n_elements values;
 /// a stress, positive in compression, zero when inactive) for the
-/// displacements `u` (2 per interface node).
+/// displacements `u` (2 per interface node). A non-finite value in `u` is
+/// refused (TFEM_STATUS_INVALID_ARGUMENT naming the node and the value).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_pressures(
     context: *mut TfemContact,
@@ -536,7 +555,7 @@ pub unsafe extern "C" fn tfem_contact_element_blocks(
 /// Writes the contact length of the current active set to `length`: half
 /// the summed interface-edge length of the active elements of B (each
 /// point of an interface is covered by one element with its edge on each
-/// side), model length units.
+/// side), model length units; +0.0 when no element is active.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_length(
     context: *mut TfemContact,
