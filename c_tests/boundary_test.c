@@ -1276,6 +1276,31 @@ static void the_contact_length_with_nothing_active_is_plus_zero(void) {
   tfem_contact_destroy(c);
 }
 
+/* A non-matching host pair (side 1's nodes at 0, 2/3, 2 against 0, 1, 2)
+ * is accepted at every length scale: its degeneracy test compared a length
+ * with an area and refused every pair beyond ~1e12 length units. */
+static void a_non_matching_host_pair_is_accepted_at_any_length_scale(void) {
+  const double scales[] = {1e-9, 1.0, 3e12, 1e13};
+  const double non_matching[3] = {0.0, 2.0 / 3.0, 2.0};
+  for (int k = 0; k < 4; ++k) {
+    tfem_contact *c = two_host_sides(scales[k], non_matching);
+    int n_elements = -1;
+    double length = -1.0;
+    tfem_status st = tfem_contact_add_pair(c, 0, 1, NULL);
+    if (st != TFEM_STATUS_OK) {
+      char msg[512];
+      tfem_contact_last_error(c, msg, sizeof msg);
+      printf("  scale %g: %s\n", scales[k], msg);
+    }
+    CHECK(st == TFEM_STATUS_OK);
+    CHECK(tfem_contact_sizes(c, NULL, &n_elements, NULL) == TFEM_STATUS_OK && n_elements == 4);
+    int on[4] = {1, 1, 1, 1};
+    CHECK(tfem_contact_set_active(c, on, 4) == TFEM_STATUS_OK);
+    CHECK(tfem_contact_length(c, &length) == TFEM_STATUS_OK && fabs(length / (2 * scales[k]) - 1) < 1e-14);
+    tfem_contact_destroy(c);
+  }
+}
+
 /* Honest arrays the machine cannot hold: INT_MAX nodes, 32 GiB of
  * coordinates (a read-only mapping of zero pages, which reserves no
  * memory), in an address space capped at 512 MiB above what the process
@@ -1643,6 +1668,7 @@ int main(int argc, char **argv) {
   a_non_finite_displacement_is_invalid_input_not_an_overflow();
   scatter_add_refuses_an_overflow_leaving_the_host_vector_unchanged();
   the_contact_length_with_nothing_active_is_plus_zero();
+  a_non_matching_host_pair_is_accepted_at_any_length_scale();
   a_solve_under_any_memory_limit_fails_cleanly_or_succeeds();
 
   fflush(stderr);

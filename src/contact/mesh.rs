@@ -712,7 +712,13 @@ pub fn checked_triangles(
             .filter(|&k| !on_a[k])
             .map(|k| geo.g[k][0] * normal[0] + geo.g[k][1] * normal[1])
             .sum();
-        if sens.abs() <= 1e-12 * geo.h * geo.h {
+        // J is an area and the opening a length, so `sens` is a length:
+        // the interface edge's length times the cosine between the normal
+        // and the edge's normal. Compared with the longest edge h it gives
+        // a pure number, and the test is the same at every length scale
+        // (against h², it refused every non-matching pair beyond ~1e12
+        // length units and let through near-degenerate ones at 1e-9).
+        if sens.abs() <= 1e-12 * geo.h {
             return Err(Error::contact(format!(
                 "{name}: its Jacobian does not change when the gap opens (degenerate across the interface)"
             )));
@@ -1004,4 +1010,29 @@ pub(crate) fn straight_sides(xa: &[f64], xb: &[f64]) -> (Vec<[f64; 2]>, Side, Si
     let a = Side::from_edges(Nodes::new(&x, 0), 0, 1, 1, &ea).unwrap();
     let b = Side::from_edges(Nodes::new(&x, 0), 1, 2, 2, &eb).unwrap();
     (x, a, b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Side a on y = 0 with nodes at 0, 1e-13 and 1, side b at 0 and 1,
+    /// all scaled by `s`: the triangle on a's first edge has an interface
+    /// edge 1e-13 of its longest one (its Jacobian barely changes when the
+    /// gap opens); the one on a's second edge is a plain touching element.
+    fn sliver_and_plain(s: f64) -> Result<Vec<ContactElement>> {
+        let (x, a, b) = straight_sides(&[0.0, 1e-13 * s, s], &[0.0, s]);
+        let sliver = checked_triangles(Nodes::new(&x, 0), 0, &a, &b, &[[0, 1, 4]]);
+        assert!(sliver.is_err(), "scale {s:e}: the sliver is accepted");
+        checked_triangles(Nodes::new(&x, 0), 0, &a, &b, &[[1, 2, 4]]).map(|r| r.0)
+    }
+
+    #[test]
+    fn the_degeneracy_test_of_a_contact_triangle_is_the_same_at_every_length_scale() {
+        for s in [1e-9, 1.0, 1e13, 1e100] {
+            let plain =
+                sliver_and_plain(s).unwrap_or_else(|e| panic!("scale {s:e}: {}", e.message()));
+            assert_eq!(plain[0].edge_length, s - 1e-13 * s, "scale {s:e}");
+        }
+    }
 }
