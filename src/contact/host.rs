@@ -140,11 +140,6 @@ impl HostContact {
             )));
         }
         self.check_equations(host.len())?;
-        self.check_finite(
-            "residual",
-            |v, c| per_node[2 * v + c],
-            |v, c| self.equation[v][c],
-        )?;
         self.check_sums(per_node, host)?;
         for (v, eq) in self.equation.iter().enumerate() {
             for c in 0..2 {
@@ -171,28 +166,35 @@ impl HostContact {
             for c in 0..2 {
                 let x = value(v, c);
                 if !x.is_finite() {
-                    let at = match equation(v, c) {
-                        Some(e) => format!(" (equation {})", e + self.base),
-                        None => String::new(),
-                    };
-                    return Err(Error::argument(format!(
-                        "`{what}`: the {} value of interface node {}{at} is {x}, not finite",
-                        ["x", "y"][c],
-                        self.node_id[v]
-                    )));
+                    return Err(self.not_finite(what, v, c, x, equation(v, c)));
                 }
             }
         }
         Ok(())
     }
 
+    /// The error for the non-finite value `x` of node v's DOF c in the
+    /// caller's array `what` (at host equation `equation`, if any).
+    fn not_finite(&self, what: &str, v: usize, c: usize, x: f64, equation: Option<usize>) -> Error {
+        let at = match equation {
+            Some(e) => format!(" (equation {})", e + self.base),
+            None => String::new(),
+        };
+        Error::argument(format!(
+            "`{what}`: the {} value of interface node {}{at} is {x}, not finite",
+            ["x", "y"][c],
+            self.node_id[v]
+        ))
+    }
+
     /// Refuses the addition of `per_node` into `host` (as
-    /// [`HostContact::scatter_add`] makes it) when an entry it touches is
-    /// not finite before, or would not be after: the sums in the order of
-    /// the addition, so that the host's vector is not written on error.
-    /// Where no two DOFs share an equation (the common case, known from
-    /// [`HostContact::add_side`]) one pass over the interface DOFs without
-    /// allocation; else the running sums of the shared equations.
+    /// [`HostContact::scatter_add`] makes it) when a value of `per_node` is
+    /// not finite, or an entry it touches is not finite before or would
+    /// not be after: the sums in the order of the addition, so that the
+    /// host's vector is not written on error. Where no two DOFs share an
+    /// equation (the common case, known from [`HostContact::add_side`]) one
+    /// pass over the interface DOFs without allocation; else the running
+    /// sums of the shared equations.
     fn check_sums(&self, per_node: &[f64], host: &[f64]) -> Result<()> {
         let mut running: HashMap<usize, f64> = HashMap::new();
         if self.shared_equations {
@@ -202,13 +204,17 @@ impl HostContact {
                 .map_err(|_| out_of_memory::<(usize, f64)>(n, "the sums of `residual`"))?;
         }
         for (v, eq) in self.equation.iter().enumerate() {
-            for (c, e) in eq.iter().enumerate() {
-                let Some(e) = *e else { continue };
+            for (c, &e) in eq.iter().enumerate() {
+                let r = per_node[2 * v + c];
+                if !r.is_finite() {
+                    return Err(self.not_finite("residual", v, c, r, e));
+                }
+                let Some(e) = e else { continue };
                 let before = match self.shared_equations {
                     true => *running.entry(e).or_insert(host[e]),
                     false => host[e],
                 };
-                let sum = before + per_node[2 * v + c];
+                let sum = before + r;
                 if self.shared_equations {
                     running.insert(e, sum);
                 }
@@ -230,8 +236,7 @@ impl HostContact {
                         Status::NumericalFailure,
                         format!(
                             "adding `residual` into `host_vector` at {at} overflows \
-                             ({before:e} + {:e}): rescale the model or its loads",
-                            per_node[2 * v + c]
+                             ({before:e} + {r:e}): rescale the model or its loads"
                         ),
                     ),
                 });
