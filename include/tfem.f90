@@ -829,7 +829,9 @@ module tfem
     !> Declares a contact pair with a user-made contact mesh B: `n_triangles` triangles in
     !! `connectivity` (3 per triangle) over nodes of the two interfaces. Wrongly oriented triangles
     !! are flipped; their number goes to `flipped` (may be NULL), the pair's index to `pair` (may be
-    !! NULL). Fortran: `pair` and `flipped` are OPTIONAL: omit them to pass NULL.
+    !! NULL). A triangle given twice (the same three nodes, in any order) is refused with
+    !! TFEM_STATUS_INVALID_CONTACT naming both triangles. Fortran: `pair` and `flipped` are
+    !! OPTIONAL: omit them to pass NULL.
     function tfem_add_contact_pair_with_mesh(model, tag_a, tag_b, n_triangles, connectivity, pair, &
         flipped) &
         bind(C, name="tfem_add_contact_pair_with_mesh") result(status)

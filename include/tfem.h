@@ -687,7 +687,9 @@ enum tfem_status tfem_add_contact_pair(struct tfem_model *model, int tag_a, int 
  * Declares a contact pair with a user-made contact mesh B: `n_triangles`
  * triangles in `connectivity` (3 per triangle) over nodes of the two
  * interfaces. Wrongly oriented triangles are flipped; their number goes to
- * `flipped` (may be NULL), the pair's index to `pair` (may be NULL).
+ * `flipped` (may be NULL), the pair's index to `pair` (may be NULL). A
+ * triangle given twice (the same three nodes, in any order) is refused
+ * with TFEM_STATUS_INVALID_CONTACT naming both triangles.
  */
 enum tfem_status tfem_add_contact_pair_with_mesh(struct tfem_model *model,
                                                  int tag_a,

@@ -464,7 +464,8 @@ impl Problem {
     }
 
     /// Declares a contact pair with a contact mesh B handed over by the user
-    /// (0-based triangles over interface nodes, as made with Gmsh). Its
+    /// (0-based triangles over interface nodes, as made with Gmsh), each
+    /// given once (a repeated triangle is refused, naming both). Its
     /// orientation is fixed where needed; returns (pair index, number of
     /// triangles flipped).
     pub fn add_contact_pair_with_mesh(
