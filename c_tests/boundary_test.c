@@ -1155,12 +1155,12 @@ static void a_host_pair_declared_twice_is_refused(void) {
   tfem_contact *c = two_host_sides(1.0, MATCHING);
   int pair = -7, n_elements = -1;
   CHECK(tfem_contact_add_pair(c, 0, 1, &pair) == TFEM_STATUS_OK && pair == 0);
-  expect_contact_error(c, tfem_contact_add_pair(c, 0, 1, &pair), TFEM_STATUS_INVALID_ARGUMENT,
+  expect_contact_error(c, tfem_contact_add_pair(c, 0, 1, &pair), TFEM_STATUS_INVALID_CONTACT,
                        "contact pair (0, 1)", "already declared", __LINE__);
-  expect_contact_error(c, tfem_contact_add_pair(c, 1, 0, &pair), TFEM_STATUS_INVALID_ARGUMENT,
+  expect_contact_error(c, tfem_contact_add_pair(c, 1, 0, &pair), TFEM_STATUS_INVALID_CONTACT,
                        "contact pair (1, 0)", "already declared", __LINE__);
   int tri[3] = {10, 11, 21};
-  expect_contact_error(c, tfem_contact_add_pair_with_mesh(c, 1, 0, 1, tri, &pair), TFEM_STATUS_INVALID_ARGUMENT,
+  expect_contact_error(c, tfem_contact_add_pair_with_mesh(c, 1, 0, 1, tri, &pair), TFEM_STATUS_INVALID_CONTACT,
                        "contact pair (1, 0)", "already declared", __LINE__);
   CHECK(pair == 0);
   CHECK(tfem_contact_sizes(c, NULL, &n_elements, NULL) == TFEM_STATUS_OK && n_elements == 4);

@@ -1084,7 +1084,7 @@ enum tfem_status tfem_contact_add_side(struct tfem_contact *context,
  * triangulating the strip between them. Two sides whose outward normals
  * point the same way (one of them given clockwise) are refused with
  * TFEM_STATUS_INVALID_CONTACT naming both. A pair of two sides already
- * paired (either way round) is refused with TFEM_STATUS_INVALID_ARGUMENT
+ * paired (either way round) is refused with TFEM_STATUS_INVALID_CONTACT
  * naming it: it would double their contact. Messages name a side by its
  * index and tag ("side 0 (tag 101)") and nodes by the host's numbers.
  * Writes the pair's index (0-based) to `pair` (may be NULL).

@@ -446,7 +446,8 @@ impl HostContact {
             .iter()
             .position(|p| p.sides == [a, b] || p.sides == [b, a])
         {
-            return Err(Error::argument(format!(
+            // INVALID_CONTACT, as the model's pair declared twice.
+            return Err(Error::contact(format!(
                 "contact pair ({a}, {b}) of {} and {} is already declared (pair {p})",
                 sa.name(),
                 sb.name()
