@@ -410,6 +410,37 @@ static void messages_stay_short_and_the_thread_slot_is_cleared(void) {
   CHECK(tfem_last_error_length(NULL) == 1);
 }
 
+/* Found by a host-code probe: a Fortran type(c_ptr) does not tell a model
+ * from a contact context, and tfem_error_message(context) read the context
+ * as a model. A handle of the other kind, or a destroyed one, is refused
+ * before anything is read through it; destroying it again is a no-op. */
+static void a_handle_of_the_other_kind_or_destroyed_is_refused(void) {
+  tfem_model *m = two_blocks();
+  tfem_contact *c = tfem_contact_create(0);
+  char msg[512];
+  int threads = 0;
+  CHECK(c != NULL);
+  CHECK(tfem_get_threads((tfem_model *)c, &threads) == TFEM_STATUS_INVALID_ARGUMENT);
+  CHECK(tfem_last_error(NULL, msg, sizeof msg) == TFEM_STATUS_OK && strstr(msg, "`model` is not a model") &&
+        strstr(msg, "contact context"));
+  CHECK(tfem_last_error((tfem_model *)c, msg, sizeof msg) == TFEM_STATUS_INVALID_ARGUMENT &&
+        strstr(msg, "contact context") != NULL);
+  CHECK(tfem_last_error_length((tfem_model *)c) == strlen(msg) + 1);
+  CHECK(tfem_contact_last_error((tfem_contact *)m, msg, sizeof msg) == TFEM_STATUS_INVALID_ARGUMENT &&
+        strstr(msg, "is not a contact context") && strstr(msg, "a model"));
+  CHECK(tfem_contact_set_active((tfem_contact *)m, NULL, 0) == TFEM_STATUS_INVALID_ARGUMENT);
+  tfem_contact_destroy((tfem_contact *)m); /* not a context: a no-op */
+  tfem_destroy((tfem_model *)c);           /* not a model: a no-op */
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  tfem_destroy(m);
+  CHECK(tfem_get_threads(m, &threads) == TFEM_STATUS_INVALID_ARGUMENT);
+  CHECK(tfem_last_error(NULL, msg, sizeof msg) == TFEM_STATUS_OK && strstr(msg, "destroyed") != NULL);
+  tfem_destroy(m); /* twice: a no-op */
+  CHECK(tfem_contact_last_error(c, msg, sizeof msg) == TFEM_STATUS_OK);
+  tfem_contact_destroy(c);
+  CHECK(tfem_contact_last_error(c, msg, sizeof msg) == TFEM_STATUS_INVALID_ARGUMENT);
+}
+
 static void a_host_gets_contact_forces_gaps_and_the_contact_mesh_before_a_solve(void) {
   tfem_model *m = two_blocks();
   int n = 0;
@@ -1649,6 +1680,7 @@ int main(int argc, char **argv) {
   a_failed_solve_keeps_every_result_and_changes_no_later_solve();
   no_nan_or_inf_comes_back_with_ok();
   messages_stay_short_and_the_thread_slot_is_cleared();
+  a_handle_of_the_other_kind_or_destroyed_is_refused();
   a_host_gets_contact_forces_gaps_and_the_contact_mesh_before_a_solve();
   a_load_history_steps_reverts_and_restarts_bit_for_bit();
   a_contact_state_never_outlives_its_problem();

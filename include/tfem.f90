@@ -34,6 +34,10 @@
 !   overflow gives TFEM_STATUS_NUMERICAL_FAILURE naming the item.
 ! - Nothing is ever printed on stdout or stderr: messages, warnings and
 !   internal failures are read with tfem_last_error and tfem_get_warning.
+! - Handles are checked before use: a destroyed model or context, or a
+!   handle of the other kind (a Fortran type(c_ptr) does not tell them
+!   apart), is refused with TFEM_STATUS_INVALID_ARGUMENT (message in the
+!   thread's slot), and destroying it is a no-op.
 !
 ! Thread contract
 ! - A tfem_model must be used by one thread at a time (no internal
@@ -335,8 +339,9 @@ module tfem
   end interface
 
   interface
-    !> Destroys a model and everything it owns. NULL is a no-op. The handle must not be used
-    !! afterwards.
+    !> Destroys a model and everything it owns. NULL is a no-op, and so is a pointer that is not a
+    !! live model (destroyed already, or a contact context). A destroyed handle given to any
+    !! function is refused (TFEM_STATUS_INVALID_ARGUMENT), as is a handle of the other kind.
     subroutine tfem_destroy(model) &
         bind(C, name="tfem_destroy")
       import
@@ -1365,7 +1370,8 @@ module tfem
   end interface
 
   interface
-    !> Destroys a contact context. NULL is a no-op.
+    !> Destroys a contact context. NULL is a no-op, and so is a pointer that is not a live context
+    !! (destroyed already, or a model).
     subroutine tfem_contact_destroy(context) &
         bind(C, name="tfem_contact_destroy")
       import

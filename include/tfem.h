@@ -28,6 +28,10 @@
  *   overflow gives TFEM_STATUS_NUMERICAL_FAILURE naming the item.
  * - Nothing is ever printed on stdout or stderr: messages, warnings and
  *   internal failures are read with tfem_last_error and tfem_get_warning.
+ * - Handles are checked before use: a destroyed model or context, or a
+ *   handle of the other kind (a Fortran type(c_ptr) does not tell them
+ *   apart), is refused with TFEM_STATUS_INVALID_ARGUMENT (message in the
+ *   thread's slot), and destroying it is a no-op.
  *
  * Thread contract
  * - A tfem_model must be used by one thread at a time (no internal
@@ -406,8 +410,10 @@ const char *tfem_version(void);
 struct tfem_model *tfem_create(void);
 
 /**
- * Destroys a model and everything it owns. NULL is a no-op. The handle must
- * not be used afterwards.
+ * Destroys a model and everything it owns. NULL is a no-op, and so is a
+ * pointer that is not a live model (destroyed already, or a contact
+ * context). A destroyed handle given to any function is refused
+ * (TFEM_STATUS_INVALID_ARGUMENT), as is a handle of the other kind.
  */
 void tfem_destroy(struct tfem_model *model);
 
@@ -1026,7 +1032,8 @@ enum tfem_status tfem_add_contact_pairs_auto(struct tfem_model *model,
 struct tfem_contact *tfem_contact_create(int index_base);
 
 /**
- * Destroys a contact context. NULL is a no-op.
+ * Destroys a contact context. NULL is a no-op, and so is a pointer that
+ * is not a live context (destroyed already, or a model).
  */
 void tfem_contact_destroy(struct tfem_contact *context);
 

@@ -8,8 +8,9 @@ use super::convert::{
     jmin_arg, options_in, plane, report_out,
 };
 use super::plumbing::{
-    LAST_ERROR, TfemModel, copy_in, copy_message, copy_out, count, guarded, map_out, null, reserve,
-    slice_in, with_model, without_model, write, write_optional,
+    LAST_ERROR, TfemModel, check_live, copy_in, copy_message, copy_out, count, guarded, map_out,
+    null, register, reserve, slice_in, unregister, with_model, without_model, write,
+    write_optional,
 };
 use crate::contact::ContactOptions;
 use crate::error::{Error, Result, Status};
@@ -31,21 +32,24 @@ pub extern "C" fn tfem_version() -> *const c_char {
 #[unsafe(no_mangle)]
 pub extern "C" fn tfem_create() -> *mut TfemModel {
     guarded(|| {
-        Box::into_raw(Box::new(TfemModel {
+        register(TfemModel {
             model: Model::new(),
             index_base: 0,
             last_error: String::new(),
-        }))
+        })
     })
     .unwrap_or(std::ptr::null_mut())
 }
 
-/// Destroys a model and everything it owns. NULL is a no-op. The handle must
-/// not be used afterwards.
+/// Destroys a model and everything it owns. NULL is a no-op, and so is a
+/// pointer that is not a live model (destroyed already, or a contact
+/// context). A destroyed handle given to any function is refused
+/// (TFEM_STATUS_INVALID_ARGUMENT), as is a handle of the other kind.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_destroy(model: *mut TfemModel) {
-    if !model.is_null() {
-        // SAFETY: a handle from tfem_create, destroyed once.
+    if !model.is_null() && unregister(model) {
+        // SAFETY: a live handle from tfem_create, now unregistered, so
+        // freed once.
         let _ = guarded(|| drop(unsafe { Box::from_raw(model) }));
     }
 }
@@ -62,9 +66,12 @@ pub unsafe extern "C" fn tfem_last_error(
     buffer: *mut c_char,
     length: usize,
 ) -> Status {
-    let text = match unsafe { model.as_ref() } {
-        Some(m) => m.last_error.clone(),
-        None => LAST_ERROR.with(|e| e.borrow().clone()),
+    let text = match model_error(model) {
+        Ok(text) => text,
+        Err(e) => {
+            let _ = copy_message(e.message(), buffer, length);
+            return e.status();
+        }
     };
     copy_message(&text, buffer, length)
 }
@@ -73,10 +80,21 @@ pub unsafe extern "C" fn tfem_last_error(
 /// would give. `model` may be NULL (thread's last error).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_last_error_length(model: *const TfemModel) -> usize {
-    match unsafe { model.as_ref() } {
-        Some(m) => m.last_error.len() + 1,
-        None => LAST_ERROR.with(|e| e.borrow().len() + 1),
+    match model_error(model) {
+        Ok(text) => text.len() + 1,
+        Err(e) => e.message().len() + 1,
     }
+}
+
+/// The last error of `model` (NULL: the thread's), or why `model` is not
+/// a live model.
+fn model_error(model: *const TfemModel) -> Result<String> {
+    if model.is_null() {
+        return Ok(LAST_ERROR.with(|e| e.borrow().clone()));
+    }
+    check_live(model)?;
+    // SAFETY: a live handle from tfem_create (just checked).
+    Ok(unsafe { model.as_ref() }.map_or_else(String::new, |m| m.last_error.clone()))
 }
 
 /// Number of warnings: mesh validation (unused or coincident nodes,

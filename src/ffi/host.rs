@@ -6,8 +6,8 @@ use std::ffi::{c_char, c_int};
 
 use super::convert::{TfemContactOptions, options_in, plane};
 use super::plumbing::{
-    Handle, copy_in, copy_message, copy_out, count, guarded, null, set_global_error, slice_in,
-    with_handle, write, write_optional,
+    Handle, check_live, copy_in, copy_message, copy_out, count, guarded, null, register,
+    set_global_error, slice_in, unregister, with_handle, write, write_optional,
 };
 use crate::contact::{ContactOptions, HostContact};
 use crate::error::{Error, Result, Status};
@@ -22,6 +22,7 @@ pub struct TfemContact {
 
 impl Handle for TfemContact {
     const ARGUMENT: &'static str = "context";
+    const KIND: &'static str = "a contact context (from tfem_contact_create)";
     fn last_error(&mut self) -> &mut String {
         &mut self.last_error
     }
@@ -67,10 +68,10 @@ pub extern "C" fn tfem_contact_create(index_base: c_int) -> *mut TfemContact {
     match made {
         Ok(Ok(contact)) => {
             set_global_error("");
-            Box::into_raw(Box::new(TfemContact {
+            register(TfemContact {
                 contact,
                 last_error: String::new(),
-            }))
+            })
         }
         Ok(Err(e)) => {
             set_global_error(e.message());
@@ -80,11 +81,13 @@ pub extern "C" fn tfem_contact_create(index_base: c_int) -> *mut TfemContact {
     }
 }
 
-/// Destroys a contact context. NULL is a no-op.
+/// Destroys a contact context. NULL is a no-op, and so is a pointer that
+/// is not a live context (destroyed already, or a model).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_destroy(context: *mut TfemContact) {
-    if !context.is_null() {
-        // SAFETY: a handle from tfem_contact_create, destroyed once.
+    if !context.is_null() && unregister(context) {
+        // SAFETY: a live handle from tfem_contact_create, now unregistered,
+        // so freed once.
         let _ = guarded(|| drop(unsafe { Box::from_raw(context) }));
     }
 }
@@ -98,7 +101,14 @@ pub unsafe extern "C" fn tfem_contact_last_error(
     buffer: *mut c_char,
     length: usize,
 ) -> Status {
-    // SAFETY: a handle from tfem_contact_create, or NULL.
+    if context.is_null() {
+        return Status::NullPointer;
+    }
+    if let Err(e) = check_live(context) {
+        let _ = copy_message(e.message(), buffer, length);
+        return e.status();
+    }
+    // SAFETY: a live handle from tfem_contact_create (just checked).
     match unsafe { context.as_ref() } {
         Some(c) => copy_message(&c.last_error, buffer, length),
         None => Status::NullPointer,

@@ -3,10 +3,11 @@
 //! model), and reading and writing caller-owned memory.
 
 use std::cell::RefCell;
+use std::collections::HashMap;
 use std::ffi::c_char;
 use std::panic::{AssertUnwindSafe, catch_unwind};
-use std::sync::Once;
 use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::{LazyLock, Once, RwLock};
 
 use crate::error::{Error, Result, Status};
 use crate::model::Model;
@@ -68,12 +69,63 @@ pub(super) fn guarded<R>(f: impl FnOnce() -> R) -> std::thread::Result<R> {
 pub(super) trait Handle {
     /// The name of the handle argument in messages.
     const ARGUMENT: &'static str;
+    /// What the handle is, and the function that makes one (messages).
+    const KIND: &'static str;
     /// The handle's error slot.
     fn last_error(&mut self) -> &mut String;
 }
 
+/// The live handles: address → kind ([`Handle::KIND`]). A pointer that is
+/// not one of them — a destroyed handle, a handle of the other kind (a
+/// Fortran `type(c_ptr)` does not tell a model from a contact context),
+/// anything else — is refused before it is read, instead of being read as
+/// a handle. One read lock per call.
+static LIVE: LazyLock<RwLock<HashMap<usize, &'static str>>> =
+    LazyLock::new(|| RwLock::new(HashMap::new()));
+
+/// Boxes `value` as a live handle; NULL when even that cannot be
+/// allocated.
+pub(super) fn register<H: Handle>(value: H) -> *mut H {
+    let mut live = LIVE.write().unwrap_or_else(|e| e.into_inner());
+    if live.try_reserve(1).is_err() {
+        return std::ptr::null_mut();
+    }
+    let handle = Box::into_raw(Box::new(value));
+    live.insert(handle as usize, H::KIND);
+    handle
+}
+
+/// Takes `handle` out of the live handles: whether it was a live `H`
+/// (only then may it be freed).
+pub(super) fn unregister<H: Handle>(handle: *mut H) -> bool {
+    let mut live = LIVE.write().unwrap_or_else(|e| e.into_inner());
+    match live.get(&(handle as usize)) {
+        Some(&kind) if kind == H::KIND => live.remove(&(handle as usize)).is_some(),
+        _ => false,
+    }
+}
+
+/// Refuses a non-NULL `handle` that is not a live `H`, naming what it is.
+pub(super) fn check_live<H: Handle>(handle: *const H) -> Result<()> {
+    let live = LIVE.read().unwrap_or_else(|e| e.into_inner());
+    match live.get(&(handle as usize)) {
+        Some(&kind) if kind == H::KIND => Ok(()),
+        Some(&kind) => Err(Error::argument(format!(
+            "argument `{}` is not {}: it is {kind}",
+            H::ARGUMENT,
+            H::KIND
+        ))),
+        None => Err(Error::argument(format!(
+            "argument `{}` is not {}: it was destroyed, or never made by it",
+            H::ARGUMENT,
+            H::KIND
+        ))),
+    }
+}
+
 impl Handle for TfemModel {
     const ARGUMENT: &'static str = "model";
+    const KIND: &'static str = "a model (from tfem_create)";
     fn last_error(&mut self) -> &mut String {
         &mut self.last_error
     }
@@ -87,8 +139,16 @@ pub(super) fn with_handle<H: Handle>(
 ) -> Status {
     // SAFETY: the caller passes a handle from its create function (or
     // NULL), used by one thread at a time per the thread contract.
-    let Some(h) = (unsafe { handle.as_mut() }) else {
+    if handle.is_null() {
         set_global_error(&format!("argument `{}` is NULL", H::ARGUMENT));
+        return Status::NullPointer;
+    }
+    if let Err(e) = check_live(handle) {
+        set_global_error(e.message());
+        return e.status();
+    }
+    // SAFETY: a live handle of this kind (just checked).
+    let Some(h) = (unsafe { handle.as_mut() }) else {
         return Status::NullPointer;
     };
     match guarded(|| f(h)) {
