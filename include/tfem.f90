@@ -219,8 +219,11 @@ module tfem
   !> Only the normal strain is penalised: D_c = E_c m mᵀ with m = [n_x², n_y², n_x n_y]. Tangential
   !! slip is free.
   integer(c_int), parameter :: TFEM_CONTACT_LAW_FRICTIONLESS = 0
-  !> Plain tempered isotropic elasticity in B (E_c, ν of the softer body): it also resists slip, so
-  !! it ties the surfaces (sticking contact).
+  !> Tempered isotropic elasticity in B (E_c, ν of the softer body) on the element flattened onto
+  !! its interface line (`contact::law_geometry`): a normal and a tangential spring on the jump
+  !! between the surfaces, so it also resists slip and ties them (sticking contact). Flattened
+  !! because, across an initial gap or overlap, the element itself would also read the bodies'
+  !! tangential stretching, and its Poisson stress broke the patch test (docs/method.md §6.4).
   integer(c_int), parameter :: TFEM_CONTACT_LAW_STICK = 1
 
   ! enum tfem_inversion_test: How an element of B is found inverted.

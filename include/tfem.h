@@ -191,8 +191,14 @@ typedef enum tfem_contact_law {
    */
   TFEM_CONTACT_LAW_FRICTIONLESS = 0,
   /**
-   * Plain tempered isotropic elasticity in B (E_c, ν of the softer body):
-   * it also resists slip, so it ties the surfaces (sticking contact).
+   * Tempered isotropic elasticity in B (E_c, ν of the softer body) on the
+   * element flattened onto its interface line
+   * (`contact::law_geometry`): a normal and a
+   * tangential spring on the jump between the surfaces, so it also
+   * resists slip and ties them (sticking contact). Flattened because,
+   * across an initial gap or overlap, the element itself would also
+   * read the bodies' tangential stretching, and its Poisson stress
+   * broke the patch test (docs/method.md §6.4).
    */
   TFEM_CONTACT_LAW_STICK = 1,
 } tfem_contact_law;

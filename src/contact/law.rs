@@ -102,32 +102,56 @@ pub fn contact_pressure(
     -(en[0] * sigma[0] + en[1] * sigma[1] + en[2] * sigma[2])
 }
 
-/// The linearised Jacobian J0 + Σ g_i·u_i.
-/// The linearised opening the inversion test uses and the law penalises:
-/// for the frictionless law the normal part of the linearised J,
-/// J0 + Σ (n·g_i)(n·u_i); for the stick law the whole linearised J.
-pub fn linearised_opening(geo: &TriGeometry, law: ContactLaw, n: [f64; 2], ue: &[f64; 6]) -> f64 {
-    match law {
-        ContactLaw::Stick => linearised_jacobian(geo, ue),
-        ContactLaw::Frictionless => {
-            geo.j
-                + (0..3)
-                    .map(|i| {
-                        (geo.g[i][0] * n[0] + geo.g[i][1] * n[1])
-                            * (ue[2 * i] * n[0] + ue[2 * i + 1] * n[1])
-                    })
-                    .sum::<f64>()
-        }
-    }
+/// The linearised opening the inversion test uses and the law penalises,
+/// the normal part of the linearised J: J0 + Σ (n·g_i)(n·u_i), under
+/// either law (docs/method.md §6.5). The stick law penalises it too: its
+/// element is flattened ([`law_geometry`]), so its whole linearised J is
+/// this normal part (the J0 ε_tt of the unflattened element read the
+/// bodies' tangential stretching as an opening).
+pub fn linearised_opening(geo: &TriGeometry, n: [f64; 2], ue: &[f64; 6]) -> f64 {
+    geo.j
+        + (0..3)
+            .map(|i| {
+                (geo.g[i][0] * n[0] + geo.g[i][1] * n[1])
+                    * (ue[2 * i] * n[0] + ue[2 * i + 1] * n[1])
+            })
+            .sum::<f64>()
 }
 
 /// Coefficient of element DOF `a` (node a/2, component a%2) in
 /// [`linearised_opening`].
-pub fn opening_coefficient(geo: &TriGeometry, law: ContactLaw, n: [f64; 2], a: usize) -> f64 {
+pub fn opening_coefficient(geo: &TriGeometry, n: [f64; 2], a: usize) -> f64 {
     let g = geo.g[a / 2];
+    (g[0] * n[0] + g[1] * n[1]) * n[a % 2]
+}
+
+/// The geometry through which the law of an element of B acts
+/// (docs/method.md §6.4, "The stick law on a gap"): for the stick law the
+/// element flattened onto its interface line, g_i → (n·g_i) n (J0, h_e
+/// unchanged); for the frictionless law `geo` itself, whose law reads only
+/// n·g_i, which flattening keeps.
+///
+/// Why: an element of B is an interface spring on the jump between the
+/// surfaces, Σ (n·g_i) u_i = ℓ_e × (the jump at its apex). Across a gap or
+/// an overlap (J0 ≠ 0) the unflattened B̂u also reads J0 × the bodies'
+/// strain, and isotropic D turns that strain into stresses: a uniform
+/// tangential stretch of both bodies made a normal pressure, and the
+/// strip's tangential stress (ν/(1 − ν) of its pressure) acted on the
+/// strip's ends, thick |J0|/ℓ_e, as point forces: the patch test with an
+/// initial overlap failed by overlap/h. The flattened element has no
+/// tangential strain (t·g_i = 0), so only the jump is penalised. On a
+/// touching straight interface with an axis-aligned normal flattening is
+/// the identity to the bit.
+pub fn law_geometry(geo: TriGeometry, law: ContactLaw, n: [f64; 2]) -> TriGeometry {
     match law {
-        ContactLaw::Stick => g[a % 2],
-        ContactLaw::Frictionless => (g[0] * n[0] + g[1] * n[1]) * n[a % 2],
+        ContactLaw::Frictionless => geo,
+        ContactLaw::Stick => TriGeometry {
+            g: geo.g.map(|g| {
+                let a = g[0] * n[0] + g[1] * n[1];
+                [a * n[0], a * n[1]]
+            }),
+            ..geo
+        },
     }
 }
 

@@ -26,8 +26,8 @@ pub mod traction;
 
 pub use host::{HostContact, Update};
 pub use law::{
-    ContactStiffness, contact_pressure, contact_stiffness, law_matrix, linearised_jacobian,
-    linearised_opening, opening_coefficient, shear_vector, stick_stiffness,
+    ContactStiffness, contact_pressure, contact_stiffness, law_geometry, law_matrix,
+    linearised_jacobian, linearised_opening, opening_coefficient, shear_vector, stick_stiffness,
 };
 pub use mesh::{
     Nodes, Side, build, build_all, build_conforming, build_nonconforming, check_user_mesh,
@@ -47,8 +47,14 @@ pub enum ContactLaw {
     /// Only the normal strain is penalised: D_c = E_c m mᵀ with
     /// m = [n_x², n_y², n_x n_y]. Tangential slip is free.
     Frictionless = 0,
-    /// Plain tempered isotropic elasticity in B (E_c, ν of the softer body):
-    /// it also resists slip, so it ties the surfaces (sticking contact).
+    /// Tempered isotropic elasticity in B (E_c, ν of the softer body) on the
+    /// element flattened onto its interface line
+    /// (`contact::law_geometry`): a normal and a
+    /// tangential spring on the jump between the surfaces, so it also
+    /// resists slip and ties them (sticking contact). Flattened because,
+    /// across an initial gap or overlap, the element itself would also
+    /// read the bodies' tangential stretching, and its Poisson stress
+    /// broke the patch test (docs/method.md §6.4).
     Stick = 1,
 }
 

@@ -11,7 +11,7 @@ use std::borrow::Cow;
 use std::collections::{BTreeMap, HashSet};
 
 use super::law::{
-    ContactStiffness, contact_jmins, contact_pressure, contact_stiffness, law_matrix,
+    ContactStiffness, contact_jmins, contact_pressure, contact_stiffness, law_geometry, law_matrix,
     linearised_opening, opening_coefficient, shear_vector, stick_stiffness,
 };
 use super::mesh::Nodes;
@@ -157,7 +157,10 @@ impl<'a> ContactSet<'a> {
         let nodes = Nodes::new(&x, base);
         let geos: Vec<TriGeometry> = elements
             .iter()
-            .map(|el| TriGeometry::new(&nodes.corners(&el.nodes)))
+            .map(|el| {
+                let geo = TriGeometry::new(&nodes.corners(&el.nodes));
+                law_geometry(geo, options.law, el.normal)
+            })
             .collect();
         // An active element is inverted, so its T = Jmin: its matrix and
         // initial-gap load do not change between iterations.
@@ -593,7 +596,7 @@ impl<'a> ContactSet<'a> {
     /// inverted too (the apex has crossed the other body's surface), and
     /// once on it stays on while it is inverted.
     pub fn inverted(&self, current: &[bool], values: impl Fn(usize) -> [f64; 6]) -> Vec<bool> {
-        let (law, test) = (self.options.law, self.options.test);
+        let test = self.options.test;
         let j: Vec<f64> = self
             .elements
             .iter()
@@ -601,9 +604,7 @@ impl<'a> ContactSet<'a> {
             .map(|(k, el)| {
                 let ue = values(k);
                 match test {
-                    InversionTest::Linearised => {
-                        linearised_opening(&self.geos[k], law, el.normal, &ue)
-                    }
+                    InversionTest::Linearised => linearised_opening(&self.geos[k], el.normal, &ue),
                     InversionTest::Literal => {
                         let mut x = self.nodes().corners(&el.nodes);
                         for (i, p) in x.iter_mut().enumerate() {
@@ -624,7 +625,7 @@ impl<'a> ContactSet<'a> {
     /// penalises) for element displacements `ue`.
     pub fn opening(&self, k: usize, ue: &[f64; 6]) -> f64 {
         let el = &self.elements[k];
-        linearised_opening(&self.geos[k], self.options.law, el.normal, ue)
+        linearised_opening(&self.geos[k], el.normal, ue)
     }
 
     /// The contact pressure of active element `k` for element displacements
@@ -640,7 +641,7 @@ impl<'a> ContactSet<'a> {
     /// interface under the frictionless law these are the normal
     /// components only, half of the contact nodes' unknowns. Sorted.
     pub fn interface_unknowns(&self) -> Vec<usize> {
-        let (test, law) = (self.options.test, self.options.law);
+        let test = self.options.test;
         let mut set = Vec::new();
         for part in 0..self.parts() {
             let (k, cs) = (self.element_of(part), self.stiffness(part));
@@ -653,7 +654,7 @@ impl<'a> ContactSet<'a> {
                     || match test {
                         InversionTest::Linearised => {
                             let n = self.elements[k].normal;
-                            opening_coefficient(&self.geos[k], law, n, a) != 0.0
+                            opening_coefficient(&self.geos[k], n, a) != 0.0
                         }
                         InversionTest::Literal => true,
                     };

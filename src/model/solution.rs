@@ -4,7 +4,7 @@
 
 use super::problem::Problem;
 use crate::contact::{
-    ContactElement, ContactOptions, ElementLaw, FrictionOutcome, contact_stiffness,
+    ContactElement, ContactOptions, ElementLaw, FrictionOutcome, contact_stiffness, law_geometry,
     linearised_opening, shear_vector,
 };
 use std::collections::BTreeMap;
@@ -139,7 +139,7 @@ impl Solution {
             for (k, el) in c.elements.iter().enumerate() {
                 if c.active[k] {
                     let corners = mesh.corners(&el.nodes);
-                    let geo = TriGeometry::new(&corners);
+                    let geo = law_geometry(TriGeometry::new(&corners), c.options.law, el.normal);
                     let law = &c.laws[k];
                     let cs = contact_stiffness(&geo, &law.d, el.normal, el.j0, law.t);
                     // The shear traction τ of a frictional element acts
@@ -211,7 +211,7 @@ impl Solution {
                 continue;
             }
             let corners = mesh.corners(&el.nodes);
-            let geo = TriGeometry::new(&corners);
+            let geo = law_geometry(TriGeometry::new(&corners), c.options.law, el.normal);
             let law = &c.laws[k];
             let cs = contact_stiffness(&geo, &law.d, el.normal, el.j0, law.t);
             let ue = element_values(u, &el.nodes);
@@ -247,7 +247,7 @@ impl Solution {
             }
             let geo = TriGeometry::new(&mesh.corners(&el.nodes));
             let ue = element_values(u, &el.nodes);
-            let g = linearised_opening(&geo, c.options.law, el.normal, &ue) / el.edge_length;
+            let g = linearised_opening(&geo, el.normal, &ue) / el.edge_length;
             for &v in &el.nodes {
                 gap[v] = gap[v].min(g);
             }

@@ -62,6 +62,11 @@ pub struct PatchTest {
     pub jitter: f64,
     /// Seed of the jitter's pseudo-random sequence.
     pub seed: u64,
+    /// The upper block's offset above the lower one: an initial gap (> 0)
+    /// that the pressure closes, or an initial overlap (< 0, an
+    /// interference) that it pushes out. The exact stress is the same
+    /// uniform −p either way (the upper block is free to translate).
+    pub gap: f64,
 }
 
 impl Default for PatchTest {
@@ -79,6 +84,7 @@ impl Default for PatchTest {
             ratio: 1.0,
             jitter: 0.0,
             seed: 1,
+            gap: 0.0,
         }
     }
 }
@@ -189,7 +195,7 @@ impl PatchTest {
         let xs1 = columns(l, n1, self.jitter, &mut state);
         let xs2 = columns(l, n2, self.jitter, &mut state);
         let ys1 = rows(-self.h1, self.h1, l / n1 as f64);
-        let ys2 = rows(0.0, self.h2, l / n2 as f64);
+        let ys2 = rows(self.gap, self.h2, l / n2 as f64);
         let mut b = MeshBuilder::new();
         let lower = b.add_grid(&xs1, &ys1, 1, Diagonal::Forward);
         let n_lower = b.nodes.len();
@@ -203,9 +209,9 @@ impl PatchTest {
                 TAG_BOTTOM
             } else if in_lower && both(0.0) {
                 TAG_CONTACT_LOWER
-            } else if !in_lower && both(0.0) {
+            } else if !in_lower && both(self.gap) {
                 TAG_CONTACT_UPPER
-            } else if !in_lower && both(self.h2) {
+            } else if !in_lower && both(self.gap + self.h2) {
                 TAG_LOAD
             } else {
                 continue;
