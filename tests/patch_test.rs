@@ -182,3 +182,35 @@ fn the_stick_and_frictional_laws_pass_across_an_initial_overlap_or_gap() {
         }
     }
 }
+
+/// An overflow in the inversion test is a numerical failure, not a
+/// singular system (docs/method.md §6.5). E = 1e-300 under p = 1 on blocks
+/// 5e4 long: finite displacements ~1e304, whose openings (× the elements'
+/// size, 1e4) overflow. Before, the infinite openings read "open", every
+/// element was released and the solve was refused as SINGULAR ("body 2 is
+/// not restrained").
+#[test]
+fn an_overflowing_opening_is_a_numerical_failure_naming_the_element() {
+    let test = PatchTest {
+        e_lower: 1e-300,
+        e_upper: 1e-300,
+        length: 5e4,
+        h1: 2.5e4,
+        h2: 2.5e4,
+        mesh_size: 5e4 / 4.0,
+        p: 1.0,
+        ..Default::default()
+    };
+    let mut s = test.build().unwrap();
+    let e = s
+        .model
+        .solve_contact(&ContactOptions::default())
+        .unwrap_err();
+    assert_eq!(
+        e.status(),
+        tfem::Status::NumericalFailure,
+        "{}",
+        e.message()
+    );
+    assert!(e.message().contains("contact element"), "{}", e.message());
+}

@@ -782,7 +782,7 @@ impl HostContact {
         let verdict = b.set.inverted(b.active.active(), |k| {
             let tri = &elements[k].nodes;
             std::array::from_fn(|a| u[2 * tri[a / 2] + a % 2])
-        });
+        })?;
         let iteration = b.active.history().len() + 1;
         if iteration > cap {
             return Err(b.active.not_settled(cap));

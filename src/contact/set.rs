@@ -482,13 +482,13 @@ impl<'a> ContactSet<'a> {
         &self,
         (current, c): (&[bool], &[f64]),
         values: impl Fn(usize) -> [f64; 6],
-    ) -> Verdict {
-        let normal = self.inverted(current, &values);
+    ) -> Result<Verdict> {
+        let normal = self.inverted(current, &values)?;
         let Some(f) = &self.friction else {
-            return Verdict {
+            return Ok(Verdict {
                 flags: normal,
                 ..Verdict::default()
-            };
+            });
         };
         let n = self.len();
         let mut flags = normal.clone();
@@ -528,7 +528,7 @@ impl<'a> ContactSet<'a> {
                 }
             }
         }
-        Verdict { flags, loads: next }
+        Ok(Verdict { flags, loads: next })
     }
 
     /// The frictional state of a converged solve: flags over parts, load
@@ -595,7 +595,17 @@ impl<'a> ContactSet<'a> {
     /// support, the element with the same apex whose edge lies under it, is
     /// inverted too (the apex has crossed the other body's surface), and
     /// once on it stays on while it is inverted.
-    pub fn inverted(&self, current: &[bool], values: impl Fn(usize) -> [f64; 6]) -> Vec<bool> {
+    ///
+    /// A non-finite opening (displacements near the overflow threshold: the
+    /// opening multiplies them by the element's size) is refused as
+    /// `NumericalFailure` naming the element: compared with 0 it would
+    /// read "open" and release the element, and the loop then reported the
+    /// body as unrestrained (SINGULAR) instead of the overflow.
+    pub fn inverted(
+        &self,
+        current: &[bool],
+        values: impl Fn(usize) -> [f64; 6],
+    ) -> Result<Vec<bool>> {
         let test = self.options.test;
         let j: Vec<f64> = self
             .elements
@@ -616,9 +626,19 @@ impl<'a> ContactSet<'a> {
                 }
             })
             .collect();
-        (0..j.len())
+        if let Some(k) = j.iter().position(|v| !v.is_finite()) {
+            return Err(Error::new(
+                Status::NumericalFailure,
+                format!(
+                    "contact element {}: its opening in the inversion test is {} (the displacements overflow it)",
+                    k + self.base,
+                    j[k]
+                ),
+            ));
+        }
+        Ok((0..j.len())
             .map(|k| j[k] < 0.0 && (current[k] || self.supports[k].is_none_or(|a| j[a] < 0.0)))
-            .collect()
+            .collect())
     }
 
     /// The linearised opening of element `k` (the quantity the law

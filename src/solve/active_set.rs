@@ -283,7 +283,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         let Verdict {
             flags: next,
             loads: friction,
-        } = self.verdict();
+        } = self.verdict()?;
         let scale = friction.iter().fold(0.0f64, |m, c| m.max(c.abs()));
         let moved = friction
             .iter()
@@ -510,7 +510,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
 
     /// The contact law's verdict on the current iterate
     /// ([`ContactSet::verdict`]).
-    fn verdict(&self) -> Verdict {
+    fn verdict(&self) -> Result<Verdict> {
         let at = (self.input.at.dofs, self.input.prescribed);
         let set = self.input.set;
         let current = (self.set.active(), &self.friction[..]);
