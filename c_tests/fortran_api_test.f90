@@ -89,15 +89,21 @@ program fortran_api_test
   call expect(tfem_solve(m, info) == TFEM_STATUS_OK, 'solve after the move')
   call expect(tfem_get_displacements(m, u, int(size(u), c_size_t)) == TFEM_STATUS_OK, 'moved displacements')
   call expect(abs(u(2) - 1e-3_dp) < 1e-15_dp, 'the moved value holds')
-  call tfem_destroy(m)
 
-  ! A contact context keeps its own messages, read as a Fortran string.
+  ! A contact context keeps its own messages, read as a Fortran string; a
+  ! model given as a context (type(c_ptr) does not tell them apart) is
+  ! refused, and says so.
   ctx = tfem_contact_create(1_c_int)
   status = tfem_contact_add_pair(ctx, 0_c_int, 1_c_int, pair)
   call expect(status == TFEM_STATUS_INVALID_ARGUMENT .and. len(tfem_contact_error_message(ctx)) > 0 &
       .and. index(tfem_contact_error_message(ctx), 'side') > 0, 'a contact context''s message: ' &
       //tfem_contact_error_message(ctx))
+  call expect(index(tfem_contact_error_message(m), 'is not a contact context') > 0, &
+      'a model given as a context: '//tfem_contact_error_message(m))
+  call expect(index(tfem_error_message(ctx), 'is not a model') > 0, &
+      'a context given as a model: '//tfem_error_message(ctx))
   call tfem_contact_destroy(ctx)
+  call tfem_destroy(m)
 
   write (*, '(a, i0, a, i0, a)') 'fortran_api_test: ', passed, ' passed, ', failed, ' failed'
   write (*, '(i0, a, i0, a)') passed, ' passed, ', failed, ' failed'

@@ -36,8 +36,10 @@
 !   internal failures are read with tfem_last_error and tfem_get_warning.
 ! - Handles are checked before use: a destroyed model or context, or a
 !   handle of the other kind (a Fortran type(c_ptr) does not tell them
-!   apart), is refused with TFEM_STATUS_INVALID_ARGUMENT (message in the
-!   thread's slot), and destroying it is a no-op.
+!   apart), is refused with TFEM_STATUS_INVALID_ARGUMENT (its message in
+!   the thread's slot, or in the buffer of tfem_last_error and
+!   tfem_contact_last_error), and destroying it is a no-op. (A destroyed
+!   handle whose address a new handle has taken reaches the new one.)
 !
 ! Thread contract
 ! - A tfem_model must be used by one thread at a time (no internal
@@ -344,7 +346,9 @@ module tfem
   interface
     !> Destroys a model and everything it owns. NULL is a no-op, and so is a pointer that is not a
     !! live model (destroyed already, or a contact context). A destroyed handle given to any
-    !! function is refused (TFEM_STATUS_INVALID_ARGUMENT), as is a handle of the other kind.
+    !! function is refused (TFEM_STATUS_INVALID_ARGUMENT), as is a handle of the other kind — unless
+    !! its address has since been reused by a new handle, which it then reaches: do not use a handle
+    !! after destroying it.
     subroutine tfem_destroy(model) &
         bind(C, name="tfem_destroy")
       import
@@ -1186,8 +1190,10 @@ module tfem
   interface
     !> Undoes the last load step: its results, and the contact state the next step starts from, go
     !! back to what they were before it. Once per step. Refused with TFEM_STATUS_INVALID_STATE, the
-    !! model unchanged, once the mesh, its boundary edges, the contact pairs or friction on/off have
-    !! changed since that step (its contact state belongs to the contact mesh before the change).
+    !! model unchanged, once the mesh, its boundary edges, the set of prescribed DOFs, the contact
+    !! pairs or friction on/off have changed since that step (its contact state belongs to the
+    !! problem before the change). The state brought back is the next step's start even if that step
+    !! starts a new history (new materials or options).
     function tfem_revert_step(model) &
         bind(C, name="tfem_revert_step") result(status)
       import
@@ -1233,10 +1239,13 @@ module tfem
     !! has friction; the model is then unchanged. From a history of the same problem (the same
     !! geometry, materials, constraints and options) the steps go on bit for bit; from one whose
     !! interface system differs (the same contact mesh, another shape or stiffness), from its active
-    !! set and slip state, with the interface factor of this problem. If the mesh, its boundary
-    !! edges, the pairs or friction on/off change before the next step, that step starts afresh and
-    !! warns. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
-    !! tfem_length_kind); a negative length is passed as 0.
+    !! set and slip state, with the interface factor of this problem; so also when the next step
+    !! starts a new history (new materials or options). If the mesh, its boundary edges, the set of
+    !! prescribed DOFs, the pairs or friction on/off change before the next step, that step starts
+    !! afresh and warns. A frictional state waiting for a step under the stick law is refused by
+    !! that step (TFEM_STATUS_INVALID_ARGUMENT) until another state is set. Fortran: `length` takes
+    !! an integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is
+    !! passed as 0.
     function tfem_set_contact_state(model, buffer, length) &
         bind(C, name="tfem_set_contact_state") result(status)
       import
@@ -2323,7 +2332,7 @@ contains
     buf(1) = c_null_char
     status = tfem_contact_last_error(context, buf, size(buf, kind=c_size_t))
     n = c_strlen(buf)
-    if (status /= TFEM_STATUS_OK .and. status /= TFEM_STATUS_BUFFER_TOO_SMALL) n = 0
+    if (status == TFEM_STATUS_NULL_POINTER) n = 0
     allocate(character(len=n) :: msg)
     do i = 1, n
       msg(i:i) = buf(i)

@@ -30,8 +30,10 @@
  *   internal failures are read with tfem_last_error and tfem_get_warning.
  * - Handles are checked before use: a destroyed model or context, or a
  *   handle of the other kind (a Fortran type(c_ptr) does not tell them
- *   apart), is refused with TFEM_STATUS_INVALID_ARGUMENT (message in the
- *   thread's slot), and destroying it is a no-op.
+ *   apart), is refused with TFEM_STATUS_INVALID_ARGUMENT (its message in
+ *   the thread's slot, or in the buffer of tfem_last_error and
+ *   tfem_contact_last_error), and destroying it is a no-op. (A destroyed
+ *   handle whose address a new handle has taken reaches the new one.)
  *
  * Thread contract
  * - A tfem_model must be used by one thread at a time (no internal
@@ -419,7 +421,9 @@ struct tfem_model *tfem_create(void);
  * Destroys a model and everything it owns. NULL is a no-op, and so is a
  * pointer that is not a live model (destroyed already, or a contact
  * context). A destroyed handle given to any function is refused
- * (TFEM_STATUS_INVALID_ARGUMENT), as is a handle of the other kind.
+ * (TFEM_STATUS_INVALID_ARGUMENT), as is a handle of the other kind —
+ * unless its address has since been reused by a new handle, which it
+ * then reaches: do not use a handle after destroying it.
  */
 void tfem_destroy(struct tfem_model *model);
 
@@ -921,9 +925,11 @@ enum tfem_status tfem_step(struct tfem_model *model,
  * Undoes the last load step: its results, and the contact state the next
  * step starts from, go back to what they were before it. Once per step.
  * Refused with TFEM_STATUS_INVALID_STATE, the model unchanged, once the
- * mesh, its boundary edges, the contact pairs or friction on/off have
- * changed since that step (its contact state belongs to the contact mesh
- * before the change).
+ * mesh, its boundary edges, the set of prescribed DOFs, the contact pairs
+ * or friction on/off have changed since that step (its contact state
+ * belongs to the problem before the change). The state brought back is
+ * the next step's start even if that step starts a new history (new
+ * materials or options).
  */
 enum tfem_status tfem_revert_step(struct tfem_model *model);
 
@@ -951,9 +957,12 @@ enum tfem_status tfem_get_contact_state(struct tfem_model *model, uint8_t *buffe
  * geometry, materials, constraints and options) the steps go on bit for
  * bit; from one whose interface system differs (the same contact mesh,
  * another shape or stiffness), from its active set and slip state, with
- * the interface factor of this problem. If the mesh, its boundary edges,
- * the pairs or friction on/off change before the next step, that step
- * starts afresh and warns.
+ * the interface factor of this problem; so also when the next step
+ * starts a new history (new materials or options). If the mesh, its
+ * boundary edges, the set of prescribed DOFs, the pairs or friction on/off
+ * change before the next step, that step starts afresh and warns. A
+ * frictional state waiting for a step under the stick law is refused by
+ * that step (TFEM_STATUS_INVALID_ARGUMENT) until another state is set.
  */
 enum tfem_status tfem_set_contact_state(struct tfem_model *model,
                                         const uint8_t *buffer,

@@ -945,7 +945,7 @@ fn generate(header: &str) -> String {
          \x20   buf(1) = c_null_char\n\
          \x20   status = tfem_contact_last_error(context, buf, size(buf, kind=c_size_t))\n\
          \x20   n = c_strlen(buf)\n\
-         \x20   if (status /= TFEM_STATUS_OK .and. status /= TFEM_STATUS_BUFFER_TOO_SMALL) n = 0\n\
+         \x20   if (status == TFEM_STATUS_NULL_POINTER) n = 0\n\
          \x20   allocate(character(len=n) :: msg)\n\
          \x20   do i = 1, n\n\
          \x20     msg(i:i) = buf(i)\n\

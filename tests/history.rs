@@ -299,6 +299,74 @@ fn a_restored_state_dropped_by_a_structure_change_warns_and_the_step_starts_afre
     );
 }
 
+/// Found by a review: in a model that had a history, a state given to
+/// set_contact_state (or brought back by revert_step) went into that
+/// history, which the next step, under new materials, replaced: the state
+/// was dropped without a word, and with friction the answer is path
+/// dependent (12–17 % off). The next step starts from it, as a new model
+/// given the same state does.
+#[test]
+fn a_state_given_before_a_stiffness_change_is_the_next_steps_start_in_the_same_model() {
+    let options = ContactOptions::default();
+    let frictional = || {
+        let mut m = scene(0.3);
+        m.set_friction(0, 0.3).unwrap();
+        m
+    };
+    let mut saved = frictional();
+    saved.step(1.0, &options).unwrap();
+    let state = saved.contact_state().unwrap();
+    let d = TwoBlocks::default();
+    let stiffer = tfem::Material::new(3.0 * d.e2, d.nu2, d.plane, "body 2").unwrap();
+    let mut fresh = frictional();
+    fresh.set_material(2, stiffer).unwrap();
+    fresh.set_contact_state(&state).unwrap();
+    fresh.step(0.3, &options).unwrap();
+    let expected = bits(&fresh.displacements().unwrap());
+    // Given after the change, in a model whose history is of the old
+    // stiffness.
+    let mut model = frictional();
+    model.step(0.5, &options).unwrap();
+    model.set_material(2, stiffer).unwrap();
+    model.set_contact_state(&state).unwrap();
+    model.step(0.3, &options).unwrap();
+    assert_eq!(bits(&model.displacements().unwrap()), expected);
+    // Given before the change.
+    let mut model = frictional();
+    model.step(0.5, &options).unwrap();
+    model.set_contact_state(&state).unwrap();
+    model.set_material(2, stiffer).unwrap();
+    model.step(0.3, &options).unwrap();
+    assert_eq!(bits(&model.displacements().unwrap()), expected);
+    // A reverted step's state likewise.
+    let mut model = frictional();
+    model.step(1.0, &options).unwrap();
+    model.step(1.5, &options).unwrap();
+    model.revert_step().unwrap();
+    model.set_material(2, stiffer).unwrap();
+    model.step(0.3, &options).unwrap();
+    assert_eq!(bits(&model.displacements().unwrap()), expected);
+}
+
+/// Found by the same review: a state waiting for a step, dropped by a
+/// structure change, was still handed out by contact_state, stamped with
+/// the new contact mesh.
+#[test]
+fn a_state_dropped_by_a_structure_change_is_not_handed_out() {
+    let options = ContactOptions::default();
+    let mut saved = scene(0.3);
+    saved.step(0.5, &options).unwrap();
+    let state = saved.contact_state().unwrap();
+    let mut model = scene(0.3);
+    model.set_contact_state(&state).unwrap();
+    assert_eq!(model.contact_state().unwrap(), state);
+    model.set_friction(0, 0.3).unwrap();
+    assert_eq!(
+        model.contact_state().unwrap_err().status(),
+        Status::InvalidState
+    );
+}
+
 /// Found by the same probe (598 states with one byte changed): a changed
 /// factor value was restored as it was.
 #[test]
@@ -307,7 +375,9 @@ fn a_contact_state_with_a_changed_byte_is_refused() {
     let mut model = scene(0.3);
     model.step(0.5, &options).unwrap();
     let state = model.contact_state().unwrap();
-    for at in [state.len() / 2, state.len() - 1] {
+    // The fingerprint of the interface system (bytes 16..24) too: a review
+    // found it outside the checksum.
+    for at in [16, 20, state.len() / 2, state.len() - 1] {
         let mut changed = state.clone();
         changed[at] ^= 0x10;
         let err = scene(0.3).set_contact_state(&changed).unwrap_err();

@@ -44,7 +44,9 @@ pub extern "C" fn tfem_create() -> *mut TfemModel {
 /// Destroys a model and everything it owns. NULL is a no-op, and so is a
 /// pointer that is not a live model (destroyed already, or a contact
 /// context). A destroyed handle given to any function is refused
-/// (TFEM_STATUS_INVALID_ARGUMENT), as is a handle of the other kind.
+/// (TFEM_STATUS_INVALID_ARGUMENT), as is a handle of the other kind —
+/// unless its address has since been reused by a new handle, which it
+/// then reaches: do not use a handle after destroying it.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_destroy(model: *mut TfemModel) {
     if !model.is_null() && unregister(model) {
@@ -1157,9 +1159,11 @@ pub unsafe extern "C" fn tfem_step(
 /// Undoes the last load step: its results, and the contact state the next
 /// step starts from, go back to what they were before it. Once per step.
 /// Refused with TFEM_STATUS_INVALID_STATE, the model unchanged, once the
-/// mesh, its boundary edges, the contact pairs or friction on/off have
-/// changed since that step (its contact state belongs to the contact mesh
-/// before the change).
+/// mesh, its boundary edges, the set of prescribed DOFs, the contact pairs
+/// or friction on/off have changed since that step (its contact state
+/// belongs to the problem before the change). The state brought back is
+/// the next step's start even if that step starts a new history (new
+/// materials or options).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_revert_step(model: *mut TfemModel) -> Status {
     with_model(model, |m| m.model.revert_step())
@@ -1201,9 +1205,12 @@ pub unsafe extern "C" fn tfem_get_contact_state(
 /// geometry, materials, constraints and options) the steps go on bit for
 /// bit; from one whose interface system differs (the same contact mesh,
 /// another shape or stiffness), from its active set and slip state, with
-/// the interface factor of this problem. If the mesh, its boundary edges,
-/// the pairs or friction on/off change before the next step, that step
-/// starts afresh and warns.
+/// the interface factor of this problem; so also when the next step
+/// starts a new history (new materials or options). If the mesh, its
+/// boundary edges, the set of prescribed DOFs, the pairs or friction on/off
+/// change before the next step, that step starts afresh and warns. A
+/// frictional state waiting for a step under the stick law is refused by
+/// that step (TFEM_STATUS_INVALID_ARGUMENT) until another state is set.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_set_contact_state(
     model: *mut TfemModel,

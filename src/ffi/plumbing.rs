@@ -83,8 +83,8 @@ pub(super) trait Handle {
 static LIVE: LazyLock<RwLock<HashMap<usize, &'static str>>> =
     LazyLock::new(|| RwLock::new(HashMap::new()));
 
-/// Boxes `value` as a live handle; NULL when even that cannot be
-/// allocated.
+/// Boxes `value` as a live handle; NULL when the registry cannot grow.
+/// (The box itself, a few hundred bytes, is allocated infallibly.)
 pub(super) fn register<H: Handle>(value: H) -> *mut H {
     let mut live = LIVE.write().unwrap_or_else(|e| e.into_inner());
     if live.try_reserve(1).is_err() {
