@@ -21,14 +21,24 @@ fn bits(u: &[[f64; 2]]) -> Vec<u64> {
     u.iter().flatten().map(|v| v.to_bits()).collect()
 }
 
-fn relative_difference(a: &[[f64; 2]], b: &[[f64; 2]]) -> f64 {
-    let scale = b.iter().flatten().fold(0.0f64, |m, v| m.max(v.abs()));
+/// The contact state of `model` after one step at `t`.
+fn state_after(mut model: Model, t: f64) -> Vec<u8> {
+    model.step(t, &ContactOptions::default()).unwrap();
+    model.contact_state().unwrap()
+}
+
+/// The largest difference of `a` and `b` over the largest value of `b`.
+fn largest_difference(a: &[f64], b: &[f64]) -> f64 {
+    let scale = b.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let diff = a
         .iter()
-        .flatten()
-        .zip(b.iter().flatten())
+        .zip(b)
         .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
     diff / scale
+}
+
+fn relative_difference(a: &[[f64; 2]], b: &[[f64; 2]]) -> f64 {
+    largest_difference(a.as_flattened(), b.as_flattened())
 }
 
 #[test]
@@ -166,13 +176,7 @@ fn a_contact_state_of_another_mesh_or_cut_short_is_refused() {
 /// The largest difference of the contact pressures of `a` and `b` over
 /// the largest pressure of `b`.
 fn pressure_difference(a: &Model, b: &Model) -> f64 {
-    let (a, b) = (a.contact_pressure().unwrap(), b.contact_pressure().unwrap());
-    let scale = b.iter().fold(0.0f64, |m, p| m.max(p.abs()));
-    let diff = a
-        .iter()
-        .zip(b)
-        .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
-    diff / scale
+    largest_difference(a.contact_pressure().unwrap(), b.contact_pressure().unwrap())
 }
 
 /// Found by a probe of load histories: a state restored into a model of
@@ -183,9 +187,7 @@ fn pressure_difference(a: &Model, b: &Model) -> f64 {
 #[test]
 fn a_contact_state_of_another_gap_or_stiffness_continues_from_its_set_with_this_problems_factor() {
     let options = ContactOptions::default();
-    let mut saved = scene(0.3);
-    saved.step(0.5, &options).unwrap();
-    let state = saved.contact_state().unwrap();
+    let state = state_after(scene(0.3), 0.5);
     let variants = [
         TwoBlocks {
             c: 0.3,
@@ -282,9 +284,7 @@ fn a_frictional_contact_state_is_refused_where_no_pair_has_friction() {
 #[test]
 fn a_restored_state_dropped_by_a_structure_change_warns_and_the_step_starts_afresh() {
     let options = ContactOptions::default();
-    let mut saved = scene(0.3);
-    saved.step(0.5, &options).unwrap();
-    let state = saved.contact_state().unwrap();
+    let state = state_after(scene(0.3), 0.5);
     let mut model = scene(0.3);
     model.set_contact_state(&state).unwrap();
     model.set_friction(0, 0.3).unwrap();
@@ -353,10 +353,7 @@ fn a_state_given_before_a_stiffness_change_is_the_next_steps_start_in_the_same_m
 /// the new contact mesh.
 #[test]
 fn a_state_dropped_by_a_structure_change_is_not_handed_out() {
-    let options = ContactOptions::default();
-    let mut saved = scene(0.3);
-    saved.step(0.5, &options).unwrap();
-    let state = saved.contact_state().unwrap();
+    let state = state_after(scene(0.3), 0.5);
     let mut model = scene(0.3);
     model.set_contact_state(&state).unwrap();
     assert_eq!(model.contact_state().unwrap(), state);
