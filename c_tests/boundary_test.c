@@ -561,6 +561,35 @@ static void a_load_history_steps_reverts_and_restarts_bit_for_bit(void) {
  * every later step was refused; a state restored into a model of another
  * stiffness brought its interface factor along (contact pressures off by
  * tens of percent, status OK); a changed byte went unnoticed. */
+/* A rigid punch (every node of body 2 moved down 1e-3) on a block E =
+ * 2e11: with E_c = 1e23 the penalty's overlap falls below the rounding of
+ * u and the contact forces are rounding while the system is well
+ * conditioned; the solve says so (docs/method.md §6.14). The default E_c
+ * does not warn. */
+static void a_contact_modulus_too_stiff_for_its_overlap_is_warned_about(void) {
+  static mesh_t P;
+  memset(&P, 0, sizeof P);
+  grid(&P, 4, 4, 0.0, 0.0, 1.0, 1.0, 1, 1);
+  int first_punch = P.nn;
+  grid(&P, 4, 1, 0.0, 1.0, 1.0, 0.25, 2, 5);
+  for (int k = 0; k < 2; ++k) {
+    tfem_model *m = model_of(&P, 2, 2e11, 1.0, TFEM_PLANE_MODE_STRAIN);
+    CHECK(tfem_fix_edges(m, 3, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+    CHECK(tfem_fix_edges(m, 3, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+    for (int v = first_punch; v < P.nn; ++v) {
+      CHECK(tfem_fix(m, v, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+      CHECK(tfem_fix(m, v, TFEM_COMPONENT_Y, -1e-3) == TFEM_STATUS_OK);
+    }
+    CHECK(tfem_add_contact_pair(m, 4, 7, NULL) == TFEM_STATUS_OK);
+    tfem_contact_options o;
+    tfem_contact_options_default(&o);
+    if (k == 1) o.contact_modulus = 1e23;
+    CHECK(tfem_solve_contact(m, &o, NULL) == TFEM_STATUS_OK);
+    CHECK(has_warning(m, "correct digits") == (k == 1));
+    tfem_destroy(m);
+  }
+}
+
 static void a_contact_state_never_outlives_its_problem(void) {
   tfem_model *m = two_blocks();
   CHECK(tfem_step(m, 0.5, NULL, NULL) == TFEM_STATUS_OK);
@@ -1684,6 +1713,7 @@ int main(int argc, char **argv) {
   a_host_gets_contact_forces_gaps_and_the_contact_mesh_before_a_solve();
   a_load_history_steps_reverts_and_restarts_bit_for_bit();
   a_contact_state_never_outlives_its_problem();
+  a_contact_modulus_too_stiff_for_its_overlap_is_warned_about();
   a_host_side_given_clockwise_is_refused();
   a_failed_call_between_load_steps_keeps_the_history();
   friction_obeys_coulomb_and_restarts_bit_for_bit();

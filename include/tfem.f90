@@ -395,7 +395,9 @@ module tfem
 
   interface
     !> Number of warnings: mesh validation (unused or coincident nodes, inverted or clockwise
-    !! triangles) and the last solve (tempering of well-shaped elements).
+    !! triangles) and the last solve or load step (tempering of well-shaped elements, an
+    !! ill-conditioned system, contact pressures with fewer than six correct digits: a penalty E_c
+    !! so stiff that its overlaps approach the rounding of the displacements).
     function tfem_warning_count(model, count) &
         bind(C, name="tfem_warning_count") result(status)
       import

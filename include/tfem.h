@@ -445,8 +445,10 @@ size_t tfem_last_error_length(const struct tfem_model *model);
 
 /**
  * Number of warnings: mesh validation (unused or coincident nodes,
- * inverted or clockwise triangles) and the last solve (tempering of
- * well-shaped elements).
+ * inverted or clockwise triangles) and the last solve or load step
+ * (tempering of well-shaped elements, an ill-conditioned system, contact
+ * pressures with fewer than six correct digits: a penalty E_c so stiff
+ * that its overlaps approach the rounding of the displacements).
  */
 enum tfem_status tfem_warning_count(struct tfem_model *model, int *count);
 

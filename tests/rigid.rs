@@ -142,3 +142,40 @@ fn a_rigid_cylinder_gives_hertz_with_the_elastic_bodys_modulus_alone() {
     assert!(ra > 0.5 && ea[3] < 5e-3, "a errors {ea:?}, rate {ra}");
     assert!(rp > 1.5 && ep[3] < 3e-3, "p0 errors {ep:?}, rate {rp}");
 }
+
+/// The flat punch at h = a/8 under contact modulus `e_c`: the model's
+/// warnings after the solve.
+fn punch_warnings(e_c: Option<f64>) -> Vec<String> {
+    let p = FlatPunch {
+        mesh_size: 1.0 / 8.0,
+        ..Default::default()
+    };
+    let mut scene = p.build().unwrap();
+    let options = ContactOptions {
+        contact_modulus: e_c,
+        ..Default::default()
+    };
+    scene.solve(&p, &options).unwrap();
+    scene.model.warnings()
+}
+
+#[test]
+fn a_penalty_too_stiff_to_resolve_its_overlap_is_warned_about() {
+    // E_c = 1e23 against the block's 2e11: the overlap p/κ falls below the
+    // rounding of u, so the contact forces are rounding (docs/method.md
+    // §6.14) while the system stays well conditioned. Measured, the
+    // punch's reaction against the support's: off by 4.7e-12 at the
+    // default E_c (silent), 1.8e-6 at 1e17 (warned: "about 5 correct
+    // digits"), 0.80 at 1e23 (warned: 0 digits).
+    let quiet = punch_warnings(None);
+    assert!(
+        quiet.iter().all(|w| !w.contains("correct digits")),
+        "{quiet:?}"
+    );
+    let loud = punch_warnings(Some(1e23));
+    assert!(
+        loud.iter()
+            .any(|w| w.contains("contact pressures carry about")),
+        "{loud:?}"
+    );
+}

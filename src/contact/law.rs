@@ -118,6 +118,32 @@ pub fn linearised_opening(geo: &TriGeometry, n: [f64; 2], ue: &[f64; 6]) -> f64 
             .sum::<f64>()
 }
 
+/// The least error the rounding of the displacements leaves in
+/// [`linearised_opening`]: ε (|J0| + Σ |n·g_i| |n·u_i|). Each u_i is known
+/// to ε|u_i| at best, so an opening below this bound — the overlap of a
+/// very stiff penalty, far below the displacements themselves — is
+/// rounding, not a measurement (docs/method.md §6.14).
+pub fn opening_rounding(geo: &TriGeometry, n: [f64; 2], ue: &[f64; 6]) -> f64 {
+    let terms = (0..3)
+        .map(|i| {
+            ((geo.g[i][0] * n[0] + geo.g[i][1] * n[1]) * (ue[2 * i] * n[0] + ue[2 * i + 1] * n[1]))
+                .abs()
+        })
+        .sum::<f64>();
+    f64::EPSILON * (geo.j.abs() + terms)
+}
+
+/// How much an element's contact pressure changes per unit of its opening:
+/// n·D·n / T (E_c/T for the frictionless law, whose D is E_c m mᵀ with
+/// m·(n⊗n) = 1; the normal modulus of the stick law's D).
+pub fn pressure_per_opening(d: &[[f64; 3]; 3], n: [f64; 2], t: f64) -> f64 {
+    let en = e_n(n);
+    let dn: f64 = (0..3)
+        .map(|r| en[r] * (d[r][0] * en[0] + d[r][1] * en[1] + d[r][2] * en[2]))
+        .sum();
+    dn.abs() / t
+}
+
 /// Coefficient of element DOF `a` (node a/2, component a%2) in
 /// [`linearised_opening`].
 pub fn opening_coefficient(geo: &TriGeometry, n: [f64; 2], a: usize) -> f64 {

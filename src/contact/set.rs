@@ -12,7 +12,8 @@ use std::collections::{BTreeMap, HashSet};
 
 use super::law::{
     ContactStiffness, contact_jmins, contact_pressure, contact_stiffness, law_geometry, law_matrix,
-    linearised_opening, opening_coefficient, shear_vector, stick_stiffness,
+    linearised_opening, opening_coefficient, opening_rounding, pressure_per_opening, shear_vector,
+    stick_stiffness,
 };
 use super::mesh::Nodes;
 use super::{ContactElement, ContactOptions, InversionTest};
@@ -653,6 +654,15 @@ impl<'a> ContactSet<'a> {
     pub fn pressure(&self, k: usize, ue: &[f64; 6]) -> f64 {
         let (el, law) = (&self.elements[k], &self.laws[k]);
         contact_pressure(&self.geos[k], &law.d, el.normal, el.j0, law.t, ue)
+    }
+
+    /// The least error in the pressure of element `k` that the rounding of
+    /// its displacements `ue` leaves (docs/method.md §6.14): the opening's
+    /// rounding times the pressure per unit opening.
+    pub fn pressure_rounding(&self, k: usize, ue: &[f64; 6]) -> f64 {
+        let (el, law) = (&self.elements[k], &self.laws[k]);
+        opening_rounding(&self.geos[k], el.normal, ue)
+            * pressure_per_opening(&law.d, el.normal, law.t)
     }
 
     /// The interface unknowns: the free unknowns with a nonzero coefficient

@@ -100,8 +100,10 @@ fn model_error(model: *const TfemModel) -> Result<String> {
 }
 
 /// Number of warnings: mesh validation (unused or coincident nodes,
-/// inverted or clockwise triangles) and the last solve (tempering of
-/// well-shaped elements).
+/// inverted or clockwise triangles) and the last solve or load step
+/// (tempering of well-shaped elements, an ill-conditioned system, contact
+/// pressures with fewer than six correct digits: a penalty E_c so stiff
+/// that its overlaps approach the rounding of the displacements).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_warning_count(model: *mut TfemModel, count: *mut c_int) -> Status {
     with_model(model, |m| {

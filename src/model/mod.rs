@@ -356,8 +356,10 @@ impl Model {
         self.problem.contact_pairs()
     }
 
-    /// Mesh warnings plus those of the last solve (e.g. tempering of
-    /// well-shaped elements).
+    /// Mesh warnings plus those of the last solve or load step: tempering
+    /// of well-shaped elements, an ill-conditioned system, contact
+    /// pressures that carry fewer than six correct digits (a penalty whose
+    /// overlaps approach the rounding of u, docs/method.md §6.14).
     pub fn warnings(&self) -> Vec<String> {
         let mut w: Vec<String> = self
             .problem

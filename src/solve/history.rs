@@ -824,7 +824,7 @@ struct Step<'a, 's> {
 /// that on error it is back where it was.
 fn on_interface(
     history: &mut Option<History>,
-    step: Step<'_, '_>,
+    mut step: Step<'_, '_>,
     (ui, active, friction, records): (Vec<f64>, Vec<bool>, Vec<f64>, Vec<IterationRecord>),
     info: SolveInfo,
 ) -> std::result::Result<(Outcome, StepState), StepFailure> {
@@ -837,7 +837,14 @@ fn on_interface(
             i => sys.position(i).map_or(x1[i], |p| ui[p]),
         };
         let ue_of = |tri: &[usize; 3]| std::array::from_fn(|a| value(2 * tri[a / 2] + a % 2));
-        contact_outcome(step.set, ue_of, (active.clone(), &friction), records, info)
+        contact_outcome(
+            step.set,
+            ue_of,
+            (active.clone(), &friction),
+            records,
+            info,
+            &mut step.warnings,
+        )
     });
     let contact = match judged {
         Ok(contact) => contact,
@@ -877,7 +884,14 @@ fn on_full_solve(
     let u = step.dofs.expand(&settled.x, step.prescribed);
     let ue_of = |tri: &[usize; 3]| crate::fem::element_loop::element_values(&u, tri);
     let verdict = (settled.active, &settled.friction[..]);
-    let contact = contact_outcome(step.set, ue_of, verdict, settled.history, info)?;
+    let contact = contact_outcome(
+        step.set,
+        ue_of,
+        verdict,
+        settled.history,
+        info,
+        &mut step.warnings,
+    )?;
     let outcome = Outcome {
         u: Field::Global(u),
         log: Vec::new(),

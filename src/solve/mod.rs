@@ -332,7 +332,7 @@ fn solve_contact(
     drop(settled.x);
     let ue_of = |tri: &[usize; 3]| element_values(&u, tri);
     let verdict = (settled.active, &settled.friction[..]);
-    let contact = contact_outcome(&set, ue_of, verdict, settled.history, info)?;
+    let contact = contact_outcome(&set, ue_of, verdict, settled.history, info, &mut warnings)?;
     Ok(Outcome {
         u: Field::Global(u),
         log: system.log().to_vec(),
@@ -340,6 +340,55 @@ fn solve_contact(
         contact: Some(contact),
         warnings,
     })
+}
+
+/// Below this many correct digits of the largest contact pressure a solve
+/// warns (`precision_warning`).
+const PRESSURE_DIGITS: f64 = 6.0;
+
+/// The error of a solved u over the rounding bound of its value: the solve
+/// adds its own. Measured on the flat punch (h = a/8, E_c = 1e15 … 1e21):
+/// the punch's reaction is off from the support's by 2–40× the rounding
+/// bound of the largest pressure, relative to it.
+const SOLVE_ERROR_FACTOR: f64 = 10.0;
+
+/// Warns when the contact pressures carry fewer than [`PRESSURE_DIGITS`]
+/// correct digits because the penalty's overlaps approach the rounding of
+/// the displacements (docs/method.md §6.14): a very stiff E_c against a
+/// prescribed body leaves a well-conditioned system (no conditioning
+/// warning: the penalty couples free to prescribed unknowns, so it enters
+/// the load) whose forces are nevertheless rounding. The bound compared is
+/// the largest error the displacements' own rounding leaves in an active
+/// element's pressure, against the largest pressure.
+fn precision_warning(
+    set: &ContactSet<'_>,
+    ue_of: impl Fn(&[usize; 3]) -> [f64; 6],
+    active: &[bool],
+    pressure: &[f64],
+    warnings: &mut Vec<String>,
+) {
+    let (mut worst, mut at) = (0.0f64, None);
+    for (k, el) in set.elements().iter().enumerate() {
+        if active[k] {
+            let r = SOLVE_ERROR_FACTOR * set.pressure_rounding(k, &ue_of(&el.nodes));
+            if r > worst {
+                (worst, at) = (r, Some(k));
+            }
+        }
+    }
+    let largest = pressure.iter().fold(0.0f64, |m, p| m.max(p.abs()));
+    let Some(k) = at else { return };
+    if !(worst > 10f64.powf(-PRESSURE_DIGITS) * largest) {
+        return;
+    }
+    let digits = (largest / worst).log10().max(0.0);
+    warnings.push(format!(
+        "the contact pressures carry about {digits:.0} correct digits: the penalty's overlaps are \
+         near the rounding of the displacements (at contact element {}, the pressure {:.3e} may be off \
+         by {worst:.1e}, against a largest pressure of {largest:.3e}); lower E_c or λ (docs/method.md §6.14)",
+        k + set.nodes().base,
+        pressure[k]
+    ));
 }
 
 /// Bytes held by the pattern, the matrix values and the factor.
@@ -368,6 +417,7 @@ pub(crate) fn contact_outcome(
     (mut active, friction): (Vec<bool>, &[f64]),
     history: Vec<report::IterationRecord>,
     info: SolveInfo,
+    warnings: &mut Vec<String>,
 ) -> Result<ContactOutcome> {
     let elements = set.elements();
     let friction = set.friction_outcome(&active, friction, |k| ue_of(&elements[k].nodes));
@@ -393,6 +443,7 @@ pub(crate) fn contact_outcome(
     }
     let name = |k: usize| format!("contact element {}", k + set.nodes().base);
     ensure_finite(pressure.iter().copied(), 1, "contact pressure", name)?;
+    precision_warning(set, &ue_of, &active, &pressure, warnings);
     ensure_finite([lc, max_pen], 1, "contact length or penetration", |_| {
         "the contact report".to_string()
     })?;
