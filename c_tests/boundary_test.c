@@ -165,6 +165,26 @@ static void a_clockwise_mesh_is_turned_and_solved_exactly(void) {
   tfem_destroy(ccw);
 }
 
+/* A triangle given twice (here in the other orientation) would count its
+ * stiffness twice: refused naming both, and the model keeps its mesh. */
+static void a_triangle_given_twice_is_refused_and_the_mesh_kept(void) {
+  tfem_model *m = tension_block(G.tri);
+  int tri[3 * 4096 + 3], body[4096 + 1];
+  memcpy(tri, G.tri, sizeof(int) * 3 * G.nt);
+  memcpy(body, G.body, sizeof(int) * G.nt);
+  int again[3] = {G.tri[3 * 5], G.tri[3 * 5 + 2], G.tri[3 * 5 + 1]};
+  memcpy(&tri[3 * G.nt], again, sizeof again);
+  body[G.nt] = 1;
+  char needle[64];
+  snprintf(needle, sizeof needle, "triangle %d (nodes", G.nt);
+  EXPECT_ERROR(m, tfem_set_mesh(m, G.nn, G.xy, G.nt + 1, tri, body, 0), TFEM_STATUS_INVALID_MESH,
+               needle);
+  EXPECT_ERROR(m, tfem_set_mesh(m, G.nn, G.xy, G.nt + 1, tri, body, 0), TFEM_STATUS_INVALID_MESH,
+               "repeats triangle 5");
+  CHECK(tfem_solve(m, NULL) == TFEM_STATUS_OK && tension_error(m) < 1e-12);
+  tfem_destroy(m);
+}
+
 static void a_fold_inside_a_counter_clockwise_body_stays_inverted(void) {
   double xy[2 * 4096];
   memcpy(xy, G.xy, sizeof xy);
@@ -949,6 +969,38 @@ static void facing_tags_are_paired_automatically(void) {
   tfem_destroy(declared);
 }
 
+/* Three unit blocks stacked (bodies 1, 2, 3 from the bottom): whatever
+ * the tolerance, only the two bed joints pair — not the outer faces back
+ * to back (found by a probe at 2.5: a 2-unit overlap solved with OK), not
+ * the faces of blocks 1 and 3 across block 2 (at 1.5); and a gap of
+ * exactly the tolerance pairs (0.1 was computed as 0.10000000000000009). */
+static void automatic_pairing_pairs_only_faces_that_see_each_other(void) {
+  const double tolerances[3] = {2.5, 1.5, 1e-9};
+  for (int k = 0; k < 3; ++k) {
+    static mesh_t S;
+    memset(&S, 0, sizeof S);
+    for (int b = 0; b < 3; ++b) grid(&S, 2, 2, 0.0, b, 1.0, 1.0, b + 1, 4 * b + 1);
+    tfem_model *m = model_of(&S, 3, 1e9, 1.0, TFEM_PLANE_MODE_STRAIN);
+    int first = -1, count = -1;
+    CHECK(tfem_add_contact_pairs_auto(m, 0, NULL, tolerances[k], &first, &count) == TFEM_STATUS_OK);
+    CHECK(count == 2);
+    for (int p = 0; p < count; ++p) {
+      int a = 0, b = 0;
+      CHECK(tfem_get_contact_pair_bodies(m, p, &a, &b) == TFEM_STATUS_OK);
+      CHECK(abs(a - b) == 1);
+    }
+    tfem_destroy(m);
+  }
+  static mesh_t T;
+  memset(&T, 0, sizeof T);
+  grid(&T, 2, 2, 0.0, 0.0, 1.0, 1.0, 1, 1);
+  grid(&T, 2, 2, 0.0, 1.1, 1.0, 1.0, 2, 5);
+  tfem_model *m = model_of(&T, 2, 1e9, 1.0, TFEM_PLANE_MODE_STRAIN);
+  int first = -1, count = -1;
+  CHECK(tfem_add_contact_pairs_auto(m, 0, NULL, 0.1, &first, &count) == TFEM_STATUS_OK && count == 1);
+  tfem_destroy(m);
+}
+
 /* Two blocks meshed 6 and 4 cells across (3:2, no interface node but the
  * ends faces another) under a uniform pressure: every interface node reads
  * the pressure, the others read zero. */
@@ -1714,11 +1766,13 @@ int main(int argc, char **argv) {
   a_load_history_steps_reverts_and_restarts_bit_for_bit();
   a_contact_state_never_outlives_its_problem();
   a_contact_modulus_too_stiff_for_its_overlap_is_warned_about();
+  a_triangle_given_twice_is_refused_and_the_mesh_kept();
   a_host_side_given_clockwise_is_refused();
   a_failed_call_between_load_steps_keeps_the_history();
   friction_obeys_coulomb_and_restarts_bit_for_bit();
   fuzz_found_defects_at_the_friction_boundary();
   facing_tags_are_paired_automatically();
+  automatic_pairing_pairs_only_faces_that_see_each_other();
   a_non_matching_interface_reads_a_uniform_pressure_at_every_node();
   a_node_on_several_pairs_reads_their_forces_over_their_tributaries();
   an_equation_of_int64_min_marks_a_fixed_dof_at_any_base();

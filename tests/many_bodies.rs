@@ -128,6 +128,80 @@ fn a_tolerance_below_the_gap_finds_no_pair() {
     );
 }
 
+/// Three unit blocks stacked: [0, 1] × [k, k + 1], k = 0, 1, 2.
+fn three_stacked() -> Vec<Rect> {
+    (0..3)
+        .map(|k| rect(0.0, 1.0, k as f64, k as f64 + 1.0, 2))
+        .collect()
+}
+
+fn bed_joints() -> Vec<(i32, i32)> {
+    vec![
+        (block_tag(1, Face::Top), block_tag(2, Face::Bottom)),
+        (block_tag(2, Face::Top), block_tag(3, Face::Bottom)),
+    ]
+}
+
+#[test]
+fn outer_faces_back_to_back_never_pair_whatever_the_tolerance() {
+    // Block 1's bottom (y = 0, facing down) and block 2's top (y = 2,
+    // facing up) have opposed normals 2 apart, turned away from each
+    // other: a probe paired them at δ = 2.5 and read a 2-unit overlap.
+    let mut model = blocks(&three_stacked(), None);
+    model.add_contact_pairs_auto(None, 2.5).unwrap();
+    let mut found = pairs(&model);
+    found.sort_unstable();
+    assert_eq!(found, bed_joints());
+}
+
+#[test]
+fn faces_with_a_body_between_them_do_not_pair() {
+    // Block 1's top and block 3's bottom face each other 1 apart, across
+    // block 2: within δ = 1.5, but not a contact.
+    let mut model = blocks(&three_stacked(), None);
+    model.add_contact_pairs_auto(None, 1.5).unwrap();
+    let mut found = pairs(&model);
+    found.sort_unstable();
+    assert_eq!(found, bed_joints());
+}
+
+#[test]
+fn faces_beside_a_narrower_body_between_them_still_pair() {
+    // Block 2 covers only the left half of the gap between blocks 1 and
+    // 3: the right halves of their faces see each other across 1 and pair
+    // within δ = 1.5; within δ = 0.5 they do not.
+    let rects = [
+        rect(0.0, 1.0, 0.0, 1.0, 4),
+        rect(0.0, 0.5, 1.0, 2.0, 2),
+        rect(0.0, 1.0, 2.0, 3.0, 4),
+    ];
+    let across = (block_tag(1, Face::Top), block_tag(3, Face::Bottom));
+    let mut model = blocks(&rects, None);
+    model.add_contact_pairs_auto(None, 1.5).unwrap();
+    assert!(pairs(&model).contains(&across), "{:?}", pairs(&model));
+    let mut model = blocks(&rects, None);
+    model.add_contact_pairs_auto(None, 0.5).unwrap();
+    assert!(!pairs(&model).contains(&across), "{:?}", pairs(&model));
+}
+
+#[test]
+fn a_gap_of_exactly_the_tolerance_pairs() {
+    // The gap computed from the coordinates, (1 + 0.1) − 1, is
+    // 0.10000000000000009: a probe found no pair within δ = 0.1.
+    for gap in [0.1, 0.01, 0.3] {
+        let rects = [
+            rect(0.0, 1.0, 0.0, 1.0, 2),
+            rect(0.0, 1.0, 1.0 + gap, 2.0 + gap, 2),
+        ];
+        let mut model = blocks(&rects, None);
+        assert_eq!(
+            model.add_contact_pairs_auto(None, gap).unwrap(),
+            vec![0],
+            "gap {gap}"
+        );
+    }
+}
+
 #[test]
 fn bad_pairing_input_is_refused_naming_it() {
     let mut model = blocks(&three_bodies(), None);

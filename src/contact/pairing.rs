@@ -11,15 +11,27 @@
 //!   parallel to within 30° and turned towards each other, so two faces of
 //!   stacked blocks that only share a corner — side by side, normals
 //!   parallel, or at a right angle — never pair);
+//! * lie each in front of the other: the midpoint of f is on the outward
+//!   side of e's line, or behind it by at most half the shorter edge (an
+//!   initial overlap, as in a press fit), and the same from f — so the
+//!   outer faces of two bodies, back to back, never pair;
 //! * overlap along the interface: f projected on the line of e covers a
 //!   part of e of positive length (more than 1e-9 of the shorter edge), so
-//!   faces that meet at a single corner point do not pair.
+//!   faces that meet at a single corner point do not pair;
+//! * have no third body between them: no edge of another body faces e
+//!   within δ nearer than f over a part of what f covers along e (or the
+//!   same from f), so that a δ larger than a body's thickness does not
+//!   pair faces across it.
+//!
+//! The distance is compared with δ up to the rounding of the coordinates
+//! (4 ε times their magnitude), so a gap of exactly δ pairs.
 //!
 //! A tag is a candidate side only if all its edges are boundary edges of one
 //! body (a contact side must be: [`super::mesh::Side`]). Edges of the same
 //! body never pair (self-contact is not supported), whatever their
-//! distance. The tolerance should stay below the thickness of the bodies:
-//! a δ larger than a body's thickness pairs faces across it.
+//! distance. The tolerance should still stay below the thickness of the
+//! bodies: where a body between two faces covers only part of them, the
+//! rest of the faces see each other and pair.
 //!
 //! The search bins the edges in a uniform grid (cells of the larger of δ
 //! and the mean edge length), so its cost is linear in the number of
@@ -187,19 +199,64 @@ pub fn segment_distance(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> f
         .min(point_segment(d, a, b))
 }
 
-/// Whether two edges face each other (normals opposed, positive overlap
-/// along the first): the distance is checked apart.
+fn length(e: &Edge) -> f64 {
+    let d = sub(e.q, e.p);
+    d[0].hypot(d[1])
+}
+
+fn midpoint(e: &Edge) -> [f64; 2] {
+    [0.5 * (e.p[0] + e.q[0]), 0.5 * (e.p[1] + e.q[1])]
+}
+
+/// How far `f` lies in front of `e`, along `e`'s outward normal (negative
+/// when behind it: an overlap, or the far side of a body).
+fn separation(e: &Edge, f: &Edge) -> f64 {
+    dot(sub(midpoint(f), e.p), e.normal)
+}
+
+/// The interval [lo, hi] that `f` covers along `e` (abscissas from e.p).
+fn shadow(e: &Edge, f: &Edge) -> (f64, f64) {
+    let d = sub(e.q, e.p);
+    let len_e = length(e);
+    let (t0, t1) = (dot(sub(f.p, e.p), d) / len_e, dot(sub(f.q, e.p), d) / len_e);
+    (t0.min(t1), t0.max(t1))
+}
+
+/// Whether two edges face each other (normals opposed, each in front of
+/// the other, positive overlap along the first): the distance is checked
+/// apart. "In front" allows an overlap of up to half the shorter edge (a
+/// press fit starts with the faces crossed): two faces back to back — the
+/// outer faces of two bodies, normals opposed but turned away from each
+/// other — are a body's thickness behind each other and never pair,
+/// whatever the tolerance (a probe paired the bottom of a block with the
+/// top of the block under it at δ = 2.5 and the solve read a 2-unit
+/// overlap).
 fn facing(e: &Edge, f: &Edge) -> bool {
     if dot(e.normal, f.normal) > -FACING_COSINE {
         return false;
     }
-    let d = sub(e.q, e.p);
-    let len_e = dot(d, d).sqrt();
-    let len_f = sub(f.q, f.p)[0].hypot(sub(f.q, f.p)[1]);
-    // Abscissas of f's ends along e, from e.p.
-    let (t0, t1) = (dot(sub(f.p, e.p), d) / len_e, dot(sub(f.q, e.p), d) / len_e);
-    let overlap = t0.max(t1).min(len_e) - t0.min(t1).max(0.0);
+    let (len_e, len_f) = (length(e), length(f));
+    let behind = -0.5 * len_e.min(len_f);
+    if separation(e, f) < behind || separation(f, e) < behind {
+        return false;
+    }
+    let (lo, hi) = shadow(e, f);
+    let overlap = hi.min(len_e) - lo.max(0.0);
     overlap > MIN_OVERLAP * len_e.min(len_f)
+}
+
+/// Whether a third body's edge `g`, also facing `e`, lies between `e` and
+/// `f` over part of what `f` covers along `e`: then the strip between `e`
+/// and `f` would cross that body (a probe paired the faces of blocks 1 and
+/// 3 across block 2 once δ exceeded a block's height).
+fn hidden_by(e: &Edge, f: &Edge, g: &Edge) -> bool {
+    if g.body == e.body || g.body == f.body || separation(e, g) >= separation(e, f) {
+        return false;
+    }
+    let len_e = length(e);
+    let ((f0, f1), (g0, g1)) = (shadow(e, f), shadow(e, g));
+    let common = f1.min(g1).min(len_e) - f0.max(g0).max(0.0);
+    common > MIN_OVERLAP * len_e.min(length(f)).min(length(g))
 }
 
 /// The pairs of tags of different bodies whose boundary edges face each
@@ -244,8 +301,10 @@ pub fn facing_pairs(mesh: &Mesh, tags: Option<&[i32]>, tolerance: f64) -> Result
             grid.entry(c).or_default().push(k);
         }
     }
+    // Every pair of edges facing each other within the tolerance, then
+    // those with a third body between them dropped.
     let mut seen = vec![usize::MAX; edges.len()];
-    let mut found: BTreeMap<(i32, i32), FacingPair> = BTreeMap::new();
+    let mut near: Vec<Vec<(usize, f64)>> = vec![Vec::new(); edges.len()];
     for (k, e) in edges.iter().enumerate() {
         for c in cells_of(e, tolerance) {
             let Some(list) = grid.get(&c) else { continue };
@@ -258,20 +317,42 @@ pub fn facing_pairs(mesh: &Mesh, tags: Option<&[i32]>, tolerance: f64) -> Result
                 if f.body == e.body || !facing(e, f) {
                     continue;
                 }
+                // A gap of exactly δ pairs: the distance is computed from
+                // coordinates, so it may exceed δ by their rounding (a
+                // probe's gap of 0.1 read 0.10000000000000009).
+                let scale = [e.p, e.q, f.p, f.q]
+                    .iter()
+                    .fold(0.0f64, |m, x| m.max(x[0].abs()).max(x[1].abs()));
                 let distance = segment_distance(e.p, e.q, f.p, f.q);
-                if distance > tolerance {
+                if distance > tolerance + 4.0 * f64::EPSILON * scale {
                     continue;
                 }
-                let (a, b) = if e.tag < f.tag { (e, f) } else { (f, e) };
-                let entry = found.entry((a.tag, b.tag)).or_insert(FacingPair {
-                    tag_a: a.tag,
-                    tag_b: b.tag,
-                    body_a: a.body,
-                    body_b: b.body,
-                    distance,
-                });
-                entry.distance = entry.distance.min(distance);
+                near[k].push((m, distance));
+                near[m].push((k, distance));
             }
+        }
+    }
+    let mut found: BTreeMap<(i32, i32), FacingPair> = BTreeMap::new();
+    for (k, e) in edges.iter().enumerate() {
+        for &(m, distance) in &near[k] {
+            let f = &edges[m];
+            let hidden = |a: usize, b: &Edge| {
+                near[a]
+                    .iter()
+                    .any(|&(g, _)| hidden_by(&edges[a], b, &edges[g]))
+            };
+            if m <= k || hidden(k, f) || hidden(m, e) {
+                continue;
+            }
+            let (a, b) = if e.tag < f.tag { (e, f) } else { (f, e) };
+            let entry = found.entry((a.tag, b.tag)).or_insert(FacingPair {
+                tag_a: a.tag,
+                tag_b: b.tag,
+                body_a: a.body,
+                body_b: b.body,
+                distance,
+            });
+            entry.distance = entry.distance.min(distance);
         }
     }
     Ok(found.into_values().collect())

@@ -1310,8 +1310,9 @@ pub unsafe extern "C" fn tfem_get_contact_dissipation(
 /// Declares a contact pair for every two boundary tags of different bodies
 /// whose edges face each other within `tolerance` (model length units: some
 /// edge of the one within `tolerance` of some edge of the other, outward
-/// normals opposed within 30°, overlapping along the interface;
-/// docs/method.md §6.16). `tags` (`n_tags` values) restricts the search to
+/// normals opposed within 30°, each in front of the other, overlapping
+/// along the interface, no third body between them; a gap of exactly
+/// `tolerance` pairs; docs/method.md §6.16). `tags` (`n_tags` values) restricts the search to
 /// those tags; with `n_tags` = 0 every tag that can be a contact side is
 /// considered, and `tags` may be NULL. Pairs already declared are skipped,
 /// tags of one body never pair. The pairs added get consecutive indices:

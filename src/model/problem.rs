@@ -579,7 +579,8 @@ impl Problem {
     /// Declares a contact pair for every two tags of different bodies
     /// whose boundary edges face each other within `tolerance`, a distance
     /// in model units (some edge of the one within `tolerance` of some edge
-    /// of the other, normals opposed, overlapping along the interface: see
+    /// of the other, normals opposed, each in front of the other, overlapping along the
+    /// interface, no third body between them: see
     /// [`contact::pairing`]). `tags`: the tags to consider (each must name
     /// boundary edges of one body, else an error naming it), or `None` for
     /// every tag that can be a contact side. Pairs already declared (either
