@@ -608,7 +608,8 @@ impl Problem {
             contact::build(mesh, self.pairs.len() + new.len(), f.tag_a, f.tag_b).map_err(|e| {
                 Error::contact(format!(
                     "automatic pairing: tags {} (body {}) and {} (body {}) face each other \
-                     within {:e}, but their contact mesh cannot be built: {}",
+                     ({:e} apart, tolerance {tolerance:e}), but their contact mesh cannot be \
+                     built: {}",
                     f.tag_a,
                     f.body_a,
                     f.tag_b,
