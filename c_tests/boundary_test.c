@@ -1142,6 +1142,70 @@ static void a_node_on_several_pairs_reads_their_forces_over_their_tributaries(vo
   tfem_destroy(m);
 }
 
+/* The outside probe's three-body corner (docs/method.md §6.11, "Sides
+ * that end inside an edge"): base C = [0,2] x [-1,0] (E = 1e9, 7 cells
+ * across: no node under the corner (1, 0)) under A = [0,1] x [0,1] (2e9)
+ * and B = [1,2] x [0,1] (5e8), the head joint closed by u = 0 on A's left
+ * and B's right, C free to the right; p on A and B, pairs found
+ * automatically. Exact: sigma_yy = -p everywhere, sigma_xx = 0 in C and
+ * uniform in A and B, contact length 2 + 1. Found wrong: the base
+ * edge across the corner was counted whole by both bed pairs (twice its
+ * stiffness there): 4.7e-2 p in A, element pressures down to 0.6 p,
+ * contact length 3.14286. */
+static mesh_t K;
+static void a_side_ending_inside_an_edge_of_the_other_carries_the_uniform_stress(void) {
+  const double p = 1e6, nu = 0.3;
+  tfem_model *m = tfem_create();
+  CHECK(tfem_set_mesh(m, K.nn, K.xy, K.nt, K.tri, K.body, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_set_boundary_edges(m, K.ne, K.edges, K.tags) == TFEM_STATUS_OK);
+  CHECK(tfem_set_material(m, 1, 1e9, nu, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_set_material(m, 2, 2e9, nu, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_set_material(m, 3, 5e8, nu, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 82, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 80, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 90, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 101, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_add_pressure(m, 93, p) == TFEM_STATUS_OK);
+  CHECK(tfem_add_pressure(m, 103, p) == TFEM_STATUS_OK);
+  int first = -1, count = -1;
+  CHECK(tfem_add_contact_pairs_auto(m, 0, NULL, 1e-9, &first, &count) == TFEM_STATUS_OK);
+  CHECK(count == 3); /* C-A, C-B, A|B */
+  tfem_contact_report r;
+  CHECK(tfem_solve_contact(m, NULL, &r) == TFEM_STATUS_OK);
+  CHECK(r.active == r.elements);
+  CHECK(fabs(r.contact_length - 3.0) < 1e-12);
+  static double s[3 * 4096];
+  CHECK(tfem_get_element_stresses(m, s, 3 * (size_t)K.nt) == TFEM_STATUS_OK);
+  /* sigma_xx in A and B is uniform, -nu/(1 - nu) p only up to the head
+   * joint's penalty overlap (1.1e-2 p, also with a base node under the
+   * corner): it is compared with its value in their first element. */
+  double worst = 0.0, sxx_ab = 0.0;
+  int seen = 0;
+  for (int t = 0; t < K.nt; ++t) {
+    if (K.body[t] != 1 && !seen++) sxx_ab = s[3 * t];
+    double sxx = K.body[t] == 1 ? 0.0 : sxx_ab;
+    double d = fmax(fabs(s[3 * t] - sxx), fmax(fabs(s[3 * t + 1] + p), fabs(s[3 * t + 2])));
+    worst = fmax(worst, d / p);
+  }
+  CHECK(fabs(sxx_ab / p + nu / (1.0 - nu)) < 2e-2);
+  if (worst > 1e-9) printf("corner: stress error %.3e of p\n", worst);
+  CHECK(worst <= 1e-9);
+  /* Every element of a bed pair reports p, the cut ones too. */
+  static double pe[1024];
+  static int pair[1024];
+  CHECK(r.elements <= 1024);
+  CHECK(tfem_get_contact_pressure(m, pe, (size_t)r.elements) == TFEM_STATUS_OK);
+  CHECK(tfem_get_contact_element_pairs(m, pair, (size_t)r.elements) == TFEM_STATUS_OK);
+  int beds = 0;
+  for (int k = 0; k < r.elements; ++k) {
+    if (pair[k] == first + 2) continue; /* the head joint */
+    beds++;
+    CHECK(fabs(pe[k] - p) <= 1e-9 * p);
+  }
+  CHECK(beds > 0);
+  tfem_destroy(m);
+}
+
 /* A host's NaN or Inf is refused where it enters the contact context, named
  * by node and equation, and nothing is written: gather would otherwise hand
  * it back as a displacement with OK, scatter_add add it into the host's
@@ -1751,6 +1815,9 @@ int main(int argc, char **argv) {
   grid(&T, 8, 2, 0.0, -0.25, 1.0, 0.25, 1, 50);
   grid(&T, 4, 2, 0.0, 0.0, 0.5, 0.25, 2, 60);
   grid(&T, 4, 2, 0.5, 0.0, 0.5, 0.25, 3, 70);
+  grid(&K, 7, 3, 0.0, -1.0, 2.0, 1.0, 1, 80);
+  grid(&K, 4, 4, 0.0, 0.0, 1.0, 1.0, 2, 90);
+  grid(&K, 4, 5, 1.0, 0.0, 1.0, 1.0, 3, 100);
 
   a_clockwise_mesh_is_turned_and_solved_exactly();
   a_fold_inside_a_counter_clockwise_body_stays_inverted();
@@ -1775,6 +1842,7 @@ int main(int argc, char **argv) {
   automatic_pairing_pairs_only_faces_that_see_each_other();
   a_non_matching_interface_reads_a_uniform_pressure_at_every_node();
   a_node_on_several_pairs_reads_their_forces_over_their_tributaries();
+  a_side_ending_inside_an_edge_of_the_other_carries_the_uniform_stress();
   an_equation_of_int64_min_marks_a_fixed_dof_at_any_base();
   an_array_too_large_to_copy_is_out_of_memory_not_an_abort();
   a_non_finite_host_value_is_refused_by_gather_and_scatter_add();

@@ -388,7 +388,8 @@ typedef struct tfem_contact_report {
   int active;
   /**
    * Contact length ℓc (half the summed interface-edge length of the
-   * active elements), model length units.
+   * active elements, each as far as it faces the other side), model
+   * length units.
    */
   double contact_length;
   /**
@@ -792,8 +793,9 @@ enum tfem_status tfem_get_contact_forces(struct tfem_model *model, double *out, 
  * (n_nodes values; force per unit area, Pa in SI, positive in compression;
  * zero off the contact interfaces), computed on request: the traction
  * read from both sides of the interface (the mean of a node's normal
- * contact force over its tributary — half its interface edges, as far as
- * they face the other side — and the other side's forces over their
+ * contact force over its tributary — the integral of its hat over its
+ * interface edges as far as they face the other side, half its edges
+ * where they face it whole — and the other side's forces over their
  * tributaries near it); where the other side is more than 1.8 times
  * coarser, a node takes the other side's reading there, interpolated
  * (the coarser side's reading is the closer to the traction), blended
@@ -1317,9 +1319,10 @@ enum tfem_status tfem_contact_element_blocks(struct tfem_contact *context,
 
 /**
  * Writes the contact length of the current active set to `length`: half
- * the summed interface-edge length of the active elements of B (each
- * point of an interface is covered by one element with its edge on each
- * side), model length units; +0.0 when no element is active.
+ * the summed interface-edge length of the active elements of B, each as
+ * far as it faces the other side (each point of an interface is covered
+ * by one element with its edge on each side), model length units; +0.0
+ * when no element is active.
  */
 enum tfem_status tfem_contact_length(struct tfem_contact *context, double *length);
 

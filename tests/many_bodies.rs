@@ -540,3 +540,203 @@ fn a_block_touching_two_others_is_held_by_both_pairs() {
         assert!((share + 0.5).abs() < 1e-2, "{name}: {share}");
     }
 }
+
+/// A rectangle [x0, x1] × [y0, y1] with `nx` × `ny` cells.
+fn cells(x0: f64, x1: f64, y0: f64, y1: f64, nx: usize, ny: usize) -> Rect {
+    let grid =
+        |a: f64, b: f64, n: usize| (0..=n).map(|i| a + (b - a) * i as f64 / n as f64).collect();
+    Rect {
+        xs: grid(x0, x1, nx),
+        ys: grid(y0, y1, ny),
+    }
+}
+
+/// Solves blocks `rects` (block k + 1 = `rects[k]`, moduli `young`, ν =
+/// 0.3) with every face within 1e-9 paired, `fix` applied, the pressure
+/// `p` on the tops of blocks `loaded`; returns the model and its report.
+fn solve_blocks(
+    rects: &[Rect],
+    young: &[f64],
+    fix: &[(usize, Face, Component)],
+    loaded: &[usize],
+    p: f64,
+) -> (Model, tfem::ContactReport) {
+    let mut model = blocks(rects, None);
+    for (k, &e) in young.iter().enumerate() {
+        let m = Material::new(e, 0.3, PlaneMode::Strain, "block").unwrap();
+        model.set_material(k as i32 + 1, m).unwrap();
+    }
+    for &(block, face, c) in fix {
+        model.fix_edges(block_tag(block, face), c, 0.0).unwrap();
+    }
+    for &block in loaded {
+        model.add_pressure(block_tag(block, Face::Top), p).unwrap();
+    }
+    model.add_contact_pairs_auto(None, 1e-9).unwrap();
+    let report = model.solve_contact(&ContactOptions::default()).unwrap();
+    (model, report)
+}
+
+/// Per block, the largest |σ_yy + p|, |τ_xy| and spread of σ_xx over its
+/// elements, over p, and its mean σ_xx: a uniform state with σ_yy = −p.
+/// (σ_xx of a block confined across closed head joints is −ν/(1 − ν) p
+/// only up to the joints' penalty overlap: 1.1e-2 of p at the corner's
+/// default penalty, the same with a base node under the corner.)
+fn uniform_stress_errors(model: &Model, blocks: usize, p: f64) -> (Vec<f64>, Vec<f64>) {
+    let stresses = model.element_stresses().unwrap();
+    let bodies = model.mesh().unwrap().body_of().to_vec();
+    let (mut lo, mut hi) = (vec![f64::INFINITY; blocks], vec![f64::NEG_INFINITY; blocks]);
+    let mut err = vec![0.0f64; blocks];
+    for (s, &b) in stresses.iter().zip(&bodies) {
+        let k = b as usize - 1;
+        (lo[k], hi[k]) = (lo[k].min(s[0]), hi[k].max(s[0]));
+        err[k] = err[k].max((s[1] + p).abs().max(s[2].abs()) / p);
+    }
+    for k in 0..blocks {
+        err[k] = err[k].max((hi[k] - lo[k]) / p);
+    }
+    let mean = lo.iter().zip(&hi).map(|(l, h)| 0.5 * (l + h)).collect();
+    (err, mean)
+}
+
+#[test]
+fn a_three_body_corner_with_no_base_node_under_it_carries_the_uniform_stress() {
+    // The outside probe's corner (docs/method.md §6.11, "Sides that end
+    // inside an edge"): base C = [0, 2] × [−1, 0] (E = 1e9) under A =
+    // [0, 1] × [0, 1] (2e9) and B = [1, 2] × [0, 1] (5e8), the head joint
+    // A|B closed by u = 0 on A's left and B's right, C free to the right;
+    // p on A and B. An odd count of C cells puts no C node under the
+    // corner (1, 0): the base edge across it faces A over part of its
+    // length and B over the rest. Exact: σ_yy = −p everywhere, σ_xx = 0
+    // in C and uniform in A and B (confined: −ν/(1 − ν) p up to the head
+    // joint's penalty overlap), ℓc = 2 + 1. Before
+    // the clipping both pairs counted that edge whole: 4.7e-2 of p at
+    // 7 C cells (falling at first order), ℓc = 3.1429. Round-off is
+    // ~1e-13 p here; 1e-9 as the probe asks.
+    let p = 1e6;
+    for (nc, na, nb) in [(7, 4, 4), (9, 4, 5), (13, 8, 6), (27, 16, 16)] {
+        let rects = [
+            cells(0.0, 2.0, -1.0, 0.0, nc, 3),
+            cells(0.0, 1.0, 0.0, 1.0, na, 4),
+            cells(1.0, 2.0, 0.0, 1.0, nb, 5),
+        ];
+        let fix = [
+            (1, Face::Bottom, Component::Y),
+            (1, Face::Left, Component::X),
+            (2, Face::Left, Component::X),
+            (3, Face::Right, Component::X),
+        ];
+        let (model, report) = solve_blocks(&rects, &[1e9, 2e9, 5e8], &fix, &[2, 3], p);
+        let (err, sxx) = uniform_stress_errors(&model, 3, p);
+        for (k, e) in err.iter().enumerate() {
+            assert!(*e <= 1e-9, "C cells {nc}: block {}: {e:e}", k + 1);
+        }
+        assert!(
+            sxx[0].abs() <= 1e-9 * p,
+            "C cells {nc}: σ_xx in C {}",
+            sxx[0]
+        );
+        assert_eq!(report.active, report.elements, "C cells {nc}");
+        assert!(
+            (report.contact_length - 3.0).abs() < 1e-12,
+            "C cells {nc}: ℓc = {}",
+            report.contact_length
+        );
+        // Every element reports the traction of its pair (p on the bed
+        // joints, −σ_xx of A on the head joint), the cut ones too.
+        for (&pe, el) in model
+            .contact_pressure()
+            .unwrap()
+            .iter()
+            .zip(model.contact_mesh().unwrap())
+        {
+            let want = if el.normal[0].abs() > 0.5 { -sxx[1] } else { p };
+            assert!(
+                (pe - want).abs() <= 1e-9 * p,
+                "C cells {nc}: {pe} vs {want}"
+            );
+        }
+        // And every node of an interface reads it.
+        let nodal = model.contact_nodal_pressures().unwrap();
+        let x = model.mesh().unwrap().nodes().to_vec();
+        for (v, &pn) in nodal.iter().enumerate() {
+            if pn != 0.0 && x[v][1] == 0.0 && x[v][0] > 0.0 && x[v][0] < 2.0 && x[v][0] != 1.0 {
+                assert!((pn - p).abs() <= 1e-9 * p, "C cells {nc}, node {v}: {pn}");
+            }
+        }
+    }
+}
+
+#[test]
+fn two_courses_in_running_bond_with_cut_edges_at_both_ends_of_a_joint_carry_the_uniform_stress() {
+    // Shifted blocks: a lower course [0, 1.5] | [1.5, 3] (height 1) under an
+    // upper one [0, 1] | [1, 2] | [2, 3], head joints closed by u = 0 at
+    // x = 0 and x = 3 in both courses, p on the upper course. The middle
+    // upper block's bed faces [1, 1.5] of the left lower block and
+    // [1.5, 2] of the right one: each side of those pairs ends inside an
+    // edge of the other (no lower node at x = 1, 2; no upper node at 1.5),
+    // and the end blocks' pairs have a cut edge at one end. Exact: σ_yy =
+    // −p, σ_xx uniform in each block (confined across the head joints),
+    // ℓc = 3 (beds) + 1 + 2 (heads).
+    let p = 1e6;
+    for (lower, upper) in [(4, 3), (5, 5), (8, 7), (16, 11)] {
+        let rects = [
+            cells(0.0, 1.5, 0.0, 1.0, lower, 3),
+            cells(1.5, 3.0, 0.0, 1.0, lower, 4),
+            cells(0.0, 1.0, 1.0, 2.0, upper, 3),
+            cells(1.0, 2.0, 1.0, 2.0, upper, 4),
+            cells(2.0, 3.0, 1.0, 2.0, upper + 2, 3),
+        ];
+        let fix = [
+            (1, Face::Bottom, Component::Y),
+            (2, Face::Bottom, Component::Y),
+            (1, Face::Left, Component::X),
+            (2, Face::Right, Component::X),
+            (3, Face::Left, Component::X),
+            (5, Face::Right, Component::X),
+        ];
+        // The lower course of one material, stiffer than the upper one,
+        // and its edges longer than the middle block's: both pairs under
+        // that block then have one penalty κ (E_c and h_c of that block),
+        // the same overlap, and the block stays level (any two penalties
+        // would tilt it, with or without cut edges).
+        let young = [3e9, 3e9, 2e9, 5e8, 1e9];
+        let (model, report) = solve_blocks(&rects, &young, &fix, &[3, 4, 5], p);
+        let (err, _) = uniform_stress_errors(&model, 5, p);
+        for (k, e) in err.iter().enumerate() {
+            assert!(*e <= 1e-9, "cells {lower}/{upper}: block {}: {e:e}", k + 1);
+        }
+        assert_eq!(report.active, report.elements, "cells {lower}/{upper}");
+        assert!(
+            (report.contact_length - 6.0).abs() < 1e-12,
+            "cells {lower}/{upper}: ℓc = {}",
+            report.contact_length
+        );
+    }
+}
+
+#[test]
+fn the_contact_length_of_a_block_pressed_inside_a_wider_one_is_its_width() {
+    // A block [0.3, 0.8] × [0, 0.25] (5 cells) pressed on [0, 1] × [−0.5, 0]
+    // (8 cells: no node at 0.3 or 0.8): the edges of the lower block
+    // across the upper one's ends face it over part of their length, and
+    // ℓc counts that part only. Every element stays closed (a flat punch).
+    // Before the clipping they counted whole: ℓc = 0.5625.
+    let p = 1e6;
+    let rects = [
+        cells(0.0, 1.0, -0.5, 0.0, 8, 4),
+        cells(0.3, 0.8, 0.0, 0.25, 5, 2),
+    ];
+    let fix = [
+        (1, Face::Bottom, Component::Y),
+        (1, Face::Left, Component::X),
+        (2, Face::Left, Component::X),
+    ];
+    let (_, report) = solve_blocks(&rects, &[1e9, 2e9], &fix, &[2], p);
+    assert_eq!(report.active, report.elements);
+    assert!(
+        (report.contact_length - 0.5).abs() < 1e-12,
+        "ℓc = {}",
+        report.contact_length
+    );
+}

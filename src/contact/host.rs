@@ -608,7 +608,8 @@ impl HostContact {
     }
 
     /// The contact length of the current active set: half the summed
-    /// interface-edge length of the active elements (+0.0 when none is).
+    /// interface-edge length of the active elements, each as far as it
+    /// faces the other side (+0.0 when none is).
     pub fn contact_length(&mut self) -> Result<f64> {
         let b = self.built()?;
         let active = b.active.active();
@@ -619,7 +620,7 @@ impl HostContact {
             .iter()
             .zip(active)
             .filter(|(_, a)| **a)
-            .fold(0.0, |sum, (e, _)| sum + 0.5 * e.edge_length))
+            .fold(0.0, |sum, (e, _)| sum + 0.5 * e.facing))
     }
 
     /// The active flag of every element of B.

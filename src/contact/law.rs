@@ -262,13 +262,25 @@ pub fn penalty_lengths(elements: &[ContactElement]) -> BTreeMap<usize, f64> {
 /// passes the patch test exactly. On a conforming interface of edges h it
 /// is the seed's Jmin = h³/λ (to the bit when every edge has the same
 /// length).
+///
+/// An element whose edge faces the other side over f_e < ℓ_e only (the
+/// other side ends inside it) gets T_e × ℓ_e/f_e, hence the stiffness
+/// κ f_e/2: the strip is then that of the sides clipped to where they face
+/// each other, and the patch test holds there too (§6.11, "Sides that end
+/// inside an edge"). Its law's pressure is then f_e/ℓ_e of the traction
+/// ([`crate::contact::ContactSet::pressure`] reports the traction).
 pub fn contact_jmins(elements: &[ContactElement], lambda: f64) -> Vec<f64> {
     let h = penalty_lengths(elements);
     elements
         .iter()
         .map(|el| {
             let hc = h[&el.pair];
-            (el.edge_length / lambda) * hc * hc
+            let t = (el.edge_length / lambda) * hc * hc;
+            // Whole edges keep the expression above, to the bit.
+            match el.facing < el.edge_length {
+                true => t * (el.edge_length / el.facing),
+                false => t,
+            }
         })
         .collect()
 }
@@ -292,13 +304,13 @@ mod tests {
         }
     }
 
-    #[test]
-    fn a_uniform_gap_across_any_strip_loads_both_sides_with_a_uniform_traction() {
-        // docs/method.md §6.11, the patch-test theorem: 5 against 7 jittered
-        // edges over [0, 1].
-        let xa = [0.0, 0.17, 0.43, 0.58, 0.81, 1.0];
-        let xb = [0.0, 0.12, 0.33, 0.41, 0.62, 0.7, 0.93, 1.0];
-        let (x, a, b) = straight_sides(&xa, &xb);
+    /// The nodal forces of a uniform gap across the strip between straight
+    /// sides at `xa` (below) and `xb` (above) against the consistent loads
+    /// κ g ∫_I φ_i of the traction over the interval I where they face each
+    /// other (docs/method.md §6.11); every element's pressure must be that
+    /// traction.
+    fn assert_uniform_gap_gives_the_traction_over_the_overlap(xa: &[f64], xb: &[f64]) {
+        let (x, a, b) = straight_sides(xa, xb);
         let nodes = Nodes::new(&x, 0);
         let elements = nonconforming(nodes, 0, &a, &b).unwrap();
         let (e_c, lambda) = (2.0, 3.0);
@@ -325,24 +337,75 @@ mod tests {
                     force[el.nodes[r / 2]] -= (0..6).map(|c| cs.k[r * 6 + c] * ue[c]).sum::<f64>();
                 }
             }
-            // The element's pressure is the traction −κ g.
-            let p = contact_pressure(&geo, &d, el.normal, el.j0, t, &ue);
+            // The element's pressure is the traction −κ g (its law's, the
+            // share of it its edge faces).
+            let p = contact_pressure(&geo, &d, el.normal, el.j0, t, &ue) / el.facing_share();
             assert!((p + kappa * g).abs() < 1e-12 * kappa * g.abs(), "{p}");
         }
-        let tributary =
-            |xs: &[f64], i: usize| 0.5 * (xs[(i + 1).min(xs.len() - 1)] - xs[i.saturating_sub(1)]);
+        let (lo, hi) = (xa[0].max(xb[0]), xa[xa.len() - 1].min(xb[xb.len() - 1]));
+        // ∫ over [lo, hi] of the hat of node i of the side at `xs`.
+        let consistent = |xs: &[f64], i: usize| {
+            let mut m = 0.0;
+            for (k, e) in xs.windows(2).enumerate() {
+                let (s0, s1) = (e[0].max(lo), e[1].min(hi));
+                if s1 <= s0 || (k != i && k + 1 != i) {
+                    continue;
+                }
+                // The hat is linear on the edge: its mean over [s0, s1]
+                // is its value at the midpoint.
+                let mid = 0.5 * (s0 + s1);
+                let phi = if k == i {
+                    (e[1] - mid) / (e[1] - e[0])
+                } else {
+                    (mid - e[0]) / (e[1] - e[0])
+                };
+                m += (s1 - s0) * phi;
+            }
+            m
+        };
         for (i, f) in force.iter().enumerate() {
             let (m, sign) = if i < xa.len() {
-                (tributary(&xa, i), 1.0)
+                (consistent(xa, i), 1.0)
             } else {
-                (tributary(&xb, i - xa.len()), -1.0)
+                (consistent(xb, i - xa.len()), -1.0)
             };
             // Compression pushes side a down and side b up.
             let expected = sign * kappa * g * m;
             assert!(
                 (f - expected).abs() < 1e-12 * kappa * g.abs(),
-                "node {i}: {f} vs {expected}"
+                "xa {xa:?}, xb {xb:?}, node {i}: {f} vs {expected}"
             );
+        }
+    }
+
+    #[test]
+    fn a_uniform_gap_across_any_strip_loads_both_sides_with_a_uniform_traction() {
+        // docs/method.md §6.11, the patch-test theorem: 5 against 7 jittered
+        // edges over [0, 1].
+        assert_uniform_gap_gives_the_traction_over_the_overlap(
+            &[0.0, 0.17, 0.43, 0.58, 0.81, 1.0],
+            &[0.0, 0.12, 0.33, 0.41, 0.62, 0.7, 0.93, 1.0],
+        );
+    }
+
+    #[test]
+    fn a_uniform_gap_loads_sides_that_end_inside_an_edge_with_the_traction_over_their_overlap() {
+        // docs/method.md §6.11, "Sides that end inside an edge": one side
+        // ending inside an edge of the other at one end, at both ends, the
+        // sides shifted (each ends inside the other's edge), short and
+        // long overhangs, coarse against fine.
+        let a = [0.0, 0.17, 0.43, 0.58, 0.81, 1.0];
+        for xb in [
+            vec![0.3, 0.33, 0.41, 0.62, 0.7, 0.93, 1.0],
+            vec![0.05, 0.12, 0.33, 0.41, 0.62, 0.7, 0.75],
+            vec![0.42, 0.45, 0.5, 0.55, 0.57],
+            vec![0.2, 0.3, 0.41, 0.62, 0.7, 0.93, 1.1, 1.3],
+            vec![-0.3, -0.01, 0.12, 0.33, 0.41, 0.62, 0.7, 0.8],
+            vec![0.16, 0.9],
+            vec![0.001, 0.999],
+        ] {
+            assert_uniform_gap_gives_the_traction_over_the_overlap(&a, &xb);
+            assert_uniform_gap_gives_the_traction_over_the_overlap(&xb, &a);
         }
     }
 }

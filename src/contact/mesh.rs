@@ -609,6 +609,7 @@ fn quads(
                 j0: geo.j,
                 h: geo.h,
                 edge_length: edge_len,
+                facing: edge_len,
                 pair,
                 apex,
             });
@@ -737,6 +738,9 @@ pub fn checked_triangles(
             j0: geo.j,
             h: geo.h,
             edge_length: dist(x[p], x[q]),
+            // Whole: a user's B says nothing of where the sides end
+            // ([`nonconforming`] clips its own).
+            facing: dist(x[p], x[q]),
             pair,
             apex,
         });
@@ -750,10 +754,13 @@ pub fn checked_triangles(
 /// polyline (extended beyond its ends), and the strip between them is
 /// triangulated by advancing along whichever polyline's next edge has the
 /// nearer midpoint, over the range where the two interfaces face each other
-/// (plus one edge at each end): every edge's apex is the node of the other
-/// side nearest to its midpoint. Each triangle has an edge on one interface
-/// and a node on the other; orientation and normals are set as for a user
-/// mesh.
+/// (plus, where a side goes on beyond the other's end, its edge across that
+/// end): every edge's apex is the node of the other side nearest to its
+/// midpoint, but an edge across the other side's end, whose apex is that
+/// end. Such an edge faces the other side over part of its length only,
+/// which its element's [`ContactElement::facing`] holds. Each triangle has
+/// an edge on one interface and a node on the other; orientation and
+/// normals are set as for a user mesh.
 pub fn build_nonconforming(
     mesh: &Mesh,
     pair: usize,
@@ -822,22 +829,63 @@ pub fn nonconforming(
             "interfaces {name_a} and {name_b} do not face each other (no overlap along the interface)"
         )));
     }
-    // Keep the part of each chain over [lo, hi] plus one node beyond each end.
+    // Nodes within `tol` of an end of [lo, hi] are at it: the two sides'
+    // ends meet there up to the round-off of the projection, and an edge
+    // clipped by round-off would lose the bitwise equality with the
+    // unclipped strip (docs/method.md §6.11). 1e-9 of the shortest edge,
+    // as the overlap `contact::pairing` asks of two facing sides.
+    let shortest = chain_a
+        .windows(2)
+        .chain(chain_b.windows(2))
+        .map(|e| dist(x[e[0]], x[e[1]]))
+        .fold(f64::INFINITY, f64::min);
+    let tol = 1e-9 * shortest;
+    // Keep the part of each chain over [lo, hi] plus, where the chain
+    // goes on beyond an end, the node beyond it: the edge across the end
+    // faces the other side over part of its length.
     let window = |s: &[f64]| -> (usize, usize) {
-        let first = s.iter().rposition(|&v| v <= lo).unwrap_or(0);
-        let last = s.iter().position(|&v| v >= hi).unwrap_or(s.len() - 1);
+        let first = s.iter().rposition(|&v| v <= lo + tol).unwrap_or(0);
+        let last = s.iter().position(|&v| v >= hi - tol).unwrap_or(s.len() - 1);
         (first, last.max(first + 1).min(s.len() - 1))
     };
     let (a0, a1) = window(&s_a);
     let (b0, b1) = window(&s_b);
     let (ca, sa) = (&chain_a[a0..=a1], &s_a[a0..=a1]);
     let (cb, sb) = (&chain_b[b0..=b1], &s_b[b0..=b1]);
+    // Whether a chain's first and last nodes lie beyond [lo, hi].
+    let beyond = |s: &[f64]| (s[0] < lo - tol, s[s.len() - 1] > hi + tol);
+    let ((a_before, a_after), (b_before, b_after)) = (beyond(sa), beyond(sb));
     let mut tris = Vec::with_capacity(ca.len() + cb.len());
+    // The part of each triangle's interface edge that faces the other
+    // side, as a fraction of the edge (1: all of it).
+    let mut fractions = Vec::with_capacity(ca.len() + cb.len());
+    let facing = |s0: f64, s1: f64| -> f64 {
+        let (c0, c1) = (
+            if s0 < lo - tol { lo } else { s0 },
+            if s1 > hi + tol { hi } else { s1 },
+        );
+        if c0 == s0 && c1 == s1 {
+            1.0
+        } else {
+            ((c1 - c0) / (s1 - s0)).clamp(0.0, 1.0)
+        }
+    };
     let (mut i, mut j) = (0, 0);
     while i + 1 < ca.len() || j + 1 < cb.len() {
         let advance_a = if i + 1 == ca.len() {
             false
         } else if j + 1 == cb.len() {
+            true
+        } else if i == 0 && a_before {
+            // An edge across the other side's start takes that start as
+            // its apex, and one across its end that end: every apex then
+            // lies where the sides face each other, and the strip is that
+            // of the clipped sides, which the patch test holds for
+            // (docs/method.md §6.11, "Sides that end inside an edge").
+            true
+        } else if (j == 0 && b_before) || (i + 2 == ca.len() && a_after) {
+            false
+        } else if j + 2 == cb.len() && b_after {
             true
         } else {
             // The next edge whose midpoint comes first: each edge's apex is
@@ -847,13 +895,21 @@ pub fn nonconforming(
         };
         if advance_a {
             tris.push([ca[i], ca[i + 1], cb[j]]);
+            fractions.push(facing(sa[i], sa[i + 1]));
             i += 1;
         } else {
             tris.push([ca[i], cb[j + 1], cb[j]]);
+            fractions.push(facing(sb[j], sb[j + 1]));
             j += 1;
         }
     }
-    Ok(checked_triangles(nodes, pair, a, b, &tris)?.0)
+    let mut elements = checked_triangles(nodes, pair, a, b, &tris)?.0;
+    for (el, f) in elements.iter_mut().zip(fractions) {
+        if f < 1.0 {
+            el.facing = el.edge_length * f;
+        }
+    }
+    Ok(elements)
 }
 
 /// The edges of one side chained into a single polyline, in their

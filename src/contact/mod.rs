@@ -169,9 +169,27 @@ pub struct ContactElement {
     pub h: f64,
     /// Length of the element's edge on the interface.
     pub edge_length: f64,
+    /// Length of that edge that faces the other side of the pair, f_e ≤
+    /// ℓ_e: all of it but where the other side ends inside the edge
+    /// (docs/method.md §6.11, "Sides that end inside an edge"). The
+    /// element is a penalty κ f_e/2 on its gap, and it counts f_e in ℓc.
+    pub facing: f64,
     /// Index of the pair it belongs to.
     pub pair: usize,
     /// Its apex: the node alone on its side of the interface (0-based),
     /// whose distance from the interface edge is the element's gap.
     pub apex: usize,
+}
+
+impl ContactElement {
+    /// f_e/ℓ_e: the share of its interface edge that faces the other side,
+    /// 1 exactly where it all does. Its law's pressure and shear are this
+    /// share of the traction (its T_e is ℓ_e/f_e larger;
+    /// [`law::contact_jmins`]).
+    pub fn facing_share(&self) -> f64 {
+        match self.facing < self.edge_length {
+            true => self.facing / self.edge_length,
+            false => 1.0,
+        }
+    }
 }

@@ -497,7 +497,7 @@ impl<'a> ContactSet<'a> {
         let mut next = vec![0.0; n];
         for k in (0..n).filter(|&k| normal[k] && !f.anchors[k].is_nan()) {
             let ue = values(k);
-            let limit = f.mu[k] * self.pressure(k, &ue).max(0.0);
+            let limit = f.mu[k] * self.law_pressure(k, &ue).max(0.0);
             let gamma = 2.0 * dot6(&f.bt[k], &ue);
             let shear = f.g_over_t[k] * (gamma - f.anchors[k]);
             // The direction it slips in, if it slips.
@@ -583,6 +583,9 @@ impl<'a> ContactSet<'a> {
                 let slip = gamma - f.anchors[k] - tau / f.g_over_t[k];
                 out.dissipation[k] = (0.5 * tau * slip).max(0.0);
             }
+            // Reported as the traction, like the pressure; the forces
+            // (`Solution`) scale it back by the facing share.
+            out.shear[k] /= self.elements[k].facing_share();
         }
         Some(out)
     }
@@ -650,8 +653,17 @@ impl<'a> ContactSet<'a> {
     }
 
     /// The contact pressure of active element `k` for element displacements
-    /// `ue` (positive in compression).
+    /// `ue` (positive in compression): the traction κ × (overlap at its
+    /// apex), also for an element whose edge faces the other side in part
+    /// only, whose law's own pressure is f_e/ℓ_e of it ([`contact_jmins`]).
     pub fn pressure(&self, k: usize, ue: &[f64; 6]) -> f64 {
+        self.law_pressure(k, ue) / self.elements[k].facing_share()
+    }
+
+    /// The pressure of element `k`'s law, −E_c o_e/T_e: the traction times
+    /// the share of its edge that faces the other side. Its shear is
+    /// scaled alike, so that the Coulomb limit compares the two as they act.
+    fn law_pressure(&self, k: usize, ue: &[f64; 6]) -> f64 {
         let (el, law) = (&self.elements[k], &self.laws[k]);
         contact_pressure(&self.geos[k], &law.d, el.normal, el.j0, law.t, ue)
     }

@@ -2,17 +2,18 @@
 //! interpenetration of the two deformed interfaces (docs/method.md §6.11).
 //!
 //! With T_e = ℓ_e h_c²/λ the force of every element of B is κ ℓ_e/2 times
-//! the gap at its apex, and the nodal forces of a uniform gap are the
-//! consistent loads of a uniform traction on both sides: the contact force
-//! on a node over its tributary length (half its interface edges) is a
-//! traction. An element's own gap is its apex's distance from the line of
+//! the gap at its apex (κ f_e/2 where only f_e of its edge faces the other
+//! side), and the nodal forces of a uniform gap are the consistent loads
+//! of a uniform traction on both sides: the contact force on a node over
+//! its tributary length (∫ of its hat over its interface edges, half of
+//! them where they wholly face the other side) is a traction. An element's own gap is its apex's distance from the line of
 //! its interface edge, which may be extended beyond the edge; the actual
 //! overlap of a node is measured against the edge of the other side its
 //! projection falls on.
 //!
-//! Each pair is read on its own: a node's tributary is the part of its
+//! Each pair is read on its own: a node's tributary is over the part of its
 //! interface edges that faces the other side of *that* pair (covered by
-//! the other side's edges projected on it: B reaches one edge beyond the
+//! the other side's edges projected on it: B reaches the edge across the
 //! other side's end, which faces nothing past it), and its force is that
 //! pair's. A node on several pairs (where three bodies meet) reads
 //! its pairs' normal forces over their tributaries together.
@@ -32,8 +33,9 @@ pub struct NodalPressure {
     /// Normal contact force on the node over its tributary length,
     /// positive in compression.
     pub pressure: f64,
-    /// Its tributary length: half its interface edges, as far as they face
-    /// the other side of its pair (summed over its pairs for a node on
+    /// Its tributary length: the integral of its hat over its interface
+    /// edges as far as they face the other side of its pair, half its
+    /// edges where they face it whole (summed over its pairs for a node on
     /// several).
     pub tributary: f64,
 }
@@ -87,7 +89,8 @@ fn near_elements(
 }
 
 /// The part of each element's interface edge that faces the other side
-/// of its pair: the length of the edge covered by the other side's edges
+/// of its pair, as disjoint spans of the edge's parameter t ∈ [0, 1] from
+/// its first base node to its second: the edge covered by the other side's edges
 /// near it (those of the elements within two steps), each projected on the
 /// edge's line. B reaches one edge beyond the other side's end
 /// (`contact::mesh::nonconforming`), which is covered only up to that end;
@@ -95,10 +98,14 @@ fn near_elements(
 /// projected along the edge, not along the normal: on a curved interface
 /// with a gap, the edge at the end of the concave side loses about g/2R of
 /// its length. An interface edge wholly covered, as every one of a strip
-/// but those at the other side's ends, keeps its length to the bit; a pair
+/// but those at the other side's ends, is the one span (0, 1); a pair
 /// whose elements all have their edge on one side (a user's B) is not
 /// clipped. The elements must be of one pair.
-fn facing_lengths(nodes: Nodes<'_>, elements: &[ContactElement], on_a: &[bool]) -> Vec<f64> {
+fn facing_spans(
+    nodes: Nodes<'_>,
+    elements: &[ContactElement],
+    on_a: &[bool],
+) -> Vec<Vec<(f64, f64)>> {
     let x = nodes.x;
     let edge_of = |el: &ContactElement| {
         let mut base = el.nodes.iter().copied().filter(|&w| w != el.apex);
@@ -114,7 +121,7 @@ fn facing_lengths(nodes: Nodes<'_>, elements: &[ContactElement], on_a: &[bool]) 
         .enumerate()
         .map(|(k, el)| {
             if !has_side[usize::from(!on_a[k])] {
-                return el.edge_length;
+                return vec![(0.0, 1.0)];
             }
             let (p, q) = edge_of(el);
             let d = [x[q][0] - x[p][0], x[q][1] - x[p][1]];
@@ -133,22 +140,20 @@ fn facing_lengths(nodes: Nodes<'_>, elements: &[ContactElement], on_a: &[bool]) 
                 .collect();
             spans.sort_by(|a, b| a.0.total_cmp(&b.0).then(a.1.total_cmp(&b.1)));
             // The union of the spans: merge the overlapping ones.
-            let mut covered = 0.0;
+            let mut union = Vec::new();
             let mut current: Option<(f64, f64)> = None;
             for (lo, hi) in spans {
                 current = match current {
                     Some((a, b)) if lo <= b => Some((a, b.max(hi))),
-                    Some((a, b)) => {
-                        covered += b - a;
+                    Some(span) => {
+                        union.push(span);
                         Some((lo, hi))
                     }
                     None => Some((lo, hi)),
                 };
             }
-            if let Some((a, b)) = current {
-                covered += b - a;
-            }
-            el.edge_length * covered
+            union.extend(current);
+            union
         })
         .collect()
 }
@@ -164,23 +169,36 @@ fn node_sides(elements: &[ContactElement], on_a: &[bool]) -> BTreeMap<usize, boo
     side
 }
 
-/// The tributary length of every node of B: half the summed length of the
-/// interface edges it ends, each counted as far as it faces the other side
-/// ([`facing_lengths`]; each interface edge is the edge of exactly one
-/// element of B); zero for a node that is only an apex. The elements must
-/// be of one pair.
+/// The tributary length of every node of B: ∫ φ_i ds over the part of
+/// its interface edges that faces the other side ([`facing_spans`]; each
+/// interface edge is the edge of exactly one element of B), φ_i its hat:
+/// half its edges where they face the other side whole. The consistent
+/// load of a uniform traction t on the node is t m_i, which is what the
+/// strip puts on it (docs/method.md §6.11, also where the other side ends
+/// inside an edge), so that t is read back at every node. Zero for a node
+/// that is only an apex. The elements must be of one pair.
 fn tributaries(
     nodes: Nodes<'_>,
     elements: &[ContactElement],
     on_a: &[bool],
 ) -> BTreeMap<usize, f64> {
-    let facing = facing_lengths(nodes, elements, on_a);
+    let spans = facing_spans(nodes, elements, on_a);
     let mut tributary = BTreeMap::new();
-    for (el, &length) in elements.iter().zip(&facing) {
+    for (el, spans) in elements.iter().zip(&spans) {
+        // ∫ (1 − t) and ∫ t over the spans, the hats of the edge's first
+        // and second base nodes; (0, 1) gives ½ and ½ exactly.
+        let (mut first, mut second) = (0.0, 0.0);
+        for &(lo, hi) in spans {
+            let half_moment = 0.5 * (hi * hi - lo * lo);
+            first += (hi - lo) - half_moment;
+            second += half_moment;
+        }
+        let mut base = 0;
         for &v in &el.nodes {
             let m = tributary.entry(v).or_insert(0.0);
             if v != el.apex {
-                *m += 0.5 * length;
+                *m += el.edge_length * if base == 0 { first } else { second };
+                base += 1;
             }
         }
     }
@@ -539,8 +557,11 @@ mod tests {
         let on_a = edge_on_side_a(nodes, &elements);
         let m = tributaries(nodes, &elements, &on_a);
         assert_eq!(m[&0], 0.5);
-        assert_eq!(m[&1], 0.5 + 0.25);
-        assert_eq!(m[&2], 0.25);
+        // ∫ φ over [1, 1.5] of the cut edge: 3/8 to node 1, 1/8 to node 2,
+        // the consistent loads the strip puts there (a uniform traction
+        // reads back as itself).
+        assert_eq!(m[&1], 0.5 + 0.375);
+        assert_eq!(m[&2], 0.125);
         assert_eq!(m.get(&3).copied().unwrap_or(0.0), 0.0);
         // Side b lies wholly over a: its tributaries are its half edges.
         assert_eq!(m[&4], 0.375);
@@ -607,7 +628,7 @@ mod tests {
                 p[1] = gap;
             }
             let m = tributaries_of(&x, &elements);
-            assert_eq!((m[&0], m[&1], m[&2]), (0.5, 0.75, 0.25), "gap {gap}");
+            assert_eq!((m[&0], m[&1], m[&2]), (0.5, 0.875, 0.125), "gap {gap}");
         }
     }
 }

@@ -110,7 +110,8 @@ pub struct TfemContactReport {
     /// Active elements at convergence.
     pub active: c_int,
     /// Contact length ℓc (half the summed interface-edge length of the
-    /// active elements), model length units.
+    /// active elements, each as far as it faces the other side), model
+    /// length units.
     pub contact_length: f64,
     /// Largest normal interpenetration, model length units.
     pub max_penetration: f64,

@@ -912,8 +912,9 @@ pub unsafe extern "C" fn tfem_get_contact_forces(
 /// (n_nodes values; force per unit area, Pa in SI, positive in compression;
 /// zero off the contact interfaces), computed on request: the traction
 /// read from both sides of the interface (the mean of a node's normal
-/// contact force over its tributary — half its interface edges, as far as
-/// they face the other side — and the other side's forces over their
+/// contact force over its tributary — the integral of its hat over its
+/// interface edges as far as they face the other side, half its edges
+/// where they face it whole — and the other side's forces over their
 /// tributaries near it); where the other side is more than 1.8 times
 /// coarser, a node takes the other side's reading there, interpolated
 /// (the coarser side's reading is the closer to the traction), blended

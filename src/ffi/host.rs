@@ -563,9 +563,10 @@ pub unsafe extern "C" fn tfem_contact_element_blocks(
 }
 
 /// Writes the contact length of the current active set to `length`: half
-/// the summed interface-edge length of the active elements of B (each
-/// point of an interface is covered by one element with its edge on each
-/// side), model length units; +0.0 when no element is active.
+/// the summed interface-edge length of the active elements of B, each as
+/// far as it faces the other side (each point of an interface is covered
+/// by one element with its edge on each side), model length units; +0.0
+/// when no element is active.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_length(
     context: *mut TfemContact,

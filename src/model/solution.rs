@@ -147,7 +147,12 @@ impl Solution {
                     let f0 = match &c.friction {
                         Some(fr) => {
                             let bt = shear_vector(&corners, el.normal);
-                            std::array::from_fn(|a| cs.f0[a] - fr.shear[k] * bt[a])
+                            {
+                                // The traction, scaled to the share of the
+                                // edge the element carries it on.
+                                let tau = fr.shear[k] * el.facing_share();
+                                std::array::from_fn(|a| cs.f0[a] - tau * bt[a])
+                            }
                         }
                         None => cs.f0,
                     };
@@ -217,7 +222,10 @@ impl Solution {
             let ue = element_values(u, &el.nodes);
             // The shear traction τ of a frictional element acts through b_t.
             let (tau, bt) = match &c.friction {
-                Some(fr) => (fr.shear[k], shear_vector(&corners, el.normal)),
+                Some(fr) => (
+                    fr.shear[k] * el.facing_share(),
+                    shear_vector(&corners, el.normal),
+                ),
                 None => (0.0, [0.0; 6]),
             };
             for a in 0..6 {

@@ -435,7 +435,8 @@ pub(crate) fn contact_outcome(
         }
         let ue = ue_of(&el.nodes);
         pressure[k] = set.pressure(k, &ue);
-        lc += 0.5 * el.edge_length;
+        // The part of its edge that faces the other side (§6.8, §6.11).
+        lc += 0.5 * el.facing;
         let opening = set.opening(k, &ue);
         if el.edge_length > 0.0 {
             max_pen = max_pen.max(-opening / el.edge_length);

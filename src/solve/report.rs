@@ -62,8 +62,9 @@ pub struct ContactReport {
     /// Active (inverted) elements at convergence.
     pub active: usize,
     /// Contact length ℓc: half the summed interface-edge length of the
-    /// active elements (each point of the interface is covered by one
-    /// element with its edge on each side).
+    /// active elements, each as far as it faces the other side (each point
+    /// of the interface is covered by one element with its edge on each
+    /// side).
     pub contact_length: f64,
     /// Largest normal interpenetration (−opening / edge length) of an active
     /// element, in model length units; 0 when nothing penetrates.

@@ -255,7 +255,7 @@ impl TwoBlocksScene {
             .iter()
             .zip(&state)
             .filter(|(_, s)| **s == 1)
-            .fold(0.0, |l, (e, _)| l + 0.5 * e.edge_length);
+            .fold(0.0, |l, (e, _)| l + 0.5 * e.facing);
         let shear = self.model.contact_shear()?;
         Ok(TwoBlocksResult {
             lc: report.contact_length,
