@@ -14,6 +14,7 @@
 #include <string.h>
 #include <sys/mman.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -428,6 +429,36 @@ static void messages_stay_short_and_the_thread_slot_is_cleared(void) {
   CHECK(tfem_element_stiffness(xy, 1.0, 0.3, 0, 0.0, k) == TFEM_STATUS_OK);
   CHECK(tfem_last_error(NULL, msg, sizeof msg) == TFEM_STATUS_OK && msg[0] == '\0');
   CHECK(tfem_last_error_length(NULL) == 1);
+}
+
+/* A private directory for the files of the Gmsh tests, made once. */
+static char gmsh_dir[256];
+static const char *gmsh_path(const char *name) {
+  static char path[512];
+  if (gmsh_dir[0] == '\0') {
+    const char *tmp = getenv("TMPDIR");
+    snprintf(gmsh_dir, sizeof gmsh_dir, "%s/tfem_boundary_XXXXXX",
+             tmp != NULL && tmp[0] != '\0' ? tmp : "/tmp");
+    if (mkdtemp(gmsh_dir) == NULL) gmsh_dir[0] = '\0';
+  }
+  snprintf(path, sizeof path, "%s/%s", gmsh_dir, name);
+  return path;
+}
+
+/* Found by an outside probe of the Gmsh reader: tfem_load_gmsh of a FIFO
+ * waited forever in open() for a writer (the regular-file check came
+ * after the open). It is an IO error naming the path and what it is. An
+ * alarm turns a hang into a failed run, not a stalled suite. */
+static void loading_a_fifo_is_an_io_error_not_a_hang(void) {
+  const char *path = gmsh_path("fifo.msh");
+  CHECK(mkfifo(path, 0600) == 0);
+  tfem_model *m = tfem_create();
+  alarm(30);
+  EXPECT_ERROR(m, tfem_load_gmsh(m, path, 0), TFEM_STATUS_IO, "not a regular file but a FIFO");
+  EXPECT_ERROR(m, tfem_load_gmsh(m, path, 0), TFEM_STATUS_IO, "fifo.msh");
+  alarm(0);
+  tfem_destroy(m);
+  unlink(path);
 }
 
 /* Found by a host-code probe: a Fortran type(c_ptr) does not tell a model
@@ -1853,7 +1884,10 @@ int main(int argc, char **argv) {
   scatter_add_refuses_an_overflow_leaving_the_host_vector_unchanged();
   the_contact_length_with_nothing_active_is_plus_zero();
   a_non_matching_host_pair_is_accepted_at_any_length_scale();
+  loading_a_fifo_is_an_io_error_not_a_hang();
   a_solve_under_any_memory_limit_fails_cleanly_or_succeeds();
+
+  if (gmsh_dir[0] != '\0') rmdir(gmsh_dir);
 
   fflush(stderr);
   fseek(capture, 0, SEEK_END);

@@ -943,3 +943,37 @@ fn a_second_nodes_section_is_an_io_error_naming_nodes() {
     assert_eq!(e.status(), Status::Io);
     assert!(e.message().contains("a second $Nodes"), "{}", e.message());
 }
+
+#[test]
+fn a_fifo_is_an_io_error_naming_it_without_waiting_for_a_writer() {
+    let path = out_dir().join("fifo.msh");
+    let _ = std::fs::remove_file(&path);
+    assert!(
+        Command::new("mkfifo")
+            .arg(&path)
+            .status()
+            .unwrap()
+            .success()
+    );
+    let (tx, rx) = std::sync::mpsc::channel();
+    let p = path.clone();
+    std::thread::spawn(move || {
+        let got = read_msh(&p, 0).map(|_| ());
+        let _ = tx.send(got.map_err(|e| (e.status(), e.message().to_string())));
+    });
+    let got = rx.recv_timeout(std::time::Duration::from_secs(10));
+    if got.is_err() {
+        // The reader waits in `open` for a writer: be it, so that the
+        // thread ends.
+        let _ = std::fs::OpenOptions::new().write(true).open(&path);
+    }
+    let (status, message) = got
+        .expect("the reader returns without a writer")
+        .unwrap_err();
+    assert_eq!(status, Status::Io, "{message}");
+    assert!(message.contains("fifo.msh"), "{message}");
+    assert!(
+        message.contains("not a regular file but a FIFO"),
+        "{message}"
+    );
+}

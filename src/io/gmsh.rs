@@ -765,13 +765,60 @@ fn parse(bytes: &[u8]) -> Parse<MshFile> {
     Ok(file)
 }
 
+/// Why a file system object that is not a regular file is refused, for a
+/// message.
+fn not_regular(t: std::fs::FileType) -> std::io::Error {
+    std::io::Error::other(format!("not a regular file but {}", kind(t)))
+}
+
+/// What a file system object that is not a regular file is.
+fn kind(t: std::fs::FileType) -> &'static str {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        if t.is_fifo() {
+            return "a FIFO (a named pipe)";
+        }
+        if t.is_char_device() || t.is_block_device() {
+            return "a device";
+        }
+        if t.is_socket() {
+            return "a socket";
+        }
+    }
+    if t.is_dir() {
+        "a directory"
+    } else {
+        "a special file"
+    }
+}
+
 /// The whole file, refusing what is not a regular file (a device or a
 /// pipe could be endless) and a file too large for memory.
+///
+/// The path is looked up (`metadata`) before it is opened: opening a FIFO
+/// for reading blocks until a writer comes, so a check after `open` would
+/// never be reached. On Unix the file is moreover opened with
+/// `O_NONBLOCK`, so that a FIFO put in its place between the look-up and
+/// the open cannot block either (the open returns at once, and the check
+/// of the opened file refuses it); on a regular file the flag changes
+/// nothing.
 fn read_file(path: &Path) -> std::io::Result<Vec<u8>> {
-    let file = std::fs::File::open(path)?;
+    let meta = std::fs::metadata(path)?;
+    if !meta.is_file() {
+        return Err(not_regular(meta.file_type()));
+    }
+    let mut options = std::fs::OpenOptions::new();
+    options.read(true);
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        options.custom_flags(libc::O_NONBLOCK);
+    }
+    let file = options.open(path)?;
     let meta = file.metadata()?;
     if !meta.is_file() {
-        return Err(std::io::Error::other("not a regular file"));
+        return Err(not_regular(meta.file_type()));
     }
     let len = usize::try_from(meta.len()).map_err(std::io::Error::other)?;
     let mut bytes = Vec::new();
