@@ -461,6 +461,56 @@ static void loading_a_fifo_is_an_io_error_not_a_hang(void) {
   unlink(path);
 }
 
+/* The unit square as two triangles of body 7, its sides in physical
+ * curves 11 (bottom), 12 (right), 13 (top) and 14 (left), every side also
+ * in group 99 (the whole boundary) and the top also in group 50. */
+static const char SQUARE_MSH[] =
+    "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+    "$Entities\n0 4 1 0\n"
+    "1 0 0 0 1 0 0 2 11 99 0\n"
+    "2 1 0 0 1 1 0 2 12 99 0\n"
+    "3 0 1 0 1 1 0 3 13 99 50 0\n"
+    "4 0 0 0 0 1 0 2 14 99 0\n"
+    "1 0 0 0 1 1 0 1 7 0\n"
+    "$EndEntities\n"
+    "$Nodes\n1 4 1 4\n2 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n$EndNodes\n"
+    "$Elements\n5 6 1 6\n"
+    "1 1 1 1\n1 1 2\n1 2 1 1\n2 2 3\n1 3 1 1\n3 3 4\n1 4 1 1\n4 4 1\n"
+    "2 1 2 2\n5 1 2 3\n6 1 3 4\n"
+    "$EndElements\n";
+
+/* Writes `text` to the file `name` of the private directory; its path. */
+static const char *gmsh_file(const char *name, const char *text) {
+  const char *path = gmsh_path(name);
+  FILE *f = fopen(path, "wb");
+  if (f != NULL) {
+    fputs(text, f);
+    fclose(f);
+  }
+  return path;
+}
+
+/* Found by an outside probe: a path that is not UTF-8 (a file named in
+ * Latin-1) was refused ("path is not valid UTF-8") although the file
+ * exists; on Unix a path is bytes and is taken as such. */
+static void a_gmsh_file_named_in_latin_1_is_loaded(void) {
+  const char *path = gmsh_file("lat\xe9.msh", SQUARE_MSH);
+  tfem_model *m = tfem_create();
+  CHECK(tfem_load_gmsh(m, path, 0) == TFEM_STATUS_OK);
+  int nn = 0, nt = 0, nc = 0;
+  CHECK(tfem_get_sizes(m, &nn, &nt, &nc) == TFEM_STATUS_OK && nn == 4 && nt == 2);
+  tfem_destroy(m);
+  unlink(path);
+}
+
+/* Found by an outside probe: the empty path gave ": No such file or
+ * directory", naming nothing. */
+static void an_empty_gmsh_path_is_named_as_such(void) {
+  tfem_model *m = tfem_create();
+  EXPECT_ERROR(m, tfem_load_gmsh(m, "", 0), TFEM_STATUS_IO, "the path is empty");
+  tfem_destroy(m);
+}
+
 /* Found by a host-code probe: a Fortran type(c_ptr) does not tell a model
  * from a contact context, and tfem_error_message(context) read the context
  * as a model. A handle of the other kind, or a destroyed one, is refused
@@ -1885,6 +1935,8 @@ int main(int argc, char **argv) {
   the_contact_length_with_nothing_active_is_plus_zero();
   a_non_matching_host_pair_is_accepted_at_any_length_scale();
   loading_a_fifo_is_an_io_error_not_a_hang();
+  a_gmsh_file_named_in_latin_1_is_loaded();
+  an_empty_gmsh_path_is_named_as_such();
   a_solve_under_any_memory_limit_fails_cleanly_or_succeeds();
 
   if (gmsh_dir[0] != '\0') rmdir(gmsh_dir);

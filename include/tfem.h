@@ -485,7 +485,8 @@ enum tfem_status tfem_set_mesh(struct tfem_model *model,
 
 /**
  * Loads a Gmsh MSH 4.1 mesh (ASCII or binary) from the file `path`
- * (NUL-terminated UTF-8): physical surfaces become bodies (tag = body),
+ * (NUL-terminated; on Unix any bytes, as the file system takes them,
+ * elsewhere UTF-8): physical surfaces become bodies (tag = body),
  * physical curves become boundary-edge tags; only 3-node triangles and
  * 2-node lines, in the plane z = 0. Replaces the mesh like `tfem_set_mesh`
  * with the given `index_base` for later calls. Returns TFEM_STATUS_IO for

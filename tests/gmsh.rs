@@ -977,3 +977,10 @@ fn a_fifo_is_an_io_error_naming_it_without_waiting_for_a_writer() {
         "{message}"
     );
 }
+
+#[test]
+fn an_empty_path_is_an_io_error_saying_so() {
+    let e = read_msh(Path::new(""), 0).unwrap_err();
+    assert_eq!(e.status(), Status::Io);
+    assert!(e.message().contains("the path is empty"), "{}", e.message());
+}

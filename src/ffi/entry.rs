@@ -208,7 +208,8 @@ pub unsafe extern "C" fn tfem_set_mesh(
 }
 
 /// Loads a Gmsh MSH 4.1 mesh (ASCII or binary) from the file `path`
-/// (NUL-terminated UTF-8): physical surfaces become bodies (tag = body),
+/// (NUL-terminated; on Unix any bytes, as the file system takes them,
+/// elsewhere UTF-8): physical surfaces become bodies (tag = body),
 /// physical curves become boundary-edge tags; only 3-node triangles and
 /// 2-node lines, in the plane z = 0. Replaces the mesh like `tfem_set_mesh`
 /// with the given `index_base` for later calls. Returns TFEM_STATUS_IO for
@@ -234,11 +235,26 @@ pub unsafe extern "C" fn tfem_load_gmsh(
             }
         };
         // SAFETY: a NUL-terminated string from the caller.
-        let path = unsafe { std::ffi::CStr::from_ptr(path) }
-            .to_str()
-            .map_err(|_| Error::argument("path is not valid UTF-8"))?;
-        load_gmsh(m, std::path::Path::new(path), base)
+        let path = unsafe { std::ffi::CStr::from_ptr(path) };
+        load_gmsh(m, &path_of(path)?, base)
     })
+}
+
+/// A C path as a file-system path. On Unix a path is bytes, not text: a
+/// file named in Latin-1 (`lat\xe9.msh`) must open as the shell opens it,
+/// so the bytes are taken as they are.
+#[cfg(unix)]
+fn path_of(path: &std::ffi::CStr) -> Result<std::path::PathBuf> {
+    use std::os::unix::ffi::OsStrExt;
+    Ok(std::ffi::OsStr::from_bytes(path.to_bytes()).into())
+}
+
+/// A C path as a file-system path: elsewhere than on Unix, UTF-8 text.
+#[cfg(not(unix))]
+fn path_of(path: &std::ffi::CStr) -> Result<std::path::PathBuf> {
+    path.to_str()
+        .map(Into::into)
+        .map_err(|_| Error::argument("path is not valid UTF-8"))
 }
 
 #[cfg(feature = "gmsh")]

@@ -838,6 +838,11 @@ fn read_file(path: &Path) -> std::io::Result<Vec<u8>> {
 /// wrong, e.g. a count the file cannot hold), [`Status::InvalidMesh`] for
 /// well-formed content we cannot use.
 pub fn read_msh(path: &Path, index_base: usize) -> Result<Mesh> {
+    // The system's message for it would name nothing (": No such file or
+    // directory").
+    if path.as_os_str().is_empty() {
+        return Err(Error::new(Status::Io, "the path is empty: no file to read"));
+    }
     let bytes =
         read_file(path).map_err(|e| Error::new(Status::Io, format!("{}: {e}", path.display())))?;
     build(&bytes, index_base)
