@@ -511,6 +511,44 @@ static void an_empty_gmsh_path_is_named_as_such(void) {
   tfem_destroy(m);
 }
 
+/* Found by an outside probe: the name of an unknown section was quoted
+ * whole and raw, so a 10 MB token gave a 10 MB message and a binary one
+ * embedded a NUL (a C caller saw the message cut) and control bytes. File
+ * text is quoted short and printable: the whole message fits in a few
+ * hundred bytes, with no control character before its terminating NUL. */
+static void a_corrupt_gmsh_file_gets_a_short_printable_message(void) {
+  static const char head[] = "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Elements";
+  for (int k = 0; k < 2; ++k) {
+    const char *path = gmsh_path("corrupt.msh");
+    FILE *f = fopen(path, "wb");
+    if (f == NULL) {
+      CHECK(f != NULL);
+      return;
+    }
+    fwrite(head, 1, sizeof head - 1, f);
+    if (k == 0) {
+      for (int i = 0; i < 300; ++i) fputc(i % 256, f); /* NUL and control bytes */
+    } else {
+      for (int i = 0; i < 1000000; ++i) fputc('x', f);
+    }
+    fputs("\n$EndElements\n", f);
+    fclose(f);
+    tfem_model *m = tfem_create();
+    CHECK(tfem_load_gmsh(m, path, 0) == TFEM_STATUS_IO);
+    size_t length = tfem_last_error_length(m);
+    char msg[512];
+    tfem_last_error(m, msg, sizeof msg);
+    CHECK(length <= 400 && strlen(msg) + 1 == length);
+    int printable = 1;
+    for (const unsigned char *c = (const unsigned char *)msg; *c != '\0'; ++c)
+      if (*c < 0x20 || *c == 0x7f) printable = 0;
+    CHECK(printable);
+    if (length > 400 || !printable) printf("  message of %zu bytes: %.200s\n", length, msg);
+    tfem_destroy(m);
+    unlink(path);
+  }
+}
+
 /* Found by a host-code probe: a Fortran type(c_ptr) does not tell a model
  * from a contact context, and tfem_error_message(context) read the context
  * as a model. A handle of the other kind, or a destroyed one, is refused
@@ -1937,6 +1975,7 @@ int main(int argc, char **argv) {
   loading_a_fifo_is_an_io_error_not_a_hang();
   a_gmsh_file_named_in_latin_1_is_loaded();
   an_empty_gmsh_path_is_named_as_such();
+  a_corrupt_gmsh_file_gets_a_short_printable_message();
   a_solve_under_any_memory_limit_fails_cleanly_or_succeeds();
 
   if (gmsh_dir[0] != '\0') rmdir(gmsh_dir);

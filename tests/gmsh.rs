@@ -984,3 +984,55 @@ fn an_empty_path_is_an_io_error_saying_so() {
     assert_eq!(e.status(), Status::Io);
     assert!(e.message().contains("the path is empty"), "{}", e.message());
 }
+
+/// Whether a message is fit for a C caller: short, and without control
+/// characters (a NUL would cut it, raw binary garble a terminal).
+fn printable_and_short(message: &str) -> bool {
+    message.len() <= 400 && !message.chars().any(char::is_control)
+}
+
+#[test]
+fn an_unknown_section_name_is_quoted_short_and_printable() {
+    let mut long = format!("{HEADER}$");
+    long.push_str(&"x".repeat(10_000_000));
+    long.push('\n');
+    let mut binary = format!("{HEADER}$Elements").into_bytes();
+    binary.extend_from_slice(b"\x00\x01\xff\x05");
+    binary.extend((0..=255u8).cycle().take(300));
+    binary.extend_from_slice(b"\n$EndElements\n");
+    for (name, bytes) in [
+        ("long_section_name.msh", long.into_bytes()),
+        ("binary_section_name.msh", binary),
+    ] {
+        let e = read_msh(&write_bytes(name, &bytes), 0).unwrap_err();
+        assert_eq!(e.status(), Status::Io, "{}", e.message());
+        assert!(
+            printable_and_short(e.message()),
+            "{} bytes: {:?}",
+            e.message().len(),
+            e.message()
+        );
+    }
+}
+
+#[test]
+fn every_message_from_a_corrupt_file_is_short_and_printable() {
+    for binary in [false, true] {
+        let full = triangle(binary);
+        let path = out_dir().join(format!("corrupt_{binary}.msh"));
+        for at in 0..full.len() {
+            for b in [0x00, 0x01, 0x1b, 0x7f, 0x80, 0xff, b'$', b'\n'] {
+                let mut bytes = full.clone();
+                bytes[at] = b;
+                std::fs::write(&path, &bytes).unwrap();
+                if let Err(e) = read_msh(&path, 0) {
+                    assert!(
+                        printable_and_short(e.message()),
+                        "{at} = {b}: {:?}",
+                        e.message()
+                    );
+                }
+            }
+        }
+    }
+}

@@ -136,15 +136,37 @@ fn is_blank(b: u8) -> bool {
     matches!(b, b' ' | b'\t' | b'\n' | b'\r' | b'\x0b' | b'\x0c')
 }
 
-/// A token of the file for a message: at most 24 bytes, quoted.
+/// File text for a message: quoted, printable and bounded, whatever the
+/// bytes. Messages reach C callers as NUL-terminated strings and users'
+/// terminals: a NUL would cut the message, raw binary garble the screen,
+/// a long token make it megabytes long. At most 24 bytes are shown, each
+/// control character escaped (`\0`, `\u{1b}`), invalid UTF-8 as U+FFFD,
+/// and the quoted text stops at 48 characters.
 fn show(token: &[u8]) -> String {
-    let cut = &token[..token.len().min(24)];
-    let text = String::from_utf8_lossy(cut);
-    if cut.len() < token.len() {
-        format!("{:?}…", text)
-    } else {
-        format!("{:?}", text)
+    const BYTES: usize = 24;
+    const CHARS: usize = 48;
+    let cut = &token[..token.len().min(BYTES)];
+    let mut out = String::from("\"");
+    let mut shown = 0;
+    let mut short = cut.len() < token.len();
+    // Cut between the escapes of whole characters, never inside one.
+    for c in String::from_utf8_lossy(cut).chars() {
+        let escaped: String = match c {
+            '\'' => "'".to_string(),
+            c => c.escape_debug().collect(),
+        };
+        shown += escaped.chars().count();
+        if shown > CHARS {
+            short = true;
+            break;
+        }
+        out.push_str(&escaped);
     }
+    out.push('"');
+    if short {
+        out.push('…');
+    }
+    out
 }
 
 /// A cursor over the bytes of the file.
@@ -361,7 +383,7 @@ impl<'a> Reader<'a> {
             }
             from = at + 1;
         }
-        Err(format!("the file ends before {}", String::from_utf8_lossy(&end)).into())
+        Err(format!("the file ends before {}", show(&end)).into())
     }
 }
 
@@ -729,7 +751,8 @@ fn parse(bytes: &[u8]) -> Parse<MshFile> {
             b"$Nodes" => "$Nodes",
             b"$Elements" => "$Elements",
             t if t.len() > 1 && t.starts_with(b"$") && !t.starts_with(b"$End") => {
-                let name = String::from_utf8_lossy(t).into_owned();
+                // The name is file text, maybe binary and of any length.
+                let name = show(t);
                 let context = format!("{name} (a section after {last}, skipped)");
                 in_section(&context, r.skip_section(&t[1..]))?;
                 last = name;
@@ -875,7 +898,7 @@ fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
         .find(|(_, p)| p[2].is_nan() || p[2].abs() > 1e-12 * scale)
     {
         return Err(Fail::mesh(format!(
-            "$Nodes: node {} has z = {}: only 2D meshes in the plane z = 0 are supported",
+            "$Nodes: node {} has z = {:?}: only 2D meshes in the plane z = 0 are supported",
             nodes.tags[k], p[2]
         )));
     }
