@@ -92,3 +92,22 @@ fn writing_before_a_solve_is_an_invalid_state() {
     let e = tfem::io::vtu::write_vtu(&s.model, std::path::Path::new("/tmp/never.vtu")).unwrap_err();
     assert_eq!(e.status(), tfem::Status::InvalidState);
 }
+
+#[test]
+fn a_file_that_cannot_be_written_is_an_io_error_in_words_naming_it() {
+    let mut s = TwoBlocks {
+        mesh_size: 0.25,
+        ..Default::default()
+    }
+    .build()
+    .unwrap();
+    s.solve(&ContactOptions::default()).unwrap();
+    let path = std::path::Path::new("/nonexistent/directory/out.vtu");
+    let e = tfem::io::vtu::write_vtu(&s.model, path).unwrap_err();
+    assert_eq!(e.status(), tfem::Status::Io);
+    let m = e.message();
+    assert!(m.contains("/nonexistent/directory/out.vtu"), "{m}");
+    assert!(m.contains("No such file or directory"), "{m}");
+    // Not Rust's Debug text (`Os { code: 2, kind: NotFound, … }`).
+    assert!(!m.contains("Os {") && !m.contains("kind:"), "{m}");
+}

@@ -94,6 +94,28 @@ pub fn write_vtu(model: &Model, path: &Path) -> Result<()> {
             },
         }),
     };
-    vtk.export(path)
-        .map_err(|e| Error::new(Status::Io, format!("cannot write {}: {e}", path.display())))
+    vtk.export(path).map_err(|e| {
+        Error::new(
+            Status::Io,
+            format!("cannot write {}: {}", path.display(), reason(&e)),
+        )
+    })
+}
+
+/// Why `vtkio` could not write, in words: its own messages print their
+/// causes with `Debug` (`I/O error: Os { code: 2, kind: NotFound, … }`),
+/// so the cause is looked for down its chain: the operating system's
+/// error if there is one (`No such file or directory (os error 2)`), else
+/// the innermost cause.
+fn reason(e: &vtkio::Error) -> String {
+    let mut cause: &(dyn std::error::Error + 'static) = e;
+    loop {
+        if let Some(io) = cause.downcast_ref::<std::io::Error>() {
+            return io.to_string();
+        }
+        match cause.source() {
+            Some(next) => cause = next,
+            None => return cause.to_string(),
+        }
+    }
 }
