@@ -549,6 +549,33 @@ static void a_corrupt_gmsh_file_gets_a_short_printable_message(void) {
   }
 }
 
+/* Found by an outside probe: errors and warnings of a Gmsh file named
+ * tfem's internal indices ("boundary edge 2 (nodes 1, 3) is not a side of
+ * any triangle", "not used by any triangle: 4") where the file has node
+ * tags 1001… and element tags: they name the file's tags now. */
+static void gmsh_messages_name_the_files_node_and_element_tags(void) {
+  static const char head[] =
+      "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+      "$Entities\n0 1 1 0\n1 0 0 0 1 1 0 1 11 0\n1 0 0 0 1 1 0 1 7 0\n$EndEntities\n"
+      "$Nodes\n1 5 1001 1007\n2 1 0 5\n1001\n1002\n1003\n1004\n1007\n"
+      "0 0 0\n1 0 0\n1 1 0\n0 1 0\n0.5 0.5 0\n$EndNodes\n"
+      "$Elements\n2 4 21 32\n2 1 2 2\n21 1001 1002 1003\n22 1001 1003 1004\n"
+      "1 1 1 2\n31 1001 1002\n";
+  char text[1024];
+  /* Line 32 joins opposite corners: no side of a triangle. */
+  snprintf(text, sizeof text, "%s32 1002 1004\n$EndElements\n", head);
+  tfem_model *m = tfem_create();
+  EXPECT_ERROR(m, tfem_load_gmsh(m, gmsh_file("renumbered.msh", text), 0),
+               TFEM_STATUS_INVALID_MESH,
+               "Gmsh line element 32 (Gmsh nodes 1002, 1004) is not a side of any triangle");
+  /* A good line 32: Gmsh node 1007 (index 4) is the unused one. */
+  snprintf(text, sizeof text, "%s32 1002 1003\n$EndElements\n", head);
+  CHECK(tfem_load_gmsh(m, gmsh_file("renumbered.msh", text), 0) == TFEM_STATUS_OK);
+  CHECK(has_warning(m, "not used by any triangle get no unknowns: 4 (Gmsh node 1007)"));
+  tfem_destroy(m);
+  unlink(gmsh_path("renumbered.msh"));
+}
+
 /* Found by a host-code probe: a Fortran type(c_ptr) does not tell a model
  * from a contact context, and tfem_error_message(context) read the context
  * as a model. A handle of the other kind, or a destroyed one, is refused
@@ -1976,6 +2003,7 @@ int main(int argc, char **argv) {
   a_gmsh_file_named_in_latin_1_is_loaded();
   an_empty_gmsh_path_is_named_as_such();
   a_corrupt_gmsh_file_gets_a_short_printable_message();
+  gmsh_messages_name_the_files_node_and_element_tags();
   a_solve_under_any_memory_limit_fails_cleanly_or_succeeds();
 
   if (gmsh_dir[0] != '\0') rmdir(gmsh_dir);

@@ -1036,3 +1036,98 @@ fn every_message_from_a_corrupt_file_is_short_and_printable() {
         }
     }
 }
+
+/// The unit square as two triangles (Gmsh elements 21, 22) on surface 1
+/// (body 7), its corners Gmsh nodes 1001–1004 counter-clockwise from the
+/// origin (1003 at `corner_1003`), then the nodes `extra`; curve 1 (group
+/// 11) holds the bottom side (element 31) and the lines `lines` (elements
+/// 32, …).
+fn renumbered_square(corner_1003: &str, extra: &[(u64, &str)], lines: &[[u64; 2]]) -> String {
+    let n = 4 + extra.len();
+    let max_node = extra.iter().map(|e| e.0).fold(1004, u64::max);
+    let mut text = format!(
+        "{HEADER}$Entities\n0 1 1 0\n1 0 0 0 1 1 0 1 11 0\n1 0 0 0 1 1 0 1 7 0\n$EndEntities\n\
+         $Nodes\n1 {n} 1001 {max_node}\n2 1 0 {n}\n1001\n1002\n1003\n1004\n"
+    );
+    for (tag, _) in extra {
+        text.push_str(&format!("{tag}\n"));
+    }
+    text.push_str(&format!("0 0 0\n1 0 0\n{corner_1003}\n0 1 0\n"));
+    for (_, xyz) in extra {
+        text.push_str(&format!("{xyz}\n"));
+    }
+    text.push_str(&format!(
+        "$EndNodes\n$Elements\n2 {} 21 {}\n2 1 2 2\n21 1001 1002 1003\n22 1001 1003 1004\n\
+         1 1 1 {}\n31 1001 1002\n",
+        3 + lines.len(),
+        31 + lines.len(),
+        1 + lines.len()
+    ));
+    for (k, [p, q]) in lines.iter().enumerate() {
+        text.push_str(&format!("{} {p} {q}\n", 32 + k));
+    }
+    text.push_str("$EndElements\n");
+    text
+}
+
+#[test]
+fn the_renumbered_square_is_read() {
+    let mesh = read_msh(
+        &write("renumbered.msh", &renumbered_square("1 1 0", &[], &[])),
+        0,
+    )
+    .unwrap();
+    assert_eq!(mesh.nodes().len(), 4);
+    assert_eq!(mesh.boundary_edges().len(), 1);
+}
+
+#[test]
+fn a_line_that_is_no_side_names_its_gmsh_element_and_nodes() {
+    let text = renumbered_square("1 1 0", &[], &[[1002, 1004]]);
+    let e = read_msh(&write("renumbered_badline.msh", &text), 0).unwrap_err();
+    assert_eq!(e.status(), Status::InvalidMesh);
+    assert!(
+        e.message()
+            .contains("Gmsh line element 32 (Gmsh nodes 1002, 1004) is not a side of any triangle"),
+        "{}",
+        e.message()
+    );
+}
+
+#[test]
+fn a_non_finite_coordinate_names_the_gmsh_node() {
+    let text = renumbered_square("inf 1 0", &[], &[]);
+    let e = read_msh(&write("renumbered_inf.msh", &text), 1).unwrap_err();
+    assert_eq!(e.status(), Status::InvalidMesh);
+    assert!(
+        e.message()
+            .contains("node 3 (Gmsh node 1003): coordinates (inf, 1.0)"),
+        "{}",
+        e.message()
+    );
+}
+
+#[test]
+fn an_unused_node_is_named_by_its_gmsh_tag_in_the_warning() {
+    let text = renumbered_square("1 1 0", &[(1007, "0.5 0.5 0")], &[]);
+    let mesh = read_msh(&write("renumbered_unused.msh", &text), 0).unwrap();
+    assert!(
+        mesh.warnings()
+            .iter()
+            .any(|w| w.contains("not used by any triangle") && w.contains("4 (Gmsh node 1007)")),
+        "{:?}",
+        mesh.warnings()
+    );
+}
+
+#[test]
+fn an_element_naming_an_undefined_node_is_named_by_its_tag() {
+    let text = renumbered_square("1 1 0", &[], &[[1002, 1009]]);
+    let e = read_msh(&write("renumbered_undefined.msh", &text), 0).unwrap_err();
+    assert_eq!(e.status(), Status::InvalidMesh);
+    assert!(
+        e.message().contains("element 32 refers to node 1009"),
+        "{}",
+        e.message()
+    );
+}

@@ -55,16 +55,80 @@ fn list<T: std::fmt::Display>(items: &[T]) -> String {
     format!("{}{}", shown.join(", "), more)
 }
 
+/// How the messages of [`Mesh::with_names`] and
+/// [`Mesh::set_boundary_edges_with_names`] name nodes, triangles and
+/// boundary edges: by index in the caller's numbering and, for a mesh read
+/// from a file, by the file's own tags, which are what its user can look
+/// up (a file's node 1001 may be index 0).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Names<'a> {
+    /// How indices are printed: 0 (C) or 1 (Fortran).
+    pub index_base: usize,
+    /// What the file is, for the messages ("Gmsh"); unused without tags.
+    pub file: &'a str,
+    /// The file's tag of each node, by index.
+    pub node_tags: Option<&'a [u64]>,
+    /// The file's element tag of each triangle, by index.
+    pub triangle_tags: Option<&'a [u64]>,
+    /// The file's element tag of each boundary edge given, by position.
+    pub edge_tags: Option<&'a [u64]>,
+}
+
+impl Names<'_> {
+    /// Indices only, printed from `index_base`.
+    pub fn indices(index_base: usize) -> Self {
+        Names {
+            index_base,
+            ..Names::default()
+        }
+    }
+
+    /// Node `i`: "5", or "5 (Gmsh node 1006)".
+    fn node(&self, i: usize) -> String {
+        let n = i + self.index_base;
+        match self.node_tags.and_then(|t| t.get(i)) {
+            Some(tag) => format!("{n} ({} node {tag})", self.file),
+            None => n.to_string(),
+        }
+    }
+
+    /// Triangle `t`: "triangle 3", or "triangle 3 (Gmsh element 57)".
+    fn triangle(&self, t: usize) -> String {
+        let n = t + self.index_base;
+        match self.triangle_tags.and_then(|tags| tags.get(t)) {
+            Some(tag) => format!("triangle {n} ({} element {tag})", self.file),
+            None => format!("triangle {n}"),
+        }
+    }
+
+    /// Boundary edge `e`: "boundary edge 2", or "Gmsh line element 7".
+    fn edge(&self, e: usize) -> String {
+        match self.edge_tags.and_then(|t| t.get(e)) {
+            Some(tag) => format!("{} line element {tag}", self.file),
+            None => format!("boundary edge {}", e + self.index_base),
+        }
+    }
+
+    /// The ends of a boundary edge: "nodes 1, 3", or "Gmsh nodes 1001,
+    /// 1003" (a file's edge is known by the file's nodes).
+    fn ends(&self, p: usize, q: usize) -> String {
+        match self.node_tags.and_then(|t| Some((t.get(p)?, t.get(q)?))) {
+            Some((tp, tq)) => format!("{} nodes {tp}, {tq}", self.file),
+            None => format!("nodes {}, {}", p + self.index_base, q + self.index_base),
+        }
+    }
+}
+
 /// The checks of [`Mesh::new`] on its raw data, each error naming the node
-/// or triangle in the caller's numbering (`index_base`). Gives whether some
-/// triangle is numbered clockwise (its Jacobian is at hand here).
+/// or triangle as `names` says. Gives whether some triangle is numbered
+/// clockwise (its Jacobian is at hand here).
 fn validate(
     nodes: &[[f64; 2]],
     triangles: &[[usize; 3]],
     body_of: &[i32],
-    index_base: usize,
+    names: &Names,
 ) -> Result<bool> {
-    let b = index_base;
+    let b = names.index_base;
     if nodes.is_empty() {
         return Err(Error::mesh("empty mesh: no nodes"));
     }
@@ -84,7 +148,7 @@ fn validate(
     {
         return Err(Error::mesh(format!(
             "node {}: coordinates ({:?}, {:?}) are not finite",
-            i + b,
+            names.node(i),
             nodes[i][0],
             nodes[i][1]
         )));
@@ -94,8 +158,8 @@ fn validate(
         for &v in tri {
             if v >= n {
                 return Err(Error::mesh(format!(
-                    "triangle {}: node index {} is out of range ({} nodes, index base {})",
-                    t + b,
+                    "{}: node index {} is out of range ({} nodes, index base {})",
+                    names.triangle(t),
                     v + b,
                     n,
                     b
@@ -104,16 +168,16 @@ fn validate(
         }
         if tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] {
             return Err(Error::mesh(format!(
-                "triangle {}: node {} is repeated ({}, {}, {})",
-                t + b,
-                if tri[0] == tri[1] || tri[0] == tri[2] {
-                    tri[0] + b
+                "{}: node {} is repeated ({}, {}, {})",
+                names.triangle(t),
+                names.node(if tri[0] == tri[1] || tri[0] == tri[2] {
+                    tri[0]
                 } else {
-                    tri[1] + b
-                },
-                tri[0] + b,
-                tri[1] + b,
-                tri[2] + b
+                    tri[1]
+                }),
+                names.node(tri[0]),
+                names.node(tri[1]),
+                names.node(tri[2])
             )));
         }
     }
@@ -123,9 +187,9 @@ fn validate(
         let geo = TriGeometry::new(&[nodes[tri[0]], nodes[tri[1]], nodes[tri[2]]]);
         if !(geo.j.is_finite() && geo.h.is_finite()) {
             return Err(Error::mesh(format!(
-                "triangle {}: its size or area overflows (coordinates too large for double \
+                "{}: its size or area overflows (coordinates too large for double \
                  precision: rescale the model)",
-                t + b
+                names.triangle(t)
             )));
         }
         any_clockwise |= geo.j < 0.0;
@@ -173,12 +237,25 @@ impl Mesh {
     /// only changes how indices are printed in messages, so that a Fortran
     /// user reads the numbers of their own mesh.
     pub fn new(
+        nodes: Vec<[f64; 2]>,
+        triangles: Vec<[usize; 3]>,
+        body_of: Vec<i32>,
+        index_base: usize,
+    ) -> Result<Mesh> {
+        Mesh::with_names(nodes, triangles, body_of, &Names::indices(index_base))
+    }
+
+    /// [`Mesh::new`] with its errors and warnings naming nodes and
+    /// triangles as `names` says (by a file's tags, say); the mesh keeps
+    /// `names.index_base` for later messages.
+    pub fn with_names(
         mut nodes: Vec<[f64; 2]>,
         mut triangles: Vec<[usize; 3]>,
         mut body_of: Vec<i32>,
-        index_base: usize,
+        names: &Names,
     ) -> Result<Mesh> {
-        let any_clockwise = validate(&nodes, &triangles, &body_of, index_base)?;
+        let index_base = names.index_base;
+        let any_clockwise = validate(&nodes, &triangles, &body_of, names)?;
         let n = nodes.len();
         // What the mesh derives from its data: each node's body, a sort of
         // the nodes for duplicates, unused nodes (8 bytes per node each);
@@ -226,15 +303,14 @@ impl Mesh {
             index_base,
             warnings: Vec::new(),
         };
-        mesh.collect_warnings(&turned);
+        mesh.collect_warnings(&turned, names);
         Ok(mesh)
     }
 
-    fn collect_warnings(&mut self, turned: &[Turned]) {
-        let b = self.index_base;
-        let unused: Vec<usize> = (0..self.nodes.len())
+    fn collect_warnings(&mut self, turned: &[Turned], names: &Names) {
+        let unused: Vec<String> = (0..self.nodes.len())
             .filter(|&i| self.node_body[i].is_none())
-            .map(|i| i + b)
+            .map(|i| names.node(i))
             .collect();
         if !unused.is_empty() {
             self.warnings.push(format!(
@@ -257,7 +333,7 @@ impl Mesh {
             .filter(|w| {
                 self.nodes[w[0]] == self.nodes[w[1]] && self.node_body[w[0]] == self.node_body[w[1]]
             })
-            .map(|w| format!("{}={}", w[0] + b, w[1] + b))
+            .map(|w| format!("{}={}", names.node(w[0]), names.node(w[1])))
             .collect();
         if !dupes.is_empty() {
             self.warnings.push(format!(
@@ -268,12 +344,12 @@ impl Mesh {
         }
         for r in turned {
             self.warnings.push(format!(
-                "body {}: {} triangle(s) numbered clockwise (e.g. triangle {}) were turned \
+                "body {}: {} triangle(s) numbered clockwise (e.g. {}) were turned \
                  counter-clockwise, numbering each region of the body consistently across shared \
                  edges; results refer to the turned triangles",
                 r.body,
                 r.count,
-                r.first + b
+                names.triangle(r.first)
             ));
         }
         // Still clockwise after the turning: folds of the mesh.
@@ -296,6 +372,18 @@ impl Mesh {
     /// mesh is unchanged.
     pub fn set_boundary_edges(&mut self, edges: &[[usize; 2]], tags: &[i32]) -> Result<()> {
         self.edges = self.checked_edges(edges, tags, &[])?;
+        Ok(())
+    }
+
+    /// [`Mesh::set_boundary_edges`] with its errors naming the edges and
+    /// their nodes as `names` says (by a file's tags, say).
+    pub fn set_boundary_edges_with_names(
+        &mut self,
+        edges: &[[usize; 2]],
+        tags: &[i32],
+        names: &Names,
+    ) -> Result<()> {
+        self.edges = self.checked_edges_named(edges, tags, &[], names)?;
         Ok(())
     }
 
@@ -323,7 +411,17 @@ impl Mesh {
         tags: &[i32],
         existing: &[BoundaryEdge],
     ) -> Result<Vec<BoundaryEdge>> {
-        let b = self.index_base;
+        self.checked_edges_named(edges, tags, existing, &Names::indices(self.index_base))
+    }
+
+    fn checked_edges_named(
+        &self,
+        edges: &[[usize; 2]],
+        tags: &[i32],
+        existing: &[BoundaryEdge],
+        names: &Names,
+    ) -> Result<Vec<BoundaryEdge>> {
+        let b = names.index_base;
         if edges.len() != tags.len() {
             return Err(Error::argument(format!(
                 "{} boundary edges but {} tags",
@@ -356,26 +454,25 @@ impl Mesh {
         for (e, (&[p, q], &tag)) in edges.iter().zip(tags).enumerate() {
             if p >= n || q >= n {
                 return Err(Error::mesh(format!(
-                    "boundary edge {}: node index {} is out of range ({} nodes)",
-                    e + b,
+                    "{}: node index {} is out of range ({} nodes)",
+                    names.edge(e),
                     if p >= n { p + b } else { q + b },
                     n
                 )));
             }
             if p == q {
                 return Err(Error::mesh(format!(
-                    "boundary edge {}: both ends are node {}",
-                    e + b,
-                    p + b
+                    "{}: both ends are node {}",
+                    names.edge(e),
+                    names.node(p)
                 )));
             }
             let owner = match owners.get(&(p.min(q), p.max(q))) {
                 None => {
                     return Err(Error::mesh(format!(
-                        "boundary edge {} (nodes {}, {}) is not a side of any triangle",
-                        e + b,
-                        p + b,
-                        q + b
+                        "{} ({}) is not a side of any triangle",
+                        names.edge(e),
+                        names.ends(p, q)
                     )));
                 }
                 Some(&(t, r, 1)) => Some((t, r)),
@@ -384,11 +481,9 @@ impl Mesh {
             let key = (p.min(q), p.max(q), tag);
             if !seen.insert(key) {
                 return Err(Error::mesh(format!(
-                    "boundary edge {} (nodes {}, {}) is given tag {tag} twice: its loads would count \
-                     twice",
-                    e + b,
-                    p + b,
-                    q + b
+                    "{} ({}) is given tag {tag} twice: its loads would count twice",
+                    names.edge(e),
+                    names.ends(p, q)
                 )));
             }
             out.push(BoundaryEdge {

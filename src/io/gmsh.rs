@@ -71,7 +71,7 @@ use std::io::Read;
 use std::path::Path;
 
 use crate::error::{Error, Result, Status};
-use crate::fem::mesh::Mesh;
+use crate::fem::mesh::{Mesh, Names};
 
 /// A failure while reading: the status and the message, without the path
 /// or the section (added by [`read_msh`]).
@@ -612,6 +612,8 @@ struct Block {
     dim: i32,
     entity: i32,
     nodes_per: usize,
+    /// The element tags, for messages.
+    tags: Vec<u64>,
     node_tags: Vec<u64>,
 }
 
@@ -699,9 +701,10 @@ fn element_block(r: &mut Reader, found: &mut usize, range: &mut (u64, u64)) -> P
         "the number of elements in the block",
         cost(0, 1 + nodes_per as u64, 0),
     )?;
-    let mut node_tags = Vec::new();
+    let (mut tags, mut node_tags) = (Vec::new(), Vec::new());
     for _ in 0..n {
         let tag = r.size("an element tag")?;
+        tags.push(tag);
         *range = (range.0.min(tag), range.1.max(tag));
         for _ in 0..nodes_per {
             node_tags.push(
@@ -715,6 +718,7 @@ fn element_block(r: &mut Reader, found: &mut usize, range: &mut (u64, u64)) -> P
         dim,
         entity,
         nodes_per,
+        tags,
         node_tags,
     })
 }
@@ -903,15 +907,17 @@ fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
         )));
     }
 
-    let lookup = |tag: u64| -> Parse<usize> {
+    let lookup = |element: u64, tag: u64| -> Parse<usize> {
         nodes.index_of.get(&tag).copied().ok_or_else(|| {
             Fail::mesh(format!(
-                "$Elements: an element refers to node {tag}, which is not defined in $Nodes"
+                "$Elements: element {element} refers to node {tag}, which is not defined in $Nodes"
             ))
         })
     };
     let (mut triangles, mut bodies, mut edges, mut edge_tags) =
         (Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    // The file's element tag of each triangle and edge, for messages.
+    let (mut triangle_elements, mut edge_elements) = (Vec::new(), Vec::new());
     for block in &blocks {
         if block.dim == 2 {
             let body = entities
@@ -927,12 +933,21 @@ fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
                 })?;
             let first = triangles.len();
             let mut area = 0.0;
-            for e in block.node_tags.chunks_exact(block.nodes_per) {
-                let t = [lookup(e[0])?, lookup(e[1])?, lookup(e[2])?];
+            for (&element, e) in block
+                .tags
+                .iter()
+                .zip(block.node_tags.chunks_exact(block.nodes_per))
+            {
+                let t = [
+                    lookup(element, e[0])?,
+                    lookup(element, e[1])?,
+                    lookup(element, e[2])?,
+                ];
                 let [a, b, c] = t.map(|v| nodes.xyz[v]);
                 area += (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
                 triangles.push(t);
                 bodies.push(body);
+                triangle_elements.push(element);
             }
             // Gmsh orients a surface's triangles along its normal, which
             // may be −z: make the surface counter-clockwise as a whole
@@ -944,9 +959,14 @@ fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
             }
         } else if let Some(tag) = entities.curves.get(&block.entity).copied().flatten() {
             // Curves without a physical group carry no load or contact.
-            for e in block.node_tags.chunks_exact(block.nodes_per) {
-                edges.push([lookup(e[0])?, lookup(e[1])?]);
+            for (&element, e) in block
+                .tags
+                .iter()
+                .zip(block.node_tags.chunks_exact(block.nodes_per))
+            {
+                edges.push([lookup(element, e[0])?, lookup(element, e[1])?]);
                 edge_tags.push(tag);
+                edge_elements.push(element);
             }
         }
     }
@@ -958,8 +978,17 @@ fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
         status: e.status(),
         message: e.message().to_string(),
     };
-    let mut mesh = Mesh::new(coords, triangles, bodies, index_base).map_err(mesh_error)?;
-    mesh.set_boundary_edges(&edges, &edge_tags)
+    // The user knows the file's nodes and elements by their tags, not by
+    // our indices (node tag 1001 may be index 0).
+    let names = Names {
+        index_base,
+        file: "Gmsh",
+        node_tags: Some(&nodes.tags),
+        triangle_tags: Some(&triangle_elements),
+        edge_tags: Some(&edge_elements),
+    };
+    let mut mesh = Mesh::with_names(coords, triangles, bodies, &names).map_err(mesh_error)?;
+    mesh.set_boundary_edges_with_names(&edges, &edge_tags, &names)
         .map_err(mesh_error)?;
     Ok(mesh)
 }
