@@ -576,6 +576,66 @@ static void gmsh_messages_name_the_files_node_and_element_tags(void) {
   unlink(gmsh_path("renumbered.msh"));
 }
 
+/* Found by an outside probe: only the first physical group of each
+ * Gmsh curve was kept, the others dropped without a word, so with the top
+ * side in groups 13, 99 (the whole boundary) and 50, tfem_add_pressure(50)
+ * and tfem_fix_edges(99) failed "no boundary edge has tag …". Every group
+ * of a curve now tags its edges. The square of SQUARE_MSH (plane strain,
+ * nu = 0.3) under a pressure on `pressed`, x fixed on `fix_x` and y on
+ * `fix_y`: whether every element's stress is (sxx, -p, 0). */
+static int square_in_groups_stress_is(int pressed, int fix_x, int fix_y, double sxx_over_p) {
+  const double p = 1e6;
+  tfem_model *m = tfem_create();
+  double s[6] = {0};
+  int ok = tfem_load_gmsh(m, gmsh_file("square.msh", SQUARE_MSH), 0) == TFEM_STATUS_OK &&
+           tfem_set_material(m, 7, 1e9, 0.3, 0) == TFEM_STATUS_OK &&
+           tfem_fix_edges(m, fix_x, 0, 0.0) == TFEM_STATUS_OK &&
+           tfem_fix_edges(m, fix_y, 1, 0.0) == TFEM_STATUS_OK &&
+           tfem_add_pressure(m, pressed, p) == TFEM_STATUS_OK &&
+           tfem_solve(m, NULL) == TFEM_STATUS_OK &&
+           tfem_get_element_stresses(m, s, 6) == TFEM_STATUS_OK;
+  if (!ok) {
+    char msg[512];
+    tfem_last_error(m, msg, sizeof msg);
+    printf("  square in groups (%d, %d, %d): %s\n", pressed, fix_x, fix_y, msg);
+  }
+  for (int t = 0; t < 2; ++t)
+    ok = ok && fabs(s[3 * t] - sxx_over_p * p) < 1e-9 * p && fabs(s[3 * t + 1] + p) < 1e-9 * p &&
+         fabs(s[3 * t + 2]) < 1e-9 * p;
+  tfem_destroy(m);
+  unlink(gmsh_path("square.msh"));
+  return ok;
+}
+
+static void a_pressure_on_a_gmsh_curves_second_group_acts(void) {
+  CHECK(square_in_groups_stress_is(50, 14, 11, 0.0));
+}
+
+static void a_pressure_on_a_gmsh_curves_first_group_still_acts(void) {
+  CHECK(square_in_groups_stress_is(11, 14, 13, 0.0));
+}
+
+/* x fixed on every side through group 99: eps_xx = 0, so in plane strain
+ * sxx = nu/(1 - nu) syy (0 with the left side only). */
+static void fixing_a_gmsh_group_of_every_curve_fixes_the_whole_boundary(void) {
+  CHECK(square_in_groups_stress_is(50, 99, 11, -0.3 / 0.7));
+}
+
+/* Found by the same probe: a physical point group (no place in the model)
+ * was dropped without a word; a warning names it. */
+static void a_gmsh_physical_point_group_is_named_in_a_warning(void) {
+  static const char msh[] =
+      "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+      "$Entities\n1 0 1 0\n5 0.5 0.5 0 1 30\n1 0 0 0 1 1 0 1 7 0\n$EndEntities\n"
+      "$Nodes\n1 3 1 3\n2 1 0 3\n1\n2\n3\n0 0 0\n1 0 0\n0 1 0\n$EndNodes\n"
+      "$Elements\n1 1 1 1\n2 1 2 1\n1 1 2 3\n$EndElements\n";
+  tfem_model *m = tfem_create();
+  CHECK(tfem_load_gmsh(m, gmsh_file("point_group.msh", msh), 0) == TFEM_STATUS_OK);
+  CHECK(has_warning(m, "point 5 (group 30)"));
+  tfem_destroy(m);
+  unlink(gmsh_path("point_group.msh"));
+}
+
 /* Found by a host-code probe: a Fortran type(c_ptr) does not tell a model
  * from a contact context, and tfem_error_message(context) read the context
  * as a model. A handle of the other kind, or a destroyed one, is refused
@@ -2004,6 +2064,10 @@ int main(int argc, char **argv) {
   an_empty_gmsh_path_is_named_as_such();
   a_corrupt_gmsh_file_gets_a_short_printable_message();
   gmsh_messages_name_the_files_node_and_element_tags();
+  a_pressure_on_a_gmsh_curves_second_group_acts();
+  a_pressure_on_a_gmsh_curves_first_group_still_acts();
+  fixing_a_gmsh_group_of_every_curve_fixes_the_whole_boundary();
+  a_gmsh_physical_point_group_is_named_in_a_warning();
   a_solve_under_any_memory_limit_fails_cleanly_or_succeeds();
 
   if (gmsh_dir[0] != '\0') rmdir(gmsh_dir);

@@ -487,12 +487,14 @@ enum tfem_status tfem_set_mesh(struct tfem_model *model,
  * Loads a Gmsh MSH 4.1 mesh (ASCII or binary) from the file `path`
  * (NUL-terminated; on Unix any bytes, as the file system takes them,
  * elsewhere UTF-8): physical surfaces become bodies (tag = body),
- * physical curves become boundary-edge tags; only 3-node triangles and
- * 2-node lines, in the plane z = 0. Replaces the mesh like `tfem_set_mesh`
- * with the given `index_base` for later calls. Returns TFEM_STATUS_IO for
- * an unreadable file, TFEM_STATUS_INVALID_MESH for unsupported content,
- * TFEM_STATUS_INVALID_ARGUMENT if the library was built without the
- * `gmsh` feature.
+ * physical curves become boundary-edge tags (a curve in several groups
+ * under each of their tags; a surface in several is the body of the
+ * first, and physical points are not used: a warning names both); only
+ * 3-node triangles and 2-node lines, in the plane z = 0. Replaces the
+ * mesh like `tfem_set_mesh` with the given `index_base` for later calls.
+ * Returns TFEM_STATUS_IO for an unreadable file, TFEM_STATUS_INVALID_MESH
+ * for unsupported content, TFEM_STATUS_INVALID_ARGUMENT if the library was
+ * built without the `gmsh` feature.
  */
 enum tfem_status tfem_load_gmsh(struct tfem_model *model, const char *path, int index_base);
 

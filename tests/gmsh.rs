@@ -1131,3 +1131,119 @@ fn an_element_naming_an_undefined_node_is_named_by_its_tag() {
         e.message()
     );
 }
+
+/// The unit square as two triangles of body 7, its sides in physical
+/// curves 11 (bottom), 12 (right), 13 (top) and 14 (left), every side also
+/// in group 99 (the whole boundary) and the top also in group 50;
+/// `surface_groups` and `points` (the `$Entities` lines of the points) as
+/// given.
+fn square_in_groups(surface_groups: &str, points: &[&str]) -> String {
+    let mut text = format!("{HEADER}$Entities\n{} 4 1 0\n", points.len());
+    for p in points {
+        text.push_str(&format!("{p}\n"));
+    }
+    text.push_str(&format!(
+        "1 0 0 0 1 0 0 2 11 99 0\n2 1 0 0 1 1 0 2 12 99 0\n3 0 1 0 1 1 0 3 13 99 50 0\n\
+         4 0 0 0 0 1 0 2 14 99 0\n1 0 0 0 1 1 0 {surface_groups} 0\n$EndEntities\n\
+         $Nodes\n1 4 1 4\n2 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n$EndNodes\n\
+         $Elements\n5 6 1 6\n1 1 1 1\n1 1 2\n1 2 1 1\n2 2 3\n1 3 1 1\n3 3 4\n1 4 1 1\n4 4 1\n\
+         2 1 2 2\n5 1 2 3\n6 1 3 4\n$EndElements\n"
+    ));
+    text
+}
+
+const NU: f64 = 0.3;
+const P: f64 = 1e6;
+
+/// The element stresses of the square in groups (plane strain, E = 1e9,
+/// ν = 0.3) under pressure `P` on `pressed`, with x fixed on `fix_x` and y
+/// on `fix_y`.
+fn square_stresses(pressed: i32, fix_x: i32, fix_y: i32) -> Vec<[f64; 3]> {
+    let path = write("square_in_groups.msh", &square_in_groups("1 7", &[]));
+    let mut model = Model::new();
+    model.set_mesh(read_msh(&path, 0).unwrap());
+    model
+        .set_material(
+            7,
+            Material::new(1e9, NU, PlaneMode::Strain, "body 7").unwrap(),
+        )
+        .unwrap();
+    model.fix_edges(fix_x, Component::X, 0.0).unwrap();
+    model.fix_edges(fix_y, Component::Y, 0.0).unwrap();
+    model.add_pressure(pressed, P).unwrap();
+    model.solve().unwrap();
+    model.element_stresses().unwrap()
+}
+
+fn close(a: f64, b: f64) -> bool {
+    (a - b).abs() <= 1e-9 * P
+}
+
+#[test]
+fn every_physical_group_of_a_curve_tags_its_edges() {
+    let mesh = read_msh(&write("square_tags.msh", &square_in_groups("1 7", &[])), 0).unwrap();
+    let mut tags: Vec<i32> = mesh.boundary_edges().iter().map(|e| e.tag).collect();
+    tags.sort_unstable();
+    assert_eq!(tags, [11, 12, 13, 14, 50, 99, 99, 99, 99]);
+    assert!(mesh.warnings().is_empty(), "{:?}", mesh.warnings());
+}
+
+#[test]
+fn a_pressure_on_a_curves_second_group_acts() {
+    // The top is loaded through group 50 only: uniaxial σ_yy = −p.
+    for s in square_stresses(50, 14, 11) {
+        assert!(
+            close(s[0], 0.0) && close(s[1], -P) && close(s[2], 0.0),
+            "{s:?}"
+        );
+    }
+}
+
+#[test]
+fn a_pressure_on_a_curves_first_group_still_acts() {
+    for s in square_stresses(11, 14, 13) {
+        assert!(
+            close(s[0], 0.0) && close(s[1], -P) && close(s[2], 0.0),
+            "{s:?}"
+        );
+    }
+}
+
+#[test]
+fn fixing_a_group_of_every_curve_fixes_the_whole_boundary() {
+    // x fixed on all four sides through group 99: ε_xx = 0, so in plane
+    // strain σ_xx = ν/(1 − ν) σ_yy (it would be 0 with the left side only).
+    for s in square_stresses(50, 99, 11) {
+        assert!(
+            close(s[0], -P * NU / (1.0 - NU)) && close(s[1], -P) && close(s[2], 0.0),
+            "{s:?}"
+        );
+    }
+}
+
+#[test]
+fn a_surface_in_two_groups_is_the_first_groups_body_with_a_warning() {
+    let text = square_in_groups("2 7 8", &[]);
+    let mesh = read_msh(&write("square_two_bodies.msh", &text), 0).unwrap();
+    assert_eq!(mesh.bodies(), [7]);
+    assert!(
+        mesh.warnings()
+            .iter()
+            .any(|w| w.contains("surface 1 (body 7; dropped 8)")),
+        "{:?}",
+        mesh.warnings()
+    );
+}
+
+#[test]
+fn a_physical_point_group_is_named_in_a_warning() {
+    let text = square_in_groups("1 7", &["5 0.5 0.5 0 1 30"]);
+    let mesh = read_msh(&write("square_point_group.msh", &text), 0).unwrap();
+    assert!(
+        mesh.warnings()
+            .iter()
+            .any(|w| w.contains("point 5 (group 30)") && w.contains("not used")),
+        "{:?}",
+        mesh.warnings()
+    );
+}

@@ -536,6 +536,12 @@ impl Mesh {
         &self.warnings
     }
 
+    /// Adds a warning about the mesh (say, what a file held that the mesh
+    /// cannot: a reader's, after building it).
+    pub fn warn(&mut self, warning: String) {
+        self.warnings.push(warning);
+    }
+
     /// The corners of a triangle.
     #[inline]
     pub fn corners(&self, tri: &[usize; 3]) -> [[f64; 2]; 3] {

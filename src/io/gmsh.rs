@@ -2,7 +2,12 @@
 //!
 //! Physical surfaces become bodies (the physical tag is the body tag) and
 //! physical curves become boundary-edge tags, for loads, supports and
-//! contact interfaces. A surface meshed clockwise (normal along −z) is
+//! contact interfaces. A curve in several physical groups has its edges
+//! under every one of their tags (a side in its own group 13 and in a
+//! whole-boundary group 99 is loaded through 13 and fixed through 99). A
+//! surface in several takes the first as its body (a triangle has one),
+//! and physical points are not used (the model has no node groups): both
+//! with a warning of the mesh naming the entities and groups. A surface meshed clockwise (normal along −z) is
 //! turned counter-clockwise as a whole. Only 3-node triangles and 2-node lines are accepted;
 //! nodes must lie in the plane z = 0.
 //!
@@ -452,11 +457,13 @@ fn header(r: &mut Reader) -> Parse<Encoding> {
     Ok(encoding)
 }
 
-/// Of `$Entities`: the first physical tag of each curve and surface.
+/// Of `$Entities`: the physical tags of each curve and surface, and the
+/// points that have some.
 #[derive(Default)]
 struct Entities {
-    curves: HashMap<i32, Option<i32>>,
-    surfaces: HashMap<i32, Option<i32>>,
+    curves: HashMap<i32, Vec<i32>>,
+    surfaces: HashMap<i32, Vec<i32>>,
+    points: Vec<(i32, Vec<i32>)>,
 }
 
 fn entities(r: &mut Reader) -> Parse<Entities> {
@@ -478,17 +485,23 @@ fn entities(r: &mut Reader) -> Parse<Entities> {
             let (tag, physical) =
                 entity(r, dim).map_err(|f| f.within(format!("{name} {} of {n}", k + 1)))?;
             match dim {
-                1 => out.curves.insert(tag, physical),
-                2 => out.surfaces.insert(tag, physical),
-                _ => None,
-            };
+                0 if !physical.is_empty() => out.points.push((tag, physical)),
+                1 => {
+                    out.curves.insert(tag, physical);
+                }
+                2 => {
+                    out.surfaces.insert(tag, physical);
+                }
+                _ => {}
+            }
         }
     }
     Ok(out)
 }
 
-/// One entity of dimension `dim`: its tag and first physical tag.
-fn entity(r: &mut Reader, dim: usize) -> Parse<(i32, Option<i32>)> {
+/// One entity of dimension `dim`: its tag and physical tags (each once:
+/// an edge given a tag twice would carry its loads twice).
+fn entity(r: &mut Reader, dim: usize) -> Parse<(i32, Vec<i32>)> {
     const TAG: Cost = cost(1, 0, 0);
     let tag = r.int("the entity tag")?;
     // A point has its coordinates, the others their bounding box.
@@ -496,10 +509,12 @@ fn entity(r: &mut Reader, dim: usize) -> Parse<(i32, Option<i32>)> {
         r.float("a coordinate")?;
     }
     let n = r.count("the number of physical tags", TAG)?;
-    let mut first = None;
+    let mut physical = Vec::new();
     for _ in 0..n {
         let p = r.int("a physical tag")?;
-        first.get_or_insert(p);
+        if !physical.contains(&p) {
+            physical.push(p);
+        }
     }
     if dim > 0 {
         let n = r.count("the number of bounding entities", TAG)?;
@@ -507,7 +522,7 @@ fn entity(r: &mut Reader, dim: usize) -> Parse<(i32, Option<i32>)> {
             r.int("a bounding entity tag")?;
         }
     }
-    Ok((tag, first))
+    Ok((tag, physical))
 }
 
 /// Of `$Nodes`: coordinates, tags, and the index of each tag.
@@ -918,14 +933,21 @@ fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
         (Vec::new(), Vec::new(), Vec::new(), Vec::new());
     // The file's element tag of each triangle and edge, for messages.
     let (mut triangle_elements, mut edge_elements) = (Vec::new(), Vec::new());
+    // Surfaces in several physical groups: (surface, body, groups dropped).
+    let mut several = std::collections::BTreeMap::new();
     for block in &blocks {
         if block.dim == 2 {
-            let body = entities
+            let groups = entities
                 .surfaces
                 .get(&block.entity)
-                .copied()
-                .flatten()
-                .ok_or_else(|| {
+                .map_or(&[][..], Vec::as_slice);
+            // A triangle has one body: the first group.
+            if let [body, dropped @ ..] = groups {
+                if !dropped.is_empty() {
+                    several.insert(block.entity, (*body, dropped));
+                }
+            }
+            let body = groups.first().copied().ok_or_else(|| {
                     Fail::mesh(format!(
                         "$Elements: surface {} has no physical group in $Entities: every surface must be a body",
                         block.entity
@@ -957,16 +979,22 @@ fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
                     t.swap(1, 2);
                 }
             }
-        } else if let Some(tag) = entities.curves.get(&block.entity).copied().flatten() {
-            // Curves without a physical group carry no load or contact.
+        } else if let Some(groups) = entities.curves.get(&block.entity) {
+            // An edge carries every group of its curve: a curve may be in
+            // its own group and in "the whole boundary" (the mesh holds an
+            // edge under several tags). Curves without a physical group
+            // carry no load or contact.
             for (&element, e) in block
                 .tags
                 .iter()
                 .zip(block.node_tags.chunks_exact(block.nodes_per))
             {
-                edges.push([lookup(element, e[0])?, lookup(element, e[1])?]);
-                edge_tags.push(tag);
-                edge_elements.push(element);
+                let ends = [lookup(element, e[0])?, lookup(element, e[1])?];
+                for &tag in groups {
+                    edges.push(ends);
+                    edge_tags.push(tag);
+                    edge_elements.push(element);
+                }
             }
         }
     }
@@ -990,5 +1018,50 @@ fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
     let mut mesh = Mesh::with_names(coords, triangles, bodies, &names).map_err(mesh_error)?;
     mesh.set_boundary_edges_with_names(&edges, &edge_tags, &names)
         .map_err(mesh_error)?;
+    // What the file says and the model cannot hold, said rather than
+    // dropped without a word.
+    if !several.is_empty() {
+        let items: Vec<String> = several
+            .iter()
+            .map(|(surface, (body, dropped))| {
+                format!("surface {surface} (body {body}; dropped {})", tags(dropped))
+            })
+            .collect();
+        mesh.warn(format!(
+            "{} surface(s) in several physical groups: a triangle has one body, the first \
+             group; the others are dropped: {}",
+            items.len(),
+            bounded_list(&items)
+        ));
+    }
+    if !entities.points.is_empty() {
+        let items: Vec<String> = entities
+            .points
+            .iter()
+            .map(|(point, groups)| format!("point {point} (group {})", tags(groups)))
+            .collect();
+        mesh.warn(format!(
+            "{} point(s) in physical groups, which are not used (the model has no node \
+             groups: fix or load nodes by index): {}",
+            items.len(),
+            bounded_list(&items)
+        ));
+    }
     Ok(mesh)
+}
+
+/// Physical tags for a message: "8, 9".
+fn tags(groups: &[i32]) -> String {
+    let shown: Vec<String> = groups.iter().map(i32::to_string).collect();
+    shown.join(", ")
+}
+
+/// At most five items of a list for a message, then how many more.
+fn bounded_list(items: &[String]) -> String {
+    const SHOWN: usize = 5;
+    let mut out = items[..items.len().min(SHOWN)].join(", ");
+    if items.len() > SHOWN {
+        out.push_str(&format!(" and {} more", items.len() - SHOWN));
+    }
+    out
 }
