@@ -186,6 +186,45 @@ static void a_triangle_given_twice_is_refused_and_the_mesh_kept(void) {
   tfem_destroy(m);
 }
 
+/* A host that loaded its mesh from a file reads it back as the model
+ * holds it: nodes, triangles (counter-clockwise, in the index base) with
+ * their bodies, boundary edges with their tags; a short buffer writes
+ * nothing. */
+static void the_mesh_reads_back_as_the_model_holds_it(void) {
+  int count = -1;
+  tfem_model *none = tfem_create();
+  EXPECT_ERROR(none, tfem_get_boundary_edge_count(none, &count), TFEM_STATUS_INVALID_STATE, "no mesh");
+  tfem_destroy(none);
+  int cw[3 * 4096];
+  for (int t = 0; t < G.nt; ++t) {
+    int *c = &G.tri[3 * t];
+    int r[3] = {c[0], c[2], c[1]};
+    memcpy(&cw[3 * t], r, sizeof r);
+  }
+  tfem_model *m = tension_block(cw);
+  static double xy[2 * 4096];
+  static int tri[3 * 4096], body[4096], edges[2 * 1024], tags[1024];
+  CHECK(tfem_get_mesh_nodes(m, xy, 2 * (size_t)G.nn) == TFEM_STATUS_OK);
+  CHECK(memcmp(xy, G.xy, sizeof(double) * 2 * G.nn) == 0);
+  CHECK(tfem_get_mesh_triangles(m, tri, 3 * (size_t)G.nt, body, (size_t)G.nt) == TFEM_STATUS_OK);
+  int same = 1;
+  for (int k = 0; k < 3 * G.nt; ++k) same &= tri[k] == G.tri[k];
+  for (int t = 0; t < G.nt; ++t) same &= body[t] == G.body[t];
+  CHECK(same); /* turned back to the counter-clockwise numbering */
+  CHECK(tfem_get_mesh_triangles(m, tri, 3 * (size_t)G.nt, NULL, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_get_boundary_edge_count(m, &count) == TFEM_STATUS_OK && count == G.ne);
+  CHECK(tfem_get_boundary_edges(m, edges, 2 * (size_t)count, tags, (size_t)count) == TFEM_STATUS_OK);
+  CHECK(memcmp(edges, G.edges, sizeof(int) * 2 * G.ne) == 0 && memcmp(tags, G.tags, sizeof(int) * G.ne) == 0);
+  edges[0] = -7;
+  EXPECT_ERROR(m, tfem_get_boundary_edges(m, edges, 2 * (size_t)count, tags, (size_t)count - 1),
+               TFEM_STATUS_BUFFER_TOO_SMALL, "tags");
+  CHECK(edges[0] == -7);
+  EXPECT_ERROR(m, tfem_get_mesh_triangles(m, tri, 3 * (size_t)G.nt - 1, body, (size_t)G.nt),
+               TFEM_STATUS_BUFFER_TOO_SMALL, "triangles");
+  EXPECT_ERROR(m, tfem_get_mesh_nodes(m, NULL, 0), TFEM_STATUS_NULL_POINTER, "xy");
+  tfem_destroy(m);
+}
+
 static void a_fold_inside_a_counter_clockwise_body_stays_inverted(void) {
   double xy[2 * 4096];
   memcpy(xy, G.xy, sizeof xy);
@@ -2040,6 +2079,7 @@ int main(int argc, char **argv) {
   a_contact_state_never_outlives_its_problem();
   a_contact_modulus_too_stiff_for_its_overlap_is_warned_about();
   a_triangle_given_twice_is_refused_and_the_mesh_kept();
+  the_mesh_reads_back_as_the_model_holds_it();
   a_host_side_given_clockwise_is_refused();
   a_failed_call_between_load_steps_keeps_the_history();
   friction_obeys_coulomb_and_restarts_bit_for_bit();

@@ -111,6 +111,9 @@ module tfem
   private :: tfem_get_warning_str
   private :: tfem_get_warning_str_i
   private :: tfem_get_warning_raw
+  private :: tfem_get_mesh_nodes_i
+  private :: tfem_get_mesh_triangles_i
+  private :: tfem_get_boundary_edges_i
   private :: tfem_get_displacements_i
   private :: tfem_get_element_strains_i
   private :: tfem_get_element_stresses_i
@@ -314,8 +317,8 @@ module tfem
     integer(c_int) :: elements
     !> Active elements at convergence.
     integer(c_int) :: active
-    !> Contact length ℓc (half the summed interface-edge length of the active elements), model
-    !! length units.
+    !> Contact length ℓc (half the summed interface-edge length of the active elements, each as far
+    !! as it faces the other side), model length units.
     real(c_double) :: contact_length
     !> Largest normal interpenetration, model length units.
     real(c_double) :: max_penetration
@@ -458,7 +461,9 @@ module tfem
     !! = body), physical curves become boundary-edge tags (a curve in several groups under each of
     !! their tags; a surface in several is the body of the first, and physical points are not used:
     !! a warning names both); only 3-node triangles and 2-node lines, in the plane z = 0. Replaces
-    !! the mesh like `tfem_set_mesh` with the given `index_base` for later calls. Returns
+    !! the mesh like `tfem_set_mesh` with the given `index_base` for later calls: node i is the i-th
+    !! node of the file's `$Nodes` section, whatever its Gmsh tag (`tfem_get_mesh_nodes`,
+    !! `tfem_get_mesh_triangles` and `tfem_get_boundary_edges` read the mesh back). Returns
     !! TFEM_STATUS_IO for an unreadable file, TFEM_STATUS_INVALID_MESH for unsupported content,
     !! TFEM_STATUS_INVALID_ARGUMENT if the library was built without the `gmsh` feature.
     function tfem_load_gmsh(model, path, index_base) &
@@ -667,6 +672,77 @@ module tfem
       integer(c_int) :: status
     end function tfem_get_sizes
   end interface
+
+  interface
+    !> Number of boundary edges the model holds (each with its tag), from `tfem_set_boundary_edges`
+    !! / `tfem_add_boundary_edges` or a Gmsh file's physical lines; see `tfem_get_boundary_edges`.
+    function tfem_get_boundary_edge_count(model, count) &
+        bind(C, name="tfem_get_boundary_edge_count") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(out) :: count
+      integer(c_int) :: status
+    end function tfem_get_boundary_edge_count
+  end interface
+
+  interface tfem_get_mesh_nodes
+    !> Copies the node coordinates the model holds (x0 y0 x1 y1 …, 2·n_nodes values, n_nodes from
+    !! `tfem_get_sizes`) into `xy` of `length` values. After `tfem_load_gmsh` node i (in the model's
+    !! index base) is the i-th node of the file's `$Nodes` section, whatever its Gmsh tag. Fortran:
+    !! `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a negative
+    !! length is passed as 0.
+    function tfem_get_mesh_nodes(model, xy, length) &
+        bind(C, name="tfem_get_mesh_nodes") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: xy(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_mesh_nodes
+    module procedure tfem_get_mesh_nodes_i
+  end interface tfem_get_mesh_nodes
+
+  interface tfem_get_mesh_triangles
+    !> Copies the triangles the model holds (3·n_triangles node indices in the model's index base,
+    !! n_triangles from `tfem_get_sizes`) into `triangles` of `length` values and each triangle's
+    !! body tag into `bodies` of `bodies_length` values; `bodies` may be NULL. Triangles given
+    !! clockwise are held (and copied) counter-clockwise. Nothing is written unless both buffers are
+    !! large enough. Fortran: `bodies` is OPTIONAL: omit it to pass NULL. `length` and
+    !! `bodies_length` take integer(c_size_t) or default integers (kind tfem_length_kind), all of
+    !! one kind; a negative length is passed as 0.
+    function tfem_get_mesh_triangles(model, triangles, length, bodies, bodies_length) &
+        bind(C, name="tfem_get_mesh_triangles") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: triangles(*)
+      integer(c_size_t), value :: length
+      integer(c_int), intent(inout), optional :: bodies(*)
+      integer(c_size_t), value :: bodies_length
+      integer(c_int) :: status
+    end function tfem_get_mesh_triangles
+    module procedure tfem_get_mesh_triangles_i
+  end interface tfem_get_mesh_triangles
+
+  interface tfem_get_boundary_edges
+    !> Copies the boundary edges the model holds (2·count node indices in the model's index base,
+    !! count from `tfem_get_boundary_edge_count`) into `edges` of `length` values and each edge's
+    !! tag into `tags` of `tags_length` values, in the order they were given (a Gmsh file's: its
+    !! line elements, by physical group); `tags` may be NULL. Nothing is written unless both buffers
+    !! are large enough. Fortran: `tags` is OPTIONAL: omit it to pass NULL. `length` and
+    !! `tags_length` take integer(c_size_t) or default integers (kind tfem_length_kind), all of one
+    !! kind; a negative length is passed as 0.
+    function tfem_get_boundary_edges(model, edges, length, tags, tags_length) &
+        bind(C, name="tfem_get_boundary_edges") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: edges(*)
+      integer(c_size_t), value :: length
+      integer(c_int), intent(inout), optional :: tags(*)
+      integer(c_size_t), value :: tags_length
+      integer(c_int) :: status
+    end function tfem_get_boundary_edges
+    module procedure tfem_get_boundary_edges_i
+  end interface tfem_get_boundary_edges
 
   interface tfem_get_displacements
     !> Copies the nodal displacements (u0 v0 u1 v1 …, 2·n_nodes values) of the last solve into `out`
@@ -997,16 +1073,16 @@ module tfem
     !> Copies the contact pressure at every node in the last contact solve (n_nodes values; force
     !! per unit area, Pa in SI, positive in compression; zero off the contact interfaces), computed
     !! on request: the traction read from both sides of the interface (the mean of a node's normal
-    !! contact force over its tributary — half its interface edges, as far as they face the other
-    !! side — and the other side's forces over their tributaries near it); where the other side is
-    !! more than 1.8 times coarser, a node takes the other side's reading there, interpolated (the
-    !! coarser side's reading is the closer to the traction), blended with its own from 1.2 times.
-    !! Exact for a uniform pressure on matching and non-matching interfaces alike. Each pair is read
-    !! with its own forces; a node on several pairs (where three bodies meet) gets their normal
-    !! forces over their tributaries together: the pressure where two pairs continue one face, the
-    !! tributary-weighted mean of its faces' pressures at a corner. Fortran: `length` takes an
-    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
-    !! as 0.
+    !! contact force over its tributary — the integral of its hat over its interface edges as far as
+    !! they face the other side, half its edges where they face it whole — and the other side's
+    !! forces over their tributaries near it); where the other side is more than 1.8 times coarser,
+    !! a node takes the other side's reading there, interpolated (the coarser side's reading is the
+    !! closer to the traction), blended with its own from 1.2 times. Exact for a uniform pressure on
+    !! matching and non-matching interfaces alike. Each pair is read with its own forces; a node on
+    !! several pairs (where three bodies meet) gets their normal forces over their tributaries
+    !! together: the pressure where two pairs continue one face, the tributary-weighted mean of its
+    !! faces' pressures at a corner. Fortran: `length` takes an integer(c_size_t) or a default
+    !! integer (kind tfem_length_kind); a negative length is passed as 0.
     function tfem_get_contact_nodal_pressures(model, out, length) &
         bind(C, name="tfem_get_contact_nodal_pressures") result(status)
       import
@@ -1783,8 +1859,9 @@ module tfem
 
   interface
     !> Writes the contact length of the current active set to `length`: half the summed
-    !! interface-edge length of the active elements of B (each point of an interface is covered by
-    !! one element with its edge on each side), model length units; +0.0 when no element is active.
+    !! interface-edge length of the active elements of B, each as far as it faces the other side
+    !! (each point of an interface is covered by one element with its edge on each side), model
+    !! length units; +0.0 when no element is active.
     function tfem_contact_length(context, length) &
         bind(C, name="tfem_contact_length") result(status)
       import
@@ -1934,6 +2011,39 @@ contains
     integer(c_int) :: status
     status = tfem_get_warning(model, index, buffer, length)
   end function tfem_get_warning_raw
+
+  ! tfem_get_mesh_nodes, lengths of kind tfem_length_kind.
+  function tfem_get_mesh_nodes_i(model, xy, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: xy(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_mesh_nodes(model, xy, tfem_to_size_t(length))
+  end function tfem_get_mesh_nodes_i
+
+  ! tfem_get_mesh_triangles, lengths of kind tfem_length_kind.
+  function tfem_get_mesh_triangles_i(model, triangles, length, bodies, bodies_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: triangles(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int), intent(inout), optional :: bodies(*)
+    integer(tfem_length_kind), intent(in) :: bodies_length
+    integer(c_int) :: status
+    status = tfem_get_mesh_triangles(model, triangles, tfem_to_size_t(length), bodies, &
+        tfem_to_size_t(bodies_length))
+  end function tfem_get_mesh_triangles_i
+
+  ! tfem_get_boundary_edges, lengths of kind tfem_length_kind.
+  function tfem_get_boundary_edges_i(model, edges, length, tags, tags_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: edges(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int), intent(inout), optional :: tags(*)
+    integer(tfem_length_kind), intent(in) :: tags_length
+    integer(c_int) :: status
+    status = tfem_get_boundary_edges(model, edges, tfem_to_size_t(length), tags, &
+        tfem_to_size_t(tags_length))
+  end function tfem_get_boundary_edges_i
 
   ! tfem_get_displacements, lengths of kind tfem_length_kind.
   function tfem_get_displacements_i(model, out, length) result(status)

@@ -491,7 +491,10 @@ enum tfem_status tfem_set_mesh(struct tfem_model *model,
  * under each of their tags; a surface in several is the body of the
  * first, and physical points are not used: a warning names both); only
  * 3-node triangles and 2-node lines, in the plane z = 0. Replaces the
- * mesh like `tfem_set_mesh` with the given `index_base` for later calls.
+ * mesh like `tfem_set_mesh` with the given `index_base` for later calls:
+ * node i is the i-th node of the file's `$Nodes` section, whatever its
+ * Gmsh tag (`tfem_get_mesh_nodes`, `tfem_get_mesh_triangles` and
+ * `tfem_get_boundary_edges` read the mesh back).
  * Returns TFEM_STATUS_IO for an unreadable file, TFEM_STATUS_INVALID_MESH
  * for unsupported content, TFEM_STATUS_INVALID_ARGUMENT if the library was
  * built without the `gmsh` feature.
@@ -608,6 +611,49 @@ enum tfem_status tfem_get_sizes(struct tfem_model *model,
                                 int *n_nodes,
                                 int *n_triangles,
                                 int *n_contact_elements);
+
+/**
+ * Number of boundary edges the model holds (each with its tag), from
+ * `tfem_set_boundary_edges` / `tfem_add_boundary_edges` or a Gmsh file's
+ * physical lines; see `tfem_get_boundary_edges`.
+ */
+enum tfem_status tfem_get_boundary_edge_count(struct tfem_model *model, int *count);
+
+/**
+ * Copies the node coordinates the model holds (x0 y0 x1 y1 …, 2·n_nodes
+ * values, n_nodes from `tfem_get_sizes`) into `xy` of `length` values.
+ * After `tfem_load_gmsh` node i (in the model's index base) is the i-th
+ * node of the file's `$Nodes` section, whatever its Gmsh tag.
+ */
+enum tfem_status tfem_get_mesh_nodes(struct tfem_model *model, double *xy, size_t length);
+
+/**
+ * Copies the triangles the model holds (3·n_triangles node indices in the
+ * model's index base, n_triangles from `tfem_get_sizes`) into `triangles`
+ * of `length` values and each triangle's body tag into `bodies` of
+ * `bodies_length` values; `bodies` may be NULL. Triangles given clockwise
+ * are held (and copied) counter-clockwise. Nothing is written unless both
+ * buffers are large enough.
+ */
+enum tfem_status tfem_get_mesh_triangles(struct tfem_model *model,
+                                         int *triangles,
+                                         size_t length,
+                                         int *bodies,
+                                         size_t bodies_length);
+
+/**
+ * Copies the boundary edges the model holds (2·count node indices in the
+ * model's index base, count from `tfem_get_boundary_edge_count`) into
+ * `edges` of `length` values and each edge's tag into `tags` of
+ * `tags_length` values, in the order they were given (a Gmsh file's: its
+ * line elements, by physical group); `tags` may be NULL. Nothing is
+ * written unless both buffers are large enough.
+ */
+enum tfem_status tfem_get_boundary_edges(struct tfem_model *model,
+                                         int *edges,
+                                         size_t length,
+                                         int *tags,
+                                         size_t tags_length);
 
 /**
  * Copies the nodal displacements (u0 v0 u1 v1 …, 2·n_nodes values) of the

@@ -9,7 +9,7 @@ use super::convert::{
 };
 use super::plumbing::{
     LAST_ERROR, TfemModel, check_live, copy_in, copy_message, copy_out, count, guarded, map_out,
-    null, register, reserve, slice_in, unregister, with_model, without_model, write,
+    null, register, reserve, slice_in, too_small, unregister, with_model, without_model, write,
     write_optional,
 };
 use crate::contact::ContactOptions;
@@ -214,7 +214,10 @@ pub unsafe extern "C" fn tfem_set_mesh(
 /// under each of their tags; a surface in several is the body of the
 /// first, and physical points are not used: a warning names both); only
 /// 3-node triangles and 2-node lines, in the plane z = 0. Replaces the
-/// mesh like `tfem_set_mesh` with the given `index_base` for later calls.
+/// mesh like `tfem_set_mesh` with the given `index_base` for later calls:
+/// node i is the i-th node of the file's `$Nodes` section, whatever its
+/// Gmsh tag (`tfem_get_mesh_nodes`, `tfem_get_mesh_triangles` and
+/// `tfem_get_boundary_edges` read the mesh back).
 /// Returns TFEM_STATUS_IO for an unreadable file, TFEM_STATUS_INVALID_MESH
 /// for unsupported content, TFEM_STATUS_INVALID_ARGUMENT if the library was
 /// built without the `gmsh` feature.
@@ -532,6 +535,105 @@ pub unsafe extern "C" fn tfem_get_sizes(
         write_optional(n_nodes, mesh.nodes().len() as c_int);
         write_optional(n_triangles, mesh.triangles().len() as c_int);
         write_optional(n_contact_elements, nc as c_int);
+        Ok(())
+    })
+}
+
+/// Number of boundary edges the model holds (each with its tag), from
+/// `tfem_set_boundary_edges` / `tfem_add_boundary_edges` or a Gmsh file's
+/// physical lines; see `tfem_get_boundary_edges`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_boundary_edge_count(
+    model: *mut TfemModel,
+    count: *mut c_int,
+) -> Status {
+    with_model(model, |m| {
+        let mesh = m.mesh()?;
+        write(count, mesh.boundary_edges().len() as c_int, "count")
+    })
+}
+
+/// Copies the node coordinates the model holds (x0 y0 x1 y1 …, 2·n_nodes
+/// values, n_nodes from `tfem_get_sizes`) into `xy` of `length` values.
+/// After `tfem_load_gmsh` node i (in the model's index base) is the i-th
+/// node of the file's `$Nodes` section, whatever its Gmsh tag.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_mesh_nodes(
+    model: *mut TfemModel,
+    xy: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let mesh = m.mesh()?;
+        let v: Vec<f64> = mesh.nodes().iter().flatten().copied().collect();
+        copy_out(&v, xy, length, "xy")
+    })
+}
+
+/// Copies the triangles the model holds (3·n_triangles node indices in the
+/// model's index base, n_triangles from `tfem_get_sizes`) into `triangles`
+/// of `length` values and each triangle's body tag into `bodies` of
+/// `bodies_length` values; `bodies` may be NULL. Triangles given clockwise
+/// are held (and copied) counter-clockwise. Nothing is written unless both
+/// buffers are large enough.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_mesh_triangles(
+    model: *mut TfemModel,
+    triangles: *mut c_int,
+    length: usize,
+    bodies: *mut c_int,
+    bodies_length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let mesh = m.mesh()?;
+        let b = m.index_base as c_int;
+        let n = mesh.triangles().len();
+        if !bodies.is_null() && bodies_length < n {
+            return Err(too_small("bodies", bodies_length, n));
+        }
+        let v: Vec<c_int> = mesh
+            .triangles()
+            .iter()
+            .flat_map(|t| t.map(|v| v as c_int + b))
+            .collect();
+        copy_out(&v, triangles, length, "triangles")?;
+        if !bodies.is_null() {
+            copy_out(mesh.body_of(), bodies, bodies_length, "bodies")?;
+        }
+        Ok(())
+    })
+}
+
+/// Copies the boundary edges the model holds (2·count node indices in the
+/// model's index base, count from `tfem_get_boundary_edge_count`) into
+/// `edges` of `length` values and each edge's tag into `tags` of
+/// `tags_length` values, in the order they were given (a Gmsh file's: its
+/// line elements, by physical group); `tags` may be NULL. Nothing is
+/// written unless both buffers are large enough.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_boundary_edges(
+    model: *mut TfemModel,
+    edges: *mut c_int,
+    length: usize,
+    tags: *mut c_int,
+    tags_length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let mesh = m.mesh()?;
+        let b = m.index_base as c_int;
+        let list = mesh.boundary_edges();
+        if !tags.is_null() && tags_length < list.len() {
+            return Err(too_small("tags", tags_length, list.len()));
+        }
+        let v: Vec<c_int> = list
+            .iter()
+            .flat_map(|e| e.nodes.map(|v| v as c_int + b))
+            .collect();
+        copy_out(&v, edges, length, "edges")?;
+        if !tags.is_null() {
+            let t: Vec<c_int> = list.iter().map(|e| e.tag).collect();
+            copy_out(&t, tags, tags_length, "tags")?;
+        }
         Ok(())
     })
 }

@@ -10,6 +10,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::{LazyLock, Once, RwLock};
 
 use crate::error::{Error, Result, Status};
+use crate::fem::mesh::Mesh;
 use crate::model::Model;
 
 /// Opaque handle to a model. Create with `tfem_create`, free with
@@ -235,10 +236,7 @@ pub(super) fn copy_out<T: Copy>(src: &[T], out: *mut T, len: usize, what: &str) 
         return Err(null(what));
     }
     if len < src.len() {
-        return Err(Error::new(
-            Status::BufferTooSmall,
-            format!("`{what}` holds {len} values but {} are needed", src.len()),
-        ));
+        return Err(too_small(what, len, src.len()));
     }
     // SAFETY: `out` has room for `len >= src.len()` elements.
     unsafe { std::ptr::copy_nonoverlapping(src.as_ptr(), out, src.len()) };
@@ -303,11 +301,24 @@ impl TfemModel {
     }
 
     pub(super) fn n_nodes(&self) -> Result<usize> {
+        self.mesh().map(|m| m.nodes().len())
+    }
+
+    /// The model's mesh, or INVALID_STATE when none is set.
+    pub(super) fn mesh(&self) -> Result<&Mesh> {
         self.model
             .mesh()
-            .map(|m| m.nodes().len())
             .ok_or_else(|| Error::state("no mesh: call tfem_set_mesh first"))
     }
+}
+
+/// BUFFER_TOO_SMALL for the caller's array `what` of `len` values where
+/// `need` are needed (the message `copy_out` gives).
+pub(super) fn too_small(what: &str, len: usize, need: usize) -> Error {
+    Error::new(
+        Status::BufferTooSmall,
+        format!("`{what}` holds {len} values but {need} are needed"),
+    )
 }
 
 pub(super) fn copy_message(text: &str, buffer: *mut c_char, length: usize) -> Status {

@@ -378,7 +378,7 @@ fn precision_warning(
     }
     let largest = pressure.iter().fold(0.0f64, |m, p| m.max(p.abs()));
     let Some(k) = at else { return };
-    if !(worst > 10f64.powf(-PRESSURE_DIGITS) * largest) {
+    if worst <= 10f64.powf(-PRESSURE_DIGITS) * largest {
         return;
     }
     let digits = (largest / worst).log10().max(0.0);
