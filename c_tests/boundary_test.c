@@ -1246,6 +1246,35 @@ static void automatic_pairing_pairs_only_faces_that_see_each_other(void) {
   tfem_destroy(m);
 }
 
+/* Every edge of the lower block also under tag 99 (a Gmsh file's "whole
+ * boundary" group, kept since every group of a curve tags its edges): the
+ * interface (4, 7) is not paired again as (99, 7), by hand or
+ * automatically — its contact would count twice. */
+static void an_interface_is_paired_once_whatever_tags_its_edges_carry(void) {
+  static mesh_t S;
+  memset(&S, 0, sizeof S);
+  grid(&S, 2, 2, 0.0, 0.0, 1.0, 1.0, 1, 1);
+  int lower_edges = S.ne;
+  grid(&S, 2, 2, 0.0, 1.0, 1.0, 1.0, 2, 5);
+  int again[99];
+  for (int k = 0; k < lower_edges; ++k) again[k] = 99;
+  for (int by_hand = 0; by_hand < 2; ++by_hand) {
+    tfem_model *m = model_of(&S, 2, 1e9, 1.0, TFEM_PLANE_MODE_STRAIN);
+    CHECK(tfem_add_boundary_edges(m, lower_edges, S.edges, again) == TFEM_STATUS_OK);
+    int first = -1, count = -1;
+    if (by_hand) {
+      CHECK(tfem_add_contact_pair(m, 4, 7, NULL) == TFEM_STATUS_OK);
+      EXPECT_ERROR(m, tfem_add_contact_pair(m, 99, 7, NULL), TFEM_STATUS_INVALID_CONTACT,
+                   "covers the interface of contact pair 0");
+    } else {
+      CHECK(tfem_add_contact_pairs_auto(m, 0, NULL, 1e-9, &first, &count) == TFEM_STATUS_OK && count == 1);
+    }
+    int nc = -1;
+    CHECK(tfem_get_contact_mesh_size(m, &nc) == TFEM_STATUS_OK && nc == 4);
+    tfem_destroy(m);
+  }
+}
+
 /* Two blocks meshed 6 and 4 cells across (3:2, no interface node but the
  * ends faces another) under a uniform pressure: every interface node reads
  * the pressure, the others read zero. */
@@ -2086,6 +2115,7 @@ int main(int argc, char **argv) {
   fuzz_found_defects_at_the_friction_boundary();
   facing_tags_are_paired_automatically();
   automatic_pairing_pairs_only_faces_that_see_each_other();
+  an_interface_is_paired_once_whatever_tags_its_edges_carry();
   a_non_matching_interface_reads_a_uniform_pressure_at_every_node();
   a_node_on_several_pairs_reads_their_forces_over_their_tributaries();
   a_side_ending_inside_an_edge_of_the_other_carries_the_uniform_stress();

@@ -905,7 +905,9 @@ module tfem
     !! and `tag_b` (another body). The contact mesh B is built from matching nodes when they match
     !! (a small normal gap is allowed), else by triangulating the strip between the two interfaces
     !! (each must be one open chain of edges). Writes the pair's index (0-based) to `pair` (may be
-    !! NULL). Fortran: `pair` is OPTIONAL: omit it to pass NULL.
+    !! NULL). A pair declared already, or one whose tags share boundary edges with both tags of a
+    !! declared pair (the same interface under other tags, which would count twice), is refused with
+    !! TFEM_STATUS_INVALID_CONTACT. Fortran: `pair` is OPTIONAL: omit it to pass NULL.
     function tfem_add_contact_pair(model, tag_a, tag_b, pair) &
         bind(C, name="tfem_add_contact_pair") result(status)
       import

@@ -747,7 +747,10 @@ enum tfem_status tfem_laplacian_stiffness(const double *xy, double kappa, double
  * built from matching nodes when they match (a small normal gap is
  * allowed), else by triangulating the strip between the two interfaces
  * (each must be one open chain of edges). Writes the pair's index
- * (0-based) to `pair` (may be NULL).
+ * (0-based) to `pair` (may be NULL). A pair declared already, or one
+ * whose tags share boundary edges with both tags of a declared pair (the
+ * same interface under other tags, which would count twice), is refused
+ * with TFEM_STATUS_INVALID_CONTACT.
  */
 enum tfem_status tfem_add_contact_pair(struct tfem_model *model, int tag_a, int tag_b, int *pair);
 

@@ -202,6 +202,58 @@ fn a_gap_of_exactly_the_tolerance_pairs() {
     }
 }
 
+/// Two unit blocks stacked, with every boundary edge of the lower one
+/// also under tag 99 (a Gmsh file's "whole boundary" group).
+fn stacked_with_a_whole_boundary_tag() -> Model {
+    let rects = [rect(0.0, 1.0, 0.0, 1.0, 2), rect(0.0, 1.0, 1.0, 2.0, 2)];
+    let mut model = blocks(&rects, None);
+    let lower: Vec<[usize; 2]> = model
+        .mesh()
+        .unwrap()
+        .boundary_edges()
+        .iter()
+        .filter(|e| {
+            [Face::Bottom, Face::Right, Face::Top, Face::Left]
+                .iter()
+                .any(|&f| e.tag == block_tag(1, f))
+        })
+        .map(|e| e.nodes)
+        .collect();
+    model
+        .add_boundary_edges(&lower, &vec![99; lower.len()])
+        .unwrap();
+    model
+}
+
+#[test]
+fn a_pair_over_an_interface_already_paired_under_other_tags_is_refused() {
+    // (99, bottom of block 2) is the interface (top of block 1, bottom of
+    // block 2) again: declared too, its contact would count twice.
+    let mut model = stacked_with_a_whole_boundary_tag();
+    let bottom = block_tag(2, Face::Bottom);
+    model
+        .add_contact_pair(block_tag(1, Face::Top), bottom)
+        .unwrap();
+    let e = model.add_contact_pair(99, bottom).unwrap_err();
+    assert!(
+        e.message()
+            .contains("covers the interface of contact pair 0"),
+        "{}",
+        e.message()
+    );
+    assert_eq!(model.contact_pairs().len(), 1);
+}
+
+#[test]
+fn automatic_pairing_pairs_an_interface_once_under_its_most_specific_tags() {
+    let mut model = stacked_with_a_whole_boundary_tag();
+    model.add_contact_pairs_auto(None, 1e-9).unwrap();
+    assert_eq!(
+        pairs(&model),
+        vec![(block_tag(1, Face::Top), block_tag(2, Face::Bottom))]
+    );
+}
+
 #[test]
 fn bad_pairing_input_is_refused_naming_it() {
     let mut model = blocks(&three_bodies(), None);

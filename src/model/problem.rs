@@ -9,7 +9,7 @@
 //! so that everything derived checks the epoch instead of being cleared by
 //! hand.
 
-use std::collections::BTreeMap;
+use std::collections::{BTreeMap, BTreeSet};
 
 use super::Component;
 use crate::contact::{self, ContactPair};
@@ -436,7 +436,10 @@ impl Problem {
     /// index. The contact mesh B is built from matching nodes when the two
     /// interfaces' nodes match, else by triangulating the strip between them
     /// (see [`contact::build`]); or hand one over with
-    /// [`Problem::add_contact_pair_with_mesh`].
+    /// [`Problem::add_contact_pair_with_mesh`]. A pair declared already, or
+    /// one whose tags share boundary edges with both tags of a declared
+    /// pair (the same interface under other tags: it would count twice),
+    /// is refused.
     pub fn add_contact_pair(&mut self, tag_a: i32, tag_b: i32) -> Result<usize> {
         let mesh = self.mesh_ref()?;
         let (body_a, body_b) = contact::pair_bodies(mesh, tag_a, tag_b)?;
@@ -447,6 +450,15 @@ impl Problem {
         {
             return Err(Error::contact(format!(
                 "contact pair ({tag_a}, {tag_b}) is already declared"
+            )));
+        }
+        let shared = SharedTags::of(mesh)?;
+        if let Some(k) = shared.covered_by(&self.pairs, tag_a, tag_b) {
+            let p = &self.pairs[k];
+            return Err(Error::contact(format!(
+                "contact pair ({tag_a}, {tag_b}) covers the interface of contact pair {k} ({}, {}) \
+                 again (their tags share boundary edges): its contact would count twice",
+                p.tag_a, p.tag_b
             )));
         }
         // Build it now so that a bad interface is reported by this call.
@@ -584,7 +596,9 @@ impl Problem {
     /// [`contact::pairing`]). `tags`: the tags to consider (each must name
     /// boundary edges of one body, else an error naming it), or `None` for
     /// every tag that can be a contact side. Pairs already declared (either
-    /// way round) are skipped; tags of one body never pair. Returns the
+    /// way round) are skipped, and so is an interface found again under
+    /// other tags that share its edges (the pair with the fewest edges is
+    /// kept); tags of one body never pair. Returns the
     /// indices of the pairs added, in increasing (tag_a, tag_b) order with
     /// tag_a < tag_b: empty when nothing faces within the tolerance. All
     /// or nothing: if the contact mesh of one pair cannot be built, the
@@ -595,13 +609,28 @@ impl Problem {
         tolerance: f64,
     ) -> Result<Vec<usize>> {
         let mesh = self.mesh_ref()?;
-        let found = contact::pairing::facing_pairs(mesh, tags, tolerance)?;
-        let mut new = Vec::new();
+        let mut found = contact::pairing::facing_pairs(mesh, tags, tolerance)?;
+        // Where tags share edges (a file's "whole boundary" group beside
+        // its faces), one interface is found under several pairs of tags:
+        // the most specific pair (fewest edges) is kept, the others would
+        // count its contact again.
+        let shared = SharedTags::of(mesh)?;
+        found.sort_by_key(|f| {
+            (
+                shared.edges(f.tag_a) + shared.edges(f.tag_b),
+                f.tag_a,
+                f.tag_b,
+            )
+        });
+        let mut new: Vec<ContactPair> = Vec::new();
         for f in found {
             let declared = self.pairs.iter().chain(&new).any(|p: &ContactPair| {
                 (p.tag_a, p.tag_b) == (f.tag_a, f.tag_b) || (p.tag_a, p.tag_b) == (f.tag_b, f.tag_a)
             });
-            if declared {
+            if declared
+                || shared.covered_by(&self.pairs, f.tag_a, f.tag_b).is_some()
+                || shared.covered_by(&new, f.tag_a, f.tag_b).is_some()
+            {
                 continue;
             }
             // Built now so that a bad interface is reported by this call.
@@ -628,10 +657,68 @@ impl Problem {
             });
         }
         let first = self.pairs.len();
+        new.sort_by_key(|p| (p.tag_a, p.tag_b));
         if !new.is_empty() {
             self.pairs.append(&mut new);
             self.changed(true);
         }
         Ok((first..self.pairs.len()).collect())
+    }
+}
+
+/// Boundary tags that share edges (an edge listed under several tags: a
+/// Gmsh file's curve in several physical groups), and each tag's number
+/// of edges. Empty maps in the common case of one tag per edge.
+struct SharedTags {
+    with: BTreeMap<i32, BTreeSet<i32>>,
+    edges: BTreeMap<i32, usize>,
+}
+
+impl SharedTags {
+    fn of(mesh: &Mesh) -> Result<SharedTags> {
+        let list = mesh.boundary_edges();
+        let mut keyed: Vec<([usize; 2], i32)> =
+            crate::error::reserved(list.len(), "the check of tags sharing edges")?;
+        keyed.extend(list.iter().map(|e| {
+            let [p, q] = e.nodes;
+            ([p.min(q), p.max(q)], e.tag)
+        }));
+        keyed.sort_unstable();
+        let mut shared = SharedTags {
+            with: BTreeMap::new(),
+            edges: BTreeMap::new(),
+        };
+        for &(_, tag) in &keyed {
+            *shared.edges.entry(tag).or_default() += 1;
+        }
+        for run in keyed.chunk_by(|a, b| a.0 == b.0) {
+            for &(_, t) in run {
+                for &(_, u) in run {
+                    if t != u {
+                        shared.with.entry(t).or_default().insert(u);
+                    }
+                }
+            }
+        }
+        Ok(shared)
+    }
+
+    /// The number of boundary edges of `tag`.
+    fn edges(&self, tag: i32) -> usize {
+        self.edges.get(&tag).copied().unwrap_or(0)
+    }
+
+    /// Whether `u` is `t` or shares an edge with it.
+    fn near(&self, t: i32, u: i32) -> bool {
+        t == u || self.with.get(&t).is_some_and(|s| s.contains(&u))
+    }
+
+    /// The first of `pairs` whose two sides share edges with the sides of
+    /// (tag_a, tag_b), either way round: the same interface again.
+    fn covered_by(&self, pairs: &[ContactPair], tag_a: i32, tag_b: i32) -> Option<usize> {
+        pairs.iter().position(|p| {
+            (self.near(tag_a, p.tag_a) && self.near(tag_b, p.tag_b))
+                || (self.near(tag_a, p.tag_b) && self.near(tag_b, p.tag_a))
+        })
     }
 }
