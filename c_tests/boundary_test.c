@@ -821,11 +821,6 @@ static void a_load_history_steps_reverts_and_restarts_bit_for_bit(void) {
   tfem_destroy(m);
 }
 
-/* Found by a probe of load histories: reverting a step after friction was
- * turned on brought back the contact state of the old contact mesh, and
- * every later step was refused; a state restored into a model of another
- * stiffness brought its interface factor along (contact pressures off by
- * tens of percent, status OK); a changed byte went unnoticed. */
 /* A rigid punch (every node of body 2 moved down 1e-3) on a block E =
  * 2e11: with E_c = 1e23 the penalty's overlap falls below the rounding of
  * u and the contact forces are rounding while the system is well
@@ -855,6 +850,11 @@ static void a_contact_modulus_too_stiff_for_its_overlap_is_warned_about(void) {
   }
 }
 
+/* Found by a probe of load histories: reverting a step after friction was
+ * turned on brought back the contact state of the old contact mesh, and
+ * every later step was refused; a state restored into a model of another
+ * stiffness brought its interface factor along (contact pressures off by
+ * tens of percent, status OK); a changed byte went unnoticed. */
 static void a_contact_state_never_outlives_its_problem(void) {
   tfem_model *m = two_blocks();
   CHECK(tfem_step(m, 0.5, NULL, NULL) == TFEM_STATUS_OK);
