@@ -792,3 +792,44 @@ fn the_contact_length_of_a_block_pressed_inside_a_wider_one_is_its_width() {
         report.contact_length
     );
 }
+
+#[test]
+fn a_straight_side_is_cut_at_the_other_sides_end_across_any_gap() {
+    // The block of the test above lifted by a gap g and pressed down onto
+    // the wider one: ℓc = 0.5 at every gap. A first version of the
+    // curvature slack took the sides' distance alone and stopped cutting
+    // once g exceeded the overhang (0.05 here): ℓc 0.5625 at g = 0.2.
+    for gap in [1e-3, 0.04, 0.2] {
+        let rects = [
+            cells(0.0, 1.0, -0.5, 0.0, 8, 4),
+            cells(0.3, 0.8, gap, gap + 0.25, 5, 2),
+        ];
+        let mut model = blocks(&rects, None);
+        for k in 1..=2 {
+            let m = Material::new(1e9 * k as f64, 0.3, PlaneMode::Strain, "block").unwrap();
+            model.set_material(k, m).unwrap();
+        }
+        model
+            .fix_edges(block_tag(1, Face::Bottom), Component::Y, 0.0)
+            .unwrap();
+        model
+            .fix_edges(block_tag(1, Face::Left), Component::X, 0.0)
+            .unwrap();
+        model
+            .fix_edges(block_tag(2, Face::Left), Component::X, 0.0)
+            .unwrap();
+        model
+            .fix_edges(block_tag(2, Face::Top), Component::Y, -gap - 1e-3)
+            .unwrap();
+        model
+            .add_contact_pair(block_tag(1, Face::Top), block_tag(2, Face::Bottom))
+            .unwrap();
+        let report = model.solve_contact(&ContactOptions::default()).unwrap();
+        assert_eq!(report.active, report.elements, "gap {gap}");
+        assert!(
+            (report.contact_length - 0.5).abs() < 1e-12,
+            "gap {gap}: ℓc = {}",
+            report.contact_length
+        );
+    }
+}

@@ -668,13 +668,16 @@ impl<'a> ContactSet<'a> {
         contact_pressure(&self.geos[k], &law.d, el.normal, el.j0, law.t, ue)
     }
 
-    /// The least error in the pressure of element `k` that the rounding of
-    /// its displacements `ue` leaves (docs/method.md §6.14): the opening's
-    /// rounding times the pressure per unit opening.
+    /// The least error in the pressure of element `k` ([`Self::pressure`],
+    /// a traction) that the rounding of its displacements `ue` leaves
+    /// (docs/method.md §6.14): the opening's rounding times the traction
+    /// per unit opening (the law's, over the share of the edge that faces
+    /// the other side).
     pub fn pressure_rounding(&self, k: usize, ue: &[f64; 6]) -> f64 {
         let (el, law) = (&self.elements[k], &self.laws[k]);
         opening_rounding(&self.geos[k], el.normal, ue)
             * pressure_per_opening(&law.d, el.normal, law.t)
+            / el.facing_share()
     }
 
     /// The interface unknowns: the free unknowns with a nonzero coefficient

@@ -385,7 +385,8 @@ fn precision_warning(
     warnings.push(format!(
         "the contact pressures carry about {digits:.0} correct digits: the penalty's overlaps are \
          near the rounding of the displacements (at contact element {}, the pressure {:.3e} may be off \
-         by {worst:.1e}, against a largest pressure of {largest:.3e}); lower E_c or λ (docs/method.md §6.14)",
+         by {worst:.1e}, against a largest pressure of {largest:.3e}); where the contact carries a \
+         load, lower E_c or λ (docs/method.md §6.14)",
         k + set.nodes().base,
         pressure[k]
     ));
