@@ -185,6 +185,40 @@ fn faces_beside_a_narrower_body_between_them_still_pair() {
 }
 
 #[test]
+fn a_press_fit_pairs_on_every_mesh() {
+    // Two unit blocks overlapping by 0.02, within δ = 0.03: a reviewer
+    // found no pair once the edges were shorter than twice the overlap
+    // (h = 1/32) when "in front" allowed half an edge of overlap. It now
+    // pairs while the overlap is below the elements' height (h = 1/64,
+    // 0.0156, does not: declared by hand, docs/method.md §6.16).
+    for n in [4, 16, 32] {
+        let rects = [rect(0.0, 1.0, 0.0, 1.0, n), rect(0.0, 1.0, 0.98, 1.98, n)];
+        let mut model = blocks(&rects, None);
+        assert_eq!(
+            model.add_contact_pairs_auto(None, 0.03).unwrap(),
+            vec![0],
+            "n = {n}"
+        );
+    }
+}
+
+#[test]
+fn a_body_between_two_faces_over_part_of_an_edge_does_not_hide_the_rest() {
+    // A shim under the left 0.3 of block B's bottom, on block A; A and B
+    // are one cell across, so A's top is one edge: 70 % of it still faces
+    // B across 0.001 and the pair stands (a reviewer found it dropped).
+    let rects = [
+        rect(0.0, 1.0, -1.0, 0.0, 1),
+        rect(0.0, 0.3, 0.0, 0.001, 1),
+        rect(0.0, 1.0, 0.001, 1.0, 1),
+    ];
+    let mut model = blocks(&rects, None);
+    model.add_contact_pairs_auto(None, 0.01).unwrap();
+    let across = (block_tag(1, Face::Top), block_tag(3, Face::Bottom));
+    assert!(pairs(&model).contains(&across), "{:?}", pairs(&model));
+}
+
+#[test]
 fn a_gap_of_exactly_the_tolerance_pairs() {
     // The gap computed from the coordinates, (1 + 0.1) − 1, is
     // 0.10000000000000009: a probe found no pair within δ = 0.1.

@@ -11,17 +11,19 @@
 //!   parallel to within 30° and turned towards each other, so two faces of
 //!   stacked blocks that only share a corner — side by side, normals
 //!   parallel, or at a right angle — never pair);
-//! * lie each in front of the other: the midpoint of f is on the outward
-//!   side of e's line, or behind it by at most half the shorter edge (an
-//!   initial overlap, as in a press fit), and the same from f — so the
-//!   outer faces of two bodies, back to back, never pair;
+//! * lie each in front of the other: the body of f (the third node of
+//!   f's triangle) is on the outward side of e's line, and the same from
+//!   f — so faces crossed by an initial overlap (a press fit) pair while it
+//!   is below the elements' height along the interface (a deeper one is
+//!   declared by hand), and the outer faces of two bodies, back to back,
+//!   never pair;
 //! * overlap along the interface: f projected on the line of e covers a
 //!   part of e of positive length (more than 1e-9 of the shorter edge), so
 //!   faces that meet at a single corner point do not pair;
-//! * have no third body between them: no edge of another body faces e
-//!   within δ nearer than f over a part of what f covers along e (or the
-//!   same from f), so that a δ larger than a body's thickness does not
-//!   pair faces across it.
+//! * have no third body between them: the edges of other bodies that face
+//!   e within δ nearer than f do not cover all of what f covers along e
+//!   (and the same from f), so that a δ larger than a body's thickness
+//!   does not pair faces across it.
 //!
 //! The distance is compared with δ up to the rounding of the coordinates
 //! (4 ε times their magnitude), so a gap of exactly δ pairs.
@@ -70,6 +72,8 @@ pub struct FacingPair {
 struct Edge {
     p: [f64; 2],
     q: [f64; 2],
+    /// The third node of the edge's triangle: a point inside its body.
+    inner: [f64; 2],
     normal: [f64; 2],
     body: i32,
     tag: i32,
@@ -109,9 +113,8 @@ fn candidate_edges(mesh: &Mesh, tags: Option<&[i32]>) -> Result<Vec<Edge>> {
         }
         let entry = by_tag.entry(e.tag).or_insert_with(|| Ok(Vec::new()));
         let Ok(list) = entry else { continue };
-        let owner = e.owner.map(|(t, _)| t);
         let normal = mesh.outward_normal(e);
-        let (Some(t), Some(normal)) = (owner, normal) else {
+        let (Some((t, third)), Some(normal)) = (e.owner, normal) else {
             *entry = Err(format!(
                 "boundary edge {} (tag {}) is interior to the mesh or of zero length: \
                  it cannot bound a contact interface",
@@ -132,6 +135,7 @@ fn candidate_edges(mesh: &Mesh, tags: Option<&[i32]>) -> Result<Vec<Edge>> {
         list.push(Edge {
             p: mesh.nodes()[p],
             q: mesh.nodes()[q],
+            inner: mesh.nodes()[third],
             normal,
             body,
             tag: e.tag,
@@ -222,41 +226,60 @@ fn shadow(e: &Edge, f: &Edge) -> (f64, f64) {
     (t0.min(t1), t0.max(t1))
 }
 
-/// Whether two edges face each other (normals opposed, each in front of
-/// the other, positive overlap along the first): the distance is checked
-/// apart. "In front" allows an overlap of up to half the shorter edge (a
-/// press fit starts with the faces crossed): two faces back to back — the
+/// Whether two edges face each other (normals opposed, each body in front
+/// of the other's face, positive overlap along the first): the distance is
+/// checked apart. A body is in front of a face when the third node of its
+/// edge's triangle, inside it, lies on the face's outward side: an initial
+/// overlap (a press fit, faces crossed) pairs while it is below the height
+/// of the elements along the interface, and two faces back to back — the
 /// outer faces of two bodies, normals opposed but turned away from each
-/// other — are a body's thickness behind each other and never pair,
-/// whatever the tolerance (a probe paired the bottom of a block with the
-/// top of the block under it at δ = 2.5 and the solve read a 2-unit
-/// overlap).
+/// other — never pair, whatever the tolerance (a probe paired the bottom
+/// of a block with the top of the block under it at δ = 2.5 and the solve
+/// read a 2-unit overlap). Locally a deeper overlap and two faces back to
+/// back look the same (each body's face behind the other's, its interior
+/// towards it); such a press fit is declared by hand.
 fn facing(e: &Edge, f: &Edge) -> bool {
     if dot(e.normal, f.normal) > -FACING_COSINE {
         return false;
     }
-    let (len_e, len_f) = (length(e), length(f));
-    let behind = -0.5 * len_e.min(len_f);
-    if separation(e, f) < behind || separation(f, e) < behind {
+    let in_front = |a: &Edge, b: &Edge| dot(sub(b.inner, a.p), a.normal) > 0.0;
+    if !(in_front(e, f) && in_front(f, e)) {
         return false;
     }
+    let (len_e, len_f) = (length(e), length(f));
     let (lo, hi) = shadow(e, f);
     let overlap = hi.min(len_e) - lo.max(0.0);
     overlap > MIN_OVERLAP * len_e.min(len_f)
 }
 
-/// Whether a third body's edge `g`, also facing `e`, lies between `e` and
-/// `f` over part of what `f` covers along `e`: then the strip between `e`
-/// and `f` would cross that body (a probe paired the faces of blocks 1 and
-/// 3 across block 2 once δ exceeded a block's height).
-fn hidden_by(e: &Edge, f: &Edge, g: &Edge) -> bool {
-    if g.body == e.body || g.body == f.body || separation(e, g) >= separation(e, f) {
-        return false;
-    }
+/// Whether the edges `gs` of third bodies, facing `e` nearer than `f`,
+/// cover the whole of what `f` covers along `e`: then every strip between
+/// `e` and `f` would cross those bodies (a probe paired the faces of
+/// blocks 1 and 3 across block 2 once δ exceeded a block's height). Part
+/// covered is not enough: the rest of `f` sees `e` (a thin shim under part
+/// of a coarse edge must not hide it).
+fn hidden<'a>(e: &Edge, f: &Edge, gs: impl Iterator<Item = &'a Edge>) -> bool {
     let len_e = length(e);
-    let ((f0, f1), (g0, g1)) = (shadow(e, f), shadow(e, g));
-    let common = f1.min(g1).min(len_e) - f0.max(g0).max(0.0);
-    common > MIN_OVERLAP * len_e.min(length(f)).min(length(g))
+    let (f0, f1) = shadow(e, f);
+    let (f0, f1) = (f0.max(0.0), f1.min(len_e));
+    let mut covers: Vec<(f64, f64)> = gs
+        .filter(|g| g.body != e.body && g.body != f.body && separation(e, g) < separation(e, f))
+        .map(|g| {
+            let (g0, g1) = shadow(e, g);
+            (g0.max(f0), g1.min(f1))
+        })
+        .filter(|(lo, hi)| hi > lo)
+        .collect();
+    covers.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let slack = MIN_OVERLAP * len_e.min(length(f));
+    let mut reach = f0;
+    for (lo, hi) in covers {
+        if lo > reach + slack {
+            break;
+        }
+        reach = reach.max(hi);
+    }
+    reach >= f1 - slack
 }
 
 /// The pairs of tags of different bodies whose boundary edges face each
@@ -336,11 +359,8 @@ pub fn facing_pairs(mesh: &Mesh, tags: Option<&[i32]>, tolerance: f64) -> Result
     for (k, e) in edges.iter().enumerate() {
         for &(m, distance) in &near[k] {
             let f = &edges[m];
-            let hidden = |a: usize, b: &Edge| {
-                near[a]
-                    .iter()
-                    .any(|&(g, _)| hidden_by(&edges[a], b, &edges[g]))
-            };
+            let hidden =
+                |a: usize, b: &Edge| hidden(&edges[a], b, near[a].iter().map(|&(g, _)| &edges[g]));
             if m <= k || hidden(k, f) || hidden(m, e) {
                 continue;
             }
