@@ -459,10 +459,11 @@ module tfem
     !> Loads a Gmsh MSH 4.1 mesh (ASCII or binary) from the file `path` (NUL-terminated; on Unix any
     !! bytes, as the file system takes them, elsewhere UTF-8): physical surfaces become bodies (tag
     !! = body), physical curves become boundary-edge tags (a curve in several groups under each of
-    !! their tags; a surface in several is the body of the first, and physical points are not used:
-    !! a warning names both); only 3-node triangles and 2-node lines, in the plane z = 0. Replaces
-    !! the mesh like `tfem_set_mesh` with the given `index_base` for later calls: node i is the i-th
-    !! node of the file's `$Nodes` section, whatever its Gmsh tag (`tfem_get_mesh_nodes`,
+    !! their tags — before 2026-11-24 only the first group of a curve tagged its edges; a surface in
+    !! several is the body of the first, and physical points are not used: a warning names both);
+    !! only 3-node triangles and 2-node lines, in the plane z = 0. Replaces the mesh like
+    !! `tfem_set_mesh` with the given `index_base` for later calls: node i is the i-th node of the
+    !! file's `$Nodes` section, whatever its Gmsh tag (`tfem_get_mesh_nodes`,
     !! `tfem_get_mesh_triangles` and `tfem_get_boundary_edges` read the mesh back). Returns
     !! TFEM_STATUS_IO for an unreadable file, TFEM_STATUS_INVALID_MESH for unsupported content,
     !! TFEM_STATUS_INVALID_ARGUMENT if the library was built without the `gmsh` feature.
@@ -924,8 +925,10 @@ module tfem
     !! `connectivity` (3 per triangle) over nodes of the two interfaces. Wrongly oriented triangles
     !! are flipped; their number goes to `flipped` (may be NULL), the pair's index to `pair` (may be
     !! NULL). A triangle given twice (the same three nodes, in any order) is refused with
-    !! TFEM_STATUS_INVALID_CONTACT naming both triangles. Fortran: `pair` and `flipped` are
-    !! OPTIONAL: omit them to pass NULL.
+    !! TFEM_STATUS_INVALID_CONTACT naming both triangles. The triangles are the contact: a pair of
+    !! tags declared already, or sharing edges with a declared pair, is not refused here (several
+    !! meshes may cover parts of one interface), so do not give a part twice. Fortran: `pair` and
+    !! `flipped` are OPTIONAL: omit them to pass NULL.
     function tfem_add_contact_pair_with_mesh(model, tag_a, tag_b, n_triangles, connectivity, pair, &
         flipped) &
         bind(C, name="tfem_add_contact_pair_with_mesh") result(status)
@@ -1430,12 +1433,14 @@ module tfem
     !! overlapping along the interface, no third body between them; a gap of exactly `tolerance`
     !! pairs; docs/method.md §6.16). `tags` (`n_tags` values) restricts the search to those tags;
     !! with `n_tags` = 0 every tag that can be a contact side is considered, and `tags` may be NULL.
-    !! Pairs already declared are skipped, tags of one body never pair. The pairs added get
-    !! consecutive indices: writes the first to `first` (may be NULL) and their number, 0 when
-    !! nothing faces within the tolerance, to `count` (may be NULL). A negative or non-finite
-    !! tolerance, an unknown tag or an interface whose contact mesh cannot be built is refused,
-    !! naming it, and nothing is added. Fortran: `tags`, `first` and `count` are OPTIONAL: omit them
-    !! to pass NULL.
+    !! Pairs already declared are skipped, tags of one body never pair, and an interface found again
+    !! under tags that share its edges with a pair kept (a "whole boundary" group beside the faces)
+    !! is skipped: the pair of tags with the fewest edges is kept (to pair an interface under other
+    !! tags, declare that pair by hand instead). The pairs added get consecutive indices: writes the
+    !! first to `first` (may be NULL) and their number, 0 when nothing faces within the tolerance,
+    !! to `count` (may be NULL). A negative or non-finite tolerance, an unknown tag or an interface
+    !! whose contact mesh cannot be built is refused, naming it, and nothing is added. Fortran:
+    !! `tags`, `first` and `count` are OPTIONAL: omit them to pass NULL.
     function tfem_add_contact_pairs_auto(model, n_tags, tags, tolerance, first, count) &
         bind(C, name="tfem_add_contact_pairs_auto") result(status)
       import

@@ -181,7 +181,7 @@ fn validate(
             )));
         }
     }
-    check_repeated(triangles, b)?;
+    check_repeated(triangles, names)?;
     let mut any_clockwise = false;
     for (t, tri) in triangles.iter().enumerate() {
         let geo = TriGeometry::new(&[nodes[tri[0]], nodes[tri[1]], nodes[tri[2]]]);
@@ -201,8 +201,9 @@ fn validate(
 /// orientation, in one body or two: its stiffness would be added twice
 /// and the solve would answer with a stiffer body and no word (found by a
 /// probe: a unit square under pressure with one triangle repeated read
-/// σ_yy = 0.55 p). Names the first repeat in the caller's numbering.
-fn check_repeated(triangles: &[[usize; 3]], b: usize) -> Result<()> {
+/// σ_yy = 0.55 p). Names the first repeat through `names` (the caller's
+/// numbering, or a file's tags).
+fn check_repeated(triangles: &[[usize; 3]], names: &Names<'_>) -> Result<()> {
     let mut keyed: Vec<([usize; 3], usize)> =
         reserved(triangles.len(), "the mesh's check for repeated triangles")?;
     keyed.extend(triangles.iter().enumerate().map(|(t, tri)| {
@@ -220,12 +221,12 @@ fn check_repeated(triangles: &[[usize; 3]], b: usize) -> Result<()> {
         Some((t, repeat)) => {
             let n = triangles[repeat];
             Err(Error::mesh(format!(
-                "triangle {} (nodes {}, {}, {}) repeats triangle {}: each triangle must be given once",
-                repeat + b,
-                n[0] + b,
-                n[1] + b,
-                n[2] + b,
-                t + b
+                "{} (nodes {}, {}, {}) repeats {}: each triangle must be given once",
+                names.triangle(repeat),
+                names.node(n[0]),
+                names.node(n[1]),
+                names.node(n[2]),
+                names.triangle(t)
             )))
         }
         None => Ok(()),

@@ -211,8 +211,9 @@ pub unsafe extern "C" fn tfem_set_mesh(
 /// (NUL-terminated; on Unix any bytes, as the file system takes them,
 /// elsewhere UTF-8): physical surfaces become bodies (tag = body),
 /// physical curves become boundary-edge tags (a curve in several groups
-/// under each of their tags; a surface in several is the body of the
-/// first, and physical points are not used: a warning names both); only
+/// under each of their tags — before 2026-11-24 only the first group of a
+/// curve tagged its edges; a surface in several is the body of the first,
+/// and physical points are not used: a warning names both); only
 /// 3-node triangles and 2-node lines, in the plane z = 0. Replaces the
 /// mesh like `tfem_set_mesh` with the given `index_base` for later calls:
 /// node i is the i-th node of the file's `$Nodes` section, whatever its
@@ -856,7 +857,10 @@ pub unsafe extern "C" fn tfem_add_contact_pair(
 /// interfaces. Wrongly oriented triangles are flipped; their number goes to
 /// `flipped` (may be NULL), the pair's index to `pair` (may be NULL). A
 /// triangle given twice (the same three nodes, in any order) is refused
-/// with TFEM_STATUS_INVALID_CONTACT naming both triangles.
+/// with TFEM_STATUS_INVALID_CONTACT naming both triangles. The triangles
+/// are the contact: a pair of tags declared already, or sharing edges with
+/// a declared pair, is not refused here (several meshes may cover parts of
+/// one interface), so do not give a part twice.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_add_contact_pair_with_mesh(
     model: *mut TfemModel,
@@ -1439,7 +1443,11 @@ pub unsafe extern "C" fn tfem_get_contact_dissipation(
 /// `tolerance` pairs; docs/method.md §6.16). `tags` (`n_tags` values) restricts the search to
 /// those tags; with `n_tags` = 0 every tag that can be a contact side is
 /// considered, and `tags` may be NULL. Pairs already declared are skipped,
-/// tags of one body never pair. The pairs added get consecutive indices:
+/// tags of one body never pair, and an interface found again under tags
+/// that share its edges with a pair kept (a "whole boundary" group beside
+/// the faces) is skipped: the pair of tags with the fewest edges is kept
+/// (to pair an interface under other tags, declare that pair by hand
+/// instead). The pairs added get consecutive indices:
 /// writes the first to `first` (may be NULL) and their number, 0 when
 /// nothing faces within the tolerance, to `count` (may be NULL). A negative
 /// or non-finite tolerance, an unknown tag or an interface whose contact

@@ -479,7 +479,10 @@ impl Problem {
     /// (0-based triangles over interface nodes, as made with Gmsh), each
     /// given once (a repeated triangle is refused, naming both). Its
     /// orientation is fixed where needed; returns (pair index, number of
-    /// triangles flipped).
+    /// triangles flipped). The triangles are the contact: unlike
+    /// [`Problem::add_contact_pair`], tags declared already or sharing
+    /// edges with a declared pair are not refused (several meshes may cover
+    /// parts of one interface), so a part given twice counts twice.
     pub fn add_contact_pair_with_mesh(
         &mut self,
         tag_a: i32,
