@@ -349,6 +349,175 @@ pub fn pair_bodies(mesh: &Mesh, tag_a: i32, tag_b: i32) -> Result<(i32, i32)> {
     Ok((a.body, b.body))
 }
 
+/// The arclength of each node along the polyline through `chain`.
+fn arclengths(x: &[[f64; 2]], chain: &[usize]) -> Vec<f64> {
+    let mut s = vec![0.0; chain.len()];
+    for k in 1..chain.len() {
+        s[k] = s[k - 1] + dist(x[chain[k - 1]], x[chain[k]]);
+    }
+    s
+}
+
+/// The abscissa of `p` along the polyline through `chain` (arclengths
+/// `s`): that of its nearest point, the polyline extended linearly beyond
+/// both ends.
+fn abscissa(x: &[[f64; 2]], chain: &[usize], s: &[f64], p: [f64; 2]) -> f64 {
+    let mut best = (f64::INFINITY, 0.0);
+    for k in 0..chain.len() - 1 {
+        let (p0, p1) = (x[chain[k]], x[chain[k + 1]]);
+        let d = [p1[0] - p0[0], p1[1] - p0[1]];
+        let len2 = d[0] * d[0] + d[1] * d[1];
+        let mut t = ((p[0] - p0[0]) * d[0] + (p[1] - p0[1]) * d[1]) / len2;
+        let (lo, hi) = (
+            if k == 0 { f64::NEG_INFINITY } else { 0.0 },
+            if k + 2 == chain.len() {
+                f64::INFINITY
+            } else {
+                1.0
+            },
+        );
+        t = t.clamp(lo, hi);
+        let q = [p0[0] + t * d[0], p0[1] + t * d[1]];
+        let dd = dist(p, q);
+        if dd < best.0 {
+            best = (dd, s[k] + t * len2.sqrt());
+        }
+    }
+    best.1
+}
+
+/// Where two sides stop facing each other: the interval [lo, hi] of
+/// abscissas along side a, and how far beyond each end a node must lie
+/// for the edge across it to be cut (docs/method.md §6.11, "Sides that
+/// end inside an edge").
+struct Ends {
+    lo: f64,
+    hi: f64,
+    tol_lo: f64,
+    tol_hi: f64,
+}
+
+impl Ends {
+    /// The ends of the windowed chains `ca`, `cb` over [lo, hi];
+    /// `inner.0`/`inner.1`: whether b's first/last node is the one inside
+    /// (else a's). Round-off (`tol`) does not cut an end, nor does an
+    /// offset that curvature alone makes: on curved sides a distance d
+    /// apart (a gap or an overlap) the other side's end, projected on this
+    /// side, lands off its end by up to d times the sides' turn there
+    /// although the two ends face each other (the Lamé rings' quarter with
+    /// 1e-2 of overlap was cut, and its pressure error went from 8.9e-5 to
+    /// 1.3e-4 of p). The distance is the inner end node's from the other
+    /// side; on straight sides the turn is zero and every offset beyond
+    /// round-off cuts.
+    fn new(
+        x: &[[f64; 2]],
+        (ca, cb): (&[usize], &[usize]),
+        inner: (bool, bool),
+        (lo, hi): (f64, f64),
+        tol: f64,
+    ) -> Ends {
+        let slack = |inner: usize, other: &[usize], turns: [f64; 2]| {
+            tol + distance_to_chain(x, x[inner], other) * turns[0].max(turns[1])
+        };
+        let (na, nb) = (ca.len(), cb.len());
+        let tol_lo = match inner.0 {
+            true => slack(cb[0], ca, [turn(x, ca), turn(x, cb)]),
+            false => slack(ca[0], cb, [turn(x, ca), turn(x, cb)]),
+        };
+        let rev_a: Vec<usize> = ca[na.saturating_sub(3)..].iter().rev().copied().collect();
+        let rev_b: Vec<usize> = cb[nb.saturating_sub(3)..].iter().rev().copied().collect();
+        let tol_hi = match inner.1 {
+            true => slack(cb[nb - 1], ca, [turn(x, &rev_a), turn(x, &rev_b)]),
+            false => slack(ca[na - 1], cb, [turn(x, &rev_a), turn(x, &rev_b)]),
+        };
+        Ends {
+            lo,
+            hi,
+            tol_lo,
+            tol_hi,
+        }
+    }
+
+    /// Whether a chain of abscissas `s` starts before lo and ends beyond hi.
+    fn beyond(&self, s: &[f64]) -> (bool, bool) {
+        (
+            s[0] < self.lo - self.tol_lo,
+            s[s.len() - 1] > self.hi + self.tol_hi,
+        )
+    }
+
+    /// The part of the edge over [s0, s1] that faces the other side, as a
+    /// fraction of the edge (1: all of it).
+    fn share(&self, s0: f64, s1: f64) -> f64 {
+        let (c0, c1) = (
+            if s0 < self.lo - self.tol_lo {
+                self.lo
+            } else {
+                s0
+            },
+            if s1 > self.hi + self.tol_hi {
+                self.hi
+            } else {
+                s1
+            },
+        );
+        if c0 == s0 && c1 == s1 {
+            1.0
+        } else {
+            ((c1 - c0) / (s1 - s0)).clamp(0.0, 1.0)
+        }
+    }
+}
+
+/// The strip between the windowed chains (nodes and abscissas along side
+/// a): its triangles (an edge of one side, an apex on the other), each
+/// edge's apex the node of the other side nearest to its midpoint but at
+/// a cut end, and the share of each triangle's edge that faces the other
+/// side.
+fn walk_strip(
+    (ca, sa): (&[usize], &[f64]),
+    (cb, sb): (&[usize], &[f64]),
+    ends: &Ends,
+) -> (Vec<[usize; 3]>, Vec<f64>) {
+    let ((a_before, a_after), (b_before, b_after)) = (ends.beyond(sa), ends.beyond(sb));
+    let mut tris = Vec::with_capacity(ca.len() + cb.len());
+    let mut fractions = Vec::with_capacity(ca.len() + cb.len());
+    let (mut i, mut j) = (0, 0);
+    while i + 1 < ca.len() || j + 1 < cb.len() {
+        let advance_a = if i + 1 == ca.len() {
+            false
+        } else if j + 1 == cb.len() {
+            true
+        } else if i == 0 && a_before {
+            // An edge across the other side's start takes that start as
+            // its apex, and one across its end that end: every apex then
+            // lies where the sides face each other, and the strip is that
+            // of the clipped sides, which the patch test holds for
+            // (docs/method.md §6.11, "Sides that end inside an edge").
+            true
+        } else if (j == 0 && b_before) || (i + 2 == ca.len() && a_after) {
+            false
+        } else if j + 2 == cb.len() && b_after {
+            true
+        } else {
+            // The next edge whose midpoint comes first: each edge's apex is
+            // then the node of the other side nearest to its midpoint
+            // (docs/method.md §6.11).
+            sa[i] + sa[i + 1] <= sb[j] + sb[j + 1]
+        };
+        if advance_a {
+            tris.push([ca[i], ca[i + 1], cb[j]]);
+            fractions.push(ends.share(sa[i], sa[i + 1]));
+            i += 1;
+        } else {
+            tris.push([ca[i], cb[j + 1], cb[j]]);
+            fractions.push(ends.share(sb[j], sb[j + 1]));
+            j += 1;
+        }
+    }
+    (tris, fractions)
+}
+
 /// The sine of the turn of a polyline at its second node (0 with fewer
 /// than three nodes): how much it bends at its end.
 fn turn(x: &[[f64; 2]], chain: &[usize]) -> f64 {
@@ -814,39 +983,13 @@ pub fn nonconforming(
     // Each chain has its body on the right; facing each other they run in
     // opposite directions: turn b around.
     chain_b.reverse();
-    // Arclength along a, and the projection of any point on it (extended
-    // linearly beyond both ends).
-    let mut s_a = vec![0.0; chain_a.len()];
-    for k in 1..chain_a.len() {
-        s_a[k] = s_a[k - 1] + dist(x[chain_a[k - 1]], x[chain_a[k]]);
-    }
+    // Arclength along a, and each node of b's abscissa along it.
+    let s_a = arclengths(x, &chain_a);
     let total = s_a[s_a.len() - 1];
-    // A node's abscissa along side a.
-    let project = |p: [f64; 2]| -> f64 {
-        let mut best = (f64::INFINITY, 0.0);
-        for k in 0..chain_a.len() - 1 {
-            let (p0, p1) = (x[chain_a[k]], x[chain_a[k + 1]]);
-            let d = [p1[0] - p0[0], p1[1] - p0[1]];
-            let len2 = d[0] * d[0] + d[1] * d[1];
-            let mut t = ((p[0] - p0[0]) * d[0] + (p[1] - p0[1]) * d[1]) / len2;
-            let (lo, hi) = (
-                if k == 0 { f64::NEG_INFINITY } else { 0.0 },
-                if k + 2 == chain_a.len() {
-                    f64::INFINITY
-                } else {
-                    1.0
-                },
-            );
-            t = t.clamp(lo, hi);
-            let q = [p0[0] + t * d[0], p0[1] + t * d[1]];
-            let dd = dist(p, q);
-            if dd < best.0 {
-                best = (dd, s_a[k] + t * len2.sqrt());
-            }
-        }
-        best.1
-    };
-    let s_b: Vec<f64> = chain_b.iter().map(|&v| project(x[v])).collect();
+    let s_b: Vec<f64> = chain_b
+        .iter()
+        .map(|&v| abscissa(x, &chain_a, &s_a, x[v]))
+        .collect();
     if let Some(k) = (1..s_b.len()).find(|&k| s_b[k] < s_b[k - 1]) {
         return Err(Error::contact(format!(
             "interface {name_b} folds back along interface {name_a} at node {}: the two interfaces must face each other",
@@ -882,79 +1025,9 @@ pub fn nonconforming(
     let (b0, b1) = window(&s_b);
     let (ca, sa) = (&chain_a[a0..=a1], &s_a[a0..=a1]);
     let (cb, sb) = (&chain_b[b0..=b1], &s_b[b0..=b1]);
-    // Nor is an end cut (`beyond`, `facing`) by an offset that curvature
-    // alone makes: on curved sides a distance d apart (a gap or an
-    // overlap) the other side's end, projected on this side, lands off its
-    // end by up to d times the sides' turn there although the two ends
-    // face each other (the Lamé rings' quarter with 1e-2 of overlap was
-    // cut, and its pressure error went from 8.9e-5 to 1.3e-4 of p). The
-    // distance is the inner end node's from the other side; on straight
-    // sides the turn is zero and every offset beyond round-off cuts.
-    let slack = |inner: usize, other: &[usize], turns: [f64; 2]| {
-        tol + distance_to_chain(x, x[inner], other) * turns[0].max(turns[1])
-    };
-    let (na, nb) = (ca.len(), cb.len());
-    let tol_lo = match s_b[b0] > 0.0 {
-        true => slack(cb[0], ca, [turn(x, ca), turn(x, cb)]),
-        false => slack(ca[0], cb, [turn(x, ca), turn(x, cb)]),
-    };
-    let rev_a: Vec<usize> = ca[na.saturating_sub(3)..].iter().rev().copied().collect();
-    let rev_b: Vec<usize> = cb[nb.saturating_sub(3)..].iter().rev().copied().collect();
-    let tol_hi = match s_b[b1] < total {
-        true => slack(cb[nb - 1], ca, [turn(x, &rev_a), turn(x, &rev_b)]),
-        false => slack(ca[na - 1], cb, [turn(x, &rev_a), turn(x, &rev_b)]),
-    };
-    // Whether a chain's first and last nodes lie beyond [lo, hi].
-    let beyond = |s: &[f64]| (s[0] < lo - tol_lo, s[s.len() - 1] > hi + tol_hi);
-    let ((a_before, a_after), (b_before, b_after)) = (beyond(sa), beyond(sb));
-    let mut tris = Vec::with_capacity(ca.len() + cb.len());
-    // The part of each triangle's interface edge that faces the other
-    // side, as a fraction of the edge (1: all of it).
-    let mut fractions = Vec::with_capacity(ca.len() + cb.len());
-    let facing = |s0: f64, s1: f64| -> f64 {
-        let (c0, c1) = (
-            if s0 < lo - tol_lo { lo } else { s0 },
-            if s1 > hi + tol_hi { hi } else { s1 },
-        );
-        if c0 == s0 && c1 == s1 {
-            1.0
-        } else {
-            ((c1 - c0) / (s1 - s0)).clamp(0.0, 1.0)
-        }
-    };
-    let (mut i, mut j) = (0, 0);
-    while i + 1 < ca.len() || j + 1 < cb.len() {
-        let advance_a = if i + 1 == ca.len() {
-            false
-        } else if j + 1 == cb.len() {
-            true
-        } else if i == 0 && a_before {
-            // An edge across the other side's start takes that start as
-            // its apex, and one across its end that end: every apex then
-            // lies where the sides face each other, and the strip is that
-            // of the clipped sides, which the patch test holds for
-            // (docs/method.md §6.11, "Sides that end inside an edge").
-            true
-        } else if (j == 0 && b_before) || (i + 2 == ca.len() && a_after) {
-            false
-        } else if j + 2 == cb.len() && b_after {
-            true
-        } else {
-            // The next edge whose midpoint comes first: each edge's apex is
-            // then the node of the other side nearest to its midpoint
-            // (docs/method.md §6.11).
-            sa[i] + sa[i + 1] <= sb[j] + sb[j + 1]
-        };
-        if advance_a {
-            tris.push([ca[i], ca[i + 1], cb[j]]);
-            fractions.push(facing(sa[i], sa[i + 1]));
-            i += 1;
-        } else {
-            tris.push([ca[i], cb[j + 1], cb[j]]);
-            fractions.push(facing(sb[j], sb[j + 1]));
-            j += 1;
-        }
-    }
+    let inner = (s_b[b0] > 0.0, s_b[b1] < total);
+    let ends = Ends::new(x, (ca, cb), inner, (lo, hi), tol);
+    let (tris, fractions) = walk_strip((ca, sa), (cb, sb), &ends);
     let mut elements = checked_triangles(nodes, pair, a, b, &tris)?.0;
     for (el, f) in elements.iter_mut().zip(fractions) {
         if f < 1.0 {
