@@ -371,6 +371,46 @@ int main(void) {
     tfem_destroy(m);
   }
 
+  /* tfem_write_vtu: the solved uniaxial tension as a VTK XML grid of 6
+   * points and 4 cells with its fields (their values read back in
+   * tests/vtu.rs); before a solve and into a missing directory it is
+   * refused, naming the reason and the path, and the results stay. */
+  {
+    char path[512];
+    const char *tmp = getenv("TMPDIR");
+    int here = 0;
+    snprintf(path, sizeof path, "%s/tfem_api_test_%lx.vtu", tmp != NULL && tmp[0] != '\0' ? tmp : "/tmp",
+             (unsigned long)(uintptr_t)&here);
+    m = tfem_create();
+    build(m, 0);
+    restrain_and_load(m, 0);
+    EXPECT_ERROR(m, tfem_write_vtu(m, path), TFEM_STATUS_INVALID_STATE, "solve");
+    CHECK(tfem_write_vtu(m, NULL) == TFEM_STATUS_NULL_POINTER);
+    CHECK(tfem_solve(m, NULL) == TFEM_STATUS_OK);
+    CHECK(tfem_write_vtu(m, path) == TFEM_STATUS_OK);
+    static char text[1 << 16];
+    size_t n = 0;
+    FILE *f = fopen(path, "r");
+    CHECK(f != NULL);
+    if (f != NULL) {
+      n = fread(text, 1, sizeof text - 1, f);
+      fclose(f);
+    }
+    text[n] = '\0';
+    CHECK(strstr(text, "<VTKFile") != NULL && strstr(text, "UnstructuredGrid") != NULL);
+    CHECK(strstr(text, "NumberOfPoints=\"6\"") != NULL && strstr(text, "NumberOfCells=\"4\"") != NULL);
+    CHECK(strstr(text, "Name=\"displacement\"") != NULL && strstr(text, "Name=\"stress\"") != NULL);
+    double u[12];
+    CHECK(tfem_get_displacements(m, u, 12) == TFEM_STATUS_OK && fabs(u[4] - 0.02) < 1e-12);
+    remove(path);
+    EXPECT_ERROR(m, tfem_write_vtu(m, "/nonexistent/directory/out.vtu"), TFEM_STATUS_IO,
+                 "/nonexistent/directory/out.vtu");
+    /* The failed writes changed nothing. */
+    double v[12];
+    CHECK(tfem_get_displacements(m, v, 12) == TFEM_STATUS_OK && memcmp(u, v, sizeof u) == 0);
+    tfem_destroy(m);
+  }
+
   printf("api_test: %d passed, %d failed\n", passed, failed);
   printf("%d passed, %d failed\n", passed, failed);
   return failed == 0 ? 0 : 1;

@@ -790,6 +790,8 @@ static void a_load_history_steps_reverts_and_restarts_bit_for_bit(void) {
   uint8_t *state = malloc(size);
   CHECK(state != NULL && tfem_get_contact_state(m, state, size) == TFEM_STATUS_OK);
   EXPECT_ERROR(m, tfem_get_contact_state(m, state, size - 1), TFEM_STATUS_BUFFER_TOO_SMALL, "buffer");
+  /* Counted in bytes, as the state is (it said "values"). */
+  EXPECT_ERROR(m, tfem_get_contact_state(m, state, size - 1), TFEM_STATUS_BUFFER_TOO_SMALL, "bytes but");
   CHECK(tfem_step(m, 1.5, NULL, NULL) == TFEM_STATUS_OK);
   CHECK(tfem_get_displacements(m, u, 2 * B.nn) == TFEM_STATUS_OK);
   tfem_model *restarted = two_blocks();
@@ -848,6 +850,80 @@ static void a_contact_modulus_too_stiff_for_its_overlap_is_warned_about(void) {
     CHECK(has_warning(m, "correct digits") == (k == 1));
     tfem_destroy(m);
   }
+}
+
+/* The punch scene above (block: tags 1-4, punch: tags 5-8, pair (4, 7))
+ * with the punch's material and which DOFs are prescribed as asked. */
+static tfem_model *punch_scene(mesh_t *P, int first_punch, double punch_e) {
+  tfem_model *m = model_of(P, 2, 2e11, 1.0, TFEM_PLANE_MODE_STRAIN);
+  CHECK(tfem_set_material(m, 2, punch_e, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 3, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 3, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  for (int v = first_punch; v < P->nn; ++v) {
+    CHECK(tfem_fix(m, v, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+    CHECK(tfem_fix(m, v, TFEM_COMPONENT_Y, -1e-3) == TFEM_STATUS_OK);
+  }
+  CHECK(tfem_add_contact_pair(m, 4, 7, NULL) == TFEM_STATUS_OK);
+  return m;
+}
+
+/* Found by an outside probe of rigid tools: a rigid punch (every node
+ * prescribed) given a nominal E = 1e3 against a block of 2e11 set the
+ * contact modulus (the smaller E of the pair): the overlap took 99.98 % of
+ * the indentation and the punch force was 2e-4 of the right one, status
+ * OK. A wholly prescribed side now leaves E_c to the other body. */
+static void a_rigid_punchs_nominal_modulus_does_not_set_the_penalty(void) {
+  static mesh_t P;
+  memset(&P, 0, sizeof P);
+  grid(&P, 4, 4, 0.0, 0.0, 1.0, 1.0, 1, 1);
+  int first_punch = P.nn;
+  grid(&P, 4, 1, 0.0, 1.0, 1.0, 0.25, 2, 5);
+  double force[2] = {0, 0};
+  double e[2] = {2e11, 1e3};
+  for (int k = 0; k < 2; ++k) {
+    tfem_model *m = punch_scene(&P, first_punch, e[k]);
+    CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+    static double r[2 * 4096];
+    CHECK(tfem_get_reactions(m, r, 2 * P.nn) == TFEM_STATUS_OK);
+    for (int v = first_punch; v < P.nn; ++v) force[k] -= r[2 * v + 1];
+    tfem_destroy(m);
+  }
+  CHECK(force[0] > 1e7 && fabs(force[1] - force[0]) <= 1e-13 * force[0]);
+}
+
+/* Found by the same probe: a model with every DOF prescribed was refused
+ * as singular, "body 1 is not restrained (free mode: )", and a load step
+ * of a contact between two prescribed sides said "0 interface unknowns are
+ * too many". Both now say what is the matter. */
+static void nothing_to_solve_is_said_in_words(void) {
+  static mesh_t P;
+  memset(&P, 0, sizeof P);
+  grid(&P, 4, 4, 0.0, 0.0, 1.0, 1.0, 1, 1);
+  int first_punch = P.nn;
+  grid(&P, 4, 1, 0.0, 1.0, 1.0, 0.25, 2, 5);
+  tfem_model *m = punch_scene(&P, first_punch, 2e11);
+  for (int v = 0; v < first_punch; ++v) {
+    CHECK(tfem_fix(m, v, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+    CHECK(tfem_fix(m, v, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  }
+  EXPECT_ERROR(m, tfem_solve_contact(m, NULL, NULL), TFEM_STATUS_INVALID_STATE, "every DOF of the model is prescribed");
+  EXPECT_ERROR(m, tfem_step(m, 1.0, NULL, NULL), TFEM_STATUS_INVALID_STATE, "leave at least one DOF free");
+  tfem_destroy(m);
+
+  m = model_of(&P, 2, 2e11, 1.0, TFEM_PLANE_MODE_STRAIN);
+  for (int v = 0; v < P.nn; ++v) {
+    CHECK(tfem_fix(m, v, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+    CHECK(tfem_fix(m, v, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  }
+  EXPECT_ERROR(m, tfem_solve(m, NULL), TFEM_STATUS_INVALID_STATE, "nothing to solve");
+  tfem_destroy(m);
+
+  m = punch_scene(&P, first_punch, 2e11);
+  CHECK(tfem_fix_edges(m, 4, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 4, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  EXPECT_ERROR(m, tfem_step(m, 1.0, NULL, NULL), TFEM_STATUS_INVALID_ARGUMENT, "couples no free unknown");
+  tfem_destroy(m);
 }
 
 /* Found by a probe of load histories: reverting a step after friction was
@@ -2138,6 +2214,8 @@ int main(int argc, char **argv) {
   a_pressure_on_a_gmsh_curves_first_group_still_acts();
   fixing_a_gmsh_group_of_every_curve_fixes_the_whole_boundary();
   a_gmsh_physical_point_group_is_named_in_a_warning();
+  a_rigid_punchs_nominal_modulus_does_not_set_the_penalty();
+  nothing_to_solve_is_said_in_words();
   a_solve_under_any_memory_limit_fails_cleanly_or_succeeds();
 
   if (gmsh_dir[0] != '\0') rmdir(gmsh_dir);

@@ -295,7 +295,9 @@ module tfem
   type, bind(C) :: tfem_contact_options
     !> A `ContactLaw` value: 0 = frictionless (default), 1 = stick.
     integer(c_int) :: law
-    !> E_c of the contact elements; 0 = the smaller E of the two bodies.
+    !> E_c of the contact elements; 0 = the smaller E of the two bodies, or where one side of a pair
+    !! has every DOF of its contact nodes prescribed (a rigid tool) the other body's E (before
+    !! 2026-11-24 the smaller E also there: a rigid tool given a nominal E set the penalty).
     real(c_double) :: contact_modulus
     !> λ of the contact elements (Jmin = h³/λ), model length units; 0 = the larger side of the
     !! mesh's bounding box.
@@ -475,6 +477,25 @@ module tfem
       integer(c_int), value :: index_base
       integer(c_int) :: status
     end function tfem_load_gmsh
+  end interface
+
+  interface
+    !> Writes the solved model to the file `path` (NUL-terminated; on Unix any bytes, as for
+    !! `tfem_load_gmsh`) as a VTK XML unstructured grid (`.vtu`, for ParaView): the mesh in its
+    !! initial configuration, point data `displacement` (3 components, z = 0), cell data `body`,
+    !! `J`, `strain` and `stress` (Voigt), and after a contact solve the elements of the contact
+    !! mesh B (appended after the body triangles, body −1) with `contact_active` and
+    !! `contact_pressure`. Added 2026-11-24. Returns TFEM_STATUS_INVALID_STATE before a solve,
+    !! TFEM_STATUS_IO when the file cannot be written (the message names it and the reason),
+    !! TFEM_STATUS_INVALID_ARGUMENT if the library was built without the `vtu` feature. The model is
+    !! never changed.
+    function tfem_write_vtu(model, path) &
+        bind(C, name="tfem_write_vtu") result(status)
+      import
+      type(c_ptr), value :: model
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int) :: status
+    end function tfem_write_vtu
   end interface
 
   interface

@@ -347,7 +347,10 @@ typedef struct tfem_contact_options {
    */
   int law;
   /**
-   * E_c of the contact elements; 0 = the smaller E of the two bodies.
+   * E_c of the contact elements; 0 = the smaller E of the two bodies, or
+   * where one side of a pair has every DOF of its contact nodes prescribed
+   * (a rigid tool) the other body's E (before 2026-11-24 the smaller E
+   * also there: a rigid tool given a nominal E set the penalty).
    */
   double contact_modulus;
   /**
@@ -501,6 +504,21 @@ enum tfem_status tfem_set_mesh(struct tfem_model *model,
  * built without the `gmsh` feature.
  */
 enum tfem_status tfem_load_gmsh(struct tfem_model *model, const char *path, int index_base);
+
+/**
+ * Writes the solved model to the file `path` (NUL-terminated; on Unix any
+ * bytes, as for `tfem_load_gmsh`) as a VTK XML unstructured grid (`.vtu`,
+ * for ParaView): the mesh in its initial configuration, point data
+ * `displacement` (3 components, z = 0), cell data `body`, `J`, `strain` and
+ * `stress` (Voigt), and after a contact solve the elements of the contact
+ * mesh B (appended after the body triangles, body −1) with
+ * `contact_active` and `contact_pressure`. Added 2026-11-24.
+ * Returns TFEM_STATUS_INVALID_STATE before a solve, TFEM_STATUS_IO when
+ * the file cannot be written (the message names it and the reason),
+ * TFEM_STATUS_INVALID_ARGUMENT if the library was built without the `vtu`
+ * feature. The model is never changed.
+ */
+enum tfem_status tfem_write_vtu(struct tfem_model *model, const char *path);
 
 /**
  * Sets the tagged boundary edges: `n_edges` edges given by `edge_nodes`

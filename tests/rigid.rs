@@ -143,6 +143,35 @@ fn a_rigid_cylinder_gives_hertz_with_the_elastic_bodys_modulus_alone() {
     assert!(rp > 1.5 && ep[3] < 3e-3, "p0 errors {ep:?}, rate {rp}");
 }
 
+#[test]
+fn a_rigid_bodys_nominal_modulus_does_not_set_the_contact_penalty() {
+    // Found by an outside probe: a punch given E = 1e3 against the block's
+    // 2e11 made E_c = 1e3 (the smaller of the pair), the overlap took
+    // 99.98 % of the indentation and the force was 2.05e4 against 1.07e8,
+    // with an OK status. A wholly prescribed side now leaves E_c to the
+    // other body: the same force as a punch given the block's E (up to the
+    // rounding of the punch's own K u, zero for its rigid translation).
+    let p = FlatPunch {
+        mesh_size: 1.0 / 8.0,
+        ..Default::default()
+    };
+    let force = |punch_e: f64| {
+        let mut scene = p.build().unwrap();
+        let m = tfem::Material::new(punch_e, p.nu, tfem::PlaneMode::Strain, "punch").unwrap();
+        scene.model.set_material(2, m).unwrap();
+        scene.solve(&p, &ContactOptions::default()).unwrap().force
+    };
+    let reference = force(p.e);
+    assert!(reference > 1e7, "{reference}");
+    for e in [1e3, 1e9] {
+        let f = force(e);
+        assert!(
+            (f - reference).abs() <= 1e-13 * reference,
+            "punch E = {e:e}: {f} against {reference}"
+        );
+    }
+}
+
 /// The flat punch at h = a/8 under contact modulus `e_c`: the model's
 /// warnings after the solve.
 fn punch_warnings(e_c: Option<f64>) -> Vec<String> {

@@ -48,7 +48,10 @@ pub enum OrderingMode {
 pub struct TfemContactOptions {
     /// A `ContactLaw` value: 0 = frictionless (default), 1 = stick.
     pub law: c_int,
-    /// E_c of the contact elements; 0 = the smaller E of the two bodies.
+    /// E_c of the contact elements; 0 = the smaller E of the two bodies, or
+    /// where one side of a pair has every DOF of its contact nodes prescribed
+    /// (a rigid tool) the other body's E (before 2026-11-24 the smaller E
+    /// also there: a rigid tool given a nominal E set the penalty).
     pub contact_modulus: f64,
     /// λ of the contact elements (Jmin = h³/λ), model length units; 0 = the
     /// larger side of the mesh's bounding box.

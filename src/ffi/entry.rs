@@ -278,6 +278,41 @@ fn load_gmsh(_: &mut TfemModel, _: &std::path::Path, _: usize) -> Result<()> {
     ))
 }
 
+/// Writes the solved model to the file `path` (NUL-terminated; on Unix any
+/// bytes, as for `tfem_load_gmsh`) as a VTK XML unstructured grid (`.vtu`,
+/// for ParaView): the mesh in its initial configuration, point data
+/// `displacement` (3 components, z = 0), cell data `body`, `J`, `strain` and
+/// `stress` (Voigt), and after a contact solve the elements of the contact
+/// mesh B (appended after the body triangles, body −1) with
+/// `contact_active` and `contact_pressure`. Added 2026-11-24.
+/// Returns TFEM_STATUS_INVALID_STATE before a solve, TFEM_STATUS_IO when
+/// the file cannot be written (the message names it and the reason),
+/// TFEM_STATUS_INVALID_ARGUMENT if the library was built without the `vtu`
+/// feature. The model is never changed.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_write_vtu(model: *mut TfemModel, path: *const c_char) -> Status {
+    with_model(model, |m| {
+        if path.is_null() {
+            return Err(null("path"));
+        }
+        // SAFETY: a NUL-terminated string from the caller.
+        let path = unsafe { std::ffi::CStr::from_ptr(path) };
+        write_vtu(m, &path_of(path)?)
+    })
+}
+
+#[cfg(feature = "vtu")]
+fn write_vtu(m: &TfemModel, path: &std::path::Path) -> Result<()> {
+    crate::io::vtu::write_vtu(&m.model, path)
+}
+
+#[cfg(not(feature = "vtu"))]
+fn write_vtu(_: &TfemModel, _: &std::path::Path) -> Result<()> {
+    Err(Error::argument(
+        "this libtfem was built without the `vtu` feature",
+    ))
+}
+
 /// Sets the tagged boundary edges: `n_edges` edges given by `edge_nodes`
 /// (2·n_edges node indices) with a tag each in `tags`. Tags name the edges
 /// for loads, constraints and contact pairs. Replaces previous edges (use
@@ -1323,7 +1358,19 @@ pub unsafe extern "C" fn tfem_get_contact_state(
     length: usize,
 ) -> Status {
     with_model(model, |m| {
-        copy_out(&m.model.contact_state()?, buffer, length, "buffer")
+        let state = m.model.contact_state()?;
+        // The state is counted in bytes, not values (an outside probe read
+        // "holds 10 values but 19473 are needed").
+        if !buffer.is_null() && length < state.len() {
+            return Err(Error::new(
+                Status::BufferTooSmall,
+                format!(
+                    "`buffer` holds {length} bytes but {} are needed (tfem_get_contact_state_size)",
+                    state.len()
+                ),
+            ));
+        }
+        copy_out(&state, buffer, length, "buffer")
     })
 }
 

@@ -6,7 +6,7 @@
 //! mirrors of the Rust types with their conversions (`convert`).
 //!
 //! Conventions (repeated in the generated header):
-//! * Every function returns a [`Status`]; `TFEM_STATUS_OK` (0) is success.
+//! * Every function returns a [`crate::Status`]; `TFEM_STATUS_OK` (0) is success.
 //!   `tfem_last_error` gives the message of the last failed call.
 //! * Indices (nodes, triangles, edges) use the `index_base` given to
 //!   `tfem_set_mesh` (0 for C, 1 for Fortran) in every later call and in

@@ -289,6 +289,7 @@ pub(crate) fn step(
             "load_factor = {t:?} must be finite and at most 1e300 in magnitude"
         )));
     }
+    super::ensure_unknowns(&session.dofs)?;
     let mut warnings = Vec::new();
     let current = session.history.as_ref().is_some_and(|h| h.key == key);
     // What a failed step must put back: the history it continues or
@@ -447,6 +448,12 @@ fn assemble_bodies(
 fn check_condensable(options: &ContactOptions, interface: usize, nnz: usize) -> Result<()> {
     let why = if options.refactorize {
         "the options ask for `refactorize`".to_string()
+    } else if interface == 0 {
+        // Not "too many": an outside probe read "0 interface unknowns are
+        // too many for it" for a contact between prescribed sides.
+        "the contact couples no free unknown (every DOF of its nodes is prescribed), so there \
+         is no interface to condense"
+            .to_string()
     } else if !Condensed::worthwhile(interface, nnz) {
         format!("{interface} interface unknowns are too many for it")
     } else {

@@ -1,9 +1,9 @@
-//! Solving a problem: the [`session`] derived from its structure and
+//! Solving a problem: the `session` derived from its structure and
 //! reused while the structure holds, the [`system`] assembled into it, the
-//! [`linear`] solve with its [`diagnostics`], the [`condensed`] interface
-//! system and the [`active_set`] loop of the contact solve.
+//! `linear` solve with its `diagnostics`, the [`condensed`] interface
+//! system and the `active_set` loop of the contact solve.
 //!
-//! A solve reads the problem through [`Input`] and returns an [`Outcome`]
+//! A solve reads the problem through `Input` and returns an `Outcome`
 //! (displacements over every global DOF, statistics, the contact state);
 //! it changes nothing but the session, so that a failed solve leaves the
 //! model's results as they were.
@@ -99,6 +99,7 @@ pub(crate) fn solve(
     options: Option<&ContactOptions>,
     timings: &mut Timings,
 ) -> Result<Outcome> {
+    ensure_unknowns(&session.dofs)?;
     session.set_system_of(None);
     // A solve refactorises and reassembles: a load history's K₁ is gone.
     session.history = None;
@@ -117,6 +118,20 @@ pub(crate) fn solve(
         None => solve_plain(session, input, info, timings, warnings),
         Some(options) => solve_contact(session, input, options, info, timings, warnings),
     }
+}
+
+/// Refuses a model whose every DOF is prescribed: there is no system to
+/// solve, and the factorisation of its empty matrix read as singular ("body
+/// 1 is not restrained (free mode: )", found by an outside probe).
+pub(crate) fn ensure_unknowns(dofs: &DofMap) -> Result<()> {
+    if dofs.n_free() > 0 {
+        return Ok(());
+    }
+    Err(crate::error::Error::state(format!(
+        "every DOF of the model is prescribed ({} DOFs): there is nothing to solve — the \
+         displacements are the prescribed values; leave at least one DOF free",
+        dofs.n_global()
+    )))
 }
 
 /// Rebuilds in `session` the final system of an earlier successful solve of
@@ -158,9 +173,15 @@ pub(crate) fn contact_set<'a>(
     anchors: &[f64],
 ) -> Result<ContactSet<'a>> {
     let (mesh, elements) = (input.elements.mesh(), &input.elements);
+    let rigid = rigid_sides(input.pairs, contact, mesh, dofs);
     let soft = |pair: usize| {
         let p = &input.pairs[pair];
-        softer(*elements.material(p.body_a), *elements.material(p.body_b))
+        let (a, b) = (*elements.material(p.body_a), *elements.material(p.body_b));
+        match rigid[pair] {
+            [true, false] => b,
+            [false, true] => a,
+            _ => softer(a, b),
+        }
     };
     let laws = element_laws(mesh.index_base(), contact, soft, mesh.size(), options)?;
     let equation = |g: usize| Some(dofs.free(g)).filter(|&f| f != NOT_FREE);
@@ -194,6 +215,44 @@ pub(crate) fn contact_set<'a>(
         })
         .collect();
     set.with_friction(&mu, &shear, anchors, prescribed)
+}
+
+/// For each pair, whether each side (a, b) is a rigid tool: every DOF of
+/// its contact nodes prescribed. Such a side moves as prescribed whatever
+/// its body's stiffness, so its material must not set the pair's contact
+/// law — a "rigid" punch given a nominal E of 1e3 against a steel block
+/// made E_c = 1e3, and the penalty overlap took 99.98 % of the indentation
+/// with an OK status (an outside probe). The pair's law then follows the
+/// other body (docs/method.md §6.14). A pair with no element (or
+/// self-contact, where the sides are one body) keeps the softer body.
+fn rigid_sides(
+    pairs: &[ContactPair],
+    contact: &[ContactElement],
+    mesh: &Mesh,
+    dofs: &DofMap,
+) -> Vec<[bool; 2]> {
+    let mut rigid = vec![[false; 2]; pairs.len()];
+    let mut seen = vec![[false; 2]; pairs.len()];
+    for el in contact {
+        let p = &pairs[el.pair];
+        if p.body_a == p.body_b {
+            continue;
+        }
+        for &n in &el.nodes {
+            let side = match mesh.node_body()[n] {
+                Some(b) if b == p.body_a => 0,
+                Some(b) if b == p.body_b => 1,
+                _ => continue,
+            };
+            let fixed = (0..2).all(|c| dofs.free(2 * n + c) == NOT_FREE);
+            if !seen[el.pair][side] {
+                seen[el.pair][side] = true;
+                rigid[el.pair][side] = true;
+            }
+            rigid[el.pair][side] &= fixed;
+        }
+    }
+    rigid
 }
 
 /// The warning about well-shaped elements that tempering softens.

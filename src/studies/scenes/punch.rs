@@ -5,9 +5,9 @@
 //! (`Model::fix` on both components of every node: here the indentation,
 //! a rigid translation): its own elements then only load the prescribed
 //! DOFs, and the contact pair joins it to the elastic body as any other
-//! (docs/method.md §6.14). Its material matters only through the contact
-//! modulus E_c (the smaller E of the pair, docs/method.md §6.3): give it
-//! the elastic body's. The force it takes is its reaction.
+//! (docs/method.md §6.14). Its material does not matter: a pair with a
+//! wholly prescribed side takes the contact modulus E_c from the other
+//! body. The force it takes is its reaction.
 //!
 //! Flat punch (Sneddon; Johnson, *Contact Mechanics*, §5.2): a rigid flat
 //! punch of half-width a pressed by a force P (per unit thickness) into a
@@ -177,7 +177,7 @@ impl FlatPunch {
         model.set_boundary_edges(&edges, &tags)?;
         let plane = PlaneMode::Strain;
         model.set_material(1, Material::new(self.e, self.nu, plane, "block")?)?;
-        // The punch's modulus only sets E_c (the smaller of the pair's).
+        // The punch's material plays no part (a rigid side, §6.14).
         model.set_material(2, Material::new(self.e, self.nu, plane, "punch")?)?;
         model.set_tempering(Tempering::Auto)?;
         for v in axis {
