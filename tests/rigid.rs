@@ -172,6 +172,62 @@ fn a_rigid_bodys_nominal_modulus_does_not_set_the_contact_penalty() {
     }
 }
 
+/// The rigid cylinder at h = a/`k` with its mesh `ratio` times the block's
+/// (1: nearly matching nodes): the solved scene's report and warnings.
+fn rigid_cylinder(k: f64, ratio: f64) -> (RigidCylinderResult, Vec<String>) {
+    let base = RigidCylinder::default();
+    let rc = RigidCylinder {
+        hertz: Hertz {
+            mesh_size: base.hertz.half_width / k,
+            cylinder_mesh_ratio: ratio,
+            ..base.hertz
+        },
+        ..base
+    };
+    let mut scene = rc.build().unwrap();
+    let r = scene.solve(&rc, &ContactOptions::default()).unwrap();
+    (r, scene.scene.model.warnings())
+}
+
+#[test]
+fn the_contact_length_of_a_rigid_cylinder_is_its_contact_width() {
+    // Found by an outside probe: one family of B (edges on the cylinder's
+    // chords, apices the block's nodes) carries a rigid curved contact
+    // alone, and ℓc, the mean of the two families, read half the width
+    // (ℓc/a − 1 = −0.44 … −0.50 at h = a/8 … a/64) while the pressures
+    // followed Hertz to 2e-3. ℓc is now the longer-active family's (the
+    // half model: ℓc ≈ a, resolved to an edge).
+    for k in [8.0, 16.0, 32.0] {
+        let (r, _) = rigid_cylinder(k, 1.0);
+        let (lc, a) = (r.hertz.report.contact_length, r.hertz.a_exact);
+        assert!(
+            (lc - a).abs() <= 1.5 * a / k,
+            "h = a/{k}: ℓc = {lc:e}, a = {a:e}"
+        );
+    }
+}
+
+#[test]
+fn a_one_sided_contact_is_warned_about_and_a_two_sided_one_is_not() {
+    // A rigid curved tool keeps its polygon, so one family of B carries
+    // the contact alone: measured, the shorter family is active over 0.125
+    // of the longer's length at h = a/16 (0.06, 0.03 at a/32, a/64; the
+    // cylinder 2.5× finer: 0.77, 0.34, 0.16). An elastic cylinder of the
+    // block's modulus flattens, and both families carry it (0.69 … 0.81
+    // with the cylinder mesh 2.5× coarser or finer).
+    let (_, loud) = rigid_cylinder(16.0, 1.0);
+    assert!(loud.iter().any(|w| w.contains("is one-sided")), "{loud:?}");
+    let elastic = Hertz {
+        mesh_size: Hertz::default().half_width / 16.0,
+        cylinder_mesh_ratio: 2.5,
+        ..Default::default()
+    };
+    let mut scene = elastic.build().unwrap();
+    scene.solve(&elastic, &ContactOptions::default()).unwrap();
+    let quiet = scene.model.warnings();
+    assert!(quiet.iter().all(|w| !w.contains("one-sided")), "{quiet:?}");
+}
+
 /// The flat punch at h = a/8 under contact modulus `e_c`: the model's
 /// warnings after the solve.
 fn punch_warnings(e_c: Option<f64>) -> Vec<String> {

@@ -17,6 +17,7 @@
 //! opening, not on the displacement jump alone, so an element that closes an
 //! initial gap switches on without a force jump.
 
+pub mod conformity;
 pub mod host;
 pub mod law;
 pub mod mesh;

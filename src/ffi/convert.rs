@@ -112,9 +112,13 @@ pub struct TfemContactReport {
     pub elements: c_int,
     /// Active elements at convergence.
     pub active: c_int,
-    /// Contact length ℓc (half the summed interface-edge length of the
-    /// active elements, each as far as it faces the other side), model
-    /// length units.
+    /// Contact length ℓc, model length units: the summed interface-edge
+    /// length of the active elements, each as far as it faces the other
+    /// side, of one of B's two families (edges on one side or on the other)
+    /// in each connected strip, the one active over the longer length.
+    /// Until 2026-11-24 the mean of the two families, which counted half the
+    /// width of a contact carried by one family alone (curved sides whose
+    /// nodes differ, rigid curved tools; docs/method.md §6.8).
     pub contact_length: f64,
     /// Largest normal interpenetration, model length units.
     pub max_penetration: f64,

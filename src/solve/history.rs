@@ -730,6 +730,7 @@ fn step_in_history(
     .run_to_interface();
     let step = Step {
         set: &set,
+        pairs: input.pairs,
         prescribed: &prescribed,
         dofs,
         at: (key, t),
@@ -817,6 +818,7 @@ fn on_loop_error(
 /// before it (to go back to on error).
 struct Step<'a, 's> {
     set: &'a ContactSet<'s>,
+    pairs: &'a [crate::contact::ContactPair],
     prescribed: &'a [f64],
     dofs: &'a DofMap,
     /// The history's key and the step's load factor.
@@ -845,7 +847,7 @@ fn on_interface(
         };
         let ue_of = |tri: &[usize; 3]| std::array::from_fn(|a| value(2 * tri[a / 2] + a % 2));
         contact_outcome(
-            step.set,
+            (step.set, step.pairs),
             ue_of,
             (active.clone(), &friction),
             records,
@@ -892,7 +894,7 @@ fn on_full_solve(
     let ue_of = |tri: &[usize; 3]| crate::fem::element_loop::element_values(&u, tri);
     let verdict = (settled.active, &settled.friction[..]);
     let contact = contact_outcome(
-        step.set,
+        (step.set, step.pairs),
         ue_of,
         verdict,
         settled.history,

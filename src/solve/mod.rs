@@ -391,7 +391,15 @@ fn solve_contact(
     drop(settled.x);
     let ue_of = |tri: &[usize; 3]| element_values(&u, tri);
     let verdict = (settled.active, &settled.friction[..]);
-    let contact = contact_outcome(&set, ue_of, verdict, settled.history, info, &mut warnings)?;
+    let contact = contact_outcome(
+        (&set, input.pairs),
+        ue_of,
+        verdict,
+        settled.history,
+        info,
+        &mut warnings,
+    )?;
+
     Ok(Outcome {
         u: Field::Global(u),
         log: system.log().to_vec(),
@@ -472,7 +480,7 @@ pub(crate) fn finite_statistics(info: &SolveInfo) -> Result<()> {
 /// Pressures, contact length and penetration of the settled set (flags over
 /// parts, with its friction load factors), and its frictional state.
 pub(crate) fn contact_outcome(
-    set: &ContactSet<'_>,
+    (set, pairs): (&ContactSet<'_>, &[ContactPair]),
     ue_of: impl Fn(&[usize; 3]) -> [f64; 6],
     (mut active, friction): (Vec<bool>, &[f64]),
     history: Vec<report::IterationRecord>,
@@ -495,16 +503,20 @@ pub(crate) fn contact_outcome(
         }
         let ue = ue_of(&el.nodes);
         pressure[k] = set.pressure(k, &ue);
-        // The part of its edge that faces the other side (§6.8, §6.11).
-        lc += 0.5 * el.facing;
         let opening = set.opening(k, &ue);
         if el.edge_length > 0.0 {
             max_pen = max_pen.max(-opening / el.edge_length);
         }
     }
+    // The part of each edge that faces the other side, the longer-active
+    // family of each strip (§6.8, §6.11).
+    lc += crate::contact::conformity::contact_length(elements, &active);
     let name = |k: usize| format!("contact element {}", k + set.nodes().base);
     ensure_finite(pressure.iter().copied(), 1, "contact pressure", name)?;
     precision_warning(set, &ue_of, &active, &pressure, warnings);
+    warnings.extend(crate::contact::conformity::one_sided_warnings(
+        elements, &active, pairs,
+    ));
     ensure_finite([lc, max_pen], 1, "contact length or penetration", |_| {
         "the contact report".to_string()
     })?;

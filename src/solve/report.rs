@@ -61,10 +61,11 @@ pub struct ContactReport {
     pub elements: usize,
     /// Active (inverted) elements at convergence.
     pub active: usize,
-    /// Contact length ℓc: half the summed interface-edge length of the
-    /// active elements, each as far as it faces the other side (each point
-    /// of the interface is covered by one element with its edge on each
-    /// side).
+    /// Contact length ℓc: in each connected strip of B, the summed
+    /// interface-edge length (as far as it faces the other side) of the
+    /// active elements of the family — edges on one side, or on the other;
+    /// each tiles the interface once — active over the longer length
+    /// (docs/method.md §6.8; the mean of the two until 2026-11-24).
     pub contact_length: f64,
     /// Largest normal interpenetration (−opening / edge length) of an active
     /// element, in model length units; 0 when nothing penetrates.

@@ -1,0 +1,265 @@
+//! The two families of B and one-sided contact (docs/method.md §6.8 and
+//! §6.11, "One-sided contact").
+//!
+//! Every point of an interface lies under two elements of B, one with its
+//! edge on either side (two families, each tiling the interface once), and
+//! on touching sides that conform both are active. Where the two sides are
+//! polygons that do not conform — a curved interface meshed with different
+//! nodes on its two sides, a rigid curved tool, and in part any curved
+//! contact (the chords of the convex side) — the nodes of one side touch
+//! the other side's chords while the other side's nodes stand off the
+//! first side's chords by the difference of their sagittas, far more than
+//! the penalty's overlap: one family carries the contact alone. The solve
+//! is then the exact contact of those two polygons; ℓc counts, strip by
+//! strip, the family active over the longer length (the mean of the two,
+//! as before 2026-11-24, counted half the width of a one-sided contact:
+//! an outside probe's rigid cylinder, ℓc 0.50 of 2a at h = a/64). Where
+//! the carrying family's apices are the finer side's nodes, only those
+//! nearest the other side's edge midpoints carry force, and the nodal
+//! forces are lumpy (a Lamé fit with the outer ring 2× coarser: nodal
+//! pressures 0.51 p … 2 p, hoop stress next to the interface off by
+//! 0.73 p; a rigid cylinder 2.5× finer than the block: −15 % at the axis),
+//! though with nearly matching nodes they can be right (a rigid cylinder:
+//! 2e-3): [`one_sided_warnings`] says so.
+
+use std::collections::HashMap;
+
+use super::{ContactElement, ContactPair};
+
+/// Below this share of the other family's active length a family counts
+/// as missing. Measured, the smaller family's share: 1 on flat interfaces
+/// (matching or not) and the seed scene; Hertz with equal moduli 0.52–0.8
+/// (the matching mesh's cylinder chords, §6.2's chord-normal defect,
+/// 0.64, 0.58, 0.52 at h = a/16 … a/64); one-sided pairs 0–0.1.
+const SHARE: f64 = 0.2;
+
+/// Fewer active elements than this in a strip say nothing (a contact a
+/// few elements wide has no interior).
+const MIN_ACTIVE: usize = 8;
+
+/// One connected strip of B: its elements' families and, per family, the
+/// active length, the active count, and the sum and count of all edges.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Strip {
+    /// The pair of its elements.
+    pub pair: usize,
+    /// Σ f_e over its active elements, per family.
+    pub active_length: [f64; 2],
+    /// Its active elements.
+    pub active: usize,
+    /// Σ ℓ_e over all its elements, per family.
+    pub edge_sum: [f64; 2],
+    /// Its elements, per family.
+    pub count: [usize; 2],
+}
+
+/// The strips of B (connected through shared nodes), with their elements
+/// split into the two families by the side of their edge: the two nodes of
+/// an element's edge are on one side and its apex on the other, so the
+/// sides are the two colours of the graph whose vertices are the sides'
+/// polylines. Elements of a strip that cannot be so coloured (a user's B
+/// with an apex on both sides of one edge chain) form no strip and are
+/// returned apart, as (pair, active length).
+pub fn strips(elements: &[ContactElement], active: &[bool]) -> (Vec<Strip>, Vec<(usize, f64)>) {
+    let mut dsu = Dsu::default();
+    let edge = |el: &ContactElement| {
+        let mut e = el.nodes.iter().copied().filter(|&v| v != el.apex);
+        (e.next().unwrap_or(el.apex), e.next().unwrap_or(el.apex))
+    };
+    for el in elements {
+        let (p, q) = edge(el);
+        dsu.union(p, q);
+        dsu.find(el.apex);
+    }
+    // Polylines joined by elements: (edge's, apex's), coloured apart.
+    let mut links: HashMap<usize, Vec<usize>> = HashMap::new();
+    for el in elements {
+        let (e, a) = (dsu.find(edge(el).0), dsu.find(el.apex));
+        links.entry(e).or_default().push(a);
+        links.entry(a).or_default().push(e);
+    }
+    let mut colour: HashMap<usize, (usize, u8)> = HashMap::new();
+    let mut bad: Vec<bool> = Vec::new();
+    let mut roots: Vec<usize> = links.keys().copied().collect();
+    roots.sort_unstable();
+    for r in roots {
+        if colour.contains_key(&r) {
+            continue;
+        }
+        let g = bad.len();
+        bad.push(false);
+        colour.insert(r, (g, 0));
+        let mut stack = vec![r];
+        while let Some(c) = stack.pop() {
+            let (_, k) = colour[&c];
+            for &n in &links[&c] {
+                match colour.get(&n) {
+                    None => {
+                        colour.insert(n, (g, 1 - k));
+                        stack.push(n);
+                    }
+                    Some(&(_, kn)) if kn == k => bad[g] = true,
+                    Some(_) => {}
+                }
+            }
+        }
+    }
+    let mut by_graph: HashMap<(usize, usize), Strip> = HashMap::new();
+    let mut apart = Vec::new();
+    for (el, &on) in elements.iter().zip(active) {
+        let (g, k) = colour[&dsu.find(edge(el).0)];
+        if bad[g] {
+            if on {
+                apart.push((el.pair, el.facing));
+            }
+            continue;
+        }
+        let s = by_graph.entry((g, el.pair)).or_insert_with(|| Strip {
+            pair: el.pair,
+            ..Default::default()
+        });
+        let k = usize::from(k);
+        s.edge_sum[k] += el.edge_length;
+        s.count[k] += 1;
+        if on {
+            s.active_length[k] += el.facing;
+            s.active += 1;
+        }
+    }
+    let mut out: Vec<((usize, usize), Strip)> = by_graph.into_iter().collect();
+    out.sort_unstable_by_key(|(k, _)| *k);
+    (out.into_iter().map(|(_, s)| s).collect(), apart)
+}
+
+/// ℓc (docs/method.md §6.8): strip by strip, the active length of the
+/// family active over the longer length; elements that form no strip count
+/// half, as each point lies under two of them.
+pub fn contact_length(elements: &[ContactElement], active: &[bool]) -> f64 {
+    let (strips, apart) = strips(elements, active);
+    // Folded from +0.0: `Sum` for f64 starts from −0.0, which an empty
+    // active set would return.
+    let whole = strips.iter().fold(0.0, |sum, s| {
+        sum + s.active_length[0].max(s.active_length[1])
+    });
+    apart.iter().fold(whole, |sum, (_, l)| sum + 0.5 * l)
+}
+
+/// A warning for each strip that one family carries alone ([`SHARE`]),
+/// naming the pair by its tags.
+pub fn one_sided_warnings(
+    elements: &[ContactElement],
+    active: &[bool],
+    pairs: &[ContactPair],
+) -> Vec<String> {
+    let (strips, _) = strips(elements, active);
+    let mut warnings = Vec::new();
+    for s in strips {
+        let [la, lb] = s.active_length;
+        let (long, short) = (la.max(lb), la.min(lb));
+        if s.active < MIN_ACTIVE || short >= SHARE * long {
+            continue;
+        }
+        let p = &pairs[s.pair];
+        warnings.push(format!(
+            "contact pair {} (tags {}, {}) is one-sided: the elements of B with their edge on one \
+             side are active over {long:.3e}, those with their edge on the other over \
+             {short:.3e}; the two sides' polygons do not conform (a curved interface meshed with \
+             different nodes on its two sides, or a stiff or rigid curved tool), and the nodal \
+             contact pressures and the stresses next to the interface can be off by O(p) \
+             (docs/method.md §6.11, \"One-sided contact\"); give the sides matching nodes where \
+             the interface is curved",
+            s.pair, p.tag_a, p.tag_b
+        ));
+    }
+    warnings
+}
+
+/// Union–find over node numbers.
+#[derive(Default)]
+struct Dsu {
+    parent: HashMap<usize, usize>,
+}
+
+impl Dsu {
+    fn find(&mut self, v: usize) -> usize {
+        let mut r = *self.parent.entry(v).or_insert(v);
+        while self.parent[&r] != r {
+            r = self.parent[&r];
+        }
+        // Path compression.
+        let mut c = v;
+        while self.parent[&c] != r {
+            let next = self.parent[&c];
+            self.parent.insert(c, r);
+            c = next;
+        }
+        r
+    }
+
+    fn union(&mut self, a: usize, b: usize) {
+        let (ra, rb) = (self.find(a), self.find(b));
+        if ra != rb {
+            self.parent.insert(ra.max(rb), ra.min(rb));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The strip between side a (nodes 0..=n along y = 0) and side b
+    /// (nodes n+1..=2n+1, matching, along y = 0): edge (i, i+1) of a with
+    /// apex b_{i+1}, edge (b_i, b_{i+1}) with apex a_i, unit edges.
+    fn matching_strip(n: usize) -> Vec<ContactElement> {
+        let b = |i: usize| n + 1 + i;
+        let el = |nodes: [usize; 3], apex: usize| ContactElement {
+            nodes,
+            normal: [0.0, 1.0],
+            j0: 0.0,
+            h: 1.0,
+            edge_length: 1.0,
+            facing: 1.0,
+            pair: 0,
+            apex,
+        };
+        (0..n)
+            .flat_map(|i| {
+                [
+                    el([i, i + 1, b(i + 1)], b(i + 1)),
+                    el([b(i + 1), b(i), i], i),
+                ]
+            })
+            .collect()
+    }
+
+    #[test]
+    fn both_families_active_count_the_interface_once() {
+        let els = matching_strip(4);
+        assert_eq!(contact_length(&els, &vec![true; els.len()]), 4.0);
+    }
+
+    #[test]
+    fn one_family_active_alone_counts_its_whole_length() {
+        let els = matching_strip(4);
+        let active: Vec<bool> = (0..els.len()).map(|k| k % 2 == 0).collect();
+        assert_eq!(contact_length(&els, &active), 4.0);
+    }
+
+    #[test]
+    fn families_that_disagree_count_the_longer() {
+        let els = matching_strip(4);
+        // Family a over 3 edges, family b over 2.
+        let active: Vec<bool> = (0..els.len())
+            .map(|k| if k % 2 == 0 { k / 2 < 3 } else { k / 2 < 2 })
+            .collect();
+        assert_eq!(contact_length(&els, &active), 3.0);
+    }
+
+    #[test]
+    fn nothing_active_is_plus_zero() {
+        let els = matching_strip(3);
+        let lc = contact_length(&els, &vec![false; els.len()]);
+        assert!(lc == 0.0 && lc.is_sign_positive());
+    }
+}
