@@ -2146,6 +2146,101 @@ static void a_solve_under_any_memory_limit_fails_cleanly_or_succeeds(void) {
 #endif
 }
 
+/* Found by a review: a host node number below the index base (0 at base
+ * 1, or negative) was accepted as a node. Refused with INVALID_ARGUMENT
+ * naming the side, the entry and the number, in a side and in a host's
+ * contact triangle; the context is unchanged (the side given right is
+ * then side 0, the pair then pair 0). */
+static void a_host_node_below_the_index_base_is_refused(void) {
+  tfem_contact *c = tfem_contact_create(1);
+  int nodes[2] = {7, 0}, edges[2] = {7, 0}, side = -1;
+  double xy[4] = {0.0, 0.0, 1.0, 0.0};
+  int64_t eq[4] = {1, 2, 3, 4};
+  expect_contact_error(c, tfem_contact_add_side(c, 5, 1, 1e9, 0.3, 0, 2, nodes, xy, eq, 1, edges, &side),
+                       TFEM_STATUS_INVALID_ARGUMENT, "side 0 (tag 5): node 0 (entry 2)",
+                       "below the index base 1", __LINE__);
+  nodes[1] = -3, edges[1] = -3;
+  expect_contact_error(c, tfem_contact_add_side(c, 5, 1, 1e9, 0.3, 0, 2, nodes, xy, eq, 1, edges, &side),
+                       TFEM_STATUS_INVALID_ARGUMENT, "node -3 (entry 2)", "below the index base 1", __LINE__);
+  CHECK(side == -1);
+  tfem_contact_destroy(c);
+
+  c = two_host_sides(1.0, MATCHING); /* base 0 */
+  int tris[6] = {10, 11, 21, 11, -1, 21}, pair = -1;
+  expect_contact_error(c, tfem_contact_add_pair_with_mesh(c, 0, 1, 2, tris, &pair), TFEM_STATUS_INVALID_ARGUMENT,
+                       "pair 0 (sides 0 and 1), contact triangle 1: node -1 (its second)",
+                       "below the index base 0", __LINE__);
+  CHECK(pair == -1 && tfem_contact_add_pair(c, 0, 1, &pair) == TFEM_STATUS_OK && pair == 0);
+  tfem_contact_destroy(c);
+}
+
+/* Found by a review: equation numbers up to INT64_MAX were accepted by
+ * tfem_contact_add_side and refused only at tfem_contact_gather. The
+ * host's system size is not known at declaration, but no array of
+ * doubles spans more than PTRDIFF_MAX bytes: an equation from index_base
+ * + PTRDIFF_MAX / 8 on is refused there, naming the node and the
+ * equation, the context unchanged; the largest one below is accepted, and
+ * so is any value below the base (a DOF without an equation). */
+static void an_equation_no_host_vector_can_hold_is_refused_at_declaration(void) {
+  const int64_t vectors = (int64_t)(PTRDIFF_MAX / sizeof(double));
+  for (int base = 0; base <= 1; ++base) {
+    int64_t last = vectors - 1 + base, bad[2] = {INT64_MAX, last + 1};
+    char needle[96];
+    for (int k = 0; k < 2; ++k) {
+      tfem_contact *c = tfem_contact_create(base);
+      int nodes[2] = {7, 8}, edges[2] = {7, 8}, side = -1;
+      double xy[4] = {0.0, 0.0, 1.0, 0.0};
+      int64_t eq[4] = {base, base + 1, base + 2, bad[k]};
+      snprintf(needle, sizeof needle, "node 8 (entry %d) has equation %lld for its y unknown", 1 + base,
+               (long long)bad[k]);
+      expect_contact_error(c, tfem_contact_add_side(c, 5, 1, 1e9, 0.3, 0, 2, nodes, xy, eq, 1, edges, &side),
+                           TFEM_STATUS_INVALID_ARGUMENT, needle, "beyond any host vector", __LINE__);
+      eq[3] = last;
+      CHECK(side == -1 && tfem_contact_add_side(c, 5, 1, 1e9, 0.3, 0, 2, nodes, xy, eq, 1, edges, &side) ==
+                              TFEM_STATUS_OK && side == 0);
+      eq[1] = INT64_MIN, eq[3] = base - 5;
+      nodes[0] = 9, nodes[1] = 10, edges[0] = 9, edges[1] = 10;
+      CHECK(tfem_contact_add_side(c, 6, 2, 1e9, 0.3, 0, 2, nodes, xy, eq, 1, edges, &side) == TFEM_STATUS_OK);
+      tfem_contact_destroy(c);
+    }
+  }
+}
+
+/* Found by a review: a step could not be reverted once a DOF was fixed
+ * since, as if that remade the contact mesh its state belongs to. A new
+ * prescribed DOF changes the stiffness (and so the interface factor, made
+ * anew by the next step), not the contact mesh, as new materials do,
+ * which never blocked a revert. The next step starts from the state
+ * before the reverted step, bit for bit as a new model with that DOF
+ * fixed given that state; turning friction on (which remakes the contact
+ * mesh) still blocks the revert, and the message names that change. */
+static void a_step_is_reverted_across_a_newly_fixed_dof(void) {
+  tfem_model *m = two_blocks();
+  CHECK(tfem_step(m, 0.5, NULL, NULL) == TFEM_STATUS_OK);
+  size_t size = 0;
+  CHECK(tfem_get_contact_state_size(m, &size) == TFEM_STATUS_OK && size > 0);
+  uint8_t *state = malloc(size);
+  CHECK(state != NULL && tfem_get_contact_state(m, state, size) == TFEM_STATUS_OK);
+  CHECK(tfem_step(m, 1.0, NULL, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_fix(m, 45, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK); /* the upper top left corner */
+  CHECK(tfem_revert_step(m) == TFEM_STATUS_OK);
+  CHECK(tfem_step(m, 1.0, NULL, NULL) == TFEM_STATUS_OK);
+  tfem_model *fresh = two_blocks();
+  CHECK(tfem_fix(fresh, 45, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_set_contact_state(fresh, state, size) == TFEM_STATUS_OK);
+  CHECK(tfem_step(fresh, 1.0, NULL, NULL) == TFEM_STATUS_OK);
+  double u[2 * 64], v[2 * 64];
+  CHECK(tfem_get_displacements(m, u, 2 * B.nn) == TFEM_STATUS_OK);
+  CHECK(tfem_get_displacements(fresh, v, 2 * B.nn) == TFEM_STATUS_OK);
+  CHECK(memcmp(u, v, 2 * (size_t)B.nn * sizeof(double)) == 0);
+  CHECK(tfem_step(m, 1.5, NULL, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_set_friction(m, 0, 0.3) == TFEM_STATUS_OK);
+  EXPECT_ERROR(m, tfem_revert_step(m), TFEM_STATUS_INVALID_STATE, "cannot be reverted: friction on/off changed");
+  free(state);
+  tfem_destroy(fresh);
+  tfem_destroy(m);
+}
+
 int main(int argc, char **argv) {
   if (argc == 4 && strcmp(argv[1], "--solve-under-cap") == 0)
     return solve_under_cap(atof(argv[2]), argv[3]);
@@ -2199,6 +2294,9 @@ int main(int argc, char **argv) {
   an_array_too_large_to_copy_is_out_of_memory_not_an_abort();
   a_non_finite_host_value_is_refused_by_gather_and_scatter_add();
   host_messages_name_the_hosts_nodes_and_sides();
+  a_host_node_below_the_index_base_is_refused();
+  an_equation_no_host_vector_can_hold_is_refused_at_declaration();
+  a_step_is_reverted_across_a_newly_fixed_dof();
   a_host_pair_declared_twice_is_refused();
   a_contact_triangle_given_twice_is_refused();
   a_non_finite_displacement_is_invalid_input_not_an_overflow();

@@ -1544,7 +1544,12 @@ module tfem
     !! `n_edges` edges `edges` (2 host node numbers each), each given with its body on its left (the
     !! counter-clockwise boundary orientation); an edge that runs against its neighbour is refused
     !! (TFEM_STATUS_INVALID_CONTACT, naming it). A node of two sides must come with the same
-    !! coordinates and equations. Writes the side's index (0-based) to `side` (may be NULL). On
+    !! coordinates and equations. A node number below the index base is refused
+    !! (TFEM_STATUS_INVALID_ARGUMENT naming the side, the node's entry and the number), and so is an
+    !! equation that no host vector can hold (from index_base + PTRDIFF_MAX / 8 on: no array of
+    !! doubles spans more bytes), naming the node and the equation. The host's system size is not
+    !! known here: `tfem_contact_gather` and `tfem_contact_scatter_add` check every equation against
+    !! the vector they are given. Writes the side's index (0-based) to `side` (may be NULL). On
     !! error nothing changes. Fortran: `side` is OPTIONAL: omit it to pass NULL.
     function tfem_contact_add_side(context, tag, body, young, poisson, plane_mode, n_nodes, nodes, xy, &
         equations, n_edges, edges, side) &
@@ -1591,9 +1596,10 @@ module tfem
     !> Declares a pair with the host's own contact mesh B: `n_triangles` triangles `connectivity` (3
     !! host node numbers each) over the interface nodes of the two sides; wrongly oriented ones are
     !! turned. A triangle given twice (the same three nodes) is refused (TFEM_STATUS_INVALID_CONTACT
-    !! naming both triangles), and so is a pair already declared, as by `tfem_contact_add_pair`.
-    !! Writes the pair's index (0-based) to `pair` (may be NULL). Fortran: `pair` is OPTIONAL: omit
-    !! it to pass NULL.
+    !! naming both triangles), and so is a pair already declared, as by `tfem_contact_add_pair`. A
+    !! node number below the index base is refused (TFEM_STATUS_INVALID_ARGUMENT naming the pair,
+    !! the triangle, the node's place in it and the number). Writes the pair's index (0-based) to
+    !! `pair` (may be NULL). Fortran: `pair` is OPTIONAL: omit it to pass NULL.
     function tfem_contact_add_pair_with_mesh(context, side_a, side_b, n_triangles, connectivity, pair) &
         bind(C, name="tfem_contact_add_pair_with_mesh") result(status)
       import

@@ -1170,7 +1170,13 @@ enum tfem_status tfem_contact_set_options(struct tfem_contact *context,
  * left (the counter-clockwise boundary orientation); an edge that runs
  * against its neighbour is refused (TFEM_STATUS_INVALID_CONTACT, naming
  * it). A node of two sides must come with the same coordinates and
- * equations. Writes the side's
+ * equations. A node number below the index base is refused
+ * (TFEM_STATUS_INVALID_ARGUMENT naming the side, the node's entry and the
+ * number), and so is an equation that no host vector can hold (from
+ * index_base + PTRDIFF_MAX / 8 on: no array of doubles spans more bytes),
+ * naming the node and the equation. The host's system size is not known
+ * here: `tfem_contact_gather` and `tfem_contact_scatter_add` check every
+ * equation against the vector they are given. Writes the side's
  * index (0-based) to `side` (may be NULL). On error nothing changes.
  */
 enum tfem_status tfem_contact_add_side(struct tfem_contact *context,
@@ -1209,7 +1215,9 @@ enum tfem_status tfem_contact_add_pair(struct tfem_contact *context,
  * nodes of the two sides; wrongly oriented ones are turned. A triangle
  * given twice (the same three nodes) is refused
  * (TFEM_STATUS_INVALID_CONTACT naming both triangles), and so is a pair
- * already declared, as by `tfem_contact_add_pair`. Writes the pair's
+ * already declared, as by `tfem_contact_add_pair`. A node number below
+ * the index base is refused (TFEM_STATUS_INVALID_ARGUMENT naming the
+ * pair, the triangle, the node's place in it and the number). Writes the pair's
  * index (0-based) to `pair` (may be NULL).
  */
 enum tfem_status tfem_contact_add_pair_with_mesh(struct tfem_contact *context,

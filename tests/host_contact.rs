@@ -386,3 +386,117 @@ fn a_node_facing_nothing_is_in_no_element_and_reads_a_zero_gap() {
         assert!((gaps[v] - expected).abs() < 1e-12, "node {id}: {}", gaps[v]);
     }
 }
+
+/// Found by a review: a host node number below the index base (0 at base
+/// 1, or negative) was accepted and read back as if it named a node. It is
+/// refused, naming the side, the entry and the number, and the context is
+/// as it was: the side, given right, is then side 0.
+#[test]
+fn a_host_node_below_the_index_base_is_refused_leaving_the_context_unchanged() {
+    let material = tfem::Material::new(1e3, 0.3, tfem::PlaneMode::Strain, "side").unwrap();
+    let xy = [[0.0, 0.0], [1.0, 0.0]];
+    for (base, bad) in [(1, 0), (1, -3), (0, -1)] {
+        let mut hc = HostContact::new(base, ContactOptions::default()).unwrap();
+        let eq = [
+            [base as i64, base as i64 + 1],
+            [base as i64 + 2, base as i64 + 3],
+        ];
+        let err = hc
+            .add_side(5, 1, material, &[7, bad], &xy, &eq, &[[7, bad]])
+            .unwrap_err();
+        assert_eq!(err.status(), Status::InvalidArgument);
+        let expected = format!(
+            "side 0 (tag 5): node {bad} (entry {}) is below the index base {base}",
+            1 + base
+        );
+        assert!(err.message().contains(&expected), "{}", err.message());
+        assert_eq!(hc.n_nodes(), 0);
+        let side = hc.add_side(5, 1, material, &[7, 8], &xy, &eq, &[[7, 8]]);
+        assert_eq!(side.unwrap(), 0);
+    }
+}
+
+/// The same for a node of a contact triangle the host gives: named with
+/// its pair, its triangle and its place there, the context unchanged.
+#[test]
+fn a_contact_triangle_node_below_the_index_base_is_refused_naming_the_pair() {
+    let material = tfem::Material::new(1e3, 0.3, tfem::PlaneMode::Strain, "side").unwrap();
+    let mut hc = HostContact::new(1, ContactOptions::default()).unwrap();
+    let (lower, upper) = ([[0.0, 0.0], [1.0, 0.0]], [[1.0, 0.0], [0.0, 0.0]]);
+    let a = hc
+        .add_side(
+            1,
+            1,
+            material,
+            &[1, 2],
+            &lower,
+            &[[1, 2], [3, 4]],
+            &[[1, 2]],
+        )
+        .unwrap();
+    let b = hc
+        .add_side(
+            2,
+            2,
+            material,
+            &[3, 4],
+            &upper,
+            &[[5, 6], [7, 8]],
+            &[[3, 4]],
+        )
+        .unwrap();
+    let err = hc
+        .add_pair_with_mesh(a, b, &[[1, 2, 4], [2, 0, 4]])
+        .unwrap_err();
+    assert_eq!(err.status(), Status::InvalidArgument);
+    let expected = "pair 0 (sides 0 and 1), contact triangle 2: node 0 (its second) is below \
+                    the index base 1";
+    assert!(err.message().contains(expected), "{}", err.message());
+    assert_eq!(hc.add_pair(a, b).unwrap(), 0);
+}
+
+/// Found by a review: equation numbers up to i64::MAX were accepted by
+/// add_side and refused only at gather. No host vector of f64 holds more
+/// than isize::MAX bytes, so an equation from index_base + isize::MAX / 8
+/// on is refused at declaration, naming the node, the unknown and the
+/// equation; one below it is accepted (the host's own size, not known
+/// before, is checked at gather and scatter_add), and so is any number
+/// below the base (a DOF without an equation).
+#[test]
+fn an_equation_no_host_vector_can_hold_is_refused_at_declaration() {
+    let material = tfem::Material::new(1e3, 0.3, tfem::PlaneMode::Strain, "side").unwrap();
+    let xy = [[0.0, 0.0], [1.0, 0.0]];
+    let vectors = (isize::MAX as usize / std::mem::size_of::<f64>()) as i64;
+    for base in [0, 1] {
+        let last = vectors - 1 + base;
+        for bad in [i64::MAX, last + 1] {
+            let mut hc = HostContact::new(base as usize, ContactOptions::default()).unwrap();
+            let err = hc
+                .add_side(
+                    5,
+                    1,
+                    material,
+                    &[7, 8],
+                    &xy,
+                    &[[base, base + 1], [bad, base - 1]],
+                    &[[7, 8]],
+                )
+                .unwrap_err();
+            assert_eq!(err.status(), Status::InvalidArgument);
+            let expected = format!(
+                "side 0 (tag 5): node 8 (entry {}) has equation {bad} for its x unknown, beyond \
+                 any host vector (equations run from the index base {base} to at most {last})",
+                1 + base
+            );
+            assert!(err.message().contains(&expected), "{}", err.message());
+            assert_eq!(hc.n_nodes(), 0);
+        }
+        let mut hc = HostContact::new(base as usize, ContactOptions::default()).unwrap();
+        let eq = [[base, base + 1], [last, i64::MIN]];
+        assert_eq!(
+            hc.add_side(5, 1, material, &[7, 8], &xy, &eq, &[[7, 8]])
+                .unwrap(),
+            0
+        );
+    }
+}

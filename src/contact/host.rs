@@ -68,6 +68,10 @@ pub struct HostContact {
     built: Option<Built>,
 }
 
+/// The most values a host vector of `f64` can hold (a Rust slice, and any
+/// C array, spans at most `isize::MAX` bytes): every equation is below it.
+const MAX_EQUATIONS: usize = isize::MAX as usize / std::mem::size_of::<f64>();
+
 /// What an active-set update changed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Update {
@@ -267,8 +271,13 @@ impl HostContact {
     /// (pairs of those node numbers), each with the body on its left (an
     /// edge running against its neighbour is refused, naming it). A
     /// node given by two sides (a corner shared by bodies) must come with
-    /// the same coordinates and equations. Returns the side's index
-    /// (0-based). On error nothing changes.
+    /// the same coordinates and equations. A node number below the index
+    /// base is refused, naming the side, the node's entry and the number,
+    /// and so is an equation no host vector can hold (from the base +
+    /// `isize::MAX / 8` on), naming the node and the equation; the
+    /// host's system size is checked by [`HostContact::gather`] and
+    /// [`HostContact::scatter_add`], which see its vector. Returns the
+    /// side's index (0-based). On error nothing changes.
     #[allow(clippy::too_many_arguments)]
     pub fn add_side(
         &mut self,
@@ -306,12 +315,30 @@ impl HostContact {
             .map_err(|_| out_of_memory::<(i64, usize)>(room, &what))?;
         local.extend(self.local.iter().map(|(&k, &v)| (k, v)));
         for (i, (&id, (&p, eq))) in nodes.iter().zip(xy.iter().zip(equations)).enumerate() {
-            // Below the base is no equation: i64::MIN too, without the
-            // subtraction overflowing (found by the fuzzer at base 1).
-            let eq = eq.map(|e| {
-                e.checked_sub(self.base as i64)
-                    .and_then(|e| usize::try_from(e).ok())
-            });
+            // A number below the base would name no node of the host's
+            // (and was accepted, read back as if it did).
+            if id < self.base as i64 {
+                return Err(Error::argument(format!(
+                    "{side_name}: node {id} (entry {}) is below the index base {}",
+                    i + self.base,
+                    self.base
+                )));
+            }
+            let mut unknowns = [None; 2];
+            for c in 0..2 {
+                unknowns[c] = self.equation_of(eq[c]).map_err(|limit| {
+                    Error::argument(format!(
+                        "{side_name}: node {id} (entry {}) has equation {} for its {} \
+                         unknown, beyond any host vector (equations run from the index base \
+                         {} to at most {limit})",
+                        i + self.base,
+                        eq[c],
+                        ["x", "y"][c],
+                        self.base
+                    ))
+                })?;
+            }
+            let eq = unknowns;
             if !(p[0].is_finite() && p[1].is_finite()) {
                 return Err(Error::argument(format!(
                     "{side_name}: node {id} has coordinates ({:?}, {:?})",
@@ -390,8 +417,9 @@ impl HostContact {
 
     /// Declares a pair with the contact mesh B the host gives: triangles
     /// over interface nodes of the two sides (host numbers), each given
-    /// once (a repeated triangle is refused, naming both). Returns the
-    /// pair's index.
+    /// once (a repeated triangle is refused, naming both). A node number
+    /// below the index base is refused, naming the pair, the triangle and
+    /// the node's place in it. Returns the pair's index.
     pub fn add_pair_with_mesh(
         &mut self,
         a: usize,
@@ -402,6 +430,19 @@ impl HostContact {
         for (t, tri) in triangles.iter().enumerate() {
             let mut l = [0; 3];
             for k in 0..3 {
+                // Named as such rather than as a node on no side: the
+                // number itself is wrong.
+                if tri[k] < self.base as i64 {
+                    return Err(Error::argument(format!(
+                        "pair {} (sides {a} and {b}), contact triangle {}: node {} (its {}) \
+                         is below the index base {}",
+                        self.pairs.len(),
+                        t + self.base,
+                        tri[k],
+                        ["first", "second", "third"][k],
+                        self.base
+                    )));
+                }
                 l[k] = *self.local.get(&tri[k]).ok_or_else(|| {
                     Error::argument(format!(
                         "contact triangle {}: node {} is on no side",
@@ -461,6 +502,27 @@ impl HostContact {
         self.elements_of(self.pairs.len(), &pair)?;
         self.pairs.push(pair);
         Ok(self.pairs.len() - 1)
+    }
+
+    /// The 0-based equation of a host's equation number `e` (index base
+    /// applied): `None` below the base (the documented mark of a DOF
+    /// without an equation, `i64::MIN` included), or, as the error, the
+    /// largest equation number any host vector can hold when `e` is beyond
+    /// it. The host's system size is not known here: `gather` and
+    /// `scatter_add` check each equation against the vector they are
+    /// given; what is refused here could be valid in no vector (one of
+    /// `f64` holds at most `isize::MAX` bytes), and was found accepted up
+    /// to `i64::MAX`, or read as "no equation" where `usize` is 32 bits.
+    fn equation_of(&self, e: i64) -> std::result::Result<Option<usize>, i64> {
+        let limit = MAX_EQUATIONS - 1;
+        let Some(e) = e.checked_sub(self.base as i64) else {
+            return Ok(None);
+        };
+        match usize::try_from(e) {
+            Err(_) if e < 0 => Ok(None),
+            Ok(e) if e <= limit => Ok(Some(e)),
+            _ => Err(limit as i64 + self.base as i64),
+        }
     }
 
     fn check_open(&self) -> Result<()> {
