@@ -2206,6 +2206,29 @@ static void an_equation_no_host_vector_can_hold_is_refused_at_declaration(void) 
   }
 }
 
+/* The size of a contact context's message, for a buffer that holds all
+ * of it (the Fortran helper copied it through 4096 bytes): the message's
+ * length plus the NUL, 1 after a success, and for a handle that is not a
+ * live context the size of the message saying so. */
+static void a_contact_message_size_is_known_before_it_is_copied(void) {
+  tfem_contact *c = tfem_contact_create(0);
+  CHECK(tfem_contact_last_error_length(c) == 1);
+  CHECK(tfem_contact_add_pair(c, 0, 1, NULL) == TFEM_STATUS_INVALID_ARGUMENT);
+  char msg[512];
+  CHECK(tfem_contact_last_error(c, msg, sizeof msg) == TFEM_STATUS_OK);
+  CHECK(tfem_contact_last_error_length(c) == strlen(msg) + 1);
+  char *exact = malloc(tfem_contact_last_error_length(c));
+  CHECK(exact != NULL && tfem_contact_last_error(c, exact, tfem_contact_last_error_length(c)) == TFEM_STATUS_OK &&
+        strcmp(exact, msg) == 0);
+  free(exact);
+  tfem_model *m = tfem_create();
+  CHECK(tfem_contact_last_error(((tfem_contact *)(void *)m), msg, sizeof msg) == TFEM_STATUS_INVALID_ARGUMENT);
+  CHECK(tfem_contact_last_error_length((tfem_contact *)(void *)m) == strlen(msg) + 1);
+  CHECK(tfem_contact_last_error_length(NULL) == 1);
+  tfem_destroy(m);
+  tfem_contact_destroy(c);
+}
+
 /* Found by a review: a step could not be reverted once a DOF was fixed
  * since, as if that remade the contact mesh its state belongs to. A new
  * prescribed DOF changes the stiffness (and so the interface factor, made
@@ -2296,6 +2319,7 @@ int main(int argc, char **argv) {
   host_messages_name_the_hosts_nodes_and_sides();
   a_host_node_below_the_index_base_is_refused();
   an_equation_no_host_vector_can_hold_is_refused_at_declaration();
+  a_contact_message_size_is_known_before_it_is_copied();
   a_step_is_reverted_across_a_newly_fixed_dof();
   a_host_pair_declared_twice_is_refused();
   a_contact_triangle_given_twice_is_refused();

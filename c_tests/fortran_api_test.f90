@@ -102,6 +102,12 @@ program fortran_api_test
       'a model given as a context: '//tfem_contact_error_message(m))
   call expect(index(tfem_error_message(ctx), 'is not a model') > 0, &
       'a context given as a model: '//tfem_error_message(ctx))
+  ! The helper sizes its buffer by the message's length (it copied through
+  ! 4096 bytes): the whole message comes, the length counting the NUL.
+  call expect(int(tfem_contact_last_error_length(ctx)) == len(tfem_contact_error_message(ctx)) + 1, &
+      'a contact context''s message length')
+  call expect(int(tfem_contact_last_error_length(m)) == len(tfem_contact_error_message(m)) + 1, &
+      'the length of the message of a model given as a context')
   call tfem_contact_destroy(ctx)
   call tfem_destroy(m)
 

@@ -139,6 +139,7 @@ module tfem
   private :: tfem_contact_last_error_str
   private :: tfem_contact_last_error_str_i
   private :: tfem_contact_last_error_raw
+  private :: tfem_contact_last_error_length_no_context
   private :: tfem_contact_nodes_i
   private :: tfem_contact_pattern_i
   private :: tfem_contact_evaluate_i
@@ -1521,6 +1522,21 @@ module tfem
     module procedure tfem_contact_last_error_str_i
   end interface tfem_contact_last_error
 
+  interface tfem_contact_last_error_length
+    !> Size in bytes (including the final NUL) of the message `tfem_contact_last_error` would give
+    !! for `context` (a buffer of this size holds all of it): 1 after a successful call; for a
+    !! handle that is not a live contact context (destroyed, or a model), the size of the message
+    !! saying so. `context` may be NULL: 1 (it has no message). Fortran: `context` may be omitted
+    !! (NULL is passed).
+    function tfem_contact_last_error_length(context) &
+        bind(C, name="tfem_contact_last_error_length") result(res)
+      import
+      type(c_ptr), value :: context
+      integer(c_size_t) :: res
+    end function tfem_contact_last_error_length
+    module procedure tfem_contact_last_error_length_no_context
+  end interface tfem_contact_last_error_length
+
   interface
     !> Sets the contact options (law, E_c, λ, inversion test, and `max_iterations`: the number of
     !! `tfem_contact_update` calls of one loop before it counts as not converged; `refactorize` is
@@ -2317,6 +2333,12 @@ contains
     status = tfem_contact_last_error(context, buffer, length)
   end function tfem_contact_last_error_raw
 
+  ! tfem_contact_last_error_length, without `context` (NULL).
+  function tfem_contact_last_error_length_no_context() result(res)
+    integer(c_size_t) :: res
+    res = tfem_contact_last_error_length(c_null_ptr)
+  end function tfem_contact_last_error_length_no_context
+
   ! tfem_contact_nodes, lengths of kind tfem_length_kind.
   function tfem_contact_nodes_i(context, out, length) result(status)
     type(c_ptr), value :: context
@@ -2475,12 +2497,15 @@ contains
   !> The message of the last failed call on the contact context (from
   !! tfem_contact_create), as a Fortran string: a context keeps its own messages,
   !! which tfem_error_message, reading a model's, does not see.
+  !! The buffer is sized by tfem_contact_last_error_length, so that a message of any length
+  !! comes whole.
   function tfem_contact_error_message(context) result(msg)
     type(c_ptr), intent(in) :: context
     character(len=:), allocatable :: msg
-    character(kind=c_char) :: buf(4096)
+    character(kind=c_char), allocatable :: buf(:)
     integer(c_int) :: status
     integer :: i, n
+    allocate(buf(tfem_contact_last_error_length(context)))
     buf(1) = c_null_char
     status = tfem_contact_last_error(context, buf, size(buf, kind=c_size_t))
     n = c_strlen(buf)

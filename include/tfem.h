@@ -1149,6 +1149,15 @@ enum tfem_status tfem_contact_last_error(const struct tfem_contact *context,
                                          size_t length);
 
 /**
+ * Size in bytes (including the final NUL) of the message
+ * `tfem_contact_last_error` would give for `context` (a buffer of this
+ * size holds all of it): 1 after a successful call; for a handle that is
+ * not a live contact context (destroyed, or a model), the size of the
+ * message saying so. `context` may be NULL: 1 (it has no message).
+ */
+size_t tfem_contact_last_error_length(const struct tfem_contact *context);
+
+/**
  * Sets the contact options (law, E_c, λ, inversion test, and
  * `max_iterations`: the number of `tfem_contact_update` calls of one loop
  * before it counts as not converged; `refactorize` is ignored). Only

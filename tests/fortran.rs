@@ -936,12 +936,15 @@ fn generate(header: &str) -> String {
          \x20 !> The message of the last failed call on the contact context (from\n\
          \x20 !! tfem_contact_create), as a Fortran string: a context keeps its own messages,\n\
          \x20 !! which tfem_error_message, reading a model's, does not see.\n\
+         \x20 !! The buffer is sized by tfem_contact_last_error_length, so that a message of any length\n\
+         \x20 !! comes whole.\n\
          \x20 function tfem_contact_error_message(context) result(msg)\n\
          \x20   type(c_ptr), intent(in) :: context\n\
          \x20   character(len=:), allocatable :: msg\n\
-         \x20   character(kind=c_char) :: buf(4096)\n\
+         \x20   character(kind=c_char), allocatable :: buf(:)\n\
          \x20   integer(c_int) :: status\n\
          \x20   integer :: i, n\n\
+         \x20   allocate(buf(tfem_contact_last_error_length(context)))\n\
          \x20   buf(1) = c_null_char\n\
          \x20   status = tfem_contact_last_error(context, buf, size(buf, kind=c_size_t))\n\
          \x20   n = c_strlen(buf)\n\

@@ -115,6 +115,23 @@ pub unsafe extern "C" fn tfem_contact_last_error(
     }
 }
 
+/// Size in bytes (including the final NUL) of the message
+/// `tfem_contact_last_error` would give for `context` (a buffer of this
+/// size holds all of it): 1 after a successful call; for a handle that is
+/// not a live contact context (destroyed, or a model), the size of the
+/// message saying so. `context` may be NULL: 1 (it has no message).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_contact_last_error_length(context: *const TfemContact) -> usize {
+    if context.is_null() {
+        return 1;
+    }
+    if let Err(e) = check_live(context) {
+        return e.message().len() + 1;
+    }
+    // SAFETY: a live handle from tfem_contact_create (just checked).
+    unsafe { context.as_ref() }.map_or(1, |c| c.last_error.len() + 1)
+}
+
 /// Sets the contact options (law, E_c, λ, inversion test, and
 /// `max_iterations`: the number of `tfem_contact_update` calls of one loop
 /// before it counts as not converged; `refactorize` is ignored). Only
