@@ -675,6 +675,39 @@ static void a_gmsh_physical_point_group_is_named_in_a_warning(void) {
   unlink(gmsh_path("point_group.msh"));
 }
 
+/* The size of a warning, for a buffer that holds all of it (the Fortran
+ * helper copied warnings through 4096 bytes, and nothing gave their
+ * size): a Gmsh point in 1500 physical groups is warned about naming
+ * each group, over 4096 bytes; tfem_get_warning_size counts it with its
+ * NUL and a buffer of that size takes it whole. An index out of range is
+ * refused, the size unchanged. */
+static void a_warning_of_any_length_is_read_whole_by_its_size(void) {
+  static char msh[16384];
+  int n = sprintf(msh, "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n1 0 1 0\n5 0.5 0.5 0 1500");
+  for (int k = 1; k <= 1500; ++k) n += sprintf(msh + n, " %d", 100 + k);
+  sprintf(msh + n, "\n1 0 0 0 1 1 0 1 7 0\n$EndEntities\n"
+                   "$Nodes\n1 3 1 3\n2 1 0 3\n1\n2\n3\n0 0 0\n1 0 0\n0 1 0\n$EndNodes\n"
+                   "$Elements\n1 1 1 1\n2 1 2 1\n1 1 2 3\n$EndElements\n");
+  tfem_model *m = tfem_create();
+  CHECK(tfem_load_gmsh(m, gmsh_file("many_groups.msh", msh), 0) == TFEM_STATUS_OK);
+  int count = 0, found = 0;
+  CHECK(tfem_warning_count(m, &count) == TFEM_STATUS_OK);
+  for (int i = 0; i < count; ++i) {
+    size_t size = 0;
+    CHECK(tfem_get_warning_size(m, i, &size) == TFEM_STATUS_OK && size >= 1);
+    char *w = malloc(size);
+    CHECK(w != NULL && tfem_get_warning(m, i, w, size) == TFEM_STATUS_OK && strlen(w) + 1 == size);
+    if (w && strstr(w, "point 5 (group 101, ") && strstr(w, ", 1600)")) found = size > 4096;
+    free(w);
+  }
+  CHECK(found);
+  size_t size = 7;
+  EXPECT_ERROR(m, tfem_get_warning_size(m, count, &size), TFEM_STATUS_INVALID_ARGUMENT, "out of range");
+  CHECK(size == 7);
+  tfem_destroy(m);
+  unlink(gmsh_path("many_groups.msh"));
+}
+
 /* Found by a host-code probe: a Fortran type(c_ptr) does not tell a model
  * from a contact context, and tfem_error_message(context) read the context
  * as a model. A handle of the other kind, or a destroyed one, is refused
@@ -2338,6 +2371,7 @@ int main(int argc, char **argv) {
   a_gmsh_physical_point_group_is_named_in_a_warning();
   a_rigid_punchs_nominal_modulus_does_not_set_the_penalty();
   nothing_to_solve_is_said_in_words();
+  a_warning_of_any_length_is_read_whole_by_its_size();
   a_solve_under_any_memory_limit_fails_cleanly_or_succeeds();
 
   if (gmsh_dir[0] != '\0') rmdir(gmsh_dir);

@@ -24,6 +24,7 @@ program fortran_generic_test
   real(dp) :: u(12), r(12), jac(4), stiff(36), err, pressure(8), nodal(8), alone(8)
   integer :: status, n_tri, n_con, pair, flipped, flipped_ccw, i, active(8), n_warnings, n12 = 12
   integer(c_int64_t) :: n, nnz, n_only, nnz_only
+  integer(c_size_t) :: bytes
   integer(c_int64_t), allocatable :: col_ptr(:), row_idx(:), dofs(:)
   real(dp), allocatable :: kval(:)
   character(kind=c_char) :: buf(256)
@@ -125,6 +126,10 @@ program fortran_generic_test
   status = tfem_get_warning(m, 0, buf, size(buf))
   call expect(status == TFEM_STATUS_OK .and. chars(buf) == tfem_warning_message(m, 0), &
       'warning into an array')
+  ! The helper sizes its buffer by the warning's size (it copied through
+  ! 4096 bytes), which counts the NUL.
+  call expect(tfem_get_warning_size(m, 0, bytes) == TFEM_STATUS_OK .and. &
+      int(bytes) == len(tfem_warning_message(m, 0)) + 1, 'warning size')
   call tfem_destroy(m)
 
   ! Contact: pair index, options and report omitted, then read.

@@ -416,11 +416,26 @@ module tfem
     end function tfem_warning_count
   end interface
 
+  interface
+    !> Writes to `size` the size in bytes (including the final NUL) of warning number `index`
+    !! (0-based, whatever the index base): a buffer of this size holds all of it in
+    !! `tfem_get_warning`. An index out of range is refused (TFEM_STATUS_INVALID_ARGUMENT), `size`
+    !! unchanged.
+    function tfem_get_warning_size(model, index, size) &
+        bind(C, name="tfem_get_warning_size") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: index
+      integer(c_size_t), intent(out) :: size
+      integer(c_int) :: status
+    end function tfem_get_warning_size
+  end interface
+
   interface tfem_get_warning
     !> Copies warning number `index` (0-based, whatever the index base) into `buffer` of `length`
-    !! bytes, truncating like `tfem_last_error`. Fortran: `length` takes an integer(c_size_t) or a
-    !! default integer (kind tfem_length_kind); a negative length is passed as 0. `buffer` may also
-    !! be a character string.
+    !! bytes, truncating like `tfem_last_error` (`tfem_get_warning_size` gives the size needed).
+    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
+    !! negative length is passed as 0. `buffer` may also be a character string.
     function tfem_get_warning(model, index, buffer, length) &
         bind(C, name="tfem_get_warning") result(status)
       import
@@ -2516,14 +2531,20 @@ contains
     end do
   end function tfem_contact_error_message
 
-  !> Warning number index (0-based) of model, as a Fortran string.
+  !> Warning number index (0-based) of model, as a Fortran string. The buffer is sized by
+  !! tfem_get_warning_size, so that a warning of any length comes whole.
   function tfem_warning_message(model, index) result(msg)
     type(c_ptr), intent(in) :: model
     integer, intent(in) :: index
     character(len=:), allocatable :: msg
-    character(kind=c_char) :: buf(4096)
+    character(kind=c_char), allocatable :: buf(:)
+    integer(c_size_t) :: bytes
     integer(c_int) :: status
     integer :: i, n
+    bytes = 1
+    if (tfem_get_warning_size(model, int(index, c_int), bytes) /= TFEM_STATUS_OK) bytes = 1
+    allocate(buf(bytes))
+    buf(1) = c_null_char
     status = tfem_get_warning(model, int(index, c_int), buf, size(buf, kind=c_size_t))
     n = c_strlen(buf)
     if (status /= TFEM_STATUS_OK .and. status /= TFEM_STATUS_BUFFER_TOO_SMALL) n = 0

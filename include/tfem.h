@@ -461,8 +461,17 @@ size_t tfem_last_error_length(const struct tfem_model *model);
 enum tfem_status tfem_warning_count(struct tfem_model *model, int *count);
 
 /**
+ * Writes to `size` the size in bytes (including the final NUL) of
+ * warning number `index` (0-based, whatever the index base): a buffer
+ * of this size holds all of it in `tfem_get_warning`. An index out of
+ * range is refused (TFEM_STATUS_INVALID_ARGUMENT), `size` unchanged.
+ */
+enum tfem_status tfem_get_warning_size(struct tfem_model *model, int index, size_t *size);
+
+/**
  * Copies warning number `index` (0-based, whatever the index base) into
- * `buffer` of `length` bytes, truncating like `tfem_last_error`.
+ * `buffer` of `length` bytes, truncating like `tfem_last_error`
+ * (`tfem_get_warning_size` gives the size needed).
  */
 enum tfem_status tfem_get_warning(struct tfem_model *model, int index, char *buffer, size_t length);
 

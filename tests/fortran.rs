@@ -954,14 +954,20 @@ fn generate(header: &str) -> String {
          \x20     msg(i:i) = buf(i)\n\
          \x20   end do\n\
          \x20 end function tfem_contact_error_message\n\n\
-         \x20 !> Warning number index (0-based) of model, as a Fortran string.\n\
+         \x20 !> Warning number index (0-based) of model, as a Fortran string. The buffer is sized by\n\
+         \x20 !! tfem_get_warning_size, so that a warning of any length comes whole.\n\
          \x20 function tfem_warning_message(model, index) result(msg)\n\
          \x20   type(c_ptr), intent(in) :: model\n\
          \x20   integer, intent(in) :: index\n\
          \x20   character(len=:), allocatable :: msg\n\
-         \x20   character(kind=c_char) :: buf(4096)\n\
+         \x20   character(kind=c_char), allocatable :: buf(:)\n\
+         \x20   integer(c_size_t) :: bytes\n\
          \x20   integer(c_int) :: status\n\
          \x20   integer :: i, n\n\
+         \x20   bytes = 1\n\
+         \x20   if (tfem_get_warning_size(model, int(index, c_int), bytes) /= TFEM_STATUS_OK) bytes = 1\n\
+         \x20   allocate(buf(bytes))\n\
+         \x20   buf(1) = c_null_char\n\
          \x20   status = tfem_get_warning(model, int(index, c_int), buf, size(buf, kind=c_size_t))\n\
          \x20   n = c_strlen(buf)\n\
          \x20   if (status /= TFEM_STATUS_OK .and. status /= TFEM_STATUS_BUFFER_TOO_SMALL) n = 0\n\

@@ -111,8 +111,38 @@ pub unsafe extern "C" fn tfem_warning_count(model: *mut TfemModel, count: *mut c
     })
 }
 
+/// Writes to `size` the size in bytes (including the final NUL) of
+/// warning number `index` (0-based, whatever the index base): a buffer
+/// of this size holds all of it in `tfem_get_warning`. An index out of
+/// range is refused (TFEM_STATUS_INVALID_ARGUMENT), `size` unchanged.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_warning_size(
+    model: *mut TfemModel,
+    index: c_int,
+    size: *mut usize,
+) -> Status {
+    with_model(model, |m| {
+        let w = m.model.warnings();
+        let i = warning_index(index, w.len())?;
+        write(size, w[i].len() + 1, "size")
+    })
+}
+
+/// The 0-based index of warning `index` of `n`, or the error naming it.
+fn warning_index(index: c_int, n: usize) -> Result<usize> {
+    usize::try_from(index)
+        .ok()
+        .filter(|&i| i < n)
+        .ok_or_else(|| {
+            Error::argument(format!(
+                "warning index {index} is out of range ({n} warnings)"
+            ))
+        })
+}
+
 /// Copies warning number `index` (0-based, whatever the index base) into
-/// `buffer` of `length` bytes, truncating like `tfem_last_error`.
+/// `buffer` of `length` bytes, truncating like `tfem_last_error`
+/// (`tfem_get_warning_size` gives the size needed).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_warning(
     model: *mut TfemModel,
@@ -123,15 +153,7 @@ pub unsafe extern "C" fn tfem_get_warning(
     let mut status = Status::Ok;
     let s = with_model(model, |m| {
         let w = m.model.warnings();
-        let i = usize::try_from(index)
-            .ok()
-            .filter(|&i| i < w.len())
-            .ok_or_else(|| {
-                Error::argument(format!(
-                    "warning index {index} is out of range ({} warnings)",
-                    w.len()
-                ))
-            })?;
+        let i = warning_index(index, w.len())?;
         status = copy_message(&w[i], buffer, length);
         match status {
             Status::Ok => Ok(()),
