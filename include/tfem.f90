@@ -1315,10 +1315,12 @@ module tfem
   interface
     !> Undoes the last load step: its results, and the contact state the next step starts from, go
     !! back to what they were before it. Once per step. Refused with TFEM_STATUS_INVALID_STATE, the
-    !! model unchanged, once the mesh, its boundary edges, the set of prescribed DOFs, the contact
-    !! pairs or friction on/off have changed since that step (its contact state belongs to the
-    !! problem before the change). The state brought back is the next step's start even if that step
-    !! starts a new history (new materials or options).
+    !! model unchanged, once the mesh, its boundary edges, the contact pairs or friction on/off have
+    !! changed since that step: they remake the contact mesh, and its contact state belongs to the
+    !! one before; the message names the change. Fixing or clearing prescribed DOFs does not block
+    !! it: like new materials, it changes the stiffness, not the contact mesh. The state brought
+    !! back is the next step's start even if that step starts a new history (new materials, options
+    !! or prescribed DOFs), with that problem's own interface factor.
     function tfem_revert_step(model) &
         bind(C, name="tfem_revert_step") result(status)
       import
@@ -1365,12 +1367,12 @@ module tfem
     !! geometry, materials, constraints and options) the steps go on bit for bit; from one whose
     !! interface system differs (the same contact mesh, another shape or stiffness), from its active
     !! set and slip state, with the interface factor of this problem; so also when the next step
-    !! starts a new history (new materials or options). If the mesh, its boundary edges, the set of
-    !! prescribed DOFs, the pairs or friction on/off change before the next step, that step starts
-    !! afresh and warns. A frictional state waiting for a step under the stick law is refused by
-    !! that step (TFEM_STATUS_INVALID_ARGUMENT) until another state is set. Fortran: `length` takes
-    !! an integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is
-    !! passed as 0.
+    !! starts a new history (new materials, options or prescribed DOFs). If the mesh, its boundary
+    !! edges, the pairs or friction on/off change before the next step (they remake the contact
+    !! mesh), that step starts afresh and warns. A frictional state waiting for a step under the
+    !! stick law is refused by that step (TFEM_STATUS_INVALID_ARGUMENT) until another state is set.
+    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
+    !! negative length is passed as 0.
     function tfem_set_contact_state(model, buffer, length) &
         bind(C, name="tfem_set_contact_state") result(status)
       import

@@ -4,7 +4,7 @@
 //! and restored continues bit for bit.
 
 use tfem::scenes::{TAG_LOAD, TwoBlocks};
-use tfem::{ContactOptions, Model, Status};
+use tfem::{Component, ContactOptions, Model, Status};
 
 fn scene(c: f64) -> Model {
     TwoBlocks {
@@ -246,6 +246,80 @@ fn a_step_cannot_be_reverted_once_friction_is_turned_on_and_the_next_step_starts
     assert_eq!(
         bits(&model.displacements().unwrap()),
         bits(&one.displacements().unwrap())
+    );
+}
+
+/// Found by a review: a step could not be reverted once a DOF was fixed
+/// since, as if that remade the contact mesh its state belongs to. A new
+/// prescribed DOF changes K₁ and the condensed interface system (so the
+/// saved interface factor, which a history restores only into the system
+/// it was made from), not B, over which the active set and slip state
+/// are: as new materials, which never blocked a revert. The next step
+/// starts from the state before the reverted step, bit for bit as a new
+/// model with that DOF fixed given that state.
+#[test]
+fn a_step_can_be_reverted_after_a_dof_is_fixed() {
+    let options = ContactOptions::default();
+    let frictional = || {
+        let mut m = scene(0.3);
+        m.set_friction(0, 0.3).unwrap();
+        m
+    };
+    // An interface node of the lower body, its x free in the scene.
+    let node = TwoBlocks {
+        c: 0.3,
+        mesh_size: 1.0 / 32.0,
+        ..Default::default()
+    }
+    .build()
+    .unwrap()
+    .corner_lower;
+    let mut saved = frictional();
+    saved.step(0.5, &options).unwrap();
+    let state = saved.contact_state().unwrap();
+    let mut fresh = frictional();
+    fresh.fix(node, Component::X, 0.0).unwrap();
+    fresh.set_contact_state(&state).unwrap();
+    fresh.step(1.0, &options).unwrap();
+    let mut model = frictional();
+    model.step(0.5, &options).unwrap();
+    model.step(1.0, &options).unwrap();
+    // A new prescribed DOF (one fixed already would change nothing).
+    assert!(model.constraints().all(|(g, _)| g != 2 * node));
+    model.fix(node, Component::X, 0.0).unwrap();
+    model.revert_step().unwrap();
+    model.step(1.0, &options).unwrap();
+    assert_eq!(
+        bits(&model.displacements().unwrap()),
+        bits(&fresh.displacements().unwrap())
+    );
+}
+
+/// What still blocks a revert is named: the change that remade the
+/// contact mesh (here its parts: friction turned on), not a list of every
+/// change that could have.
+#[test]
+fn a_refused_revert_names_the_change_that_remade_the_contact_mesh() {
+    let options = ContactOptions::default();
+    let mut model = scene(0.3);
+    model.step(1.0, &options).unwrap();
+    model.set_friction(0, 0.3).unwrap();
+    let err = model.revert_step().unwrap_err();
+    assert_eq!(err.status(), Status::InvalidState);
+    assert!(
+        err.message()
+            .starts_with("the last load step cannot be reverted: friction on/off changed since"),
+        "{}",
+        err.message()
+    );
+    let mut model = scene(0.3);
+    model.step(1.0, &options).unwrap();
+    model.clear_contact_pairs();
+    let err = model.revert_step().unwrap_err();
+    assert!(
+        err.message().contains(": the contact pairs changed since"),
+        "{}",
+        err.message()
     );
 }
 

@@ -1346,11 +1346,14 @@ pub unsafe extern "C" fn tfem_step(
 /// Undoes the last load step: its results, and the contact state the next
 /// step starts from, go back to what they were before it. Once per step.
 /// Refused with TFEM_STATUS_INVALID_STATE, the model unchanged, once the
-/// mesh, its boundary edges, the set of prescribed DOFs, the contact pairs
-/// or friction on/off have changed since that step (its contact state
-/// belongs to the problem before the change). The state brought back is
+/// mesh, its boundary edges, the contact pairs or friction on/off have
+/// changed since that step: they remake the contact mesh, and its contact
+/// state belongs to the one before; the message names the change. Fixing
+/// or clearing prescribed DOFs does not block it: like new materials, it
+/// changes the stiffness, not the contact mesh. The state brought back is
 /// the next step's start even if that step starts a new history (new
-/// materials or options).
+/// materials, options or prescribed DOFs), with that problem's own
+/// interface factor.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_revert_step(model: *mut TfemModel) -> Status {
     with_model(model, |m| m.model.revert_step())
@@ -1405,9 +1408,10 @@ pub unsafe extern "C" fn tfem_get_contact_state(
 /// bit; from one whose interface system differs (the same contact mesh,
 /// another shape or stiffness), from its active set and slip state, with
 /// the interface factor of this problem; so also when the next step
-/// starts a new history (new materials or options). If the mesh, its
-/// boundary edges, the set of prescribed DOFs, the pairs or friction on/off
-/// change before the next step, that step starts afresh and warns. A
+/// starts a new history (new materials, options or prescribed DOFs). If
+/// the mesh, its boundary edges, the pairs or friction on/off change
+/// before the next step (they remake the contact mesh), that step starts
+/// afresh and warns. A
 /// frictional state waiting for a step under the stick law is refused by
 /// that step (TFEM_STATUS_INVALID_ARGUMENT) until another state is set.
 #[unsafe(no_mangle)]

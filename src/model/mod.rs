@@ -69,12 +69,16 @@ pub struct Model {
     restored: Option<KeptState>,
 }
 
-/// A contact state the model keeps, with the structure epoch of the
-/// problem it belongs to: once the structure changes ([`STRUCTURE`]), it
-/// belongs to none.
+/// A contact state the model keeps, with the contact epoch of the
+/// problem it belongs to ([`Problem::contact_epoch`]): once the contact
+/// mesh B or its parts change ([`CONTACT_STRUCTURE`]), it belongs to none.
+/// A change of the set of prescribed DOFs keeps it: like new materials, it
+/// changes the stiffness and so the interface factor, which a history
+/// restores only into the interface system it was made from (by its
+/// fingerprint), not B, over which the active set and slip state are.
 #[derive(Clone)]
 struct KeptState {
-    structure: u64,
+    contact: u64,
     state: StepState,
 }
 
@@ -508,15 +512,12 @@ impl Model {
         }
         let session = session_of(&mut self.session, &self.problem, &mut timings)?;
         let revision = self.problem.revision();
-        let structure = self.problem.structure();
-        let dropped = self
-            .restored
-            .as_ref()
-            .is_some_and(|k| k.structure != structure);
+        let contact = self.problem.contact_epoch();
+        let dropped = self.restored.as_ref().is_some_and(|k| k.contact != contact);
         let restored = self
             .restored
             .as_ref()
-            .filter(|k| k.structure == structure)
+            .filter(|k| k.contact == contact)
             .map(|k| &k.state);
         let key = (options, stiffness, revision);
         let had_matrix = session.system_matrix(revision).is_some();
@@ -546,14 +547,15 @@ impl Model {
         if dropped {
             self.solve_warnings.push(format!(
                 "the contact state given to set_contact_state (or brought back by revert_step) \
-                 belonged to the problem before the last change of {STRUCTURE}: this step \
-                 started afresh"
+                 belonged to the contact mesh before {} changed (a change of {CONTACT_STRUCTURE} \
+                 remakes it): this step started afresh",
+                self.problem.contact_change()
             ));
         }
         self.undo = Some((
             self.solution.take(),
             KeptState {
-                structure,
+                contact,
                 state: before,
             },
         ));
@@ -568,19 +570,25 @@ impl Model {
     /// Undoes the last load step: its results, and the contact state the
     /// next step starts from, go back to what they were before it. Once.
     ///
-    /// Refused (the model unchanged) once the structure has changed since
-    /// that step ([`STRUCTURE`]): its contact state belongs to the problem
-    /// before the change. The state brought back is the next step's start
-    /// even if that step starts a new history (new materials or options).
+    /// Refused (the model unchanged) once the contact mesh B or its parts
+    /// have changed since that step ([`CONTACT_STRUCTURE`]), naming the
+    /// change: its contact state belongs to the contact mesh before. A
+    /// change of the set of prescribed DOFs does not refuse it: like new
+    /// materials, it changes the stiffness (and the interface factor,
+    /// which the next step then makes anew), not B. The state brought back
+    /// is the next step's start even if that step starts a new history
+    /// (new materials, options or prescribed DOFs).
     pub fn revert_step(&mut self) -> Result<()> {
         let (_, before) = self
             .undo
             .as_ref()
             .ok_or_else(|| Error::state("no load step to revert"))?;
-        if before.structure != self.problem.structure() {
+        if before.contact != self.problem.contact_epoch() {
             return Err(Error::state(format!(
-                "the last load step cannot be reverted: {STRUCTURE} changed since, and its \
-                 contact state belongs to the problem before"
+                "the last load step cannot be reverted: {} changed since (a change of \
+                 {CONTACT_STRUCTURE} remakes the contact mesh), and its contact state belongs \
+                 to the contact mesh before",
+                self.problem.contact_change()
             )));
         }
         // Into the history now, so that the step's results brought back
@@ -602,8 +610,8 @@ impl Model {
     /// another one holding the same problem).
     pub fn contact_state(&self) -> Result<Vec<u8>> {
         let history = self.session.as_ref().and_then(|s| s.history.as_ref());
-        let structure = self.problem.structure();
-        let restored = self.restored.as_ref().filter(|k| k.structure == structure);
+        let contact = self.problem.contact_epoch();
+        let restored = self.restored.as_ref().filter(|k| k.contact == contact);
         let state = match (history, restored) {
             (_, Some(kept)) => kept.state.clone(),
             (Some(h), None) => h.step_state(),
@@ -620,9 +628,10 @@ impl Model {
     /// steps go on bit for bit; from one whose interface system differs
     /// (the same contact mesh, another shape or stiffness) they start from
     /// its active set and slip state with this problem's own interface
-    /// factor, also when the next step starts a new history (new materials
-    /// or options). A structure change before the next step ([`STRUCTURE`])
-    /// drops the state, with a warning.
+    /// factor, also when the next step starts a new history (new materials,
+    /// options or prescribed DOFs). A change of the contact mesh or its
+    /// parts before the next step ([`CONTACT_STRUCTURE`]) drops the state,
+    /// with a warning.
     pub fn set_contact_state(&mut self, bytes: &[u8]) -> Result<()> {
         let b = self.contact_mesh()?;
         let state = decode(bytes, fingerprint_of(&b))?;
@@ -658,7 +667,7 @@ impl Model {
             }
         }
         self.restored = Some(KeptState {
-            structure: self.problem.structure(),
+            contact: self.problem.contact_epoch(),
             state,
         });
         self.undo = None;
@@ -1023,8 +1032,10 @@ fn solution_of(
     (solution, outcome.warnings)
 }
 
-/// What moves the problem's structure epoch, in messages.
-const STRUCTURE: &str = "the mesh, its boundary edges, the set of prescribed DOFs, the contact pairs or friction on/off";
+/// What moves the problem's contact epoch ([`Problem::contact_epoch`]), in
+/// messages: the structure but the set of prescribed DOFs.
+const CONTACT_STRUCTURE: &str =
+    "the mesh, its boundary edges, the contact pairs or friction on/off";
 
 /// The bytes of a contact state: a magic word, the fingerprint of B, the
 /// fingerprint of the interface system the history began with, a checksum

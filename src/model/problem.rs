@@ -7,7 +7,9 @@
 //! the changes that alter what a solve derives from the problem — the mesh
 //! and its boundary edges, the set of prescribed DOFs, the contact pairs —
 //! so that everything derived checks the epoch instead of being cleared by
-//! hand.
+//! hand. A third, the *contact* epoch, moves with the structure but the set
+//! of prescribed DOFs: with what the contact mesh B and its parts are made
+//! of, which a load step's contact state belongs to.
 
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 
@@ -30,6 +32,10 @@ pub struct Problem {
     loads: Loads,
     pairs: Vec<ContactPair>,
     structure: u64,
+    /// The contact epoch ([`Problem::contact_epoch`]) and what moved it
+    /// last ([`Problem::contact_change`]).
+    contact: u64,
+    contact_change: &'static str,
     stiffness: u64,
     revision: u64,
 }
@@ -62,6 +68,8 @@ impl Problem {
             loads: Loads::default(),
             pairs: Vec::new(),
             structure: 0,
+            contact: 0,
+            contact_change: "nothing",
             stiffness: 0,
             revision: 0,
         }
@@ -74,6 +82,14 @@ impl Problem {
             self.structure += 1;
             self.stiffness += 1;
         }
+    }
+
+    /// Counts a structural change that also remakes the contact mesh B or
+    /// its parts: `what` changed, in messages ([`Problem::contact_change`]).
+    fn changed_contact(&mut self, what: &'static str) {
+        self.changed(true);
+        self.contact += 1;
+        self.contact_change = what;
     }
 
     /// Counts a change of the stiffness (materials, tempering) that leaves
@@ -92,6 +108,22 @@ impl Problem {
     /// set of prescribed DOFs and the contact pairs.
     pub fn structure(&self) -> u64 {
         self.structure
+    }
+
+    /// The contact epoch: moves with the mesh, its boundary edges, the
+    /// contact pairs and friction on/off — what the contact mesh B and its
+    /// parts are made of — but not with the set of prescribed DOFs, which
+    /// changes the stiffness and the interface unknowns, not B. A load
+    /// step's contact state (its active set and slip state over B) belongs
+    /// to one contact epoch.
+    pub fn contact_epoch(&self) -> u64 {
+        self.contact
+    }
+
+    /// What moved the contact epoch last, in messages ("the mesh", "the
+    /// boundary edges", "the contact pairs", "friction on/off").
+    pub fn contact_change(&self) -> &'static str {
+        self.contact_change
     }
 
     /// The stiffness epoch: moves with the structure, the materials and the
@@ -128,7 +160,7 @@ impl Problem {
         self.prescribed.clear();
         self.loads.clear();
         self.pairs.clear();
-        self.changed(true);
+        self.changed_contact("the mesh");
     }
 
     /// The mesh, if set.
@@ -166,7 +198,7 @@ impl Problem {
         match self.revalidated_pairs() {
             Ok(pairs) => {
                 self.pairs = pairs;
-                self.changed(true);
+                self.changed_contact("the boundary edges");
                 Ok(())
             }
             Err(e) => {
@@ -471,7 +503,7 @@ impl Problem {
             user_mesh: None,
             friction: 0.0,
         });
-        self.changed(true);
+        self.changed_contact("the contact pairs");
         Ok(self.pairs.len() - 1)
     }
 
@@ -504,7 +536,7 @@ impl Problem {
             user_mesh: Some(elements.iter().map(|e| e.nodes).collect()),
             friction: 0.0,
         });
-        self.changed(true);
+        self.changed_contact("the contact pairs");
         Ok((self.pairs.len() - 1, flipped))
     }
 
@@ -536,7 +568,7 @@ impl Problem {
             let rebuild = (p.friction > 0.0) != (mu > 0.0);
             p.friction = mu;
             match rebuild {
-                true => self.changed(true),
+                true => self.changed_contact("friction on/off"),
                 false => self.changed_stiffness(),
             }
         }
@@ -547,7 +579,7 @@ impl Problem {
     pub fn clear_contact_pairs(&mut self) {
         if !self.pairs.is_empty() {
             self.pairs.clear();
-            self.changed(true);
+            self.changed_contact("the contact pairs");
         }
     }
 
@@ -663,7 +695,7 @@ impl Problem {
         new.sort_by_key(|p| (p.tag_a, p.tag_b));
         if !new.is_empty() {
             self.pairs.append(&mut new);
-            self.changed(true);
+            self.changed_contact("the contact pairs");
         }
         Ok((first..self.pairs.len()).collect())
     }
