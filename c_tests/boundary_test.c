@@ -1384,6 +1384,38 @@ static void an_interface_is_paired_once_whatever_tags_its_edges_carry(void) {
   }
 }
 
+/* Automatic pairing said nothing of what it left out. Two unit blocks
+ * stacked (tags 1..4 and 5..8): with the lower block's edges also under
+ * tag 99, the interface found again as (7, 99) is not paired and a warning
+ * names both pairs of tags; with the lower block's top and the upper
+ * block's right side under one tag 50, that tag is left out and a warning
+ * names it and its bodies. */
+static void automatic_pairing_names_what_it_leaves_out(void) {
+  static mesh_t S;
+  memset(&S, 0, sizeof S);
+  grid(&S, 2, 2, 0.0, 0.0, 1.0, 1.0, 1, 1);
+  int lower_edges = S.ne;
+  grid(&S, 2, 2, 0.0, 1.0, 1.0, 1.0, 2, 5);
+  int again[99];
+  for (int k = 0; k < lower_edges; ++k) again[k] = 99;
+  tfem_model *m = model_of(&S, 2, 1e9, 1.0, TFEM_PLANE_MODE_STRAIN);
+  CHECK(tfem_add_boundary_edges(m, lower_edges, S.edges, again) == TFEM_STATUS_OK);
+  int first = -1, count = -1, n = -1;
+  CHECK(tfem_add_contact_pairs_auto(m, 0, NULL, 1e-9, &first, &count) == TFEM_STATUS_OK && count == 1);
+  CHECK(tfem_warning_count(m, &n) == TFEM_STATUS_OK && n == 1);
+  CHECK(has_warning(m, "did not pair tags 7 (body 2) and 99 (body 1)"));
+  CHECK(has_warning(m, "contact pair (4, 7)"));
+  tfem_destroy(m);
+
+  int merged[1024];
+  for (int k = 0; k < S.ne; ++k) merged[k] = (S.tags[k] == 4 || S.tags[k] == 6) ? 50 : S.tags[k];
+  tfem_model *t = model_of(&S, 2, 1e9, 1.0, TFEM_PLANE_MODE_STRAIN);
+  CHECK(tfem_set_boundary_edges(t, S.ne, S.edges, merged) == TFEM_STATUS_OK);
+  CHECK(tfem_add_contact_pairs_auto(t, 0, NULL, 1e-9, &first, &count) == TFEM_STATUS_OK && count == 0);
+  CHECK(has_warning(t, "left out tag 50: its edges bound bodies 1, 2"));
+  tfem_destroy(t);
+}
+
 /* Two blocks meshed 6 and 4 cells across (3:2, no interface node but the
  * ends faces another) under a uniform pressure: every interface node reads
  * the pressure, the others read zero. */
@@ -2343,6 +2375,7 @@ int main(int argc, char **argv) {
   facing_tags_are_paired_automatically();
   automatic_pairing_pairs_only_faces_that_see_each_other();
   an_interface_is_paired_once_whatever_tags_its_edges_carry();
+  automatic_pairing_names_what_it_leaves_out();
   a_non_matching_interface_reads_a_uniform_pressure_at_every_node();
   a_node_on_several_pairs_reads_their_forces_over_their_tributaries();
   a_side_ending_inside_an_edge_of_the_other_carries_the_uniform_stress();

@@ -453,10 +453,13 @@ size_t tfem_last_error_length(const struct tfem_model *model);
 
 /**
  * Number of warnings: mesh validation (unused or coincident nodes,
- * inverted or clockwise triangles) and the last solve or load step
- * (tempering of well-shaped elements, an ill-conditioned system, contact
- * pressures with fewer than six correct digits: a penalty E_c so stiff
- * that its overlaps approach the rounding of the displacements).
+ * inverted or clockwise triangles), what `tfem_add_contact_pairs_auto`
+ * left out (a tag whose edges bound several bodies, an interface found
+ * again under other tags: kept until the pairs are cleared or the mesh
+ * replaced) and the last solve or load step (tempering of well-shaped
+ * elements, an ill-conditioned system, contact pressures with fewer than
+ * six correct digits: a penalty E_c so stiff that its overlaps approach
+ * the rounding of the displacements).
  */
 enum tfem_status tfem_warning_count(struct tfem_model *model, int *count);
 
@@ -1121,7 +1124,10 @@ enum tfem_status tfem_get_contact_dissipation(struct tfem_model *model, double *
  * that share its edges with a pair kept (a "whole boundary" group beside
  * the faces) is skipped: the pair of tags with the fewest edges is kept
  * (to pair an interface under other tags, declare that pair by hand
- * instead). The pairs added get consecutive indices:
+ * instead). What is left out without an error — with `n_tags` = 0, a tag
+ * whose edges bound several bodies; an interface found again under other
+ * tags — is named in a warning (`tfem_warning_count`, `tfem_get_warning`).
+ * The pairs added get consecutive indices:
  * writes the first to `first` (may be NULL) and their number, 0 when
  * nothing faces within the tolerance, to `count` (may be NULL). A negative
  * or non-finite tolerance, an unknown tag or an interface whose contact

@@ -289,6 +289,61 @@ fn automatic_pairing_pairs_an_interface_once_under_its_most_specific_tags() {
 }
 
 #[test]
+fn automatic_pairing_names_an_interface_it_leaves_paired_under_other_tags() {
+    // (99, bottom of block 2) is the interface (top of block 1, bottom of
+    // block 2) again: not paired, and said (it was skipped without a word).
+    let mut model = stacked_with_a_whole_boundary_tag();
+    model.add_contact_pairs_auto(None, 1e-9).unwrap();
+    let (top, bottom) = (block_tag(1, Face::Top), block_tag(2, Face::Bottom));
+    let w = model.warnings();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0].contains(&format!(
+            "did not pair tags {bottom} (body 2) and 99 (body 1)"
+        )) && w[0].contains(&format!("contact pair ({top}, {bottom})"))
+            && w[0].contains("declare that pair by hand"),
+        "{}",
+        w[0]
+    );
+}
+
+#[test]
+fn automatic_pairing_names_a_tag_over_two_bodies_it_leaves_out() {
+    // Block 1's top and block 2's right under one tag 5: it cannot be a
+    // contact side, so the interface is not paired, and said (it was
+    // left out without a word).
+    let rects = [rect(0.0, 1.0, 0.0, 1.0, 2), rect(0.0, 1.0, 1.0, 2.0, 2)];
+    let (b, edges, mut tags) = mesh_blocks(&rects);
+    for t in tags.iter_mut() {
+        if *t == block_tag(1, Face::Top) || *t == block_tag(2, Face::Right) {
+            *t = 5;
+        }
+    }
+    let mut model = Model::new();
+    model.set_mesh(b.build().unwrap());
+    model.set_boundary_edges(&edges, &tags).unwrap();
+    assert!(model.add_contact_pairs_auto(None, 1e-9).unwrap().is_empty());
+    let w = model.warnings();
+    assert_eq!(w.len(), 1, "{w:?}");
+    assert!(
+        w[0].contains("left out tag 5: its edges bound bodies 1, 2")
+            && w[0].contains("a tag of its own"),
+        "{}",
+        w[0]
+    );
+}
+
+#[test]
+fn pairing_warnings_are_not_repeated_and_go_with_the_pairs() {
+    let mut model = stacked_with_a_whole_boundary_tag();
+    model.add_contact_pairs_auto(None, 1e-9).unwrap();
+    model.add_contact_pairs_auto(None, 1e-9).unwrap();
+    assert_eq!(model.warnings().len(), 1, "{:?}", model.warnings());
+    model.clear_contact_pairs();
+    assert!(model.warnings().is_empty(), "{:?}", model.warnings());
+}
+
+#[test]
 fn bad_pairing_input_is_refused_naming_it() {
     let mut model = blocks(&three_bodies(), None);
     for tol in [-1e-3, f64::NAN, f64::INFINITY] {

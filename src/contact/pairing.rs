@@ -39,7 +39,7 @@
 //! and the mean edge length), so its cost is linear in the number of
 //! candidate edges for meshes of bounded grading.
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::{BTreeMap, BTreeSet, HashMap};
 
 use crate::error::{Error, Result};
 use crate::fem::mesh::Mesh;
@@ -161,6 +161,20 @@ fn candidate_edges(mesh: &Mesh, tags: Option<&[i32]>) -> Result<Vec<Edge>> {
         }
     }
     Ok(out)
+}
+
+/// The tags whose boundary edges bound several bodies, with those bodies:
+/// not a contact side, so automatic pairing over every tag leaves them
+/// out (and says so: [`crate::model::Problem::add_contact_pairs_auto`]).
+pub fn tags_on_several_bodies(mesh: &Mesh) -> BTreeMap<i32, BTreeSet<i32>> {
+    let mut bodies: BTreeMap<i32, BTreeSet<i32>> = BTreeMap::new();
+    for e in mesh.boundary_edges() {
+        if let Some((t, _)) = e.owner {
+            bodies.entry(e.tag).or_default().insert(mesh.body_of()[t]);
+        }
+    }
+    bodies.retain(|_, b| b.len() > 1);
+    bodies
 }
 
 fn sub(a: [f64; 2], b: [f64; 2]) -> [f64; 2] {

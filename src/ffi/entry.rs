@@ -100,10 +100,13 @@ fn model_error(model: *const TfemModel) -> Result<String> {
 }
 
 /// Number of warnings: mesh validation (unused or coincident nodes,
-/// inverted or clockwise triangles) and the last solve or load step
-/// (tempering of well-shaped elements, an ill-conditioned system, contact
-/// pressures with fewer than six correct digits: a penalty E_c so stiff
-/// that its overlaps approach the rounding of the displacements).
+/// inverted or clockwise triangles), what `tfem_add_contact_pairs_auto`
+/// left out (a tag whose edges bound several bodies, an interface found
+/// again under other tags: kept until the pairs are cleared or the mesh
+/// replaced) and the last solve or load step (tempering of well-shaped
+/// elements, an ill-conditioned system, contact pressures with fewer than
+/// six correct digits: a penalty E_c so stiff that its overlaps approach
+/// the rounding of the displacements).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_warning_count(model: *mut TfemModel, count: *mut c_int) -> Status {
     with_model(model, |m| {
@@ -1520,7 +1523,10 @@ pub unsafe extern "C" fn tfem_get_contact_dissipation(
 /// that share its edges with a pair kept (a "whole boundary" group beside
 /// the faces) is skipped: the pair of tags with the fewest edges is kept
 /// (to pair an interface under other tags, declare that pair by hand
-/// instead). The pairs added get consecutive indices:
+/// instead). What is left out without an error — with `n_tags` = 0, a tag
+/// whose edges bound several bodies; an interface found again under other
+/// tags — is named in a warning (`tfem_warning_count`, `tfem_get_warning`).
+/// The pairs added get consecutive indices:
 /// writes the first to `first` (may be NULL) and their number, 0 when
 /// nothing faces within the tolerance, to `count` (may be NULL). A negative
 /// or non-finite tolerance, an unknown tag or an interface whose contact

@@ -360,16 +360,20 @@ impl Model {
         self.problem.contact_pairs()
     }
 
-    /// Mesh warnings plus those of the last solve or load step: tempering
-    /// of well-shaped elements, an ill-conditioned system, contact
-    /// pressures that carry fewer than six correct digits (a penalty whose
-    /// overlaps approach the rounding of u, docs/method.md §6.14).
+    /// Mesh warnings, what automatic pairing left out
+    /// ([`Problem::pairing_warnings`]: a tag over several bodies, an
+    /// interface found again under other tags), then those of the last
+    /// solve or load step: tempering of well-shaped elements, an
+    /// ill-conditioned system, contact pressures that carry fewer than six
+    /// correct digits (a penalty whose overlaps approach the rounding of u,
+    /// docs/method.md §6.14).
     pub fn warnings(&self) -> Vec<String> {
         let mut w: Vec<String> = self
             .problem
             .mesh()
             .map(|m| m.warnings().to_vec())
             .unwrap_or_default();
+        w.extend(self.problem.pairing_warnings().iter().cloned());
         w.extend(self.solve_warnings.iter().cloned());
         w
     }

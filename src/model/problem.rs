@@ -31,6 +31,9 @@ pub struct Problem {
     prescribed: BTreeMap<usize, f64>,
     loads: Loads,
     pairs: Vec<ContactPair>,
+    /// What automatic pairing left out, and why (kept until the pairs are
+    /// cleared or the mesh replaced).
+    pairing_warnings: Vec<String>,
     structure: u64,
     /// The contact epoch ([`Problem::contact_epoch`]) and what moved it
     /// last ([`Problem::contact_change`]).
@@ -67,6 +70,7 @@ impl Problem {
             prescribed: BTreeMap::new(),
             loads: Loads::default(),
             pairs: Vec::new(),
+            pairing_warnings: Vec::new(),
             structure: 0,
             contact: 0,
             contact_change: "nothing",
@@ -160,6 +164,7 @@ impl Problem {
         self.prescribed.clear();
         self.loads.clear();
         self.pairs.clear();
+        self.pairing_warnings.clear();
         self.changed_contact("the mesh");
     }
 
@@ -577,10 +582,19 @@ impl Problem {
 
     /// Removes every contact pair.
     pub fn clear_contact_pairs(&mut self) {
+        self.pairing_warnings.clear();
         if !self.pairs.is_empty() {
             self.pairs.clear();
             self.changed_contact("the contact pairs");
         }
+    }
+
+    /// What automatic pairing ([`Problem::add_contact_pairs_auto`]) left
+    /// out and why: a tag over several bodies, an interface found again
+    /// under other tags. Kept, without repeats, until the contact pairs
+    /// are cleared or the mesh is replaced.
+    pub fn pairing_warnings(&self) -> &[String] {
+        &self.pairing_warnings
     }
 
     /// The declared contact pairs.
@@ -633,7 +647,10 @@ impl Problem {
     /// every tag that can be a contact side. Pairs already declared (either
     /// way round) are skipped, and so is an interface found again under
     /// other tags that share its edges (the pair with the fewest edges is
-    /// kept); tags of one body never pair. Returns the
+    /// kept); tags of one body never pair. What is left out without an
+    /// error — with `tags` = `None`, a tag whose edges bound several
+    /// bodies; an interface found again under other tags — is named in a
+    /// warning ([`Problem::pairing_warnings`]). Returns the
     /// indices of the pairs added, in increasing (tag_a, tag_b) order with
     /// tag_a < tag_b: empty when nothing faces within the tolerance. All
     /// or nothing: if the contact mesh of one pair cannot be built, the
@@ -657,15 +674,41 @@ impl Problem {
                 f.tag_b,
             )
         });
+        // A tag over several bodies cannot be a side: left out, and said
+        // (searching every tag; a tag given by name is refused instead).
+        let mut warnings: Vec<String> = Vec::new();
+        if tags.is_none() {
+            for (tag, bodies) in contact::pairing::tags_on_several_bodies(mesh) {
+                let bodies: Vec<String> = bodies.iter().map(|b| b.to_string()).collect();
+                warnings.push(format!(
+                    "automatic pairing left out tag {tag}: its edges bound bodies {}, and a \
+                     contact side must lie on one body; if part of it faces another body, give \
+                     that part a tag of its own, or declare the pair by hand",
+                    bodies.join(", ")
+                ));
+            }
+        }
         let mut new: Vec<ContactPair> = Vec::new();
         for f in found {
             let declared = self.pairs.iter().chain(&new).any(|p: &ContactPair| {
                 (p.tag_a, p.tag_b) == (f.tag_a, f.tag_b) || (p.tag_a, p.tag_b) == (f.tag_b, f.tag_a)
             });
-            if declared
-                || shared.covered_by(&self.pairs, f.tag_a, f.tag_b).is_some()
-                || shared.covered_by(&new, f.tag_a, f.tag_b).is_some()
-            {
+            if declared {
+                continue;
+            }
+            let kept = shared
+                .covered_by(&self.pairs, f.tag_a, f.tag_b)
+                .map(|k| &self.pairs[k])
+                .or_else(|| shared.covered_by(&new, f.tag_a, f.tag_b).map(|k| &new[k]));
+            if let Some(p) = kept {
+                warnings.push(format!(
+                    "automatic pairing did not pair tags {} (body {}) and {} (body {}), which \
+                     face each other: they share edges with the tags of contact pair ({}, {}), \
+                     which pairs that interface already (a second pair would count its contact \
+                     twice); to pair it under tags {} and {} instead, clear the contact pairs and \
+                     declare that pair by hand",
+                    f.tag_a, f.body_a, f.tag_b, f.body_b, p.tag_a, p.tag_b, f.tag_a, f.tag_b
+                ));
                 continue;
             }
             // Built now so that a bad interface is reported by this call.
@@ -690,6 +733,11 @@ impl Problem {
                 user_mesh: None,
                 friction: 0.0,
             });
+        }
+        for w in warnings {
+            if !self.pairing_warnings.contains(&w) {
+                self.pairing_warnings.push(w);
+            }
         }
         let first = self.pairs.len();
         new.sort_by_key(|p| (p.tag_a, p.tag_b));
