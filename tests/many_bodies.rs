@@ -922,3 +922,50 @@ fn a_straight_side_is_cut_at_the_other_sides_end_across_any_gap() {
         );
     }
 }
+
+#[test]
+fn a_stack_tall_enough_to_lose_digits_is_warned_about_as_ill_conditioned() {
+    // 3000 blocks of 4 cells across (54 k unknowns, solved whole: too many
+    // interface unknowns to condense) under the default contact λ (the
+    // model's size, 750): measured condition estimate 3.0e10, relative
+    // residual 4.5e-8, stress error 1.9e-7 of p; warned. (300 blocks:
+    // 7.9e6, silent; 3000 blocks of 16 cells: 5.9e11, error 3.7e-6 of p,
+    // warned.)
+    let stack = Stack::alternating(3000, 0.25, &[4]);
+    let mut scene = stack.build().unwrap();
+    let r = scene.solve(stack.p, &ContactOptions::default()).unwrap();
+    let info = &r.report.info;
+    assert!(info.condition_estimate > 1e10, "{info:?}");
+    assert!(
+        r.max_error > 1e-9 && r.max_error < 1e-5,
+        "{:e}",
+        r.max_error
+    );
+    let w = scene.model.warnings();
+    assert!(
+        w.iter().any(|w| w.starts_with("ill-conditioned system")),
+        "{w:?}"
+    );
+}
+
+#[test]
+fn a_condensed_contact_solve_of_a_stiffness_contrast_is_warned_about_as_ill_conditioned() {
+    // Four blocks 64 cells across, E alternating 1e10 and 1e18: the
+    // interface (390 unknowns) is condensed; measured condition estimate
+    // 1.0e13, stress error 8.2e-4 of p; warned (1e14 and 1e10: 1.0e9 and
+    // 7.8e5, silent).
+    let mut stack = Stack::alternating(4, 1.0, &[64]);
+    for (k, layer) in stack.layers.iter_mut().enumerate() {
+        layer.young = if k % 2 == 0 { 1e10 } else { 1e18 };
+    }
+    let mut scene = stack.build().unwrap();
+    let r = scene.solve(stack.p, &ContactOptions::default()).unwrap();
+    let info = &r.report.info;
+    assert!(info.interface_unknowns > 0, "{info:?}");
+    assert!(info.condition_estimate > 1e10, "{info:?}");
+    let w = scene.model.warnings();
+    assert!(
+        w.iter().any(|w| w.starts_with("ill-conditioned system")),
+        "{w:?}"
+    );
+}
