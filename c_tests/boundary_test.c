@@ -959,6 +959,32 @@ static void nothing_to_solve_is_said_in_words(void) {
   tfem_destroy(m);
 }
 
+/* A "rigid" punch modelled as elastic with E = 1e25 (every node of body
+ * 2 moved down 1e-3, E_c the block's 2e11): its reaction K u - f cancels
+ * terms of 1e25 * 1e-3 to their rounding and is wrong; the solve says so,
+ * naming the body (docs/method.md 6.14). E = 2e11 does not warn. */
+static void a_rigid_body_modelled_by_a_huge_modulus_has_its_reactions_warned_about(void) {
+  static mesh_t P;
+  memset(&P, 0, sizeof P);
+  grid(&P, 4, 4, 0.0, 0.0, 1.0, 1.0, 1, 1);
+  int first_punch = P.nn;
+  grid(&P, 4, 1, 0.0, 1.0, 1.0, 0.25, 2, 5);
+  for (int k = 0; k < 2; ++k) {
+    tfem_model *m = model_of(&P, 2, 2e11, k == 1 ? 5e13 : 1.0, TFEM_PLANE_MODE_STRAIN);
+    CHECK(tfem_fix_edges(m, 3, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+    CHECK(tfem_fix_edges(m, 3, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+    for (int v = first_punch; v < P.nn; ++v) {
+      CHECK(tfem_fix(m, v, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+      CHECK(tfem_fix(m, v, TFEM_COMPONENT_Y, -1e-3) == TFEM_STATUS_OK);
+    }
+    CHECK(tfem_add_contact_pair(m, 4, 7, NULL) == TFEM_STATUS_OK);
+    CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+    CHECK(has_warning(m, "the reactions of body 2") == (k == 1));
+    CHECK(!has_warning(m, "the reactions of body 1"));
+    tfem_destroy(m);
+  }
+}
+
 /* Found by a probe of load histories: reverting a step after friction was
  * turned on brought back the contact state of the old contact mesh, and
  * every later step was refused; a state restored into a model of another
@@ -2403,6 +2429,7 @@ int main(int argc, char **argv) {
   fixing_a_gmsh_group_of_every_curve_fixes_the_whole_boundary();
   a_gmsh_physical_point_group_is_named_in_a_warning();
   a_rigid_punchs_nominal_modulus_does_not_set_the_penalty();
+  a_rigid_body_modelled_by_a_huge_modulus_has_its_reactions_warned_about();
   nothing_to_solve_is_said_in_words();
   a_warning_of_any_length_is_read_whole_by_its_size();
   a_solve_under_any_memory_limit_fails_cleanly_or_succeeds();

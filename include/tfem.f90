@@ -408,7 +408,9 @@ module tfem
     !! bodies, an interface found again under other tags: kept until the pairs are cleared or the
     !! mesh replaced) and the last solve or load step (tempering of well-shaped elements, an
     !! ill-conditioned system, contact pressures with fewer than six correct digits: a penalty E_c
-    !! so stiff that its overlaps approach the rounding of the displacements).
+    !! so stiff that its overlaps approach the rounding of the displacements; after `tfem_solve` or
+    !! `tfem_solve_contact`, a body's reactions with fewer than six correct digits: a "rigid" body
+    !! modelled with a huge Young's modulus).
     function tfem_warning_count(model, count) &
         bind(C, name="tfem_warning_count") result(status)
       import
@@ -852,9 +854,12 @@ module tfem
 
   interface tfem_get_reactions
     !> Copies reaction forces (Rx Ry per node, 2·n_nodes values; force per unit thickness, N/m in
-    !! SI; zero at DOFs that are not prescribed), computed on request. Fortran: `length` takes an
-    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
-    !! as 0.
+    !! SI; zero at DOFs that are not prescribed), computed on request. `tfem_solve` and
+    !! `tfem_solve_contact` bound their rounding per body and warn (`tfem_get_warning`), naming the
+    !! body, where its reactions may carry fewer than six correct digits (a "rigid" body given a
+    !! huge Young's modulus: prescribe its motion with a modulus like its neighbours' instead).
+    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
+    !! negative length is passed as 0.
     function tfem_get_reactions(model, out, length) &
         bind(C, name="tfem_get_reactions") result(status)
       import

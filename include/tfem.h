@@ -459,7 +459,9 @@ size_t tfem_last_error_length(const struct tfem_model *model);
  * replaced) and the last solve or load step (tempering of well-shaped
  * elements, an ill-conditioned system, contact pressures with fewer than
  * six correct digits: a penalty E_c so stiff that its overlaps approach
- * the rounding of the displacements).
+ * the rounding of the displacements; after `tfem_solve` or
+ * `tfem_solve_contact`, a body's reactions with fewer than six correct
+ * digits: a "rigid" body modelled with a huge Young's modulus).
  */
 enum tfem_status tfem_warning_count(struct tfem_model *model, int *count);
 
@@ -720,7 +722,11 @@ enum tfem_status tfem_get_element_jacobians(struct tfem_model *model, double *ou
 /**
  * Copies reaction forces (Rx Ry per node, 2·n_nodes values; force per
  * unit thickness, N/m in SI; zero at DOFs that are not prescribed),
- * computed on request.
+ * computed on request. `tfem_solve` and `tfem_solve_contact` bound their
+ * rounding per body and warn (`tfem_get_warning`), naming the body, where
+ * its reactions may carry fewer than six correct digits (a "rigid" body
+ * given a huge Young's modulus: prescribe its motion with a modulus like
+ * its neighbours' instead).
  */
 enum tfem_status tfem_get_reactions(struct tfem_model *model, double *out, size_t length);
 

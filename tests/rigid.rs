@@ -17,6 +17,7 @@ use tfem::ContactOptions;
 use tfem::scenes::hertz::Hertz;
 use tfem::scenes::punch::{FlatPunch, FlatPunchResult, RigidCylinder, RigidCylinderResult};
 use tfem::verification::fitted_rate;
+use tfem::{Material, PlaneMode};
 
 const PUNCH_LEVELS: [f64; 4] = [8.0, 16.0, 32.0, 64.0];
 
@@ -262,5 +263,63 @@ fn a_penalty_too_stiff_to_resolve_its_overlap_is_warned_about() {
         loud.iter()
             .any(|w| w.contains("contact pressures carry about")),
         "{loud:?}"
+    );
+}
+
+/// The rigid cylinder at h = a/8 with the cylinder's Young's modulus
+/// `e_cylinder` (E_c stays the block's, the smaller): the cylinder's
+/// vertical reaction against the block's, relative, and the model's
+/// warnings.
+fn cylinder_of_modulus(e_cylinder: f64) -> (f64, Vec<String>) {
+    let base = RigidCylinder::default();
+    let rc = RigidCylinder {
+        hertz: Hertz {
+            mesh_size: base.hertz.half_width / 8.0,
+            ..base.hertz
+        },
+        ..base
+    };
+    let mut scene = rc.build().unwrap();
+    let model = &mut scene.scene.model;
+    let m = Material::new(e_cylinder, 0.3, PlaneMode::Strain, "cylinder").unwrap();
+    model.set_material(2, m).unwrap();
+    model.solve_contact(&ContactOptions::default()).unwrap();
+    let r = model.reactions().unwrap();
+    let body = model.mesh().unwrap().node_body().to_vec();
+    let on = |b: i32| -> f64 {
+        (0..r.len())
+            .filter(|&v| body[v] == Some(b))
+            .map(|v| r[v][1])
+            .sum()
+    };
+    let (cylinder, block) = (on(2), on(1));
+    (((cylinder + block) / block).abs(), model.warnings())
+}
+
+#[test]
+fn the_reactions_of_a_rigid_body_as_stiff_as_the_block_are_not_warned_about() {
+    // Measured: the cylinder's reaction against the block's 1.2e-12.
+    let (imbalance, w) = cylinder_of_modulus(2e11);
+    assert!(imbalance < 1e-10, "imbalance {imbalance:e}");
+    assert!(w.iter().all(|w| !w.contains("reactions")), "{w:?}");
+}
+
+#[test]
+fn a_rigid_body_modelled_by_a_huge_modulus_has_its_reactions_warned_about() {
+    // E = 1e25 against the block's 2e11 (docs/method.md §6.14): the
+    // cylinder's reaction K u − f cancels terms of ε‖K‖|u| — measured
+    // +5.56e8 against the block's 3.58e7 (16.6 × off), without a word
+    // before — while the contact pressures (E_c = 2e11) are sound. The
+    // bound ε Σ|K_ab u_b| read 1.4e11.
+    let (imbalance, w) = cylinder_of_modulus(1e25);
+    assert!(imbalance > 1.0, "imbalance {imbalance:e}");
+    assert!(
+        w.iter().any(|w| w
+            .contains("the reactions of body 2 (E = 1.0e25) may carry as few as 0 correct digits")),
+        "{w:?}"
+    );
+    assert!(
+        w.iter().all(|w| !w.contains("reactions of body 1")),
+        "{w:?}"
     );
 }

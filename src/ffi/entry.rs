@@ -106,7 +106,9 @@ fn model_error(model: *const TfemModel) -> Result<String> {
 /// replaced) and the last solve or load step (tempering of well-shaped
 /// elements, an ill-conditioned system, contact pressures with fewer than
 /// six correct digits: a penalty E_c so stiff that its overlaps approach
-/// the rounding of the displacements).
+/// the rounding of the displacements; after `tfem_solve` or
+/// `tfem_solve_contact`, a body's reactions with fewer than six correct
+/// digits: a "rigid" body modelled with a huge Young's modulus).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_warning_count(model: *mut TfemModel, count: *mut c_int) -> Status {
     with_model(model, |m| {
@@ -760,7 +762,11 @@ pub unsafe extern "C" fn tfem_get_element_jacobians(
 
 /// Copies reaction forces (Rx Ry per node, 2·n_nodes values; force per
 /// unit thickness, N/m in SI; zero at DOFs that are not prescribed),
-/// computed on request.
+/// computed on request. `tfem_solve` and `tfem_solve_contact` bound their
+/// rounding per body and warn (`tfem_get_warning`), naming the body, where
+/// its reactions may carry fewer than six correct digits (a "rigid" body
+/// given a huge Young's modulus: prescribe its motion with a modulus like
+/// its neighbours' instead).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_reactions(
     model: *mut TfemModel,

@@ -366,7 +366,9 @@ impl Model {
     /// solve or load step: tempering of well-shaped elements, an
     /// ill-conditioned system, contact pressures that carry fewer than six
     /// correct digits (a penalty whose overlaps approach the rounding of u,
-    /// docs/method.md §6.14).
+    /// docs/method.md §6.14), after a solve (not a load step) a body whose
+    /// reactions may carry fewer than six correct digits (a "rigid" body
+    /// given a huge E, §6.14).
     pub fn warnings(&self) -> Vec<String> {
         let mut w: Vec<String> = self
             .problem
@@ -473,6 +475,9 @@ impl Model {
             revision,
         );
         self.solve_warnings = warnings;
+        if let Some(u) = solution.u.get() {
+            reaction_warning(&self.problem, &solution, u, &mut self.solve_warnings);
+        }
         self.undo = None;
         Ok(self.solution.insert(solution))
     }
@@ -781,7 +786,9 @@ impl Model {
     }
 
     /// Reaction forces [R_x, R_y] per node: K u − f at prescribed DOFs (zero
-    /// elsewhere), computed on request.
+    /// elsewhere), computed on request. A solve bounds their rounding per
+    /// body and warns where a body's may carry fewer than six correct
+    /// digits ([`Model::warnings`]; docs/method.md §6.14).
     pub fn reactions(&self) -> Result<Vec<[f64; 2]>> {
         self.solution()?.reactions(&self.problem, self.field()?)
     }
@@ -1035,6 +1042,75 @@ fn solution_of(
     };
     (solution, outcome.warnings)
 }
+
+/// Below this many correct digits of a body's reactions (at worst) a
+/// solve warns ([`reaction_warning`]).
+const REACTION_DIGITS: f64 = 6.0;
+
+/// The share of the largest resultant reaction of the bodies below which
+/// a body's resultant is judged against that share: a body whose
+/// prescribed DOFs carry next to nothing (a symmetry line) is not warned
+/// about for losing the digits of nothing.
+const REACTION_FLOOR: f64 = 1e-3;
+
+/// The share of the sum of a body's reactions' sizes below which its
+/// resultant is judged against that share: a body whose reactions balance
+/// each other (stretched between clamps, a patch test) is not warned
+/// about for the rounding of a zero resultant.
+const REACTION_OWN_FLOOR: f64 = 1e-6;
+
+/// Warns, per body, when its reactions (read later, [`Model::reactions`])
+/// may carry fewer than [`REACTION_DIGITS`] correct digits: where a body
+/// is so stiff against the forces at its prescribed DOFs (a "rigid" body
+/// given E = 1e25, docs/method.md §6.14) that K u − f cancels its terms to
+/// their rounding. The bound of a body is the sum over its prescribed DOFs
+/// of ε Σ |K_ab u_b| ([`Solution::reactions_and_rounding`]), compared with
+/// its resultant reaction (at least [`REACTION_FLOOR`] of the largest
+/// body's and [`REACTION_OWN_FLOOR`] of the sum of its reactions' sizes).
+/// A bound: measured on the
+/// rigid cylinder of `tests/rigid.rs` (h = a/8, the cylinder's E = 1e17 …
+/// 1e25 against the block's 2e11), the resultant was off by 1/240 … 1/100
+/// of it.
+fn reaction_warning(problem: &Problem, solution: &Solution, u: &[f64], warnings: &mut Vec<String>) {
+    // Reactions that cannot be computed (not finite) are refused when read.
+    let (Ok(mesh), Ok((r, bound))) = (
+        problem.mesh_ref(),
+        solution.reactions_and_rounding(problem, u),
+    ) else {
+        return;
+    };
+    // Per body: the resultant, Σ |R| and the bound.
+    let mut per_body: std::collections::BTreeMap<i32, ([f64; 2], f64, f64)> = Default::default();
+    for (g, (&rg, &bg)) in r.iter().zip(&bound).enumerate() {
+        if let (true, Some(body)) = (problem.is_prescribed(g), mesh.node_body()[g / 2]) {
+            let e = per_body.entry(body).or_default();
+            e.0[g % 2] += rg;
+            e.1 += rg.abs();
+            e.2 += bg;
+        }
+    }
+    let norm = |f: [f64; 2]| f[0].hypot(f[1]);
+    let largest = per_body.values().fold(0.0f64, |m, v| m.max(norm(v.0)));
+    for (body, (resultant, sizes, err)) in per_body {
+        let force = norm(resultant);
+        let judged = force
+            .max(REACTION_FLOOR * largest)
+            .max(REACTION_OWN_FLOOR * sizes);
+        if err <= 10f64.powf(-REACTION_DIGITS) * judged {
+            continue;
+        }
+        let digits = (judged / err).log10().max(0.0);
+        let young = problem.material(body).map_or(f64::NAN, |m| m.young());
+        warnings.push(format!(
+            "the reactions of body {body} (E = {young:.1e}) may carry as few as {digits:.0} \
+             correct digits: its stiffness times the rounding of the displacements may put up \
+             to {err:.1e} in them, against a resultant reaction of {force:.3e}; a rigid body is \
+             modelled by prescribed motion with a modulus like that of the bodies it touches, \
+             not by a huge E (docs/method.md §6.14)"
+        ));
+    }
+}
+
 
 /// What moves the problem's contact epoch ([`Problem::contact_epoch`]), in
 /// messages: the structure but the set of prescribed DOFs.

@@ -118,21 +118,49 @@ impl Solution {
     /// Reaction forces [R_x, R_y] per node: K u − f at prescribed DOFs
     /// (zero elsewhere), the active contact elements included.
     pub fn reactions(&self, problem: &Problem, u: &[f64]) -> Result<Vec<[f64; 2]>> {
+        let (r, _) = self.reactions_and_rounding(problem, u)?;
+        Ok(r.chunks_exact(2).map(|c| [c[0], c[1]]).collect())
+    }
+
+    /// The reactions over every global DOF (zero where free) and, per DOF,
+    /// the rounding the sum K u leaves in them: ε Σ |K_ab u_b| over the
+    /// terms summed (the terms' own rounding, and that of u, ε|u_b|, times
+    /// the stiffness). Where the elements of a body are far stiffer than
+    /// the forces its prescribed DOFs carry (a "rigid" body modelled with
+    /// a huge E), the terms cancel to ε of their size and this bound
+    /// exceeds the reactions (docs/method.md §6.14).
+    pub fn reactions_and_rounding(
+        &self,
+        problem: &Problem,
+        u: &[f64],
+    ) -> Result<(Vec<f64>, Vec<f64>)> {
         let elements = problem.elements()?;
         let mesh = elements.mesh();
         let mut r = vec![0.0; u.len()];
+        let mut bound = vec![0.0; u.len()];
         let mut add = |tri: &[usize; 3], ke: &[f64; 36], f0: Option<&[f64; 6]>| {
             let ue = element_values(u, tri);
             for a in 0..6 {
                 let g = 2 * tri[a / 2] + a % 2;
                 if problem.is_prescribed(g) {
-                    let ku: f64 = (0..6).map(|b| ke[a * 6 + b] * ue[b]).sum();
+                    let (ku, size) = (0..6).fold((0.0, 0.0), |(s, m), b| {
+                        let t = ke[a * 6 + b] * ue[b];
+                        (s + t, m + t.abs())
+                    });
                     r[g] += ku - f0.map_or(0.0, |f| f[a]);
+                    bound[g] += f64::EPSILON * size;
                 }
             }
         };
+        let touches = |tri: &[usize; 3]| {
+            tri.iter()
+                .any(|&v| problem.is_prescribed(2 * v) || problem.is_prescribed(2 * v + 1))
+        };
         elements.for_each(|el| {
-            add(el.nodes, &elements.stiffness(el)?, None);
+            // Only rows of prescribed DOFs are read.
+            if touches(el.nodes) {
+                add(el.nodes, &elements.stiffness(el)?, None);
+            }
             Ok(())
         })?;
         if let Some(c) = &self.contact {
@@ -166,7 +194,7 @@ impl Solution {
             }
         }
         ensure_finite(r.iter().copied(), 2, "reaction", |v| mesh.node_name(v))?;
-        Ok(r.chunks_exact(2).map(|c| [c[0], c[1]]).collect())
+        Ok((r, bound))
     }
 
     /// The force the contact exerts on every node, [f_x, f_y] per node
