@@ -24,6 +24,9 @@ cargo fmt --all -- --check
 echo "== cargo clippy --all-targets -- -D warnings"
 cargo clippy --release --all-targets -- -D warnings
 
+echo "== cargo doc: every public item documented, no broken or private links"
+RUSTDOCFLAGS="-D warnings" cargo doc --no-deps
+
 echo "== core without optional I/O (no default features)"
 cargo build --release --lib --no-default-features
 if cargo tree --no-default-features --edges normal --prefix none | grep -q '^vtkio'; then

@@ -144,7 +144,8 @@ pub fn contact_length(elements: &[ContactElement], active: &[bool]) -> f64 {
     apart.iter().fold(whole, |sum, (_, l)| sum + 0.5 * l)
 }
 
-/// A warning for each strip that one family carries alone ([`SHARE`]),
+/// A warning for each strip that one family carries alone (active over
+/// less than 0.2 of the other's length, with at least 8 active elements),
 /// naming the pair by its tags.
 pub fn one_sided_warnings(
     elements: &[ContactElement],

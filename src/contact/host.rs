@@ -669,20 +669,16 @@ impl HostContact {
         Ok(())
     }
 
-    /// The contact length of the current active set: half the summed
-    /// interface-edge length of the active elements, each as far as it
-    /// faces the other side (+0.0 when none is).
+    /// The contact length of the current active set (docs/method.md §6.8):
+    /// per connected strip of B, the facing interface-edge length of the
+    /// active elements of the family (edges on one side, or on the other)
+    /// active over the longer length; +0.0 when none is. Until 2026-11-24
+    /// the mean of the two families, half the width where one family alone
+    /// carries a curved contact.
     pub fn contact_length(&mut self) -> Result<f64> {
         let b = self.built()?;
         let active = b.active.active();
-        // Folded from +0.0: `Sum` for f64 starts from −0.0, which an empty
-        // active set would return.
-        Ok(b.set
-            .elements()
-            .iter()
-            .zip(active)
-            .filter(|(_, a)| **a)
-            .fold(0.0, |sum, (e, _)| sum + 0.5 * e.facing))
+        Ok(super::conformity::contact_length(b.set.elements(), active))
     }
 
     /// The active flag of every element of B.

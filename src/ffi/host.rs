@@ -587,11 +587,13 @@ pub unsafe extern "C" fn tfem_contact_element_blocks(
     })
 }
 
-/// Writes the contact length of the current active set to `length`: half
-/// the summed interface-edge length of the active elements of B, each as
-/// far as it faces the other side (each point of an interface is covered
-/// by one element with its edge on each side), model length units; +0.0
-/// when no element is active.
+/// Writes the contact length of the current active set to `length`, model
+/// length units: per connected strip of B, the summed interface-edge length
+/// of the active elements (each as far as it faces the other side) of the
+/// family — edges on one side, or on the other: each covers the interface
+/// once — active over the longer length; +0.0 when no element is active.
+/// Until 2026-11-24 the mean of the two families, which counted half the
+/// width where one family alone carries a curved contact.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_length(
     context: *mut TfemContact,

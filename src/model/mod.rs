@@ -71,7 +71,7 @@ pub struct Model {
 
 /// A contact state the model keeps, with the contact epoch of the
 /// problem it belongs to ([`Problem::contact_epoch`]): once the contact
-/// mesh B or its parts change ([`CONTACT_STRUCTURE`]), it belongs to none.
+/// mesh B or its parts change (the mesh, its boundary edges, the contact pairs or friction on/off), it belongs to none.
 /// A change of the set of prescribed DOFs keeps it: like new materials, it
 /// changes the stiffness and so the interface factor, which a history
 /// restores only into the interface system it was made from (by its
@@ -580,7 +580,7 @@ impl Model {
     /// next step starts from, go back to what they were before it. Once.
     ///
     /// Refused (the model unchanged) once the contact mesh B or its parts
-    /// have changed since that step ([`CONTACT_STRUCTURE`]), naming the
+    /// have changed since that step (the mesh, its boundary edges, the contact pairs or friction on/off), naming the
     /// change: its contact state belongs to the contact mesh before. A
     /// change of the set of prescribed DOFs does not refuse it: like new
     /// materials, it changes the stiffness (and the interface factor,
@@ -639,7 +639,7 @@ impl Model {
     /// its active set and slip state with this problem's own interface
     /// factor, also when the next step starts a new history (new materials,
     /// options or prescribed DOFs). A change of the contact mesh or its
-    /// parts before the next step ([`CONTACT_STRUCTURE`]) drops the state,
+    /// parts before the next step (the mesh, its boundary edges, the contact pairs or friction on/off) drops the state,
     /// with a warning.
     pub fn set_contact_state(&mut self, bytes: &[u8]) -> Result<()> {
         let b = self.contact_mesh()?;
@@ -1110,7 +1110,6 @@ fn reaction_warning(problem: &Problem, solution: &Solution, u: &[f64], warnings:
         ));
     }
 }
-
 
 /// What moves the problem's contact epoch ([`Problem::contact_epoch`]), in
 /// messages: the structure but the set of prescribed DOFs.
