@@ -856,37 +856,19 @@ static void a_load_history_steps_reverts_and_restarts_bit_for_bit(void) {
   tfem_destroy(m);
 }
 
-/* A rigid punch (every node of body 2 moved down 1e-3) on a block E =
- * 2e11: with E_c = 1e23 the penalty's overlap falls below the rounding of
- * u and the contact forces are rounding while the system is well
- * conditioned; the solve says so (docs/method.md §6.14). The default E_c
- * does not warn. */
-static void a_contact_modulus_too_stiff_for_its_overlap_is_warned_about(void) {
-  static mesh_t P;
-  memset(&P, 0, sizeof P);
-  grid(&P, 4, 4, 0.0, 0.0, 1.0, 1.0, 1, 1);
-  int first_punch = P.nn;
-  grid(&P, 4, 1, 0.0, 1.0, 1.0, 0.25, 2, 5);
-  for (int k = 0; k < 2; ++k) {
-    tfem_model *m = model_of(&P, 2, 2e11, 1.0, TFEM_PLANE_MODE_STRAIN);
-    CHECK(tfem_fix_edges(m, 3, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
-    CHECK(tfem_fix_edges(m, 3, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
-    for (int v = first_punch; v < P.nn; ++v) {
-      CHECK(tfem_fix(m, v, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
-      CHECK(tfem_fix(m, v, TFEM_COMPONENT_Y, -1e-3) == TFEM_STATUS_OK);
-    }
-    CHECK(tfem_add_contact_pair(m, 4, 7, NULL) == TFEM_STATUS_OK);
-    tfem_contact_options o;
-    tfem_contact_options_default(&o);
-    if (k == 1) o.contact_modulus = 1e23;
-    CHECK(tfem_solve_contact(m, &o, NULL) == TFEM_STATUS_OK);
-    CHECK(has_warning(m, "correct digits") == (k == 1));
-    tfem_destroy(m);
-  }
+/* A punch on a block: the 4 x 4 grid of [0, 1]^2 (body 1, tags 1-4)
+ * under the 4 x 1 grid of [0, 1] x [1, 1.25] (body 2, tags 5-8);
+ * `first_punch` is the punch's first node in P. */
+static void punch_mesh(mesh_t *P, int *first_punch) {
+  memset(P, 0, sizeof *P);
+  grid(P, 4, 4, 0.0, 0.0, 1.0, 1.0, 1, 1);
+  *first_punch = P->nn;
+  grid(P, 4, 1, 0.0, 1.0, 1.0, 0.25, 2, 5);
 }
 
-/* The punch scene above (block: tags 1-4, punch: tags 5-8, pair (4, 7))
- * with the punch's material and which DOFs are prescribed as asked. */
+/* The model of punch_mesh: the block (E = 2e11) clamped at its bottom
+ * (tag 3), every punch node moved down by 1e-3 (E = `punch_e`), nu = 0.3,
+ * plane strain, paired (4, 7). */
 static tfem_model *punch_scene(mesh_t *P, int first_punch, double punch_e) {
   tfem_model *m = model_of(P, 2, 2e11, 1.0, TFEM_PLANE_MODE_STRAIN);
   CHECK(tfem_set_material(m, 2, punch_e, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
@@ -900,6 +882,26 @@ static tfem_model *punch_scene(mesh_t *P, int first_punch, double punch_e) {
   return m;
 }
 
+/* A rigid punch (every node of body 2 moved down 1e-3) on a block E =
+ * 2e11: with E_c = 1e23 the penalty's overlap falls below the rounding of
+ * u and the contact forces are rounding while the system is well
+ * conditioned; the solve says so (docs/method.md §6.14). The default E_c
+ * does not warn. */
+static void a_contact_modulus_too_stiff_for_its_overlap_is_warned_about(void) {
+  static mesh_t P;
+  int first_punch;
+  punch_mesh(&P, &first_punch);
+  for (int k = 0; k < 2; ++k) {
+    tfem_model *m = punch_scene(&P, first_punch, 2e11);
+    tfem_contact_options o;
+    tfem_contact_options_default(&o);
+    if (k == 1) o.contact_modulus = 1e23;
+    CHECK(tfem_solve_contact(m, &o, NULL) == TFEM_STATUS_OK);
+    CHECK(has_warning(m, "correct digits") == (k == 1));
+    tfem_destroy(m);
+  }
+}
+
 /* Found by an outside probe of rigid tools: a rigid punch (every node
  * prescribed) given a nominal E = 1e3 against a block of 2e11 set the
  * contact modulus (the smaller E of the pair): the overlap took 99.98 % of
@@ -907,10 +909,8 @@ static tfem_model *punch_scene(mesh_t *P, int first_punch, double punch_e) {
  * OK. A wholly prescribed side now leaves E_c to the other body. */
 static void a_rigid_punchs_nominal_modulus_does_not_set_the_penalty(void) {
   static mesh_t P;
-  memset(&P, 0, sizeof P);
-  grid(&P, 4, 4, 0.0, 0.0, 1.0, 1.0, 1, 1);
-  int first_punch = P.nn;
-  grid(&P, 4, 1, 0.0, 1.0, 1.0, 0.25, 2, 5);
+  int first_punch;
+  punch_mesh(&P, &first_punch);
   double force[2] = {0, 0};
   double e[2] = {2e11, 1e3};
   for (int k = 0; k < 2; ++k) {
@@ -930,10 +930,8 @@ static void a_rigid_punchs_nominal_modulus_does_not_set_the_penalty(void) {
  * too many". Both now say what is the matter. */
 static void nothing_to_solve_is_said_in_words(void) {
   static mesh_t P;
-  memset(&P, 0, sizeof P);
-  grid(&P, 4, 4, 0.0, 0.0, 1.0, 1.0, 1, 1);
-  int first_punch = P.nn;
-  grid(&P, 4, 1, 0.0, 1.0, 1.0, 0.25, 2, 5);
+  int first_punch;
+  punch_mesh(&P, &first_punch);
   tfem_model *m = punch_scene(&P, first_punch, 2e11);
   for (int v = 0; v < first_punch; ++v) {
     CHECK(tfem_fix(m, v, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
@@ -965,24 +963,27 @@ static void nothing_to_solve_is_said_in_words(void) {
  * naming the body (docs/method.md 6.14). E = 2e11 does not warn. */
 static void a_rigid_body_modelled_by_a_huge_modulus_has_its_reactions_warned_about(void) {
   static mesh_t P;
-  memset(&P, 0, sizeof P);
-  grid(&P, 4, 4, 0.0, 0.0, 1.0, 1.0, 1, 1);
-  int first_punch = P.nn;
-  grid(&P, 4, 1, 0.0, 1.0, 1.0, 0.25, 2, 5);
+  int first_punch;
+  punch_mesh(&P, &first_punch);
   for (int k = 0; k < 2; ++k) {
-    tfem_model *m = model_of(&P, 2, 2e11, k == 1 ? 5e13 : 1.0, TFEM_PLANE_MODE_STRAIN);
-    CHECK(tfem_fix_edges(m, 3, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
-    CHECK(tfem_fix_edges(m, 3, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
-    for (int v = first_punch; v < P.nn; ++v) {
-      CHECK(tfem_fix(m, v, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
-      CHECK(tfem_fix(m, v, TFEM_COMPONENT_Y, -1e-3) == TFEM_STATUS_OK);
-    }
-    CHECK(tfem_add_contact_pair(m, 4, 7, NULL) == TFEM_STATUS_OK);
+    tfem_model *m = punch_scene(&P, first_punch, k == 1 ? 1e25 : 2e11);
     CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
     CHECK(has_warning(m, "the reactions of body 2") == (k == 1));
     CHECK(!has_warning(m, "the reactions of body 1"));
     tfem_destroy(m);
   }
+}
+
+/* two_blocks() stepped to 0.5, its contact state saved (malloc'ed into
+ * *state, *size bytes), then stepped to 1.0. */
+static tfem_model *stepped_past_a_saved_state(uint8_t **state, size_t *size) {
+  tfem_model *m = two_blocks();
+  CHECK(tfem_step(m, 0.5, NULL, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_get_contact_state_size(m, size) == TFEM_STATUS_OK && *size > 0);
+  *state = malloc(*size);
+  CHECK(*state != NULL && tfem_get_contact_state(m, *state, *size) == TFEM_STATUS_OK);
+  CHECK(tfem_step(m, 1.0, NULL, NULL) == TFEM_STATUS_OK);
+  return m;
 }
 
 /* Found by a probe of load histories: reverting a step after friction was
@@ -991,13 +992,9 @@ static void a_rigid_body_modelled_by_a_huge_modulus_has_its_reactions_warned_abo
  * stiffness brought its interface factor along (contact pressures off by
  * tens of percent, status OK); a changed byte went unnoticed. */
 static void a_contact_state_never_outlives_its_problem(void) {
-  tfem_model *m = two_blocks();
-  CHECK(tfem_step(m, 0.5, NULL, NULL) == TFEM_STATUS_OK);
   size_t size = 0;
-  CHECK(tfem_get_contact_state_size(m, &size) == TFEM_STATUS_OK && size > 0);
-  uint8_t *state = malloc(size);
-  CHECK(state != NULL && tfem_get_contact_state(m, state, size) == TFEM_STATUS_OK);
-  CHECK(tfem_step(m, 1.0, NULL, NULL) == TFEM_STATUS_OK);
+  uint8_t *state = NULL;
+  tfem_model *m = stepped_past_a_saved_state(&state, &size);
   CHECK(tfem_set_friction(m, 0, 0.3) == TFEM_STATUS_OK);
   EXPECT_ERROR(m, tfem_revert_step(m), TFEM_STATUS_INVALID_STATE, "cannot be reverted");
   CHECK(tfem_step(m, 1.0, NULL, NULL) == TFEM_STATUS_OK);
@@ -2329,13 +2326,9 @@ static void a_contact_message_size_is_known_before_it_is_copied(void) {
  * fixed given that state; turning friction on (which remakes the contact
  * mesh) still blocks the revert, and the message names that change. */
 static void a_step_is_reverted_across_a_newly_fixed_dof(void) {
-  tfem_model *m = two_blocks();
-  CHECK(tfem_step(m, 0.5, NULL, NULL) == TFEM_STATUS_OK);
   size_t size = 0;
-  CHECK(tfem_get_contact_state_size(m, &size) == TFEM_STATUS_OK && size > 0);
-  uint8_t *state = malloc(size);
-  CHECK(state != NULL && tfem_get_contact_state(m, state, size) == TFEM_STATUS_OK);
-  CHECK(tfem_step(m, 1.0, NULL, NULL) == TFEM_STATUS_OK);
+  uint8_t *state = NULL;
+  tfem_model *m = stepped_past_a_saved_state(&state, &size);
   CHECK(tfem_fix(m, 45, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK); /* the upper top left corner */
   CHECK(tfem_revert_step(m) == TFEM_STATUS_OK);
   CHECK(tfem_step(m, 1.0, NULL, NULL) == TFEM_STATUS_OK);
