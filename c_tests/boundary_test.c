@@ -1378,18 +1378,25 @@ static void automatic_pairing_pairs_only_faces_that_see_each_other(void) {
   tfem_destroy(m);
 }
 
+/* Two unit blocks stacked in S, 2 x 2 cells each (tags 1..4 below,
+ * 5..8 above); `again` gets tag 99 for each of the lower block's edges (a
+ * Gmsh "whole boundary" group). Returns the lower block's edge count. */
+static int stacked_unit_blocks(mesh_t *S, int *again) {
+  memset(S, 0, sizeof *S);
+  grid(S, 2, 2, 0.0, 0.0, 1.0, 1.0, 1, 1);
+  int lower_edges = S->ne;
+  grid(S, 2, 2, 0.0, 1.0, 1.0, 1.0, 2, 5);
+  for (int k = 0; k < lower_edges; ++k) again[k] = 99;
+  return lower_edges;
+}
+
 /* Every edge of the lower block also under tag 99 (a Gmsh file's "whole
  * boundary" group, kept since every group of a curve tags its edges): the
  * interface (4, 7) is not paired again as (99, 7), by hand or
  * automatically — its contact would count twice. */
 static void an_interface_is_paired_once_whatever_tags_its_edges_carry(void) {
   static mesh_t S;
-  memset(&S, 0, sizeof S);
-  grid(&S, 2, 2, 0.0, 0.0, 1.0, 1.0, 1, 1);
-  int lower_edges = S.ne;
-  grid(&S, 2, 2, 0.0, 1.0, 1.0, 1.0, 2, 5);
-  int again[99];
-  for (int k = 0; k < lower_edges; ++k) again[k] = 99;
+  int again[99], lower_edges = stacked_unit_blocks(&S, again);
   for (int by_hand = 0; by_hand < 2; ++by_hand) {
     tfem_model *m = model_of(&S, 2, 1e9, 1.0, TFEM_PLANE_MODE_STRAIN);
     CHECK(tfem_add_boundary_edges(m, lower_edges, S.edges, again) == TFEM_STATUS_OK);
@@ -1415,12 +1422,7 @@ static void an_interface_is_paired_once_whatever_tags_its_edges_carry(void) {
  * names it and its bodies. */
 static void automatic_pairing_names_what_it_leaves_out(void) {
   static mesh_t S;
-  memset(&S, 0, sizeof S);
-  grid(&S, 2, 2, 0.0, 0.0, 1.0, 1.0, 1, 1);
-  int lower_edges = S.ne;
-  grid(&S, 2, 2, 0.0, 1.0, 1.0, 1.0, 2, 5);
-  int again[99];
-  for (int k = 0; k < lower_edges; ++k) again[k] = 99;
+  int again[99], lower_edges = stacked_unit_blocks(&S, again);
   tfem_model *m = model_of(&S, 2, 1e9, 1.0, TFEM_PLANE_MODE_STRAIN);
   CHECK(tfem_add_boundary_edges(m, lower_edges, S.edges, again) == TFEM_STATUS_OK);
   int first = -1, count = -1, n = -1;
