@@ -298,7 +298,9 @@ module tfem
     integer(c_int) :: law
     !> E_c of the contact elements; 0 = the smaller E of the two bodies, or where one side of a pair
     !! has every DOF of its contact nodes prescribed (a rigid tool) the other body's E (before
-    !! 2026-11-24 the smaller E also there: a rigid tool given a nominal E set the penalty).
+    !! 2026-11-24 the smaller E also there: a rigid tool given a nominal E set the penalty). The
+    !! host contact context (`tfem_contact_set_options`) still takes the smaller E of its two sides:
+    !! give a rigid side its neighbour's E, or set `contact_modulus`.
     real(c_double) :: contact_modulus
     !> λ of the contact elements (Jmin = h³/λ), model length units; 0 = the larger side of the
     !! mesh's bounding box.
@@ -322,9 +324,10 @@ module tfem
     integer(c_int) :: active
     !> Contact length ℓc, model length units: the summed interface-edge length of the active
     !! elements, each as far as it faces the other side, of one of B's two families (edges on one
-    !! side or on the other) in each connected strip, the one active over the longer length. Until
-    !! 2026-11-24 the mean of the two families, which counted half the width of a contact carried by
-    !! one family alone (curved sides whose nodes differ, rigid curved tools; docs/method.md §6.8).
+    !! side or on the other) in each contact zone (a pair's active elements connected through shared
+    !! nodes), the one active over the longer length. Until 2026-11-24 the mean of the two families,
+    !! which counted half the width of a contact carried by one family alone (curved sides whose
+    !! nodes differ, rigid curved tools; docs/method.md §6.8).
     real(c_double) :: contact_length
     !> Largest normal interpenetration, model length units.
     real(c_double) :: max_penetration
@@ -405,12 +408,14 @@ module tfem
   interface
     !> Number of warnings: mesh validation (unused or coincident nodes, inverted or clockwise
     !! triangles), what `tfem_add_contact_pairs_auto` left out (a tag whose edges bound several
-    !! bodies, an interface found again under other tags: kept until the pairs are cleared or the
-    !! mesh replaced) and the last solve or load step (tempering of well-shaped elements, an
-    !! ill-conditioned system, contact pressures with fewer than six correct digits: a penalty E_c
-    !! so stiff that its overlaps approach the rounding of the displacements; after `tfem_solve` or
-    !! `tfem_solve_contact`, a body's reactions with fewer than six correct digits: a "rigid" body
-    !! modelled with a huge Young's modulus).
+    !! bodies, an interface found again under other tags: kept until the pairs are cleared, the
+    !! boundary edges set anew or the mesh replaced) and the last solve or load step (tempering of
+    !! well-shaped elements, an ill-conditioned system, contact pressures with fewer than six
+    !! correct digits: a penalty E_c so stiff that its overlaps approach the rounding of the
+    !! displacements; after `tfem_solve` or `tfem_solve_contact`, a body's reactions with fewer than
+    !! six correct digits: a "rigid" body modelled with a huge Young's modulus; a one-sided contact
+    !! zone). Since 2026-11-24 the pairing warnings outlive solves, and the reaction and one-sided
+    !! warnings are new.
     function tfem_warning_count(model, count) &
         bind(C, name="tfem_warning_count") result(status)
       import
@@ -424,7 +429,7 @@ module tfem
     !> Writes to `size` the size in bytes (including the final NUL) of warning number `index`
     !! (0-based, whatever the index base): a buffer of this size holds all of it in
     !! `tfem_get_warning`. An index out of range is refused (TFEM_STATUS_INVALID_ARGUMENT), `size`
-    !! unchanged.
+    !! unchanged. Added 2026-11-24.
     function tfem_get_warning_size(model, index, size) &
         bind(C, name="tfem_get_warning_size") result(status)
       import
@@ -693,7 +698,9 @@ module tfem
 
   interface
     !> Solves a scene without contact. `info` may be NULL. A body that is not restrained gives
-    !! TFEM_STATUS_SINGULAR naming it. Fortran: `info` is OPTIONAL: omit it to pass NULL.
+    !! TFEM_STATUS_SINGULAR naming it. A model with every DOF prescribed has nothing to solve:
+    !! TFEM_STATUS_INVALID_STATE (before 2026-11-24 it was reported as SINGULAR, "free mode: "); so
+    !! also `tfem_solve_contact` and `tfem_step`. Fortran: `info` is OPTIONAL: omit it to pass NULL.
     function tfem_solve(model, info) &
         bind(C, name="tfem_solve") result(status)
       import
@@ -1005,8 +1012,9 @@ module tfem
   interface
     !> Solves the contact problem by the active-set loop over inverted contact elements. `options`
     !! may be NULL (defaults); `report` may be NULL. TFEM_STATUS_NOT_CONVERGED (cycle or iteration
-    !! cap) gives the history in the message; the model is then unchanged. Fortran: `options` and
-    !! `report` are OPTIONAL: omit them to pass NULL.
+    !! cap) gives the history in the message; the model is then unchanged. Every DOF prescribed:
+    !! TFEM_STATUS_INVALID_STATE (before 2026-11-24, SINGULAR). Fortran: `options` and `report` are
+    !! OPTIONAL: omit them to pass NULL.
     function tfem_solve_contact(model, options, report) &
         bind(C, name="tfem_solve_contact") result(status)
       import
@@ -1307,7 +1315,10 @@ module tfem
     !! interface, so options with `refactorize` set, or an interface too large to condense (see
     !! `TfemContactOptions`), are refused with TFEM_STATUS_INVALID_ARGUMENT: solve each step with
     !! `tfem_solve_contact` then. `load_factor` must be finite, at most 1e300 in magnitude. On error
-    !! the model is unchanged. Fortran: `options` and `report` are OPTIONAL: omit them to pass NULL.
+    !! the model is unchanged. Every DOF prescribed: TFEM_STATUS_INVALID_STATE (before 2026-11-24,
+    !! SINGULAR); a contact that couples no free unknown (both sides wholly prescribed):
+    !! TFEM_STATUS_INVALID_ARGUMENT, solve it with `tfem_solve_contact`. Fortran: `options` and
+    !! `report` are OPTIONAL: omit them to pass NULL.
     function tfem_step(model, load_factor, options, report) &
         bind(C, name="tfem_step") result(status)
       import
@@ -1327,7 +1338,8 @@ module tfem
     !! one before; the message names the change. Fixing or clearing prescribed DOFs does not block
     !! it: like new materials, it changes the stiffness, not the contact mesh. The state brought
     !! back is the next step's start even if that step starts a new history (new materials, options
-    !! or prescribed DOFs), with that problem's own interface factor.
+    !! or prescribed DOFs), with that problem's own interface factor. Until 2026-11-24 a change of
+    !! the prescribed DOFs also blocked the revert.
     function tfem_revert_step(model) &
         bind(C, name="tfem_revert_step") result(status)
       import
@@ -1376,7 +1388,8 @@ module tfem
     !! set and slip state, with the interface factor of this problem; so also when the next step
     !! starts a new history (new materials, options or prescribed DOFs). If the mesh, its boundary
     !! edges, the pairs or friction on/off change before the next step (they remake the contact
-    !! mesh), that step starts afresh and warns. A frictional state waiting for a step under the
+    !! mesh), that step starts afresh and warns (until 2026-11-24 a change of the prescribed DOFs
+    !! did so too; the state is now kept across it). A frictional state waiting for a step under the
     !! stick law is refused by that step (TFEM_STATUS_INVALID_ARGUMENT) until another state is set.
     !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
     !! negative length is passed as 0.
@@ -1553,8 +1566,8 @@ module tfem
     !> Size in bytes (including the final NUL) of the message `tfem_contact_last_error` would give
     !! for `context` (a buffer of this size holds all of it): 1 after a successful call; for a
     !! handle that is not a live contact context (destroyed, or a model), the size of the message
-    !! saying so. `context` may be NULL: 1 (it has no message). Fortran: `context` may be omitted
-    !! (NULL is passed).
+    !! saying so. `context` may be NULL: 1 (it has no message). Added 2026-11-24. Fortran: `context`
+    !! may be omitted (NULL is passed).
     function tfem_contact_last_error_length(context) &
         bind(C, name="tfem_contact_last_error_length") result(res)
       import
@@ -1939,11 +1952,11 @@ module tfem
 
   interface
     !> Writes the contact length of the current active set to `length`, model length units: per
-    !! connected strip of B, the summed interface-edge length of the active elements (each as far as
-    !! it faces the other side) of the family — edges on one side, or on the other: each covers the
-    !! interface once — active over the longer length; +0.0 when no element is active. Until
-    !! 2026-11-24 the mean of the two families, which counted half the width where one family alone
-    !! carries a curved contact.
+    !! contact zone (a pair's active elements of B connected through shared nodes), the summed
+    !! interface-edge length of the active elements (each as far as it faces the other side) of the
+    !! family — edges on one side, or on the other: each covers the interface once — active over the
+    !! longer length; +0.0 when no element is active. Until 2026-11-24 the mean of the two families,
+    !! which counted half the width where one family alone carries a curved contact.
     function tfem_contact_length(context, length) &
         bind(C, name="tfem_contact_length") result(status)
       import

@@ -350,7 +350,10 @@ typedef struct tfem_contact_options {
    * E_c of the contact elements; 0 = the smaller E of the two bodies, or
    * where one side of a pair has every DOF of its contact nodes prescribed
    * (a rigid tool) the other body's E (before 2026-11-24 the smaller E
-   * also there: a rigid tool given a nominal E set the penalty).
+   * also there: a rigid tool given a nominal E set the penalty). The
+   * host contact context (`tfem_contact_set_options`) still takes the
+   * smaller E of its two sides: give a rigid side its neighbour's E, or
+   * set `contact_modulus`.
    */
   double contact_modulus;
   /**
@@ -393,7 +396,8 @@ typedef struct tfem_contact_report {
    * Contact length ℓc, model length units: the summed interface-edge
    * length of the active elements, each as far as it faces the other
    * side, of one of B's two families (edges on one side or on the other)
-   * in each connected strip, the one active over the longer length.
+   * in each contact zone (a pair's active elements connected through
+   * shared nodes), the one active over the longer length.
    * Until 2026-11-24 the mean of the two families, which counted half the
    * width of a contact carried by one family alone (curved sides whose
    * nodes differ, rigid curved tools; docs/method.md §6.8).
@@ -455,13 +459,15 @@ size_t tfem_last_error_length(const struct tfem_model *model);
  * Number of warnings: mesh validation (unused or coincident nodes,
  * inverted or clockwise triangles), what `tfem_add_contact_pairs_auto`
  * left out (a tag whose edges bound several bodies, an interface found
- * again under other tags: kept until the pairs are cleared or the mesh
- * replaced) and the last solve or load step (tempering of well-shaped
+ * again under other tags: kept until the pairs are cleared, the boundary
+ * edges set anew or the mesh replaced) and the last solve or load step (tempering of well-shaped
  * elements, an ill-conditioned system, contact pressures with fewer than
  * six correct digits: a penalty E_c so stiff that its overlaps approach
  * the rounding of the displacements; after `tfem_solve` or
  * `tfem_solve_contact`, a body's reactions with fewer than six correct
- * digits: a "rigid" body modelled with a huge Young's modulus).
+ * digits: a "rigid" body modelled with a huge Young's modulus; a
+ * one-sided contact zone). Since 2026-11-24 the pairing warnings outlive
+ * solves, and the reaction and one-sided warnings are new.
  */
 enum tfem_status tfem_warning_count(struct tfem_model *model, int *count);
 
@@ -470,6 +476,7 @@ enum tfem_status tfem_warning_count(struct tfem_model *model, int *count);
  * warning number `index` (0-based, whatever the index base): a buffer
  * of this size holds all of it in `tfem_get_warning`. An index out of
  * range is refused (TFEM_STATUS_INVALID_ARGUMENT), `size` unchanged.
+ * Added 2026-11-24.
  */
 enum tfem_status tfem_get_warning_size(struct tfem_model *model, int index, size_t *size);
 
@@ -636,7 +643,10 @@ enum tfem_status tfem_clear_loads(struct tfem_model *model);
 
 /**
  * Solves a scene without contact. `info` may be NULL. A body that is not
- * restrained gives TFEM_STATUS_SINGULAR naming it.
+ * restrained gives TFEM_STATUS_SINGULAR naming it. A model with every
+ * DOF prescribed has nothing to solve: TFEM_STATUS_INVALID_STATE (before
+ * 2026-11-24 it was reported as SINGULAR, "free mode: "); so also
+ * `tfem_solve_contact` and `tfem_step`.
  */
 enum tfem_status tfem_solve(struct tfem_model *model, struct tfem_solve_info *info);
 
@@ -824,7 +834,8 @@ enum tfem_status tfem_contact_options_default(struct tfem_contact_options *optio
  * Solves the contact problem by the active-set loop over inverted contact
  * elements. `options` may be NULL (defaults); `report` may be NULL.
  * TFEM_STATUS_NOT_CONVERGED (cycle or iteration cap) gives the history in
- * the message; the model is then unchanged.
+ * the message; the model is then unchanged. Every DOF prescribed:
+ * TFEM_STATUS_INVALID_STATE (before 2026-11-24, SINGULAR).
  */
 enum tfem_status tfem_solve_contact(struct tfem_model *model,
                                     const struct tfem_contact_options *options,
@@ -1015,6 +1026,10 @@ enum tfem_status tfem_get_threads(struct tfem_model *model, int *threads);
  * `TfemContactOptions`), are refused with TFEM_STATUS_INVALID_ARGUMENT:
  * solve each step with `tfem_solve_contact` then. `load_factor` must be
  * finite, at most 1e300 in magnitude. On error the model is unchanged.
+ * Every DOF prescribed: TFEM_STATUS_INVALID_STATE (before 2026-11-24,
+ * SINGULAR); a contact that couples no free unknown (both sides wholly
+ * prescribed): TFEM_STATUS_INVALID_ARGUMENT, solve it with
+ * `tfem_solve_contact`.
  */
 enum tfem_status tfem_step(struct tfem_model *model,
                            double load_factor,
@@ -1032,7 +1047,8 @@ enum tfem_status tfem_step(struct tfem_model *model,
  * changes the stiffness, not the contact mesh. The state brought back is
  * the next step's start even if that step starts a new history (new
  * materials, options or prescribed DOFs), with that problem's own
- * interface factor.
+ * interface factor. Until 2026-11-24 a change of the prescribed DOFs also
+ * blocked the revert.
  */
 enum tfem_status tfem_revert_step(struct tfem_model *model);
 
@@ -1064,7 +1080,8 @@ enum tfem_status tfem_get_contact_state(struct tfem_model *model, uint8_t *buffe
  * starts a new history (new materials, options or prescribed DOFs). If
  * the mesh, its boundary edges, the pairs or friction on/off change
  * before the next step (they remake the contact mesh), that step starts
- * afresh and warns. A
+ * afresh and warns (until 2026-11-24 a change of the prescribed DOFs did
+ * so too; the state is now kept across it). A
  * frictional state waiting for a step under the stick law is refused by
  * that step (TFEM_STATUS_INVALID_ARGUMENT) until another state is set.
  */
@@ -1179,6 +1196,7 @@ enum tfem_status tfem_contact_last_error(const struct tfem_contact *context,
  * size holds all of it): 1 after a successful call; for a handle that is
  * not a live contact context (destroyed, or a model), the size of the
  * message saying so. `context` may be NULL: 1 (it has no message).
+ * Added 2026-11-24.
  */
 size_t tfem_contact_last_error_length(const struct tfem_contact *context);
 
@@ -1443,7 +1461,8 @@ enum tfem_status tfem_contact_element_blocks(struct tfem_contact *context,
 
 /**
  * Writes the contact length of the current active set to `length`, model
- * length units: per connected strip of B, the summed interface-edge length
+ * length units: per contact zone (a pair's active elements of B connected
+ * through shared nodes), the summed interface-edge length
  * of the active elements (each as far as it faces the other side) of the
  * family — edges on one side, or on the other: each covers the interface
  * once — active over the longer length; +0.0 when no element is active.

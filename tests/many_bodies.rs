@@ -344,6 +344,24 @@ fn pairing_warnings_are_not_repeated_and_go_with_the_pairs() {
 }
 
 #[test]
+fn new_boundary_edges_drop_what_automatic_pairing_said_of_the_old() {
+    // A reviewer's case: following the warning's advice (retag the edges)
+    // left it in place until the pairs were cleared.
+    let mut model = stacked_with_a_whole_boundary_tag();
+    model.add_contact_pairs_auto(None, 1e-9).unwrap();
+    assert_eq!(model.warnings().len(), 1, "{:?}", model.warnings());
+    let (edges, tags): (Vec<[usize; 2]>, Vec<i32>) = model
+        .mesh()
+        .unwrap()
+        .boundary_edges()
+        .iter()
+        .map(|e| (e.nodes, e.tag))
+        .unzip();
+    model.set_boundary_edges(&edges, &tags).unwrap();
+    assert!(model.warnings().is_empty(), "{:?}", model.warnings());
+}
+
+#[test]
 fn bad_pairing_input_is_refused_naming_it() {
     let mut model = blocks(&three_bodies(), None);
     for tol in [-1e-3, f64::NAN, f64::INFINITY] {

@@ -10,8 +10,8 @@
 //! the other side's chords while the other side's nodes stand off the
 //! first side's chords by the difference of their sagittas, far more than
 //! the penalty's overlap: one family carries the contact alone. The solve
-//! is then the exact contact of those two polygons; ℓc counts, strip by
-//! strip, the family active over the longer length (the mean of the two,
+//! is then the exact contact of those two polygons; ℓc counts, contact
+//! zone by zone, the family active over the longer length (the mean of the two,
 //! as before 2026-11-24, counted half the width of a one-sided contact:
 //! an outside probe's rigid cylinder, ℓc 0.50 of 2a at h = a/64). Where
 //! the carrying family's apices are the finer side's nodes, only those
@@ -30,48 +30,64 @@ use super::{ContactElement, ContactPair};
 /// as missing. Measured, the smaller family's share: 1 on flat interfaces
 /// (matching or not) and the seed scene; Hertz with equal moduli 0.52–0.8
 /// (the matching mesh's cylinder chords, §6.2's chord-normal defect,
-/// 0.64, 0.58, 0.52 at h = a/16 … a/64); one-sided pairs 0–0.1.
+/// 0.65, 0.58, 0.52 at h = a/16 … a/64); one-sided pairs 0–0.1.
 const SHARE: f64 = 0.2;
 
-/// Fewer active elements than this in a strip say nothing (a contact a
+/// Fewer active elements than this in a zone say nothing (a contact a
 /// few elements wide has no interior).
 const MIN_ACTIVE: usize = 8;
 
-/// One connected strip of B: its elements' families and, per family, the
-/// active length, the active count, and the sum and count of all edges.
+/// One contact zone of a pair: its active elements connected through
+/// shared nodes, split into the two families.
 #[derive(Debug, Clone, Default, PartialEq)]
-pub struct Strip {
+pub struct Zone {
     /// The pair of its elements.
     pub pair: usize,
-    /// Σ f_e over its active elements, per family.
+    /// Σ f_e over its elements, per family.
     pub active_length: [f64; 2],
-    /// Its active elements.
+    /// Its elements.
     pub active: usize,
-    /// Σ ℓ_e over all its elements, per family.
-    pub edge_sum: [f64; 2],
-    /// Its elements, per family.
-    pub count: [usize; 2],
 }
 
-/// The strips of B (connected through shared nodes), with their elements
-/// split into the two families by the side of their edge: the two nodes of
-/// an element's edge are on one side and its apex on the other, so the
-/// sides are the two colours of the graph whose vertices are the sides'
-/// polylines. Elements of a strip that cannot be so coloured (a user's B
-/// with an apex on both sides of one edge chain) form no strip and are
-/// returned apart, as (pair, active length).
-pub fn strips(elements: &[ContactElement], active: &[bool]) -> (Vec<Strip>, Vec<(usize, f64)>) {
-    let mut dsu = Dsu::default();
+/// The contact zones of B, pair by pair: the active elements of a pair
+/// connected through shared nodes, split into the two families by the
+/// side of their edge. The two nodes of an element's edge are on one side
+/// and its apex on the other, so the sides are the two colours of the
+/// graph whose vertices are the stretches of each side joined by active
+/// edges. A zone that cannot be so coloured (a user's B with an apex on
+/// both sides of one edge chain, or an apex that is a node of its own
+/// edge) forms no zone: its (pair, active length) is returned apart.
+/// Pairs are coloured apart, so that sides shared by several pairs (a
+/// block on two others) do not join their zones.
+pub fn zones(elements: &[ContactElement], active: &[bool]) -> (Vec<Zone>, Vec<(usize, f64)>) {
+    let mut by_pair: HashMap<usize, Vec<&ContactElement>> = HashMap::new();
+    for (el, _) in elements.iter().zip(active).filter(|(_, a)| **a) {
+        by_pair.entry(el.pair).or_default().push(el);
+    }
+    let mut pairs: Vec<usize> = by_pair.keys().copied().collect();
+    pairs.sort_unstable();
+    let (mut out, mut apart) = (Vec::new(), Vec::new());
+    for pair in pairs {
+        let (mut z, mut a) = pair_zones(pair, &by_pair[&pair]);
+        out.append(&mut z);
+        apart.append(&mut a);
+    }
+    (out, apart)
+}
+
+/// [`zones`] of one pair's active elements.
+fn pair_zones(pair: usize, elements: &[&ContactElement]) -> (Vec<Zone>, Vec<(usize, f64)>) {
     let edge = |el: &ContactElement| {
         let mut e = el.nodes.iter().copied().filter(|&v| v != el.apex);
         (e.next().unwrap_or(el.apex), e.next().unwrap_or(el.apex))
     };
+    let mut dsu = Dsu::default();
     for el in elements {
         let (p, q) = edge(el);
         dsu.union(p, q);
         dsu.find(el.apex);
     }
-    // Polylines joined by elements: (edge's, apex's), coloured apart.
+    // Stretches joined by elements: (edge's, apex's), coloured apart.
     let mut links: HashMap<usize, Vec<usize>> = HashMap::new();
     for el in elements {
         let (e, a) = (dsu.find(edge(el).0), dsu.find(el.apex));
@@ -104,47 +120,56 @@ pub fn strips(elements: &[ContactElement], active: &[bool]) -> (Vec<Strip>, Vec<
             }
         }
     }
-    let mut by_graph: HashMap<(usize, usize), Strip> = HashMap::new();
+    let mut zones = vec![
+        Zone {
+            pair,
+            ..Default::default()
+        };
+        bad.len()
+    ];
     let mut apart = Vec::new();
-    for (el, &on) in elements.iter().zip(active) {
+    for el in elements {
         let (g, k) = colour[&dsu.find(edge(el).0)];
         if bad[g] {
-            if on {
-                apart.push((el.pair, el.facing));
-            }
+            apart.push((pair, el.facing));
             continue;
         }
-        let s = by_graph.entry((g, el.pair)).or_insert_with(|| Strip {
-            pair: el.pair,
-            ..Default::default()
-        });
-        let k = usize::from(k);
-        s.edge_sum[k] += el.edge_length;
-        s.count[k] += 1;
-        if on {
-            s.active_length[k] += el.facing;
-            s.active += 1;
-        }
+        zones[g].active_length[usize::from(k)] += el.facing;
+        zones[g].active += 1;
     }
-    let mut out: Vec<((usize, usize), Strip)> = by_graph.into_iter().collect();
-    out.sort_unstable_by_key(|(k, _)| *k);
-    (out.into_iter().map(|(_, s)| s).collect(), apart)
+    zones.retain(|z| z.active > 0);
+    (zones, apart)
 }
 
-/// ℓc (docs/method.md §6.8): strip by strip, the active length of the
-/// family active over the longer length; elements that form no strip count
-/// half, as each point lies under two of them.
+/// ℓc (docs/method.md §6.8) and the one-sided warnings of an active set
+/// ([`contact_length`], [`one_sided_warnings`]) from one pass over B.
+pub fn contact_length_and_warnings(
+    elements: &[ContactElement],
+    active: &[bool],
+    pairs: &[ContactPair],
+) -> (f64, Vec<String>) {
+    let (zones, apart) = zones(elements, active);
+    (length_of(&zones, &apart), warnings_of(&zones, pairs))
+}
+
+/// ℓc (docs/method.md §6.8): zone by zone, the active length of the family
+/// active over the longer length; elements that form no zone count half,
+/// as each point lies under two of them.
 pub fn contact_length(elements: &[ContactElement], active: &[bool]) -> f64 {
-    let (strips, apart) = strips(elements, active);
+    let (zones, apart) = zones(elements, active);
+    length_of(&zones, &apart)
+}
+
+fn length_of(zones: &[Zone], apart: &[(usize, f64)]) -> f64 {
     // Folded from +0.0: `Sum` for f64 starts from −0.0, which an empty
     // active set would return.
-    let whole = strips.iter().fold(0.0, |sum, s| {
-        sum + s.active_length[0].max(s.active_length[1])
+    let whole = zones.iter().fold(0.0, |sum, z| {
+        sum + z.active_length[0].max(z.active_length[1])
     });
     apart.iter().fold(whole, |sum, (_, l)| sum + 0.5 * l)
 }
 
-/// A warning for each strip that one family carries alone (active over
+/// A warning for each zone that one family carries alone (active over
 /// less than 0.2 of the other's length, with at least 8 active elements),
 /// naming the pair by its tags.
 pub fn one_sided_warnings(
@@ -152,15 +177,18 @@ pub fn one_sided_warnings(
     active: &[bool],
     pairs: &[ContactPair],
 ) -> Vec<String> {
-    let (strips, _) = strips(elements, active);
+    warnings_of(&zones(elements, active).0, pairs)
+}
+
+fn warnings_of(zones: &[Zone], pairs: &[ContactPair]) -> Vec<String> {
     let mut warnings = Vec::new();
-    for s in strips {
-        let [la, lb] = s.active_length;
+    for z in zones {
+        let [la, lb] = z.active_length;
         let (long, short) = (la.max(lb), la.min(lb));
-        if s.active < MIN_ACTIVE || short >= SHARE * long {
+        if z.active < MIN_ACTIVE || short >= SHARE * long {
             continue;
         }
-        let p = &pairs[s.pair];
+        let p = &pairs[z.pair];
         warnings.push(format!(
             "contact pair {} (tags {}, {}) is one-sided: the elements of B with their edge on one \
              side are active over {long:.3e}, those with their edge on the other over \
@@ -169,7 +197,7 @@ pub fn one_sided_warnings(
              contact pressures and the stresses next to the interface can be off by O(p) \
              (docs/method.md §6.11, \"One-sided contact\"); give the sides matching nodes where \
              the interface is curved",
-            s.pair, p.tag_a, p.tag_b
+            z.pair, p.tag_a, p.tag_b
         ));
     }
     warnings
@@ -255,6 +283,72 @@ mod tests {
             .map(|k| if k % 2 == 0 { k / 2 < 3 } else { k / 2 < 2 })
             .collect();
         assert_eq!(contact_length(&els, &active), 3.0);
+    }
+
+    /// `els` shifted to nodes from `first` on and to pair `pair`.
+    fn moved(els: &[ContactElement], first: usize, pair: usize) -> Vec<ContactElement> {
+        els.iter()
+            .map(|e| ContactElement {
+                nodes: e.nodes.map(|v| v + first),
+                apex: e.apex + first,
+                pair,
+                ..e.clone()
+            })
+            .collect()
+    }
+
+    #[test]
+    fn pairs_whose_sides_close_an_odd_cycle_keep_their_own_zones() {
+        // A reviewer's case: three pairs whose sides share corner nodes
+        // (two blocks on a third) close a cycle that cannot be coloured in
+        // two; coloured together, every element fell back to the half
+        // count. Pair 0 one-sided over 4 edges; pairs 1 and 2 share its
+        // nodes through their own elements.
+        let mut els: Vec<ContactElement> = matching_strip(4)
+            .into_iter()
+            .enumerate()
+            .filter(|(k, _)| k % 2 == 0)
+            .map(|(_, e)| e)
+            .collect();
+        let n = els.len();
+        els.extend(moved(&matching_strip(4), 4, 1));
+        els.extend(moved(&matching_strip(4), 5, 2));
+        let active: Vec<bool> = (0..els.len()).map(|k| k < n).collect();
+        assert_eq!(contact_length(&els, &active), 4.0);
+    }
+
+    #[test]
+    fn two_zones_carried_by_opposite_families_count_both() {
+        let els = matching_strip(8);
+        // Edges 0..4 by family a alone, 4..8 by family b alone.
+        let active: Vec<bool> = (0..els.len())
+            .map(|k| if k % 2 == 0 { k / 2 < 4 } else { k / 2 >= 5 })
+            .collect();
+        assert_eq!(contact_length(&els, &active), 7.0);
+    }
+
+    #[test]
+    fn a_one_sided_zone_beside_a_conforming_one_is_warned_about() {
+        let mut els = matching_strip(10);
+        let n = els.len();
+        els.extend(moved(&matching_strip(10), 100, 0));
+        // The first zone conforming, the second one-sided.
+        let active: Vec<bool> = (0..els.len()).map(|k| k < n || k % 2 == 0).collect();
+        let pairs = [ContactPair {
+            tag_a: 1,
+            tag_b: 2,
+            body_a: 1,
+            body_b: 2,
+            user_mesh: None,
+            friction: 0.0,
+        }];
+        let (lc, w) = contact_length_and_warnings(&els, &active, &pairs);
+        assert_eq!(lc, 20.0);
+        assert_eq!(w.len(), 1, "{w:?}");
+        assert!(
+            w[0].contains("contact pair 0 (tags 1, 2) is one-sided"),
+            "{w:?}"
+        );
     }
 
     #[test]

@@ -670,7 +670,8 @@ impl HostContact {
     }
 
     /// The contact length of the current active set (docs/method.md §6.8):
-    /// per connected strip of B, the facing interface-edge length of the
+    /// per contact zone (a pair's active elements connected through shared
+    /// nodes), the facing interface-edge length of the
     /// active elements of the family (edges on one side, or on the other)
     /// active over the longer length; +0.0 when none is. Until 2026-11-24
     /// the mean of the two families, half the width where one family alone

@@ -88,7 +88,8 @@ pub struct ContactOptions {
     /// E_c; `None` = the smaller Young's modulus of the two bodies of each
     /// pair (stiffer values only worsen conditioning), or, where one side of
     /// the pair is a rigid tool (every DOF of its contact nodes prescribed),
-    /// the other body's (docs/method.md §6.14).
+    /// the other body's (docs/method.md §6.14); [`HostContact`] keeps the
+    /// smaller E of its two sides.
     pub contact_modulus: Option<f64>,
     /// λ of the contact elements (Jmin = h³/λ), a length in model units;
     /// `None` = the larger side of the mesh's bounding box.

@@ -51,7 +51,10 @@ pub struct TfemContactOptions {
     /// E_c of the contact elements; 0 = the smaller E of the two bodies, or
     /// where one side of a pair has every DOF of its contact nodes prescribed
     /// (a rigid tool) the other body's E (before 2026-11-24 the smaller E
-    /// also there: a rigid tool given a nominal E set the penalty).
+    /// also there: a rigid tool given a nominal E set the penalty). The
+    /// host contact context (`tfem_contact_set_options`) still takes the
+    /// smaller E of its two sides: give a rigid side its neighbour's E, or
+    /// set `contact_modulus`.
     pub contact_modulus: f64,
     /// λ of the contact elements (Jmin = h³/λ), model length units; 0 = the
     /// larger side of the mesh's bounding box.
@@ -115,7 +118,8 @@ pub struct TfemContactReport {
     /// Contact length ℓc, model length units: the summed interface-edge
     /// length of the active elements, each as far as it faces the other
     /// side, of one of B's two families (edges on one side or on the other)
-    /// in each connected strip, the one active over the longer length.
+    /// in each contact zone (a pair's active elements connected through
+    /// shared nodes), the one active over the longer length.
     /// Until 2026-11-24 the mean of the two families, which counted half the
     /// width of a contact carried by one family alone (curved sides whose
     /// nodes differ, rigid curved tools; docs/method.md §6.8).

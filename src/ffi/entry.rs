@@ -102,13 +102,15 @@ fn model_error(model: *const TfemModel) -> Result<String> {
 /// Number of warnings: mesh validation (unused or coincident nodes,
 /// inverted or clockwise triangles), what `tfem_add_contact_pairs_auto`
 /// left out (a tag whose edges bound several bodies, an interface found
-/// again under other tags: kept until the pairs are cleared or the mesh
-/// replaced) and the last solve or load step (tempering of well-shaped
+/// again under other tags: kept until the pairs are cleared, the boundary
+/// edges set anew or the mesh replaced) and the last solve or load step (tempering of well-shaped
 /// elements, an ill-conditioned system, contact pressures with fewer than
 /// six correct digits: a penalty E_c so stiff that its overlaps approach
 /// the rounding of the displacements; after `tfem_solve` or
 /// `tfem_solve_contact`, a body's reactions with fewer than six correct
-/// digits: a "rigid" body modelled with a huge Young's modulus).
+/// digits: a "rigid" body modelled with a huge Young's modulus; a
+/// one-sided contact zone). Since 2026-11-24 the pairing warnings outlive
+/// solves, and the reaction and one-sided warnings are new.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_warning_count(model: *mut TfemModel, count: *mut c_int) -> Status {
     with_model(model, |m| {
@@ -120,6 +122,7 @@ pub unsafe extern "C" fn tfem_warning_count(model: *mut TfemModel, count: *mut c
 /// warning number `index` (0-based, whatever the index base): a buffer
 /// of this size holds all of it in `tfem_get_warning`. An index out of
 /// range is refused (TFEM_STATUS_INVALID_ARGUMENT), `size` unchanged.
+/// Added 2026-11-24.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_warning_size(
     model: *mut TfemModel,
@@ -570,7 +573,10 @@ pub unsafe extern "C" fn tfem_clear_loads(model: *mut TfemModel) -> Status {
 }
 
 /// Solves a scene without contact. `info` may be NULL. A body that is not
-/// restrained gives TFEM_STATUS_SINGULAR naming it.
+/// restrained gives TFEM_STATUS_SINGULAR naming it. A model with every
+/// DOF prescribed has nothing to solve: TFEM_STATUS_INVALID_STATE (before
+/// 2026-11-24 it was reported as SINGULAR, "free mode: "); so also
+/// `tfem_solve_contact` and `tfem_step`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_solve(model: *mut TfemModel, info: *mut TfemSolveInfo) -> Status {
     with_model(model, |m| {
@@ -980,7 +986,8 @@ pub unsafe extern "C" fn tfem_contact_options_default(options: *mut TfemContactO
 /// Solves the contact problem by the active-set loop over inverted contact
 /// elements. `options` may be NULL (defaults); `report` may be NULL.
 /// TFEM_STATUS_NOT_CONVERGED (cycle or iteration cap) gives the history in
-/// the message; the model is then unchanged.
+/// the message; the model is then unchanged. Every DOF prescribed:
+/// TFEM_STATUS_INVALID_STATE (before 2026-11-24, SINGULAR).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_solve_contact(
     model: *mut TfemModel,
@@ -1333,6 +1340,10 @@ pub unsafe extern "C" fn tfem_get_threads(model: *mut TfemModel, threads: *mut c
 /// `TfemContactOptions`), are refused with TFEM_STATUS_INVALID_ARGUMENT:
 /// solve each step with `tfem_solve_contact` then. `load_factor` must be
 /// finite, at most 1e300 in magnitude. On error the model is unchanged.
+/// Every DOF prescribed: TFEM_STATUS_INVALID_STATE (before 2026-11-24,
+/// SINGULAR); a contact that couples no free unknown (both sides wholly
+/// prescribed): TFEM_STATUS_INVALID_ARGUMENT, solve it with
+/// `tfem_solve_contact`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_step(
     model: *mut TfemModel,
@@ -1362,7 +1373,8 @@ pub unsafe extern "C" fn tfem_step(
 /// changes the stiffness, not the contact mesh. The state brought back is
 /// the next step's start even if that step starts a new history (new
 /// materials, options or prescribed DOFs), with that problem's own
-/// interface factor.
+/// interface factor. Until 2026-11-24 a change of the prescribed DOFs also
+/// blocked the revert.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_revert_step(model: *mut TfemModel) -> Status {
     with_model(model, |m| m.model.revert_step())
@@ -1420,7 +1432,8 @@ pub unsafe extern "C" fn tfem_get_contact_state(
 /// starts a new history (new materials, options or prescribed DOFs). If
 /// the mesh, its boundary edges, the pairs or friction on/off change
 /// before the next step (they remake the contact mesh), that step starts
-/// afresh and warns. A
+/// afresh and warns (until 2026-11-24 a change of the prescribed DOFs did
+/// so too; the state is now kept across it). A
 /// frictional state waiting for a step under the stick law is refused by
 /// that step (TFEM_STATUS_INVALID_ARGUMENT) until another state is set.
 #[unsafe(no_mangle)]

@@ -120,6 +120,7 @@ pub unsafe extern "C" fn tfem_contact_last_error(
 /// size holds all of it): 1 after a successful call; for a handle that is
 /// not a live contact context (destroyed, or a model), the size of the
 /// message saying so. `context` may be NULL: 1 (it has no message).
+/// Added 2026-11-24.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_last_error_length(context: *const TfemContact) -> usize {
     if context.is_null() {
@@ -588,7 +589,8 @@ pub unsafe extern "C" fn tfem_contact_element_blocks(
 }
 
 /// Writes the contact length of the current active set to `length`, model
-/// length units: per connected strip of B, the summed interface-edge length
+/// length units: per contact zone (a pair's active elements of B connected
+/// through shared nodes), the summed interface-edge length
 /// of the active elements (each as far as it faces the other side) of the
 /// family — edges on one side, or on the other: each covers the interface
 /// once — active over the longer length; +0.0 when no element is active.

@@ -32,7 +32,7 @@ pub struct Problem {
     loads: Loads,
     pairs: Vec<ContactPair>,
     /// What automatic pairing left out, and why (kept until the pairs are
-    /// cleared or the mesh replaced).
+    /// cleared, the boundary edges set anew or the mesh replaced).
     pairing_warnings: Vec<String>,
     structure: u64,
     /// The contact epoch ([`Problem::contact_epoch`]) and what moved it
@@ -203,6 +203,9 @@ impl Problem {
         match self.revalidated_pairs() {
             Ok(pairs) => {
                 self.pairs = pairs;
+                // What automatic pairing said of the old edges (a tag over
+                // two bodies, to be split, a reviewer's case) no longer holds.
+                self.pairing_warnings.clear();
                 self.changed_contact("the boundary edges");
                 Ok(())
             }

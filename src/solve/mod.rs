@@ -509,14 +509,14 @@ pub(crate) fn contact_outcome(
         }
     }
     // The part of each edge that faces the other side, the longer-active
-    // family of each strip (§6.8, §6.11).
-    lc += crate::contact::conformity::contact_length(elements, &active);
+    // family of each contact zone (§6.8, §6.11).
+    let (zones_lc, one_sided) =
+        crate::contact::conformity::contact_length_and_warnings(elements, &active, pairs);
+    lc += zones_lc;
     let name = |k: usize| format!("contact element {}", k + set.nodes().base);
     ensure_finite(pressure.iter().copied(), 1, "contact pressure", name)?;
     precision_warning(set, &ue_of, &active, &pressure, warnings);
-    warnings.extend(crate::contact::conformity::one_sided_warnings(
-        elements, &active, pairs,
-    ));
+    warnings.extend(one_sided);
     ensure_finite([lc, max_pen], 1, "contact length or penetration", |_| {
         "the contact report".to_string()
     })?;

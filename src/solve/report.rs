@@ -61,7 +61,8 @@ pub struct ContactReport {
     pub elements: usize,
     /// Active (inverted) elements at convergence.
     pub active: usize,
-    /// Contact length ℓc: in each connected strip of B, the summed
+    /// Contact length ℓc: in each contact zone (a pair's active elements of
+    /// B connected through shared nodes), the summed
     /// interface-edge length (as far as it faces the other side) of the
     /// active elements of the family — edges on one side, or on the other;
     /// each tiles the interface once — active over the longer length
