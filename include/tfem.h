@@ -1026,7 +1026,11 @@ enum tfem_status tfem_get_threads(struct tfem_model *model, int *threads);
  * `TfemContactOptions`), are refused with TFEM_STATUS_INVALID_ARGUMENT:
  * solve each step with `tfem_solve_contact` then. `load_factor` must be
  * finite, at most 1e300 in magnitude. On error the model is unchanged.
- * Every DOF prescribed: TFEM_STATUS_INVALID_STATE (before 2026-11-24,
+ * A frictional history goes on from the slip state it reached across a
+ * change of materials, options or prescribed DOFs between steps (since
+ * 2026-11-24; before, such a step started from no slip, and the answer,
+ * which with friction depends on the path, differed by 2.7 % on a test
+ * scene). Every DOF prescribed: TFEM_STATUS_INVALID_STATE (before 2026-11-24,
  * SINGULAR); a contact that couples no free unknown (both sides wholly
  * prescribed): TFEM_STATUS_INVALID_ARGUMENT, solve it with
  * `tfem_solve_contact`.

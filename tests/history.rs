@@ -293,6 +293,22 @@ fn a_step_can_be_reverted_after_a_dof_is_fixed() {
         bits(&model.displacements().unwrap()),
         bits(&fresh.displacements().unwrap())
     );
+    // And as a history that never reverted: stepped to 0.5, the DOF fixed,
+    // stepped to 1.0 (not through a saved state, a reviewer's point).
+    let mut continued = frictional();
+    continued.step(0.5, &options).unwrap();
+    continued.fix(node, Component::X, 0.0).unwrap();
+    continued.step(1.0, &options).unwrap();
+    let (u, v) = (
+        model.displacements().unwrap(),
+        continued.displacements().unwrap(),
+    );
+    let scale = v.iter().fold(0.0f64, |m, d| m.max(d[0].hypot(d[1])));
+    let diff = u
+        .iter()
+        .zip(&v)
+        .fold(0.0f64, |m, (a, b)| m.max((a[0] - b[0]).hypot(a[1] - b[1])));
+    assert!(diff <= 1e-12 * scale, "{diff:e} of {scale:e}");
 }
 
 /// What still blocks a revert is named: the change that remade the
@@ -417,6 +433,14 @@ fn a_state_given_before_a_stiffness_change_is_the_next_steps_start_in_the_same_m
     model.step(1.0, &options).unwrap();
     model.step(1.5, &options).unwrap();
     model.revert_step().unwrap();
+    model.set_material(2, stiffer).unwrap();
+    model.step(0.3, &options).unwrap();
+    assert_eq!(bits(&model.displacements().unwrap()), expected);
+    // And the state the history reached, with no state given at all: the
+    // step after the change goes on from it (it started from no slip until
+    // 2026-11-24, a reviewer's comparison).
+    let mut model = frictional();
+    model.step(1.0, &options).unwrap();
     model.set_material(2, stiffer).unwrap();
     model.step(0.3, &options).unwrap();
     assert_eq!(bits(&model.displacements().unwrap()), expected);
