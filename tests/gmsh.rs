@@ -1159,7 +1159,10 @@ const P: f64 = 1e6;
 /// ν = 0.3) under pressure `P` on `pressed`, with x fixed on `fix_x` and y
 /// on `fix_y`.
 fn square_stresses(pressed: i32, fix_x: i32, fix_y: i32) -> Vec<[f64; 3]> {
-    let path = write("square_in_groups.msh", &square_in_groups("1 7", &[]));
+    // A file of its own per call: the tests run in parallel, and one read
+    // another's file while it was being written (a failed run).
+    let name = format!("square_in_groups_{pressed}_{fix_x}_{fix_y}.msh");
+    let path = write(&name, &square_in_groups("1 7", &[]));
     let mut model = Model::new();
     model.set_mesh(read_msh(&path, 0).unwrap());
     model
