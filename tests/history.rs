@@ -540,6 +540,40 @@ fn a_failed_step_changes_nothing() {
 }
 
 #[test]
+fn a_failed_step_keeps_the_slip_state_a_frictional_history_carries() {
+    // After a new prescribed DOF the next step carries the history's slip
+    // state; a step that fails in between must leave it to the one after.
+    let options = ContactOptions::default();
+    let capped = ContactOptions {
+        max_iterations: 1,
+        ..options
+    };
+    let node = TwoBlocks {
+        c: 0.3,
+        mesh_size: 1.0 / 32.0,
+        ..Default::default()
+    }
+    .build()
+    .unwrap()
+    .corner_lower;
+    let run = |fail: bool| {
+        let mut model = scene(0.3);
+        model.set_friction(0, 0.3).unwrap();
+        model.step(0.5, &options).unwrap();
+        model.fix(node, Component::X, 0.0).unwrap();
+        if fail {
+            assert!(
+                model.step(-0.5, &capped).is_err(),
+                "the capped step must fail"
+            );
+        }
+        model.step(1.0, &options).unwrap();
+        bits(&model.displacements().unwrap())
+    };
+    assert_eq!(run(true), run(false));
+}
+
+#[test]
 fn a_failed_first_step_leaves_no_history() {
     let options = ContactOptions::default();
     let capped = ContactOptions {

@@ -583,6 +583,8 @@ impl Model {
                     if had_matrix && session.system_matrix(revision).is_none() {
                         keep_matrix(session, &input, self.solution.as_ref(), revision);
                     }
+                    // A failed step changes nothing: the next one carries it.
+                    self.carried = carried;
                     return Err(e);
                 }
             };
