@@ -17,6 +17,25 @@ fn scene(c: f64) -> Model {
     .model
 }
 
+/// [`scene`] with μ = 0.3 on its pair.
+fn frictional_scene(c: f64) -> Model {
+    let mut m = scene(c);
+    m.set_friction(0, 0.3).unwrap();
+    m
+}
+
+/// An interface node of the lower body of `scene(0.3)`, its x free.
+fn lower_interface_corner() -> usize {
+    TwoBlocks {
+        c: 0.3,
+        mesh_size: 1.0 / 32.0,
+        ..Default::default()
+    }
+    .build()
+    .unwrap()
+    .corner_lower
+}
+
 fn bits(u: &[[f64; 2]]) -> Vec<u64> {
     u.iter().flatten().map(|v| v.to_bits()).collect()
 }
@@ -260,20 +279,9 @@ fn a_step_cannot_be_reverted_once_friction_is_turned_on_and_the_next_step_starts
 #[test]
 fn a_step_can_be_reverted_after_a_dof_is_fixed() {
     let options = ContactOptions::default();
-    let frictional = || {
-        let mut m = scene(0.3);
-        m.set_friction(0, 0.3).unwrap();
-        m
-    };
+    let frictional = || frictional_scene(0.3);
     // An interface node of the lower body, its x free in the scene.
-    let node = TwoBlocks {
-        c: 0.3,
-        mesh_size: 1.0 / 32.0,
-        ..Default::default()
-    }
-    .build()
-    .unwrap()
-    .corner_lower;
+    let node = lower_interface_corner();
     let mut saved = frictional();
     saved.step(0.5, &options).unwrap();
     let state = saved.contact_state().unwrap();
@@ -398,11 +406,7 @@ fn a_restored_state_dropped_by_a_structure_change_warns_and_the_step_starts_afre
 #[test]
 fn a_state_given_before_a_stiffness_change_is_the_next_steps_start_in_the_same_model() {
     let options = ContactOptions::default();
-    let frictional = || {
-        let mut m = scene(0.3);
-        m.set_friction(0, 0.3).unwrap();
-        m
-    };
+    let frictional = || frictional_scene(0.3);
     let mut saved = frictional();
     saved.step(1.0, &options).unwrap();
     let state = saved.contact_state().unwrap();
@@ -548,17 +552,9 @@ fn a_failed_step_keeps_the_slip_state_a_frictional_history_carries() {
         max_iterations: 1,
         ..options
     };
-    let node = TwoBlocks {
-        c: 0.3,
-        mesh_size: 1.0 / 32.0,
-        ..Default::default()
-    }
-    .build()
-    .unwrap()
-    .corner_lower;
+    let node = lower_interface_corner();
     let run = |fail: bool| {
-        let mut model = scene(0.3);
-        model.set_friction(0, 0.3).unwrap();
+        let mut model = frictional_scene(0.3);
         model.step(0.5, &options).unwrap();
         model.fix(node, Component::X, 0.0).unwrap();
         if fail {

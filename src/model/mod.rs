@@ -554,17 +554,17 @@ impl Model {
             let _ = self.field();
         }
         let contact = self.problem.contact_epoch();
-        // A frictional history that starts anew (new materials, options or
-        // prescribed DOFs) on the same contact mesh goes on from the slip
-        // state it reached, as after a revert: started from no slip, it
-        // forgot its path (2.7 % on tests/history.rs's scene, found by a
-        // reviewer's comparison). Taken before the session, and its
-        // history, may be remade (or kept by `edit`, which remade it).
-        let carried = match self.carried.take() {
-            Some(kept) => Some(kept),
-            None if !continues => self.history_state(contact),
-            None => None,
-        };
+        // A step that starts a new history (new materials, options or
+        // prescribed DOFs) with no state given or reverted: a frictional
+        // history on the same contact mesh goes on from the slip state it
+        // reached, as after a revert — started from no slip, it forgot its
+        // path (2.7 % on tests/history.rs's scene, a reviewer's comparison).
+        // Taken before the session, and its history, may be remade (or
+        // kept by `edit`, which remade it).
+        let carried = self
+            .carried
+            .take()
+            .or_else(|| (!continues).then(|| self.history_state(contact))?);
         let session = session_of(&mut self.session, &self.problem, &mut timings)?;
         let revision = self.problem.revision();
         let dropped = self.restored.as_ref().is_some_and(|k| k.contact != contact);
@@ -603,12 +603,7 @@ impl Model {
         solution.step = true;
         self.solve_warnings = warnings;
         if dropped {
-            self.solve_warnings.push(format!(
-                "the contact state given to set_contact_state (or brought back by revert_step) \
-                 belonged to the contact mesh before {} changed (a change of {CONTACT_STRUCTURE} \
-                 remakes it): this step started afresh",
-                self.problem.contact_change()
-            ));
+            self.solve_warnings.push(dropped_warning(&self.problem));
         }
         self.undo = Some((
             self.solution.take(),
@@ -1165,6 +1160,17 @@ fn reaction_warning(problem: &Problem, solution: &Solution, u: &[f64], warnings:
 /// messages: the structure but the set of prescribed DOFs.
 const CONTACT_STRUCTURE: &str =
     "the mesh, its boundary edges, the contact pairs or friction on/off";
+
+/// The warning of a step whose given (or reverted) contact state belonged
+/// to the contact mesh before a change of `problem`.
+fn dropped_warning(problem: &Problem) -> String {
+    format!(
+        "the contact state given to set_contact_state (or brought back by revert_step) belonged \
+         to the contact mesh before {} changed (a change of {CONTACT_STRUCTURE} remakes it): this \
+         step started afresh",
+        problem.contact_change()
+    )
+}
 
 /// The bytes of a contact state: a magic word, the fingerprint of B, the
 /// fingerprint of the interface system the history began with, a checksum
