@@ -1126,8 +1126,10 @@ fn reaction_warning(problem: &Problem, solution: &Solution, u: &[f64], warnings:
     };
     // Per body: the resultant, Σ |R| and the bound.
     let mut per_body: std::collections::BTreeMap<i32, ([f64; 2], f64, f64)> = Default::default();
-    for (g, (&rg, &bg)) in r.iter().zip(&bound).enumerate() {
-        if let (true, Some(body)) = (problem.is_prescribed(g), mesh.node_body()[g / 2]) {
+    for (g, _) in problem.constraints() {
+        if let (Some(&rg), Some(&bg), Some(&Some(body))) =
+            (r.get(g), bound.get(g), mesh.node_body().get(g / 2))
+        {
             let e = per_body.entry(body).or_default();
             e.0[g % 2] += rg;
             e.1 += rg.abs();
