@@ -76,6 +76,13 @@
 //! pass the patch test to 7e-12 of p; `sampled-b` fails it by O(p) and
 //! is 3–16× worse than tfem on Hertz.
 //!
+//! `--schemes library` takes the weighted gaps from the library
+//! (`tfem::contact::mortar::weighted_gaps`, the `sampled` scheme built
+//! from the pair's two sides alone); `--contrast 100` makes the cylinder
+//! 100× stiffer than the block, the stiff curved tool on which tfem's
+//! strip is one-sided (docs/method.md §6.11, "Which side is the slave").
+//!
+//!   cargo run --release --features studies --example mortar_probe -- --dual --schemes library --contrast 100 --ratios 0.4,2.5
 //!   cargo run --release --features studies --example mortar_probe
 //!   cargo run --release --features studies --example mortar_probe -- --dual --schemes mortar,sampled,sampled-ls-n,sampled-ls,sampled-b
 //!   cargo run --release --features studies --example mortar_probe -- --patch --dual --schemes mortar,sampled,sampled-ls-n,sampled-ls,sampled-b
@@ -97,13 +104,14 @@ use faer::{Conj, MatMut, Side};
 
 use tfem::contact::ContactElement;
 use tfem::contact::law::penalty_lengths;
-use tfem::contact::mesh::Nodes;
+use tfem::contact::mesh::{Nodes, Side as PairSide};
+use tfem::contact::mortar::{self, Basis, Slave};
 use tfem::contact::traction::max_overlap;
 use tfem::element::{TriGeometry, b_hat};
 use tfem::scenes::hertz::{Hertz, TAG_BLOCK_TOP, TAG_CYLINDER};
 use tfem::scenes::nodes_by_x;
 use tfem::scenes::patch::{PatchTest, TAG_CONTACT_LOWER, TAG_CONTACT_UPPER};
-use tfem::{ContactOptions, Model};
+use tfem::{ContactOptions, Mesh, Model};
 
 #[path = "mortar_probe/strip_sampled.rs"]
 mod strip_sampled;
@@ -126,6 +134,10 @@ enum Scheme {
     SampledLs,
     /// As `SampledLs`, the combined elements read with one common normal.
     SampledLsN,
+    /// The library's sampled mortar weighting
+    /// (`tfem::contact::mortar::weighted_gaps`): the same samples as
+    /// `Sampled`, built from the pair's sides alone.
+    Library,
 }
 
 /// The weighted gaps of one scheme, a label for the tables, the seconds
@@ -133,6 +145,7 @@ enum Scheme {
 #[allow(clippy::too_many_arguments)]
 fn scheme_gaps(
     scheme: Scheme,
+    mesh: &Mesh,
     x: &[[f64; 2]],
     slave: &[usize],
     master: &[usize],
@@ -143,6 +156,25 @@ fn scheme_gaps(
 ) -> (Vec<WeightedGap>, &'static str, f64, String) {
     let t0 = Instant::now();
     match scheme {
+        Scheme::Library => {
+            // Every pair of these scenes has the lower body's side as a.
+            let tags = mesh_pair_tags(mesh);
+            let side = |tag| PairSide::of_tag(mesh, tag).expect("side");
+            let (a, b) = (side(tags.0), side(tags.1));
+            let which = if slave_below { Slave::A } else { Slave::B };
+            let basis = if dual { Basis::Dual } else { Basis::Standard };
+            let gaps = mortar::weighted_gaps(Nodes::of(mesh), &a, &b, which, basis)
+                .expect("weighted gaps")
+                .into_iter()
+                .map(|g| WeightedGap {
+                    node: g.node,
+                    m: g.tributary,
+                    g0: g.initial,
+                    c: g.coefficients,
+                })
+                .collect();
+            (gaps, "library", t0.elapsed().as_secs_f64(), String::new())
+        }
         Scheme::Mortar => {
             let gaps = weighted_gaps(x, slave, master, slave_below, vertical, dual);
             (gaps, "mortar", t0.elapsed().as_secs_f64(), String::new())
@@ -194,6 +226,17 @@ struct WeightedGap {
     g0: f64,
     /// Coefficients per global DOF (2 per node), merged.
     c: Vec<(usize, f64)>,
+}
+
+/// The tags (a, b) of the scene's only contact pair: the lower body's
+/// side first (the Hertz block's top, the patch test's lower block).
+fn mesh_pair_tags(mesh: &Mesh) -> (i32, i32) {
+    let has = |tag: i32| mesh.boundary_edges().iter().any(|e| e.tag == tag);
+    if has(TAG_BLOCK_TOP) && has(TAG_CYLINDER) {
+        (TAG_BLOCK_TOP, TAG_CYLINDER)
+    } else {
+        (TAG_CONTACT_LOWER, TAG_CONTACT_UPPER)
+    }
 }
 
 /// The nodes of the edges tagged `tag`, sorted by x.
@@ -767,6 +810,7 @@ fn hertz_case(hz: &Hertz, setup: Setup<'_>) {
         };
         let (gaps, label, t_gaps, info) = scheme_gaps(
             scheme,
+            &mesh,
             x,
             slave,
             master,
@@ -939,6 +983,7 @@ fn patch_case(test: &PatchTest, schemes: &[Scheme], vertical: bool, dual: bool) 
         };
         let (gaps, label, _, info) = scheme_gaps(
             scheme,
+            &mesh,
             x,
             slave,
             master,
@@ -996,6 +1041,11 @@ struct Args {
     /// Multiply the penalty κ by this factor.
     #[arg(long, default_value_t = 1.0)]
     kappa_scale: f64,
+    /// The cylinder's Young's modulus over the block's (100: a stiff
+    /// curved tool, whose non-matching contact tfem's strip makes
+    /// one-sided, docs/method.md §6.11).
+    #[arg(long, default_value_t = 1.0)]
+    contrast: f64,
     /// The weighted-gap schemes to run beside tfem's strip
     /// (comma-separated): the probe's mortar and/or the strip-sampled one.
     #[arg(long, value_delimiter = ',', default_value = "mortar")]
@@ -1012,6 +1062,7 @@ fn main() {
         profile,
         dual,
         kappa_scale,
+        contrast,
         schemes,
     } = Args::parse();
     if patch {
@@ -1066,6 +1117,7 @@ fn main() {
             let hz = Hertz {
                 mesh_size: base.half_width / level,
                 cylinder_mesh_ratio: ratio,
+                e_cylinder: contrast * base.e_block,
                 ..base
             };
             println!("\ncylinder_mesh_ratio {ratio}, h = a/{level}");

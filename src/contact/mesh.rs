@@ -976,6 +976,67 @@ pub fn nonconforming(
     a: &Side,
     b: &Side,
 ) -> Result<Vec<ContactElement>> {
+    let x = nodes.x;
+    let Aligned {
+        chain_a,
+        s_a,
+        chain_b,
+        s_b,
+        lo,
+        hi,
+        tol,
+    } = aligned(nodes, a, b)?;
+    let total = s_a[s_a.len() - 1];
+    // Keep the part of each chain over [lo, hi] plus, where the chain
+    // goes on beyond an end, the node beyond it: the edge across the end
+    // faces the other side over part of its length.
+    let window = |s: &[f64]| -> (usize, usize) {
+        let first = s.iter().rposition(|&v| v <= lo + tol).unwrap_or(0);
+        let last = s.iter().position(|&v| v >= hi - tol).unwrap_or(s.len() - 1);
+        (first, last.max(first + 1).min(s.len() - 1))
+    };
+    let (a0, a1) = window(&s_a);
+    let (b0, b1) = window(&s_b);
+    let (ca, sa) = (&chain_a[a0..=a1], &s_a[a0..=a1]);
+    let (cb, sb) = (&chain_b[b0..=b1], &s_b[b0..=b1]);
+    let inner = (s_b[b0] > 0.0, s_b[b1] < total);
+    let ends = Ends::new(x, (ca, cb), inner, (lo, hi), tol);
+    let (tris, fractions) = walk_strip((ca, sa), (cb, sb), &ends);
+    let mut elements = checked_triangles(nodes, pair, a, b, &tris)?.0;
+    for (el, f) in elements.iter_mut().zip(fractions) {
+        if f < 1.0 {
+            el.facing = el.edge_length * f;
+        }
+    }
+    Ok(elements)
+}
+
+/// Two facing sides chained and laid along side a: a's nodes with their
+/// arclengths, b's (turned to run the same way) with the abscissas of
+/// their projections on a (extended beyond its ends), and the interval
+/// [lo, hi] of abscissas over which the sides face each other. `tol`: how
+/// close to lo or hi a node counts as at it (1e-9 of the shortest edge,
+/// the round-off of the projection).
+pub(crate) struct Aligned {
+    /// Side a's nodes in order.
+    pub chain_a: Vec<usize>,
+    /// Their arclengths along a.
+    pub s_a: Vec<f64>,
+    /// Side b's nodes, running the way a's do.
+    pub chain_b: Vec<usize>,
+    /// Their abscissas along a (non-decreasing).
+    pub s_b: Vec<f64>,
+    /// Where the sides start facing each other.
+    pub lo: f64,
+    /// Where they stop.
+    pub hi: f64,
+    /// Round-off of an abscissa.
+    pub tol: f64,
+}
+
+/// [`Aligned`] of two sides; refuses sides that branch, close, fold back
+/// along each other or do not face each other.
+pub(crate) fn aligned(nodes: Nodes<'_>, a: &Side, b: &Side) -> Result<Aligned> {
     let (name_a, name_b) = (a.name(), b.name());
     let x = nodes.x;
     let chain_a = chain(nodes, a)?;
@@ -1012,29 +1073,15 @@ pub fn nonconforming(
         .chain(chain_b.windows(2))
         .map(|e| dist(x[e[0]], x[e[1]]))
         .fold(f64::INFINITY, f64::min);
-    let tol = 1e-9 * shortest;
-    // Keep the part of each chain over [lo, hi] plus, where the chain
-    // goes on beyond an end, the node beyond it: the edge across the end
-    // faces the other side over part of its length.
-    let window = |s: &[f64]| -> (usize, usize) {
-        let first = s.iter().rposition(|&v| v <= lo + tol).unwrap_or(0);
-        let last = s.iter().position(|&v| v >= hi - tol).unwrap_or(s.len() - 1);
-        (first, last.max(first + 1).min(s.len() - 1))
-    };
-    let (a0, a1) = window(&s_a);
-    let (b0, b1) = window(&s_b);
-    let (ca, sa) = (&chain_a[a0..=a1], &s_a[a0..=a1]);
-    let (cb, sb) = (&chain_b[b0..=b1], &s_b[b0..=b1]);
-    let inner = (s_b[b0] > 0.0, s_b[b1] < total);
-    let ends = Ends::new(x, (ca, cb), inner, (lo, hi), tol);
-    let (tris, fractions) = walk_strip((ca, sa), (cb, sb), &ends);
-    let mut elements = checked_triangles(nodes, pair, a, b, &tris)?.0;
-    for (el, f) in elements.iter_mut().zip(fractions) {
-        if f < 1.0 {
-            el.facing = el.edge_length * f;
-        }
-    }
-    Ok(elements)
+    Ok(Aligned {
+        chain_a,
+        s_a,
+        chain_b,
+        s_b,
+        lo,
+        hi,
+        tol: 1e-9 * shortest,
+    })
 }
 
 /// The edges of one side chained into a single polyline, in their

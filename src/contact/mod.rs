@@ -2,7 +2,8 @@
 //! (docs/method.md §3): the contact pairs and options, the construction and
 //! checking of B ([`mesh`]), the constitutive law of its elements
 //! ([`law`]) and the set of its elements in one solve, which owns their
-//! data and the inversion test ([`set`]).
+//! data and the inversion test ([`set`]), and the mortar-weighted gaps of a
+//! pair ([`mortar`], not yet used by a solve).
 //!
 //! A flat element of B on a conforming interface is exactly a spring between
 //! two coincident nodes; with Jmin = h³/λ it is a node-to-node penalty of
@@ -21,6 +22,7 @@ pub mod conformity;
 pub mod host;
 pub mod law;
 pub mod mesh;
+pub mod mortar;
 pub mod pairing;
 pub mod set;
 pub mod traction;

@@ -56,12 +56,14 @@ pub struct FactorSnapshot {
 const OUTSIDE: u32 = u32::MAX;
 
 /// An element's contribution to the interface: its unknowns (indices over
-/// the free unknowns, `None` when prescribed) and its 6×6 matrix.
+/// the free unknowns, `None` when prescribed) and its n×n matrix, n the
+/// number of its DOFs (6 for an element of B; more for a functional that
+/// couples more nodes, such as a mortar weighted gap).
 pub struct ElementMatrix<'a> {
-    /// Free-unknown index of each of the 6 element DOFs.
-    pub unknowns: &'a [Option<usize>; 6],
-    /// Row-major 6×6 element matrix.
-    pub matrix: &'a [f64; 36],
+    /// Free-unknown index of each element DOF.
+    pub unknowns: &'a [Option<usize>],
+    /// Row-major n×n element matrix (n = `unknowns.len()`).
+    pub matrix: &'a [f64],
 }
 
 /// The condensed system of one factorised reference matrix K₁: the
@@ -207,14 +209,16 @@ impl Condensed {
         e: &ElementMatrix<'_>,
         sign: f64,
     ) {
-        for a in 0..6 {
+        let n = e.unknowns.len();
+        debug_assert_eq!(e.matrix.len(), n * n);
+        for a in 0..n {
             let Some(pa) = e.unknowns[a].map(|i| position[i]) else {
                 continue;
             };
             if pa == OUTSIDE {
                 continue;
             }
-            for b in 0..6 {
+            for b in 0..n {
                 let Some(pb) = e.unknowns[b].map(|i| position[i]) else {
                     continue;
                 };
@@ -223,7 +227,7 @@ impl Condensed {
                 }
                 let (pa, pb) = (pa as usize, pb as usize);
                 if pa >= pb {
-                    m[(pa, pb)] += sign * scale[pa] * e.matrix[a * 6 + b] * scale[pb];
+                    m[(pa, pb)] += sign * scale[pa] * e.matrix[a * n + b] * scale[pb];
                 }
             }
         }
@@ -293,7 +297,8 @@ impl Condensed {
         self.generation += 1;
         let mut columns: Vec<(Vec<(usize, f64)>, f64)> = Vec::new();
         for (e, sign) in changes {
-            let on: Vec<(usize, usize)> = (0..6)
+            let dofs = e.unknowns.len();
+            let on: Vec<(usize, usize)> = (0..dofs)
                 .filter_map(|a| {
                     let i = e.unknowns[a]?;
                     (self.position[i] != OUTSIDE).then_some((a, self.position[i] as usize))
@@ -305,7 +310,7 @@ impl Condensed {
             let m = on.len();
             let km = nalgebra::DMatrix::from_fn(m, m, |r, c| {
                 let ((a, pa), (b, pb)) = (on[r], on[c]);
-                self.scale[pa] * e.matrix[a * 6 + b] * self.scale[pb]
+                self.scale[pa] * e.matrix[a * dofs + b] * self.scale[pb]
             });
             let eig = km.symmetric_eigen();
             let top = eig.eigenvalues.amax();
@@ -328,7 +333,7 @@ impl Condensed {
         let mut alpha = faer::diag::Diag::<f64>::zeros(columns.len());
         for (j, (col, a)) in columns.iter().enumerate() {
             for &(p, v) in col {
-                w[(p, j)] = v;
+                w[(p, j)] += v;
             }
             alpha[j] = *a;
         }
@@ -636,6 +641,123 @@ mod tests {
             .flat_map(|j| (j..n).map(move |i| (i, j)))
             .map(|(i, j)| m[(i, j)].to_bits())
             .collect()
+    }
+
+    /// The condensed system of the two-block fixture (its interface: the
+    /// unknowns of its B).
+    fn fixture_condensed() -> Condensed {
+        use crate::contact::ContactOptions;
+        use crate::solve::fixtures::{assembled, contact_set, two_blocks};
+        use crate::solve::report::{SolveInfo, Timings};
+        use crate::solve::session::{Session, Settings, Wanted, factorisation};
+        let p = two_blocks(4, 4);
+        let (mut session, prescribed) = assembled(&p);
+        let mesh = p.mesh().unwrap();
+        let Session {
+            dofs,
+            pattern,
+            contact,
+            analysis,
+            system,
+            ..
+        } = &mut session;
+        let set = contact_set(&p, (contact, dofs), &prescribed, &ContactOptions::default());
+        let interface = set.interface_unknowns();
+        // Every element of B on: K₁ then holds the upper block.
+        let all = vec![true; set.parts()];
+        system.set_contact(&all, &set, (&*dofs, &*pattern), &prescribed);
+        let want = Wanted {
+            last: &interface,
+            zeros: &[],
+        };
+        let (mut timings, mut info) = (Timings::default(), SolveInfo::default());
+        let chol = factorisation(
+            analysis,
+            (mesh, &*dofs, &*pattern),
+            Settings::default(),
+            want,
+            &mut timings,
+            &mut info,
+        )
+        .unwrap();
+        chol.factorize(pattern, system.values()).unwrap();
+        Condensed::new(chol, interface).unwrap()
+    }
+
+    /// A rank-one penalty k c cᵀ over `unknowns` (some `None`).
+    fn rank_one(c: &[f64], k: f64) -> Vec<f64> {
+        c.iter()
+            .flat_map(|&a| c.iter().map(move |&b| k * a * b))
+            .collect()
+    }
+
+    #[test]
+    fn a_change_over_more_than_six_dofs_updates_the_factor_as_a_refactorisation_does() {
+        let mut sys = fixture_condensed();
+        let n = sys.len();
+        assert!(n >= 10, "{n} interface unknowns");
+        // A weighted gap over 12 DOFs, two of them prescribed.
+        let picks: Vec<usize> = (0..12).map(|k| sys.unknowns()[(7 * k) % n]).collect();
+        let unknowns: Vec<Option<usize>> = picks
+            .iter()
+            .enumerate()
+            .map(|(k, &i)| (k % 5 != 3).then_some(i))
+            .collect();
+        let c: Vec<f64> = (0..12).map(|k| ((k as f64) * 0.9).sin()).collect();
+        let matrix = rank_one(&c, 5e3);
+        let change = || {
+            std::iter::once((
+                ElementMatrix {
+                    unknowns: &unknowns,
+                    matrix: &matrix,
+                },
+                1.0,
+            ))
+        };
+        let y: Vec<f64> = (0..n).map(|k| (k as f64).cos()).collect();
+        let g: Vec<f64> = (0..n).map(|k| 1e-3 * (k as f64 * 0.3).sin()).collect();
+        sys.factorize(change()).unwrap();
+        let refactorised = sys.solve(&y, &g).unwrap();
+        sys.factorize(std::iter::empty()).unwrap();
+        let without = sys.solve(&y, &g).unwrap();
+        sys.update(change()).unwrap();
+        let updated = sys.solve(&y, &g).unwrap();
+        let scale = refactorised.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let apart = |a: &[f64], b: &[f64]| {
+            a.iter()
+                .zip(b)
+                .map(|(p, q)| (p - q).abs())
+                .fold(0.0, f64::max)
+                / scale
+        };
+        assert!(apart(&updated, &refactorised) < 1e-12);
+        // And the change is felt: not the solution without it.
+        assert!(apart(&without, &refactorised) > 1e-6);
+    }
+
+    #[test]
+    fn an_element_padded_with_absent_dofs_changes_the_factor_as_the_element_alone() {
+        let mut sys = fixture_condensed();
+        let u = sys.unknowns().to_vec();
+        let six: Vec<Option<usize>> = (0..6).map(|k| Some(u[k])).collect();
+        let c: Vec<f64> = (0..6).map(|k| 1.0 + k as f64).collect();
+        let m6 = rank_one(&c, 1e3);
+        let mut padded = six.clone();
+        padded.extend([None; 4]);
+        let mut c10 = c.clone();
+        c10.extend([7.0, -3.0, 2.0, 1.0]);
+        let m10 = rank_one(&c10, 1e3);
+        let n = sys.len();
+        let y: Vec<f64> = (0..n).map(|k| (k as f64 * 0.7).cos()).collect();
+        let g = vec![0.0; n];
+        let mut solve = |unknowns: &[Option<usize>], matrix: &[f64]| {
+            let e = ElementMatrix { unknowns, matrix };
+            sys.factorize(std::iter::once((e, 1.0))).unwrap();
+            sys.solve(&y, &g).unwrap()
+        };
+        let alone = solve(&six, &m6);
+        let with_absent = solve(&padded, &m10);
+        assert_eq!(alone, with_absent);
     }
 
     /// The interface refills only the lower triangle of its factor's

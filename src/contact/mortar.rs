@@ -1,0 +1,673 @@
+//! The sampled mortar weighting of a contact pair (docs/method.md §6.11,
+//! "The sampled mortar weighting"): one weighted gap per node of one side
+//! (the slave), G_i = ∫ ψ_i g ds over the part of its support that faces
+//! the other side (the master), written exactly in terms of gap samples at
+//! the merged nodes.
+//!
+//! A flat element of B samples the normal gap at its apex against the line
+//! of its interface edge (6.9). Between consecutive merged nodes (both
+//! sides' nodes, ordered along the interface) the gap of two polylines is
+//! linear, so with one such sample at every merged node the integral of a
+//! linear weight times the gap is exact: on each piece [p, q] of length ℓ,
+//! ∫ ψ g = (ℓ/6)[ψ(p)(2g_p + g_q) + ψ(q)(g_p + 2g_q)]. The sample at a
+//! merged node c is the element (facing edge of the other side, apex c):
+//! one of B's own triangles where B has it, made for c where it does not
+//! (no strip triangulation samples every merged node: an edge has one
+//! triangle). Each G_i is therefore a linear functional of the
+//! displacements over at most a dozen nodes (the slave node, its two
+//! neighbours and the nodes facing its support), G_i = G_i0 + c_i·u, and
+//! the penalty energy Σ_i ½ (κ/m_i) G_i² (m_i = ∫ φ_i ds) a rank-one term
+//! per slave node.
+//!
+//! Why it passes the contact patch test on any pair of straight sides: a
+//! uniform gap g makes every sample g, so G_i = g ∫ψ_i = g m_i and the
+//! forces Σ_i (κ/m_i) G_i c_i = κ g Σ_i c_i, where Σ_i c_i is the
+//! derivative of ∫ (Σ_i ψ_i) g ds = ∫ g ds: the consistent loads of the
+//! uniform traction κ g on both sides. That needs Σ_i ψ_i = 1 and
+//! ∫ ψ_i = ∫ φ_i on every covered slave edge, which the hats φ_i and
+//! Wohlmuth's dual functions ψ_i = 2φ_i − φ_j (biorthogonal: ∫ ψ_i φ_j =
+//! δ_ij ∫ φ_j) both satisfy. An edge across the end of the master is
+//! covered in part only; there the dual functions are no longer
+//! biorthogonal and a negative lobe can read a wide open gap as an
+//! overlap, so such an edge weights with the hats (both conditions still
+//! hold).
+//!
+//! What the module does not do yet: activate, assemble or solve (the
+//! interface condensation and the active-set loop take elements of B with
+//! six unknowns; a functional has up to 24).
+
+use std::collections::BTreeMap;
+
+use super::mesh::{Nodes, Side, aligned};
+use crate::error::{Error, Result};
+
+/// The weight ψ_i of a slave node's gap.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Basis {
+    /// The node's hat φ_i (the standard mortar).
+    Standard,
+    /// Wohlmuth's dual function 2φ_i − φ_j on every edge the master covers
+    /// whole (the hat on an edge it covers in part).
+    Dual,
+}
+
+/// Which side of the pair carries the weighted gaps.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Slave {
+    /// Side a (the pair's first tag).
+    A,
+    /// Side b.
+    B,
+}
+
+/// The weighted gap of one slave node, linear in the displacements:
+/// G = `initial` + Σ c·u over (global DOF, c) in `coefficients`; negative
+/// where the sides overlap.
+#[derive(Debug, Clone, PartialEq)]
+pub struct WeightedGap {
+    /// The slave node (0-based).
+    pub node: usize,
+    /// m_i = ∫ φ_i ds over the part of its support facing the master.
+    pub tributary: f64,
+    /// G_i in the initial geometry.
+    pub initial: f64,
+    /// ∂G_i/∂u per global DOF (2·node + component), each DOF once, sorted.
+    pub coefficients: Vec<(usize, f64)>,
+}
+
+impl WeightedGap {
+    /// G_i for the global displacement vector `u` (2 per node).
+    pub fn value(&self, u: &[f64]) -> f64 {
+        self.initial
+            + self
+                .coefficients
+                .iter()
+                .map(|&(g, c)| c * u[g])
+                .sum::<f64>()
+    }
+}
+
+/// A gap sample, linear in the displacements: g0 + Σ c·u.
+#[derive(Debug, Clone, PartialEq)]
+struct Sample {
+    g0: f64,
+    /// (global DOF, coefficient).
+    c: Vec<(usize, f64)>,
+}
+
+/// The normal gap at node `c` against the line of edge (p, q), read along
+/// `n` (from side a to side b), positive when open: the apex gap (6.9) of
+/// the flat triangle (p, q, c). `edge_on_a`: whether (p, q) is on side a
+/// (then c is on b, and the gap is c's position less the edge's).
+fn apex_sample(
+    x: &[[f64; 2]],
+    (p, q): (usize, usize),
+    c: usize,
+    n: [f64; 2],
+    edge_on_a: bool,
+) -> Sample {
+    let (xp, xq, xc) = (x[p], x[q], x[c]);
+    let e = [xq[0] - xp[0], xq[1] - xp[1]];
+    let t = ((xc[0] - xp[0]) * e[0] + (xc[1] - xp[1]) * e[1]) / (e[0] * e[0] + e[1] * e[1]);
+    let (np, nq) = (1.0 - t, t);
+    let sign = if edge_on_a { 1.0 } else { -1.0 };
+    let r = [
+        xc[0] - np * xp[0] - nq * xq[0],
+        xc[1] - np * xp[1] - nq * xq[1],
+    ];
+    let mut c_dofs = Vec::with_capacity(6);
+    for (node, w) in [(c, sign), (p, -sign * np), (q, -sign * nq)] {
+        for (k, nk) in n.iter().enumerate() {
+            c_dofs.push((2 * node + k, w * nk));
+        }
+    }
+    Sample {
+        g0: sign * (n[0] * r[0] + n[1] * r[1]),
+        c: c_dofs,
+    }
+}
+
+/// The edge of the chain with abscissas `s` (non-decreasing) whose range
+/// holds `at`: the first with s[k] ≤ at ≤ s[k + 1], the end edges beyond
+/// the chain's ends. None for a chain of zero extent.
+fn edge_at(s: &[f64], at: f64) -> Option<usize> {
+    let last = s.len().checked_sub(2)?;
+    let k = s[1..].partition_point(|&v| v < at).min(last);
+    (s[k + 1] > s[k]).then_some(k)
+}
+
+/// One merged point: its abscissa along side a, its gap sample, and
+/// whether a slave node gives it.
+struct Point {
+    s: f64,
+    sample: Sample,
+    slave: bool,
+}
+
+/// The weighted gaps of every slave node of the pair (sides `a`, `b`, the
+/// normal from a to b) whose support faces the master: one gap sample per
+/// merged node, the slave's nodes read against the master's facing edge
+/// and the master's nodes against the slave's (each along that edge's
+/// normal), integrated exactly against `basis`. Refuses sides that branch,
+/// close, fold back along each other or do not face each other.
+pub fn weighted_gaps(
+    nodes: Nodes<'_>,
+    a: &Side,
+    b: &Side,
+    slave: Slave,
+    basis: Basis,
+) -> Result<Vec<WeightedGap>> {
+    let x = nodes.x;
+    let al = aligned(nodes, a, b)?;
+    // Both chains run with body a on their right (b was turned round):
+    // every edge's left normal points from a to b.
+    let normal_a = |k: usize| left_normal(x, &al.chain_a, k);
+    let normal_b = |k: usize| left_normal(x, &al.chain_b, k);
+    let (sl_chain, sl_s, ms_chain, ms_s) = match slave {
+        Slave::A => (&al.chain_a, &al.s_a, &al.chain_b, &al.s_b),
+        Slave::B => (&al.chain_b, &al.s_b, &al.chain_a, &al.s_a),
+    };
+    let slave_on_a = slave == Slave::A;
+    let inside = |s: f64| s >= al.lo - al.tol && s <= al.hi + al.tol;
+    // Where a master node coincides with a slave node (within round-off)
+    // the slave's reading stands for the point.
+    let mut points: Vec<Point> = Vec::with_capacity(sl_chain.len() + ms_chain.len());
+    for (own, own_s, other, other_s, own_is_a, is_slave) in [
+        (sl_chain, sl_s, ms_chain, ms_s, slave_on_a, true),
+        (ms_chain, ms_s, sl_chain, sl_s, !slave_on_a, false),
+    ] {
+        for (&c, &sc) in own.iter().zip(own_s) {
+            if !inside(sc) {
+                continue;
+            }
+            let Some(k) = edge_at(other_s, sc) else {
+                continue;
+            };
+            let edge = (other[k], other[k + 1]);
+            let n = if own_is_a { normal_b(k) } else { normal_a(k) };
+            points.push(Point {
+                s: sc.clamp(al.lo, al.hi),
+                sample: apex_sample(x, edge, c, n, !own_is_a),
+                slave: is_slave,
+            });
+        }
+    }
+    points.sort_by(|p, q| p.s.total_cmp(&q.s));
+    let mut merged: Vec<Point> = Vec::with_capacity(points.len());
+    for p in points {
+        match merged.last_mut() {
+            Some(last) if p.s - last.s <= al.tol => {
+                if p.slave && !last.slave {
+                    *last = p;
+                }
+            }
+            _ => merged.push(p),
+        }
+    }
+    let mut acc: BTreeMap<usize, Accumulated> = BTreeMap::new();
+    for k in 0..sl_chain.len() - 1 {
+        let (e0, e1) = (sl_s[k], sl_s[k + 1]);
+        let (c0, c1) = (e0.max(al.lo), e1.min(al.hi));
+        if e1 <= e0 || c1 - c0 <= al.tol {
+            continue;
+        }
+        let length = dist(x[sl_chain[k]], x[sl_chain[k + 1]]);
+        // ds along the slave edge per unit of abscissa along a.
+        let jac = length / (e1 - e0);
+        let whole = c0 - e0 <= al.tol && e1 - c1 <= al.tol;
+        let dual = whole && basis == Basis::Dual;
+        // φ of the edge's first and second node at abscissa s.
+        let phi = |s: f64| {
+            let t = (s - e0) / (e1 - e0);
+            [1.0 - t, t]
+        };
+        let psi = |s: f64| {
+            let [f0, f1] = phi(s);
+            match dual {
+                true => [2.0 * f0 - f1, 2.0 * f1 - f0],
+                false => [f0, f1],
+            }
+        };
+        let first = merged.partition_point(|p| p.s < c0 - al.tol);
+        let last = merged.partition_point(|p| p.s <= c1 + al.tol);
+        let on_edge = &merged[first..last];
+        for (end, &node) in [sl_chain[k], sl_chain[k + 1]].iter().enumerate() {
+            let entry = acc.entry(node).or_default();
+            let [f0, f1] = [phi(c0)[end], phi(c1)[end]];
+            entry.tributary += jac * (c1 - c0) * 0.5 * (f0 + f1);
+            for w in on_edge.windows(2) {
+                let (p, q) = (&w[0], &w[1]);
+                let piece = jac * (q.s - p.s) / 6.0;
+                let (wp, wq) = (psi(p.s)[end], psi(q.s)[end]);
+                // ∫ψg over the piece = ℓ/6 [ψp(2gp + gq) + ψq(gp + 2gq)].
+                let (cp, cq) = (piece * (2.0 * wp + wq), piece * (wp + 2.0 * wq));
+                entry.add(&p.sample, cp);
+                entry.add(&q.sample, cq);
+            }
+        }
+    }
+    let gaps = acc
+        .into_iter()
+        .filter(|(_, a)| a.tributary > 0.0)
+        .map(|(node, a)| WeightedGap {
+            node,
+            tributary: a.tributary,
+            initial: a.initial,
+            coefficients: a
+                .coefficients
+                .into_iter()
+                .filter(|&(_, c)| c != 0.0)
+                .collect(),
+        })
+        .collect::<Vec<_>>();
+    if gaps.is_empty() {
+        return Err(Error::contact(format!(
+            "interfaces {} and {} face each other over no edge of the slave side",
+            a.name(),
+            b.name()
+        )));
+    }
+    Ok(gaps)
+}
+
+/// A weighted gap being summed.
+#[derive(Default)]
+struct Accumulated {
+    tributary: f64,
+    initial: f64,
+    coefficients: BTreeMap<usize, f64>,
+}
+
+impl Accumulated {
+    fn add(&mut self, sample: &Sample, w: f64) {
+        self.initial += w * sample.g0;
+        for &(g, c) in &sample.c {
+            *self.coefficients.entry(g).or_insert(0.0) += w * c;
+        }
+    }
+}
+
+/// The unit normal of edge k of `chain` on its left as it runs.
+fn left_normal(x: &[[f64; 2]], chain: &[usize], k: usize) -> [f64; 2] {
+    let (p, q) = (x[chain[k]], x[chain[k + 1]]);
+    let len = dist(p, q);
+    [-(q[1] - p[1]) / len, (q[0] - p[0]) / len]
+}
+
+fn dist(p: [f64; 2], q: [f64; 2]) -> f64 {
+    (p[0] - q[0]).hypot(p[1] - q[1])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Side a through `xa` (body a below, on its right as it runs left to
+    /// right), side b through `xb` (body b above); x holds a's nodes, then
+    /// b's.
+    fn sides(xa: &[[f64; 2]], xb: &[[f64; 2]]) -> (Vec<[f64; 2]>, Side, Side) {
+        let mut x = xa.to_vec();
+        x.extend_from_slice(xb);
+        let na = xa.len();
+        // Body on the left of p → q: right to left for a, left to right
+        // for b.
+        let ea: Vec<[usize; 2]> = (0..na - 1).map(|i| [i + 1, i]).collect();
+        let eb: Vec<[usize; 2]> = (0..xb.len() - 1).map(|i| [na + i, na + i + 1]).collect();
+        let a = Side::from_edges(Nodes::new(&x, 0), 0, 1, 1, &ea).unwrap();
+        let b = Side::from_edges(Nodes::new(&x, 0), 1, 2, 2, &eb).unwrap();
+        (x, a, b)
+    }
+
+    /// `n + 1` abscissas over [lo, hi], the inner ones moved by up to
+    /// `jitter` of a cell (a fixed pseudo-random pattern).
+    fn abscissas(n: usize, (lo, hi): (f64, f64), jitter: f64) -> Vec<f64> {
+        let h = (hi - lo) / n as f64;
+        (0..=n)
+            .map(|i| {
+                let wiggle = if i == 0 || i == n {
+                    0.0
+                } else {
+                    jitter * ((i as f64 * 2.399).sin())
+                };
+                lo + (i as f64 + wiggle) * h
+            })
+            .collect()
+    }
+
+    fn line(xs: &[f64], y: f64) -> Vec<[f64; 2]> {
+        xs.iter().map(|&v| [v, y]).collect()
+    }
+
+    fn gaps(x: &[[f64; 2]], a: &Side, b: &Side, slave: Slave, basis: Basis) -> Vec<WeightedGap> {
+        weighted_gaps(Nodes::new(x, 0), a, b, slave, basis).unwrap()
+    }
+
+    /// The integral of the hat of node k of the abscissas `xs` over
+    /// [lo, hi]: the trapezoidal rule on the pieces between the nodes and
+    /// lo, hi (exact for a function linear on each; an independent reading
+    /// of the tributary).
+    fn hat_integral(xs: &[f64], k: usize, (lo, hi): (f64, f64)) -> f64 {
+        let mut cuts: Vec<f64> = xs.iter().copied().filter(|&s| s > lo && s < hi).collect();
+        cuts.insert(0, lo);
+        cuts.push(hi);
+        cuts.windows(2)
+            .map(|w| 0.5 * (w[1] - w[0]) * (hat(xs, k, w[0]) + hat(xs, k, w[1])))
+            .sum()
+    }
+
+    fn hat(xs: &[f64], k: usize, s: f64) -> f64 {
+        if k > 0 && s >= xs[k - 1] && s <= xs[k] {
+            (s - xs[k - 1]) / (xs[k] - xs[k - 1])
+        } else if k + 1 < xs.len() && s >= xs[k] && s <= xs[k + 1] {
+            (xs[k + 1] - s) / (xs[k + 1] - xs[k])
+        } else {
+            0.0
+        }
+    }
+
+    const CASES: [(usize, usize, f64); 4] = [(3, 7, 0.0), (7, 3, 0.3), (5, 8, 0.3), (8, 8, 0.0)];
+    const SLAVES: [Slave; 2] = [Slave::A, Slave::B];
+    const BASES: [Basis; 2] = [Basis::Standard, Basis::Dual];
+
+    #[test]
+    fn a_uniform_gap_weighs_as_the_slave_nodes_tributary() {
+        for (na, nb, jitter) in CASES {
+            let (xa, xb) = (
+                abscissas(na, (0.0, 1.0), jitter),
+                abscissas(nb, (0.0, 1.0), jitter),
+            );
+            let (x, a, b) = sides(&line(&xa, 0.0), &line(&xb, 0.25));
+            for (slave, basis) in SLAVES.into_iter().flat_map(|s| BASES.map(|b| (s, b))) {
+                let all = gaps(&x, &a, &b, slave, basis);
+                let (xs, offset) = match slave {
+                    Slave::A => (&xa, 0),
+                    Slave::B => (&xb, xa.len()),
+                };
+                assert_eq!(all.len(), xs.len(), "{na}:{nb} {slave:?} {basis:?}");
+                // A uniform lift of b by w: G = (0.25 + w) m everywhere.
+                let w = 1e-3;
+                let u: Vec<f64> = (0..x.len())
+                    .flat_map(|v| [0.0, if v >= xa.len() { w } else { 0.0 }])
+                    .collect();
+                for g in &all {
+                    let k = g.node - offset;
+                    let m = hat_integral(xs, k, (0.0, 1.0));
+                    assert!(
+                        (g.tributary - m).abs() < 1e-9,
+                        "{} against {m}",
+                        g.tributary
+                    );
+                    let expected = (0.25 + w) * g.tributary;
+                    assert!(
+                        (g.value(&u) - expected).abs() < 1e-15,
+                        "{na}:{nb} {slave:?} {basis:?} node {k}: {} against {expected}",
+                        g.value(&u)
+                    );
+                }
+            }
+        }
+    }
+
+    /// Σ_i c_i: the loads of a unit uniform traction the weighted gaps
+    /// apply together (their derivative of ∫ g ds).
+    fn summed_coefficients(all: &[WeightedGap], n_dofs: usize) -> Vec<f64> {
+        let mut f = vec![0.0; n_dofs];
+        for g in all {
+            for &(d, c) in &g.coefficients {
+                f[d] += c;
+            }
+        }
+        f
+    }
+
+    #[test]
+    fn together_the_weighted_gaps_load_both_sides_with_the_consistent_loads_of_a_uniform_traction()
+    {
+        for (na, nb, jitter) in CASES {
+            let (xa, xb) = (
+                abscissas(na, (0.0, 1.0), jitter),
+                abscissas(nb, (0.0, 1.0), jitter),
+            );
+            let (x, a, b) = sides(&line(&xa, 0.0), &line(&xb, 0.0));
+            for (slave, basis) in SLAVES.into_iter().flat_map(|s| BASES.map(|b| (s, b))) {
+                let f = summed_coefficients(&gaps(&x, &a, &b, slave, basis), 2 * x.len());
+                for (v, xv) in x.iter().enumerate() {
+                    let (m, sign) = match v < xa.len() {
+                        true => (hat_integral(&xa, v, (0.0, 1.0)), -1.0),
+                        false => (hat_integral(&xb, v - xa.len(), (0.0, 1.0)), 1.0),
+                    };
+                    assert!(f[2 * v].abs() < 1e-15, "tangential load at {xv:?}");
+                    assert!(
+                        (f[2 * v + 1] - sign * m).abs() < 1e-9,
+                        "{na}:{nb} {slave:?} {basis:?} node {v}: {} against {}",
+                        f[2 * v + 1],
+                        sign * m
+                    );
+                }
+            }
+        }
+    }
+
+    /// ∫ ψ_i g over the slave edges of node i, g = (b + v_b) − (a + v_a)
+    /// read from both sides' piecewise linear interpolants, integrated
+    /// by 2-point Gauss on the pieces between all nodes (exact): an
+    /// independent reading of the weighted gap on horizontal sides.
+    fn direct_weighted_gap(
+        (xs_slave, xs_master): (&[f64], &[f64]),
+        (v_slave, v_master): (&[f64], &[f64]),
+        slave_below: bool,
+        k: usize,
+        basis: Basis,
+    ) -> f64 {
+        let interp = |xs: &[f64], v: &[f64], s: f64| -> f64 {
+            (0..xs.len()).map(|j| hat(xs, j, s) * v[j]).sum()
+        };
+        let mut total = 0.0;
+        for e in [k.checked_sub(1), Some(k)].into_iter().flatten() {
+            if e + 1 >= xs_slave.len() {
+                continue;
+            }
+            let (e0, e1) = (xs_slave[e], xs_slave[e + 1]);
+            let mut cuts: Vec<f64> = xs_master
+                .iter()
+                .copied()
+                .filter(|&s| s > e0 && s < e1)
+                .collect();
+            cuts.insert(0, e0);
+            cuts.push(e1);
+            let gp = 0.5 / 3f64.sqrt();
+            for w in cuts.windows(2) {
+                for t in [0.5 - gp, 0.5 + gp] {
+                    let s = w[0] + t * (w[1] - w[0]);
+                    let phi_k = hat(xs_slave, k, s);
+                    let psi = match basis {
+                        Basis::Standard => phi_k,
+                        Basis::Dual => 2.0 * phi_k - (1.0 - phi_k),
+                    };
+                    let jump = interp(xs_master, v_master, s) - interp(xs_slave, v_slave, s);
+                    let g = if slave_below { jump } else { -jump };
+                    total += 0.5 * (w[1] - w[0]) * psi * g;
+                }
+            }
+        }
+        total
+    }
+
+    #[test]
+    fn on_straight_sides_the_weighted_gap_is_the_integral_of_the_weighted_normal_gap() {
+        for (na, nb, jitter) in CASES {
+            let (xa, xb) = (
+                abscissas(na, (0.0, 1.0), jitter),
+                abscissas(nb, (0.0, 1.0), jitter),
+            );
+            let (x, a, b) = sides(&line(&xa, 0.0), &line(&xb, 0.0));
+            // Normal displacements of some amplitude, and tangential ones
+            // that a straight pair's gap must ignore.
+            let u: Vec<f64> = (0..2 * x.len())
+                .map(|d| 1e-3 * ((d as f64) * 1.7).sin())
+                .collect();
+            let v: Vec<f64> = (0..x.len()).map(|n| u[2 * n + 1]).collect();
+            let (va, vb) = v.split_at(xa.len());
+            for (slave, basis) in SLAVES.into_iter().flat_map(|s| BASES.map(|b| (s, b))) {
+                let all = gaps(&x, &a, &b, slave, basis);
+                for g in &all {
+                    let direct = match slave {
+                        Slave::A => direct_weighted_gap((&xa, &xb), (va, vb), true, g.node, basis),
+                        Slave::B => {
+                            let k = g.node - xa.len();
+                            direct_weighted_gap((&xb, &xa), (vb, va), false, k, basis)
+                        }
+                    };
+                    assert!(
+                        (g.value(&u) - direct).abs() < 1e-15,
+                        "{na}:{nb} {slave:?} {basis:?} node {}: {} against {direct}",
+                        g.node,
+                        g.value(&u)
+                    );
+                }
+            }
+        }
+    }
+
+    /// The pair through `xa`, `xb` and the displacements `u` rotated by
+    /// `angle` about the origin.
+    fn rotated(points: &[[f64; 2]], angle: f64) -> Vec<[f64; 2]> {
+        let (s, c) = angle.sin_cos();
+        points
+            .iter()
+            .map(|p| [c * p[0] - s * p[1], s * p[0] + c * p[1]])
+            .collect()
+    }
+
+    #[test]
+    fn weighted_gaps_do_not_depend_on_the_orientation_of_the_pair() {
+        let (xa, xb) = (abscissas(5, (0.0, 1.0), 0.3), abscissas(8, (0.0, 1.0), 0.3));
+        let (pa, pb) = (line(&xa, 0.0), line(&xb, 0.01));
+        let (x, a, b) = sides(&pa, &pb);
+        let u: Vec<[f64; 2]> = (0..x.len())
+            .map(|n| [1e-3 * (n as f64).cos(), 1e-3 * (n as f64 * 1.3).sin()])
+            .collect();
+        let flat = |u: &[[f64; 2]]| u.iter().flat_map(|d| *d).collect::<Vec<f64>>();
+        for basis in BASES {
+            let level = gaps(&x, &a, &b, Slave::B, basis);
+            let angle = 0.7;
+            let (xr, ar, br) = sides(&rotated(&pa, angle), &rotated(&pb, angle));
+            let turned = gaps(&xr, &ar, &br, Slave::B, basis);
+            let ur = flat(&rotated(&u, angle));
+            for (g, t) in level.iter().zip(&turned) {
+                assert_eq!(g.node, t.node);
+                let (l, r) = (g.value(&flat(&u)), t.value(&ur));
+                assert!(
+                    (l - r).abs() < 1e-15,
+                    "{basis:?} node {}: {l} against {r}",
+                    g.node
+                );
+            }
+        }
+    }
+
+    /// Side a on the circle of radius r0 (body a inside) and b on radius
+    /// r1 > r0 (body b outside), over the angles [θ0, θ1], with na and nb
+    /// edges.
+    fn arcs(
+        r0: f64,
+        r1: f64,
+        (na, nb): (usize, usize),
+        (t0, t1): (f64, f64),
+    ) -> (Vec<[f64; 2]>, Side, Side) {
+        // a runs with its body on the right: clockwise, from θ1 to θ0;
+        // b likewise from θ1 to θ0 with its body (outside) on its left.
+        let arc = |r: f64, n: usize| -> Vec<[f64; 2]> {
+            (0..=n)
+                .map(|i| {
+                    let t = t1 - (t1 - t0) * i as f64 / n as f64;
+                    [r * t.cos(), r * t.sin()]
+                })
+                .collect()
+        };
+        sides(&arc(r0, na), &arc(r1, nb))
+    }
+
+    #[test]
+    fn rigid_motions_of_a_curved_pair_leave_its_weighted_gaps_unchanged() {
+        let (x, a, b) = arcs(1.0, 1.01, (7, 17), (0.2, 1.3));
+        for (slave, basis) in SLAVES.into_iter().flat_map(|s| BASES.map(|b| (s, b))) {
+            let all = gaps(&x, &a, &b, slave, basis);
+            // A translation and an infinitesimal rotation about (0.3, -2).
+            let (t, theta, c) = ([0.7, -1.1], 1.0, [0.3, -2.0]);
+            let u: Vec<f64> = x
+                .iter()
+                .flat_map(|p| [t[0] - theta * (p[1] - c[1]), t[1] + theta * (p[0] - c[0])])
+                .collect();
+            for g in &all {
+                let change = g.value(&u) - g.initial;
+                let scale: f64 = g.coefficients.iter().map(|(_, v)| v.abs()).sum::<f64>() * 3.0;
+                assert!(
+                    change.abs() < 1e-14 * scale,
+                    "{slave:?} {basis:?} node {}: {change:e}",
+                    g.node
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn on_concentric_arcs_the_weighted_gap_converges_to_their_distance_at_second_order() {
+        let gap = 0.01;
+        for (slave, basis) in SLAVES.into_iter().flat_map(|s| BASES.map(|b| (s, b))) {
+            let errors: Vec<f64> = [8, 16, 32, 64]
+                .iter()
+                .map(|&n| {
+                    let (x, a, b) = arcs(1.0, 1.0 + gap, (2 * n, 5 * n), (0.0, 1.0));
+                    gaps(&x, &a, &b, slave, basis)
+                        .iter()
+                        .map(|g| (g.initial / g.tributary - gap).abs())
+                        .fold(0.0, f64::max)
+                })
+                .collect();
+            let rates: Vec<f64> = errors.windows(2).map(|w| (w[0] / w[1]).log2()).collect();
+            assert!(
+                rates.iter().all(|&r| (r - 2.0).abs() < 0.05),
+                "{slave:?} {basis:?}: errors {errors:?}, rates {rates:?}"
+            );
+        }
+    }
+
+    #[test]
+    fn where_the_master_ends_inside_a_slave_edge_the_weighted_gaps_still_load_the_facing_part_consistently()
+     {
+        let (lo, hi) = (0.3, 0.8);
+        let (xa, xb) = (abscissas(5, (0.0, 1.0), 0.2), abscissas(4, (lo, hi), 0.2));
+        let (x, a, b) = sides(&line(&xa, 0.0), &line(&xb, 0.0));
+        for (slave, basis) in SLAVES.into_iter().flat_map(|s| BASES.map(|b| (s, b))) {
+            let all = gaps(&x, &a, &b, slave, basis);
+            let f = summed_coefficients(&all, 2 * x.len());
+            for v in 0..x.len() {
+                let (m, sign) = match v < xa.len() {
+                    true => (hat_integral(&xa, v, (lo, hi)), -1.0),
+                    false => (hat_integral(&xb, v - xa.len(), (lo, hi)), 1.0),
+                };
+                assert!(
+                    (f[2 * v + 1] - sign * m).abs() < 1e-9,
+                    "{slave:?} {basis:?} node {v}: {} against {}",
+                    f[2 * v + 1],
+                    sign * m
+                );
+            }
+            for g in &all {
+                let gap = 0.02;
+                let u: Vec<f64> = (0..x.len())
+                    .flat_map(|n| [0.0, if n >= xa.len() { gap } else { 0.0 }])
+                    .collect();
+                assert!((g.value(&u) - gap * g.tributary).abs() < 1e-15);
+            }
+        }
+    }
+
+    #[test]
+    fn sides_that_do_not_face_each_other_are_refused_by_name() {
+        let (x, a, b) = sides(&line(&[0.0, 0.5, 1.0], 0.0), &line(&[2.0, 3.0], 0.0));
+        let e = weighted_gaps(Nodes::new(&x, 0), &a, &b, Slave::A, Basis::Dual).unwrap_err();
+        assert!(e.to_string().contains("do not face each other"), "{e}");
+    }
+}
