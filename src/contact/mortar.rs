@@ -270,6 +270,29 @@ pub fn weighted_gaps(
     Ok(gaps)
 }
 
+/// The side a solve should take as the slave: the coarser one over the
+/// part where the sides face each other (the longer mean edge there; a on
+/// a tie). Measured (docs/method.md §6.11, "Which side is the slave"):
+/// against a stiff master, a finer slave has more weighted gaps than the
+/// master can follow and its pressures oscillate (the axis of a 100×
+/// stiffer cylinder read zero), while the coarser slave converges on
+/// either mesh ratio.
+pub fn coarser_side(nodes: Nodes<'_>, a: &Side, b: &Side) -> Result<Slave> {
+    let al = aligned(nodes, a, b)?;
+    let inside = |s: &[f64]| {
+        s.iter()
+            .filter(|&&v| v > al.lo + al.tol && v < al.hi - al.tol)
+            .count()
+    };
+    // Edges over [lo, hi]: one more than the nodes strictly inside.
+    let (edges_a, edges_b) = (inside(&al.s_a) + 1, inside(&al.s_b) + 1);
+    Ok(if edges_b < edges_a {
+        Slave::B
+    } else {
+        Slave::A
+    })
+}
+
 /// A weighted gap being summed.
 #[derive(Default)]
 struct Accumulated {
@@ -662,6 +685,22 @@ mod tests {
                 assert!((g.value(&u) - gap * g.tributary).abs() < 1e-15);
             }
         }
+    }
+
+    #[test]
+    fn the_coarser_side_over_the_facing_part_is_the_slave() {
+        let line_of = |n: usize, lo: f64, hi: f64| line(&abscissas(n, (lo, hi), 0.0), 0.0);
+        // b finer than a: a is the slave, and the other way round.
+        let (x, a, b) = sides(&line_of(4, 0.0, 1.0), &line_of(10, 0.0, 1.0));
+        assert_eq!(coarser_side(Nodes::new(&x, 0), &a, &b).unwrap(), Slave::A);
+        let (x, a, b) = sides(&line_of(10, 0.0, 1.0), &line_of(4, 0.0, 1.0));
+        assert_eq!(coarser_side(Nodes::new(&x, 0), &a, &b).unwrap(), Slave::B);
+        // Only the facing part counts: a has 20 edges over [0, 2] but 5
+        // over the [0.5, 1] that b (3 edges) faces.
+        let (x, a, b) = sides(&line_of(20, 0.0, 2.0), &line_of(3, 0.5, 1.0));
+        assert_eq!(coarser_side(Nodes::new(&x, 0), &a, &b).unwrap(), Slave::B);
+        let (x, a, b) = sides(&line_of(20, 0.0, 2.0), &line_of(8, 0.5, 1.0));
+        assert_eq!(coarser_side(Nodes::new(&x, 0), &a, &b).unwrap(), Slave::A);
     }
 
     #[test]
