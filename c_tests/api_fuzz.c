@@ -57,6 +57,7 @@
  * and with -fsanitize=address,undefined. See c_tests/README.md. */
 
 #define _GNU_SOURCE
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <float.h>
@@ -200,13 +201,15 @@ enum {
   O_AUTO_PAIRS,    /* first/count of tfem_add_contact_pairs_auto against the pairs */
   O_TWIN,          /* results equal to a twin model's */
   O_PAIR_PRESSURE, /* one pair's nodal pressures against all pairs' */
+  O_VTU,           /* a .vtu written: the grid's points and cells, or refused for an unwritable path */
+  O_WARNING_SIZE,  /* tfem_get_warning_size against tfem_get_warning and tfem_warning_count */
   NO
 };
 static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetration", "work", "mesh_eq",
                                        "apex", "threads", "results_kept", "edges_refused", "fix_refused",
                                        "step_repeat", "host_pattern", "host_gather", "host_active",
                                        "coulomb", "friction_args", "prescribed", "auto_pairs", "twin",
-                                       "pair_pressure"};
+                                       "pair_pressure", "vtu_file", "warning_size"};
 
 /* A library defect this tester found (c_tests/README.md, "The 3 entry
  * points of friction, prescribed values and automatic pairs"): with
@@ -435,6 +438,10 @@ enum {
   F_SET_PRESCRIBED,
   F_ADD_CONTACT_PAIRS_AUTO,
   F_GET_CONTACT_PAIR_NODAL_PRESSURES,
+  /* added 2026-11-24: the VTU writer, warning sizes, a context's message length */
+  F_WRITE_VTU,
+  F_GET_WARNING_SIZE,
+  F_CONTACT_LAST_ERROR_LENGTH,
   F_DESTROY_NULL, /* tfem_destroy(NULL) */
   F_RECREATE,     /* tfem_destroy(m); m = tfem_create() */
   F_TWIN,         /* not a call: the twin-model oracle (see oracle_twin) */
@@ -487,7 +494,9 @@ typedef struct {
  *   L law, T inversion test, m max iterations, w warning index,
  *   q contact pair index, h threads, s side index, R recipe of a runtime
  *   input (see make_inputs), D its length offset, k its seed, S contact
- *   state mode, A active-flags recipe, g host-vector recipe
+ *   state mode, A active-flags recipe, g host-vector recipe, V the path of
+ *   a .vtu (vtu_path: a file in the private directory or an unwritable
+ *   path there; out of range: NULL)
  * double roles: E young, p poisson, J jmin, K kappa, v tempering value,
  *   u displacement, f force, G contact modulus, l lambda, a load factor,
  *   y friction coefficient, d pairing tolerance */
@@ -578,6 +587,9 @@ static const fndesc FN[NF] = {
     [F_SET_PRESCRIBED] = {"tfem_set_prescribed", 1, "nC", "u", "", "", {0}, 0},
     [F_ADD_CONTACT_PAIRS_AUTO] = {"tfem_add_contact_pairs_auto", 1, "c", "d", "t", "ii", {R_SCALAR, R_SCALAR}, 1},
     [F_GET_CONTACT_PAIR_NODAL_PRESSURES] = {"tfem_get_contact_pair_nodal_pressures", 1, "q", "", "", "d", {R_NN}, 0},
+    [F_WRITE_VTU] = {"tfem_write_vtu", 1, "V", "", "", "", {0}, 0},
+    [F_GET_WARNING_SIZE] = {"tfem_get_warning_size", 1, "w", "", "", "z", {R_SCALAR}, 1},
+    [F_CONTACT_LAST_ERROR_LENGTH] = {"tfem_contact_last_error_length", 2, "", "", "", "", {0}, 0},
     [F_DESTROY_NULL] = {"tfem_destroy(NULL)", 0, "", "", "", "", {0}, 0},
     [F_RECREATE] = {"tfem_destroy+tfem_create", 0, "", "", "", "", {0}, 0},
     [F_TWIN] = {"(twin model oracle)", 0, "", "", "", "", {0}, 0},
@@ -1022,8 +1034,42 @@ static void gmsh_files_init(void) {
     g_len[g] = t ? strlen(t) : 0;
   }
 }
+/* The paths tfem_write_vtu is given: a file in the private directory
+ * (unlinked after the call), one whose name is not UTF-8 (any bytes, on
+ * Unix), and paths there that cannot be written (a missing directory, the
+ * directory itself, the empty path); an index out of range passes NULL.
+ * Never any other path. */
+enum { VP_FILE, VP_BAD_UTF8, VP_NO_DIR, VP_DIRECTORY, VP_EMPTY, NVTU };
+static int vtu_writable(int k) { return k == VP_FILE || k == VP_BAD_UTF8; }
+static const char *vtu_path(int k, long index, int idx, char *buf, size_t cap) {
+  switch (k) {
+  case VP_FILE: snprintf(buf, cap, "%s/out_%ld_%d.vtu", g_dir, index, idx); return buf;
+  case VP_BAD_UTF8: snprintf(buf, cap, "%s/\xff\xfe_%ld_%d.vtu", g_dir, index, idx); return buf;
+  case VP_NO_DIR: snprintf(buf, cap, "%s/no_such_dir/out.vtu", g_dir); return buf;
+  case VP_DIRECTORY: snprintf(buf, cap, "%s", g_dir); return buf;
+  case VP_EMPTY: buf[0] = 0; return buf;
+  default: return NULL;
+  }
+}
+/* Removes the .vtu files a child that died left in the private directory. */
+static void vtu_leftovers_cleanup(void) {
+  DIR *d = opendir(g_dir);
+  if (!d) return;
+  struct dirent *e;
+  char p[600];
+  while ((e = readdir(d)) != NULL) {
+    size_t n = strlen(e->d_name);
+    if (n > 4 && strcmp(e->d_name + n - 4, ".vtu") == 0) {
+      snprintf(p, sizeof p, "%s/%s", g_dir, e->d_name);
+      unlink(p);
+    }
+  }
+  closedir(d);
+}
+
 static void gmsh_files_cleanup(void) {
   if (!g_dir[0] || getpid() != g_owner) return;
+  vtu_leftovers_cleanup();
   for (int g = 0; g < NGMSH; ++g) {
     if (g_text[g] && g != G_DIRECTORY && g != G_NONEXISTENT && g != G_BAD_UTF8) unlink(g_path[g]);
     free(g_path[g]);
@@ -1049,6 +1095,7 @@ static void on_signal(int sig) {
     unlink(p);
     snprintf(p, sizeof p, "%s/repro.c", g_dir);
     unlink(p);
+    vtu_leftovers_cleanup();
     rmdir(g_dir);
   }
   signal(sig, SIG_DFL);
@@ -1125,6 +1172,7 @@ static int plausible_int(rng_t *r, char role, const ctx_t *cx) {
   case 'B': return cx->base;
   case 'c': return rrange(r, 0, 4);
   case 'f': return chance(r, 0.6) ? G_VALID : rint_(r, NGMSH);
+  case 'V': return chance(r, 0.6) ? VP_FILE : rint_(r, NVTU);
   case 'm': return chance(r, 0.8) ? 50 : rrange(r, 1, 5);
   case 'w': return rint_(r, 3);
   case 'q': return chance(r, 0.8) ? 0 : rrange(r, -1, 2);
@@ -1158,7 +1206,7 @@ static int wild_int(rng_t *r, char role, int v, const ctx_t *cx) {
   case 4: return sat_int((long long)v - 1);
   case 5:
     if (role == 'n') return cx->nn + cx->base;
-    if (role == 'f') return -1;
+    if (role == 'f' || role == 'V') return -1;
     return enum_max(role) + 1;
   case 6: return role == 'n' ? sat_int((long long)v + (cx->base ? -1 : 1)) : 99;
   default: return 0;
@@ -1345,6 +1393,8 @@ static void result_getters(rng_t *r, case_t *cs, int contact) {
   }
   if (chance(r, 0.3)) add_call(cs, F_WARNING_COUNT);
   if (chance(r, 0.2)) call_i(cs, F_GET_WARNING, 0, 0)->out[0] = (out_spec){LS_FIXED, 512, 0, 0, 0, 0};
+  if (chance(r, 0.2)) call_i(cs, F_GET_WARNING_SIZE, rint_(r, 2), 0);
+  if (chance(r, 0.15)) call_i(cs, F_WRITE_VTU, chance(r, 0.8) ? VP_FILE : rint_(r, NVTU), 0);
   if (chance(r, 0.2)) add_call(cs, F_LAST_ERROR)->out[0] = (out_spec){LS_FIXED, 512, 0, 0, 0, 0};
 }
 
@@ -1984,9 +2034,11 @@ static void scene_host(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
   rt_call(cs, F_CONTACT_UPDATE, 2, rint_(r, 1000));
   rt_call(cs, F_CONTACT_PRESSURES, 1, rint_(r, 1000));
   if (chance(r, 0.3)) add_call(cs, F_CONTACT_LAST_ERROR)->out[0] = (out_spec){LS_FIXED, 512, 0, 0, 0, 0};
+  if (chance(r, 0.2)) add_call(cs, F_CONTACT_LAST_ERROR_LENGTH);
   if (chance(r, 0.2)) {
     add_call(cs, F_CONTACT_DESTROY);
     add_call(cs, F_CONTACT_LENGTH);
+    if (chance(r, 0.5)) add_call(cs, F_CONTACT_LAST_ERROR_LENGTH);
   }
 }
 
@@ -2035,7 +2087,8 @@ static void random_call(rng_t *r, case_t *cs, const ctx_t *cx, double wild, int 
       [F_CONTACT_PRESSURES] = 1, [F_CONTACT_ELEMENTS] = 1, [F_CONTACT_ELEMENT_EQUATIONS] = 1,
       [F_CONTACT_ELEMENT_BLOCKS] = 1, [F_CONTACT_LENGTH] = 1, [F_GET_CONTACT_SHEAR] = 1,
       [F_GET_CONTACT_FRICTION_STATE] = 1, [F_GET_CONTACT_DISSIPATION] = 1, [F_SET_FRICTION] = 2,
-      [F_SET_PRESCRIBED] = 2, [F_ADD_CONTACT_PAIRS_AUTO] = 2, [F_GET_CONTACT_PAIR_NODAL_PRESSURES] = 2};
+      [F_SET_PRESCRIBED] = 2, [F_ADD_CONTACT_PAIRS_AUTO] = 2, [F_GET_CONTACT_PAIR_NODAL_PRESSURES] = 2,
+      [F_WRITE_VTU] = 2, [F_GET_WARNING_SIZE] = 2, [F_CONTACT_LAST_ERROR_LENGTH] = 1};
   int total = 0;
   for (int f = 0; f < NF; ++f) total += weight[f];
   int x = rint_(r, total), fn = 0;
@@ -4053,6 +4106,11 @@ static void exec_call(runner_t *R, int idx) {
   const char *ver = NULL;
   const char *path = NULL;
   if (fn == F_LOAD_GMSH && c->iv[0] >= 0 && c->iv[0] < NGMSH) path = g_path[c->iv[0]];
+  char vbuf[600];
+  if (fn == F_WRITE_VTU) {
+    path = vtu_path(c->iv[0], R->cs->index, idx, vbuf, sizeof vbuf);
+    if (vtu_writable(c->iv[0])) unlink(path); /* (left by a child that died) */
+  }
   if (R->cfile && R->phase == 0) {
     c_emit_call(R->cfile, c, idx);
     fflush(R->cfile);
@@ -4175,6 +4233,9 @@ static void exec_call(runner_t *R, int idx) {
   case F_SET_FRICTION: st = tfem_set_friction(m, c->iv[0], c->dv[0]); break;
   case F_SET_PRESCRIBED: st = tfem_set_prescribed(m, c->iv[0], c->iv[1], c->dv[0]); break;
   case F_ADD_CONTACT_PAIRS_AUTO: st = tfem_add_contact_pairs_auto(m, c->iv[0], in[0], c->dv[0], o[0], o[1]); break;
+  case F_WRITE_VTU: st = tfem_write_vtu(m, path); break;
+  case F_GET_WARNING_SIZE: st = tfem_get_warning_size(m, c->iv[0], o[0]); break;
+  case F_CONTACT_LAST_ERROR_LENGTH: lel = tfem_contact_last_error_length(hc); break;
   case F_DESTROY_NULL: tfem_destroy(NULL); break;
   case F_RECREATE:
     tfem_destroy(R->m);
@@ -4183,6 +4244,29 @@ static void exec_call(runner_t *R, int idx) {
   default: break;
   }
   off_t e1 = fd_size(2);
+  /* The .vtu written: read (original run) and removed at once. */
+  char *vtu = NULL;
+  size_t vtu_n = 0;
+  int vtu_found = 0;
+  if (fn == F_WRITE_VTU && path && vtu_writable(c->iv[0])) {
+    FILE *vf = fopen(path, "rb");
+    if (vf) {
+      vtu_found = 1;
+      if (R->phase == 0) {
+        size_t cap = 1 << 16;
+        vtu = xmalloc(cap + 1);
+        size_t k;
+        while ((k = fread(vtu + vtu_n, 1, cap - vtu_n, vf)) > 0) {
+          vtu_n += k;
+          if (vtu_n == cap && cap < ((size_t)1 << 26)) vtu = xrealloc(vtu, (cap *= 2) + 1);
+          else if (vtu_n == cap) break;
+        }
+        vtu[vtu_n] = 0;
+      }
+      fclose(vf);
+    }
+    unlink(path);
+  }
 
   if (R->phase == 1) {
     /* Replay: the same call must succeed again with the same outputs. */
@@ -4230,6 +4314,7 @@ static void exec_call(runner_t *R, int idx) {
       R->mismatch_reported = 1;
     }
     for (int j = 0; j < nout; ++j) free(g[j].blk);
+    free(vtu);
     return;
   }
 
@@ -4244,7 +4329,8 @@ static void exec_call(runner_t *R, int idx) {
   const tfem_model *slot = (FN[fn].model == 1 && !c->null_model) ? R->m : NULL;
   int hslot = FN[fn].model == 2 && hc; /* the message is the context's */
   int msg_fn = fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && fn != F_VERSION && fn != F_DESTROY_NULL &&
-               fn != F_RECREATE && fn != F_CONTACT_LAST_ERROR && fn != F_CONTACT_DESTROY;
+               fn != F_RECREATE && fn != F_CONTACT_LAST_ERROR && fn != F_CONTACT_DESTROY &&
+               fn != F_CONTACT_LAST_ERROR_LENGTH;
   static __thread char msg[65536];
   msg[0] = 0;
   if (msg_fn && hslot) tfem_contact_last_error(hc, msg, sizeof msg);
@@ -4293,7 +4379,7 @@ static void exec_call(runner_t *R, int idx) {
                                                         : !gb_untouched(&g[j])))
         finding(R, V_WRITE_ON_FAIL, idx, "output %d written although the status is %s", j, status_name(st));
   if (c->null_model && FN[fn].model && fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && fn != F_CONTACT_DESTROY &&
-      st != TFEM_STATUS_NULL_POINTER)
+      fn != F_CONTACT_LAST_ERROR_LENGTH && st != TFEM_STATUS_NULL_POINTER)
     finding(R, V_OTHER, idx, "NULL model gave %s, not NULL_POINTER", status_name(st));
   /* NULL pointers other than the model: a required one must be refused, an
    * optional one ("may be NULL") accepted. (An input array of no element
@@ -4361,6 +4447,77 @@ static void exec_call(runner_t *R, int idx) {
   if (fn == F_CONTACT_CREATE && (st == TFEM_STATUS_OK) != (c->iv[0] == 0 || c->iv[0] == 1))
     finding(R, V_OTHER, idx, "tfem_contact_create(%d) %s", c->iv[0], st ? "returned NULL" : "made a context");
   if (fn == F_LAST_ERROR_LENGTH && lel < 1) finding(R, V_LASTERR, idx, "tfem_last_error_length = 0");
+  if (fn == F_CONTACT_LAST_ERROR_LENGTH) {
+    /* 1 for NULL; else the message tfem_contact_last_error gives, with its NUL */
+    static __thread char b[65536];
+    b[0] = 0;
+    if (hc) tfem_contact_last_error(hc, b, sizeof b);
+    if (lel != strlen(b) + 1)
+      finding(R, V_LASTERR, idx, "tfem_contact_last_error_length = %zu, the message (%s context) has %zu bytes", lel,
+              hc ? "live" : "NULL", strlen(b));
+  }
+  /* tfem_get_warning_size: an index in range, and a buffer of the size
+   * given holds the whole warning, one byte less truncates it. (The call
+   * that fails comes first: the model's message is then cleared by the
+   * one that succeeds, as by the call checked.) */
+  if (fn == F_GET_WARNING_SIZE && st == TFEM_STATUS_OK && m && !c->out[0].null_) {
+    size_t z;
+    int count = -1;
+    memcpy(&z, g[0].p, sizeof z);
+    if (tfem_warning_count(m, &count) == TFEM_STATUS_OK && (c->iv[0] < 0 || c->iv[0] >= count))
+      finding(R, V_OTHER, idx, "OK for warning %d of %d", c->iv[0], count);
+    if (z < 1 || z > ((size_t)1 << 26)) {
+      finding(R, V_OTHER, idx, "warning %d has size %zu", c->iv[0], z);
+    } else {
+      char *w = xmalloc(z + 1);
+      int s_short = z > 1 ? tfem_get_warning(m, c->iv[0], w, z - 1) : TFEM_STATUS_BUFFER_TOO_SMALL;
+      memset(w, 'x', z + 1);
+      int s_full = tfem_get_warning(m, c->iv[0], w, z);
+      R->oracles[O_WARNING_SIZE]++;
+      if (s_full != TFEM_STATUS_OK || strnlen(w, z) + 1 != z)
+        finding(R, V_OTHER, idx, "warning %d of size %zu: a buffer of that size gives %s, %zu bytes", c->iv[0], z,
+                status_name(s_full), strnlen(w, z));
+      else if (s_short != TFEM_STATUS_BUFFER_TOO_SMALL)
+        finding(R, V_OTHER, idx, "warning %d of size %zu: a buffer of %zu bytes gives %s", c->iv[0], z, z - 1,
+                status_name(s_short));
+      free(w);
+    }
+  }
+  /* tfem_write_vtu: NULL refused; a file written only where it can be,
+   * holding the grid of the model's points and cells; an unwritable path
+   * refused with TFEM_STATUS_IO once there are results. */
+  if (fn == F_WRITE_VTU && !c->null_model) {
+    const shadow_t *sv = &R->sh;
+    int known = sv->has_mesh && sv->results && !sv->res_unknown;
+    if (!path && st != TFEM_STATUS_NULL_POINTER) {
+      finding(R, V_NULL_ARG, idx, "NULL path gave %s", status_name(st));
+    } else if (path && st == TFEM_STATUS_OK && !vtu_writable(c->iv[0])) {
+      finding(R, V_OTHER, idx, "OK although the path \"%s\" cannot be written", path);
+    } else if (path && st == TFEM_STATUS_OK) {
+      int nn = -1, nt = -1, nc = -1;
+      char want[64];
+      const char *cells = vtu ? strstr(vtu, "NumberOfCells=\"") : NULL;
+      long ncells = cells ? strtol(cells + strlen("NumberOfCells=\""), NULL, 10) : -1;
+      if (!vtu_found) {
+        finding(R, V_OTHER, idx, "OK but no file at %s", path);
+      } else if (tfem_get_sizes(m, &nn, &nt, &nc) == TFEM_STATUS_OK) {
+        snprintf(want, sizeof want, "NumberOfPoints=\"%d\"", nn);
+        R->oracles[O_VTU]++;
+        if (!vtu || !strstr(vtu, "<VTKFile") || !strstr(vtu, "UnstructuredGrid") || !strstr(vtu, want) ||
+            ncells < nt || ncells > (long)nt + (nc > 0 ? nc : 0))
+          finding(R, V_OTHER, idx, "the .vtu (%zu bytes) is not a grid of %d points and %d (+ %d contact) cells: "
+                  "NumberOfCells %ld", vtu_n, nn, nt, nc, ncells);
+      }
+    } else if (path && known && st != TFEM_STATUS_INVALID_STATE) {
+      /* (INVALID_STATE with results: the results_lost oracle below) */
+      int want_st = vtu_writable(c->iv[0]) ? TFEM_STATUS_OK : TFEM_STATUS_IO;
+      R->oracles[O_VTU]++;
+      if (st != want_st)
+        finding(R, V_OTHER, idx, "%s (not %s) for the path \"%s\" after a solve: \"%.160s\"", status_name(st),
+                status_name(want_st), path, msg);
+    }
+  }
+  free(vtu);
   if (fn == F_VERSION) {
     int a, b, cc, n = 0;
     if (!ver || sscanf(ver, "%d.%d.%d%n", &a, &b, &cc, &n) != 3 || ver[n] != 0)
@@ -4471,13 +4628,14 @@ static void exec_call(runner_t *R, int idx) {
       memcpy(&nt, g[1].p, 4);
       if (nn != R->sh.nn || nt != R->sh.nt) finding(R, V_OTHER, idx, "sizes %d, %d; the mesh has %d, %d", nn, nt, R->sh.nn, R->sh.nt);
     }
-    if (c->null_model && FN[fn].model && fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && fn != F_CONTACT_DESTROY)
+    if (c->null_model && FN[fn].model && fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && fn != F_CONTACT_DESTROY &&
+        fn != F_CONTACT_LAST_ERROR_LENGTH)
       finding(R, V_OTHER, idx, "OK with a NULL model");
   }
 
   /* ---- the contact context and load steps ---- */
   if (st == TFEM_STATUS_OK && !c->null_model && FN[fn].model == 2 && fn != F_CONTACT_DESTROY &&
-      fn != F_CONTACT_LAST_ERROR && fn != F_CONTACT_SET_OPTIONS && fn != F_CONTACT_ADD_SIDE &&
+      fn != F_CONTACT_LAST_ERROR && fn != F_CONTACT_LAST_ERROR_LENGTH && fn != F_CONTACT_SET_OPTIONS && fn != F_CONTACT_ADD_SIDE &&
       fn != F_CONTACT_ADD_PAIR && fn != F_CONTACT_ADD_PAIR_WITH_MESH)
     R->cbuilt = 1; /* (a call that needs the contact mesh B succeeded) */
   if (st == TFEM_STATUS_OK && hc) {
@@ -4531,7 +4689,7 @@ static void exec_call(runner_t *R, int idx) {
   shadow_t *s = &R->sh;
   int need_results = fn == F_GET_DISPLACEMENTS || fn == F_GET_STRAINS || fn == F_GET_STRESSES ||
                      fn == F_GET_REACTIONS || fn == F_GET_MATRIX_SIZE || fn == F_GET_MATRIX ||
-                     fn == F_GET_EXTERNAL_WORK;
+                     fn == F_GET_EXTERNAL_WORK || fn == F_WRITE_VTU;
   int need_contact = fn == F_GET_CONTACT_ACTIVE || fn == F_GET_CONTACT_PRESSURE || fn == F_GET_CONTACT_ELEMENTS ||
                      fn == F_GET_CONTACT_REPORT || fn == F_GET_CONTACT_FORCES || fn == F_GET_CONTACT_GAPS ||
                      fn == F_GET_CONTACT_NODAL_PRESSURES || fn == F_GET_CONTACT_PAIR_NODAL_PRESSURES ||
@@ -5368,11 +5526,24 @@ static void c_emit_call(FILE *f, const call_t *c, int idx) {
   case F_ADD_CONTACT_PAIRS_AUTO:
     fprintf(f, "    s = tfem_add_contact_pairs_auto(%s, %d, %s, %s, %s, %s);\n", M, I[0], a[0], d[0], o[0], o[1]);
     break;
+  case F_WRITE_VTU: {
+    static const char *const vp[NVTU] = {"REPRO_DIR \"/out.vtu\"", "REPRO_DIR \"/\\377\\376.vtu\"",
+                                         "REPRO_DIR \"/no_such_dir/out.vtu\"", "REPRO_DIR", "\"\""};
+    int k = I[0];
+    if (k >= 0 && k < NVTU && k != VP_NO_DIR && k != VP_EMPTY) fprintf(f, "    mkdir(REPRO_DIR, 0700);\n");
+    fprintf(f, "    s = tfem_write_vtu(%s, %s);\n", M, k >= 0 && k < NVTU ? vp[k] : "NULL");
+    break;
+  }
+  case F_GET_WARNING_SIZE: fprintf(f, "    s = tfem_get_warning_size(%s, %d, %s);\n", M, I[0], o[0]); break;
+  case F_CONTACT_LAST_ERROR_LENGTH:
+    fprintf(f, "    printf(\"%%s #%d length %%zu\\n\", L, tfem_contact_last_error_length(%s));\n", idx, H);
+    break;
   case F_DESTROY_NULL: fprintf(f, "    tfem_destroy(NULL);\n"); break;
   case F_RECREATE: fprintf(f, "    tfem_destroy(m);\n    m = tfem_create();\n"); break;
   default: break;
   }
-  if (fn != F_VERSION && fn != F_LAST_ERROR_LENGTH && fn != F_DESTROY_NULL && fn != F_RECREATE && fn != F_CONTACT_DESTROY) {
+  if (fn != F_VERSION && fn != F_LAST_ERROR_LENGTH && fn != F_DESTROY_NULL && fn != F_RECREATE && fn != F_CONTACT_DESTROY &&
+      fn != F_CONTACT_LAST_ERROR_LENGTH) {
     if (FN[fn].model == 2 && fn != F_CONTACT_LAST_ERROR) fprintf(f, "    show_c(%s, %d, \"%s\", s);\n", H, idx, fn_name(fn));
     else fprintf(f, "    show(%s, %d, \"%s\", s);\n", fn == F_LAST_ERROR || fn == F_CONTACT_LAST_ERROR ? "NULL" : sl, idx, fn_name(fn));
     if (fn == F_LAST_ERROR) fprintf(f, "    (void)0; /* (the message shown is the thread's) */\n");
@@ -5484,7 +5655,8 @@ static void run_case(uint64_t seed, long index, int verbose, case_result *res) {
   /* (The message calls are left out: what they read is the failed calls'.) */
   for (int i = 0; i < cs.n && R.m; ++i)
     if (cs.c[i].ran && cs.c[i].status == TFEM_STATUS_OK && cs.c[i].fn != F_LAST_ERROR &&
-        cs.c[i].fn != F_LAST_ERROR_LENGTH && cs.c[i].fn != F_CONTACT_LAST_ERROR)
+        cs.c[i].fn != F_LAST_ERROR_LENGTH && cs.c[i].fn != F_CONTACT_LAST_ERROR &&
+        cs.c[i].fn != F_CONTACT_LAST_ERROR_LENGTH)
       exec_call(&R, i);
   tfem_destroy(R.m);
   tfem_contact_destroy(R.ctx);
