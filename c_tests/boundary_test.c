@@ -675,13 +675,66 @@ static void a_gmsh_physical_point_group_is_named_in_a_warning(void) {
   unlink(gmsh_path("point_group.msh"));
 }
 
+/* Reads warning i through tfem_get_warning_size: the size counts the NUL,
+ * a buffer of that size takes the warning whole, one byte less truncates
+ * it (BUFFER_TOO_SMALL). Returns the warning (malloc'd) or NULL. */
+static char *warning_by_its_size(tfem_model *m, int i) {
+  size_t size = 0;
+  CHECK(tfem_get_warning_size(m, i, &size) == TFEM_STATUS_OK && size >= 1);
+  char *w = malloc(size + 1);
+  if (w == NULL) return NULL;
+  if (size > 1) CHECK(tfem_get_warning(m, i, w, size - 1) == TFEM_STATUS_BUFFER_TOO_SMALL && strlen(w) + 2 == size);
+  CHECK(tfem_get_warning(m, i, w, size) == TFEM_STATUS_OK && strlen(w) + 1 == size);
+  return w;
+}
+
 /* The size of a warning, for a buffer that holds all of it (the Fortran
  * helper copied warnings through 4096 bytes, and nothing gave their
- * size): a Gmsh point in 1500 physical groups is warned about naming
- * each group, over 4096 bytes; tfem_get_warning_size counts it with its
- * NUL and a buffer of that size takes it whole. An index out of range is
- * refused, the size unchanged. */
+ * size): tfem_get_warning_size counts it with its NUL and a buffer of that
+ * size takes it whole, also past 4096 bytes. The long warning: automatic
+ * pairing leaving out a tag whose edges bound 1000 bodies names the bodies
+ * (6 KB). (It was a Gmsh point in 1500 physical groups, whose warning
+ * named every group, 8 KB; it names ten now: below. Should the pairing
+ * warning be bounded too, this test needs another warning over 4096
+ * bytes, or none is left and the check of the size past 4096 goes.) An
+ * index out of range is refused, the size unchanged. */
 static void a_warning_of_any_length_is_read_whole_by_its_size(void) {
+  enum { N = 1000 };
+  static double xy[6 * N];
+  static int tri[3 * N], body[N], edges[2 * N], tags[N];
+  for (int k = 0; k < N; ++k) { /* triangle k alone in body 1001 + k, its bottom edge tagged 1 */
+    double x = 2.0 * k;
+    const double p[6] = {x, 0, x + 1, 0, x, 1};
+    memcpy(xy + 6 * k, p, sizeof p);
+    tri[3 * k] = 3 * k, tri[3 * k + 1] = 3 * k + 1, tri[3 * k + 2] = 3 * k + 2;
+    body[k] = 1001 + k;
+    edges[2 * k] = 3 * k, edges[2 * k + 1] = 3 * k + 1;
+    tags[k] = 1;
+  }
+  tfem_model *m = tfem_create();
+  CHECK(tfem_set_mesh(m, 3 * N, xy, N, tri, body, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_set_boundary_edges(m, N, edges, tags) == TFEM_STATUS_OK);
+  int first = -1, pairs = -1;
+  CHECK(tfem_add_contact_pairs_auto(m, 0, NULL, 0.1, &first, &pairs) == TFEM_STATUS_OK && pairs == 0);
+  int count = 0, found = 0;
+  CHECK(tfem_warning_count(m, &count) == TFEM_STATUS_OK);
+  for (int i = 0; i < count; ++i) {
+    char *w = warning_by_its_size(m, i);
+    if (w && strstr(w, "left out tag 1: its edges bound bodies 1001, 1002, ") && strstr(w, ", 2000,"))
+      found = strlen(w) + 1 > 4096;
+    free(w);
+  }
+  CHECK(found);
+  size_t size = 7;
+  EXPECT_ERROR(m, tfem_get_warning_size(m, count, &size), TFEM_STATUS_INVALID_ARGUMENT, "out of range");
+  CHECK(size == 7);
+  tfem_destroy(m);
+}
+
+/* A Gmsh point in 1500 physical groups was warned about naming every
+ * group (8225 bytes): the warning names the point, the first ten groups
+ * and how many there are, in a few hundred bytes. */
+static void a_gmsh_point_in_1500_groups_gives_a_short_warning(void) {
   static char msh[16384];
   int n = sprintf(msh, "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Entities\n1 0 1 0\n5 0.5 0.5 0 1500");
   for (int k = 1; k <= 1500; ++k) n += sprintf(msh + n, " %d", 100 + k);
@@ -693,17 +746,12 @@ static void a_warning_of_any_length_is_read_whole_by_its_size(void) {
   int count = 0, found = 0;
   CHECK(tfem_warning_count(m, &count) == TFEM_STATUS_OK);
   for (int i = 0; i < count; ++i) {
-    size_t size = 0;
-    CHECK(tfem_get_warning_size(m, i, &size) == TFEM_STATUS_OK && size >= 1);
-    char *w = malloc(size);
-    CHECK(w != NULL && tfem_get_warning(m, i, w, size) == TFEM_STATUS_OK && strlen(w) + 1 == size);
-    if (w && strstr(w, "point 5 (group 101, ") && strstr(w, ", 1600)")) found = size > 4096;
+    char *w = warning_by_its_size(m, i);
+    if (w && strstr(w, "point 5 (group 101, 102, 103, 104, 105, 106, 107, 108, 109, 110 and 1490 more, 1500 in all)"))
+      found = strlen(w) + 1 < 512 && strstr(w, "111") == NULL;
     free(w);
   }
   CHECK(found);
-  size_t size = 7;
-  EXPECT_ERROR(m, tfem_get_warning_size(m, count, &size), TFEM_STATUS_INVALID_ARGUMENT, "out of range");
-  CHECK(size == 7);
   tfem_destroy(m);
   unlink(gmsh_path("many_groups.msh"));
 }
@@ -2427,6 +2475,7 @@ int main(int argc, char **argv) {
   a_rigid_body_modelled_by_a_huge_modulus_has_its_reactions_warned_about();
   nothing_to_solve_is_said_in_words();
   a_warning_of_any_length_is_read_whole_by_its_size();
+  a_gmsh_point_in_1500_groups_gives_a_short_warning();
   a_solve_under_any_memory_limit_fails_cleanly_or_succeeds();
 
   if (gmsh_dir[0] != '\0') rmdir(gmsh_dir);

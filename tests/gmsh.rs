@@ -1238,6 +1238,43 @@ fn a_surface_in_two_groups_is_the_first_groups_body_with_a_warning() {
     );
 }
 
+/// A point and a surface in 1500 physical groups: the warnings name the
+/// entity, the first ten groups and how many there are, in a few hundred
+/// bytes (they listed every group: 8 KB for the point).
+#[test]
+fn an_entity_in_thousands_of_groups_gives_a_bounded_warning() {
+    let groups = |first: i32| -> String {
+        let tags: Vec<String> = (first..first + 1500).map(|t| t.to_string()).collect();
+        format!("1500 {}", tags.join(" "))
+    };
+    let point = format!("5 0.5 0.5 0 {}", groups(101));
+    let text = square_in_groups(&groups(7), &[&point]);
+    let mesh = read_msh(&write("square_in_1500_groups.msh", &text), 0).unwrap();
+    assert_eq!(mesh.bodies(), [7]);
+    let warning = |needle: &str| -> String {
+        mesh.warnings()
+            .iter()
+            .find(|w| w.contains(needle))
+            .unwrap_or_else(|| panic!("no warning with {needle:?}: {:?}", mesh.warnings()))
+            .clone()
+    };
+    let p = warning("point 5");
+    assert!(
+        p.contains("point 5 (group 101, 102, 103, 104, 105, 106, 107, 108, 109, 110 and 1490 more, 1500 in all)")
+            && p.contains("not used"),
+        "{p}"
+    );
+    let s = warning("surface 1");
+    assert!(
+        s.contains("surface 1 (body 7; dropped 8, 9, 10, 11, 12, 13, 14, 15, 16, 17 and 1489 more, 1499 in all)"),
+        "{s}"
+    );
+    for w in [&p, &s] {
+        assert!(w.len() < 512, "{} bytes: {w}", w.len());
+        assert!(!w.contains("1506"), "a group past the tenth is listed: {w}");
+    }
+}
+
 #[test]
 fn a_physical_point_group_is_named_in_a_warning() {
     let text = square_in_groups("1 7", &["5 0.5 0.5 0 1 30"]);

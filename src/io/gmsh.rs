@@ -7,7 +7,8 @@
 //! whole-boundary group 99 is loaded through 13 and fixed through 99). A
 //! surface in several takes the first as its body (a triangle has one),
 //! and physical points are not used (the model has no node groups): both
-//! with a warning of the mesh naming the entities and groups. A surface meshed clockwise (normal along −z) is
+//! with a warning of the mesh naming the entities and groups (five entities
+//! and ten groups of each at most, then how many more). A surface meshed clockwise (normal along −z) is
 //! turned counter-clockwise as a whole. Only 3-node triangles and 2-node lines are accepted;
 //! nodes must lie in the plane z = 0.
 //!
@@ -1050,10 +1051,22 @@ fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
     Ok(mesh)
 }
 
-/// Physical tags for a message: "8, 9".
+/// Physical tags for a message: "8, 9"; past ten, the first ten, how many
+/// more and how many in all ("101, …, 110 and 1490 more, 1500 in all"), so
+/// that an entity in thousands of groups gives a warning of a few hundred
+/// bytes, not of kilobytes.
 fn tags(groups: &[i32]) -> String {
-    let shown: Vec<String> = groups.iter().map(i32::to_string).collect();
-    shown.join(", ")
+    const SHOWN: usize = 10;
+    let shown: Vec<String> = groups.iter().take(SHOWN).map(i32::to_string).collect();
+    let mut out = shown.join(", ");
+    if groups.len() > SHOWN {
+        out.push_str(&format!(
+            " and {} more, {} in all",
+            groups.len() - SHOWN,
+            groups.len()
+        ));
+    }
+    out
 }
 
 /// At most five items of a list for a message, then how many more.
