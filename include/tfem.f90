@@ -435,7 +435,7 @@ module tfem
       import
       type(c_ptr), value :: model
       integer(c_int), value :: index
-      integer(c_size_t), intent(out) :: size
+      integer(c_size_t), intent(inout) :: size
       integer(c_int) :: status
     end function tfem_get_warning_size
   end interface

@@ -328,15 +328,21 @@ enum Pass {
     Value(String),
     /// An array (assumed size).
     Array { base: String, konst: bool },
-    /// A scalar output by reference.
-    Out(String),
+    /// A scalar output by reference: intent(out), or intent(inout) when
+    /// `kept`, the doc saying that an error leaves it unchanged ("`size`
+    /// unchanged"). With intent(out) the argument is undefined on entry,
+    /// and the caller's value may not survive the call even when the C
+    /// side leaves it alone: gfortran -O2 drops a store made just before
+    /// the call (tfem_get_warning_size gave 0, not the 7 set before it).
+    Out { base: String, kept: bool },
 }
 
 /// Reads how parameter `k` of `p` is passed. A pointer is an array when it
 /// points to char, is const (an input), is followed by a `size_t` length
 /// (the header's buffer convention) or its doc says "`name` (N values"
 /// (N digits or the name of a size, such as n_entries);
-/// any other non-const pointer is a scalar output.
+/// any other non-const pointer is a scalar output, kept on error if the doc
+/// says "`name` unchanged".
 fn classify(p: &Proto, k: usize) -> Pass {
     let (ty, name) = &p.params[k];
     let konst = ty.starts_with("const ");
@@ -370,7 +376,10 @@ fn classify(p: &Proto, k: usize) -> Pass {
             konst,
         }
     } else {
-        Pass::Out(base.to_string())
+        Pass::Out {
+            base: base.to_string(),
+            kept: p.doc.contains(&format!("`{name}` unchanged")),
+        }
     }
 }
 
@@ -401,7 +410,11 @@ fn fortran_param(pass: &Pass, name: &str, optional: bool) -> String {
             kind_of(base),
             if *konst { "in" } else { "inout" }
         ),
-        Pass::Out(base) => format!("{}, intent(out){opt} :: {name}", kind_of(base)),
+        Pass::Out { base, kept } => format!(
+            "{}, intent({}){opt} :: {name}",
+            kind_of(base),
+            if *kept { "inout" } else { "out" }
+        ),
     }
 }
 
@@ -1348,6 +1361,11 @@ fn documented_nullable_parameters_are_optional_and_lengths_generic() {
 /// Compiles Fortran sources (module first; objects allowed) into an
 /// executable linked with libtfem and returns its path.
 fn build_fortran(sources: &[&Path], name: &str) -> PathBuf {
+    build_fortran_with(sources, name, &[])
+}
+
+/// [`build_fortran`] with extra gfortran flags (an optimisation level).
+fn build_fortran_with(sources: &[&Path], name: &str, flags: &[&str]) -> PathBuf {
     ensure_shared_library();
     let lib = lib_dir();
     let dir = lib.join("fortran").join(name);
@@ -1359,6 +1377,7 @@ fn build_fortran(sources: &[&Path], name: &str) -> PathBuf {
         .arg("-Wall")
         .arg("-Werror")
         .arg("-Wno-unused-dummy-argument")
+        .args(flags)
         .arg("-J")
         .arg(&dir)
         .arg(root().join("include/tfem.f90"))
@@ -1435,7 +1454,7 @@ fn every_function_takes_default_integer_lengths_and_omitted_nullables() {
                         };
                         (v.into(), d.into())
                     }
-                    Pass::Out(base) => {
+                    Pass::Out { base, .. } => {
                         // One variable per position: two outputs of a call
                         // must not share an actual argument.
                         let (v, t) = match base.as_str() {
@@ -1588,6 +1607,76 @@ fn gfortran_passes_null_for_every_absent_optional_argument_kind() {
     let exe = build_fortran(&[&source, &object], "optional_probe");
     let out = run(&exe, &[]);
     assert!(out.contains(" 0 failed"), "{out}");
+}
+
+/// Every scalar output whose doc says an error leaves it unchanged is
+/// intent(inout) in the committed module (intent(out) would make it
+/// undefined on entry); the others are intent(out).
+#[test]
+fn outputs_kept_on_error_are_intent_inout() {
+    let module = module();
+    let mut kept = Vec::new();
+    for p in prototypes(&header()) {
+        let at = module
+            .find(&format!("bind(C, name=\"{}\")", p.name))
+            .unwrap_or_else(|| panic!("no Fortran interface for {}", p.name));
+        let body = &module[at..module[at..].find("end ").unwrap() + at];
+        for (k, (_, n)) in p.params.iter().enumerate() {
+            let Pass::Out { .. } = classify(&p, k) else {
+                continue;
+            };
+            let decl = body
+                .lines()
+                .find(|l| l.trim_end().ends_with(&format!(":: {n}")))
+                .unwrap_or_else(|| panic!("{}: no declaration of {n}", p.name));
+            let unchanged = p.doc.contains(&format!("`{n}` unchanged"));
+            let intent = if unchanged {
+                "intent(inout)"
+            } else {
+                "intent(out)"
+            };
+            assert!(
+                decl.contains(intent),
+                "{}: {n} declared `{decl}`, not {intent}",
+                p.name
+            );
+            if unchanged {
+                kept.push(format!("{}({n})", p.name));
+            }
+        }
+    }
+    assert_eq!(kept, ["tfem_get_warning_size(size)"]);
+}
+
+/// tfem_get_warning_size refused (an index out of range) leaves `size` as
+/// it was, also in Fortran built with -O2: with `size` intent(out) there,
+/// gfortran dropped the 7 stored before the call, and `size` came back 0.
+#[test]
+fn a_refused_warning_size_keeps_the_fortran_variable_at_o2() {
+    let source = generated_source(
+        "warning_size_kept",
+        "warning_size_kept.f90",
+        "program warning_size_kept\n\
+         \x20 use, intrinsic :: iso_c_binding\n\
+         \x20 use tfem\n\
+         \x20 implicit none\n\
+         \x20 type(c_ptr) :: m\n\
+         \x20 integer(c_size_t) :: size\n\
+         \x20 integer(c_int) :: status\n\
+         \x20 m = tfem_create()\n\
+         \x20 size = 7\n\
+         \x20 status = tfem_get_warning_size(m, 0_c_int, size)\n\
+         \x20 print '(a, i0, a, i0)', 'status ', status, ' size ', size\n\
+         \x20 call tfem_destroy(m)\n\
+         end program warning_size_kept\n",
+    );
+    let exe = build_fortran_with(&[&source], "warning_size_kept", &["-O2"]);
+    let out = run(&exe, &[]);
+    assert_eq!(
+        out.trim(),
+        format!("status {} size 7", tfem::Status::InvalidArgument as i32),
+        "{out}"
+    );
 }
 
 #[test]
