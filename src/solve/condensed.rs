@@ -58,7 +58,9 @@ const OUTSIDE: u32 = u32::MAX;
 /// An element's contribution to the interface: its unknowns (indices over
 /// the free unknowns, `None` when prescribed) and its n×n matrix, n the
 /// number of its DOFs (6 for an element of B; more for a functional that
-/// couples more nodes, such as a mortar weighted gap).
+/// couples more nodes, such as a mortar weighted gap). Every unknown it
+/// couples must be an interface unknown ([`Condensed::factorize`] and
+/// [`Condensed::update`] refuse one that is not).
 pub struct ElementMatrix<'a> {
     /// Free-unknown index of each element DOF.
     pub unknowns: &'a [Option<usize>],
@@ -202,6 +204,30 @@ impl Condensed {
         self.min_eigenvalue
     }
 
+    /// Refuses a change whose matrix is not n×n over its n DOFs, or that
+    /// couples an unknown outside the interface (Ŝ has no place for it:
+    /// dropping it would change the system silently).
+    fn check_change(&self, e: &ElementMatrix<'_>) -> Result<()> {
+        let n = e.unknowns.len();
+        if e.matrix.len() != n * n {
+            return Err(Error::state(format!(
+                "an interface change has {} matrix entries for {n} DOFs",
+                e.matrix.len()
+            )));
+        }
+        for (a, unknown) in e.unknowns.iter().enumerate() {
+            let outside =
+                matches!(unknown, Some(i) if self.position.get(*i).is_none_or(|&p| p == OUTSIDE));
+            if outside && e.matrix[a * n..a * n + n].iter().any(|&v| v != 0.0) {
+                return Err(Error::state(format!(
+                    "an interface change couples unknown {} outside the interface",
+                    unknown.unwrap_or_default()
+                )));
+            }
+        }
+        Ok(())
+    }
+
     fn add(
         position: &[u32],
         scale: &[f64],
@@ -241,6 +267,10 @@ impl Condensed {
         &mut self,
         changes: impl Iterator<Item = (ElementMatrix<'a>, f64)>,
     ) -> Result<()> {
+        let changes: Vec<(ElementMatrix<'a>, f64)> = changes.collect();
+        for (e, _) in &changes {
+            self.check_change(e)?;
+        }
         self.factored = false;
         self.generation += 1;
         let n = self.len();
@@ -276,8 +306,9 @@ impl Condensed {
 
     /// Updates the current factor for element changes relative to the
     /// matrix it factorises (not to Ŝ₁): each change's scaled matrix is split
-    /// into its eigenpairs (one for a frictionless element, up to three
-    /// otherwise) and applied as a rank-r update, O(n²r) instead of the
+    /// into its eigenpairs (one for a frictionless element of B or a mortar
+    /// weighted gap, up to three for a frictional element, at most its
+    /// number of DOFs) and applied as a rank-r update, O(n²r) instead of the
     /// O(n³) refactorisation. Fails like [`Condensed::factorize`], and also
     /// when a downdate loses definiteness in round-off; the factor is then
     /// unusable and the caller refactorises.
@@ -288,10 +319,13 @@ impl Condensed {
         if !self.factored {
             return Err(Error::state("interface update without a factor"));
         }
-        let mut changes = changes.peekable();
-        if changes.peek().is_none() {
+        let changes: Vec<(ElementMatrix<'a>, f64)> = changes.collect();
+        if changes.is_empty() {
             // Nothing changed: the factor (and what was solved with it) stands.
             return Ok(());
+        }
+        for (e, _) in &changes {
+            self.check_change(e)?;
         }
         self.factored = false;
         self.generation += 1;
@@ -733,6 +767,67 @@ mod tests {
         assert!(apart(&updated, &refactorised) < 1e-12);
         // And the change is felt: not the solution without it.
         assert!(apart(&without, &refactorised) > 1e-6);
+    }
+
+    #[test]
+    fn a_dof_repeated_within_one_change_adds_up_in_an_update_as_in_a_refactorisation() {
+        let mut sys = fixture_condensed();
+        let u = sys.unknowns().to_vec();
+        // DOF u[2] twice: the change is k (c₀ + c₃)² on it.
+        let unknowns = [Some(u[0]), Some(u[2]), Some(u[5]), Some(u[2])];
+        let matrix = rank_one(&[1.0, 2.0, -1.5, 0.5], 2e3);
+        let change = || {
+            std::iter::once((
+                ElementMatrix {
+                    unknowns: &unknowns,
+                    matrix: &matrix,
+                },
+                1.0,
+            ))
+        };
+        let n = sys.len();
+        let y: Vec<f64> = (0..n).map(|k| (k as f64 * 0.4).sin()).collect();
+        let g = vec![0.0; n];
+        sys.factorize(change()).unwrap();
+        let refactorised = sys.solve(&y, &g).unwrap();
+        sys.factorize(std::iter::empty()).unwrap();
+        sys.update(change()).unwrap();
+        let updated = sys.solve(&y, &g).unwrap();
+        let scale = refactorised.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        for (a, b) in updated.iter().zip(&refactorised) {
+            assert!((a - b).abs() < 1e-12 * scale, "{a} against {b}");
+        }
+    }
+
+    #[test]
+    fn a_change_of_the_wrong_size_or_outside_the_interface_is_refused() {
+        let mut sys = fixture_condensed();
+        let u = sys.unknowns().to_vec();
+        let short = [Some(u[0]), Some(u[1])];
+        let three = [1.0, 2.0, 3.0];
+        let e = ElementMatrix {
+            unknowns: &short,
+            matrix: &three,
+        };
+        let err = sys.factorize(std::iter::once((e, 1.0))).unwrap_err();
+        assert!(
+            err.to_string().contains("3 matrix entries for 2 DOFs"),
+            "{err}"
+        );
+        // An unknown that is not on the interface (the first free unknown
+        // of the lower block's bottom row is not).
+        let outside = (0..).find(|i| !u.contains(i)).unwrap();
+        let with_outside = [Some(u[0]), Some(outside)];
+        let m = rank_one(&[1.0, 1.0], 1.0);
+        sys.factorize(std::iter::empty()).unwrap();
+        let e = ElementMatrix {
+            unknowns: &with_outside,
+            matrix: &m,
+        };
+        let err = sys.update(std::iter::once((e, 1.0))).unwrap_err();
+        assert!(err.to_string().contains("outside the interface"), "{err}");
+        // Refused before it touched the factor.
+        assert!(sys.is_factored());
     }
 
     #[test]
