@@ -54,7 +54,7 @@
 
 use std::collections::BTreeMap;
 
-use super::mesh::{Nodes, Side, aligned};
+use super::mesh::{Aligned, Nodes, Side, aligned};
 use crate::error::{Error, Result};
 
 /// The weight ψ_i of a slave node's gap.
@@ -173,20 +173,54 @@ pub fn weighted_gaps(
     slave: Slave,
     basis: Basis,
 ) -> Result<Vec<WeightedGap>> {
-    let x = nodes.x;
     let al = aligned(nodes, a, b)?;
+    let merged = merged_points(nodes.x, &al, slave);
+    let gaps = integrated(nodes.x, &al, slave, basis, &merged)
+        .into_iter()
+        .filter(|(_, a)| a.tributary > 0.0)
+        .map(|(node, a)| WeightedGap {
+            node,
+            tributary: a.tributary,
+            initial: a.initial,
+            coefficients: a
+                .coefficients
+                .into_iter()
+                .filter(|&(_, c)| c != 0.0)
+                .collect(),
+        })
+        .collect::<Vec<_>>();
+    if gaps.is_empty() {
+        return Err(Error::contact(format!(
+            "interfaces {} and {} face each other over no edge of the slave side",
+            a.name(),
+            b.name()
+        )));
+    }
+    Ok(gaps)
+}
+
+/// The slave's and the master's chains with their abscissas along a.
+type Chains<'c> = (&'c [usize], &'c [f64], &'c [usize], &'c [f64]);
+
+fn chains(al: &Aligned, slave: Slave) -> Chains<'_> {
+    match slave {
+        Slave::A => (&al.chain_a, &al.s_a, &al.chain_b, &al.s_b),
+        Slave::B => (&al.chain_b, &al.s_b, &al.chain_a, &al.s_a),
+    }
+}
+
+/// One gap sample per merged node in the facing interval, in order along
+/// a: each node read against the other side's facing edge, along that
+/// edge's normal. Where a master node coincides with a slave node (within
+/// round-off) the slave's reading stands for the point.
+fn merged_points(x: &[[f64; 2]], al: &Aligned, slave: Slave) -> Vec<Point> {
     // Both chains run with body a on their right (b was turned round):
     // every edge's left normal points from a to b.
     let normal_a = |k: usize| left_normal(x, &al.chain_a, k);
     let normal_b = |k: usize| left_normal(x, &al.chain_b, k);
-    let (sl_chain, sl_s, ms_chain, ms_s) = match slave {
-        Slave::A => (&al.chain_a, &al.s_a, &al.chain_b, &al.s_b),
-        Slave::B => (&al.chain_b, &al.s_b, &al.chain_a, &al.s_a),
-    };
+    let (sl_chain, sl_s, ms_chain, ms_s) = chains(al, slave);
     let slave_on_a = slave == Slave::A;
     let inside = |s: f64| s >= al.lo - al.tol && s <= al.hi + al.tol;
-    // Where a master node coincides with a slave node (within round-off)
-    // the slave's reading stands for the point.
     let mut points: Vec<Point> = Vec::with_capacity(sl_chain.len() + ms_chain.len());
     for (own, own_s, other, other_s, own_is_a, is_slave) in [
         (sl_chain, sl_s, ms_chain, ms_s, slave_on_a, true),
@@ -220,6 +254,20 @@ pub fn weighted_gaps(
             _ => merged.push(p),
         }
     }
+    merged
+}
+
+/// ∫ ψ_i g ds and m_i = ∫ φ_i ds of every slave node, over each slave
+/// edge's part in the facing interval, cut at the `merged` points (g
+/// linear between them: exact).
+fn integrated(
+    x: &[[f64; 2]],
+    al: &Aligned,
+    slave: Slave,
+    basis: Basis,
+    merged: &[Point],
+) -> BTreeMap<usize, Accumulated> {
+    let (sl_chain, sl_s, _, _) = chains(al, slave);
     let mut acc: BTreeMap<usize, Accumulated> = BTreeMap::new();
     for k in 0..sl_chain.len() - 1 {
         let (e0, e1) = (sl_s[k], sl_s[k + 1]);
@@ -262,28 +310,7 @@ pub fn weighted_gaps(
             }
         }
     }
-    let gaps = acc
-        .into_iter()
-        .filter(|(_, a)| a.tributary > 0.0)
-        .map(|(node, a)| WeightedGap {
-            node,
-            tributary: a.tributary,
-            initial: a.initial,
-            coefficients: a
-                .coefficients
-                .into_iter()
-                .filter(|&(_, c)| c != 0.0)
-                .collect(),
-        })
-        .collect::<Vec<_>>();
-    if gaps.is_empty() {
-        return Err(Error::contact(format!(
-            "interfaces {} and {} face each other over no edge of the slave side",
-            a.name(),
-            b.name()
-        )));
-    }
-    Ok(gaps)
+    acc
 }
 
 /// The side a solve should take as the slave: the coarser one over the
