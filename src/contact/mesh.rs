@@ -1228,13 +1228,21 @@ pub fn strip(nodes: Nodes<'_>, pair: usize, a: &Side, b: &Side) -> Result<Vec<Co
 /// body below) and `xb` (side b, above): nodes, sides. For tests.
 #[cfg(test)]
 pub(crate) fn straight_sides(xa: &[f64], xb: &[f64]) -> (Vec<[f64; 2]>, Side, Side) {
-    let mut x: Vec<[f64; 2]> = xa.iter().map(|&v| [v, 0.0]).collect();
-    x.extend(xb.iter().map(|&v| [v, 0.0]));
-    let na = xa.len();
-    // Body on the left of p → q: below for a (right to left), above for b
-    // (left to right).
+    let line = |xs: &[f64]| xs.iter().map(|&v| [v, 0.0]).collect::<Vec<_>>();
+    polyline_sides(&line(xa), &line(xb))
+}
+
+/// Side a through the points `pa` (its body on the right as it runs: below
+/// a left-to-right line) and side b through `pb` (its body on the left:
+/// above); the nodes are a's points, then b's. For tests.
+#[cfg(test)]
+pub(crate) fn polyline_sides(pa: &[[f64; 2]], pb: &[[f64; 2]]) -> (Vec<[f64; 2]>, Side, Side) {
+    let mut x = pa.to_vec();
+    x.extend_from_slice(pb);
+    let na = pa.len();
+    // Body on the left of p → q: right to left for a, left to right for b.
     let ea: Vec<[usize; 2]> = (0..na - 1).map(|i| [i + 1, i]).collect();
-    let eb: Vec<[usize; 2]> = (0..xb.len() - 1).map(|i| [na + i, na + i + 1]).collect();
+    let eb: Vec<[usize; 2]> = (0..pb.len() - 1).map(|i| [na + i, na + i + 1]).collect();
     let a = Side::from_edges(Nodes::new(&x, 0), 0, 1, 1, &ea).unwrap();
     let b = Side::from_edges(Nodes::new(&x, 0), 1, 2, 2, &eb).unwrap();
     (x, a, b)

@@ -445,20 +445,8 @@ mod tests {
     use super::*;
     use std::f64::consts::FRAC_PI_2;
 
-    /// Side a through `xa` (body a below, on its right as it runs left to
-    /// right), side b through `xb` (body b above); x holds a's nodes, then
-    /// b's.
     fn sides(xa: &[[f64; 2]], xb: &[[f64; 2]]) -> (Vec<[f64; 2]>, Side, Side) {
-        let mut x = xa.to_vec();
-        x.extend_from_slice(xb);
-        let na = xa.len();
-        // Body on the left of p → q: right to left for a, left to right
-        // for b.
-        let ea: Vec<[usize; 2]> = (0..na - 1).map(|i| [i + 1, i]).collect();
-        let eb: Vec<[usize; 2]> = (0..xb.len() - 1).map(|i| [na + i, na + i + 1]).collect();
-        let a = Side::from_edges(Nodes::new(&x, 0), 0, 1, 1, &ea).unwrap();
-        let b = Side::from_edges(Nodes::new(&x, 0), 1, 2, 2, &eb).unwrap();
-        (x, a, b)
+        crate::contact::mesh::polyline_sides(xa, xb)
     }
 
     /// `n + 1` abscissas over [lo, hi], the inner ones moved by up to
