@@ -63,7 +63,7 @@ pub use solve::condensed as condensation;
 #[cfg(feature = "studies")]
 pub use studies::{laplace, meshgen, oracle, scenes, verification};
 
-pub use contact::{ContactLaw, ContactOptions, InversionTest};
+pub use contact::{ContactLaw, ContactOptions, ContactWeighting, InversionTest};
 pub use element::{Jmin, Tempering, TriGeometry};
 pub use error::{Error, Result, Status};
 pub use material::{Material, PlaneMode};

@@ -124,6 +124,11 @@ impl Side {
         self.nodes.contains(&v)
     }
 
+    /// Its edges as given, each with the body on its right.
+    pub fn edges(&self) -> &[[usize; 2]] {
+        &self.oriented
+    }
+
     /// The side in messages: `tag 3` for a side of a mesh, `side 0 (tag
     /// 3)` for a host code's side, whose tag is its own number and whose
     /// index is what its pairs are declared with.

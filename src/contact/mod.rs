@@ -3,7 +3,8 @@
 //! checking of B ([`mesh`]), the constitutive law of its elements
 //! ([`law`]) and the set of its elements in one solve, which owns their
 //! data and the inversion test ([`set`]), and the mortar-weighted gaps of a
-//! pair ([`mortar`], not yet used by a solve).
+//! pair ([`mortar`], solved by `solve::mortar` under
+//! [`ContactWeighting::Mortar`]).
 //!
 //! A flat element of B on a conforming interface is exactly a spring between
 //! two coincident nodes; with Jmin = h³/λ it is a node-to-node penalty of
@@ -80,6 +81,33 @@ pub enum InversionTest {
     /// times slip) can exceed the penalty penetration on fine meshes and make
     /// the loop cycle.
     Literal = 1,
+}
+
+/// How the contact energy of a pair is weighted along its interface
+/// (docs/method.md §6.11).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum ContactWeighting {
+    /// The elements of B, each a penalty on the gap at its apex over its
+    /// interface edge: the seed's method. The default.
+    #[default]
+    Strip,
+    /// The sampled mortar weighting ([`mortar`]): one weighted gap
+    /// G_i = ∫ ψ_i g ds per node of the coarser side (the slave), a
+    /// penalty ½ (κ/m_i) G_i², active where G_i < 0. Exact on the contact
+    /// patch test whatever the two sides' nodes; frictionless single solves
+    /// only (no load steps, friction or host contact yet).
+    Mortar,
+}
+
+impl ContactWeighting {
+    /// Decodes the C ABI integer (0 = strip, 1 = mortar).
+    pub fn from_i32(value: i32) -> Option<ContactWeighting> {
+        match value {
+            0 => Some(ContactWeighting::Strip),
+            1 => Some(ContactWeighting::Mortar),
+            _ => None,
+        }
+    }
 }
 
 /// Options of the contact solve.

@@ -52,10 +52,9 @@
 //! short at a gap of 1e-2 of the radius), where the strip allows for the
 //! curvature.
 //!
-//! What the module does not do yet: activate, assemble or solve. The
-//! interface condensation takes changes of any size
-//! (`solve::condensed::ElementMatrix`); the active-set loop, the outputs and
-//! the host blocks still take elements of B with six unknowns.
+//! The solve over these gaps is `solve::mortar`
+//! ([`crate::contact::ContactWeighting::Mortar`]); load steps, friction and
+//! the host blocks still take elements of B.
 
 use std::collections::BTreeMap;
 
@@ -106,6 +105,25 @@ impl WeightedGap {
                 .map(|&(g, c)| c * u[g])
                 .sum::<f64>()
     }
+}
+
+/// The state of one slave node after a contact solve under the mortar
+/// weighting.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct SlaveNode {
+    /// The pair (0-based).
+    pub pair: usize,
+    /// The slave node (0-based).
+    pub node: usize,
+    /// m_i = ∫ φ_i ds over the part of its support facing the master.
+    pub tributary: f64,
+    /// The mean gap G_i/m_i over its support (negative: overlap).
+    pub gap: f64,
+    /// The contact pressure −κ G_i/m_i (positive in compression; zero
+    /// when inactive).
+    pub pressure: f64,
+    /// Whether its penalty was on at convergence.
+    pub active: bool,
 }
 
 /// A gap sample, linear in the displacements: g0 + Σ c·u.

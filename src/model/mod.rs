@@ -20,7 +20,8 @@ pub use problem::Problem;
 
 use solution::{ContactReport, ContactSolution, Solution, SolveInfo, SystemMatrix, Timings};
 
-use crate::contact::{ContactElement, ContactOptions, ContactPair};
+use crate::contact::mortar::SlaveNode;
+use crate::contact::{ContactElement, ContactOptions, ContactPair, ContactWeighting};
 use crate::error::{Error, Result};
 use crate::fem::element::{Tempering, TriGeometry};
 use crate::fem::material::Material;
@@ -538,6 +539,7 @@ impl Model {
     fn run_step(&mut self, t: f64, options: &ContactOptions) -> Result<ContactReport> {
         let t_start = Instant::now();
         self.problem.check_ready(true)?;
+        self.strip_only("load steps")?;
         self.check_memory(self.session.as_ref().map_or(0, |s| s.interface_len()))?;
         let mut timings = Timings::default();
         let prescribed = self.problem.prescribed_vector()?;
@@ -850,15 +852,70 @@ impl Model {
         Ok(&self.contact_solution()?.elements)
     }
 
-    /// Active flag of every element of B at convergence.
+    /// Active flag of every element of B at convergence. Refused after a
+    /// solve under the mortar weighting (its state is per slave node:
+    /// [`Model::contact_slave_nodes`]).
     pub fn contact_active(&self) -> Result<&[bool]> {
-        Ok(&self.contact_solution()?.active)
+        Ok(&self.strip_solution()?.active)
     }
 
     /// Contact pressure (positive in compression, zero when inactive) of
-    /// every element of B.
+    /// every element of B. Refused after a solve under the mortar
+    /// weighting ([`Model::contact_slave_nodes`]).
     pub fn contact_pressure(&self) -> Result<&[f64]> {
-        Ok(&self.contact_solution()?.pressure)
+        Ok(&self.strip_solution()?.pressure)
+    }
+
+    /// The state of every slave node (pair, node, tributary, mean gap,
+    /// pressure, active) after a contact solve under the mortar weighting
+    /// ([`ContactWeighting::Mortar`]); refused after one under the strip's.
+    pub fn contact_slave_nodes(&self) -> Result<&[SlaveNode]> {
+        self.contact_solution()?.mortar.as_deref().ok_or_else(|| {
+            Error::state(
+                "the last contact solve used the strip weighting: its state is per element \
+                 of B (contact_active, contact_pressure), not per slave node",
+            )
+        })
+    }
+
+    /// Sets how every contact pair's energy is weighted along its
+    /// interface (docs/method.md §6.11): [`ContactWeighting::Strip`] (the
+    /// default, the elements of B) or [`ContactWeighting::Mortar`] (a
+    /// weighted gap per node of each pair's coarser side: exact on the
+    /// contact patch test whatever the meshes; frictionless single solves
+    /// only). A change drops the results' validity like any edit of the
+    /// contact pairs.
+    pub fn set_contact_weighting(&mut self, weighting: ContactWeighting) {
+        self.problem.set_contact_weighting(weighting);
+    }
+
+    /// How the contact pairs' energy is weighted.
+    pub fn contact_weighting(&self) -> ContactWeighting {
+        self.problem.contact_weighting()
+    }
+
+    /// Refuses `what` under the mortar weighting, which serves single
+    /// frictionless solves only.
+    fn strip_only(&self, what: &str) -> Result<()> {
+        match self.problem.contact_weighting() {
+            ContactWeighting::Strip => Ok(()),
+            ContactWeighting::Mortar => Err(Error::state(format!(
+                "{what} are not built for the mortar weighting yet: use solve_contact, or set \
+                 the strip weighting"
+            ))),
+        }
+    }
+
+    /// The contact state of a strip solve, or the error of a mortar one.
+    fn strip_solution(&self) -> Result<&ContactSolution> {
+        let c = self.contact_solution()?;
+        match c.mortar {
+            None => Ok(c),
+            Some(_) => Err(Error::state(
+                "the last contact solve used the mortar weighting: its state is per slave node \
+                 (contact_slave_nodes, contact_nodal_pressures), not per element of B",
+            )),
+        }
     }
 
     /// The shear traction τ = n·σ·t (t = (−n_y, n_x), n the element's
@@ -866,7 +923,7 @@ impl Model {
     /// open, |τ| ≤ μ p when sticking, μ p when slipping; all zero when the
     /// solve was frictionless.
     pub fn contact_shear(&self) -> Result<Vec<f64>> {
-        let c = self.contact_solution()?;
+        let c = self.strip_solution()?;
         Ok(match &c.friction {
             Some(f) => f.shear.clone(),
             None => vec![0.0; c.elements.len()],
@@ -877,7 +934,7 @@ impl Model {
     /// solve: 0 open, 1 stick, 2 slip (a frictionless solve: 2 where
     /// active, its surfaces slide freely).
     pub fn contact_friction_state(&self) -> Result<Vec<u8>> {
-        let c = self.contact_solution()?;
+        let c = self.strip_solution()?;
         Ok(match &c.friction {
             Some(f) => f.state.clone(),
             None => c.active.iter().map(|&a| if a { 2 } else { 0 }).collect(),
@@ -888,7 +945,7 @@ impl Model {
     /// element of B, per unit thickness: ½ τ Δγ_p ≥ 0 (docs/method.md
     /// §6.15); zero when frictionless.
     pub fn contact_dissipation(&self) -> Result<Vec<f64>> {
-        let c = self.contact_solution()?;
+        let c = self.strip_solution()?;
         Ok(match &c.friction {
             Some(f) => f.dissipation.clone(),
             None => vec![0.0; c.elements.len()],
@@ -922,6 +979,10 @@ impl Model {
     /// face), the tributary-weighted mean of its faces' pressures at a
     /// corner.
     pub fn contact_nodal_pressures(&self) -> Result<Vec<f64>> {
+        if let Some(slaves) = &self.contact_solution()?.mortar {
+            let (mesh, pairs) = (self.problem.mesh_ref()?, self.problem.contact_pairs());
+            return solve::mortar::nodal_values(mesh, pairs, slaves, None, |s| s.pressure);
+        }
         self.interface_pressures(self.contact_elements()?)
     }
 
@@ -938,6 +999,10 @@ impl Model {
         let n = self.contact_pairs().len();
         if pair >= n {
             return Err(crate::error::no_pair(pair, n));
+        }
+        if let Some(slaves) = &self.contact_solution()?.mortar {
+            let (mesh, pairs) = (self.problem.mesh_ref()?, self.problem.contact_pairs());
+            return solve::mortar::nodal_values(mesh, pairs, slaves, Some(pair), |s| s.pressure);
         }
         let elements: Vec<ContactElement> = self
             .contact_elements()?
@@ -1018,6 +1083,7 @@ fn input_of<'a>(
         f_ext,
         lambda: problem.tempering_lambda(),
         settings,
+        weighting: problem.contact_weighting(),
     })
 }
 
@@ -1037,7 +1103,12 @@ fn session_of<'s>(
     if slot.is_none() {
         let t0 = Instant::now();
         let prescribed = |g| p.is_prescribed(g);
-        let s = Session::new(p.structure(), p.mesh_ref()?, prescribed, p.contact_pairs())?;
+        let s = Session::new(
+            p.structure(),
+            p.mesh_ref()?,
+            prescribed,
+            (p.contact_pairs(), p.contact_weighting()),
+        )?;
         timings.analysis = t0.elapsed().as_secs_f64();
         *slot = Some(s);
     }
@@ -1069,6 +1140,7 @@ fn solution_of(
             friction: c.friction,
             report,
             options: options.expect("a contact solve has options"),
+            mortar: c.mortar,
         }
     });
     let (u, pending) = match outcome.u {

@@ -14,7 +14,7 @@
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 
 use super::Component;
-use crate::contact::{self, ContactPair};
+use crate::contact::{self, ContactPair, ContactWeighting};
 use crate::error::{Error, Result, Status};
 use crate::fem::element::Tempering;
 use crate::fem::element_loop::ElementLoop;
@@ -31,6 +31,8 @@ pub struct Problem {
     prescribed: BTreeMap<usize, f64>,
     loads: Loads,
     pairs: Vec<ContactPair>,
+    /// How the pairs' contact energy is weighted.
+    weighting: ContactWeighting,
     /// What automatic pairing left out, and why (kept until the pairs are
     /// cleared, the boundary edges set anew or the mesh replaced).
     pairing_warnings: Vec<String>,
@@ -70,6 +72,7 @@ impl Problem {
             prescribed: BTreeMap::new(),
             loads: Loads::default(),
             pairs: Vec::new(),
+            weighting: ContactWeighting::Strip,
             pairing_warnings: Vec::new(),
             structure: 0,
             contact: 0,
@@ -603,6 +606,21 @@ impl Problem {
     /// The declared contact pairs.
     pub fn contact_pairs(&self) -> &[ContactPair] {
         &self.pairs
+    }
+
+    /// Sets how every pair's contact energy is weighted along its
+    /// interface. A change remakes the contact structures (the matrix
+    /// pattern holds the mortar couplings) and ends any load history.
+    pub fn set_contact_weighting(&mut self, weighting: ContactWeighting) {
+        if self.weighting != weighting {
+            self.weighting = weighting;
+            self.changed_contact("the contact weighting");
+        }
+    }
+
+    /// How the pairs' contact energy is weighted.
+    pub fn contact_weighting(&self) -> ContactWeighting {
+        self.weighting
     }
 
     /// The mesh, once every body has a material and the pairs fit the kind

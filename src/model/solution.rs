@@ -7,6 +7,7 @@ use crate::contact::{
     ContactElement, ContactOptions, ElementLaw, FrictionOutcome, contact_stiffness, law_geometry,
     linearised_opening, shear_vector,
 };
+use crate::contact::mortar::SlaveNode;
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
 
@@ -58,6 +59,9 @@ pub(crate) struct ContactSolution {
     pub report: ContactReport,
     /// The options of the solve.
     pub options: ContactOptions,
+    /// Each slave node's state, after a solve under the mortar weighting
+    /// (then `active`, `pressure` and `laws` are empty).
+    pub mortar: Option<Vec<SlaveNode>>,
 }
 
 impl Solution {
@@ -170,7 +174,15 @@ impl Solution {
             }
             Ok(())
         })?;
-        if let Some(c) = &self.contact {
+        if let Some(slaves) = self.contact.as_ref().and_then(|c| c.mortar.as_ref()) {
+            // The penalties' internal forces −p_i c_i on prescribed DOFs.
+            crate::solve::mortar::forces(mesh, problem.contact_pairs(), slaves, |_, g, f| {
+                if fixed[g] {
+                    r[g] -= f;
+                    bound[g] += f64::EPSILON * f.abs();
+                }
+            })?;
+        } else if let Some(c) = &self.contact {
             for (k, el) in c.elements.iter().enumerate() {
                 if c.active[k] {
                     let corners = mesh.corners(&el.nodes);
@@ -246,6 +258,9 @@ impl Solution {
     ) -> Result<()> {
         let c = self.contact_state()?;
         let mesh = problem.mesh_ref()?;
+        if let Some(slaves) = &c.mortar {
+            return crate::solve::mortar::forces(mesh, problem.contact_pairs(), slaves, add);
+        }
         for (k, el) in c.elements.iter().enumerate() {
             if !c.active[k] {
                 continue;
@@ -283,6 +298,10 @@ impl Solution {
     pub fn contact_gaps(&self, problem: &Problem, u: &[f64]) -> Result<Vec<f64>> {
         let c = self.contact_state()?;
         let mesh = problem.mesh_ref()?;
+        if let Some(slaves) = &c.mortar {
+            let pairs = problem.contact_pairs();
+            return crate::solve::mortar::nodal_values(mesh, pairs, slaves, None, |s| s.gap);
+        }
         let mut gap = vec![f64::INFINITY; mesh.nodes().len()];
         for el in &c.elements {
             if el.edge_length <= 0.0 {

@@ -16,6 +16,7 @@ mod fixtures;
 pub(crate) mod history;
 pub(crate) mod linear;
 pub(crate) mod memory;
+pub(crate) mod mortar;
 pub mod report;
 pub(crate) mod session;
 pub mod system;
@@ -27,9 +28,10 @@ use linear::{Structure, factor_and_solve};
 use report::{ContactReport, SolveInfo, Timings};
 use session::{Session, Settings, Wanted, factorisation};
 
+use crate::contact::mortar::SlaveNode;
 use crate::contact::{
-    ContactElement, ContactLaw, ContactOptions, ContactPair, ContactSet, ElementLaw,
-    FrictionOutcome, Nodes, element_laws, softer,
+    ContactElement, ContactLaw, ContactOptions, ContactPair, ContactSet, ContactWeighting,
+    ElementLaw, FrictionOutcome, Nodes, element_laws, softer,
 };
 use crate::error::{Result, ensure_finite};
 use crate::fem::assembly::{DofMap, NOT_FREE};
@@ -52,6 +54,8 @@ pub(crate) struct Input<'a> {
     pub lambda: Option<f64>,
     /// The factorisation's settings.
     pub settings: Settings,
+    /// How the pairs' contact energy is weighted.
+    pub weighting: ContactWeighting,
 }
 
 /// The displacements a solve produced.
@@ -90,6 +94,9 @@ pub(crate) struct ContactOutcome {
     pub friction: Option<FrictionOutcome>,
     /// The report (its `info` filled by the caller).
     pub report: ContactReport,
+    /// Each slave node's state under the mortar weighting (then `active`,
+    /// `pressure` and `laws`, over the elements of B, are empty).
+    pub mortar: Option<Vec<SlaveNode>>,
 }
 
 /// Solves `input` on `session`: without contact when `options` is `None`.
@@ -116,6 +123,9 @@ pub(crate) fn solve(
     };
     match options {
         None => solve_plain(session, input, info, timings, warnings),
+        Some(options) if input.weighting == ContactWeighting::Mortar => {
+            mortar::solve_contact(session, input, options, (info, timings), warnings)
+        }
         Some(options) => solve_contact(session, input, options, info, timings, warnings),
     }
 }
@@ -145,6 +155,9 @@ pub(crate) fn restore(
     (log, friction): (&[Vec<usize>], &[f64]),
 ) -> Result<()> {
     session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
+    if let (Some(options), ContactWeighting::Mortar) = (options, input.weighting) {
+        return mortar::restore(session, input, options, log.first().map_or(&[], |l| &l[..]));
+    }
     if let Some(options) = options {
         let Session {
             dofs,
@@ -172,18 +185,9 @@ pub(crate) fn contact_set<'a>(
     options: &ContactOptions,
     anchors: &[f64],
 ) -> Result<ContactSet<'a>> {
-    let (mesh, elements) = (input.elements.mesh(), &input.elements);
-    let rigid = rigid_sides(input.pairs, contact, mesh, dofs);
-    let soft = |pair: usize| {
-        let p = &input.pairs[pair];
-        let (a, b) = (*elements.material(p.body_a), *elements.material(p.body_b));
-        match rigid[pair] {
-            [true, false] => b,
-            [false, true] => a,
-            _ => softer(a, b),
-        }
-    };
-    let laws = element_laws(mesh.index_base(), contact, soft, mesh.size(), options)?;
+    let mesh = input.elements.mesh();
+    let soft = pair_material(input, contact, dofs);
+    let laws = element_laws(mesh.index_base(), contact, &soft, mesh.size(), options)?;
     let equation = |g: usize| Some(dofs.free(g)).filter(|&f| f != NOT_FREE);
     let set = ContactSet::new(
         Nodes::of(mesh),
@@ -215,6 +219,40 @@ pub(crate) fn contact_set<'a>(
         })
         .collect();
     set.with_friction(&mu, &shear, anchors, prescribed)
+}
+
+/// The material that sets each pair's contact law: the softer body's, or
+/// where one side is a rigid tool ([`rigid_sides`]), the other body's.
+fn pair_material<'i>(
+    input: &'i Input<'_>,
+    contact: &[ContactElement],
+    dofs: &DofMap,
+) -> impl Fn(usize) -> crate::fem::material::Material + 'i {
+    let rigid = rigid_sides(input.pairs, contact, input.elements.mesh(), dofs);
+    move |pair: usize| {
+        let p = &input.pairs[pair];
+        let elements = &input.elements;
+        let (a, b) = (*elements.material(p.body_a), *elements.material(p.body_b));
+        match rigid[pair] {
+            [true, false] => b,
+            [false, true] => a,
+            _ => softer(a, b),
+        }
+    }
+}
+
+/// E_c of every pair: the options' contact modulus, else the Young's
+/// modulus of [`pair_material`].
+pub(crate) fn pair_moduli(
+    input: &Input<'_>,
+    contact: &[ContactElement],
+    dofs: &DofMap,
+    options: &ContactOptions,
+) -> Vec<f64> {
+    let soft = pair_material(input, contact, dofs);
+    (0..input.pairs.len())
+        .map(|i| options.contact_modulus.unwrap_or(soft(i).young()))
+        .collect()
 }
 
 /// For each pair, whether each side (a, b) is a rigid tool: every DOF of
@@ -535,5 +573,6 @@ pub(crate) fn contact_outcome(
         laws: set.laws().to_vec(),
         friction,
         report,
+        mortar: None,
     })
 }

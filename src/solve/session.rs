@@ -11,7 +11,7 @@ use rayon::prelude::*;
 use super::memory;
 use super::report::{SolveInfo, Timings};
 use super::system::{AssembledSystem, SystemMatrix};
-use crate::contact::{self, ContactElement, ContactPair};
+use crate::contact::{self, ContactElement, ContactPair, ContactWeighting};
 use crate::error::{Result, preflight};
 use crate::fem::assembly::{DofMap, Pattern, Slots};
 use crate::fem::body::{Softened, Target};
@@ -83,6 +83,9 @@ pub(crate) struct Session {
     pub slots: Vec<Slots>,
     /// The contact mesh B of all pairs.
     pub contact: Vec<ContactElement>,
+    /// The weighted gaps of every pair under the mortar weighting (`None`
+    /// under the strip's).
+    pub mortar: Option<Vec<super::mortar::PairGaps>>,
     /// The symbolic analysis and factor, made on first need.
     pub analysis: Option<Analysis>,
     /// The assembled system: the storage of the matrix values, allocated
@@ -102,16 +105,23 @@ impl Session {
         structure: u64,
         mesh: &Mesh,
         is_prescribed: impl Fn(usize) -> bool,
-        pairs: &[ContactPair],
+        (pairs, weighting): (&[ContactPair], ContactWeighting),
     ) -> Result<Session> {
         let n_nodes = mesh.nodes().len();
         let contact = contact::build_all(mesh, pairs)?;
+        let mortar = match weighting {
+            ContactWeighting::Strip => None,
+            ContactWeighting::Mortar => Some(super::mortar::build(mesh, pairs)?),
+        };
         let need = memory::session_bytes(n_nodes, mesh.triangles().len(), contact.len());
         preflight(need, "the solve's set-up (unknowns and matrix pattern)")?;
         let used = mesh.node_body();
         let dofs = DofMap::new(n_nodes, 2, |g| used[g / 2].is_some() && !is_prescribed(g));
         let mut elements: Vec<[usize; 3]> = mesh.triangles().to_vec();
         elements.extend(contact.iter().map(|e| e.nodes));
+        if let Some(m) = &mortar {
+            elements.extend(super::mortar::cliques(m));
+        }
         let pattern = Pattern::build(&dofs, n_nodes, &elements);
         drop(elements);
         let system = AssembledSystem::new(pattern.nnz());
@@ -122,6 +132,7 @@ impl Session {
             pattern,
             slots,
             contact,
+            mortar,
             analysis: None,
             system,
             system_of: None,

@@ -105,6 +105,23 @@ impl AssembledSystem {
         self.toggle(changed, set, structure, prescribed);
     }
 
+    /// Adds the dense matrix `ke` (row-major) on `unknowns` ([`NOT_FREE`]
+    /// for a prescribed DOF) and the right-hand-side entries `loads` (free
+    /// unknown, value): a mortar penalty, which no element of B describes.
+    /// The pattern must hold its couplings.
+    pub fn add_functional(
+        &mut self,
+        pattern: &Pattern,
+        unknowns: &[usize],
+        ke: &[f64],
+        loads: impl Iterator<Item = (usize, f64)>,
+    ) {
+        pattern.add_element(&mut self.values, unknowns, ke);
+        for (j, v) in loads {
+            self.rhs[j] += v;
+        }
+    }
+
     /// Makes the right-hand side hold the friction loads of the load
     /// factors `c` (docs/method.md §6.15) in place of those it held.
     pub fn set_friction_loads(&mut self, set: &ContactSet<'_>, c: &[f64]) {

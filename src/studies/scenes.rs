@@ -247,7 +247,13 @@ impl TwoBlocksScene {
             .filter(|(g, _)| g % 2 == 1)
             .map(|(g, _)| r[g / 2][1])
             .sum();
-        let state = self.model.contact_friction_state()?;
+        // Under the mortar weighting the state is per slave node, and
+        // frictionless: nothing sticks, no shear.
+        let mortar = self.model.contact_weighting() == crate::ContactWeighting::Mortar;
+        let state = match mortar {
+            true => Vec::new(),
+            false => self.model.contact_friction_state()?,
+        };
         let b = self.model.contact_mesh()?;
         // Half of each element's edge: two elements of B face each edge
         // pair, as in ℓc.
@@ -256,7 +262,10 @@ impl TwoBlocksScene {
             .zip(&state)
             .filter(|(_, s)| **s == 1)
             .fold(0.0, |l, (e, _)| l + 0.5 * e.facing);
-        let shear = self.model.contact_shear()?;
+        let shear = match mortar {
+            true => Vec::new(),
+            false => self.model.contact_shear()?,
+        };
         Ok(TwoBlocksResult {
             lc: report.contact_length,
             gap_edge: u[self.corner_upper][1] - u[self.corner_lower][1],

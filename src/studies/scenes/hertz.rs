@@ -342,12 +342,23 @@ impl HertzScene {
         } else {
             (f64::NAN, f64::NAN)
         };
-        let f = self.model.contact_forces()?;
-        let traction: BTreeMap<usize, f64> =
-            interface_pressures(Nodes::of(mesh), self.model.contact_elements()?, |_, v| f[v])
+        let traction: BTreeMap<usize, f64> = match self.model.contact_weighting() {
+            // The library's nodal pressures: the slave's −κG_i/m_i, read
+            // at the master's nodes along the slave.
+            crate::ContactWeighting::Mortar => self
+                .model
+                .contact_nodal_pressures()?
                 .into_iter()
-                .map(|q| (q.node, q.pressure))
-                .collect();
+                .enumerate()
+                .collect(),
+            crate::ContactWeighting::Strip => {
+                let f = self.model.contact_forces()?;
+                interface_pressures(Nodes::of(mesh), self.model.contact_elements()?, |_, v| f[v])
+                    .into_iter()
+                    .map(|q| (q.node, q.pressure))
+                    .collect()
+            }
+        };
         let interface_pressure: Vec<(f64, f64)> = self
             .block_top
             .iter()

@@ -89,6 +89,17 @@ impl Default for PatchTest {
     }
 }
 
+/// The stress errors of a solved patch test, relative to p.
+#[derive(Debug, Clone, Copy)]
+pub struct StressErrors {
+    /// The largest element's error |σ − σ_exact| / p.
+    pub max: f64,
+    /// The area-weighted L2 error / p.
+    pub l2: f64,
+    /// The centroid of the worst element.
+    pub worst_at: [f64; 2],
+}
+
 /// The built patch test.
 pub struct PatchScene {
     /// The model, ready for `solve_contact`.
@@ -257,12 +268,13 @@ impl PatchScene {
         self.measure(test, report)
     }
 
-    /// The errors of the last solve.
-    pub fn measure(&self, test: &PatchTest, report: ContactReport) -> Result<PatchResult> {
+    /// The element stresses' errors of the last solve against the uniform
+    /// exact stress σ_yy = −p.
+    pub fn stress_errors(&self, test: &PatchTest) -> Result<StressErrors> {
         let p = test.p;
         let model = &self.model;
         let mesh = model.mesh().ok_or_else(|| Error::state("no mesh"))?;
-        let (mut sum, mut area, mut max_error) = (0.0, 0.0, 0.0f64);
+        let (mut sum, mut area, mut max) = (0.0, 0.0, 0.0f64);
         let mut worst_at = [0.0; 2];
         for (t, sig) in mesh.triangles().iter().zip(model.element_stresses()?) {
             let c = mesh.corners(t);
@@ -270,14 +282,28 @@ impl PatchScene {
             let e2 = ((sig[1] + p).powi(2) + sig[0].powi(2) + sig[2].powi(2)) / (p * p);
             sum += a * e2;
             area += a;
-            if e2.sqrt() > max_error {
-                max_error = e2.sqrt();
+            if e2.sqrt() > max {
+                max = e2.sqrt();
                 worst_at = [
                     (c[0][0] + c[1][0] + c[2][0]) / 3.0,
                     (c[0][1] + c[1][1] + c[2][1]) / 3.0,
                 ];
             }
         }
+        Ok(StressErrors {
+            max,
+            l2: (sum / area).sqrt(),
+            worst_at,
+        })
+    }
+
+    /// The errors of the last solve.
+    pub fn measure(&self, test: &PatchTest, report: ContactReport) -> Result<PatchResult> {
+        let p = test.p;
+        let model = &self.model;
+        let mesh = model.mesh().ok_or_else(|| Error::state("no mesh"))?;
+        let stress = self.stress_errors(test)?;
+        let (max_error, worst_at) = (stress.max, stress.worst_at);
         let range = |v: &mut dyn Iterator<Item = f64>| {
             v.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), x| {
                 (lo.min(x), hi.max(x))
@@ -346,7 +372,7 @@ impl PatchScene {
         let overlap = max_overlap(nodes, elements, |v| u[v]);
         Ok(PatchResult {
             max_error,
-            l2_error: (sum / area).sqrt(),
+            l2_error: stress.l2,
             worst_at,
             element_pressure,
             nodal_pressure,
