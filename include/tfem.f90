@@ -125,6 +125,7 @@ module tfem
   private :: tfem_get_contact_elements_i
   private :: tfem_get_contact_forces_i
   private :: tfem_get_contact_nodal_pressures_i
+  private :: tfem_get_contact_slave_nodes_i
   private :: tfem_get_contact_pair_nodal_pressures_i
   private :: tfem_get_contact_gaps_i
   private :: tfem_get_contact_mesh_i
@@ -220,6 +221,14 @@ module tfem
   integer(c_int), parameter :: TFEM_ORDERING_MODE_AMD = 1
   !> Geometric nested dissection on the node coordinates.
   integer(c_int), parameter :: TFEM_ORDERING_MODE_NESTED_DISSECTION = 2
+
+  ! enum tfem_contact_weighting: How the contact pairs' energy is weighted along their interfaces
+  ! (argument `weighting` of `tfem_set_contact_weighting`).
+  !> The elements of the contact mesh B (the seed's method; default).
+  integer(c_int), parameter :: TFEM_CONTACT_WEIGHTING_STRIP = 0
+  !> The sampled mortar weighting: one weighted gap per node of each pair's coarser side;
+  !! frictionless single solves only.
+  integer(c_int), parameter :: TFEM_CONTACT_WEIGHTING_MORTAR = 1
 
   ! enum tfem_contact_law: The constitutive law of the contact elements.
   !> Only the normal strain is penalised: D_c = E_c m mᵀ with m = [n_x², n_y², n_x n_y]. Tangential
@@ -1010,11 +1019,12 @@ module tfem
   end interface
 
   interface
-    !> Solves the contact problem by the active-set loop over inverted contact elements. `options`
-    !! may be NULL (defaults); `report` may be NULL. TFEM_STATUS_NOT_CONVERGED (cycle or iteration
-    !! cap) gives the history in the message; the model is then unchanged. Every DOF prescribed:
-    !! TFEM_STATUS_INVALID_STATE (before 2026-11-24, SINGULAR). Fortran: `options` and `report` are
-    !! OPTIONAL: omit them to pass NULL.
+    !> Solves the contact problem by the active-set loop over inverted contact elements (under the
+    !! mortar weighting, `tfem_set_contact_weighting`, over the slave nodes whose weighted gap is
+    !! negative). `options` may be NULL (defaults); `report` may be NULL. TFEM_STATUS_NOT_CONVERGED
+    !! (cycle or iteration cap) gives the history in the message; the model is then unchanged. Every
+    !! DOF prescribed: TFEM_STATUS_INVALID_STATE (before 2026-11-24, SINGULAR). Fortran: `options`
+    !! and `report` are OPTIONAL: omit them to pass NULL.
     function tfem_solve_contact(model, options, report) &
         bind(C, name="tfem_solve_contact") result(status)
       import
@@ -1153,6 +1163,61 @@ module tfem
     end function tfem_get_contact_nodal_pressures
     module procedure tfem_get_contact_nodal_pressures_i
   end interface tfem_get_contact_nodal_pressures
+
+  interface
+    !> Chooses how every contact pair's energy is weighted along its interface: `weighting` is a
+    !! `ContactWeightingMode` (0 strip, the default: the elements of the contact mesh B; 1 mortar:
+    !! one weighted gap per node of each pair's coarser side, exact on the contact patch test
+    !! whatever the two sides' nodes, and the right reading on a stiff curved tool; frictionless
+    !! `tfem_solve_contact` only). A change discards the results, like any change of the contact
+    !! pairs. Under the mortar weighting `tfem_step` and friction are refused, and so are the
+    !! per-element outputs (`tfem_get_contact_active`, `tfem_get_contact_pressure`, shear, friction
+    !! state, dissipation): the state is per slave node (`tfem_get_contact_slave_nodes`); nodal
+    !! pressures, gaps and forces, reactions and the report work as under the strip, the report's
+    !! `elements` counting slave nodes.
+    function tfem_set_contact_weighting(model, weighting) &
+        bind(C, name="tfem_set_contact_weighting") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: weighting
+      integer(c_int) :: status
+    end function tfem_set_contact_weighting
+  end interface
+
+  interface
+    !> Writes the contact weighting (a `ContactWeightingMode`: 0 strip, 1 mortar) into `*weighting`.
+    function tfem_get_contact_weighting(model, weighting) &
+        bind(C, name="tfem_get_contact_weighting") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(out) :: weighting
+      integer(c_int) :: status
+    end function tfem_get_contact_weighting
+  end interface
+
+  interface tfem_get_contact_slave_nodes
+    !> Copies the state of every slave node after a contact solve under the mortar weighting, n =
+    !! the report's `elements`, in the order of the pairs: `node` (n values: the slave node, in the
+    !! model's index base), `tributary` (n values: m_i, the length its hat covers where it faces the
+    !! other side), `gap` (n values: the mean gap G_i/m_i, negative where the bodies overlap) and
+    !! `pressure` (n values: −κG_i/m_i, positive in compression, 0 when inactive). Any pointer may
+    !! be NULL (that column is not written); `length` (>= n) is the size of each buffer given.
+    !! Refused after a solve under the strip weighting. Fortran: `node`, `tributary`, `gap` and
+    !! `pressure` are OPTIONAL: omit them to pass NULL. `length` takes an integer(c_size_t) or a
+    !! default integer (kind tfem_length_kind); a negative length is passed as 0.
+    function tfem_get_contact_slave_nodes(model, node, tributary, gap, pressure, length) &
+        bind(C, name="tfem_get_contact_slave_nodes") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout), optional :: node(*)
+      real(c_double), intent(inout), optional :: tributary(*)
+      real(c_double), intent(inout), optional :: gap(*)
+      real(c_double), intent(inout), optional :: pressure(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_slave_nodes
+    module procedure tfem_get_contact_slave_nodes_i
+  end interface tfem_get_contact_slave_nodes
 
   interface tfem_get_contact_pair_nodal_pressures
     !> Copies the contact pressure of contact pair `pair` (0-based, from `tfem_add_contact_pair` or
@@ -2250,6 +2315,19 @@ contains
     integer(c_int) :: status
     status = tfem_get_contact_nodal_pressures(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_nodal_pressures_i
+
+  ! tfem_get_contact_slave_nodes, lengths of kind tfem_length_kind.
+  function tfem_get_contact_slave_nodes_i(model, node, tributary, gap, pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional :: node(*)
+    real(c_double), intent(inout), optional :: tributary(*)
+    real(c_double), intent(inout), optional :: gap(*)
+    real(c_double), intent(inout), optional :: pressure(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_slave_nodes(model, node, tributary, gap, pressure, &
+        tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_i
 
   ! tfem_get_contact_pair_nodal_pressures, lengths of kind tfem_length_kind.
   function tfem_get_contact_pair_nodal_pressures_i(model, pair, out, length) result(status)

@@ -184,6 +184,22 @@ typedef enum tfem_ordering_mode {
 } tfem_ordering_mode;
 
 /**
+ * How the contact pairs' energy is weighted along their interfaces
+ * (argument `weighting` of `tfem_set_contact_weighting`).
+ */
+typedef enum tfem_contact_weighting {
+  /**
+   * The elements of the contact mesh B (the seed's method; default).
+   */
+  TFEM_CONTACT_WEIGHTING_STRIP = 0,
+  /**
+   * The sampled mortar weighting: one weighted gap per node of each
+   * pair's coarser side; frictionless single solves only.
+   */
+  TFEM_CONTACT_WEIGHTING_MORTAR = 1,
+} tfem_contact_weighting;
+
+/**
  * The constitutive law of the contact elements.
  */
 typedef enum tfem_contact_law {
@@ -832,7 +848,8 @@ enum tfem_status tfem_contact_options_default(struct tfem_contact_options *optio
 
 /**
  * Solves the contact problem by the active-set loop over inverted contact
- * elements. `options` may be NULL (defaults); `report` may be NULL.
+ * elements (under the mortar weighting, `tfem_set_contact_weighting`, over
+ * the slave nodes whose weighted gap is negative). `options` may be NULL (defaults); `report` may be NULL.
  * TFEM_STATUS_NOT_CONVERGED (cycle or iteration cap) gives the history in
  * the message; the model is then unchanged. Every DOF prescribed:
  * TFEM_STATUS_INVALID_STATE (before 2026-11-24, SINGULAR).
@@ -917,6 +934,47 @@ enum tfem_status tfem_get_contact_forces(struct tfem_model *model, double *out, 
 enum tfem_status tfem_get_contact_nodal_pressures(struct tfem_model *model,
                                                   double *out,
                                                   size_t length);
+
+/**
+ * Chooses how every contact pair's energy is weighted along its
+ * interface: `weighting` is a `ContactWeightingMode` (0 strip, the
+ * default: the elements of the contact mesh B; 1 mortar: one weighted gap
+ * per node of each pair's coarser side, exact on the contact patch test
+ * whatever the two sides' nodes, and the right reading on a stiff curved
+ * tool; frictionless `tfem_solve_contact` only). A change discards the
+ * results, like any change of the contact pairs. Under the mortar
+ * weighting `tfem_step` and friction are refused, and so are the
+ * per-element outputs (`tfem_get_contact_active`,
+ * `tfem_get_contact_pressure`, shear, friction state, dissipation): the
+ * state is per slave node (`tfem_get_contact_slave_nodes`); nodal
+ * pressures, gaps and forces, reactions and the report work as under the
+ * strip, the report's `elements` counting slave nodes.
+ */
+enum tfem_status tfem_set_contact_weighting(struct tfem_model *model, int weighting);
+
+/**
+ * Writes the contact weighting (a `ContactWeightingMode`: 0 strip, 1
+ * mortar) into `*weighting`.
+ */
+enum tfem_status tfem_get_contact_weighting(struct tfem_model *model, int *weighting);
+
+/**
+ * Copies the state of every slave node after a contact solve under the
+ * mortar weighting, n = the report's `elements`, in the order of the
+ * pairs: `node` (n values: the slave node, in the model's index base),
+ * `tributary` (n values: m_i, the length its hat covers where it faces
+ * the other side), `gap` (n values: the mean gap G_i/m_i, negative where
+ * the bodies overlap) and `pressure` (n values: −κG_i/m_i, positive in
+ * compression, 0 when inactive). Any pointer may be NULL (that column is
+ * not written); `length` (>= n) is the size of each buffer given. Refused
+ * after a solve under the strip weighting.
+ */
+enum tfem_status tfem_get_contact_slave_nodes(struct tfem_model *model,
+                                              int *node,
+                                              double *tributary,
+                                              double *gap,
+                                              double *pressure,
+                                              size_t length);
 
 /**
  * Copies the contact pressure of contact pair `pair` (0-based, from

@@ -62,6 +62,13 @@ fn c_api_test_passes_every_check() {
 }
 
 #[test]
+fn the_mortar_weighting_passes_the_patch_test_through_the_c_abi() {
+    let exe = build("mortar_test.c", &["-std=c11"]);
+    let out = run(&exe, &[]);
+    assert!(out.contains(" 0 failed"), "{out}");
+}
+
+#[test]
 fn c_boundary_regressions_hold() {
     let exe = build("boundary_test.c", &["-std=c11"]);
     let out = run(&exe, &[]);

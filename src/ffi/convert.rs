@@ -41,6 +41,18 @@ pub enum OrderingMode {
     NestedDissection = 2,
 }
 
+/// How the contact pairs' energy is weighted along their interfaces
+/// (argument `weighting` of `tfem_set_contact_weighting`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ContactWeightingMode {
+    /// The elements of the contact mesh B (the seed's method; default).
+    Strip = 0,
+    /// The sampled mortar weighting: one weighted gap per node of each
+    /// pair's coarser side; frictionless single solves only.
+    Mortar = 1,
+}
+
 /// Options of `tfem_solve_contact`. Fill with `tfem_contact_options_default`
 /// and change what you need.
 #[repr(C)]

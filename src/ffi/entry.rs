@@ -12,7 +12,8 @@ use super::plumbing::{
     null, register, reserve, slice_in, too_small, unregister, with_model, without_model, write,
     write_optional,
 };
-use crate::contact::ContactOptions;
+use crate::contact::mortar::SlaveNode;
+use crate::contact::{ContactOptions, ContactWeighting};
 use crate::error::{Error, Result, Status};
 use crate::fem::element::{Tempering, TriGeometry, elasticity_stiffness, laplacian_stiffness};
 use crate::fem::material::Material;
@@ -984,7 +985,8 @@ pub unsafe extern "C" fn tfem_contact_options_default(options: *mut TfemContactO
 }
 
 /// Solves the contact problem by the active-set loop over inverted contact
-/// elements. `options` may be NULL (defaults); `report` may be NULL.
+/// elements (under the mortar weighting, `tfem_set_contact_weighting`, over
+/// the slave nodes whose weighted gap is negative). `options` may be NULL (defaults); `report` may be NULL.
 /// TFEM_STATUS_NOT_CONVERGED (cycle or iteration cap) gives the history in
 /// the message; the model is then unchanged. Every DOF prescribed:
 /// TFEM_STATUS_INVALID_STATE (before 2026-11-24, SINGULAR).
@@ -1133,6 +1135,103 @@ pub unsafe extern "C" fn tfem_get_contact_nodal_pressures(
 ) -> Status {
     with_model(model, |m| {
         copy_out(&m.model.contact_nodal_pressures()?, out, length, "out")
+    })
+}
+
+/// Chooses how every contact pair's energy is weighted along its
+/// interface: `weighting` is a `ContactWeightingMode` (0 strip, the
+/// default: the elements of the contact mesh B; 1 mortar: one weighted gap
+/// per node of each pair's coarser side, exact on the contact patch test
+/// whatever the two sides' nodes, and the right reading on a stiff curved
+/// tool; frictionless `tfem_solve_contact` only). A change discards the
+/// results, like any change of the contact pairs. Under the mortar
+/// weighting `tfem_step` and friction are refused, and so are the
+/// per-element outputs (`tfem_get_contact_active`,
+/// `tfem_get_contact_pressure`, shear, friction state, dissipation): the
+/// state is per slave node (`tfem_get_contact_slave_nodes`); nodal
+/// pressures, gaps and forces, reactions and the report work as under the
+/// strip, the report's `elements` counting slave nodes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_set_contact_weighting(
+    model: *mut TfemModel,
+    weighting: c_int,
+) -> Status {
+    with_model(model, |m| {
+        let w = ContactWeighting::from_i32(weighting).ok_or_else(|| {
+            Error::argument(format!(
+                "weighting = {weighting} must be 0 (strip) or 1 (mortar)"
+            ))
+        })?;
+        m.model.set_contact_weighting(w);
+        Ok(())
+    })
+}
+
+/// Writes the contact weighting (a `ContactWeightingMode`: 0 strip, 1
+/// mortar) into `*weighting`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_weighting(
+    model: *mut TfemModel,
+    weighting: *mut c_int,
+) -> Status {
+    with_model(model, |m| {
+        let w = match m.model.contact_weighting() {
+            ContactWeighting::Strip => 0,
+            ContactWeighting::Mortar => 1,
+        };
+        write(weighting, w, "weighting")
+    })
+}
+
+/// Copies the state of every slave node after a contact solve under the
+/// mortar weighting, n = the report's `elements`, in the order of the
+/// pairs: `node` (n values: the slave node, in the model's index base),
+/// `tributary` (n values: m_i, the length its hat covers where it faces
+/// the other side), `gap` (n values: the mean gap G_i/m_i, negative where
+/// the bodies overlap) and `pressure` (n values: −κG_i/m_i, positive in
+/// compression, 0 when inactive). Any pointer may be NULL (that column is
+/// not written); `length` (>= n) is the size of each buffer given. Refused
+/// after a solve under the strip weighting.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_slave_nodes(
+    model: *mut TfemModel,
+    node: *mut c_int,
+    tributary: *mut f64,
+    gap: *mut f64,
+    pressure: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let slaves = m.model.contact_slave_nodes()?;
+        if length < slaves.len() {
+            return Err(Error::new(
+                Status::BufferTooSmall,
+                format!(
+                    "length = {length} is smaller than the {} slave nodes",
+                    slaves.len()
+                ),
+            ));
+        }
+        let base = m.index_base;
+        let names = slaves
+            .iter()
+            .map(|s| c_int::try_from(s.node + base))
+            .collect::<std::result::Result<Vec<c_int>, _>>()
+            .map_err(|_| Error::argument("a slave node's number does not fit in an int"))?;
+        if !node.is_null() {
+            copy_out(&names, node, length, "node")?;
+        }
+        let column = |out: *mut f64, f: fn(&SlaveNode) -> f64| -> Result<()> {
+            if out.is_null() {
+                return Ok(());
+            }
+            let v: Vec<f64> = slaves.iter().map(f).collect();
+            copy_out(&v, out, length, "slave node values")
+        };
+        column(tributary, |s| s.tributary)?;
+        column(gap, |s| s.gap)?;
+        column(pressure, |s| s.pressure)?;
+        Ok(())
     })
 }
 

@@ -24,7 +24,8 @@ mod host;
 mod plumbing;
 
 pub use convert::{
-    OrderingMode, TemperingMode, TfemContactOptions, TfemContactReport, TfemSolveInfo,
+    ContactWeightingMode, OrderingMode, TemperingMode, TfemContactOptions, TfemContactReport,
+    TfemSolveInfo,
 };
 pub use entry::*;
 pub use host::*;

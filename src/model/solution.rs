@@ -3,11 +3,11 @@
 //! stresses, reactions — is computed from them when asked for.
 
 use super::problem::Problem;
+use crate::contact::mortar::SlaveNode;
 use crate::contact::{
     ContactElement, ContactOptions, ElementLaw, FrictionOutcome, contact_stiffness, law_geometry,
     linearised_opening, shear_vector,
 };
-use crate::contact::mortar::SlaveNode;
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
 

@@ -63,7 +63,13 @@ pub(crate) fn two_blocks(n: usize, loaded: usize) -> Problem {
 pub(crate) fn assembled(p: &Problem) -> (Session, Vec<f64>) {
     let mesh = p.mesh().unwrap();
     let prescribed_dof = |g| p.is_prescribed(g);
-    let mut session = Session::new(0, mesh, prescribed_dof, (p.contact_pairs(), p.contact_weighting())).unwrap();
+    let mut session = Session::new(
+        0,
+        mesh,
+        prescribed_dof,
+        (p.contact_pairs(), p.contact_weighting()),
+    )
+    .unwrap();
     let elements = p.elements().unwrap();
     let prescribed = p.prescribed_vector().unwrap();
     let f_ext = p.load_vector().unwrap();

@@ -144,7 +144,11 @@ impl Penalty {
 
     /// Adds (`sign` +1) or takes out (−1) the penalty in `system`.
     fn toggle(&self, system: &mut AssembledSystem, pattern: &Pattern, sign: f64) {
-        let unknowns: Vec<usize> = self.unknowns.iter().map(|u| u.unwrap_or(NOT_FREE)).collect();
+        let unknowns: Vec<usize> = self
+            .unknowns
+            .iter()
+            .map(|u| u.unwrap_or(NOT_FREE))
+            .collect();
         let ke: Vec<f64> = self.matrix.iter().map(|v| sign * v).collect();
         system.add_functional(pattern, &unknowns, &ke, self.loads(sign));
     }
@@ -278,8 +282,7 @@ pub(crate) fn solve_contact(
         system,
         ..
     } = &mut *session;
-    let condense =
-        !options.refactorize && Condensed::worthwhile(interface.len(), pattern.nnz());
+    let condense = !options.refactorize && Condensed::worthwhile(interface.len(), pattern.nnz());
     for (p, _) in penalties.iter().zip(&initial).filter(|(_, on)| **on) {
         p.toggle(system, pattern, 1.0);
     }
@@ -288,7 +291,14 @@ pub(crate) fn solve_contact(
         zeros: &[],
     };
     let structure = (mesh, &*dofs, &*pattern);
-    let chol = factorisation(analysis, structure, input.settings, want, timings, &mut info)?;
+    let chol = factorisation(
+        analysis,
+        structure,
+        input.settings,
+        want,
+        timings,
+        &mut info,
+    )?;
     let at = Structure {
         mesh,
         dofs,
@@ -390,7 +400,11 @@ impl Run<'_, '_> {
         let active = self.set.active().to_vec();
         for (k, p) in self.penalties.iter().enumerate() {
             if active[k] != self.in_system[k] {
-                p.toggle(self.system, self.at.pattern, if active[k] { 1.0 } else { -1.0 });
+                p.toggle(
+                    self.system,
+                    self.at.pattern,
+                    if active[k] { 1.0 } else { -1.0 },
+                );
             }
         }
         self.in_system = active;
@@ -456,7 +470,11 @@ impl Run<'_, '_> {
             // O(n³/3): update while fewer than n/6 nodes switch.
             let updated = 6 * changed.len() <= sys.len()
                 && sys
-                    .update(changed.iter().map(|&k| (self.penalties[k].element(), sign(k))))
+                    .update(
+                        changed
+                            .iter()
+                            .map(|&k| (self.penalties[k].element(), sign(k))),
+                    )
                     .is_ok();
             if !updated {
                 let from_reference = differing(active, &reference);
@@ -536,7 +554,9 @@ impl Run<'_, '_> {
             Budget::APPROXIMATE,
         )?;
         timings.solve += t0.elapsed().as_secs_f64();
-        if omega.is_nan() || omega > super::active_set::RECOVERED || x.iter().any(|v| !v.is_finite())
+        if omega.is_nan()
+            || omega > super::active_set::RECOVERED
+            || x.iter().any(|v| !v.is_finite())
         {
             return Ok(None);
         }

@@ -1,0 +1,231 @@
+/* The mortar weighting through the C ABI (tfem_set_contact_weighting):
+ * the contact patch test on a non-matching interface, and every refusal
+ * of what the weighting does not serve.
+ *
+ * Two blocks of width 1 and height 0.25 meet on y = 0, the lower one cut
+ * in 7 columns, the upper one in 3 (a 3:7 interface), the upper one 10x
+ * stiffer; uniform pressure p on top, the lower block on rollers. The
+ * exact stress is uniform, sigma_yy = -p, and the mortar weighting must
+ * transmit it to round-off: every element's stress, every slave node's
+ * pressure and the nodal pressures read p. */
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "tfem.h"
+
+static int passed = 0, failed = 0;
+
+#define CHECK(cond)                                          \
+  do {                                                       \
+    if (cond) {                                              \
+      ++passed;                                              \
+    } else {                                                 \
+      ++failed;                                              \
+      printf("FAIL %s:%d: %s\n", __FILE__, __LINE__, #cond); \
+    }                                                        \
+  } while (0)
+
+/* The call must fail with `expected` and its message contain `needle`. */
+static void expect_error(tfem_model *m, tfem_status got, tfem_status expected, const char *needle,
+                         int line) {
+  char msg[512];
+  tfem_last_error(m, msg, sizeof msg);
+  if (got == expected && strstr(msg, needle) != NULL) {
+    ++passed;
+  } else {
+    ++failed;
+    printf("FAIL line %d: status %d (expected %d), message \"%s\" (expected \"%s\")\n", line,
+           (int)got, (int)expected, msg, needle);
+  }
+}
+#define EXPECT_ERROR(m, call, status, needle) expect_error(m, call, status, needle, __LINE__)
+
+enum { NL = 7, NU = 3, ROWS = 2 };
+enum { N_NODES = (NL + 1) * (ROWS + 1) + (NU + 1) * (ROWS + 1) };
+enum { N_TRIS = 2 * ROWS * (NL + NU) };
+enum { N_EDGES = 2 * NL + 2 * NU };
+static const double P = 1e7, H = 0.25;
+
+static double xy[2 * N_NODES];
+static int tri[3 * N_TRIS], body[N_TRIS], edges[2 * N_EDGES], tags[N_EDGES];
+
+/* A grid of `nx` x ROWS cells over [0,1] x [y0, y0 + H] from node `first`,
+ * triangle `t0`: its bottom row, left to right, in `bottom`, its top row in
+ * `top`. */
+static int grid(int nx, double y0, int b, int first, int t0, int *bottom, int *top) {
+  int n = first, t = t0;
+  for (int j = 0; j <= ROWS; ++j)
+    for (int i = 0; i <= nx; ++i, ++n) {
+      xy[2 * n] = (double)i / nx;
+      xy[2 * n + 1] = y0 + H * j / ROWS;
+    }
+  for (int j = 0; j < ROWS; ++j)
+    for (int i = 0; i < nx; ++i) {
+      int a = first + j * (nx + 1) + i, c = a + nx + 1;
+      int quad[2][3] = {{a, a + 1, c + 1}, {a, c + 1, c}};
+      for (int k = 0; k < 2; ++k, ++t) {
+        memcpy(&tri[3 * t], quad[k], sizeof quad[k]);
+        body[t] = b;
+      }
+    }
+  for (int i = 0; i <= nx; ++i) {
+    bottom[i] = first + i;
+    top[i] = first + ROWS * (nx + 1) + i;
+  }
+  return t;
+}
+
+/* Edges counter-clockwise (body on the left): a bottom row left to right,
+ * a top row right to left. */
+static int add_row(int e, const int *row, int nx, int tag, int bottom) {
+  for (int i = 0; i < nx; ++i, ++e) {
+    edges[2 * e] = bottom ? row[i] : row[i + 1];
+    edges[2 * e + 1] = bottom ? row[i + 1] : row[i];
+    tags[e] = tag;
+  }
+  return e;
+}
+
+static tfem_model *patch(int *lower_bottom, int *upper_top) {
+  int lb[NL + 1], lt[NL + 1], ub[NU + 1], ut[NU + 1];
+  int t = grid(NL, -H, 1, 0, 0, lb, lt);
+  grid(NU, 0.0, 2, (NL + 1) * (ROWS + 1), t, ub, ut);
+  int e = add_row(0, lb, NL, 1, 1);
+  e = add_row(e, lt, NL, 3, 0);
+  e = add_row(e, ub, NU, 4, 1);
+  add_row(e, ut, NU, 5, 0);
+  memcpy(lower_bottom, lb, sizeof lb);
+  memcpy(upper_top, ut, sizeof ut);
+  tfem_model *m = tfem_create();
+  CHECK(tfem_set_mesh(m, N_NODES, xy, N_TRIS, tri, body, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_set_boundary_edges(m, N_EDGES, edges, tags) == TFEM_STATUS_OK);
+  CHECK(tfem_set_material(m, 1, 1e10, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_set_material(m, 2, 1e11, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 1, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  /* u_x = 0 on x = 0 holds in the exact solution: one node per body. */
+  CHECK(tfem_fix(m, lb[0], TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix(m, ut[0], TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_add_pressure(m, 5, P) == TFEM_STATUS_OK);
+  int pair = -1;
+  CHECK(tfem_add_contact_pair(m, 3, 4, &pair) == TFEM_STATUS_OK && pair == 0);
+  return m;
+}
+
+static void patch_test_is_exact(void) {
+  int lb[NL + 1], ut[NU + 1];
+  tfem_model *m = patch(lb, ut);
+  int w = -1;
+  CHECK(tfem_get_contact_weighting(m, &w) == TFEM_STATUS_OK && w == TFEM_CONTACT_WEIGHTING_STRIP);
+  CHECK(tfem_set_contact_weighting(m, TFEM_CONTACT_WEIGHTING_MORTAR) == TFEM_STATUS_OK);
+  CHECK(tfem_get_contact_weighting(m, &w) == TFEM_STATUS_OK && w == TFEM_CONTACT_WEIGHTING_MORTAR);
+  tfem_contact_report r;
+  CHECK(tfem_solve_contact(m, NULL, &r) == TFEM_STATUS_OK);
+  /* The coarser side (the upper block's NU + 1 nodes) is the slave. */
+  CHECK(r.elements == NU + 1 && r.active == NU + 1);
+  CHECK(fabs(r.contact_length - 1.0) < 1e-12);
+
+  double s[3 * N_TRIS];
+  CHECK(tfem_get_element_stresses(m, s, 3 * N_TRIS) == TFEM_STATUS_OK);
+  double worst = 0.0;
+  for (int t = 0; t < N_TRIS; ++t) {
+    double e = fabs(s[3 * t + 1] + P) + fabs(s[3 * t]) + fabs(s[3 * t + 2]);
+    if (e > worst) worst = e;
+  }
+  printf("mortar patch test 3:7: largest stress error %.2e of p\n", worst / P);
+  CHECK(worst < 1e-10 * P);
+
+  int node[NU + 1];
+  double trib[NU + 1], gap[NU + 1], pres[NU + 1];
+  CHECK(tfem_get_contact_slave_nodes(m, node, trib, gap, pres, NU + 1) == TFEM_STATUS_OK);
+  double total = 0.0;
+  for (int k = 0; k <= NU; ++k) {
+    CHECK(fabs(pres[k] / P - 1.0) < 1e-10);
+    CHECK(gap[k] < 0.0);
+    CHECK(node[k] >= (NL + 1) * (ROWS + 1));
+    total += trib[k];
+  }
+  CHECK(fabs(total - 1.0) < 1e-12);
+  /* One column only (the others NULL). */
+  double only[NU + 1];
+  CHECK(tfem_get_contact_slave_nodes(m, NULL, NULL, NULL, only, NU + 1) == TFEM_STATUS_OK);
+  CHECK(memcmp(only, pres, sizeof only) == 0);
+
+  double np[N_NODES];
+  CHECK(tfem_get_contact_nodal_pressures(m, np, N_NODES) == TFEM_STATUS_OK);
+  int read = 0;
+  for (int v = 0; v < N_NODES; ++v)
+    if (np[v] != 0.0) {
+      ++read;
+      CHECK(fabs(np[v] / P - 1.0) < 1e-10);
+    }
+  CHECK(read == (NL + 1) + (NU + 1));
+
+  /* The supports carry the load: sum of the y reactions = p times the width. */
+  double reac[2 * N_NODES];
+  CHECK(tfem_get_reactions(m, reac, 2 * N_NODES) == TFEM_STATUS_OK);
+  double ry = 0.0;
+  for (int i = 0; i <= NL; ++i) ry += reac[2 * lb[i] + 1];
+  CHECK(fabs(ry / P - 1.0) < 1e-10);
+  /* The contact forces balance over the pair. */
+  double f[2 * N_NODES], fy = 0.0, fy_up = 0.0;
+  CHECK(tfem_get_contact_forces(m, f, 2 * N_NODES) == TFEM_STATUS_OK);
+  for (int v = 0; v < N_NODES; ++v) {
+    fy += f[2 * v + 1];
+    if (v >= (NL + 1) * (ROWS + 1)) fy_up += f[2 * v + 1];
+  }
+  CHECK(fabs(fy) < 1e-9 * P && fabs(fy_up / P - 1.0) < 1e-10);
+  tfem_destroy(m);
+}
+
+static void refusals_name_what_the_weighting_does_not_serve(void) {
+  int lb[NL + 1], ut[NU + 1];
+  tfem_model *m = patch(lb, ut);
+  EXPECT_ERROR(NULL, tfem_set_contact_weighting(NULL, 1), TFEM_STATUS_NULL_POINTER, "model");
+  EXPECT_ERROR(m, tfem_set_contact_weighting(m, 2), TFEM_STATUS_INVALID_ARGUMENT, "weighting = 2");
+  EXPECT_ERROR(m, tfem_set_contact_weighting(m, -1), TFEM_STATUS_INVALID_ARGUMENT,
+               "weighting = -1");
+  int w = -1;
+  CHECK(tfem_get_contact_weighting(m, &w) == TFEM_STATUS_OK && w == TFEM_CONTACT_WEIGHTING_STRIP);
+  EXPECT_ERROR(m, tfem_get_contact_weighting(m, NULL), TFEM_STATUS_NULL_POINTER, "weighting");
+
+  /* Under the strip, there are no slave nodes. */
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  double pres[NU + 1];
+  EXPECT_ERROR(m, tfem_get_contact_slave_nodes(m, NULL, NULL, NULL, pres, NU + 1),
+               TFEM_STATUS_INVALID_STATE, "strip weighting");
+
+  CHECK(tfem_set_contact_weighting(m, TFEM_CONTACT_WEIGHTING_MORTAR) == TFEM_STATUS_OK);
+  /* The change discarded the strip's results. */
+  double cp[64];
+  EXPECT_ERROR(m, tfem_get_contact_pressure(m, cp, 64), TFEM_STATUS_INVALID_STATE, "no results");
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  EXPECT_ERROR(m, tfem_get_contact_pressure(m, cp, 64), TFEM_STATUS_INVALID_STATE,
+               "mortar weighting");
+  int act[64];
+  EXPECT_ERROR(m, tfem_get_contact_active(m, act, 64), TFEM_STATUS_INVALID_STATE,
+               "per slave node");
+  EXPECT_ERROR(m, tfem_get_contact_slave_nodes(m, NULL, NULL, NULL, pres, NU),
+               TFEM_STATUS_BUFFER_TOO_SMALL, "length = 3");
+  EXPECT_ERROR(m, tfem_step(m, 1.0, NULL, NULL), TFEM_STATUS_INVALID_STATE, "load steps");
+  /* The refused calls left the results alone. */
+  CHECK(tfem_get_contact_slave_nodes(m, NULL, NULL, NULL, pres, NU + 1) == TFEM_STATUS_OK);
+  CHECK(fabs(pres[0] / P - 1.0) < 1e-10);
+
+  tfem_contact_options o;
+  CHECK(tfem_contact_options_default(&o) == TFEM_STATUS_OK);
+  o.law = TFEM_CONTACT_LAW_STICK;
+  EXPECT_ERROR(m, tfem_solve_contact(m, &o, NULL), TFEM_STATUS_INVALID_ARGUMENT, "stick law");
+  CHECK(tfem_get_contact_slave_nodes(m, NULL, NULL, NULL, pres, NU + 1) == TFEM_STATUS_OK);
+  CHECK(tfem_set_friction(m, 0, 0.3) == TFEM_STATUS_OK);
+  EXPECT_ERROR(m, tfem_solve_contact(m, NULL, NULL), TFEM_STATUS_INVALID_ARGUMENT, "friction");
+  tfem_destroy(m);
+}
+
+int main(void) {
+  patch_test_is_exact();
+  refusals_name_what_the_weighting_does_not_serve();
+  printf("mortar_test: %d passed, %d failed\n", passed, failed);
+  return failed == 0 ? 0 : 1;
+}
