@@ -327,18 +327,21 @@ module tfem
   type, bind(C) :: tfem_contact_report
     !> Active-set iterations (solves).
     integer(c_int) :: iterations
-    !> Elements of the contact mesh B.
+    !> Elements of the contact mesh B (under the mortar weighting, `tfem_set_contact_weighting`:
+    !! slave nodes).
     integer(c_int) :: elements
-    !> Active elements at convergence.
+    !> Active elements at convergence (under the mortar weighting: slave nodes).
     integer(c_int) :: active
     !> Contact length ℓc, model length units: the summed interface-edge length of the active
     !! elements, each as far as it faces the other side, of one of B's two families (edges on one
     !! side or on the other) in each contact zone (a pair's active elements connected through shared
     !! nodes), the one active over the longer length. Until 2026-11-24 the mean of the two families,
     !! which counted half the width of a contact carried by one family alone (curved sides whose
-    !! nodes differ, rigid curved tools; docs/method.md §6.8).
+    !! nodes differ, rigid curved tools; docs/method.md §6.8). Under the mortar weighting: the
+    !! active slave nodes' summed tributaries.
     real(c_double) :: contact_length
-    !> Largest normal interpenetration, model length units.
+    !> Largest normal interpenetration, model length units (under the mortar weighting: of an active
+    !! slave node's mean gap).
     real(c_double) :: max_penetration
     !> Solver statistics.
     type(tfem_solve_info) :: info

@@ -401,11 +401,13 @@ typedef struct tfem_contact_report {
    */
   int iterations;
   /**
-   * Elements of the contact mesh B.
+   * Elements of the contact mesh B (under the mortar weighting,
+   * `tfem_set_contact_weighting`: slave nodes).
    */
   int elements;
   /**
-   * Active elements at convergence.
+   * Active elements at convergence (under the mortar weighting: slave
+   * nodes).
    */
   int active;
   /**
@@ -416,11 +418,13 @@ typedef struct tfem_contact_report {
    * shared nodes), the one active over the longer length.
    * Until 2026-11-24 the mean of the two families, which counted half the
    * width of a contact carried by one family alone (curved sides whose
-   * nodes differ, rigid curved tools; docs/method.md §6.8).
+   * nodes differ, rigid curved tools; docs/method.md §6.8). Under the
+   * mortar weighting: the active slave nodes' summed tributaries.
    */
   double contact_length;
   /**
-   * Largest normal interpenetration, model length units.
+   * Largest normal interpenetration, model length units (under the
+   * mortar weighting: of an active slave node's mean gap).
    */
   double max_penetration;
   /**

@@ -123,9 +123,11 @@ pub struct TfemSolveInfo {
 pub struct TfemContactReport {
     /// Active-set iterations (solves).
     pub iterations: c_int,
-    /// Elements of the contact mesh B.
+    /// Elements of the contact mesh B (under the mortar weighting,
+    /// `tfem_set_contact_weighting`: slave nodes).
     pub elements: c_int,
-    /// Active elements at convergence.
+    /// Active elements at convergence (under the mortar weighting: slave
+    /// nodes).
     pub active: c_int,
     /// Contact length ℓc, model length units: the summed interface-edge
     /// length of the active elements, each as far as it faces the other
@@ -134,9 +136,11 @@ pub struct TfemContactReport {
     /// shared nodes), the one active over the longer length.
     /// Until 2026-11-24 the mean of the two families, which counted half the
     /// width of a contact carried by one family alone (curved sides whose
-    /// nodes differ, rigid curved tools; docs/method.md §6.8).
+    /// nodes differ, rigid curved tools; docs/method.md §6.8). Under the
+    /// mortar weighting: the active slave nodes' summed tributaries.
     pub contact_length: f64,
-    /// Largest normal interpenetration, model length units.
+    /// Largest normal interpenetration, model length units (under the
+    /// mortar weighting: of an active slave node's mean gap).
     pub max_penetration: f64,
     /// Solver statistics.
     pub info: TfemSolveInfo,

@@ -848,8 +848,10 @@ impl Model {
     }
 
     /// The elements of the contact mesh B of the last contact solve.
+    /// Refused after a solve under the mortar weighting, which has no B
+    /// ([`Model::contact_mesh`] still gives the strip the pairs would make).
     pub fn contact_elements(&self) -> Result<&[ContactElement]> {
-        Ok(&self.contact_solution()?.elements)
+        Ok(&self.strip_solution()?.elements)
     }
 
     /// Active flag of every element of B at convergence. Refused after a
@@ -978,6 +980,10 @@ impl Model {
     /// where its pairs continue one face (a head joint ending on a bed
     /// face), the tributary-weighted mean of its faces' pressures at a
     /// corner.
+    ///
+    /// Under the mortar weighting: each slave node's −κG_i/m_i, and at the
+    /// nodes of the other side that its weighted gaps read, the slave's
+    /// pressure interpolated along the nearest slave edge.
     pub fn contact_nodal_pressures(&self) -> Result<Vec<f64>> {
         if let Some(slaves) = &self.contact_solution()?.mortar {
             let (mesh, pairs) = (self.problem.mesh_ref()?, self.problem.contact_pairs());
@@ -1033,6 +1039,8 @@ impl Model {
     /// interfaces; negative where the bodies interpenetrate), computed on
     /// request: the smallest distance, over the elements of B at the node,
     /// of an element's apex from its interface edge (deformed, linearised).
+    /// Under the mortar weighting: a slave node's mean gap G_i/m_i, read
+    /// at the master's nodes along the slave.
     pub fn contact_gaps(&self) -> Result<Vec<f64>> {
         self.solution()?.contact_gaps(&self.problem, self.field()?)
     }

@@ -156,7 +156,7 @@ pub(crate) fn restore(
 ) -> Result<()> {
     session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
     if let (Some(options), ContactWeighting::Mortar) = (options, input.weighting) {
-        return mortar::restore(session, input, options, log.first().map_or(&[], |l| &l[..]));
+        return mortar::restore(session, input, options, log);
     }
     if let Some(options) = options {
         let Session {

@@ -30,7 +30,7 @@ use super::system::AssembledSystem;
 use super::{Input, Outcome};
 use crate::contact::law::penalty_lengths;
 use crate::contact::mesh::{Nodes, Side};
-use crate::contact::mortar::{Basis, SlaveNode, WeightedGap, coarser_side, weighted_gaps};
+use crate::contact::mortar::{Basis, Slave, SlaveNode, WeightedGap, coarser_side, weighted_gaps};
 use crate::contact::{ActiveSet, ContactLaw, ContactOptions, ContactPair, InversionTest};
 use crate::error::{Error, Result, ensure_finite};
 use crate::fem::assembly::{NOT_FREE, Pattern};
@@ -43,6 +43,8 @@ use crate::linalg::refine::{Budget, norm_inf, refine_by};
 pub(crate) struct PairGaps {
     /// The pair's index.
     pub pair: usize,
+    /// Its slave side.
+    pub slave: Slave,
     /// Its slave nodes' weighted gaps.
     pub gaps: Vec<WeightedGap>,
 }
@@ -72,7 +74,11 @@ pub(crate) fn build(mesh: &Mesh, pairs: &[ContactPair]) -> Result<Vec<PairGaps>>
         };
         let slave = coarser_side(nodes, &a, &b).map_err(named)?;
         let gaps = weighted_gaps(nodes, &a, &b, slave, Basis::Dual).map_err(named)?;
-        all.push(PairGaps { pair: i, gaps });
+        all.push(PairGaps {
+            pair: i,
+            slave,
+            gaps,
+        });
     }
     Ok(all)
 }
@@ -84,7 +90,7 @@ pub(crate) fn cliques(all: &[PairGaps]) -> Vec<[usize; 3]> {
     for wg in all.iter().flat_map(|p| &p.gaps) {
         let mut nodes: Vec<usize> = wg.coefficients.iter().map(|&(g, _)| g / 2).collect();
         nodes.dedup();
-        let n0 = nodes[0];
+        let Some(&n0) = nodes.first() else { continue };
         if nodes.len() < 3 {
             tris.push([n0, nodes[nodes.len() - 1], n0]);
         }
@@ -107,7 +113,9 @@ struct Penalty {
     stiffness: f64,
     /// G_i⁰: the gap with the free unknowns at rest.
     g_rest: f64,
-    /// Each coefficient's unknown (`None` when prescribed) and value.
+    /// Each coefficient's global DOF, its unknown (`None` when
+    /// prescribed) and its value.
+    dofs: Vec<usize>,
     unknowns: Vec<Option<usize>>,
     coef: Vec<f64>,
     /// (κ/m_i) c cᵀ, row-major.
@@ -140,6 +148,24 @@ impl Penalty {
             .iter()
             .zip(&self.coef)
             .filter_map(move |(u, c)| u.map(|j| (j, f * c)))
+    }
+
+    /// Adds its energy (r·K r, Σ K_jj r_j²) for a global vector `r` to
+    /// `acc`, as `diagnostics::add_energy` does for an element.
+    fn add_energy(&self, acc: &mut (f64, f64), r: &[f64]) {
+        let cr: f64 = self
+            .dofs
+            .iter()
+            .zip(&self.coef)
+            .map(|(&g, c)| c * r[g])
+            .sum();
+        acc.0 += self.stiffness * cr * cr;
+        acc.1 += self
+            .dofs
+            .iter()
+            .zip(&self.coef)
+            .map(|(&g, c)| self.stiffness * (c * r[g]).powi(2))
+            .sum::<f64>();
     }
 
     /// Adds (`sign` +1) or takes out (−1) the penalty in `system`.
@@ -178,6 +204,7 @@ fn penalties(
         for wg in &pg.gaps {
             let stiffness = kappa / wg.tributary;
             let (mut unknowns, mut coef) = (Vec::new(), Vec::new());
+            let dofs = wg.coefficients.iter().map(|&(g, _)| g).collect();
             let mut g_rest = wg.initial;
             for &(g, c) in &wg.coefficients {
                 let j = session.dofs.free(g);
@@ -199,6 +226,7 @@ fn penalties(
                 tributary: wg.tributary,
                 stiffness,
                 g_rest,
+                dofs,
                 unknowns,
                 coef,
                 matrix,
@@ -219,7 +247,10 @@ fn initial_set(penalties: &[Penalty], h_c: &std::collections::BTreeMap<usize, f6
     }
     penalties
         .iter()
-        .map(|p| p.g_rest / p.tributary <= lowest[&p.pair] + 1e-3 * h_c[&p.pair])
+        .map(|p| {
+            let h = h_c.get(&p.pair).copied().unwrap_or(0.0);
+            p.g_rest / p.tributary <= lowest[&p.pair] + 1e-3 * h
+        })
         .collect()
 }
 
@@ -311,10 +342,12 @@ pub(crate) fn solve_contact(
         chol,
         system,
         set: ActiveSet::new(initial.clone()),
+        log: vec![(0..initial.len()).filter(|&k| initial[k]).collect()],
         in_system: initial,
         max_iterations: options.max_iterations,
     };
     let (x, condensed_bytes) = run.solve(condense.then_some(interface), timings, &mut info)?;
+    let log = std::mem::take(&mut run.log);
     let (active, history) = run.set.into_parts();
     info.memory_bytes = at.pattern.memory_bytes()
         + run.system.memory_bytes()
@@ -329,7 +362,7 @@ pub(crate) fn solve_contact(
     let contact = outcome(&penalties, &active, &x, history, info, mesh)?;
     Ok(Outcome {
         u: super::Field::Global(u),
-        log: vec![(0..active.len()).filter(|&i| active[i]).collect()],
+        log,
         info,
         contact: Some(contact),
         warnings,
@@ -346,6 +379,10 @@ struct Run<'r, 'a> {
     set: ActiveSet,
     /// The penalties the assembled system holds.
     in_system: Vec<bool>,
+    /// The penalties each assembly switched, in order: replayed onto the
+    /// bodies' part, the same operations give the same matrix to the bit
+    /// ([`restore`]).
+    log: Vec<Vec<usize>>,
     max_iterations: usize,
 }
 
@@ -360,7 +397,7 @@ impl Run<'_, '_> {
     ) -> Result<(Vec<f64>, usize)> {
         let x1 = self.full_solve(timings, info)?;
         if let Some(interface) = interface {
-            if let Some(done) = self.condensed(interface, x1.clone(), timings)? {
+            if let Some(done) = self.condensed(interface, x1.clone(), timings, info)? {
                 return Ok(done);
             }
             // Lost to round-off in the condensed system: go on with full
@@ -373,7 +410,16 @@ impl Run<'_, '_> {
     /// Factorises the assembled system and solves it.
     fn full_solve(&mut self, timings: &mut Timings, info: &mut SolveInfo) -> Result<Vec<f64>> {
         let elements = &self.input.elements;
-        let energy = |r: &[f64]| super::active_set::body_energy(elements, r);
+        let (penalties, on) = (self.penalties, &self.in_system);
+        // A body held by the penalties alone is restrained: their energy
+        // counts when a near-null mode is judged.
+        let energy = |r: &[f64]| {
+            let mut acc = super::active_set::body_energy(elements, r);
+            for (p, _) in penalties.iter().zip(on).filter(|(_, on)| **on) {
+                p.add_energy(&mut acc, r);
+            }
+            acc
+        };
         let context = format!(
             " (mortar contact, iteration {})",
             self.set.history().len() + 1
@@ -398,6 +444,7 @@ impl Run<'_, '_> {
     /// Makes the assembled system hold the current set.
     fn assemble_set(&mut self) {
         let active = self.set.active().to_vec();
+        self.log.push(differing(&active, &self.in_system));
         for (k, p) in self.penalties.iter().enumerate() {
             if active[k] != self.in_system[k] {
                 p.toggle(
@@ -445,9 +492,11 @@ impl Run<'_, '_> {
         interface: Vec<usize>,
         x1: Vec<f64>,
         timings: &mut Timings,
+        info: &mut SolveInfo,
     ) -> Result<Option<(Vec<f64>, usize)>> {
         let t0 = std::time::Instant::now();
         let mut sys = Condensed::new(self.chol, interface)?;
+        info.interface_unknowns = sys.len();
         let bytes = sys.memory_bytes() + 8 * x1.len();
         let reference = self.in_system.clone();
         let y = sys.gather(&x1);
@@ -482,7 +531,7 @@ impl Run<'_, '_> {
                     .iter()
                     .map(|&k| (self.penalties[k].element(), sign(k)));
                 if sys.factorize(changes).is_err() {
-                    timings.solve += t0.elapsed().as_secs_f64();
+                    timings.interface += t0.elapsed().as_secs_f64();
                     return Ok(None);
                 }
             }
@@ -495,7 +544,7 @@ impl Run<'_, '_> {
             }
             ui = sys.solve(&y, &dg)?;
         }
-        timings.solve += t0.elapsed().as_secs_f64();
+        timings.interface += t0.elapsed().as_secs_f64();
         // The field: u = x₁ + K₁⁻¹ P (Δg − ΔC u_I), then refined against the
         // final matrix, the condensed system as its approximate inverse.
         self.assemble_set();
@@ -625,13 +674,15 @@ fn outcome(
     })
 }
 
-/// Rebuilds the final system of a mortar solve whose active slave nodes
-/// were `active` onto the bodies' part the session holds.
+/// Rebuilds the final system of a mortar solve onto the bodies' part the
+/// session holds: the penalties of each list of `log` (from the solve's
+/// `Outcome::log`) switched in turn, in the solve's own order, so that the
+/// matrix is the same to the bit.
 pub(crate) fn restore(
     session: &mut Session,
     input: &Input<'_>,
     options: &ContactOptions,
-    active: &[usize],
+    log: &[Vec<usize>],
 ) -> Result<()> {
     let mesh = input.elements.mesh();
     let mortar = session
@@ -648,9 +699,11 @@ pub(crate) fn restore(
     let Session {
         system, pattern, ..
     } = &mut *session;
-    for &k in active {
+    let mut on = vec![false; penalties.len()];
+    for &k in log.iter().flatten() {
         if let Some(p) = penalties.get(k) {
-            p.toggle(system, pattern, 1.0);
+            on[k] = !on[k];
+            p.toggle(system, pattern, if on[k] { 1.0 } else { -1.0 });
         }
     }
     Ok(())
@@ -700,6 +753,11 @@ pub(crate) fn nodal_values(
     let mut sum = vec![0.0; x.len()];
     let mut count = vec![0u32; x.len()];
     let gaps: Vec<PairGaps> = build(mesh, pairs)?;
+    if gaps.iter().map(|p| p.gaps.len()).sum::<usize>() != slaves.len() {
+        return Err(Error::state(
+            "the weighted gaps no longer match the solve's slave nodes",
+        ));
+    }
     let mut first = 0;
     for pg in &gaps {
         let mine = &slaves[first..first + pg.gaps.len()];
@@ -709,7 +767,10 @@ pub(crate) fn nodal_values(
         }
         let p = &pairs[pg.pair];
         let (a, b) = (Side::of_tag(mesh, p.tag_a)?, Side::of_tag(mesh, p.tag_b)?);
-        let slave_side = if a.contains(mine[0].node) { a } else { b };
+        let slave_side = match pg.slave {
+            Slave::A => a,
+            Slave::B => b,
+        };
         let at: std::collections::HashMap<usize, f64> =
             mine.iter().map(|s| (s.node, value(s))).collect();
         let of = |v: usize| at.get(&v).copied().unwrap_or(0.0);

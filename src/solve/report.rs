@@ -57,19 +57,24 @@ pub use crate::contact::IterationRecord;
 pub struct ContactReport {
     /// Active-set iterations (solves) performed.
     pub iterations: usize,
-    /// Elements of the contact mesh B.
+    /// Elements of the contact mesh B (under the mortar weighting: slave
+    /// nodes).
     pub elements: usize,
-    /// Active (inverted) elements at convergence.
+    /// Active (inverted) elements at convergence (under the mortar
+    /// weighting: slave nodes with a negative weighted gap).
     pub active: usize,
     /// Contact length ℓc: in each contact zone (a pair's active elements of
     /// B connected through shared nodes), the summed
     /// interface-edge length (as far as it faces the other side) of the
     /// active elements of the family — edges on one side, or on the other;
     /// each tiles the interface once — active over the longer length
-    /// (docs/method.md §6.8; the mean of the two until 2026-11-24).
+    /// (docs/method.md §6.8; the mean of the two until 2026-11-24). Under
+    /// the mortar weighting: the summed tributaries m_i of the active slave
+    /// nodes.
     pub contact_length: f64,
     /// Largest normal interpenetration (−opening / edge length) of an active
-    /// element, in model length units; 0 when nothing penetrates.
+    /// element, in model length units; 0 when nothing penetrates. Under the
+    /// mortar weighting: the largest −G_i/m_i of an active slave node.
     pub max_penetration: f64,
     /// Per-iteration history.
     pub history: Vec<IterationRecord>,
