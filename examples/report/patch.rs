@@ -222,5 +222,86 @@ pub(crate) fn patch_ratios(report: &mut String, a: &Args) {
             above.join("; ")
         }
     )
+    .unwrap();    patch_ratios_mortar(report, &levels, &ratios);
+}
+
+/// The same patch tests under the mortar weighting
+/// (`ContactWeighting::Mortar`).
+fn patch_ratios_mortar(report: &mut String, levels: &[usize], ratios: &[(&str, f64)]) {
+    use tfem::ContactWeighting;
+    use tfem::scenes::patch::PatchTest;
+    let finest = *levels.last().expect("levels");
+    writeln!(
+        report,
+        "### The same under the mortar weighting\n\n\
+         `ContactWeighting::Mortar` (one weighted gap per node of the coarser side, \
+         docs/method.md §6.11): max stress error as above; slave pressure error: the largest \
+         |p_i/p − 1| of the slave nodes' −κG_i/m_i over every h; released: slave nodes not \
+         active.\n\n\
+         | E2/E1 | ratio | jitter | max stress error / p (h = 1/{} … 1/{finest}) | slave pressure error | released | iterations (max) | times [s] |\n|---|---|---|---|---|---|---|---|",
+        levels[0]
+    )
+    .unwrap();
+    let (mut worst, mut worst_p, mut releases) = (0.0f64, 0.0f64, 0);
+    for (e_ratio, e1, e2) in [(1.0, 1e10, 1e10), (10.0, 1e10, 1e11)] {
+        for &(name, ratio) in ratios {
+            for jitter in [0.0, 0.3] {
+                let (mut errs, mut perr, mut released, mut iters, mut times) =
+                    (Vec::new(), 0.0f64, 0, 0, Vec::new());
+                let mut failed = Vec::new();
+                for &n in levels {
+                    let test = PatchTest {
+                        e_lower: e1,
+                        e_upper: e2,
+                        mesh_size: 1.0 / n as f64,
+                        ratio,
+                        jitter,
+                        ..Default::default()
+                    };
+                    let t0 = Instant::now();
+                    let r = test.build().and_then(|mut s| {
+                        s.model.set_contact_weighting(ContactWeighting::Mortar);
+                        let report = s.model.solve_contact(&ContactOptions::default())?;
+                        let e = s.stress_errors(&test)?;
+                        let nodes = s.model.contact_slave_nodes()?.to_vec();
+                        Ok((report, e, nodes))
+                    });
+                    let t = t0.elapsed().as_secs_f64();
+                    match r {
+                        Ok((rep, e, nodes)) => {
+                            errs.push(e.max);
+                            for q in &nodes {
+                                perr = perr.max((q.pressure / test.p - 1.0).abs());
+                            }
+                            released += nodes.iter().filter(|q| !q.active).count();
+                            iters = iters.max(rep.iterations);
+                            times.push(format!("{t:.3}"));
+                        }
+                        Err(e) => failed.push(format!("1/{n} {}", failure(&e))),
+                    }
+                }
+                worst = errs.iter().fold(worst, |m, &v| m.max(v));
+                worst_p = worst_p.max(perr);
+                releases += released;
+                writeln!(
+                    report,
+                    "| {e_ratio} | {name} ({ratio:.3}) | {jitter} | {}{} | {perr:.1e} | {released} | {iters} | {} |",
+                    sci_list(&errs),
+                    if failed.is_empty() {
+                        String::new()
+                    } else {
+                        format!("; failed: {}", failed.join(", "))
+                    },
+                    times.join(", ")
+                )
+                .unwrap();
+            }
+        }
+    }
+    writeln!(
+        report,
+        "\nUnder the mortar weighting: largest max stress error {worst:.1e} p, largest slave \
+         pressure error {worst_p:.1e} p, {releases} released slave node(s).\n"
+    )
     .unwrap();
 }
