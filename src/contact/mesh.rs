@@ -991,21 +991,9 @@ pub fn nonconforming(
         hi,
         tol,
     } = aligned(nodes, a, b)?;
-    let total = s_a[s_a.len() - 1];
-    // Keep the part of each chain over [lo, hi] plus, where the chain
-    // goes on beyond an end, the node beyond it: the edge across the end
-    // faces the other side over part of its length.
-    let window = |s: &[f64]| -> (usize, usize) {
-        let first = s.iter().rposition(|&v| v <= lo + tol).unwrap_or(0);
-        let last = s.iter().position(|&v| v >= hi - tol).unwrap_or(s.len() - 1);
-        (first, last.max(first + 1).min(s.len() - 1))
-    };
-    let (a0, a1) = window(&s_a);
-    let (b0, b1) = window(&s_b);
-    let (ca, sa) = (&chain_a[a0..=a1], &s_a[a0..=a1]);
-    let (cb, sb) = (&chain_b[b0..=b1], &s_b[b0..=b1]);
-    let inner = (s_b[b0] > 0.0, s_b[b1] < total);
-    let ends = Ends::new(x, (ca, cb), inner, (lo, hi), tol);
+    let (w, ends) = windows_and_ends(x, (&chain_a, &s_a), (&chain_b, &s_b), (lo, hi, tol));
+    let (ca, sa) = (&chain_a[w[0]..=w[1]], &s_a[w[0]..=w[1]]);
+    let (cb, sb) = (&chain_b[w[2]..=w[3]], &s_b[w[2]..=w[3]]);
     let (tris, fractions) = walk_strip((ca, sa), (cb, sb), &ends);
     let mut elements = checked_triangles(nodes, pair, a, b, &tris)?.0;
     for (el, f) in elements.iter_mut().zip(fractions) {
@@ -1014,6 +1002,47 @@ pub fn nonconforming(
         }
     }
     Ok(elements)
+}
+
+/// Each chain's window — the part over [lo, hi] plus, where the chain
+/// goes on beyond an end, the node beyond it (the edge across the end
+/// faces the other side over part of its length) — as [a0, a1, b0, b1],
+/// and the [`Ends`] of the windowed chains.
+fn windows_and_ends(
+    x: &[[f64; 2]],
+    (chain_a, s_a): (&[usize], &[f64]),
+    (chain_b, s_b): (&[usize], &[f64]),
+    (lo, hi, tol): (f64, f64, f64),
+) -> ([usize; 4], Ends) {
+    let total = s_a[s_a.len() - 1];
+    let window = |s: &[f64]| -> (usize, usize) {
+        let first = s.iter().rposition(|&v| v <= lo + tol).unwrap_or(0);
+        let last = s.iter().position(|&v| v >= hi - tol).unwrap_or(s.len() - 1);
+        (first, last.max(first + 1).min(s.len() - 1))
+    };
+    let (a0, a1) = window(s_a);
+    let (b0, b1) = window(s_b);
+    let (ca, cb) = (&chain_a[a0..=a1], &chain_b[b0..=b1]);
+    let inner = (s_b[b0] > 0.0, s_b[b1] < total);
+    let ends = Ends::new(x, (ca, cb), inner, (lo, hi), tol);
+    ([a0, a1, b0, b1], ends)
+}
+
+impl Aligned {
+    /// How far beyond lo and beyond hi a node must lie for the edge
+    /// across that end to face the other side in part only: round-off,
+    /// plus on curved sides the offset curvature alone makes between two
+    /// ends that face each other (the strip's own rule, [`Ends`];
+    /// docs/method.md §6.11, "Sides that end inside an edge").
+    pub(crate) fn end_slack(&self, x: &[[f64; 2]]) -> (f64, f64) {
+        let (_, ends) = windows_and_ends(
+            x,
+            (&self.chain_a, &self.s_a),
+            (&self.chain_b, &self.s_b),
+            (self.lo, self.hi, self.tol),
+        );
+        (ends.tol_lo, ends.tol_hi)
+    }
 }
 
 /// Two facing sides chained and laid along side a: a's nodes with their
