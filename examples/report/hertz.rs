@@ -3,8 +3,8 @@
 use std::fmt::Write as _;
 use std::time::Instant;
 
-use tfem::{ContactOptions, ContactWeighting};
 use tfem::verification::fitted_rate;
+use tfem::{ContactOptions, ContactWeighting};
 
 use crate::Args;
 use crate::common::{Curve, figure};
@@ -108,7 +108,11 @@ pub(crate) fn hertz(report: &mut String, a: &Args) {
             stiff_coarse,
             mortar,
         ),
-        ("cylinder 100× stiffer, its mesh 2.5× finer", stiff_fine, strip),
+        (
+            "cylinder 100× stiffer, its mesh 2.5× finer",
+            stiff_fine,
+            strip,
+        ),
         (
             "cylinder 100× stiffer, its mesh 2.5× finer, mortar weighting",
             stiff_fine,

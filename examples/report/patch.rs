@@ -222,7 +222,8 @@ pub(crate) fn patch_ratios(report: &mut String, a: &Args) {
             above.join("; ")
         }
     )
-    .unwrap();    patch_ratios_mortar(report, &levels, &ratios);
+    .unwrap();
+    patch_ratios_mortar(report, &levels, &ratios);
 }
 
 /// The same patch tests under the mortar weighting

@@ -118,9 +118,11 @@ impl Session {
         let used = mesh.node_body();
         let dofs = DofMap::new(n_nodes, 2, |g| used[g / 2].is_some() && !is_prescribed(g));
         let mut elements: Vec<[usize; 3]> = mesh.triangles().to_vec();
-        elements.extend(contact.iter().map(|e| e.nodes));
-        if let Some(m) = &mortar {
-            elements.extend(super::mortar::cliques(m));
+        // Under the mortar weighting no element of B is assembled: the
+        // pattern holds the weighted gaps' couplings instead (less fill).
+        match &mortar {
+            None => elements.extend(contact.iter().map(|e| e.nodes)),
+            Some(m) => elements.extend(super::mortar::cliques(m)),
         }
         let pattern = Pattern::build(&dofs, n_nodes, &elements);
         drop(elements);
