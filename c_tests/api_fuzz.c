@@ -8,7 +8,8 @@
  * either a valid scene built here (a unit square clamped and pulled, the
  * seed's two blocks in contact, a clockwise mesh, a user-made contact mesh,
  * a Gmsh file, the literal-test cycle, load steps, a host's contact
- * context, friction, automatic pairs, prescribed values moved; boundary
+ * context, friction, automatic pairs, prescribed values moved, the mortar
+ * weighting; boundary
  * edges set at once or one group at a time, threads set anywhere)
  * mutated (wrong indices, counts,
  * NULLs, short buffers, NaN/Inf/denormal/huge values, wrong enums, index
@@ -129,6 +130,7 @@ enum {
   V_PRESCRIBED,     /* tfem_set_prescribed refusals and acceptances */
   V_AUTO_PAIRS,     /* tfem_add_contact_pairs_auto: first, count, refusals, pairs found */
   V_TWIN,           /* a twin model (the same problem declared another way) differs */
+  V_WEIGHTING,      /* the mortar weighting: set/get, slave nodes, what it refuses */
   NV
 };
 
@@ -139,7 +141,7 @@ static const char *const V_NAME[NV] = {
     "oracle",         "dropped_load",  "equilibrium",   "double_fix",     "results_lost",
     "matrix_dropped", "double_edge",   "results_changed", "contact",      "external_work",
     "threads",        "null_pointer",  "other",          "step_repeat",  "host_contact",
-    "friction",       "prescribed",    "auto_pairs",     "twin",
+    "friction",       "prescribed",    "auto_pairs",     "twin",          "weighting",
 };
 
 static const char *const V_DESC[NV] = {
@@ -177,6 +179,7 @@ static const char *const V_DESC[NV] = {
     "tfem_set_prescribed accepts what it must refuse, or refuses a prescribed DOF",
     "tfem_add_contact_pairs_auto: first/count inconsistent with the pairs, a refusal missed, or the pairs expected not found",
     "a twin model (mu = 0 never set, the pair declared instead of found, a re-fix instead of tfem_set_prescribed) differs",
+    "mortar weighting: tfem_set/get_contact_weighting, tfem_get_contact_slave_nodes or a refusal not as documented",
 };
 
 /* Oracles checked (not vacuous): counted when they could conclude. */
@@ -203,13 +206,16 @@ enum {
   O_PAIR_PRESSURE, /* one pair's nodal pressures against all pairs' */
   O_VTU,           /* a .vtu written: the grid's points and cells, or refused for an unwritable path */
   O_WARNING_SIZE,  /* tfem_get_warning_size against tfem_get_warning and tfem_warning_count */
+  O_WEIGHTING,     /* set/get weighting outcomes, and what the mortar weighting refuses */
+  O_SLAVE,         /* a mortar solve's slave nodes against its report */
   NO
 };
 static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetration", "work", "mesh_eq",
                                        "apex", "threads", "results_kept", "edges_refused", "fix_refused",
                                        "step_repeat", "host_pattern", "host_gather", "host_active",
                                        "coulomb", "friction_args", "prescribed", "auto_pairs", "twin",
-                                       "pair_pressure", "vtu_file", "warning_size"};
+                                       "pair_pressure", "vtu_file", "warning_size", "weighting",
+                                       "slave_nodes"};
 
 /* A library defect this tester found (c_tests/README.md, "The 3 entry
  * points of friction, prescribed values and automatic pairs"): with
@@ -256,6 +262,32 @@ static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetrat
 /* Fixed (c_tests/README.md): checked unless built with -DAPI_FUZZ_DISSIPATION_SIGN=0. */
 #ifndef API_FUZZ_DISSIPATION_SIGN
 #define API_FUZZ_DISSIPATION_SIGN 1
+#endif
+
+/* A library defect this tester found when the mortar weighting was added
+ * (c_tests/README.md, "The 3 entry points of the mortar weighting"): a
+ * tfem_solve_contact refused under the mortar weighting (the stick law or
+ * the literal inversion test: INVALID_ARGUMENT) after a successful mortar
+ * solve changes the system matrix in the last bits (8651302401.3024006
+ * against 8651302401.3023987 without the refused call: seed 1 case 11409,
+ * seed 11 case 7407 of the commit that added it): a failed call changed
+ * the model. The replay
+ * does not compare the matrix values read after such a refusal (and the
+ * results-kept oracle forgets the matrix there) unless built with
+ * -DAPI_FUZZ_MORTAR_REFUSAL_MATRIX=1 (then state_change). */
+#ifndef API_FUZZ_MORTAR_REFUSAL_MATRIX
+#define API_FUZZ_MORTAR_REFUSAL_MATRIX 0
+#endif
+
+/* Another (same README section), at round-off: an active slave node can
+ * end with a positive mean gap at round-off and so a negative pressure
+ * (no load: gap 4.3e-18, pressure -4.3e-6, seed 11 case 6858 of the commit
+ * that added it; a displacement of 1e200 prescribed: gap 4.9e183, pressure
+ * -1.96e195), where the header says "positive in compression, 0 when
+ * inactive". A wrong sign is accepted when |gap| <= 1e-12 max|u| unless
+ * built with -DAPI_FUZZ_MORTAR_TENSION=1. */
+#ifndef API_FUZZ_MORTAR_TENSION
+#define API_FUZZ_MORTAR_TENSION 0
 #endif
 
 /* Messages name the item and say why; what must not happen is an
@@ -442,6 +474,10 @@ enum {
   F_WRITE_VTU,
   F_GET_WARNING_SIZE,
   F_CONTACT_LAST_ERROR_LENGTH,
+  /* added 2026-11-25: the mortar weighting */
+  F_SET_CONTACT_WEIGHTING,
+  F_GET_CONTACT_WEIGHTING,
+  F_GET_CONTACT_SLAVE_NODES,
   F_DESTROY_NULL, /* tfem_destroy(NULL) */
   F_RECREATE,     /* tfem_destroy(m); m = tfem_create() */
   F_TWIN,         /* not a call: the twin-model oracle (see oracle_twin) */
@@ -468,7 +504,9 @@ static size_t ksize(int k) {
 enum { R_SCALAR, R_2NN, R_3NT, R_NT, R_NC, R_3NC, R_N1, R_NNZ, R_N, R_MSG, R_WARN, R_36, R_9, R_NN, R_CM, R_3CM,
        /* the contact state; a context's interface nodes (x1, x2), elements of B (x1, x3, x6, x36), pattern
         * entries, message, the host's equations */
-       R_STATE, R_CN, R_2CN, R_CE, R_3CE, R_6CE, R_36CE, R_CP, R_CMSG, R_NEQ };
+       R_STATE, R_CN, R_2CN, R_CE, R_3CE, R_6CE, R_36CE, R_CP, R_CMSG, R_NEQ,
+       /* slave nodes of a mortar solve (the report's elements) */
+       R_SLAVE };
 
 #define MAXI 6
 #define MAXD 4
@@ -496,7 +534,8 @@ typedef struct {
  *   input (see make_inputs), D its length offset, k its seed, S contact
  *   state mode, A active-flags recipe, g host-vector recipe, V the path of
  *   a .vtu (vtu_path: a file in the private directory or an unwritable
- *   path there; out of range: NULL)
+ *   path there; out of range: NULL), W contact weighting (0 strip,
+ *   1 mortar; wild: -1, 2, INT_MAX, INT_MIN)
  * double roles: E young, p poisson, J jmin, K kappa, v tempering value,
  *   u displacement, f force, G contact modulus, l lambda, a load factor,
  *   y friction coefficient, d pairing tolerance */
@@ -590,6 +629,10 @@ static const fndesc FN[NF] = {
     [F_WRITE_VTU] = {"tfem_write_vtu", 1, "V", "", "", "", {0}, 0},
     [F_GET_WARNING_SIZE] = {"tfem_get_warning_size", 1, "w", "", "", "z", {R_SCALAR}, 1},
     [F_CONTACT_LAST_ERROR_LENGTH] = {"tfem_contact_last_error_length", 2, "", "", "", "", {0}, 0},
+    [F_SET_CONTACT_WEIGHTING] = {"tfem_set_contact_weighting", 1, "W", "", "", "", {0}, 0},
+    [F_GET_CONTACT_WEIGHTING] = {"tfem_get_contact_weighting", 1, "", "", "", "i", {R_SCALAR}, 1},
+    [F_GET_CONTACT_SLAVE_NODES] = {"tfem_get_contact_slave_nodes", 1, "", "", "", "iddd",
+                                   {R_SLAVE, R_SLAVE, R_SLAVE, R_SLAVE}, 0},
     [F_DESTROY_NULL] = {"tfem_destroy(NULL)", 0, "", "", "", "", {0}, 0},
     [F_RECREATE] = {"tfem_destroy+tfem_create", 0, "", "", "", "", {0}, 0},
     [F_TWIN] = {"(twin model oracle)", 0, "", "", "", "", {0}, 0},
@@ -624,6 +667,7 @@ static int out_nullable(int f, int j) {
   case F_ADD_CONTACT_PAIR_WITH_MESH: case F_SOLVE_CONTACT: case F_GET_CONTACT_PAIR_BODIES:
   case F_STEP: case F_CONTACT_ADD_SIDE: case F_CONTACT_ADD_PAIR: case F_CONTACT_ADD_PAIR_WITH_MESH:
   case F_CONTACT_SIZES: case F_CONTACT_EVALUATE: case F_CONTACT_UPDATE: case F_ADD_CONTACT_PAIRS_AUTO:
+  case F_GET_CONTACT_SLAVE_NODES: /* ("any pointer may be NULL") */
     return 1;
   default: (void)j; return 0;
   }
@@ -679,11 +723,14 @@ typedef struct {
    * of the call and its group */
   int tag, grp;
   int in_made; /* runtime inputs made (the replay passes the same) */
+  int skip_values; /* the replay does not compare this call's output 2 (API_FUZZ_MORTAR_REFUSAL_MATRIX) */
   /* the twin model of a pristine scene (oracle_twin): tw 0 the same call,
    * 1 left out, 2 with dv[0] = tw_val, 3 tfem_add_contact_pair(tw_a, tw_b)
    * instead; expect: pairs tfem_add_contact_pairs_auto must add (-1
    * unknown); got: the pairs it added (original run) */
   int tw, tw_a, tw_b, expect, got;
+  /* the status a pristine scene's call must return, plus 1 (0: not checked) */
+  int want;
   double tw_val;
   /* original run */
   int status;
@@ -1184,6 +1231,7 @@ static int plausible_int(rng_t *r, char role, const ctx_t *cx) {
   case 'S': return chance(r, 0.6) ? 0 : rint_(r, 6);
   case 'A': return rint_(r, 6);
   case 'g': return rint_(r, 4);
+  case 'W': return chance(r, 0.8) ? TFEM_CONTACT_WEIGHTING_MORTAR : TFEM_CONTACT_WEIGHTING_STRIP;
   default: return rint_(r, enum_max(role) + 1);
   }
 }
@@ -1198,6 +1246,8 @@ static int wild_int(rng_t *r, char role, int v, const ctx_t *cx) {
    * library would start threads until the system refuses, for minutes;
    * see c_tests/README.md.) */
   if (role == 'h') return (int[]){-1, INT_MIN, -7, 3, 8, 0}[rint_(r, 6)];
+  /* The contact weighting: not 0 or 1 (refused, the model unchanged). */
+  if (role == 'W') return (int[]){-1, 2, INT_MAX, INT_MIN}[rint_(r, 4)];
   switch (rint_(r, 8)) {
   case 0: return -1;
   case 1: return INT_MIN;
@@ -1388,6 +1438,8 @@ static void result_getters(rng_t *r, case_t *cs, int contact) {
     if (chance(r, 0.2)) add_call(cs, F_GET_CONTACT_ELEMENT_PAIRS);
     if (chance(r, 0.2)) add_call(cs, F_GET_CONTACT_ELEMENT_APEXES);
     if (chance(r, 0.2)) call_i(cs, F_GET_CONTACT_PAIR_BODIES, 0, 0);
+    if (chance(r, 0.1)) add_call(cs, F_GET_CONTACT_SLAVE_NODES); /* (after a strip solve: refused) */
+    if (chance(r, 0.05)) add_call(cs, F_GET_CONTACT_WEIGHTING);
   } else if (chance(r, 0.1)) {
     add_call(cs, chance(r, 0.5) ? F_GET_CONTACT_MESH_SIZE : F_GET_CONTACT_FORCES);
   }
@@ -1908,6 +1960,89 @@ static void scene_prescribed(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
   call_i(cs, F_TWIN, 2, 0);
 }
 
+/* The mortar weighting on the two blocks (c_tests/mortar_test.c has the
+ * patch test): tfem_set_contact_weighting(1) before the mesh (the
+ * weighting is the model's), after the pair or right before the solve; the
+ * frictionless solve with the linearised test, or one the weighting
+ * refuses (the stick law, the literal test, friction, a pair with its own
+ * contact mesh); the getters (those per element of B refused); the slave
+ * nodes (all four columns, some NULL, a short length); then one of: a load
+ * step (refused, the results kept), a wild weighting (refused, nothing
+ * changes), the mortar weighting set again (nothing changes), the strip
+ * set back (the results gone; solved again: no slave nodes), the model
+ * re-created (the strip again). The statuses are the scene's expectation
+ * when pristine (call_t.want). */
+static void scene_mortar(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
+  int user = chance(r, 0.12);
+  scene_two_blocks(r, cs, cx, m, user);
+  int solve = find_call(cs, F_SOLVE_CONTACT, 0);
+  int pair = find_call(cs, user ? F_ADD_CONTACT_PAIR_WITH_MESH : F_ADD_CONTACT_PAIR, 0);
+  if (solve < 0 || pair < 0) return;
+  call_t *sc = &cs->c[solve];
+  int bad_opts = 0;
+  if (!sc->in[0].null_) {
+    if (chance(r, 0.85)) sc->iv[0] = TFEM_CONTACT_LAW_FRICTIONLESS, sc->iv[1] = TFEM_INVERSION_TEST_LINEARISED;
+    bad_opts = sc->iv[0] == TFEM_CONTACT_LAW_STICK || sc->iv[1] == TFEM_INVERSION_TEST_LITERAL;
+  }
+  int at = (int[]){0, pair + 1, solve}[rint_(r, 3)];
+  insert_call(cs, at, F_SET_CONTACT_WEIGHTING)->iv[0] = TFEM_CONTACT_WEIGHTING_MORTAR;
+  ++solve;
+  if (chance(r, 0.3)) insert_call(cs, at + 1, F_GET_CONTACT_WEIGHTING)->want = 1, ++solve;
+  int friction = !user && !bad_opts && chance(r, 0.1);
+  if (friction) friction_call(cs, solve++, 0, (double[]){0.3, 0.05, 1e-300}[rint_(r, 3)]);
+  int refused = user || bad_opts || friction;
+  if (!user) cs->c[solve].want = 1 + (refused ? TFEM_STATUS_INVALID_ARGUMENT : TFEM_STATUS_OK);
+  int ok = refused ? TFEM_STATUS_INVALID_STATE : TFEM_STATUS_OK; /* (slave nodes: none without results) */
+  add_call(cs, F_GET_CONTACT_SLAVE_NODES)->want = 1 + ok;
+  if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_REPORT);
+  if (chance(r, 0.5)) { /* some columns NULL */
+    call_t *c = add_call(cs, F_GET_CONTACT_SLAVE_NODES);
+    for (int j = 0; j < 4; ++j) c->out[j].null_ = chance(r, 0.5);
+    c->want = 1 + ok;
+  }
+  if (chance(r, 0.4)) { /* one column short: all are (one length) */
+    call_t *c = add_call(cs, F_GET_CONTACT_SLAVE_NODES);
+    c->out[rint_(r, 4)] = (out_spec){LS_REL, chance(r, 0.7) ? -1 : -2, 0, 0, 0, 0};
+    c->want = 1 + (refused ? TFEM_STATUS_INVALID_STATE : TFEM_STATUS_BUFFER_TOO_SMALL);
+  }
+  if (chance(r, 0.4)) add_call(cs, F_GET_CONTACT_NODAL_PRESSURES);
+  if (chance(r, 0.3)) { /* one column longer: all are; nothing past n written */
+    call_t *c = add_call(cs, F_GET_CONTACT_SLAVE_NODES);
+    c->out[rint_(r, 4)] = (out_spec){LS_REL, rrange(r, 1, 3), 0, 0, 0, 0};
+    c->want = 1 + ok;
+  }
+  switch (rint_(r, 5)) {
+  case 0: /* a load step: refused under the mortar weighting, the results kept */
+    step_call(cs, chance(r, 0.5) ? 1.0 : 0.5, chance(r, 0.5), T_NONE)->want = 1 + TFEM_STATUS_INVALID_STATE;
+    add_call(cs, F_GET_CONTACT_SLAVE_NODES)->want = 1 + ok;
+    break;
+  case 1: /* a wild weighting: refused, nothing changes */
+    call_i(cs, F_SET_CONTACT_WEIGHTING, (int[]){-1, 2, INT_MAX, INT_MIN}[rint_(r, 4)], 0)->want =
+        1 + TFEM_STATUS_INVALID_ARGUMENT;
+    add_call(cs, F_GET_CONTACT_WEIGHTING)->want = 1;
+    add_call(cs, F_GET_CONTACT_SLAVE_NODES)->want = 1 + ok;
+    break;
+  case 2: /* the same weighting again: nothing changes */
+    call_i(cs, F_SET_CONTACT_WEIGHTING, TFEM_CONTACT_WEIGHTING_MORTAR, 0)->want = 1;
+    add_call(cs, F_GET_CONTACT_SLAVE_NODES)->want = 1 + ok;
+    if (chance(r, 0.5)) add_call(cs, F_GET_DISPLACEMENTS)->want = 1 + (refused ? TFEM_STATUS_INVALID_STATE : 0);
+    break;
+  case 3: /* the strip back: the results go; its solve has no slave nodes */
+    call_i(cs, F_SET_CONTACT_WEIGHTING, TFEM_CONTACT_WEIGHTING_STRIP, 0)->want = 1;
+    add_call(cs, F_GET_CONTACT_SLAVE_NODES)->want = 1 + TFEM_STATUS_INVALID_STATE;
+    add_call(cs, F_GET_DISPLACEMENTS)->want = 1 + TFEM_STATUS_INVALID_STATE;
+    add_call(cs, F_SOLVE_CONTACT)->in[0].null_ = 1;
+    add_call(cs, F_GET_CONTACT_ACTIVE)->want = friction ? 0 : 1;
+    add_call(cs, F_GET_CONTACT_SLAVE_NODES)->want = 1 + TFEM_STATUS_INVALID_STATE;
+    if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_GAPS);
+    break;
+  default: /* a new model: the strip again */
+    add_call(cs, F_RECREATE);
+    add_call(cs, F_GET_CONTACT_WEIGHTING)->want = 1;
+    break;
+  }
+}
+
 /* The interface of tag `tag` of mesh m as one side of a contact context:
  * host node numbers mul * node + off, equations 2 node + component (in the
  * index base; the x DOFs of the nodes at x = 0.5, fixed in the model, have
@@ -2088,7 +2223,8 @@ static void random_call(rng_t *r, case_t *cs, const ctx_t *cx, double wild, int 
       [F_CONTACT_ELEMENT_BLOCKS] = 1, [F_CONTACT_LENGTH] = 1, [F_GET_CONTACT_SHEAR] = 1,
       [F_GET_CONTACT_FRICTION_STATE] = 1, [F_GET_CONTACT_DISSIPATION] = 1, [F_SET_FRICTION] = 2,
       [F_SET_PRESCRIBED] = 2, [F_ADD_CONTACT_PAIRS_AUTO] = 2, [F_GET_CONTACT_PAIR_NODAL_PRESSURES] = 2,
-      [F_WRITE_VTU] = 2, [F_GET_WARNING_SIZE] = 2, [F_CONTACT_LAST_ERROR_LENGTH] = 1};
+      [F_WRITE_VTU] = 2, [F_GET_WARNING_SIZE] = 2, [F_CONTACT_LAST_ERROR_LENGTH] = 1,
+      [F_SET_CONTACT_WEIGHTING] = 3, [F_GET_CONTACT_WEIGHTING] = 1, [F_GET_CONTACT_SLAVE_NODES] = 3};
   int total = 0;
   for (int f = 0; f < NF; ++f) total += weight[f];
   int x = rint_(r, total), fn = 0;
@@ -2466,7 +2602,8 @@ static void gen_case(uint64_t seed, long index, case_t *cs, mesh_t *m) {
       else { cs->kind = "prescribed"; scene_prescribed(&r, cs, &cx, m); }
     } else if (s < 22) { cs->kind = "square"; scene_square(&r, cs, &cx, m, 0, 0); }
     else if (s < 30) { cs->kind = "clockwise_square"; scene_square(&r, cs, &cx, m, 1, 1); }
-    else if (s < 58) { cs->kind = "two_blocks"; scene_two_blocks(&r, cs, &cx, m, 0); }
+    else if (s < 52) { cs->kind = "two_blocks"; scene_two_blocks(&r, cs, &cx, m, 0); }
+    else if (s < 58) { cs->kind = "mortar"; scene_mortar(&r, cs, &cx, m); }
     else if (s < 72) { cs->kind = "user_contact_mesh"; scene_two_blocks(&r, cs, &cx, m, 1); }
     else if (s < 78) { cs->kind = "literal_cycle"; scene_two_blocks(&r, cs, &cx, m, 2); }
     else if (s < 90) { cs->kind = "degenerate"; scene_degenerate(&r, cs, &cx, m); }
@@ -2487,7 +2624,7 @@ static void gen_case(uint64_t seed, long index, case_t *cs, mesh_t *m) {
       case_insert_copy(cs, rint_(&r, cs->n + 1), &one.c[0]);
       case_free(&one);
     }
-    if (!chance(&r, s >= 116 ? 0.45 : s >= 100 ? 0.35 : 0.1)) mutate_case(&r, cs, &cx);
+    if (!chance(&r, s >= 116 || (s >= 52 && s < 58) ? 0.45 : s >= 100 ? 0.35 : 0.1)) mutate_case(&r, cs, &cx);
     else cs->pristine = 1;
   } else {
     /* (b) a fully random sequence */
@@ -2619,8 +2756,14 @@ typedef struct {
   double pair_mu[64];
   int contact_law;
   long coul_gen;
+  /* the mortar weighting: pairs declared with a contact mesh of their own
+   * (the weighting refuses them), the last contact solve's results are
+   * per slave node (a solve under the mortar weighting) */
+  int mesh_pairs;
+  int res_mortar;
   /* The following survive a new mesh (they are the model's). */
   int threads;     /* set by tfem_set_threads (0: the process-wide pool) */
+  int weighting;   /* set by tfem_set_contact_weighting (0 strip, the default; 1 mortar) */
   long prob_gen;   /* changes of the problem */
   long sol_gen;    /* changes of the results (solves, changes of the problem) */
   /* snapshots: the contact mesh B, the contact elements of a contact solve
@@ -2654,10 +2797,11 @@ static void sh_clear_mesh(shadow_t *s) {
   free(s->presc);
   free(s->cmesh);
   free(s->celem);
-  int threads = s->threads;
+  int threads = s->threads, weighting = s->weighting;
   long pg = s->prob_gen, sg = s->sol_gen;
   sh_init(s);
   s->threads = threads;
+  s->weighting = weighting;
   s->prob_gen = pg + 1;
   s->sol_gen = sg + 1;
 }
@@ -3004,6 +3148,7 @@ typedef struct {
   tfem_contact_report ref_rep;
   uint64_t ref_disp;
   int ref_idx;
+  long mortar_refused_gen; /* results generation of a refused mortar solve (-1: none) */
 } runner_t;
 
 static void c_emit_call(FILE *f, const call_t *c, int idx);
@@ -3087,6 +3232,11 @@ static long required_len(runner_t *R, const call_t *c, int j) {
     return (long)strlen(b) + 1;
   }
   case R_NEQ: return R->cs->coupled ? R->cs->neq : -1;
+  case R_SLAVE: { /* the report's elements (slave nodes after a mortar solve) */
+    tfem_contact_report rep;
+    if (c->null_model || tfem_get_contact_report(R->m, &rep) != TFEM_STATUS_OK) return -1;
+    return rep.elements;
+  }
   case R_CN: case R_2CN: case R_CE: case R_3CE: case R_6CE: case R_36CE: case R_CP: {
     int cn, ce;
     int64_t np;
@@ -3447,13 +3597,103 @@ static void oracle_gaps(runner_t *R, int idx, const double *gap) {
     if (gap[v] < mn) mn = gap[v];
   }
   tfem_contact_report rep;
-  int checked = !bad && s->contact_test == TFEM_INVERSION_TEST_LINEARISED &&
+  int checked = !bad && s->contact_test == TFEM_INVERSION_TEST_LINEARISED && !s->res_mortar &&
                 tfem_get_contact_report(R->m, &rep) == TFEM_STATUS_OK && rep.max_penetration > 0;
   R->oracles[O_GAP_PEN] += checked;
   if (checked && !(fabs(mn + rep.max_penetration) <= 1e-14 * rep.max_penetration))
     finding(R, V_CONTACT, idx, "smallest gap %.17g, but the report's max_penetration is %.17g (relative difference %.3g)",
             mn, rep.max_penetration, fabs(mn + rep.max_penetration) / rep.max_penetration);
   free(in);
+}
+
+/* tfem_get_contact_slave_nodes (OK: after a mortar solve), against the
+ * report and a read of all four columns at the exact length n = the
+ * report's elements: the columns the call asked for are those values, bit
+ * for bit, and nothing past n is written; nodes in range; tributaries
+ * finite and > 0; gaps finite; pressures finite and >= 0, > 0 only where
+ * the mean gap is negative (p = -kappa G); the nodes with a pressure are
+ * as many as the report's active ones, their tributaries sum to the
+ * report's contact length (1e-12 relative) and their largest -gap is its
+ * max_penetration (1e-14 relative). */
+#if !API_FUZZ_MORTAR_TENSION
+static double max_displacement(tfem_model *m) {
+  int nn = -1, nt, nc;
+  double mx = NAN;
+  if (tfem_get_sizes(m, &nn, &nt, &nc) != TFEM_STATUS_OK || nn < 0) return mx;
+  double *u = xmalloc(sizeof(double) * 2 * (size_t)nn + 1);
+  if (tfem_get_displacements(m, u, 2 * (size_t)nn) == TFEM_STATUS_OK) {
+    mx = 0;
+    for (int k = 0; k < 2 * nn; ++k) mx = fmax(mx, fabs(u[k]));
+  }
+  free(u);
+  return mx;
+}
+#endif
+static void oracle_slave_nodes(runner_t *R, int idx, const call_t *c, const gbuf *g) {
+  shadow_t *s = &R->sh;
+  tfem_contact_report rep;
+  if (tfem_get_contact_report(R->m, &rep) != TFEM_STATUS_OK) {
+    finding(R, V_WEIGHTING, idx, "slave nodes OK, but tfem_get_contact_report refused");
+    return;
+  }
+  long n = rep.elements;
+  if (n < 0 || n > 10000000) return;
+  int *node = xmalloc(sizeof(int) * (size_t)n + 1);
+  double *col[3];
+  for (int k = 0; k < 3; ++k) col[k] = xmalloc(sizeof(double) * (size_t)n + 1);
+  int st = tfem_get_contact_slave_nodes(R->m, node, col[0], col[1], col[2], (size_t)n);
+  R->oracles[O_SLAVE]++;
+  if (st != TFEM_STATUS_OK) {
+    finding(R, V_WEIGHTING, idx, "OK, but all four columns at length n = %ld give %s", n, status_name(st));
+    goto done;
+  }
+  for (int j = 0; j < 4; ++j) {
+    if (c->out[j].null_) continue;
+    const void *mine = j == 0 ? (const void *)node : (const void *)col[j - 1];
+    size_t es = ksize(g[j].kind), m = (size_t)n < g[j].n ? (size_t)n : g[j].n;
+    if (memcmp(g[j].p, mine, es * m) != 0) {
+      finding(R, V_WEIGHTING, idx, "column %d differs from the same column read with all four", j);
+      break;
+    }
+    for (size_t i = (size_t)n; i < g[j].n; ++i)
+      if (!gb_is_pattern(&g[j], i)) {
+        finding(R, V_WEIGHTING, idx, "column %d element %zu written, past the %ld slave nodes (length %zu)", j, i, n,
+                g[j].n);
+        break;
+      }
+  }
+  long act = 0;
+  double sum = 0, pen = 0;
+  for (long i = 0; i < n; ++i) {
+    double t = col[0][i], gp = col[1][i], p = col[2][i];
+    if (s->exact && (node[i] < s->base || node[i] >= s->base + s->nn)) {
+      finding(R, V_WEIGHTING, idx, "slave node %ld is node %d, out of range", i, node[i]);
+      goto done;
+    }
+    int sign_bad = isfinite(p) && isfinite(gp) && (p < 0 || (p > 0 && !(gp < 0)));
+#if !API_FUZZ_MORTAR_TENSION
+    if (sign_bad && fabs(gp) <= 1e-12 * max_displacement(R->m)) sign_bad = 0; /* (the known round-off above) */
+#endif
+    if (!(isfinite(t) && t > 0) || !isfinite(gp) || !isfinite(p) || sign_bad) {
+      finding(R, V_WEIGHTING, idx, "slave node %ld (node %d): tributary %.17g, gap %.17g, pressure %.17g", i, node[i],
+              t, gp, p);
+      goto done;
+    }
+    if (p > 0) ++act, sum += t, pen = fmax(pen, -gp);
+  }
+  if (act > rep.active) {
+    finding(R, V_WEIGHTING, idx, "%ld slave nodes with a pressure, %d active in the report", act, rep.active);
+  } else if (act == rep.active) {
+    if (!(fabs(sum - rep.contact_length) <= 1e-12 * fabs(rep.contact_length)))
+      finding(R, V_WEIGHTING, idx, "the tributaries of the %ld active slave nodes sum to %.17g, the report's contact "
+              "length is %.17g", act, sum, rep.contact_length);
+    else if (!(fabs(pen - rep.max_penetration) <= 1e-14 * rep.max_penetration))
+      finding(R, V_WEIGHTING, idx, "the largest -gap of the active slave nodes is %.17g, the report's max_penetration "
+              "%.17g", pen, rep.max_penetration);
+  }
+done:
+  free(node);
+  for (int k = 0; k < 3; ++k) free(col[k]);
 }
 
 /* tfem_get_external_work: the sum of f.u over the loads known here and the
@@ -3679,6 +3919,7 @@ static int twin_exec(tfem_model **mp, const call_t *c) {
   case F_SET_CONTACT_STATE: return tfem_set_contact_state(m, in[0], c->in[0].n > 0 ? (size_t)c->in[0].n : 0);
   case F_SET_FRICTION: return tfem_set_friction(m, c->iv[0], v0);
   case F_SET_PRESCRIBED: return tfem_set_prescribed(m, c->iv[0], c->iv[1], v0);
+  case F_SET_CONTACT_WEIGHTING: return tfem_set_contact_weighting(m, c->iv[0]);
   case F_ADD_CONTACT_PAIRS_AUTO:
     if (c->tw == 3) return tfem_add_contact_pair(m, c->tw_a, c->tw_b, NULL);
     return tfem_add_contact_pairs_auto(m, c->iv[0], in[0], v0, NULL, NULL);
@@ -4086,6 +4327,12 @@ static void exec_call(runner_t *R, int idx) {
   if (R->phase == 0) {
     resolve_outputs(R, c);
     if (fn == F_CONTACT_PATTERN) c->out[1].len = c->out[0].len; /* (one length for both) */
+    if (fn == F_GET_CONTACT_SLAVE_NODES) { /* (one length for the four: the last one not exact, else the first's) */
+      size_t L = c->out[0].len;
+      for (int j = 0; j < 4; ++j)
+        if (c->out[j].ls != LS_EXACT) L = c->out[j].len;
+      for (int j = 0; j < 4; ++j) c->out[j].len = L;
+    }
     make_inputs(R, c, idx);
   }
   const void *in[MAXIN];
@@ -4236,6 +4483,11 @@ static void exec_call(runner_t *R, int idx) {
   case F_WRITE_VTU: st = tfem_write_vtu(m, path); break;
   case F_GET_WARNING_SIZE: st = tfem_get_warning_size(m, c->iv[0], o[0]); break;
   case F_CONTACT_LAST_ERROR_LENGTH: lel = tfem_contact_last_error_length(hc); break;
+  case F_SET_CONTACT_WEIGHTING: st = tfem_set_contact_weighting(m, c->iv[0]); break;
+  case F_GET_CONTACT_WEIGHTING: st = tfem_get_contact_weighting(m, o[0]); break;
+  case F_GET_CONTACT_SLAVE_NODES:
+    st = tfem_get_contact_slave_nodes(m, o[0], o[1], o[2], o[3], c->out[0].len);
+    break;
   case F_DESTROY_NULL: tfem_destroy(NULL); break;
   case F_RECREATE:
     tfem_destroy(R->m);
@@ -4284,7 +4536,7 @@ static void exec_call(runner_t *R, int idx) {
       if (!ver || strcmp(ver, (const char *)c->saved[0]) != 0) snprintf(why, sizeof why, "version string differs");
     } else if (fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH) {
       for (int j = 0; j < nout && !why[0]; ++j) {
-        if (c->out[j].null_) continue;
+        if (c->out[j].null_ || (j == 2 && c->skip_values)) continue;
         size_t nb;
         unsigned char *b = out_bytes(&g[j], &nb);
         if (nb != c->saved_n[j] || memcmp(b, c->saved[j], nb) != 0) {
@@ -4695,6 +4947,9 @@ static void exec_call(runner_t *R, int idx) {
                      fn == F_GET_CONTACT_NODAL_PRESSURES || fn == F_GET_CONTACT_PAIR_NODAL_PRESSURES ||
                      fn == F_GET_CONTACT_SHEAR || fn == F_GET_CONTACT_FRICTION_STATE ||
                      fn == F_GET_CONTACT_DISSIPATION;
+  /* the outputs per element of B that the mortar weighting refuses */
+  int per_element = fn == F_GET_CONTACT_ACTIVE || fn == F_GET_CONTACT_PRESSURE || fn == F_GET_CONTACT_SHEAR ||
+                    fn == F_GET_CONTACT_FRICTION_STATE || fn == F_GET_CONTACT_DISSIPATION;
   if (st != TFEM_STATUS_OK && st != TFEM_STATUS_NULL_POINTER && !c->null_model && fn == F_GET_CONTACT_PAIR_BODIES &&
       s->has_mesh && c->iv[0] >= 0 && c->iv[0] < s->npairs)
     finding(R, V_CONTACT, idx, "%s for pair %d of the %d declared: \"%.160s\"", status_name(st), c->iv[0], s->npairs, msg);
@@ -4708,7 +4963,7 @@ static void exec_call(runner_t *R, int idx) {
       else
         finding(R, V_RESULTS_LOST, idx, "INVALID_STATE although the last %s solve succeeded and nothing changed the problem since: \"%.160s\"",
                 s->results == 2 ? "contact" : s->results == 3 ? "load step" : "plain", msg);
-    } else if (need_contact && s->results == 2) {
+    } else if (need_contact && s->results == 2 && !(per_element && s->res_mortar)) {
       finding(R, V_RESULTS_LOST, idx, "contact results gone although nothing changed the problem since the contact solve: \"%.160s\"", msg);
     }
   }
@@ -4817,6 +5072,71 @@ static void exec_call(runner_t *R, int idx) {
   if (!c->null_model && fn == F_ADD_CONTACT_PAIRS_AUTO && st != TFEM_STATUS_OK && s->has_mesh && c->iv[0] >= 0 &&
       (c->iv[0] == 0 || !c->in[0].null_) && !(isfinite(c->dv[0]) && c->dv[0] >= 0) && st != TFEM_STATUS_INVALID_ARGUMENT)
     finding(R, V_AUTO_PAIRS, idx, "tolerance %g refused with %s, not INVALID_ARGUMENT", c->dv[0], status_name(st));
+  /* ---- the mortar weighting (tfem_set_contact_weighting) ---- */
+  if (c->want && R->pristine && idx < R->full_prefix && st != c->want - 1)
+    finding(R, V_WEIGHTING, idx, "%s, the scene expects %s (weighting %d): \"%.160s\"", status_name(st),
+            status_name(c->want - 1), s->weighting, msg);
+  if (!c->null_model && fn == F_SET_CONTACT_WEIGHTING) {
+    /* 0 or 1 accepted, anything else INVALID_ARGUMENT (the replay checks
+     * that a refusal changed nothing; get_weighting that the shadow's is kept) */
+    int w = c->iv[0], valid = w == TFEM_CONTACT_WEIGHTING_STRIP || w == TFEM_CONTACT_WEIGHTING_MORTAR;
+    R->oracles[O_WEIGHTING]++;
+    if (st == TFEM_STATUS_OK && !valid)
+      finding(R, V_WEIGHTING, idx, "tfem_set_contact_weighting(%d) is OK (0 strip, 1 mortar only)", w);
+    else if (st != TFEM_STATUS_OK && valid)
+      finding(R, V_WEIGHTING, idx, "tfem_set_contact_weighting(%d) refused: %s \"%.160s\"", w, status_name(st), msg);
+    else if (st != TFEM_STATUS_OK && st != TFEM_STATUS_INVALID_ARGUMENT)
+      finding(R, V_WEIGHTING, idx, "tfem_set_contact_weighting(%d) refused with %s, not INVALID_ARGUMENT", w,
+              status_name(st));
+  }
+  if (!c->null_model && fn == F_GET_CONTACT_WEIGHTING && !c->out[0].null_) {
+    int w = INT_MIN;
+    if (st == TFEM_STATUS_OK) memcpy(&w, g[0].p, sizeof w);
+    R->oracles[O_WEIGHTING]++;
+    if (st != TFEM_STATUS_OK)
+      finding(R, V_WEIGHTING, idx, "tfem_get_contact_weighting refused: %s \"%.160s\"", status_name(st), msg);
+    else if (w != s->weighting)
+      finding(R, V_WEIGHTING, idx, "weighting %d, but the last one set successfully is %d", w, s->weighting);
+  }
+  if (!c->null_model && fn == F_GET_CONTACT_SLAVE_NODES && s->has_mesh && !s->res_unknown) {
+    /* after a mortar solve: OK, BUFFER_TOO_SMALL for length < n; else
+     * (no contact results, or the strip's) INVALID_STATE */
+    int mortar = s->results == 2 && s->res_mortar;
+    long n = c->out[0].req;
+    R->oracles[O_WEIGHTING]++;
+    if (!mortar && st != TFEM_STATUS_INVALID_STATE)
+      finding(R, V_WEIGHTING, idx, "%s %s: \"%.160s\"", status_name(st),
+              s->results == 2 ? "after a contact solve under the strip weighting" : "without contact results", msg);
+    else if (mortar && n >= 0 && c->out[0].len < (size_t)n && st != TFEM_STATUS_BUFFER_TOO_SMALL)
+      finding(R, V_WEIGHTING, idx, "%s with length %zu for %ld slave nodes: \"%.160s\"", status_name(st), c->out[0].len,
+              n, msg);
+    else if (mortar && n >= 0 && c->out[0].len >= (size_t)n && st != TFEM_STATUS_OK)
+      finding(R, V_WEIGHTING, idx, "%s after a mortar solve, length %zu for %ld slave nodes: \"%.160s\"",
+              status_name(st), c->out[0].len, n, msg);
+  }
+  if (!c->null_model && st == TFEM_STATUS_OK && fn == F_GET_CONTACT_SLAVE_NODES) oracle_slave_nodes(R, idx, c, g);
+  if (!c->null_model && per_element && s->has_mesh && !s->res_unknown && s->results == 2 && s->res_mortar) {
+    R->oracles[O_WEIGHTING]++;
+    if (st != TFEM_STATUS_INVALID_STATE && !(st == TFEM_STATUS_NULL_POINTER && c->out[0].null_))
+      finding(R, V_WEIGHTING, idx, "%s after a solve under the mortar weighting (the header: refused, INVALID_STATE)",
+              status_name(st));
+  }
+  if (!c->null_model && fn == F_STEP && s->weighting == TFEM_CONTACT_WEIGHTING_MORTAR) {
+    R->oracles[O_WEIGHTING]++;
+    if (st == TFEM_STATUS_OK) finding(R, V_WEIGHTING, idx, "tfem_step is OK under the mortar weighting");
+  }
+  if (!c->null_model && fn == F_SOLVE_CONTACT && s->weighting == TFEM_CONTACT_WEIGHTING_MORTAR && s->has_mesh) {
+    /* frictionless single solves only, on the pairs' own sides */
+    int any_mu = 0;
+    for (int k = 0; k < s->npairs && k < 64; ++k) any_mu |= s->pair_mu[k] != 0.0;
+    int stick = !c->in[0].null_ && c->iv[0] == TFEM_CONTACT_LAW_STICK;
+    int literal = !c->in[0].null_ && c->iv[1] == TFEM_INVERSION_TEST_LITERAL;
+    const char *why = any_mu ? "friction" : stick ? "the stick law" : literal ? "the literal inversion test"
+                    : s->mesh_pairs ? "a pair with its own contact mesh" : NULL;
+    R->oracles[O_WEIGHTING] += why != NULL;
+    if (why && st == TFEM_STATUS_OK) finding(R, V_WEIGHTING, idx, "OK under the mortar weighting with %s", why);
+  }
+
   if (st == TFEM_STATUS_OK && !c->null_model) {
     switch (fn) {
     case F_SET_MESH: {
@@ -4905,7 +5225,12 @@ static void exec_call(runner_t *R, int idx) {
       }
       if (s->npairs < 64) s->pair_mu[s->npairs] = 0.0;
       s->npairs++;
+      s->mesh_pairs += fn == F_ADD_CONTACT_PAIR_WITH_MESH;
       break;
+    case F_SET_CONTACT_WEIGHTING:
+      if (c->iv[0] == s->weighting) goto keep_results; /* the same: nothing changes */
+      s->weighting = c->iv[0];
+      break; /* a change discards the results */
     case F_SET_THREADS:
       if (c->iv[0] < 0) finding(R, V_THREADS, idx, "tfem_set_threads(%d) is OK", c->iv[0]);
       s->threads = c->iv[0];
@@ -5053,6 +5378,7 @@ static void exec_call(runner_t *R, int idx) {
       s->matrix_dropped = 0;
       s->sol_gen++;
       s->contact_test = fn == F_SOLVE_CONTACT && !c->in[0].null_ ? c->iv[1] : TFEM_INVERSION_TEST_LINEARISED;
+      s->res_mortar = fn == F_SOLVE_CONTACT && s->weighting == TFEM_CONTACT_WEIGHTING_MORTAR;
       s->contact_law = fn == F_SOLVE_CONTACT && !c->in[0].null_ ? c->iv[0] : TFEM_CONTACT_LAW_FRICTIONLESS;
       s->relres = NAN;
       if (!c->out[0].null_) {
@@ -5137,6 +5463,7 @@ static void exec_call(runner_t *R, int idx) {
     case F_RECREATE:
       sh_clear_mesh(s);
       s->threads = 0;
+      s->weighting = TFEM_CONTACT_WEIGHTING_STRIP;
       goto keep_results;
     case F_SET_CONTACT_STATE: {
 #if !API_FUZZ_FRICTION_STATE_RESULTS
@@ -5220,6 +5547,14 @@ static void exec_call(runner_t *R, int idx) {
   keep_results:;
   }
   if (st != TFEM_STATUS_OK && !c->null_model && (fn == F_SOLVE || fn == F_SOLVE_CONTACT)) s->matrix_dropped = 1;
+#if !API_FUZZ_MORTAR_REFUSAL_MATRIX
+  if (st != TFEM_STATUS_OK && !c->null_model && fn == F_SOLVE_CONTACT && s->weighting == TFEM_CONTACT_WEIGHTING_MORTAR &&
+      s->results) {
+    R->mortar_refused_gen = s->sol_gen; /* (the known defect above) */
+    s->mat_gen = -1;
+  }
+  if (fn == F_GET_MATRIX && R->mortar_refused_gen == s->sol_gen) c->skip_values = 1;
+#endif
 
   /* Keep the outputs for the replay. */
   if (st == TFEM_STATUS_OK) {
@@ -5538,6 +5873,11 @@ static void c_emit_call(FILE *f, const call_t *c, int idx) {
   case F_CONTACT_LAST_ERROR_LENGTH:
     fprintf(f, "    printf(\"%%s #%d length %%zu\\n\", L, tfem_contact_last_error_length(%s));\n", idx, H);
     break;
+  case F_SET_CONTACT_WEIGHTING: fprintf(f, "    s = tfem_set_contact_weighting(%s, %d);\n", M, I[0]); break;
+  case F_GET_CONTACT_WEIGHTING: fprintf(f, "    s = tfem_get_contact_weighting(%s, %s);\n", M, o[0]); break;
+  case F_GET_CONTACT_SLAVE_NODES:
+    fprintf(f, "    s = tfem_get_contact_slave_nodes(%s, %s, %s, %s, %s, %zu);\n", M, o[0], o[1], o[2], o[3], len[0]);
+    break;
   case F_DESTROY_NULL: fprintf(f, "    tfem_destroy(NULL);\n"); break;
   case F_RECREATE: fprintf(f, "    tfem_destroy(m);\n    m = tfem_create();\n"); break;
   default: break;
@@ -5623,6 +5963,7 @@ static void run_case(uint64_t seed, long index, int verbose, case_result *res) {
   R.verbose = verbose;
   R.pristine = cs.pristine;
   R.full_prefix = full_prefix;
+  R.mortar_refused_gen = -1;
   sh_init(&R.sh);
   R.cfile = verbose ? g_cfile : NULL;
   if (verbose) {
