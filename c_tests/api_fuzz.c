@@ -264,22 +264,8 @@ static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetrat
 #define API_FUZZ_DISSIPATION_SIGN 1
 #endif
 
-/* A library defect this tester found when the mortar weighting was added
- * (c_tests/README.md, "The 3 entry points of the mortar weighting"): a
- * tfem_solve_contact refused under the mortar weighting (the stick law or
- * the literal inversion test: INVALID_ARGUMENT) after a successful mortar
- * solve changes the system matrix in the last bits (8651302401.3024006
- * against 8651302401.3023987 without the refused call: seed 1 case 11409,
- * seed 11 case 7407 of the commit that added it): a failed call changed
- * the model. The replay
- * does not compare the matrix values read after such a refusal (and the
- * results-kept oracle forgets the matrix there) unless built with
- * -DAPI_FUZZ_MORTAR_REFUSAL_MATRIX=1 (then state_change). */
-#ifndef API_FUZZ_MORTAR_REFUSAL_MATRIX
-#define API_FUZZ_MORTAR_REFUSAL_MATRIX 0
-#endif
-
-/* Another (same README section), at round-off: an active slave node can
+/* A finding (c_tests/README.md, "The 3 entry points of the mortar
+ * weighting"), at round-off: an active slave node can
  * end with a positive mean gap at round-off and so a negative pressure
  * (no load: gap 4.3e-18, pressure -4.3e-6, seed 11 case 6858 of the commit
  * that added it; a displacement of 1e200 prescribed: gap 4.9e183, pressure
@@ -723,7 +709,6 @@ typedef struct {
    * of the call and its group */
   int tag, grp;
   int in_made; /* runtime inputs made (the replay passes the same) */
-  int skip_values; /* the replay does not compare this call's output 2 (API_FUZZ_MORTAR_REFUSAL_MATRIX) */
   /* the twin model of a pristine scene (oracle_twin): tw 0 the same call,
    * 1 left out, 2 with dv[0] = tw_val, 3 tfem_add_contact_pair(tw_a, tw_b)
    * instead; expect: pairs tfem_add_contact_pairs_auto must add (-1
@@ -3148,7 +3133,6 @@ typedef struct {
   tfem_contact_report ref_rep;
   uint64_t ref_disp;
   int ref_idx;
-  long mortar_refused_gen; /* results generation of a refused mortar solve (-1: none) */
 } runner_t;
 
 static void c_emit_call(FILE *f, const call_t *c, int idx);
@@ -4536,7 +4520,7 @@ static void exec_call(runner_t *R, int idx) {
       if (!ver || strcmp(ver, (const char *)c->saved[0]) != 0) snprintf(why, sizeof why, "version string differs");
     } else if (fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH) {
       for (int j = 0; j < nout && !why[0]; ++j) {
-        if (c->out[j].null_ || (j == 2 && c->skip_values)) continue;
+        if (c->out[j].null_) continue;
         size_t nb;
         unsigned char *b = out_bytes(&g[j], &nb);
         if (nb != c->saved_n[j] || memcmp(b, c->saved[j], nb) != 0) {
@@ -4949,7 +4933,8 @@ static void exec_call(runner_t *R, int idx) {
                      fn == F_GET_CONTACT_DISSIPATION;
   /* the outputs per element of B that the mortar weighting refuses */
   int per_element = fn == F_GET_CONTACT_ACTIVE || fn == F_GET_CONTACT_PRESSURE || fn == F_GET_CONTACT_SHEAR ||
-                    fn == F_GET_CONTACT_FRICTION_STATE || fn == F_GET_CONTACT_DISSIPATION;
+                    fn == F_GET_CONTACT_FRICTION_STATE || fn == F_GET_CONTACT_DISSIPATION ||
+                    fn == F_GET_CONTACT_ELEMENTS;
   if (st != TFEM_STATUS_OK && st != TFEM_STATUS_NULL_POINTER && !c->null_model && fn == F_GET_CONTACT_PAIR_BODIES &&
       s->has_mesh && c->iv[0] >= 0 && c->iv[0] < s->npairs)
     finding(R, V_CONTACT, idx, "%s for pair %d of the %d declared: \"%.160s\"", status_name(st), c->iv[0], s->npairs, msg);
@@ -5547,14 +5532,6 @@ static void exec_call(runner_t *R, int idx) {
   keep_results:;
   }
   if (st != TFEM_STATUS_OK && !c->null_model && (fn == F_SOLVE || fn == F_SOLVE_CONTACT)) s->matrix_dropped = 1;
-#if !API_FUZZ_MORTAR_REFUSAL_MATRIX
-  if (st != TFEM_STATUS_OK && !c->null_model && fn == F_SOLVE_CONTACT && s->weighting == TFEM_CONTACT_WEIGHTING_MORTAR &&
-      s->results) {
-    R->mortar_refused_gen = s->sol_gen; /* (the known defect above) */
-    s->mat_gen = -1;
-  }
-  if (fn == F_GET_MATRIX && R->mortar_refused_gen == s->sol_gen) c->skip_values = 1;
-#endif
 
   /* Keep the outputs for the replay. */
   if (st == TFEM_STATUS_OK) {
@@ -5963,7 +5940,6 @@ static void run_case(uint64_t seed, long index, int verbose, case_result *res) {
   R.verbose = verbose;
   R.pristine = cs.pristine;
   R.full_prefix = full_prefix;
-  R.mortar_refused_gen = -1;
   sh_init(&R.sh);
   R.cfile = verbose ? g_cfile : NULL;
   if (verbose) {

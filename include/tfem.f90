@@ -1072,7 +1072,8 @@ module tfem
 
   interface tfem_get_contact_elements
     !> Copies the nodes of every contact element (3·n_contact_elements indices, in the model's index
-    !! base), oriented so that J > 0 when the gap opens. Fortran: `length` takes an
+    !! base), oriented so that J > 0 when the gap opens. Refused (TFEM_STATUS_INVALID_STATE) after a
+    !! solve under the mortar weighting, which uses no B. Fortran: `length` takes an
     !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
     !! as 0.
     function tfem_get_contact_elements(model, out, length) &
@@ -1174,10 +1175,12 @@ module tfem
     !! whatever the two sides' nodes, and the right reading on a stiff curved tool; frictionless
     !! `tfem_solve_contact` only). A change discards the results, like any change of the contact
     !! pairs. Under the mortar weighting `tfem_step` and friction are refused, and so are the
-    !! per-element outputs (`tfem_get_contact_active`, `tfem_get_contact_pressure`, shear, friction
-    !! state, dissipation): the state is per slave node (`tfem_get_contact_slave_nodes`); nodal
-    !! pressures, gaps and forces, reactions and the report work as under the strip, the report's
-    !! `elements` counting slave nodes.
+    !! per-element outputs (`tfem_get_contact_active`, `tfem_get_contact_pressure`,
+    !! `tfem_get_contact_elements`, shear, friction state, dissipation; `tfem_get_sizes` gives 0
+    !! contact elements; `tfem_get_contact_mesh` still gives the strip B the pairs would make): the
+    !! state is per slave node (`tfem_get_contact_slave_nodes`); nodal pressures, gaps and forces,
+    !! reactions and the report work as under the strip, the report's `elements` counting slave
+    !! nodes.
     function tfem_set_contact_weighting(model, weighting) &
         bind(C, name="tfem_set_contact_weighting") result(status)
       import
@@ -1203,11 +1206,13 @@ module tfem
     !! the report's `elements`, in the order of the pairs: `node` (n values: the slave node, in the
     !! model's index base), `tributary` (n values: m_i, the length its hat covers where it faces the
     !! other side), `gap` (n values: the mean gap G_i/m_i, negative where the bodies overlap) and
-    !! `pressure` (n values: −κG_i/m_i, positive in compression, 0 when inactive). Any pointer may
-    !! be NULL (that column is not written); `length` (>= n) is the size of each buffer given.
-    !! Refused after a solve under the strip weighting. Fortran: `node`, `tributary`, `gap` and
-    !! `pressure` are OPTIONAL: omit them to pass NULL. `length` takes an integer(c_size_t) or a
-    !! default integer (kind tfem_length_kind); a negative length is passed as 0.
+    !! `pressure` (n values: −κG_i/m_i, positive in compression, 0 when inactive; an active node
+    !! whose weighted gap is at the round-off of the displacements, as where the bodies touch
+    !! without load, can read a pressure of that round-off of either sign). Any pointer may be NULL
+    !! (that column is not written); `length` (>= n) is the size of each buffer given. Refused after
+    !! a solve under the strip weighting. Fortran: `node`, `tributary`, `gap` and `pressure` are
+    !! OPTIONAL: omit them to pass NULL. `length` takes an integer(c_size_t) or a default integer
+    !! (kind tfem_length_kind); a negative length is passed as 0.
     function tfem_get_contact_slave_nodes(model, node, tributary, gap, pressure, length) &
         bind(C, name="tfem_get_contact_slave_nodes") result(status)
       import

@@ -878,7 +878,8 @@ enum tfem_status tfem_get_contact_pressure(struct tfem_model *model, double *out
 /**
  * Copies the nodes of every contact element (3·n_contact_elements
  * indices, in the model's index base), oriented so that J > 0 when the gap
- * opens.
+ * opens. Refused (TFEM_STATUS_INVALID_STATE) after a solve under
+ * the mortar weighting, which uses no B.
  */
 enum tfem_status tfem_get_contact_elements(struct tfem_model *model, int *out, size_t length);
 
@@ -949,7 +950,10 @@ enum tfem_status tfem_get_contact_nodal_pressures(struct tfem_model *model,
  * results, like any change of the contact pairs. Under the mortar
  * weighting `tfem_step` and friction are refused, and so are the
  * per-element outputs (`tfem_get_contact_active`,
- * `tfem_get_contact_pressure`, shear, friction state, dissipation): the
+ * `tfem_get_contact_pressure`, `tfem_get_contact_elements`, shear,
+ * friction state, dissipation; `tfem_get_sizes` gives 0 contact
+ * elements; `tfem_get_contact_mesh` still gives the strip B the pairs
+ * would make): the
  * state is per slave node (`tfem_get_contact_slave_nodes`); nodal
  * pressures, gaps and forces, reactions and the report work as under the
  * strip, the report's `elements` counting slave nodes.
@@ -969,7 +973,9 @@ enum tfem_status tfem_get_contact_weighting(struct tfem_model *model, int *weigh
  * `tributary` (n values: m_i, the length its hat covers where it faces
  * the other side), `gap` (n values: the mean gap G_i/m_i, negative where
  * the bodies overlap) and `pressure` (n values: −κG_i/m_i, positive in
- * compression, 0 when inactive). Any pointer may be NULL (that column is
+ * compression, 0 when inactive; an active node whose weighted gap is at
+ * the round-off of the displacements, as where the bodies touch without
+ * load, can read a pressure of that round-off of either sign). Any pointer may be NULL (that column is
  * not written); `length` (>= n) is the size of each buffer given. Refused
  * after a solve under the strip weighting.
  */

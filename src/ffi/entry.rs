@@ -1037,7 +1037,8 @@ pub unsafe extern "C" fn tfem_get_contact_pressure(
 
 /// Copies the nodes of every contact element (3·n_contact_elements
 /// indices, in the model's index base), oriented so that J > 0 when the gap
-/// opens.
+/// opens. Refused (TFEM_STATUS_INVALID_STATE) after a solve under
+/// the mortar weighting, which uses no B.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_contact_elements(
     model: *mut TfemModel,
@@ -1147,7 +1148,10 @@ pub unsafe extern "C" fn tfem_get_contact_nodal_pressures(
 /// results, like any change of the contact pairs. Under the mortar
 /// weighting `tfem_step` and friction are refused, and so are the
 /// per-element outputs (`tfem_get_contact_active`,
-/// `tfem_get_contact_pressure`, shear, friction state, dissipation): the
+/// `tfem_get_contact_pressure`, `tfem_get_contact_elements`, shear,
+/// friction state, dissipation; `tfem_get_sizes` gives 0 contact
+/// elements; `tfem_get_contact_mesh` still gives the strip B the pairs
+/// would make): the
 /// state is per slave node (`tfem_get_contact_slave_nodes`); nodal
 /// pressures, gaps and forces, reactions and the report work as under the
 /// strip, the report's `elements` counting slave nodes.
@@ -1189,7 +1193,9 @@ pub unsafe extern "C" fn tfem_get_contact_weighting(
 /// `tributary` (n values: m_i, the length its hat covers where it faces
 /// the other side), `gap` (n values: the mean gap G_i/m_i, negative where
 /// the bodies overlap) and `pressure` (n values: −κG_i/m_i, positive in
-/// compression, 0 when inactive). Any pointer may be NULL (that column is
+/// compression, 0 when inactive; an active node whose weighted gap is at
+/// the round-off of the displacements, as where the bodies touch without
+/// load, can read a pressure of that round-off of either sign). Any pointer may be NULL (that column is
 /// not written); `length` (>= n) is the size of each buffer given. Refused
 /// after a solve under the strip weighting.
 #[unsafe(no_mangle)]
