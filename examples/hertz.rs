@@ -13,9 +13,9 @@
 //! With `--mortar` the "both sides" columns are the library's nodal
 //! pressures (the slave's −κG_i/m_i, interpolated at the master's nodes).
 
-use tfem::{ContactOptions, ContactWeighting};
 use tfem::scenes::hertz::Hertz;
 use tfem::verification::fitted_rate;
+use tfem::{ContactOptions, ContactWeighting};
 
 fn main() {
     let mut contrast = 1.0;
