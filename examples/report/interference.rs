@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 use std::time::Instant;
 
 use tfem::verification::fitted_rate;
-use tfem::{ContactOptions, PlaneMode};
+use tfem::{ContactOptions, ContactWeighting, PlaneMode};
 
 use crate::Args;
 use crate::common::failure;
@@ -28,7 +28,9 @@ pub(crate) fn interference(report: &mut String, a: &Args) {
          closed-form contact pressure p: *pressure*, the largest nodal contact pressure error on \
          both surfaces; *hoop* and *radial*, the largest error of a grid cell's mean σ_θθ, σ_rr \
          against the closed form at the cell's centre; *bore hoop*, the outer ring's hoop stress \
-         along its bore relative to itself. Rates fitted in h.\n",
+         along its bore relative to itself. Rates fitted in h. *weighting*: the elements of B \
+         (strip, the default) or `ContactWeighting::Mortar` (one weighted gap per node of the \
+         coarser side; here the inner ring's, both sides having the same nodes' angles).\n",
         base.inner_radius,
         base.radius,
         base.outer_radius,
@@ -40,11 +42,16 @@ pub(crate) fn interference(report: &mut String, a: &Args) {
     .unwrap();
     writeln!(
         report,
-        "| plane | δ/b | h | unknowns | iterations | time [s] | p (closed form) [Pa] | pressure error | hoop error | radial error | bore hoop error |\n|---|---|---|---|---|---|---|---|---|---|---|"
+        "| weighting | plane | δ/b | h | unknowns | iterations | time [s] | p (closed form) [Pa] | pressure error | hoop error | radial error | bore hoop error |\n|---|---|---|---|---|---|---|---|---|---|---|---|"
     )
     .unwrap();
     let mut rates = Vec::new();
-    for plane in [PlaneMode::Strain, PlaneMode::Stress] {
+    let weightings = [ContactWeighting::Strip, ContactWeighting::Mortar];
+    for (weighting, plane) in weightings
+        .into_iter()
+        .flat_map(|w| [PlaneMode::Strain, PlaneMode::Stress].map(|p| (w, p)))
+    {
+        let w = format!("{weighting:?}").to_lowercase();
         for delta in [1e-2, 1e-4, 1e-6] {
             let (mut hs, mut ep, mut eh, mut er) = (vec![], vec![], vec![], vec![]);
             for &k in &levels {
@@ -55,15 +62,16 @@ pub(crate) fn interference(report: &mut String, a: &Args) {
                     ..base
                 };
                 let t0 = Instant::now();
-                let r = lame
-                    .build()
-                    .and_then(|mut s| s.solve(&lame, &ContactOptions::default()));
+                let r = lame.build().and_then(|mut s| {
+                    s.model.set_contact_weighting(weighting);
+                    s.solve(&lame, &ContactOptions::default())
+                });
                 let t = t0.elapsed().as_secs_f64();
                 match r {
                     Ok(r) => {
                         writeln!(
                             report,
-                            "| {plane:?} | {delta:.0e} | b/{k} | {} | {} | {t:.3} | {:.4e} | {:.2e} | {:.2e} | {:.2e} | {:.2e} |",
+                            "| {w} | {plane:?} | {delta:.0e} | b/{k} | {} | {} | {t:.3} | {:.4e} | {:.2e} | {:.2e} | {:.2e} | {:.2e} |",
                             r.report.info.unknowns,
                             r.report.iterations,
                             r.exact.pressure,
@@ -80,7 +88,7 @@ pub(crate) fn interference(report: &mut String, a: &Args) {
                     }
                     Err(e) => writeln!(
                         report,
-                        "| {plane:?} | {delta:.0e} | b/{k} | {} | | | | | | | |",
+                        "| {w} | {plane:?} | {delta:.0e} | b/{k} | {} | | | | | | | |",
                         failure(&e)
                     )
                     .unwrap(),
@@ -88,7 +96,7 @@ pub(crate) fn interference(report: &mut String, a: &Args) {
             }
             if hs.len() >= 2 {
                 rates.push(format!(
-                    "| {plane:?} | {delta:.0e} | {:.2} | {:.2} | {:.2} |",
+                    "| {w} | {plane:?} | {delta:.0e} | {:.2} | {:.2} | {:.2} |",
                     fitted_rate(&hs, &ep),
                     fitted_rate(&hs, &eh),
                     fitted_rate(&hs, &er)
@@ -98,7 +106,7 @@ pub(crate) fn interference(report: &mut String, a: &Args) {
     }
     writeln!(
         report,
-        "\nFitted rates in h:\n\n| plane | δ/b | pressure | hoop | radial |\n|---|---|---|---|---|\n{}\n",
+        "\nFitted rates in h:\n\n| weighting | plane | δ/b | pressure | hoop | radial |\n|---|---|---|---|---|---|\n{}\n",
         rates.join("\n")
     )
     .unwrap();
