@@ -872,7 +872,8 @@ impl Model {
     /// pressure, active) after a contact solve under the mortar weighting
     /// ([`ContactWeighting::Mortar`]); refused after one under the strip's.
     pub fn contact_slave_nodes(&self) -> Result<&[SlaveNode]> {
-        self.contact_solution()?.mortar.as_deref().ok_or_else(|| {
+        let state = self.contact_solution()?.mortar.as_ref();
+        state.map(|m| &m.nodes[..]).ok_or_else(|| {
             Error::state(
                 "the last contact solve used the strip weighting: its state is per element \
                  of B (contact_active, contact_pressure), not per slave node",
@@ -985,9 +986,9 @@ impl Model {
     /// nodes of the other side that its weighted gaps read, the slave's
     /// pressure interpolated along the nearest slave edge.
     pub fn contact_nodal_pressures(&self) -> Result<Vec<f64>> {
-        if let Some(slaves) = &self.contact_solution()?.mortar {
+        if let Some(state) = &self.contact_solution()?.mortar {
             let (mesh, pairs) = (self.problem.mesh_ref()?, self.problem.contact_pairs());
-            return solve::mortar::nodal_values(mesh, pairs, slaves, None, |s| s.pressure);
+            return solve::mortar::nodal_values(mesh, pairs, state, None, |s| s.pressure);
         }
         self.interface_pressures(self.contact_elements()?)
     }
@@ -1006,9 +1007,9 @@ impl Model {
         if pair >= n {
             return Err(crate::error::no_pair(pair, n));
         }
-        if let Some(slaves) = &self.contact_solution()?.mortar {
+        if let Some(state) = &self.contact_solution()?.mortar {
             let (mesh, pairs) = (self.problem.mesh_ref()?, self.problem.contact_pairs());
-            return solve::mortar::nodal_values(mesh, pairs, slaves, Some(pair), |s| s.pressure);
+            return solve::mortar::nodal_values(mesh, pairs, state, Some(pair), |s| s.pressure);
         }
         let elements: Vec<ContactElement> = self
             .contact_elements()?

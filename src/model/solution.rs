@@ -3,11 +3,11 @@
 //! stresses, reactions — is computed from them when asked for.
 
 use super::problem::Problem;
-use crate::contact::mortar::SlaveNode;
 use crate::contact::{
     ContactElement, ContactOptions, ElementLaw, FrictionOutcome, contact_stiffness, law_geometry,
     linearised_opening, shear_vector,
 };
+use crate::solve::mortar::MortarState;
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
 
@@ -59,9 +59,9 @@ pub(crate) struct ContactSolution {
     pub report: ContactReport,
     /// The options of the solve.
     pub options: ContactOptions,
-    /// Each slave node's state, after a solve under the mortar weighting
-    /// (then `active`, `pressure` and `laws` are empty).
-    pub mortar: Option<Vec<SlaveNode>>,
+    /// The state after a solve under the mortar weighting (then `active`,
+    /// `pressure` and `laws` are empty).
+    pub mortar: Option<MortarState>,
 }
 
 impl Solution {
@@ -174,14 +174,14 @@ impl Solution {
             }
             Ok(())
         })?;
-        if let Some(slaves) = self.contact.as_ref().and_then(|c| c.mortar.as_ref()) {
+        if let Some(state) = self.contact.as_ref().and_then(|c| c.mortar.as_ref()) {
             // The penalties' internal forces −p_i c_i on prescribed DOFs.
-            crate::solve::mortar::forces(mesh, problem.contact_pairs(), slaves, |_, g, f| {
+            crate::solve::mortar::forces(state, |_, g, f| {
                 if fixed[g] {
                     r[g] -= f;
                     bound[g] += f64::EPSILON * f.abs();
                 }
-            })?;
+            });
         } else if let Some(c) = &self.contact {
             for (k, el) in c.elements.iter().enumerate() {
                 if c.active[k] {
@@ -258,8 +258,9 @@ impl Solution {
     ) -> Result<()> {
         let c = self.contact_state()?;
         let mesh = problem.mesh_ref()?;
-        if let Some(slaves) = &c.mortar {
-            return crate::solve::mortar::forces(mesh, problem.contact_pairs(), slaves, add);
+        if let Some(state) = &c.mortar {
+            crate::solve::mortar::forces(state, add);
+            return Ok(());
         }
         for (k, el) in c.elements.iter().enumerate() {
             if !c.active[k] {
@@ -298,9 +299,9 @@ impl Solution {
     pub fn contact_gaps(&self, problem: &Problem, u: &[f64]) -> Result<Vec<f64>> {
         let c = self.contact_state()?;
         let mesh = problem.mesh_ref()?;
-        if let Some(slaves) = &c.mortar {
+        if let Some(state) = &c.mortar {
             let pairs = problem.contact_pairs();
-            return crate::solve::mortar::nodal_values(mesh, pairs, slaves, None, |s| s.gap);
+            return crate::solve::mortar::nodal_values(mesh, pairs, state, None, |s| s.gap);
         }
         let mut gap = vec![f64::INFINITY; mesh.nodes().len()];
         for el in &c.elements {

@@ -28,7 +28,6 @@ use linear::{Structure, factor_and_solve};
 use report::{ContactReport, SolveInfo, Timings};
 use session::{Session, Settings, Wanted, factorisation};
 
-use crate::contact::mortar::SlaveNode;
 use crate::contact::{
     ContactElement, ContactLaw, ContactOptions, ContactPair, ContactSet, ContactWeighting,
     ElementLaw, FrictionOutcome, Nodes, element_laws, softer,
@@ -94,9 +93,9 @@ pub(crate) struct ContactOutcome {
     pub friction: Option<FrictionOutcome>,
     /// The report (its `info` filled by the caller).
     pub report: ContactReport,
-    /// Each slave node's state under the mortar weighting (then `active`,
-    /// `pressure` and `laws`, over the elements of B, are empty).
-    pub mortar: Option<Vec<SlaveNode>>,
+    /// The state under the mortar weighting (then `active`, `pressure`
+    /// and `laws`, over the elements of B, are empty).
+    pub mortar: Option<mortar::MortarState>,
 }
 
 /// Solves `input` on `session`: without contact when `options` is `None`.

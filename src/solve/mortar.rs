@@ -38,6 +38,17 @@ use crate::fem::mesh::Mesh;
 use crate::linalg::Cholesky;
 use crate::linalg::refine::{Budget, norm_inf, refine_by};
 
+/// The state of a settled mortar solve, for its outputs: each slave
+/// node's state and the weighted gaps they are of (pair by pair, in the
+/// nodes' order).
+#[derive(Debug, Clone)]
+pub(crate) struct MortarState {
+    /// Every slave node's state.
+    pub nodes: Vec<SlaveNode>,
+    /// The weighted gaps of every pair.
+    pub gaps: Vec<PairGaps>,
+}
+
 /// The weighted gaps of one pair.
 #[derive(Debug, Clone)]
 pub(crate) struct PairGaps {
@@ -288,16 +299,7 @@ pub(crate) fn solve_contact(
 ) -> Result<Outcome> {
     check_options(options, input.pairs)?;
     let mesh = input.elements.mesh();
-    let mortar = session.mortar.clone().ok_or_else(|| {
-        Error::state("the session holds no weighted gaps: its structure predates the weighting")
-    })?;
-    let moduli = super::pair_moduli(input, &session.contact, &session.dofs, options);
-    let penalties = penalties(
-        session,
-        &mortar,
-        &moduli,
-        (options, mesh.size(), input.prescribed),
-    )?;
+    let penalties = session_penalties(session, input, options)?;
     let h_c = penalty_lengths(&session.contact);
     let initial = initial_set(&penalties, &h_c);
     let mut interface: Vec<usize> = penalties
@@ -359,7 +361,8 @@ pub(crate) fn solve_contact(
     super::finite_statistics(&info)?;
     super::diagnostics::conditioning_warning(&info, &mut warnings);
     let u = dofs.expand(&x, input.prescribed);
-    let contact = outcome(&penalties, &active, &x, history, info, mesh)?;
+    let gaps = session.mortar.clone().unwrap_or_default();
+    let contact = outcome((&penalties, gaps), &active, &x, history, info, mesh)?;
     Ok(Outcome {
         u: super::Field::Global(u),
         log,
@@ -367,6 +370,20 @@ pub(crate) fn solve_contact(
         contact: Some(contact),
         warnings,
     })
+}
+
+/// The penalties of the session's weighted gaps for `input` and `options`.
+fn session_penalties(
+    session: &Session,
+    input: &Input<'_>,
+    options: &ContactOptions,
+) -> Result<Vec<Penalty>> {
+    let mortar = session.mortar.as_deref().ok_or_else(|| {
+        Error::state("the session holds no weighted gaps: its structure predates the weighting")
+    })?;
+    let moduli = super::pair_moduli(input, &session.contact, &session.dofs, options);
+    let size = input.elements.mesh().size();
+    penalties(session, mortar, &moduli, (options, size, input.prescribed))
 }
 
 /// The loop's state.
@@ -485,8 +502,9 @@ impl Run<'_, '_> {
     }
 
     /// Iterations on the interface, from the solution `x1` of the assembled
-    /// system (K₁); the field recovered and refined once settled.
-    /// `Ok(None)` when the condensed system lost its accuracy.
+    /// system (K₁); the field recovered and refined once settled, with the
+    /// bytes the condensed system held. `Ok(None)` when the condensed
+    /// system lost its accuracy.
     fn condensed(
         &mut self,
         interface: Vec<usize>,
@@ -500,116 +518,141 @@ impl Run<'_, '_> {
         let bytes = sys.memory_bytes() + 8 * x1.len();
         let reference = self.in_system.clone();
         let y = sys.gather(&x1);
-        let mut factor_set = reference.clone();
-        let mut ui = y.clone();
-        let position = |sys: &Condensed, j: usize| sys.position(j).expect("on the interface");
+        let ui = self.interface_loop(&mut sys, &y, &reference);
+        timings.interface += t0.elapsed().as_secs_f64();
+        let Some(ui) = ui? else { return Ok(None) };
+        let t0 = std::time::Instant::now();
+        let x = self.recovered(&sys, x1, &ui, &reference);
+        timings.solve += t0.elapsed().as_secs_f64();
+        Ok(x?.map(|x| (x, bytes)))
+    }
+
+    /// The active-set iterations on the interface (S u_I = S₁ y + Δg), from
+    /// the reference set K₁ holds, to the settled set's interface values;
+    /// `Ok(None)` when the interface matrix of a set is not positive
+    /// definite to working accuracy.
+    fn interface_loop(
+        &mut self,
+        sys: &mut Condensed,
+        y: &[f64],
+        reference: &[bool],
+    ) -> Result<Option<Vec<f64>>> {
+        let mut factor_set = reference.to_vec();
+        let mut ui = y.to_vec();
         loop {
             let iteration = self.set.history().len() + 1;
-            let next = self.verdict(|j| ui[position(&sys, j)]);
+            let next = self.verdict(|j| ui[at_interface(sys, j)]);
             if self.set.advance(next, iteration)? {
-                break;
+                return Ok(Some(ui));
             }
             if iteration >= self.max_iterations {
                 return Err(self.set.not_settled(self.max_iterations));
             }
             let active = self.set.active();
-            let changed = differing(active, &factor_set);
-            let sign = |k: usize| if active[k] { 1.0 } else { -1.0 };
+            let element = |k: usize| {
+                let sign = if active[k] { 1.0 } else { -1.0 };
+                (self.penalties[k].element(), sign)
+            };
             // A rank-one update per node is O(n²), a refactorisation
             // O(n³/3): update while fewer than n/6 nodes switch.
+            let changed = differing(active, &factor_set);
             let updated = 6 * changed.len() <= sys.len()
+                && sys.update(changed.iter().map(|&k| element(k))).is_ok();
+            let from_reference = differing(active, reference);
+            if !updated
                 && sys
-                    .update(
-                        changed
-                            .iter()
-                            .map(|&k| (self.penalties[k].element(), sign(k))),
-                    )
-                    .is_ok();
-            if !updated {
-                let from_reference = differing(active, &reference);
-                let changes = from_reference
-                    .iter()
-                    .map(|&k| (self.penalties[k].element(), sign(k)));
-                if sys.factorize(changes).is_err() {
-                    timings.interface += t0.elapsed().as_secs_f64();
-                    return Ok(None);
-                }
+                    .factorize(from_reference.iter().map(|&k| element(k)))
+                    .is_err()
+            {
+                return Ok(None);
             }
             factor_set = active.to_vec();
             let mut dg = vec![0.0; sys.len()];
-            for k in differing(active, &reference) {
-                for (j, f) in self.penalties[k].loads(sign(k)) {
-                    dg[position(&sys, j)] += f;
+            for k in from_reference {
+                for (j, f) in self.penalties[k].loads(element(k).1) {
+                    dg[at_interface(sys, j)] += f;
                 }
             }
-            ui = sys.solve(&y, &dg)?;
+            ui = sys.solve(y, &dg)?;
         }
-        timings.interface += t0.elapsed().as_secs_f64();
-        // The field: u = x₁ + K₁⁻¹ P (Δg − ΔC u_I), then refined against the
-        // final matrix, the condensed system as its approximate inverse.
+    }
+
+    /// The whole field of the settled set from its interface values `ui`:
+    /// u = x₁ + K₁⁻¹P(Δg − ΔC u_I), refined against the final matrix (the
+    /// assembled system is brought to the settled set) with the condensed
+    /// system as its approximate inverse. `Ok(None)` when the refinement
+    /// does not reach [`super::active_set::RECOVERED`].
+    fn recovered(
+        &mut self,
+        sys: &Condensed,
+        x1: Vec<f64>,
+        ui: &[f64],
+        reference: &[bool],
+    ) -> Result<Option<Vec<f64>>> {
         self.assemble_set();
-        let active = self.set.active().to_vec();
-        let changes: Vec<(usize, f64)> = differing(&active, &reference)
+        let active = self.set.active();
+        let changes: Vec<(usize, f64)> = differing(active, reference)
             .into_iter()
             .map(|k| (k, if active[k] { 1.0 } else { -1.0 }))
             .collect();
-        let t0 = std::time::Instant::now();
+        let penalties = self.penalties;
         let mut x = vec![0.0; x1.len()];
-        for &(k, s) in &changes {
-            let p = &self.penalties[k];
-            let cu = p.gap(|j| ui[position(&sys, j)]) - p.g_rest;
-            for (u, c) in p.unknowns.iter().zip(&p.coef) {
-                if let Some(j) = u {
-                    x[*j] -= s * p.stiffness * (p.g_rest + cu) * c;
-                }
-            }
-        }
+        add_changed_forces(penalties, &changes, (sys, ui), true, &mut x);
         self.chol.solve(&mut x)?;
         x.iter_mut().zip(&x1).for_each(|(a, b)| *a += b);
         let (values, rhs) = (self.system.values(), self.system.rhs());
-        let pattern = self.at.pattern;
-        let chol = &*self.chol;
-        let penalties = self.penalties;
+        let (pattern, chol) = (self.at.pattern, &*self.chol);
         let mut approx = |r: &mut [f64]| -> Result<()> {
             // K δ = r: y = K₁⁻¹r, S δ_I = S₁ y_I, δ = y − K₁⁻¹PΔC δ_I.
             chol.solve(r)?;
             let di = sys.solve(&sys.gather(r), &vec![0.0; sys.len()])?;
             let mut p = vec![0.0; r.len()];
-            for &(k, s) in &changes {
-                let q = &penalties[k];
-                let cd: f64 = q
-                    .unknowns
-                    .iter()
-                    .zip(&q.coef)
-                    .filter_map(|(u, c)| u.map(|j| c * di[sys.position(j).expect("interface")]))
-                    .sum();
-                for (u, c) in q.unknowns.iter().zip(&q.coef) {
-                    if let Some(j) = u {
-                        p[*j] -= s * q.stiffness * cd * c;
-                    }
-                }
-            }
+            add_changed_forces(penalties, &changes, (sys, &di), false, &mut p);
             chol.solve(&mut p)?;
             r.iter_mut().zip(&p).for_each(|(a, b)| *a += b);
             Ok(())
         };
         let product = |v: &[f64], out: &mut [f64]| pattern.sym_mul(values, v, out);
+        let k_norm = norm_inf(pattern, values);
         let omega = refine_by(
             &product,
-            norm_inf(pattern, values),
+            k_norm,
             rhs,
             &mut x,
             &mut approx,
             Budget::APPROXIMATE,
         )?;
-        timings.solve += t0.elapsed().as_secs_f64();
-        if omega.is_nan()
-            || omega > super::active_set::RECOVERED
-            || x.iter().any(|v| !v.is_finite())
-        {
-            return Ok(None);
+        let recovered = omega <= super::active_set::RECOVERED && x.iter().all(|v| v.is_finite());
+        Ok(recovered.then_some(x))
+    }
+}
+
+/// The position of free unknown `j` on the interface of `sys` (every
+/// penalty's unknowns are there by construction).
+fn at_interface(sys: &Condensed, j: usize) -> usize {
+    sys.position(j)
+        .expect("a penalty's unknowns are on the interface")
+}
+
+/// Adds −s (κ/m_i)(c_i·v + G_i⁰ if `rest`) c_i of every change (k, s) to
+/// `out` (over the free unknowns), v given on the interface of `sys`: the
+/// penalty forces −ΔC v of the penalties switched since K₁, with their
+/// loads Δg when `rest`.
+fn add_changed_forces(
+    penalties: &[Penalty],
+    changes: &[(usize, f64)],
+    (sys, v): (&Condensed, &[f64]),
+    rest: bool,
+    out: &mut [f64],
+) {
+    for &(k, s) in changes {
+        let p = &penalties[k];
+        let g = p.gap(|j| v[at_interface(sys, j)]) - if rest { 0.0 } else { p.g_rest };
+        for (u, c) in p.unknowns.iter().zip(&p.coef) {
+            if let Some(j) = u {
+                out[*j] -= s * p.stiffness * g * c;
+            }
         }
-        Ok(Some((x, bytes)))
     }
 }
 
@@ -622,7 +665,7 @@ fn differing(a: &[bool], b: &[bool]) -> Vec<usize> {
 /// pressure, the contact length (the active nodes' tributaries) and the
 /// largest penetration (of a mean gap G_i/m_i).
 fn outcome(
-    penalties: &[Penalty],
+    (penalties, gaps): (&[Penalty], Vec<PairGaps>),
     active: &[bool],
     x: &[f64],
     history: Vec<IterationRecord>,
@@ -670,7 +713,7 @@ fn outcome(
         laws: Vec::new(),
         friction: None,
         report,
-        mortar: Some(nodes),
+        mortar: Some(MortarState { nodes, gaps }),
     })
 }
 
@@ -684,18 +727,7 @@ pub(crate) fn restore(
     options: &ContactOptions,
     log: &[Vec<usize>],
 ) -> Result<()> {
-    let mesh = input.elements.mesh();
-    let mortar = session
-        .mortar
-        .clone()
-        .ok_or_else(|| Error::state("the session holds no weighted gaps"))?;
-    let moduli = super::pair_moduli(input, &session.contact, &session.dofs, options);
-    let penalties = penalties(
-        session,
-        &mortar,
-        &moduli,
-        (options, mesh.size(), input.prescribed),
-    )?;
+    let penalties = session_penalties(session, input, options)?;
     let Session {
         system, pattern, ..
     } = &mut *session;
@@ -709,31 +741,16 @@ pub(crate) fn restore(
     Ok(())
 }
 
-/// The contact force on every global DOF of the slave nodes `slaves` (of
-/// the solve of `pairs` on `mesh`) and the nodes their gaps read: p_i c_i
-/// per active node, −∂/∂u of its penalty energy, as (pair, global DOF,
-/// value).
-pub(crate) fn forces(
-    mesh: &Mesh,
-    pairs: &[ContactPair],
-    slaves: &[SlaveNode],
-    mut add: impl FnMut(usize, usize, f64),
-) -> Result<()> {
-    let gaps: Vec<WeightedGap> = build(mesh, pairs)?
-        .into_iter()
-        .flat_map(|p| p.gaps)
-        .collect();
-    if gaps.len() != slaves.len() {
-        return Err(Error::state(
-            "the weighted gaps no longer match the solve's slave nodes",
-        ));
-    }
-    for (wg, s) in gaps.iter().zip(slaves).filter(|(_, s)| s.active) {
+/// The contact force of every active slave node of `state` on each
+/// global DOF its weighted gap reads: p_i c_i, −∂/∂u of its penalty
+/// energy, as (pair, global DOF, value).
+pub(crate) fn forces(state: &MortarState, mut add: impl FnMut(usize, usize, f64)) {
+    let gaps = state.gaps.iter().flat_map(|p| &p.gaps);
+    for (wg, s) in gaps.zip(&state.nodes).filter(|(_, s)| s.active) {
         for &(g, c) in &wg.coefficients {
             add(s.pair, g, s.pressure * c);
         }
     }
-    Ok(())
 }
 
 /// A value of the slave nodes (`value` of each) at every node of the mesh:
@@ -745,21 +762,16 @@ pub(crate) fn forces(
 pub(crate) fn nodal_values(
     mesh: &Mesh,
     pairs: &[ContactPair],
-    slaves: &[SlaveNode],
+    state: &MortarState,
     only: Option<usize>,
     value: impl Fn(&SlaveNode) -> f64,
 ) -> Result<Vec<f64>> {
     let x = mesh.nodes();
+    let (slaves, gaps) = (&state.nodes, &state.gaps);
     let mut sum = vec![0.0; x.len()];
     let mut count = vec![0u32; x.len()];
-    let gaps: Vec<PairGaps> = build(mesh, pairs)?;
-    if gaps.iter().map(|p| p.gaps.len()).sum::<usize>() != slaves.len() {
-        return Err(Error::state(
-            "the weighted gaps no longer match the solve's slave nodes",
-        ));
-    }
     let mut first = 0;
-    for pg in &gaps {
+    for pg in gaps {
         let mine = &slaves[first..first + pg.gaps.len()];
         first += pg.gaps.len();
         if only.is_some_and(|o| o != pg.pair) || mine.is_empty() {
