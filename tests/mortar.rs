@@ -255,6 +255,12 @@ fn the_slave_nodes_are_refused_after_a_strip_solve() {
     assert!(e.message().contains("strip weighting"), "{}", e.message());
 }
 
+/// The bits of the last solve's system matrix.
+fn matrix_bits(model: &tfem::Model) -> Vec<u64> {
+    let k = model.system_matrix().unwrap();
+    k.values.iter().map(|v| v.to_bits()).collect()
+}
+
 #[test]
 fn a_failed_solve_keeps_the_mortar_solves_matrix_to_the_bit() {
     // The seed scene settles in 5 iterations: capped at 2, the next solve
@@ -268,28 +274,14 @@ fn a_failed_solve_keeps_the_mortar_solves_matrix_to_the_bit() {
     .unwrap();
     s.model.set_contact_weighting(ContactWeighting::Mortar);
     s.model.solve_contact(&ContactOptions::default()).unwrap();
-    let before: Vec<u64> = s
-        .model
-        .system_matrix()
-        .unwrap()
-        .values
-        .iter()
-        .map(|v| v.to_bits())
-        .collect();
+    let before = matrix_bits(&s.model);
     let capped = ContactOptions {
         max_iterations: 2,
         ..ContactOptions::default()
     };
     let e = s.model.solve_contact(&capped).unwrap_err();
     assert_eq!(e.status(), tfem::Status::NotConverged, "{}", e.message());
-    let after: Vec<u64> = s
-        .model
-        .system_matrix()
-        .unwrap()
-        .values
-        .iter()
-        .map(|v| v.to_bits())
-        .collect();
+    let after = matrix_bits(&s.model);
     assert_eq!(before, after);
 }
 

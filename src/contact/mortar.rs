@@ -168,11 +168,16 @@ fn apex_sample(
 
 /// The edge of the chain with abscissas `s` (non-decreasing) whose range
 /// holds `at`: the first with s[k] ≤ at ≤ s[k + 1], the end edges beyond
-/// the chain's ends. None for a chain of zero extent.
+/// the chain's ends; past edges of zero extent (a leg of the chain
+/// standing across the interface, all its nodes at one abscissa) to the
+/// nearest edge with extent. None for a chain of zero extent.
 fn edge_at(s: &[f64], at: f64) -> Option<usize> {
     let last = s.len().checked_sub(2)?;
     let k = s[1..].partition_point(|&v| v < at).min(last);
-    (s[k + 1] > s[k]).then_some(k)
+    let extent = |j: &usize| s[j + 1] > s[*j];
+    (k..=last)
+        .find(extent)
+        .or_else(|| (0..k).rev().find(extent))
 }
 
 /// `al` with its facing interval reaching a slave end that lies beyond
@@ -259,7 +264,11 @@ fn chains(al: &Aligned, slave: Slave) -> Chains<'_> {
 
 /// The merged nodes in the facing interval, in order along a. Where a
 /// master node coincides with a slave node (within round-off) the slave's
-/// stands for the point.
+/// stands for the point; where master nodes coincide (a leg of the master
+/// standing across the interface at an end of it), the one the master goes
+/// on facing the slave from: the last of them at lo, the first elsewhere
+/// (the first read a leg's far vertex: a gap of the leg's length where the
+/// sides were 0.01 apart, a review's case).
 fn merged_points(al: &Aligned, slave: Slave) -> Vec<Point> {
     let (sl_chain, sl_s, ms_chain, ms_s) = chains(al, slave);
     let inside = |s: f64| s >= al.lo - al.tol && s <= al.hi + al.tol;
@@ -289,7 +298,8 @@ fn merged_points(al: &Aligned, slave: Slave) -> Vec<Point> {
     for p in points {
         match merged.last_mut() {
             Some(last) if p.s - last.s <= al.tol => {
-                if p.slave && !last.slave {
+                let at_lo = p.s <= al.lo + al.tol;
+                if !last.slave && (p.slave || at_lo) {
                     *last = p;
                 }
             }
@@ -377,8 +387,7 @@ fn integrated(
     basis: Basis,
     merged: &[Point],
 ) -> BTreeMap<usize, Accumulated> {
-    let (sl_chain, sl_s, ms_chain, ms_s) = chains(al, slave);
-    let slave_on_a = slave == Slave::A;
+    let (sl_chain, sl_s, _, _) = chains(al, slave);
     let mut acc: BTreeMap<usize, Accumulated> = BTreeMap::new();
     for k in 0..sl_chain.len() - 1 {
         let (e0, e1) = (sl_s[k], sl_s[k + 1]);
@@ -390,7 +399,17 @@ fn integrated(
         // ds along the slave edge per unit of abscissa along a.
         let jac = length / (e1 - e0);
         let whole = c0 - e0 <= al.tol && e1 - c1 <= al.tol;
-        let dual = whole && basis == Basis::Dual;
+        let edge = (sl_chain[k], sl_chain[k + 1]);
+        // Both chains run with body a on their right (b was turned
+        // round): every edge's left normal points from a to b.
+        let nu = left_normal(x, sl_chain, k);
+        let on_edge = edge_samples(x, (al, slave), (edge, nu), (e0, e1, c0, c1), merged);
+        // The dual weights read g at the nodes for a gap linear on the edge;
+        // a gap that bends sharply across it (a step or a corner of the
+        // master, far from contact) turns their negative lobe into a read
+        // overlap where the sides stand apart (a review's stepped master:
+        // G/m = −0.15 where the gap is at least 0.01): the hats there.
+        let dual = whole && !bent(&on_edge, length) && basis == Basis::Dual;
         // φ of the edge's first and second node at abscissa s.
         let phi = |s: f64| {
             let t = (s - e0) / (e1 - e0);
@@ -403,58 +422,6 @@ fn integrated(
                 false => [f0, f1],
             }
         };
-        let first = merged.partition_point(|p| p.s < c0 - al.tol);
-        let last = merged.partition_point(|p| p.s <= c1 + al.tol);
-        // Both chains run with body a on their right (b was turned
-        // round): every edge's left normal points from a to b.
-        let nu = left_normal(x, sl_chain, k);
-        let edge = (sl_chain[k], sl_chain[k + 1]);
-        // The gap along ν kinks where the ray passes a master vertex: at
-        // the vertex's foot on the edge's line, wherever the merged order
-        // (by projection on a) put the vertex. On curved sides a vertex
-        // facing a slave node projects onto one of the node's two chords
-        // only (a tie broken by round-off), yet the other chord's rays pass
-        // it too: without its foot there that chord read the ray's gap past
-        // the kink, δ cos(Δθ/2)/cos Δθ, along its whole length instead of
-        // δ cos(Δθ/2) — O(δ Δθ²) on some interior nodes but not on the
-        // end nodes, the Lamé rings' 1 % end error at first order. The
-        // master points strictly inside are therefore the vertices whose
-        // feet are, at their feet; the ends (slave nodes or the facing
-        // interval's bounds) stay as merged.
-        let (xp, xq) = (x[edge.0], x[edge.1]);
-        let ev = [xq[0] - xp[0], xq[1] - xp[1]];
-        let ee = ev[0] * ev[0] + ev[1] * ev[1];
-        let span = e1 - e0;
-        let at_bound = |s: f64| s - c0 <= al.tol || c1 - s <= al.tol;
-        let mut pts: Vec<(f64, &Point)> = merged[first..last]
-            .iter()
-            .filter(|p| p.slave || at_bound(p.s))
-            .map(|p| (p.s, p))
-            .collect();
-        let near: Vec<Point> = {
-            let j0 = ms_s.partition_point(|&v| v < c0 - span);
-            let j1 = ms_s.partition_point(|&v| v <= c1 + span);
-            (j0..j1)
-                .filter(|&j| !pts.iter().any(|(_, p)| !p.slave && p.node == ms_chain[j]))
-                .filter_map(|j| {
-                    let xc = x[ms_chain[j]];
-                    let t = ((xc[0] - xp[0]) * ev[0] + (xc[1] - xp[1]) * ev[1]) / ee;
-                    let sf = e0 + t * span;
-                    (sf > c0 + al.tol && sf < c1 - al.tol).then_some(Point {
-                        s: sf,
-                        node: ms_chain[j],
-                        slave: false,
-                        facing: 0,
-                    })
-                })
-                .collect()
-        };
-        pts.extend(near.iter().map(|p| (p.s, p)));
-        pts.sort_by(|p, q| p.0.total_cmp(&q.0));
-        let on_edge: Vec<(f64, Sample)> = pts
-            .iter()
-            .map(|&(s, p)| (s, sample_on_edge(x, (ms_chain, slave_on_a), edge, nu, p)))
-            .collect();
         for (end, &node) in [sl_chain[k], sl_chain[k + 1]].iter().enumerate() {
             let entry = acc.entry(node).or_default();
             let [f0, f1] = [phi(c0)[end], phi(c1)[end]];
@@ -471,6 +438,86 @@ fn integrated(
         }
     }
     acc
+}
+
+/// The gap samples on slave edge `edge` (abscissas [e0, e1], facing the
+/// master over [c0, c1]), in order, each read along the edge's normal ν:
+/// its ends as merged (slave nodes, or the facing interval's bounds), and
+/// inside it every master vertex whose foot on the edge's line falls
+/// inside, at its foot. The gap along ν kinks where the ray passes a
+/// master vertex: at the vertex's foot, wherever the merged order (by
+/// projection on a) put the vertex. On curved sides a vertex facing a
+/// slave node projects onto one of the node's two chords only (a tie
+/// broken by round-off), yet the other chord's rays pass it too: without
+/// its foot there that chord read the ray's gap past the kink,
+/// δ cos(Δθ/2)/cos Δθ, along its whole length instead of δ cos(Δθ/2) —
+/// O(δ Δθ²) on some interior nodes but not on the end nodes, the Lamé
+/// rings' 1 % end error at first order.
+fn edge_samples(
+    x: &[[f64; 2]],
+    (al, slave): (&Aligned, Slave),
+    (edge, nu): ((usize, usize), [f64; 2]),
+    (e0, e1, c0, c1): (f64, f64, f64, f64),
+    merged: &[Point],
+) -> Vec<(f64, Sample)> {
+    let (_, _, ms_chain, ms_s) = chains(al, slave);
+    let first = merged.partition_point(|p| p.s < c0 - al.tol);
+    let last = merged.partition_point(|p| p.s <= c1 + al.tol);
+    let (xp, xq) = (x[edge.0], x[edge.1]);
+    let ev = [xq[0] - xp[0], xq[1] - xp[1]];
+    let ee = ev[0] * ev[0] + ev[1] * ev[1];
+    let span = e1 - e0;
+    let at_bound = |s: f64| s - c0 <= al.tol || c1 - s <= al.tol;
+    let mut pts: Vec<(f64, &Point)> = merged[first..last]
+        .iter()
+        .filter(|p| p.slave || at_bound(p.s))
+        .map(|p| (p.s, p))
+        .collect();
+    let j0 = ms_s.partition_point(|&v| v < c0 - span);
+    let j1 = ms_s.partition_point(|&v| v <= c1 + span);
+    let feet: Vec<Point> = (j0..j1)
+        .filter(|&j| !pts.iter().any(|(_, p)| !p.slave && p.node == ms_chain[j]))
+        .filter_map(|j| {
+            let xc = x[ms_chain[j]];
+            let t = ((xc[0] - xp[0]) * ev[0] + (xc[1] - xp[1]) * ev[1]) / ee;
+            let sf = e0 + t * span;
+            (sf > c0 + al.tol && sf < c1 - al.tol).then_some(Point {
+                s: sf,
+                node: ms_chain[j],
+                slave: false,
+                facing: 0,
+            })
+        })
+        .collect();
+    pts.extend(feet.iter().map(|p| (p.s, p)));
+    pts.sort_by(|p, q| p.0.total_cmp(&q.0));
+    let slave_on_a = slave == Slave::A;
+    pts.iter()
+        .map(|&(s, p)| (s, sample_on_edge(x, (ms_chain, slave_on_a), edge, nu, p)))
+        .collect()
+}
+
+/// How far the initial gap on a slave edge may depart from the line
+/// through its end values, over the edge's length, for the edge to keep
+/// the dual weights: 0.1, far beyond what curvature makes (a circle of
+/// radius R bends a gap by ℓ/(8R) of an edge ℓ) and far below a step or a
+/// corner of the master.
+const BENT: f64 = 0.1;
+
+/// Whether the initial gap of the samples `on_edge` (in order) departs from
+/// the line through the first and last by more than [`BENT`] × `length`.
+fn bent(on_edge: &[(f64, Sample)], length: f64) -> bool {
+    let (Some((s0, g0)), Some((s1, g1))) = (on_edge.first(), on_edge.last()) else {
+        return false;
+    };
+    let slope = if s1 > s0 {
+        (g1.g0 - g0.g0) / (s1 - s0)
+    } else {
+        0.0
+    };
+    on_edge
+        .iter()
+        .any(|(s, g)| (g.g0 - g0.g0 - slope * (s - s0)).abs() > BENT * length)
 }
 
 /// The side a solve should take as the slave: the coarser one over the
@@ -968,6 +1015,54 @@ mod tests {
                     hi - lo < 1e-2 * delta * turn * turn,
                     "{n} {slave:?}: {lo:e} .. {hi:e}"
                 );
+            }
+        }
+    }
+
+    #[test]
+    fn a_master_leg_standing_across_the_interface_at_its_start_reads_the_gap_at_its_foot() {
+        // Side b an L: a leg down x = 1 from y = 1 to 0.01, then along
+        // y = 0.01; side a on y = 0. Every leg vertex projects on a at
+        // x = 1; the sides are 0.01 apart wherever they face each other.
+        // The leg's far vertex stood for the point (node 1 read G/m = 1.0
+        // with the dual weights) and a slave node at the leg's abscissa was
+        // dropped (a review's cases).
+        let leg = [[1.0, 1.0], [1.0, 0.5], [1.0, 0.01]];
+        let cases: [(&[f64], &[f64]); 2] = [
+            (&[0.0, 1.0, 2.0, 3.0], &[2.0, 3.0]),
+            (&[0.0, 1.5, 3.0], &[2.5, 3.0]),
+        ];
+        for (xa, xb) in cases {
+            let pa: Vec<[f64; 2]> = xa.iter().map(|&v| [v, 0.0]).collect();
+            let mut pb = leg.to_vec();
+            pb.extend(xb.iter().map(|&v| [v, 0.01]));
+            let (x, a, b) = sides(&pa, &pb);
+            for basis in BASES {
+                for g in gaps(&x, &a, &b, Slave::A, basis) {
+                    let read = g.initial / g.tributary;
+                    assert!(
+                        (read - 0.01).abs() < 1e-12,
+                        "{xa:?} {basis:?} node {}: {read}",
+                        g.node
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn a_step_of_the_master_across_a_slave_edge_reads_no_overlap() {
+        // Side b steps up from y = 0.01 to 0.5 at x = 1, inside a's edge
+        // [0, 1.5]: the gap is at least 0.01 everywhere. The dual weights'
+        // negative lobe read G/m = −0.15 at node 0 (a review's case): an
+        // edge across which the gap rises that steeply takes the hats.
+        let pa = [[0.0, 0.0], [1.5, 0.0], [3.0, 0.0]];
+        let pb = [[0.0, 0.01], [1.0, 0.01], [1.0, 0.5], [2.0, 0.5], [3.0, 0.5]];
+        let (x, a, b) = sides(&pa, &pb);
+        for basis in BASES {
+            for g in gaps(&x, &a, &b, Slave::A, basis) {
+                let read = g.initial / g.tributary;
+                assert!(read >= 0.01 - 1e-12, "{basis:?} node {}: {read}", g.node);
             }
         }
     }
