@@ -195,18 +195,13 @@ pub(crate) fn patch_ratios(report: &mut String, a: &Args) {
                 worst_nodal = worst_nodal.max(nodal);
                 releases += released;
                 failures += failed.len();
-                writeln!(
+                let case = (e_ratio, name, ratio, jitter);
+                ratio_row(
                     report,
-                    "| {e_ratio} | {name} ({ratio:.3}) | {jitter} | {}{} | {nodal:.1e} | {released} | {iters} | {} |",
-                    sci_list(&errs),
-                    if failed.is_empty() {
-                        String::new()
-                    } else {
-                        format!("; failed: {}", failed.join(", "))
-                    },
-                    times.join(", ")
-                )
-                .unwrap();
+                    case,
+                    (&errs, nodal, released, iters),
+                    (&failed, &times),
+                );
             }
         }
     }
@@ -224,6 +219,28 @@ pub(crate) fn patch_ratios(report: &mut String, a: &Args) {
     )
     .unwrap();
     patch_ratios_mortar(report, &levels, &ratios);
+}
+
+/// One row of the patch-test tables: the case (E2/E1, ratio's name and
+/// value, jitter), its max stress errors per h, pressure error, releases
+/// and iterations, the failed levels and the times.
+fn ratio_row(
+    report: &mut String,
+    (e_ratio, name, ratio, jitter): (f64, &str, f64, f64),
+    (errs, pressure, released, iters): (&[f64], f64, usize, usize),
+    (failed, times): (&[String], &[String]),
+) {
+    let failed = match failed.is_empty() {
+        true => String::new(),
+        false => format!("; failed: {}", failed.join(", ")),
+    };
+    writeln!(
+        report,
+        "| {e_ratio} | {name} ({ratio:.3}) | {jitter} | {}{failed} | {pressure:.1e} | {released} | {iters} | {} |",
+        sci_list(errs),
+        times.join(", ")
+    )
+    .unwrap();
 }
 
 /// The same patch tests under the mortar weighting
@@ -284,18 +301,13 @@ fn patch_ratios_mortar(report: &mut String, levels: &[usize], ratios: &[(&str, f
                 worst = errs.iter().fold(worst, |m, &v| m.max(v));
                 worst_p = worst_p.max(perr);
                 releases += released;
-                writeln!(
+                let case = (e_ratio, name, ratio, jitter);
+                ratio_row(
                     report,
-                    "| {e_ratio} | {name} ({ratio:.3}) | {jitter} | {}{} | {perr:.1e} | {released} | {iters} | {} |",
-                    sci_list(&errs),
-                    if failed.is_empty() {
-                        String::new()
-                    } else {
-                        format!("; failed: {}", failed.join(", "))
-                    },
-                    times.join(", ")
-                )
-                .unwrap();
+                    case,
+                    (&errs, perr, released, iters),
+                    (&failed, &times),
+                );
             }
         }
     }

@@ -302,12 +302,7 @@ pub(crate) fn solve_contact(
     let penalties = session_penalties(session, input, options)?;
     let h_c = penalty_lengths(&session.contact);
     let initial = initial_set(&penalties, &h_c);
-    let mut interface: Vec<usize> = penalties
-        .iter()
-        .flat_map(|p| p.unknowns.iter().flatten().copied())
-        .collect();
-    interface.sort_unstable();
-    interface.dedup();
+    let interface = interface_of(&penalties);
     let Session {
         dofs,
         pattern,
@@ -370,6 +365,17 @@ pub(crate) fn solve_contact(
         contact: Some(contact),
         warnings,
     })
+}
+
+/// The interface unknowns: every free unknown a penalty reads, sorted.
+fn interface_of(penalties: &[Penalty]) -> Vec<usize> {
+    let mut interface: Vec<usize> = penalties
+        .iter()
+        .flat_map(|p| p.unknowns.iter().flatten().copied())
+        .collect();
+    interface.sort_unstable();
+    interface.dedup();
+    interface
 }
 
 /// The penalties of the session's weighted gaps for `input` and `options`.
