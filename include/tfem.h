@@ -946,9 +946,11 @@ enum tfem_status tfem_get_contact_nodal_pressures(struct tfem_model *model,
  * default: the elements of the contact mesh B; 1 mortar: one weighted gap
  * per node of each pair's coarser side, exact on the contact patch test
  * whatever the two sides' nodes, and the right reading on a stiff curved
- * tool; frictionless `tfem_solve_contact` only). A change discards the
- * results, like any change of the contact pairs. Under the mortar
- * weighting `tfem_step` and friction are refused, and so are the
+ * tool; frictionless `tfem_solve_contact` and `tfem_step`). A change
+ * discards the results, like any change of the contact pairs. Under the
+ * mortar weighting friction, the stick law, the literal inversion test,
+ * and the contact states (`tfem_get_contact_state`,
+ * `tfem_set_contact_state`) are refused, and so are the
  * per-element outputs (`tfem_get_contact_active`,
  * `tfem_get_contact_pressure`, `tfem_get_contact_elements`, shear,
  * friction state, dissipation; `tfem_get_sizes` gives 0 contact
@@ -1102,6 +1104,16 @@ enum tfem_status tfem_get_threads(struct tfem_model *model, int *threads);
  * SINGULAR); a contact that couples no free unknown (both sides wholly
  * prescribed): TFEM_STATUS_INVALID_ARGUMENT, solve it with
  * `tfem_solve_contact`.
+ * Under the mortar weighting (`tfem_set_contact_weighting`; refused with
+ * TFEM_STATUS_INVALID_STATE in the weighting's first version) a step is
+ * the frictionless contact solve of the scaled loads, started from the
+ * slave nodes' set of the step before, with the factor of the history's
+ * first step reused while the stiffness and options are unchanged (two
+ * sparse solves and the dense interface work per step); its
+ * displacements are computed at once, and `refactorize` and large
+ * interfaces are accepted (every iteration then refactorises). Its
+ * contact state is its results: `tfem_get_contact_state` and
+ * `tfem_set_contact_state` are refused there.
  */
 enum tfem_status tfem_step(struct tfem_model *model,
                            double load_factor,

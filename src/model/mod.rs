@@ -10,6 +10,7 @@
 //! reused by later solves while the epoch holds. Settings that change
 //! nothing physical (the ordering) keep every result.
 
+mod mortar_steps;
 pub mod problem;
 pub mod solution;
 
@@ -64,7 +65,7 @@ pub struct Model {
     solve_warnings: Vec<String>,
     /// Before the last load step: its results and contact state
     /// ([`Model::revert_step`]).
-    undo: Option<(Option<Solution>, KeptState)>,
+    undo: Option<(Option<Solution>, Undo)>,
     /// A contact state to continue from at the next load step, when no
     /// history holds it ([`Model::set_contact_state`]).
     restored: Option<KeptState>,
@@ -74,6 +75,15 @@ pub struct Model {
     /// dropped its session (a new prescribed DOF): the next step goes on
     /// from it (`Model::run_step`).
     carried: Option<KeptState>,
+}
+
+/// What [`Model::revert_step`] restores besides the results: the contact
+/// epoch of the step, and the strip's contact state before it (`None`
+/// under the mortar weighting, whose next step starts from the results
+/// brought back).
+struct Undo {
+    contact: u64,
+    state: Option<StepState>,
 }
 
 /// A contact state the model keeps, with the contact epoch of the
@@ -531,6 +541,15 @@ impl Model {
     /// non-matching interface, a factorisation of the step's own matrix,
     /// made and dropped at that request). The step is accepted as it is;
     /// [`Model::revert_step`] undoes it. On error the model is unchanged.
+    ///
+    /// Under the mortar weighting ([`ContactWeighting::Mortar`], frictionless
+    /// only) a step is the contact solve of the scaled loads started from
+    /// the slave nodes' set of the step before, with the factor of the
+    /// history's first K₁ (no sparse factorisation while the stiffness and
+    /// options are unchanged): two sparse solves and the dense interface
+    /// work per step, the field computed at once. Its contact state is
+    /// its results: [`Model::contact_state`] and
+    /// [`Model::set_contact_state`] are refused.
     pub fn step(&mut self, load_factor: f64, options: &ContactOptions) -> Result<ContactReport> {
         options.validate()?;
         self.in_pool(|m| m.run_step(load_factor, options))
@@ -539,7 +558,9 @@ impl Model {
     fn run_step(&mut self, t: f64, options: &ContactOptions) -> Result<ContactReport> {
         let t_start = Instant::now();
         self.problem.check_ready(true)?;
-        self.strip_only("load steps")?;
+        if self.problem.contact_weighting() == ContactWeighting::Mortar {
+            return self.run_mortar_step(t, options, t_start);
+        }
         self.check_memory(self.session.as_ref().map_or(0, |s| s.interface_len()))?;
         let mut timings = Timings::default();
         let prescribed = self.problem.prescribed_vector()?;
@@ -609,9 +630,9 @@ impl Model {
         }
         self.undo = Some((
             self.solution.take(),
-            KeptState {
+            Undo {
                 contact,
-                state: before,
+                state: Some(before),
             },
         ));
         let solution = self.solution.insert(solution);
@@ -650,20 +671,28 @@ impl Model {
         // (whose field may wait on that history) stay readable; and kept
         // for the next step, which may start another history (new
         // stiffness or options) and would otherwise lose it.
-        if let Some(history) = self.session.as_mut().and_then(|s| s.history.as_mut()) {
-            history.set_state(&before.state)?;
+        let history = self.session.as_mut().and_then(|s| s.history.as_mut());
+        if let (Some(history), Some(state)) = (history, &before.state) {
+            history.set_state(state)?;
         }
         let (solution, before) = self.undo.take().expect("checked above");
         self.solution = solution;
-        self.restored = Some(before);
+        // Under the mortar weighting the solution brought back is the
+        // state (the next step starts from its slave nodes' set).
+        self.restored = before.state.map(|state| KeptState {
+            contact: before.contact,
+            state,
+        });
         Ok(())
     }
 
     /// The contact state of the last load step, as bytes: the active set
     /// and the factor of the condensed interface system, so that
     /// [`Model::set_contact_state`] continues bit for bit (in this model or
-    /// another one holding the same problem).
+    /// another one holding the same problem). Refused under the mortar
+    /// weighting.
     pub fn contact_state(&self) -> Result<Vec<u8>> {
+        self.strip_only("contact states")?;
         let history = self.session.as_ref().and_then(|s| s.history.as_ref());
         let contact = self.problem.contact_epoch();
         let restored = self.restored.as_ref().filter(|k| k.contact == contact);
@@ -689,6 +718,7 @@ impl Model {
     /// parts before the next step (the mesh, its boundary edges, the contact pairs or friction on/off) drops the state,
     /// with a warning.
     pub fn set_contact_state(&mut self, bytes: &[u8]) -> Result<()> {
+        self.strip_only("contact states")?;
         let b = self.contact_mesh()?;
         let state = decode(bytes, fingerprint_of(&b))?;
         // Without a history to check it against, check it against the
@@ -897,14 +927,13 @@ impl Model {
         self.problem.contact_weighting()
     }
 
-    /// Refuses `what` under the mortar weighting, which serves single
-    /// frictionless solves only.
+    /// Refuses `what` under the mortar weighting, which serves
+    /// frictionless solves and load steps only.
     fn strip_only(&self, what: &str) -> Result<()> {
         match self.problem.contact_weighting() {
             ContactWeighting::Strip => Ok(()),
             ContactWeighting::Mortar => Err(Error::state(format!(
-                "{what} are not built for the mortar weighting yet: use solve_contact, or set \
-                 the strip weighting"
+                "{what} are not built for the mortar weighting yet: set the strip weighting"
             ))),
         }
     }

@@ -284,11 +284,7 @@ pub(crate) fn step(
     timings: &mut Timings,
 ) -> Result<(Outcome, StepState)> {
     let key = Key::new(stiffness, options);
-    if !(t.is_finite() && t.abs() <= 1e300) {
-        return Err(Error::argument(format!(
-            "load_factor = {t:?} must be finite and at most 1e300 in magnitude"
-        )));
-    }
+    check_load_factor(t)?;
     super::ensure_unknowns(&session.dofs)?;
     let mut warnings = Vec::new();
     let current = session.history.as_ref().is_some_and(|h| h.key == key);
@@ -325,6 +321,16 @@ pub(crate) fn step(
         c.report.info.factorizations += factorizations;
     }
     Ok((outcome, before))
+}
+
+/// Refuses a load factor that is not finite or beyond 1e300 in magnitude.
+pub(crate) fn check_load_factor(t: f64) -> Result<()> {
+    if t.is_finite() && t.abs() <= 1e300 {
+        return Ok(());
+    }
+    Err(Error::argument(format!(
+        "load_factor = {t:?} must be finite and at most 1e300 in magnitude"
+    )))
 }
 
 /// Whether a step under `options` on a problem of stiffness epoch

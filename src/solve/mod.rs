@@ -105,10 +105,52 @@ pub(crate) fn solve(
     options: Option<&ContactOptions>,
     timings: &mut Timings,
 ) -> Result<Outcome> {
+    let (info, warnings) = prepare(session, input, timings)?;
+    match options {
+        None => solve_plain(session, input, info, timings, warnings),
+        Some(options) if input.weighting == ContactWeighting::Mortar => {
+            let start = mortar::Start::default();
+            mortar::solve_contact(session, input, options, (info, timings), (warnings, start))
+        }
+        Some(options) => solve_contact(session, input, options, info, timings, warnings),
+    }
+}
+
+/// A load step under the mortar weighting: the contact solve of `input`
+/// (its loads and prescribed values already scaled by the step's factor),
+/// starting from the active set `warm` (`None`: a contact solve's first
+/// set) and reusing the factor of K₁ that the session keeps from an
+/// earlier step of the same `key` (docs/method.md §6.11).
+pub(crate) fn mortar_step(
+    session: &mut Session,
+    input: &Input<'_>,
+    (options, key): (&ContactOptions, history::Key),
+    warm: Option<&[bool]>,
+    timings: &mut Timings,
+) -> Result<Outcome> {
+    // Taken before the bodies are reassembled, which forgets it.
+    let k1 = session.mortar_k1.take();
+    let (info, warnings) = prepare(session, input, timings)?;
+    let start = mortar::Start {
+        step: Some(key),
+        warm,
+        k1,
+    };
+    mortar::solve_contact(session, input, options, (info, timings), (warnings, start))
+}
+
+/// What every solve does first: the bodies' part assembled afresh (a load
+/// history's K₁, strip or mortar, is gone), with the solve's statistics
+/// begun and the tempering's warnings.
+fn prepare(
+    session: &mut Session,
+    input: &Input<'_>,
+    timings: &mut Timings,
+) -> Result<(SolveInfo, Vec<String>)> {
     ensure_unknowns(&session.dofs)?;
     session.set_system_of(None);
-    // A solve refactorises and reassembles: a load history's K₁ is gone.
     session.history = None;
+    session.mortar_k1 = None;
     let mesh = input.elements.mesh();
     let t0 = std::time::Instant::now();
     let softened = session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
@@ -120,13 +162,7 @@ pub(crate) fn solve(
         matrix_nnz: session.pattern.nnz(),
         ..Default::default()
     };
-    match options {
-        None => solve_plain(session, input, info, timings, warnings),
-        Some(options) if input.weighting == ContactWeighting::Mortar => {
-            mortar::solve_contact(session, input, options, (info, timings), warnings)
-        }
-        Some(options) => solve_contact(session, input, options, info, timings, warnings),
-    }
+    Ok((info, warnings))
 }
 
 /// Refuses a model whose every DOF is prescribed: there is no system to

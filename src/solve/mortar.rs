@@ -23,9 +23,10 @@
 //! active set assembles.
 
 use super::condensed::{Condensed, ElementMatrix};
-use super::linear::{Structure, factor_and_solve};
+use super::history::Key;
+use super::linear::{Structure, factor_and_solve, solve_factored};
 use super::report::{IterationRecord, SolveInfo, Timings};
-use super::session::{Session, Wanted, factorisation};
+use super::session::{Session, Settings, Wanted, factorisation};
 use super::system::AssembledSystem;
 use super::{Input, Outcome};
 use crate::contact::law::penalty_lengths;
@@ -289,20 +290,63 @@ fn check_options(options: &ContactOptions, pairs: &[ContactPair]) -> Result<()> 
     Ok(())
 }
 
-/// A frictionless contact solve under the mortar weighting.
+/// What the factor of a load history's K₁ is of, kept in the session
+/// between steps ([`Session::mortar_k1`]): a step of the same key and
+/// settings solves with it instead of factorising.
+#[derive(Debug, Clone)]
+pub(crate) struct K1 {
+    /// The history it serves (stiffness epoch and options).
+    key: Key,
+    /// The settings the factor was made with.
+    settings: Settings,
+    /// The slave nodes whose penalties K₁ holds.
+    reference: Vec<bool>,
+}
+
+/// How a solve starts: a contact solve's defaults, or a load step's.
+#[derive(Debug, Default)]
+pub(crate) struct Start<'w> {
+    /// The history of a load step (`None`: a contact solve).
+    pub step: Option<Key>,
+    /// The set to start from (`None`: the initial set).
+    pub warm: Option<&'w [bool]>,
+    /// The session's K₁ of an earlier step, if it kept one.
+    pub k1: Option<K1>,
+}
+
+/// A frictionless contact solve under the mortar weighting, or a load
+/// step ([`Start`]).
 pub(crate) fn solve_contact(
     session: &mut Session,
     input: &Input<'_>,
     options: &ContactOptions,
     (mut info, timings): (SolveInfo, &mut Timings),
-    mut warnings: Vec<String>,
+    (mut warnings, start): (Vec<String>, Start<'_>),
 ) -> Result<Outcome> {
     check_options(options, input.pairs)?;
     let mesh = input.elements.mesh();
     let penalties = session_penalties(session, input, options)?;
-    let h_c = penalty_lengths(&session.contact);
-    let initial = initial_set(&penalties, &h_c);
+    let n = penalties.len();
     let interface = interface_of(&penalties);
+    let condense =
+        !options.refactorize && Condensed::worthwhile(interface.len(), session.pattern.nnz());
+    let warm = start.warm.filter(|w| w.len() == n).map(<[bool]>::to_vec);
+    // A step of the history that made the kept K₁ solves with its factor.
+    let kept = start.k1.filter(|k| {
+        condense
+            && Some(k.key) == start.step
+            && k.settings == input.settings
+            && k.reference.len() == n
+    });
+    let reuse = kept.is_some();
+    let reference = match (kept, &warm) {
+        (Some(k), _) => k.reference,
+        // Refactorising at every iteration, the first factor is the warm
+        // set's own.
+        (None, Some(w)) if !condense => w.clone(),
+        (None, _) => initial_set(&penalties, &penalty_lengths(&session.contact)),
+    };
+    let first = warm.unwrap_or_else(|| reference.clone());
     let Session {
         dofs,
         pattern,
@@ -310,8 +354,7 @@ pub(crate) fn solve_contact(
         system,
         ..
     } = &mut *session;
-    let condense = !options.refactorize && Condensed::worthwhile(interface.len(), pattern.nnz());
-    for (p, _) in penalties.iter().zip(&initial).filter(|(_, on)| **on) {
+    for (p, _) in penalties.iter().zip(&reference).filter(|(_, on)| **on) {
         p.toggle(system, pattern, 1.0);
     }
     let want = Wanted {
@@ -338,12 +381,23 @@ pub(crate) fn solve_contact(
         penalties: &penalties,
         chol,
         system,
-        set: ActiveSet::new(initial.clone()),
-        log: vec![(0..initial.len()).filter(|&k| initial[k]).collect()],
-        in_system: initial,
+        set: ActiveSet::new(first),
+        log: vec![(0..n).filter(|&k| reference[k]).collect()],
+        in_system: reference.clone(),
         max_iterations: options.max_iterations,
     };
-    let (x, condensed_bytes) = run.solve(condense.then_some(interface), timings, &mut info)?;
+    let interface = condense.then_some(interface);
+    let mut session_k1 = None;
+    let (x, condensed_bytes) = run.solve((interface, reuse), timings, &mut info)?;
+    // The factor is K₁'s still when the condensed loop settled (it never
+    // refactorises the sparse matrix): the next step may reuse it.
+    if let (Some(key), true) = (start.step, condensed_bytes > 0) {
+        session_k1 = Some(K1 {
+            key,
+            settings: input.settings,
+            reference,
+        });
+    }
     let log = std::mem::take(&mut run.log);
     let (active, history) = run.set.into_parts();
     info.memory_bytes = at.pattern.memory_bytes()
@@ -358,6 +412,7 @@ pub(crate) fn solve_contact(
     let u = dofs.expand(&x, input.prescribed);
     let gaps = session.mortar.clone().unwrap_or_default();
     let contact = outcome((&penalties, gaps), &active, &x, history, info, mesh)?;
+    session.mortar_k1 = session_k1;
     Ok(Outcome {
         u: super::Field::Global(u),
         log,
@@ -411,14 +466,20 @@ struct Run<'r, 'a> {
 
 impl Run<'_, '_> {
     /// Runs the loop to a settled set: the unknowns and the bytes the
-    /// condensed system held.
+    /// condensed system held (0 when it did not settle the loop). With
+    /// `reuse`, the factor is already K₁'s.
     fn solve(
         &mut self,
-        interface: Option<Vec<usize>>,
+        (interface, reuse): (Option<Vec<usize>>, bool),
         timings: &mut Timings,
         info: &mut SolveInfo,
     ) -> Result<(Vec<f64>, usize)> {
-        let x1 = self.full_solve(timings, info)?;
+        let x1 = if reuse {
+            let context = " (mortar contact, K₁ of the load history)";
+            solve_factored(self.at, self.chol, self.system, (true, context), timings)?
+        } else {
+            self.full_solve(timings, info)?
+        };
         if let Some(interface) = interface {
             if let Some(done) = self.condensed(interface, x1.clone(), timings, info)? {
                 return Ok(done);
@@ -427,6 +488,8 @@ impl Run<'_, '_> {
             // solves of the assembled system, which holds the current set.
             return Ok((self.full_loop(None, timings, info)?, 0));
         }
+        // Refactorising, K₁ holds the first set: its solution is the first
+        // iterate.
         Ok((self.full_loop(Some(x1), timings, info)?, 0))
     }
 
@@ -544,7 +607,14 @@ impl Run<'_, '_> {
         reference: &[bool],
     ) -> Result<Option<Vec<f64>>> {
         let mut factor_set = reference.to_vec();
-        let mut ui = y.to_vec();
+        // A warm start (a load step's) begins with its own set's solve.
+        let mut ui = match self.set.active() == reference {
+            true => y.to_vec(),
+            false => match self.set_solve(sys, y, reference, &mut factor_set)? {
+                Some(ui) => ui,
+                None => return Ok(None),
+            },
+        };
         loop {
             let iteration = self.set.history().len() + 1;
             let next = self.verdict(|j| ui[at_interface(sys, j)]);
@@ -554,33 +624,50 @@ impl Run<'_, '_> {
             if iteration >= self.max_iterations {
                 return Err(self.set.not_settled(self.max_iterations));
             }
-            let active = self.set.active();
-            let element = |k: usize| {
-                let sign = if active[k] { 1.0 } else { -1.0 };
-                (self.penalties[k].element(), sign)
-            };
-            // A rank-one update per node is O(n²), a refactorisation
-            // O(n³/3): update while fewer than n/6 nodes switch.
-            let changed = differing(active, &factor_set);
-            let updated = 6 * changed.len() <= sys.len()
-                && sys.update(changed.iter().map(|&k| element(k))).is_ok();
-            let from_reference = differing(active, reference);
-            if !updated
-                && sys
-                    .factorize(from_reference.iter().map(|&k| element(k)))
-                    .is_err()
-            {
-                return Ok(None);
+            match self.set_solve(sys, y, reference, &mut factor_set)? {
+                Some(next) => ui = next,
+                None => return Ok(None),
             }
-            factor_set = active.to_vec();
-            let mut dg = vec![0.0; sys.len()];
-            for k in from_reference {
-                for (j, f) in self.penalties[k].loads(element(k).1) {
-                    dg[at_interface(sys, j)] += f;
-                }
-            }
-            ui = sys.solve(y, &dg)?;
         }
+    }
+
+    /// The interface values of the current set: its interface factor made
+    /// from the one of `factor_set` (updated node by node, or refactorised
+    /// from the reference's), then solved. `Ok(None)` when the set's
+    /// interface matrix is not positive definite to working accuracy.
+    fn set_solve(
+        &self,
+        sys: &mut Condensed,
+        y: &[f64],
+        reference: &[bool],
+        factor_set: &mut Vec<bool>,
+    ) -> Result<Option<Vec<f64>>> {
+        let active = self.set.active();
+        let element = |k: usize| {
+            let sign = if active[k] { 1.0 } else { -1.0 };
+            (self.penalties[k].element(), sign)
+        };
+        // A rank-one update per node is O(n²), a refactorisation O(n³/3):
+        // update while fewer than n/6 nodes switch.
+        let changed = differing(active, factor_set);
+        let updated = 6 * changed.len() <= sys.len()
+            && sys.update(changed.iter().map(|&k| element(k))).is_ok();
+        let from_reference = differing(active, reference);
+        if !updated
+            && sys
+                .factorize(from_reference.iter().map(|&k| element(k)))
+                .is_err()
+        {
+            return Ok(None);
+        }
+        *factor_set = active.to_vec();
+        let mut dg = vec![0.0; sys.len()];
+        for k in from_reference {
+            for (j, f) in self.penalties[k].loads(element(k).1) {
+                dg[at_interface(sys, j)] += f;
+            }
+        }
+        Ok(Some(sys.solve(y, &dg)?))
     }
 
     /// The whole field of the settled set from its interface values `ui`:

@@ -96,6 +96,9 @@ pub(crate) struct Session {
     system_of: Option<u64>,
     /// A load history's state (K₁ factorised once for every step).
     pub history: Option<super::history::History>,
+    /// Under the mortar weighting, what the factor in `analysis` is of
+    /// when a load history's steps may reuse it (`None` otherwise).
+    pub mortar_k1: Option<super::mortar::K1>,
 }
 
 impl Session {
@@ -139,6 +142,7 @@ impl Session {
             system,
             system_of: None,
             history: None,
+            mortar_k1: None,
         })
     }
 
