@@ -18,19 +18,41 @@ pub(crate) fn histories(report: &mut String, a: &Args) {
          the full load; each run in its own process. One factorisation serves the whole history \
          (the first step's); every later step is dense work on the contact interface, \
          warm-started from the step before. The last step equals the one-step answer to \
-         round-off (`tests/history.rs`).\n"
+         round-off (`tests/history.rs`). Under the mortar weighting (the same matching scene) \
+         the first step's factor also serves the history, but each step solves its field at \
+         once (docs/method.md §6.11; `tests/mortar_steps.rs`). *Field read at every step*: \
+         the same history with the displacements asked for after each step (what a host \
+         code that reads its results every step pays), at the coarsest level.\n"
     )
     .unwrap();
-    writeln!(report, "| h | unknowns | one solve [s] | 100 steps [s] | of which recovery [s] | ratio | factorisations | active-set iterations | peak RSS one solve / history [MB] |\n|---|---|---|---|---|---|---|---|---|").unwrap();
-    for &n in &levels {
-        let (Some(one), Some(h)) = (child(n, "nd", "condensed"), child(n, "nd", "history100"))
-        else {
-            writeln!(report, "| 1/{n} | run failed |").unwrap();
+    writeln!(report, "| weighting | h | unknowns | one solve [s] | 100 steps [s] | of which recovery [s] | ratio | field read at every step [s] | factorisations | active-set iterations | peak RSS one solve / history [MB] |\n|---|---|---|---|---|---|---|---|---|---|---|").unwrap();
+    let runs = [
+        ("strip", "condensed", "history100"),
+        ("mortar", "mortar", "mortar-history100"),
+    ];
+    // The mortar history solves each step's field (two sparse solves and
+    // more per step): its finest level, and every history that reads the
+    // field at each step beyond the coarsest, would take minutes.
+    let levels_of = |w: &str| match w {
+        "mortar" => &levels[..1],
+        _ => &levels[..],
+    };
+    for ((weighting, solve, history), &n) in runs
+        .iter()
+        .flat_map(|r| levels_of(r.0).iter().map(move |n| (r, n)))
+    {
+        let (Some(one), Some(h)) = (child(n, "nd", solve), child(n, "nd", history)) else {
+            writeln!(report, "| {weighting} | 1/{n} | run failed |").unwrap();
             continue;
+        };
+        let read = match n == levels[0] {
+            true => child(n, "nd", &format!("{history}-read"))
+                .map_or("failed".to_string(), |r| format!("{:.2}", f(&r, "total"))),
+            false => "—".to_string(),
         };
         writeln!(
             report,
-            "| 1/{n} | {} | {:.2} | {:.2} | {:.2} | {:.2} | {} | {} | {:.0} / {:.0} |",
+            "| {weighting} | 1/{n} | {} | {:.2} | {:.2} | {:.2} | {:.2} | {read} | {} | {} | {:.0} / {:.0} |",
             one["unknowns"],
             f(&one, "total"),
             f(&h, "total"),

@@ -15,7 +15,13 @@ use crate::common::peak_rss;
 
 /// A proportional history of `steps` load steps of the seed scene (factors
 /// k/steps), its last step's displacements recovered, timed as a whole.
-fn history_run(model: &mut tfem::Model, steps: usize, rss_mesh: Option<f64>) -> ! {
+fn history_run(model: &mut tfem::Model, mode: &str, rss_mesh: Option<f64>) -> ! {
+    // "N": N steps, the field read after the last; "N-read": after each.
+    let (steps, read_each) = match mode.strip_suffix("-read") {
+        Some(n) => (n, true),
+        None => (mode, false),
+    };
+    let steps: usize = steps.parse().expect("a step count");
     let options = ContactOptions::default();
     let t0 = Instant::now();
     let (mut factorizations, mut iterations) = (0, 0);
@@ -25,6 +31,9 @@ fn history_run(model: &mut tfem::Model, steps: usize, rss_mesh: Option<f64>) -> 
             .expect("a load step");
         factorizations += r.info.factorizations;
         iterations += r.iterations;
+        if read_each {
+            model.displacements().expect("the step's field");
+        }
     }
     let stepping = t0.elapsed().as_secs_f64();
     let u = model.displacements().expect("the last step's field");
@@ -44,8 +53,9 @@ fn history_run(model: &mut tfem::Model, steps: usize, rss_mesh: Option<f64>) -> 
 /// One contact solve of the seed scene in a fresh process (so that its
 /// peak memory is its own): `report --speed-run N ORDERING MODE` prints one
 /// JSON line. ORDERING: `nd`, `amd` or `nd-one-tree`; MODE: `condensed`
-/// (the default loop), `refactorize`, or `single` (its first iteration
-/// only).
+/// (the default loop), `refactorize`, `single` (its first iteration
+/// only), `mortar`, `historyN` or `mortar-historyN` (N proportional load
+/// steps).
 pub(crate) fn speed_run(n: usize, ordering: &str, mode: &str) -> ! {
     let rss0 = peak_rss();
     let mut s = TwoBlocks {
@@ -66,7 +76,13 @@ pub(crate) fn speed_run(n: usize, ordering: &str, mode: &str) -> ! {
     // peak memory is what a factorisation + solve of that matrix takes in
     // this library; the solve then stops short of convergence.
     if let Some(steps) = mode.strip_prefix("history") {
-        history_run(&mut s.model, steps.parse().expect("a step count"), rss_mesh);
+        history_run(&mut s.model, steps, rss_mesh);
+    }
+    // "mortar-historyN": the same history under the mortar weighting.
+    if let Some(steps) = mode.strip_prefix("mortar-history") {
+        s.model
+            .set_contact_weighting(tfem::ContactWeighting::Mortar);
+        history_run(&mut s.model, steps, rss_mesh);
     }
     let single = mode == "single";
     // "mortar": the condensed loop under the mortar weighting.
