@@ -227,7 +227,7 @@ module tfem
   !> The elements of the contact mesh B (the seed's method; default).
   integer(c_int), parameter :: TFEM_CONTACT_WEIGHTING_STRIP = 0
   !> The sampled mortar weighting: one weighted gap per node of each pair's coarser side;
-  !! frictionless single solves only.
+  !! frictionless contact solves and load steps.
   integer(c_int), parameter :: TFEM_CONTACT_WEIGHTING_MORTAR = 1
 
   ! enum tfem_contact_law: The constitutive law of the contact elements.
@@ -1397,12 +1397,12 @@ module tfem
     !! TFEM_STATUS_INVALID_ARGUMENT, solve it with `tfem_solve_contact`. Under the mortar weighting
     !! (`tfem_set_contact_weighting`; refused with TFEM_STATUS_INVALID_STATE in the weighting's
     !! first version) a step is the frictionless contact solve of the scaled loads, started from the
-    !! slave nodes' set of the step before, with the factor of the history's first step reused while
-    !! the stiffness and options are unchanged (two sparse solves and the dense interface work per
-    !! step); its displacements are computed at once, and `refactorize` and large interfaces are
-    !! accepted (every iteration then refactorises). Its contact state is its results:
-    !! `tfem_get_contact_state` and `tfem_set_contact_state` are refused there. Fortran: `options`
-    !! and `report` are OPTIONAL: omit them to pass NULL.
+    !! slave nodes' set of the step before; the first step's factorisation serves the history as
+    !! above (dense interface work per step, the field recovered when asked for). There
+    !! `refactorize` and interfaces too large to condense are accepted: each such step is a contact
+    !! solve that refactorises at every iteration. Its contact state is its results:
+    !! `tfem_get_contact_state` and `tfem_set_contact_state` are refused. Fortran: `options` and
+    !! `report` are OPTIONAL: omit them to pass NULL.
     function tfem_step(model, load_factor, options, report) &
         bind(C, name="tfem_step") result(status)
       import
@@ -1417,13 +1417,13 @@ module tfem
   interface
     !> Undoes the last load step: its results, and the contact state the next step starts from, go
     !! back to what they were before it. Once per step. Refused with TFEM_STATUS_INVALID_STATE, the
-    !! model unchanged, once the mesh, its boundary edges, the contact pairs or friction on/off have
-    !! changed since that step: they remake the contact mesh, and its contact state belongs to the
-    !! one before; the message names the change. Fixing or clearing prescribed DOFs does not block
-    !! it: like new materials, it changes the stiffness, not the contact mesh. The state brought
-    !! back is the next step's start even if that step starts a new history (new materials, options
-    !! or prescribed DOFs), with that problem's own interface factor. Until 2026-11-24 a change of
-    !! the prescribed DOFs also blocked the revert.
+    !! model unchanged, once the mesh, its boundary edges, the contact pairs, friction on/off or the
+    !! contact weighting have changed since that step: they remake the contact mesh, and its contact
+    !! state belongs to the one before; the message names the change. Fixing or clearing prescribed
+    !! DOFs does not block it: like new materials, it changes the stiffness, not the contact mesh.
+    !! The state brought back is the next step's start even if that step starts a new history (new
+    !! materials, options or prescribed DOFs), with that problem's own interface factor. Until
+    !! 2026-11-24 a change of the prescribed DOFs also blocked the revert.
     function tfem_revert_step(model) &
         bind(C, name="tfem_revert_step") result(status)
       import
@@ -1434,7 +1434,7 @@ module tfem
 
   interface
     !> Writes to `size` the number of bytes of the contact state of the last load step (see
-    !! `tfem_get_contact_state`).
+    !! `tfem_get_contact_state`). Refused with TFEM_STATUS_INVALID_STATE under the mortar weighting.
     function tfem_get_contact_state_size(model, size) &
         bind(C, name="tfem_get_contact_state_size") result(status)
       import
@@ -1448,9 +1448,10 @@ module tfem
     !> Copies the contact state of the last load step into `buffer` (`length` bytes, at least
     !! `tfem_get_contact_state_size`): the active set and the factor of the condensed interface
     !! system, so that `tfem_set_contact_state` continues the history bit for bit (a restart, in
-    !! this model or another one holding the same problem). Fortran: `length` takes an
-    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
-    !! as 0.
+    !! this model or another one holding the same problem). Refused with TFEM_STATUS_INVALID_STATE
+    !! under the mortar weighting (its contact state is the step's results; no bytes to save yet).
+    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
+    !! negative length is passed as 0.
     function tfem_get_contact_state(model, buffer, length) &
         bind(C, name="tfem_get_contact_state") result(status)
       import
@@ -1475,8 +1476,9 @@ module tfem
     !! mesh), that step starts afresh and warns (until 2026-11-24 a change of the prescribed DOFs
     !! did so too; the state is now kept across it). A frictional state waiting for a step under the
     !! stick law is refused by that step (TFEM_STATUS_INVALID_ARGUMENT) until another state is set.
-    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
-    !! negative length is passed as 0.
+    !! Refused with TFEM_STATUS_INVALID_STATE under the mortar weighting. Fortran: `length` takes an
+    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
+    !! as 0.
     function tfem_set_contact_state(model, buffer, length) &
         bind(C, name="tfem_set_contact_state") result(status)
       import

@@ -194,7 +194,7 @@ typedef enum tfem_contact_weighting {
   TFEM_CONTACT_WEIGHTING_STRIP = 0,
   /**
    * The sampled mortar weighting: one weighted gap per node of each
-   * pair's coarser side; frictionless single solves only.
+   * pair's coarser side; frictionless contact solves and load steps.
    */
   TFEM_CONTACT_WEIGHTING_MORTAR = 1,
 } tfem_contact_weighting;
@@ -1107,13 +1107,12 @@ enum tfem_status tfem_get_threads(struct tfem_model *model, int *threads);
  * Under the mortar weighting (`tfem_set_contact_weighting`; refused with
  * TFEM_STATUS_INVALID_STATE in the weighting's first version) a step is
  * the frictionless contact solve of the scaled loads, started from the
- * slave nodes' set of the step before, with the factor of the history's
- * first step reused while the stiffness and options are unchanged (two
- * sparse solves and the dense interface work per step); its
- * displacements are computed at once, and `refactorize` and large
- * interfaces are accepted (every iteration then refactorises). Its
- * contact state is its results: `tfem_get_contact_state` and
- * `tfem_set_contact_state` are refused there.
+ * slave nodes' set of the step before; the first step's factorisation
+ * serves the history as above (dense interface work per step, the field
+ * recovered when asked for). There `refactorize` and interfaces too
+ * large to condense are accepted: each such step is a contact solve that
+ * refactorises at every iteration. Its contact state is its results:
+ * `tfem_get_contact_state` and `tfem_set_contact_state` are refused.
  */
 enum tfem_status tfem_step(struct tfem_model *model,
                            double load_factor,
@@ -1124,9 +1123,10 @@ enum tfem_status tfem_step(struct tfem_model *model,
  * Undoes the last load step: its results, and the contact state the next
  * step starts from, go back to what they were before it. Once per step.
  * Refused with TFEM_STATUS_INVALID_STATE, the model unchanged, once the
- * mesh, its boundary edges, the contact pairs or friction on/off have
- * changed since that step: they remake the contact mesh, and its contact
- * state belongs to the one before; the message names the change. Fixing
+ * mesh, its boundary edges, the contact pairs, friction on/off or the
+ * contact weighting have changed since that step: they remake the
+ * contact mesh, and its contact state belongs to the one before; the
+ * message names the change. Fixing
  * or clearing prescribed DOFs does not block it: like new materials, it
  * changes the stiffness, not the contact mesh. The state brought back is
  * the next step's start even if that step starts a new history (new
@@ -1138,7 +1138,8 @@ enum tfem_status tfem_revert_step(struct tfem_model *model);
 
 /**
  * Writes to `size` the number of bytes of the contact state of the last
- * load step (see `tfem_get_contact_state`).
+ * load step (see `tfem_get_contact_state`). Refused with
+ * TFEM_STATUS_INVALID_STATE under the mortar weighting.
  */
 enum tfem_status tfem_get_contact_state_size(struct tfem_model *model, size_t *size);
 
@@ -1147,7 +1148,9 @@ enum tfem_status tfem_get_contact_state_size(struct tfem_model *model, size_t *s
  * bytes, at least `tfem_get_contact_state_size`): the active set and the
  * factor of the condensed interface system, so that
  * `tfem_set_contact_state` continues the history bit for bit (a restart,
- * in this model or another one holding the same problem).
+ * in this model or another one holding the same problem). Refused with
+ * TFEM_STATUS_INVALID_STATE under the mortar weighting (its contact state
+ * is the step's results; no bytes to save yet).
  */
 enum tfem_status tfem_get_contact_state(struct tfem_model *model, uint8_t *buffer, size_t length);
 
@@ -1168,6 +1171,7 @@ enum tfem_status tfem_get_contact_state(struct tfem_model *model, uint8_t *buffe
  * so too; the state is now kept across it). A
  * frictional state waiting for a step under the stick law is refused by
  * that step (TFEM_STATUS_INVALID_ARGUMENT) until another state is set.
+ * Refused with TFEM_STATUS_INVALID_STATE under the mortar weighting.
  */
 enum tfem_status tfem_set_contact_state(struct tfem_model *model,
                                         const uint8_t *buffer,

@@ -94,8 +94,8 @@ pub enum ContactWeighting {
     /// The sampled mortar weighting ([`mortar`]): one weighted gap
     /// G_i = ∫ ψ_i g ds per node of the coarser side (the slave), a
     /// penalty ½ (κ/m_i) G_i², active where G_i < 0. Exact on the contact
-    /// patch test whatever the two sides' nodes; frictionless single solves
-    /// only (no load steps, friction or host contact yet).
+    /// patch test whatever the two sides' nodes; frictionless contact
+    /// solves and load steps (no friction or host contact yet).
     Mortar,
 }
 

@@ -53,8 +53,9 @@
 //! whole tributary (they were 1–7 % short before).
 //!
 //! The solve over these gaps is `solve::mortar`
-//! ([`crate::contact::ContactWeighting::Mortar`]); load steps, friction and
-//! the host blocks still take elements of B.
+//! ([`crate::contact::ContactWeighting::Mortar`]), its load steps
+//! `solve::mortar_history`; friction and the host blocks still take
+//! elements of B.
 
 use std::collections::BTreeMap;
 

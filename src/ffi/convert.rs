@@ -49,7 +49,7 @@ pub enum ContactWeightingMode {
     /// The elements of the contact mesh B (the seed's method; default).
     Strip = 0,
     /// The sampled mortar weighting: one weighted gap per node of each
-    /// pair's coarser side; frictionless single solves only.
+    /// pair's coarser side; frictionless contact solves and load steps.
     Mortar = 1,
 }
 

@@ -1458,13 +1458,12 @@ pub unsafe extern "C" fn tfem_get_threads(model: *mut TfemModel, threads: *mut c
 /// Under the mortar weighting (`tfem_set_contact_weighting`; refused with
 /// TFEM_STATUS_INVALID_STATE in the weighting's first version) a step is
 /// the frictionless contact solve of the scaled loads, started from the
-/// slave nodes' set of the step before, with the factor of the history's
-/// first step reused while the stiffness and options are unchanged (two
-/// sparse solves and the dense interface work per step); its
-/// displacements are computed at once, and `refactorize` and large
-/// interfaces are accepted (every iteration then refactorises). Its
-/// contact state is its results: `tfem_get_contact_state` and
-/// `tfem_set_contact_state` are refused there.
+/// slave nodes' set of the step before; the first step's factorisation
+/// serves the history as above (dense interface work per step, the field
+/// recovered when asked for). There `refactorize` and interfaces too
+/// large to condense are accepted: each such step is a contact solve that
+/// refactorises at every iteration. Its contact state is its results:
+/// `tfem_get_contact_state` and `tfem_set_contact_state` are refused.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_step(
     model: *mut TfemModel,
@@ -1487,9 +1486,10 @@ pub unsafe extern "C" fn tfem_step(
 /// Undoes the last load step: its results, and the contact state the next
 /// step starts from, go back to what they were before it. Once per step.
 /// Refused with TFEM_STATUS_INVALID_STATE, the model unchanged, once the
-/// mesh, its boundary edges, the contact pairs or friction on/off have
-/// changed since that step: they remake the contact mesh, and its contact
-/// state belongs to the one before; the message names the change. Fixing
+/// mesh, its boundary edges, the contact pairs, friction on/off or the
+/// contact weighting have changed since that step: they remake the
+/// contact mesh, and its contact state belongs to the one before; the
+/// message names the change. Fixing
 /// or clearing prescribed DOFs does not block it: like new materials, it
 /// changes the stiffness, not the contact mesh. The state brought back is
 /// the next step's start even if that step starts a new history (new
@@ -1502,7 +1502,8 @@ pub unsafe extern "C" fn tfem_revert_step(model: *mut TfemModel) -> Status {
 }
 
 /// Writes to `size` the number of bytes of the contact state of the last
-/// load step (see `tfem_get_contact_state`).
+/// load step (see `tfem_get_contact_state`). Refused with
+/// TFEM_STATUS_INVALID_STATE under the mortar weighting.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_contact_state_size(
     model: *mut TfemModel,
@@ -1517,7 +1518,9 @@ pub unsafe extern "C" fn tfem_get_contact_state_size(
 /// bytes, at least `tfem_get_contact_state_size`): the active set and the
 /// factor of the condensed interface system, so that
 /// `tfem_set_contact_state` continues the history bit for bit (a restart,
-/// in this model or another one holding the same problem).
+/// in this model or another one holding the same problem). Refused with
+/// TFEM_STATUS_INVALID_STATE under the mortar weighting (its contact state
+/// is the step's results; no bytes to save yet).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_contact_state(
     model: *mut TfemModel,
@@ -1557,6 +1560,7 @@ pub unsafe extern "C" fn tfem_get_contact_state(
 /// so too; the state is now kept across it). A
 /// frictional state waiting for a step under the stick law is refused by
 /// that step (TFEM_STATUS_INVALID_ARGUMENT) until another state is set.
+/// Refused with TFEM_STATUS_INVALID_STATE under the mortar weighting.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_set_contact_state(
     model: *mut TfemModel,

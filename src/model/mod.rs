@@ -30,7 +30,7 @@ use crate::fem::mesh::Mesh;
 use crate::linalg::Ordering;
 use crate::solve::history::{self, StepState};
 use crate::solve::session::{Session, Settings};
-use crate::solve::{self, Field, Input, Outcome};
+use crate::solve::{self, Field, Input, Outcome, Pending};
 
 /// A displacement component.
 #[repr(C)]
@@ -78,12 +78,15 @@ pub struct Model {
 }
 
 /// What [`Model::revert_step`] restores besides the results: the contact
-/// epoch of the step, and the strip's contact state before it (`None`
-/// under the mortar weighting, whose next step starts from the results
-/// brought back).
+/// epoch of the step, and the contact state before it — the strip's, or
+/// under the mortar weighting the history's interface factor (the next
+/// step starts from the slave nodes' set of the results brought back).
 struct Undo {
     contact: u64,
     state: Option<StepState>,
+    /// Under the mortar weighting, the history's interface factor before
+    /// the step (`None` when the step began a history).
+    mortar: Option<crate::solve::mortar_history::Snapshot>,
 }
 
 /// A contact state the model keeps, with the contact epoch of the
@@ -544,12 +547,13 @@ impl Model {
     ///
     /// Under the mortar weighting ([`ContactWeighting::Mortar`], frictionless
     /// only) a step is the contact solve of the scaled loads started from
-    /// the slave nodes' set of the step before, with the factor of the
-    /// history's first K₁ (no sparse factorisation while the stiffness and
-    /// options are unchanged): two sparse solves and the dense interface
-    /// work per step, the field computed at once. Its contact state is
-    /// its results: [`Model::contact_state`] and
-    /// [`Model::set_contact_state`] are refused.
+    /// the slave nodes' set of the step before; the first step's
+    /// factorisation serves the history in the same way (dense interface
+    /// work per step, the field recovered when asked for), and with
+    /// `refactorize`, or an interface too large to condense, each step is a
+    /// contact solve that refactorises. Its contact state is its results:
+    /// [`Model::contact_state`] and [`Model::set_contact_state`] are
+    /// refused.
     pub fn step(&mut self, load_factor: f64, options: &ContactOptions) -> Result<ContactReport> {
         options.validate()?;
         self.in_pool(|m| m.run_step(load_factor, options))
@@ -633,6 +637,7 @@ impl Model {
             Undo {
                 contact,
                 state: Some(before),
+                mortar: None,
             },
         ));
         let solution = self.solution.insert(solution);
@@ -674,6 +679,13 @@ impl Model {
         let history = self.session.as_mut().and_then(|s| s.history.as_mut());
         if let (Some(history), Some(state)) = (history, &before.state) {
             history.set_state(state)?;
+        }
+        let mortar = self
+            .session
+            .as_mut()
+            .and_then(|s| s.mortar_history.as_mut());
+        if let (Some(history), Some(snapshot)) = (mortar, &before.mortar) {
+            history.restore(snapshot);
         }
         let (solution, before) = self.undo.take().expect("checked above");
         self.solution = solution;
@@ -780,8 +792,18 @@ impl Model {
             self.check_memory(session.interface_len())?;
             let prescribed = self.problem.prescribed_vector()?;
             let f_ext = self.problem.load_vector()?;
-            let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
-            history::recover(session, &input, pending)
+            match pending {
+                Pending::Strip(p) => {
+                    let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
+                    history::recover(session, &input, p)
+                }
+                Pending::Mortar(p) => {
+                    let prescribed: Vec<f64> = prescribed.iter().map(|u| p.t * u).collect();
+                    let f_ext: Vec<f64> = f_ext.iter().map(|f| p.t * f).collect();
+                    let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
+                    crate::solve::mortar_history::recover(session, &input, p)
+                }
+            }
         };
         let u = match &self.pool {
             Some(pool) => pool.install(recover)?,
@@ -915,8 +937,8 @@ impl Model {
     /// interface (docs/method.md §6.11): [`ContactWeighting::Strip`] (the
     /// default, the elements of B) or [`ContactWeighting::Mortar`] (a
     /// weighted gap per node of each pair's coarser side: exact on the
-    /// contact patch test whatever the meshes; frictionless single solves
-    /// only). A change drops the results' validity like any edit of the
+    /// contact patch test whatever the meshes; frictionless contact solves
+    /// and load steps). A change drops the results' validity like any edit of the
     /// contact pairs.
     pub fn set_contact_weighting(&mut self, weighting: ContactWeighting) {
         self.problem.set_contact_weighting(weighting);

@@ -1,7 +1,7 @@
 //! Load steps under the mortar weighting (docs/method.md §6.11): each step
-//! a contact solve of the scaled loads, warm-started from the slave nodes'
-//! set of the step before, with the factor of the history's K₁ reused
-//! while the stiffness and the options are unchanged.
+//! the contact problem of the scaled loads, warm-started from the slave
+//! nodes' set of the step before; the history itself is
+//! `solve::mortar_history`.
 
 use std::time::Instant;
 
@@ -23,34 +23,57 @@ impl Model {
         history::check_load_factor(t)?;
         self.check_memory(0)?;
         let mut timings = Timings::default();
-        let prescribed: Vec<f64> = self.problem.prescribed_vector()?;
-        let f_ext: Vec<f64> = self.problem.load_vector()?;
-        let prescribed: Vec<f64> = prescribed.iter().map(|u| t * u).collect();
+        let prescribed = self.problem.prescribed_vector()?;
+        let f_ext = self.problem.load_vector()?;
+        let unit = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
+        let prescribed_t: Vec<f64> = prescribed.iter().map(|u| t * u).collect();
         let f_scaled: Vec<f64> = f_ext.iter().map(|f| t * f).collect();
-        let input = input_of(&self.problem, self.settings, &prescribed, &f_scaled)?;
+        let scaled = input_of(&self.problem, self.settings, &prescribed_t, &f_scaled)?;
         let contact = self.problem.contact_epoch();
+        let key = history::Key::new(self.problem.stiffness(), options);
+        // A step that begins a new history ends the old one: a step's
+        // field waiting for recovery is recovered first.
+        let continues = self
+            .session
+            .as_ref()
+            .and_then(|s| s.mortar_history.as_ref())
+            .is_some_and(|h| h.continues(&key, self.settings));
+        if !continues && self.solution.as_ref().is_some_and(|s| s.pending.is_some()) {
+            let _ = self.field();
+        }
         let warm = self.mortar_warm_start(contact);
-        let stiffness = self.problem.stiffness();
-        let session = session_of(&mut self.session, &self.problem, &mut timings)?;
         let revision = self.problem.revision();
-        let had_matrix = session.system_matrix(revision).is_some();
-        let key = history::Key::new(stiffness, options);
-        let stepped = solve::mortar_step(
-            session,
-            &input,
-            (options, key),
-            warm.as_deref(),
-            &mut timings,
-        );
-        let outcome = match stepped {
-            Ok(outcome) => outcome,
-            Err(e) => {
-                if had_matrix {
-                    keep_matrix(session, &input, self.solution.as_ref(), revision);
+        let mut fresh = false;
+        let (outcome, before) = loop {
+            let session = session_of(&mut self.session, &self.problem, &mut timings)?;
+            let had_matrix = session.system_matrix(revision).is_some();
+            let stepped = solve::mortar_step(
+                session,
+                (&scaled, &unit),
+                (options, key, revision),
+                (t, warm.as_deref(), fresh),
+                &mut timings,
+            );
+            match stepped {
+                Ok(Some(stepped)) => break stepped,
+                // The history's interface lost its accuracy: the step is
+                // solved afresh, which ends the history, so a step's field
+                // waiting on it is recovered first.
+                Ok(None) => {
+                    if self.solution.as_ref().is_some_and(|s| s.pending.is_some()) {
+                        let _ = self.field();
+                    }
+                    fresh = true;
                 }
-                return Err(e);
+                Err(e) => {
+                    if had_matrix {
+                        keep_matrix(session, &unit, self.solution.as_ref(), revision);
+                    }
+                    return Err(e);
+                }
             }
         };
+        let session = self.session.as_ref().expect("the step's session");
         let elements = &session.contact;
         let (mut solution, warnings) = solution_of(
             outcome,
@@ -65,6 +88,7 @@ impl Model {
         let before = Undo {
             contact,
             state: None,
+            mortar: before,
         };
         self.undo = Some((self.solution.take(), before));
         (self.restored, self.carried) = (None, None);

@@ -14,7 +14,7 @@ use std::sync::OnceLock;
 use crate::error::{Error, Result, ensure_finite};
 use crate::fem::element::{TriGeometry, b_hat, tempered_jacobian};
 use crate::fem::element_loop::element_values;
-use crate::solve::history::Pending;
+use crate::solve::Pending;
 
 pub use crate::solve::report::{ContactReport, IterationRecord, SolveInfo, Timings};
 pub use crate::solve::system::SystemMatrix;

@@ -50,6 +50,11 @@ pub(crate) struct Key {
 }
 
 impl Key {
+    /// The contact options it was made for (the iteration cap left out).
+    pub fn options(&self) -> &ContactOptions {
+        &self.options
+    }
+
     /// The key of a problem of stiffness epoch `stiffness` under `options`.
     pub fn new(stiffness: u64, options: &ContactOptions) -> Key {
         Key {
@@ -878,7 +883,7 @@ fn on_interface(
         friction,
     };
     let outcome = Outcome {
-        u: Field::Pending(pending),
+        u: Field::Pending(super::Pending::Strip(pending)),
         log: Vec::new(),
         info,
         contact: Some(contact),

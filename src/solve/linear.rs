@@ -49,19 +49,6 @@ pub(crate) fn factor_and_solve(
     if let Err(e) = fact {
         accept_or_explain(at, chol, e, energy, context)?;
     }
-    solve_factored(at, chol, system, (refined, context), timings)
-}
-
-/// Solves `system` with `chol`, a factor of its matrix made earlier (or,
-/// when `refined`, of a matrix close enough to serve as its approximate
-/// inverse in iterative refinement).
-pub(crate) fn solve_factored(
-    at: Structure<'_>,
-    chol: &Cholesky,
-    system: &AssembledSystem,
-    (refined, context): (bool, &str),
-    timings: &mut Timings,
-) -> Result<Vec<f64>> {
     let t0 = Instant::now();
     let mut x = system.rhs().to_vec();
     chol.solve(&mut x)?;

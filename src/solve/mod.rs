@@ -17,6 +17,7 @@ pub(crate) mod history;
 pub(crate) mod linear;
 pub(crate) mod memory;
 pub(crate) mod mortar;
+pub(crate) mod mortar_history;
 pub mod report;
 pub(crate) mod session;
 pub mod system;
@@ -62,8 +63,17 @@ pub(crate) enum Field {
     /// Over every global DOF.
     Global(Vec<f64>),
     /// A load step's interface values, the whole field recovered when
-    /// asked for ([`history::recover`]).
-    Pending(history::Pending),
+    /// asked for.
+    Pending(Pending),
+}
+
+/// A load step whose field waits until asked for.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) enum Pending {
+    /// Under the strip weighting ([`history::recover`]).
+    Strip(history::Pending),
+    /// Under the mortar weighting ([`mortar_history::recover`]).
+    Mortar(mortar_history::Pending),
 }
 
 /// What a successful solve produced.
@@ -116,27 +126,57 @@ pub(crate) fn solve(
     }
 }
 
-/// A load step under the mortar weighting: the contact solve of `input`
-/// (its loads and prescribed values already scaled by the step's factor),
-/// starting from the active set `warm` (`None`: a contact solve's first
-/// set) and reusing the factor of K₁ that the session keeps from an
-/// earlier step of the same `key` (docs/method.md §6.11).
+/// A load step under the mortar weighting at load factor `t` (`scaled`:
+/// the problem with its loads and prescribed values times t; `unit`:
+/// unscaled), from the slave nodes' set `warm` (`None`: a contact solve's
+/// first set): a step of the session's history when it goes on (same
+/// `key` and settings), else a contact solve that begins one
+/// (docs/method.md §6.11). Also gives the interface factor before the
+/// step when a history went on (what a revert puts back).
 pub(crate) fn mortar_step(
     session: &mut Session,
-    input: &Input<'_>,
-    (options, key): (&ContactOptions, history::Key),
-    warm: Option<&[bool]>,
+    (scaled, unit): (&Input<'_>, &Input<'_>),
+    (options, key, revision): (&ContactOptions, history::Key, u64),
+    (t, warm, fresh): (f64, Option<&[bool]>, bool),
     timings: &mut Timings,
-) -> Result<Outcome> {
-    // Taken before the bodies are reassembled, which forgets it.
-    let k1 = session.mortar_k1.take();
-    let (info, warnings) = prepare(session, input, timings)?;
-    let start = mortar::Start {
-        step: Some(key),
-        warm,
-        k1,
+) -> Result<Option<(Outcome, Option<mortar_history::Snapshot>)>> {
+    ensure_unknowns(&session.dofs)?;
+    // Refused options leave the history to the next step.
+    mortar::check_options(options, scaled.pairs)?;
+    let goes_on = |h: &mortar_history::MortarHistory| h.continues(&key, scaled.settings);
+    let going_on = match session.mortar_history.as_ref() {
+        Some(h) if !fresh && goes_on(h) => session.mortar_history.take(),
+        _ => None,
     };
-    mortar::solve_contact(session, input, options, (info, timings), (warnings, start))
+    if let Some(mut h) = going_on {
+        let before = h.snapshot();
+        let stepped = mortar_history::step(
+            session,
+            (scaled, unit),
+            options,
+            &mut h,
+            (t, warm, revision),
+            timings,
+        );
+        if !matches!(stepped, Ok(Some(_))) {
+            // A failed step changes nothing: the factor goes back.
+            h.restore(&before);
+        }
+        session.mortar_history = Some(h);
+        return Ok(stepped?.map(|outcome| (outcome, Some(before))));
+    }
+    let (info, warnings) = prepare(session, scaled, timings)?;
+    let start = mortar::Start { warm };
+    let (outcome, settled) =
+        mortar::solve_settled(session, scaled, options, (info, timings), (warnings, start))?;
+    if let Some(settled) = settled {
+        // Without a history the steps after solve afresh: slower, not
+        // wrong, so a history that cannot begin is no error.
+        let at = (key, revision);
+        let begun = mortar_history::begin(session, unit, options, at, (settled, outcome.info));
+        session.mortar_history = begun.ok();
+    }
+    Ok(Some((outcome, None)))
 }
 
 /// What every solve does first: the bodies' part assembled afresh (a load
@@ -150,7 +190,7 @@ fn prepare(
     ensure_unknowns(&session.dofs)?;
     session.set_system_of(None);
     session.history = None;
-    session.mortar_k1 = None;
+    session.mortar_history = None;
     let mesh = input.elements.mesh();
     let t0 = std::time::Instant::now();
     let softened = session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;

@@ -23,10 +23,9 @@
 //! active set assembles.
 
 use super::condensed::{Condensed, ElementMatrix};
-use super::history::Key;
-use super::linear::{Structure, factor_and_solve, solve_factored};
+use super::linear::{Structure, factor_and_solve};
 use super::report::{IterationRecord, SolveInfo, Timings};
-use super::session::{Session, Settings, Wanted, factorisation};
+use super::session::{Session, Wanted, factorisation};
 use super::system::AssembledSystem;
 use super::{Input, Outcome};
 use crate::contact::law::penalty_lengths;
@@ -116,27 +115,29 @@ pub(crate) fn cliques(all: &[PairGaps]) -> Vec<[usize; 3]> {
 }
 
 /// One slave node's penalty over the unknowns.
-struct Penalty {
+pub(super) struct Penalty {
     /// Index of its pair.
     pair: usize,
     /// The slave node, its tributary m_i and κ/m_i.
     node: usize,
     tributary: f64,
-    stiffness: f64,
+    pub(super) stiffness: f64,
     /// G_i⁰: the gap with the free unknowns at rest.
-    g_rest: f64,
+    pub(super) g_rest: f64,
+    /// The initial gap alone (G_i⁰ without the prescribed motion).
+    pub(super) g_initial: f64,
     /// Each coefficient's global DOF, its unknown (`None` when
     /// prescribed) and its value.
     dofs: Vec<usize>,
-    unknowns: Vec<Option<usize>>,
-    coef: Vec<f64>,
+    pub(super) unknowns: Vec<Option<usize>>,
+    pub(super) coef: Vec<f64>,
     /// (κ/m_i) c cᵀ, row-major.
     matrix: Vec<f64>,
 }
 
 impl Penalty {
     /// G_i for the free unknowns' values read by `value`.
-    fn gap(&self, value: impl Fn(usize) -> f64) -> f64 {
+    pub(super) fn gap(&self, value: impl Fn(usize) -> f64) -> f64 {
         self.g_rest
             + self
                 .unknowns
@@ -146,7 +147,7 @@ impl Penalty {
                 .sum::<f64>()
     }
 
-    fn element(&self) -> ElementMatrix<'_> {
+    pub(super) fn element(&self) -> ElementMatrix<'_> {
         ElementMatrix {
             unknowns: &self.unknowns,
             matrix: &self.matrix,
@@ -154,7 +155,7 @@ impl Penalty {
     }
 
     /// The load −(κ/m_i) G_i⁰ c_i on each free unknown, times `sign`.
-    fn loads(&self, sign: f64) -> impl Iterator<Item = (usize, f64)> + '_ {
+    pub(super) fn loads(&self, sign: f64) -> impl Iterator<Item = (usize, f64)> + '_ {
         let f = -sign * self.stiffness * self.g_rest;
         self.unknowns
             .iter()
@@ -181,7 +182,7 @@ impl Penalty {
     }
 
     /// Adds (`sign` +1) or takes out (−1) the penalty in `system`.
-    fn toggle(&self, system: &mut AssembledSystem, pattern: &Pattern, sign: f64) {
+    pub(super) fn toggle(&self, system: &mut AssembledSystem, pattern: &Pattern, sign: f64) {
         let unknowns: Vec<usize> = self
             .unknowns
             .iter()
@@ -238,6 +239,7 @@ fn penalties(
                 tributary: wg.tributary,
                 stiffness,
                 g_rest,
+                g_initial: wg.initial,
                 dofs,
                 unknowns,
                 coef,
@@ -267,7 +269,7 @@ fn initial_set(penalties: &[Penalty], h_c: &std::collections::BTreeMap<usize, f6
 }
 
 /// Refuses options the mortar weighting does not serve (yet), naming them.
-fn check_options(options: &ContactOptions, pairs: &[ContactPair]) -> Result<()> {
+pub(super) fn check_options(options: &ContactOptions, pairs: &[ContactPair]) -> Result<()> {
     if options.law != ContactLaw::Frictionless {
         return Err(Error::argument(
             "the mortar weighting is frictionless: the stick law (ContactLaw::Stick) needs the \
@@ -290,39 +292,48 @@ fn check_options(options: &ContactOptions, pairs: &[ContactPair]) -> Result<()> 
     Ok(())
 }
 
-/// What the factor of a load history's K₁ is of, kept in the session
-/// between steps ([`Session::mortar_k1`]): a step of the same key and
-/// settings solves with it instead of factorising.
-#[derive(Debug, Clone)]
-pub(crate) struct K1 {
-    /// The history it serves (stiffness epoch and options).
-    key: Key,
-    /// The settings the factor was made with.
-    settings: Settings,
-    /// The slave nodes whose penalties K₁ holds.
-    reference: Vec<bool>,
-}
-
-/// How a solve starts: a contact solve's defaults, or a load step's.
+/// How a solve starts: from the initial set, or from a load step's warm
+/// start.
 #[derive(Debug, Default)]
 pub(crate) struct Start<'w> {
-    /// The history of a load step (`None`: a contact solve).
-    pub step: Option<Key>,
     /// The set to start from (`None`: the initial set).
     pub warm: Option<&'w [bool]>,
-    /// The session's K₁ of an earlier step, if it kept one.
-    pub k1: Option<K1>,
 }
 
-/// A frictionless contact solve under the mortar weighting, or a load
-/// step ([`Start`]).
+/// What a solve settled by the condensed loop leaves for a load history
+/// to go on from ([`super::mortar_history::begin`]): K₁'s set, and the
+/// condensed system with the set its factor is of.
+pub(crate) struct Settled {
+    /// The slave nodes whose penalties K₁ holds.
+    pub reference: Vec<bool>,
+    /// The condensed interface system.
+    pub sys: Condensed,
+    /// The set of its factor: the settled one (the loop settles on the
+    /// set whose factor solved the last iterate).
+    pub factor_set: Vec<bool>,
+}
+
+/// A frictionless contact solve under the mortar weighting.
 pub(crate) fn solve_contact(
+    session: &mut Session,
+    input: &Input<'_>,
+    options: &ContactOptions,
+    (info, timings): (SolveInfo, &mut Timings),
+    (warnings, start): (Vec<String>, Start<'_>),
+) -> Result<Outcome> {
+    let (outcome, _) = solve_settled(session, input, options, (info, timings), (warnings, start))?;
+    Ok(outcome)
+}
+
+/// [`solve_contact`], with what the condensed loop leaves when it settled
+/// the set (`None` when the loop refactorised).
+pub(crate) fn solve_settled(
     session: &mut Session,
     input: &Input<'_>,
     options: &ContactOptions,
     (mut info, timings): (SolveInfo, &mut Timings),
     (mut warnings, start): (Vec<String>, Start<'_>),
-) -> Result<Outcome> {
+) -> Result<(Outcome, Option<Settled>)> {
     check_options(options, input.pairs)?;
     let mesh = input.elements.mesh();
     let penalties = session_penalties(session, input, options)?;
@@ -331,20 +342,11 @@ pub(crate) fn solve_contact(
     let condense =
         !options.refactorize && Condensed::worthwhile(interface.len(), session.pattern.nnz());
     let warm = start.warm.filter(|w| w.len() == n).map(<[bool]>::to_vec);
-    // A step of the history that made the kept K₁ solves with its factor.
-    let kept = start.k1.filter(|k| {
-        condense
-            && Some(k.key) == start.step
-            && k.settings == input.settings
-            && k.reference.len() == n
-    });
-    let reuse = kept.is_some();
-    let reference = match (kept, &warm) {
-        (Some(k), _) => k.reference,
+    let reference = match &warm {
         // Refactorising at every iteration, the first factor is the warm
         // set's own.
-        (None, Some(w)) if !condense => w.clone(),
-        (None, _) => initial_set(&penalties, &penalty_lengths(&session.contact)),
+        Some(w) if !condense => w.clone(),
+        _ => initial_set(&penalties, &penalty_lengths(&session.contact)),
     };
     let first = warm.unwrap_or_else(|| reference.clone());
     let Session {
@@ -386,24 +388,13 @@ pub(crate) fn solve_contact(
         in_system: reference.clone(),
         max_iterations: options.max_iterations,
     };
-    let interface = condense.then_some(interface);
-    let mut session_k1 = None;
-    let (x, condensed_bytes) = run.solve((interface, reuse), timings, &mut info)?;
-    // The factor is K₁'s still when the condensed loop settled (it never
-    // refactorises the sparse matrix): the next step may reuse it.
-    if let (Some(key), true) = (start.step, condensed_bytes > 0) {
-        session_k1 = Some(K1 {
-            key,
-            settings: input.settings,
-            reference,
-        });
-    }
+    let (x, sys) = run.solve(condense.then_some(interface), timings, &mut info)?;
     let log = std::mem::take(&mut run.log);
     let (active, history) = run.set.into_parts();
     info.memory_bytes = at.pattern.memory_bytes()
         + run.system.memory_bytes()
         + run.chol.memory_bytes()
-        + condensed_bytes;
+        + sys.as_ref().map_or(0, |s| s.memory_bytes() + 8 * x.len());
     info.relative_residual = run.system.relative_residual(at.pattern, &x);
     info.condition_estimate = run.chol.condition_estimate();
     info.timings = *timings;
@@ -411,19 +402,24 @@ pub(crate) fn solve_contact(
     super::diagnostics::conditioning_warning(&info, &mut warnings);
     let u = dofs.expand(&x, input.prescribed);
     let gaps = session.mortar.clone().unwrap_or_default();
-    let contact = outcome((&penalties, gaps), &active, &x, history, info, mesh)?;
-    session.mortar_k1 = session_k1;
-    Ok(Outcome {
+    let contact = outcome((&penalties, gaps), &active, |j| x[j], (history, info), mesh)?;
+    let outcome = Outcome {
         u: super::Field::Global(u),
         log,
         info,
         contact: Some(contact),
         warnings,
-    })
+    };
+    let settled = sys.map(|sys| Settled {
+        reference,
+        sys,
+        factor_set: active,
+    });
+    Ok((outcome, settled))
 }
 
 /// The interface unknowns: every free unknown a penalty reads, sorted.
-fn interface_of(penalties: &[Penalty]) -> Vec<usize> {
+pub(super) fn interface_of(penalties: &[Penalty]) -> Vec<usize> {
     let mut interface: Vec<usize> = penalties
         .iter()
         .flat_map(|p| p.unknowns.iter().flatten().copied())
@@ -434,7 +430,7 @@ fn interface_of(penalties: &[Penalty]) -> Vec<usize> {
 }
 
 /// The penalties of the session's weighted gaps for `input` and `options`.
-fn session_penalties(
+pub(super) fn session_penalties(
     session: &Session,
     input: &Input<'_>,
     options: &ContactOptions,
@@ -448,49 +444,43 @@ fn session_penalties(
 }
 
 /// The loop's state.
-struct Run<'r, 'a> {
-    at: Structure<'r>,
-    input: &'r Input<'a>,
-    penalties: &'r [Penalty],
-    chol: &'r mut Cholesky,
-    system: &'r mut AssembledSystem,
-    set: ActiveSet,
+pub(super) struct Run<'r, 'a> {
+    pub(super) at: Structure<'r>,
+    pub(super) input: &'r Input<'a>,
+    pub(super) penalties: &'r [Penalty],
+    pub(super) chol: &'r mut Cholesky,
+    pub(super) system: &'r mut AssembledSystem,
+    pub(super) set: ActiveSet,
     /// The penalties the assembled system holds.
-    in_system: Vec<bool>,
+    pub(super) in_system: Vec<bool>,
     /// The penalties each assembly switched, in order: replayed onto the
     /// bodies' part, the same operations give the same matrix to the bit
     /// ([`restore`]).
-    log: Vec<Vec<usize>>,
-    max_iterations: usize,
+    pub(super) log: Vec<Vec<usize>>,
+    pub(super) max_iterations: usize,
 }
 
 impl Run<'_, '_> {
-    /// Runs the loop to a settled set: the unknowns and the bytes the
-    /// condensed system held (0 when it did not settle the loop). With
-    /// `reuse`, the factor is already K₁'s.
+    /// Runs the loop to a settled set: the unknowns, and the condensed
+    /// system when it settled the loop.
     fn solve(
         &mut self,
-        (interface, reuse): (Option<Vec<usize>>, bool),
+        interface: Option<Vec<usize>>,
         timings: &mut Timings,
         info: &mut SolveInfo,
-    ) -> Result<(Vec<f64>, usize)> {
-        let x1 = if reuse {
-            let context = " (mortar contact, K₁ of the load history)";
-            solve_factored(self.at, self.chol, self.system, (true, context), timings)?
-        } else {
-            self.full_solve(timings, info)?
-        };
+    ) -> Result<(Vec<f64>, Option<Condensed>)> {
+        let x1 = self.full_solve(timings, info)?;
         if let Some(interface) = interface {
-            if let Some(done) = self.condensed(interface, x1.clone(), timings, info)? {
-                return Ok(done);
+            if let Some((x, sys)) = self.condensed(interface, x1.clone(), timings, info)? {
+                return Ok((x, Some(sys)));
             }
             // Lost to round-off in the condensed system: go on with full
             // solves of the assembled system, which holds the current set.
-            return Ok((self.full_loop(None, timings, info)?, 0));
+            return Ok((self.full_loop(None, timings, info)?, None));
         }
         // Refactorising, K₁ holds the first set: its solution is the first
         // iterate.
-        Ok((self.full_loop(Some(x1), timings, info)?, 0))
+        Ok((self.full_loop(Some(x1), timings, info)?, None))
     }
 
     /// Factorises the assembled system and solves it.
@@ -580,37 +570,37 @@ impl Run<'_, '_> {
         x1: Vec<f64>,
         timings: &mut Timings,
         info: &mut SolveInfo,
-    ) -> Result<Option<(Vec<f64>, usize)>> {
+    ) -> Result<Option<(Vec<f64>, Condensed)>> {
         let t0 = std::time::Instant::now();
         let mut sys = Condensed::new(self.chol, interface)?;
         info.interface_unknowns = sys.len();
-        let bytes = sys.memory_bytes() + 8 * x1.len();
         let reference = self.in_system.clone();
         let y = sys.gather(&x1);
-        let ui = self.interface_loop(&mut sys, &y, &reference);
+        let mut factor_set = reference.clone();
+        let ui = self.interface_loop(&mut sys, &y, &reference, &mut factor_set);
         timings.interface += t0.elapsed().as_secs_f64();
         let Some(ui) = ui? else { return Ok(None) };
         let t0 = std::time::Instant::now();
         let x = self.recovered(&sys, x1, &ui, &reference);
         timings.solve += t0.elapsed().as_secs_f64();
-        Ok(x?.map(|x| (x, bytes)))
+        Ok(x?.map(|x| (x, sys)))
     }
 
     /// The active-set iterations on the interface (S u_I = S₁ y + Δg), from
     /// the reference set K₁ holds, to the settled set's interface values;
     /// `Ok(None)` when the interface matrix of a set is not positive
     /// definite to working accuracy.
-    fn interface_loop(
+    pub(super) fn interface_loop(
         &mut self,
         sys: &mut Condensed,
         y: &[f64],
         reference: &[bool],
+        factor_set: &mut Vec<bool>,
     ) -> Result<Option<Vec<f64>>> {
-        let mut factor_set = reference.to_vec();
         // A warm start (a load step's) begins with its own set's solve.
         let mut ui = match self.set.active() == reference {
             true => y.to_vec(),
-            false => match self.set_solve(sys, y, reference, &mut factor_set)? {
+            false => match self.set_solve(sys, y, reference, factor_set)? {
                 Some(ui) => ui,
                 None => return Ok(None),
             },
@@ -624,7 +614,7 @@ impl Run<'_, '_> {
             if iteration >= self.max_iterations {
                 return Err(self.set.not_settled(self.max_iterations));
             }
-            match self.set_solve(sys, y, reference, &mut factor_set)? {
+            match self.set_solve(sys, y, reference, factor_set)? {
                 Some(next) => ui = next,
                 None => return Ok(None),
             }
@@ -722,7 +712,7 @@ impl Run<'_, '_> {
 
 /// The position of free unknown `j` on the interface of `sys` (every
 /// penalty's unknowns are there by construction).
-fn at_interface(sys: &Condensed, j: usize) -> usize {
+pub(super) fn at_interface(sys: &Condensed, j: usize) -> usize {
     sys.position(j)
         .expect("a penalty's unknowns are on the interface")
 }
@@ -731,7 +721,7 @@ fn at_interface(sys: &Condensed, j: usize) -> usize {
 /// `out` (over the free unknowns), v given on the interface of `sys`: the
 /// penalty forces −ΔC v of the penalties switched since K₁, with their
 /// loads Δg when `rest`.
-fn add_changed_forces(
+pub(super) fn add_changed_forces(
     penalties: &[Penalty],
     changes: &[(usize, f64)],
     (sys, v): (&Condensed, &[f64]),
@@ -750,26 +740,26 @@ fn add_changed_forces(
 }
 
 /// The indices where `a` and `b` differ.
-fn differing(a: &[bool], b: &[bool]) -> Vec<usize> {
+pub(super) fn differing(a: &[bool], b: &[bool]) -> Vec<usize> {
     (0..a.len()).filter(|&k| a[k] != b[k]).collect()
 }
 
-/// The contact state of the settled loop: each slave node's gap and
+/// The contact state of the settled loop (the free unknowns' values read
+/// by `value`, the interface's at least): each slave node's gap and
 /// pressure, the contact length (the active nodes' tributaries) and the
 /// largest penetration (of a mean gap G_i/m_i).
-fn outcome(
+pub(super) fn outcome(
     (penalties, gaps): (&[Penalty], Vec<PairGaps>),
     active: &[bool],
-    x: &[f64],
-    history: Vec<IterationRecord>,
-    info: SolveInfo,
+    value: impl Fn(usize) -> f64,
+    (history, info): (Vec<IterationRecord>, SolveInfo),
     mesh: &Mesh,
 ) -> Result<super::ContactOutcome> {
     let nodes: Vec<SlaveNode> = penalties
         .iter()
         .zip(active)
         .map(|(p, &on)| {
-            let g = p.gap(|j| x[j]);
+            let g = p.gap(&value);
             SlaveNode {
                 pair: p.pair,
                 node: p.node,

@@ -96,9 +96,8 @@ pub(crate) struct Session {
     system_of: Option<u64>,
     /// A load history's state (K₁ factorised once for every step).
     pub history: Option<super::history::History>,
-    /// Under the mortar weighting, what the factor in `analysis` is of
-    /// when a load history's steps may reuse it (`None` otherwise).
-    pub mortar_k1: Option<super::mortar::K1>,
+    /// A load history's state under the mortar weighting.
+    pub mortar_history: Option<super::mortar_history::MortarHistory>,
 }
 
 impl Session {
@@ -142,7 +141,7 @@ impl Session {
             system,
             system_of: None,
             history: None,
-            mortar_k1: None,
+            mortar_history: None,
         })
     }
 
