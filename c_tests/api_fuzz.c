@@ -1951,8 +1951,12 @@ static void scene_prescribed(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
  * frictionless solve with the linearised test, or one the weighting
  * refuses (the stick law, the literal test, friction, a pair with its own
  * contact mesh); the getters (those per element of B refused); the slave
- * nodes (all four columns, some NULL, a short length); then one of: a load
- * step (refused, the results kept), a wild weighting (refused, nothing
+ * nodes (all four columns, some NULL, a short length); then one of: load
+ * steps (a frictionless contact solve of the scaled loads, refactorize
+ * accepted; refused with friction, the results kept) whose results are a
+ * step's (slave nodes, no system matrix, no contact state: refused under
+ * the mortar weighting), then reverted (the results before the last step,
+ * once), a wild weighting (refused, nothing
  * changes), the mortar weighting set again (nothing changes), the strip
  * set back (the results gone; solved again: no slave nodes), the model
  * re-created (the strip again). The statuses are the scene's expectation
@@ -1997,10 +2001,49 @@ static void scene_mortar(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
     c->want = 1 + ok;
   }
   switch (rint_(r, 5)) {
-  case 0: /* a load step: refused under the mortar weighting, the results kept */
-    step_call(cs, chance(r, 0.5) ? 1.0 : 0.5, chance(r, 0.5), T_NONE)->want = 1 + TFEM_STATUS_INVALID_STATE;
-    add_call(cs, F_GET_CONTACT_SLAVE_NODES)->want = 1 + ok;
+  case 0: { /* load steps under the mortar weighting, then a revert */
+    int srefused = user || friction; /* (the step's own options are frictionless, linearised) */
+    int sok = srefused ? TFEM_STATUS_INVALID_STATE : TFEM_STATUS_OK; /* slave nodes after the steps */
+    int nsteps = chance(r, 0.35) ? 2 : 1;
+    for (int k = 0; k < nsteps; ++k) {
+      int opts = chance(r, 0.5);
+      call_t *c = step_call(cs, k == nsteps - 1 ? 1.0 : (chance(r, 0.5) ? 0.5 : 0.25), opts, T_NONE);
+      if (opts && chance(r, 0.3)) c->iv[3] = 1; /* refactorize: accepted in a mortar step */
+      if (!user) c->want = 1 + (friction ? TFEM_STATUS_INVALID_ARGUMENT : TFEM_STATUS_OK);
+      add_call(cs, F_GET_CONTACT_SLAVE_NODES)->want = 1 + (srefused ? ok : sok);
+      /* (a refused step: user or friction, whose solve was refused too: no results) */
+      int rs = srefused ? TFEM_STATUS_INVALID_STATE : TFEM_STATUS_OK;
+      if (chance(r, 0.4)) add_call(cs, F_GET_CONTACT_REPORT)->want = 1 + rs;
+      if (chance(r, 0.5)) add_call(cs, F_GET_DISPLACEMENTS)->want = 1 + rs;
+    }
+    if (!srefused) {
+      if (chance(r, 0.4)) add_call(cs, F_GET_CONTACT_NODAL_PRESSURES)->want = 1;
+      if (chance(r, 0.3)) add_call(cs, F_GET_CONTACT_ACTIVE)->want = 1 + TFEM_STATUS_INVALID_STATE;
+      if (chance(r, 0.3)) add_call(cs, F_GET_MATRIX_SIZE)->want = 1 + TFEM_STATUS_INVALID_STATE;
+      if (chance(r, 0.3)) result_getters(r, cs, 1);
+    }
+    /* the contact states: refused under the mortar weighting */
+    if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_STATE_SIZE)->want = 1 + TFEM_STATUS_INVALID_STATE;
+    if (chance(r, 0.3)) add_call(cs, F_GET_CONTACT_STATE)->want = 1 + TFEM_STATUS_INVALID_STATE;
+    if (chance(r, 0.3)) {
+      call_t *c = add_call(cs, F_SET_CONTACT_STATE); /* not a state, or a damaged one */
+      c->iv[0] = rrange(r, 1, 5);
+      c->iv[2] = rint_(r, 1000);
+    }
+    /* the revert: the results before the last step (those of the steps
+     * before, or of the solve); once */
+    int before_ok = nsteps == 2 ? sok : ok;
+    add_call(cs, F_REVERT_STEP)->want = 1 + (srefused ? TFEM_STATUS_INVALID_STATE : TFEM_STATUS_OK);
+    add_call(cs, F_GET_CONTACT_SLAVE_NODES)->want = 1 + (srefused ? ok : before_ok);
+    if (chance(r, 0.5)) add_call(cs, F_GET_DISPLACEMENTS);
+    if (chance(r, 0.3)) add_call(cs, F_REVERT_STEP)->want = 1 + TFEM_STATUS_INVALID_STATE;
+    if (!srefused && chance(r, 0.5)) { /* a step again, from the results brought back */
+      step_call(cs, 1.0, chance(r, 0.5), T_NONE)->want = 1;
+      add_call(cs, F_GET_CONTACT_SLAVE_NODES)->want = 1;
+      if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_REPORT)->want = 1;
+    }
     break;
+  }
   case 1: /* a wild weighting: refused, nothing changes */
     call_i(cs, F_SET_CONTACT_WEIGHTING, (int[]){-1, 2, INT_MAX, INT_MIN}[rint_(r, 4)], 0)->want =
         1 + TFEM_STATUS_INVALID_ARGUMENT;
@@ -2727,6 +2770,12 @@ typedef struct {
   int presc_nonempty;
   int results; /* 0 none, 1 plain solve, 2 contact solve, 3 load step */
   int pre_results, pre_valid; /* the results before the last step (tfem_revert_step) */
+  int pre_res_mortar;          /* ... and whether they were per slave node */
+  /* the displacements of the results before the last step (a hash, known
+   * when read since the last change of the results): tfem_revert_step
+   * brings them back, bit for bit */
+  int pre_disp_ok, pre_disp_idx, disp_reverted;
+  uint64_t pre_disp_hash;
   int no_matrix;   /* results of a step: no system matrix */
   int res_unknown; /* results not known here (a step reverted that was not seen) */
   int contact_test; /* inversion test of the last contact solve */
@@ -2742,8 +2791,9 @@ typedef struct {
   int contact_law;
   long coul_gen;
   /* the mortar weighting: pairs declared with a contact mesh of their own
-   * (the weighting refuses them), the last contact solve's results are
-   * per slave node (a solve under the mortar weighting) */
+   * (the weighting refuses them), the last contact solve's or load step's
+   * results are per slave node (a solve or a step under the mortar
+   * weighting) */
   int mesh_pairs;
   int res_mortar;
   /* The following survive a new mesh (they are the model's). */
@@ -4948,13 +4998,18 @@ static void exec_call(runner_t *R, int idx) {
       else
         finding(R, V_RESULTS_LOST, idx, "INVALID_STATE although the last %s solve succeeded and nothing changed the problem since: \"%.160s\"",
                 s->results == 2 ? "contact" : s->results == 3 ? "load step" : "plain", msg);
-    } else if (need_contact && s->results == 2 && !(per_element && s->res_mortar)) {
+    } else if (need_contact && (s->results == 2 || (s->results == 3 && s->res_mortar)) &&
+               !(per_element && s->res_mortar)) {
       finding(R, V_RESULTS_LOST, idx, "contact results gone although nothing changed the problem since the contact solve: \"%.160s\"", msg);
     }
   }
   if (!c->null_model && st == TFEM_STATUS_OK && (need_results || need_contact) && !s->results && s->has_mesh &&
       !s->res_unknown)
     finding(R, V_OTHER, idx, "results returned although the problem changed since the last solve");
+  if (!c->null_model && st == TFEM_STATUS_OK && (fn == F_GET_MATRIX_SIZE || fn == F_GET_MATRIX) && s->has_mesh &&
+      !s->res_unknown && s->results == 3)
+    finding(R, V_OTHER, idx, "OK after a load step%s (the header: the system matrix of a step is not available)",
+            s->res_mortar ? " under the mortar weighting" : "");
   if (!c->null_model && s->exact && (fn == F_SET_BOUNDARY_EDGES || fn == F_ADD_BOUNDARY_EDGES) && c->iv[0] >= 0 &&
       (c->iv[0] == 0 || (!c->in[0].null_ && !c->in[1].null_ && c->in[0].n >= 2 * c->iv[0] && c->in[1].n >= c->iv[0]))) {
     /* The edges the call asks for (set replaces, add appends), and the
@@ -5084,34 +5139,49 @@ static void exec_call(runner_t *R, int idx) {
       finding(R, V_WEIGHTING, idx, "weighting %d, but the last one set successfully is %d", w, s->weighting);
   }
   if (!c->null_model && fn == F_GET_CONTACT_SLAVE_NODES && s->has_mesh && !s->res_unknown) {
-    /* after a mortar solve: OK, BUFFER_TOO_SMALL for length < n; else
-     * (no contact results, or the strip's) INVALID_STATE */
-    int mortar = s->results == 2 && s->res_mortar;
+    /* after a mortar solve or step: OK, BUFFER_TOO_SMALL for length < n;
+     * else (no contact results, or the strip's) INVALID_STATE */
+    int mortar = (s->results == 2 || s->results == 3) && s->res_mortar;
     long n = c->out[0].req;
     R->oracles[O_WEIGHTING]++;
     if (!mortar && st != TFEM_STATUS_INVALID_STATE)
       finding(R, V_WEIGHTING, idx, "%s %s: \"%.160s\"", status_name(st),
-              s->results == 2 ? "after a contact solve under the strip weighting" : "without contact results", msg);
+              s->results == 2   ? "after a contact solve under the strip weighting"
+              : s->results == 3 ? "after a load step under the strip weighting"
+                                : "without contact results",
+              msg);
     else if (mortar && n >= 0 && c->out[0].len < (size_t)n && st != TFEM_STATUS_BUFFER_TOO_SMALL)
       finding(R, V_WEIGHTING, idx, "%s with length %zu for %ld slave nodes: \"%.160s\"", status_name(st), c->out[0].len,
               n, msg);
     else if (mortar && n >= 0 && c->out[0].len >= (size_t)n && st != TFEM_STATUS_OK)
-      finding(R, V_WEIGHTING, idx, "%s after a mortar solve, length %zu for %ld slave nodes: \"%.160s\"",
+      finding(R, V_WEIGHTING, idx, "%s after a mortar solve or step, length %zu for %ld slave nodes: \"%.160s\"",
               status_name(st), c->out[0].len, n, msg);
   }
   if (!c->null_model && st == TFEM_STATUS_OK && fn == F_GET_CONTACT_SLAVE_NODES) oracle_slave_nodes(R, idx, c, g);
-  if (!c->null_model && per_element && s->has_mesh && !s->res_unknown && s->results == 2 && s->res_mortar) {
+  if (!c->null_model && per_element && s->has_mesh && !s->res_unknown && (s->results == 2 || s->results == 3) &&
+      s->res_mortar) {
     R->oracles[O_WEIGHTING]++;
     if (st != TFEM_STATUS_INVALID_STATE && !(st == TFEM_STATUS_NULL_POINTER && c->out[0].null_))
-      finding(R, V_WEIGHTING, idx, "%s after a solve under the mortar weighting (the header: refused, INVALID_STATE)",
-              status_name(st));
+      finding(R, V_WEIGHTING, idx, "%s after a %s under the mortar weighting (the header: refused, INVALID_STATE)",
+              status_name(st), s->results == 3 ? "load step" : "solve");
   }
-  if (!c->null_model && fn == F_STEP && s->weighting == TFEM_CONTACT_WEIGHTING_MORTAR) {
+  if (!c->null_model && s->weighting == TFEM_CONTACT_WEIGHTING_MORTAR &&
+      (fn == F_GET_CONTACT_STATE_SIZE || fn == F_GET_CONTACT_STATE || fn == F_SET_CONTACT_STATE)) {
+    /* the contact states: refused under the mortar weighting (a step's
+     * state is its results), whatever the buffer; tfem_set_contact_state
+     * checks its buffer first (NULL with a length: an argument error) */
     R->oracles[O_WEIGHTING]++;
-    if (st == TFEM_STATUS_OK) finding(R, V_WEIGHTING, idx, "tfem_step is OK under the mortar weighting");
+    int args_first = fn == F_SET_CONTACT_STATE && c->in[0].null_ && c->in[0].n > 0;
+    if (st == TFEM_STATUS_OK)
+      finding(R, V_WEIGHTING, idx, "OK under the mortar weighting (the header: contact states are refused)");
+    else if (!args_first && (st != TFEM_STATUS_INVALID_STATE || !strstr(msg, "contact states")))
+      finding(R, V_WEIGHTING, idx, "%s under the mortar weighting, not INVALID_STATE naming the contact states: "
+              "\"%.160s\"", status_name(st), msg);
   }
-  if (!c->null_model && fn == F_SOLVE_CONTACT && s->weighting == TFEM_CONTACT_WEIGHTING_MORTAR && s->has_mesh) {
-    /* frictionless single solves only, on the pairs' own sides */
+  if (!c->null_model && (fn == F_SOLVE_CONTACT || fn == F_STEP) && s->weighting == TFEM_CONTACT_WEIGHTING_MORTAR &&
+      s->has_mesh) {
+    /* frictionless solves and steps only, on the pairs' own sides
+     * (refactorize and large interfaces are accepted in mortar steps) */
     int any_mu = 0;
     for (int k = 0; k < s->npairs && k < 64; ++k) any_mu |= s->pair_mu[k] != 0.0;
     int stick = !c->in[0].null_ && c->iv[0] == TFEM_CONTACT_LAW_STICK;
@@ -5339,27 +5409,43 @@ static void exec_call(runner_t *R, int idx) {
       }
       goto keep_results;
     case F_STEP:
+      /* a step's results (under the mortar weighting a frictionless
+       * contact solve of the scaled loads: per slave node, of the
+       * linearised test) */
       s->contact_law = c->in[0].null_ ? TFEM_CONTACT_LAW_FRICTIONLESS : c->iv[0];
       s->pre_results = s->results;
-      s->pre_valid = 1;
+      s->pre_res_mortar = s->res_mortar;
+      s->pre_valid = !s->res_unknown;
+      s->pre_disp_ok = s->pre_valid && s->results && s->disp_gen == s->sol_gen;
+      s->pre_disp_hash = s->disp_hash;
+      s->pre_disp_idx = s->disp_idx;
       s->results = 3;
+      s->res_mortar = s->weighting == TFEM_CONTACT_WEIGHTING_MORTAR;
+      if (s->res_mortar) s->contact_test = TFEM_INVERSION_TEST_LINEARISED;
       s->no_matrix = 1;
       s->res_unknown = 0;
       s->sol_gen++;
       goto keep_results;
     case F_REVERT_STEP:
-      /* the results before the step (unknown if the step is not known here) */
-      if (s->pre_valid) s->results = s->pre_results;
+      /* the results before the step (unknown if the step is not known
+       * here), their displacements bit for bit if they were read */
+      if (s->pre_valid) s->results = s->pre_results, s->res_mortar = s->pre_res_mortar;
       else s->res_unknown = 1;
       s->contact_law = -1; /* (the law of the results before the step: not kept here) */
-      s->pre_valid = 0;
       s->sol_gen++;
+      if (s->pre_valid && s->pre_disp_ok) {
+        s->disp_hash = s->pre_disp_hash;
+        s->disp_gen = s->sol_gen;
+        s->disp_idx = s->pre_disp_idx;
+        s->disp_reverted = 1;
+      }
+      s->pre_valid = s->pre_disp_ok = 0;
       goto keep_results;
     case F_SOLVE: case F_SOLVE_CONTACT: {
       s->results = fn == F_SOLVE ? 1 : 2;
       s->no_matrix = 0;
       s->res_unknown = 0;
-      s->pre_valid = 0;
+      s->pre_valid = s->pre_disp_ok = 0;
       s->matrix_dropped = 0;
       s->sol_gen++;
       s->contact_test = fn == F_SOLVE_CONTACT && !c->in[0].null_ ? c->iv[1] : TFEM_INVERSION_TEST_LINEARISED;
@@ -5401,7 +5487,9 @@ static void exec_call(runner_t *R, int idx) {
         R->oracles[O_DISP_KEPT] += s->disp_gen == s->sol_gen;
         if (s->disp_gen == s->sol_gen && h != s->disp_hash)
           finding(R, V_RESULTS_CHANGED, idx, "displacements differ from those of call #%d, although no solve succeeded "
-                  "and nothing changed the problem since", s->disp_idx);
+                  "and nothing changed the problem since%s", s->disp_idx,
+                  s->disp_reverted ? " but a tfem_revert_step of the step after it" : "");
+        s->disp_reverted = 0;
         s->disp_hash = h;
         s->disp_gen = s->sol_gen;
         s->disp_idx = idx;
@@ -5525,7 +5613,7 @@ static void exec_call(runner_t *R, int idx) {
     }
     s->results = 0; /* a change of the problem discards the results */
     s->res_unknown = 0;
-    s->pre_valid = 0;
+    s->pre_valid = s->pre_disp_ok = 0;
     s->matrix_dropped = 0;
     s->prob_gen++;
     s->sol_gen++;
