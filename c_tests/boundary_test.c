@@ -2398,6 +2398,257 @@ static void a_step_is_reverted_across_a_newly_fixed_dof(void) {
   tfem_destroy(m);
 }
 
+/* A failed call writes none of its outputs (header, Conventions): every
+ * buffer and every value or struct returned through a pointer keeps its
+ * bytes, whatever the failure (NULL or destroyed handle, wrong state,
+ * buffer too short or NULL beside others that are long enough, bad
+ * argument, a solve that fails after its work). The only exceptions are
+ * the message copies, checked at the end. Outputs are filled with a
+ * sentinel byte before each call and must come back with every byte of it. */
+#define SENTINEL 0xA5
+typedef union {
+  double d[8192];
+  int64_t l[8192];
+  int i[16384];
+  size_t z[8192];
+  uint8_t b[65536];
+  char c[65536];
+  tfem_solve_info info;
+  tfem_contact_report rep;
+} outbuf_t;
+static outbuf_t O[4];
+
+static int outputs_intact(void) {
+  const unsigned char *b = (const unsigned char *)O;
+  for (size_t k = 0; k < sizeof O; ++k)
+    if (b[k] != SENTINEL) return 0;
+  return 1;
+}
+static void expect_unwritten(tfem_status got, tfem_status expected, const char *call, int line) {
+  int intact = outputs_intact();
+  if (got == expected && intact) {
+    ++passed;
+  } else {
+    ++failed;
+    printf("FAIL line %d: %s: status %d (expected %d), outputs %s\n", line, call, (int)got,
+           (int)expected, intact ? "intact" : "WRITTEN");
+  }
+}
+/* Runs `call` on sentinel-filled outputs O[0..3]: it must return `status`
+ * and leave every byte of them as it was. */
+#define UNWRITTEN(call, status)                          \
+  do {                                                   \
+    memset(O, SENTINEL, sizeof O);                       \
+    expect_unwritten((call), (status), #call, __LINE__); \
+  } while (0)
+
+static void a_failed_call_writes_none_of_its_outputs(void) {
+  const tfem_status NUL = TFEM_STATUS_NULL_POINTER, ARG = TFEM_STATUS_INVALID_ARGUMENT,
+                    STATE = TFEM_STATUS_INVALID_STATE, SHORT = TFEM_STATUS_BUFFER_TOO_SMALL,
+                    MATERIAL = TFEM_STATUS_INVALID_MATERIAL;
+  const size_t L = 8192;
+
+  /* No model, or a destroyed one. */
+  tfem_model *dead = tfem_create();
+  tfem_destroy(dead);
+  UNWRITTEN(tfem_warning_count(NULL, O[0].i), NUL);
+  UNWRITTEN(tfem_get_sizes(NULL, O[0].i, O[1].i, O[2].i), NUL);
+  UNWRITTEN(tfem_get_displacements(NULL, O[0].d, L), NUL);
+  UNWRITTEN(tfem_get_contact_report(NULL, &O[0].rep), NUL);
+  UNWRITTEN(tfem_get_threads(dead, O[0].i), ARG);
+  UNWRITTEN(tfem_get_system_matrix(dead, O[0].l, L, O[1].l, L, O[2].d, L, O[3].l, L), ARG);
+  UNWRITTEN(tfem_get_contact_weighting(dead, O[0].i), ARG);
+  /* (An exception: the message copy says why the handle is refused.) */
+  memset(O, SENTINEL, sizeof O);
+  CHECK(tfem_last_error(dead, O[0].c, 512) == ARG && strstr(O[0].c, "destroyed") != NULL);
+
+  /* No mesh yet. */
+  tfem_model *m = tfem_create();
+  UNWRITTEN(tfem_get_sizes(m, O[0].i, O[1].i, O[2].i), STATE);
+  UNWRITTEN(tfem_get_boundary_edge_count(m, O[0].i), STATE);
+  UNWRITTEN(tfem_get_mesh_nodes(m, O[0].d, L), STATE);
+  UNWRITTEN(tfem_get_mesh_triangles(m, O[0].i, L, O[1].i, L), STATE);
+  UNWRITTEN(tfem_get_boundary_edges(m, O[0].i, L, O[1].i, L), STATE);
+  UNWRITTEN(tfem_get_element_jacobians(m, O[0].d, L), STATE);
+  UNWRITTEN(tfem_add_contact_pair(m, 13, 22, O[0].i), STATE);
+  tfem_destroy(m);
+
+  /* Pure functions refusing their arguments, or failing on the triangle. */
+  const double xy[6] = {0, 0, 1, 0, 0, 1}, flat[6] = {0, 0, 1, 0, 2, 0};
+  UNWRITTEN(tfem_element_stiffness(xy, 1e9, 0.7, TFEM_PLANE_MODE_STRAIN, 0.0, O[0].d), MATERIAL);
+  UNWRITTEN(tfem_element_stiffness(NULL, 1e9, 0.3, TFEM_PLANE_MODE_STRAIN, 0.0, O[0].d), NUL);
+  memset(O, SENTINEL, sizeof O);
+  tfem_status s = tfem_element_stiffness(flat, 1e9, 0.3, TFEM_PLANE_MODE_STRAIN, 0.0, O[0].d);
+  CHECK(s != TFEM_STATUS_OK && outputs_intact()); /* J = 0 in plain FEM */
+  UNWRITTEN(tfem_laplacian_stiffness(xy, -1.0, 0.0, O[0].d), ARG);
+
+  /* A mesh, not solved: no results yet. */
+  m = two_blocks();
+  UNWRITTEN(tfem_get_displacements(m, O[0].d, L), STATE);
+  UNWRITTEN(tfem_get_element_strains(m, O[0].d, L), STATE);
+  UNWRITTEN(tfem_get_element_stresses(m, O[0].d, L), STATE);
+  UNWRITTEN(tfem_get_reactions(m, O[0].d, L), STATE);
+  UNWRITTEN(tfem_get_system_matrix_size(m, O[0].l, O[1].l), STATE);
+  UNWRITTEN(tfem_get_system_matrix(m, O[0].l, L, O[1].l, L, O[2].d, L, O[3].l, L), STATE);
+  UNWRITTEN(tfem_get_external_work(m, O[0].d), STATE);
+  UNWRITTEN(tfem_get_contact_report(m, &O[0].rep), STATE);
+  UNWRITTEN(tfem_get_contact_active(m, O[0].i, L), STATE);
+  UNWRITTEN(tfem_get_contact_pressure(m, O[0].d, L), STATE);
+  UNWRITTEN(tfem_get_contact_elements(m, O[0].i, L), STATE);
+  UNWRITTEN(tfem_get_contact_forces(m, O[0].d, L), STATE);
+  UNWRITTEN(tfem_get_contact_nodal_pressures(m, O[0].d, L), STATE);
+  UNWRITTEN(tfem_get_contact_pair_nodal_pressures(m, 0, O[0].d, L), STATE);
+  UNWRITTEN(tfem_get_contact_gaps(m, O[0].d, L), STATE);
+  UNWRITTEN(tfem_get_contact_shear(m, O[0].d, L), STATE);
+  UNWRITTEN(tfem_get_contact_friction_state(m, O[0].i, L), STATE);
+  UNWRITTEN(tfem_get_contact_dissipation(m, O[0].d, L), STATE);
+  UNWRITTEN(tfem_get_contact_slave_nodes(m, O[0].i, O[1].d, O[2].d, O[3].d, L), STATE);
+  UNWRITTEN(tfem_get_contact_state_size(m, O[0].z), STATE);
+  UNWRITTEN(tfem_get_contact_state(m, O[0].b, L), STATE);
+
+  /* Bad arguments: what would be written (an index, a count) is not. */
+  UNWRITTEN(tfem_get_warning_size(m, 999, O[0].z), ARG);
+  UNWRITTEN(tfem_get_warning(m, 999, O[0].c, 512), ARG);
+  UNWRITTEN(tfem_get_contact_pair_bodies(m, 1, O[0].i, O[1].i), ARG);
+  UNWRITTEN(tfem_add_contact_pair(m, 13, 22, O[0].i), TFEM_STATUS_INVALID_CONTACT);
+  const int bad_triangle[3] = {0, 1, 9999};
+  UNWRITTEN(tfem_add_contact_pair_with_mesh(m, 13, 22, 1, bad_triangle, O[0].i, O[1].i), ARG);
+  UNWRITTEN(tfem_add_contact_pairs_auto(m, 0, NULL, -1.0, O[0].i, O[1].i), ARG);
+  const int unknown_tag = 4242;
+  memset(O, SENTINEL, sizeof O);
+  s = tfem_add_contact_pairs_auto(m, 1, &unknown_tag, 0.1, O[0].i, O[1].i);
+  CHECK(s != TFEM_STATUS_OK && outputs_intact());
+
+  /* Solves that fail: before any work (bad options), after it (the
+   * active-set cap, a body free to move). */
+  tfem_contact_options bad, capped;
+  tfem_contact_options_default(&bad);
+  bad.law = 7;
+  tfem_contact_options_default(&capped);
+  capped.max_iterations = 1;
+  UNWRITTEN(tfem_solve_contact(m, &bad, &O[0].rep), ARG);
+  UNWRITTEN(tfem_solve_contact(m, &capped, &O[0].rep), TFEM_STATUS_NOT_CONVERGED);
+  UNWRITTEN(tfem_step(m, NAN, NULL, &O[0].rep), ARG);
+  tfem_model *loose = model_of(&B, 2, 1e10, 10.0, TFEM_PLANE_MODE_STRAIN);
+  CHECK(tfem_add_pressure(loose, 23, 1e7) == TFEM_STATUS_OK);
+  UNWRITTEN(tfem_solve(loose, &O[0].info), TFEM_STATUS_SINGULAR);
+  tfem_destroy(loose);
+
+  /* Solved: a buffer too short, or NULL, beside others long enough. */
+  CHECK(tfem_step(m, 1.0, NULL, NULL) == TFEM_STATUS_OK);
+  int ne = 0, nc = 0;
+  int64_t n = 0, nnz = 0;
+  size_t state = 0;
+  CHECK(tfem_get_boundary_edge_count(m, &ne) == TFEM_STATUS_OK && ne > 0);
+  CHECK(tfem_get_sizes(m, NULL, NULL, &nc) == TFEM_STATUS_OK && nc > 0);
+  CHECK(tfem_get_contact_state_size(m, &state) == TFEM_STATUS_OK && state > 0 && state <= L);
+  const size_t nn = (size_t)B.nn, nt = (size_t)B.nt, ce = (size_t)nc;
+  UNWRITTEN(tfem_get_mesh_nodes(m, O[0].d, 2 * nn - 1), SHORT);
+  UNWRITTEN(tfem_get_mesh_triangles(m, O[0].i, 3 * nt, O[1].i, nt - 1), SHORT);
+  UNWRITTEN(tfem_get_mesh_triangles(m, O[0].i, 3 * nt - 1, O[1].i, nt), SHORT);
+  UNWRITTEN(tfem_get_mesh_triangles(m, NULL, 0, O[1].i, nt), NUL);
+  UNWRITTEN(tfem_get_boundary_edges(m, O[0].i, 2 * (size_t)ne, O[1].i, (size_t)ne - 1), SHORT);
+  UNWRITTEN(tfem_get_boundary_edges(m, O[0].i, 2 * (size_t)ne - 1, O[1].i, (size_t)ne), SHORT);
+  UNWRITTEN(tfem_get_displacements(m, O[0].d, 2 * nn - 1), SHORT);
+  UNWRITTEN(tfem_get_element_stresses(m, O[0].d, 3 * nt - 1), SHORT);
+  UNWRITTEN(tfem_get_reactions(m, NULL, 2 * nn), NUL);
+  UNWRITTEN(tfem_get_contact_active(m, O[0].i, ce - 1), SHORT);
+  UNWRITTEN(tfem_get_contact_pressure(m, O[0].d, ce - 1), SHORT);
+  UNWRITTEN(tfem_get_contact_elements(m, O[0].i, 3 * ce - 1), SHORT);
+  UNWRITTEN(tfem_get_contact_mesh(m, O[0].i, 3 * ce - 1), SHORT);
+  UNWRITTEN(tfem_get_contact_element_pairs(m, O[0].i, ce - 1), SHORT);
+  UNWRITTEN(tfem_get_contact_element_apexes(m, O[0].i, ce - 1), SHORT);
+  UNWRITTEN(tfem_get_contact_forces(m, O[0].d, 2 * nn - 1), SHORT);
+  UNWRITTEN(tfem_get_contact_nodal_pressures(m, O[0].d, nn - 1), SHORT);
+  UNWRITTEN(tfem_get_contact_pair_nodal_pressures(m, 3, O[0].d, nn), ARG);
+  UNWRITTEN(tfem_get_contact_gaps(m, O[0].d, nn - 1), SHORT);
+  UNWRITTEN(tfem_get_contact_shear(m, O[0].d, ce - 1), SHORT);
+  UNWRITTEN(tfem_get_contact_friction_state(m, O[0].i, ce - 1), SHORT);
+  UNWRITTEN(tfem_get_contact_dissipation(m, O[0].d, ce - 1), SHORT);
+  UNWRITTEN(tfem_get_contact_state(m, O[0].b, state - 1), SHORT);
+  UNWRITTEN(tfem_get_contact_state(m, NULL, state), NUL);
+  UNWRITTEN(tfem_get_contact_slave_nodes(m, O[0].i, O[1].d, O[2].d, O[3].d, L), STATE);
+  /* A step has no system matrix; a contact solve has. */
+  UNWRITTEN(tfem_get_system_matrix_size(m, O[0].l, O[1].l), STATE);
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_get_system_matrix_size(m, &n, &nnz) == TFEM_STATUS_OK && n > 0 && nnz > 0);
+  const size_t un = (size_t)n, nz = (size_t)nnz;
+  UNWRITTEN(tfem_get_system_matrix(m, O[0].l, un + 1, O[1].l, nz, O[2].d, nz, O[3].l, un - 1), SHORT);
+  UNWRITTEN(tfem_get_system_matrix(m, O[0].l, un + 1, O[1].l, nz, O[2].d, nz - 1, O[3].l, un), SHORT);
+  UNWRITTEN(tfem_get_system_matrix(m, O[0].l, un + 1, O[1].l, nz, NULL, nz, O[3].l, un), NUL);
+  UNWRITTEN(tfem_get_system_matrix(m, O[0].l, un, O[1].l, nz, O[2].d, nz, O[3].l, un), SHORT);
+
+  /* Under the mortar weighting: the slave nodes' columns all or none. */
+  CHECK(tfem_set_contact_weighting(m, TFEM_CONTACT_WEIGHTING_MORTAR) == TFEM_STATUS_OK);
+  tfem_contact_report rep;
+  CHECK(tfem_solve_contact(m, NULL, &rep) == TFEM_STATUS_OK && rep.elements > 1);
+  const size_t slaves = (size_t)rep.elements;
+  UNWRITTEN(tfem_get_contact_slave_nodes(m, O[0].i, O[1].d, O[2].d, O[3].d, slaves - 1), SHORT);
+  UNWRITTEN(tfem_get_contact_slave_nodes(m, NULL, O[1].d, NULL, O[3].d, slaves - 1), SHORT);
+  UNWRITTEN(tfem_get_contact_active(m, O[0].i, L), STATE);
+  UNWRITTEN(tfem_get_contact_state_size(m, O[0].z), STATE);
+  tfem_destroy(m);
+
+  /* The host contact context. */
+  UNWRITTEN(tfem_contact_sizes(NULL, O[0].i, O[1].i, O[2].l), NUL);
+  tfem_contact *c = tfem_contact_create(0);
+  UNWRITTEN(tfem_contact_sizes(c, O[0].i, O[1].i, O[2].l), STATE); /* no pair */
+  UNWRITTEN(tfem_contact_length(c, O[0].d), STATE);
+  UNWRITTEN(tfem_contact_get_active(c, O[0].i, L), STATE);
+  tfem_contact_destroy(c);
+  c = two_host_sides(1.0, MATCHING);
+  int na[2] = {30, 31}, ea[2] = {30, 31};
+  double xa[4] = {0, 1, 1, 1};
+  int64_t qa[4] = {12, 13, 14, 15};
+  UNWRITTEN(tfem_contact_add_side(c, 3, 3, 1e9, 0.7, 0, 2, na, xa, qa, 1, ea, O[0].i), MATERIAL);
+  UNWRITTEN(tfem_contact_add_pair(c, 0, 0, O[0].i), TFEM_STATUS_INVALID_CONTACT);
+  UNWRITTEN(tfem_contact_add_pair(c, 0, 7, O[0].i), ARG);
+  const int host_triangle[3] = {10, 11, 99};
+  memset(O, SENTINEL, sizeof O);
+  s = tfem_contact_add_pair_with_mesh(c, 0, 1, 1, host_triangle, O[0].i);
+  CHECK(s != TFEM_STATUS_OK && outputs_intact());
+  CHECK(tfem_contact_add_pair(c, 0, 1, NULL) == TFEM_STATUS_OK);
+  int hn = 0, he = 0;
+  int64_t entries = 0;
+  CHECK(tfem_contact_sizes(c, &hn, &he, &entries) == TFEM_STATUS_OK && hn == 6 && he > 0 && entries > 0);
+  const size_t en = (size_t)entries, hen = (size_t)he;
+  double u[12] = {0}, host[12] = {0}, nan_u[12] = {0};
+  nan_u[3] = NAN;
+  UNWRITTEN(tfem_contact_add_pair(c, 1, 0, O[0].i), STATE); /* B is built: pairs are fixed */
+  UNWRITTEN(tfem_contact_nodes(c, O[0].i, 5), SHORT);
+  UNWRITTEN(tfem_contact_pattern(c, O[0].l, O[1].l, en - 1), SHORT);
+  UNWRITTEN(tfem_contact_pattern(c, O[0].l, NULL, en), NUL);
+  UNWRITTEN(tfem_contact_evaluate(c, u, 12, O[0].d, en, O[1].d, 11), SHORT);
+  UNWRITTEN(tfem_contact_evaluate(c, u, 12, O[0].d, en - 1, O[1].d, 12), SHORT);
+  UNWRITTEN(tfem_contact_evaluate(c, u, 11, O[0].d, en, O[1].d, 12), ARG);
+  UNWRITTEN(tfem_contact_evaluate(c, nan_u, 12, O[0].d, en, O[1].d, 12), ARG);
+  UNWRITTEN(tfem_contact_gather(c, host, 12, O[0].d, 11), SHORT);
+  UNWRITTEN(tfem_contact_gather(c, host, 11, O[0].d, 12), ARG); /* equation 11 past the vector */
+  UNWRITTEN(tfem_contact_scatter_add(c, u, 12, O[0].d, 11), ARG);
+  UNWRITTEN(tfem_contact_scatter_add(c, nan_u, 12, O[0].d, 12), ARG);
+  UNWRITTEN(tfem_contact_update(c, nan_u, 12, O[0].i), ARG);
+  UNWRITTEN(tfem_contact_update(c, u, 11, O[0].i), ARG);
+  UNWRITTEN(tfem_contact_get_active(c, O[0].i, hen - 1), SHORT);
+  UNWRITTEN(tfem_contact_gaps(c, u, 12, O[0].d, 5), SHORT);
+  UNWRITTEN(tfem_contact_gaps(c, nan_u, 12, O[0].d, 6), ARG);
+  UNWRITTEN(tfem_contact_pressures(c, u, 12, O[0].d, hen - 1), SHORT);
+  UNWRITTEN(tfem_contact_pressures(c, nan_u, 12, O[0].d, hen), ARG);
+  UNWRITTEN(tfem_contact_elements(c, O[0].i, 3 * hen - 1), SHORT);
+  UNWRITTEN(tfem_contact_element_equations(c, O[0].l, 6 * hen - 1), SHORT);
+  UNWRITTEN(tfem_contact_element_blocks(c, O[0].d, 36 * hen - 1), SHORT);
+  UNWRITTEN(tfem_contact_length(c, NULL), NUL);
+
+  /* The exceptions: the message copies write the truncated message with
+   * BUFFER_TOO_SMALL, and the message refusing a handle that is not live
+   * with INVALID_ARGUMENT (tfem_last_error's above). */
+  memset(O, SENTINEL, sizeof O);
+  CHECK(tfem_contact_evaluate(c, nan_u, 12, NULL, 0, NULL, 0) == ARG);
+  CHECK(tfem_contact_last_error(c, O[0].c, 8) == SHORT && strlen(O[0].c) == 7);
+  tfem_contact_destroy(c);
+  memset(O, SENTINEL, sizeof O);
+  CHECK(tfem_contact_last_error(c, O[0].c, 512) == ARG && strstr(O[0].c, "destroyed") != NULL);
+}
+
 int main(int argc, char **argv) {
   if (argc == 4 && strcmp(argv[1], "--solve-under-cap") == 0)
     return solve_under_cap(atof(argv[2]), argv[3]);
@@ -2477,6 +2728,7 @@ int main(int argc, char **argv) {
   a_warning_of_any_length_is_read_whole_by_its_size();
   a_gmsh_point_in_1500_groups_gives_a_short_warning();
   a_solve_under_any_memory_limit_fails_cleanly_or_succeeds();
+  a_failed_call_writes_none_of_its_outputs();
 
   if (gmsh_dir[0] != '\0') rmdir(gmsh_dir);
 

@@ -18,6 +18,17 @@
 !   every message. Counts are int; buffer lengths are size_t, in elements.
 ! - Output buffers are owned by the caller. Their length is checked and
 !   nothing is written when it is too short (TFEM_STATUS_BUFFER_TOO_SMALL).
+! - A call that returns an error writes none of its outputs: every buffer,
+!   and every value or struct given back through a pointer (a size, count
+!   or index, a tfem_solve_info, a tfem_contact_report, the host vector of
+!   tfem_contact_scatter_add), keeps the bytes it held, whatever the error
+!   (a handle or argument refused, a wrong state, one of several buffers
+!   too short or NULL, a solve that fails). The only exceptions are the
+!   message copies: tfem_last_error, tfem_contact_last_error and
+!   tfem_get_warning write the message cut to the buffer (NUL-terminated)
+!   with TFEM_STATUS_BUFFER_TOO_SMALL, and tfem_last_error and
+!   tfem_contact_last_error write the message refusing a handle that is
+!   not live with TFEM_STATUS_INVALID_ARGUMENT.
 ! - A failed call leaves the model as it was, its results included. Any
 !   change to the problem (mesh, boundary edges, materials, constraints,
 !   loads, contact pairs, tempering) discards previous results; settings
@@ -385,9 +396,12 @@ module tfem
     !! `buffer` (`length` bytes including the final NUL). With `model` NULL, gives the calling
     !! thread's last error from calls that have no model (or were given a NULL one). A message
     !! longer than the buffer is truncated (still NUL-terminated) and TFEM_STATUS_BUFFER_TOO_SMALL
-    !! is returned; `tfem_last_error_length` gives the size needed. Fortran: `model` may be omitted
-    !! (NULL is passed). `length` takes an integer(c_size_t) or a default integer (kind
-    !! tfem_length_kind); a negative length is passed as 0. `buffer` may also be a character string.
+    !! is returned; `tfem_last_error_length` gives the size needed. A `model` that is not a live
+    !! model gives TFEM_STATUS_INVALID_ARGUMENT with the message saying so in `buffer`. (These, with
+    !! `tfem_contact_last_error` and `tfem_get_warning`, are the only failed calls that write an
+    !! output: see the conventions at the top.) Fortran: `model` may be omitted (NULL is passed).
+    !! `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a negative
+    !! length is passed as 0. `buffer` may also be a character string.
     function tfem_last_error(model, buffer, length) &
         bind(C, name="tfem_last_error") result(status)
       import
@@ -432,7 +446,7 @@ module tfem
         bind(C, name="tfem_warning_count") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int), intent(out) :: count
+      integer(c_int), intent(inout) :: count
       integer(c_int) :: status
     end function tfem_warning_count
   end interface
@@ -454,9 +468,11 @@ module tfem
 
   interface tfem_get_warning
     !> Copies warning number `index` (0-based, whatever the index base) into `buffer` of `length`
-    !! bytes, truncating like `tfem_last_error` (`tfem_get_warning_size` gives the size needed).
-    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
-    !! negative length is passed as 0. `buffer` may also be a character string.
+    !! bytes, truncating like `tfem_last_error` (`tfem_get_warning_size` gives the size needed): the
+    !! truncated warning is written with TFEM_STATUS_BUFFER_TOO_SMALL; on any other error (an index
+    !! out of range) `buffer` is unchanged. Fortran: `length` takes an integer(c_size_t) or a
+    !! default integer (kind tfem_length_kind); a negative length is passed as 0. `buffer` may also
+    !! be a character string.
     function tfem_get_warning(model, index, buffer, length) &
         bind(C, name="tfem_get_warning") result(status)
       import
@@ -730,9 +746,9 @@ module tfem
         bind(C, name="tfem_get_sizes") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int), intent(out), optional :: n_nodes
-      integer(c_int), intent(out), optional :: n_triangles
-      integer(c_int), intent(out), optional :: n_contact_elements
+      integer(c_int), intent(inout), optional :: n_nodes
+      integer(c_int), intent(inout), optional :: n_triangles
+      integer(c_int), intent(inout), optional :: n_contact_elements
       integer(c_int) :: status
     end function tfem_get_sizes
   end interface
@@ -744,7 +760,7 @@ module tfem
         bind(C, name="tfem_get_boundary_edge_count") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int), intent(out) :: count
+      integer(c_int), intent(inout) :: count
       integer(c_int) :: status
     end function tfem_get_boundary_edge_count
   end interface
@@ -898,8 +914,8 @@ module tfem
         bind(C, name="tfem_get_system_matrix_size") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int64_t), intent(out), optional :: n
-      integer(c_int64_t), intent(out), optional :: nnz
+      integer(c_int64_t), intent(inout), optional :: n
+      integer(c_int64_t), intent(inout), optional :: nnz
       integer(c_int) :: status
     end function tfem_get_system_matrix_size
   end interface
@@ -981,7 +997,7 @@ module tfem
       type(c_ptr), value :: model
       integer(c_int), value :: tag_a
       integer(c_int), value :: tag_b
-      integer(c_int), intent(out), optional :: pair
+      integer(c_int), intent(inout), optional :: pair
       integer(c_int) :: status
     end function tfem_add_contact_pair
   end interface
@@ -1004,8 +1020,8 @@ module tfem
       integer(c_int), value :: tag_b
       integer(c_int), value :: n_triangles
       integer(c_int), intent(in) :: connectivity(*)
-      integer(c_int), intent(out), optional :: pair
-      integer(c_int), intent(out), optional :: flipped
+      integer(c_int), intent(inout), optional :: pair
+      integer(c_int), intent(inout), optional :: flipped
       integer(c_int) :: status
     end function tfem_add_contact_pair_with_mesh
   end interface
@@ -1121,7 +1137,7 @@ module tfem
         bind(C, name="tfem_get_external_work") result(status)
       import
       type(c_ptr), value :: model
-      real(c_double), intent(out) :: work
+      real(c_double), intent(inout) :: work
       integer(c_int) :: status
     end function tfem_get_external_work
   end interface
@@ -1197,7 +1213,7 @@ module tfem
         bind(C, name="tfem_get_contact_weighting") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int), intent(out) :: weighting
+      integer(c_int), intent(inout) :: weighting
       integer(c_int) :: status
     end function tfem_get_contact_weighting
   end interface
@@ -1278,7 +1294,7 @@ module tfem
         bind(C, name="tfem_get_contact_mesh_size") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int), intent(out) :: n_elements
+      integer(c_int), intent(inout) :: n_elements
       integer(c_int) :: status
     end function tfem_get_contact_mesh_size
   end interface
@@ -1341,8 +1357,8 @@ module tfem
       import
       type(c_ptr), value :: model
       integer(c_int), value :: pair
-      integer(c_int), intent(out), optional :: body_a
-      integer(c_int), intent(out), optional :: body_b
+      integer(c_int), intent(inout), optional :: body_a
+      integer(c_int), intent(inout), optional :: body_b
       integer(c_int) :: status
     end function tfem_get_contact_pair_bodies
   end interface
@@ -1368,7 +1384,7 @@ module tfem
         bind(C, name="tfem_get_threads") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int), intent(out) :: threads
+      integer(c_int), intent(inout) :: threads
       integer(c_int) :: status
     end function tfem_get_threads
   end interface
@@ -1439,7 +1455,7 @@ module tfem
         bind(C, name="tfem_get_contact_state_size") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_size_t), intent(out) :: size
+      integer(c_size_t), intent(inout) :: size
       integer(c_int) :: status
     end function tfem_get_contact_state_size
   end interface
@@ -1599,8 +1615,8 @@ module tfem
       integer(c_int), value :: n_tags
       integer(c_int), intent(in), optional :: tags(*)
       real(c_double), value :: tolerance
-      integer(c_int), intent(out), optional :: first
-      integer(c_int), intent(out), optional :: count
+      integer(c_int), intent(inout), optional :: first
+      integer(c_int), intent(inout), optional :: count
       integer(c_int) :: status
     end function tfem_add_contact_pairs_auto
   end interface
@@ -1632,9 +1648,11 @@ module tfem
 
   interface tfem_contact_last_error
     !> Copies the message of the last failed call on `context` (empty after a successful call) into
-    !! `buffer` (`length` bytes including the final NUL), truncating like `tfem_last_error`.
-    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
-    !! negative length is passed as 0. `buffer` may also be a character string.
+    !! `buffer` (`length` bytes including the final NUL), truncating like `tfem_last_error`. A
+    !! `context` that is not a live contact context gives TFEM_STATUS_INVALID_ARGUMENT with the
+    !! message saying so in `buffer`. Fortran: `length` takes an integer(c_size_t) or a default
+    !! integer (kind tfem_length_kind); a negative length is passed as 0. `buffer` may also be a
+    !! character string.
     function tfem_contact_last_error(context, buffer, length) &
         bind(C, name="tfem_contact_last_error") result(status)
       import
@@ -1709,7 +1727,7 @@ module tfem
       integer(c_int64_t), intent(in) :: equations(*)
       integer(c_int), value :: n_edges
       integer(c_int), intent(in) :: edges(*)
-      integer(c_int), intent(out), optional :: side
+      integer(c_int), intent(inout), optional :: side
       integer(c_int) :: status
     end function tfem_contact_add_side
   end interface
@@ -1729,7 +1747,7 @@ module tfem
       type(c_ptr), value :: context
       integer(c_int), value :: side_a
       integer(c_int), value :: side_b
-      integer(c_int), intent(out), optional :: pair
+      integer(c_int), intent(inout), optional :: pair
       integer(c_int) :: status
     end function tfem_contact_add_pair
   end interface
@@ -1750,7 +1768,7 @@ module tfem
       integer(c_int), value :: side_b
       integer(c_int), value :: n_triangles
       integer(c_int), intent(in) :: connectivity(*)
-      integer(c_int), intent(out), optional :: pair
+      integer(c_int), intent(inout), optional :: pair
       integer(c_int) :: status
     end function tfem_contact_add_pair_with_mesh
   end interface
@@ -1764,9 +1782,9 @@ module tfem
         bind(C, name="tfem_contact_sizes") result(status)
       import
       type(c_ptr), value :: context
-      integer(c_int), intent(out), optional :: n_nodes
-      integer(c_int), intent(out), optional :: n_elements
-      integer(c_int64_t), intent(out), optional :: n_entries
+      integer(c_int), intent(inout), optional :: n_nodes
+      integer(c_int), intent(inout), optional :: n_elements
+      integer(c_int64_t), intent(inout), optional :: n_entries
       integer(c_int) :: status
     end function tfem_contact_sizes
   end interface
@@ -1899,7 +1917,7 @@ module tfem
       type(c_ptr), value :: context
       real(c_double), intent(in) :: u(*)
       integer(c_size_t), value :: u_length
-      integer(c_int), intent(out), optional :: changed
+      integer(c_int), intent(inout), optional :: changed
       integer(c_int) :: status
     end function tfem_contact_update
     module procedure tfem_contact_update_i
@@ -2047,7 +2065,7 @@ module tfem
         bind(C, name="tfem_contact_length") result(status)
       import
       type(c_ptr), value :: context
-      real(c_double), intent(out) :: length
+      real(c_double), intent(inout) :: length
       integer(c_int) :: status
     end function tfem_contact_length
   end interface
@@ -2543,7 +2561,7 @@ contains
     type(c_ptr), value :: context
     real(c_double), intent(in) :: u(*)
     integer(tfem_length_kind), intent(in) :: u_length
-    integer(c_int), intent(out), optional :: changed
+    integer(c_int), intent(inout), optional :: changed
     integer(c_int) :: status
     status = tfem_contact_update(context, u, tfem_to_size_t(u_length), changed)
   end function tfem_contact_update_i

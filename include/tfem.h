@@ -12,6 +12,17 @@
  *   every message. Counts are int; buffer lengths are size_t, in elements.
  * - Output buffers are owned by the caller. Their length is checked and
  *   nothing is written when it is too short (TFEM_STATUS_BUFFER_TOO_SMALL).
+ * - A call that returns an error writes none of its outputs: every buffer,
+ *   and every value or struct given back through a pointer (a size, count
+ *   or index, a tfem_solve_info, a tfem_contact_report, the host vector of
+ *   tfem_contact_scatter_add), keeps the bytes it held, whatever the error
+ *   (a handle or argument refused, a wrong state, one of several buffers
+ *   too short or NULL, a solve that fails). The only exceptions are the
+ *   message copies: tfem_last_error, tfem_contact_last_error and
+ *   tfem_get_warning write the message cut to the buffer (NUL-terminated)
+ *   with TFEM_STATUS_BUFFER_TOO_SMALL, and tfem_last_error and
+ *   tfem_contact_last_error write the message refusing a handle that is
+ *   not live with TFEM_STATUS_INVALID_ARGUMENT.
  * - A failed call leaves the model as it was, its results included. Any
  *   change to the problem (mesh, boundary edges, materials, constraints,
  *   loads, contact pairs, tempering) discards previous results; settings
@@ -465,7 +476,11 @@ void tfem_destroy(struct tfem_model *model);
  * With `model` NULL, gives the calling thread's last error from calls that
  * have no model (or were given a NULL one). A message longer than the buffer
  * is truncated (still NUL-terminated) and TFEM_STATUS_BUFFER_TOO_SMALL is
- * returned; `tfem_last_error_length` gives the size needed.
+ * returned; `tfem_last_error_length` gives the size needed. A `model`
+ * that is not a live model gives TFEM_STATUS_INVALID_ARGUMENT with the
+ * message saying so in `buffer`. (These, with `tfem_contact_last_error`
+ * and `tfem_get_warning`, are the only failed calls that write an
+ * output: see the conventions at the top.)
  */
 enum tfem_status tfem_last_error(const struct tfem_model *model, char *buffer, size_t length);
 
@@ -503,7 +518,9 @@ enum tfem_status tfem_get_warning_size(struct tfem_model *model, int index, size
 /**
  * Copies warning number `index` (0-based, whatever the index base) into
  * `buffer` of `length` bytes, truncating like `tfem_last_error`
- * (`tfem_get_warning_size` gives the size needed).
+ * (`tfem_get_warning_size` gives the size needed): the truncated warning
+ * is written with TFEM_STATUS_BUFFER_TOO_SMALL; on any other error
+ * (an index out of range) `buffer` is unchanged.
  */
 enum tfem_status tfem_get_warning(struct tfem_model *model, int index, char *buffer, size_t length);
 
@@ -1272,7 +1289,9 @@ void tfem_contact_destroy(struct tfem_contact *context);
 /**
  * Copies the message of the last failed call on `context` (empty after a
  * successful call) into `buffer` (`length` bytes including the final NUL),
- * truncating like `tfem_last_error`.
+ * truncating like `tfem_last_error`. A `context` that is not a live
+ * contact context gives TFEM_STATUS_INVALID_ARGUMENT with the message
+ * saying so in `buffer`.
  */
 enum tfem_status tfem_contact_last_error(const struct tfem_contact *context,
                                          char *buffer,

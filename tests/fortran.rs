@@ -328,21 +328,20 @@ enum Pass {
     Value(String),
     /// An array (assumed size).
     Array { base: String, konst: bool },
-    /// A scalar output by reference: intent(out), or intent(inout) when
-    /// `kept`, the doc saying that an error leaves it unchanged ("`size`
-    /// unchanged"). With intent(out) the argument is undefined on entry,
-    /// and the caller's value may not survive the call even when the C
-    /// side leaves it alone: gfortran -O2 drops a store made just before
-    /// the call (tfem_get_warning_size gave 0, not the 7 set before it).
-    Out { base: String, kept: bool },
+    /// A scalar output by reference: intent(inout), as a failed call
+    /// writes none of its outputs (the header's conventions, [`KEPT_RULE`]).
+    /// With intent(out) the argument is undefined on entry, and the
+    /// caller's value may not survive the call even when the C side leaves
+    /// it alone: gfortran -O2 drops a store made just before the call
+    /// (tfem_get_warning_size gave 0, not the 7 set before it).
+    Out { base: String },
 }
 
 /// Reads how parameter `k` of `p` is passed. A pointer is an array when it
 /// points to char, is const (an input), is followed by a `size_t` length
 /// (the header's buffer convention) or its doc says "`name` (N values"
 /// (N digits or the name of a size, such as n_entries);
-/// any other non-const pointer is a scalar output, kept on error if the doc
-/// says "`name` unchanged".
+/// any other non-const pointer is a scalar output.
 fn classify(p: &Proto, k: usize) -> Pass {
     let (ty, name) = &p.params[k];
     let konst = ty.starts_with("const ");
@@ -378,7 +377,6 @@ fn classify(p: &Proto, k: usize) -> Pass {
     } else {
         Pass::Out {
             base: base.to_string(),
-            kept: p.doc.contains(&format!("`{name}` unchanged")),
         }
     }
 }
@@ -410,11 +408,7 @@ fn fortran_param(pass: &Pass, name: &str, optional: bool) -> String {
             kind_of(base),
             if *konst { "in" } else { "inout" }
         ),
-        Pass::Out { base, kept } => format!(
-            "{}, intent({}){opt} :: {name}",
-            kind_of(base),
-            if *kept { "inout" } else { "out" }
-        ),
+        Pass::Out { base } => format!("{}, intent(inout){opt} :: {name}", kind_of(base)),
     }
 }
 
@@ -1609,12 +1603,22 @@ fn gfortran_passes_null_for_every_absent_optional_argument_kind() {
     assert!(out.contains(" 0 failed"), "{out}");
 }
 
-/// Every scalar output whose doc says an error leaves it unchanged is
-/// intent(inout) in the committed module (intent(out) would make it
-/// undefined on entry); the others are intent(out).
+/// The header's rule that every scalar output declared intent(inout)
+/// stands on: a failed call writes none of its outputs.
+const KEPT_RULE: &str = "A call that returns an error writes none of its outputs";
+
+/// The header states that a failed call writes none of its outputs, and
+/// every scalar output is intent(inout) in the committed module
+/// (intent(out) would make it undefined on entry, and the caller's value
+/// could be lost on error); none is intent(out).
 #[test]
 fn outputs_kept_on_error_are_intent_inout() {
     let module = module();
+    assert!(
+        squash(&header()).contains(&squash(KEPT_RULE)),
+        "the header no longer states the rule: {KEPT_RULE}"
+    );
+    assert!(!module.contains("intent(out)"), "an intent(out) output");
     let mut kept = Vec::new();
     for p in prototypes(&header()) {
         let at = module
@@ -1629,23 +1633,16 @@ fn outputs_kept_on_error_are_intent_inout() {
                 .lines()
                 .find(|l| l.trim_end().ends_with(&format!(":: {n}")))
                 .unwrap_or_else(|| panic!("{}: no declaration of {n}", p.name));
-            let unchanged = p.doc.contains(&format!("`{n}` unchanged"));
-            let intent = if unchanged {
-                "intent(inout)"
-            } else {
-                "intent(out)"
-            };
             assert!(
-                decl.contains(intent),
-                "{}: {n} declared `{decl}`, not {intent}",
+                decl.contains("intent(inout)"),
+                "{}: {n} declared `{decl}`, not intent(inout)",
                 p.name
             );
-            if unchanged {
-                kept.push(format!("{}({n})", p.name));
-            }
+            kept.push(format!("{}({n})", p.name));
         }
     }
-    assert_eq!(kept, ["tfem_get_warning_size(size)"]);
+    assert!(kept.contains(&"tfem_get_warning_size(size)".to_string()));
+    assert!(kept.len() > 20, "{kept:?}");
 }
 
 /// tfem_get_warning_size refused (an index out of range) leaves `size` as
@@ -1675,6 +1672,45 @@ fn a_refused_warning_size_keeps_the_fortran_variable_at_o2() {
     assert_eq!(
         out.trim(),
         format!("status {} size 7", tfem::Status::InvalidArgument as i32),
+        "{out}"
+    );
+}
+
+/// A failed call writes none of its outputs (the header's rule), and the
+/// Fortran variables passed for them keep their values at -O2 too: the
+/// count of tfem_get_boundary_edge_count, an optional size of
+/// tfem_get_sizes and the work of tfem_get_external_work, all refused
+/// without a mesh. Declared intent(out) before, gfortran -O2 could drop
+/// the values stored just before the calls.
+#[test]
+fn failed_calls_keep_the_fortran_output_variables_at_o2() {
+    let source = generated_source(
+        "outputs_kept",
+        "outputs_kept.f90",
+        "program outputs_kept\n\
+         \x20 use, intrinsic :: iso_c_binding\n\
+         \x20 use tfem\n\
+         \x20 implicit none\n\
+         \x20 type(c_ptr) :: m\n\
+         \x20 integer(c_int) :: count, nodes, s1, s2, s3\n\
+         \x20 real(c_double) :: work\n\
+         \x20 m = tfem_create()\n\
+         \x20 count = 7\n\
+         \x20 nodes = 8\n\
+         \x20 work = 9.5_c_double\n\
+         \x20 s1 = tfem_get_boundary_edge_count(m, count)\n\
+         \x20 s2 = tfem_get_sizes(m, n_nodes=nodes)\n\
+         \x20 s3 = tfem_get_external_work(m, work)\n\
+         \x20 print '(5(i0, 1x), f3.1)', s1, s2, s3, count, nodes, work\n\
+         \x20 call tfem_destroy(m)\n\
+         end program outputs_kept\n",
+    );
+    let exe = build_fortran_with(&[&source], "outputs_kept", &["-O2"]);
+    let out = run(&exe, &[]);
+    let state = tfem::Status::InvalidState as i32;
+    assert_eq!(
+        out.trim(),
+        format!("{state} {state} {state} 7 8 9.5"),
         "{out}"
     );
 }

@@ -62,7 +62,11 @@ pub unsafe extern "C" fn tfem_destroy(model: *mut TfemModel) {
 /// With `model` NULL, gives the calling thread's last error from calls that
 /// have no model (or were given a NULL one). A message longer than the buffer
 /// is truncated (still NUL-terminated) and TFEM_STATUS_BUFFER_TOO_SMALL is
-/// returned; `tfem_last_error_length` gives the size needed.
+/// returned; `tfem_last_error_length` gives the size needed. A `model`
+/// that is not a live model gives TFEM_STATUS_INVALID_ARGUMENT with the
+/// message saying so in `buffer`. (These, with `tfem_contact_last_error`
+/// and `tfem_get_warning`, are the only failed calls that write an
+/// output: see the conventions at the top.)
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_last_error(
     model: *const TfemModel,
@@ -151,7 +155,9 @@ fn warning_index(index: c_int, n: usize) -> Result<usize> {
 
 /// Copies warning number `index` (0-based, whatever the index base) into
 /// `buffer` of `length` bytes, truncating like `tfem_last_error`
-/// (`tfem_get_warning_size` gives the size needed).
+/// (`tfem_get_warning_size` gives the size needed): the truncated warning
+/// is written with TFEM_STATUS_BUFFER_TOO_SMALL; on any other error
+/// (an index out of range) `buffer` is unchanged.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_warning(
     model: *mut TfemModel,

@@ -94,7 +94,9 @@ pub unsafe extern "C" fn tfem_contact_destroy(context: *mut TfemContact) {
 
 /// Copies the message of the last failed call on `context` (empty after a
 /// successful call) into `buffer` (`length` bytes including the final NUL),
-/// truncating like `tfem_last_error`.
+/// truncating like `tfem_last_error`. A `context` that is not a live
+/// contact context gives TFEM_STATUS_INVALID_ARGUMENT with the message
+/// saying so in `buffer`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_last_error(
     context: *const TfemContact,

@@ -13,6 +13,13 @@
 //!   every message.
 //! * Output buffers are owned by the caller; their length (in elements, not
 //!   bytes) is checked, and nothing is written when it is too short.
+//! * A call that returns an error writes none of its outputs (buffers,
+//!   values and structs given back through pointers): every check, and
+//!   every result, comes before the first write (`plumbing::copy_out`,
+//!   `plumbing::write`). The exceptions are the message copies
+//!   (`tfem_last_error`, `tfem_contact_last_error`, `tfem_get_warning`),
+//!   which write a truncated message with `TFEM_STATUS_BUFFER_TOO_SMALL`
+//!   and the message refusing a handle that is not live.
 //! * A failed call leaves the model as it was. No panic crosses the
 //!   boundary: it is caught and reported as `TFEM_STATUS_INTERNAL`.
 
