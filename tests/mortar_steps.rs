@@ -362,3 +362,99 @@ fn a_history_read_only_at_its_end_recovers_one_field() {
     let report = model.contact_report().unwrap();
     assert_eq!(report.info.factorizations, 0);
 }
+
+#[test]
+fn a_step_too_large_for_double_precision_is_refused_and_changes_nothing() {
+    // A review's case: 1e300 was accepted, and its field then unreadable.
+    let options = ContactOptions::default();
+    let mut model = hertz();
+    model.step(0.5, &options).unwrap();
+    let before = bits(&model);
+    let e = model.step(1e300, &options).unwrap_err();
+    assert_eq!(e.status(), Status::NumericalFailure, "{}", e.message());
+    assert_eq!(bits(&model), before);
+    for t in [1e20, 1e200] {
+        model.step(t, &options).unwrap();
+        assert!(model.displacements().is_ok(), "t = {t:e}");
+    }
+    // Near the edge: refused, or accepted with a readable field.
+    for t in [1e280, 1e290, 1e294, 1e296, 1e298, 1e299] {
+        if model.step(t, &options).is_ok() {
+            let u = model.displacements();
+            assert!(u.is_ok(), "t = {t:e}: {:?}", u.err());
+        }
+    }
+}
+
+/// [`hertz`] after steps 0.3, 0.6 and 1.0, none of them read.
+fn stepped_unread() -> Model {
+    let options = ContactOptions::default();
+    let mut model = hertz();
+    for t in [0.3, 0.6, 1.0] {
+        model.step(t, &options).unwrap();
+    }
+    model
+}
+
+/// The field of the step at `t` brought back by a revert, against a fresh
+/// solve of its loads.
+fn reverted_field_error(model: &mut Model, t: f64) -> f64 {
+    model.revert_step().unwrap();
+    let mut fresh = scaled_hertz(t);
+    fresh.solve_contact(&ContactOptions::default()).unwrap();
+    relative_difference(
+        &model.displacements().unwrap(),
+        &fresh.displacements().unwrap(),
+    )
+}
+
+#[test]
+fn a_failed_solve_after_steps_leaves_the_step_before_readable() {
+    // A review's case: the failed solve lost the history the unread step
+    // waited on.
+    let mut model = stepped_unread();
+    let short = ContactOptions {
+        max_iterations: 1,
+        ..ContactOptions::default()
+    };
+    model.solve_contact(&short).unwrap_err();
+    assert!(model.displacements().is_ok());
+    let d = reverted_field_error(&mut model, 0.6);
+    assert!(d < 1e-10, "{d:e}");
+}
+
+#[test]
+fn a_failed_step_of_new_options_leaves_the_step_before_readable() {
+    let mut model = stepped_unread();
+    let other = ContactOptions {
+        lambda: Some(0.5),
+        max_iterations: 1,
+        ..ContactOptions::default()
+    };
+    model.step(0.3, &other).unwrap_err();
+    let d = reverted_field_error(&mut model, 0.6);
+    assert!(d < 1e-10, "{d:e}");
+}
+
+#[test]
+fn unloading_to_zero_is_solved_from_a_contact_solves_first_set() {
+    // A review's case: warm-started from the loaded set, the loop passed
+    // through no contact at all, where the cylinder floats.
+    // Unloaded, the bodies do not move: against the loaded field's size.
+    let options = ContactOptions::default();
+    let mut model = stepped_unread();
+    let loaded = model.displacements().unwrap();
+    let scale = loaded
+        .as_flattened()
+        .iter()
+        .fold(0.0f64, |m, u| m.max(u.abs()));
+    model.step(0.0, &options).unwrap();
+    let rest = model.displacements().unwrap();
+    let moved = rest
+        .as_flattened()
+        .iter()
+        .fold(0.0f64, |m, u| m.max(u.abs()));
+    assert!(moved <= 1e-12 * scale, "{moved:e} of {scale:e}");
+    let d = reverted_field_error(&mut model, 1.0);
+    assert!(d < 1e-10, "{d:e}");
+}

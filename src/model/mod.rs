@@ -481,16 +481,13 @@ impl Model {
         let mut timings = Timings::default();
         let prescribed = self.problem.prescribed_vector()?;
         let f_ext = self.problem.load_vector()?;
-        let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
         // A solve ends a load history: a step's field waiting for recovery
-        // is recovered first (the results of a failed solve stay). A field
-        // that cannot be recovered does not stop the solve, which replaces
-        // it.
-        if let Some(s) = self.solution.as_ref().filter(|s| s.pending.is_some()) {
-            if s.revision == self.problem.revision() {
-                let _ = self.field();
-            }
-        }
+        // is recovered first (the results of a failed solve stay), and so
+        // is a mortar step's a revert would bring back (a failed solve
+        // loses the mortar history). A field that cannot be recovered does
+        // not stop the solve, which replaces it.
+        self.recover_waiting();
+        let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
         let session = session_of(&mut self.session, &self.problem, &mut timings)?;
         let revision = self.problem.revision();
         // A solve ends a load history; a failed one must not (the next step
@@ -797,12 +794,7 @@ impl Model {
                     let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
                     history::recover(session, &input, p)
                 }
-                Pending::Mortar(p) => {
-                    let prescribed: Vec<f64> = prescribed.iter().map(|u| p.t * u).collect();
-                    let f_ext: Vec<f64> = f_ext.iter().map(|f| p.t * f).collect();
-                    let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
-                    crate::solve::mortar_history::recover(session, &input, p)
-                }
+                Pending::Mortar(p) => self.mortar_field(session, p),
             }
         };
         let u = match &self.pool {

@@ -5,11 +5,13 @@
 
 use std::time::Instant;
 
-use super::{Model, Undo, input_of, keep_matrix, session_of, solution_of};
+use super::{Model, Solution, Undo, input_of, keep_matrix, session_of, solution_of};
 use crate::contact::ContactOptions;
 use crate::error::Result;
 use crate::model::solution::{ContactReport, Timings};
-use crate::solve::{self, history};
+use crate::solve::mortar_history::{self, Pending as MortarPending};
+use crate::solve::session::Session;
+use crate::solve::{self, Pending, history};
 
 impl Model {
     /// One load step of factor `t` under the mortar weighting
@@ -25,53 +27,53 @@ impl Model {
         let mut timings = Timings::default();
         let prescribed = self.problem.prescribed_vector()?;
         let f_ext = self.problem.load_vector()?;
-        let unit = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
         let prescribed_t: Vec<f64> = prescribed.iter().map(|u| t * u).collect();
         let f_scaled: Vec<f64> = f_ext.iter().map(|f| t * f).collect();
-        let scaled = input_of(&self.problem, self.settings, &prescribed_t, &f_scaled)?;
         let contact = self.problem.contact_epoch();
         let key = history::Key::new(self.problem.stiffness(), options);
-        // A step that begins a new history ends the old one: a step's
-        // field waiting for recovery is recovered first.
+        // A step that begins a new history ends the old one: the fields
+        // waiting on it are recovered first.
         let continues = self
             .session
             .as_ref()
             .and_then(|s| s.mortar_history.as_ref())
             .is_some_and(|h| h.continues(&key, self.settings));
-        if !continues && self.solution.as_ref().is_some_and(|s| s.pending.is_some()) {
-            let _ = self.field();
+        if !continues {
+            self.recover_waiting();
         }
-        let warm = self.mortar_warm_start(contact);
+        let mut warm = self.mortar_warm_start(contact);
         let revision = self.problem.revision();
         let mut fresh = false;
         let (outcome, before) = loop {
-            let session = session_of(&mut self.session, &self.problem, &mut timings)?;
-            let had_matrix = session.system_matrix(revision).is_some();
-            let stepped = solve::mortar_step(
-                session,
-                (&scaled, &unit),
-                (options, key, revision),
-                (t, warm.as_deref(), fresh),
-                &mut timings,
-            );
-            match stepped {
-                Ok(Some(stepped)) => break stepped,
-                // The history's interface lost its accuracy: the step is
-                // solved afresh, which ends the history, so a step's field
-                // waiting on it is recovered first.
-                Ok(None) => {
-                    if self.solution.as_ref().is_some_and(|s| s.pending.is_some()) {
-                        let _ = self.field();
+            {
+                let unit = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
+                let scaled = input_of(&self.problem, self.settings, &prescribed_t, &f_scaled)?;
+                let session = session_of(&mut self.session, &self.problem, &mut timings)?;
+                let had_matrix = session.system_matrix(revision).is_some();
+                let stepped = solve::mortar_step(
+                    session,
+                    (&scaled, &unit),
+                    (options, key, revision),
+                    (t, warm.as_deref(), fresh),
+                    &mut timings,
+                );
+                match stepped {
+                    Ok(Some(stepped)) => break stepped,
+                    Ok(None) => {}
+                    Err(e) => {
+                        if had_matrix {
+                            keep_matrix(session, &unit, self.solution.as_ref(), revision);
+                        }
+                        return Err(e);
                     }
-                    fresh = true;
-                }
-                Err(e) => {
-                    if had_matrix {
-                        keep_matrix(session, &unit, self.solution.as_ref(), revision);
-                    }
-                    return Err(e);
                 }
             }
+            // The history's interface lost its accuracy: the step is solved
+            // afresh, from a contact solve's first set (the warm one is what
+            // lost it), which ends the history, so the fields waiting on it
+            // are recovered first.
+            self.recover_waiting();
+            (fresh, warm) = (true, None);
         };
         let session = self.session.as_ref().expect("the step's session");
         let elements = &session.contact;
@@ -112,5 +114,66 @@ impl Model {
         let solution = self.solution.as_ref().filter(|s| s.step)?;
         let state = solution.contact.as_ref()?.mortar.as_ref()?;
         Some(state.nodes.iter().map(|n| n.active).collect())
+    }
+}
+
+impl Model {
+    /// The field of the mortar step `pending` (of the current problem's
+    /// revision), recovered from the session's history.
+    pub(super) fn mortar_field(
+        &self,
+        session: &Session,
+        pending: &MortarPending,
+    ) -> Result<Vec<f64>> {
+        let scale = |v: Vec<f64>| -> Vec<f64> { v.iter().map(|a| pending.t * a).collect() };
+        let prescribed = scale(self.problem.prescribed_vector()?);
+        let f_ext = scale(self.problem.load_vector()?);
+        let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
+        mortar_history::recover(session, &input, pending)
+    }
+
+    /// Recovers the fields that wait on the session's load history — the
+    /// results', and a mortar step's that a revert would bring back (with
+    /// its own interface factor, put in for the while) — before a call
+    /// that may end the history: if that call fails, they stay readable.
+    pub(super) fn recover_waiting(&mut self) {
+        let revision = self.problem.revision();
+        let waits =
+            |s: &Solution| s.pending.is_some() && s.u.get().is_none() && s.revision == revision;
+        if self.solution.as_ref().is_some_and(waits) {
+            let _ = self.field();
+        }
+        let Some((Some(before), undo)) = &self.undo else {
+            return;
+        };
+        let (Some(Pending::Mortar(pending)), Some(snapshot)) = (&before.pending, &undo.mortar)
+        else {
+            return;
+        };
+        if !waits(before) {
+            return;
+        }
+        let (pending, snapshot) = (pending.clone(), snapshot.clone());
+        let Some(h) = self
+            .session
+            .as_mut()
+            .and_then(|s| s.mortar_history.as_mut())
+        else {
+            return;
+        };
+        let now = h.snapshot();
+        h.restore(&snapshot);
+        let session = self.session.as_ref().expect("it holds the history");
+        let u = self.mortar_field(session, &pending);
+        if let Some(h) = self
+            .session
+            .as_mut()
+            .and_then(|s| s.mortar_history.as_mut())
+        {
+            h.restore(&now);
+        }
+        if let (Ok(u), Some((Some(before), _))) = (u, &self.undo) {
+            let _ = before.u.set(u);
+        }
     }
 }

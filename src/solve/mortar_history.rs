@@ -55,6 +55,8 @@ pub(crate) struct MortarHistory {
     /// The statistics of the first step's solve (what a step reports for
     /// the residual and condition of K₁).
     first: SolveInfo,
+    /// ‖K₁‖∞, against which a step's size is judged.
+    k1_norm: f64,
 }
 
 /// A step whose whole field waits until asked for.
@@ -80,6 +82,11 @@ pub(crate) struct Snapshot {
 }
 
 impl MortarHistory {
+    /// The condensed interface's unknowns.
+    pub fn interface_len(&self) -> usize {
+        self.sys.len()
+    }
+
     /// Whether a step of `key` under `settings` goes on with this history.
     pub fn continues(&self, key: &Key, settings: Settings) -> bool {
         self.key == *key && self.settings == settings
@@ -139,6 +146,7 @@ pub(crate) fn begin(
         add_load(p, p.g_initial, &mut r_gap);
     }
     let x_gap = k1_solve(session, r_gap)?;
+    let k1_norm = norm_inf(&session.pattern, session.system.values());
     Ok(MortarHistory {
         key,
         settings: unit.settings,
@@ -150,6 +158,7 @@ pub(crate) fn begin(
         sys,
         factor_set,
         first,
+        k1_norm,
     })
 }
 
@@ -239,7 +248,9 @@ pub(crate) fn step(
     let first = warm
         .filter(|w| w.len() == n)
         .map_or_else(|| h.reference.clone(), <[bool]>::to_vec);
-    let y = h.sys.gather(&h.x1_at(t));
+    let x1 = h.x1_at(t);
+    check_size(h, &x1, t)?;
+    let y = h.sys.gather(&x1);
     let mesh = scaled.elements.mesh();
     let Session {
         dofs,
@@ -296,6 +307,25 @@ pub(crate) fn step(
         contact: Some(contact),
         warnings: Vec::new(),
     }))
+}
+
+/// Refuses a step whose K₁ solution `x1`, or its product with K₁, is not
+/// a finite double (a load factor so large that the step's residual, as a
+/// solve's, overflows): the error a contact solve of the same loads gives.
+fn check_size(h: &MortarHistory, x1: &[f64], t: f64) -> Result<()> {
+    let size = x1.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let loads = h.rhs_body.iter().fold(0.0f64, |m, v| m.max((t * v).abs()));
+    if (h.k1_norm * size).is_finite() && loads.is_finite() {
+        return Ok(());
+    }
+    Err(Error::new(
+        Status::NumericalFailure,
+        format!(
+            "the load step at factor {t:e} overflows: ‖K₁‖·‖u‖ = {:e} is beyond double \
+             precision; scale the loads, the prescribed displacements or the units",
+            h.k1_norm * size
+        ),
+    ))
 }
 
 /// The whole field of a pending step (global DOFs), `scaled` the problem

@@ -150,9 +150,12 @@ impl Session {
         self.structure
     }
 
-    /// The condensed unknowns of its load history (0 without one).
+    /// The condensed unknowns of its load history, strip or mortar (0
+    /// without one).
     pub fn interface_len(&self) -> usize {
-        self.history.as_ref().map_or(0, |h| h.interface_len())
+        let strip = self.history.as_ref().map(|h| h.interface_len());
+        let mortar = self.mortar_history.as_ref().map(|h| h.interface_len());
+        strip.or(mortar).unwrap_or(0)
     }
 
     /// Assembles the bodies' part into the system (no contact element in)
