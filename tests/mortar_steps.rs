@@ -440,3 +440,32 @@ fn unloading_to_zero_is_solved_from_a_contact_solves_first_set() {
     let d = reverted_field_error(&mut model, 1.0);
     assert!(d < 1e-10, "{d:e}");
 }
+
+#[test]
+fn after_a_failed_solve_or_new_history_step_the_history_goes_on_to_the_bit() {
+    // A review's case: a failed call that reached a fresh solve dropped
+    // the history; the next step refactorised and moved in the last bits.
+    let options = ContactOptions::default();
+    let mut reference = stepped_unread();
+    reference.step(0.8, &options).unwrap();
+    let expected = bits(&reference);
+    let short = ContactOptions {
+        max_iterations: 1,
+        ..options
+    };
+    let other = ContactOptions {
+        lambda: Some(0.5),
+        ..short
+    };
+    for failing in [0, 1] {
+        let mut model = stepped_unread();
+        let e = match failing {
+            0 => model.solve_contact(&short).unwrap_err(),
+            _ => model.step(0.3, &other).unwrap_err(),
+        };
+        assert_eq!(e.status(), Status::NotConverged);
+        let report = model.step(0.8, &options).unwrap();
+        assert_eq!(report.info.factorizations, 0, "case {failing}");
+        assert_eq!(bits(&model), expected, "case {failing}");
+    }
+}

@@ -482,17 +482,17 @@ impl Model {
         let prescribed = self.problem.prescribed_vector()?;
         let f_ext = self.problem.load_vector()?;
         // A solve ends a load history: a step's field waiting for recovery
-        // is recovered first (the results of a failed solve stay), and so
-        // is a mortar step's a revert would bring back (a failed solve
-        // loses the mortar history). A field that cannot be recovered does
-        // not stop the solve, which replaces it.
-        self.recover_waiting();
+        // is recovered first (the results of a failed solve stay). A field
+        // that cannot be recovered does not stop the solve, which replaces
+        // it.
+        self.recover_results();
         let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
         let session = session_of(&mut self.session, &self.problem, &mut timings)?;
         let revision = self.problem.revision();
         // A solve ends a load history; a failed one must not (the next step
         // continues it as if the solve had not been tried).
         let saved = history::save(session, revision, self.problem.stiffness());
+        let saved_mortar = session.mortar_history.take();
         let had_matrix = session.system_matrix(revision).is_some();
         let outcome = match solve::solve(session, &input, options, &mut timings) {
             Ok(outcome) => outcome,
@@ -502,6 +502,10 @@ impl Model {
                 }
                 if let Some(saved) = saved {
                     history::restore(session, &input, revision, saved);
+                }
+                if let Some(h) = saved_mortar {
+                    let stiffness = self.problem.stiffness();
+                    crate::solve::mortar_history::put_back(session, &input, stiffness, h);
                 }
                 return Err(e);
             }

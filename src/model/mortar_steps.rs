@@ -11,7 +11,7 @@ use crate::error::Result;
 use crate::model::solution::{ContactReport, Timings};
 use crate::solve::mortar_history::{self, Pending as MortarPending};
 use crate::solve::session::Session;
-use crate::solve::{self, Pending, history};
+use crate::solve::{self, history};
 
 impl Model {
     /// One load step of factor `t` under the mortar weighting
@@ -39,7 +39,7 @@ impl Model {
             .and_then(|s| s.mortar_history.as_ref())
             .is_some_and(|h| h.continues(&key, self.settings));
         if !continues {
-            self.recover_waiting();
+            self.recover_results();
         }
         let mut warm = self.mortar_warm_start(contact);
         let revision = self.problem.revision();
@@ -72,7 +72,7 @@ impl Model {
             // afresh, from a contact solve's first set (the warm one is what
             // lost it), which ends the history, so the fields waiting on it
             // are recovered first.
-            self.recover_waiting();
+            self.recover_results();
             (fresh, warm) = (true, None);
         };
         let session = self.session.as_ref().expect("the step's session");
@@ -132,48 +132,17 @@ impl Model {
         mortar_history::recover(session, &input, pending)
     }
 
-    /// Recovers the fields that wait on the session's load history — the
-    /// results', and a mortar step's that a revert would bring back (with
-    /// its own interface factor, put in for the while) — before a call
-    /// that may end the history: if that call fails, they stay readable.
-    pub(super) fn recover_waiting(&mut self) {
+    /// Recovers the results' field if it waits on the session's load
+    /// history, before a call that may replace the history (a solve, a step
+    /// that begins a new one, whose results then become the revert's):
+    /// what a failed call took out, it puts back
+    /// (`mortar_history::put_back`).
+    pub(super) fn recover_results(&mut self) {
         let revision = self.problem.revision();
         let waits =
             |s: &Solution| s.pending.is_some() && s.u.get().is_none() && s.revision == revision;
         if self.solution.as_ref().is_some_and(waits) {
             let _ = self.field();
-        }
-        let Some((Some(before), undo)) = &self.undo else {
-            return;
-        };
-        let (Some(Pending::Mortar(pending)), Some(snapshot)) = (&before.pending, &undo.mortar)
-        else {
-            return;
-        };
-        if !waits(before) {
-            return;
-        }
-        let (pending, snapshot) = (pending.clone(), snapshot.clone());
-        let Some(h) = self
-            .session
-            .as_mut()
-            .and_then(|s| s.mortar_history.as_mut())
-        else {
-            return;
-        };
-        let now = h.snapshot();
-        h.restore(&snapshot);
-        let session = self.session.as_ref().expect("it holds the history");
-        let u = self.mortar_field(session, &pending);
-        if let Some(h) = self
-            .session
-            .as_mut()
-            .and_then(|s| s.mortar_history.as_mut())
-        {
-            h.restore(&now);
-        }
-        if let (Ok(u), Some((Some(before), _))) = (u, &self.undo) {
-            let _ = before.u.set(u);
         }
     }
 }

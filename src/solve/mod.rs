@@ -165,10 +165,22 @@ pub(crate) fn mortar_step(
         session.mortar_history = Some(h);
         return Ok(stepped?.map(|outcome| (outcome, Some(before))));
     }
-    let (info, warnings) = prepare(session, scaled, timings)?;
-    let start = mortar::Start { warm };
-    let (outcome, settled) =
-        mortar::solve_settled(session, scaled, options, (info, timings), (warnings, start))?;
+    // A history this step does not continue comes back if the step fails.
+    let saved = session.mortar_history.take();
+    let fresh_solve = |session: &mut Session, timings: &mut Timings| {
+        let (info, warnings) = prepare(session, scaled, timings)?;
+        let start = mortar::Start { warm };
+        mortar::solve_settled(session, scaled, options, (info, timings), (warnings, start))
+    };
+    let (outcome, settled) = match fresh_solve(session, timings) {
+        Ok(solved) => solved,
+        Err(e) => {
+            if let Some(h) = saved {
+                mortar_history::put_back(session, unit, key.stiffness, h);
+            }
+            return Err(e);
+        }
+    };
     if let Some(settled) = settled {
         // Without a history the steps after solve afresh: slower, not
         // wrong, so a history that cannot begin is no error.

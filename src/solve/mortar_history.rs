@@ -28,7 +28,7 @@ use super::mortar::{
     Penalty, Run, Settled, add_changed_forces, at_interface, differing, outcome, session_penalties,
 };
 use super::report::{SolveInfo, Timings};
-use super::session::{Session, Settings, Wanted, analyse};
+use super::session::{Session, Settings, Wanted, analyse, factorisation};
 use super::{Field, Input, Outcome};
 use crate::contact::{ActiveSet, ContactOptions};
 use crate::error::{Error, Result, Status};
@@ -160,6 +160,53 @@ pub(crate) fn begin(
         first,
         k1_norm,
     })
+}
+
+/// Puts back into the session the history `h` that a failed solve took
+/// out (`Model::run`, a step that began a new history): K₁'s matrix
+/// assembled again — the same operations in the same order, so the same
+/// values to the bit — and factorised with the history's analysis, so that
+/// the steps after, and the fields waiting on it, go on as if the solve
+/// had not been tried. Dropped when the stiffness changed since (no step
+/// continues it then) or the rebuild fails (the steps after factorise
+/// anew).
+pub(crate) fn put_back(session: &mut Session, unit: &Input<'_>, stiffness: u64, h: MortarHistory) {
+    if h.key.stiffness == stiffness && rebuild(session, unit, &h).is_ok() {
+        session.mortar_history = Some(h);
+    }
+}
+
+/// K₁ of `h` in the session's system and factor.
+fn rebuild(session: &mut Session, unit: &Input<'_>, h: &MortarHistory) -> Result<()> {
+    session.assemble_body(&unit.elements, (unit.f_ext, unit.prescribed))?;
+    let penalties = session_penalties(session, unit, h.key.options())?;
+    let Session {
+        dofs,
+        pattern,
+        analysis,
+        system,
+        ..
+    } = &mut *session;
+    for (p, _) in penalties.iter().zip(&h.reference).filter(|(_, on)| **on) {
+        p.toggle(system, pattern, 1.0);
+    }
+    let want = Wanted {
+        last: h.sys.unknowns(),
+        zeros: &[],
+    };
+    let structure = (unit.elements.mesh(), &*dofs, &*pattern);
+    let (mut timings, mut info) = (Timings::default(), SolveInfo::default());
+    let chol = factorisation(
+        analysis,
+        structure,
+        h.settings,
+        want,
+        &mut timings,
+        &mut info,
+    )?;
+    chol.factorize(pattern, system.values())
+        .map_err(|_| Error::state("K₁ of the load history could not be factorised again"))?;
+    Ok(())
 }
 
 /// Adds −(κ/m_i) g c_i, the load of penalty `p` for the gap `g`, to `r`.
@@ -310,8 +357,11 @@ pub(crate) fn step(
 }
 
 /// Refuses a step whose K₁ solution `x1`, or its product with K₁, is not
-/// a finite double (a load factor so large that the step's residual, as a
-/// solve's, overflows): the error a contact solve of the same loads gives.
+/// a finite double: a load factor so large that the residual of the
+/// step's recovery could overflow (as a solve's does). ‖K₁‖‖x₁‖ bounds
+/// what the recovery computes, so this refuses a little before a contact
+/// solve of the same loads would (at 10^299.75 rather than above 1e300 on
+/// a review's two-block scene; on Hertz both refuse from 1e296).
 fn check_size(h: &MortarHistory, x1: &[f64], t: f64) -> Result<()> {
     let size = x1.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let loads = h.rhs_body.iter().fold(0.0f64, |m, v| m.max((t * v).abs()));
