@@ -9,7 +9,8 @@ use super::{Model, Solution, Undo, input_of, keep_matrix, session_of, solution_o
 use crate::contact::ContactOptions;
 use crate::error::Result;
 use crate::model::solution::{ContactReport, Timings};
-use crate::solve::mortar_history::{self, Pending as MortarPending};
+use crate::solve::Outcome;
+use crate::solve::mortar_history::{self, Pending as MortarPending, Snapshot};
 use crate::solve::session::Session;
 use crate::solve::{self, history};
 
@@ -23,7 +24,7 @@ impl Model {
         t_start: Instant,
     ) -> Result<ContactReport> {
         history::check_load_factor(t)?;
-        self.check_memory(0)?;
+        self.check_memory(self.session.as_ref().map_or(0, |s| s.interface_len()))?;
         let mut timings = Timings::default();
         let prescribed = self.problem.prescribed_vector()?;
         let f_ext = self.problem.load_vector()?;
@@ -31,50 +32,14 @@ impl Model {
         let f_scaled: Vec<f64> = f_ext.iter().map(|f| t * f).collect();
         let contact = self.problem.contact_epoch();
         let key = history::Key::new(self.problem.stiffness(), options);
-        // A step that begins a new history ends the old one: the fields
-        // waiting on it are recovered first.
-        let continues = self
-            .session
-            .as_ref()
-            .and_then(|s| s.mortar_history.as_ref())
-            .is_some_and(|h| h.continues(&key, self.settings));
-        if !continues {
-            self.recover_results();
-        }
-        let mut warm = self.mortar_warm_start(contact);
         let revision = self.problem.revision();
-        let mut fresh = false;
-        let (outcome, before) = loop {
-            {
-                let unit = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
-                let scaled = input_of(&self.problem, self.settings, &prescribed_t, &f_scaled)?;
-                let session = session_of(&mut self.session, &self.problem, &mut timings)?;
-                let had_matrix = session.system_matrix(revision).is_some();
-                let stepped = solve::mortar_step(
-                    session,
-                    (&scaled, &unit),
-                    (options, key, revision),
-                    (t, warm.as_deref(), fresh),
-                    &mut timings,
-                );
-                match stepped {
-                    Ok(Some(stepped)) => break stepped,
-                    Ok(None) => {}
-                    Err(e) => {
-                        if had_matrix {
-                            keep_matrix(session, &unit, self.solution.as_ref(), revision);
-                        }
-                        return Err(e);
-                    }
-                }
-            }
-            // The history's interface lost its accuracy: the step is solved
-            // afresh, from a contact solve's first set (the warm one is what
-            // lost it), which ends the history, so the fields waiting on it
-            // are recovered first.
-            self.recover_results();
-            (fresh, warm) = (true, None);
-        };
+        let loads = (
+            &prescribed[..],
+            &f_ext[..],
+            &prescribed_t[..],
+            &f_scaled[..],
+        );
+        let (outcome, before) = self.mortar_outcome((t, options), key, loads, &mut timings)?;
         let session = self.session.as_ref().expect("the step's session");
         let elements = &session.contact;
         let (mut solution, warnings) = solution_of(
@@ -101,6 +66,62 @@ impl Model {
             .as_ref()
             .map(|c| c.report.clone())
             .expect("a step has a contact state"))
+    }
+
+    /// The outcome of the step at `t` of history `key` (`loads`: the
+    /// prescribed values and forces, unscaled and scaled), with the
+    /// interface factor before it when it went on with the history.
+    fn mortar_outcome(
+        &mut self,
+        (t, options): (f64, &ContactOptions),
+        key: history::Key,
+        (prescribed, f_ext, prescribed_t, f_scaled): (&[f64], &[f64], &[f64], &[f64]),
+        timings: &mut Timings,
+    ) -> Result<(Outcome, Option<Snapshot>)> {
+        // A step that begins a new history ends the old one: the results'
+        // field waiting on it is recovered first.
+        let continues = self
+            .session
+            .as_ref()
+            .and_then(|s| s.mortar_history.as_ref())
+            .is_some_and(|h| h.continues(&key, self.settings));
+        if !continues {
+            self.recover_results();
+        }
+        let mut warm = self.mortar_warm_start(self.problem.contact_epoch());
+        let revision = self.problem.revision();
+        let mut fresh = false;
+        loop {
+            {
+                let unit = input_of(&self.problem, self.settings, prescribed, f_ext)?;
+                let scaled = input_of(&self.problem, self.settings, prescribed_t, f_scaled)?;
+                let session = session_of(&mut self.session, &self.problem, timings)?;
+                let had_matrix = session.system_matrix(revision).is_some();
+                let stepped = solve::mortar_step(
+                    session,
+                    (&scaled, &unit),
+                    (options, key, revision),
+                    (t, warm.as_deref(), fresh),
+                    timings,
+                );
+                match stepped {
+                    Ok(Some(stepped)) => return Ok(stepped),
+                    Ok(None) => {}
+                    Err(e) => {
+                        if had_matrix {
+                            keep_matrix(session, &unit, self.solution.as_ref(), revision);
+                        }
+                        return Err(e);
+                    }
+                }
+            }
+            // The history's interface lost its accuracy: the step is solved
+            // afresh, from a contact solve's first set (the warm one is what
+            // lost it), which ends the history, so the results' field
+            // waiting on it is recovered first.
+            self.recover_results();
+            (fresh, warm) = (true, None);
+        }
     }
 
     /// The slave nodes' set the next mortar step of contact epoch
