@@ -620,7 +620,7 @@ impl Model {
         self.history_epoch = Some(contact);
         let elements = &session.contact;
         let f_scaled: Vec<f64> = f_ext.iter().map(|f| t * f).collect();
-        let (mut solution, warnings) = solution_of(
+        let (mut solution, mut warnings) = solution_of(
             outcome,
             f_scaled,
             (elements, Some(*options)),
@@ -628,25 +628,33 @@ impl Model {
             t_start,
             revision,
         );
-        solution.step = true;
-        self.solve_warnings = warnings;
         if dropped {
-            self.solve_warnings.push(dropped_warning(&self.problem));
+            warnings.push(dropped_warning(&self.problem));
         }
-        self.undo = Some((
-            self.solution.take(),
-            Undo {
-                contact,
-                state: Some(before),
-                mortar: None,
-            },
-        ));
+        let undo = Undo {
+            contact,
+            state: Some(before),
+            mortar: None,
+        };
+        solution.step = true;
+        Ok(self.accept_step((solution, warnings), undo))
+    }
+
+    /// Makes a load step's `solution` the results, the results before it
+    /// what [`Model::revert_step`] brings back with `undo`: its report.
+    fn accept_step(
+        &mut self,
+        (solution, warnings): (Solution, Vec<String>),
+        undo: Undo,
+    ) -> ContactReport {
+        self.solve_warnings = warnings;
+        self.undo = Some((self.solution.take(), undo));
         let solution = self.solution.insert(solution);
-        Ok(solution
+        solution
             .contact
             .as_ref()
             .map(|c| c.report.clone())
-            .expect("a step has a contact state"))
+            .expect("a step has a contact state")
     }
 
     /// Undoes the last load step: its results, and the contact state the

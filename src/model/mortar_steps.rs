@@ -51,21 +51,14 @@ impl Model {
             revision,
         );
         solution.step = true;
-        self.solve_warnings = warnings;
-        let before = Undo {
+        let undo = Undo {
             contact,
             state: None,
             mortar: before,
         };
-        self.undo = Some((self.solution.take(), before));
         (self.restored, self.carried) = (None, None);
         self.history_epoch = Some(contact);
-        let solution = self.solution.insert(solution);
-        Ok(solution
-            .contact
-            .as_ref()
-            .map(|c| c.report.clone())
-            .expect("a step has a contact state"))
+        Ok(self.accept_step((solution, warnings), undo))
     }
 
     /// The outcome of the step at `t` of history `key` (`loads`: the

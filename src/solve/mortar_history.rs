@@ -178,8 +178,7 @@ pub(crate) fn put_back(session: &mut Session, unit: &Input<'_>, stiffness: u64, 
 
 /// K₁ of `h` in the session's system and factor.
 fn rebuild(session: &mut Session, unit: &Input<'_>, h: &MortarHistory) -> Result<()> {
-    session.assemble_body(&unit.elements, (unit.f_ext, unit.prescribed))?;
-    let penalties = session_penalties(session, unit, h.key.options())?;
+    assemble_k1(session, unit, h.key.options(), &h.reference)?;
     let Session {
         dofs,
         pattern,
@@ -187,9 +186,6 @@ fn rebuild(session: &mut Session, unit: &Input<'_>, h: &MortarHistory) -> Result
         system,
         ..
     } = &mut *session;
-    for (p, _) in penalties.iter().zip(&h.reference).filter(|(_, on)| **on) {
-        p.toggle(system, pattern, 1.0);
-    }
     let want = Wanted {
         last: h.sys.unknowns(),
         zeros: &[],
@@ -229,19 +225,36 @@ fn loads_of(
     options: &ContactOptions,
     reference: &[bool],
 ) -> Result<(Vec<f64>, Vec<f64>)> {
+    let (rhs_body, penalties) = assemble_k1(session, unit, options, reference)?;
+    let mut r_load = rhs_body.clone();
+    for (p, _) in penalties.iter().zip(reference).filter(|(_, on)| **on) {
+        add_load(p, p.g_rest - p.g_initial, &mut r_load);
+    }
+    let x_load = k1_solve(session, r_load)?;
+    Ok((rhs_body, x_load))
+}
+
+/// Makes the session's system K₁: the bodies assembled for `unit` (the
+/// unscaled loads), then the penalties of `reference` switched in, in
+/// order — the same operations as the first step's, so the same matrix
+/// to the bit. Gives the bodies' right-hand side and the penalties at
+/// factor 1.
+fn assemble_k1(
+    session: &mut Session,
+    unit: &Input<'_>,
+    options: &ContactOptions,
+    reference: &[bool],
+) -> Result<(Vec<f64>, Vec<Penalty>)> {
     session.assemble_body(&unit.elements, (unit.f_ext, unit.prescribed))?;
     let rhs_body = session.system.rhs().to_vec();
     let penalties = session_penalties(session, unit, options)?;
-    let mut r_load = rhs_body.clone();
     let Session {
         pattern, system, ..
     } = &mut *session;
     for (p, _) in penalties.iter().zip(reference).filter(|(_, on)| **on) {
         p.toggle(system, pattern, 1.0);
-        add_load(p, p.g_rest - p.g_initial, &mut r_load);
     }
-    let x_load = k1_solve(session, r_load)?;
-    Ok((rhs_body, x_load))
+    Ok((rhs_body, penalties))
 }
 
 /// K₁⁻¹ r, refined against K₁ (which the session's system holds).
