@@ -1190,9 +1190,8 @@ module tfem
     !! one weighted gap per node of each pair's coarser side, exact on the contact patch test
     !! whatever the two sides' nodes, and the right reading on a stiff curved tool; frictionless
     !! `tfem_solve_contact` and `tfem_step`). A change discards the results, like any change of the
-    !! contact pairs. Under the mortar weighting friction, the stick law, the literal inversion
-    !! test, and the contact states (`tfem_get_contact_state`, `tfem_set_contact_state`) are
-    !! refused, and so are the per-element outputs (`tfem_get_contact_active`,
+    !! contact pairs. Under the mortar weighting friction, the stick law and the literal inversion
+    !! test are refused, and so are the per-element outputs (`tfem_get_contact_active`,
     !! `tfem_get_contact_pressure`, `tfem_get_contact_elements`, shear, friction state, dissipation;
     !! `tfem_get_sizes` gives 0 contact elements; `tfem_get_contact_mesh` still gives the strip B
     !! the pairs would make): the state is per slave node (`tfem_get_contact_slave_nodes`); nodal
@@ -1401,24 +1400,19 @@ module tfem
     !! request (one sparse solve, or, where that cannot reach working accuracy on a very
     !! non-matching interface, a factorisation of the step's own matrix, made and dropped at that
     !! request); the system matrix of a step is not available. The step is accepted as it is:
-    !! `tfem_revert_step` undoes it. `report` may be NULL. A history condenses the contact
-    !! interface, so options with `refactorize` set, or an interface too large to condense (see
-    !! `TfemContactOptions`), are refused with TFEM_STATUS_INVALID_ARGUMENT: solve each step with
-    !! `tfem_solve_contact` then. `load_factor` must be finite, at most 1e300 in magnitude. On error
-    !! the model is unchanged. A frictional history goes on from the slip state it reached across a
-    !! change of materials, options or prescribed DOFs between steps (since 2026-11-24; before, such
-    !! a step started from no slip, and the answer, which with friction depends on the path,
-    !! differed by 2.7 % on a test scene). Every DOF prescribed: TFEM_STATUS_INVALID_STATE (before
-    !! 2026-11-24, SINGULAR); a contact that couples no free unknown (both sides wholly prescribed):
-    !! TFEM_STATUS_INVALID_ARGUMENT, solve it with `tfem_solve_contact`. Under the mortar weighting
-    !! (`tfem_set_contact_weighting`; refused with TFEM_STATUS_INVALID_STATE in the weighting's
-    !! first version) a step is the frictionless contact solve of the scaled loads, started from the
-    !! slave nodes' set of the step before; the first step's factorisation serves the history as
-    !! above (dense interface work per step, the field recovered when asked for). There
-    !! `refactorize` and interfaces too large to condense are accepted: each such step is a contact
-    !! solve that refactorises at every iteration. Its contact state is its results:
-    !! `tfem_get_contact_state` and `tfem_set_contact_state` are refused. Fortran: `options` and
-    !! `report` are OPTIONAL: omit them to pass NULL.
+    !! `tfem_revert_step` undoes it. `report` may be NULL. Where the contact interface is not
+    !! condensed (options with `refactorize` set, an interface too large to condense — see
+    !! `TfemContactOptions` —, or a contact that couples no free unknown) each step is a contact
+    !! solve of its scaled loads started from the state of the step before. A warm start that leads
+    !! nowhere (a body left free: unloading to zero from a loaded set passes through no contact at
+    !! all; a cycle) is tried again from the initial set of the step's own loads. `load_factor` must
+    !! be finite, at most 1e300 in magnitude, and a step whose field would overflow is refused
+    !! (TFEM_STATUS_NUMERICAL_FAILURE). On error the model is unchanged. A frictional history goes
+    !! on from the slip state it reached across a change of materials, options or prescribed DOFs
+    !! between steps (with friction the answer depends on the path). Every DOF prescribed:
+    !! TFEM_STATUS_INVALID_STATE. Under the mortar weighting (`tfem_set_contact_weighting`,
+    !! frictionless) a step is the same history over the slave nodes' weighted gaps. Fortran:
+    !! `options` and `report` are OPTIONAL: omit them to pass NULL.
     function tfem_step(model, load_factor, options, report) &
         bind(C, name="tfem_step") result(status)
       import
@@ -1450,7 +1444,7 @@ module tfem
 
   interface
     !> Writes to `size` the number of bytes of the contact state of the last load step (see
-    !! `tfem_get_contact_state`). Refused with TFEM_STATUS_INVALID_STATE under the mortar weighting.
+    !! `tfem_get_contact_state`).
     function tfem_get_contact_state_size(model, size) &
         bind(C, name="tfem_get_contact_state_size") result(status)
       import
@@ -1464,10 +1458,9 @@ module tfem
     !> Copies the contact state of the last load step into `buffer` (`length` bytes, at least
     !! `tfem_get_contact_state_size`): the active set and the factor of the condensed interface
     !! system, so that `tfem_set_contact_state` continues the history bit for bit (a restart, in
-    !! this model or another one holding the same problem). Refused with TFEM_STATUS_INVALID_STATE
-    !! under the mortar weighting (its contact state is the step's results; no bytes to save yet).
-    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
-    !! negative length is passed as 0.
+    !! this model or another one holding the same problem). Under the mortar weighting the set is
+    !! the slave nodes'. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
+    !! tfem_length_kind); a negative length is passed as 0.
     function tfem_get_contact_state(model, buffer, length) &
         bind(C, name="tfem_get_contact_state") result(status)
       import
@@ -1489,10 +1482,9 @@ module tfem
     !! set and slip state, with the interface factor of this problem; so also when the next step
     !! starts a new history (new materials, options or prescribed DOFs). If the mesh, its boundary
     !! edges, the pairs or friction on/off change before the next step (they remake the contact
-    !! mesh), that step starts afresh and warns (until 2026-11-24 a change of the prescribed DOFs
-    !! did so too; the state is now kept across it). A frictional state waiting for a step under the
-    !! stick law is refused by that step (TFEM_STATUS_INVALID_ARGUMENT) until another state is set.
-    !! Refused with TFEM_STATUS_INVALID_STATE under the mortar weighting. Fortran: `length` takes an
+    !! mesh), that step starts afresh and warns; a change of the prescribed DOFs keeps it. A
+    !! frictional state waiting for a step under the stick law is refused by that step
+    !! (TFEM_STATUS_INVALID_ARGUMENT) until another state is set. Fortran: `length` takes an
     !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
     !! as 0.
     function tfem_set_contact_state(model, buffer, length) &

@@ -20,10 +20,13 @@
 //! initial gap switches on without a force jump.
 
 pub mod conformity;
+pub(crate) mod constraints;
+pub(crate) mod discretisation;
 pub mod host;
 pub mod law;
 pub mod mesh;
 pub mod mortar;
+pub(crate) mod mortar_set;
 pub mod pairing;
 pub mod set;
 pub mod traction;

@@ -1152,9 +1152,8 @@ pub unsafe extern "C" fn tfem_get_contact_nodal_pressures(
 /// whatever the two sides' nodes, and the right reading on a stiff curved
 /// tool; frictionless `tfem_solve_contact` and `tfem_step`). A change
 /// discards the results, like any change of the contact pairs. Under the
-/// mortar weighting friction, the stick law, the literal inversion test,
-/// and the contact states (`tfem_get_contact_state`,
-/// `tfem_set_contact_state`) are refused, and so are the
+/// mortar weighting friction, the stick law and the literal inversion test
+/// are refused, and so are the
 /// per-element outputs (`tfem_get_contact_active`,
 /// `tfem_get_contact_pressure`, `tfem_get_contact_elements`, shear,
 /// friction state, dissipation; `tfem_get_sizes` gives 0 contact
@@ -1448,28 +1447,21 @@ pub unsafe extern "C" fn tfem_get_threads(model: *mut TfemModel, threads: *mut c
 /// factorisation of the step's own matrix, made and dropped at that
 /// request); the system matrix of a step is not available. The step is
 /// accepted as it is: `tfem_revert_step` undoes it. `report` may be NULL.
-/// A history condenses the contact interface, so options with
-/// `refactorize` set, or an interface too large to condense (see
-/// `TfemContactOptions`), are refused with TFEM_STATUS_INVALID_ARGUMENT:
-/// solve each step with `tfem_solve_contact` then. `load_factor` must be
-/// finite, at most 1e300 in magnitude. On error the model is unchanged.
-/// A frictional history goes on from the slip state it reached across a
-/// change of materials, options or prescribed DOFs between steps (since
-/// 2026-11-24; before, such a step started from no slip, and the answer,
-/// which with friction depends on the path, differed by 2.7 % on a test
-/// scene). Every DOF prescribed: TFEM_STATUS_INVALID_STATE (before 2026-11-24,
-/// SINGULAR); a contact that couples no free unknown (both sides wholly
-/// prescribed): TFEM_STATUS_INVALID_ARGUMENT, solve it with
-/// `tfem_solve_contact`.
-/// Under the mortar weighting (`tfem_set_contact_weighting`; refused with
-/// TFEM_STATUS_INVALID_STATE in the weighting's first version) a step is
-/// the frictionless contact solve of the scaled loads, started from the
-/// slave nodes' set of the step before; the first step's factorisation
-/// serves the history as above (dense interface work per step, the field
-/// recovered when asked for). There `refactorize` and interfaces too
-/// large to condense are accepted: each such step is a contact solve that
-/// refactorises at every iteration. Its contact state is its results:
-/// `tfem_get_contact_state` and `tfem_set_contact_state` are refused.
+/// Where the contact interface is not condensed (options with
+/// `refactorize` set, an interface too large to condense — see
+/// `TfemContactOptions` —, or a contact that couples no free unknown)
+/// each step is a contact solve of its scaled loads started from the state
+/// of the step before. A warm start that leads nowhere (a body left free:
+/// unloading to zero from a loaded set passes through no contact at all;
+/// a cycle) is tried again from the initial set of the step's own loads.
+/// `load_factor` must be finite, at most 1e300 in magnitude, and a step
+/// whose field would overflow is refused (TFEM_STATUS_NUMERICAL_FAILURE).
+/// On error the model is unchanged. A frictional history goes on from the
+/// slip state it reached across a change of materials, options or
+/// prescribed DOFs between steps (with friction the answer depends on the
+/// path). Every DOF prescribed: TFEM_STATUS_INVALID_STATE. Under the
+/// mortar weighting (`tfem_set_contact_weighting`, frictionless) a step is
+/// the same history over the slave nodes' weighted gaps.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_step(
     model: *mut TfemModel,
@@ -1508,8 +1500,7 @@ pub unsafe extern "C" fn tfem_revert_step(model: *mut TfemModel) -> Status {
 }
 
 /// Writes to `size` the number of bytes of the contact state of the last
-/// load step (see `tfem_get_contact_state`). Refused with
-/// TFEM_STATUS_INVALID_STATE under the mortar weighting.
+/// load step (see `tfem_get_contact_state`).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_contact_state_size(
     model: *mut TfemModel,
@@ -1524,9 +1515,8 @@ pub unsafe extern "C" fn tfem_get_contact_state_size(
 /// bytes, at least `tfem_get_contact_state_size`): the active set and the
 /// factor of the condensed interface system, so that
 /// `tfem_set_contact_state` continues the history bit for bit (a restart,
-/// in this model or another one holding the same problem). Refused with
-/// TFEM_STATUS_INVALID_STATE under the mortar weighting (its contact state
-/// is the step's results; no bytes to save yet).
+/// in this model or another one holding the same problem). Under the mortar
+/// weighting the set is the slave nodes'.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_contact_state(
     model: *mut TfemModel,
@@ -1562,11 +1552,9 @@ pub unsafe extern "C" fn tfem_get_contact_state(
 /// starts a new history (new materials, options or prescribed DOFs). If
 /// the mesh, its boundary edges, the pairs or friction on/off change
 /// before the next step (they remake the contact mesh), that step starts
-/// afresh and warns (until 2026-11-24 a change of the prescribed DOFs did
-/// so too; the state is now kept across it). A
+/// afresh and warns; a change of the prescribed DOFs keeps it. A
 /// frictional state waiting for a step under the stick law is refused by
 /// that step (TFEM_STATUS_INVALID_ARGUMENT) until another state is set.
-/// Refused with TFEM_STATUS_INVALID_STATE under the mortar weighting.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_set_contact_state(
     model: *mut TfemModel,

@@ -10,9 +10,10 @@
 //! reused by later solves while the epoch holds. Settings that change
 //! nothing physical (the ordering) keep every result.
 
-mod mortar_steps;
 pub mod problem;
+mod restart;
 pub mod solution;
+mod stepping;
 
 use std::sync::OnceLock;
 use std::time::Instant;
@@ -28,9 +29,8 @@ use crate::fem::element::{Tempering, TriGeometry};
 use crate::fem::material::Material;
 use crate::fem::mesh::Mesh;
 use crate::linalg::Ordering;
-use crate::solve::history::{self, StepState};
 use crate::solve::session::{Session, Settings};
-use crate::solve::{self, Field, Input, Outcome, Pending};
+use crate::solve::{self, Field, Input, Outcome};
 
 /// A displacement component.
 #[repr(C)]
@@ -63,43 +63,8 @@ pub struct Model {
     session: Option<Session>,
     solution: Option<Solution>,
     solve_warnings: Vec<String>,
-    /// Before the last load step: its results and contact state
-    /// ([`Model::revert_step`]).
-    undo: Option<(Option<Solution>, Undo)>,
-    /// A contact state to continue from at the next load step, when no
-    /// history holds it ([`Model::set_contact_state`]).
-    restored: Option<KeptState>,
-    /// The contact epoch of the session's load history, if it holds one.
-    history_epoch: Option<u64>,
-    /// The contact state a frictional history reached before an edit
-    /// dropped its session (a new prescribed DOF): the next step goes on
-    /// from it (`Model::run_step`).
-    carried: Option<KeptState>,
-}
-
-/// What [`Model::revert_step`] restores besides the results: the contact
-/// epoch of the step, and the contact state before it — the strip's, or
-/// under the mortar weighting the history's interface factor (the next
-/// step starts from the slave nodes' set of the results brought back).
-struct Undo {
-    contact: u64,
-    state: Option<StepState>,
-    /// Under the mortar weighting, the history's interface factor before
-    /// the step (`None` when the step began a history).
-    mortar: Option<crate::solve::mortar_history::Snapshot>,
-}
-
-/// A contact state the model keeps, with the contact epoch of the
-/// problem it belongs to ([`Problem::contact_epoch`]): once the contact
-/// mesh B or its parts change (the mesh, its boundary edges, the contact pairs or friction on/off), it belongs to none.
-/// A change of the set of prescribed DOFs keeps it: like new materials, it
-/// changes the stiffness and so the interface factor, which a history
-/// restores only into the interface system it was made from (by its
-/// fingerprint), not B, over which the active set and slip state are.
-#[derive(Clone)]
-struct KeptState {
-    contact: u64,
-    state: StepState,
+    /// The load history and what a revert or restart brings back.
+    stepping: stepping::Stepping,
 }
 
 impl Default for Model {
@@ -121,34 +86,13 @@ impl Model {
             session: None,
             solution: None,
             solve_warnings: Vec::new(),
-            undo: None,
-            restored: None,
-            history_epoch: None,
-            carried: None,
+            stepping: stepping::Stepping::default(),
         }
     }
 
     /// The problem the model solves.
     pub fn problem(&self) -> &Problem {
         &self.problem
-    }
-
-    /// The contact state of the session's frictional load history, if it
-    /// holds one of contact epoch `epoch` and no restored state waits.
-    fn history_state(&self, epoch: u64) -> Option<KeptState> {
-        let frictional = self
-            .problem
-            .contact_pairs()
-            .iter()
-            .any(|p| p.friction > 0.0);
-        if !frictional || self.restored.is_some() || self.history_epoch != Some(epoch) {
-            return None;
-        }
-        let history = self.session.as_ref()?.history.as_ref()?;
-        Some(KeptState {
-            contact: epoch,
-            state: history.step_state(),
-        })
     }
 
     /// Applies a change to the problem, then drops what it made stale: the
@@ -163,9 +107,8 @@ impl Model {
         {
             // A frictional history's path survives a change that keeps its
             // contact mesh (a new prescribed DOF), as it survives a revert.
-            if self.carried.is_none() && self.problem.contact_epoch() == epoch {
-                self.carried = self.history_state(epoch);
-            }
+            let kept = (self.problem.contact_epoch() == epoch).then_some(epoch);
+            self.stepping.session_dropped(kept);
             self.session = None;
         }
         if self
@@ -487,12 +430,12 @@ impl Model {
         // it.
         self.recover_results();
         let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
-        let session = session_of(&mut self.session, &self.problem, &mut timings)?;
+        let stepping = &mut self.stepping;
+        let session = session_of(&mut self.session, &self.problem, &mut timings, stepping)?;
         let revision = self.problem.revision();
         // A solve ends a load history; a failed one must not (the next step
         // continues it as if the solve had not been tried).
-        let saved = history::save(session, revision, self.problem.stiffness());
-        let saved_mortar = session.mortar_history.take();
+        let live = stepping.take();
         let had_matrix = session.system_matrix(revision).is_some();
         let outcome = match solve::solve(session, &input, options, &mut timings) {
             Ok(outcome) => outcome,
@@ -500,18 +443,12 @@ impl Model {
                 if had_matrix {
                     keep_matrix(session, &input, self.solution.as_ref(), revision);
                 }
-                if let Some(saved) = saved {
-                    history::restore(session, &input, revision, saved);
-                }
-                if let Some(h) = saved_mortar {
-                    let stiffness = self.problem.stiffness();
-                    crate::solve::mortar_history::put_back(session, &input, stiffness, h);
-                }
+                stepping.solve_failed(live, session, &input, &self.problem);
                 return Err(e);
             }
         };
-        session.set_system_of(Some(revision));
-        let elements = &session.contact;
+        session.holds = crate::solve::session::Holds::Solve(revision);
+        let elements = session.contact.strip();
         let options = options.copied();
         let (solution, warnings) = solution_of(
             outcome,
@@ -525,260 +462,8 @@ impl Model {
         if let Some(u) = solution.u.get() {
             reaction_warning(&self.problem, &solution, u, &mut self.solve_warnings);
         }
-        self.undo = None;
-        // A solve ends the load history (it drops the session's).
-        (self.carried, self.history_epoch) = (None, None);
+        self.stepping.solved();
         Ok(self.solution.insert(solution))
-    }
-
-    /// One quasi-static load step: the contact problem with the loads and
-    /// prescribed displacements as set, scaled by `load_factor`,
-    /// warm-started from the contact state of the last step (the initial
-    /// set of a contact solve for the first, or a state given by
-    /// [`Model::set_contact_state`]). One factorisation serves every step
-    /// while the stiffness (mesh, constraints, materials, tempering, pairs)
-    /// and the options are unchanged: a step is dense work on the contact
-    /// interface, plus one sparse solve when the loads changed since the
-    /// last step (a non-proportional history). Its displacements, and
-    /// everything computed from them, are recovered on first request (one
-    /// sparse solve, or, where that cannot reach working accuracy on a very
-    /// non-matching interface, a factorisation of the step's own matrix,
-    /// made and dropped at that request). The step is accepted as it is;
-    /// [`Model::revert_step`] undoes it. On error the model is unchanged.
-    ///
-    /// Under the mortar weighting ([`ContactWeighting::Mortar`], frictionless
-    /// only) a step is the contact solve of the scaled loads started from
-    /// the slave nodes' set of the step before; the first step's
-    /// factorisation serves the history in the same way (dense interface
-    /// work per step, the field recovered when asked for), and with
-    /// `refactorize`, or an interface too large to condense, each step is a
-    /// contact solve that refactorises. Its contact state is its results:
-    /// [`Model::contact_state`] and [`Model::set_contact_state`] are
-    /// refused.
-    pub fn step(&mut self, load_factor: f64, options: &ContactOptions) -> Result<ContactReport> {
-        options.validate()?;
-        self.in_pool(|m| m.run_step(load_factor, options))
-    }
-
-    fn run_step(&mut self, t: f64, options: &ContactOptions) -> Result<ContactReport> {
-        let t_start = Instant::now();
-        self.problem.check_ready(true)?;
-        if self.problem.contact_weighting() == ContactWeighting::Mortar {
-            return self.run_mortar_step(t, options, t_start);
-        }
-        self.check_memory(self.session.as_ref().map_or(0, |s| s.interface_len()))?;
-        let mut timings = Timings::default();
-        let prescribed = self.problem.prescribed_vector()?;
-        let f_ext = self.problem.load_vector()?;
-        let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
-        let stiffness = self.problem.stiffness();
-        // A step that starts a new history ends the old one: a step's field
-        // waiting for recovery is recovered first.
-        let continues = self
-            .session
-            .as_ref()
-            .is_some_and(|s| history::continues(s, options, stiffness));
-        if !continues && self.solution.as_ref().is_some_and(|s| s.pending.is_some()) {
-            let _ = self.field();
-        }
-        let contact = self.problem.contact_epoch();
-        // A step that starts a new history (new materials, options or
-        // prescribed DOFs) with no state given or reverted: a frictional
-        // history on the same contact mesh goes on from the slip state it
-        // reached, as after a revert — started from no slip, it forgot its
-        // path (2.7 % on tests/history.rs's scene, a reviewer's comparison).
-        // Taken before the session, and its history, may be remade (or
-        // kept by `edit`, which remade it).
-        let carried = self
-            .carried
-            .take()
-            .or_else(|| (!continues).then(|| self.history_state(contact))?);
-        let session = session_of(&mut self.session, &self.problem, &mut timings)?;
-        let revision = self.problem.revision();
-        let dropped = self.restored.as_ref().is_some_and(|k| k.contact != contact);
-        let restored = self
-            .restored
-            .as_ref()
-            .or(carried.as_ref())
-            .filter(|k| k.contact == contact)
-            .map(|k| &k.state);
-        let key = (options, stiffness, revision);
-        let had_matrix = session.system_matrix(revision).is_some();
-        let (outcome, before) =
-            match history::step(session, &input, key, (t, restored), &mut timings) {
-                Ok(stepped) => stepped,
-                Err(e) => {
-                    if had_matrix && session.system_matrix(revision).is_none() {
-                        keep_matrix(session, &input, self.solution.as_ref(), revision);
-                    }
-                    // A failed step changes nothing: the next one carries it.
-                    self.carried = carried;
-                    return Err(e);
-                }
-            };
-        self.restored = None;
-        self.history_epoch = Some(contact);
-        let elements = &session.contact;
-        let f_scaled: Vec<f64> = f_ext.iter().map(|f| t * f).collect();
-        let (mut solution, mut warnings) = solution_of(
-            outcome,
-            f_scaled,
-            (elements, Some(*options)),
-            timings,
-            t_start,
-            revision,
-        );
-        if dropped {
-            warnings.push(dropped_warning(&self.problem));
-        }
-        let undo = Undo {
-            contact,
-            state: Some(before),
-            mortar: None,
-        };
-        solution.step = true;
-        Ok(self.accept_step((solution, warnings), undo))
-    }
-
-    /// Makes a load step's `solution` the results, the results before it
-    /// what [`Model::revert_step`] brings back with `undo`: its report.
-    fn accept_step(
-        &mut self,
-        (solution, warnings): (Solution, Vec<String>),
-        undo: Undo,
-    ) -> ContactReport {
-        self.solve_warnings = warnings;
-        self.undo = Some((self.solution.take(), undo));
-        let solution = self.solution.insert(solution);
-        solution
-            .contact
-            .as_ref()
-            .map(|c| c.report.clone())
-            .expect("a step has a contact state")
-    }
-
-    /// Undoes the last load step: its results, and the contact state the
-    /// next step starts from, go back to what they were before it. Once.
-    ///
-    /// Refused (the model unchanged) once the contact mesh B or its parts
-    /// have changed since that step (the mesh, its boundary edges, the contact pairs or friction on/off), naming the
-    /// change: its contact state belongs to the contact mesh before. A
-    /// change of the set of prescribed DOFs does not refuse it: like new
-    /// materials, it changes the stiffness (and the interface factor,
-    /// which the next step then makes anew), not B. The state brought back
-    /// is the next step's start even if that step starts a new history
-    /// (new materials, options or prescribed DOFs).
-    pub fn revert_step(&mut self) -> Result<()> {
-        let (_, before) = self
-            .undo
-            .as_ref()
-            .ok_or_else(|| Error::state("no load step to revert"))?;
-        if before.contact != self.problem.contact_epoch() {
-            return Err(Error::state(format!(
-                "the last load step cannot be reverted: {} changed since (a change of \
-                 {CONTACT_STRUCTURE} remakes the contact mesh), and its contact state belongs \
-                 to the contact mesh before",
-                self.problem.contact_change()
-            )));
-        }
-        // Into the history now, so that the step's results brought back
-        // (whose field may wait on that history) stay readable; and kept
-        // for the next step, which may start another history (new
-        // stiffness or options) and would otherwise lose it.
-        let history = self.session.as_mut().and_then(|s| s.history.as_mut());
-        if let (Some(history), Some(state)) = (history, &before.state) {
-            history.set_state(state)?;
-        }
-        let mortar = self
-            .session
-            .as_mut()
-            .and_then(|s| s.mortar_history.as_mut());
-        if let (Some(history), Some(snapshot)) = (mortar, &before.mortar) {
-            history.restore(snapshot);
-        }
-        let (solution, before) = self.undo.take().expect("checked above");
-        self.solution = solution;
-        // Under the mortar weighting the solution brought back is the
-        // state (the next step starts from its slave nodes' set).
-        self.restored = before.state.map(|state| KeptState {
-            contact: before.contact,
-            state,
-        });
-        Ok(())
-    }
-
-    /// The contact state of the last load step, as bytes: the active set
-    /// and the factor of the condensed interface system, so that
-    /// [`Model::set_contact_state`] continues bit for bit (in this model or
-    /// another one holding the same problem). Refused under the mortar
-    /// weighting.
-    pub fn contact_state(&self) -> Result<Vec<u8>> {
-        self.strip_only("contact states")?;
-        let history = self.session.as_ref().and_then(|s| s.history.as_ref());
-        let contact = self.problem.contact_epoch();
-        let restored = self.restored.as_ref().filter(|k| k.contact == contact);
-        let carried = self.carried.as_ref().filter(|k| k.contact == contact);
-        let state = match (history, restored.or(carried)) {
-            (_, Some(kept)) => kept.state.clone(),
-            (Some(h), None) => h.step_state(),
-            (None, None) => return Err(Error::state("no load step yet: no contact state")),
-        };
-        Ok(encode(&state, fingerprint_of(&self.contact_mesh()?)))
-    }
-
-    /// Continues the load history from `bytes` (from
-    /// [`Model::contact_state`]): the next [`Model::step`] starts from that
-    /// contact state. Refused, with the model unchanged, if the bytes are
-    /// not such a state, belong to another contact mesh, or are frictional
-    /// where no pair has friction. From a history of the same problem the
-    /// steps go on bit for bit; from one whose interface system differs
-    /// (the same contact mesh, another shape or stiffness) they start from
-    /// its active set and slip state with this problem's own interface
-    /// factor, also when the next step starts a new history (new materials,
-    /// options or prescribed DOFs). A change of the contact mesh or its
-    /// parts before the next step (the mesh, its boundary edges, the contact pairs or friction on/off) drops the state,
-    /// with a warning.
-    pub fn set_contact_state(&mut self, bytes: &[u8]) -> Result<()> {
-        self.strip_only("contact states")?;
-        let b = self.contact_mesh()?;
-        let state = decode(bytes, fingerprint_of(&b))?;
-        // Without a history to check it against, check it against the
-        // contact mesh: its parts are the elements', or twice as many when
-        // a pair has friction (and the step's law is frictionless).
-        let elements = b.len();
-        let frictional = self
-            .problem
-            .contact_pairs()
-            .iter()
-            .any(|p| p.friction > 0.0);
-        state.fits(elements, false).or_else(|e| {
-            if frictional {
-                state.fits(elements, true)
-            } else {
-                Err(e)
-            }
-        })?;
-        // A step's field waits on the history's contact state, which this
-        // replaces: recover it first, so that the results stay readable.
-        // (A field that can no longer be recovered stays as it was.)
-        if self.solution.as_ref().is_some_and(|s| s.u.get().is_none()) {
-            let _ = self.field();
-        }
-        // Into the current history, and kept for the next step, which may
-        // start another one (as in revert_step).
-        if let Some(history) = self.session.as_mut().and_then(|s| s.history.as_mut()) {
-            let before = history.step_state();
-            if let Err(e) = history.set_state(&state) {
-                history.set_state(&before)?;
-                return Err(e);
-            }
-        }
-        self.restored = Some(KeptState {
-            contact: self.problem.contact_epoch(),
-            state,
-        });
-        self.undo = None;
-        Ok(())
     }
 
     /// The field of the current solution, recovered now if it waits.
@@ -798,16 +483,11 @@ impl Model {
         // On the model's threads, like the step itself (a host that asked
         // for one thread gets no other).
         let recover = || -> Result<Vec<f64>> {
-            self.check_memory(session.interface_len())?;
+            self.check_memory(self.stepping.interface_len())?;
             let prescribed = self.problem.prescribed_vector()?;
             let f_ext = self.problem.load_vector()?;
-            match pending {
-                Pending::Strip(p) => {
-                    let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
-                    history::recover(session, &input, p)
-                }
-                Pending::Mortar(p) => self.mortar_field(session, p),
-            }
+            let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
+            self.stepping.recover(session, &input, pending)
         };
         let u = match &self.pool {
             Some(pool) => pool.install(recover)?,
@@ -953,17 +633,6 @@ impl Model {
         self.problem.contact_weighting()
     }
 
-    /// Refuses `what` under the mortar weighting, which serves
-    /// frictionless solves and load steps only.
-    fn strip_only(&self, what: &str) -> Result<()> {
-        match self.problem.contact_weighting() {
-            ContactWeighting::Strip => Ok(()),
-            ContactWeighting::Mortar => Err(Error::state(format!(
-                "{what} are not built for the mortar weighting yet: set the strip weighting"
-            ))),
-        }
-    }
-
     /// The contact state of a strip solve, or the error of a mortar one.
     fn strip_solution(&self) -> Result<&ContactSolution> {
         let c = self.contact_solution()?;
@@ -1043,7 +712,7 @@ impl Model {
     pub fn contact_nodal_pressures(&self) -> Result<Vec<f64>> {
         if let Some(state) = &self.contact_solution()?.mortar {
             let (mesh, pairs) = (self.problem.mesh_ref()?, self.problem.contact_pairs());
-            return solve::mortar::nodal_values(mesh, pairs, state, None, |s| s.pressure);
+            return state.nodal_values(mesh, pairs, None, |s| s.pressure);
         }
         self.interface_pressures(self.contact_elements()?)
     }
@@ -1064,7 +733,7 @@ impl Model {
         }
         if let Some(state) = &self.contact_solution()?.mortar {
             let (mesh, pairs) = (self.problem.mesh_ref()?, self.problem.contact_pairs());
-            return solve::mortar::nodal_values(mesh, pairs, state, Some(pair), |s| s.pressure);
+            return state.nodal_values(mesh, pairs, Some(pair), |s| s.pressure);
         }
         let elements: Vec<ContactElement> = self
             .contact_elements()?
@@ -1127,7 +796,7 @@ fn keep_matrix(
             .and_then(|c| c.friction.as_ref())
             .map_or(&[][..], |f| &f.next.loads[..]);
         if solve::restore(session, input, options, (&s.log, friction)).is_ok() {
-            session.set_system_of(Some(revision));
+            session.holds = crate::solve::session::Holds::Solve(revision);
         }
     }
 }
@@ -1147,7 +816,6 @@ fn input_of<'a>(
         f_ext,
         lambda: problem.tempering_lambda(),
         settings,
-        weighting: problem.contact_weighting(),
     })
 }
 
@@ -1157,6 +825,7 @@ fn session_of<'s>(
     slot: &'s mut Option<Session>,
     p: &Problem,
     timings: &mut Timings,
+    stepping: &mut stepping::Stepping,
 ) -> Result<&'s mut Session> {
     if slot
         .as_ref()
@@ -1165,6 +834,8 @@ fn session_of<'s>(
         *slot = None;
     }
     if slot.is_none() {
+        // A history's K₁ goes with the session it was factorised in.
+        stepping.session_dropped(None);
         let t0 = Instant::now();
         let prescribed = |g| p.is_prescribed(g);
         let s = Session::new(
@@ -1292,193 +963,4 @@ fn reaction_warning(problem: &Problem, solution: &Solution, u: &[f64], warnings:
              not by a huge E (docs/method.md §6.14)"
         ));
     }
-}
-
-/// What moves the problem's contact epoch ([`Problem::contact_epoch`]), in
-/// messages: the structure but the set of prescribed DOFs.
-const CONTACT_STRUCTURE: &str =
-    "the mesh, its boundary edges, the contact pairs or friction on/off";
-
-/// The warning of a step whose given (or reverted) contact state belonged
-/// to the contact mesh before a change of `problem`.
-fn dropped_warning(problem: &Problem) -> String {
-    format!(
-        "the contact state given to set_contact_state (or brought back by revert_step) belonged \
-         to the contact mesh before {} changed (a change of {CONTACT_STRUCTURE} remakes it): this \
-         step started afresh",
-        problem.contact_change()
-    )
-}
-
-/// The bytes of a contact state: a magic word, the fingerprint of B, the
-/// fingerprint of the interface system the history began with, a checksum
-/// of what follows, then the flags, the interface factor and the friction
-/// state, little-endian.
-const STATE_MAGIC: &[u8; 8] = b"TFEMCS02";
-/// The first version's magic word: the same bytes without the interface
-/// system's fingerprint. Still read, as a state whose factor is not
-/// restored (its system is not known).
-const STATE_MAGIC_1: &[u8; 8] = b"TFEMCS01";
-
-fn encode(state: &StepState, fingerprint: u64) -> Vec<u8> {
-    let n = state.warm.len();
-    let packed = &state.factor.packed;
-    let mut out = Vec::with_capacity(8 + 40 + 2 * n + 8 * packed.len() + 9);
-    out.extend_from_slice(STATE_MAGIC);
-    out.extend_from_slice(&fingerprint.to_le_bytes());
-    // 0: not known (read back as such).
-    out.extend_from_slice(&state.base.unwrap_or(0).to_le_bytes());
-    out.extend_from_slice(&[0; 8]);
-    out.extend_from_slice(&(n as u64).to_le_bytes());
-    out.extend_from_slice(&(packed.len() as u64).to_le_bytes());
-    out.extend(state.warm.iter().map(|&a| u8::from(a)));
-    out.extend(state.factor_active.iter().map(|&a| u8::from(a)));
-    out.push(u8::from(state.factor.factored));
-    out.extend_from_slice(&state.factor.min_eigenvalue.to_le_bytes());
-    for v in packed {
-        out.extend_from_slice(&v.to_le_bytes());
-    }
-    // Frictional states go on with their slip and loads; a frictionless
-    // state keeps its bytes as they were.
-    let f = &state.friction;
-    if !f.anchors.is_empty() {
-        out.extend_from_slice(&(f.anchors.len() as u64).to_le_bytes());
-        for v in f.anchors.iter().chain(&f.loads) {
-            out.extend_from_slice(&v.to_le_bytes());
-        }
-    }
-    let sum = checksum(&out);
-    out[24..32].copy_from_slice(&sum.to_le_bytes());
-    out
-}
-
-/// A checksum of a version-2 state's bytes but its magic word and the
-/// checksum itself (bytes 24..32): a state changed on its way back (a
-/// flipped bit, a truncation that still parses) is refused rather than
-/// restored. FNV-1a over 64-bit words, with the high bits folded back, so
-/// that a 268 MB state (an interface of 8192 unknowns) sums in a fraction
-/// of building it.
-fn checksum(bytes: &[u8]) -> u64 {
-    let mut h = 0xcbf2_9ce4_8422_2325u64;
-    let mut eat = |w: u64| {
-        h = (h ^ w).wrapping_mul(0x100_0000_01b3);
-        h ^= h >> 29;
-    };
-    let rest = bytes.get(32..).unwrap_or_default();
-    let words = bytes.get(8..24).unwrap_or_default().chunks_exact(8);
-    let chunks = rest.chunks_exact(8);
-    let tail = chunks.remainder();
-    for w in words.chain(chunks) {
-        eat(u64::from_le_bytes(w.try_into().expect("8 bytes")));
-    }
-    let mut last = [0u8; 8];
-    last[..tail.len()].copy_from_slice(tail);
-    eat(u64::from_le_bytes(last) ^ ((tail.len() as u64) << 56));
-    h
-}
-
-fn decode(bytes: &[u8], fingerprint: u64) -> Result<StepState> {
-    let bad = |why: &str| Error::argument(format!("not a contact state of this model: {why}"));
-    let mut at = 0usize;
-    let mut take = |n: usize| -> Result<&[u8]> {
-        let slice = bytes
-            .get(at..at.checked_add(n).ok_or_else(|| bad("too long"))?)
-            .ok_or_else(|| bad("it is cut short"))?;
-        at += n;
-        Ok(slice)
-    };
-    let word = |b: &[u8]| u64::from_le_bytes(b.try_into().expect("8 bytes"));
-    let magic = take(8)?;
-    let version = match magic {
-        m if m == STATE_MAGIC => 2,
-        m if m == STATE_MAGIC_1 => 1,
-        _ => return Err(bad("no magic word")),
-    };
-    if word(take(8)?) != fingerprint {
-        return Err(bad("it belongs to another contact mesh"));
-    }
-    // The checksum is checked once the bytes have parsed, so that a
-    // state cut short says so.
-    let (base, sum) = match version {
-        1 => (None, None),
-        _ => (
-            Some(word(take(8)?)).filter(|&b| b != 0),
-            Some(word(take(8)?)),
-        ),
-    };
-    let n = usize::try_from(word(take(8)?)).map_err(|_| bad("size"))?;
-    let m = usize::try_from(word(take(8)?)).map_err(|_| bad("size"))?;
-    let flags = |b: &[u8]| -> Result<Vec<bool>> {
-        b.iter()
-            .map(|&v| match v {
-                0 => Ok(false),
-                1 => Ok(true),
-                _ => Err(bad("a flag is neither 0 nor 1")),
-            })
-            .collect()
-    };
-    let warm = flags(take(n)?)?;
-    let factor_active = flags(take(n)?)?;
-    let factored = flags(take(1)?)?[0];
-    let min_eigenvalue = f64::from_le_bytes(take(8)?.try_into().expect("8 bytes"));
-    let packed_bytes = take(m.checked_mul(8).ok_or_else(|| bad("size"))?)?;
-    let packed: Vec<f64> = packed_bytes
-        .chunks_exact(8)
-        .map(|c| f64::from_le_bytes(c.try_into().expect("8 bytes")))
-        .collect();
-    let mut friction = crate::contact::FrictionState::default();
-    // Bytes read so far: the header, two flag sets, the factor.
-    let header = if version == 1 { 32 } else { 48 };
-    let read = header + 2 * n + 9 + 8 * m;
-    if read < bytes.len() {
-        let f = usize::try_from(word(take(8)?)).map_err(|_| bad("size"))?;
-        let values = take(f.checked_mul(16).ok_or_else(|| bad("size"))?)?;
-        let mut v = values
-            .chunks_exact(8)
-            .map(|c| f64::from_le_bytes(c.try_into().expect("8 bytes")));
-        friction.anchors = v.by_ref().take(f).collect();
-        friction.loads = v.collect();
-        // A NaN anchor is an open element's (docs/method.md §6.15).
-        let anchors_ok = friction.anchors.iter().all(|x| x.is_finite() || x.is_nan());
-        if !anchors_ok || !friction.loads.iter().all(|x| x.is_finite()) {
-            return Err(bad("a friction value is not finite"));
-        }
-    }
-    if at != bytes.len() {
-        return Err(bad("bytes left over"));
-    }
-    if sum.is_some_and(|sum| sum != checksum(bytes)) {
-        return Err(bad("its bytes were changed (checksum)"));
-    }
-    if !packed.iter().all(|v| v.is_finite()) || min_eigenvalue.is_nan() {
-        return Err(bad("a factor value is not finite"));
-    }
-    Ok(StepState {
-        warm,
-        factor_active,
-        factor: crate::solve::condensed::FactorSnapshot {
-            packed,
-            factored,
-            min_eigenvalue,
-        },
-        friction,
-        base,
-    })
-}
-
-/// A fingerprint of the contact mesh `b` (its elements' nodes and pairs),
-/// which a contact state names so that it is restored into its own.
-fn fingerprint_of(b: &[ContactElement]) -> u64 {
-    let mut h = 0xcbf2_9ce4_8422_2325u64;
-    let mut eat = |v: u64| {
-        for byte in v.to_le_bytes() {
-            h = (h ^ byte as u64).wrapping_mul(0x100_0000_01b3);
-        }
-    };
-    eat(b.len() as u64);
-    for e in b {
-        e.nodes.iter().for_each(|&n| eat(n as u64));
-        eat(e.pair as u64);
-    }
-    h
 }

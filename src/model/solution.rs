@@ -3,11 +3,11 @@
 //! stresses, reactions — is computed from them when asked for.
 
 use super::problem::Problem;
+use crate::contact::mortar_set::MortarState;
 use crate::contact::{
     ContactElement, ContactOptions, ElementLaw, FrictionOutcome, contact_stiffness, law_geometry,
     linearised_opening, shear_vector,
 };
-use crate::solve::mortar::MortarState;
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
 
@@ -176,7 +176,7 @@ impl Solution {
         })?;
         if let Some(state) = self.contact.as_ref().and_then(|c| c.mortar.as_ref()) {
             // The penalties' internal forces −p_i c_i on prescribed DOFs.
-            crate::solve::mortar::forces(state, |_, g, f| {
+            state.forces(|_, g, f| {
                 if fixed[g] {
                     r[g] -= f;
                     bound[g] += f64::EPSILON * f.abs();
@@ -259,7 +259,7 @@ impl Solution {
         let c = self.contact_state()?;
         let mesh = problem.mesh_ref()?;
         if let Some(state) = &c.mortar {
-            crate::solve::mortar::forces(state, add);
+            state.forces(add);
             return Ok(());
         }
         for (k, el) in c.elements.iter().enumerate() {
@@ -301,7 +301,7 @@ impl Solution {
         let mesh = problem.mesh_ref()?;
         if let Some(state) = &c.mortar {
             let pairs = problem.contact_pairs();
-            return crate::solve::mortar::nodal_values(mesh, pairs, state, None, |s| s.gap);
+            return state.nodal_values(mesh, pairs, None, |s| s.gap);
         }
         let mut gap = vec![f64::INFINITY; mesh.nodes().len()];
         for el in &c.elements {

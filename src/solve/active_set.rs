@@ -19,9 +19,9 @@ use super::diagnostics::add_energy;
 use super::linear::{Structure, check_finite, factor_and_solve};
 use super::report::{IterationRecord, SolveInfo, Timings};
 use super::system::AssembledSystem;
-use crate::contact::{ActiveSet, ContactOptions, ContactSet, Verdict};
+use crate::contact::constraints::Constraints;
+use crate::contact::{ActiveSet, ContactOptions, Verdict};
 use crate::error::{Error, Result};
-use crate::fem::assembly::{DofMap, NOT_FREE};
 use crate::fem::element_loop::ElementLoop;
 use crate::linalg::Cholesky;
 use crate::linalg::refine::{Budget, norm_inf, refine, refine_by};
@@ -32,10 +32,8 @@ pub(crate) struct LoopInput<'a, 's> {
     pub at: Structure<'a>,
     /// The body elements (for the energy of a near-null mode).
     pub elements: &'a ElementLoop<'a>,
-    /// The elements of B with their laws and the inversion test.
-    pub set: &'a ContactSet<'s>,
-    /// Prescribed displacements, a global vector.
-    pub prescribed: &'a [f64],
+    /// The constraints the loop switches, with their law.
+    pub set: &'a Constraints<'s>,
     /// The interface unknowns to condense on, or `None` to refactorise at
     /// every iteration (the analysis numbered them last).
     pub interface: Option<Vec<usize>>,
@@ -227,15 +225,20 @@ pub(crate) const RECOVERED: f64 = 1e-12;
 const SLIP_PASSES: usize = 4;
 
 impl<'a, 's> ActiveSetLoop<'a, 's> {
-    /// A loop that starts from the set's initial active elements;
-    /// `system` holds the bodies' part, `chol` an analysis of its pattern.
+    /// A loop that starts from the constraints' initial set, or from the
+    /// flags and friction load factors `start`; `system` holds the bodies'
+    /// part, `chol` an analysis of its pattern.
     pub fn new(
         input: LoopInput<'a, 's>,
         (chol, system): (&'a mut Cholesky, &'a mut AssembledSystem),
         (timings, info): (&'a mut Timings, &'a mut SolveInfo),
+        start: Option<(Vec<bool>, Vec<f64>)>,
     ) -> ActiveSetLoop<'a, 's> {
-        let initial = input.set.initial_active();
-        let friction = input.set.stick_loads(&initial);
+        let (initial, friction) = start.unwrap_or_else(|| {
+            let initial = input.set.initial_active();
+            let friction = input.set.stick_loads(&initial);
+            (initial, friction)
+        });
         ActiveSetLoop {
             input,
             chol,
@@ -406,11 +409,10 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         let active = self.set.active();
         let sign = |k: usize| if active[k] { 1.0 } else { -1.0 };
         let element = |k: usize| {
-            let matrix = &set.stiffness(k).k;
             (
                 ElementMatrix {
                     unknowns: set.unknowns(k),
-                    matrix,
+                    matrix: set.matrix(k),
                 },
                 sign(k),
             )
@@ -429,9 +431,8 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         state.factor_active.clear();
         state.factor_active.extend_from_slice(active);
         if factored {
-            let at = (self.input.at.dofs, self.input.prescribed);
             let (ui, coupled) =
-                interface_solve(set, at, state, (active, &relative), &mut self.friction)?;
+                interface_solve(set, state, (active, &relative), &mut self.friction)?;
             self.coupled = coupled;
             self.iterate = Iterate::Condensed(ui);
         } else {
@@ -448,19 +449,15 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         let input = &self.input;
         let (at, set) = (input.at, input.set);
         let t0 = Instant::now();
-        let structure = (at.dofs, at.pattern);
         let active = self.set.active();
-        self.system
-            .set_contact(active, set, structure, input.prescribed);
+        self.system.set_contact(active, set, at.pattern);
         self.system.set_friction_loads(set, &self.friction);
         self.coupled = false;
         self.timings.assembly += t0.elapsed().as_secs_f64();
         let energy = |r: &[f64]| {
             let mut acc = body_energy(input.elements, r);
-            for (k, el) in set.elements().iter().enumerate() {
-                if active[k] {
-                    add_energy(&mut acc, &set.stiffness(k).k, r, &el.nodes);
-                }
+            for k in (0..set.parts()).filter(|&k| active[k]) {
+                set.add_energy(k, &mut acc, r);
             }
             acc
         };
@@ -511,10 +508,8 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
     /// The contact law's verdict on the current iterate
     /// ([`ContactSet::verdict`]).
     fn verdict(&self) -> Result<Verdict> {
-        let at = (self.input.at.dofs, self.input.prescribed);
-        let set = self.input.set;
         let current = (self.set.active(), &self.friction[..]);
-        set.verdict(current, |k| element_values(set, at, k, |i| self.value(i)))
+        self.input.set.verdict(current, |i| self.value(i))
     }
 
     /// The settled solution over all unknowns, refined against the final
@@ -570,13 +565,9 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
     /// pressures of the field `x` (over the unknowns).
     fn slip_loads_of(&self, x: &[f64]) -> Vec<(usize, f64)> {
         let set = self.input.set;
-        let at = (self.input.at.dofs, self.input.prescribed);
         set.slipping(self.set.active())
             .into_iter()
-            .map(|k| {
-                let ue = element_values(set, at, k, |i| x[i]);
-                (k, set.slip_load(k, &ue, self.friction[k]))
-            })
+            .map(|k| (k, set.slip_load(k, |i| x[i], self.friction[k])))
             .collect()
     }
 
@@ -622,10 +613,8 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         } = self.condensed.take().expect("condensed");
         let input = &self.input;
         let t0 = Instant::now();
-        let structure = (input.at.dofs, input.at.pattern);
         let active = self.set.active();
-        self.system
-            .set_contact(active, input.set, structure, input.prescribed);
+        self.system.set_contact(active, input.set, input.at.pattern);
         self.system.set_friction_loads(input.set, &self.friction);
         self.timings.assembly += t0.elapsed().as_secs_f64();
         let t0 = Instant::now();
@@ -685,8 +674,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
 /// are explicit. Gives u_I, and whether the slip loads were implicit (or
 /// there were none).
 fn interface_solve(
-    set: &ContactSet<'_>,
-    (dofs, prescribed): (&DofMap, &[f64]),
+    set: &Constraints<'_>,
     state: &mut CondensedState,
     (active, relative): (&[bool], &[usize]),
     friction: &mut [f64],
@@ -695,30 +683,22 @@ fn interface_solve(
     let sign = |k: usize| if active[k] { 1.0 } else { -1.0 };
     let mut g = vec![0.0; sys.len()];
     for &k in relative {
-        for a in 0..6 {
-            if let Some(p) = set.unknowns(k)[a].and_then(|i| sys.position(i)) {
-                g[p] += sign(k) * set.load(k)[a];
+        for (u, f) in set.unknowns(k).iter().zip(set.load(k)) {
+            if let Some(p) = u.and_then(|i| sys.position(i)) {
+                g[p] += sign(k) * f;
             }
         }
     }
     let y = sys.gather(&state.x1);
     let slipping = set.slipping(active);
     if !slipping.is_empty() {
-        let (coupling, loads) = slip_coupling(
-            set,
-            (dofs, prescribed),
-            sys,
-            (&state.x1, friction),
-            &slipping,
-        );
+        let (coupling, loads) = slip_coupling(set, sys, (&state.x1, friction), &slipping);
         let mut g = g.clone();
         add_friction_loads(set, sys, (&loads, &state.friction_ref), &mut g);
         if let Some(ui) = sys.solve_with(&y, &g, &coupling)? {
             for &k in &slipping {
-                let ue = element_values(set, (dofs, prescribed), k, |i| {
-                    sys.position(i).map_or(state.x1[i], |p| ui[p])
-                });
-                friction[k] = set.slip_load(k, &ue, friction[k]);
+                let value = |i: usize| sys.position(i).map_or(state.x1[i], |p| ui[p]);
+                friction[k] = set.slip_load(k, value, friction[k]);
             }
             return Ok((ui, true));
         }
@@ -727,28 +707,10 @@ fn interface_solve(
     Ok((sys.solve(&y, &g)?, slipping.is_empty()))
 }
 
-/// The displacements of element `k` of `set`: prescribed values where its
-/// DOFs have no unknown, `value(i)` of unknown i elsewhere.
-fn element_values(
-    set: &ContactSet<'_>,
-    (dofs, prescribed): (&DofMap, &[f64]),
-    k: usize,
-    value: impl Fn(usize) -> f64,
-) -> [f64; 6] {
-    let tri = &set.elements()[k].nodes;
-    std::array::from_fn(|a| {
-        let g = 2 * tri[a / 2] + a % 2;
-        match dofs.free(g) {
-            NOT_FREE => prescribed[g],
-            i => value(i),
-        }
-    })
-}
-
 /// Adds the friction loads Σ_e (c_e − c_ref,e) b_t,e to the interface
 /// right-hand side `g` (they are on the interface, where b_t is).
 fn add_friction_loads(
-    set: &ContactSet<'_>,
+    set: &Constraints<'_>,
     sys: &Condensed,
     (c, c_ref): (&[f64], &[f64]),
     g: &mut [f64],
@@ -769,8 +731,7 @@ fn add_friction_loads(
 /// U Vᵀ and the friction load factors with that constant part in place of
 /// the slipping elements' c_k (the others unchanged).
 fn slip_coupling(
-    set: &ContactSet<'_>,
-    (dofs, prescribed): (&DofMap, &[f64]),
+    set: &Constraints<'_>,
     sys: &Condensed,
     (x1, c): (&[f64], &[f64]),
     slipping: &[usize],
@@ -780,27 +741,20 @@ fn slip_coupling(
     for &k in slipping {
         let (mu, bt, gradient) = set.slip_coupling(k).expect("a frictional set");
         let s = c[k].signum();
-        let tri = &set.elements()[k].nodes;
         let (mut u, mut v) = (Vec::with_capacity(6), Vec::with_capacity(6));
-        let rest: [f64; 6] = std::array::from_fn(|a| {
-            let g = 2 * tri[a / 2] + a % 2;
-            match dofs.free(g) {
-                NOT_FREE => prescribed[g],
-                i => match sys.position(i) {
-                    Some(p) => {
-                        if bt[a] != 0.0 {
-                            u.push((p, -s * mu * bt[a]));
-                        }
-                        if gradient[a] != 0.0 {
-                            v.push((p, gradient[a]));
-                        }
-                        0.0
-                    }
-                    None => x1[i],
-                },
+        // Off the interface: prescribed, or x₁'s.
+        let rest = set.element_values(k, |i| sys.position(i).map_or(x1[i], |_| 0.0));
+        for (a, unknown) in set.unknowns(k).iter().enumerate() {
+            if let Some(p) = unknown.and_then(|i| sys.position(i)) {
+                if bt[a] != 0.0 {
+                    u.push((p, -s * mu * bt[a]));
+                }
+                if gradient[a] != 0.0 {
+                    v.push((p, gradient[a]));
+                }
             }
-        });
-        loads[k] = s * mu * set.pressure(k, &rest);
+        }
+        loads[k] = s * mu * set.slip_pressure(k, &rest);
         change.u.push(u);
         change.v.push(v);
     }
@@ -813,8 +767,8 @@ fn slip_coupling(
 pub(crate) struct Target<'t, 's> {
     /// Mesh, unknowns and pattern.
     pub at: Structure<'t>,
-    /// The elements of B.
-    pub set: &'t ContactSet<'s>,
+    /// The constraints.
+    pub set: &'t Constraints<'s>,
     /// The final set.
     pub active: &'t [bool],
     /// y = K v with the matrix of the final set.
@@ -886,7 +840,7 @@ pub(crate) fn refine_expanded(
 /// The contact elements whose state differs between K₁ (the initial set)
 /// and the final set.
 struct Changes<'c, 's> {
-    set: &'c ContactSet<'s>,
+    set: &'c Constraints<'s>,
     active: &'c [bool],
     initial: &'c [bool],
     n: usize,
@@ -921,12 +875,13 @@ impl<'c, 's> Changes<'c, 's> {
         let mut p = vec![0.0; self.n];
         for k in differing(self.active, self.initial) {
             let removed = if self.initial[k] { 1.0 } else { -1.0 };
-            let (unknowns, stiffness) = (set.unknowns(k), &set.stiffness(k).k);
-            for a in 0..6 {
+            let (unknowns, stiffness) = (set.unknowns(k), set.matrix(k));
+            let n = unknowns.len();
+            for a in 0..n {
                 let Some(i) = unknowns[a] else { continue };
                 let mut r = if with_load { -set.load(k)[a] } else { 0.0 };
-                for b in 0..6 {
-                    let c = stiffness[a * 6 + b];
+                for b in 0..n {
+                    let c = stiffness[a * n + b];
                     // (Only interface unknowns have coefficients.)
                     if let (Some(j), true) = (unknowns[b], c != 0.0) {
                         r += c * v(j);
@@ -992,7 +947,8 @@ mod tests {
             test: InversionTest::Linearised,
             ..Default::default()
         };
-        let set = contact_set(p, (contact, dofs), &prescribed, &options);
+        let set = contact_set(p, (contact.strip(), dofs), &prescribed, &options);
+        let set = Constraints::new(set, Default::default(), &prescribed);
         let interface = set.interface_unknowns();
         let want = Wanted {
             last: if condense { &interface } else { &[] },
@@ -1017,11 +973,10 @@ mod tests {
             },
             elements: &elements,
             set: &set,
-            prescribed: &prescribed,
             interface: condense.then(|| interface.clone()),
             options,
         };
-        let mut lp = ActiveSetLoop::new(input, (chol, system), (&mut timings, &mut info));
+        let mut lp = ActiveSetLoop::new(input, (chol, system), (&mut timings, &mut info), None);
         // The set switched to `active` (when given) is recorded as the
         // verdict of an iteration, as the loop would.
         match active {

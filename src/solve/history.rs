@@ -2,22 +2,33 @@
 //! and prescribed displacements change from step to step while the
 //! stiffness does not. One factorisation serves the whole history.
 //!
-//! The first step factorises K₁ — the bodies plus the contact set a
+//! The first step factorises K₁ — the bodies plus the constraints a
 //! contact solve starts from — with the interface unknowns numbered last,
 //! and keeps its condensed interface system (Ŝ₁, a dense factor) and two
 //! solutions of K₁: x_load for the loads and prescribed displacements at
 //! factor 1 (with K₁'s contact loads less their gap part), and x_gap for
 //! the loads of K₁'s initial gaps. Everything a step needs is linear in its
 //! load factor t: K₁'s solution is x₁(t) = t·x_load + x_gap, and each
-//! contact element's load is t·(its load at 1) + (1 − t)·(its gap load).
-//! A step is then the condensed active-set loop alone, warm-started from
-//! the set of the step before: dense interface work, no sparse solve. New
+//! constraint's load is t·(its load at 1) + (1 − t)·(its gap load). A
+//! step is then the condensed active-set loop alone, warm-started from the
+//! set of the step before: dense interface work, no sparse solve. New
 //! loads (a non-proportional history) cost one sparse solve (x_load anew).
-//! The whole field of a step is recovered when asked for
-//! ([`recover`]): one sparse solve, or, where K₁'s factor is too poor an
-//! inverse of the step's matrix for that to reach working accuracy, a
-//! factorisation of the step's matrix itself.
+//! The whole field of a step is recovered when asked for ([`History::recover`]):
+//! one sparse solve, or, where K₁'s factor is too poor an inverse of the
+//! step's matrix for that to reach working accuracy, a factorisation of the
+//! step's matrix itself.
+//!
+//! Where the interface is not condensed (the options ask for `refactorize`,
+//! the interface is too large to hold densely, or it couples no free
+//! unknown), each step is a contact solve of its scaled loads started from
+//! the step before's state, which the history carries alike.
+//!
+//! A history lives outside the session it factorises into
+//! (`model::stepping` owns it): a call that overwrites the session's
+//! factor or system leaves it [`History::intact`] no more, and
+//! [`History::rebuild`] makes K₁ again, to the bit, from what it kept.
 
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Instant;
 
 use super::active_set::{
@@ -29,10 +40,10 @@ use super::diagnostics::singular_error;
 use super::linear::{Structure, check_finite, factor_and_solve};
 use super::memory;
 use super::report::{IterationRecord, SolveInfo, Timings};
-use super::session::{Analysis, Session, Settings, Wanted, analyse, factorisation};
-use super::system::AssembledSystem;
-use super::{Field, Input, Outcome, contact_outcome, contact_set, finite_statistics};
-use crate::contact::{ContactOptions, ContactSet, FrictionState};
+use super::session::{Holds, Session, Settings, Wanted, analyse, factorisation};
+use super::{Field, Input, Outcome, Start, constraints, contact_outcome, finite_statistics};
+use crate::contact::constraints::Constraints;
+use crate::contact::{ContactOptions, FrictionState};
 use crate::error::{Error, Result, Status, preflight, reserved};
 use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
 use crate::fem::body;
@@ -50,11 +61,6 @@ pub(crate) struct Key {
 }
 
 impl Key {
-    /// The contact options it was made for (the iteration cap left out).
-    pub fn options(&self) -> &ContactOptions {
-        &self.options
-    }
-
     /// The key of a problem of stiffness epoch `stiffness` under `options`.
     pub fn new(stiffness: u64, options: &ContactOptions) -> Key {
         Key {
@@ -75,44 +81,47 @@ pub(crate) struct StepState {
     pub warm: Vec<bool>,
     /// The set the interface factor represents.
     pub factor_active: Vec<bool>,
-    /// The interface factor.
+    /// The interface factor (empty where the interface is not condensed).
     pub factor: FactorSnapshot,
     /// The slip and friction loads of the last step (empty when
     /// frictionless; docs/method.md §6.15).
     pub friction: FrictionState,
     /// The fingerprint of the interface system the history began with
     /// ([`History::set_state`] restores `factor` only into the same one);
-    /// `None` when not known (a state saved by an older version).
+    /// `None` when not known (a state saved by an older version, or of a
+    /// history that does not condense).
     pub base: Option<u64>,
 }
 
 impl StepState {
-    /// Whether this state can continue a history of `elements` contact
-    /// elements, frictional (two parts each, with their slip and loads)
-    /// or not.
-    pub fn fits(&self, elements: usize, frictional: bool) -> Result<()> {
-        let parts = if frictional { 2 * elements } else { elements };
+    /// Whether this state can continue a history of constraints with
+    /// `parts` parts, of which `frictional` are elements with friction
+    /// (a normal and a stick part each, with their slip and loads).
+    pub fn fits(&self, parts: usize, frictional: usize) -> Result<()> {
         if self.warm.len() != parts || self.factor_active.len() != parts {
+            // Parts without friction, and with friction (a stick part more
+            // per element of B).
+            let plain = parts - frictional;
             let kind = |n: usize| match n {
-                _ if n == elements => "frictionless",
-                _ if n == 2 * elements => "frictional",
-                _ => "of another contact mesh",
+                _ if n == plain => "frictionless",
+                _ if n == 2 * plain || n == parts && frictional > 0 => "frictional",
+                _ => "of other contact constraints",
             };
             return Err(Error::argument(format!(
-                "the contact state is of {} contact parts ({}), this step's contact set has \
-                 {parts} ({}): its friction or contact law differ from the state's history",
+                "the contact state is of {} contact parts ({}), this step's contact constraints \
+                 have {parts} ({}): its friction, contact law or weighting differ from the \
+                 state's history",
                 self.warm.len(),
                 kind(self.warm.len()),
                 kind(parts)
             )));
         }
         let f = &self.friction;
-        let frictional_elements = if frictional { elements } else { 0 };
         let sizes = [f.anchors.len(), f.loads.len()];
-        if sizes.iter().any(|&m| m != 0 && m != frictional_elements) || sizes[0] != sizes[1] {
+        if sizes.iter().any(|&m| m != 0 && m != frictional) || sizes[0] != sizes[1] {
             return Err(Error::argument(format!(
-                "the contact state's friction data ({} / {} values) do not fit \
-                 {frictional_elements} frictional contact elements",
+                "the contact state's friction data ({} / {} values) do not fit {frictional} \
+                 frictional contact elements",
                 sizes[0], sizes[1]
             )));
         }
@@ -135,9 +144,30 @@ pub(crate) struct Pending {
     pub friction: Vec<f64>,
 }
 
-/// The state of a load history (module documentation).
+/// The numbers of histories, so that the session knows whose K₁ it holds.
+static HISTORIES: AtomicU64 = AtomicU64::new(1);
+
+/// A load history (module documentation).
 pub(crate) struct History {
     key: Key,
+    /// Its number ([`Holds::History`]).
+    id: u64,
+    /// The active set of the last step.
+    warm: Vec<bool>,
+    /// The slip and friction loads of the last step (empty: frictionless
+    /// or none yet).
+    friction: FrictionState,
+    /// The number of parts of its constraints.
+    parts: usize,
+    /// The number of frictional elements of its constraints (each has a
+    /// normal and a stick part).
+    frictional: usize,
+    /// K₁ and its condensed interface, where the interface is condensed.
+    k1: Option<K1>,
+}
+
+/// K₁ of a history that condenses its interface.
+struct K1 {
     /// The problem revision whose loads `x_load` solves.
     loads: u64,
     /// K₁'s condensed state (lent to the loop during a step).
@@ -146,32 +176,25 @@ pub(crate) struct History {
     x_gap: Vec<f64>,
     /// The bodies' right-hand side at factor 1.
     rhs_body: Vec<f64>,
-    /// The active set of the last step.
-    warm: Vec<bool>,
-    /// The slip and friction loads of the last step (empty: frictionless
-    /// or none yet).
-    friction: FrictionState,
-    /// Whether the contact set is frictional (two parts per element).
-    frictional: bool,
     /// The statistics of K₁'s solve (the residual a step reports).
     first: SolveInfo,
-    /// Whether x_load was solved apart for new loads ([`new_loads`]) rather
-    /// than with K₁'s first solve: a rebuilt history redoes the same.
+    /// Whether x_load was solved apart for new loads ([`History::new_loads`])
+    /// rather than with K₁'s first solve: a rebuild redoes the same.
     loads_apart: bool,
     /// The fingerprint of K₁'s interface factor
     /// ([`Condensed::factor_fingerprint`]): what a saved state's factor
     /// must have grown from to be restored.
     base: u64,
+    /// ‖K₁‖∞, which bounds a step's recovery ([`check_size`]).
+    norm: f64,
+    /// The history's state while `state` is lent to a step's loop (a loop
+    /// that refactorises does not give it back: K₁ is then rebuilt).
+    kept: Option<StepState>,
 }
 
-impl History {
+impl K1 {
     fn condensed(&self) -> &CondensedState {
         self.state.as_ref().expect("the condensed state is back")
-    }
-
-    /// The condensed unknowns (0 while its state is out).
-    pub fn interface_len(&self) -> usize {
-        self.state.as_ref().map_or(0, |c| c.system.len())
     }
 
     /// K₁'s solution at load factor `t`: t·x_load + x_gap.
@@ -182,43 +205,116 @@ impl History {
         }
         x1
     }
+}
+
+/// What a step gives: its outcome, the contact state before it (what a
+/// revert brings back), and whether K₁ was lost on the way (the loop
+/// solved whole: the history ends with this step).
+pub(crate) struct Stepped {
+    /// The step's outcome.
+    pub outcome: Outcome,
+    /// The history's state before the step.
+    pub before: StepState,
+    /// Whether the history ended with this step.
+    pub ended: bool,
+}
+
+impl History {
+    /// Begins a history for `key` on the loads of `input` (problem revision
+    /// `revision`), from the contact state `restored` if given: K₁
+    /// assembled and factorised (the only factorisation) with its condensed
+    /// interface, or, where the interface is not condensed, nothing yet.
+    pub fn begin(
+        session: &mut Session,
+        input: &Input<'_>,
+        (key, revision): (Key, u64),
+        restored: Option<&StepState>,
+        timings: &mut Timings,
+    ) -> Result<(History, Vec<String>)> {
+        let mut warnings = Vec::new();
+        let (k1, sizes) = begin_k1(session, input, (key, revision), timings, &mut warnings)?;
+        let id = HISTORIES.fetch_add(1, Ordering::Relaxed);
+        let mut history = History {
+            key,
+            id,
+            warm: k1
+                .as_ref()
+                .map_or_else(Vec::new, |k| k.condensed().reference.clone()),
+            friction: FrictionState::default(),
+            parts: sizes.parts,
+            frictional: sizes.frictional,
+            k1,
+        };
+        if history.k1.is_some() {
+            session.holds = Holds::History(id);
+        }
+        if let Some(state) = restored {
+            history.set_state(state)?;
+        }
+        Ok((history, warnings))
+    }
+
+    /// Whether the session still holds this history's K₁ (a history that
+    /// does not condense needs nothing of it).
+    pub fn intact(&self, session: &Session) -> bool {
+        self.k1.is_none() || session.holds == Holds::History(self.id)
+    }
+
+    /// Whether a step under `key` continues this history.
+    pub fn continues(&self, key: &Key) -> bool {
+        self.key == *key
+    }
+
+    /// The key it was made for.
+    pub fn key(&self) -> &Key {
+        &self.key
+    }
+
+    /// The condensed unknowns (0 without a condensed interface).
+    pub fn interface_len(&self) -> usize {
+        let state = self.k1.as_ref().and_then(|k| k.state.as_ref());
+        state.map_or(0, |c| c.system.len())
+    }
+
+    /// The factorisations its beginning made.
+    pub fn factorizations(&self) -> usize {
+        self.k1.as_ref().map_or(0, |k| k.first.factorizations)
+    }
 
     /// The contact state to continue from ([`History::set_state`]).
-    pub fn step_state(&self) -> StepState {
-        let state = self.condensed();
+    pub fn state(&self) -> StepState {
+        if let Some(kept) = self.k1.as_ref().and_then(|k| k.kept.as_ref()) {
+            return kept.clone();
+        }
+        let condensed = self.k1.as_ref().map(|k| (k.condensed(), k.base));
         StepState {
             warm: self.warm.clone(),
-            factor_active: state.factor_active.clone(),
-            factor: state.system.factor_snapshot(),
+            factor_active: condensed
+                .map_or_else(|| self.warm.clone(), |(c, _)| c.factor_active.clone()),
+            factor: condensed
+                .map_or_else(FactorSnapshot::default, |(c, _)| c.system.factor_snapshot()),
             friction: self.friction.clone(),
-            base: Some(self.base),
+            base: condensed.map(|(_, base)| base),
         }
     }
 
-    /// What rebuilds this history in `state` ([`rebuild`]).
-    fn kept(&self, state: StepState) -> Box<Kept> {
-        Box::new(Kept {
-            key: self.key,
-            state,
-            loads_apart: self.loads_apart,
-            first: self.first,
-        })
+    /// Whether it carries a slip state (a frictional history).
+    pub fn is_frictional(&self) -> bool {
+        self.frictional > 0
     }
 
-    /// Continues from `state` (from [`History::step_state`]): from its
-    /// active set and friction state, and, when it comes from a history
-    /// of this very interface system (the same fingerprint), from its
-    /// interface factor too, so that the steps go on bit for bit. A
-    /// factor grown from another system (another geometry, stiffness or
-    /// contact modulus under the same contact mesh) would solve the wrong
-    /// interface problem: this history's own factor stays, and the loop
-    /// updates it to the state's set.
+    /// Continues from `state` (from [`History::state`]): from its active set
+    /// and friction state, and, when it comes from a history of this very
+    /// interface system (the same fingerprint), from its interface factor
+    /// too, so that the steps go on bit for bit. A factor grown from
+    /// another system (another geometry, stiffness or contact modulus
+    /// under the same constraints) would solve the wrong interface
+    /// problem: this history's own factor stays, and the loop updates it to
+    /// the state's set.
     pub fn set_state(&mut self, state: &StepState) -> Result<()> {
-        let parts = self.warm.len();
-        let elements = if self.frictional { parts / 2 } else { parts };
-        state.fits(elements, self.frictional)?;
-        if state.base == Some(self.base) {
-            let condensed = self.state.as_mut().expect("the condensed state is back");
+        state.fits(self.parts, self.frictional)?;
+        if let Some(k1) = self.k1.as_mut().filter(|k| state.base == Some(k.base)) {
+            let condensed = k1.state.as_mut().expect("the condensed state is back");
             condensed.system.restore_factor(&state.factor)?;
             condensed.factor_active.clone_from(&state.factor_active);
         }
@@ -226,106 +322,387 @@ impl History {
         self.friction.clone_from(&state.friction);
         Ok(())
     }
-}
 
-/// What rebuilds a history destroyed by a failed call ([`rebuild`]): its
-/// key, its contact state, and whether its x_load is solved apart (for new
-/// loads) rather than with K₁'s first solve.
-#[derive(Clone)]
-pub(crate) struct Kept {
-    key: Key,
-    state: StepState,
-    loads_apart: bool,
-    /// The statistics of the first solve (its residual is every step's).
-    first: SolveInfo,
-}
-
-/// A history taken out of the session before a call that may replace
-/// it, to be put back if the call fails ([`restore`]).
-pub(crate) enum Saved {
-    /// Of the current stiffness: its sparse factor will be overwritten, so
-    /// it is rebuilt from what it was.
-    Rebuild(Box<Kept>),
-    /// Of an older stiffness: no step continues it and nothing uses its
-    /// sparse factor any more, but its contact state is still the
-    /// model's; it goes back as it is.
-    Stale(Box<History>),
-}
-
-/// Takes the session's history out before a call at problem revision
-/// `revision` and stiffness epoch `stiffness` that replaces or ends it.
-pub(crate) fn save(session: &mut Session, revision: u64, stiffness: u64) -> Option<Saved> {
-    let h = session.history.take()?;
-    Some(match h.key.stiffness == stiffness {
-        true => Saved::Rebuild(Box::new(Kept {
-            key: h.key,
-            state: h.step_state(),
-            loads_apart: h.loads_apart || h.loads != revision,
-            first: h.first,
-        })),
-        false => Saved::Stale(Box::new(h)),
-    })
-}
-
-/// Puts back, after a failed call, the history [`save`] took out.
-pub(crate) fn restore(session: &mut Session, input: &Input<'_>, revision: u64, saved: Saved) {
-    match saved {
-        Saved::Rebuild(kept) => rebuild(session, input, revision, &kept),
-        Saved::Stale(history) => session.history = Some(*history),
-    }
-}
-
-/// One load step at factor `t` of the loads and prescribed displacements
-/// of `input` (revision `revision` of a problem of stiffness epoch
-/// `key.stiffness`), warm-started from the last step's set: starts a
-/// history when there is none for `key`. On error the history is as it
-/// was. A step whose condensed system turns out singular is solved whole
-/// (and the history ends).
-pub(crate) fn step(
-    session: &mut Session,
-    input: &Input<'_>,
-    (options, stiffness, revision): (&ContactOptions, u64, u64),
-    (t, restored): (f64, Option<&StepState>),
-    timings: &mut Timings,
-) -> Result<(Outcome, StepState)> {
-    let key = Key::new(stiffness, options);
-    check_load_factor(t)?;
-    super::ensure_unknowns(&session.dofs)?;
-    let mut warnings = Vec::new();
-    let current = session.history.as_ref().is_some_and(|h| h.key == key);
-    // What a failed step must put back: the history it continues or
-    // replaces (a pending earlier step is recovered from it, and the next
-    // step continues it), and the loads it held.
-    let (mut factorizations, mut replaced, mut old_loads) = (0, None, None);
-    if !current {
-        let at = (key, revision, restored);
-        (factorizations, replaced) = start(session, input, at, timings, &mut warnings)?;
-    } else if session
-        .history
-        .as_ref()
-        .is_some_and(|h| h.loads != revision)
-    {
-        old_loads = Some(new_loads(session, input, revision, timings)?);
-    }
-    let stepped = step_in_history(session, input, (key, options), t, timings, warnings);
-    let (mut outcome, before) = match stepped {
-        Ok(done) => done,
-        Err((e, lost)) => {
-            let undo = Undo {
-                current,
-                replaced,
-                old_loads,
-                lost,
-            };
-            put_back(session, input, revision, undo);
-            return Err(e);
+    /// Makes K₁ again in `session` after a call overwrote it: the same
+    /// assembly, factorisation and solves, then this history's own state,
+    /// so that what follows is bit for bit what would have followed without
+    /// that call. A rebuild that fails leaves the history unusable (its
+    /// steps then fail, and the next one begins another).
+    pub fn rebuild(&mut self, session: &mut Session, input: &Input<'_>) -> Result<()> {
+        let Some(old) = self.k1.as_ref() else {
+            return Ok(());
+        };
+        let (state, loads, loads_apart, first) =
+            (self.state(), old.loads, old.loads_apart, old.first);
+        let (mut timings, mut warnings) = (Timings::default(), Vec::new());
+        let at = (self.key, loads);
+        let (k1, _) = begin_k1(session, input, at, &mut timings, &mut warnings)?;
+        let Some(mut k1) = k1 else {
+            return Err(Error::state(
+                "the load history's interface is no longer condensed",
+            ));
+        };
+        k1.first = first;
+        self.k1 = Some(k1);
+        session.holds = Holds::History(self.id);
+        if loads_apart {
+            self.new_loads(session, input, loads, &mut timings)?;
         }
-    };
-    outcome.info.factorizations += factorizations;
-    if let Some(c) = outcome.contact.as_mut() {
-        c.report.info.factorizations += factorizations;
+        self.set_state(&state)
     }
-    Ok((outcome, before))
+
+    /// One load step at factor `t` of the loads and prescribed
+    /// displacements of `input` (revision `revision`), warm-started from
+    /// the last step's set. On error the history is as it was (but K₁,
+    /// which the caller rebuilds where it is not [`History::intact`]). A
+    /// warm start that leads nowhere (a free body, a cycle: unloading to
+    /// zero from a loaded set passes through no contact at all) is tried
+    /// again from the initial set of the step's own loads.
+    pub fn step(
+        &mut self,
+        session: &mut Session,
+        input: &Input<'_>,
+        (t, revision, options): (f64, u64, &ContactOptions),
+        timings: &mut Timings,
+    ) -> Result<Stepped> {
+        check_load_factor(t)?;
+        super::ensure_unknowns(&session.dofs)?;
+        if self.k1.is_none() {
+            return self.step_afresh(session, input, (t, options), timings);
+        }
+        let old_loads = self.loads_of(revision, session, input, timings)?;
+        let at = (t, options);
+        let mut stepped = self.step_condensed(session, input, at, false, timings);
+        let retry = match &stepped {
+            Err(e) => matches!(e.status(), Status::Singular | Status::NotConverged),
+            Ok(_) => false,
+        };
+        if retry {
+            if !self.intact(session) {
+                self.rebuild(session, input)?;
+            }
+            stepped = self.step_condensed(session, input, at, true, timings);
+        }
+        if stepped.is_err() {
+            if let (Some(old), Some(k1)) = (old_loads, self.k1.as_mut()) {
+                (k1.x_load, k1.rhs_body, k1.loads) = old;
+            }
+        }
+        stepped
+    }
+
+    /// Makes x_load that of the loads of revision `revision` if it is not:
+    /// gives the loads it replaced (x_load, the bodies' right-hand side,
+    /// their revision), which a failed step puts back.
+    #[allow(clippy::type_complexity)]
+    fn loads_of(
+        &mut self,
+        revision: u64,
+        session: &mut Session,
+        input: &Input<'_>,
+        timings: &mut Timings,
+    ) -> Result<Option<(Vec<f64>, Vec<f64>, u64)>> {
+        if self.k1.as_ref().is_none_or(|k| k.loads == revision) {
+            return Ok(None);
+        }
+        self.new_loads(session, input, revision, timings).map(Some)
+    }
+
+    /// New loads on the same stiffness: x_load anew (one sparse solve).
+    /// Returns the loads replaced (x_load, the bodies' right-hand side and
+    /// their revision).
+    fn new_loads(
+        &mut self,
+        session: &Session,
+        input: &Input<'_>,
+        revision: u64,
+        timings: &mut Timings,
+    ) -> Result<(Vec<f64>, Vec<f64>, u64)> {
+        let k1 = self.k1.as_mut().expect("a condensed history");
+        let t0 = Instant::now();
+        let rhs_body = body::rhs(
+            &input.elements,
+            &session.dofs,
+            input.f_ext,
+            input.prescribed,
+        )?;
+        let options = self.key.options;
+        let set = constraints(
+            input,
+            input.prescribed,
+            &session.contact,
+            &session.dofs,
+            &options,
+            &[],
+        )?;
+        let mut a = rhs_body.clone();
+        let reference = &k1.condensed().reference;
+        for k in (0..set.parts()).filter(|&k| reference[k]) {
+            let (load, f0) = (set.load(k), set.gap_load(k));
+            for (q, e) in set.unknowns(k).iter().enumerate() {
+                if let Some(i) = e {
+                    a[*i] += load[q] - f0[q];
+                }
+            }
+        }
+        timings.assembly += t0.elapsed().as_secs_f64();
+        let t0 = Instant::now();
+        let chol = &session
+            .analysis
+            .as_ref()
+            .expect("the history's factor")
+            .chol;
+        chol.solve(&mut a)?;
+        timings.solve += t0.elapsed().as_secs_f64();
+        let x_load = std::mem::replace(&mut k1.x_load, a);
+        let old_rhs = std::mem::replace(&mut k1.rhs_body, rhs_body);
+        let loads = std::mem::replace(&mut k1.loads, revision);
+        k1.loads_apart = true;
+        Ok((x_load, old_rhs, loads))
+    }
+
+    /// A step of a history that does not condense: the contact solve of
+    /// the scaled loads, started from the last step's state.
+    fn step_afresh(
+        &mut self,
+        session: &mut Session,
+        input: &Input<'_>,
+        (t, options): (f64, &ContactOptions),
+        timings: &mut Timings,
+    ) -> Result<Stepped> {
+        let before = self.state();
+        let (prescribed, f_ext) = (scaled(input.prescribed, t), scaled(input.f_ext, t));
+        let step_input = Input {
+            prescribed: &prescribed,
+            f_ext: &f_ext,
+            ..*input
+        };
+        let (info, warnings) = super::prepare(session, &step_input, timings)?;
+        let start: Start<'_> = (!self.warm.is_empty()).then_some((&self.warm[..], &self.friction));
+        let begun = (info, warnings);
+        let outcome = super::solve_contact(session, &step_input, options, start, begun, timings)?;
+        let contact = outcome.contact.as_ref().expect("a contact outcome");
+        self.warm = contact.flags.clone();
+        if let Some(f) = &contact.friction {
+            self.friction = f.next.clone();
+        }
+        Ok(Stepped {
+            outcome,
+            before,
+            ended: false,
+        })
+    }
+
+    /// A step on the condensed interface, from the last step's set, or
+    /// (`from_initial`) from the initial set of its own scaled problem.
+    fn step_condensed(
+        &mut self,
+        session: &mut Session,
+        input: &Input<'_>,
+        (t, options): (f64, &ContactOptions),
+        from_initial: bool,
+        timings: &mut Timings,
+    ) -> Result<Stepped> {
+        let mesh = input.elements.mesh();
+        let prescribed = scaled(input.prescribed, t);
+        let before = self.state();
+        let key = self.key;
+        let Session {
+            dofs,
+            pattern,
+            contact,
+            analysis,
+            system,
+            holds,
+            ..
+        } = &mut *session;
+        let set = constraints(
+            input,
+            &prescribed,
+            contact,
+            dofs,
+            options,
+            &self.friction.anchors,
+        )?;
+        let k1 = self.k1.as_mut().expect("a condensed history");
+        let chol = &mut analysis.as_mut().expect("the history's factor").chol;
+        let x1 = k1.x1_at(t);
+        check_size(k1, &x1, t)?;
+        let mut condensed = k1.state.take().expect("the condensed state is back");
+        condensed.x1 = x1;
+        k1.kept = Some(before.clone());
+        let mut info = step_info((dofs, pattern), chol, condensed.system.len());
+        let loop_input = LoopInput {
+            at: Structure {
+                mesh,
+                dofs,
+                pattern,
+            },
+            elements: &input.elements,
+            set: &set,
+            interface: None,
+            options: *options,
+        };
+        let start = match from_initial {
+            true => {
+                let initial = set.initial_active();
+                let loads = set.stick_loads(&initial);
+                (initial, loads)
+            }
+            false => warm_start(&set, (&self.warm, &self.friction)),
+        };
+        // The loop may refactorise the session's system (its condensed
+        // matrix singular): K₁ is the session's again only if it did not.
+        *holds = Holds::Nothing;
+        let run = ActiveSetLoop::resume(
+            loop_input,
+            (chol, system),
+            (timings, &mut info),
+            condensed,
+            start,
+        )
+        .run_to_interface();
+        let step = Step {
+            set: &set,
+            pairs: input.pairs,
+            mesh,
+            prescribed: &prescribed,
+            dofs,
+            at: (key, t),
+        };
+        match run {
+            Ok(LoopOutcome::Interface {
+                state,
+                ui,
+                active,
+                friction,
+                history: records,
+            }) => {
+                *holds = Holds::History(self.id);
+                k1.state = Some(*state);
+                k1.kept = None;
+                info.relative_residual = k1.first.relative_residual;
+                info.condition_estimate = chol.condition_estimate();
+                info.timings = *timings;
+                let pending = (ui, active, friction, records);
+                let outcome = match on_interface(k1, step, pending, info) {
+                    Ok(outcome) => outcome,
+                    Err(e) => {
+                        self.set_state(&before)?;
+                        return Err(e);
+                    }
+                };
+                let contact = outcome.contact.as_ref().expect("a contact outcome");
+                self.warm = contact.flags.clone();
+                if let Some(f) = &contact.friction {
+                    self.friction = f.next.clone();
+                }
+                Ok(Stepped {
+                    outcome,
+                    before,
+                    ended: false,
+                })
+            }
+            Ok(LoopOutcome::Full(settled)) => {
+                // The condensed system was singular: solved whole, K₁ is
+                // gone and the history ends with this step.
+                info.relative_residual = system.relative_residual(pattern, &settled.x);
+                info.condition_estimate = chol.condition_estimate();
+                info.timings = *timings;
+                let outcome = on_full_solve(step, *settled, info)?;
+                Ok(Stepped {
+                    outcome,
+                    before,
+                    ended: true,
+                })
+            }
+            Err(failed) => {
+                let (e, state) = *failed;
+                if let Some(mut state) = state {
+                    *holds = Holds::History(self.id);
+                    state.x1 = Vec::new();
+                    k1.state = Some(state);
+                    k1.kept = None;
+                    self.set_state(&before)?;
+                }
+                Err(e)
+            }
+        }
+    }
+
+    /// The whole field of a pending step (global DOFs): u = x₁(t) +
+    /// K₁⁻¹P(Δg + ΔC u_I), refined against the matrix of the step's set; if
+    /// that stalls above [`RECOVERED`], solved with a factorisation of that
+    /// matrix ([`solved_whole`]).
+    pub fn recover(
+        &self,
+        session: &Session,
+        input: &Input<'_>,
+        pending: &Pending,
+    ) -> Result<Vec<f64>> {
+        let stale = || Error::state("the load step's factorisation is gone: run the step again");
+        let k1 = self.k1.as_ref().ok_or_else(stale)?;
+        if self.key != pending.key || self.warm != pending.active || !self.intact(session) {
+            return Err(stale());
+        }
+        let t = pending.t;
+        let mesh = input.elements.mesh();
+        let prescribed = scaled(input.prescribed, t);
+        let Session {
+            dofs,
+            pattern,
+            contact,
+            analysis,
+            system,
+            ..
+        } = session;
+        let set = constraints(input, &prescribed, contact, dofs, &self.key.options, &[])?;
+        let chol = &analysis.as_ref().ok_or_else(stale)?.chol;
+        let x1 = k1.x1_at(t);
+        let active = &pending.active;
+        let rhs = step_rhs(&set, &k1.rhs_body, pending);
+        let matrix = StepMatrix::of(pattern, system, &set, active);
+        let product = |v: &[f64], y: &mut [f64]| matrix.mul(v, y);
+        let at = Structure {
+            mesh,
+            dofs,
+            pattern,
+        };
+        let target = Target {
+            at,
+            set: &set,
+            active,
+            product: &product,
+            k_norm: &|| norm_inf(pattern, matrix.values),
+            rhs: &rhs,
+            // K₁'s right-hand side of a history holds no friction load.
+            friction: (&pending.friction, &[]),
+        };
+        let state = (&k1.condensed().system, &k1.condensed().reference[..]);
+        let (mut x, mut omega) = expand(target, chol, state, x1, pending.ui.clone())?;
+        let context = format!(" (load step at factor {t:?})");
+        if omega.is_nan() || omega > RECOVERED || x.iter().any(|v| !v.is_finite()) {
+            // K₁'s factor is too poor an inverse of the step's matrix for
+            // the refinement to reach working accuracy (measured: Hertz
+            // with the cylinder's mesh 20× finer, h = a/16, stalled at
+            // 5.5e-8): the step's matrix is factorised itself, as the loop's
+            // full solve does, but beside K₁, which the steps after still
+            // need.
+            drop(x);
+            let settings = analysis.as_ref().ok_or_else(stale)?.settings();
+            (x, omega) = solved_whole(at, settings, &matrix, &rhs, &context)?;
+        }
+        if omega.is_nan() || omega > RECOVERED {
+            return Err(Error::new(
+                Status::NumericalFailure,
+                format!(
+                    "the field could not be solved to working accuracy (backward error \
+                     {omega:.1e}, above {RECOVERED:.0e}){context}"
+                ),
+            ));
+        }
+        Ok(dofs.expand(&x, &prescribed))
+    }
 }
 
 /// Refuses a load factor that is not finite or beyond 1e300 in magnitude.
@@ -338,55 +715,18 @@ pub(crate) fn check_load_factor(t: f64) -> Result<()> {
     )))
 }
 
-/// Whether a step under `options` on a problem of stiffness epoch
-/// `stiffness` continues the session's history.
-pub(crate) fn continues(session: &Session, options: &ContactOptions, stiffness: u64) -> bool {
-    let key = Key::new(stiffness, options);
-    session.history.as_ref().is_some_and(|h| h.key == key)
-}
-
-/// Rebuilds, after a failed call at problem revision `revision`, the
-/// history it destroyed, in the state kept before: the same factorisation of the same
-/// matrix, the same solves, then the saved interface factor and warm
-/// start, so that what follows is bit for bit what would have followed
-/// without the failed step. A rebuild that fails leaves no history (the
-/// next step starts one; a pending step's field is then lost, with a
-/// message saying so).
-fn rebuild(session: &mut Session, input: &Input<'_>, revision: u64, kept: &Kept) {
-    let (mut timings, mut warnings) = (Timings::default(), Vec::new());
-    let rebuilt = begin(
-        session,
-        input,
-        kept.key,
-        revision,
-        &mut timings,
-        &mut warnings,
-    )
-    .and_then(|mut history| {
-        history.set_state(&kept.state)?;
-        history.first = kept.first;
-        Ok(history)
-    });
-    session.history = rebuilt.ok();
-    if kept.loads_apart
-        && session.history.is_some()
-        && new_loads(session, input, revision, &mut timings).is_err()
-    {
-        session.history = None;
-    }
-}
-
-/// Starts a history: the bodies' part at factor 1, K₁ with the initial
-/// contact set, its factorisation (the only one) and condensed interface
-/// system, and its two solutions.
-fn begin(
+/// K₁ of a history for `key` at problem revision `revision`: the bodies'
+/// part at factor 1 with the initial constraints, factorised with the
+/// interface unknowns last, its condensed interface system and its two
+/// solutions; `None` where the interface is not condensed (each step then
+/// solves afresh).
+fn begin_k1(
     session: &mut Session,
     input: &Input<'_>,
-    key: Key,
-    revision: u64,
+    (key, revision): (Key, u64),
     timings: &mut Timings,
     warnings: &mut Vec<String>,
-) -> Result<History> {
+) -> Result<(Option<K1>, Sizes)> {
     let rhs_body = assemble_bodies(session, input, timings, warnings)?;
     let Session {
         dofs,
@@ -396,9 +736,22 @@ fn begin(
         system,
         ..
     } = &mut *session;
-    let set = contact_set(input, input.prescribed, contact, dofs, &key.options, &[])?;
+    let set = constraints(input, input.prescribed, contact, dofs, &key.options, &[])?;
+    let sizes = Sizes {
+        parts: set.parts(),
+        frictional: if set.is_frictional() {
+            set.strip().len()
+        } else {
+            0
+        },
+    };
     let interface = set.interface_unknowns();
-    check_condensable(&key.options, interface.len(), pattern.nnz())?;
+    let condensed = !key.options.refactorize
+        && !interface.is_empty()
+        && Condensed::worthwhile(interface.len(), pattern.nnz());
+    if !condensed {
+        return Ok((None, sizes));
+    }
     let at = Structure {
         mesh: input.elements.mesh(),
         dofs,
@@ -407,33 +760,41 @@ fn begin(
     let reference = set.initial_active();
     let k1 = (&set, &interface[..], &reference[..]);
     let (chol, x, mut info) = solve_k1(analysis, at, system, input, k1, timings)?;
+    let norm = norm_inf(pattern, system.values());
     let (x_load, x_gap) = split_gap(chol, system, (&set, &reference), x)?;
     let t0 = Instant::now();
     let condensed = Condensed::new(chol, interface)?;
     let base = condensed.factor_fingerprint();
     timings.interface += t0.elapsed().as_secs_f64();
     info.interface_unknowns = condensed.len();
-    Ok(History {
-        key,
+    let k1 = K1 {
         loads: revision,
         state: Some(CondensedState {
             system: condensed,
             x1: Vec::new(),
             reference: reference.clone(),
-            factor_active: reference.clone(),
+            factor_active: reference,
             // K₁'s right-hand side holds no friction load.
             friction_ref: Vec::new(),
         }),
         x_load,
         x_gap,
         rhs_body,
-        warm: reference,
-        friction: FrictionState::default(),
-        frictional: set.is_frictional(),
         first: info,
         loads_apart: false,
         base,
-    })
+        norm,
+        kept: None,
+    };
+    Ok((Some(k1), sizes))
+}
+
+/// The sizes of a history's constraints.
+struct Sizes {
+    /// Parts.
+    parts: usize,
+    /// Frictional elements.
+    frictional: usize,
 }
 
 /// Assembles the bodies' part at factor 1 into the session's system, which
@@ -445,7 +806,7 @@ fn assemble_bodies(
     timings: &mut Timings,
     warnings: &mut Vec<String>,
 ) -> Result<Vec<f64>> {
-    session.set_system_of(None);
+    session.holds = Holds::Nothing;
     let t0 = Instant::now();
     let softened = session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
     timings.assembly += t0.elapsed().as_secs_f64();
@@ -453,45 +814,19 @@ fn assemble_bodies(
     Ok(session.system.rhs().to_vec())
 }
 
-/// Refuses a history that could not condense its interface: one of
-/// `interface` unknowns not worth condensing beside a matrix of `nnz`
-/// values, or `options` that ask for refactorisation.
-fn check_condensable(options: &ContactOptions, interface: usize, nnz: usize) -> Result<()> {
-    let why = if options.refactorize {
-        "the options ask for `refactorize`".to_string()
-    } else if interface == 0 {
-        // Not "too many": an outside probe read "0 interface unknowns are
-        // too many for it" for a contact between prescribed sides.
-        "the contact couples no free unknown (every DOF of its nodes is prescribed), so there \
-         is no interface to condense"
-            .to_string()
-    } else if !Condensed::worthwhile(interface, nnz) {
-        format!("{interface} interface unknowns are too many for it")
-    } else {
-        return Ok(());
-    };
-    Err(Error::new(
-        Status::InvalidArgument,
-        format!(
-            "a load history condenses the contact interface, and {why}; solve each step with \
-             solve_contact"
-        ),
-    ))
-}
-
-/// K₁ — the bodies `system` holds plus the elements of `reference` in
-/// `set` — factorised with the `interface` unknowns numbered last, and
-/// solved at factor 1 (refined). Gives the factor, the solution and the
-/// solve's statistics.
+/// K₁ — the bodies `system` holds plus the parts of `reference` in `set` —
+/// factorised with the `interface` unknowns numbered last, and solved at
+/// factor 1 (refined). Gives the factor, the solution and the solve's
+/// statistics.
 fn solve_k1<'a>(
-    analysis: &'a mut Option<Analysis>,
+    analysis: &'a mut Option<super::session::Analysis>,
     at: Structure<'_>,
-    system: &mut AssembledSystem,
+    system: &mut super::system::AssembledSystem,
     input: &Input<'_>,
-    (set, interface, reference): (&ContactSet<'_>, &[usize], &[bool]),
+    (set, interface, reference): (&Constraints<'_>, &[usize], &[bool]),
     timings: &mut Timings,
 ) -> Result<(&'a mut Cholesky, Vec<f64>, SolveInfo)> {
-    // The zeros are the bodies' alone: no contact element is in yet.
+    // The zeros are the bodies' alone: no contact part is in yet.
     let zeros = set.structural_zeros(at.pattern, system.values());
     let want = Wanted {
         last: interface,
@@ -507,9 +842,15 @@ fn solve_k1<'a>(
         &mut info,
     )?;
     let t0 = Instant::now();
-    system.set_contact(reference, set, (at.dofs, at.pattern), input.prescribed);
+    system.set_contact(reference, set, at.pattern);
     timings.assembly += t0.elapsed().as_secs_f64();
-    let energy = |r: &[f64]| body_energy(&input.elements, r);
+    let energy = |r: &[f64]| {
+        let mut acc = body_energy(&input.elements, r);
+        for k in (0..set.parts()).filter(|&k| reference[k]) {
+            set.add_energy(k, &mut acc, r);
+        }
+        acc
+    };
     let context = " (the first load step)";
     let x = factor_and_solve(at, chol, system, &energy, true, context, timings, &mut info)?;
     info.relative_residual = system.relative_residual(at.pattern, &x);
@@ -519,13 +860,13 @@ fn solve_k1<'a>(
 }
 
 /// K₁'s solution `x` at factor 1 split into x_load and x_gap (module
-/// documentation): the gap part of the contact loads of `reference` does
-/// not scale with the load factor, so it is solved apart. Without gap
-/// loads, x is x_load and x_gap is empty.
+/// documentation): the gap part of the loads of `reference` does not scale
+/// with the load factor, so it is solved apart. Without gap loads, x is
+/// x_load and x_gap is empty.
 fn split_gap(
     chol: &Cholesky,
-    system: &AssembledSystem,
-    (set, reference): (&ContactSet<'_>, &[bool]),
+    system: &super::system::AssembledSystem,
+    (set, reference): (&Constraints<'_>, &[bool]),
     x: Vec<f64>,
 ) -> Result<(Vec<f64>, Vec<f64>)> {
     let gap = gap_loads(set, reference, x.len());
@@ -540,251 +881,59 @@ fn split_gap(
     Ok((x_load, x_gap))
 }
 
-/// The gap loads f0 of the elements of `active`, over the unknowns.
-fn gap_loads(set: &ContactSet<'_>, active: &[bool], n: usize) -> Vec<f64> {
+/// The initial gaps' loads of the parts of `active`, over the unknowns.
+fn gap_loads(set: &Constraints<'_>, active: &[bool], n: usize) -> Vec<f64> {
     let mut g = vec![0.0; n];
     for k in (0..set.parts()).filter(|&k| active[k]) {
-        for (a, e) in set.unknowns(k).iter().enumerate() {
+        for (e, f0) in set.unknowns(k).iter().zip(set.gap_load(k)) {
             if let Some(i) = e {
-                g[*i] += set.stiffness(k).f0[a];
+                g[*i] += f0;
             }
         }
     }
     g
 }
 
-/// New loads on the same stiffness: x_load anew (one sparse solve).
-/// Returns the loads replaced (x_load, the bodies' right-hand side and
-/// their revision), which a failed step puts back.
-fn new_loads(
-    session: &mut Session,
-    input: &Input<'_>,
-    revision: u64,
-    timings: &mut Timings,
-) -> Result<(Vec<f64>, Vec<f64>, u64)> {
-    let t0 = Instant::now();
-    let rhs_body = body::rhs(
-        &input.elements,
-        &session.dofs,
-        input.f_ext,
-        input.prescribed,
-    )?;
-    let history = session.history.as_mut().expect("a history");
-    let options = history.key.options;
-    let set = contact_set(
-        input,
-        input.prescribed,
-        &session.contact,
-        &session.dofs,
-        &options,
-        &[],
-    )?;
-    let mut a = rhs_body.clone();
-    let reference = &history.condensed().reference;
-    for k in (0..set.parts()).filter(|&k| reference[k]) {
-        let (load, f0) = (set.load(k), &set.stiffness(k).f0);
-        for (q, e) in set.unknowns(k).iter().enumerate() {
-            if let Some(i) = e {
-                a[*i] += load[q] - f0[q];
-            }
-        }
+/// Refuses a step whose K₁ solution `x1`, or its product with K₁, is not
+/// a finite double: a load factor so large that the residual of the
+/// step's recovery could overflow (as a solve's does). ‖K₁‖‖x₁‖ bounds
+/// what the recovery computes, so this refuses a little before a contact
+/// solve of the same loads would (at 10^299.75 rather than above 1e300 on
+/// a review's two-block scene; on Hertz both refuse from 1e296).
+fn check_size(k1: &K1, x1: &[f64], t: f64) -> Result<()> {
+    let size = x1.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    let loads = k1.rhs_body.iter().fold(0.0f64, |m, v| m.max((t * v).abs()));
+    if (k1.norm * size).is_finite() && loads.is_finite() {
+        return Ok(());
     }
-    timings.assembly += t0.elapsed().as_secs_f64();
-    let t0 = Instant::now();
-    let chol = &session
-        .analysis
-        .as_ref()
-        .expect("the history's factor")
-        .chol;
-    chol.solve(&mut a)?;
-    timings.solve += t0.elapsed().as_secs_f64();
-    let x_load = std::mem::replace(&mut history.x_load, a);
-    let old_rhs = std::mem::replace(&mut history.rhs_body, rhs_body);
-    let loads = std::mem::replace(&mut history.loads, revision);
-    history.loads_apart = true;
-    Ok((x_load, old_rhs, loads))
+    Err(Error::new(
+        Status::NumericalFailure,
+        format!(
+            "the load step at factor {t:e} overflows: ‖K₁‖·‖u‖ = {:e} is beyond double \
+             precision; scale the loads, the prescribed displacements or the units",
+            k1.norm * size
+        ),
+    ))
 }
 
-/// The scaled prescribed displacements of a step.
+/// The scaled values of a step.
 fn scaled(v: &[f64], t: f64) -> Vec<f64> {
     v.iter().map(|a| t * a).collect()
 }
 
-/// A failed step's error, with what rebuilds the history if the step
-/// destroyed it.
-type StepFailure = (Error, Option<Box<Kept>>);
-
-/// Starts a history for `key` at problem revision `revision` (at the
-/// contact state `restored` if given), saving the session's history it
-/// replaces; if it cannot start, the session is back as it was. Gives the
-/// factorisations made and the history replaced.
-fn start(
-    session: &mut Session,
-    input: &Input<'_>,
-    (key, revision, restored): (Key, u64, Option<&StepState>),
-    timings: &mut Timings,
-    warnings: &mut Vec<String>,
-) -> Result<(usize, Option<Saved>)> {
-    let replaced = save(session, revision, key.stiffness);
-    let started =
-        begin(session, input, key, revision, timings, warnings).and_then(|mut history| {
-            if let Some(state) = restored {
-                history.set_state(state)?;
-            }
-            Ok(history)
-        });
-    match started {
-        Ok(history) => {
-            let factorizations = history.first.factorizations;
-            session.history = Some(history);
-            Ok((factorizations, replaced))
-        }
-        Err(e) => {
-            session.history = None;
-            if let Some(saved) = replaced {
-                restore(session, input, revision, saved);
-            }
-            Err(e)
-        }
-    }
-}
-
-/// What puts the session back after a failed step.
-struct Undo {
-    /// Whether the step continued the session's history (else it started
-    /// one in place of `replaced`).
-    current: bool,
-    replaced: Option<Saved>,
-    /// The history's loads before the step's new ones (x_load, the
-    /// bodies' right-hand side, the loads' revision).
-    old_loads: Option<(Vec<f64>, Vec<f64>, u64)>,
-    /// What rebuilds the history if the step lost K₁.
-    lost: Option<Box<Kept>>,
-}
-
-/// Puts the session's history back as it was before a failed step.
-fn put_back(session: &mut Session, input: &Input<'_>, revision: u64, undo: Undo) {
-    match (undo.current, session.history.as_mut()) {
-        (false, _) => {
-            session.history = None;
-            if let Some(saved) = undo.replaced {
-                restore(session, input, revision, saved);
-            }
-        }
-        (true, Some(h)) => {
-            if let Some((x_load, rhs_body, loads)) = undo.old_loads {
-                h.x_load = x_load;
-                h.rhs_body = rhs_body;
-                h.loads = loads;
-            }
-        }
-        // The loop refactorised and lost K₁: the history is rebuilt as it
-        // was before the step (its loads are this revision's: a failed
-        // step on new loads changed none of its results).
-        (true, None) => {
-            if let Some(mut kept) = undo.lost {
-                kept.loads_apart |= undo.old_loads.is_some();
-                rebuild(session, input, revision, &kept);
-            }
-        }
-    }
-}
-
-/// The condensed loop of one step from the warm start.
-fn step_in_history(
-    session: &mut Session,
-    input: &Input<'_>,
-    (key, options): (Key, &ContactOptions),
-    t: f64,
-    timings: &mut Timings,
-    warnings: Vec<String>,
-) -> std::result::Result<(Outcome, StepState), StepFailure> {
-    let mesh = input.elements.mesh();
-    let prescribed = scaled(input.prescribed, t);
-    let Session {
-        dofs,
-        pattern,
-        contact,
-        analysis,
-        system,
-        history,
-        ..
-    } = &mut *session;
-    let h = history.as_mut().expect("a history");
-    let anchors = &h.friction.anchors;
-    let set =
-        contact_set(input, &prescribed, contact, dofs, options, anchors).map_err(|e| (e, None))?;
-    let chol = &mut analysis.as_mut().expect("the history's factor").chol;
-    let before = h.step_state();
-    let mut condensed = h.state.take().expect("the condensed state is back");
-    condensed.x1 = h.x1_at(t);
-    let mut info = step_info((dofs, pattern), chol, condensed.system.len());
-    let loop_input = LoopInput {
-        at: Structure {
-            mesh,
-            dofs,
-            pattern,
-        },
-        elements: &input.elements,
-        set: &set,
-        prescribed: &prescribed,
-        interface: None,
-        options: *options,
-    };
-    let run = ActiveSetLoop::resume(
-        loop_input,
-        (chol, system),
-        (timings, &mut info),
-        condensed,
-        warm_start(&set, h),
-    )
-    .run_to_interface();
-    let step = Step {
-        set: &set,
-        pairs: input.pairs,
-        prescribed: &prescribed,
-        dofs,
-        at: (key, t),
-        before,
-        warnings,
-    };
-    match run {
-        Ok(LoopOutcome::Interface {
-            state,
-            ui,
-            active,
-            friction,
-            history: records,
-        }) => {
-            h.state = Some(*state);
-            info.relative_residual = h.first.relative_residual;
-            info.condition_estimate = chol.condition_estimate();
-            info.timings = *timings;
-            on_interface(history, step, (ui, active, friction, records), info)
-        }
-        Ok(LoopOutcome::Full(settled)) => {
-            // The condensed system was singular: solved whole, K₁ is gone
-            // (rebuilt by the caller if this step fails after all).
-            let kept = h.kept(step.before.clone());
-            *history = None;
-            info.relative_residual = system.relative_residual(pattern, &settled.x);
-            info.condition_estimate = chol.condition_estimate();
-            info.timings = *timings;
-            on_full_solve(step, *settled, info).map_err(|e| (e, Some(kept)))
-        }
-        Err(failed) => Err(on_loop_error(history, step.before, *failed)),
-    }
-}
-
-/// The flags and friction loads a step of `h` starts from: the last
-/// step's, or, where it left no friction loads, those of sticking.
-fn warm_start(set: &ContactSet<'_>, h: &History) -> (Vec<bool>, Vec<f64>) {
-    let warm = set.warm_flags(&h.warm, &h.friction.loads);
-    let friction = match h.friction.loads.is_empty() {
+/// The flags and friction loads a step starts from after a step that ended
+/// with the set `warm` and the friction state `friction`: those, or, where
+/// it left no friction loads, those of sticking.
+pub(crate) fn warm_start(
+    set: &Constraints<'_>,
+    (warm, friction): (&[bool], &FrictionState),
+) -> (Vec<bool>, Vec<f64>) {
+    let warm = set.warm_flags(warm, &friction.loads);
+    let loads = match friction.loads.is_empty() {
         true => set.stick_loads(&warm),
-        false => h.friction.loads.clone(),
+        false => friction.loads.clone(),
     };
-    (warm, friction)
+    (warm, loads)
 }
 
 /// The statistics a step starts from: the sizes of its unknowns, matrix
@@ -801,79 +950,41 @@ fn step_info((dofs, pattern): (&DofMap, &Pattern), chol: &Cholesky, interface: u
     }
 }
 
-/// The history after a step's loop failed with `e` (and `state`, the
-/// condensed state, if K₁ survived): back at `before`, or dropped with what
-/// rebuilds it.
-fn on_loop_error(
-    history: &mut Option<History>,
-    before: StepState,
-    (e, state): (Error, Option<CondensedState>),
-) -> StepFailure {
-    let h = history.as_mut().expect("a history");
-    match state {
-        Some(mut state) => {
-            state.x1 = Vec::new();
-            h.state = Some(state);
-            (e, back_to(history, before))
-        }
-        // The loop refactorised: K₁ is gone; the caller rebuilds it.
-        None => {
-            let kept = h.kept(before);
-            *history = None;
-            (e, Some(kept))
-        }
-    }
-}
-
-/// A step being judged: what its loop solved with, and the history's state
-/// before it (to go back to on error).
+/// A step being judged: what its loop solved with.
 struct Step<'a, 's> {
-    set: &'a ContactSet<'s>,
+    set: &'a Constraints<'s>,
     pairs: &'a [crate::contact::ContactPair],
+    mesh: &'a crate::fem::mesh::Mesh,
     prescribed: &'a [f64],
     dofs: &'a DofMap,
     /// The history's key and the step's load factor.
     at: (Key, f64),
-    before: StepState,
-    warnings: Vec<String>,
 }
 
 /// The outcome of a step whose loop settled on the interface (values `ui`
 /// with the final set, friction loads and records): its field stays
-/// pending. Everything that can fail comes before the history moves on, so
-/// that on error it is back where it was.
+/// pending.
 fn on_interface(
-    history: &mut Option<History>,
-    mut step: Step<'_, '_>,
+    k1: &K1,
+    step: Step<'_, '_>,
     (ui, active, friction, records): (Vec<f64>, Vec<bool>, Vec<f64>, Vec<IterationRecord>),
     info: SolveInfo,
-) -> std::result::Result<(Outcome, StepState), StepFailure> {
-    let h = history.as_mut().expect("a history");
-    let judged = finite_statistics(&info).and_then(|()| {
-        let x1 = &h.condensed().x1;
-        let sys = &h.condensed().system;
-        let value = |g: usize| match step.dofs.free(g) {
-            NOT_FREE => step.prescribed[g],
-            i => sys.position(i).map_or(x1[i], |p| ui[p]),
-        };
-        let ue_of = |tri: &[usize; 3]| std::array::from_fn(|a| value(2 * tri[a / 2] + a % 2));
+) -> Result<Outcome> {
+    finite_statistics(&info)?;
+    let mut warnings = Vec::new();
+    let contact = {
+        let x1 = &k1.condensed().x1;
+        let sys = &k1.condensed().system;
+        let value = |i: usize| sys.position(i).map_or(x1[i], |p| ui[p]);
         contact_outcome(
-            (step.set, step.pairs),
-            ue_of,
+            (step.set, step.pairs, step.mesh),
+            value,
             (active.clone(), &friction),
             records,
             info,
-            &mut step.warnings,
-        )
-    });
-    let contact = match judged {
-        Ok(contact) => contact,
-        Err(e) => return Err((e, back_to(history, step.before))),
+            &mut warnings,
+        )?
     };
-    h.warm.clone_from(&active);
-    if let Some(f) = contact.friction.as_ref() {
-        h.friction = f.next.clone();
-    }
     let (key, t) = step.at;
     let pending = Pending {
         key,
@@ -882,137 +993,50 @@ fn on_interface(
         active,
         friction,
     };
-    let outcome = Outcome {
-        u: Field::Pending(super::Pending::Strip(pending)),
+    Ok(Outcome {
+        u: Field::Pending(pending),
         log: Vec::new(),
         info,
         contact: Some(contact),
-        warnings: step.warnings,
-    };
-    Ok((outcome, step.before))
+        warnings,
+    })
 }
 
-/// The outcome of a step whose loop ended with a full solve (`settled`,
-/// the history already dropped): its whole field at once.
-fn on_full_solve(
-    mut step: Step<'_, '_>,
-    settled: Settled,
-    info: SolveInfo,
-) -> Result<(Outcome, StepState)> {
+/// The outcome of a step whose loop ended with a full solve (`settled`):
+/// its whole field at once.
+fn on_full_solve(step: Step<'_, '_>, settled: Settled, info: SolveInfo) -> Result<Outcome> {
     finite_statistics(&info)?;
-    super::diagnostics::conditioning_warning(&info, &mut step.warnings);
-    let u = step.dofs.expand(&settled.x, step.prescribed);
-    let ue_of = |tri: &[usize; 3]| crate::fem::element_loop::element_values(&u, tri);
+    let mut warnings = Vec::new();
+    super::diagnostics::conditioning_warning(&info, &mut warnings);
+    let x = &settled.x;
     let verdict = (settled.active, &settled.friction[..]);
     let contact = contact_outcome(
-        (step.set, step.pairs),
-        ue_of,
+        (step.set, step.pairs, step.mesh),
+        |i| x[i],
         verdict,
         settled.history,
         info,
-        &mut step.warnings,
+        &mut warnings,
     )?;
-    let outcome = Outcome {
+    let u = step.dofs.expand(&settled.x, step.prescribed);
+    Ok(Outcome {
         u: Field::Global(u),
         log: Vec::new(),
         info,
         contact: Some(contact),
-        warnings: step.warnings,
-    };
-    Ok((outcome, step.before))
-}
-
-/// Puts the history back in `before` after a failed step; if even that
-/// fails, drops it and returns what rebuilds it.
-fn back_to(history: &mut Option<History>, before: StepState) -> Option<Box<Kept>> {
-    let h = history.as_mut()?;
-    match h.set_state(&before) {
-        Ok(()) => None,
-        Err(_) => {
-            let kept = h.kept(before);
-            *history = None;
-            Some(kept)
-        }
-    }
-}
-
-/// The whole field of a pending step (global DOFs): u = x₁(t) +
-/// K₁⁻¹P(Δg + ΔC u_I), refined against the matrix of the step's set; if
-/// that stalls above [`RECOVERED`], solved with a factorisation of that
-/// matrix ([`solved_whole`]).
-pub(crate) fn recover(session: &Session, input: &Input<'_>, pending: &Pending) -> Result<Vec<f64>> {
-    let stale = || Error::state("the load step's factorisation is gone: run the step again");
-    let h = session.history.as_ref().ok_or_else(stale)?;
-    if h.key != pending.key || h.warm != pending.active {
-        return Err(stale());
-    }
-    let t = pending.t;
-    let mesh = input.elements.mesh();
-    let prescribed = scaled(input.prescribed, t);
-    let Session {
-        dofs,
-        pattern,
-        contact,
-        analysis,
-        system,
-        ..
-    } = session;
-    let set = contact_set(input, &prescribed, contact, dofs, &h.key.options, &[])?;
-    let chol = &analysis.as_ref().ok_or_else(stale)?.chol;
-    let x1 = h.x1_at(t);
-    let active = &pending.active;
-    let rhs = step_rhs(&set, &h.rhs_body, pending);
-    let matrix = StepMatrix::of(pattern, system, &set, active);
-    let product = |v: &[f64], y: &mut [f64]| matrix.mul(v, y);
-    let at = Structure {
-        mesh,
-        dofs,
-        pattern,
-    };
-    let target = Target {
-        at,
-        set: &set,
-        active,
-        product: &product,
-        k_norm: &|| norm_inf(pattern, matrix.values),
-        rhs: &rhs,
-        // K₁'s right-hand side of a history holds no friction load.
-        friction: (&pending.friction, &[]),
-    };
-    let state = (&h.condensed().system, &h.condensed().reference[..]);
-    let (mut x, mut omega) = expand(target, chol, state, x1, pending.ui.clone())?;
-    let context = format!(" (load step at factor {t:?})");
-    if omega.is_nan() || omega > RECOVERED || x.iter().any(|v| !v.is_finite()) {
-        // K₁'s factor is too poor an inverse of the step's matrix for the
-        // refinement to reach working accuracy (measured: Hertz with the
-        // cylinder's mesh 20× finer, h = a/16, stalled at 5.5e-8): the
-        // step's matrix is factorised itself, as the loop's full solve
-        // does, but beside K₁, which the steps after still need.
-        drop(x);
-        let settings = analysis.as_ref().ok_or_else(stale)?.settings();
-        (x, omega) = solved_whole(at, settings, &matrix, &rhs, &context)?;
-    }
-    if omega.is_nan() || omega > RECOVERED {
-        return Err(Error::new(
-            Status::NumericalFailure,
-            format!(
-                "the field could not be solved to working accuracy (backward error \
-                 {omega:.1e}, above {RECOVERED:.0e}){context}"
-            ),
-        ));
-    }
-    Ok(dofs.expand(&x, &prescribed))
+        warnings,
+    })
 }
 
 /// The right-hand side of a pending step's system: the bodies' loads
-/// `rhs_body` (at factor 1) scaled to the step, with its active contact
-/// elements' loads and its friction loads.
-fn step_rhs(set: &ContactSet<'_>, rhs_body: &[f64], pending: &Pending) -> Vec<f64> {
+/// `rhs_body` (at factor 1) scaled to the step, with its active parts'
+/// loads and its friction loads.
+fn step_rhs(set: &Constraints<'_>, rhs_body: &[f64], pending: &Pending) -> Vec<f64> {
     let mut rhs: Vec<f64> = rhs_body.iter().map(|a| pending.t * a).collect();
     for k in (0..set.parts()).filter(|&k| pending.active[k]) {
-        for (q, e) in set.unknowns(k).iter().enumerate() {
+        for (e, f) in set.unknowns(k).iter().zip(set.load(k)) {
             if let Some(i) = e {
-                rhs[*i] += set.load(k)[q];
+                rhs[*i] += f;
             }
         }
     }
@@ -1021,12 +1045,11 @@ fn step_rhs(set: &ContactSet<'_>, rhs_body: &[f64], pending: &Pending) -> Vec<f6
 }
 
 /// A step's matrix: the assembled `values` (of whatever set they hold)
-/// with the contact elements whose state differs added (+1) or taken out
-/// (−1).
+/// with the parts whose state differs added (+1) or taken out (−1).
 struct StepMatrix<'a, 's> {
     pattern: &'a Pattern,
     values: &'a [f64],
-    set: &'a ContactSet<'s>,
+    set: &'a Constraints<'s>,
     changed: Vec<(usize, f64)>,
 }
 
@@ -1034,8 +1057,8 @@ impl<'a, 's> StepMatrix<'a, 's> {
     /// The matrix of the flags `active` from `system`'s.
     fn of(
         pattern: &'a Pattern,
-        system: &'a AssembledSystem,
-        set: &'a ContactSet<'s>,
+        system: &'a super::system::AssembledSystem,
+        set: &'a Constraints<'s>,
         active: &[bool],
     ) -> StepMatrix<'a, 's> {
         let held = system.contact();
@@ -1055,13 +1078,14 @@ impl<'a, 's> StepMatrix<'a, 's> {
     fn mul(&self, v: &[f64], y: &mut [f64]) {
         self.pattern.sym_mul(self.values, v, y);
         for &(k, sign) in &self.changed {
-            let (eq, ke) = (self.set.unknowns(k), &self.set.stiffness(k).k);
-            for a in 0..6 {
+            let (eq, ke) = (self.set.unknowns(k), self.set.matrix(k));
+            let n = eq.len();
+            for a in 0..n {
                 let Some(i) = eq[a] else { continue };
                 let mut acc = 0.0;
-                for b in 0..6 {
+                for b in 0..n {
                     if let Some(j) = eq[b] {
-                        acc += ke[6 * a + b] * v[j];
+                        acc += ke[n * a + b] * v[j];
                     }
                 }
                 y[i] += sign * acc;
@@ -1091,8 +1115,13 @@ fn solved_whole(
     let mut matrix = reserved::<f64>(step.values.len(), "the load step's matrix")?;
     matrix.extend_from_slice(step.values);
     for &(k, sign) in &step.changed {
-        let free = step.set.unknowns(k).map(|e| e.unwrap_or(NOT_FREE));
-        let ke = step.set.stiffness(k).k.map(|v| sign * v);
+        let free: Vec<usize> = step
+            .set
+            .unknowns(k)
+            .iter()
+            .map(|e| e.unwrap_or(NOT_FREE))
+            .collect();
+        let ke: Vec<f64> = step.set.matrix(k).iter().map(|v| sign * v).collect();
         at.pattern.add_element(&mut matrix, &free, &ke);
     }
     chol.factorize(at.pattern, &matrix)
@@ -1106,70 +1135,4 @@ fn solved_whole(
     let omega = refine_by(&product, k_norm, rhs, &mut x, &mut solve, Budget::DIRECT)?;
     check_finite(at, &x, context)?;
     Ok((x, omega))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::solve::fixtures::{assembled, contact_set, two_blocks};
-
-    fn inf(v: &[f64]) -> f64 {
-        v.iter().fold(0.0f64, |m, a| m.max(a.abs()))
-    }
-
-    #[test]
-    fn a_step_matrix_is_the_assembled_matrix_of_the_steps_set_and_is_solved_whole() {
-        for frictional in [false, true] {
-            let p = two_blocks(6, 6);
-            let (mut session, prescribed) = assembled(&p);
-            let mesh = p.mesh().unwrap();
-            let Session {
-                dofs,
-                pattern,
-                contact,
-                system,
-                ..
-            } = &mut session;
-            let options = ContactOptions::default();
-            let mut set = contact_set(&p, (contact, dofs), &prescribed, &options);
-            if frictional {
-                let n = set.len();
-                let (mu, g) = (vec![0.3; n], vec![400.0; n]);
-                set = set.with_friction(&mu, &g, &[], &prescribed).unwrap();
-            }
-            // The assembled system holds one set (K₁'s), the step another:
-            // parts switched both ways, stick parts (k ≥ n) among them.
-            let held: Vec<bool> = (0..set.parts()).map(|k| k % 2 == 0).collect();
-            let active: Vec<bool> = (0..set.parts()).map(|k| k % 2 == 1 || k % 3 == 0).collect();
-            let structure = (&*dofs, &*pattern);
-            system.set_contact(&active, &set, structure, &prescribed);
-            let (expected, rhs) = (system.values().to_vec(), system.rhs().to_vec());
-            system.set_contact(&held, &set, structure, &prescribed);
-            let n = dofs.n_free();
-            let v: Vec<f64> = (0..n).map(|i| (0.37 * i as f64).sin()).collect();
-            let (mut y, mut y_expected) = (vec![0.0; n], vec![0.0; n]);
-            let step = StepMatrix::of(pattern, system, &set, &active);
-            assert!(!step.changed.is_empty());
-            step.mul(&v, &mut y);
-            pattern.sym_mul(&expected, &v, &mut y_expected);
-            let d: Vec<f64> = y.iter().zip(&y_expected).map(|(a, b)| a - b).collect();
-            assert!(
-                inf(&d) <= 1e-13 * inf(&y_expected),
-                "frictional {frictional}"
-            );
-            let at = Structure {
-                mesh,
-                dofs,
-                pattern,
-            };
-            let (x, omega) = solved_whole(at, Settings::default(), &step, &rhs, "").unwrap();
-            assert!(omega <= 1e-14, "backward error {omega:e}");
-            // Its residual against the assembled matrix of the step's set.
-            let mut r = vec![0.0; n];
-            pattern.sym_mul(&expected, &x, &mut r);
-            r.iter_mut().zip(&rhs).for_each(|(a, b)| *a -= b);
-            let scale = inf(&expected) * inf(&x) + inf(&rhs);
-            assert!(inf(&r) <= 1e-13 * scale, "frictional {frictional}");
-        }
-    }
 }

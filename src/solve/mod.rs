@@ -16,8 +16,6 @@ mod fixtures;
 pub(crate) mod history;
 pub(crate) mod linear;
 pub(crate) mod memory;
-pub(crate) mod mortar;
-pub(crate) mod mortar_history;
 pub mod report;
 pub(crate) mod session;
 pub mod system;
@@ -29,17 +27,22 @@ use linear::{Structure, factor_and_solve};
 use report::{ContactReport, SolveInfo, Timings};
 use session::{Session, Settings, Wanted, factorisation};
 
+use crate::contact::constraints::Constraints;
+use crate::contact::discretisation::Discretisation;
+use crate::contact::law::penalty_lengths;
+use crate::contact::mortar_set::{self, MortarSet, MortarState, PenaltyData};
 use crate::contact::{
-    ContactElement, ContactLaw, ContactOptions, ContactPair, ContactSet, ContactWeighting,
-    ElementLaw, FrictionOutcome, Nodes, element_laws, softer,
+    ContactElement, ContactLaw, ContactOptions, ContactPair, ContactSet, ElementLaw,
+    FrictionOutcome, FrictionState, Nodes, element_laws, softer,
 };
 use crate::error::{Result, ensure_finite};
 use crate::fem::assembly::{DofMap, NOT_FREE};
 use crate::fem::body::Softened;
-use crate::fem::element_loop::{ElementLoop, element_values};
+use crate::fem::element_loop::ElementLoop;
 use crate::fem::mesh::Mesh;
 
 /// What a solve reads of the problem.
+#[derive(Clone, Copy)]
 pub(crate) struct Input<'a> {
     /// The body elements with their materials and tempering.
     pub elements: ElementLoop<'a>,
@@ -54,8 +57,6 @@ pub(crate) struct Input<'a> {
     pub lambda: Option<f64>,
     /// The factorisation's settings.
     pub settings: Settings,
-    /// How the pairs' contact energy is weighted.
-    pub weighting: ContactWeighting,
 }
 
 /// The displacements a solve produced.
@@ -67,14 +68,8 @@ pub(crate) enum Field {
     Pending(Pending),
 }
 
-/// A load step whose field waits until asked for.
-#[derive(Debug, Clone, PartialEq)]
-pub(crate) enum Pending {
-    /// Under the strip weighting ([`history::recover`]).
-    Strip(history::Pending),
-    /// Under the mortar weighting ([`mortar_history::recover`]).
-    Mortar(mortar_history::Pending),
-}
+/// A load step whose field waits until asked for ([`history::recover`]).
+pub(crate) use history::Pending;
 
 /// What a successful solve produced.
 pub(crate) struct Outcome {
@@ -93,6 +88,9 @@ pub(crate) struct Outcome {
 
 /// The contact state at convergence.
 pub(crate) struct ContactOutcome {
+    /// The final flags over the constraints' parts (what the next load
+    /// step starts from).
+    pub flags: Vec<bool>,
     /// Active flag of every element of B.
     pub active: Vec<bool>,
     /// Contact pressure of every element of B (zero when inactive).
@@ -103,9 +101,9 @@ pub(crate) struct ContactOutcome {
     pub friction: Option<FrictionOutcome>,
     /// The report (its `info` filled by the caller).
     pub report: ContactReport,
-    /// The state under the mortar weighting (then `active`, `pressure`
-    /// and `laws`, over the elements of B, are empty).
-    pub mortar: Option<mortar::MortarState>,
+    /// The weighted gaps' state, when some pair is under the mortar
+    /// weighting.
+    pub mortar: Option<MortarState>,
 }
 
 /// Solves `input` on `session`: without contact when `options` is `None`.
@@ -118,91 +116,25 @@ pub(crate) fn solve(
     let (info, warnings) = prepare(session, input, timings)?;
     match options {
         None => solve_plain(session, input, info, timings, warnings),
-        Some(options) if input.weighting == ContactWeighting::Mortar => {
-            let start = mortar::Start::default();
-            mortar::solve_contact(session, input, options, (info, timings), (warnings, start))
-        }
-        Some(options) => solve_contact(session, input, options, info, timings, warnings),
+        Some(options) => solve_contact(session, input, options, None, (info, warnings), timings),
     }
 }
 
-/// A load step under the mortar weighting at load factor `t` (`scaled`:
-/// the problem with its loads and prescribed values times t; `unit`:
-/// unscaled), from the slave nodes' set `warm` (`None`: a contact solve's
-/// first set): a step of the session's history when it goes on (same
-/// `key` and settings), else a contact solve that begins one
-/// (docs/method.md §6.11). Also gives the interface factor before the
-/// step when a history went on (what a revert puts back).
-pub(crate) fn mortar_step(
-    session: &mut Session,
-    (scaled, unit): (&Input<'_>, &Input<'_>),
-    (options, key, revision): (&ContactOptions, history::Key, u64),
-    (t, warm, fresh): (f64, Option<&[bool]>, bool),
-    timings: &mut Timings,
-) -> Result<Option<(Outcome, Option<mortar_history::Snapshot>)>> {
-    ensure_unknowns(&session.dofs)?;
-    // Refused options leave the history to the next step.
-    mortar::check_options(options, scaled.pairs)?;
-    let goes_on = |h: &mortar_history::MortarHistory| h.continues(&key, scaled.settings);
-    let going_on = match session.mortar_history.as_ref() {
-        Some(h) if !fresh && goes_on(h) => session.mortar_history.take(),
-        _ => None,
-    };
-    if let Some(mut h) = going_on {
-        let before = h.snapshot();
-        let stepped = mortar_history::step(
-            session,
-            (scaled, unit),
-            options,
-            &mut h,
-            (t, warm, revision),
-            timings,
-        );
-        if !matches!(stepped, Ok(Some(_))) {
-            // A failed step changes nothing: the factor goes back.
-            h.restore(&before);
-        }
-        session.mortar_history = Some(h);
-        return Ok(stepped?.map(|outcome| (outcome, Some(before))));
-    }
-    // A history this step does not continue comes back if the step fails.
-    let saved = session.mortar_history.take();
-    let fresh_solve = |session: &mut Session, timings: &mut Timings| {
-        let (info, warnings) = prepare(session, scaled, timings)?;
-        let start = mortar::Start { warm };
-        mortar::solve_settled(session, scaled, options, (info, timings), (warnings, start))
-    };
-    let (outcome, settled) = match fresh_solve(session, timings) {
-        Ok(solved) => solved,
-        Err(e) => {
-            if let Some(h) = saved {
-                mortar_history::put_back(session, unit, key.stiffness, h);
-            }
-            return Err(e);
-        }
-    };
-    if let Some(settled) = settled {
-        // Without a history the steps after solve afresh: slower, not
-        // wrong, so a history that cannot begin is no error.
-        let at = (key, revision);
-        let begun = mortar_history::begin(session, unit, options, at, (settled, outcome.info));
-        session.mortar_history = begun.ok();
-    }
-    Ok(Some((outcome, None)))
-}
+/// Where a contact solve's loop starts: the constraints' initial set
+/// (`None`), or a load step's warm start — the set and friction state a
+/// step before ended with.
+pub(crate) type Start<'s> = Option<(&'s [bool], &'s FrictionState)>;
 
 /// What every solve does first: the bodies' part assembled afresh (a load
 /// history's K₁, strip or mortar, is gone), with the solve's statistics
 /// begun and the tempering's warnings.
-fn prepare(
+pub(crate) fn prepare(
     session: &mut Session,
     input: &Input<'_>,
     timings: &mut Timings,
 ) -> Result<(SolveInfo, Vec<String>)> {
     ensure_unknowns(&session.dofs)?;
-    session.set_system_of(None);
-    session.history = None;
-    session.mortar_history = None;
+    session.holds = session::Holds::Nothing;
     let mesh = input.elements.mesh();
     let t0 = std::time::Instant::now();
     let softened = session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
@@ -242,9 +174,6 @@ pub(crate) fn restore(
     (log, friction): (&[Vec<usize>], &[f64]),
 ) -> Result<()> {
     session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
-    if let (Some(options), ContactWeighting::Mortar) = (options, input.weighting) {
-        return mortar::restore(session, input, options, log);
-    }
     if let Some(options) = options {
         let Session {
             dofs,
@@ -253,51 +182,58 @@ pub(crate) fn restore(
             system,
             ..
         } = &mut *session;
-        let set = contact_set(input, input.prescribed, contact, dofs, options, &[])?;
-        system.replay(log, &set, (dofs, pattern), input.prescribed);
+        let set = constraints(input, input.prescribed, contact, dofs, options, &[])?;
+        system.replay(log, &set, pattern);
         system.set_friction_loads(&set, friction);
     }
     Ok(())
 }
 
-/// The contact set of a built-in solve: B of the session's pairs, each
-/// element's law from its pair's softer body, the session's unknowns;
-/// frictional (docs/method.md §6.15) when a pair has μ > 0 under the
-/// frictionless law, starting from the slip `anchors` (empty: none).
-pub(crate) fn contact_set<'a>(
+/// The constraints of a built-in solve: the strip pairs' elements of B,
+/// each element's law from its pair's softer body, frictional
+/// (docs/method.md §6.15) when a pair has μ > 0 under the frictionless
+/// law, starting from the slip `anchors` (empty: none); and the mortar
+/// pairs' weighted gaps (§6.11) with the strip's penalty per pair; over the
+/// session's unknowns, for the prescribed displacements `prescribed`.
+pub(crate) fn constraints<'a>(
+    input: &Input<'a>,
+    prescribed: &'a [f64],
+    contact: &'a Discretisation,
+    dofs: &DofMap,
+    options: &ContactOptions,
+    anchors: &[f64],
+) -> Result<Constraints<'a>> {
+    let strip = strip_set(input, prescribed, contact, dofs, options, anchors)?;
+    let mortar = mortar_penalties(input, prescribed, contact, dofs, options)?;
+    Ok(Constraints::new(strip, mortar, prescribed))
+}
+
+/// The strip pairs' elements of B in one solve ([`constraints`]).
+fn strip_set<'a>(
     input: &Input<'a>,
     prescribed: &[f64],
-    contact: &'a [ContactElement],
+    contact: &'a Discretisation,
     dofs: &DofMap,
     options: &ContactOptions,
     anchors: &[f64],
 ) -> Result<ContactSet<'a>> {
     let mesh = input.elements.mesh();
-    let soft = pair_material(input, contact, dofs);
-    let laws = element_laws(mesh.index_base(), contact, &soft, mesh.size(), options)?;
+    let soft = pair_material(input, contact.elements(), dofs);
+    let strip = contact.strip();
+    let laws = element_laws(mesh.index_base(), strip, &soft, mesh.size(), options)?;
     let equation = |g: usize| Some(dofs.free(g)).filter(|&f| f != NOT_FREE);
-    let set = ContactSet::new(
-        Nodes::of(mesh),
-        contact,
-        laws,
-        equation,
-        prescribed,
-        options,
-    )?;
+    let set = ContactSet::new(Nodes::of(mesh), strip, laws, equation, prescribed, options)?;
     // μ = 0 everywhere is the frictionless set itself, bit for bit; the
     // stick law already ties the surfaces.
-    let frictional =
-        options.law == ContactLaw::Frictionless && input.pairs.iter().any(|p| p.friction > 0.0);
+    let frictional = options.law == ContactLaw::Frictionless
+        && strip.iter().any(|e| input.pairs[e.pair].friction > 0.0);
     if !frictional {
         return Ok(set);
     }
-    let mu: Vec<f64> = contact
-        .iter()
-        .map(|e| input.pairs[e.pair].friction)
-        .collect();
+    let mu: Vec<f64> = strip.iter().map(|e| input.pairs[e.pair].friction).collect();
     // The stick part's shear modulus: G_c = E_c / (2(1 + ν)) of the pair's
     // softer body, as in the stick law.
-    let shear: Vec<f64> = contact
+    let shear: Vec<f64> = strip
         .iter()
         .map(|e| {
             let s = soft(e.pair);
@@ -306,6 +242,35 @@ pub(crate) fn contact_set<'a>(
         })
         .collect();
     set.with_friction(&mu, &shear, anchors, prescribed)
+}
+
+/// The mortar pairs' weighted gaps as penalties in one solve
+/// ([`constraints`]); options the weighting does not serve are refused.
+fn mortar_penalties(
+    input: &Input<'_>,
+    prescribed: &[f64],
+    contact: &Discretisation,
+    dofs: &DofMap,
+    options: &ContactOptions,
+) -> Result<MortarSet> {
+    if !contact.has_mortar() {
+        return Ok(MortarSet::default());
+    }
+    let pairs = contact
+        .gaps()
+        .iter()
+        .map(|g| (g.pair, &input.pairs[g.pair]));
+    mortar_set::check_options(options, pairs)?;
+    let moduli = pair_moduli(input, contact.elements(), dofs, options);
+    let equation = |g: usize| Some(dofs.free(g)).filter(|&f| f != NOT_FREE);
+    let data = PenaltyData {
+        moduli: &moduli,
+        lambda: options.lambda.unwrap_or(input.elements.mesh().size()),
+        h_c: penalty_lengths(contact.elements()),
+        equation: &equation,
+        prescribed,
+    };
+    MortarSet::new(contact.gaps(), data)
 }
 
 /// The material that sets each pair's contact law: the softer body's, or
@@ -453,14 +418,15 @@ fn solve_plain(
     })
 }
 
-/// A contact solve: the active-set loop over the elements of B.
-fn solve_contact(
+/// A contact solve: the active-set loop over the constraints, from
+/// `start`, on the bodies' part [`prepare`] assembled.
+pub(crate) fn solve_contact(
     session: &mut Session,
     input: &Input<'_>,
     options: &ContactOptions,
-    mut info: SolveInfo,
+    start: Start<'_>,
+    (mut info, mut warnings): (SolveInfo, Vec<String>),
     timings: &mut Timings,
-    mut warnings: Vec<String>,
 ) -> Result<Outcome> {
     let mesh = input.elements.mesh();
     let Session {
@@ -471,7 +437,8 @@ fn solve_contact(
         system,
         ..
     } = &mut *session;
-    let set = contact_set(input, input.prescribed, contact, dofs, options, &[])?;
+    let anchors = start.map_or(&[][..], |(_, f)| &f.anchors);
+    let set = constraints(input, input.prescribed, contact, dofs, options, anchors)?;
     let interface = if options.refactorize {
         Vec::new()
     } else {
@@ -501,30 +468,30 @@ fn solve_contact(
         at,
         elements: &input.elements,
         set: &set,
-        prescribed: input.prescribed,
         interface: condense.then_some(interface),
         options: *options,
     };
-    let settled = ActiveSetLoop::new(loop_input, (chol, system), (timings, &mut info)).run()?;
+    let flags = start.map(|warm| history::warm_start(&set, warm));
+    let factor = (&mut *chol, &mut *system);
+    let settled = ActiveSetLoop::new(loop_input, factor, (timings, &mut info), flags).run()?;
     info.memory_bytes = session_memory(at, system, chol) + settled.condensed_bytes;
     info.relative_residual = system.relative_residual(pattern, &settled.x);
     info.condition_estimate = chol.condition_estimate();
     info.timings = *timings;
     finite_statistics(&info)?;
     conditioning_warning(&info, &mut warnings);
-    let u = dofs.expand(&settled.x, input.prescribed);
-    drop(settled.x);
-    let ue_of = |tri: &[usize; 3]| element_values(&u, tri);
+    let x = &settled.x;
     let verdict = (settled.active, &settled.friction[..]);
     let contact = contact_outcome(
-        (&set, input.pairs),
-        ue_of,
+        (&set, input.pairs, mesh),
+        |i| x[i],
         verdict,
         settled.history,
         info,
         &mut warnings,
     )?;
-
+    let u = dofs.expand(&settled.x, input.prescribed);
+    drop(settled.x);
     Ok(Outcome {
         u: Field::Global(u),
         log: system.log().to_vec(),
@@ -554,15 +521,15 @@ const SOLVE_ERROR_FACTOR: f64 = 10.0;
 /// element's pressure, against the largest pressure.
 fn precision_warning(
     set: &ContactSet<'_>,
-    ue_of: impl Fn(&[usize; 3]) -> [f64; 6],
+    ue_of: impl Fn(usize) -> [f64; 6],
     active: &[bool],
     pressure: &[f64],
     warnings: &mut Vec<String>,
 ) {
     let (mut worst, mut at) = (0.0f64, None);
-    for (k, el) in set.elements().iter().enumerate() {
+    for k in 0..set.len() {
         if active[k] {
-            let r = SOLVE_ERROR_FACTOR * set.pressure_rounding(k, &ue_of(&el.nodes));
+            let r = SOLVE_ERROR_FACTOR * set.pressure_rounding(k, &ue_of(k));
             if r > worst {
                 (worst, at) = (r, Some(k));
             }
@@ -602,64 +569,73 @@ pub(crate) fn finite_statistics(info: &SolveInfo) -> Result<()> {
     })
 }
 
-/// Pressures, contact length and penetration of the settled set (flags over
-/// parts, with its friction load factors), and its frictional state.
+/// Pressures, contact length and penetration of the settled set (flags
+/// over parts, with its friction load factors), the unknowns' values read
+/// by `value`, and its frictional state.
 pub(crate) fn contact_outcome(
-    (set, pairs): (&ContactSet<'_>, &[ContactPair]),
-    ue_of: impl Fn(&[usize; 3]) -> [f64; 6],
-    (mut active, friction): (Vec<bool>, &[f64]),
+    (set, pairs, mesh): (&Constraints<'_>, &[ContactPair], &Mesh),
+    value: impl Fn(usize) -> f64,
+    (active, friction): (Vec<bool>, &[f64]),
     history: Vec<report::IterationRecord>,
     info: SolveInfo,
     warnings: &mut Vec<String>,
 ) -> Result<ContactOutcome> {
-    let elements = set.elements();
-    let friction = set.friction_outcome(&active, friction, |k| ue_of(&elements[k].nodes));
-    if let Some(f) = &friction {
-        let name = |k: usize| format!("contact element {}", k + set.nodes().base);
+    let settled = set.settled((&active, friction), &value, mesh)?;
+    let strip = set.strip();
+    let name = |k: usize| format!("contact element {}", k + strip.nodes().base);
+    if let Some(f) = &settled.friction {
         ensure_finite(f.shear.iter().copied(), 1, "shear traction", name)?;
         ensure_finite(f.dissipation.iter().copied(), 1, "slip dissipation", name)?;
     }
-    active.truncate(set.len());
-    let mut pressure = vec![0.0; set.len()];
+    let ue_of = |k: usize| set.element_values(k, &value);
     let (mut lc, mut max_pen) = (0.0, 0.0f64);
-    for (k, el) in set.elements().iter().enumerate() {
-        if !active[k] {
-            continue;
-        }
-        let ue = ue_of(&el.nodes);
-        pressure[k] = set.pressure(k, &ue);
-        let opening = set.opening(k, &ue);
-        if el.edge_length > 0.0 {
-            max_pen = max_pen.max(-opening / el.edge_length);
+    for (k, el) in strip.elements().iter().enumerate() {
+        if settled.active[k] && el.edge_length > 0.0 {
+            max_pen = max_pen.max(-strip.opening(k, &ue_of(k)) / el.edge_length);
         }
     }
     // The part of each edge that faces the other side, the longer-active
     // family of each contact zone (§6.8, §6.11).
-    let (zones_lc, one_sided) =
-        crate::contact::conformity::contact_length_and_warnings(elements, &active, pairs);
+    let (zones_lc, one_sided) = crate::contact::conformity::contact_length_and_warnings(
+        strip.elements(),
+        &settled.active,
+        pairs,
+    );
     lc += zones_lc;
-    let name = |k: usize| format!("contact element {}", k + set.nodes().base);
-    ensure_finite(pressure.iter().copied(), 1, "contact pressure", name)?;
-    precision_warning(set, &ue_of, &active, &pressure, warnings);
+    ensure_finite(
+        settled.pressure.iter().copied(),
+        1,
+        "contact pressure",
+        name,
+    )?;
+    precision_warning(strip, ue_of, &settled.active, &settled.pressure, warnings);
     warnings.extend(one_sided);
+    let mut active_count = settled.active.iter().filter(|&&a| a).count();
+    if let Some(m) = &settled.mortar {
+        let on = || m.nodes.iter().filter(|n| n.active);
+        lc += on().map(|n| n.tributary).sum::<f64>();
+        max_pen = on().fold(max_pen, |worst, n| worst.max(-n.gap));
+        active_count += on().count();
+    }
     ensure_finite([lc, max_pen], 1, "contact length or penetration", |_| {
         "the contact report".to_string()
     })?;
     let report = ContactReport {
         iterations: history.len(),
-        elements: set.len(),
-        active: active.iter().filter(|&&a| a).count(),
+        elements: strip.len() + set.mortar().len(),
+        active: active_count,
         contact_length: lc,
         max_penetration: max_pen,
         history,
         info,
     };
     Ok(ContactOutcome {
-        active,
-        pressure,
-        laws: set.laws().to_vec(),
-        friction,
+        flags: active,
+        active: settled.active,
+        pressure: settled.pressure,
+        laws: strip.laws().to_vec(),
+        friction: settled.friction,
         report,
-        mortar: None,
+        mortar: settled.mortar,
     })
 }

@@ -11,7 +11,8 @@ use rayon::prelude::*;
 use super::memory;
 use super::report::{SolveInfo, Timings};
 use super::system::{AssembledSystem, SystemMatrix};
-use crate::contact::{self, ContactElement, ContactPair, ContactWeighting};
+use crate::contact::discretisation::Discretisation;
+use crate::contact::{ContactPair, ContactWeighting};
 use crate::error::{Result, preflight};
 use crate::fem::assembly::{DofMap, Pattern, Slots};
 use crate::fem::body::{Softened, Target};
@@ -81,23 +82,29 @@ pub(crate) struct Session {
     pub pattern: Pattern,
     /// Each mesh triangle's [`Slots`] in `pattern`.
     pub slots: Vec<Slots>,
-    /// The contact mesh B of all pairs.
-    pub contact: Vec<ContactElement>,
-    /// The weighted gaps of every pair under the mortar weighting (`None`
-    /// under the strip's).
-    pub mortar: Option<Vec<super::mortar::PairGaps>>,
+    /// How the contact pairs are discretised.
+    pub contact: Discretisation,
     /// The symbolic analysis and factor, made on first need.
     pub analysis: Option<Analysis>,
     /// The assembled system: the storage of the matrix values, allocated
     /// with the pattern.
     pub system: AssembledSystem,
-    /// The revision of the problem whose solution `system` holds the final
-    /// matrix of, if any.
-    system_of: Option<u64>,
-    /// A load history's state (K₁ factorised once for every step).
-    pub history: Option<super::history::History>,
-    /// A load history's state under the mortar weighting.
-    pub mortar_history: Option<super::mortar_history::MortarHistory>,
+    /// What `system` and the factor hold.
+    pub holds: Holds,
+}
+
+/// What the session's assembled system and factor hold, so that a call
+/// that fails can tell what it overwrote: a solve's final system, a load
+/// history's K₁ ([`super::history::History::intact`]), or neither.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Holds {
+    /// Nothing another call relies on (a call is assembling or
+    /// factorising).
+    Nothing,
+    /// The final system of the solve of this problem revision.
+    Solve(u64),
+    /// K₁ of the load history of this number.
+    History(u64),
 }
 
 impl Session {
@@ -110,22 +117,15 @@ impl Session {
         (pairs, weighting): (&[ContactPair], ContactWeighting),
     ) -> Result<Session> {
         let n_nodes = mesh.nodes().len();
-        let contact = contact::build_all(mesh, pairs)?;
-        let mortar = match weighting {
-            ContactWeighting::Strip => None,
-            ContactWeighting::Mortar => Some(super::mortar::build(mesh, pairs)?),
-        };
-        let need = memory::session_bytes(n_nodes, mesh.triangles().len(), contact.len());
+        let contact = Discretisation::build(mesh, pairs, weighting)?;
+        let need = memory::session_bytes(n_nodes, mesh.triangles().len(), contact.elements().len());
         preflight(need, "the solve's set-up (unknowns and matrix pattern)")?;
         let used = mesh.node_body();
         let dofs = DofMap::new(n_nodes, 2, |g| used[g / 2].is_some() && !is_prescribed(g));
         let mut elements: Vec<[usize; 3]> = mesh.triangles().to_vec();
-        // Under the mortar weighting no element of B is assembled: the
-        // pattern holds the weighted gaps' couplings instead (less fill).
-        match &mortar {
-            None => elements.extend(contact.iter().map(|e| e.nodes)),
-            Some(m) => elements.extend(super::mortar::cliques(m)),
-        }
+        // Every coupling a solve may switch on is in the pattern, so that
+        // the symbolic analysis survives any active set.
+        elements.extend(contact.couplings());
         let pattern = Pattern::build(&dofs, n_nodes, &elements);
         drop(elements);
         let system = AssembledSystem::new(pattern.nnz());
@@ -136,26 +136,15 @@ impl Session {
             pattern,
             slots,
             contact,
-            mortar,
             analysis: None,
             system,
-            system_of: None,
-            history: None,
-            mortar_history: None,
+            holds: Holds::Nothing,
         })
     }
 
     /// The structure epoch it was built for.
     pub fn structure(&self) -> u64 {
         self.structure
-    }
-
-    /// The condensed unknowns of its load history, strip or mortar (0
-    /// without one).
-    pub fn interface_len(&self) -> usize {
-        let strip = self.history.as_ref().map(|h| h.interface_len());
-        let mortar = self.mortar_history.as_ref().map(|h| h.interface_len());
-        strip.or(mortar).unwrap_or(0)
     }
 
     /// Assembles the bodies' part into the system (no contact element in)
@@ -171,20 +160,13 @@ impl Session {
             pattern: &self.pattern,
             slots: &self.slots,
         };
-        let n_contact = self.contact.len();
-        self.system
-            .assemble_body(elements, target, loads, n_contact)
-    }
-
-    /// Records that the assembled system is the final one of the solve of
-    /// problem revision `revision` (`None`: of no solve).
-    pub fn set_system_of(&mut self, revision: Option<u64>) {
-        self.system_of = revision;
+        self.system.assemble_body(elements, target, loads)
     }
 
     /// The final matrix of the solve of problem revision `revision`.
     pub fn system_matrix(&self, revision: u64) -> Option<SystemMatrix<'_>> {
-        (self.system_of == Some(revision)).then(|| self.system.matrix(&self.pattern, &self.dofs))
+        (self.holds == Holds::Solve(revision))
+            .then(|| self.system.matrix(&self.pattern, &self.dofs))
     }
 }
 

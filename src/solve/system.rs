@@ -4,22 +4,22 @@
 //! updated in place when the active set changes, so that the values (63 MB
 //! at 1M unknowns) are never copied.
 
-use crate::contact::ContactSet;
+use crate::contact::constraints::Constraints;
 use crate::error::Result;
 use crate::fem::assembly::{DofMap, NOT_FREE, Pattern, sym_mul_upper};
 use crate::fem::body::{self, Softened, Target};
 use crate::fem::element_loop::ElementLoop;
 
 /// The matrix values on a pattern, the right-hand side on its unknowns,
-/// and which contact elements they hold.
+/// and which contact constraints they hold.
 pub(crate) struct AssembledSystem {
     /// The upper triangle's values on the session's pattern.
     values: Vec<f64>,
     /// The load on the unknowns.
     rhs: Vec<f64>,
-    /// Whether each contact element's matrix and load are in.
+    /// Whether each contact part's matrix and load are in.
     contact: Vec<bool>,
-    /// The contact elements switched since the bodies' part was assembled,
+    /// The contact parts switched since the bodies' part was assembled,
     /// one list per update, in order: replaying it onto the bodies' part
     /// rebuilds the system to the last bit.
     log: Vec<Vec<usize>>,
@@ -56,7 +56,7 @@ impl AssembledSystem {
         &self.rhs
     }
 
-    /// Which contact elements the system holds.
+    /// Which contact parts the system holds.
     pub fn contact(&self) -> &[bool] {
         &self.contact
     }
@@ -66,146 +66,83 @@ impl AssembledSystem {
         8 * self.values.len()
     }
 
-    /// Assembles the bodies' part anew (no contact element in; `n_contact`
-    /// is the size of B). Returns the elements tempering softens.
+    /// Assembles the bodies' part anew (no contact part in). Returns the
+    /// elements tempering softens.
     pub fn assemble_body(
         &mut self,
         elements: &ElementLoop<'_>,
         target: Target<'_>,
         (f_ext, prescribed): (&[f64], &[f64]),
-        n_contact: usize,
     ) -> Result<Softened> {
         self.rhs = vec![0.0; target.dofs.n_free()];
-        self.contact = vec![false; n_contact];
+        self.contact.clear();
         self.log.clear();
         self.friction.clear();
         let (values, rhs) = (&mut self.values, &mut self.rhs);
         body::assemble(elements, target, f_ext, prescribed, values, rhs)
     }
 
-    /// Switches contact elements on and off so that the system holds those
+    /// Switches contact parts on and off so that the system holds those
     /// of `active`: each one that changed is added (+) or taken out (−)
     /// with its load. Taking out what was added leaves round-off of an ulp
     /// in the entries it touches.
-    pub fn set_contact(
-        &mut self,
-        active: &[bool],
-        set: &ContactSet<'_>,
-        structure: (&DofMap, &Pattern),
-        prescribed: &[f64],
-    ) {
-        // A frictional set has a stick part per element besides its
-        // normal part.
+    pub fn set_contact(&mut self, active: &[bool], set: &Constraints<'_>, pattern: &Pattern) {
         if self.contact.len() < set.parts() {
             self.contact.resize(set.parts(), false);
         }
         let changed: Vec<usize> = (0..set.parts())
             .filter(|&k| active[k] != self.contact[k])
             .collect();
-        self.toggle(changed, set, structure, prescribed);
-    }
-
-    /// Adds the dense matrix `ke` (row-major) on `unknowns` ([`NOT_FREE`]
-    /// for a prescribed DOF) and the right-hand-side entries `loads` (free
-    /// unknown, value): a mortar penalty, which no element of B describes.
-    /// The pattern must hold its couplings.
-    pub fn add_functional(
-        &mut self,
-        pattern: &Pattern,
-        unknowns: &[usize],
-        ke: &[f64],
-        loads: impl Iterator<Item = (usize, f64)>,
-    ) {
-        pattern.add_element(&mut self.values, unknowns, ke);
-        for (j, v) in loads {
-            self.rhs[j] += v;
-        }
+        self.toggle(changed, set, pattern);
     }
 
     /// Makes the right-hand side hold the friction loads of the load
     /// factors `c` (docs/method.md §6.15) in place of those it held.
-    pub fn set_friction_loads(&mut self, set: &ContactSet<'_>, c: &[f64]) {
+    pub fn set_friction_loads(&mut self, set: &Constraints<'_>, c: &[f64]) {
         let rhs = &mut self.rhs;
         set.add_friction_loads(c, &self.friction, |i, v| rhs[i] += v);
         self.friction.clear();
         self.friction.extend_from_slice(c);
     }
 
-    /// The contact elements switched since the bodies' part was assembled
+    /// The contact parts switched since the bodies' part was assembled
     /// ([`AssembledSystem::replay`]).
     pub fn log(&self) -> &[Vec<usize>] {
         &self.log
     }
 
-    /// Switches the elements of `log` (from [`AssembledSystem::log`]) in
+    /// Switches the parts of `log` (from [`AssembledSystem::log`]) in
     /// order: onto the same bodies' part, it rebuilds that system exactly.
-    pub fn replay(
-        &mut self,
-        log: &[Vec<usize>],
-        set: &ContactSet<'_>,
-        structure: (&DofMap, &Pattern),
-        prescribed: &[f64],
-    ) {
-        // A frictional set has a stick part per element besides its normal
-        // part (as in set_contact).
+    pub fn replay(&mut self, log: &[Vec<usize>], set: &Constraints<'_>, pattern: &Pattern) {
         if self.contact.len() < set.parts() {
             self.contact.resize(set.parts(), false);
         }
         for ks in log {
-            self.toggle(ks.clone(), set, structure, prescribed);
+            self.toggle(ks.clone(), set, pattern);
         }
     }
 
-    /// Switches each of `ks` (ascending) on or off.
-    fn toggle(
-        &mut self,
-        ks: Vec<usize>,
-        set: &ContactSet<'_>,
-        (dofs, pattern): (&DofMap, &Pattern),
-        prescribed: &[f64],
-    ) {
+    /// Switches each of `ks` (ascending) on or off: its matrix added to
+    /// the values, its load (which holds the prescribed displacements'
+    /// share) to the right-hand side.
+    fn toggle(&mut self, ks: Vec<usize>, set: &Constraints<'_>, pattern: &Pattern) {
         if ks.is_empty() {
             return;
         }
         for &k in &ks {
             let sign = if self.contact[k] { -1.0 } else { 1.0 };
-            let cs = set.stiffness(k);
-            let nodes = &set.elements()[set.element_of(k)].nodes;
-            let ke = cs.k.map(|v| sign * v);
-            let f0 = cs.f0.map(|v| sign * v);
-            self.scatter(dofs, pattern, nodes, &ke, &f0, prescribed);
+            let unknowns = set.unknowns(k);
+            let free: Vec<usize> = unknowns.iter().map(|u| u.unwrap_or(NOT_FREE)).collect();
+            let ke: Vec<f64> = set.matrix(k).iter().map(|v| sign * v).collect();
+            pattern.add_element(&mut self.values, &free, &ke);
+            for (u, f) in unknowns.iter().zip(set.load(k)) {
+                if let Some(i) = u {
+                    self.rhs[*i] += sign * f;
+                }
+            }
             self.contact[k] = !self.contact[k];
         }
         self.log.push(ks);
-    }
-
-    /// Adds an element matrix `ke` on `nodes` and its load `f0` minus the
-    /// prescribed displacements' share.
-    fn scatter(
-        &mut self,
-        dofs: &DofMap,
-        pattern: &Pattern,
-        nodes: &[usize; 3],
-        ke: &[f64; 36],
-        f0: &[f64; 6],
-        prescribed: &[f64],
-    ) {
-        let mut gd = [0usize; 6];
-        dofs.element_dofs(nodes, &mut gd);
-        let free = gd.map(|g| dofs.free(g));
-        pattern.add_element(&mut self.values, &free, ke);
-        for a in 0..6 {
-            if free[a] == NOT_FREE {
-                continue;
-            }
-            let mut r = f0[a];
-            for b in 0..6 {
-                if free[b] == NOT_FREE {
-                    r -= ke[a * 6 + b] * prescribed[gd[b]];
-                }
-            }
-            self.rhs[free[a]] += r;
-        }
     }
 
     /// ‖K x − f‖₂ / ‖f‖₂ (‖K x − f‖₂ when f = 0). The norms are summed

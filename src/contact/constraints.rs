@@ -1,0 +1,274 @@
+//! The constraints the active-set loop switches in one solve: the strip
+//! pairs' elements of B ([`ContactSet`], docs/method.md §3) and the mortar
+//! pairs' weighted gaps ([`MortarSet`], §6.11), numbered as one list of
+//! parts (the strip's first, then the weighted gaps).
+//!
+//! Each part is a clique of unknowns with, while it is on, a symmetric
+//! matrix and a load; the contact law gives a verdict on a solution (which
+//! parts are on, and the friction loads of the frictional ones) and the
+//! state the solve settles in. The loop, the condensed interface, the load
+//! history and the assembled system read parts through this type only;
+//! the shape of a part (a triangle of B, a slave node's gap) stays here.
+
+use super::mortar_set::{MortarSet, MortarState};
+use super::set::{ContactSet, FrictionOutcome, Verdict};
+use crate::error::Result;
+use crate::fem::assembly::Pattern;
+use crate::fem::mesh::Mesh;
+
+/// The constraints of one solve (module documentation).
+pub struct Constraints<'a> {
+    strip: ContactSet<'a>,
+    mortar: MortarSet,
+    /// Prescribed displacements, a global vector: the values of a part's
+    /// DOFs that have no unknown.
+    prescribed: &'a [f64],
+}
+
+/// The state a solve's constraints settled in, for its outputs.
+pub struct Settled {
+    /// The strip's elements: active flags, pressures (zero when off).
+    pub active: Vec<bool>,
+    /// See `active`.
+    pub pressure: Vec<f64>,
+    /// The frictional state, when frictional.
+    pub friction: Option<FrictionOutcome>,
+    /// The weighted gaps' state, when some pair is under the mortar
+    /// weighting.
+    pub mortar: Option<MortarState>,
+}
+
+impl<'a> Constraints<'a> {
+    /// The constraints of the strip set `strip` and the weighted gaps
+    /// `mortar`, for the prescribed displacements `prescribed` (a global
+    /// vector) they were built with.
+    pub fn new(strip: ContactSet<'a>, mortar: MortarSet, prescribed: &'a [f64]) -> Constraints<'a> {
+        Constraints {
+            strip,
+            mortar,
+            prescribed,
+        }
+    }
+
+    /// The strip pairs' elements of B in this solve.
+    pub fn strip(&self) -> &ContactSet<'a> {
+        &self.strip
+    }
+
+    /// The mortar pairs' weighted gaps in this solve.
+    pub fn mortar(&self) -> &MortarSet {
+        &self.mortar
+    }
+
+    /// Number of parts: the strip's ([`ContactSet::parts`]: two per
+    /// element when frictional) and one per weighted gap.
+    pub fn parts(&self) -> usize {
+        self.strip.parts() + self.mortar.len()
+    }
+
+    /// The part of the mortar set that part `k` is, if it is one.
+    fn mortar_part(&self, k: usize) -> Option<usize> {
+        k.checked_sub(self.strip.parts())
+    }
+
+    /// The unknown of each DOF of part `k` (`None`: prescribed).
+    pub fn unknowns(&self, k: usize) -> &[Option<usize>] {
+        match self.mortar_part(k) {
+            Some(m) => self.mortar.unknowns(m),
+            None => self.strip.unknowns(k),
+        }
+    }
+
+    /// Part `k`'s matrix while on, row-major over its DOFs.
+    pub fn matrix(&self, k: usize) -> &[f64] {
+        match self.mortar_part(k) {
+            Some(m) => self.mortar.matrix(m),
+            None => &self.strip.stiffness(k).k,
+        }
+    }
+
+    /// Part `k`'s load on its unknowns while on (zero on prescribed DOFs):
+    /// its initial gap's load less the prescribed displacements' share.
+    pub fn load(&self, k: usize) -> &[f64] {
+        match self.mortar_part(k) {
+            Some(m) => self.mortar.load(m),
+            None => self.strip.load(k),
+        }
+    }
+
+    /// The part of part `k`'s load of its initial gap alone (what does not
+    /// scale with a load step's factor), on every DOF.
+    pub fn gap_load(&self, k: usize) -> &[f64] {
+        match self.mortar_part(k) {
+            Some(m) => self.mortar.gap_load(m),
+            None => &self.strip.stiffness(k).f0,
+        }
+    }
+
+    /// The global DOF (2·node + component) of each DOF of part `k`.
+    fn global_dofs(&self, k: usize) -> Vec<usize> {
+        match self.mortar_part(k) {
+            Some(m) => self.mortar.dofs(m).to_vec(),
+            None => {
+                let nodes = &self.strip.elements()[self.strip.element_of(k)].nodes;
+                (0..6).map(|a| 2 * nodes[a / 2] + a % 2).collect()
+            }
+        }
+    }
+
+    /// The values of the DOFs of element `k` of the strip: `value(i)` of
+    /// unknown i, the prescribed value where a DOF has no unknown.
+    pub fn element_values(&self, k: usize, value: impl Fn(usize) -> f64) -> [f64; 6] {
+        let (tri, unknowns) = (&self.strip.elements()[k].nodes, self.strip.unknowns(k));
+        std::array::from_fn(|a| match unknowns[a] {
+            Some(i) => value(i),
+            None => self.prescribed[2 * tri[a / 2] + a % 2],
+        })
+    }
+
+    /// Adds part `k`'s energy (r·K r, Σ |K_jj| r_j²) for a global vector
+    /// `r` to `acc` (a near-null mode's judge, `solve::diagnostics`).
+    pub fn add_energy(&self, k: usize, acc: &mut (f64, f64), r: &[f64]) {
+        let re: Vec<f64> = self.global_dofs(k).iter().map(|&g| r[g]).collect();
+        let (ke, n) = (self.matrix(k), re.len());
+        for a in 0..n {
+            let kr: f64 = (0..n).map(|b| ke[a * n + b] * re[b]).sum();
+            acc.0 += re[a] * kr;
+            acc.1 += ke[a * n + a].abs() * re[a] * re[a];
+        }
+    }
+
+    /// The set a loop starts from: the strip's ([`ContactSet::initial_active`])
+    /// and the weighted gaps' ([`MortarSet::initial_active`]).
+    pub fn initial_active(&self) -> Vec<bool> {
+        let mut active = self.strip.initial_active();
+        active.extend(self.mortar.initial_active());
+        active
+    }
+
+    /// The interface unknowns: those with a nonzero coefficient in a part
+    /// (or in the strip's inversion test). Sorted.
+    pub fn interface_unknowns(&self) -> Vec<usize> {
+        let mut set = self.strip.interface_unknowns();
+        if !self.mortar.is_empty() {
+            for m in 0..self.mortar.len() {
+                set.extend(self.mortar.unknowns(m).iter().flatten());
+            }
+            set.sort_unstable();
+            set.dedup();
+        }
+        set
+    }
+
+    /// Value positions of `pattern` that hold zero in every matrix of the
+    /// solve: zero in the bodies' part `body` and in every part's matrix.
+    /// Sorted.
+    pub fn structural_zeros(&self, pattern: &Pattern, body: &[f64]) -> Vec<usize> {
+        if self.mortar.is_empty() {
+            return self.strip.structural_zeros(pattern, body);
+        }
+        // The weighted gaps couple every DOF of their nodes.
+        Vec::new()
+    }
+
+    /// The verdict of the contact law on the values of the unknowns read
+    /// by `value`, for a solve with the flags `current` and friction load
+    /// factors `c` ([`ContactSet::verdict`], [`MortarSet::verdict`]).
+    pub fn verdict(
+        &self,
+        (current, c): (&[bool], &[f64]),
+        value: impl Fn(usize) -> f64,
+    ) -> Result<Verdict> {
+        let ns = self.strip.parts();
+        let mut verdict = self
+            .strip
+            .verdict((&current[..ns], c), |k| self.element_values(k, &value))?;
+        verdict
+            .flags
+            .extend(self.mortar.verdict(&current[ns..], &value));
+        Ok(verdict)
+    }
+
+    /// Whether some part is frictional.
+    pub fn is_frictional(&self) -> bool {
+        self.strip.is_frictional()
+    }
+
+    /// The friction loads that go with the flags `active` at the loop's
+    /// start ([`ContactSet::stick_loads`]; empty when frictionless).
+    pub fn stick_loads(&self, active: &[bool]) -> Vec<f64> {
+        self.strip.stick_loads(&active[..self.strip.parts()])
+    }
+
+    /// Adds the friction loads of the load factors `c` against `c_ref`
+    /// ([`ContactSet::add_friction_loads`]).
+    pub fn add_friction_loads(&self, c: &[f64], c_ref: &[f64], add: impl FnMut(usize, f64)) {
+        self.strip.add_friction_loads(c, c_ref, add);
+    }
+
+    /// The frictional parts that slip under the flags `active`
+    /// ([`ContactSet::slipping`]).
+    pub fn slipping(&self, active: &[bool]) -> Vec<usize> {
+        self.strip.slipping(&active[..self.strip.parts()])
+    }
+
+    /// The flags a step starts from after one that ended with `warm` and
+    /// the friction loads `loads` ([`ContactSet::warm_flags`]).
+    pub fn warm_flags(&self, warm: &[bool], loads: &[f64]) -> Vec<bool> {
+        let ns = self.strip.parts();
+        if warm.len() < ns {
+            return warm.to_vec();
+        }
+        let mut flags = self.strip.warm_flags(&warm[..ns], loads);
+        flags.extend_from_slice(&warm[ns..]);
+        flags
+    }
+
+    /// The friction load factor of slipping part `k` for the values read
+    /// by `value`, slipping as the factor `c` does
+    /// ([`ContactSet::slip_load`]).
+    pub fn slip_load(&self, k: usize, value: impl Fn(usize) -> f64, c: f64) -> f64 {
+        let ue = self.element_values(k, value);
+        self.strip.slip_load(k, &ue, c)
+    }
+
+    /// The slip coupling of slipping part `k` ([`ContactSet::slip_coupling`]):
+    /// (μ, b_t, ∇p) over its DOFs, and its pressure for the DOFs' values
+    /// `rest`.
+    pub fn slip_coupling(&self, k: usize) -> Option<(f64, [f64; 6], [f64; 6])> {
+        self.strip.slip_coupling(k)
+    }
+
+    /// The pressure of strip part `k` for its DOFs' values `ue`.
+    pub fn slip_pressure(&self, k: usize, ue: &[f64; 6]) -> f64 {
+        self.strip.pressure(k, ue)
+    }
+
+    /// The state the flags `active` and friction load factors `c` settled
+    /// in for the unknowns' values read by `value`.
+    pub fn settled(
+        &self,
+        (active, c): (&[bool], &[f64]),
+        value: impl Fn(usize) -> f64,
+        mesh: &Mesh,
+    ) -> Result<Settled> {
+        let ns = self.strip.parts();
+        let elements = |k: usize| self.element_values(k, &value);
+        let friction = self.strip.friction_outcome(&active[..ns], c, elements);
+        let mortar = match self.mortar.is_empty() {
+            true => None,
+            false => Some(self.mortar.settled(&active[ns..], &value, mesh)?),
+        };
+        let n = self.strip.len();
+        let mut pressure = vec![0.0; n];
+        for k in (0..n).filter(|&k| active[k]) {
+            pressure[k] = self.strip.pressure(k, &self.element_values(k, &value));
+        }
+        Ok(Settled {
+            active: active[..n].to_vec(),
+            pressure,
+            friction,
+            mortar,
+        })
+    }
+}
