@@ -2464,6 +2464,20 @@ fn fortran_generic_test_passes_every_check() {
     assert!(out.contains(" 0 failed"), "{out}");
 }
 
+/// A client written against the bind(C) interfaces as they were before
+/// the generic interfaces (every argument, integer(c_size_t) lengths,
+/// rank-2 arrays where the C API takes flat buffers), built with
+/// -std=f2008: the contact patch test against its closed form.
+#[test]
+fn fortran_legacy_client_with_rank_2_arrays_passes_every_check() {
+    let exe = build_fortran(
+        &[&root().join("c_tests/fortran_legacy_f2008_test.f90")],
+        "fortran_legacy_f2008_test",
+    );
+    let out = run(&exe, &[]);
+    assert!(out.contains(" 0 failed"), "{out}");
+}
+
 #[test]
 fn fortran_seed_scene_example_matches_the_rust_numbers() {
     use tfem::scenes::TwoBlocks;
