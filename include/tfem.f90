@@ -75,100 +75,81 @@
 ! - Indices: pass index_base = 1 to tfem_set_mesh (or tfem_load_gmsh) and every node, triangle
 !   and edge number of later calls and messages is 1-based, like Fortran arrays. Numbers that a
 !   function documents as 0-based stay 0-based.
-! - NULL: a pointer argument that the C documentation says may be NULL is OPTIONAL here: omit it
-!   (by keywords, or at the end of the list) and the library receives NULL (Fortran 2018 and
-!   TS 29113: an absent optional argument of a bind(C) procedure is passed as a null pointer).
-!   This needs a Fortran 2018 compiler mode: gfortran's default or -std=f2018, not -std=f2008.
-!   A nullable model handle is passed by value, which a bind(C) interface cannot make OPTIONAL:
-!   its generic has a specific without it instead (tfem_last_error(buffer, length),
-!   tfem_last_error_length()).
+! - NULL: a pointer argument that the C documentation says may be NULL is OPTIONAL: omit it (by
+!   keyword, or at the end of the list) and the library receives NULL. A nullable model handle
+!   is passed by value: its generic has a specific without it instead (tfem_last_error(buffer,
+!   length), tfem_last_error_length()).
 ! - Kinds: C int is integer(c_int), the default integer of gfortran, ifx, flang and nvfortran
 !   (unless built with -fdefault-integer-8 or -i8), so default integer counts, indices and
 !   index arrays are passed as they are; double is real(c_double), int64_t integer(c_int64_t).
 !   Buffer lengths (size_t) accept default integers too: see the generic interfaces below.
-! - Character buffers are character(kind=c_char) arrays (or strings, for generic functions); a
-!   path is NUL-terminated: append c_null_char.
+! - Arrays: a numeric array that the C function takes as a flat buffer may have rank 1 or 2,
+!   each array of a call its own: xy(2, n_nodes), triangles(3, n_triangles), u(2, n_nodes),
+!   stresses(3, n_triangles). The library reads and writes the array's elements in array
+!   element order, in place (a contiguous array is not copied).
+! - Character buffers are character(kind=c_char) arrays or strings; a path is NUL-terminated:
+!   append c_null_char.
+!
+! Fortran 2008
+! This file compiles under -std=f2008 (and -std=f2018). It holds three modules, in this order:
+! - tfem_c, the C API as it is: every function as a bind(C) interface under its C name with its
+!   whole C documentation, every argument required (a nullable pointer too: pass a variable),
+!   arrays assumed-size (any rank, or an element as the start of a buffer), size_t lengths
+!   integer(c_size_t); the enums as named constants, the structs as bind(C) types. It is the
+!   module as it was before the generic interfaces.
+! - tfem_specifics, the module procedures behind the generic interfaces of tfem: not for direct
+!   use (their names and number may change). They are apart from tfem because a procedure has at
+!   most one explicit interface in a scoping unit: here a C name is tfem_c's bind(C) interface,
+!   called directly, or one that takes the nullable pointers as type(c_ptr).
+! - tfem, the module to use: tfem_c's constants, types and the interfaces of the functions that
+!   need nothing converted, and a generic interface for every other function.
 !
 ! Generic interfaces
-! A function with a size_t length or a nullable model handle is a generic interface named like
-! the C function. Its specifics:
-! - the bind(C) interface itself, under the C name too, so that calls with integer(c_size_t)
-!   lengths (the kind of integer(c_int64_t) on 64-bit platforms), procedure actual arguments and
-!   c_funloc keep working as before;
-! - private module procedures that convert and forward to it, named after the C function with
-!   suffixes: _i takes every length as integer(tfem_length_kind) (c_int where size_t is wider, so
-!   default integers and literals; c_int64_t where size_t is c_int) and passes a negative length
-!   as 0, so that the call fails with TFEM_STATUS_BUFFER_TOO_SMALL; _no_<arg> omits a nullable
-!   model handle and passes c_null_ptr; _str takes a character(len=*) string for each character
-!   buffer (generic resolution needs matching ranks, so without it a string would no longer
-!   reach the array dummy by sequence association).
-! All the lengths of one call share one kind. For the reason of _str, pass the buffers of a
-! generic function as arrays or array sections, not as their first element (u(1)). Counts and
-! indices (C int) are not generic: integer(c_int) is already the default integer.
-module tfem
+! A function with a size_t length, a nullable pointer or a nullable model handle is a generic
+! interface named like the C function. Its specifics take every combination of
+! - lengths as integer(c_size_t) (the kind of integer(c_int64_t) on 64-bit platforms) or as
+!   integer(tfem_length_kind) (c_int where size_t is wider, so default integers and literals;
+!   c_int64_t where size_t is c_int), all the lengths of one call of one kind; a negative
+!   length is passed as 0, so that the call fails with TFEM_STATUS_BUFFER_TOO_SMALL;
+! - each numeric array with rank 1 or 2: generic resolution matches ranks, so a rank-1 dummy
+!   alone would refuse the rank-2 arrays that sequence association passes to the assumed-size
+!   dummy of a bind(C) interface. The specific takes a rank-2 array as an assumed-size x(1, *)
+!   and passes it on to the C function's x(*) by sequence association, without a copy;
+! - character buffers as character(kind=c_char) arrays or as character(len=*) strings;
+! - a nullable model handle given or omitted (c_null_ptr is passed).
+! The specifics are named after the C function with suffixes: _opt (nullable pointers), _no_<arg>
+! (handle omitted), _str (strings), _i (tfem_length_kind lengths), _r<ranks> (a digit per numeric
+! array, when one has rank 2). Ranks above 2, and an array element as the start of a buffer
+! (u(1)), match no specific (a scalar dummy cannot be passed on as the start of an array): use
+! tfem_c's interface for them.
+! A function without a nullable pointer also keeps tfem_c's bind(C) interface among its specifics
+! (every argument, integer(c_size_t) lengths, rank-1 arrays), so that such calls, procedure actual
+! arguments and c_funloc reach it under the C name as before.
+! A function with a nullable pointer cannot. Fortran 2008 forbids OPTIONAL dummies in bind(C)
+! interfaces (Fortran 2018 allows them, from TS 29113), so the omitted arguments need a module
+! procedure; one whose OPTIONAL dummies have the types of the bind(C) interface's arguments is
+! indistinguishable from it (an OPTIONAL dummy tells no specifics apart), and specifics that leave
+! arguments out cannot tell two of one type apart when either is omitted by keyword
+! (tfem_get_sizes(m, n_triangles=n) and tfem_get_sizes(m, n_nodes=n)). Keeping the bind(C)
+! interface under the C name would thus lose omitted arguments that compiled before; tfem keeps
+! them, and its generic for such a function holds module procedures only. They pass an absent
+! argument as a null type(c_ptr) and a given one as its address (a zero-length array as that of a
+! private one-element array, so that the C function sees a buffer of length 0, not NULL). A
+! nullable array of rank 2 is a required argument of its specifics, the rank of an OPTIONAL dummy
+! telling none apart: given, it may have rank 1 or 2; omitted, it is absent. What these names lose
+! in tfem is the bind(C) procedure itself: for c_funloc or a procedure actual argument, take it
+! from tfem_c under another local name (use tfem_c, only: c_tfem_solve => tfem_solve). These
+! functions are:
+!   tfem_solve, tfem_get_sizes, tfem_get_mesh_triangles, tfem_get_boundary_edges,
+!   tfem_get_system_matrix_size, tfem_add_contact_pair, tfem_add_contact_pair_with_mesh,
+!   tfem_solve_contact, tfem_get_contact_slave_nodes, tfem_get_contact_pair_bodies, tfem_step,
+!   tfem_add_contact_pairs_auto, tfem_contact_add_side, tfem_contact_add_pair,
+!   tfem_contact_add_pair_with_mesh, tfem_contact_sizes, tfem_contact_evaluate, tfem_contact_update
+
+! The C API as it is (see "Fortran 2008" above).
+module tfem_c
   use, intrinsic :: iso_c_binding
   implicit none
-  private :: c_strlen, tfem_to_size_t
-  private :: tfem_last_error_i
-  private :: tfem_last_error_str
-  private :: tfem_last_error_str_i
-  private :: tfem_last_error_no_model
-  private :: tfem_last_error_no_model_i
-  private :: tfem_last_error_no_model_str
-  private :: tfem_last_error_no_model_str_i
-  private :: tfem_last_error_raw
-  private :: tfem_last_error_length_no_model
-  private :: tfem_get_warning_i
-  private :: tfem_get_warning_str
-  private :: tfem_get_warning_str_i
-  private :: tfem_get_warning_raw
-  private :: tfem_get_mesh_nodes_i
-  private :: tfem_get_mesh_triangles_i
-  private :: tfem_get_boundary_edges_i
-  private :: tfem_get_displacements_i
-  private :: tfem_get_element_strains_i
-  private :: tfem_get_element_stresses_i
-  private :: tfem_get_element_jacobians_i
-  private :: tfem_get_reactions_i
-  private :: tfem_get_system_matrix_i
-  private :: tfem_get_contact_active_i
-  private :: tfem_get_contact_pressure_i
-  private :: tfem_get_contact_elements_i
-  private :: tfem_get_contact_forces_i
-  private :: tfem_get_contact_nodal_pressures_i
-  private :: tfem_get_contact_slave_nodes_i
-  private :: tfem_get_contact_pair_nodal_pressures_i
-  private :: tfem_get_contact_gaps_i
-  private :: tfem_get_contact_mesh_i
-  private :: tfem_get_contact_element_pairs_i
-  private :: tfem_get_contact_element_apexes_i
-  private :: tfem_get_contact_state_i
-  private :: tfem_set_contact_state_i
-  private :: tfem_get_contact_shear_i
-  private :: tfem_get_contact_friction_state_i
-  private :: tfem_get_contact_dissipation_i
-  private :: tfem_contact_last_error_i
-  private :: tfem_contact_last_error_str
-  private :: tfem_contact_last_error_str_i
-  private :: tfem_contact_last_error_raw
-  private :: tfem_contact_last_error_length_no_context
-  private :: tfem_contact_nodes_i
-  private :: tfem_contact_pattern_i
-  private :: tfem_contact_evaluate_i
-  private :: tfem_contact_gather_i
-  private :: tfem_contact_scatter_add_i
-  private :: tfem_contact_update_i
-  private :: tfem_contact_get_active_i
-  private :: tfem_contact_set_active_i
-  private :: tfem_contact_gaps_i
-  private :: tfem_contact_pressures_i
-  private :: tfem_contact_elements_i
-  private :: tfem_contact_element_equations_i
-  private :: tfem_contact_element_blocks_i
-
-  !> The kind of the lengths the generic interfaces accept besides integer(c_size_t): c_int (the
-  !! default integer) where size_t is wider, else c_int64_t.
-  integer, parameter :: tfem_length_kind = merge(c_int, c_int64_t, c_size_t /= c_int)
 
   ! enum tfem_status: Outcome of a call. The numbers are part of the C ABI and are fixed forever: a
   ! code is never renumbered or reused, new codes are appended.
@@ -366,9 +347,7 @@ module tfem
       import
       type(c_ptr) :: res
     end function tfem_version
-  end interface
 
-  interface
     !> Creates an empty model. Returns NULL only if memory is exhausted. Free it with
     !! `tfem_destroy`.
     function tfem_create() &
@@ -376,9 +355,7 @@ module tfem
       import
       type(c_ptr) :: res
     end function tfem_create
-  end interface
 
-  interface
     !> Destroys a model and everything it owns. NULL is a no-op, and so is a pointer that is not a
     !! live model (destroyed already, or a contact context). A destroyed handle given to any
     !! function is refused (TFEM_STATUS_INVALID_ARGUMENT), as is a handle of the other kind — unless
@@ -389,9 +366,7 @@ module tfem
       import
       type(c_ptr), value :: model
     end subroutine tfem_destroy
-  end interface
 
-  interface tfem_last_error
     !> Copies the message of the last failed call on `model` (empty after a successful call) into
     !! `buffer` (`length` bytes including the final NUL). With `model` NULL, gives the calling
     !! thread's last error from calls that have no model (or were given a NULL one). A message
@@ -399,9 +374,7 @@ module tfem
     !! is returned; `tfem_last_error_length` gives the size needed. A `model` that is not a live
     !! model gives TFEM_STATUS_INVALID_ARGUMENT with the message saying so in `buffer`. (These, with
     !! `tfem_contact_last_error` and `tfem_get_warning`, are the only failed calls that write an
-    !! output: see the conventions at the top.) Fortran: `model` may be omitted (NULL is passed).
-    !! `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a negative
-    !! length is passed as 0. `buffer` may also be a character string.
+    !! output: see the conventions at the top.)
     function tfem_last_error(model, buffer, length) &
         bind(C, name="tfem_last_error") result(status)
       import
@@ -410,28 +383,16 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_last_error
-    module procedure tfem_last_error_i
-    module procedure tfem_last_error_str
-    module procedure tfem_last_error_str_i
-    module procedure tfem_last_error_no_model
-    module procedure tfem_last_error_no_model_i
-    module procedure tfem_last_error_no_model_str
-    module procedure tfem_last_error_no_model_str_i
-  end interface tfem_last_error
 
-  interface tfem_last_error_length
     !> Size in bytes (including the final NUL) of the message `tfem_last_error` would give. `model`
-    !! may be NULL (thread's last error). Fortran: `model` may be omitted (NULL is passed).
+    !! may be NULL (thread's last error).
     function tfem_last_error_length(model) &
         bind(C, name="tfem_last_error_length") result(res)
       import
       type(c_ptr), value :: model
       integer(c_size_t) :: res
     end function tfem_last_error_length
-    module procedure tfem_last_error_length_no_model
-  end interface tfem_last_error_length
 
-  interface
     !> Number of warnings: mesh validation (unused or coincident nodes, inverted or clockwise
     !! triangles), what `tfem_add_contact_pairs_auto` left out (a tag whose edges bound several
     !! bodies, an interface found again under other tags: kept until the pairs are cleared, the
@@ -449,9 +410,7 @@ module tfem
       integer(c_int), intent(inout) :: count
       integer(c_int) :: status
     end function tfem_warning_count
-  end interface
 
-  interface
     !> Writes to `size` the size in bytes (including the final NUL) of warning number `index`
     !! (0-based, whatever the index base): a buffer of this size holds all of it in
     !! `tfem_get_warning`. An index out of range is refused (TFEM_STATUS_INVALID_ARGUMENT), `size`
@@ -464,15 +423,11 @@ module tfem
       integer(c_size_t), intent(inout) :: size
       integer(c_int) :: status
     end function tfem_get_warning_size
-  end interface
 
-  interface tfem_get_warning
     !> Copies warning number `index` (0-based, whatever the index base) into `buffer` of `length`
     !! bytes, truncating like `tfem_last_error` (`tfem_get_warning_size` gives the size needed): the
     !! truncated warning is written with TFEM_STATUS_BUFFER_TOO_SMALL; on any other error (an index
-    !! out of range) `buffer` is unchanged. Fortran: `length` takes an integer(c_size_t) or a
-    !! default integer (kind tfem_length_kind); a negative length is passed as 0. `buffer` may also
-    !! be a character string.
+    !! out of range) `buffer` is unchanged.
     function tfem_get_warning(model, index, buffer, length) &
         bind(C, name="tfem_get_warning") result(status)
       import
@@ -482,12 +437,7 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_warning
-    module procedure tfem_get_warning_i
-    module procedure tfem_get_warning_str
-    module procedure tfem_get_warning_str_i
-  end interface tfem_get_warning
 
-  interface
     !> Sets the mesh: `n_nodes` nodes with coordinates `xy` (2·n_nodes values, x0 y0 x1 y1 …),
     !! `n_triangles` P1 triangles with `connectivity` (3·n_triangles node indices) and a body tag
     !! per triangle in `body_of_triangle`. `index_base` is 0 (C) or 1 (Fortran) and applies to every
@@ -511,9 +461,7 @@ module tfem
       integer(c_int), value :: index_base
       integer(c_int) :: status
     end function tfem_set_mesh
-  end interface
 
-  interface
     !> Loads a Gmsh MSH 4.1 mesh (ASCII or binary) from the file `path` (NUL-terminated; on Unix any
     !! bytes, as the file system takes them, elsewhere UTF-8): physical surfaces become bodies (tag
     !! = body), physical curves become boundary-edge tags (a curve in several groups under each of
@@ -533,9 +481,7 @@ module tfem
       integer(c_int), value :: index_base
       integer(c_int) :: status
     end function tfem_load_gmsh
-  end interface
 
-  interface
     !> Writes the solved model to the file `path` (NUL-terminated; on Unix any bytes, as for
     !! `tfem_load_gmsh`) as a VTK XML unstructured grid (`.vtu`, for ParaView): the mesh in its
     !! initial configuration, point data `displacement` (3 components, z = 0), cell data `body`,
@@ -552,9 +498,7 @@ module tfem
       character(kind=c_char), intent(in) :: path(*)
       integer(c_int) :: status
     end function tfem_write_vtu
-  end interface
 
-  interface
     !> Sets the tagged boundary edges: `n_edges` edges given by `edge_nodes` (2·n_edges node
     !! indices) with a tag each in `tags`. Tags name the edges for loads, constraints and contact
     !! pairs. Replaces previous edges (use `tfem_add_boundary_edges` to add one group at a time).
@@ -570,9 +514,7 @@ module tfem
       integer(c_int), intent(in) :: tags(*)
       integer(c_int) :: status
     end function tfem_set_boundary_edges
-  end interface
 
-  interface
     !> Sets the material of body `body`: Young's modulus `young` (> 0), Poisson ratio `poisson` (in
     !! (-1, 0.5) for plane strain, (-1, 0.5] for plane stress) and `plane` (a `PlaneMode`: 0 strain,
     !! 1 stress).
@@ -586,9 +528,7 @@ module tfem
       integer(c_int), value :: plane_mode
       integer(c_int) :: status
     end function tfem_set_material
-  end interface
 
-  interface
     !> Chooses Jmin: `mode` is a `TemperingMode` (0 auto, 1 lambda = `value`, 2 fixed Jmin =
     !! `value`, 3 off); `value` is ignored for 0 and 3.
     function tfem_set_tempering(model, mode, value) &
@@ -599,9 +539,7 @@ module tfem
       real(c_double), value :: value
       integer(c_int) :: status
     end function tfem_set_tempering
-  end interface
 
-  interface
     !> Chooses the fill-reducing ordering: `ordering` is an `OrderingMode` (0 auto, 1 AMD, 2 nested
     !! dissection); `parallel_subtrees` = 1 (default) factorises the two subtrees of a nested
     !! dissection concurrently, 0 as one tree. Results do not depend on either beyond round-off: the
@@ -615,9 +553,7 @@ module tfem
       integer(c_int), value :: parallel_subtrees
       integer(c_int) :: status
     end function tfem_set_ordering
-  end interface
 
-  interface
     !> Prescribes displacement component `component` (0 x, 1 y) of `node` to `value` (model length
     !! units). A component already prescribed a different value is refused
     !! (TFEM_STATUS_INVALID_ARGUMENT naming the node): one of the two would silently win. Call
@@ -631,9 +567,7 @@ module tfem
       real(c_double), value :: value
       integer(c_int) :: status
     end function tfem_fix
-  end interface
 
-  interface
     !> Prescribes component `component` to `value` on every node of the boundary edges tagged `tag`
     !! (interior edges too). All or nothing: a node already prescribed a different value (see
     !! `tfem_fix`) refuses the whole call.
@@ -646,9 +580,7 @@ module tfem
       real(c_double), value :: value
       integer(c_int) :: status
     end function tfem_fix_edges
-  end interface
 
-  interface
     !> Removes every prescribed displacement.
     function tfem_clear_constraints(model) &
         bind(C, name="tfem_clear_constraints") result(status)
@@ -656,9 +588,7 @@ module tfem
       type(c_ptr), value :: model
       integer(c_int) :: status
     end function tfem_clear_constraints
-  end interface
 
-  interface
     !> Applies pressure `pressure` on the boundary edges tagged `tag`: a stress (force per unit
     !! area, Pa in SI), positive pushing into the body; with the 2D convention of unit thickness, an
     !! edge of length ℓ carries the force ℓ·pressure per unit thickness. Loads add up.
@@ -670,9 +600,7 @@ module tfem
       real(c_double), value :: pressure
       integer(c_int) :: status
     end function tfem_add_pressure
-  end interface
 
-  interface
     !> Applies the traction (tx, ty) on the boundary edges tagged `tag`: a stress vector (force per
     !! unit area, Pa in SI); an edge of length ℓ carries ℓ·(tx, ty) per unit thickness. Loads add
     !! up.
@@ -685,9 +613,7 @@ module tfem
       real(c_double), value :: ty
       integer(c_int) :: status
     end function tfem_add_traction
-  end interface
 
-  interface
     !> Adds the point force (fx, fy) at `node`: force per unit thickness (N/m in SI). Loads add up.
     function tfem_add_nodal_force(model, node, fx, fy) &
         bind(C, name="tfem_add_nodal_force") result(status)
@@ -698,9 +624,7 @@ module tfem
       real(c_double), value :: fy
       integer(c_int) :: status
     end function tfem_add_nodal_force
-  end interface
 
-  interface
     !> Sets the body force (bx, by) of body `body`: force per unit volume (ρg, N/m³ in SI), acting
     !! on each unit area of the mesh per unit thickness.
     function tfem_set_body_force(model, body, bx, by) &
@@ -712,9 +636,7 @@ module tfem
       real(c_double), value :: by
       integer(c_int) :: status
     end function tfem_set_body_force
-  end interface
 
-  interface
     !> Removes every load.
     function tfem_clear_loads(model) &
         bind(C, name="tfem_clear_loads") result(status)
@@ -722,38 +644,31 @@ module tfem
       type(c_ptr), value :: model
       integer(c_int) :: status
     end function tfem_clear_loads
-  end interface
 
-  interface
     !> Solves a scene without contact. `info` may be NULL. A body that is not restrained gives
     !! TFEM_STATUS_SINGULAR naming it. A model with every DOF prescribed has nothing to solve:
     !! TFEM_STATUS_INVALID_STATE (before 2026-11-24 it was reported as SINGULAR, "free mode: "); so
-    !! also `tfem_solve_contact` and `tfem_step`. Fortran: `info` is OPTIONAL: omit it to pass NULL.
+    !! also `tfem_solve_contact` and `tfem_step`.
     function tfem_solve(model, info) &
         bind(C, name="tfem_solve") result(status)
       import
       type(c_ptr), value :: model
-      type(tfem_solve_info), intent(inout), optional :: info
+      type(tfem_solve_info), intent(inout) :: info
       integer(c_int) :: status
     end function tfem_solve
-  end interface
 
-  interface
     !> Sizes: nodes, triangles, and elements of the contact mesh of the last contact solve (0
-    !! otherwise). Any pointer may be NULL. Fortran: `n_nodes`, `n_triangles` and
-    !! `n_contact_elements` are OPTIONAL: omit them to pass NULL.
+    !! otherwise). Any pointer may be NULL.
     function tfem_get_sizes(model, n_nodes, n_triangles, n_contact_elements) &
         bind(C, name="tfem_get_sizes") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int), intent(inout), optional :: n_nodes
-      integer(c_int), intent(inout), optional :: n_triangles
-      integer(c_int), intent(inout), optional :: n_contact_elements
+      integer(c_int), intent(inout) :: n_nodes
+      integer(c_int), intent(inout) :: n_triangles
+      integer(c_int), intent(inout) :: n_contact_elements
       integer(c_int) :: status
     end function tfem_get_sizes
-  end interface
 
-  interface
     !> Number of boundary edges the model holds (each with its tag), from `tfem_set_boundary_edges`
     !! / `tfem_add_boundary_edges` or a Gmsh file's physical lines; see `tfem_get_boundary_edges`.
     function tfem_get_boundary_edge_count(model, count) &
@@ -763,14 +678,10 @@ module tfem
       integer(c_int), intent(inout) :: count
       integer(c_int) :: status
     end function tfem_get_boundary_edge_count
-  end interface
 
-  interface tfem_get_mesh_nodes
     !> Copies the node coordinates the model holds (x0 y0 x1 y1 …, 2·n_nodes values, n_nodes from
     !! `tfem_get_sizes`) into `xy` of `length` values. After `tfem_load_gmsh` node i (in the model's
-    !! index base) is the i-th node of the file's `$Nodes` section, whatever its Gmsh tag. Fortran:
-    !! `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a negative
-    !! length is passed as 0.
+    !! index base) is the i-th node of the file's `$Nodes` section, whatever its Gmsh tag.
     function tfem_get_mesh_nodes(model, xy, length) &
         bind(C, name="tfem_get_mesh_nodes") result(status)
       import
@@ -779,55 +690,41 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_mesh_nodes
-    module procedure tfem_get_mesh_nodes_i
-  end interface tfem_get_mesh_nodes
 
-  interface tfem_get_mesh_triangles
     !> Copies the triangles the model holds (3·n_triangles node indices in the model's index base,
     !! n_triangles from `tfem_get_sizes`) into `triangles` of `length` values and each triangle's
     !! body tag into `bodies` of `bodies_length` values; `bodies` may be NULL. Triangles given
     !! clockwise are held (and copied) counter-clockwise. Nothing is written unless both buffers are
-    !! large enough. Fortran: `bodies` is OPTIONAL: omit it to pass NULL. `length` and
-    !! `bodies_length` take integer(c_size_t) or default integers (kind tfem_length_kind), all of
-    !! one kind; a negative length is passed as 0.
+    !! large enough.
     function tfem_get_mesh_triangles(model, triangles, length, bodies, bodies_length) &
         bind(C, name="tfem_get_mesh_triangles") result(status)
       import
       type(c_ptr), value :: model
       integer(c_int), intent(inout) :: triangles(*)
       integer(c_size_t), value :: length
-      integer(c_int), intent(inout), optional :: bodies(*)
+      integer(c_int), intent(inout) :: bodies(*)
       integer(c_size_t), value :: bodies_length
       integer(c_int) :: status
     end function tfem_get_mesh_triangles
-    module procedure tfem_get_mesh_triangles_i
-  end interface tfem_get_mesh_triangles
 
-  interface tfem_get_boundary_edges
     !> Copies the boundary edges the model holds (2·count node indices in the model's index base,
     !! count from `tfem_get_boundary_edge_count`) into `edges` of `length` values and each edge's
     !! tag into `tags` of `tags_length` values, in the order they were given (a Gmsh file's: its
     !! line elements, by physical group); `tags` may be NULL. Nothing is written unless both buffers
-    !! are large enough. Fortran: `tags` is OPTIONAL: omit it to pass NULL. `length` and
-    !! `tags_length` take integer(c_size_t) or default integers (kind tfem_length_kind), all of one
-    !! kind; a negative length is passed as 0.
+    !! are large enough.
     function tfem_get_boundary_edges(model, edges, length, tags, tags_length) &
         bind(C, name="tfem_get_boundary_edges") result(status)
       import
       type(c_ptr), value :: model
       integer(c_int), intent(inout) :: edges(*)
       integer(c_size_t), value :: length
-      integer(c_int), intent(inout), optional :: tags(*)
+      integer(c_int), intent(inout) :: tags(*)
       integer(c_size_t), value :: tags_length
       integer(c_int) :: status
     end function tfem_get_boundary_edges
-    module procedure tfem_get_boundary_edges_i
-  end interface tfem_get_boundary_edges
 
-  interface tfem_get_displacements
     !> Copies the nodal displacements (u0 v0 u1 v1 …, 2·n_nodes values) of the last solve into `out`
-    !! of `length` values. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
-    !! tfem_length_kind); a negative length is passed as 0.
+    !! of `length` values.
     function tfem_get_displacements(model, out, length) &
         bind(C, name="tfem_get_displacements") result(status)
       import
@@ -836,13 +733,9 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_displacements
-    module procedure tfem_get_displacements_i
-  end interface tfem_get_displacements
 
-  interface tfem_get_element_strains
     !> Copies element strains (ε_xx ε_yy γ_xy per triangle, engineering shear, 3·n_triangles
-    !! values), computed on request. Fortran: `length` takes an integer(c_size_t) or a default
-    !! integer (kind tfem_length_kind); a negative length is passed as 0.
+    !! values), computed on request.
     function tfem_get_element_strains(model, out, length) &
         bind(C, name="tfem_get_element_strains") result(status)
       import
@@ -851,14 +744,10 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_element_strains
-    module procedure tfem_get_element_strains_i
-  end interface tfem_get_element_strains
 
-  interface tfem_get_element_stresses
     !> Copies element stresses (σ_xx σ_yy σ_xy per triangle, 3·n_triangles values; force per unit
     !! area, Pa in SI), computed on request. An overflow gives TFEM_STATUS_NUMERICAL_FAILURE naming
-    !! the triangle. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
-    !! tfem_length_kind); a negative length is passed as 0.
+    !! the triangle.
     function tfem_get_element_stresses(model, out, length) &
         bind(C, name="tfem_get_element_stresses") result(status)
       import
@@ -867,15 +756,10 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_element_stresses
-    module procedure tfem_get_element_stresses_i
-  end interface tfem_get_element_stresses
 
-  interface tfem_get_element_jacobians
     !> Copies J (twice the signed area, initial configuration) of every triangle as stored, that is
     !! after the turning of triangles numbered clockwise (see `tfem_set_mesh`): negative only for
-    !! the mesh's folds (n_triangles values). Needs only a mesh. Fortran: `length` takes an
-    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
-    !! as 0.
+    !! the mesh's folds (n_triangles values). Needs only a mesh.
     function tfem_get_element_jacobians(model, out, length) &
         bind(C, name="tfem_get_element_jacobians") result(status)
       import
@@ -884,17 +768,12 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_element_jacobians
-    module procedure tfem_get_element_jacobians_i
-  end interface tfem_get_element_jacobians
 
-  interface tfem_get_reactions
     !> Copies reaction forces (Rx Ry per node, 2·n_nodes values; force per unit thickness, N/m in
     !! SI; zero at DOFs that are not prescribed), computed on request. `tfem_solve` and
     !! `tfem_solve_contact` bound their rounding per body and warn (`tfem_get_warning`), naming the
     !! body, where its reactions may carry fewer than six correct digits (a "rigid" body given a
     !! huge Young's modulus: prescribe its motion with a modulus like its neighbours' instead).
-    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
-    !! negative length is passed as 0.
     function tfem_get_reactions(model, out, length) &
         bind(C, name="tfem_get_reactions") result(status)
       import
@@ -903,24 +782,18 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_reactions
-    module procedure tfem_get_reactions_i
-  end interface tfem_get_reactions
 
-  interface
     !> Sizes of the stiffness matrix of the last solve (see `tfem_get_system_matrix`): `n` unknowns
-    !! and `nnz` stored entries of its upper triangle. Either pointer may be NULL. Fortran: `n` and
-    !! `nnz` are OPTIONAL: omit them to pass NULL.
+    !! and `nnz` stored entries of its upper triangle. Either pointer may be NULL.
     function tfem_get_system_matrix_size(model, n, nnz) &
         bind(C, name="tfem_get_system_matrix_size") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int64_t), intent(inout), optional :: n
-      integer(c_int64_t), intent(inout), optional :: nnz
+      integer(c_int64_t), intent(inout) :: n
+      integer(c_int64_t), intent(inout) :: nnz
       integer(c_int) :: status
     end function tfem_get_system_matrix_size
-  end interface
 
-  interface tfem_get_system_matrix
     !> Copies the stiffness matrix K of the last solve on its unknowns (the DOFs left after
     !! Dirichlet elimination), the system K u = f whose solution `tfem_get_displacements` returns;
     !! for a contact solve it holds the contact elements active at convergence. Upper triangle in
@@ -930,9 +803,6 @@ module tfem
     !! `tfem_get_displacements`, in the index base (2·node + component for base 0). Every buffer is
     !! checked before any is written. Like every result it outlives a failed solve (which rebuilds
     !! it bit for bit) and is discarded by a change of the problem (TFEM_STATUS_INVALID_STATE).
-    !! Fortran: `col_ptr_length`, `row_idx_length`, `values_length` and `dofs_length` take
-    !! integer(c_size_t) or default integers (kind tfem_length_kind), all of one kind; a negative
-    !! length is passed as 0.
     function tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
         values_length, dofs, dofs_length) &
         bind(C, name="tfem_get_system_matrix") result(status)
@@ -948,10 +818,7 @@ module tfem
       integer(c_size_t), value :: dofs_length
       integer(c_int) :: status
     end function tfem_get_system_matrix
-    module procedure tfem_get_system_matrix_i
-  end interface tfem_get_system_matrix
 
-  interface
     !> Tempered elasticity stiffness of one P1 triangle with corners `xy` (x1 y1 x2 y2 x3 y3): K =
     !! B̂ᵀ D B̂ / (2·max(J, jmin)), written row-major into `out` (36 values, DOFs u1 v1 u2 v2 u3
     !! v3). `jmin` > 0 tempers; `jmin` = 0 is plain FEM (divides by |J|, fails for J = 0). Pure and
@@ -967,9 +834,7 @@ module tfem
       real(c_double), intent(inout) :: out(*)
       integer(c_int) :: status
     end function tfem_element_stiffness
-  end interface
 
-  interface
     !> Tempered Laplacian stiffness of one P1 triangle: K_ij = κ g_i·g_j / (2·max(J, jmin)),
     !! row-major into `out` (9 values). `jmin` as in `tfem_element_stiffness`. Pure and thread-safe.
     function tfem_laplacian_stiffness(xy, kappa, jmin, out) &
@@ -981,36 +846,31 @@ module tfem
       real(c_double), intent(inout) :: out(*)
       integer(c_int) :: status
     end function tfem_laplacian_stiffness
-  end interface
 
-  interface
     !> Declares a potential contact interface between the boundary edges tagged `tag_a` (one body)
     !! and `tag_b` (another body). The contact mesh B is built from matching nodes when they match
     !! (a small normal gap is allowed), else by triangulating the strip between the two interfaces
     !! (each must be one open chain of edges). Writes the pair's index (0-based) to `pair` (may be
     !! NULL). A pair declared already, or one whose tags share boundary edges with both tags of a
     !! declared pair (the same interface under other tags, which would count twice), is refused with
-    !! TFEM_STATUS_INVALID_CONTACT. Fortran: `pair` is OPTIONAL: omit it to pass NULL.
+    !! TFEM_STATUS_INVALID_CONTACT.
     function tfem_add_contact_pair(model, tag_a, tag_b, pair) &
         bind(C, name="tfem_add_contact_pair") result(status)
       import
       type(c_ptr), value :: model
       integer(c_int), value :: tag_a
       integer(c_int), value :: tag_b
-      integer(c_int), intent(inout), optional :: pair
+      integer(c_int), intent(inout) :: pair
       integer(c_int) :: status
     end function tfem_add_contact_pair
-  end interface
 
-  interface
     !> Declares a contact pair with a user-made contact mesh B: `n_triangles` triangles in
     !! `connectivity` (3 per triangle) over nodes of the two interfaces. Wrongly oriented triangles
     !! are flipped; their number goes to `flipped` (may be NULL), the pair's index to `pair` (may be
     !! NULL). A triangle given twice (the same three nodes, in any order) is refused with
     !! TFEM_STATUS_INVALID_CONTACT naming both triangles. The triangles are the contact: a pair of
     !! tags declared already, or sharing edges with a declared pair, is not refused here (several
-    !! meshes may cover parts of one interface), so do not give a part twice. Fortran: `pair` and
-    !! `flipped` are OPTIONAL: omit them to pass NULL.
+    !! meshes may cover parts of one interface), so do not give a part twice.
     function tfem_add_contact_pair_with_mesh(model, tag_a, tag_b, n_triangles, connectivity, pair, &
         flipped) &
         bind(C, name="tfem_add_contact_pair_with_mesh") result(status)
@@ -1020,13 +880,11 @@ module tfem
       integer(c_int), value :: tag_b
       integer(c_int), value :: n_triangles
       integer(c_int), intent(in) :: connectivity(*)
-      integer(c_int), intent(inout), optional :: pair
-      integer(c_int), intent(inout), optional :: flipped
+      integer(c_int), intent(inout) :: pair
+      integer(c_int), intent(inout) :: flipped
       integer(c_int) :: status
     end function tfem_add_contact_pair_with_mesh
-  end interface
 
-  interface
     !> Fills `options` with the defaults: frictionless law, E_c and λ derived from the model,
     !! linearised inversion test, 50 iterations.
     function tfem_contact_options_default(options) &
@@ -1035,30 +893,23 @@ module tfem
       type(tfem_contact_options), intent(inout) :: options
       integer(c_int) :: status
     end function tfem_contact_options_default
-  end interface
 
-  interface
     !> Solves the contact problem by the active-set loop over inverted contact elements (under the
     !! mortar weighting, `tfem_set_contact_weighting`, over the slave nodes whose weighted gap is
     !! negative). `options` may be NULL (defaults); `report` may be NULL. TFEM_STATUS_NOT_CONVERGED
     !! (cycle or iteration cap) gives the history in the message; the model is then unchanged. Every
-    !! DOF prescribed: TFEM_STATUS_INVALID_STATE (before 2026-11-24, SINGULAR). Fortran: `options`
-    !! and `report` are OPTIONAL: omit them to pass NULL.
+    !! DOF prescribed: TFEM_STATUS_INVALID_STATE (before 2026-11-24, SINGULAR).
     function tfem_solve_contact(model, options, report) &
         bind(C, name="tfem_solve_contact") result(status)
       import
       type(c_ptr), value :: model
-      type(tfem_contact_options), intent(in), optional :: options
-      type(tfem_contact_report), intent(inout), optional :: report
+      type(tfem_contact_options), intent(in) :: options
+      type(tfem_contact_report), intent(inout) :: report
       integer(c_int) :: status
     end function tfem_solve_contact
-  end interface
 
-  interface tfem_get_contact_active
     !> Copies the active flag (1 active, 0 not) of every contact element of the last contact solve
-    !! (n_contact_elements values, see `tfem_get_sizes`). Fortran: `length` takes an
-    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
-    !! as 0.
+    !! (n_contact_elements values, see `tfem_get_sizes`).
     function tfem_get_contact_active(model, out, length) &
         bind(C, name="tfem_get_contact_active") result(status)
       import
@@ -1067,14 +918,10 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_active
-    module procedure tfem_get_contact_active_i
-  end interface tfem_get_contact_active
 
-  interface tfem_get_contact_pressure
     !> Copies the contact pressure of every contact element (n_contact_elements values): the normal
     !! stress −n·σ·n in the element (force per unit area, Pa in SI), positive in compression, 0 when
-    !! inactive. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
-    !! tfem_length_kind); a negative length is passed as 0.
+    !! inactive.
     function tfem_get_contact_pressure(model, out, length) &
         bind(C, name="tfem_get_contact_pressure") result(status)
       import
@@ -1083,15 +930,10 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_pressure
-    module procedure tfem_get_contact_pressure_i
-  end interface tfem_get_contact_pressure
 
-  interface tfem_get_contact_elements
     !> Copies the nodes of every contact element (3·n_contact_elements indices, in the model's index
     !! base), oriented so that J > 0 when the gap opens. Refused (TFEM_STATUS_INVALID_STATE) after a
-    !! solve under the mortar weighting, which uses no B. Fortran: `length` takes an
-    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
-    !! as 0.
+    !! solve under the mortar weighting, which uses no B.
     function tfem_get_contact_elements(model, out, length) &
         bind(C, name="tfem_get_contact_elements") result(status)
       import
@@ -1100,10 +942,7 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_elements
-    module procedure tfem_get_contact_elements_i
-  end interface tfem_get_contact_elements
 
-  interface
     !> Writes the report of the last contact solve to `report`.
     function tfem_get_contact_report(model, report) &
         bind(C, name="tfem_get_contact_report") result(status)
@@ -1112,9 +951,7 @@ module tfem
       type(tfem_contact_report), intent(inout) :: report
       integer(c_int) :: status
     end function tfem_get_contact_report
-  end interface
 
-  interface
     !> Adds tagged boundary edges to those already set (see `tfem_set_boundary_edges`): `n_edges`
     !! edges given by `edge_nodes` (2·n_edges node indices) with a tag each in `tags`, for instance
     !! one call per boundary group. An edge given again with a tag it already has is refused (its
@@ -1128,9 +965,7 @@ module tfem
       integer(c_int), intent(in) :: tags(*)
       integer(c_int) :: status
     end function tfem_add_boundary_edges
-  end interface
 
-  interface
     !> Writes the work of the external loads of the last solve, Σ f·u over every node (force ×
     !! length per unit thickness, J/m in SI): for a pressure load, the compliance ∫ p (−u·n) ds.
     function tfem_get_external_work(model, work) &
@@ -1140,14 +975,11 @@ module tfem
       real(c_double), intent(inout) :: work
       integer(c_int) :: status
     end function tfem_get_external_work
-  end interface
 
-  interface tfem_get_contact_forces
     !> Copies the force the contact exerts on every node in the last contact solve (fx fy per node,
     !! 2·n_nodes values; force per unit thickness, N/m in SI; zero off the contact interfaces),
     !! computed on request. The forces of one pair sum to zero; on a body they balance its loads and
-    !! reactions. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
-    !! tfem_length_kind); a negative length is passed as 0.
+    !! reactions.
     function tfem_get_contact_forces(model, out, length) &
         bind(C, name="tfem_get_contact_forces") result(status)
       import
@@ -1156,10 +988,7 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_forces
-    module procedure tfem_get_contact_forces_i
-  end interface tfem_get_contact_forces
 
-  interface tfem_get_contact_nodal_pressures
     !> Copies the contact pressure at every node in the last contact solve (n_nodes values; force
     !! per unit area, Pa in SI, positive in compression; zero off the contact interfaces), computed
     !! on request: the traction read from both sides of the interface (the mean of a node's normal
@@ -1171,8 +1000,7 @@ module tfem
     !! matching and non-matching interfaces alike. Each pair is read with its own forces; a node on
     !! several pairs (where three bodies meet) gets their normal forces over their tributaries
     !! together: the pressure where two pairs continue one face, the tributary-weighted mean of its
-    !! faces' pressures at a corner. Fortran: `length` takes an integer(c_size_t) or a default
-    !! integer (kind tfem_length_kind); a negative length is passed as 0.
+    !! faces' pressures at a corner.
     function tfem_get_contact_nodal_pressures(model, out, length) &
         bind(C, name="tfem_get_contact_nodal_pressures") result(status)
       import
@@ -1181,10 +1009,7 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_nodal_pressures
-    module procedure tfem_get_contact_nodal_pressures_i
-  end interface tfem_get_contact_nodal_pressures
 
-  interface
     !> Chooses how every contact pair's energy is weighted along its interface: `weighting` is a
     !! `ContactWeightingMode` (0 strip, the default: the elements of the contact mesh B; 1 mortar:
     !! one weighted gap per node of each pair's coarser side, exact on the contact patch test
@@ -1204,9 +1029,7 @@ module tfem
       integer(c_int), value :: weighting
       integer(c_int) :: status
     end function tfem_set_contact_weighting
-  end interface
 
-  interface
     !> Writes the contact weighting (a `ContactWeightingMode`: 0 strip, 1 mortar) into `*weighting`.
     function tfem_get_contact_weighting(model, weighting) &
         bind(C, name="tfem_get_contact_weighting") result(status)
@@ -1215,9 +1038,7 @@ module tfem
       integer(c_int), intent(inout) :: weighting
       integer(c_int) :: status
     end function tfem_get_contact_weighting
-  end interface
 
-  interface tfem_get_contact_slave_nodes
     !> Copies the state of every slave node after a contact solve under the mortar weighting, n =
     !! the report's `elements`, in the order of the pairs: `node` (n values: the slave node, in the
     !! model's index base), `tributary` (n values: m_i, the length its hat covers where it faces the
@@ -1226,24 +1047,19 @@ module tfem
     !! whose weighted gap is at the round-off of the displacements, as where the bodies touch
     !! without load, can read a pressure of that round-off of either sign). Any pointer may be NULL
     !! (that column is not written); `length` (>= n) is the size of each buffer given. Refused after
-    !! a solve under the strip weighting. Fortran: `node`, `tributary`, `gap` and `pressure` are
-    !! OPTIONAL: omit them to pass NULL. `length` takes an integer(c_size_t) or a default integer
-    !! (kind tfem_length_kind); a negative length is passed as 0.
+    !! a solve under the strip weighting.
     function tfem_get_contact_slave_nodes(model, node, tributary, gap, pressure, length) &
         bind(C, name="tfem_get_contact_slave_nodes") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int), intent(inout), optional :: node(*)
-      real(c_double), intent(inout), optional :: tributary(*)
-      real(c_double), intent(inout), optional :: gap(*)
-      real(c_double), intent(inout), optional :: pressure(*)
+      integer(c_int), intent(inout) :: node(*)
+      real(c_double), intent(inout) :: tributary(*)
+      real(c_double), intent(inout) :: gap(*)
+      real(c_double), intent(inout) :: pressure(*)
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_slave_nodes
-    module procedure tfem_get_contact_slave_nodes_i
-  end interface tfem_get_contact_slave_nodes
 
-  interface tfem_get_contact_pair_nodal_pressures
     !> Copies the contact pressure of contact pair `pair` (0-based, from `tfem_add_contact_pair` or
     !! `tfem_add_contact_pairs_auto`) alone at every node in the last contact solve (n_nodes values,
     !! as `tfem_get_contact_nodal_pressures`; zero off that pair's contact mesh), computed on
@@ -1254,8 +1070,6 @@ module tfem
     !! node of the other side past that end reads the other side's pressure near that end. An
     !! unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT naming it); before a contact solve, or
     !! after a change (declaring a pair is one), there are no results (TFEM_STATUS_INVALID_STATE).
-    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
-    !! negative length is passed as 0.
     function tfem_get_contact_pair_nodal_pressures(model, pair, out, length) &
         bind(C, name="tfem_get_contact_pair_nodal_pressures") result(status)
       import
@@ -1265,16 +1079,12 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_pair_nodal_pressures
-    module procedure tfem_get_contact_pair_nodal_pressures_i
-  end interface tfem_get_contact_pair_nodal_pressures
 
-  interface tfem_get_contact_gaps
     !> Copies the normal gap at every node in the last contact solve (n_nodes values, model length
     !! units; zero off the contact interfaces), computed on request: the smallest, over the contact
     !! elements at the node, of the distance of an element's apex from its interface edge in the
     !! deformed configuration (linearised). Positive: open; negative: the bodies interpenetrate (by
-    !! O(h²), the penalty of the contact elements). Fortran: `length` takes an integer(c_size_t) or
-    !! a default integer (kind tfem_length_kind); a negative length is passed as 0.
+    !! O(h²), the penalty of the contact elements).
     function tfem_get_contact_gaps(model, out, length) &
         bind(C, name="tfem_get_contact_gaps") result(status)
       import
@@ -1283,10 +1093,7 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_gaps
-    module procedure tfem_get_contact_gaps_i
-  end interface tfem_get_contact_gaps
 
-  interface
     !> Writes the number of elements of the contact mesh B of the declared contact pairs, available
     !! before any solve (0 without pairs).
     function tfem_get_contact_mesh_size(model, n_elements) &
@@ -1296,14 +1103,11 @@ module tfem
       integer(c_int), intent(inout) :: n_elements
       integer(c_int) :: status
     end function tfem_get_contact_mesh_size
-  end interface
 
-  interface tfem_get_contact_mesh
     !> Copies the nodes of every element of the contact mesh B of the declared contact pairs (3 per
     !! element, in the model's index base, oriented so that J > 0 when the gap opens), available
     !! before any solve: the same elements, in the same order, as `tfem_get_contact_elements` gives
-    !! after a contact solve. Fortran: `length` takes an integer(c_size_t) or a default integer
-    !! (kind tfem_length_kind); a negative length is passed as 0.
+    !! after a contact solve.
     function tfem_get_contact_mesh(model, out, length) &
         bind(C, name="tfem_get_contact_mesh") result(status)
       import
@@ -1312,14 +1116,9 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_mesh
-    module procedure tfem_get_contact_mesh_i
-  end interface tfem_get_contact_mesh
 
-  interface tfem_get_contact_element_pairs
     !> Copies, for every element of the contact mesh B (see `tfem_get_contact_mesh`), the index of
     !! its contact pair (0-based, as returned by `tfem_add_contact_pair`, whatever the index base).
-    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
-    !! negative length is passed as 0.
     function tfem_get_contact_element_pairs(model, out, length) &
         bind(C, name="tfem_get_contact_element_pairs") result(status)
       import
@@ -1328,14 +1127,10 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_element_pairs
-    module procedure tfem_get_contact_element_pairs_i
-  end interface tfem_get_contact_element_pairs
 
-  interface tfem_get_contact_element_apexes
     !> Copies, for every element of the contact mesh B (see `tfem_get_contact_mesh`), its apex: the
     !! node (in the model's index base) alone on its side of the interface, whose distance from the
-    !! element's interface edge is the element's gap. Fortran: `length` takes an integer(c_size_t)
-    !! or a default integer (kind tfem_length_kind); a negative length is passed as 0.
+    !! element's interface edge is the element's gap.
     function tfem_get_contact_element_apexes(model, out, length) &
         bind(C, name="tfem_get_contact_element_apexes") result(status)
       import
@@ -1344,25 +1139,19 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_element_apexes
-    module procedure tfem_get_contact_element_apexes_i
-  end interface tfem_get_contact_element_apexes
 
-  interface
     !> Writes the bodies of contact pair `pair` (0-based, as returned by `tfem_add_contact_pair`):
     !! `body_a` carries the pair's first tag, `body_b` its second. Either pointer may be NULL.
-    !! Fortran: `body_a` and `body_b` are OPTIONAL: omit them to pass NULL.
     function tfem_get_contact_pair_bodies(model, pair, body_a, body_b) &
         bind(C, name="tfem_get_contact_pair_bodies") result(status)
       import
       type(c_ptr), value :: model
       integer(c_int), value :: pair
-      integer(c_int), intent(inout), optional :: body_a
-      integer(c_int), intent(inout), optional :: body_b
+      integer(c_int), intent(inout) :: body_a
+      integer(c_int), intent(inout) :: body_b
       integer(c_int) :: status
     end function tfem_get_contact_pair_bodies
-  end interface
 
-  interface
     !> Sets the number of threads the model's solves run on: 1 <= `threads` <= 1024 gives the model
     !! a pool of its own (1: no parallelism at all, for a host that runs its own OpenMP or MPI
     !! threads); 0 (the default) uses the process-wide pool, with as many threads as cores or the
@@ -1375,9 +1164,7 @@ module tfem
       integer(c_int), value :: threads
       integer(c_int) :: status
     end function tfem_set_threads
-  end interface
 
-  interface
     !> Writes the number of threads the model's solves run on (see `tfem_set_threads`).
     function tfem_get_threads(model, threads) &
         bind(C, name="tfem_get_threads") result(status)
@@ -1386,9 +1173,7 @@ module tfem
       integer(c_int), intent(inout) :: threads
       integer(c_int) :: status
     end function tfem_get_threads
-  end interface
 
-  interface
     !> One quasi-static load step: the contact problem with the loads and prescribed displacements
     !! as set, scaled by `load_factor`, warm-started from the contact state of the last step (the
     !! initial set of a contact solve for the first, or a state given by `tfem_set_contact_state`).
@@ -1411,20 +1196,17 @@ module tfem
     !! on from the slip state it reached across a change of materials, options or prescribed DOFs
     !! between steps (with friction the answer depends on the path). Every DOF prescribed:
     !! TFEM_STATUS_INVALID_STATE. Under the mortar weighting (`tfem_set_contact_weighting`,
-    !! frictionless) a step is the same history over the slave nodes' weighted gaps. Fortran:
-    !! `options` and `report` are OPTIONAL: omit them to pass NULL.
+    !! frictionless) a step is the same history over the slave nodes' weighted gaps.
     function tfem_step(model, load_factor, options, report) &
         bind(C, name="tfem_step") result(status)
       import
       type(c_ptr), value :: model
       real(c_double), value :: load_factor
-      type(tfem_contact_options), intent(in), optional :: options
-      type(tfem_contact_report), intent(inout), optional :: report
+      type(tfem_contact_options), intent(in) :: options
+      type(tfem_contact_report), intent(inout) :: report
       integer(c_int) :: status
     end function tfem_step
-  end interface
 
-  interface
     !> Undoes the last load step: its results, and the contact state the next step starts from, go
     !! back to what they were before it. Once per step. Refused with TFEM_STATUS_INVALID_STATE, the
     !! model unchanged, once the mesh, its boundary edges, the contact pairs, friction on/off or the
@@ -1440,9 +1222,7 @@ module tfem
       type(c_ptr), value :: model
       integer(c_int) :: status
     end function tfem_revert_step
-  end interface
 
-  interface
     !> Writes to `size` the number of bytes of the contact state of the last load step (see
     !! `tfem_get_contact_state`).
     function tfem_get_contact_state_size(model, size) &
@@ -1452,15 +1232,12 @@ module tfem
       integer(c_size_t), intent(inout) :: size
       integer(c_int) :: status
     end function tfem_get_contact_state_size
-  end interface
 
-  interface tfem_get_contact_state
     !> Copies the contact state of the last load step into `buffer` (`length` bytes, at least
     !! `tfem_get_contact_state_size`): the active set and the factor of the condensed interface
     !! system, so that `tfem_set_contact_state` continues the history bit for bit (a restart, in
     !! this model or another one holding the same problem). Under the mortar weighting the set is
-    !! the slave nodes'. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
-    !! tfem_length_kind); a negative length is passed as 0.
+    !! the slave nodes'.
     function tfem_get_contact_state(model, buffer, length) &
         bind(C, name="tfem_get_contact_state") result(status)
       import
@@ -1469,10 +1246,7 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_state
-    module procedure tfem_get_contact_state_i
-  end interface tfem_get_contact_state
 
-  interface tfem_set_contact_state
     !> Continues the load history from a contact state (`length` bytes from
     !! `tfem_get_contact_state`): the next `tfem_step` starts from it. Refused, naming why, if the
     !! bytes are not such a state, belong to another contact mesh, or are frictional where no pair
@@ -1484,9 +1258,7 @@ module tfem
     !! edges, the pairs or friction on/off change before the next step (they remake the contact
     !! mesh), that step starts afresh and warns; a change of the prescribed DOFs keeps it. A
     !! frictional state waiting for a step under the stick law is refused by that step
-    !! (TFEM_STATUS_INVALID_ARGUMENT) until another state is set. Fortran: `length` takes an
-    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
-    !! as 0.
+    !! (TFEM_STATUS_INVALID_ARGUMENT) until another state is set.
     function tfem_set_contact_state(model, buffer, length) &
         bind(C, name="tfem_set_contact_state") result(status)
       import
@@ -1495,10 +1267,7 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_set_contact_state
-    module procedure tfem_set_contact_state_i
-  end interface tfem_set_contact_state
 
-  interface
     !> Sets Coulomb's friction coefficient μ ≥ 0 of contact pair `pair` (0-based, from
     !! `tfem_add_contact_pair`): stick while the shear stays within μ times the pressure, slip
     !! against the slip of the step beyond (docs/method.md §6.15). 0, the default, is frictionless,
@@ -1515,9 +1284,7 @@ module tfem
       real(c_double), value :: mu
       integer(c_int) :: status
     end function tfem_set_friction
-  end interface
 
-  interface
     !> Changes the value of displacement component `comp` (0 x, 1 y) of `node`, prescribed before by
     !! `tfem_fix` or `tfem_fix_edges`: the loads of a non-proportional load history, which goes on
     !! with the same factorisation (the set of prescribed DOFs is unchanged). A node not prescribed
@@ -1531,14 +1298,11 @@ module tfem
       real(c_double), value :: value
       integer(c_int) :: status
     end function tfem_set_prescribed
-  end interface
 
-  interface tfem_get_contact_shear
     !> Copies the shear traction τ = n·σ·t (Pa in SI; t = (−n_y, n_x), n the element's normal, see
     !! `tfem_get_contact_mesh`) of every contact element of the last contact solve or step
     !! (n_contact_elements values): 0 when open, |τ| ≤ μp when sticking, μp when slipping; all 0
-    !! when frictionless. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
-    !! tfem_length_kind); a negative length is passed as 0.
+    !! when frictionless.
     function tfem_get_contact_shear(model, out, length) &
         bind(C, name="tfem_get_contact_shear") result(status)
       import
@@ -1547,14 +1311,9 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_shear
-    module procedure tfem_get_contact_shear_i
-  end interface tfem_get_contact_shear
 
-  interface tfem_get_contact_friction_state
     !> Copies the frictional state of every contact element of the last contact solve or step
     !! (n_contact_elements values): 0 open, 1 stick, 2 slip (a frictionless solve: 2 where active).
-    !! Fortran: `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
-    !! negative length is passed as 0.
     function tfem_get_contact_friction_state(model, out, length) &
         bind(C, name="tfem_get_contact_friction_state") result(status)
       import
@@ -1563,14 +1322,10 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_friction_state
-    module procedure tfem_get_contact_friction_state_i
-  end interface tfem_get_contact_friction_state
 
-  interface tfem_get_contact_dissipation
     !> Copies the energy dissipated by slip in the last step (or solve) at every contact element
     !! (n_contact_elements values, J per unit thickness in SI): ½ τ Δγ_p ≥ 0; all 0 when
-    !! frictionless. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
-    !! tfem_length_kind); a negative length is passed as 0.
+    !! frictionless.
     function tfem_get_contact_dissipation(model, out, length) &
         bind(C, name="tfem_get_contact_dissipation") result(status)
       import
@@ -1579,10 +1334,7 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_get_contact_dissipation
-    module procedure tfem_get_contact_dissipation_i
-  end interface tfem_get_contact_dissipation
 
-  interface
     !> Declares a contact pair for every two boundary tags of different bodies whose edges face each
     !! other within `tolerance` (model length units: some edge of the one within `tolerance` of some
     !! edge of the other, outward normals opposed within 30°, each in front of the other,
@@ -1598,22 +1350,19 @@ module tfem
     !! consecutive indices: writes the first to `first` (may be NULL) and their number, 0 when
     !! nothing faces within the tolerance, to `count` (may be NULL). A negative or non-finite
     !! tolerance, an unknown tag or an interface whose contact mesh cannot be built is refused,
-    !! naming it, and nothing is added. Fortran: `tags`, `first` and `count` are OPTIONAL: omit them
-    !! to pass NULL.
+    !! naming it, and nothing is added.
     function tfem_add_contact_pairs_auto(model, n_tags, tags, tolerance, first, count) &
         bind(C, name="tfem_add_contact_pairs_auto") result(status)
       import
       type(c_ptr), value :: model
       integer(c_int), value :: n_tags
-      integer(c_int), intent(in), optional :: tags(*)
+      integer(c_int), intent(in) :: tags(*)
       real(c_double), value :: tolerance
-      integer(c_int), intent(inout), optional :: first
-      integer(c_int), intent(inout), optional :: count
+      integer(c_int), intent(inout) :: first
+      integer(c_int), intent(inout) :: count
       integer(c_int) :: status
     end function tfem_add_contact_pairs_auto
-  end interface
 
-  interface
     !> Creates a contact context for a host code that keeps its own elements, assembly, solver and
     !! Newton loop: node numbers and equation numbers in `index_base` (0 for C, 1 for Fortran).
     !! Returns NULL if `index_base` is not 0 or 1 (message in `tfem_last_error(NULL, …)`) or memory
@@ -1626,9 +1375,7 @@ module tfem
       integer(c_int), value :: index_base
       type(c_ptr) :: res
     end function tfem_contact_create
-  end interface
 
-  interface
     !> Destroys a contact context. NULL is a no-op, and so is a pointer that is not a live context
     !! (destroyed already, or a model).
     subroutine tfem_contact_destroy(context) &
@@ -1636,15 +1383,11 @@ module tfem
       import
       type(c_ptr), value :: context
     end subroutine tfem_contact_destroy
-  end interface
 
-  interface tfem_contact_last_error
     !> Copies the message of the last failed call on `context` (empty after a successful call) into
     !! `buffer` (`length` bytes including the final NUL), truncating like `tfem_last_error`. A
     !! `context` that is not a live contact context gives TFEM_STATUS_INVALID_ARGUMENT with the
-    !! message saying so in `buffer`. Fortran: `length` takes an integer(c_size_t) or a default
-    !! integer (kind tfem_length_kind); a negative length is passed as 0. `buffer` may also be a
-    !! character string.
+    !! message saying so in `buffer`.
     function tfem_contact_last_error(context, buffer, length) &
         bind(C, name="tfem_contact_last_error") result(status)
       import
@@ -1653,27 +1396,18 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_contact_last_error
-    module procedure tfem_contact_last_error_i
-    module procedure tfem_contact_last_error_str
-    module procedure tfem_contact_last_error_str_i
-  end interface tfem_contact_last_error
 
-  interface tfem_contact_last_error_length
     !> Size in bytes (including the final NUL) of the message `tfem_contact_last_error` would give
     !! for `context` (a buffer of this size holds all of it): 1 after a successful call; for a
     !! handle that is not a live contact context (destroyed, or a model), the size of the message
-    !! saying so. `context` may be NULL: 1 (it has no message). Added 2026-11-24. Fortran: `context`
-    !! may be omitted (NULL is passed).
+    !! saying so. `context` may be NULL: 1 (it has no message). Added 2026-11-24.
     function tfem_contact_last_error_length(context) &
         bind(C, name="tfem_contact_last_error_length") result(res)
       import
       type(c_ptr), value :: context
       integer(c_size_t) :: res
     end function tfem_contact_last_error_length
-    module procedure tfem_contact_last_error_length_no_context
-  end interface tfem_contact_last_error_length
 
-  interface
     !> Sets the contact options (law, E_c, λ, inversion test, and `max_iterations`: the number of
     !! `tfem_contact_update` calls of one loop before it counts as not converged; `refactorize` is
     !! ignored). Only before the contact mesh is built. Defaults: `tfem_contact_options_default`,
@@ -1685,9 +1419,7 @@ module tfem
       type(tfem_contact_options), intent(in) :: options
       integer(c_int) :: status
     end function tfem_contact_set_options
-  end interface
 
-  interface
     !> Adds one side of a contact interface, of body `body` (Young's modulus `young`, Poisson ratio
     !! `poisson`, `plane_mode` a `PlaneMode`: the softer side's E is the default E_c, the stick law
     !! takes its ν): `n_nodes` interface nodes `nodes` (the host's node numbers) with their
@@ -1702,7 +1434,7 @@ module tfem
     !! doubles spans more bytes), naming the node and the equation. The host's system size is not
     !! known here: `tfem_contact_gather` and `tfem_contact_scatter_add` check every equation against
     !! the vector they are given. Writes the side's index (0-based) to `side` (may be NULL). On
-    !! error nothing changes. Fortran: `side` is OPTIONAL: omit it to pass NULL.
+    !! error nothing changes.
     function tfem_contact_add_side(context, tag, body, young, poisson, plane_mode, n_nodes, nodes, xy, &
         equations, n_edges, edges, side) &
         bind(C, name="tfem_contact_add_side") result(status)
@@ -1719,39 +1451,34 @@ module tfem
       integer(c_int64_t), intent(in) :: equations(*)
       integer(c_int), value :: n_edges
       integer(c_int), intent(in) :: edges(*)
-      integer(c_int), intent(inout), optional :: side
+      integer(c_int), intent(inout) :: side
       integer(c_int) :: status
     end function tfem_contact_add_side
-  end interface
 
-  interface
     !> Declares sides `side_a` and `side_b` (on different bodies) a contact pair: the contact mesh B
     !! is built from their matching nodes, or by triangulating the strip between them. Two sides
     !! whose outward normals point the same way (one of them given clockwise) are refused with
     !! TFEM_STATUS_INVALID_CONTACT naming both. A pair of two sides already paired (either way
     !! round) is refused with TFEM_STATUS_INVALID_CONTACT naming it: it would double their contact.
     !! Messages name a side by its index and tag ("side 0 (tag 101)") and nodes by the host's
-    !! numbers. Writes the pair's index (0-based) to `pair` (may be NULL). Fortran: `pair` is
-    !! OPTIONAL: omit it to pass NULL.
+    !! numbers. Writes the pair's index (0-based) to `pair` (may be NULL).
     function tfem_contact_add_pair(context, side_a, side_b, pair) &
         bind(C, name="tfem_contact_add_pair") result(status)
       import
       type(c_ptr), value :: context
       integer(c_int), value :: side_a
       integer(c_int), value :: side_b
-      integer(c_int), intent(inout), optional :: pair
+      integer(c_int), intent(inout) :: pair
       integer(c_int) :: status
     end function tfem_contact_add_pair
-  end interface
 
-  interface
     !> Declares a pair with the host's own contact mesh B: `n_triangles` triangles `connectivity` (3
     !! host node numbers each) over the interface nodes of the two sides; wrongly oriented ones are
     !! turned. A triangle given twice (the same three nodes) is refused (TFEM_STATUS_INVALID_CONTACT
     !! naming both triangles), and so is a pair already declared, as by `tfem_contact_add_pair`. A
     !! node number below the index base is refused (TFEM_STATUS_INVALID_ARGUMENT naming the pair,
     !! the triangle, the node's place in it and the number). Writes the pair's index (0-based) to
-    !! `pair` (may be NULL). Fortran: `pair` is OPTIONAL: omit it to pass NULL.
+    !! `pair` (may be NULL).
     function tfem_contact_add_pair_with_mesh(context, side_a, side_b, n_triangles, connectivity, pair) &
         bind(C, name="tfem_contact_add_pair_with_mesh") result(status)
       import
@@ -1760,31 +1487,25 @@ module tfem
       integer(c_int), value :: side_b
       integer(c_int), value :: n_triangles
       integer(c_int), intent(in) :: connectivity(*)
-      integer(c_int), intent(inout), optional :: pair
+      integer(c_int), intent(inout) :: pair
       integer(c_int) :: status
     end function tfem_contact_add_pair_with_mesh
-  end interface
 
-  interface
     !> Builds the contact mesh B (if not yet) and writes the sizes: interface nodes (the length of
     !! every per-node array: 2 values per node for displacements and residuals), elements of B, and
-    !! entries of the pattern. Any pointer may be NULL. Fortran: `n_nodes`, `n_elements` and
-    !! `n_entries` are OPTIONAL: omit them to pass NULL.
+    !! entries of the pattern. Any pointer may be NULL.
     function tfem_contact_sizes(context, n_nodes, n_elements, n_entries) &
         bind(C, name="tfem_contact_sizes") result(status)
       import
       type(c_ptr), value :: context
-      integer(c_int), intent(inout), optional :: n_nodes
-      integer(c_int), intent(inout), optional :: n_elements
-      integer(c_int64_t), intent(inout), optional :: n_entries
+      integer(c_int), intent(inout) :: n_nodes
+      integer(c_int), intent(inout) :: n_elements
+      integer(c_int64_t), intent(inout) :: n_entries
       integer(c_int) :: status
     end function tfem_contact_sizes
-  end interface
 
-  interface tfem_contact_nodes
     !> Copies the interface nodes (host numbers, n_nodes values), in the order of every per-node
-    !! array. Fortran: `length` takes an integer(c_size_t) or a default integer (kind
-    !! tfem_length_kind); a negative length is passed as 0.
+    !! array.
     function tfem_contact_nodes(context, out, length) &
         bind(C, name="tfem_contact_nodes") result(status)
       import
@@ -1793,17 +1514,12 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_contact_nodes
-    module procedure tfem_contact_nodes_i
-  end interface tfem_contact_nodes
 
-  interface tfem_contact_pattern
     !> Copies the fixed pattern of the contact contributions into `rows` (n_entries values) and
     !! `cols` (n_entries values), in the host's equation numbering and index base: element after
     !! element of B, each element's 6×6 block row by row over its DOFs (x then y of its first,
     !! second and third node), the DOFs without an equation left out; both triangles of each block.
-    !! Entries repeat where elements share a DOF pair: the host sums them. Fortran: `length` takes
-    !! an integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is
-    !! passed as 0.
+    !! Entries repeat where elements share a DOF pair: the host sums them.
     function tfem_contact_pattern(context, rows, cols, length) &
         bind(C, name="tfem_contact_pattern") result(status)
       import
@@ -1813,10 +1529,7 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_contact_pattern
-    module procedure tfem_contact_pattern_i
-  end interface tfem_contact_pattern
 
-  interface tfem_contact_evaluate
     !> The contact contributions at the displacements `u` of the interface nodes (2 per node,
     !! `u_length` = 2·n_nodes): the tangent's values in the pattern's order into `values` (n_entries
     !! values, zeros for inactive elements), and the contact residual Σ (K_e u_e − f0_e) of the
@@ -1828,32 +1541,25 @@ module tfem
     !! `tfem_contact_update` or `tfem_contact_set_active` changes the set. A non-finite value in `u`
     !! is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node and the value); a result that
     !! overflows is TFEM_STATUS_NUMERICAL_FAILURE; either way the buffers are unchanged. Allocates
-    !! nothing. Fortran: `values` and `residual` are OPTIONAL: omit them to pass NULL. `u_length`,
-    !! `values_length` and `residual_length` take integer(c_size_t) or default integers (kind
-    !! tfem_length_kind), all of one kind; a negative length is passed as 0.
+    !! nothing.
     function tfem_contact_evaluate(context, u, u_length, values, values_length, residual, residual_length) &
         bind(C, name="tfem_contact_evaluate") result(status)
       import
       type(c_ptr), value :: context
       real(c_double), intent(in) :: u(*)
       integer(c_size_t), value :: u_length
-      real(c_double), intent(inout), optional :: values(*)
+      real(c_double), intent(inout) :: values(*)
       integer(c_size_t), value :: values_length
-      real(c_double), intent(inout), optional :: residual(*)
+      real(c_double), intent(inout) :: residual(*)
       integer(c_size_t), value :: residual_length
       integer(c_int) :: status
     end function tfem_contact_evaluate
-    module procedure tfem_contact_evaluate_i
-  end interface tfem_contact_evaluate
 
-  interface tfem_contact_gather
     !> Copies into `u` (2 per interface node) the displacements of the interface nodes from the
     !! host's solution vector `u_equations` (`n_equations` values; entry i is equation i +
     !! index_base); a DOF without an equation counts as fixed at zero. A non-finite entry at an
     !! interface node's equation is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node and the
-    !! equation); `u` is then unchanged. Fortran: `n_equations` and `u_length` take
-    !! integer(c_size_t) or default integers (kind tfem_length_kind), all of one kind; a negative
-    !! length is passed as 0.
+    !! equation); `u` is then unchanged.
     function tfem_contact_gather(context, u_equations, n_equations, u, u_length) &
         bind(C, name="tfem_contact_gather") result(status)
       import
@@ -1864,19 +1570,14 @@ module tfem
       integer(c_size_t), value :: u_length
       integer(c_int) :: status
     end function tfem_contact_gather
-    module procedure tfem_contact_gather_i
-  end interface tfem_contact_gather
 
-  interface tfem_contact_scatter_add
     !> Adds per-node values `residual` (2 per interface node, as `tfem_contact_evaluate` writes
     !! them) into the host's vector `host_vector` (`n_equations` values, entry i is equation i +
     !! index_base); DOFs without an equation are left out. A non-finite value in `residual` is
     !! refused (TFEM_STATUS_INVALID_ARGUMENT naming the node), and so is a sum that would not be
     !! finite: an entry of `host_vector` that is not finite already (TFEM_STATUS_INVALID_ARGUMENT),
     !! or an overflow (TFEM_STATUS_NUMERICAL_FAILURE), naming the node and the equation.
-    !! `host_vector` is then unchanged. Fortran: `residual_length` and `n_equations` take
-    !! integer(c_size_t) or default integers (kind tfem_length_kind), all of one kind; a negative
-    !! length is passed as 0.
+    !! `host_vector` is then unchanged.
     function tfem_contact_scatter_add(context, residual, residual_length, host_vector, n_equations) &
         bind(C, name="tfem_contact_scatter_add") result(status)
       import
@@ -1887,10 +1588,7 @@ module tfem
       integer(c_size_t), value :: n_equations
       integer(c_int) :: status
     end function tfem_contact_scatter_add
-    module procedure tfem_contact_scatter_add_i
-  end interface tfem_contact_scatter_add
 
-  interface tfem_contact_update
     !> The inversion test at the displacements `u` (2 per interface node) of a solve with the
     !! current active set: the elements found inverted are switched on, the others off; `changed`
     !! (may be NULL) is set to 1 if the set changed, 0 if it settled. The same test and cycle
@@ -1900,22 +1598,17 @@ module tfem
     !! for the current set (after its Newton loop, not at every Newton iteration): the test judges
     !! the solution, and a mid-Newton iterate may switch elements that the converged state would
     !! not. A non-finite value in `u` is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node and
-    !! the value). Fortran: `changed` is OPTIONAL: omit it to pass NULL. `u_length` takes an
-    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
-    !! as 0.
+    !! the value).
     function tfem_contact_update(context, u, u_length, changed) &
         bind(C, name="tfem_contact_update") result(status)
       import
       type(c_ptr), value :: context
       real(c_double), intent(in) :: u(*)
       integer(c_size_t), value :: u_length
-      integer(c_int), intent(inout), optional :: changed
+      integer(c_int), intent(inout) :: changed
       integer(c_int) :: status
     end function tfem_contact_update
-    module procedure tfem_contact_update_i
-  end interface tfem_contact_update
 
-  interface
     !> Starts a new active-set loop from the current flags (a new load step): the history and the
     !! sets visited are forgotten.
     function tfem_contact_restart(context) &
@@ -1924,12 +1617,8 @@ module tfem
       type(c_ptr), value :: context
       integer(c_int) :: status
     end function tfem_contact_restart
-  end interface
 
-  interface tfem_contact_get_active
-    !> Copies the active flag (1 active, 0 not) of every element of B. Fortran: `length` takes an
-    !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
-    !! as 0.
+    !> Copies the active flag (1 active, 0 not) of every element of B.
     function tfem_contact_get_active(context, out, length) &
         bind(C, name="tfem_contact_get_active") result(status)
       import
@@ -1938,13 +1627,9 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_contact_get_active
-    module procedure tfem_contact_get_active_i
-  end interface tfem_contact_get_active
 
-  interface tfem_contact_set_active
     !> Sets the active flags of the elements of B (n_elements values, 0 or 1): a warm start or a
-    !! restored state; starts a new loop. Fortran: `length` takes an integer(c_size_t) or a default
-    !! integer (kind tfem_length_kind); a negative length is passed as 0.
+    !! restored state; starts a new loop.
     function tfem_contact_set_active(context, active, length) &
         bind(C, name="tfem_contact_set_active") result(status)
       import
@@ -1953,10 +1638,7 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_contact_set_active
-    module procedure tfem_contact_set_active_i
-  end interface tfem_contact_set_active
 
-  interface tfem_contact_gaps
     !> Copies the normal gap at every interface node (n_nodes values, model length units) for the
     !! displacements `u` (2 per interface node): the smallest, over the elements of B at the node,
     !! of the distance of an element's apex from its interface edge (linearised; negative:
@@ -1964,8 +1646,7 @@ module tfem
     !! other, beyond the other side's end) has no gap and reads 0, as if touching: it is not in
     !! contact, and no contact force acts there; tell such nodes by their absence from
     !! `tfem_contact_elements`. A non-finite value in `u` is refused (TFEM_STATUS_INVALID_ARGUMENT
-    !! naming the node and the value). Fortran: `u_length` and `length` take integer(c_size_t) or
-    !! default integers (kind tfem_length_kind), all of one kind; a negative length is passed as 0.
+    !! naming the node and the value).
     function tfem_contact_gaps(context, u, u_length, out, length) &
         bind(C, name="tfem_contact_gaps") result(status)
       import
@@ -1976,15 +1657,11 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_contact_gaps
-    module procedure tfem_contact_gaps_i
-  end interface tfem_contact_gaps
 
-  interface tfem_contact_pressures
     !> Copies the contact pressure of every element of B (n_elements values; a stress, positive in
     !! compression, zero when inactive) for the displacements `u` (2 per interface node). A
     !! non-finite value in `u` is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node and the
-    !! value). Fortran: `u_length` and `length` take integer(c_size_t) or default integers (kind
-    !! tfem_length_kind), all of one kind; a negative length is passed as 0.
+    !! value).
     function tfem_contact_pressures(context, u, u_length, out, length) &
         bind(C, name="tfem_contact_pressures") result(status)
       import
@@ -1995,13 +1672,9 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_contact_pressures
-    module procedure tfem_contact_pressures_i
-  end interface tfem_contact_pressures
 
-  interface tfem_contact_elements
     !> Copies the nodes of every element of B (3 host node numbers each, oriented so that J > 0 when
-    !! the gap opens). Fortran: `length` takes an integer(c_size_t) or a default integer (kind
-    !! tfem_length_kind); a negative length is passed as 0.
+    !! the gap opens).
     function tfem_contact_elements(context, out, length) &
         bind(C, name="tfem_contact_elements") result(status)
       import
@@ -2010,15 +1683,10 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_contact_elements
-    module procedure tfem_contact_elements_i
-  end interface tfem_contact_elements
 
-  interface tfem_contact_element_equations
     !> Copies the equations of every element's six DOFs (6 per element, x then y of each node, in
     !! the index base; index_base − 1 marks a DOF without an equation): with
-    !! `tfem_contact_element_blocks`, the contributions as unassembled element blocks. Fortran:
-    !! `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a negative
-    !! length is passed as 0.
+    !! `tfem_contact_element_blocks`, the contributions as unassembled element blocks.
     function tfem_contact_element_equations(context, out, length) &
         bind(C, name="tfem_contact_element_equations") result(status)
       import
@@ -2027,14 +1695,9 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_contact_element_equations
-    module procedure tfem_contact_element_equations_i
-  end interface tfem_contact_element_equations
 
-  interface tfem_contact_element_blocks
     !> Copies every element's 6×6 tangent block (36 values per element, row-major over its DOFs as
-    !! in `tfem_contact_element_equations`): its stiffness when active, zeros when not. Fortran:
-    !! `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a negative
-    !! length is passed as 0.
+    !! in `tfem_contact_element_equations`): its stiffness when active, zeros when not.
     function tfem_contact_element_blocks(context, out, length) &
         bind(C, name="tfem_contact_element_blocks") result(status)
       import
@@ -2043,10 +1706,7 @@ module tfem
       integer(c_size_t), value :: length
       integer(c_int) :: status
     end function tfem_contact_element_blocks
-    module procedure tfem_contact_element_blocks_i
-  end interface tfem_contact_element_blocks
 
-  interface
     !> Writes the contact length of the current active set to `length`, model length units: per
     !! contact zone (a pair's active elements of B connected through shared nodes), the summed
     !! interface-edge length of the active elements (each as far as it faces the other side) of the
@@ -2061,18 +1721,353 @@ module tfem
       integer(c_int) :: status
     end function tfem_contact_length
   end interface
+end module tfem_c
+
+! The module procedures behind the generic interfaces of module tfem (see "Generic
+! interfaces" above); not for direct use.
+module tfem_specifics
+  use, intrinsic :: iso_c_binding
+  use tfem_c, only: tfem_solve_info, tfem_contact_options, tfem_contact_report, tfem_last_error, &
+        tfem_last_error_length, tfem_get_warning, tfem_get_mesh_nodes, tfem_get_displacements, &
+        tfem_get_element_strains, tfem_get_element_stresses, tfem_get_element_jacobians, &
+        tfem_get_reactions, tfem_get_system_matrix, tfem_get_contact_active, &
+        tfem_get_contact_pressure, tfem_get_contact_elements, tfem_get_contact_forces, &
+        tfem_get_contact_nodal_pressures, tfem_get_contact_pair_nodal_pressures, &
+        tfem_get_contact_gaps, tfem_get_contact_mesh, tfem_get_contact_element_pairs, &
+        tfem_get_contact_element_apexes, tfem_get_contact_state, tfem_set_contact_state, &
+        tfem_get_contact_shear, tfem_get_contact_friction_state, tfem_get_contact_dissipation, &
+        tfem_contact_last_error, tfem_contact_last_error_length, tfem_contact_nodes, &
+        tfem_contact_pattern, tfem_contact_gather, tfem_contact_scatter_add, tfem_contact_get_active, &
+        tfem_contact_set_active, tfem_contact_gaps, tfem_contact_pressures, tfem_contact_elements, &
+        tfem_contact_element_equations, tfem_contact_element_blocks
+  implicit none
+  private
+  public :: tfem_length_kind
+  public :: tfem_last_error_i, tfem_last_error_str, tfem_last_error_str_i, tfem_last_error_no_model
+  public :: tfem_last_error_no_model_i, tfem_last_error_no_model_str, tfem_last_error_no_model_str_i
+  public :: tfem_last_error_length_no_model, tfem_get_warning_i, tfem_get_warning_str
+  public :: tfem_get_warning_str_i, tfem_solve_opt, tfem_get_sizes_opt, tfem_get_mesh_nodes_r2
+  public :: tfem_get_mesh_nodes_i, tfem_get_mesh_nodes_i_r2, tfem_get_mesh_triangles_opt
+  public :: tfem_get_mesh_triangles_opt_r21, tfem_get_mesh_triangles_opt_r12
+  public :: tfem_get_mesh_triangles_opt_r22, tfem_get_mesh_triangles_opt_i
+  public :: tfem_get_mesh_triangles_opt_i_r21, tfem_get_mesh_triangles_opt_i_r12
+  public :: tfem_get_mesh_triangles_opt_i_r22, tfem_get_boundary_edges_opt
+  public :: tfem_get_boundary_edges_opt_r21, tfem_get_boundary_edges_opt_r12
+  public :: tfem_get_boundary_edges_opt_r22, tfem_get_boundary_edges_opt_i
+  public :: tfem_get_boundary_edges_opt_i_r21, tfem_get_boundary_edges_opt_i_r12
+  public :: tfem_get_boundary_edges_opt_i_r22, tfem_get_displacements_r2, tfem_get_displacements_i
+  public :: tfem_get_displacements_i_r2, tfem_get_element_strains_r2, tfem_get_element_strains_i
+  public :: tfem_get_element_strains_i_r2, tfem_get_element_stresses_r2, tfem_get_element_stresses_i
+  public :: tfem_get_element_stresses_i_r2, tfem_get_element_jacobians_r2
+  public :: tfem_get_element_jacobians_i, tfem_get_element_jacobians_i_r2, tfem_get_reactions_r2
+  public :: tfem_get_reactions_i, tfem_get_reactions_i_r2, tfem_get_system_matrix_size_opt
+  public :: tfem_get_system_matrix_r2111, tfem_get_system_matrix_r1211, tfem_get_system_matrix_r2211
+  public :: tfem_get_system_matrix_r1121, tfem_get_system_matrix_r2121, tfem_get_system_matrix_r1221
+  public :: tfem_get_system_matrix_r2221, tfem_get_system_matrix_r1112, tfem_get_system_matrix_r2112
+  public :: tfem_get_system_matrix_r1212, tfem_get_system_matrix_r2212, tfem_get_system_matrix_r1122
+  public :: tfem_get_system_matrix_r2122, tfem_get_system_matrix_r1222, tfem_get_system_matrix_r2222
+  public :: tfem_get_system_matrix_i, tfem_get_system_matrix_i_r2111, tfem_get_system_matrix_i_r1211
+  public :: tfem_get_system_matrix_i_r2211, tfem_get_system_matrix_i_r1121
+  public :: tfem_get_system_matrix_i_r2121, tfem_get_system_matrix_i_r1221
+  public :: tfem_get_system_matrix_i_r2221, tfem_get_system_matrix_i_r1112
+  public :: tfem_get_system_matrix_i_r2112, tfem_get_system_matrix_i_r1212
+  public :: tfem_get_system_matrix_i_r2212, tfem_get_system_matrix_i_r1122
+  public :: tfem_get_system_matrix_i_r2122, tfem_get_system_matrix_i_r1222
+  public :: tfem_get_system_matrix_i_r2222, tfem_add_contact_pair_opt
+  public :: tfem_add_contact_pair_with_mesh_opt, tfem_add_contact_pair_with_mesh_opt_r2
+  public :: tfem_solve_contact_opt, tfem_get_contact_active_r2, tfem_get_contact_active_i
+  public :: tfem_get_contact_active_i_r2, tfem_get_contact_pressure_r2, tfem_get_contact_pressure_i
+  public :: tfem_get_contact_pressure_i_r2, tfem_get_contact_elements_r2
+  public :: tfem_get_contact_elements_i, tfem_get_contact_elements_i_r2, tfem_get_contact_forces_r2
+  public :: tfem_get_contact_forces_i, tfem_get_contact_forces_i_r2
+  public :: tfem_get_contact_nodal_pressures_r2, tfem_get_contact_nodal_pressures_i
+  public :: tfem_get_contact_nodal_pressures_i_r2, tfem_get_contact_slave_nodes_opt
+  public :: tfem_get_contact_slave_nodes_opt_r2111, tfem_get_contact_slave_nodes_opt_r1211
+  public :: tfem_get_contact_slave_nodes_opt_r2211, tfem_get_contact_slave_nodes_opt_r1121
+  public :: tfem_get_contact_slave_nodes_opt_r2121, tfem_get_contact_slave_nodes_opt_r1221
+  public :: tfem_get_contact_slave_nodes_opt_r2221, tfem_get_contact_slave_nodes_opt_r1112
+  public :: tfem_get_contact_slave_nodes_opt_r2112, tfem_get_contact_slave_nodes_opt_r1212
+  public :: tfem_get_contact_slave_nodes_opt_r2212, tfem_get_contact_slave_nodes_opt_r1122
+  public :: tfem_get_contact_slave_nodes_opt_r2122, tfem_get_contact_slave_nodes_opt_r1222
+  public :: tfem_get_contact_slave_nodes_opt_r2222, tfem_get_contact_slave_nodes_opt_i
+  public :: tfem_get_contact_slave_nodes_opt_i_r2111, tfem_get_contact_slave_nodes_opt_i_r1211
+  public :: tfem_get_contact_slave_nodes_opt_i_r2211, tfem_get_contact_slave_nodes_opt_i_r1121
+  public :: tfem_get_contact_slave_nodes_opt_i_r2121, tfem_get_contact_slave_nodes_opt_i_r1221
+  public :: tfem_get_contact_slave_nodes_opt_i_r2221, tfem_get_contact_slave_nodes_opt_i_r1112
+  public :: tfem_get_contact_slave_nodes_opt_i_r2112, tfem_get_contact_slave_nodes_opt_i_r1212
+  public :: tfem_get_contact_slave_nodes_opt_i_r2212, tfem_get_contact_slave_nodes_opt_i_r1122
+  public :: tfem_get_contact_slave_nodes_opt_i_r2122, tfem_get_contact_slave_nodes_opt_i_r1222
+  public :: tfem_get_contact_slave_nodes_opt_i_r2222, tfem_get_contact_pair_nodal_pressures_r2
+  public :: tfem_get_contact_pair_nodal_pressures_i, tfem_get_contact_pair_nodal_pressures_i_r2
+  public :: tfem_get_contact_gaps_r2, tfem_get_contact_gaps_i, tfem_get_contact_gaps_i_r2
+  public :: tfem_get_contact_mesh_r2, tfem_get_contact_mesh_i, tfem_get_contact_mesh_i_r2
+  public :: tfem_get_contact_element_pairs_r2, tfem_get_contact_element_pairs_i
+  public :: tfem_get_contact_element_pairs_i_r2, tfem_get_contact_element_apexes_r2
+  public :: tfem_get_contact_element_apexes_i, tfem_get_contact_element_apexes_i_r2
+  public :: tfem_get_contact_pair_bodies_opt, tfem_step_opt, tfem_get_contact_state_r2
+  public :: tfem_get_contact_state_i, tfem_get_contact_state_i_r2, tfem_set_contact_state_r2
+  public :: tfem_set_contact_state_i, tfem_set_contact_state_i_r2, tfem_get_contact_shear_r2
+  public :: tfem_get_contact_shear_i, tfem_get_contact_shear_i_r2
+  public :: tfem_get_contact_friction_state_r2, tfem_get_contact_friction_state_i
+  public :: tfem_get_contact_friction_state_i_r2, tfem_get_contact_dissipation_r2
+  public :: tfem_get_contact_dissipation_i, tfem_get_contact_dissipation_i_r2
+  public :: tfem_add_contact_pairs_auto_opt, tfem_add_contact_pairs_auto_opt_r2
+  public :: tfem_contact_last_error_i, tfem_contact_last_error_str, tfem_contact_last_error_str_i
+  public :: tfem_contact_last_error_length_no_context, tfem_contact_add_side_opt
+  public :: tfem_contact_add_side_opt_r2111, tfem_contact_add_side_opt_r1211
+  public :: tfem_contact_add_side_opt_r2211, tfem_contact_add_side_opt_r1121
+  public :: tfem_contact_add_side_opt_r2121, tfem_contact_add_side_opt_r1221
+  public :: tfem_contact_add_side_opt_r2221, tfem_contact_add_side_opt_r1112
+  public :: tfem_contact_add_side_opt_r2112, tfem_contact_add_side_opt_r1212
+  public :: tfem_contact_add_side_opt_r2212, tfem_contact_add_side_opt_r1122
+  public :: tfem_contact_add_side_opt_r2122, tfem_contact_add_side_opt_r1222
+  public :: tfem_contact_add_side_opt_r2222, tfem_contact_add_pair_opt
+  public :: tfem_contact_add_pair_with_mesh_opt, tfem_contact_add_pair_with_mesh_opt_r2
+  public :: tfem_contact_sizes_opt, tfem_contact_nodes_r2, tfem_contact_nodes_i
+  public :: tfem_contact_nodes_i_r2, tfem_contact_pattern_r21, tfem_contact_pattern_r12
+  public :: tfem_contact_pattern_r22, tfem_contact_pattern_i, tfem_contact_pattern_i_r21
+  public :: tfem_contact_pattern_i_r12, tfem_contact_pattern_i_r22, tfem_contact_evaluate_opt
+  public :: tfem_contact_evaluate_opt_r211, tfem_contact_evaluate_opt_r121
+  public :: tfem_contact_evaluate_opt_r221, tfem_contact_evaluate_opt_r112
+  public :: tfem_contact_evaluate_opt_r212, tfem_contact_evaluate_opt_r122
+  public :: tfem_contact_evaluate_opt_r222, tfem_contact_evaluate_opt_i
+  public :: tfem_contact_evaluate_opt_i_r211, tfem_contact_evaluate_opt_i_r121
+  public :: tfem_contact_evaluate_opt_i_r221, tfem_contact_evaluate_opt_i_r112
+  public :: tfem_contact_evaluate_opt_i_r212, tfem_contact_evaluate_opt_i_r122
+  public :: tfem_contact_evaluate_opt_i_r222, tfem_contact_gather_r21, tfem_contact_gather_r12
+  public :: tfem_contact_gather_r22, tfem_contact_gather_i, tfem_contact_gather_i_r21
+  public :: tfem_contact_gather_i_r12, tfem_contact_gather_i_r22, tfem_contact_scatter_add_r21
+  public :: tfem_contact_scatter_add_r12, tfem_contact_scatter_add_r22, tfem_contact_scatter_add_i
+  public :: tfem_contact_scatter_add_i_r21, tfem_contact_scatter_add_i_r12
+  public :: tfem_contact_scatter_add_i_r22, tfem_contact_update_opt, tfem_contact_update_opt_r2
+  public :: tfem_contact_update_opt_i, tfem_contact_update_opt_i_r2, tfem_contact_get_active_r2
+  public :: tfem_contact_get_active_i, tfem_contact_get_active_i_r2, tfem_contact_set_active_r2
+  public :: tfem_contact_set_active_i, tfem_contact_set_active_i_r2, tfem_contact_gaps_r21
+  public :: tfem_contact_gaps_r12, tfem_contact_gaps_r22, tfem_contact_gaps_i
+  public :: tfem_contact_gaps_i_r21, tfem_contact_gaps_i_r12, tfem_contact_gaps_i_r22
+  public :: tfem_contact_pressures_r21, tfem_contact_pressures_r12, tfem_contact_pressures_r22
+  public :: tfem_contact_pressures_i, tfem_contact_pressures_i_r21, tfem_contact_pressures_i_r12
+  public :: tfem_contact_pressures_i_r22, tfem_contact_elements_r2, tfem_contact_elements_i
+  public :: tfem_contact_elements_i_r2, tfem_contact_element_equations_r2
+  public :: tfem_contact_element_equations_i, tfem_contact_element_equations_i_r2
+  public :: tfem_contact_element_blocks_r2, tfem_contact_element_blocks_i
+  public :: tfem_contact_element_blocks_i_r2
+
+  !> The kind of the lengths the generic interfaces accept besides integer(c_size_t): c_int (the
+  !! default integer) where size_t is wider, else c_int64_t.
+  integer, parameter :: tfem_length_kind = merge(c_int, c_int64_t, c_size_t /= c_int)
+
+  ! The buffer passed for a given zero-length c_double array: never read or written.
+  real(c_double), target, save :: tfem_empty_c_double(1)
+  ! The buffer passed for a given zero-length c_int array: never read or written.
+  integer(c_int), target, save :: tfem_empty_c_int(1)
+
+  interface
+    function tfem_solve_by_address(model, info) &
+        bind(C, name="tfem_solve") result(status)
+      import
+      type(c_ptr), value :: model
+      type(c_ptr), value :: info
+      integer(c_int) :: status
+    end function tfem_solve_by_address
+
+    function tfem_get_sizes_by_address(model, n_nodes, n_triangles, n_contact_elements) &
+        bind(C, name="tfem_get_sizes") result(status)
+      import
+      type(c_ptr), value :: model
+      type(c_ptr), value :: n_nodes
+      type(c_ptr), value :: n_triangles
+      type(c_ptr), value :: n_contact_elements
+      integer(c_int) :: status
+    end function tfem_get_sizes_by_address
+
+    function tfem_get_mesh_triangles_by_address(model, triangles, length, bodies, bodies_length) &
+        bind(C, name="tfem_get_mesh_triangles") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: triangles(*)
+      integer(c_size_t), value :: length
+      type(c_ptr), value :: bodies
+      integer(c_size_t), value :: bodies_length
+      integer(c_int) :: status
+    end function tfem_get_mesh_triangles_by_address
+
+    function tfem_get_boundary_edges_by_address(model, edges, length, tags, tags_length) &
+        bind(C, name="tfem_get_boundary_edges") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: edges(*)
+      integer(c_size_t), value :: length
+      type(c_ptr), value :: tags
+      integer(c_size_t), value :: tags_length
+      integer(c_int) :: status
+    end function tfem_get_boundary_edges_by_address
+
+    function tfem_get_system_matrix_size_by_address(model, n, nnz) &
+        bind(C, name="tfem_get_system_matrix_size") result(status)
+      import
+      type(c_ptr), value :: model
+      type(c_ptr), value :: n
+      type(c_ptr), value :: nnz
+      integer(c_int) :: status
+    end function tfem_get_system_matrix_size_by_address
+
+    function tfem_add_contact_pair_by_address(model, tag_a, tag_b, pair) &
+        bind(C, name="tfem_add_contact_pair") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: tag_a
+      integer(c_int), value :: tag_b
+      type(c_ptr), value :: pair
+      integer(c_int) :: status
+    end function tfem_add_contact_pair_by_address
+
+    function tfem_add_contact_pair_with_mesh_by_address(model, tag_a, tag_b, n_triangles, connectivity, &
+        pair, flipped) &
+        bind(C, name="tfem_add_contact_pair_with_mesh") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: tag_a
+      integer(c_int), value :: tag_b
+      integer(c_int), value :: n_triangles
+      integer(c_int), intent(in) :: connectivity(*)
+      type(c_ptr), value :: pair
+      type(c_ptr), value :: flipped
+      integer(c_int) :: status
+    end function tfem_add_contact_pair_with_mesh_by_address
+
+    function tfem_solve_contact_by_address(model, options, report) &
+        bind(C, name="tfem_solve_contact") result(status)
+      import
+      type(c_ptr), value :: model
+      type(c_ptr), value :: options
+      type(c_ptr), value :: report
+      integer(c_int) :: status
+    end function tfem_solve_contact_by_address
+
+    function tfem_get_contact_slave_nodes_by_address(model, node, tributary, gap, pressure, length) &
+        bind(C, name="tfem_get_contact_slave_nodes") result(status)
+      import
+      type(c_ptr), value :: model
+      type(c_ptr), value :: node
+      type(c_ptr), value :: tributary
+      type(c_ptr), value :: gap
+      type(c_ptr), value :: pressure
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_slave_nodes_by_address
+
+    function tfem_get_contact_pair_bodies_by_address(model, pair, body_a, body_b) &
+        bind(C, name="tfem_get_contact_pair_bodies") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: pair
+      type(c_ptr), value :: body_a
+      type(c_ptr), value :: body_b
+      integer(c_int) :: status
+    end function tfem_get_contact_pair_bodies_by_address
+
+    function tfem_step_by_address(model, load_factor, options, report) &
+        bind(C, name="tfem_step") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), value :: load_factor
+      type(c_ptr), value :: options
+      type(c_ptr), value :: report
+      integer(c_int) :: status
+    end function tfem_step_by_address
+
+    function tfem_add_contact_pairs_auto_by_address(model, n_tags, tags, tolerance, first, count) &
+        bind(C, name="tfem_add_contact_pairs_auto") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: n_tags
+      type(c_ptr), value :: tags
+      real(c_double), value :: tolerance
+      type(c_ptr), value :: first
+      type(c_ptr), value :: count
+      integer(c_int) :: status
+    end function tfem_add_contact_pairs_auto_by_address
+
+    function tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side) &
+        bind(C, name="tfem_contact_add_side") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), value :: tag
+      integer(c_int), value :: body
+      real(c_double), value :: young
+      real(c_double), value :: poisson
+      integer(c_int), value :: plane_mode
+      integer(c_int), value :: n_nodes
+      integer(c_int), intent(in) :: nodes(*)
+      real(c_double), intent(in) :: xy(*)
+      integer(c_int64_t), intent(in) :: equations(*)
+      integer(c_int), value :: n_edges
+      integer(c_int), intent(in) :: edges(*)
+      type(c_ptr), value :: side
+      integer(c_int) :: status
+    end function tfem_contact_add_side_by_address
+
+    function tfem_contact_add_pair_by_address(context, side_a, side_b, pair) &
+        bind(C, name="tfem_contact_add_pair") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), value :: side_a
+      integer(c_int), value :: side_b
+      type(c_ptr), value :: pair
+      integer(c_int) :: status
+    end function tfem_contact_add_pair_by_address
+
+    function tfem_contact_add_pair_with_mesh_by_address(context, side_a, side_b, n_triangles, &
+        connectivity, pair) &
+        bind(C, name="tfem_contact_add_pair_with_mesh") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), value :: side_a
+      integer(c_int), value :: side_b
+      integer(c_int), value :: n_triangles
+      integer(c_int), intent(in) :: connectivity(*)
+      type(c_ptr), value :: pair
+      integer(c_int) :: status
+    end function tfem_contact_add_pair_with_mesh_by_address
+
+    function tfem_contact_sizes_by_address(context, n_nodes, n_elements, n_entries) &
+        bind(C, name="tfem_contact_sizes") result(status)
+      import
+      type(c_ptr), value :: context
+      type(c_ptr), value :: n_nodes
+      type(c_ptr), value :: n_elements
+      type(c_ptr), value :: n_entries
+      integer(c_int) :: status
+    end function tfem_contact_sizes_by_address
+
+    function tfem_contact_evaluate_by_address(context, u, u_length, values, values_length, residual, &
+        residual_length) &
+        bind(C, name="tfem_contact_evaluate") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(in) :: u(*)
+      integer(c_size_t), value :: u_length
+      type(c_ptr), value :: values
+      integer(c_size_t), value :: values_length
+      type(c_ptr), value :: residual
+      integer(c_size_t), value :: residual_length
+      integer(c_int) :: status
+    end function tfem_contact_evaluate_by_address
+
+    function tfem_contact_update_by_address(context, u, u_length, changed) &
+        bind(C, name="tfem_contact_update") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(in) :: u(*)
+      integer(c_size_t), value :: u_length
+      type(c_ptr), value :: changed
+      integer(c_int) :: status
+    end function tfem_contact_update_by_address
+  end interface
 
 contains
-
-  pure function c_strlen(buf) result(n)
-    character(kind=c_char), intent(in) :: buf(:)
-    integer :: n
-    n = 0
-    do while (n < size(buf))
-      if (buf(n + 1) == c_null_char) exit
-      n = n + 1
-    end do
-  end function c_strlen
 
   !> A length of kind tfem_length_kind as integer(c_size_t). A negative length becomes 0, so
   !! that the library reports TFEM_STATUS_BUFFER_TOO_SMALL instead of reading a huge size_t.
@@ -2088,7 +2083,30 @@ contains
     end if
   end function tfem_to_size_t
 
-  ! tfem_last_error, lengths of kind tfem_length_kind.
+  !> The address to pass for the nullable c_double array x: NULL when absent, that of
+  !! tfem_empty_c_double when its buffer is empty (c_loc needs a nonzero size).
+  function tfem_address_c_double(x, nonempty) result(address)
+    real(c_double), intent(in), optional, target :: x(*)
+    logical, intent(in) :: nonempty
+    type(c_ptr) :: address
+    address = c_null_ptr
+    if (.not. present(x)) return
+    address = c_loc(tfem_empty_c_double)
+    if (nonempty) address = c_loc(x)
+  end function tfem_address_c_double
+
+  !> The address to pass for the nullable c_int array x: NULL when absent, that of
+  !! tfem_empty_c_int when its buffer is empty (c_loc needs a nonzero size).
+  function tfem_address_c_int(x, nonempty) result(address)
+    integer(c_int), intent(in), optional, target :: x(*)
+    logical, intent(in) :: nonempty
+    type(c_ptr) :: address
+    address = c_null_ptr
+    if (.not. present(x)) return
+    address = c_loc(tfem_empty_c_int)
+    if (nonempty) address = c_loc(x)
+  end function tfem_address_c_int
+
   function tfem_last_error_i(model, buffer, length) result(status)
     type(c_ptr), value :: model
     character(kind=c_char), intent(inout) :: buffer(*)
@@ -2097,33 +2115,29 @@ contains
     status = tfem_last_error(model, buffer, tfem_to_size_t(length))
   end function tfem_last_error_i
 
-  ! tfem_last_error, character buffers as strings.
   function tfem_last_error_str(model, buffer, length) result(status)
     type(c_ptr), value :: model
     character(kind=c_char, len=*), intent(inout) :: buffer
-    integer(c_size_t), value :: length
+    integer(c_size_t), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_last_error_raw(model, buffer, length)
+    status = tfem_last_error(model, buffer, length)
   end function tfem_last_error_str
 
-  ! tfem_last_error, character buffers as strings, lengths of kind tfem_length_kind.
   function tfem_last_error_str_i(model, buffer, length) result(status)
     type(c_ptr), value :: model
     character(kind=c_char, len=*), intent(inout) :: buffer
     integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_last_error_raw(model, buffer, tfem_to_size_t(length))
+    status = tfem_last_error(model, buffer, tfem_to_size_t(length))
   end function tfem_last_error_str_i
 
-  ! tfem_last_error, without `model` (NULL).
   function tfem_last_error_no_model(buffer, length) result(status)
     character(kind=c_char), intent(inout) :: buffer(*)
-    integer(c_size_t), value :: length
+    integer(c_size_t), intent(in) :: length
     integer(c_int) :: status
     status = tfem_last_error(c_null_ptr, buffer, length)
   end function tfem_last_error_no_model
 
-  ! tfem_last_error, without `model` (NULL), lengths of kind tfem_length_kind.
   function tfem_last_error_no_model_i(buffer, length) result(status)
     character(kind=c_char), intent(inout) :: buffer(*)
     integer(tfem_length_kind), intent(in) :: length
@@ -2131,39 +2145,25 @@ contains
     status = tfem_last_error(c_null_ptr, buffer, tfem_to_size_t(length))
   end function tfem_last_error_no_model_i
 
-  ! tfem_last_error, without `model` (NULL), character buffers as strings.
   function tfem_last_error_no_model_str(buffer, length) result(status)
     character(kind=c_char, len=*), intent(inout) :: buffer
-    integer(c_size_t), value :: length
+    integer(c_size_t), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_last_error_raw(c_null_ptr, buffer, length)
+    status = tfem_last_error(c_null_ptr, buffer, length)
   end function tfem_last_error_no_model_str
 
-  ! tfem_last_error, without `model` (NULL), character buffers as strings, lengths of kind
-  ! tfem_length_kind.
   function tfem_last_error_no_model_str_i(buffer, length) result(status)
     character(kind=c_char, len=*), intent(inout) :: buffer
     integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_last_error_raw(c_null_ptr, buffer, tfem_to_size_t(length))
+    status = tfem_last_error(c_null_ptr, buffer, tfem_to_size_t(length))
   end function tfem_last_error_no_model_str_i
 
-  ! tfem_last_error, by a specific name (for the strings of the _str specifics).
-  function tfem_last_error_raw(model, buffer, length) result(status)
-    type(c_ptr), value :: model
-    character(kind=c_char), intent(inout) :: buffer(*)
-    integer(c_size_t), value :: length
-    integer(c_int) :: status
-    status = tfem_last_error(model, buffer, length)
-  end function tfem_last_error_raw
-
-  ! tfem_last_error_length, without `model` (NULL).
   function tfem_last_error_length_no_model() result(res)
     integer(c_size_t) :: res
     res = tfem_last_error_length(c_null_ptr)
   end function tfem_last_error_length_no_model
 
-  ! tfem_get_warning, lengths of kind tfem_length_kind.
   function tfem_get_warning_i(model, index, buffer, length) result(status)
     type(c_ptr), value :: model
     integer(c_int), value :: index
@@ -2173,37 +2173,61 @@ contains
     status = tfem_get_warning(model, index, buffer, tfem_to_size_t(length))
   end function tfem_get_warning_i
 
-  ! tfem_get_warning, character buffers as strings.
   function tfem_get_warning_str(model, index, buffer, length) result(status)
     type(c_ptr), value :: model
     integer(c_int), value :: index
     character(kind=c_char, len=*), intent(inout) :: buffer
-    integer(c_size_t), value :: length
+    integer(c_size_t), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_warning_raw(model, index, buffer, length)
+    status = tfem_get_warning(model, index, buffer, length)
   end function tfem_get_warning_str
 
-  ! tfem_get_warning, character buffers as strings, lengths of kind tfem_length_kind.
   function tfem_get_warning_str_i(model, index, buffer, length) result(status)
     type(c_ptr), value :: model
     integer(c_int), value :: index
     character(kind=c_char, len=*), intent(inout) :: buffer
     integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_warning_raw(model, index, buffer, tfem_to_size_t(length))
+    status = tfem_get_warning(model, index, buffer, tfem_to_size_t(length))
   end function tfem_get_warning_str_i
 
-  ! tfem_get_warning, by a specific name (for the strings of the _str specifics).
-  function tfem_get_warning_raw(model, index, buffer, length) result(status)
+  function tfem_solve_opt(model, info) result(status)
     type(c_ptr), value :: model
-    integer(c_int), value :: index
-    character(kind=c_char), intent(inout) :: buffer(*)
-    integer(c_size_t), value :: length
+    type(tfem_solve_info), intent(inout), optional, target :: info
     integer(c_int) :: status
-    status = tfem_get_warning(model, index, buffer, length)
-  end function tfem_get_warning_raw
+    type(c_ptr) :: info_address
+    info_address = c_null_ptr
+    if (present(info)) info_address = c_loc(info)
+    status = tfem_solve_by_address(model, info_address)
+  end function tfem_solve_opt
 
-  ! tfem_get_mesh_nodes, lengths of kind tfem_length_kind.
+  function tfem_get_sizes_opt(model, n_nodes, n_triangles, n_contact_elements) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: n_nodes
+    integer(c_int), intent(inout), optional, target :: n_triangles
+    integer(c_int), intent(inout), optional, target :: n_contact_elements
+    integer(c_int) :: status
+    type(c_ptr) :: n_nodes_address
+    type(c_ptr) :: n_triangles_address
+    type(c_ptr) :: n_contact_elements_address
+    n_nodes_address = c_null_ptr
+    if (present(n_nodes)) n_nodes_address = c_loc(n_nodes)
+    n_triangles_address = c_null_ptr
+    if (present(n_triangles)) n_triangles_address = c_loc(n_triangles)
+    n_contact_elements_address = c_null_ptr
+    if (present(n_contact_elements)) n_contact_elements_address = c_loc(n_contact_elements)
+    status = tfem_get_sizes_by_address(model, n_nodes_address, n_triangles_address, &
+        n_contact_elements_address)
+  end function tfem_get_sizes_opt
+
+  function tfem_get_mesh_nodes_r2(model, xy, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: xy(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_mesh_nodes(model, xy, length)
+  end function tfem_get_mesh_nodes_r2
+
   function tfem_get_mesh_nodes_i(model, xy, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: xy(*)
@@ -2212,31 +2236,233 @@ contains
     status = tfem_get_mesh_nodes(model, xy, tfem_to_size_t(length))
   end function tfem_get_mesh_nodes_i
 
-  ! tfem_get_mesh_triangles, lengths of kind tfem_length_kind.
-  function tfem_get_mesh_triangles_i(model, triangles, length, bodies, bodies_length) result(status)
+  function tfem_get_mesh_nodes_i_r2(model, xy, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: xy(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_mesh_nodes(model, xy, tfem_to_size_t(length))
+  end function tfem_get_mesh_nodes_i_r2
+
+  function tfem_get_mesh_triangles_opt(model, triangles, length, bodies, bodies_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: triangles(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int), intent(inout), optional, target :: bodies(*)
+    integer(c_size_t), intent(in) :: bodies_length
+    integer(c_int) :: status
+    type(c_ptr) :: bodies_address
+    bodies_address = tfem_address_c_int(bodies, bodies_length /= 0)
+    status = tfem_get_mesh_triangles_by_address(model, triangles, length, bodies_address, &
+        bodies_length)
+  end function tfem_get_mesh_triangles_opt
+
+  function tfem_get_mesh_triangles_opt_r21(model, triangles, length, bodies, &
+        bodies_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: triangles(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int), intent(inout), optional, target :: bodies(*)
+    integer(c_size_t), intent(in) :: bodies_length
+    integer(c_int) :: status
+    type(c_ptr) :: bodies_address
+    bodies_address = tfem_address_c_int(bodies, bodies_length /= 0)
+    status = tfem_get_mesh_triangles_by_address(model, triangles, length, bodies_address, &
+        bodies_length)
+  end function tfem_get_mesh_triangles_opt_r21
+
+  function tfem_get_mesh_triangles_opt_r12(model, triangles, length, bodies, &
+        bodies_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: triangles(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int), intent(inout), target :: bodies(1, *)
+    integer(c_size_t), intent(in) :: bodies_length
+    integer(c_int) :: status
+    type(c_ptr) :: bodies_address
+    bodies_address = tfem_address_c_int(bodies, bodies_length /= 0)
+    status = tfem_get_mesh_triangles_by_address(model, triangles, length, bodies_address, &
+        bodies_length)
+  end function tfem_get_mesh_triangles_opt_r12
+
+  function tfem_get_mesh_triangles_opt_r22(model, triangles, length, bodies, &
+        bodies_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: triangles(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int), intent(inout), target :: bodies(1, *)
+    integer(c_size_t), intent(in) :: bodies_length
+    integer(c_int) :: status
+    type(c_ptr) :: bodies_address
+    bodies_address = tfem_address_c_int(bodies, bodies_length /= 0)
+    status = tfem_get_mesh_triangles_by_address(model, triangles, length, bodies_address, &
+        bodies_length)
+  end function tfem_get_mesh_triangles_opt_r22
+
+  function tfem_get_mesh_triangles_opt_i(model, triangles, length, bodies, &
+        bodies_length) result(status)
     type(c_ptr), value :: model
     integer(c_int), intent(inout) :: triangles(*)
     integer(tfem_length_kind), intent(in) :: length
-    integer(c_int), intent(inout), optional :: bodies(*)
+    integer(c_int), intent(inout), optional, target :: bodies(*)
     integer(tfem_length_kind), intent(in) :: bodies_length
     integer(c_int) :: status
-    status = tfem_get_mesh_triangles(model, triangles, tfem_to_size_t(length), bodies, &
-        tfem_to_size_t(bodies_length))
-  end function tfem_get_mesh_triangles_i
+    type(c_ptr) :: bodies_address
+    bodies_address = tfem_address_c_int(bodies, bodies_length > 0)
+    status = tfem_get_mesh_triangles_by_address(model, triangles, tfem_to_size_t(length), &
+        bodies_address, tfem_to_size_t(bodies_length))
+  end function tfem_get_mesh_triangles_opt_i
 
-  ! tfem_get_boundary_edges, lengths of kind tfem_length_kind.
-  function tfem_get_boundary_edges_i(model, edges, length, tags, tags_length) result(status)
+  function tfem_get_mesh_triangles_opt_i_r21(model, triangles, length, bodies, &
+        bodies_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: triangles(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int), intent(inout), optional, target :: bodies(*)
+    integer(tfem_length_kind), intent(in) :: bodies_length
+    integer(c_int) :: status
+    type(c_ptr) :: bodies_address
+    bodies_address = tfem_address_c_int(bodies, bodies_length > 0)
+    status = tfem_get_mesh_triangles_by_address(model, triangles, tfem_to_size_t(length), &
+        bodies_address, tfem_to_size_t(bodies_length))
+  end function tfem_get_mesh_triangles_opt_i_r21
+
+  function tfem_get_mesh_triangles_opt_i_r12(model, triangles, length, bodies, &
+        bodies_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: triangles(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int), intent(inout), target :: bodies(1, *)
+    integer(tfem_length_kind), intent(in) :: bodies_length
+    integer(c_int) :: status
+    type(c_ptr) :: bodies_address
+    bodies_address = tfem_address_c_int(bodies, bodies_length > 0)
+    status = tfem_get_mesh_triangles_by_address(model, triangles, tfem_to_size_t(length), &
+        bodies_address, tfem_to_size_t(bodies_length))
+  end function tfem_get_mesh_triangles_opt_i_r12
+
+  function tfem_get_mesh_triangles_opt_i_r22(model, triangles, length, bodies, &
+        bodies_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: triangles(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int), intent(inout), target :: bodies(1, *)
+    integer(tfem_length_kind), intent(in) :: bodies_length
+    integer(c_int) :: status
+    type(c_ptr) :: bodies_address
+    bodies_address = tfem_address_c_int(bodies, bodies_length > 0)
+    status = tfem_get_mesh_triangles_by_address(model, triangles, tfem_to_size_t(length), &
+        bodies_address, tfem_to_size_t(bodies_length))
+  end function tfem_get_mesh_triangles_opt_i_r22
+
+  function tfem_get_boundary_edges_opt(model, edges, length, tags, tags_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: edges(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int), intent(inout), optional, target :: tags(*)
+    integer(c_size_t), intent(in) :: tags_length
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    tags_address = tfem_address_c_int(tags, tags_length /= 0)
+    status = tfem_get_boundary_edges_by_address(model, edges, length, tags_address, tags_length)
+  end function tfem_get_boundary_edges_opt
+
+  function tfem_get_boundary_edges_opt_r21(model, edges, length, tags, tags_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: edges(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int), intent(inout), optional, target :: tags(*)
+    integer(c_size_t), intent(in) :: tags_length
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    tags_address = tfem_address_c_int(tags, tags_length /= 0)
+    status = tfem_get_boundary_edges_by_address(model, edges, length, tags_address, tags_length)
+  end function tfem_get_boundary_edges_opt_r21
+
+  function tfem_get_boundary_edges_opt_r12(model, edges, length, tags, tags_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: edges(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int), intent(inout), target :: tags(1, *)
+    integer(c_size_t), intent(in) :: tags_length
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    tags_address = tfem_address_c_int(tags, tags_length /= 0)
+    status = tfem_get_boundary_edges_by_address(model, edges, length, tags_address, tags_length)
+  end function tfem_get_boundary_edges_opt_r12
+
+  function tfem_get_boundary_edges_opt_r22(model, edges, length, tags, tags_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: edges(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int), intent(inout), target :: tags(1, *)
+    integer(c_size_t), intent(in) :: tags_length
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    tags_address = tfem_address_c_int(tags, tags_length /= 0)
+    status = tfem_get_boundary_edges_by_address(model, edges, length, tags_address, tags_length)
+  end function tfem_get_boundary_edges_opt_r22
+
+  function tfem_get_boundary_edges_opt_i(model, edges, length, tags, tags_length) result(status)
     type(c_ptr), value :: model
     integer(c_int), intent(inout) :: edges(*)
     integer(tfem_length_kind), intent(in) :: length
-    integer(c_int), intent(inout), optional :: tags(*)
+    integer(c_int), intent(inout), optional, target :: tags(*)
     integer(tfem_length_kind), intent(in) :: tags_length
     integer(c_int) :: status
-    status = tfem_get_boundary_edges(model, edges, tfem_to_size_t(length), tags, &
+    type(c_ptr) :: tags_address
+    tags_address = tfem_address_c_int(tags, tags_length > 0)
+    status = tfem_get_boundary_edges_by_address(model, edges, tfem_to_size_t(length), tags_address, &
         tfem_to_size_t(tags_length))
-  end function tfem_get_boundary_edges_i
+  end function tfem_get_boundary_edges_opt_i
 
-  ! tfem_get_displacements, lengths of kind tfem_length_kind.
+  function tfem_get_boundary_edges_opt_i_r21(model, edges, length, tags, tags_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: edges(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int), intent(inout), optional, target :: tags(*)
+    integer(tfem_length_kind), intent(in) :: tags_length
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    tags_address = tfem_address_c_int(tags, tags_length > 0)
+    status = tfem_get_boundary_edges_by_address(model, edges, tfem_to_size_t(length), tags_address, &
+        tfem_to_size_t(tags_length))
+  end function tfem_get_boundary_edges_opt_i_r21
+
+  function tfem_get_boundary_edges_opt_i_r12(model, edges, length, tags, tags_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: edges(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int), intent(inout), target :: tags(1, *)
+    integer(tfem_length_kind), intent(in) :: tags_length
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    tags_address = tfem_address_c_int(tags, tags_length > 0)
+    status = tfem_get_boundary_edges_by_address(model, edges, tfem_to_size_t(length), tags_address, &
+        tfem_to_size_t(tags_length))
+  end function tfem_get_boundary_edges_opt_i_r12
+
+  function tfem_get_boundary_edges_opt_i_r22(model, edges, length, tags, tags_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: edges(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int), intent(inout), target :: tags(1, *)
+    integer(tfem_length_kind), intent(in) :: tags_length
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    tags_address = tfem_address_c_int(tags, tags_length > 0)
+    status = tfem_get_boundary_edges_by_address(model, edges, tfem_to_size_t(length), tags_address, &
+        tfem_to_size_t(tags_length))
+  end function tfem_get_boundary_edges_opt_i_r22
+
+  function tfem_get_displacements_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_displacements(model, out, length)
+  end function tfem_get_displacements_r2
+
   function tfem_get_displacements_i(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(*)
@@ -2245,7 +2471,22 @@ contains
     status = tfem_get_displacements(model, out, tfem_to_size_t(length))
   end function tfem_get_displacements_i
 
-  ! tfem_get_element_strains, lengths of kind tfem_length_kind.
+  function tfem_get_displacements_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_displacements(model, out, tfem_to_size_t(length))
+  end function tfem_get_displacements_i_r2
+
+  function tfem_get_element_strains_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_element_strains(model, out, length)
+  end function tfem_get_element_strains_r2
+
   function tfem_get_element_strains_i(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(*)
@@ -2254,7 +2495,22 @@ contains
     status = tfem_get_element_strains(model, out, tfem_to_size_t(length))
   end function tfem_get_element_strains_i
 
-  ! tfem_get_element_stresses, lengths of kind tfem_length_kind.
+  function tfem_get_element_strains_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_element_strains(model, out, tfem_to_size_t(length))
+  end function tfem_get_element_strains_i_r2
+
+  function tfem_get_element_stresses_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_element_stresses(model, out, length)
+  end function tfem_get_element_stresses_r2
+
   function tfem_get_element_stresses_i(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(*)
@@ -2263,7 +2519,22 @@ contains
     status = tfem_get_element_stresses(model, out, tfem_to_size_t(length))
   end function tfem_get_element_stresses_i
 
-  ! tfem_get_element_jacobians, lengths of kind tfem_length_kind.
+  function tfem_get_element_stresses_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_element_stresses(model, out, tfem_to_size_t(length))
+  end function tfem_get_element_stresses_i_r2
+
+  function tfem_get_element_jacobians_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_element_jacobians(model, out, length)
+  end function tfem_get_element_jacobians_r2
+
   function tfem_get_element_jacobians_i(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(*)
@@ -2272,7 +2543,22 @@ contains
     status = tfem_get_element_jacobians(model, out, tfem_to_size_t(length))
   end function tfem_get_element_jacobians_i
 
-  ! tfem_get_reactions, lengths of kind tfem_length_kind.
+  function tfem_get_element_jacobians_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_element_jacobians(model, out, tfem_to_size_t(length))
+  end function tfem_get_element_jacobians_i_r2
+
+  function tfem_get_reactions_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_reactions(model, out, length)
+  end function tfem_get_reactions_r2
+
   function tfem_get_reactions_i(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(*)
@@ -2281,9 +2567,270 @@ contains
     status = tfem_get_reactions(model, out, tfem_to_size_t(length))
   end function tfem_get_reactions_i
 
-  ! tfem_get_system_matrix, lengths of kind tfem_length_kind.
-  function tfem_get_system_matrix_i(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length) result(status)
+  function tfem_get_reactions_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_reactions(model, out, tfem_to_size_t(length))
+  end function tfem_get_reactions_i_r2
+
+  function tfem_get_system_matrix_size_opt(model, n, nnz) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout), optional, target :: n
+    integer(c_int64_t), intent(inout), optional, target :: nnz
+    integer(c_int) :: status
+    type(c_ptr) :: n_address
+    type(c_ptr) :: nnz_address
+    n_address = c_null_ptr
+    if (present(n)) n_address = c_loc(n)
+    nnz_address = c_null_ptr
+    if (present(nnz)) nnz_address = c_loc(nnz)
+    status = tfem_get_system_matrix_size_by_address(model, n_address, nnz_address)
+  end function tfem_get_system_matrix_size_opt
+
+  function tfem_get_system_matrix_r2111(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r2111
+
+  function tfem_get_system_matrix_r1211(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r1211
+
+  function tfem_get_system_matrix_r2211(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r2211
+
+  function tfem_get_system_matrix_r1121(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r1121
+
+  function tfem_get_system_matrix_r2121(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r2121
+
+  function tfem_get_system_matrix_r1221(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r1221
+
+  function tfem_get_system_matrix_r2221(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r2221
+
+  function tfem_get_system_matrix_r1112(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r1112
+
+  function tfem_get_system_matrix_r2112(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r2112
+
+  function tfem_get_system_matrix_r1212(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r1212
+
+  function tfem_get_system_matrix_r2212(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r2212
+
+  function tfem_get_system_matrix_r1122(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r1122
+
+  function tfem_get_system_matrix_r2122(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r2122
+
+  function tfem_get_system_matrix_r1222(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r1222
+
+  function tfem_get_system_matrix_r2222(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r2222
+
+  function tfem_get_system_matrix_i(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
     type(c_ptr), value :: model
     integer(c_int64_t), intent(inout) :: col_ptr(*)
     integer(tfem_length_kind), intent(in) :: col_ptr_length
@@ -2299,7 +2846,335 @@ contains
         tfem_to_size_t(dofs_length))
   end function tfem_get_system_matrix_i
 
-  ! tfem_get_contact_active, lengths of kind tfem_length_kind.
+  function tfem_get_system_matrix_i_r2111(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r2111
+
+  function tfem_get_system_matrix_i_r1211(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r1211
+
+  function tfem_get_system_matrix_i_r2211(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r2211
+
+  function tfem_get_system_matrix_i_r1121(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r1121
+
+  function tfem_get_system_matrix_i_r2121(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r2121
+
+  function tfem_get_system_matrix_i_r1221(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r1221
+
+  function tfem_get_system_matrix_i_r2221(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r2221
+
+  function tfem_get_system_matrix_i_r1112(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r1112
+
+  function tfem_get_system_matrix_i_r2112(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r2112
+
+  function tfem_get_system_matrix_i_r1212(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r1212
+
+  function tfem_get_system_matrix_i_r2212(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r2212
+
+  function tfem_get_system_matrix_i_r1122(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r1122
+
+  function tfem_get_system_matrix_i_r2122(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r2122
+
+  function tfem_get_system_matrix_i_r1222(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r1222
+
+  function tfem_get_system_matrix_i_r2222(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r2222
+
+  function tfem_add_contact_pair_opt(model, tag_a, tag_b, pair) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: tag_a
+    integer(c_int), value :: tag_b
+    integer(c_int), intent(inout), optional, target :: pair
+    integer(c_int) :: status
+    type(c_ptr) :: pair_address
+    pair_address = c_null_ptr
+    if (present(pair)) pair_address = c_loc(pair)
+    status = tfem_add_contact_pair_by_address(model, tag_a, tag_b, pair_address)
+  end function tfem_add_contact_pair_opt
+
+  function tfem_add_contact_pair_with_mesh_opt(model, tag_a, tag_b, n_triangles, &
+        connectivity, pair, flipped) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: tag_a
+    integer(c_int), value :: tag_b
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: connectivity(*)
+    integer(c_int), intent(inout), optional, target :: pair
+    integer(c_int), intent(inout), optional, target :: flipped
+    integer(c_int) :: status
+    type(c_ptr) :: pair_address
+    type(c_ptr) :: flipped_address
+    pair_address = c_null_ptr
+    if (present(pair)) pair_address = c_loc(pair)
+    flipped_address = c_null_ptr
+    if (present(flipped)) flipped_address = c_loc(flipped)
+    status = tfem_add_contact_pair_with_mesh_by_address(model, tag_a, tag_b, n_triangles, &
+        connectivity, pair_address, flipped_address)
+  end function tfem_add_contact_pair_with_mesh_opt
+
+  function tfem_add_contact_pair_with_mesh_opt_r2(model, tag_a, tag_b, n_triangles, &
+        connectivity, pair, flipped) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: tag_a
+    integer(c_int), value :: tag_b
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: connectivity(1, *)
+    integer(c_int), intent(inout), optional, target :: pair
+    integer(c_int), intent(inout), optional, target :: flipped
+    integer(c_int) :: status
+    type(c_ptr) :: pair_address
+    type(c_ptr) :: flipped_address
+    pair_address = c_null_ptr
+    if (present(pair)) pair_address = c_loc(pair)
+    flipped_address = c_null_ptr
+    if (present(flipped)) flipped_address = c_loc(flipped)
+    status = tfem_add_contact_pair_with_mesh_by_address(model, tag_a, tag_b, n_triangles, &
+        connectivity, pair_address, flipped_address)
+  end function tfem_add_contact_pair_with_mesh_opt_r2
+
+  function tfem_solve_contact_opt(model, options, report) result(status)
+    type(c_ptr), value :: model
+    type(tfem_contact_options), intent(in), optional, target :: options
+    type(tfem_contact_report), intent(inout), optional, target :: report
+    integer(c_int) :: status
+    type(c_ptr) :: options_address
+    type(c_ptr) :: report_address
+    options_address = c_null_ptr
+    if (present(options)) options_address = c_loc(options)
+    report_address = c_null_ptr
+    if (present(report)) report_address = c_loc(report)
+    status = tfem_solve_contact_by_address(model, options_address, report_address)
+  end function tfem_solve_contact_opt
+
+  function tfem_get_contact_active_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_active(model, out, length)
+  end function tfem_get_contact_active_r2
+
   function tfem_get_contact_active_i(model, out, length) result(status)
     type(c_ptr), value :: model
     integer(c_int), intent(inout) :: out(*)
@@ -2308,7 +3183,22 @@ contains
     status = tfem_get_contact_active(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_active_i
 
-  ! tfem_get_contact_pressure, lengths of kind tfem_length_kind.
+  function tfem_get_contact_active_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_active(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_active_i_r2
+
+  function tfem_get_contact_pressure_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_pressure(model, out, length)
+  end function tfem_get_contact_pressure_r2
+
   function tfem_get_contact_pressure_i(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(*)
@@ -2317,7 +3207,22 @@ contains
     status = tfem_get_contact_pressure(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_pressure_i
 
-  ! tfem_get_contact_elements, lengths of kind tfem_length_kind.
+  function tfem_get_contact_pressure_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_pressure(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_pressure_i_r2
+
+  function tfem_get_contact_elements_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_elements(model, out, length)
+  end function tfem_get_contact_elements_r2
+
   function tfem_get_contact_elements_i(model, out, length) result(status)
     type(c_ptr), value :: model
     integer(c_int), intent(inout) :: out(*)
@@ -2326,7 +3231,22 @@ contains
     status = tfem_get_contact_elements(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_elements_i
 
-  ! tfem_get_contact_forces, lengths of kind tfem_length_kind.
+  function tfem_get_contact_elements_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_elements(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_elements_i_r2
+
+  function tfem_get_contact_forces_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_forces(model, out, length)
+  end function tfem_get_contact_forces_r2
+
   function tfem_get_contact_forces_i(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(*)
@@ -2335,7 +3255,22 @@ contains
     status = tfem_get_contact_forces(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_forces_i
 
-  ! tfem_get_contact_nodal_pressures, lengths of kind tfem_length_kind.
+  function tfem_get_contact_forces_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_forces(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_forces_i_r2
+
+  function tfem_get_contact_nodal_pressures_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_nodal_pressures(model, out, length)
+  end function tfem_get_contact_nodal_pressures_r2
+
   function tfem_get_contact_nodal_pressures_i(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(*)
@@ -2344,20 +3279,695 @@ contains
     status = tfem_get_contact_nodal_pressures(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_nodal_pressures_i
 
-  ! tfem_get_contact_slave_nodes, lengths of kind tfem_length_kind.
-  function tfem_get_contact_slave_nodes_i(model, node, tributary, gap, pressure, length) result(status)
+  function tfem_get_contact_nodal_pressures_i_r2(model, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int), intent(inout), optional :: node(*)
-    real(c_double), intent(inout), optional :: tributary(*)
-    real(c_double), intent(inout), optional :: gap(*)
-    real(c_double), intent(inout), optional :: pressure(*)
+    real(c_double), intent(inout) :: out(1, *)
     integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_contact_slave_nodes(model, node, tributary, gap, pressure, &
-        tfem_to_size_t(length))
-  end function tfem_get_contact_slave_nodes_i
+    status = tfem_get_contact_nodal_pressures(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_nodal_pressures_i_r2
 
-  ! tfem_get_contact_pair_nodal_pressures, lengths of kind tfem_length_kind.
+  function tfem_get_contact_slave_nodes_opt(model, node, tributary, gap, pressure, &
+        length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: node(*)
+    real(c_double), intent(inout), optional, target :: tributary(*)
+    real(c_double), intent(inout), optional, target :: gap(*)
+    real(c_double), intent(inout), optional, target :: pressure(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length /= 0)
+    tributary_address = tfem_address_c_double(tributary, length /= 0)
+    gap_address = tfem_address_c_double(gap, length /= 0)
+    pressure_address = tfem_address_c_double(pressure, length /= 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, length)
+  end function tfem_get_contact_slave_nodes_opt
+
+  function tfem_get_contact_slave_nodes_opt_r2111(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), target :: node(1, *)
+    real(c_double), intent(inout), optional, target :: tributary(*)
+    real(c_double), intent(inout), optional, target :: gap(*)
+    real(c_double), intent(inout), optional, target :: pressure(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length /= 0)
+    tributary_address = tfem_address_c_double(tributary, length /= 0)
+    gap_address = tfem_address_c_double(gap, length /= 0)
+    pressure_address = tfem_address_c_double(pressure, length /= 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, length)
+  end function tfem_get_contact_slave_nodes_opt_r2111
+
+  function tfem_get_contact_slave_nodes_opt_r1211(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: node(*)
+    real(c_double), intent(inout), target :: tributary(1, *)
+    real(c_double), intent(inout), optional, target :: gap(*)
+    real(c_double), intent(inout), optional, target :: pressure(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length /= 0)
+    tributary_address = tfem_address_c_double(tributary, length /= 0)
+    gap_address = tfem_address_c_double(gap, length /= 0)
+    pressure_address = tfem_address_c_double(pressure, length /= 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, length)
+  end function tfem_get_contact_slave_nodes_opt_r1211
+
+  function tfem_get_contact_slave_nodes_opt_r2211(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), target :: node(1, *)
+    real(c_double), intent(inout), target :: tributary(1, *)
+    real(c_double), intent(inout), optional, target :: gap(*)
+    real(c_double), intent(inout), optional, target :: pressure(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length /= 0)
+    tributary_address = tfem_address_c_double(tributary, length /= 0)
+    gap_address = tfem_address_c_double(gap, length /= 0)
+    pressure_address = tfem_address_c_double(pressure, length /= 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, length)
+  end function tfem_get_contact_slave_nodes_opt_r2211
+
+  function tfem_get_contact_slave_nodes_opt_r1121(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: node(*)
+    real(c_double), intent(inout), optional, target :: tributary(*)
+    real(c_double), intent(inout), target :: gap(1, *)
+    real(c_double), intent(inout), optional, target :: pressure(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length /= 0)
+    tributary_address = tfem_address_c_double(tributary, length /= 0)
+    gap_address = tfem_address_c_double(gap, length /= 0)
+    pressure_address = tfem_address_c_double(pressure, length /= 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, length)
+  end function tfem_get_contact_slave_nodes_opt_r1121
+
+  function tfem_get_contact_slave_nodes_opt_r2121(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), target :: node(1, *)
+    real(c_double), intent(inout), optional, target :: tributary(*)
+    real(c_double), intent(inout), target :: gap(1, *)
+    real(c_double), intent(inout), optional, target :: pressure(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length /= 0)
+    tributary_address = tfem_address_c_double(tributary, length /= 0)
+    gap_address = tfem_address_c_double(gap, length /= 0)
+    pressure_address = tfem_address_c_double(pressure, length /= 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, length)
+  end function tfem_get_contact_slave_nodes_opt_r2121
+
+  function tfem_get_contact_slave_nodes_opt_r1221(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: node(*)
+    real(c_double), intent(inout), target :: tributary(1, *)
+    real(c_double), intent(inout), target :: gap(1, *)
+    real(c_double), intent(inout), optional, target :: pressure(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length /= 0)
+    tributary_address = tfem_address_c_double(tributary, length /= 0)
+    gap_address = tfem_address_c_double(gap, length /= 0)
+    pressure_address = tfem_address_c_double(pressure, length /= 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, length)
+  end function tfem_get_contact_slave_nodes_opt_r1221
+
+  function tfem_get_contact_slave_nodes_opt_r2221(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), target :: node(1, *)
+    real(c_double), intent(inout), target :: tributary(1, *)
+    real(c_double), intent(inout), target :: gap(1, *)
+    real(c_double), intent(inout), optional, target :: pressure(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length /= 0)
+    tributary_address = tfem_address_c_double(tributary, length /= 0)
+    gap_address = tfem_address_c_double(gap, length /= 0)
+    pressure_address = tfem_address_c_double(pressure, length /= 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, length)
+  end function tfem_get_contact_slave_nodes_opt_r2221
+
+  function tfem_get_contact_slave_nodes_opt_r1112(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: node(*)
+    real(c_double), intent(inout), optional, target :: tributary(*)
+    real(c_double), intent(inout), optional, target :: gap(*)
+    real(c_double), intent(inout), target :: pressure(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length /= 0)
+    tributary_address = tfem_address_c_double(tributary, length /= 0)
+    gap_address = tfem_address_c_double(gap, length /= 0)
+    pressure_address = tfem_address_c_double(pressure, length /= 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, length)
+  end function tfem_get_contact_slave_nodes_opt_r1112
+
+  function tfem_get_contact_slave_nodes_opt_r2112(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), target :: node(1, *)
+    real(c_double), intent(inout), optional, target :: tributary(*)
+    real(c_double), intent(inout), optional, target :: gap(*)
+    real(c_double), intent(inout), target :: pressure(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length /= 0)
+    tributary_address = tfem_address_c_double(tributary, length /= 0)
+    gap_address = tfem_address_c_double(gap, length /= 0)
+    pressure_address = tfem_address_c_double(pressure, length /= 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, length)
+  end function tfem_get_contact_slave_nodes_opt_r2112
+
+  function tfem_get_contact_slave_nodes_opt_r1212(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: node(*)
+    real(c_double), intent(inout), target :: tributary(1, *)
+    real(c_double), intent(inout), optional, target :: gap(*)
+    real(c_double), intent(inout), target :: pressure(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length /= 0)
+    tributary_address = tfem_address_c_double(tributary, length /= 0)
+    gap_address = tfem_address_c_double(gap, length /= 0)
+    pressure_address = tfem_address_c_double(pressure, length /= 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, length)
+  end function tfem_get_contact_slave_nodes_opt_r1212
+
+  function tfem_get_contact_slave_nodes_opt_r2212(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), target :: node(1, *)
+    real(c_double), intent(inout), target :: tributary(1, *)
+    real(c_double), intent(inout), optional, target :: gap(*)
+    real(c_double), intent(inout), target :: pressure(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length /= 0)
+    tributary_address = tfem_address_c_double(tributary, length /= 0)
+    gap_address = tfem_address_c_double(gap, length /= 0)
+    pressure_address = tfem_address_c_double(pressure, length /= 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, length)
+  end function tfem_get_contact_slave_nodes_opt_r2212
+
+  function tfem_get_contact_slave_nodes_opt_r1122(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: node(*)
+    real(c_double), intent(inout), optional, target :: tributary(*)
+    real(c_double), intent(inout), target :: gap(1, *)
+    real(c_double), intent(inout), target :: pressure(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length /= 0)
+    tributary_address = tfem_address_c_double(tributary, length /= 0)
+    gap_address = tfem_address_c_double(gap, length /= 0)
+    pressure_address = tfem_address_c_double(pressure, length /= 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, length)
+  end function tfem_get_contact_slave_nodes_opt_r1122
+
+  function tfem_get_contact_slave_nodes_opt_r2122(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), target :: node(1, *)
+    real(c_double), intent(inout), optional, target :: tributary(*)
+    real(c_double), intent(inout), target :: gap(1, *)
+    real(c_double), intent(inout), target :: pressure(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length /= 0)
+    tributary_address = tfem_address_c_double(tributary, length /= 0)
+    gap_address = tfem_address_c_double(gap, length /= 0)
+    pressure_address = tfem_address_c_double(pressure, length /= 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, length)
+  end function tfem_get_contact_slave_nodes_opt_r2122
+
+  function tfem_get_contact_slave_nodes_opt_r1222(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: node(*)
+    real(c_double), intent(inout), target :: tributary(1, *)
+    real(c_double), intent(inout), target :: gap(1, *)
+    real(c_double), intent(inout), target :: pressure(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length /= 0)
+    tributary_address = tfem_address_c_double(tributary, length /= 0)
+    gap_address = tfem_address_c_double(gap, length /= 0)
+    pressure_address = tfem_address_c_double(pressure, length /= 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, length)
+  end function tfem_get_contact_slave_nodes_opt_r1222
+
+  function tfem_get_contact_slave_nodes_opt_r2222(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), target :: node(1, *)
+    real(c_double), intent(inout), target :: tributary(1, *)
+    real(c_double), intent(inout), target :: gap(1, *)
+    real(c_double), intent(inout), target :: pressure(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length /= 0)
+    tributary_address = tfem_address_c_double(tributary, length /= 0)
+    gap_address = tfem_address_c_double(gap, length /= 0)
+    pressure_address = tfem_address_c_double(pressure, length /= 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, length)
+  end function tfem_get_contact_slave_nodes_opt_r2222
+
+  function tfem_get_contact_slave_nodes_opt_i(model, node, tributary, gap, pressure, &
+        length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: node(*)
+    real(c_double), intent(inout), optional, target :: tributary(*)
+    real(c_double), intent(inout), optional, target :: gap(*)
+    real(c_double), intent(inout), optional, target :: pressure(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length > 0)
+    tributary_address = tfem_address_c_double(tributary, length > 0)
+    gap_address = tfem_address_c_double(gap, length > 0)
+    pressure_address = tfem_address_c_double(pressure, length > 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_opt_i
+
+  function tfem_get_contact_slave_nodes_opt_i_r2111(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), target :: node(1, *)
+    real(c_double), intent(inout), optional, target :: tributary(*)
+    real(c_double), intent(inout), optional, target :: gap(*)
+    real(c_double), intent(inout), optional, target :: pressure(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length > 0)
+    tributary_address = tfem_address_c_double(tributary, length > 0)
+    gap_address = tfem_address_c_double(gap, length > 0)
+    pressure_address = tfem_address_c_double(pressure, length > 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_opt_i_r2111
+
+  function tfem_get_contact_slave_nodes_opt_i_r1211(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: node(*)
+    real(c_double), intent(inout), target :: tributary(1, *)
+    real(c_double), intent(inout), optional, target :: gap(*)
+    real(c_double), intent(inout), optional, target :: pressure(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length > 0)
+    tributary_address = tfem_address_c_double(tributary, length > 0)
+    gap_address = tfem_address_c_double(gap, length > 0)
+    pressure_address = tfem_address_c_double(pressure, length > 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_opt_i_r1211
+
+  function tfem_get_contact_slave_nodes_opt_i_r2211(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), target :: node(1, *)
+    real(c_double), intent(inout), target :: tributary(1, *)
+    real(c_double), intent(inout), optional, target :: gap(*)
+    real(c_double), intent(inout), optional, target :: pressure(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length > 0)
+    tributary_address = tfem_address_c_double(tributary, length > 0)
+    gap_address = tfem_address_c_double(gap, length > 0)
+    pressure_address = tfem_address_c_double(pressure, length > 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_opt_i_r2211
+
+  function tfem_get_contact_slave_nodes_opt_i_r1121(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: node(*)
+    real(c_double), intent(inout), optional, target :: tributary(*)
+    real(c_double), intent(inout), target :: gap(1, *)
+    real(c_double), intent(inout), optional, target :: pressure(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length > 0)
+    tributary_address = tfem_address_c_double(tributary, length > 0)
+    gap_address = tfem_address_c_double(gap, length > 0)
+    pressure_address = tfem_address_c_double(pressure, length > 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_opt_i_r1121
+
+  function tfem_get_contact_slave_nodes_opt_i_r2121(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), target :: node(1, *)
+    real(c_double), intent(inout), optional, target :: tributary(*)
+    real(c_double), intent(inout), target :: gap(1, *)
+    real(c_double), intent(inout), optional, target :: pressure(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length > 0)
+    tributary_address = tfem_address_c_double(tributary, length > 0)
+    gap_address = tfem_address_c_double(gap, length > 0)
+    pressure_address = tfem_address_c_double(pressure, length > 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_opt_i_r2121
+
+  function tfem_get_contact_slave_nodes_opt_i_r1221(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: node(*)
+    real(c_double), intent(inout), target :: tributary(1, *)
+    real(c_double), intent(inout), target :: gap(1, *)
+    real(c_double), intent(inout), optional, target :: pressure(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length > 0)
+    tributary_address = tfem_address_c_double(tributary, length > 0)
+    gap_address = tfem_address_c_double(gap, length > 0)
+    pressure_address = tfem_address_c_double(pressure, length > 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_opt_i_r1221
+
+  function tfem_get_contact_slave_nodes_opt_i_r2221(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), target :: node(1, *)
+    real(c_double), intent(inout), target :: tributary(1, *)
+    real(c_double), intent(inout), target :: gap(1, *)
+    real(c_double), intent(inout), optional, target :: pressure(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length > 0)
+    tributary_address = tfem_address_c_double(tributary, length > 0)
+    gap_address = tfem_address_c_double(gap, length > 0)
+    pressure_address = tfem_address_c_double(pressure, length > 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_opt_i_r2221
+
+  function tfem_get_contact_slave_nodes_opt_i_r1112(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: node(*)
+    real(c_double), intent(inout), optional, target :: tributary(*)
+    real(c_double), intent(inout), optional, target :: gap(*)
+    real(c_double), intent(inout), target :: pressure(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length > 0)
+    tributary_address = tfem_address_c_double(tributary, length > 0)
+    gap_address = tfem_address_c_double(gap, length > 0)
+    pressure_address = tfem_address_c_double(pressure, length > 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_opt_i_r1112
+
+  function tfem_get_contact_slave_nodes_opt_i_r2112(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), target :: node(1, *)
+    real(c_double), intent(inout), optional, target :: tributary(*)
+    real(c_double), intent(inout), optional, target :: gap(*)
+    real(c_double), intent(inout), target :: pressure(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length > 0)
+    tributary_address = tfem_address_c_double(tributary, length > 0)
+    gap_address = tfem_address_c_double(gap, length > 0)
+    pressure_address = tfem_address_c_double(pressure, length > 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_opt_i_r2112
+
+  function tfem_get_contact_slave_nodes_opt_i_r1212(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: node(*)
+    real(c_double), intent(inout), target :: tributary(1, *)
+    real(c_double), intent(inout), optional, target :: gap(*)
+    real(c_double), intent(inout), target :: pressure(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length > 0)
+    tributary_address = tfem_address_c_double(tributary, length > 0)
+    gap_address = tfem_address_c_double(gap, length > 0)
+    pressure_address = tfem_address_c_double(pressure, length > 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_opt_i_r1212
+
+  function tfem_get_contact_slave_nodes_opt_i_r2212(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), target :: node(1, *)
+    real(c_double), intent(inout), target :: tributary(1, *)
+    real(c_double), intent(inout), optional, target :: gap(*)
+    real(c_double), intent(inout), target :: pressure(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length > 0)
+    tributary_address = tfem_address_c_double(tributary, length > 0)
+    gap_address = tfem_address_c_double(gap, length > 0)
+    pressure_address = tfem_address_c_double(pressure, length > 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_opt_i_r2212
+
+  function tfem_get_contact_slave_nodes_opt_i_r1122(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: node(*)
+    real(c_double), intent(inout), optional, target :: tributary(*)
+    real(c_double), intent(inout), target :: gap(1, *)
+    real(c_double), intent(inout), target :: pressure(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length > 0)
+    tributary_address = tfem_address_c_double(tributary, length > 0)
+    gap_address = tfem_address_c_double(gap, length > 0)
+    pressure_address = tfem_address_c_double(pressure, length > 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_opt_i_r1122
+
+  function tfem_get_contact_slave_nodes_opt_i_r2122(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), target :: node(1, *)
+    real(c_double), intent(inout), optional, target :: tributary(*)
+    real(c_double), intent(inout), target :: gap(1, *)
+    real(c_double), intent(inout), target :: pressure(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length > 0)
+    tributary_address = tfem_address_c_double(tributary, length > 0)
+    gap_address = tfem_address_c_double(gap, length > 0)
+    pressure_address = tfem_address_c_double(pressure, length > 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_opt_i_r2122
+
+  function tfem_get_contact_slave_nodes_opt_i_r1222(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: node(*)
+    real(c_double), intent(inout), target :: tributary(1, *)
+    real(c_double), intent(inout), target :: gap(1, *)
+    real(c_double), intent(inout), target :: pressure(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length > 0)
+    tributary_address = tfem_address_c_double(tributary, length > 0)
+    gap_address = tfem_address_c_double(gap, length > 0)
+    pressure_address = tfem_address_c_double(pressure, length > 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_opt_i_r1222
+
+  function tfem_get_contact_slave_nodes_opt_i_r2222(model, node, tributary, gap, &
+        pressure, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), target :: node(1, *)
+    real(c_double), intent(inout), target :: tributary(1, *)
+    real(c_double), intent(inout), target :: gap(1, *)
+    real(c_double), intent(inout), target :: pressure(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: node_address
+    type(c_ptr) :: tributary_address
+    type(c_ptr) :: gap_address
+    type(c_ptr) :: pressure_address
+    node_address = tfem_address_c_int(node, length > 0)
+    tributary_address = tfem_address_c_double(tributary, length > 0)
+    gap_address = tfem_address_c_double(gap, length > 0)
+    pressure_address = tfem_address_c_double(pressure, length > 0)
+    status = tfem_get_contact_slave_nodes_by_address(model, node_address, tributary_address, &
+        gap_address, pressure_address, tfem_to_size_t(length))
+  end function tfem_get_contact_slave_nodes_opt_i_r2222
+
+  function tfem_get_contact_pair_nodal_pressures_r2(model, pair, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: pair
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_pair_nodal_pressures(model, pair, out, length)
+  end function tfem_get_contact_pair_nodal_pressures_r2
+
   function tfem_get_contact_pair_nodal_pressures_i(model, pair, out, length) result(status)
     type(c_ptr), value :: model
     integer(c_int), value :: pair
@@ -2367,7 +3977,23 @@ contains
     status = tfem_get_contact_pair_nodal_pressures(model, pair, out, tfem_to_size_t(length))
   end function tfem_get_contact_pair_nodal_pressures_i
 
-  ! tfem_get_contact_gaps, lengths of kind tfem_length_kind.
+  function tfem_get_contact_pair_nodal_pressures_i_r2(model, pair, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: pair
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_pair_nodal_pressures(model, pair, out, tfem_to_size_t(length))
+  end function tfem_get_contact_pair_nodal_pressures_i_r2
+
+  function tfem_get_contact_gaps_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_gaps(model, out, length)
+  end function tfem_get_contact_gaps_r2
+
   function tfem_get_contact_gaps_i(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(*)
@@ -2376,7 +4002,22 @@ contains
     status = tfem_get_contact_gaps(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_gaps_i
 
-  ! tfem_get_contact_mesh, lengths of kind tfem_length_kind.
+  function tfem_get_contact_gaps_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_gaps(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_gaps_i_r2
+
+  function tfem_get_contact_mesh_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_mesh(model, out, length)
+  end function tfem_get_contact_mesh_r2
+
   function tfem_get_contact_mesh_i(model, out, length) result(status)
     type(c_ptr), value :: model
     integer(c_int), intent(inout) :: out(*)
@@ -2385,7 +4026,22 @@ contains
     status = tfem_get_contact_mesh(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_mesh_i
 
-  ! tfem_get_contact_element_pairs, lengths of kind tfem_length_kind.
+  function tfem_get_contact_mesh_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_mesh(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_mesh_i_r2
+
+  function tfem_get_contact_element_pairs_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_element_pairs(model, out, length)
+  end function tfem_get_contact_element_pairs_r2
+
   function tfem_get_contact_element_pairs_i(model, out, length) result(status)
     type(c_ptr), value :: model
     integer(c_int), intent(inout) :: out(*)
@@ -2394,7 +4050,22 @@ contains
     status = tfem_get_contact_element_pairs(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_element_pairs_i
 
-  ! tfem_get_contact_element_apexes, lengths of kind tfem_length_kind.
+  function tfem_get_contact_element_pairs_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_element_pairs(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_element_pairs_i_r2
+
+  function tfem_get_contact_element_apexes_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_element_apexes(model, out, length)
+  end function tfem_get_contact_element_apexes_r2
+
   function tfem_get_contact_element_apexes_i(model, out, length) result(status)
     type(c_ptr), value :: model
     integer(c_int), intent(inout) :: out(*)
@@ -2403,7 +4074,52 @@ contains
     status = tfem_get_contact_element_apexes(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_element_apexes_i
 
-  ! tfem_get_contact_state, lengths of kind tfem_length_kind.
+  function tfem_get_contact_element_apexes_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_element_apexes(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_element_apexes_i_r2
+
+  function tfem_get_contact_pair_bodies_opt(model, pair, body_a, body_b) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: pair
+    integer(c_int), intent(inout), optional, target :: body_a
+    integer(c_int), intent(inout), optional, target :: body_b
+    integer(c_int) :: status
+    type(c_ptr) :: body_a_address
+    type(c_ptr) :: body_b_address
+    body_a_address = c_null_ptr
+    if (present(body_a)) body_a_address = c_loc(body_a)
+    body_b_address = c_null_ptr
+    if (present(body_b)) body_b_address = c_loc(body_b)
+    status = tfem_get_contact_pair_bodies_by_address(model, pair, body_a_address, body_b_address)
+  end function tfem_get_contact_pair_bodies_opt
+
+  function tfem_step_opt(model, load_factor, options, report) result(status)
+    type(c_ptr), value :: model
+    real(c_double), value :: load_factor
+    type(tfem_contact_options), intent(in), optional, target :: options
+    type(tfem_contact_report), intent(inout), optional, target :: report
+    integer(c_int) :: status
+    type(c_ptr) :: options_address
+    type(c_ptr) :: report_address
+    options_address = c_null_ptr
+    if (present(options)) options_address = c_loc(options)
+    report_address = c_null_ptr
+    if (present(report)) report_address = c_loc(report)
+    status = tfem_step_by_address(model, load_factor, options_address, report_address)
+  end function tfem_step_opt
+
+  function tfem_get_contact_state_r2(model, buffer, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int8_t), intent(inout) :: buffer(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_state(model, buffer, length)
+  end function tfem_get_contact_state_r2
+
   function tfem_get_contact_state_i(model, buffer, length) result(status)
     type(c_ptr), value :: model
     integer(c_int8_t), intent(inout) :: buffer(*)
@@ -2412,7 +4128,22 @@ contains
     status = tfem_get_contact_state(model, buffer, tfem_to_size_t(length))
   end function tfem_get_contact_state_i
 
-  ! tfem_set_contact_state, lengths of kind tfem_length_kind.
+  function tfem_get_contact_state_i_r2(model, buffer, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int8_t), intent(inout) :: buffer(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_state(model, buffer, tfem_to_size_t(length))
+  end function tfem_get_contact_state_i_r2
+
+  function tfem_set_contact_state_r2(model, buffer, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int8_t), intent(in) :: buffer(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_set_contact_state(model, buffer, length)
+  end function tfem_set_contact_state_r2
+
   function tfem_set_contact_state_i(model, buffer, length) result(status)
     type(c_ptr), value :: model
     integer(c_int8_t), intent(in) :: buffer(*)
@@ -2421,7 +4152,22 @@ contains
     status = tfem_set_contact_state(model, buffer, tfem_to_size_t(length))
   end function tfem_set_contact_state_i
 
-  ! tfem_get_contact_shear, lengths of kind tfem_length_kind.
+  function tfem_set_contact_state_i_r2(model, buffer, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int8_t), intent(in) :: buffer(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_set_contact_state(model, buffer, tfem_to_size_t(length))
+  end function tfem_set_contact_state_i_r2
+
+  function tfem_get_contact_shear_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_shear(model, out, length)
+  end function tfem_get_contact_shear_r2
+
   function tfem_get_contact_shear_i(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(*)
@@ -2430,7 +4176,22 @@ contains
     status = tfem_get_contact_shear(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_shear_i
 
-  ! tfem_get_contact_friction_state, lengths of kind tfem_length_kind.
+  function tfem_get_contact_shear_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_shear(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_shear_i_r2
+
+  function tfem_get_contact_friction_state_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_friction_state(model, out, length)
+  end function tfem_get_contact_friction_state_r2
+
   function tfem_get_contact_friction_state_i(model, out, length) result(status)
     type(c_ptr), value :: model
     integer(c_int), intent(inout) :: out(*)
@@ -2439,7 +4200,22 @@ contains
     status = tfem_get_contact_friction_state(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_friction_state_i
 
-  ! tfem_get_contact_dissipation, lengths of kind tfem_length_kind.
+  function tfem_get_contact_friction_state_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_friction_state(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_friction_state_i_r2
+
+  function tfem_get_contact_dissipation_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_dissipation(model, out, length)
+  end function tfem_get_contact_dissipation_r2
+
   function tfem_get_contact_dissipation_i(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(*)
@@ -2448,7 +4224,56 @@ contains
     status = tfem_get_contact_dissipation(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_dissipation_i
 
-  ! tfem_contact_last_error, lengths of kind tfem_length_kind.
+  function tfem_get_contact_dissipation_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_dissipation(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_dissipation_i_r2
+
+  function tfem_add_contact_pairs_auto_opt(model, n_tags, tags, tolerance, first, &
+        count) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: n_tags
+    integer(c_int), intent(in), optional, target :: tags(*)
+    real(c_double), value :: tolerance
+    integer(c_int), intent(inout), optional, target :: first
+    integer(c_int), intent(inout), optional, target :: count
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    type(c_ptr) :: first_address
+    type(c_ptr) :: count_address
+    tags_address = tfem_address_c_int(tags, n_tags > 0)
+    first_address = c_null_ptr
+    if (present(first)) first_address = c_loc(first)
+    count_address = c_null_ptr
+    if (present(count)) count_address = c_loc(count)
+    status = tfem_add_contact_pairs_auto_by_address(model, n_tags, tags_address, tolerance, &
+        first_address, count_address)
+  end function tfem_add_contact_pairs_auto_opt
+
+  function tfem_add_contact_pairs_auto_opt_r2(model, n_tags, tags, tolerance, first, &
+        count) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: n_tags
+    integer(c_int), intent(in), target :: tags(1, *)
+    real(c_double), value :: tolerance
+    integer(c_int), intent(inout), optional, target :: first
+    integer(c_int), intent(inout), optional, target :: count
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    type(c_ptr) :: first_address
+    type(c_ptr) :: count_address
+    tags_address = tfem_address_c_int(tags, n_tags > 0)
+    first_address = c_null_ptr
+    if (present(first)) first_address = c_loc(first)
+    count_address = c_null_ptr
+    if (present(count)) count_address = c_loc(count)
+    status = tfem_add_contact_pairs_auto_by_address(model, n_tags, tags_address, tolerance, &
+        first_address, count_address)
+  end function tfem_add_contact_pairs_auto_opt_r2
+
   function tfem_contact_last_error_i(context, buffer, length) result(status)
     type(c_ptr), value :: context
     character(kind=c_char), intent(inout) :: buffer(*)
@@ -2457,40 +4282,466 @@ contains
     status = tfem_contact_last_error(context, buffer, tfem_to_size_t(length))
   end function tfem_contact_last_error_i
 
-  ! tfem_contact_last_error, character buffers as strings.
   function tfem_contact_last_error_str(context, buffer, length) result(status)
     type(c_ptr), value :: context
     character(kind=c_char, len=*), intent(inout) :: buffer
-    integer(c_size_t), value :: length
+    integer(c_size_t), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_contact_last_error_raw(context, buffer, length)
+    status = tfem_contact_last_error(context, buffer, length)
   end function tfem_contact_last_error_str
 
-  ! tfem_contact_last_error, character buffers as strings, lengths of kind tfem_length_kind.
   function tfem_contact_last_error_str_i(context, buffer, length) result(status)
     type(c_ptr), value :: context
     character(kind=c_char, len=*), intent(inout) :: buffer
     integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_contact_last_error_raw(context, buffer, tfem_to_size_t(length))
+    status = tfem_contact_last_error(context, buffer, tfem_to_size_t(length))
   end function tfem_contact_last_error_str_i
 
-  ! tfem_contact_last_error, by a specific name (for the strings of the _str specifics).
-  function tfem_contact_last_error_raw(context, buffer, length) result(status)
-    type(c_ptr), value :: context
-    character(kind=c_char), intent(inout) :: buffer(*)
-    integer(c_size_t), value :: length
-    integer(c_int) :: status
-    status = tfem_contact_last_error(context, buffer, length)
-  end function tfem_contact_last_error_raw
-
-  ! tfem_contact_last_error_length, without `context` (NULL).
   function tfem_contact_last_error_length_no_context() result(res)
     integer(c_size_t) :: res
     res = tfem_contact_last_error_length(c_null_ptr)
   end function tfem_contact_last_error_length_no_context
 
-  ! tfem_contact_nodes, lengths of kind tfem_length_kind.
+  function tfem_contact_add_side_opt(context, tag, body, young, poisson, plane_mode, &
+        n_nodes, nodes, xy, equations, n_edges, edges, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    real(c_double), value :: poisson
+    integer(c_int), value :: plane_mode
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(*)
+    real(c_double), intent(in) :: xy(*)
+    integer(c_int64_t), intent(in) :: equations(*)
+    integer(c_int), value :: n_edges
+    integer(c_int), intent(in) :: edges(*)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side_address)
+  end function tfem_contact_add_side_opt
+
+  function tfem_contact_add_side_opt_r2111(context, tag, body, young, poisson, &
+        plane_mode, n_nodes, nodes, xy, equations, n_edges, edges, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    real(c_double), value :: poisson
+    integer(c_int), value :: plane_mode
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(1, *)
+    real(c_double), intent(in) :: xy(*)
+    integer(c_int64_t), intent(in) :: equations(*)
+    integer(c_int), value :: n_edges
+    integer(c_int), intent(in) :: edges(*)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side_address)
+  end function tfem_contact_add_side_opt_r2111
+
+  function tfem_contact_add_side_opt_r1211(context, tag, body, young, poisson, &
+        plane_mode, n_nodes, nodes, xy, equations, n_edges, edges, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    real(c_double), value :: poisson
+    integer(c_int), value :: plane_mode
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(*)
+    real(c_double), intent(in) :: xy(1, *)
+    integer(c_int64_t), intent(in) :: equations(*)
+    integer(c_int), value :: n_edges
+    integer(c_int), intent(in) :: edges(*)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side_address)
+  end function tfem_contact_add_side_opt_r1211
+
+  function tfem_contact_add_side_opt_r2211(context, tag, body, young, poisson, &
+        plane_mode, n_nodes, nodes, xy, equations, n_edges, edges, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    real(c_double), value :: poisson
+    integer(c_int), value :: plane_mode
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(1, *)
+    real(c_double), intent(in) :: xy(1, *)
+    integer(c_int64_t), intent(in) :: equations(*)
+    integer(c_int), value :: n_edges
+    integer(c_int), intent(in) :: edges(*)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side_address)
+  end function tfem_contact_add_side_opt_r2211
+
+  function tfem_contact_add_side_opt_r1121(context, tag, body, young, poisson, &
+        plane_mode, n_nodes, nodes, xy, equations, n_edges, edges, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    real(c_double), value :: poisson
+    integer(c_int), value :: plane_mode
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(*)
+    real(c_double), intent(in) :: xy(*)
+    integer(c_int64_t), intent(in) :: equations(1, *)
+    integer(c_int), value :: n_edges
+    integer(c_int), intent(in) :: edges(*)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side_address)
+  end function tfem_contact_add_side_opt_r1121
+
+  function tfem_contact_add_side_opt_r2121(context, tag, body, young, poisson, &
+        plane_mode, n_nodes, nodes, xy, equations, n_edges, edges, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    real(c_double), value :: poisson
+    integer(c_int), value :: plane_mode
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(1, *)
+    real(c_double), intent(in) :: xy(*)
+    integer(c_int64_t), intent(in) :: equations(1, *)
+    integer(c_int), value :: n_edges
+    integer(c_int), intent(in) :: edges(*)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side_address)
+  end function tfem_contact_add_side_opt_r2121
+
+  function tfem_contact_add_side_opt_r1221(context, tag, body, young, poisson, &
+        plane_mode, n_nodes, nodes, xy, equations, n_edges, edges, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    real(c_double), value :: poisson
+    integer(c_int), value :: plane_mode
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(*)
+    real(c_double), intent(in) :: xy(1, *)
+    integer(c_int64_t), intent(in) :: equations(1, *)
+    integer(c_int), value :: n_edges
+    integer(c_int), intent(in) :: edges(*)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side_address)
+  end function tfem_contact_add_side_opt_r1221
+
+  function tfem_contact_add_side_opt_r2221(context, tag, body, young, poisson, &
+        plane_mode, n_nodes, nodes, xy, equations, n_edges, edges, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    real(c_double), value :: poisson
+    integer(c_int), value :: plane_mode
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(1, *)
+    real(c_double), intent(in) :: xy(1, *)
+    integer(c_int64_t), intent(in) :: equations(1, *)
+    integer(c_int), value :: n_edges
+    integer(c_int), intent(in) :: edges(*)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side_address)
+  end function tfem_contact_add_side_opt_r2221
+
+  function tfem_contact_add_side_opt_r1112(context, tag, body, young, poisson, &
+        plane_mode, n_nodes, nodes, xy, equations, n_edges, edges, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    real(c_double), value :: poisson
+    integer(c_int), value :: plane_mode
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(*)
+    real(c_double), intent(in) :: xy(*)
+    integer(c_int64_t), intent(in) :: equations(*)
+    integer(c_int), value :: n_edges
+    integer(c_int), intent(in) :: edges(1, *)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side_address)
+  end function tfem_contact_add_side_opt_r1112
+
+  function tfem_contact_add_side_opt_r2112(context, tag, body, young, poisson, &
+        plane_mode, n_nodes, nodes, xy, equations, n_edges, edges, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    real(c_double), value :: poisson
+    integer(c_int), value :: plane_mode
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(1, *)
+    real(c_double), intent(in) :: xy(*)
+    integer(c_int64_t), intent(in) :: equations(*)
+    integer(c_int), value :: n_edges
+    integer(c_int), intent(in) :: edges(1, *)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side_address)
+  end function tfem_contact_add_side_opt_r2112
+
+  function tfem_contact_add_side_opt_r1212(context, tag, body, young, poisson, &
+        plane_mode, n_nodes, nodes, xy, equations, n_edges, edges, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    real(c_double), value :: poisson
+    integer(c_int), value :: plane_mode
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(*)
+    real(c_double), intent(in) :: xy(1, *)
+    integer(c_int64_t), intent(in) :: equations(*)
+    integer(c_int), value :: n_edges
+    integer(c_int), intent(in) :: edges(1, *)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side_address)
+  end function tfem_contact_add_side_opt_r1212
+
+  function tfem_contact_add_side_opt_r2212(context, tag, body, young, poisson, &
+        plane_mode, n_nodes, nodes, xy, equations, n_edges, edges, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    real(c_double), value :: poisson
+    integer(c_int), value :: plane_mode
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(1, *)
+    real(c_double), intent(in) :: xy(1, *)
+    integer(c_int64_t), intent(in) :: equations(*)
+    integer(c_int), value :: n_edges
+    integer(c_int), intent(in) :: edges(1, *)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side_address)
+  end function tfem_contact_add_side_opt_r2212
+
+  function tfem_contact_add_side_opt_r1122(context, tag, body, young, poisson, &
+        plane_mode, n_nodes, nodes, xy, equations, n_edges, edges, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    real(c_double), value :: poisson
+    integer(c_int), value :: plane_mode
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(*)
+    real(c_double), intent(in) :: xy(*)
+    integer(c_int64_t), intent(in) :: equations(1, *)
+    integer(c_int), value :: n_edges
+    integer(c_int), intent(in) :: edges(1, *)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side_address)
+  end function tfem_contact_add_side_opt_r1122
+
+  function tfem_contact_add_side_opt_r2122(context, tag, body, young, poisson, &
+        plane_mode, n_nodes, nodes, xy, equations, n_edges, edges, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    real(c_double), value :: poisson
+    integer(c_int), value :: plane_mode
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(1, *)
+    real(c_double), intent(in) :: xy(*)
+    integer(c_int64_t), intent(in) :: equations(1, *)
+    integer(c_int), value :: n_edges
+    integer(c_int), intent(in) :: edges(1, *)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side_address)
+  end function tfem_contact_add_side_opt_r2122
+
+  function tfem_contact_add_side_opt_r1222(context, tag, body, young, poisson, &
+        plane_mode, n_nodes, nodes, xy, equations, n_edges, edges, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    real(c_double), value :: poisson
+    integer(c_int), value :: plane_mode
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(*)
+    real(c_double), intent(in) :: xy(1, *)
+    integer(c_int64_t), intent(in) :: equations(1, *)
+    integer(c_int), value :: n_edges
+    integer(c_int), intent(in) :: edges(1, *)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side_address)
+  end function tfem_contact_add_side_opt_r1222
+
+  function tfem_contact_add_side_opt_r2222(context, tag, body, young, poisson, &
+        plane_mode, n_nodes, nodes, xy, equations, n_edges, edges, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    real(c_double), value :: poisson
+    integer(c_int), value :: plane_mode
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(1, *)
+    real(c_double), intent(in) :: xy(1, *)
+    integer(c_int64_t), intent(in) :: equations(1, *)
+    integer(c_int), value :: n_edges
+    integer(c_int), intent(in) :: edges(1, *)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
+        nodes, xy, equations, n_edges, edges, side_address)
+  end function tfem_contact_add_side_opt_r2222
+
+  function tfem_contact_add_pair_opt(context, side_a, side_b, pair) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: side_a
+    integer(c_int), value :: side_b
+    integer(c_int), intent(inout), optional, target :: pair
+    integer(c_int) :: status
+    type(c_ptr) :: pair_address
+    pair_address = c_null_ptr
+    if (present(pair)) pair_address = c_loc(pair)
+    status = tfem_contact_add_pair_by_address(context, side_a, side_b, pair_address)
+  end function tfem_contact_add_pair_opt
+
+  function tfem_contact_add_pair_with_mesh_opt(context, side_a, side_b, n_triangles, &
+        connectivity, pair) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: side_a
+    integer(c_int), value :: side_b
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: connectivity(*)
+    integer(c_int), intent(inout), optional, target :: pair
+    integer(c_int) :: status
+    type(c_ptr) :: pair_address
+    pair_address = c_null_ptr
+    if (present(pair)) pair_address = c_loc(pair)
+    status = tfem_contact_add_pair_with_mesh_by_address(context, side_a, side_b, n_triangles, &
+        connectivity, pair_address)
+  end function tfem_contact_add_pair_with_mesh_opt
+
+  function tfem_contact_add_pair_with_mesh_opt_r2(context, side_a, side_b, n_triangles, &
+        connectivity, pair) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: side_a
+    integer(c_int), value :: side_b
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: connectivity(1, *)
+    integer(c_int), intent(inout), optional, target :: pair
+    integer(c_int) :: status
+    type(c_ptr) :: pair_address
+    pair_address = c_null_ptr
+    if (present(pair)) pair_address = c_loc(pair)
+    status = tfem_contact_add_pair_with_mesh_by_address(context, side_a, side_b, n_triangles, &
+        connectivity, pair_address)
+  end function tfem_contact_add_pair_with_mesh_opt_r2
+
+  function tfem_contact_sizes_opt(context, n_nodes, n_elements, n_entries) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout), optional, target :: n_nodes
+    integer(c_int), intent(inout), optional, target :: n_elements
+    integer(c_int64_t), intent(inout), optional, target :: n_entries
+    integer(c_int) :: status
+    type(c_ptr) :: n_nodes_address
+    type(c_ptr) :: n_elements_address
+    type(c_ptr) :: n_entries_address
+    n_nodes_address = c_null_ptr
+    if (present(n_nodes)) n_nodes_address = c_loc(n_nodes)
+    n_elements_address = c_null_ptr
+    if (present(n_elements)) n_elements_address = c_loc(n_elements)
+    n_entries_address = c_null_ptr
+    if (present(n_entries)) n_entries_address = c_loc(n_entries)
+    status = tfem_contact_sizes_by_address(context, n_nodes_address, n_elements_address, &
+        n_entries_address)
+  end function tfem_contact_sizes_opt
+
+  function tfem_contact_nodes_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_nodes(context, out, length)
+  end function tfem_contact_nodes_r2
+
   function tfem_contact_nodes_i(context, out, length) result(status)
     type(c_ptr), value :: context
     integer(c_int), intent(inout) :: out(*)
@@ -2499,7 +4750,41 @@ contains
     status = tfem_contact_nodes(context, out, tfem_to_size_t(length))
   end function tfem_contact_nodes_i
 
-  ! tfem_contact_pattern, lengths of kind tfem_length_kind.
+  function tfem_contact_nodes_i_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_nodes(context, out, tfem_to_size_t(length))
+  end function tfem_contact_nodes_i_r2
+
+  function tfem_contact_pattern_r21(context, rows, cols, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: rows(1, *)
+    integer(c_int64_t), intent(inout) :: cols(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_pattern(context, rows, cols, length)
+  end function tfem_contact_pattern_r21
+
+  function tfem_contact_pattern_r12(context, rows, cols, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: rows(*)
+    integer(c_int64_t), intent(inout) :: cols(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_pattern(context, rows, cols, length)
+  end function tfem_contact_pattern_r12
+
+  function tfem_contact_pattern_r22(context, rows, cols, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: rows(1, *)
+    integer(c_int64_t), intent(inout) :: cols(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_pattern(context, rows, cols, length)
+  end function tfem_contact_pattern_r22
+
   function tfem_contact_pattern_i(context, rows, cols, length) result(status)
     type(c_ptr), value :: context
     integer(c_int64_t), intent(inout) :: rows(*)
@@ -2509,22 +4794,351 @@ contains
     status = tfem_contact_pattern(context, rows, cols, tfem_to_size_t(length))
   end function tfem_contact_pattern_i
 
-  ! tfem_contact_evaluate, lengths of kind tfem_length_kind.
-  function tfem_contact_evaluate_i(context, u, u_length, values, values_length, residual, &
-        residual_length) result(status)
+  function tfem_contact_pattern_i_r21(context, rows, cols, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: rows(1, *)
+    integer(c_int64_t), intent(inout) :: cols(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_pattern(context, rows, cols, tfem_to_size_t(length))
+  end function tfem_contact_pattern_i_r21
+
+  function tfem_contact_pattern_i_r12(context, rows, cols, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: rows(*)
+    integer(c_int64_t), intent(inout) :: cols(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_pattern(context, rows, cols, tfem_to_size_t(length))
+  end function tfem_contact_pattern_i_r12
+
+  function tfem_contact_pattern_i_r22(context, rows, cols, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: rows(1, *)
+    integer(c_int64_t), intent(inout) :: cols(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_pattern(context, rows, cols, tfem_to_size_t(length))
+  end function tfem_contact_pattern_i_r22
+
+  function tfem_contact_evaluate_opt(context, u, u_length, values, values_length, &
+        residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout), optional, target :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    real(c_double), intent(inout), optional, target :: residual(*)
+    integer(c_size_t), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length /= 0)
+    residual_address = tfem_address_c_double(residual, residual_length /= 0)
+    status = tfem_contact_evaluate_by_address(context, u, u_length, values_address, values_length, &
+        residual_address, residual_length)
+  end function tfem_contact_evaluate_opt
+
+  function tfem_contact_evaluate_opt_r211(context, u, u_length, values, values_length, &
+        residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout), optional, target :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    real(c_double), intent(inout), optional, target :: residual(*)
+    integer(c_size_t), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length /= 0)
+    residual_address = tfem_address_c_double(residual, residual_length /= 0)
+    status = tfem_contact_evaluate_by_address(context, u, u_length, values_address, values_length, &
+        residual_address, residual_length)
+  end function tfem_contact_evaluate_opt_r211
+
+  function tfem_contact_evaluate_opt_r121(context, u, u_length, values, values_length, &
+        residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout), target :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    real(c_double), intent(inout), optional, target :: residual(*)
+    integer(c_size_t), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length /= 0)
+    residual_address = tfem_address_c_double(residual, residual_length /= 0)
+    status = tfem_contact_evaluate_by_address(context, u, u_length, values_address, values_length, &
+        residual_address, residual_length)
+  end function tfem_contact_evaluate_opt_r121
+
+  function tfem_contact_evaluate_opt_r221(context, u, u_length, values, values_length, &
+        residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout), target :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    real(c_double), intent(inout), optional, target :: residual(*)
+    integer(c_size_t), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length /= 0)
+    residual_address = tfem_address_c_double(residual, residual_length /= 0)
+    status = tfem_contact_evaluate_by_address(context, u, u_length, values_address, values_length, &
+        residual_address, residual_length)
+  end function tfem_contact_evaluate_opt_r221
+
+  function tfem_contact_evaluate_opt_r112(context, u, u_length, values, values_length, &
+        residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout), optional, target :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    real(c_double), intent(inout), target :: residual(1, *)
+    integer(c_size_t), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length /= 0)
+    residual_address = tfem_address_c_double(residual, residual_length /= 0)
+    status = tfem_contact_evaluate_by_address(context, u, u_length, values_address, values_length, &
+        residual_address, residual_length)
+  end function tfem_contact_evaluate_opt_r112
+
+  function tfem_contact_evaluate_opt_r212(context, u, u_length, values, values_length, &
+        residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout), optional, target :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    real(c_double), intent(inout), target :: residual(1, *)
+    integer(c_size_t), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length /= 0)
+    residual_address = tfem_address_c_double(residual, residual_length /= 0)
+    status = tfem_contact_evaluate_by_address(context, u, u_length, values_address, values_length, &
+        residual_address, residual_length)
+  end function tfem_contact_evaluate_opt_r212
+
+  function tfem_contact_evaluate_opt_r122(context, u, u_length, values, values_length, &
+        residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout), target :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    real(c_double), intent(inout), target :: residual(1, *)
+    integer(c_size_t), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length /= 0)
+    residual_address = tfem_address_c_double(residual, residual_length /= 0)
+    status = tfem_contact_evaluate_by_address(context, u, u_length, values_address, values_length, &
+        residual_address, residual_length)
+  end function tfem_contact_evaluate_opt_r122
+
+  function tfem_contact_evaluate_opt_r222(context, u, u_length, values, values_length, &
+        residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout), target :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    real(c_double), intent(inout), target :: residual(1, *)
+    integer(c_size_t), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length /= 0)
+    residual_address = tfem_address_c_double(residual, residual_length /= 0)
+    status = tfem_contact_evaluate_by_address(context, u, u_length, values_address, values_length, &
+        residual_address, residual_length)
+  end function tfem_contact_evaluate_opt_r222
+
+  function tfem_contact_evaluate_opt_i(context, u, u_length, values, values_length, &
+        residual, residual_length) result(status)
     type(c_ptr), value :: context
     real(c_double), intent(in) :: u(*)
     integer(tfem_length_kind), intent(in) :: u_length
-    real(c_double), intent(inout), optional :: values(*)
+    real(c_double), intent(inout), optional, target :: values(*)
     integer(tfem_length_kind), intent(in) :: values_length
-    real(c_double), intent(inout), optional :: residual(*)
+    real(c_double), intent(inout), optional, target :: residual(*)
     integer(tfem_length_kind), intent(in) :: residual_length
     integer(c_int) :: status
-    status = tfem_contact_evaluate(context, u, tfem_to_size_t(u_length), values, &
-        tfem_to_size_t(values_length), residual, tfem_to_size_t(residual_length))
-  end function tfem_contact_evaluate_i
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length > 0)
+    residual_address = tfem_address_c_double(residual, residual_length > 0)
+    status = tfem_contact_evaluate_by_address(context, u, tfem_to_size_t(u_length), values_address, &
+        tfem_to_size_t(values_length), residual_address, tfem_to_size_t(residual_length))
+  end function tfem_contact_evaluate_opt_i
 
-  ! tfem_contact_gather, lengths of kind tfem_length_kind.
+  function tfem_contact_evaluate_opt_i_r211(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout), optional, target :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    real(c_double), intent(inout), optional, target :: residual(*)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length > 0)
+    residual_address = tfem_address_c_double(residual, residual_length > 0)
+    status = tfem_contact_evaluate_by_address(context, u, tfem_to_size_t(u_length), values_address, &
+        tfem_to_size_t(values_length), residual_address, tfem_to_size_t(residual_length))
+  end function tfem_contact_evaluate_opt_i_r211
+
+  function tfem_contact_evaluate_opt_i_r121(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout), target :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    real(c_double), intent(inout), optional, target :: residual(*)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length > 0)
+    residual_address = tfem_address_c_double(residual, residual_length > 0)
+    status = tfem_contact_evaluate_by_address(context, u, tfem_to_size_t(u_length), values_address, &
+        tfem_to_size_t(values_length), residual_address, tfem_to_size_t(residual_length))
+  end function tfem_contact_evaluate_opt_i_r121
+
+  function tfem_contact_evaluate_opt_i_r221(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout), target :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    real(c_double), intent(inout), optional, target :: residual(*)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length > 0)
+    residual_address = tfem_address_c_double(residual, residual_length > 0)
+    status = tfem_contact_evaluate_by_address(context, u, tfem_to_size_t(u_length), values_address, &
+        tfem_to_size_t(values_length), residual_address, tfem_to_size_t(residual_length))
+  end function tfem_contact_evaluate_opt_i_r221
+
+  function tfem_contact_evaluate_opt_i_r112(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout), optional, target :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    real(c_double), intent(inout), target :: residual(1, *)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length > 0)
+    residual_address = tfem_address_c_double(residual, residual_length > 0)
+    status = tfem_contact_evaluate_by_address(context, u, tfem_to_size_t(u_length), values_address, &
+        tfem_to_size_t(values_length), residual_address, tfem_to_size_t(residual_length))
+  end function tfem_contact_evaluate_opt_i_r112
+
+  function tfem_contact_evaluate_opt_i_r212(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout), optional, target :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    real(c_double), intent(inout), target :: residual(1, *)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length > 0)
+    residual_address = tfem_address_c_double(residual, residual_length > 0)
+    status = tfem_contact_evaluate_by_address(context, u, tfem_to_size_t(u_length), values_address, &
+        tfem_to_size_t(values_length), residual_address, tfem_to_size_t(residual_length))
+  end function tfem_contact_evaluate_opt_i_r212
+
+  function tfem_contact_evaluate_opt_i_r122(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout), target :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    real(c_double), intent(inout), target :: residual(1, *)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length > 0)
+    residual_address = tfem_address_c_double(residual, residual_length > 0)
+    status = tfem_contact_evaluate_by_address(context, u, tfem_to_size_t(u_length), values_address, &
+        tfem_to_size_t(values_length), residual_address, tfem_to_size_t(residual_length))
+  end function tfem_contact_evaluate_opt_i_r122
+
+  function tfem_contact_evaluate_opt_i_r222(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout), target :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    real(c_double), intent(inout), target :: residual(1, *)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length > 0)
+    residual_address = tfem_address_c_double(residual, residual_length > 0)
+    status = tfem_contact_evaluate_by_address(context, u, tfem_to_size_t(u_length), values_address, &
+        tfem_to_size_t(values_length), residual_address, tfem_to_size_t(residual_length))
+  end function tfem_contact_evaluate_opt_i_r222
+
+  function tfem_contact_gather_r21(context, u_equations, n_equations, u, u_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u_equations(1, *)
+    integer(c_size_t), intent(in) :: n_equations
+    real(c_double), intent(inout) :: u(*)
+    integer(c_size_t), intent(in) :: u_length
+    integer(c_int) :: status
+    status = tfem_contact_gather(context, u_equations, n_equations, u, u_length)
+  end function tfem_contact_gather_r21
+
+  function tfem_contact_gather_r12(context, u_equations, n_equations, u, u_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u_equations(*)
+    integer(c_size_t), intent(in) :: n_equations
+    real(c_double), intent(inout) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    integer(c_int) :: status
+    status = tfem_contact_gather(context, u_equations, n_equations, u, u_length)
+  end function tfem_contact_gather_r12
+
+  function tfem_contact_gather_r22(context, u_equations, n_equations, u, u_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u_equations(1, *)
+    integer(c_size_t), intent(in) :: n_equations
+    real(c_double), intent(inout) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    integer(c_int) :: status
+    status = tfem_contact_gather(context, u_equations, n_equations, u, u_length)
+  end function tfem_contact_gather_r22
+
   function tfem_contact_gather_i(context, u_equations, n_equations, u, u_length) result(status)
     type(c_ptr), value :: context
     real(c_double), intent(in) :: u_equations(*)
@@ -2536,8 +5150,74 @@ contains
         tfem_to_size_t(u_length))
   end function tfem_contact_gather_i
 
-  ! tfem_contact_scatter_add, lengths of kind tfem_length_kind.
-  function tfem_contact_scatter_add_i(context, residual, residual_length, host_vector, n_equations) result(status)
+  function tfem_contact_gather_i_r21(context, u_equations, n_equations, u, u_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u_equations(1, *)
+    integer(tfem_length_kind), intent(in) :: n_equations
+    real(c_double), intent(inout) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    integer(c_int) :: status
+    status = tfem_contact_gather(context, u_equations, tfem_to_size_t(n_equations), u, &
+        tfem_to_size_t(u_length))
+  end function tfem_contact_gather_i_r21
+
+  function tfem_contact_gather_i_r12(context, u_equations, n_equations, u, u_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u_equations(*)
+    integer(tfem_length_kind), intent(in) :: n_equations
+    real(c_double), intent(inout) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    integer(c_int) :: status
+    status = tfem_contact_gather(context, u_equations, tfem_to_size_t(n_equations), u, &
+        tfem_to_size_t(u_length))
+  end function tfem_contact_gather_i_r12
+
+  function tfem_contact_gather_i_r22(context, u_equations, n_equations, u, u_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u_equations(1, *)
+    integer(tfem_length_kind), intent(in) :: n_equations
+    real(c_double), intent(inout) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    integer(c_int) :: status
+    status = tfem_contact_gather(context, u_equations, tfem_to_size_t(n_equations), u, &
+        tfem_to_size_t(u_length))
+  end function tfem_contact_gather_i_r22
+
+  function tfem_contact_scatter_add_r21(context, residual, residual_length, &
+        host_vector, n_equations) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: residual(1, *)
+    integer(c_size_t), intent(in) :: residual_length
+    real(c_double), intent(inout) :: host_vector(*)
+    integer(c_size_t), intent(in) :: n_equations
+    integer(c_int) :: status
+    status = tfem_contact_scatter_add(context, residual, residual_length, host_vector, n_equations)
+  end function tfem_contact_scatter_add_r21
+
+  function tfem_contact_scatter_add_r12(context, residual, residual_length, &
+        host_vector, n_equations) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: residual(*)
+    integer(c_size_t), intent(in) :: residual_length
+    real(c_double), intent(inout) :: host_vector(1, *)
+    integer(c_size_t), intent(in) :: n_equations
+    integer(c_int) :: status
+    status = tfem_contact_scatter_add(context, residual, residual_length, host_vector, n_equations)
+  end function tfem_contact_scatter_add_r12
+
+  function tfem_contact_scatter_add_r22(context, residual, residual_length, &
+        host_vector, n_equations) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: residual(1, *)
+    integer(c_size_t), intent(in) :: residual_length
+    real(c_double), intent(inout) :: host_vector(1, *)
+    integer(c_size_t), intent(in) :: n_equations
+    integer(c_int) :: status
+    status = tfem_contact_scatter_add(context, residual, residual_length, host_vector, n_equations)
+  end function tfem_contact_scatter_add_r22
+
+  function tfem_contact_scatter_add_i(context, residual, residual_length, host_vector, &
+        n_equations) result(status)
     type(c_ptr), value :: context
     real(c_double), intent(in) :: residual(*)
     integer(tfem_length_kind), intent(in) :: residual_length
@@ -2548,17 +5228,98 @@ contains
         tfem_to_size_t(n_equations))
   end function tfem_contact_scatter_add_i
 
-  ! tfem_contact_update, lengths of kind tfem_length_kind.
-  function tfem_contact_update_i(context, u, u_length, changed) result(status)
+  function tfem_contact_scatter_add_i_r21(context, residual, residual_length, &
+        host_vector, n_equations) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: residual(1, *)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    real(c_double), intent(inout) :: host_vector(*)
+    integer(tfem_length_kind), intent(in) :: n_equations
+    integer(c_int) :: status
+    status = tfem_contact_scatter_add(context, residual, tfem_to_size_t(residual_length), host_vector, &
+        tfem_to_size_t(n_equations))
+  end function tfem_contact_scatter_add_i_r21
+
+  function tfem_contact_scatter_add_i_r12(context, residual, residual_length, &
+        host_vector, n_equations) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: residual(*)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    real(c_double), intent(inout) :: host_vector(1, *)
+    integer(tfem_length_kind), intent(in) :: n_equations
+    integer(c_int) :: status
+    status = tfem_contact_scatter_add(context, residual, tfem_to_size_t(residual_length), host_vector, &
+        tfem_to_size_t(n_equations))
+  end function tfem_contact_scatter_add_i_r12
+
+  function tfem_contact_scatter_add_i_r22(context, residual, residual_length, &
+        host_vector, n_equations) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: residual(1, *)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    real(c_double), intent(inout) :: host_vector(1, *)
+    integer(tfem_length_kind), intent(in) :: n_equations
+    integer(c_int) :: status
+    status = tfem_contact_scatter_add(context, residual, tfem_to_size_t(residual_length), host_vector, &
+        tfem_to_size_t(n_equations))
+  end function tfem_contact_scatter_add_i_r22
+
+  function tfem_contact_update_opt(context, u, u_length, changed) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(c_size_t), intent(in) :: u_length
+    integer(c_int), intent(inout), optional, target :: changed
+    integer(c_int) :: status
+    type(c_ptr) :: changed_address
+    changed_address = c_null_ptr
+    if (present(changed)) changed_address = c_loc(changed)
+    status = tfem_contact_update_by_address(context, u, u_length, changed_address)
+  end function tfem_contact_update_opt
+
+  function tfem_contact_update_opt_r2(context, u, u_length, changed) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    integer(c_int), intent(inout), optional, target :: changed
+    integer(c_int) :: status
+    type(c_ptr) :: changed_address
+    changed_address = c_null_ptr
+    if (present(changed)) changed_address = c_loc(changed)
+    status = tfem_contact_update_by_address(context, u, u_length, changed_address)
+  end function tfem_contact_update_opt_r2
+
+  function tfem_contact_update_opt_i(context, u, u_length, changed) result(status)
     type(c_ptr), value :: context
     real(c_double), intent(in) :: u(*)
     integer(tfem_length_kind), intent(in) :: u_length
-    integer(c_int), intent(inout), optional :: changed
+    integer(c_int), intent(inout), optional, target :: changed
     integer(c_int) :: status
-    status = tfem_contact_update(context, u, tfem_to_size_t(u_length), changed)
-  end function tfem_contact_update_i
+    type(c_ptr) :: changed_address
+    changed_address = c_null_ptr
+    if (present(changed)) changed_address = c_loc(changed)
+    status = tfem_contact_update_by_address(context, u, tfem_to_size_t(u_length), changed_address)
+  end function tfem_contact_update_opt_i
 
-  ! tfem_contact_get_active, lengths of kind tfem_length_kind.
+  function tfem_contact_update_opt_i_r2(context, u, u_length, changed) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    integer(c_int), intent(inout), optional, target :: changed
+    integer(c_int) :: status
+    type(c_ptr) :: changed_address
+    changed_address = c_null_ptr
+    if (present(changed)) changed_address = c_loc(changed)
+    status = tfem_contact_update_by_address(context, u, tfem_to_size_t(u_length), changed_address)
+  end function tfem_contact_update_opt_i_r2
+
+  function tfem_contact_get_active_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_get_active(context, out, length)
+  end function tfem_contact_get_active_r2
+
   function tfem_contact_get_active_i(context, out, length) result(status)
     type(c_ptr), value :: context
     integer(c_int), intent(inout) :: out(*)
@@ -2567,7 +5328,22 @@ contains
     status = tfem_contact_get_active(context, out, tfem_to_size_t(length))
   end function tfem_contact_get_active_i
 
-  ! tfem_contact_set_active, lengths of kind tfem_length_kind.
+  function tfem_contact_get_active_i_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_get_active(context, out, tfem_to_size_t(length))
+  end function tfem_contact_get_active_i_r2
+
+  function tfem_contact_set_active_r2(context, active, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(in) :: active(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_set_active(context, active, length)
+  end function tfem_contact_set_active_r2
+
   function tfem_contact_set_active_i(context, active, length) result(status)
     type(c_ptr), value :: context
     integer(c_int), intent(in) :: active(*)
@@ -2576,7 +5352,44 @@ contains
     status = tfem_contact_set_active(context, active, tfem_to_size_t(length))
   end function tfem_contact_set_active_i
 
-  ! tfem_contact_gaps, lengths of kind tfem_length_kind.
+  function tfem_contact_set_active_i_r2(context, active, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(in) :: active(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_set_active(context, active, tfem_to_size_t(length))
+  end function tfem_contact_set_active_i_r2
+
+  function tfem_contact_gaps_r21(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_gaps(context, u, u_length, out, length)
+  end function tfem_contact_gaps_r21
+
+  function tfem_contact_gaps_r12(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_gaps(context, u, u_length, out, length)
+  end function tfem_contact_gaps_r12
+
+  function tfem_contact_gaps_r22(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_gaps(context, u, u_length, out, length)
+  end function tfem_contact_gaps_r22
+
   function tfem_contact_gaps_i(context, u, u_length, out, length) result(status)
     type(c_ptr), value :: context
     real(c_double), intent(in) :: u(*)
@@ -2587,7 +5400,66 @@ contains
     status = tfem_contact_gaps(context, u, tfem_to_size_t(u_length), out, tfem_to_size_t(length))
   end function tfem_contact_gaps_i
 
-  ! tfem_contact_pressures, lengths of kind tfem_length_kind.
+  function tfem_contact_gaps_i_r21(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_gaps(context, u, tfem_to_size_t(u_length), out, tfem_to_size_t(length))
+  end function tfem_contact_gaps_i_r21
+
+  function tfem_contact_gaps_i_r12(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_gaps(context, u, tfem_to_size_t(u_length), out, tfem_to_size_t(length))
+  end function tfem_contact_gaps_i_r12
+
+  function tfem_contact_gaps_i_r22(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_gaps(context, u, tfem_to_size_t(u_length), out, tfem_to_size_t(length))
+  end function tfem_contact_gaps_i_r22
+
+  function tfem_contact_pressures_r21(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_pressures(context, u, u_length, out, length)
+  end function tfem_contact_pressures_r21
+
+  function tfem_contact_pressures_r12(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_pressures(context, u, u_length, out, length)
+  end function tfem_contact_pressures_r12
+
+  function tfem_contact_pressures_r22(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_pressures(context, u, u_length, out, length)
+  end function tfem_contact_pressures_r22
+
   function tfem_contact_pressures_i(context, u, u_length, out, length) result(status)
     type(c_ptr), value :: context
     real(c_double), intent(in) :: u(*)
@@ -2598,7 +5470,44 @@ contains
     status = tfem_contact_pressures(context, u, tfem_to_size_t(u_length), out, tfem_to_size_t(length))
   end function tfem_contact_pressures_i
 
-  ! tfem_contact_elements, lengths of kind tfem_length_kind.
+  function tfem_contact_pressures_i_r21(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_pressures(context, u, tfem_to_size_t(u_length), out, tfem_to_size_t(length))
+  end function tfem_contact_pressures_i_r21
+
+  function tfem_contact_pressures_i_r12(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_pressures(context, u, tfem_to_size_t(u_length), out, tfem_to_size_t(length))
+  end function tfem_contact_pressures_i_r12
+
+  function tfem_contact_pressures_i_r22(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_pressures(context, u, tfem_to_size_t(u_length), out, tfem_to_size_t(length))
+  end function tfem_contact_pressures_i_r22
+
+  function tfem_contact_elements_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_elements(context, out, length)
+  end function tfem_contact_elements_r2
+
   function tfem_contact_elements_i(context, out, length) result(status)
     type(c_ptr), value :: context
     integer(c_int), intent(inout) :: out(*)
@@ -2607,7 +5516,22 @@ contains
     status = tfem_contact_elements(context, out, tfem_to_size_t(length))
   end function tfem_contact_elements_i
 
-  ! tfem_contact_element_equations, lengths of kind tfem_length_kind.
+  function tfem_contact_elements_i_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_elements(context, out, tfem_to_size_t(length))
+  end function tfem_contact_elements_i_r2
+
+  function tfem_contact_element_equations_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_element_equations(context, out, length)
+  end function tfem_contact_element_equations_r2
+
   function tfem_contact_element_equations_i(context, out, length) result(status)
     type(c_ptr), value :: context
     integer(c_int64_t), intent(inout) :: out(*)
@@ -2616,7 +5540,22 @@ contains
     status = tfem_contact_element_equations(context, out, tfem_to_size_t(length))
   end function tfem_contact_element_equations_i
 
-  ! tfem_contact_element_blocks, lengths of kind tfem_length_kind.
+  function tfem_contact_element_equations_i_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_element_equations(context, out, tfem_to_size_t(length))
+  end function tfem_contact_element_equations_i_r2
+
+  function tfem_contact_element_blocks_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_element_blocks(context, out, length)
+  end function tfem_contact_element_blocks_r2
+
   function tfem_contact_element_blocks_i(context, out, length) result(status)
     type(c_ptr), value :: context
     real(c_double), intent(inout) :: out(*)
@@ -2624,6 +5563,817 @@ contains
     integer(c_int) :: status
     status = tfem_contact_element_blocks(context, out, tfem_to_size_t(length))
   end function tfem_contact_element_blocks_i
+
+  function tfem_contact_element_blocks_i_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_contact_element_blocks(context, out, tfem_to_size_t(length))
+  end function tfem_contact_element_blocks_i_r2
+
+end module tfem_specifics
+
+! The module to use: tfem_c's constants and types, its interfaces where nothing is
+! converted, and the generic interfaces.
+module tfem
+  use, intrinsic :: iso_c_binding
+  use tfem_c, only: TFEM_STATUS_OK, TFEM_STATUS_NULL_POINTER, TFEM_STATUS_INVALID_ARGUMENT, &
+        TFEM_STATUS_INVALID_MESH, TFEM_STATUS_INVALID_MATERIAL, TFEM_STATUS_INVALID_STATE, &
+        TFEM_STATUS_BUFFER_TOO_SMALL, TFEM_STATUS_SINGULAR, TFEM_STATUS_NOT_CONVERGED, &
+        TFEM_STATUS_DEGENERATE_ELEMENT, TFEM_STATUS_INVALID_CONTACT, TFEM_STATUS_NUMERICAL_FAILURE, &
+        TFEM_STATUS_INTERNAL, TFEM_STATUS_OUT_OF_MEMORY, TFEM_STATUS_IO, TFEM_TEMPERING_MODE_AUTO, &
+        TFEM_TEMPERING_MODE_LAMBDA, TFEM_TEMPERING_MODE_FIXED_JMIN, TFEM_TEMPERING_MODE_OFF, &
+        TFEM_ORDERING_MODE_AUTO, TFEM_ORDERING_MODE_AMD, TFEM_ORDERING_MODE_NESTED_DISSECTION, &
+        TFEM_CONTACT_WEIGHTING_STRIP, TFEM_CONTACT_WEIGHTING_MORTAR, TFEM_CONTACT_LAW_FRICTIONLESS, &
+        TFEM_CONTACT_LAW_STICK, TFEM_INVERSION_TEST_LINEARISED, TFEM_INVERSION_TEST_LITERAL, &
+        TFEM_PLANE_MODE_STRAIN, TFEM_PLANE_MODE_STRESS, TFEM_COMPONENT_X, TFEM_COMPONENT_Y, &
+        tfem_solve_info, tfem_contact_options, tfem_contact_report, tfem_version, tfem_create, &
+        tfem_destroy, tfem_warning_count, tfem_get_warning_size, tfem_set_mesh, tfem_load_gmsh, &
+        tfem_write_vtu, tfem_set_boundary_edges, tfem_set_material, tfem_set_tempering, &
+        tfem_set_ordering, tfem_fix, tfem_fix_edges, tfem_clear_constraints, tfem_add_pressure, &
+        tfem_add_traction, tfem_add_nodal_force, tfem_set_body_force, tfem_clear_loads, &
+        tfem_get_boundary_edge_count, tfem_element_stiffness, tfem_laplacian_stiffness, &
+        tfem_contact_options_default, tfem_get_contact_report, tfem_add_boundary_edges, &
+        tfem_get_external_work, tfem_set_contact_weighting, tfem_get_contact_weighting, &
+        tfem_get_contact_mesh_size, tfem_set_threads, tfem_get_threads, tfem_revert_step, &
+        tfem_get_contact_state_size, tfem_set_friction, tfem_set_prescribed, tfem_contact_create, &
+        tfem_contact_destroy, tfem_contact_set_options, tfem_contact_restart, tfem_contact_length, &
+        tfem_last_error, tfem_last_error_length, tfem_get_warning, tfem_get_mesh_nodes, &
+        tfem_get_displacements, tfem_get_element_strains, tfem_get_element_stresses, &
+        tfem_get_element_jacobians, tfem_get_reactions, tfem_get_system_matrix, &
+        tfem_get_contact_active, tfem_get_contact_pressure, tfem_get_contact_elements, &
+        tfem_get_contact_forces, tfem_get_contact_nodal_pressures, &
+        tfem_get_contact_pair_nodal_pressures, tfem_get_contact_gaps, tfem_get_contact_mesh, &
+        tfem_get_contact_element_pairs, tfem_get_contact_element_apexes, tfem_get_contact_state, &
+        tfem_set_contact_state, tfem_get_contact_shear, tfem_get_contact_friction_state, &
+        tfem_get_contact_dissipation, tfem_contact_last_error, tfem_contact_last_error_length, &
+        tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, tfem_contact_scatter_add, &
+        tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, tfem_contact_pressures, &
+        tfem_contact_elements, tfem_contact_element_equations, tfem_contact_element_blocks
+  use tfem_specifics
+  implicit none
+  private :: c_strlen
+  private :: tfem_last_error_i, tfem_last_error_str, tfem_last_error_str_i, tfem_last_error_no_model
+  private :: tfem_last_error_no_model_i, tfem_last_error_no_model_str
+  private :: tfem_last_error_no_model_str_i, tfem_last_error_length_no_model, tfem_get_warning_i
+  private :: tfem_get_warning_str, tfem_get_warning_str_i, tfem_solve_opt, tfem_get_sizes_opt
+  private :: tfem_get_mesh_nodes_r2, tfem_get_mesh_nodes_i, tfem_get_mesh_nodes_i_r2
+  private :: tfem_get_mesh_triangles_opt, tfem_get_mesh_triangles_opt_r21
+  private :: tfem_get_mesh_triangles_opt_r12, tfem_get_mesh_triangles_opt_r22
+  private :: tfem_get_mesh_triangles_opt_i, tfem_get_mesh_triangles_opt_i_r21
+  private :: tfem_get_mesh_triangles_opt_i_r12, tfem_get_mesh_triangles_opt_i_r22
+  private :: tfem_get_boundary_edges_opt, tfem_get_boundary_edges_opt_r21
+  private :: tfem_get_boundary_edges_opt_r12, tfem_get_boundary_edges_opt_r22
+  private :: tfem_get_boundary_edges_opt_i, tfem_get_boundary_edges_opt_i_r21
+  private :: tfem_get_boundary_edges_opt_i_r12, tfem_get_boundary_edges_opt_i_r22
+  private :: tfem_get_displacements_r2, tfem_get_displacements_i, tfem_get_displacements_i_r2
+  private :: tfem_get_element_strains_r2, tfem_get_element_strains_i, tfem_get_element_strains_i_r2
+  private :: tfem_get_element_stresses_r2, tfem_get_element_stresses_i
+  private :: tfem_get_element_stresses_i_r2, tfem_get_element_jacobians_r2
+  private :: tfem_get_element_jacobians_i, tfem_get_element_jacobians_i_r2, tfem_get_reactions_r2
+  private :: tfem_get_reactions_i, tfem_get_reactions_i_r2, tfem_get_system_matrix_size_opt
+  private :: tfem_get_system_matrix_r2111, tfem_get_system_matrix_r1211
+  private :: tfem_get_system_matrix_r2211, tfem_get_system_matrix_r1121
+  private :: tfem_get_system_matrix_r2121, tfem_get_system_matrix_r1221
+  private :: tfem_get_system_matrix_r2221, tfem_get_system_matrix_r1112
+  private :: tfem_get_system_matrix_r2112, tfem_get_system_matrix_r1212
+  private :: tfem_get_system_matrix_r2212, tfem_get_system_matrix_r1122
+  private :: tfem_get_system_matrix_r2122, tfem_get_system_matrix_r1222
+  private :: tfem_get_system_matrix_r2222, tfem_get_system_matrix_i, tfem_get_system_matrix_i_r2111
+  private :: tfem_get_system_matrix_i_r1211, tfem_get_system_matrix_i_r2211
+  private :: tfem_get_system_matrix_i_r1121, tfem_get_system_matrix_i_r2121
+  private :: tfem_get_system_matrix_i_r1221, tfem_get_system_matrix_i_r2221
+  private :: tfem_get_system_matrix_i_r1112, tfem_get_system_matrix_i_r2112
+  private :: tfem_get_system_matrix_i_r1212, tfem_get_system_matrix_i_r2212
+  private :: tfem_get_system_matrix_i_r1122, tfem_get_system_matrix_i_r2122
+  private :: tfem_get_system_matrix_i_r1222, tfem_get_system_matrix_i_r2222
+  private :: tfem_add_contact_pair_opt, tfem_add_contact_pair_with_mesh_opt
+  private :: tfem_add_contact_pair_with_mesh_opt_r2, tfem_solve_contact_opt
+  private :: tfem_get_contact_active_r2, tfem_get_contact_active_i, tfem_get_contact_active_i_r2
+  private :: tfem_get_contact_pressure_r2, tfem_get_contact_pressure_i
+  private :: tfem_get_contact_pressure_i_r2, tfem_get_contact_elements_r2
+  private :: tfem_get_contact_elements_i, tfem_get_contact_elements_i_r2, tfem_get_contact_forces_r2
+  private :: tfem_get_contact_forces_i, tfem_get_contact_forces_i_r2
+  private :: tfem_get_contact_nodal_pressures_r2, tfem_get_contact_nodal_pressures_i
+  private :: tfem_get_contact_nodal_pressures_i_r2, tfem_get_contact_slave_nodes_opt
+  private :: tfem_get_contact_slave_nodes_opt_r2111, tfem_get_contact_slave_nodes_opt_r1211
+  private :: tfem_get_contact_slave_nodes_opt_r2211, tfem_get_contact_slave_nodes_opt_r1121
+  private :: tfem_get_contact_slave_nodes_opt_r2121, tfem_get_contact_slave_nodes_opt_r1221
+  private :: tfem_get_contact_slave_nodes_opt_r2221, tfem_get_contact_slave_nodes_opt_r1112
+  private :: tfem_get_contact_slave_nodes_opt_r2112, tfem_get_contact_slave_nodes_opt_r1212
+  private :: tfem_get_contact_slave_nodes_opt_r2212, tfem_get_contact_slave_nodes_opt_r1122
+  private :: tfem_get_contact_slave_nodes_opt_r2122, tfem_get_contact_slave_nodes_opt_r1222
+  private :: tfem_get_contact_slave_nodes_opt_r2222, tfem_get_contact_slave_nodes_opt_i
+  private :: tfem_get_contact_slave_nodes_opt_i_r2111, tfem_get_contact_slave_nodes_opt_i_r1211
+  private :: tfem_get_contact_slave_nodes_opt_i_r2211, tfem_get_contact_slave_nodes_opt_i_r1121
+  private :: tfem_get_contact_slave_nodes_opt_i_r2121, tfem_get_contact_slave_nodes_opt_i_r1221
+  private :: tfem_get_contact_slave_nodes_opt_i_r2221, tfem_get_contact_slave_nodes_opt_i_r1112
+  private :: tfem_get_contact_slave_nodes_opt_i_r2112, tfem_get_contact_slave_nodes_opt_i_r1212
+  private :: tfem_get_contact_slave_nodes_opt_i_r2212, tfem_get_contact_slave_nodes_opt_i_r1122
+  private :: tfem_get_contact_slave_nodes_opt_i_r2122, tfem_get_contact_slave_nodes_opt_i_r1222
+  private :: tfem_get_contact_slave_nodes_opt_i_r2222, tfem_get_contact_pair_nodal_pressures_r2
+  private :: tfem_get_contact_pair_nodal_pressures_i, tfem_get_contact_pair_nodal_pressures_i_r2
+  private :: tfem_get_contact_gaps_r2, tfem_get_contact_gaps_i, tfem_get_contact_gaps_i_r2
+  private :: tfem_get_contact_mesh_r2, tfem_get_contact_mesh_i, tfem_get_contact_mesh_i_r2
+  private :: tfem_get_contact_element_pairs_r2, tfem_get_contact_element_pairs_i
+  private :: tfem_get_contact_element_pairs_i_r2, tfem_get_contact_element_apexes_r2
+  private :: tfem_get_contact_element_apexes_i, tfem_get_contact_element_apexes_i_r2
+  private :: tfem_get_contact_pair_bodies_opt, tfem_step_opt, tfem_get_contact_state_r2
+  private :: tfem_get_contact_state_i, tfem_get_contact_state_i_r2, tfem_set_contact_state_r2
+  private :: tfem_set_contact_state_i, tfem_set_contact_state_i_r2, tfem_get_contact_shear_r2
+  private :: tfem_get_contact_shear_i, tfem_get_contact_shear_i_r2
+  private :: tfem_get_contact_friction_state_r2, tfem_get_contact_friction_state_i
+  private :: tfem_get_contact_friction_state_i_r2, tfem_get_contact_dissipation_r2
+  private :: tfem_get_contact_dissipation_i, tfem_get_contact_dissipation_i_r2
+  private :: tfem_add_contact_pairs_auto_opt, tfem_add_contact_pairs_auto_opt_r2
+  private :: tfem_contact_last_error_i, tfem_contact_last_error_str, tfem_contact_last_error_str_i
+  private :: tfem_contact_last_error_length_no_context, tfem_contact_add_side_opt
+  private :: tfem_contact_add_side_opt_r2111, tfem_contact_add_side_opt_r1211
+  private :: tfem_contact_add_side_opt_r2211, tfem_contact_add_side_opt_r1121
+  private :: tfem_contact_add_side_opt_r2121, tfem_contact_add_side_opt_r1221
+  private :: tfem_contact_add_side_opt_r2221, tfem_contact_add_side_opt_r1112
+  private :: tfem_contact_add_side_opt_r2112, tfem_contact_add_side_opt_r1212
+  private :: tfem_contact_add_side_opt_r2212, tfem_contact_add_side_opt_r1122
+  private :: tfem_contact_add_side_opt_r2122, tfem_contact_add_side_opt_r1222
+  private :: tfem_contact_add_side_opt_r2222, tfem_contact_add_pair_opt
+  private :: tfem_contact_add_pair_with_mesh_opt, tfem_contact_add_pair_with_mesh_opt_r2
+  private :: tfem_contact_sizes_opt, tfem_contact_nodes_r2, tfem_contact_nodes_i
+  private :: tfem_contact_nodes_i_r2, tfem_contact_pattern_r21, tfem_contact_pattern_r12
+  private :: tfem_contact_pattern_r22, tfem_contact_pattern_i, tfem_contact_pattern_i_r21
+  private :: tfem_contact_pattern_i_r12, tfem_contact_pattern_i_r22, tfem_contact_evaluate_opt
+  private :: tfem_contact_evaluate_opt_r211, tfem_contact_evaluate_opt_r121
+  private :: tfem_contact_evaluate_opt_r221, tfem_contact_evaluate_opt_r112
+  private :: tfem_contact_evaluate_opt_r212, tfem_contact_evaluate_opt_r122
+  private :: tfem_contact_evaluate_opt_r222, tfem_contact_evaluate_opt_i
+  private :: tfem_contact_evaluate_opt_i_r211, tfem_contact_evaluate_opt_i_r121
+  private :: tfem_contact_evaluate_opt_i_r221, tfem_contact_evaluate_opt_i_r112
+  private :: tfem_contact_evaluate_opt_i_r212, tfem_contact_evaluate_opt_i_r122
+  private :: tfem_contact_evaluate_opt_i_r222, tfem_contact_gather_r21, tfem_contact_gather_r12
+  private :: tfem_contact_gather_r22, tfem_contact_gather_i, tfem_contact_gather_i_r21
+  private :: tfem_contact_gather_i_r12, tfem_contact_gather_i_r22, tfem_contact_scatter_add_r21
+  private :: tfem_contact_scatter_add_r12, tfem_contact_scatter_add_r22, tfem_contact_scatter_add_i
+  private :: tfem_contact_scatter_add_i_r21, tfem_contact_scatter_add_i_r12
+  private :: tfem_contact_scatter_add_i_r22, tfem_contact_update_opt, tfem_contact_update_opt_r2
+  private :: tfem_contact_update_opt_i, tfem_contact_update_opt_i_r2, tfem_contact_get_active_r2
+  private :: tfem_contact_get_active_i, tfem_contact_get_active_i_r2, tfem_contact_set_active_r2
+  private :: tfem_contact_set_active_i, tfem_contact_set_active_i_r2, tfem_contact_gaps_r21
+  private :: tfem_contact_gaps_r12, tfem_contact_gaps_r22, tfem_contact_gaps_i
+  private :: tfem_contact_gaps_i_r21, tfem_contact_gaps_i_r12, tfem_contact_gaps_i_r22
+  private :: tfem_contact_pressures_r21, tfem_contact_pressures_r12, tfem_contact_pressures_r22
+  private :: tfem_contact_pressures_i, tfem_contact_pressures_i_r21, tfem_contact_pressures_i_r12
+  private :: tfem_contact_pressures_i_r22, tfem_contact_elements_r2, tfem_contact_elements_i
+  private :: tfem_contact_elements_i_r2, tfem_contact_element_equations_r2
+  private :: tfem_contact_element_equations_i, tfem_contact_element_equations_i_r2
+  private :: tfem_contact_element_blocks_r2, tfem_contact_element_blocks_i
+  private :: tfem_contact_element_blocks_i_r2
+
+  !> Fortran: tfem_last_error (documented in module tfem_c). `model` may be omitted (NULL is
+  !! passed). `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
+  !! negative length is passed as 0. `buffer` may also be a character string.
+  interface tfem_last_error
+    procedure tfem_last_error
+    procedure tfem_last_error_i
+    procedure tfem_last_error_str
+    procedure tfem_last_error_str_i
+    procedure tfem_last_error_no_model
+    procedure tfem_last_error_no_model_i
+    procedure tfem_last_error_no_model_str
+    procedure tfem_last_error_no_model_str_i
+  end interface tfem_last_error
+
+  !> Fortran: tfem_last_error_length (documented in module tfem_c). `model` may be omitted (NULL is
+  !! passed).
+  interface tfem_last_error_length
+    procedure tfem_last_error_length
+    procedure tfem_last_error_length_no_model
+  end interface tfem_last_error_length
+
+  !> Fortran: tfem_get_warning (documented in module tfem_c). `length` takes an integer(c_size_t) or
+  !! a default integer (kind tfem_length_kind); a negative length is passed as 0. `buffer` may also
+  !! be a character string.
+  interface tfem_get_warning
+    procedure tfem_get_warning
+    procedure tfem_get_warning_i
+    procedure tfem_get_warning_str
+    procedure tfem_get_warning_str_i
+  end interface tfem_get_warning
+
+  !> Fortran: tfem_solve (documented in module tfem_c). `info` is OPTIONAL: omit it to pass NULL.
+  !! The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_solve
+    procedure tfem_solve_opt
+  end interface tfem_solve
+
+  !> Fortran: tfem_get_sizes (documented in module tfem_c). `n_nodes`, `n_triangles` and
+  !! `n_contact_elements` are OPTIONAL: omit them to pass NULL. The name is no bind(C) procedure
+  !! here (for c_funloc: module tfem_c).
+  interface tfem_get_sizes
+    procedure tfem_get_sizes_opt
+  end interface tfem_get_sizes
+
+  !> Fortran: tfem_get_mesh_nodes (documented in module tfem_c). `length` takes an integer(c_size_t)
+  !! or a default integer (kind tfem_length_kind); a negative length is passed as 0. `xy` may have
+  !! rank 1 or 2.
+  interface tfem_get_mesh_nodes
+    procedure tfem_get_mesh_nodes
+    procedure tfem_get_mesh_nodes_r2
+    procedure tfem_get_mesh_nodes_i
+    procedure tfem_get_mesh_nodes_i_r2
+  end interface tfem_get_mesh_nodes
+
+  !> Fortran: tfem_get_mesh_triangles (documented in module tfem_c). `bodies` is OPTIONAL: omit it
+  !! to pass NULL. `length` and `bodies_length` take integer(c_size_t) or default integers (kind
+  !! tfem_length_kind), all of one kind; a negative length is passed as 0. `triangles` and `bodies`
+  !! may each have rank 1 or 2. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_get_mesh_triangles
+    procedure tfem_get_mesh_triangles_opt
+    procedure tfem_get_mesh_triangles_opt_r21
+    procedure tfem_get_mesh_triangles_opt_r12
+    procedure tfem_get_mesh_triangles_opt_r22
+    procedure tfem_get_mesh_triangles_opt_i
+    procedure tfem_get_mesh_triangles_opt_i_r21
+    procedure tfem_get_mesh_triangles_opt_i_r12
+    procedure tfem_get_mesh_triangles_opt_i_r22
+  end interface tfem_get_mesh_triangles
+
+  !> Fortran: tfem_get_boundary_edges (documented in module tfem_c). `tags` is OPTIONAL: omit it to
+  !! pass NULL. `length` and `tags_length` take integer(c_size_t) or default integers (kind
+  !! tfem_length_kind), all of one kind; a negative length is passed as 0. `edges` and `tags` may
+  !! each have rank 1 or 2. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_get_boundary_edges
+    procedure tfem_get_boundary_edges_opt
+    procedure tfem_get_boundary_edges_opt_r21
+    procedure tfem_get_boundary_edges_opt_r12
+    procedure tfem_get_boundary_edges_opt_r22
+    procedure tfem_get_boundary_edges_opt_i
+    procedure tfem_get_boundary_edges_opt_i_r21
+    procedure tfem_get_boundary_edges_opt_i_r12
+    procedure tfem_get_boundary_edges_opt_i_r22
+  end interface tfem_get_boundary_edges
+
+  !> Fortran: tfem_get_displacements (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_displacements
+    procedure tfem_get_displacements
+    procedure tfem_get_displacements_r2
+    procedure tfem_get_displacements_i
+    procedure tfem_get_displacements_i_r2
+  end interface tfem_get_displacements
+
+  !> Fortran: tfem_get_element_strains (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_element_strains
+    procedure tfem_get_element_strains
+    procedure tfem_get_element_strains_r2
+    procedure tfem_get_element_strains_i
+    procedure tfem_get_element_strains_i_r2
+  end interface tfem_get_element_strains
+
+  !> Fortran: tfem_get_element_stresses (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_element_stresses
+    procedure tfem_get_element_stresses
+    procedure tfem_get_element_stresses_r2
+    procedure tfem_get_element_stresses_i
+    procedure tfem_get_element_stresses_i_r2
+  end interface tfem_get_element_stresses
+
+  !> Fortran: tfem_get_element_jacobians (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_element_jacobians
+    procedure tfem_get_element_jacobians
+    procedure tfem_get_element_jacobians_r2
+    procedure tfem_get_element_jacobians_i
+    procedure tfem_get_element_jacobians_i_r2
+  end interface tfem_get_element_jacobians
+
+  !> Fortran: tfem_get_reactions (documented in module tfem_c). `length` takes an integer(c_size_t)
+  !! or a default integer (kind tfem_length_kind); a negative length is passed as 0. `out` may have
+  !! rank 1 or 2.
+  interface tfem_get_reactions
+    procedure tfem_get_reactions
+    procedure tfem_get_reactions_r2
+    procedure tfem_get_reactions_i
+    procedure tfem_get_reactions_i_r2
+  end interface tfem_get_reactions
+
+  !> Fortran: tfem_get_system_matrix_size (documented in module tfem_c). `n` and `nnz` are OPTIONAL:
+  !! omit them to pass NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_get_system_matrix_size
+    procedure tfem_get_system_matrix_size_opt
+  end interface tfem_get_system_matrix_size
+
+  !> Fortran: tfem_get_system_matrix (documented in module tfem_c). `col_ptr_length`,
+  !! `row_idx_length`, `values_length` and `dofs_length` take integer(c_size_t) or default integers
+  !! (kind tfem_length_kind), all of one kind; a negative length is passed as 0. `col_ptr`,
+  !! `row_idx`, `values` and `dofs` may each have rank 1 or 2.
+  interface tfem_get_system_matrix
+    procedure tfem_get_system_matrix
+    procedure tfem_get_system_matrix_r2111
+    procedure tfem_get_system_matrix_r1211
+    procedure tfem_get_system_matrix_r2211
+    procedure tfem_get_system_matrix_r1121
+    procedure tfem_get_system_matrix_r2121
+    procedure tfem_get_system_matrix_r1221
+    procedure tfem_get_system_matrix_r2221
+    procedure tfem_get_system_matrix_r1112
+    procedure tfem_get_system_matrix_r2112
+    procedure tfem_get_system_matrix_r1212
+    procedure tfem_get_system_matrix_r2212
+    procedure tfem_get_system_matrix_r1122
+    procedure tfem_get_system_matrix_r2122
+    procedure tfem_get_system_matrix_r1222
+    procedure tfem_get_system_matrix_r2222
+    procedure tfem_get_system_matrix_i
+    procedure tfem_get_system_matrix_i_r2111
+    procedure tfem_get_system_matrix_i_r1211
+    procedure tfem_get_system_matrix_i_r2211
+    procedure tfem_get_system_matrix_i_r1121
+    procedure tfem_get_system_matrix_i_r2121
+    procedure tfem_get_system_matrix_i_r1221
+    procedure tfem_get_system_matrix_i_r2221
+    procedure tfem_get_system_matrix_i_r1112
+    procedure tfem_get_system_matrix_i_r2112
+    procedure tfem_get_system_matrix_i_r1212
+    procedure tfem_get_system_matrix_i_r2212
+    procedure tfem_get_system_matrix_i_r1122
+    procedure tfem_get_system_matrix_i_r2122
+    procedure tfem_get_system_matrix_i_r1222
+    procedure tfem_get_system_matrix_i_r2222
+  end interface tfem_get_system_matrix
+
+  !> Fortran: tfem_add_contact_pair (documented in module tfem_c). `pair` is OPTIONAL: omit it to
+  !! pass NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_add_contact_pair
+    procedure tfem_add_contact_pair_opt
+  end interface tfem_add_contact_pair
+
+  !> Fortran: tfem_add_contact_pair_with_mesh (documented in module tfem_c). `pair` and `flipped`
+  !! are OPTIONAL: omit them to pass NULL. `connectivity` may have rank 1 or 2. The name is no
+  !! bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_add_contact_pair_with_mesh
+    procedure tfem_add_contact_pair_with_mesh_opt
+    procedure tfem_add_contact_pair_with_mesh_opt_r2
+  end interface tfem_add_contact_pair_with_mesh
+
+  !> Fortran: tfem_solve_contact (documented in module tfem_c). `options` and `report` are OPTIONAL:
+  !! omit them to pass NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_solve_contact
+    procedure tfem_solve_contact_opt
+  end interface tfem_solve_contact
+
+  !> Fortran: tfem_get_contact_active (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_active
+    procedure tfem_get_contact_active
+    procedure tfem_get_contact_active_r2
+    procedure tfem_get_contact_active_i
+    procedure tfem_get_contact_active_i_r2
+  end interface tfem_get_contact_active
+
+  !> Fortran: tfem_get_contact_pressure (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_pressure
+    procedure tfem_get_contact_pressure
+    procedure tfem_get_contact_pressure_r2
+    procedure tfem_get_contact_pressure_i
+    procedure tfem_get_contact_pressure_i_r2
+  end interface tfem_get_contact_pressure
+
+  !> Fortran: tfem_get_contact_elements (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_elements
+    procedure tfem_get_contact_elements
+    procedure tfem_get_contact_elements_r2
+    procedure tfem_get_contact_elements_i
+    procedure tfem_get_contact_elements_i_r2
+  end interface tfem_get_contact_elements
+
+  !> Fortran: tfem_get_contact_forces (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_forces
+    procedure tfem_get_contact_forces
+    procedure tfem_get_contact_forces_r2
+    procedure tfem_get_contact_forces_i
+    procedure tfem_get_contact_forces_i_r2
+  end interface tfem_get_contact_forces
+
+  !> Fortran: tfem_get_contact_nodal_pressures (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_nodal_pressures
+    procedure tfem_get_contact_nodal_pressures
+    procedure tfem_get_contact_nodal_pressures_r2
+    procedure tfem_get_contact_nodal_pressures_i
+    procedure tfem_get_contact_nodal_pressures_i_r2
+  end interface tfem_get_contact_nodal_pressures
+
+  !> Fortran: tfem_get_contact_slave_nodes (documented in module tfem_c). `node`, `tributary`, `gap`
+  !! and `pressure` are OPTIONAL: omit them to pass NULL. `length` takes an integer(c_size_t) or a
+  !! default integer (kind tfem_length_kind); a negative length is passed as 0. `node`, `tributary`,
+  !! `gap` and `pressure` may each have rank 1 or 2. The name is no bind(C) procedure here (for
+  !! c_funloc: module tfem_c).
+  interface tfem_get_contact_slave_nodes
+    procedure tfem_get_contact_slave_nodes_opt
+    procedure tfem_get_contact_slave_nodes_opt_r2111
+    procedure tfem_get_contact_slave_nodes_opt_r1211
+    procedure tfem_get_contact_slave_nodes_opt_r2211
+    procedure tfem_get_contact_slave_nodes_opt_r1121
+    procedure tfem_get_contact_slave_nodes_opt_r2121
+    procedure tfem_get_contact_slave_nodes_opt_r1221
+    procedure tfem_get_contact_slave_nodes_opt_r2221
+    procedure tfem_get_contact_slave_nodes_opt_r1112
+    procedure tfem_get_contact_slave_nodes_opt_r2112
+    procedure tfem_get_contact_slave_nodes_opt_r1212
+    procedure tfem_get_contact_slave_nodes_opt_r2212
+    procedure tfem_get_contact_slave_nodes_opt_r1122
+    procedure tfem_get_contact_slave_nodes_opt_r2122
+    procedure tfem_get_contact_slave_nodes_opt_r1222
+    procedure tfem_get_contact_slave_nodes_opt_r2222
+    procedure tfem_get_contact_slave_nodes_opt_i
+    procedure tfem_get_contact_slave_nodes_opt_i_r2111
+    procedure tfem_get_contact_slave_nodes_opt_i_r1211
+    procedure tfem_get_contact_slave_nodes_opt_i_r2211
+    procedure tfem_get_contact_slave_nodes_opt_i_r1121
+    procedure tfem_get_contact_slave_nodes_opt_i_r2121
+    procedure tfem_get_contact_slave_nodes_opt_i_r1221
+    procedure tfem_get_contact_slave_nodes_opt_i_r2221
+    procedure tfem_get_contact_slave_nodes_opt_i_r1112
+    procedure tfem_get_contact_slave_nodes_opt_i_r2112
+    procedure tfem_get_contact_slave_nodes_opt_i_r1212
+    procedure tfem_get_contact_slave_nodes_opt_i_r2212
+    procedure tfem_get_contact_slave_nodes_opt_i_r1122
+    procedure tfem_get_contact_slave_nodes_opt_i_r2122
+    procedure tfem_get_contact_slave_nodes_opt_i_r1222
+    procedure tfem_get_contact_slave_nodes_opt_i_r2222
+  end interface tfem_get_contact_slave_nodes
+
+  !> Fortran: tfem_get_contact_pair_nodal_pressures (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_pair_nodal_pressures
+    procedure tfem_get_contact_pair_nodal_pressures
+    procedure tfem_get_contact_pair_nodal_pressures_r2
+    procedure tfem_get_contact_pair_nodal_pressures_i
+    procedure tfem_get_contact_pair_nodal_pressures_i_r2
+  end interface tfem_get_contact_pair_nodal_pressures
+
+  !> Fortran: tfem_get_contact_gaps (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_gaps
+    procedure tfem_get_contact_gaps
+    procedure tfem_get_contact_gaps_r2
+    procedure tfem_get_contact_gaps_i
+    procedure tfem_get_contact_gaps_i_r2
+  end interface tfem_get_contact_gaps
+
+  !> Fortran: tfem_get_contact_mesh (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_mesh
+    procedure tfem_get_contact_mesh
+    procedure tfem_get_contact_mesh_r2
+    procedure tfem_get_contact_mesh_i
+    procedure tfem_get_contact_mesh_i_r2
+  end interface tfem_get_contact_mesh
+
+  !> Fortran: tfem_get_contact_element_pairs (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_element_pairs
+    procedure tfem_get_contact_element_pairs
+    procedure tfem_get_contact_element_pairs_r2
+    procedure tfem_get_contact_element_pairs_i
+    procedure tfem_get_contact_element_pairs_i_r2
+  end interface tfem_get_contact_element_pairs
+
+  !> Fortran: tfem_get_contact_element_apexes (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_element_apexes
+    procedure tfem_get_contact_element_apexes
+    procedure tfem_get_contact_element_apexes_r2
+    procedure tfem_get_contact_element_apexes_i
+    procedure tfem_get_contact_element_apexes_i_r2
+  end interface tfem_get_contact_element_apexes
+
+  !> Fortran: tfem_get_contact_pair_bodies (documented in module tfem_c). `body_a` and `body_b` are
+  !! OPTIONAL: omit them to pass NULL. The name is no bind(C) procedure here (for c_funloc: module
+  !! tfem_c).
+  interface tfem_get_contact_pair_bodies
+    procedure tfem_get_contact_pair_bodies_opt
+  end interface tfem_get_contact_pair_bodies
+
+  !> Fortran: tfem_step (documented in module tfem_c). `options` and `report` are OPTIONAL: omit
+  !! them to pass NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_step
+    procedure tfem_step_opt
+  end interface tfem_step
+
+  !> Fortran: tfem_get_contact_state (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `buffer` may have rank 1 or 2.
+  interface tfem_get_contact_state
+    procedure tfem_get_contact_state
+    procedure tfem_get_contact_state_r2
+    procedure tfem_get_contact_state_i
+    procedure tfem_get_contact_state_i_r2
+  end interface tfem_get_contact_state
+
+  !> Fortran: tfem_set_contact_state (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `buffer` may have rank 1 or 2.
+  interface tfem_set_contact_state
+    procedure tfem_set_contact_state
+    procedure tfem_set_contact_state_r2
+    procedure tfem_set_contact_state_i
+    procedure tfem_set_contact_state_i_r2
+  end interface tfem_set_contact_state
+
+  !> Fortran: tfem_get_contact_shear (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_shear
+    procedure tfem_get_contact_shear
+    procedure tfem_get_contact_shear_r2
+    procedure tfem_get_contact_shear_i
+    procedure tfem_get_contact_shear_i_r2
+  end interface tfem_get_contact_shear
+
+  !> Fortran: tfem_get_contact_friction_state (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_friction_state
+    procedure tfem_get_contact_friction_state
+    procedure tfem_get_contact_friction_state_r2
+    procedure tfem_get_contact_friction_state_i
+    procedure tfem_get_contact_friction_state_i_r2
+  end interface tfem_get_contact_friction_state
+
+  !> Fortran: tfem_get_contact_dissipation (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_dissipation
+    procedure tfem_get_contact_dissipation
+    procedure tfem_get_contact_dissipation_r2
+    procedure tfem_get_contact_dissipation_i
+    procedure tfem_get_contact_dissipation_i_r2
+  end interface tfem_get_contact_dissipation
+
+  !> Fortran: tfem_add_contact_pairs_auto (documented in module tfem_c). `tags`, `first` and `count`
+  !! are OPTIONAL: omit them to pass NULL. `tags` may have rank 1 or 2. The name is no bind(C)
+  !! procedure here (for c_funloc: module tfem_c).
+  interface tfem_add_contact_pairs_auto
+    procedure tfem_add_contact_pairs_auto_opt
+    procedure tfem_add_contact_pairs_auto_opt_r2
+  end interface tfem_add_contact_pairs_auto
+
+  !> Fortran: tfem_contact_last_error (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `buffer` may also be a character string.
+  interface tfem_contact_last_error
+    procedure tfem_contact_last_error
+    procedure tfem_contact_last_error_i
+    procedure tfem_contact_last_error_str
+    procedure tfem_contact_last_error_str_i
+  end interface tfem_contact_last_error
+
+  !> Fortran: tfem_contact_last_error_length (documented in module tfem_c). `context` may be omitted
+  !! (NULL is passed).
+  interface tfem_contact_last_error_length
+    procedure tfem_contact_last_error_length
+    procedure tfem_contact_last_error_length_no_context
+  end interface tfem_contact_last_error_length
+
+  !> Fortran: tfem_contact_add_side (documented in module tfem_c). `side` is OPTIONAL: omit it to
+  !! pass NULL. `nodes`, `xy`, `equations` and `edges` may each have rank 1 or 2. The name is no
+  !! bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_contact_add_side
+    procedure tfem_contact_add_side_opt
+    procedure tfem_contact_add_side_opt_r2111
+    procedure tfem_contact_add_side_opt_r1211
+    procedure tfem_contact_add_side_opt_r2211
+    procedure tfem_contact_add_side_opt_r1121
+    procedure tfem_contact_add_side_opt_r2121
+    procedure tfem_contact_add_side_opt_r1221
+    procedure tfem_contact_add_side_opt_r2221
+    procedure tfem_contact_add_side_opt_r1112
+    procedure tfem_contact_add_side_opt_r2112
+    procedure tfem_contact_add_side_opt_r1212
+    procedure tfem_contact_add_side_opt_r2212
+    procedure tfem_contact_add_side_opt_r1122
+    procedure tfem_contact_add_side_opt_r2122
+    procedure tfem_contact_add_side_opt_r1222
+    procedure tfem_contact_add_side_opt_r2222
+  end interface tfem_contact_add_side
+
+  !> Fortran: tfem_contact_add_pair (documented in module tfem_c). `pair` is OPTIONAL: omit it to
+  !! pass NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_contact_add_pair
+    procedure tfem_contact_add_pair_opt
+  end interface tfem_contact_add_pair
+
+  !> Fortran: tfem_contact_add_pair_with_mesh (documented in module tfem_c). `pair` is OPTIONAL:
+  !! omit it to pass NULL. `connectivity` may have rank 1 or 2. The name is no bind(C) procedure
+  !! here (for c_funloc: module tfem_c).
+  interface tfem_contact_add_pair_with_mesh
+    procedure tfem_contact_add_pair_with_mesh_opt
+    procedure tfem_contact_add_pair_with_mesh_opt_r2
+  end interface tfem_contact_add_pair_with_mesh
+
+  !> Fortran: tfem_contact_sizes (documented in module tfem_c). `n_nodes`, `n_elements` and
+  !! `n_entries` are OPTIONAL: omit them to pass NULL. The name is no bind(C) procedure here (for
+  !! c_funloc: module tfem_c).
+  interface tfem_contact_sizes
+    procedure tfem_contact_sizes_opt
+  end interface tfem_contact_sizes
+
+  !> Fortran: tfem_contact_nodes (documented in module tfem_c). `length` takes an integer(c_size_t)
+  !! or a default integer (kind tfem_length_kind); a negative length is passed as 0. `out` may have
+  !! rank 1 or 2.
+  interface tfem_contact_nodes
+    procedure tfem_contact_nodes
+    procedure tfem_contact_nodes_r2
+    procedure tfem_contact_nodes_i
+    procedure tfem_contact_nodes_i_r2
+  end interface tfem_contact_nodes
+
+  !> Fortran: tfem_contact_pattern (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `rows` and `cols` may each have rank 1 or 2.
+  interface tfem_contact_pattern
+    procedure tfem_contact_pattern
+    procedure tfem_contact_pattern_r21
+    procedure tfem_contact_pattern_r12
+    procedure tfem_contact_pattern_r22
+    procedure tfem_contact_pattern_i
+    procedure tfem_contact_pattern_i_r21
+    procedure tfem_contact_pattern_i_r12
+    procedure tfem_contact_pattern_i_r22
+  end interface tfem_contact_pattern
+
+  !> Fortran: tfem_contact_evaluate (documented in module tfem_c). `values` and `residual` are
+  !! OPTIONAL: omit them to pass NULL. `u_length`, `values_length` and `residual_length` take
+  !! integer(c_size_t) or default integers (kind tfem_length_kind), all of one kind; a negative
+  !! length is passed as 0. `u`, `values` and `residual` may each have rank 1 or 2. The name is no
+  !! bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_contact_evaluate
+    procedure tfem_contact_evaluate_opt
+    procedure tfem_contact_evaluate_opt_r211
+    procedure tfem_contact_evaluate_opt_r121
+    procedure tfem_contact_evaluate_opt_r221
+    procedure tfem_contact_evaluate_opt_r112
+    procedure tfem_contact_evaluate_opt_r212
+    procedure tfem_contact_evaluate_opt_r122
+    procedure tfem_contact_evaluate_opt_r222
+    procedure tfem_contact_evaluate_opt_i
+    procedure tfem_contact_evaluate_opt_i_r211
+    procedure tfem_contact_evaluate_opt_i_r121
+    procedure tfem_contact_evaluate_opt_i_r221
+    procedure tfem_contact_evaluate_opt_i_r112
+    procedure tfem_contact_evaluate_opt_i_r212
+    procedure tfem_contact_evaluate_opt_i_r122
+    procedure tfem_contact_evaluate_opt_i_r222
+  end interface tfem_contact_evaluate
+
+  !> Fortran: tfem_contact_gather (documented in module tfem_c). `n_equations` and `u_length` take
+  !! integer(c_size_t) or default integers (kind tfem_length_kind), all of one kind; a negative
+  !! length is passed as 0. `u_equations` and `u` may each have rank 1 or 2.
+  interface tfem_contact_gather
+    procedure tfem_contact_gather
+    procedure tfem_contact_gather_r21
+    procedure tfem_contact_gather_r12
+    procedure tfem_contact_gather_r22
+    procedure tfem_contact_gather_i
+    procedure tfem_contact_gather_i_r21
+    procedure tfem_contact_gather_i_r12
+    procedure tfem_contact_gather_i_r22
+  end interface tfem_contact_gather
+
+  !> Fortran: tfem_contact_scatter_add (documented in module tfem_c). `residual_length` and
+  !! `n_equations` take integer(c_size_t) or default integers (kind tfem_length_kind), all of one
+  !! kind; a negative length is passed as 0. `residual` and `host_vector` may each have rank 1 or 2.
+  interface tfem_contact_scatter_add
+    procedure tfem_contact_scatter_add
+    procedure tfem_contact_scatter_add_r21
+    procedure tfem_contact_scatter_add_r12
+    procedure tfem_contact_scatter_add_r22
+    procedure tfem_contact_scatter_add_i
+    procedure tfem_contact_scatter_add_i_r21
+    procedure tfem_contact_scatter_add_i_r12
+    procedure tfem_contact_scatter_add_i_r22
+  end interface tfem_contact_scatter_add
+
+  !> Fortran: tfem_contact_update (documented in module tfem_c). `changed` is OPTIONAL: omit it to
+  !! pass NULL. `u_length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind);
+  !! a negative length is passed as 0. `u` may have rank 1 or 2. The name is no bind(C) procedure
+  !! here (for c_funloc: module tfem_c).
+  interface tfem_contact_update
+    procedure tfem_contact_update_opt
+    procedure tfem_contact_update_opt_r2
+    procedure tfem_contact_update_opt_i
+    procedure tfem_contact_update_opt_i_r2
+  end interface tfem_contact_update
+
+  !> Fortran: tfem_contact_get_active (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_contact_get_active
+    procedure tfem_contact_get_active
+    procedure tfem_contact_get_active_r2
+    procedure tfem_contact_get_active_i
+    procedure tfem_contact_get_active_i_r2
+  end interface tfem_contact_get_active
+
+  !> Fortran: tfem_contact_set_active (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `active` may have rank 1 or 2.
+  interface tfem_contact_set_active
+    procedure tfem_contact_set_active
+    procedure tfem_contact_set_active_r2
+    procedure tfem_contact_set_active_i
+    procedure tfem_contact_set_active_i_r2
+  end interface tfem_contact_set_active
+
+  !> Fortran: tfem_contact_gaps (documented in module tfem_c). `u_length` and `length` take
+  !! integer(c_size_t) or default integers (kind tfem_length_kind), all of one kind; a negative
+  !! length is passed as 0. `u` and `out` may each have rank 1 or 2.
+  interface tfem_contact_gaps
+    procedure tfem_contact_gaps
+    procedure tfem_contact_gaps_r21
+    procedure tfem_contact_gaps_r12
+    procedure tfem_contact_gaps_r22
+    procedure tfem_contact_gaps_i
+    procedure tfem_contact_gaps_i_r21
+    procedure tfem_contact_gaps_i_r12
+    procedure tfem_contact_gaps_i_r22
+  end interface tfem_contact_gaps
+
+  !> Fortran: tfem_contact_pressures (documented in module tfem_c). `u_length` and `length` take
+  !! integer(c_size_t) or default integers (kind tfem_length_kind), all of one kind; a negative
+  !! length is passed as 0. `u` and `out` may each have rank 1 or 2.
+  interface tfem_contact_pressures
+    procedure tfem_contact_pressures
+    procedure tfem_contact_pressures_r21
+    procedure tfem_contact_pressures_r12
+    procedure tfem_contact_pressures_r22
+    procedure tfem_contact_pressures_i
+    procedure tfem_contact_pressures_i_r21
+    procedure tfem_contact_pressures_i_r12
+    procedure tfem_contact_pressures_i_r22
+  end interface tfem_contact_pressures
+
+  !> Fortran: tfem_contact_elements (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_contact_elements
+    procedure tfem_contact_elements
+    procedure tfem_contact_elements_r2
+    procedure tfem_contact_elements_i
+    procedure tfem_contact_elements_i_r2
+  end interface tfem_contact_elements
+
+  !> Fortran: tfem_contact_element_equations (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_contact_element_equations
+    procedure tfem_contact_element_equations
+    procedure tfem_contact_element_equations_r2
+    procedure tfem_contact_element_equations_i
+    procedure tfem_contact_element_equations_i_r2
+  end interface tfem_contact_element_equations
+
+  !> Fortran: tfem_contact_element_blocks (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_contact_element_blocks
+    procedure tfem_contact_element_blocks
+    procedure tfem_contact_element_blocks_r2
+    procedure tfem_contact_element_blocks_i
+    procedure tfem_contact_element_blocks_i_r2
+  end interface tfem_contact_element_blocks
+
+contains
+
+  pure function c_strlen(buf) result(n)
+    character(kind=c_char), intent(in) :: buf(:)
+    integer :: n
+    n = 0
+    do while (n < size(buf))
+      if (buf(n + 1) == c_null_char) exit
+      n = n + 1
+    end do
+  end function c_strlen
 
   !> The message of the last failed call on model (omitted or c_null_ptr: this thread's
   !! model-free calls), as a Fortran string.

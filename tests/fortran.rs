@@ -10,7 +10,10 @@
 //!   OPTIONAL dummy arguments;
 //! - which pointer arguments are arrays ([`classify`]).
 //!
-//! Functions with a `size_t` length or a nullable model handle become
+//! The file is Fortran 2008 and holds three modules: tfem_c (the bind(C)
+//! interfaces as the C prototypes have them), tfem_specifics (module
+//! procedures) and tfem (the module to use), in which the functions with a
+//! `size_t` length, a nullable pointer or a nullable model handle are
 //! generic interfaces (see [`FORTRAN_NOTES`], copied to the top of the
 //! module).
 
@@ -393,29 +396,30 @@ fn kind_of(base: &str) -> &'static str {
     }
 }
 
-/// The Fortran declaration of one C parameter in the bind(C) interface.
-fn fortran_param(pass: &Pass, name: &str, optional: bool) -> String {
-    let opt = if optional { ", optional" } else { "" };
+/// The Fortran declaration of one C parameter in tfem_c's bind(C)
+/// interface: every argument required, as the C prototype has it.
+fn fortran_param(pass: &Pass, name: &str) -> String {
     match pass {
         Pass::Handle => format!("type(c_ptr), value :: {name}"),
         Pass::Struct { name: s, konst } => {
             let intent = if *konst { "in" } else { "inout" };
-            format!("type({s}), intent({intent}){opt} :: {name}")
+            format!("type({s}), intent({intent}) :: {name}")
         }
         Pass::Value(base) => format!("{}, value :: {name}", kind_of(base)),
         Pass::Array { base, konst } => format!(
-            "{}, intent({}){opt} :: {name}(*)",
+            "{}, intent({}) :: {name}(*)",
             kind_of(base),
             if *konst { "in" } else { "inout" }
         ),
-        Pass::Out { base } => format!("{}, intent(inout){opt} :: {name}", kind_of(base)),
+        Pass::Out { base } => format!("{}, intent(inout) :: {name}", kind_of(base)),
     }
 }
 
 // ---------------------------------------------------------------------------
-// Generic interfaces.
+// The modules: tfem_c, tfem_specifics, tfem.
 
-/// What the module says, at its top, about its Fortran-specific design.
+/// What the module says, at its top, about its Fortran-specific design;
+/// the functions of [`Offer::Procedures`] are listed after it.
 const FORTRAN_NOTES: &str = "\
 In Fortran (`use tfem`), where it differs from the C conventions above
 - The model handle is a type(c_ptr) from tfem_create, passed by value.
@@ -427,39 +431,87 @@ In Fortran (`use tfem`), where it differs from the C conventions above
 - Indices: pass index_base = 1 to tfem_set_mesh (or tfem_load_gmsh) and every node, triangle
   and edge number of later calls and messages is 1-based, like Fortran arrays. Numbers that a
   function documents as 0-based stay 0-based.
-- NULL: a pointer argument that the C documentation says may be NULL is OPTIONAL here: omit it
-  (by keywords, or at the end of the list) and the library receives NULL (Fortran 2018 and
-  TS 29113: an absent optional argument of a bind(C) procedure is passed as a null pointer).
-  This needs a Fortran 2018 compiler mode: gfortran's default or -std=f2018, not -std=f2008.
-  A nullable model handle is passed by value, which a bind(C) interface cannot make OPTIONAL:
-  its generic has a specific without it instead (tfem_last_error(buffer, length),
-  tfem_last_error_length()).
+- NULL: a pointer argument that the C documentation says may be NULL is OPTIONAL: omit it (by
+  keyword, or at the end of the list) and the library receives NULL. A nullable model handle
+  is passed by value: its generic has a specific without it instead (tfem_last_error(buffer,
+  length), tfem_last_error_length()).
 - Kinds: C int is integer(c_int), the default integer of gfortran, ifx, flang and nvfortran
   (unless built with -fdefault-integer-8 or -i8), so default integer counts, indices and
   index arrays are passed as they are; double is real(c_double), int64_t integer(c_int64_t).
   Buffer lengths (size_t) accept default integers too: see the generic interfaces below.
-- Character buffers are character(kind=c_char) arrays (or strings, for generic functions); a
-  path is NUL-terminated: append c_null_char.
+- Arrays: a numeric array that the C function takes as a flat buffer may have rank 1 or 2,
+  each array of a call its own: xy(2, n_nodes), triangles(3, n_triangles), u(2, n_nodes),
+  stresses(3, n_triangles). The library reads and writes the array's elements in array
+  element order, in place (a contiguous array is not copied).
+- Character buffers are character(kind=c_char) arrays or strings; a path is NUL-terminated:
+  append c_null_char.
+
+Fortran 2008
+This file compiles under -std=f2008 (and -std=f2018). It holds three modules, in this order:
+- tfem_c, the C API as it is: every function as a bind(C) interface under its C name with its
+  whole C documentation, every argument required (a nullable pointer too: pass a variable),
+  arrays assumed-size (any rank, or an element as the start of a buffer), size_t lengths
+  integer(c_size_t); the enums as named constants, the structs as bind(C) types. It is the
+  module as it was before the generic interfaces.
+- tfem_specifics, the module procedures behind the generic interfaces of tfem: not for direct
+  use (their names and number may change). They are apart from tfem because a procedure has at
+  most one explicit interface in a scoping unit: here a C name is tfem_c's bind(C) interface,
+  called directly, or one that takes the nullable pointers as type(c_ptr).
+- tfem, the module to use: tfem_c's constants, types and the interfaces of the functions that
+  need nothing converted, and a generic interface for every other function.
 
 Generic interfaces
-A function with a size_t length or a nullable model handle is a generic interface named like
-the C function. Its specifics:
-- the bind(C) interface itself, under the C name too, so that calls with integer(c_size_t)
-  lengths (the kind of integer(c_int64_t) on 64-bit platforms), procedure actual arguments and
-  c_funloc keep working as before;
-- private module procedures that convert and forward to it, named after the C function with
-  suffixes: _i takes every length as integer(tfem_length_kind) (c_int where size_t is wider, so
-  default integers and literals; c_int64_t where size_t is c_int) and passes a negative length
-  as 0, so that the call fails with TFEM_STATUS_BUFFER_TOO_SMALL; _no_<arg> omits a nullable
-  model handle and passes c_null_ptr; _str takes a character(len=*) string for each character
-  buffer (generic resolution needs matching ranks, so without it a string would no longer
-  reach the array dummy by sequence association).
-All the lengths of one call share one kind. For the reason of _str, pass the buffers of a
-generic function as arrays or array sections, not as their first element (u(1)). Counts and
-indices (C int) are not generic: integer(c_int) is already the default integer.";
+A function with a size_t length, a nullable pointer or a nullable model handle is a generic
+interface named like the C function. Its specifics take every combination of
+- lengths as integer(c_size_t) (the kind of integer(c_int64_t) on 64-bit platforms) or as
+  integer(tfem_length_kind) (c_int where size_t is wider, so default integers and literals;
+  c_int64_t where size_t is c_int), all the lengths of one call of one kind; a negative
+  length is passed as 0, so that the call fails with TFEM_STATUS_BUFFER_TOO_SMALL;
+- each numeric array with rank 1 or 2: generic resolution matches ranks, so a rank-1 dummy
+  alone would refuse the rank-2 arrays that sequence association passes to the assumed-size
+  dummy of a bind(C) interface. The specific takes a rank-2 array as an assumed-size x(1, *)
+  and passes it on to the C function's x(*) by sequence association, without a copy;
+- character buffers as character(kind=c_char) arrays or as character(len=*) strings;
+- a nullable model handle given or omitted (c_null_ptr is passed).
+The specifics are named after the C function with suffixes: _opt (nullable pointers), _no_<arg>
+(handle omitted), _str (strings), _i (tfem_length_kind lengths), _r<ranks> (a digit per numeric
+array, when one has rank 2). Ranks above 2, and an array element as the start of a buffer
+(u(1)), match no specific (a scalar dummy cannot be passed on as the start of an array): use
+tfem_c's interface for them.
+A function without a nullable pointer also keeps tfem_c's bind(C) interface among its specifics
+(every argument, integer(c_size_t) lengths, rank-1 arrays), so that such calls, procedure actual
+arguments and c_funloc reach it under the C name as before.
+A function with a nullable pointer cannot. Fortran 2008 forbids OPTIONAL dummies in bind(C)
+interfaces (Fortran 2018 allows them, from TS 29113), so the omitted arguments need a module
+procedure; one whose OPTIONAL dummies have the types of the bind(C) interface's arguments is
+indistinguishable from it (an OPTIONAL dummy tells no specifics apart), and specifics that leave
+arguments out cannot tell two of one type apart when either is omitted by keyword
+(tfem_get_sizes(m, n_triangles=n) and tfem_get_sizes(m, n_nodes=n)). Keeping the bind(C)
+interface under the C name would thus lose omitted arguments that compiled before; tfem keeps
+them, and its generic for such a function holds module procedures only. They pass an absent
+argument as a null type(c_ptr) and a given one as its address (a zero-length array as that of a
+private one-element array, so that the C function sees a buffer of length 0, not NULL). A
+nullable array of rank 2 is a required argument of its specifics, the rank of an OPTIONAL dummy
+telling none apart: given, it may have rank 1 or 2; omitted, it is absent. What these names lose
+in tfem is the bind(C) procedure itself: for c_funloc or a procedure actual argument, take it
+from tfem_c under another local name (use tfem_c, only: c_tfem_solve => tfem_solve). These
+functions are:";
+
+/// How module tfem offers a function.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Offer {
+    /// tfem_c's bind(C) interface: nothing to convert or to omit.
+    Interface,
+    /// A generic interface whose specifics are tfem_c's bind(C) interface
+    /// and module procedures (size_t lengths, a nullable model handle).
+    Generic,
+    /// A generic interface of module procedures only (a nullable pointer:
+    /// see [`FORTRAN_NOTES`]).
+    Procedures,
+}
 
 /// A specific of a generic interface: which conversions it makes.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default)]
 struct Variant {
     /// Without the nullable model handle (passes c_null_ptr).
     omit_handle: bool,
@@ -467,13 +519,23 @@ struct Variant {
     string: bool,
     /// Lengths as integer(tfem_length_kind).
     alt_length: bool,
+    /// The rank (1 or 2) of each numeric array, in the order of
+    /// [`Shape::arrays`].
+    ranks: Vec<u8>,
+}
+
+impl Variant {
+    /// The call tfem_c's bind(C) interface takes as it is.
+    fn is_interface(&self) -> bool {
+        !self.omit_handle && !self.string && !self.alt_length && self.ranks.iter().all(|&r| r == 1)
+    }
 }
 
 /// Everything the generator derives about one function.
 struct Shape {
     passes: Vec<Pass>,
-    /// Per parameter: OPTIONAL in the bind(C) interface (nullable, by
-    /// reference).
+    /// Per parameter: a nullable pointer other than the model handle
+    /// (OPTIONAL in the specifics).
     optional: Vec<bool>,
     /// The nullable model handle, if any.
     nullable_handle: Option<usize>,
@@ -481,6 +543,8 @@ struct Shape {
     lengths: Vec<usize>,
     /// The character arrays.
     chars: Vec<usize>,
+    /// The numeric arrays.
+    arrays: Vec<usize>,
 }
 
 fn shape(p: &Proto) -> Shape {
@@ -495,7 +559,7 @@ fn shape(p: &Proto) -> Shape {
         "{}: more than one nullable handle; the generator supports one",
         p.name
     );
-    Shape {
+    let s = Shape {
         optional: (0..passes.len())
             .map(|k| passes[k] != Pass::Handle && is_null(k))
             .collect(),
@@ -506,19 +570,48 @@ fn shape(p: &Proto) -> Shape {
         chars: (0..passes.len())
             .filter(|&k| matches!(&passes[k], Pass::Array { base, .. } if base == "char"))
             .collect(),
+        arrays: (0..passes.len())
+            .filter(|&k| matches!(&passes[k], Pass::Array { base, .. } if base != "char"))
+            .collect(),
         passes,
-    }
+    };
+    assert!(
+        s.offer() != Offer::Procedures || s.nullable_handle.is_none(),
+        "{}: a nullable handle beside nullable pointers; the generator supports either",
+        p.name
+    );
+    assert!(
+        s.chars.iter().all(|&k| !s.optional[k]),
+        "{}: a nullable character buffer; the generator has no string form for it",
+        p.name
+    );
+    s
+}
+
+/// Every vector of `n` ranks, each 1 or 2, the all-1 first.
+fn rank_choices(n: usize) -> Vec<Vec<u8>> {
+    (0..1usize << n)
+        .map(|bits| (0..n).map(|k| 1 + ((bits >> k) & 1) as u8).collect())
+        .collect()
 }
 
 impl Shape {
-    fn generic(&self) -> bool {
-        !self.lengths.is_empty() || self.nullable_handle.is_some()
+    fn offer(&self) -> Offer {
+        if self.optional.contains(&true) {
+            Offer::Procedures
+        } else if !self.lengths.is_empty() || self.nullable_handle.is_some() {
+            Offer::Generic
+        } else {
+            Offer::Interface
+        }
     }
 
-    /// The module-procedure specifics of the generic (the bind(C) interface
-    /// is the remaining one); empty when the function is not generic.
+    /// The module-procedure specifics of the generic (with tfem_c's
+    /// bind(C) interface, for [`Offer::Generic`]); empty for
+    /// [`Offer::Interface`].
     fn variants(&self) -> Vec<Variant> {
-        if !self.generic() {
+        let offer = self.offer();
+        if offer == Offer::Interface {
             return Vec::new();
         }
         let choices = |on: bool| if on { vec![false, true] } else { vec![false] };
@@ -526,23 +619,35 @@ impl Shape {
         for omit_handle in choices(self.nullable_handle.is_some()) {
             for string in choices(!self.chars.is_empty()) {
                 for alt_length in choices(!self.lengths.is_empty()) {
-                    let v = Variant {
-                        omit_handle,
-                        string,
-                        alt_length,
-                    };
-                    if v != Variant::default() {
-                        out.push(v);
+                    for ranks in rank_choices(self.arrays.len()) {
+                        let v = Variant {
+                            omit_handle,
+                            string,
+                            alt_length,
+                            ranks,
+                        };
+                        if offer == Offer::Procedures || !v.is_interface() {
+                            out.push(v);
+                        }
                     }
                 }
             }
         }
         out
     }
+
+    /// The rank variant `v` gives parameter `k` (a numeric array).
+    fn rank(&self, v: &Variant, k: usize) -> Option<u8> {
+        let at = self.arrays.iter().position(|&a| a == k)?;
+        Some(v.ranks[at])
+    }
 }
 
-fn specific_name(p: &Proto, s: &Shape, v: Variant) -> String {
+fn specific_name(p: &Proto, s: &Shape, v: &Variant) -> String {
     let mut name = p.name.clone();
+    if s.offer() == Offer::Procedures {
+        name.push_str("_opt");
+    }
     if v.omit_handle {
         name.push_str("_no_");
         name.push_str(&p.params[s.nullable_handle.unwrap()].1);
@@ -553,15 +658,48 @@ fn specific_name(p: &Proto, s: &Shape, v: Variant) -> String {
     if v.alt_length {
         name.push_str("_i");
     }
+    if v.ranks.contains(&2) {
+        name.push_str("_r");
+        for r in &v.ranks {
+            name.push(char::from(b'0' + r));
+        }
+    }
     assert!(name.len() <= 63, "Fortran name {name} is longer than 63");
     name
 }
 
-/// The bind(C) interface, reachable by a specific name from the `_str`
-/// specifics (a string is sequence-associated with an array dummy only in
-/// a reference to a specific procedure).
-fn raw_name(p: &Proto) -> String {
-    format!("{}_raw", p.name)
+/// The bind(C) interface of an [`Offer::Procedures`] function in
+/// tfem_specifics: its nullable pointers as type(c_ptr), value.
+fn by_address_name(p: &Proto) -> String {
+    format!("{}_by_address", p.name)
+}
+
+/// The length of the buffer of nullable array `k`: the size_t parameter
+/// after it (the header's buffer convention), or the count its doc gives
+/// as "`name` (`count` values".
+fn buffer_length(p: &Proto, k: usize) -> usize {
+    if let Some(at) = (k + 1..p.params.len()).find(|&j| p.params[j].0 == "size_t") {
+        return at;
+    }
+    let name = &p.params[k].1;
+    p.params
+        .iter()
+        .position(|(_, n)| p.doc.contains(&format!("`{name}` (`{n}` values")))
+        .unwrap_or_else(|| panic!("{}: no length for the nullable array `{name}`", p.name))
+}
+
+/// The kind tag of a numeric array's base type, as in the names of the
+/// address helpers (tfem_address_c_double, …).
+fn kind_tag(base: &str) -> &'static str {
+    let kind = kind_of(base);
+    let inner = &kind[kind.find('(').unwrap() + 1..kind.len() - 1];
+    match inner {
+        "c_double" => "c_double",
+        "c_int" => "c_int",
+        "c_int64_t" => "c_int64_t",
+        "c_int8_t" => "c_int8_t",
+        t => panic!("no address helper for kind {t}"),
+    }
 }
 
 /// `a`, `a` and `b`, `a`, `b` and `c`.
@@ -574,11 +712,11 @@ fn list(names: &[String]) -> String {
     }
 }
 
-/// The Fortran-specific sentence added to a function's C doc.
-fn fortran_note(p: &Proto, s: &Shape) -> Option<String> {
+/// The Fortran-specific sentences of a generic interface of module tfem.
+fn fortran_note(p: &Proto, s: &Shape) -> String {
     let names =
         |ks: &[usize]| -> Vec<String> { ks.iter().map(|&k| p.params[k].1.clone()).collect() };
-    let mut parts = Vec::new();
+    let mut parts = vec![format!("{} (documented in module tfem_c).", p.name)];
     let optional: Vec<usize> = (0..p.params.len()).filter(|&k| s.optional[k]).collect();
     if !optional.is_empty() {
         let (verb, it) = if optional.len() == 1 {
@@ -610,13 +748,26 @@ fn fortran_note(p: &Proto, s: &Shape) -> Option<String> {
             list(&names(&s.lengths))
         )),
     }
-    if s.generic() && !s.chars.is_empty() {
+    match s.arrays.len() {
+        0 => {}
+        1 => parts.push(format!("{} may have rank 1 or 2.", list(&names(&s.arrays)))),
+        _ => parts.push(format!(
+            "{} may each have rank 1 or 2.",
+            list(&names(&s.arrays))
+        )),
+    }
+    if !s.chars.is_empty() {
         parts.push(format!(
             "{} may also be a character string.",
             list(&names(&s.chars))
         ));
     }
-    (!parts.is_empty()).then(|| format!("Fortran: {}", parts.join(" ")))
+    if s.offer() == Offer::Procedures {
+        parts.push(
+            "The name is no bind(C) procedure here (for c_funloc: module tfem_c).".to_string(),
+        );
+    }
+    format!("Fortran: {}", parts.join(" "))
 }
 
 /// Appends `text` as `!>`/`!!` comment lines at `indent`, wrapped at 100
@@ -679,55 +830,164 @@ fn result_of(p: &Proto) -> (&'static str, &'static str, &'static str) {
     }
 }
 
-/// The bind(C) interface body of `p`.
-fn interface_body(f: &mut String, p: &Proto, s: &Shape) {
-    let mut doc = p.doc.clone();
-    if let Some(note) = fortran_note(p, s) {
-        doc = format!("{doc} {note}");
-    }
-    comment(f, "    ", &doc);
-    let (kind, result, decl) = result_of(p);
+/// A bind(C) interface body of `p` named `name`, its parameters declared
+/// by `decl` (parameter index -> declaration).
+fn bind_c_body(f: &mut String, p: &Proto, name: &str, decl: impl Fn(usize) -> String) {
+    let (kind, result, result_decl) = result_of(p);
     let args: Vec<String> = p.params.iter().map(|(_, n)| n.clone()).collect();
     writeln!(
         f,
-        "    {kind} {}({}) &\n        bind(C, name=\"{}\"){result}",
-        p.name,
-        arglist(&args, p.name.len() + 10),
+        "    {kind} {name}({}) &\n        bind(C, name=\"{}\"){result}",
+        arglist(&args, name.len() + 10),
         p.name
     )
     .unwrap();
     f.push_str("      import\n");
-    for (k, (_, n)) in p.params.iter().enumerate() {
-        writeln!(f, "      {}", fortran_param(&s.passes[k], n, s.optional[k])).unwrap();
+    for k in 0..p.params.len() {
+        writeln!(f, "      {}", decl(k)).unwrap();
     }
-    if !decl.is_empty() {
-        writeln!(f, "      {decl}").unwrap();
+    if !result_decl.is_empty() {
+        writeln!(f, "      {result_decl}").unwrap();
     }
-    writeln!(f, "    end {kind} {}", p.name).unwrap();
+    writeln!(f, "    end {kind} {name}").unwrap();
 }
 
-/// A module procedure: `name(args)` forwarding to `target` with `actuals`.
-fn forwarder(
-    f: &mut String,
-    p: &Proto,
-    name: &str,
-    args: &[String],
-    decls: &[String],
-    target: &str,
-    actuals: &[String],
-) {
-    let (kind, result, decl) = result_of(p);
+/// tfem_c's bind(C) interface of `p`, with its whole C documentation:
+/// every argument required, as the C prototype has it.
+fn interface_body(f: &mut String, p: &Proto, s: &Shape) {
+    comment(f, "    ", &p.doc);
+    bind_c_body(f, p, &p.name, |k| {
+        fortran_param(&s.passes[k], &p.params[k].1)
+    });
+}
+
+/// The bind(C) interface of an [`Offer::Procedures`] function that
+/// tfem_specifics calls: nullable pointers as type(c_ptr), value.
+fn by_address_body(f: &mut String, p: &Proto, s: &Shape) {
+    bind_c_body(f, p, &by_address_name(p), |k| {
+        let n = &p.params[k].1;
+        if s.optional[k] {
+            format!("type(c_ptr), value :: {n}")
+        } else {
+            fortran_param(&s.passes[k], n)
+        }
+    });
+}
+
+/// The declaration of parameter `k` of `p` as a dummy argument of the
+/// specific `v`.
+fn specific_dummy(p: &Proto, s: &Shape, v: &Variant, k: usize) -> String {
+    let n = &p.params[k].1;
+    if s.lengths.contains(&k) {
+        let kind = if v.alt_length {
+            "tfem_length_kind"
+        } else {
+            "c_size_t"
+        };
+        return format!("integer({kind}), intent(in) :: {n}");
+    }
+    match &s.passes[k] {
+        Pass::Array { base, konst } => {
+            let intent = if *konst { "in" } else { "inout" };
+            if base == "char" {
+                return if v.string {
+                    format!("character(kind=c_char, len=*), intent({intent}) :: {n}")
+                } else {
+                    format!("character(kind=c_char), intent({intent}) :: {n}(*)")
+                };
+            }
+            let rank = s.rank(v, k).unwrap();
+            let dims = if rank == 2 { "(1, *)" } else { "(*)" };
+            // A nullable array is OPTIONAL at rank 1 and required at rank
+            // 2; either way its address is taken.
+            let attrs = match (s.optional[k], rank) {
+                (true, 1) => ", optional, target",
+                (true, _) => ", target",
+                (false, _) => "",
+            };
+            format!("{}, intent({intent}){attrs} :: {n}{dims}", kind_of(base))
+        }
+        Pass::Struct { name, konst } if s.optional[k] => format!(
+            "type({name}), intent({}), optional, target :: {n}",
+            if *konst { "in" } else { "inout" }
+        ),
+        Pass::Out { base } if s.optional[k] => {
+            format!("{}, intent(inout), optional, target :: {n}", kind_of(base))
+        }
+        pass => fortran_param(pass, n),
+    }
+}
+
+/// The module procedure of tfem_specifics for variant `v` of `p`.
+fn specific(f: &mut String, p: &Proto, s: &Shape, v: &Variant) {
+    let name = specific_name(p, s, v);
+    let procedures = s.offer() == Offer::Procedures;
+    let (kind, result, result_decl) = result_of(p);
+    let (mut args, mut decls, mut locals, mut actuals, mut body) =
+        (Vec::new(), Vec::new(), Vec::new(), Vec::new(), Vec::new());
+    for (k, (_, n)) in p.params.iter().enumerate() {
+        if v.omit_handle && Some(k) == s.nullable_handle {
+            actuals.push("c_null_ptr".to_string());
+            continue;
+        }
+        args.push(n.clone());
+        decls.push(specific_dummy(p, s, v, k));
+        if v.alt_length && s.lengths.contains(&k) {
+            actuals.push(format!("tfem_to_size_t({n})"));
+        } else if procedures && s.optional[k] {
+            let address = format!("{n}_address");
+            assert!(
+                !p.params.iter().any(|(_, m)| *m == address),
+                "{}: a parameter is named {address}",
+                p.name
+            );
+            match &s.passes[k] {
+                Pass::Array { base, .. } => {
+                    let at = buffer_length(p, k);
+                    let len = &p.params[at].1;
+                    let nonempty = if s.lengths.contains(&at) && !v.alt_length {
+                        format!("{len} /= 0")
+                    } else {
+                        format!("{len} > 0")
+                    };
+                    body.push(format!(
+                        "{address} = tfem_address_{}({n}, {nonempty})",
+                        kind_tag(base)
+                    ));
+                }
+                _ => {
+                    body.push(format!("{address} = c_null_ptr"));
+                    body.push(format!("if (present({n})) {address} = c_loc({n})"));
+                }
+            }
+            locals.push(format!("type(c_ptr) :: {address}"));
+            actuals.push(address);
+        } else {
+            actuals.push(n.clone());
+        }
+    }
+    let target = if procedures {
+        by_address_name(p)
+    } else {
+        p.name.clone()
+    };
     writeln!(
         f,
         "  {kind} {name}({}){result}",
-        arglist(args, name.len() + kind.len() + 4)
+        arglist(&args, name.len() + kind.len() + 4 + result.len())
     )
     .unwrap();
-    for d in decls {
+    for d in &decls {
         writeln!(f, "    {d}").unwrap();
     }
-    if !decl.is_empty() {
-        writeln!(f, "    {decl}").unwrap();
+    if !result_decl.is_empty() {
+        writeln!(f, "    {result_decl}").unwrap();
+    }
+    for l in &locals {
+        writeln!(f, "    {l}").unwrap();
+    }
+    for b in &body {
+        writeln!(f, "    {b}").unwrap();
     }
     let lhs = match kind {
         "subroutine" => "call ".to_string(),
@@ -736,84 +996,40 @@ fn forwarder(
     writeln!(
         f,
         "    {lhs}{target}({})",
-        arglist(actuals, 4 + lhs.len() + target.len() + 1)
+        arglist(&actuals, 4 + lhs.len() + target.len() + 1)
     )
     .unwrap();
     writeln!(f, "  end {kind} {name}\n").unwrap();
 }
 
-/// The module procedures behind the generic of `p`.
-fn specifics(f: &mut String, p: &Proto, s: &Shape) {
-    for v in s.variants() {
-        let name = specific_name(p, s, v);
-        let mut what = Vec::new();
-        if v.omit_handle {
-            what.push(format!(
-                "without `{}` (NULL)",
-                p.params[s.nullable_handle.unwrap()].1
-            ));
+/// `keyword :: a, b, c` statements of at most 100 columns, at `indent`.
+fn name_list(f: &mut String, indent: &str, keyword: &str, names: &[String]) {
+    let lead = indent.len() + keyword.len() + 4;
+    let mut line: Vec<&str> = Vec::new();
+    let mut width = lead;
+    for n in names {
+        if !line.is_empty() && width + 2 + n.len() > 100 {
+            writeln!(f, "{indent}{keyword} :: {}", line.join(", ")).unwrap();
+            line.clear();
+            width = lead;
         }
-        if v.string {
-            what.push("character buffers as strings".to_string());
-        }
-        if v.alt_length {
-            what.push("lengths of kind tfem_length_kind".to_string());
-        }
-        wrap(
-            f,
-            "  ",
-            &format!("{}, {}.", p.name, what.join(", ")),
-            "!",
-            "!",
-        );
-        let (mut args, mut decls, mut actuals) = (Vec::new(), Vec::new(), Vec::new());
-        for (k, (_, n)) in p.params.iter().enumerate() {
-            if v.omit_handle && Some(k) == s.nullable_handle {
-                actuals.push("c_null_ptr".to_string());
-                continue;
-            }
-            args.push(n.clone());
-            if v.alt_length && s.lengths.contains(&k) {
-                decls.push(format!("integer(tfem_length_kind), intent(in) :: {n}"));
-                actuals.push(format!("tfem_to_size_t({n})"));
-                continue;
-            }
-            actuals.push(n.clone());
-            match &s.passes[k] {
-                Pass::Array { base, konst } if v.string && base == "char" => decls.push(format!(
-                    "character(kind=c_char, len=*), intent({}){} :: {n}",
-                    if *konst { "in" } else { "inout" },
-                    if s.optional[k] { ", optional" } else { "" }
-                )),
-                pass => decls.push(fortran_param(pass, n, s.optional[k])),
-            }
-        }
-        let target = if v.string {
-            raw_name(p)
-        } else {
-            p.name.clone()
-        };
-        forwarder(f, p, &name, &args, &decls, &target, &actuals);
+        width += n.len() + if line.is_empty() { 0 } else { 2 };
+        line.push(n);
     }
-    if s.generic() && !s.chars.is_empty() {
-        writeln!(
-            f,
-            "  ! {}, by a specific name (for the strings of the _str specifics).",
-            p.name
-        )
-        .unwrap();
-        let args: Vec<String> = p.params.iter().map(|(_, n)| n.clone()).collect();
-        let decls: Vec<String> = p
-            .params
-            .iter()
-            .enumerate()
-            .map(|(k, (_, n))| fortran_param(&s.passes[k], n, s.optional[k]))
-            .collect();
-        forwarder(f, p, &raw_name(p), &args, &decls, &p.name, &args);
+    if !line.is_empty() {
+        writeln!(f, "{indent}{keyword} :: {}", line.join(", ")).unwrap();
     }
 }
 
+/// `use module, only: a, b, c` with continuation lines before column 100.
+fn use_only(f: &mut String, module: &str, names: &[String]) {
+    let head = format!("  use {module}, only: ");
+    writeln!(f, "{head}{}", arglist(names, head.len())).unwrap();
+}
+
 fn generate(header: &str) -> String {
+    let protos = prototypes(header);
+    let shapes: Vec<Shape> = protos.iter().map(shape).collect();
     let mut f = String::new();
     f.push_str(
         "! Generated from include/tfem.h by tests/fortran.rs. Do not edit:\n\
@@ -832,22 +1048,100 @@ fn generate(header: &str) -> String {
     {
         writeln!(f, "{}", format!("! {l}").trim_end()).unwrap();
     }
-    let protos = prototypes(header);
-    let shapes: Vec<Shape> = protos.iter().map(shape).collect();
-    f.push_str(
-        "module tfem\n  use, intrinsic :: iso_c_binding\n  implicit none\n  private :: c_strlen, tfem_to_size_t\n",
+    wrap(
+        &mut f,
+        "",
+        &by_offer(&protos, &shapes, Offer::Procedures).join(", "),
+        "!  ",
+        "!  ",
     );
-    for (p, s) in protos.iter().zip(&shapes) {
-        for v in s.variants() {
-            writeln!(f, "  private :: {}", specific_name(p, s, v)).unwrap();
+    f.push('\n');
+
+    let (constants, types) = module_tfem_c(&mut f, header, &protos, &shapes);
+    module_tfem_specifics(&mut f, &protos, &shapes, &types);
+    module_tfem(&mut f, &protos, &shapes, constants, types);
+    f
+}
+
+/// The names of the functions `protos` that module tfem offers `offer`.
+fn by_offer(protos: &[Proto], shapes: &[Shape], offer: Offer) -> Vec<String> {
+    protos
+        .iter()
+        .zip(shapes)
+        .filter(|(_, s)| s.offer() == offer)
+        .map(|(p, _)| p.name.clone())
+        .collect()
+}
+
+/// Module tfem_c: the constants, the types and every bind(C) interface;
+/// returns the names of the constants and of the types.
+fn module_tfem_c(
+    f: &mut String,
+    header: &str,
+    protos: &[Proto],
+    shapes: &[Shape],
+) -> (Vec<String>, Vec<String>) {
+    f.push_str(
+        "! The C API as it is (see \"Fortran 2008\" above).\n\
+         module tfem_c\n  use, intrinsic :: iso_c_binding\n  implicit none\n\n",
+    );
+    let mut constants = Vec::new();
+    for e in enums(header) {
+        wrap(f, "  ", &format!("enum {}: {}", e.name, e.doc), "!", "!");
+        for (k, v, doc) in e.consts {
+            comment(f, "  ", &doc);
+            writeln!(f, "  integer(c_int), parameter :: {k} = {v}").unwrap();
+            constants.push(k);
         }
-        if s.generic() && !s.chars.is_empty() {
-            writeln!(f, "  private :: {}", raw_name(p)).unwrap();
+        f.push('\n');
+    }
+    let mut types = Vec::new();
+    for st in structs(header) {
+        comment(f, "  ", &st.doc);
+        writeln!(f, "  type, bind(C) :: {}", st.name).unwrap();
+        for (ty, field, doc) in st.fields {
+            comment(f, "    ", &doc);
+            writeln!(f, "    {} :: {field}", fortran_field(&ty)).unwrap();
+        }
+        writeln!(f, "  end type {}\n", st.name).unwrap();
+        types.push(st.name);
+    }
+    f.push_str("  interface\n");
+    for (k, (p, s)) in protos.iter().zip(shapes).enumerate() {
+        if k > 0 {
+            f.push('\n');
+        }
+        interface_body(f, p, s);
+    }
+    f.push_str("  end interface\nend module tfem_c\n\n");
+    (constants, types)
+}
+
+/// Module tfem_specifics: the module procedures behind tfem's generic
+/// interfaces, and the interfaces they call.
+fn module_tfem_specifics(f: &mut String, protos: &[Proto], shapes: &[Shape], types: &[String]) {
+    let specific_names = specific_names(protos, shapes);
+    let mut address_kinds = BTreeSet::new();
+    for s in shapes {
+        for &k in &s.arrays {
+            if let (true, Pass::Array { base, .. }) = (s.optional[k], &s.passes[k]) {
+                address_kinds.insert((kind_tag(base), kind_of(base)));
+            }
         }
     }
+    f.push_str(
+        "! The module procedures behind the generic interfaces of module tfem (see \"Generic\n\
+         ! interfaces\" above); not for direct use.\n\
+         module tfem_specifics\n  use, intrinsic :: iso_c_binding\n",
+    );
+    let mut imported = types.to_vec();
+    imported.extend(by_offer(protos, shapes, Offer::Generic));
+    use_only(f, "tfem_c", &imported);
+    f.push_str("  implicit none\n  private\n  public :: tfem_length_kind\n");
+    name_list(f, "  ", "public", &specific_names);
     f.push('\n');
     comment(
-        &mut f,
+        f,
         "  ",
         "The kind of the lengths the generic interfaces accept besides integer(c_size_t): \
          c_int (the default integer) where size_t is wider, else c_int64_t.",
@@ -855,55 +1149,28 @@ fn generate(header: &str) -> String {
     f.push_str(
         "  integer, parameter :: tfem_length_kind = merge(c_int, c_int64_t, c_size_t /= c_int)\n\n",
     );
-    for e in enums(header) {
-        wrap(
-            &mut f,
-            "  ",
-            &format!("enum {}: {}", e.name, e.doc),
-            "!",
-            "!",
-        );
-        for (k, v, doc) in e.consts {
-            comment(&mut f, "  ", &doc);
-            writeln!(f, "  integer(c_int), parameter :: {k} = {v}").unwrap();
-        }
-        f.push('\n');
+    for (tag, kind) in &address_kinds {
+        writeln!(
+            f,
+            "  ! The buffer passed for a given zero-length {tag} array: never read or written."
+        )
+        .unwrap();
+        writeln!(f, "  {kind}, target, save :: tfem_empty_{tag}(1)").unwrap();
     }
-    for st in structs(header) {
-        comment(&mut f, "  ", &st.doc);
-        writeln!(f, "  type, bind(C) :: {}", st.name).unwrap();
-        for (ty, field, doc) in st.fields {
-            comment(&mut f, "    ", &doc);
-            writeln!(f, "    {} :: {field}", fortran_field(&ty)).unwrap();
-        }
-        writeln!(f, "  end type {}\n", st.name).unwrap();
-    }
-    for (p, s) in protos.iter().zip(&shapes) {
-        if s.generic() {
-            writeln!(f, "  interface {}", p.name).unwrap();
-            interface_body(&mut f, p, s);
-            for v in s.variants() {
-                writeln!(f, "    module procedure {}", specific_name(p, s, v)).unwrap();
+    f.push_str("\n  interface\n");
+    let mut first = true;
+    for (p, s) in protos.iter().zip(shapes) {
+        if s.offer() == Offer::Procedures {
+            if !first {
+                f.push('\n');
             }
-            writeln!(f, "  end interface {}\n", p.name).unwrap();
-        } else {
-            f.push_str("  interface\n");
-            interface_body(&mut f, p, s);
-            f.push_str("  end interface\n\n");
+            first = false;
+            by_address_body(f, p, s);
         }
     }
+    f.push_str("  end interface\n\ncontains\n\n");
     f.push_str(
-        "contains\n\n\
-         \x20 pure function c_strlen(buf) result(n)\n\
-         \x20   character(kind=c_char), intent(in) :: buf(:)\n\
-         \x20   integer :: n\n\
-         \x20   n = 0\n\
-         \x20   do while (n < size(buf))\n\
-         \x20     if (buf(n + 1) == c_null_char) exit\n\
-         \x20     n = n + 1\n\
-         \x20   end do\n\
-         \x20 end function c_strlen\n\n\
-         \x20 !> A length of kind tfem_length_kind as integer(c_size_t). A negative length becomes 0, so\n\
+        "\x20 !> A length of kind tfem_length_kind as integer(c_size_t). A negative length becomes 0, so\n\
          \x20 !! that the library reports TFEM_STATUS_BUFFER_TOO_SMALL instead of reading a huge size_t.\n\
          \x20 elemental function tfem_to_size_t(n) result(s)\n\
          \x20   integer(tfem_length_kind), intent(in) :: n\n\
@@ -917,9 +1184,89 @@ fn generate(header: &str) -> String {
          \x20   end if\n\
          \x20 end function tfem_to_size_t\n\n",
     );
-    for (p, s) in protos.iter().zip(&shapes) {
-        specifics(&mut f, p, s);
+    for (tag, kind) in &address_kinds {
+        writeln!(
+            f,
+            "  !> The address to pass for the nullable {tag} array x: NULL when absent, that of\n\
+             \x20 !! tfem_empty_{tag} when its buffer is empty (c_loc needs a nonzero size).\n\
+             \x20 function tfem_address_{tag}(x, nonempty) result(address)\n\
+             \x20   {kind}, intent(in), optional, target :: x(*)\n\
+             \x20   logical, intent(in) :: nonempty\n\
+             \x20   type(c_ptr) :: address\n\
+             \x20   address = c_null_ptr\n\
+             \x20   if (.not. present(x)) return\n\
+             \x20   address = c_loc(tfem_empty_{tag})\n\
+             \x20   if (nonempty) address = c_loc(x)\n\
+             \x20 end function tfem_address_{tag}\n"
+        )
+        .unwrap();
     }
+    for (p, s) in protos.iter().zip(shapes) {
+        for v in s.variants() {
+            specific(f, p, s, &v);
+        }
+    }
+    f.push_str("end module tfem_specifics\n\n");
+}
+
+/// The names of every module procedure of tfem_specifics behind a generic.
+fn specific_names(protos: &[Proto], shapes: &[Shape]) -> Vec<String> {
+    protos
+        .iter()
+        .zip(shapes)
+        .flat_map(|(p, s)| s.variants().into_iter().map(|v| specific_name(p, s, &v)))
+        .collect()
+}
+
+/// Module tfem: tfem_c's constants, types and plain interfaces, the
+/// generic interfaces and the string helpers.
+fn module_tfem(
+    f: &mut String,
+    protos: &[Proto],
+    shapes: &[Shape],
+    constants: Vec<String>,
+    types: Vec<String>,
+) {
+    let specific_names = specific_names(protos, shapes);
+    f.push_str(
+        "! The module to use: tfem_c's constants and types, its interfaces where nothing is\n\
+         ! converted, and the generic interfaces.\n\
+         module tfem\n  use, intrinsic :: iso_c_binding\n",
+    );
+    let mut imported = constants;
+    imported.extend(types);
+    imported.extend(by_offer(protos, shapes, Offer::Interface));
+    imported.extend(by_offer(protos, shapes, Offer::Generic));
+    use_only(f, "tfem_c", &imported);
+    f.push_str("  use tfem_specifics\n  implicit none\n  private :: c_strlen\n");
+    name_list(f, "  ", "private", &specific_names);
+    f.push('\n');
+    for (p, s) in protos.iter().zip(shapes) {
+        if s.offer() == Offer::Interface {
+            continue;
+        }
+        comment(f, "  ", &fortran_note(p, s));
+        writeln!(f, "  interface {}", p.name).unwrap();
+        if s.offer() == Offer::Generic {
+            writeln!(f, "    procedure {}", p.name).unwrap();
+        }
+        for v in s.variants() {
+            writeln!(f, "    procedure {}", specific_name(p, s, &v)).unwrap();
+        }
+        writeln!(f, "  end interface {}\n", p.name).unwrap();
+    }
+    f.push_str(
+        "contains\n\n\
+         \x20 pure function c_strlen(buf) result(n)\n\
+         \x20   character(kind=c_char), intent(in) :: buf(:)\n\
+         \x20   integer :: n\n\
+         \x20   n = 0\n\
+         \x20   do while (n < size(buf))\n\
+         \x20     if (buf(n + 1) == c_null_char) exit\n\
+         \x20     n = n + 1\n\
+         \x20   end do\n\
+         \x20 end function c_strlen\n\n",
+    );
     f.push_str(
         "\x20 !> The message of the last failed call on model (omitted or c_null_ptr: this thread's\n\
          \x20 !! model-free calls), as a Fortran string.\n\
@@ -997,7 +1344,6 @@ fn generate(header: &str) -> String {
          \x20 end function tfem_version_string\n\n\
          end module tfem\n",
     );
-    f
 }
 
 fn header() -> String {
@@ -1064,8 +1410,8 @@ fn procedures(module: &str) -> BTreeMap<String, FProc> {
     out
 }
 
-/// Generic name -> its specific procedures (the interface body of the same
-/// name included), read from the module's `interface <name>` blocks.
+/// Generic name -> its specific procedures (tfem_c's bind(C) interface of
+/// the same name included), read from the `interface <name>` blocks.
 fn generics(module: &str) -> BTreeMap<String, Vec<String>> {
     let mut out: BTreeMap<String, Vec<String>> = BTreeMap::new();
     let mut current: Option<String> = None;
@@ -1075,10 +1421,8 @@ fn generics(module: &str) -> BTreeMap<String, Vec<String>> {
             out.entry(name.trim().to_string()).or_default();
         } else if l.starts_with("end interface") {
             current = None;
-        } else if let (Some(g), Some(p)) = (&current, l.strip_prefix("module procedure ")) {
+        } else if let (Some(g), Some(p)) = (&current, l.strip_prefix("procedure ")) {
             out.get_mut(g).unwrap().push(p.trim().to_string());
-        } else if let (Some(g), true) = (&current, l.contains("bind(C, name=")) {
-            out.get_mut(g).unwrap().push(g.clone());
         }
     }
     out
@@ -1088,7 +1432,9 @@ fn generics(module: &str) -> BTreeMap<String, Vec<String>> {
 fn decl_of<'a>(decls: &'a [String], n: &str) -> Option<&'a String> {
     decls.iter().find(|l| {
         let l = l.trim_end();
-        l.ends_with(&format!(":: {n}")) || l.ends_with(&format!(":: {n}(*)"))
+        l.ends_with(&format!(":: {n}"))
+            || l.ends_with(&format!(":: {n}(*)"))
+            || l.ends_with(&format!(":: {n}(1, *)"))
     })
 }
 
@@ -1110,7 +1456,8 @@ fn fortran_module_is_generated_from_the_current_header() {
 #[test]
 fn every_header_function_has_a_matching_fortran_interface() {
     // Independent of the generator: read the committed module back.
-    let module = module();
+    let file = module();
+    let module = module_text(&file, "tfem_c");
     let protos = prototypes(&header());
     assert!(
         protos.len() >= 30,
@@ -1283,28 +1630,51 @@ fn every_null_in_the_function_docs_is_understood() {
     );
 }
 
+/// The text of module `name` of the committed file.
+fn module_text<'a>(module: &'a str, name: &str) -> &'a str {
+    let start = module
+        .find(&format!("\nmodule {name}\n"))
+        .unwrap_or_else(|| panic!("no module {name}"));
+    let end = module[start..]
+        .find(&format!("\nend module {name}\n"))
+        .unwrap()
+        + start;
+    &module[start..end]
+}
+
 #[test]
 fn documented_nullable_parameters_are_optional_and_lengths_generic() {
-    // Read back from the committed module: every pointer parameter the doc
-    // says may be NULL is OPTIONAL (a nullable handle: the generic has a
-    // specific without it), and no other is; every function with a size_t
-    // length is generic with a specific taking tfem_length_kind lengths.
+    // Read back from the committed module: in module tfem, every pointer
+    // parameter the doc says may be NULL is OPTIONAL in the specifics of
+    // its generic (or, an array, given at rank 2), and no other is; a
+    // nullable handle has a specific without it; every size_t length takes
+    // integer(c_size_t) and tfem_length_kind. tfem_c's bind(C) interfaces
+    // have no OPTIONAL (Fortran 2008), so a generic with an OPTIONAL
+    // dummy cannot hold one.
     let module = module();
     let procs = procedures(&module);
-    let generics = generics(&module);
+    let generics = generics(module_text(&module, "tfem"));
+    assert!(!module_text(&module, "tfem_c").contains("optional"));
     let mut optional = 0;
     for p in prototypes(&header()) {
         let null = nullable(&p);
-        let raw = &procs[&p.name];
         let c_names: Vec<String> = p.params.iter().map(|(_, n)| n.clone()).collect();
         let specifics: Vec<&FProc> = generics
             .get(&p.name)
             .map(|g| g.iter().map(|s| &procs[s]).collect())
             .unwrap_or_default();
+        let decls = |s: &FProc, n: &str| decl_of(&s.decls, n).cloned();
+        let with_optional = null
+            .iter()
+            .any(|n| !is_handle(&p.params.iter().find(|(_, m)| m == n).unwrap().0));
+        assert_eq!(
+            generics.get(&p.name).is_some_and(|g| g.contains(&p.name)),
+            !with_optional && !specifics.is_empty(),
+            "{}: tfem_c's bind(C) interface is a specific iff no argument is OPTIONAL",
+            p.name
+        );
         for (ty, n) in &p.params {
-            let decl = decl_of(&raw.decls, n).expect("declaration");
             if is_handle(ty) {
-                assert!(!decl.contains("optional"), "{}: {decl}", p.name);
                 let without: Vec<&String> = c_names.iter().filter(|a| *a != n).collect();
                 let omittable = specifics
                     .iter()
@@ -1317,13 +1687,28 @@ fn documented_nullable_parameters_are_optional_and_lengths_generic() {
                 );
                 optional += usize::from(omittable);
             } else if ty.ends_with('*') {
-                assert_eq!(
-                    decl.contains(", optional"),
-                    null.contains(n),
-                    "{}: `{decl}` is OPTIONAL iff the doc says `{n}` may be NULL",
-                    p.name
-                );
-                optional += usize::from(null.contains(n));
+                for s in &specifics {
+                    let Some(decl) = decls(s, n) else {
+                        continue;
+                    };
+                    let given_at_rank_2 = decl.ends_with("(1, *)");
+                    assert_eq!(
+                        decl.contains(", optional"),
+                        null.contains(n) && !given_at_rank_2,
+                        "{}: `{decl}` is OPTIONAL iff the doc says `{n}` may be NULL",
+                        p.name
+                    );
+                }
+                if null.contains(n) {
+                    assert!(
+                        specifics
+                            .iter()
+                            .any(|s| decls(s, n).is_some_and(|d| d.contains(", optional"))),
+                        "{}: `{n}` is OPTIONAL in no specific",
+                        p.name
+                    );
+                    optional += 1;
+                }
             }
         }
         let lengths: Vec<&String> = p
@@ -1332,18 +1717,20 @@ fn documented_nullable_parameters_are_optional_and_lengths_generic() {
             .filter(|(ty, _)| ty == "size_t")
             .map(|(_, n)| n)
             .collect();
-        if !lengths.is_empty() {
-            let converting = specifics.iter().any(|s| {
-                s.args == c_names
-                    && lengths.iter().all(|n| {
-                        decl_of(&s.decls, n).is_some_and(|d| d.contains("tfem_length_kind"))
-                    })
-            });
-            assert!(
-                converting,
-                "{}: no specific takes the lengths as integer(tfem_length_kind)",
-                p.name
-            );
+        for kind in ["tfem_length_kind", "c_size_t"] {
+            if !lengths.is_empty() {
+                let converting = specifics.iter().any(|s| {
+                    s.args == c_names
+                        && lengths
+                            .iter()
+                            .all(|n| decls(s, n).is_some_and(|d| d.contains(kind)))
+                });
+                assert!(
+                    converting,
+                    "{}: no specific takes the lengths as integer({kind})",
+                    p.name
+                );
+            }
         }
     }
     assert!(optional >= 10, "only {optional} nullable parameters found");
@@ -1360,27 +1747,41 @@ fn build_fortran(sources: &[&Path], name: &str) -> PathBuf {
 
 /// [`build_fortran`] with extra gfortran flags (an optimisation level).
 fn build_fortran_with(sources: &[&Path], name: &str, flags: &[&str]) -> PathBuf {
-    ensure_shared_library();
+    build_fortran_linked(sources, name, flags, true)
+}
+
+/// [`build_fortran_with`], linked with libtfem or not (a probe library
+/// among the sources defines the functions instead).
+fn build_fortran_linked(sources: &[&Path], name: &str, flags: &[&str], libtfem: bool) -> PathBuf {
     let lib = lib_dir();
     let dir = lib.join("fortran").join(name);
     std::fs::create_dir_all(&dir).unwrap();
     let exe = dir.join(name);
-    // Fortran 2018: OPTIONAL dummies of bind(C) interfaces (TS 29113).
-    let out = Command::new("gfortran")
-        .arg("-std=f2018")
-        .arg("-Wall")
-        .arg("-Werror")
-        .arg("-Wno-unused-dummy-argument")
+    let mut command = Command::new("gfortran");
+    // The module is Fortran 2008 (its head comment): so are the programs
+    // built against it here.
+    command
+        .args([
+            "-std=f2008",
+            "-Wall",
+            "-Werror",
+            "-Wno-unused-dummy-argument",
+        ])
         .args(flags)
         .arg("-J")
         .arg(&dir)
         .arg(root().join("include/tfem.f90"))
         .args(sources)
         .arg("-o")
-        .arg(&exe)
-        .arg(format!("-L{}", lib.display()))
-        .arg("-ltfem")
-        .arg(format!("-Wl,-rpath,{}", lib.display()))
+        .arg(&exe);
+    if libtfem {
+        ensure_shared_library();
+        command
+            .arg(format!("-L{}", lib.display()))
+            .arg("-ltfem")
+            .arg(format!("-Wl,-rpath,{}", lib.display()));
+    }
+    let out = command
         .output()
         .expect("gfortran is installed (Debian package gfortran; scripts/test.sh installs it)");
     assert!(
@@ -1507,78 +1908,52 @@ fn every_function_takes_default_integer_lengths_and_omitted_nullables() {
     build_fortran(&[&source], "every_call");
 }
 
-#[test]
-fn gfortran_passes_null_for_every_absent_optional_argument_kind() {
-    // Every kind of OPTIONAL dummy the module's bind(C) interfaces use,
-    // checked against a C function that reports whether it got NULL:
-    // absent, present, and absent forwarded through an optional dummy of a
-    // module procedure (as the generic specifics do).
-    let module = module();
-    let procs = procedures(&module);
-    let mut kinds = BTreeSet::new();
+// ---------------------------------------------------------------------------
+// Calls checked against a probe: a C library with every function of tfem.h
+// as a stub that records the pointers it was given.
+
+/// Compiles the probe library of `name`: every function of tfem.h (its
+/// prototype checked against the header) records its arguments, and
+/// `tfem_probe_arg(k)` returns the k-th pointer argument of the last call
+/// (NULL for an argument that is no pointer).
+fn probe_library(name: &str) -> PathBuf {
+    let mut c = String::from(
+        "#include <stddef.h>\n#include \"tfem.h\"\n\n\
+         static const void *args[32];\n\n\
+         const void *tfem_probe_arg(int k) { return args[k]; }\n\n\
+         static void probe_clear(void) {\n  for (int k = 0; k < 32; k++) args[k] = NULL;\n}\n",
+    );
     for p in prototypes(&header()) {
-        for d in &procs[&p.name].decls {
-            if let Some((ty, name)) = d.split_once(" ::") {
-                if ty.contains(", optional") {
-                    kinds.insert((ty.replace(", optional", ""), name.ends_with("(*)")));
-                }
+        assert!(
+            p.params.len() <= 32,
+            "{}: more arguments than the probe keeps",
+            p.name
+        );
+        let params: Vec<String> = p.params.iter().map(|(t, n)| format!("{t} {n}")).collect();
+        let params = if params.is_empty() {
+            "void".to_string()
+        } else {
+            params.join(", ")
+        };
+        writeln!(c, "\n{} {}({params}) {{\n  probe_clear();", p.ret, p.name).unwrap();
+        for (k, (t, n)) in p.params.iter().enumerate() {
+            if t.ends_with('*') {
+                writeln!(c, "  args[{k}] = (const void *){n};").unwrap();
+            } else {
+                writeln!(c, "  (void){n};").unwrap();
             }
         }
+        match p.ret.as_str() {
+            "void" => {}
+            "enum tfem_status" => c.push_str("  return TFEM_STATUS_OK;\n"),
+            "size_t" => c.push_str("  return 0;\n"),
+            "const char *" => c.push_str("  return \"probe\";\n"),
+            _ => c.push_str("  return NULL;\n"),
+        }
+        c.push_str("}\n");
     }
-    assert!(kinds.len() >= 4, "optional kinds: {kinds:?}");
-    let mut c = String::from("#include <stddef.h>\n");
-    let mut interfaces = String::new();
-    let mut decls = String::new();
-    let mut checks = String::new();
-    let mut forwards = String::new();
-    for (k, (ty, array)) in kinds.iter().enumerate() {
-        let dims = if *array { "(*)" } else { "" };
-        writeln!(
-            c,
-            "int tfem_optional_probe_{k}(const void *x) {{ return x == NULL; }}"
-        )
-        .unwrap();
-        writeln!(
-            interfaces,
-            "    function probe_{k}(x) bind(C, name=\"tfem_optional_probe_{k}\") result(isnull)\n\
-             \x20     import\n\
-             \x20     {ty}, optional :: x{dims}\n\
-             \x20     integer(c_int) :: isnull\n\
-             \x20   end function probe_{k}"
-        )
-        .unwrap();
-        let var_ty = ty.split(", intent").next().unwrap();
-        let var_dims = if *array { "(4)" } else { "" };
-        writeln!(decls, "  {var_ty} :: x_{k}{var_dims}").unwrap();
-        writeln!(
-            checks,
-            "  call expect(probe_{k}() == 1, '{ty}: absent is NULL')\n\
-             \x20 call expect(probe_{k}(x_{k}) == 0, '{ty}: present is not NULL')\n\
-             \x20 call expect(forward_{k}() == 1, '{ty}: absent and forwarded is NULL')"
-        )
-        .unwrap();
-        writeln!(
-            forwards,
-            "  function forward_{k}(x) result(isnull)\n\
-             \x20   {ty}, optional :: x{dims}\n\
-             \x20   integer(c_int) :: isnull\n\
-             \x20   isnull = probe_{k}(x)\n\
-             \x20 end function forward_{k}"
-        )
-        .unwrap();
-    }
-    let program = format!(
-        "program optional_probe\n  use, intrinsic :: iso_c_binding\n  use tfem\n  implicit none\n\
-         \x20 interface\n{interfaces}  end interface\n{decls}  integer :: failed = 0, checked = 0\n\
-         {checks}  write (*, '(i0, a, i0, a)') checked, ' checked, ', failed, ' failed'\n\
-         \x20 if (failed > 0) stop 1\ncontains\n\
-         \x20 subroutine expect(ok, what)\n    logical, intent(in) :: ok\n\
-         \x20   character(len=*), intent(in) :: what\n    checked = checked + 1\n\
-         \x20   if (.not. ok) then\n      failed = failed + 1\n      write (*, '(2a)') 'FAIL ', what\n\
-         \x20   end if\n  end subroutine expect\n{forwards}end program optional_probe\n"
-    );
-    let c_source = generated_source("optional_probe", "probe.c", &c);
-    let object = c_source.with_extension("o");
+    let source = generated_source(name, "probe.c", &c);
+    let object = source.with_extension("o");
     let out = cc::Build::new()
         .cargo_metadata(false)
         .target(env!("TFEM_BUILD_TARGET"))
@@ -1587,7 +1962,8 @@ fn gfortran_passes_null_for_every_absent_optional_argument_kind() {
         .get_compiler()
         .to_command()
         .arg("-c")
-        .arg(&c_source)
+        .arg(format!("-I{}", root().join("include").display()))
+        .arg(&source)
         .arg("-o")
         .arg(&object)
         .output()
@@ -1597,10 +1973,362 @@ fn gfortran_passes_null_for_every_absent_optional_argument_kind() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let source = generated_source("optional_probe", "optional_probe.f90", &program);
-    let exe = build_fortran(&[&source, &object], "optional_probe");
+    object
+}
+
+/// How a generated call passes its arguments.
+#[derive(Clone, Copy)]
+struct Way<'a> {
+    /// The kind suffix of the length literals (`_c_size_t`, or "" for
+    /// default integers).
+    kind: &'a str,
+    /// Arguments by keyword.
+    keywords: bool,
+    /// Every nullable argument (handle included) omitted.
+    omit_nullables: bool,
+    /// This nullable argument alone omitted.
+    omit: Option<usize>,
+    /// The rank of every numeric array.
+    rank: u8,
+    /// This nullable array given with zero length (its buffer length 0).
+    empty: Option<usize>,
+}
+
+/// A generated call of `p` and what the probe must have recorded: per
+/// pointer argument, `Some(variable)` for the address of that variable,
+/// `None` for NULL, `Some("")` for a buffer of some address (not NULL).
+struct ProbedCall {
+    call: String,
+    expect: Vec<(usize, Option<String>)>,
+}
+
+/// The call of `p` made `way`, declaring its variables in `vars` (all
+/// TARGET: the probe compares addresses).
+fn probed_call(p: &Proto, way: Way, vars: &mut BTreeMap<String, String>) -> ProbedCall {
+    let s = shape(p);
+    let null = nullable(p);
+    let emptied = way.empty.map(|k| buffer_length(p, k));
+    let mut args = Vec::new();
+    let mut expect = Vec::new();
+    for (k, (ty, n)) in p.params.iter().enumerate() {
+        let omitted = (way.omit_nullables && null.contains(n)) || way.omit == Some(k);
+        if omitted {
+            if ty.ends_with('*') {
+                expect.push((k, None));
+            }
+            continue;
+        }
+        let length = if emptied == Some(k) { "0" } else { "64" };
+        let var: String = match &s.passes[k] {
+            Pass::Handle => {
+                vars.insert("model".into(), "type(c_ptr) :: model = c_null_ptr".into());
+                "model".into()
+            }
+            Pass::Struct { name, .. } => {
+                let v = format!("s{k}_{name}");
+                vars.insert(v.clone(), format!("type({name}), target :: {v}"));
+                v
+            }
+            Pass::Value(b) => match b.as_str() {
+                "double" => "1.0_c_double".into(),
+                "int" => length.into(),
+                "int64_t" => "1_c_int64_t".into(),
+                "size_t" => format!("{length}{}", way.kind),
+                t => panic!("no actual argument for {t}"),
+            },
+            Pass::Array { base, .. } => {
+                let (tag, ty) = match base.as_str() {
+                    "double" => ("rd", "real(c_double)"),
+                    "int" => ("ia", "integer(c_int)"),
+                    "int64_t" => ("la", "integer(c_int64_t)"),
+                    "uint8_t" => ("ba", "integer(c_int8_t)"),
+                    "char" => ("ca", "character(kind=c_char)"),
+                    t => panic!("no actual argument for {t}"),
+                };
+                let dims = if way.empty == Some(k) {
+                    "(0)"
+                } else if way.rank == 2 && base != "char" {
+                    "(2, 32)"
+                } else {
+                    "(64)"
+                };
+                let shape_tag = match dims {
+                    "(0)" => "e",
+                    "(2, 32)" => "2",
+                    _ => "1",
+                };
+                let v = format!("{tag}{k}_{shape_tag}");
+                vars.insert(v.clone(), format!("{ty}, target :: {v}{dims}"));
+                v
+            }
+            Pass::Out { base } => {
+                let ty = match base.as_str() {
+                    "double" => "real(c_double)",
+                    "int" => "integer(c_int)",
+                    "int64_t" => "integer(c_int64_t)",
+                    "size_t" => "integer(c_size_t)",
+                    t => panic!("no actual argument for {t}"),
+                };
+                let v = format!("o{k}_{}", base.replace('_', ""));
+                vars.insert(v.clone(), format!("{ty}, target :: {v}"));
+                v
+            }
+        };
+        if ty.ends_with('*') && s.passes[k] != Pass::Handle {
+            // A given array whose buffer is empty reaches C as a buffer
+            // that is not the array (c_loc needs a nonzero size).
+            let empty = s.optional[k]
+                && s.arrays.contains(&k)
+                && emptied.is_some_and(|e| e == buffer_length(p, k));
+            expect.push((k, Some(if empty { String::new() } else { var.clone() })));
+        }
+        args.push(if way.keywords {
+            format!("{n}={var}")
+        } else {
+            var
+        });
+    }
+    let lhs = match p.ret.as_str() {
+        "void" => "call ",
+        "enum tfem_status" => {
+            vars.insert("st".into(), "integer(c_int) :: st".into());
+            "st = "
+        }
+        "size_t" => {
+            vars.insert("sz".into(), "integer(c_size_t) :: sz".into());
+            "sz = "
+        }
+        _ => {
+            vars.insert("pp".into(), "type(c_ptr) :: pp".into());
+            "pp = "
+        }
+    };
+    ProbedCall {
+        call: format!(
+            "  {lhs}{}({})",
+            p.name,
+            arglist(&args, 2 + lhs.len() + p.name.len() + 1)
+        ),
+        expect,
+    }
+}
+
+/// A program that makes `calls` (with `vars`) and checks after each what
+/// the probe recorded; it prints `N checked, M failed`.
+fn probe_program(
+    name: &str,
+    vars: &BTreeMap<String, String>,
+    calls: &[(String, ProbedCall)],
+) -> String {
+    let mut program = format!(
+        "! Generated by tests/fortran.rs ({name}).\n\
+         program {name}\n  use, intrinsic :: iso_c_binding\n  use tfem\n  implicit none\n\
+         \x20 interface\n\
+         \x20   function tfem_probe_arg(k) bind(C, name=\"tfem_probe_arg\") result(p)\n\
+         \x20     import\n      integer(c_int), value :: k\n      type(c_ptr) :: p\n\
+         \x20   end function tfem_probe_arg\n  end interface\n\
+         \x20 integer :: failed = 0, checked = 0\n"
+    );
+    for d in vars.values() {
+        writeln!(program, "  {d}").unwrap();
+    }
+    for (what, c) in calls {
+        writeln!(program, "{}", c.call).unwrap();
+        for (k, e) in &c.expect {
+            let (test, said) = match e {
+                None => (format!(".not. c_associated(tfem_probe_arg({k}))"), "NULL"),
+                Some(v) if v.is_empty() => {
+                    (format!("c_associated(tfem_probe_arg({k}))"), "a buffer")
+                }
+                Some(v) => (
+                    format!("c_associated(tfem_probe_arg({k}), c_loc({v}))"),
+                    "in place",
+                ),
+            };
+            writeln!(
+                program,
+                "  call expect({test}, &\n      '{what}: argument {k} {said}')"
+            )
+            .unwrap();
+        }
+    }
+    write!(
+        program,
+        "  write (*, '(i0, a, i0, a)') checked, ' checked, ', failed, ' failed'\n\
+         \x20 if (failed > 0) stop 1\ncontains\n\
+         \x20 subroutine expect(ok, what)\n    logical, intent(in) :: ok\n\
+         \x20   character(len=*), intent(in) :: what\n    checked = checked + 1\n\
+         \x20   if (.not. ok) then\n      failed = failed + 1\n      write (*, '(2a)') 'FAIL ', what\n\
+         \x20   end if\n  end subroutine expect\nend program {name}\n"
+    )
+    .unwrap();
+    program
+}
+
+/// Builds and runs a probe program; returns the number of checks.
+fn run_probe_program(name: &str, program: &str) -> usize {
+    let object = probe_library(name);
+    let source = generated_source(name, &format!("{name}.f90"), program);
+    let exe = build_fortran_linked(&[&source, &object], name, &[], false);
     let out = run(&exe, &[]);
     assert!(out.contains(" 0 failed"), "{out}");
+    out.split_whitespace().next().unwrap().parse().unwrap()
+}
+
+#[test]
+fn every_function_takes_rank_2_arrays_in_place() {
+    // Every function called with every numeric array of rank 2 (2 × 32):
+    // positionally with integer(c_size_t) lengths and every argument, as a
+    // legacy client calls the bind(C) interfaces; and by keyword with
+    // default-integer lengths and the nullable arguments omitted. The probe
+    // sees each array at its own address (no copy) and omitted arguments
+    // as NULL.
+    let mut vars = BTreeMap::new();
+    let mut calls = Vec::new();
+    for p in prototypes(&header()) {
+        for (what, kind, keywords, omit_nullables) in [
+            (
+                "c_size_t lengths, every argument",
+                "_c_size_t",
+                false,
+                false,
+            ),
+            ("default lengths, nullables omitted", "", true, true),
+        ] {
+            let way = Way {
+                kind,
+                keywords,
+                omit_nullables,
+                omit: None,
+                rank: 2,
+                empty: None,
+            };
+            calls.push((
+                format!("{}, {what}", p.name),
+                probed_call(&p, way, &mut vars),
+            ));
+        }
+    }
+    let program = probe_program("rank_2_call", &vars, &calls);
+    let checked = run_probe_program("rank_2_call", &program);
+    assert!(checked > 200, "only {checked} checks");
+}
+
+#[test]
+fn an_omitted_nullable_argument_reaches_c_as_null_and_an_empty_one_as_a_buffer() {
+    // Each nullable pointer argument alone omitted (with either kind of
+    // length), then, for an array, given with zero length: the probe sees
+    // NULL for the omitted one, a buffer (not NULL) for the empty one, and
+    // every other argument at its address.
+    let mut vars = BTreeMap::new();
+    let mut calls = Vec::new();
+    for p in prototypes(&header()) {
+        let s = shape(&p);
+        for k in (0..p.params.len()).filter(|&k| s.optional[k]) {
+            let n = &p.params[k].1;
+            let mut way = Way {
+                kind: "_c_size_t",
+                keywords: true,
+                omit_nullables: false,
+                omit: Some(k),
+                rank: 1,
+                empty: None,
+            };
+            calls.push((
+                format!("{}, {n} omitted", p.name),
+                probed_call(&p, way, &mut vars),
+            ));
+            if !s.lengths.is_empty() {
+                way.kind = "";
+                calls.push((
+                    format!("{}, {n} omitted, default lengths", p.name),
+                    probed_call(&p, way, &mut vars),
+                ));
+            }
+            if s.arrays.contains(&k) {
+                way.omit = None;
+                way.empty = Some(k);
+                calls.push((
+                    format!("{}, {n} empty", p.name),
+                    probed_call(&p, way, &mut vars),
+                ));
+            }
+        }
+    }
+    let program = probe_program("nullable_call", &vars, &calls);
+    let checked = run_probe_program("nullable_call", &program);
+    assert!(checked > 100, "only {checked} checks");
+}
+
+#[test]
+fn every_c_name_is_a_bind_c_procedure_of_tfem_c_and_the_generics_keep_theirs() {
+    // c_funloc and procedure pointers (as procedure actual arguments) need
+    // the bind(C) interface under the name: every function has it in
+    // tfem_c; in tfem every function but those with a nullable pointer
+    // (FORTRAN_NOTES) keeps it under its C name.
+    let protos = prototypes(&header());
+    let mut from_c = String::new();
+    let mut from_tfem = String::new();
+    let mut kept = 0;
+    for (k, p) in protos.iter().enumerate() {
+        let both = shape(p).offer() != Offer::Procedures;
+        for (text, module, on) in [
+            (&mut from_c, "tfem_c", true),
+            (&mut from_tfem, "tfem", both),
+        ] {
+            if on {
+                writeln!(
+                    text,
+                    "  subroutine {module}_{k}()\n    use {module}, only: {0}\n\
+                     \x20   procedure({0}), pointer :: f\n    type(c_funptr) :: address\n\
+                     \x20   f => {0}\n    address = c_funloc({0})\n\
+                     \x20   if (.not. (associated(f) .and. c_associated(address))) stop 1\n\
+                     \x20 end subroutine {module}_{k}",
+                    p.name
+                )
+                .unwrap();
+            }
+        }
+        kept += usize::from(both);
+    }
+    assert!(
+        kept > 60 && kept < protos.len(),
+        "{kept} of {}",
+        protos.len()
+    );
+    let program = format!(
+        "! Generated by tests/fortran.rs: the bind(C) procedures under the C names.\n\
+         module c_names\n  use, intrinsic :: iso_c_binding\n  implicit none\ncontains\n\
+         {from_c}{from_tfem}end module c_names\n\
+         program c_names_program\n  use c_names\nend program c_names_program\n"
+    );
+    let source = generated_source("c_names", "c_names.f90", &program);
+    build_fortran(&[&source], "c_names");
+}
+
+#[test]
+fn the_module_compiles_without_warnings_as_fortran_2008_and_2018() {
+    // Alone, at -O0 and -O2: Fortran 2008 for legacy clients built with
+    // -std=f2008, Fortran 2018 for clients in gfortran's default mode.
+    let dir = lib_dir().join("fortran").join("module_alone");
+    std::fs::create_dir_all(&dir).unwrap();
+    for std in ["-std=f2008", "-std=f2018"] {
+        for opt in ["-O0", "-O2"] {
+            let out = Command::new("gfortran")
+                .args([std, opt, "-Wall", "-Werror", "-c", "-J"])
+                .arg(&dir)
+                .arg(root().join("include/tfem.f90"))
+                .arg("-o")
+                .arg(dir.join("tfem.o"))
+                .output()
+                .expect("gfortran is installed");
+            assert!(
+                out.status.success(),
+                "gfortran {std} {opt} failed:\n{}",
+                String::from_utf8_lossy(&out.stderr)
+            );
+        }
+    }
 }
 
 /// The header's rule that every scalar output declared intent(inout)
@@ -1619,6 +2347,7 @@ fn outputs_kept_on_error_are_intent_inout() {
         "the header no longer states the rule: {KEPT_RULE}"
     );
     assert!(!module.contains("intent(out)"), "an intent(out) output");
+    let module = module_text(&module, "tfem_c");
     let mut kept = Vec::new();
     for p in prototypes(&header()) {
         let at = module
@@ -1730,6 +2459,20 @@ fn fortran_generic_test_passes_every_check() {
     let exe = build_fortran(
         &[&root().join("c_tests/fortran_generic_test.f90")],
         "fortran_generic_test",
+    );
+    let out = run(&exe, &[]);
+    assert!(out.contains(" 0 failed"), "{out}");
+}
+
+/// A client written against the bind(C) interfaces as they were before
+/// the generic interfaces (every argument, integer(c_size_t) lengths,
+/// rank-2 arrays where the C API takes flat buffers), built with
+/// -std=f2008: the contact patch test against its closed form.
+#[test]
+fn fortran_legacy_client_with_rank_2_arrays_passes_every_check() {
+    let exe = build_fortran(
+        &[&root().join("c_tests/fortran_legacy_f2008_test.f90")],
+        "fortran_legacy_f2008_test",
     );
     let out = run(&exe, &[]);
     assert!(out.contains(" 0 failed"), "{out}");
