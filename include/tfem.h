@@ -561,9 +561,16 @@ enum tfem_status tfem_set_mesh(struct tfem_model *model,
  * node i is the i-th node of the file's `$Nodes` section, whatever its
  * Gmsh tag (`tfem_get_mesh_nodes`, `tfem_get_mesh_triangles` and
  * `tfem_get_boundary_edges` read the mesh back).
- * Returns TFEM_STATUS_IO for an unreadable file, TFEM_STATUS_INVALID_MESH
- * for unsupported content, TFEM_STATUS_INVALID_ARGUMENT if the library was
- * built without the `gmsh` feature.
+ * Returns TFEM_STATUS_IO for an unreadable or malformed file,
+ * TFEM_STATUS_INVALID_MESH for unsupported content: another version of
+ * the format (MSH 2.2, 4.0, …; the message says how to convert the file:
+ * `gmsh old.msh -save -format msh41 -o new.msh`; TFEM_STATUS_IO in
+ * earlier versions), an element type other
+ * than those above, a node off the plane, a triangle with a repeated
+ * node (an error about an element or a node names its entity and
+ * physical group: tag, and name from `$PhysicalNames`);
+ * TFEM_STATUS_INVALID_ARGUMENT if the library was built without the
+ * `gmsh` feature. On error the model is unchanged.
  */
 enum tfem_status tfem_load_gmsh(struct tfem_model *model, const char *path, int index_base);
 
