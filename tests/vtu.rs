@@ -383,16 +383,19 @@ fn a_mortar_solve_writes_the_nodal_contact_arrays_and_no_cells_of_b() {
 }
 
 #[test]
-fn a_load_step_writes_the_nodal_contact_arrays() {
-    let mut s = TwoBlocks {
-        mesh_size: 1.0 / 16.0,
-        ..Default::default()
+fn a_load_step_writes_the_nodal_contact_arrays_under_either_weighting() {
+    for weighting in [ContactWeighting::Strip, ContactWeighting::Mortar] {
+        let mut s = TwoBlocks {
+            mesh_size: 1.0 / 16.0,
+            ..Default::default()
+        }
+        .build()
+        .unwrap();
+        s.model.set_contact_weighting(weighting);
+        s.model.step(0.5, &ContactOptions::default()).unwrap();
+        let vtu = read_vtu(&written(&s.model, "step.vtu"));
+        check_nodal_contact(&vtu, &s.model);
     }
-    .build()
-    .unwrap();
-    s.model.step(0.5, &ContactOptions::default()).unwrap();
-    let vtu = read_vtu(&written(&s.model, "step.vtu"));
-    check_nodal_contact(&vtu, &s.model);
 }
 
 /// The unit square as two triangles, fixed at the bottom, pulled up at the
