@@ -606,13 +606,69 @@ static void gmsh_messages_name_the_files_node_and_element_tags(void) {
   tfem_model *m = tfem_create();
   EXPECT_ERROR(m, tfem_load_gmsh(m, gmsh_file("renumbered.msh", text), 0),
                TFEM_STATUS_INVALID_MESH,
-               "Gmsh line element 32 (Gmsh nodes 1002, 1004) is not a side of any triangle");
+               "Gmsh line element 32 of curve 1 in physical group 11 (Gmsh nodes 1002, 1004) is not "
+               "a side of any triangle");
   /* A good line 32: Gmsh node 1007 (index 4) is the unused one. */
   snprintf(text, sizeof text, "%s32 1002 1003\n$EndElements\n", head);
   CHECK(tfem_load_gmsh(m, gmsh_file("renumbered.msh", text), 0) == TFEM_STATUS_OK);
   CHECK(has_warning(m, "not used by any triangle get no unknowns: 4 (Gmsh node 1007)"));
   tfem_destroy(m);
   unlink(gmsh_path("renumbered.msh"));
+}
+
+/* An MSH 2.2 file gave TFEM_STATUS_IO ("version \"2.2\" is not
+ * supported") although the header promises TFEM_STATUS_INVALID_MESH for
+ * unsupported content: it is unsupported content now, the message says
+ * how to convert the file, and the mesh loaded before stays. */
+static void an_msh_2_2_file_is_unsupported_content_saying_how_to_convert_it(void) {
+  static const char MSH22[] = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+                              "$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n$EndNodes\n"
+                              "$Elements\n1\n1 2 2 7 1 1 2 3\n$EndElements\n";
+  tfem_model *m = tfem_create();
+  CHECK(tfem_load_gmsh(m, gmsh_file("square.msh", SQUARE_MSH), 0) == TFEM_STATUS_OK);
+  const char *path = gmsh_file("msh22.msh", MSH22);
+  EXPECT_ERROR(m, tfem_load_gmsh(m, path, 0), TFEM_STATUS_INVALID_MESH, "MSH 2.2 is not supported");
+  EXPECT_ERROR(m, tfem_load_gmsh(m, path, 0), TFEM_STATUS_INVALID_MESH,
+               "gmsh old.msh -save -format msh41 -o new.msh");
+  EXPECT_ERROR(m, tfem_load_gmsh(m, path, 0), TFEM_STATUS_INVALID_MESH, "Mesh.MshFileVersion = 4.1");
+  int nn = 0, nt = 0, nc = 0;
+  CHECK(tfem_get_sizes(m, &nn, &nt, &nc) == TFEM_STATUS_OK && nn == 4 && nt == 2);
+  tfem_destroy(m);
+  unlink(path);
+  unlink(gmsh_path("square.msh"));
+}
+
+/* An error about an element named the Gmsh entity alone ("surface 1 has
+ * elements of Gmsh type 3"), or not even that ("node 3 has z = 0.5"),
+ * where the user knows the part by its physical group: the entity's
+ * group is named now, by tag and by its name in $PhysicalNames. One
+ * element of Gmsh type `type` with `nodes` on surface 1 (group 7,
+ * "plate"), its third node at height `z3`. */
+static tfem_status load_one_gmsh_element(tfem_model *m, int type, const char *nodes, double z3) {
+  char text[1024];
+  snprintf(text, sizeof text,
+           "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+           "$PhysicalNames\n1\n2 7 \"plate\"\n$EndPhysicalNames\n"
+           "$Entities\n0 0 1 0\n1 0 0 0 1 1 0 1 7 0\n$EndEntities\n"
+           "$Nodes\n1 4 1 4\n2 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n1 1 %g\n0 1 0\n$EndNodes\n"
+           "$Elements\n1 1 1 1\n2 1 %d 1\n1 %s\n$EndElements\n",
+           z3, type, nodes);
+  tfem_status st = tfem_load_gmsh(m, gmsh_file("one_element.msh", text), 0);
+  unlink(gmsh_path("one_element.msh"));
+  return st;
+}
+
+static void a_gmsh_element_error_names_its_physical_group(void) {
+  tfem_model *m = tfem_create();
+  EXPECT_ERROR(m, load_one_gmsh_element(m, 3, "1 2 3 4", 0.0), TFEM_STATUS_INVALID_MESH,
+               "surface 1 in physical group 7 \"plate\" has elements of Gmsh type 3 (4-node quadrangles)");
+  EXPECT_ERROR(m, load_one_gmsh_element(m, 2, "1 2 2", 0.0), TFEM_STATUS_INVALID_MESH,
+               "triangle 0 (Gmsh element 1 of surface 1 in physical group 7 \"plate\"): node 1 (Gmsh node "
+               "2) is repeated");
+  EXPECT_ERROR(m, load_one_gmsh_element(m, 2, "1 2 3", 0.5), TFEM_STATUS_INVALID_MESH,
+               "node 3 of surface 1 in physical group 7 \"plate\" has z = 0.5");
+  CHECK(load_one_gmsh_element(m, 2, "1 2 3", 0.0) == TFEM_STATUS_OK);
+  tfem_destroy(m);
 }
 
 /* Found by an outside probe: only the first physical group of each
@@ -2727,6 +2783,8 @@ int main(int argc, char **argv) {
   an_empty_gmsh_path_is_named_as_such();
   a_corrupt_gmsh_file_gets_a_short_printable_message();
   gmsh_messages_name_the_files_node_and_element_tags();
+  an_msh_2_2_file_is_unsupported_content_saying_how_to_convert_it();
+  a_gmsh_element_error_names_its_physical_group();
   a_pressure_on_a_gmsh_curves_second_group_acts();
   a_pressure_on_a_gmsh_curves_first_group_still_acts();
   fixing_a_gmsh_group_of_every_curve_fixes_the_whole_boundary();

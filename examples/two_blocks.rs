@@ -1,12 +1,15 @@
 //! The seed scene (docs/method.md §4): two elastic blocks in frictionless contact,
 //! pressed over 2C on top and supported over 2C below. Prints the contact
 //! length ℓc, the opening at the corner, the top displacement and the
-//! compliance, compares them with the independent reference when the
-//! parameters are canonical, and writes the deformed state (VTU) and a
-//! picture of the exaggerated deformed shape coloured by v (SVG).
+//! compliance, and compares them with the independent reference when the
+//! parameters are canonical. Files only when asked: `--vtu` writes the
+//! solved state for ParaView (`<out>/two_blocks.vtu`), `--picture` a PNG of
+//! the exaggerated deformed shape coloured by v (`<out>/two_blocks.png`,
+//! 1200×800 pixels whatever the mesh).
 //!
 //!   cargo run --release --example two_blocks                 # h = 1/64, 2C/L = 0.2
 //!   cargo run --release --example two_blocks -- --c 0.3 --mesh-size 0.005 --json
+//!   cargo run --release --example two_blocks -- --vtu --picture --out results
 //!   cargo run --release --example two_blocks -- --sweep      # ℓc against h (seed Fig. 6)
 
 use std::path::{Path, PathBuf};
@@ -101,10 +104,20 @@ struct Args {
     /// Print one JSON object instead of the table.
     #[arg(long)]
     json: bool,
-    /// Sweep h for 2C/L = 0.2, 0.4, 0.6 and plot ℓc against h.
+    /// Sweep h for 2C/L = 0.2, 0.4, 0.6 and plot ℓc against h
+    /// (`<out>/sweep_lc.svg`).
     #[arg(long)]
     sweep: bool,
-    /// Where pictures and VTU files go.
+    /// Write the solved state as a VTK XML grid for ParaView or meshio
+    /// (`<out>/two_blocks.vtu`: displacement, nodal contact pressure, force
+    /// and gap, element strain and stress).
+    #[arg(long)]
+    vtu: bool,
+    /// Draw the exaggerated deformed shape coloured by v
+    /// (`<out>/two_blocks.png`, 1200×800 pixels whatever the mesh).
+    #[arg(long)]
+    picture: bool,
+    /// Where `--vtu`, `--picture` and `--sweep` write their files.
     #[arg(long, default_value = "out")]
     out: PathBuf,
     /// Reference values of the canonical scene (compared when found;
@@ -233,9 +246,12 @@ fn outputs(r: &TwoBlocksResult) -> [(&'static str, f64); 4] {
 
 fn main() {
     let args = Args::parse();
-    if let Err(e) = std::fs::create_dir_all(&args.out) {
-        eprintln!("cannot create {}: {e}", args.out.display());
-        std::process::exit(2);
+    let writes = args.sweep || args.vtu || args.picture;
+    if writes {
+        if let Err(e) = std::fs::create_dir_all(&args.out) {
+            eprintln!("cannot create {}: {e}", args.out.display());
+            std::process::exit(2);
+        }
     }
     let code = if args.sweep {
         sweep(&args)
@@ -255,11 +271,7 @@ fn single(args: &Args) -> i32 {
     };
     let info = r.result.report.info;
     let reference = reference_case(args, args.c);
-    let vtu = args.out.join("two_blocks.vtu");
-    let svg = args.out.join("two_blocks.svg");
-    let files = tfem::io::vtu::write_vtu(&r.scene.model, &vtu)
-        .map_err(|e| e.to_string())
-        .and_then(|_| draw_deformed(&r.scene, &svg).map_err(|e| e.to_string()));
+    let files = write_files(args, &r.scene);
     if args.json {
         let mut obj = json!({
             "lc": r.result.lc,
@@ -293,6 +305,12 @@ fn single(args: &Args) -> i32 {
             }
         }
         println!("{obj}");
+        // stdout holds the JSON object alone.
+        match &files {
+            Ok(written) if !written.is_empty() => eprintln!("wrote {}", written.join(", ")),
+            Ok(_) => {}
+            Err(e) => eprintln!("two_blocks: {e}"),
+        }
     } else {
         println!(
             "tfem {} — seed scene, 2C/L = {:.3}, h = {:.5} m, {} unknowns, {} contact elements",
@@ -354,8 +372,13 @@ fn single(args: &Args) -> i32 {
             info.timings.interface
         );
         match &files {
-            Ok(()) => println!("wrote {} and {}", vtu.display(), svg.display()),
-            Err(e) => eprintln!("could not write the pictures: {e}"),
+            Ok(written) if !written.is_empty() => println!("wrote {}", written.join(", ")),
+            Ok(_) => println!(
+                "(no files written: --vtu and --picture write {} and {})",
+                args.out.join("two_blocks.vtu").display(),
+                args.out.join("two_blocks.png").display()
+            ),
+            Err(e) => eprintln!("two_blocks: {e}"),
         }
         if reference.is_none() {
             println!(
@@ -367,9 +390,41 @@ fn single(args: &Args) -> i32 {
     i32::from(files.is_err())
 }
 
-/// Colour of v on a blue–white–red scale.
-fn colour(t: f64) -> RGBColor {
-    let t = t.clamp(0.0, 1.0);
+/// Writes the files asked for, saying for each where it went, its size
+/// and how long it took.
+fn write_files(args: &Args, scene: &TwoBlocksScene) -> Result<Vec<String>, String> {
+    let mut written = Vec::new();
+    let said = |path: &Path, t0: Instant| {
+        let bytes = std::fs::metadata(path).map_or(0, |m| m.len()) as f64;
+        let size = if bytes < 1e6 {
+            format!("{:.0} kB", bytes / 1e3)
+        } else {
+            format!("{:.1} MB", bytes / 1e6)
+        };
+        format!(
+            "{} ({size}, {:.2} s)",
+            path.display(),
+            t0.elapsed().as_secs_f64()
+        )
+    };
+    if args.vtu {
+        let path = args.out.join("two_blocks.vtu");
+        let t0 = Instant::now();
+        tfem::io::vtu::write_vtu(&scene.model, &path).map_err(|e| e.to_string())?;
+        written.push(said(&path, t0));
+    }
+    if args.picture {
+        let path = args.out.join("two_blocks.png");
+        let t0 = Instant::now();
+        draw_deformed(scene, &path).map_err(|e| format!("cannot draw {}: {e}", path.display()))?;
+        written.push(said(&path, t0));
+    }
+    Ok(written)
+}
+
+/// Colour of t ∈ [0, 1] on a blue–white–red scale.
+fn colour(t: f64) -> [u8; 3] {
+    let t = if t.is_nan() { 0.5 } else { t.clamp(0.0, 1.0) };
     let (r, g, b) = if t < 0.5 {
         let s = t / 0.5;
         (s, s, 1.0)
@@ -377,10 +432,15 @@ fn colour(t: f64) -> RGBColor {
         let s = (1.0 - t) / 0.5;
         (1.0, s, s)
     };
-    RGBColor((255.0 * r) as u8, (255.0 * g) as u8, (255.0 * b) as u8)
+    [r, g, b].map(|c| (255.0 * c).round() as u8)
 }
 
+/// The exaggerated deformed shape coloured by v, as a PNG of
+/// [`picture::WIDTH`] × [`picture::HEIGHT`] pixels: each pixel samples v,
+/// linear on the triangle its centre falls in, so the file's size does
+/// not grow with the mesh.
 fn draw_deformed(scene: &TwoBlocksScene, path: &Path) -> Result<(), Box<dyn std::error::Error>> {
+    use picture::{HEIGHT, Image, WIDTH};
     let mesh = scene.model.mesh().ok_or("no mesh")?;
     let u = scene.model.displacements()?;
     let umax = u.iter().map(|d| d[0].hypot(d[1])).fold(0.0, f64::max);
@@ -391,46 +451,170 @@ fn draw_deformed(scene: &TwoBlocksScene, path: &Path) -> Result<(), Box<dyn std:
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), d| {
             (a.min(d[1]), b.max(d[1]))
         });
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
     let x: Vec<[f64; 2]> = mesh
         .nodes()
         .iter()
         .zip(&u)
-        .map(|(p, d)| {
-            let q = [p[0] + scale * d[0], p[1] + scale * d[1]];
-            for k in 0..2 {
-                lo[k] = lo[k].min(q[k]);
-                hi[k] = hi[k].max(q[k]);
-            }
-            q
-        })
+        .map(|(p, d)| [p[0] + scale * d[0], p[1] + scale * d[1]])
         .collect();
-    let pad = 0.03 * size;
-    let width = 1000u32;
-    let height =
-        ((hi[1] - lo[1] + 2.0 * pad) / (hi[0] - lo[0] + 2.0 * pad) * width as f64) as u32 + 60;
-    let root = SVGBackend::new(path, (width, height)).into_drawing_area();
-    root.fill(&WHITE)?;
-    let title =
-        format!("deformed shape ×{scale:.0}, coloured by v (blue {vmin:.3e} m … red {vmax:.3e} m)");
-    let mut chart = ChartBuilder::on(&root)
-        .caption(title, ("sans-serif", 18))
-        .margin(10)
-        .build_cartesian_2d(lo[0] - pad..hi[0] + pad, lo[1] - pad..hi[1] + pad)?;
-    chart.draw_series(mesh.triangles().iter().map(|t| {
-        let v = (u[t[0]][1] + u[t[1]][1] + u[t[2]][1]) / 3.0;
-        let c = colour((v - vmin) / (vmax - vmin).max(f64::MIN_POSITIVE));
-        Polygon::new(
-            vec![
-                (x[t[0]][0], x[t[0]][1]),
-                (x[t[1]][0], x[t[1]][1]),
-                (x[t[2]][0], x[t[2]][1]),
-            ],
-            c.filled(),
-        )
-    }))?;
-    root.present()?;
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for q in &x {
+        for k in 0..2 {
+            lo[k] = lo[k].min(q[k]);
+            hi[k] = hi[k].max(q[k]);
+        }
+    }
+    // The drawing area: below the title, left of the colour bar.
+    let (left, top, right, bottom) = (20.0, 50.0, WIDTH as f64 - 230.0, HEIGHT as f64 - 20.0);
+    let s = ((right - left) / (hi[0] - lo[0])).min((bottom - top) / (hi[1] - lo[1]));
+    let (x0, y0) = (
+        left + 0.5 * (right - left - s * (hi[0] - lo[0])),
+        top + 0.5 * (bottom - top + s * (hi[1] - lo[1])),
+    );
+    let to_pixels = |q: [f64; 2]| [x0 + s * (q[0] - lo[0]), y0 - s * (q[1] - lo[1])];
+    let range = (vmax - vmin).max(f64::MIN_POSITIVE);
+    let mut image = Image::new();
+    for t in mesh.triangles() {
+        image.fill_triangle(
+            t.map(|v| to_pixels(x[v])),
+            t.map(|v| (u[v][1] - vmin) / range),
+            colour,
+        );
+    }
+    image.text(
+        20,
+        16,
+        &format!("two blocks: deformed shape x{scale:.0}, coloured by v [m]"),
+    );
+    // The colour bar, vmax at the top.
+    let (bar_x, bar_top, bar_height) = (WIDTH - 210, 80, HEIGHT - 160);
+    for k in 0..bar_height {
+        let c = colour(1.0 - k as f64 / (bar_height - 1) as f64);
+        image.rect(bar_x, bar_top + k, 24, 1, c);
+    }
+    for (k, v) in [
+        (0, vmax),
+        (bar_height / 2, 0.5 * (vmin + vmax)),
+        (bar_height - 1, vmin),
+    ] {
+        image.rect(bar_x + 24, bar_top + k, 6, 1, [0; 3]);
+        image.text(bar_x + 34, bar_top + k - 8, &format!("{v:.3e}"));
+    }
+    image.save_png(path)?;
     Ok(())
+}
+
+/// A small RGB raster with the few drawing operations the picture needs.
+mod picture {
+    use std::io::BufWriter;
+    use std::path::Path;
+
+    /// The picture's size in pixels: a screen's, whatever the mesh.
+    pub const WIDTH: usize = 1200;
+    /// See [`WIDTH`].
+    pub const HEIGHT: usize = 800;
+    /// Glyphs of 8×8 bits drawn at twice their size.
+    const GLYPH_SCALE: usize = 2;
+
+    pub struct Image {
+        rgb: Vec<u8>,
+    }
+
+    impl Image {
+        /// A white picture.
+        pub fn new() -> Image {
+            Image {
+                rgb: vec![255; 3 * WIDTH * HEIGHT],
+            }
+        }
+
+        fn set(&mut self, x: usize, y: usize, c: [u8; 3]) {
+            if x < WIDTH && y < HEIGHT {
+                let k = 3 * (y * WIDTH + x);
+                self.rgb[k..k + 3].copy_from_slice(&c);
+            }
+        }
+
+        pub fn rect(&mut self, x: usize, y: usize, w: usize, h: usize, c: [u8; 3]) {
+            for j in y..y + h {
+                for i in x..x + w {
+                    self.set(i, j, c);
+                }
+            }
+        }
+
+        /// Black ASCII text, its top left corner at (x, y).
+        pub fn text(&mut self, x: usize, y: usize, text: &str) {
+            for (n, ch) in text.chars().enumerate() {
+                let glyph = font8x8::legacy::BASIC_LEGACY
+                    .get(ch as usize)
+                    .copied()
+                    .unwrap_or([0; 8]);
+                for (row, bits) in glyph.iter().enumerate() {
+                    for col in 0..8 {
+                        if bits & (1 << col) != 0 {
+                            let px = x + GLYPH_SCALE * (8 * n + col);
+                            self.rect(px, y + GLYPH_SCALE * row, GLYPH_SCALE, GLYPH_SCALE, [0; 3]);
+                        }
+                    }
+                }
+            }
+        }
+
+        /// Colours the pixels whose centre lies in the triangle `p`
+        /// (pixel coordinates) by `colour` of the value interpolated
+        /// linearly from its corners' `t`. A pixel on an edge shared by
+        /// two triangles is taken by either: no gap opens between them.
+        pub fn fill_triangle(
+            &mut self,
+            p: [[f64; 2]; 3],
+            t: [f64; 3],
+            colour: impl Fn(f64) -> [u8; 3],
+        ) {
+            let area = (p[1][0] - p[0][0]) * (p[2][1] - p[0][1])
+                - (p[2][0] - p[0][0]) * (p[1][1] - p[0][1]);
+            if area == 0.0 || !area.is_finite() {
+                return;
+            }
+            let min = |k: usize| p.iter().map(|q| q[k]).fold(f64::INFINITY, f64::min);
+            let max = |k: usize| p.iter().map(|q| q[k]).fold(f64::NEG_INFINITY, f64::max);
+            // The pixels whose centres (i + ½, j + ½) the bounding box holds.
+            let first = |v: f64| (v - 0.5).ceil().max(0.0) as usize;
+            let last = |v: f64, n: usize| ((v - 0.5).floor().min(n as f64 - 1.0)).max(-1.0);
+            let (i0, j0) = (first(min(0)), first(min(1)));
+            let (i1, j1) = (last(max(0), WIDTH), last(max(1), HEIGHT));
+            if i1 < 0.0 || j1 < 0.0 {
+                return;
+            }
+            // Barycentric coordinate of corner k at q: the signed area of
+            // q with the other two corners over the triangle's.
+            let weight = |k: usize, q: [f64; 2]| {
+                let (a, b) = (p[(k + 1) % 3], p[(k + 2) % 3]);
+                ((b[0] - a[0]) * (q[1] - a[1]) - (q[0] - a[0]) * (b[1] - a[1])) / area
+            };
+            const ON_EDGE: f64 = -1e-12;
+            for j in j0..=j1 as usize {
+                for i in i0..=i1 as usize {
+                    let q = [i as f64 + 0.5, j as f64 + 0.5];
+                    let w = [weight(0, q), weight(1, q), weight(2, q)];
+                    if w.iter().all(|&w| w >= ON_EDGE) {
+                        self.set(i, j, colour(w[0] * t[0] + w[1] * t[1] + w[2] * t[2]));
+                    }
+                }
+            }
+        }
+
+        pub fn save_png(&self, path: &Path) -> Result<(), Box<dyn std::error::Error>> {
+            let file = BufWriter::new(std::fs::File::create(path)?);
+            let mut encoder = png::Encoder::new(file, WIDTH as u32, HEIGHT as u32);
+            encoder.set_color(png::ColorType::Rgb);
+            encoder.set_depth(png::BitDepth::Eight);
+            let mut writer = encoder.write_header()?;
+            writer.write_image_data(&self.rgb)?;
+            writer.finish()?;
+            Ok(())
+        }
+    }
 }
 
 fn sweep(args: &Args) -> i32 {

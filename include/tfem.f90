@@ -471,8 +471,13 @@ module tfem_c
     !! `tfem_set_mesh` with the given `index_base` for later calls: node i is the i-th node of the
     !! file's `$Nodes` section, whatever its Gmsh tag (`tfem_get_mesh_nodes`,
     !! `tfem_get_mesh_triangles` and `tfem_get_boundary_edges` read the mesh back). Returns
-    !! TFEM_STATUS_IO for an unreadable file, TFEM_STATUS_INVALID_MESH for unsupported content,
-    !! TFEM_STATUS_INVALID_ARGUMENT if the library was built without the `gmsh` feature.
+    !! TFEM_STATUS_IO for an unreadable or malformed file, TFEM_STATUS_INVALID_MESH for unsupported
+    !! content: another version of the format (MSH 2.2, 4.0, …; the message says how to convert the
+    !! file: `gmsh old.msh -save -format msh41 -o new.msh`; TFEM_STATUS_IO in earlier versions), an
+    !! element type other than those above, a node off the plane, a triangle with a repeated node
+    !! (an error about an element or a node names its entity and physical group: tag, and name from
+    !! `$PhysicalNames`); TFEM_STATUS_INVALID_ARGUMENT if the library was built without the `gmsh`
+    !! feature. On error the model is unchanged.
     function tfem_load_gmsh(model, path, index_base) &
         bind(C, name="tfem_load_gmsh") result(status)
       import
@@ -483,14 +488,24 @@ module tfem_c
     end function tfem_load_gmsh
 
     !> Writes the solved model to the file `path` (NUL-terminated; on Unix any bytes, as for
-    !! `tfem_load_gmsh`) as a VTK XML unstructured grid (`.vtu`, for ParaView): the mesh in its
-    !! initial configuration, point data `displacement` (3 components, z = 0), cell data `body`,
-    !! `J`, `strain` and `stress` (Voigt), and after a contact solve the elements of the contact
-    !! mesh B (appended after the body triangles, body −1) with `contact_active` and
-    !! `contact_pressure`. Added 2026-11-24. Returns TFEM_STATUS_INVALID_STATE before a solve,
-    !! TFEM_STATUS_IO when the file cannot be written (the message names it and the reason),
-    !! TFEM_STATUS_INVALID_ARGUMENT if the library was built without the `vtu` feature. The model is
-    !! never changed.
+    !! `tfem_load_gmsh`) as a VTK XML unstructured grid (`.vtu`, read by ParaView, VTK and meshio;
+    !! binary: raw appended data, little-endian, UInt64 block headers, no compression): the mesh in
+    !! its initial configuration (z = 0) with - point data `displacement` ([u, v, 0]) and, after a
+    !! contact solve or load step under either weighting, `contact_pressure` (the nodal pressure of
+    !! `tfem_get_contact_nodal_pressures`), `contact_force` ([f_x, f_y, 0],
+    !! `tfem_get_contact_forces`) and `contact_gap` (`tfem_get_contact_gaps`); none of the three
+    !! after a solve without contact; - cell data `body` (the body tag), `J` (twice the signed
+    !! area), `strain` [ε_xx, ε_yy, γ_xy] and `stress` [σ_xx, σ_yy, σ_xy]; - under the strip
+    !! weighting only, the elements of the contact mesh B appended after the body triangles as cells
+    !! of body −1 (zero strain and stress), with cell data `contact_element_active` (UInt8, 1 where
+    !! active) and `contact_element_pressure` (`tfem_get_contact_active`,
+    !! `tfem_get_contact_pressure`; 0 on the body triangles). The mortar weighting has no B: no such
+    !! cells or arrays, its contact is in the nodal arrays. (Earlier versions named the last two
+    !! `contact_active` and `contact_pressure`, wrote them as zeros under the mortar weighting, and
+    !! wrote no nodal contact array.) Added 2026-11-24. Returns TFEM_STATUS_INVALID_STATE before a
+    !! solve (nothing is written), TFEM_STATUS_IO when the file cannot be written (the message names
+    !! it and the reason), TFEM_STATUS_INVALID_ARGUMENT if the library was built without the `vtu`
+    !! feature. The model is never changed.
     function tfem_write_vtu(model, path) &
         bind(C, name="tfem_write_vtu") result(status)
       import

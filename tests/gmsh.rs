@@ -208,7 +208,8 @@ fn quadrangles_and_non_planar_nodes_are_rejected() {
     );
     let e = read_msh(&write("tilted.msh", &tilted), 0).unwrap_err();
     assert!(
-        e.message().contains("node 3 has z = 0.5"),
+        e.message()
+            .contains("node 3 of surface 1 in physical group 7 has z = 0.5"),
         "{}",
         e.message()
     );
@@ -792,7 +793,7 @@ fn malformed_mesh_format_headers_are_io_errors_naming_mesh_format() {
     for (k, header) in [
         "$MeshFormat\n4.1 0 99999999999999999999999\n$EndMeshFormat\n",
         "$MeshFormat\n4.1 1 3\n\x01\x00\x00\x00\n$EndMeshFormat\n",
-        "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n",
+        "$MeshFormat\nx.y 0 8\n$EndMeshFormat\n",
         "$MeshFormat\n4.1 2 8\n$EndMeshFormat\n",
         "$MeshFormat\n4.1 1 8\n\x02\x00\x00\x00\n$EndMeshFormat\n",
         "$MeshFormat\n4.1 1 8",
@@ -1088,7 +1089,7 @@ fn a_line_that_is_no_side_names_its_gmsh_element_and_nodes() {
     assert_eq!(e.status(), Status::InvalidMesh);
     assert!(
         e.message()
-            .contains("Gmsh line element 32 (Gmsh nodes 1002, 1004) is not a side of any triangle"),
+            .contains("Gmsh line element 32 of curve 1 in physical group 11 (Gmsh nodes 1002, 1004) is not a side of any triangle"),
         "{}",
         e.message()
     );
@@ -1100,8 +1101,9 @@ fn a_non_finite_coordinate_names_the_gmsh_node() {
     let e = read_msh(&write("renumbered_inf.msh", &text), 1).unwrap_err();
     assert_eq!(e.status(), Status::InvalidMesh);
     assert!(
-        e.message()
-            .contains("node 3 (Gmsh node 1003): coordinates (inf, 1.0)"),
+        e.message().contains(
+            "node 3 (Gmsh node 1003 of surface 1 in physical group 7): coordinates (inf, 1.0)"
+        ),
         "{}",
         e.message()
     );
@@ -1121,12 +1123,13 @@ fn an_unused_node_is_named_by_its_gmsh_tag_in_the_warning() {
 }
 
 #[test]
-fn an_element_naming_an_undefined_node_is_named_by_its_tag() {
+fn an_element_naming_an_undefined_node_is_named_by_its_tag_and_physical_group() {
     let text = renumbered_square("1 1 0", &[], &[[1002, 1009]]);
     let e = read_msh(&write("renumbered_undefined.msh", &text), 0).unwrap_err();
     assert_eq!(e.status(), Status::InvalidMesh);
     assert!(
-        e.message().contains("element 32 refers to node 1009"),
+        e.message()
+            .contains("element 32 of curve 1 in physical group 11 refers to node 1009"),
         "{}",
         e.message()
     );
@@ -1286,4 +1289,309 @@ fn a_physical_point_group_is_named_in_a_warning() {
         "{:?}",
         mesh.warnings()
     );
+}
+
+// ---------------------------------------------------------------------------
+// Versions of the format other than 4.1: well-formed content tfem cannot
+// use (TFEM_STATUS_INVALID_MESH, as the header promises for unsupported
+// content), with the way to convert the file.
+// ---------------------------------------------------------------------------
+
+/// A triangle in MSH 2.2, as Gmsh writes it (physical group 7).
+const MSH22: &str = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n3\n1 0 0 0\n2 1 0 0\n3 0 1 0\n\
+                     $EndNodes\n$Elements\n1\n1 2 2 7 1 1 2 3\n$EndElements\n";
+
+fn assert_unsupported_version(e: &tfem::Error, version: &str) {
+    assert_eq!(e.status(), Status::InvalidMesh, "{}", e.message());
+    for needle in [
+        "$MeshFormat".to_string(),
+        format!("MSH {version} is not supported"),
+        "gmsh old.msh -save -format msh41 -o new.msh".to_string(),
+        "Mesh.MshFileVersion = 4.1".to_string(),
+    ] {
+        assert!(e.message().contains(&needle), "{needle}: {}", e.message());
+    }
+}
+
+#[test]
+fn an_msh_2_2_file_is_unsupported_content_saying_how_to_convert_it() {
+    let e = read_msh(&write("msh22.msh", MSH22), 0).unwrap_err();
+    assert_unsupported_version(&e, "2.2");
+}
+
+#[test]
+fn a_binary_msh_2_2_file_is_unsupported_content_too() {
+    let mut bytes = b"$MeshFormat\n2.2 1 8\n".to_vec();
+    bytes.extend_from_slice(&1i32.to_le_bytes());
+    bytes.extend_from_slice(b"\n$EndMeshFormat\n");
+    let e = read_msh(&write_bytes("msh22_bin.msh", &bytes), 0).unwrap_err();
+    assert_unsupported_version(&e, "2.2");
+}
+
+#[test]
+fn every_other_version_of_the_format_is_unsupported_content_naming_it() {
+    for version in ["4.0", "4", "3.0", "2.1", "1.0", "5.0"] {
+        let text = format!("$MeshFormat\n{version} 0 8\n$EndMeshFormat\n");
+        let e = read_msh(&write("version.msh", &text), 0).unwrap_err();
+        assert_unsupported_version(&e, version);
+    }
+}
+
+#[test]
+fn a_version_that_is_not_a_positive_number_is_a_malformed_header() {
+    for version in ["x.y", "nan", "inf", "-4.1", "0"] {
+        let text = format!("$MeshFormat\n{version} 0 8\n$EndMeshFormat\n");
+        let e = read_msh(&write("bad_version.msh", &text), 0).unwrap_err();
+        assert_eq!(e.status(), Status::Io, "{version}: {}", e.message());
+        assert!(
+            e.message()
+                .contains("$MeshFormat: the format version must be a number such as 4.1"),
+            "{}",
+            e.message()
+        );
+    }
+}
+
+#[test]
+fn the_conversion_the_message_gives_makes_a_file_tfem_reads() {
+    let geo = Path::new(env!("CARGO_MANIFEST_DIR")).join("examples/meshes/two_blocks.geo");
+    let (old, new) = (
+        out_dir().join("seed_22.msh"),
+        out_dir().join("seed_22_to_41.msh"),
+    );
+    let gmsh = |args: &[&std::ffi::OsStr]| {
+        let out = Command::new("gmsh").args(args).output().expect("gmsh");
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    };
+    gmsh(&[
+        "-2".as_ref(),
+        "-format".as_ref(),
+        "msh22".as_ref(),
+        geo.as_os_str(),
+        "-o".as_ref(),
+        old.as_os_str(),
+    ]);
+    assert_unsupported_version(&read_msh(&old, 0).unwrap_err(), "2.2");
+    // As the message says: gmsh old.msh -save -format msh41 -o new.msh
+    gmsh(&[
+        old.as_os_str(),
+        "-save".as_ref(),
+        "-format".as_ref(),
+        "msh41".as_ref(),
+        "-o".as_ref(),
+        new.as_os_str(),
+    ]);
+    let converted = read_msh(&new, 0).unwrap();
+    let direct = read_msh(&mesh_with_gmsh(1.0 / 32.0, false), 0).unwrap();
+    assert_eq!(converted.nodes().len(), direct.nodes().len());
+    assert_eq!(converted.triangles().len(), direct.triangles().len());
+    assert_eq!(converted.body_of(), direct.body_of());
+    let tags = |m: &tfem::Mesh| {
+        let mut t: Vec<i32> = m.boundary_edges().iter().map(|e| e.tag).collect();
+        t.sort_unstable();
+        t
+    };
+    assert_eq!(tags(&converted), tags(&direct));
+}
+
+// ---------------------------------------------------------------------------
+// An error about an element or a node names its entity and physical
+// group, by tag and by the name `$PhysicalNames` gives it.
+// ---------------------------------------------------------------------------
+
+/// Surface group 7 is "plate", curve group 11 "bottom edge".
+const NAMES: &str = "$PhysicalNames\n2\n2 7 \"plate\"\n1 11 \"bottom edge\"\n$EndPhysicalNames\n";
+
+/// One element of Gmsh type `ty` with `nodes` on surface 1 (physical
+/// groups `groups`), over four nodes, the third at height `z3`.
+fn one_element(names: &str, groups: &str, ty: u32, nodes: &str, z3: f64) -> String {
+    format!(
+        "{HEADER}{names}$Entities\n0 0 1 0\n1 0 0 0 1 1 0 {groups} 0\n$EndEntities\n\
+         $Nodes\n1 4 1 4\n2 1 0 4\n1\n2\n3\n4\n0 0 0\n1 0 0\n1 1 {z3}\n0 1 0\n$EndNodes\n\
+         $Elements\n1 1 1 1\n2 1 {ty} 1\n1 {nodes}\n$EndElements\n"
+    )
+}
+
+fn message_of(name: &str, text: &str) -> String {
+    let e = read_msh(&write(name, text), 0).unwrap_err();
+    assert_eq!(e.status(), Status::InvalidMesh, "{}", e.message());
+    e.message().to_string()
+}
+
+#[test]
+fn an_unsupported_element_type_names_its_surface_and_physical_group() {
+    let m = message_of(
+        "named_quads.msh",
+        &one_element(NAMES, "1 7", 3, "1 2 3 4", 0.0),
+    );
+    assert!(
+        m.contains(
+            "$Elements: entity block 1 of 1: surface 1 in physical group 7 \"plate\" has elements \
+             of Gmsh type 3 (4-node quadrangles): only 3-node triangles are supported"
+        ),
+        "{m}"
+    );
+}
+
+#[test]
+fn an_entity_in_several_groups_is_named_with_each() {
+    let m = message_of(
+        "two_groups.msh",
+        &one_element(NAMES, "2 7 8", 3, "1 2 3 4", 0.0),
+    );
+    assert!(
+        m.contains("surface 1 in physical groups 7 \"plate\", 8 has elements"),
+        "{m}"
+    );
+}
+
+#[test]
+fn a_group_without_a_name_is_named_by_its_tag() {
+    let m = message_of(
+        "unnamed_quads.msh",
+        &one_element("", "1 7", 3, "1 2 3 4", 0.0),
+    );
+    assert!(
+        m.contains("surface 1 in physical group 7 has elements"),
+        "{m}"
+    );
+}
+
+#[test]
+fn a_triangle_with_a_repeated_node_names_its_physical_group() {
+    let m = message_of(
+        "named_degenerate.msh",
+        &one_element(NAMES, "1 7", 2, "1 2 2", 0.0),
+    );
+    assert!(
+        m.contains(
+            "triangle 0 (Gmsh element 1 of surface 1 in physical group 7 \"plate\"): node 1 \
+             (Gmsh node 2) is repeated"
+        ),
+        "{m}"
+    );
+}
+
+#[test]
+fn a_node_out_of_the_plane_names_its_surface_and_physical_group() {
+    let m = message_of(
+        "named_tilted.msh",
+        &one_element(NAMES, "1 7", 2, "1 2 3", 0.5),
+    );
+    assert!(
+        m.contains("$Nodes: node 3 of surface 1 in physical group 7 \"plate\" has z = 0.5"),
+        "{m}"
+    );
+}
+
+#[test]
+fn a_line_that_is_no_side_names_its_curve_and_named_group() {
+    let text = renumbered_square("1 1 0", &[], &[[1002, 1004]]).replacen(
+        "$EndMeshFormat\n",
+        &format!("$EndMeshFormat\n{NAMES}"),
+        1,
+    );
+    let m = message_of("named_badline.msh", &text);
+    assert!(
+        m.contains(
+            "Gmsh line element 32 of curve 1 in physical group 11 \"bottom edge\" (Gmsh nodes \
+             1002, 1004) is not a side of any triangle"
+        ),
+        "{m}"
+    );
+}
+
+#[test]
+fn physical_names_are_read_in_a_binary_file_too() {
+    // `$PhysicalNames` is ASCII in a binary file.
+    let mut tilted = good_nodes();
+    let z3 = tilted.len() - 1;
+    tilted[z3] = F(0.5);
+    let bytes = msh(
+        true,
+        &[
+            ("PhysicalNames", vec![Raw("1\n2 7 \"plate\"")]),
+            ("Entities", entities()),
+            ("Nodes", tilted),
+            ("Elements", good_elements()),
+        ],
+    );
+    let e = read_msh(&write_bytes("named_tilted_bin.msh", &bytes), 0).unwrap_err();
+    assert_eq!(e.status(), Status::InvalidMesh, "{}", e.message());
+    assert!(
+        e.message()
+            .contains("node 3 of surface 1 in physical group 7 \"plate\" has z = 0.5"),
+        "{}",
+        e.message()
+    );
+}
+
+#[test]
+fn a_file_with_physical_names_is_read_as_without_them() {
+    let with = read_msh(
+        &write(
+            "named_square.msh",
+            &renumbered_square("1 1 0", &[], &[]).replacen(
+                "$EndMeshFormat\n",
+                &format!("$EndMeshFormat\n{NAMES}"),
+                1,
+            ),
+        ),
+        0,
+    )
+    .unwrap();
+    let without = read_msh(
+        &write("unnamed_square.msh", &renumbered_square("1 1 0", &[], &[])),
+        0,
+    )
+    .unwrap();
+    assert_eq!(with.nodes(), without.nodes());
+    assert_eq!(with.triangles(), without.triangles());
+    assert_eq!(with.body_of(), without.body_of());
+}
+
+#[test]
+fn a_physical_name_without_its_closing_quote_is_an_io_error_naming_physical_names() {
+    both(
+        "unclosed_name",
+        |binary| {
+            msh(
+                binary,
+                &[
+                    ("PhysicalNames", vec![Raw("1\n2 7 \"plate\n")]),
+                    ("Entities", entities()),
+                ],
+            )
+        },
+        &["$PhysicalNames", "physical name 1 of 1", "no closing quote"],
+    );
+}
+
+#[test]
+fn a_physical_names_count_the_file_cannot_hold_is_an_io_error() {
+    both(
+        "names_count",
+        |binary| msh(binary, &[("PhysicalNames", vec![Raw("1000000000000000")])]),
+        &[
+            "$PhysicalNames",
+            "the number of physical names is 1000000000000000",
+        ],
+    );
+}
+
+#[test]
+fn a_long_or_binary_group_name_is_quoted_short_and_printable() {
+    let mut name = "x".repeat(100_000);
+    name.insert_str(0, "\u{1b}[31m\u{7}");
+    let names = format!("$PhysicalNames\n1\n2 7 \"{name}\"\n$EndPhysicalNames\n");
+    let m = message_of(
+        "long_name.msh",
+        &one_element(&names, "1 7", 3, "1 2 3 4", 0.0),
+    );
+    assert!(printable_and_short(&m), "{} bytes: {m:.300}", m.len());
+    assert!(m.contains("physical group 7 \"\\u{1b}[31m\\u{7}xxx"), "{m}");
 }

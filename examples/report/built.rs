@@ -48,8 +48,8 @@ pub(crate) fn built(report: &mut String) {
         "A scene without contact pairs builds no contact mesh, no contact pattern entries and no \
          active-set state (`contact_elements()` is an error: there are none). Strains, stresses, \
          reactions and contact pressures are computed only when asked for (accessors), never during \
-         the solve. The core library builds without the optional I/O (`--no-default-features`: no \
-         `vtkio` in the dependency tree, no Gmsh reader; checked in CI).\n"
+         the solve. The core library builds without the optional I/O (`--no-default-features`: no VTU \
+         writer, no Gmsh reader, no dependency but faer, nalgebra, libc and rayon; checked in CI).\n"
     )
     .unwrap();
 }

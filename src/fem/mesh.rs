@@ -55,11 +55,23 @@ fn list<T: std::fmt::Display>(items: &[T]) -> String {
     format!("{}{}", shown.join(", "), more)
 }
 
+/// Where a file puts each node, triangle and boundary edge, for messages:
+/// its entity and physical group, as the file's user knows them ("surface
+/// 1 in physical group 7 \"plate\""); `None` where the file says nothing.
+pub trait Places: std::fmt::Debug {
+    /// Where node `i` (0-based) lies.
+    fn node(&self, i: usize) -> Option<String>;
+    /// Where triangle `t` (0-based) lies.
+    fn triangle(&self, t: usize) -> Option<String>;
+    /// Where boundary edge `e` (by position in the edges given) lies.
+    fn edge(&self, e: usize) -> Option<String>;
+}
+
 /// How the messages of [`Mesh::with_names`] and
 /// [`Mesh::set_boundary_edges_with_names`] name nodes, triangles and
 /// boundary edges: by index in the caller's numbering and, for a mesh read
 /// from a file, by the file's own tags, which are what its user can look
-/// up (a file's node 1001 may be index 0).
+/// up (a file's node 1001 may be index 0), and where the file puts them.
 #[derive(Clone, Copy, Debug, Default)]
 pub struct Names<'a> {
     /// How indices are printed: 0 (C) or 1 (Fortran).
@@ -72,6 +84,8 @@ pub struct Names<'a> {
     pub triangle_tags: Option<&'a [u64]>,
     /// The file's element tag of each boundary edge given, by position.
     pub edge_tags: Option<&'a [u64]>,
+    /// Where the file puts them (entity, physical group).
+    pub places: Option<&'a dyn Places>,
 }
 
 impl Names<'_> {
@@ -83,6 +97,11 @@ impl Names<'_> {
         }
     }
 
+    /// " of <place>" where the file says where an item lies, else "".
+    fn of(place: Option<String>) -> String {
+        place.map_or_else(String::new, |p| format!(" of {p}"))
+    }
+
     /// Node `i`: "5", or "5 (Gmsh node 1006)".
     fn node(&self, i: usize) -> String {
         let n = i + self.index_base;
@@ -92,19 +111,44 @@ impl Names<'_> {
         }
     }
 
-    /// Triangle `t`: "triangle 3", or "triangle 3 (Gmsh element 57)".
+    /// Node `i` where a message is about the node itself: "5", or "5
+    /// (Gmsh node 1006 of surface 1 in physical group 7)". (Where it is
+    /// about a triangle, the triangle says where.)
+    fn placed_node(&self, i: usize) -> String {
+        let n = i + self.index_base;
+        match self.node_tags.and_then(|t| t.get(i)) {
+            Some(tag) => format!(
+                "{n} ({} node {tag}{})",
+                self.file,
+                Self::of(self.places.and_then(|p| p.node(i)))
+            ),
+            None => n.to_string(),
+        }
+    }
+
+    /// Triangle `t`: "triangle 3", "triangle 3 (Gmsh element 57)", or
+    /// "triangle 3 (Gmsh element 57 of surface 1 in physical group 7)".
     fn triangle(&self, t: usize) -> String {
         let n = t + self.index_base;
         match self.triangle_tags.and_then(|tags| tags.get(t)) {
-            Some(tag) => format!("triangle {n} ({} element {tag})", self.file),
+            Some(tag) => format!(
+                "triangle {n} ({} element {tag}{})",
+                self.file,
+                Self::of(self.places.and_then(|p| p.triangle(t)))
+            ),
             None => format!("triangle {n}"),
         }
     }
 
-    /// Boundary edge `e`: "boundary edge 2", or "Gmsh line element 7".
+    /// Boundary edge `e`: "boundary edge 2", "Gmsh line element 7", or
+    /// "Gmsh line element 7 of curve 1 in physical group 11".
     fn edge(&self, e: usize) -> String {
         match self.edge_tags.and_then(|t| t.get(e)) {
-            Some(tag) => format!("{} line element {tag}", self.file),
+            Some(tag) => format!(
+                "{} line element {tag}{}",
+                self.file,
+                Self::of(self.places.and_then(|p| p.edge(e)))
+            ),
             None => format!("boundary edge {}", e + self.index_base),
         }
     }
@@ -148,7 +192,7 @@ fn validate(
     {
         return Err(Error::mesh(format!(
             "node {}: coordinates ({:?}, {:?}) are not finite",
-            names.node(i),
+            names.placed_node(i),
             nodes[i][0],
             nodes[i][1]
         )));

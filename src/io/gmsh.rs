@@ -12,13 +12,28 @@
 //! turned counter-clockwise as a whole. Only 3-node triangles and 2-node lines are accepted;
 //! nodes must lie in the plane z = 0.
 //!
+//! # What is refused, and how it is said
+//!
+//! Content we cannot use is [`Status::InvalidMesh`] (the status
+//! `tfem_load_gmsh` promises for unsupported content), a file that is not
+//! well-formed MSH 4.1 [`Status::Io`]. Another version of the format (MSH
+//! 2.2, 4.0, …) is unsupported content: the message names the version and
+//! how to convert the file (`gmsh old.msh -save -format msh41 -o new.msh`,
+//! or `Mesh.MshFileVersion = 4.1` in Gmsh). An error about an element or
+//! a node names where the file puts it, its entity and physical group, by
+//! tag and by the name `$PhysicalNames` gives it (`surface 1 in physical
+//! group 7 "plate" has elements of Gmsh type 3 (4-node quadrangles)`,
+//! `triangle 0 (Gmsh element 1 of surface 1 in physical group 7 "plate"):
+//! node … is repeated`, `node 3 of surface 1 in physical group 7 "plate"
+//! has z = 0.5`), as the file's user knows them.
+//!
 //! # The reader
 //!
 //! The file is read by a small reader of our own for the subset we use:
-//! `$MeshFormat`, `$Entities`, `$Nodes` and `$Elements`; any other section
-//! (`$PhysicalNames`, `$Periodic`, `$NodeData`, …) is skipped up to its
-//! `$End…` line. It replaced the `mshio` crate (0.4.2), which cannot be
-//! made safe from outside:
+//! `$MeshFormat`, `$PhysicalNames` (for messages only), `$Entities`,
+//! `$Nodes` and `$Elements`; any other section (`$Periodic`, `$NodeData`,
+//! …) is skipped up to its `$End…` line. It replaced the `mshio` crate
+//! (0.4.2), which cannot be made safe from outside:
 //!
 //! - it panics on malformed headers (`4.1 0 99999999999999999999`: an
 //!   `unwrap` of the data size; `4.1 1 3`: `unimplemented!` for a 3-byte
@@ -50,6 +65,7 @@
 //!
 //! | count | at least, per item (ASCII values / binary bytes) |
 //! |---|---|
+//! | `$PhysicalNames` numPhysicalNames | 3 / — (ASCII in a binary file too) |
 //! | `$Entities` numPoints | 5 / 4 + 3·8 + s |
 //! | `$Entities` numCurves, numSurfaces, numVolumes | 9 / 4 + 6·8 + 2s |
 //! | `$Entities` numPhysicalTags, numBounding… | 1 / 4 |
@@ -77,7 +93,7 @@ use std::io::Read;
 use std::path::Path;
 
 use crate::error::{Error, Result, Status};
-use crate::fem::mesh::{Mesh, Names};
+use crate::fem::mesh::{Mesh, Names, Places};
 
 /// A failure while reading: the status and the message, without the path
 /// or the section (added by [`read_msh`]).
@@ -149,9 +165,13 @@ fn is_blank(b: u8) -> bool {
 /// control character escaped (`\0`, `\u{1b}`), invalid UTF-8 as U+FFFD,
 /// and the quoted text stops at 48 characters.
 fn show(token: &[u8]) -> String {
-    const BYTES: usize = 24;
-    const CHARS: usize = 48;
-    let cut = &token[..token.len().min(BYTES)];
+    quote(token, 24, 48)
+}
+
+/// [`show`] with its bounds: at most `bytes` of `token`, and at most
+/// `chars` characters of their escapes.
+fn quote(token: &[u8], bytes: usize, chars: usize) -> String {
+    let cut = &token[..token.len().min(bytes)];
     let mut out = String::from("\"");
     let mut shown = 0;
     let mut short = cut.len() < token.len();
@@ -162,7 +182,7 @@ fn show(token: &[u8]) -> String {
             c => c.escape_debug().collect(),
         };
         shown += escaped.chars().count();
-        if shown > CHARS {
+        if shown > chars {
             short = true;
             break;
         }
@@ -406,16 +426,33 @@ fn header(r: &mut Reader) -> Parse<Encoding> {
         }
     }
     let version = r.text("the format version")?;
-    if std::str::from_utf8(version)
+    match std::str::from_utf8(version)
         .ok()
         .and_then(|s| s.parse::<f64>().ok())
-        != Some(4.1)
     {
-        return Err(format!(
-            "version {} is not supported: only MSH 4.1 is (gmsh -format msh41)",
-            show(version)
-        )
-        .into());
+        Some(4.1) => {}
+        // Another version of the format: well-formed content we cannot use.
+        Some(v) if v.is_finite() && v > 0.0 => {
+            // It parsed as a number: ASCII, and short enough to quote
+            // as it is unless padded.
+            let shown = if version.len() <= 16 {
+                String::from_utf8_lossy(version).into_owned()
+            } else {
+                show(version)
+            };
+            return Err(Fail::mesh(format!(
+                "MSH {shown} is not supported: tfem reads MSH 4.1 only. Convert the file with \
+                 `gmsh old.msh -save -format msh41 -o new.msh`, or have Gmsh write 4.1 \
+                 (Mesh.MshFileVersion = 4.1; the default since Gmsh 4.1)"
+            )));
+        }
+        _ => {
+            return Err(format!(
+                "the format version must be a number such as 4.1, found {}",
+                show(version)
+            )
+            .into());
+        }
     }
     let binary = match r.text("the file type")? {
         b"0" => false,
@@ -458,13 +495,146 @@ fn header(r: &mut Reader) -> Parse<Encoding> {
     Ok(encoding)
 }
 
-/// Of `$Entities`: the physical tags of each curve and surface, and the
-/// points that have some.
-#[derive(Default)]
+/// Of `$Entities`: the physical tags of each curve, surface and volume,
+/// and the points that have some.
+#[derive(Debug, Default)]
 struct Entities {
     curves: HashMap<i32, Vec<i32>>,
     surfaces: HashMap<i32, Vec<i32>>,
+    volumes: HashMap<i32, Vec<i32>>,
     points: Vec<(i32, Vec<i32>)>,
+}
+
+/// Of `$PhysicalNames`: the name of each physical group by (dimension,
+/// tag), quoted and bounded for messages.
+type GroupNames = HashMap<(i32, i32), String>;
+
+/// The `$PhysicalNames` section, ASCII in every file (binary ones too):
+/// `numPhysicalNames`, then `dimension physicalTag "name"` per group. A
+/// group named twice keeps its first name.
+fn physical_names(r: &mut Reader) -> Parse<GroupNames> {
+    let encoding = std::mem::replace(&mut r.encoding, Encoding::Ascii);
+    let names = physical_names_ascii(r);
+    r.encoding = encoding;
+    names
+}
+
+fn physical_names_ascii(r: &mut Reader) -> Parse<GroupNames> {
+    // Every name takes two integers and its quotes at least.
+    const NAME: Cost = cost(3, 0, 0);
+    let n = r.count("the number of physical names", NAME)?;
+    let mut out = GroupNames::new();
+    for k in 0..n {
+        let within = |f: Fail| f.within(format!("physical name {} of {n}", k + 1));
+        let dim = r.int("the dimension").map_err(within)?;
+        let tag = r.int("the physical tag").map_err(within)?;
+        let name = quoted_name(r).map_err(within)?;
+        out.entry((dim, tag)).or_insert_with(|| quote(name, 64, 64));
+    }
+    Ok(out)
+}
+
+/// A name in double quotes on the current line.
+fn quoted_name<'a>(r: &mut Reader<'a>) -> Parse<&'a [u8]> {
+    while r.bytes.get(r.pos).is_some_and(|&b| b == b' ' || b == b'\t') {
+        r.pos += 1;
+    }
+    if r.bytes.get(r.pos) != Some(&b'"') {
+        let found = r
+            .token()
+            .map_or_else(|| "the end of the file".to_string(), show);
+        return Err(format!("expected a name in double quotes, found {found}").into());
+    }
+    let start = r.pos + 1;
+    match r.bytes[start..]
+        .iter()
+        .position(|&b| b == b'"' || b == b'\n')
+    {
+        Some(k) if r.bytes[start + k] == b'"' => {
+            r.pos = start + k + 1;
+            Ok(&r.bytes[start..start + k])
+        }
+        _ => Err(format!(
+            "the name {} has no closing quote on its line",
+            show(&r.bytes[r.pos..])
+        )
+        .into()),
+    }
+}
+
+/// Names physical groups and the entities in them for messages, from what
+/// the file has given so far (`$Entities` and `$PhysicalNames` come before
+/// `$Nodes` and `$Elements` in the files Gmsh writes).
+#[derive(Clone, Copy, Debug)]
+struct Groups<'a> {
+    entities: Option<&'a Entities>,
+    names: &'a GroupNames,
+}
+
+/// What an entity of dimension `dim` is called.
+fn entity_kind(dim: i32) -> &'static str {
+    match dim {
+        0 => "point",
+        1 => "curve",
+        2 => "surface",
+        _ => "volume",
+    }
+}
+
+impl Groups<'_> {
+    /// The physical groups of an entity.
+    fn of(&self, dim: i32, entity: i32) -> &[i32] {
+        let Some(e) = self.entities else { return &[] };
+        let found = match dim {
+            0 => e.points.iter().find(|p| p.0 == entity).map(|p| &p.1),
+            1 => e.curves.get(&entity),
+            2 => e.surfaces.get(&entity),
+            _ => e.volumes.get(&entity),
+        };
+        found.map_or(&[], Vec::as_slice)
+    }
+
+    /// Group `tag` of dimension `dim`: `7 "plate"`, or `7` unnamed.
+    fn group(&self, dim: i32, tag: i32) -> String {
+        match self.names.get(&(dim, tag)) {
+            Some(name) => format!("{tag} {name}"),
+            None => tag.to_string(),
+        }
+    }
+
+    /// An entity and its physical groups: `surface 1 in physical group 7
+    /// "plate"`, `curve 3 in physical groups 11 "bottom", 99` (ten at most,
+    /// then how many more), or `curve 4` in none.
+    fn place(&self, dim: i32, entity: i32) -> String {
+        const SHOWN: usize = 10;
+        let groups = self.of(dim, entity);
+        let kind = entity_kind(dim);
+        let mut out = match groups.len() {
+            0 => return format!("{kind} {entity}"),
+            1 => format!("{kind} {entity} in physical group "),
+            _ => format!("{kind} {entity} in physical groups "),
+        };
+        let shown: Vec<String> = groups
+            .iter()
+            .take(SHOWN)
+            .map(|&g| self.group(dim, g))
+            .collect();
+        out.push_str(&shown.join(", "));
+        if groups.len() > SHOWN {
+            out.push_str(&format!(" and {} more", groups.len() - SHOWN));
+        }
+        out
+    }
+
+    /// An entity in its one physical group `tag` (a triangle's body, an
+    /// edge's tag): `surface 1 in physical group 7 "plate"`.
+    fn place_in(&self, dim: i32, entity: i32, tag: i32) -> String {
+        format!(
+            "{} {entity} in physical group {}",
+            entity_kind(dim),
+            self.group(dim, tag)
+        )
+    }
 }
 
 fn entities(r: &mut Reader) -> Parse<Entities> {
@@ -492,6 +662,9 @@ fn entities(r: &mut Reader) -> Parse<Entities> {
                 }
                 2 => {
                     out.surfaces.insert(tag, physical);
+                }
+                3 => {
+                    out.volumes.insert(tag, physical);
                 }
                 _ => {}
             }
@@ -526,12 +699,22 @@ fn entity(r: &mut Reader, dim: usize) -> Parse<(i32, Vec<i32>)> {
     Ok((tag, physical))
 }
 
-/// Of `$Nodes`: coordinates, tags, and the index of each tag.
+/// Of `$Nodes`: coordinates, tags, the index of each tag, and the entity
+/// of each block.
 #[derive(Default)]
 struct Nodes {
     xyz: Vec<[f64; 3]>,
     tags: Vec<u64>,
     index_of: HashMap<u64, usize>,
+    /// (first node, entity dimension, entity tag) of each block, in order.
+    blocks: Vec<(usize, i32, i32)>,
+}
+
+/// The block of item `i` among blocks given by their first items, in
+/// order (an empty block shares its first item with the next one).
+fn block_of<T>(blocks: &[T], first: impl Fn(&T) -> usize, i: usize) -> Option<&T> {
+    let k = blocks.partition_point(|b| first(b) <= i);
+    k.checked_sub(1).map(|k| &blocks[k])
 }
 
 /// A section's header against what its blocks held: `claimed` is the
@@ -588,7 +771,8 @@ fn node_block(r: &mut Reader, out: &mut Nodes) -> Parse<()> {
     if !(0..=3).contains(&dim) {
         return Err(format!("the entity dimension must be 0 to 3, found {dim}").into());
     }
-    r.int("the entity tag")?;
+    let entity = r.int("the entity tag")?;
+    out.blocks.push((out.xyz.len(), dim, entity));
     // Parametric nodes carry `dim` parametric coordinates after x y z.
     let params = match r.int("the parametric flag")? {
         0 => 0,
@@ -656,7 +840,7 @@ fn type_name(ty: i32) -> String {
     format!("Gmsh type {ty} ({name})")
 }
 
-fn elements(r: &mut Reader) -> Parse<Vec<Block>> {
+fn elements(r: &mut Reader, groups: Groups) -> Parse<Vec<Block>> {
     const BLOCK: Cost = cost(3, 1, 0);
     // The smallest element: a point, its tag and one node.
     const ELEMENT: Cost = cost(0, 2, 0);
@@ -667,7 +851,7 @@ fn elements(r: &mut Reader) -> Parse<Vec<Block>> {
     let mut blocks = Vec::new();
     let (mut found, mut range) = (0, (u64::MAX, 0));
     for b in 0..n_blocks {
-        let block = element_block(r, &mut found, &mut range)
+        let block = element_block(r, groups, &mut found, &mut range)
             .map_err(|f| f.within(format!("entity block {} of {n_blocks}", b + 1)))?;
         // Points carry nothing we use.
         if block.dim > 0 {
@@ -678,36 +862,48 @@ fn elements(r: &mut Reader) -> Parse<Vec<Block>> {
     Ok(blocks)
 }
 
-/// One block; counts its elements in `found` and widens `range` to their tags.
-fn element_block(r: &mut Reader, found: &mut usize, range: &mut (u64, u64)) -> Parse<Block> {
+/// One block; counts its elements in `found` and widens `range` to their
+/// tags. An element type we cannot use is refused naming the entity and
+/// its physical groups.
+fn element_block(
+    r: &mut Reader,
+    groups: Groups,
+    found: &mut usize,
+    range: &mut (u64, u64),
+) -> Parse<Block> {
     let dim = r.int("the entity dimension")?;
     let entity = r.int("the entity tag")?;
     let ty = r.int("the element type")?;
+    let place = || groups.place(dim, entity);
     let nodes_per = match (dim, ty) {
         (2, 2) => 3,
         (1, 1) => 2,
         (0, 15) => 1,
         (2, _) => {
             return Err(Fail::mesh(format!(
-                "surface {entity} has elements of {}: only 3-node triangles are supported",
+                "{} has elements of {}: only 3-node triangles are supported",
+                place(),
                 type_name(ty)
             )));
         }
         (1, _) => {
             return Err(Fail::mesh(format!(
-                "curve {entity} has elements of {}: only 2-node lines are supported",
+                "{} has elements of {}: only 2-node lines are supported",
+                place(),
                 type_name(ty)
             )));
         }
         (0, _) => {
             return Err(Fail::mesh(format!(
-                "point {entity} has elements of {}: only 1-node points are supported there",
+                "{} has elements of {}: only 1-node points are supported there",
+                place(),
                 type_name(ty)
             )));
         }
         (3, _) => {
             return Err(Fail::mesh(format!(
-                "volume {entity} has elements of {}: only 2D meshes are supported",
+                "{} has elements of {}: only 2D meshes are supported",
+                place(),
                 type_name(ty)
             )));
         }
@@ -741,6 +937,7 @@ fn element_block(r: &mut Reader, found: &mut usize, range: &mut (u64, u64)) -> P
 
 /// What the file holds, section by section.
 struct MshFile {
+    names: Option<GroupNames>,
     entities: Option<Entities>,
     nodes: Option<Nodes>,
     elements: Option<Vec<Block>>,
@@ -759,6 +956,7 @@ fn parse(bytes: &[u8]) -> Parse<MshFile> {
     };
     r.encoding = in_section("$MeshFormat", header(&mut r))?;
     let mut file = MshFile {
+        names: None,
         entities: None,
         nodes: None,
         elements: None,
@@ -767,6 +965,7 @@ fn parse(bytes: &[u8]) -> Parse<MshFile> {
     let mut last = "$MeshFormat".to_string();
     while let Some(tag) = r.token() {
         let section = match tag {
+            b"$PhysicalNames" => "$PhysicalNames",
             b"$Entities" => "$Entities",
             b"$Nodes" => "$Nodes",
             b"$Elements" => "$Elements",
@@ -786,6 +985,7 @@ fn parse(bytes: &[u8]) -> Parse<MshFile> {
             }
         };
         let present = match section {
+            "$PhysicalNames" => file.names.is_some(),
             "$Entities" => file.entities.is_some(),
             "$Nodes" => file.nodes.is_some(),
             _ => file.elements.is_some(),
@@ -795,11 +995,22 @@ fn parse(bytes: &[u8]) -> Parse<MshFile> {
                 "{section}: a second {section} section: only one is supported"
             )));
         }
-        in_section(section, r.begin_data(section))?;
+        // Its data is ASCII in every file.
+        if section != "$PhysicalNames" {
+            in_section(section, r.begin_data(section))?;
+        }
+        let no_names = GroupNames::new();
+        let groups = Groups {
+            entities: file.entities.as_ref(),
+            names: file.names.as_ref().unwrap_or(&no_names),
+        };
         match section {
+            "$PhysicalNames" => {
+                file.names = Some(in_section(section, physical_names(&mut r))?);
+            }
             "$Entities" => file.entities = Some(in_section(section, entities(&mut r))?),
             "$Nodes" => file.nodes = Some(in_section(section, nodes(&mut r))?),
-            _ => file.elements = Some(in_section(section, elements(&mut r))?),
+            _ => file.elements = Some(in_section(section, elements(&mut r, groups))?),
         }
         let end = format!("$End{}", &section[1..]);
         in_section(section, r.end(&end, "the data the header announces"))?;
@@ -879,7 +1090,9 @@ fn read_file(path: &Path) -> std::io::Result<Vec<u8>> {
 /// Errors: [`Status::Io`] for a file that cannot be read or is not a
 /// well-formed MSH 4.1 file (the message names the section and what is
 /// wrong, e.g. a count the file cannot hold), [`Status::InvalidMesh`] for
-/// well-formed content we cannot use.
+/// well-formed content we cannot use: another version of the format (MSH
+/// 2.2, with how to convert it), an element type, node or triangle we
+/// cannot take (named with its entity and physical group).
 pub fn read_msh(path: &Path, index_base: usize) -> Result<Mesh> {
     // The system's message for it would name nothing (": No such file or
     // directory").
@@ -890,6 +1103,37 @@ pub fn read_msh(path: &Path, index_base: usize) -> Result<Mesh> {
         read_file(path).map_err(|e| Error::new(Status::Io, format!("{}: {e}", path.display())))?;
     build(&bytes, index_base)
         .map_err(|f| Error::new(f.status, format!("{}: {}", path.display(), f.message)))
+}
+
+/// Where the file puts each node, triangle and edge of the mesh built
+/// from it, by the blocks they came in.
+#[derive(Debug)]
+struct FilePlaces<'a> {
+    groups: Groups<'a>,
+    /// (first node, entity dimension, entity tag) of each `$Nodes` block.
+    nodes: &'a [(usize, i32, i32)],
+    /// (first triangle, surface, body) of each block of triangles.
+    triangles: &'a [(usize, i32, i32)],
+    /// (first edge, curve) of each block of lines; an edge's physical
+    /// group is its tag.
+    edges: &'a [(usize, i32)],
+    edge_tags: &'a [i32],
+}
+
+impl Places for FilePlaces<'_> {
+    fn node(&self, i: usize) -> Option<String> {
+        block_of(self.nodes, |b| b.0, i).map(|&(_, dim, entity)| self.groups.place(dim, entity))
+    }
+
+    fn triangle(&self, t: usize) -> Option<String> {
+        block_of(self.triangles, |b| b.0, t)
+            .map(|&(_, surface, body)| self.groups.place_in(2, surface, body))
+    }
+
+    fn edge(&self, e: usize) -> Option<String> {
+        let &(_, curve) = block_of(self.edges, |b| b.0, e)?;
+        Some(self.groups.place_in(1, curve, *self.edge_tags.get(e)?))
+    }
 }
 
 fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
@@ -903,6 +1147,15 @@ fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
     let blocks = file
         .elements
         .ok_or_else(|| Fail::mesh("$Elements: no such section"))?;
+    let group_names = file.names.unwrap_or_default();
+    let groups = Groups {
+        entities: Some(&entities),
+        names: &group_names,
+    };
+    // Where a node lies: its block's entity.
+    let node_place = |k: usize| {
+        block_of(&nodes.blocks, |b| b.0, k).map(|&(_, dim, entity)| groups.place(dim, entity))
+    };
 
     let scale = nodes
         .xyz
@@ -917,44 +1170,47 @@ fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
         .enumerate()
         .find(|(_, p)| p[2].is_nan() || p[2].abs() > 1e-12 * scale)
     {
+        let of = node_place(k).map_or_else(String::new, |p| format!(" of {p}"));
         return Err(Fail::mesh(format!(
-            "$Nodes: node {} has z = {:?}: only 2D meshes in the plane z = 0 are supported",
+            "$Nodes: node {}{of} has z = {:?}: only 2D meshes in the plane z = 0 are supported",
             nodes.tags[k], p[2]
         )));
     }
 
-    let lookup = |element: u64, tag: u64| -> Parse<usize> {
+    let lookup = |block: &Block, element: u64, tag: u64| -> Parse<usize> {
         nodes.index_of.get(&tag).copied().ok_or_else(|| {
             Fail::mesh(format!(
-                "$Elements: element {element} refers to node {tag}, which is not defined in $Nodes"
+                "$Elements: element {element} of {} refers to node {tag}, which is not defined \
+                 in $Nodes",
+                groups.place(block.dim, block.entity)
             ))
         })
     };
     let (mut triangles, mut bodies, mut edges, mut edge_tags) =
         (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-    // The file's element tag of each triangle and edge, for messages.
+    // The file's element tag of each triangle and edge, and the entity of
+    // each block of them, for messages.
     let (mut triangle_elements, mut edge_elements) = (Vec::new(), Vec::new());
+    let (mut triangle_blocks, mut edge_blocks) = (Vec::new(), Vec::new());
     // Surfaces in several physical groups: (surface, body, groups dropped).
     let mut several = std::collections::BTreeMap::new();
     for block in &blocks {
         if block.dim == 2 {
-            let groups = entities
-                .surfaces
-                .get(&block.entity)
-                .map_or(&[][..], Vec::as_slice);
+            let physical = groups.of(2, block.entity);
             // A triangle has one body: the first group.
-            if let [body, dropped @ ..] = groups {
+            if let [body, dropped @ ..] = physical {
                 if !dropped.is_empty() {
                     several.insert(block.entity, (*body, dropped));
                 }
             }
-            let body = groups.first().copied().ok_or_else(|| {
+            let body = physical.first().copied().ok_or_else(|| {
                     Fail::mesh(format!(
                         "$Elements: surface {} has no physical group in $Entities: every surface must be a body",
                         block.entity
                     ))
                 })?;
             let first = triangles.len();
+            triangle_blocks.push((first, block.entity, body));
             let mut area = 0.0;
             for (&element, e) in block
                 .tags
@@ -962,9 +1218,9 @@ fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
                 .zip(block.node_tags.chunks_exact(block.nodes_per))
             {
                 let t = [
-                    lookup(element, e[0])?,
-                    lookup(element, e[1])?,
-                    lookup(element, e[2])?,
+                    lookup(block, element, e[0])?,
+                    lookup(block, element, e[1])?,
+                    lookup(block, element, e[2])?,
                 ];
                 let [a, b, c] = t.map(|v| nodes.xyz[v]);
                 area += (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
@@ -980,18 +1236,19 @@ fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
                     t.swap(1, 2);
                 }
             }
-        } else if let Some(groups) = entities.curves.get(&block.entity) {
+        } else if let Some(physical) = entities.curves.get(&block.entity) {
             // An edge carries every group of its curve: a curve may be in
             // its own group and in "the whole boundary" (the mesh holds an
             // edge under several tags). Curves without a physical group
             // carry no load or contact.
+            edge_blocks.push((edges.len(), block.entity));
             for (&element, e) in block
                 .tags
                 .iter()
                 .zip(block.node_tags.chunks_exact(block.nodes_per))
             {
-                let ends = [lookup(element, e[0])?, lookup(element, e[1])?];
-                for &tag in groups {
+                let ends = [lookup(block, element, e[0])?, lookup(block, element, e[1])?];
+                for &tag in physical {
                     edges.push(ends);
                     edge_tags.push(tag);
                     edge_elements.push(element);
@@ -1007,14 +1264,22 @@ fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
         status: e.status(),
         message: e.message().to_string(),
     };
-    // The user knows the file's nodes and elements by their tags, not by
-    // our indices (node tag 1001 may be index 0).
+    // The user knows the file's nodes and elements by their tags and
+    // physical groups, not by our indices (node tag 1001 may be index 0).
+    let places = FilePlaces {
+        groups,
+        nodes: &nodes.blocks,
+        triangles: &triangle_blocks,
+        edges: &edge_blocks,
+        edge_tags: &edge_tags,
+    };
     let names = Names {
         index_base,
         file: "Gmsh",
         node_tags: Some(&nodes.tags),
         triangle_tags: Some(&triangle_elements),
         edge_tags: Some(&edge_elements),
+        places: Some(&places),
     };
     let mut mesh = Mesh::with_names(coords, triangles, bodies, &names).map_err(mesh_error)?;
     mesh.set_boundary_edges_with_names(&edges, &edge_tags, &names)

@@ -1,26 +1,182 @@
-//! Results as a VTK XML unstructured grid (`.vtu`, for ParaView), written
-//! with the `vtkio` crate. Feature `vtu`.
+//! Results as a VTK XML unstructured grid (`.vtu`), for ParaView, VTK and
+//! meshio. Feature `vtu`.
+//!
+//! # What the file holds
+//!
+//! The mesh in its initial configuration (points with z = 0, 3-node
+//! triangles) and, by name:
+//!
+//! | array | on | type, components | what |
+//! |---|---|---|---|
+//! | `displacement` | points | Float64, 3 | [u, v, 0] ([`Model::displacements`]) |
+//! | `contact_pressure` | points | Float64, 1 | after a contact solve: the contact pressure at each node, positive in compression, zero off the interfaces ([`Model::contact_nodal_pressures`]) |
+//! | `contact_force` | points | Float64, 3 | after a contact solve: [f_x, f_y, 0], the force the contact exerts on each node per unit thickness ([`Model::contact_forces`]) |
+//! | `contact_gap` | points | Float64, 1 | after a contact solve: the normal gap at each node, negative where the bodies interpenetrate ([`Model::contact_gaps`]) |
+//! | `body` | cells | Int32, 1 | the body tag of a triangle; −1 on the elements of B |
+//! | `J` | cells | Float64, 1 | twice the signed area in the initial configuration (an element of B: its initial Jacobian) |
+//! | `strain` | cells | Float64, 3 | [ε_xx, ε_yy, γ_xy] ([`Model::element_strains`]); zero on the elements of B |
+//! | `stress` | cells | Float64, 3 | [σ_xx, σ_yy, σ_xy] ([`Model::element_stresses`]); zero on the elements of B |
+//! | `contact_element_active` | cells | UInt8, 1 | strip weighting only: 1 on an active element of B, 0 elsewhere ([`Model::contact_active`]) |
+//! | `contact_element_pressure` | cells | Float64, 1 | strip weighting only: the pressure of each element of B, 0 on the body triangles ([`Model::contact_pressure`]) |
+//!
+//! The nodal contact arrays are there after every contact solve or load
+//! step, under both weightings, and only then (after a solve without
+//! contact the file has no contact array at all, rather than zeros that
+//! would read as "no contact"). Under the strip weighting the elements of
+//! the contact mesh B follow the body triangles as cells of their own
+//! (body −1) with the two `contact_element_*` arrays; under the mortar
+//! weighting ([`ContactWeighting::Mortar`]) there is no B, so neither its
+//! cells nor those arrays are written: its contact state is per node, and
+//! the nodal arrays carry it.
+//!
+//! # The format
+//!
+//! `<VTKFile type="UnstructuredGrid" version="1.0" byte_order="LittleEndian"
+//! header_type="UInt64">` with one `Piece`; every `DataArray` is
+//! `format="appended"`, its `offset` counting bytes from the one after the
+//! `_` that opens `<AppendedData encoding="raw">`, where each array is its
+//! byte count (UInt64) followed by its values, little-endian, with no
+//! compression. Connectivity and offsets are Int32 when every index fits
+//! (any mesh tfem can hold in memory today), else Int64; the cell types
+//! UInt8 (5, `VTK_TRIANGLE`). Raw appended data is the compact form both
+//! VTK (ParaView's reader) and meshio read: 8 bytes per Float64, where the
+//! inline base64 form takes 10.7 and ASCII about 24.
+//!
+//! # Why our own writer
+//!
+//! It replaced `vtkio` 0.6, whose dependencies nom 3.2.1 and quick-xml 0.22
+//! hold code that a future Rust will reject. `vtkio`'s next version is a
+//! release candidate (0.7.0-rc2) that writes arrays only inline in base64
+//! (its raw appended output sits behind a feature it does not declare) and
+//! builds the whole file in memory through serde; the format is small
+//! enough to write here, streamed, with no dependency at all.
 
+use std::fmt::Write as _;
+use std::io::{BufWriter, Write};
 use std::path::Path;
 
-use vtkio::model::{
-    Attribute, Attributes, ByteOrder, CellType, Cells, DataArray, DataSet, UnstructuredGridPiece,
-    Version, VertexNumbers, Vtk,
-};
-
+use crate::contact::ContactWeighting;
 use crate::error::{Error, Result, Status};
 use crate::fem::element::TriGeometry;
 use crate::model::Model;
 
-fn cell_array(name: &str, comps: u32, data: Vec<f64>) -> Attribute {
-    Attribute::DataArray(DataArray::scalars(name, comps).with_data(data))
+/// `VTK_TRIANGLE`.
+const TRIANGLE: u8 = 5;
+
+/// The scalar types of the arrays written, as VTK names them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Scalar {
+    Float64,
+    Int32,
+    Int64,
+    UInt8,
 }
 
-/// Writes the mesh in its initial configuration with the solved fields:
-/// point data `displacement` (3 components, z = 0); cell data `body`, `J`,
-/// `strain` and `stress` (Voigt, 3 components), and for the elements of the
-/// contact mesh B (appended after the body triangles, body −1)
-/// `contact_active` and `contact_pressure`. Needs a solved model.
+impl Scalar {
+    fn name(self) -> &'static str {
+        match self {
+            Scalar::Float64 => "Float64",
+            Scalar::Int32 => "Int32",
+            Scalar::Int64 => "Int64",
+            Scalar::UInt8 => "UInt8",
+        }
+    }
+
+    fn bytes(self) -> u64 {
+        match self {
+            Scalar::Float64 | Scalar::Int64 => 8,
+            Scalar::Int32 => 4,
+            Scalar::UInt8 => 1,
+        }
+    }
+}
+
+/// Streams an array's values, little-endian, into the file.
+type Values<'a> = Box<dyn Fn(&mut dyn Write) -> std::io::Result<()> + 'a>;
+
+/// One `DataArray`: its header and how to stream its values.
+struct Array<'a> {
+    name: &'static str,
+    scalar: Scalar,
+    /// The components' names, written (as `ComponentName0`, …) where
+    /// there are several, for ParaView's menus.
+    components: &'static [&'static str],
+    /// Tuples (points or cells).
+    tuples: usize,
+    values: Values<'a>,
+}
+
+impl Array<'_> {
+    fn bytes(&self) -> u64 {
+        self.tuples as u64 * self.components.len() as u64 * self.scalar.bytes()
+    }
+}
+
+/// One value per tuple.
+const SCALAR: &[&str] = &["value"];
+/// Vectors of the plane, z = 0.
+const XYZ: &[&str] = &["x", "y", "z"];
+/// Voigt components of a plane strain or stress.
+const VOIGT: &[&str] = &["xx", "yy", "xy"];
+
+fn f64s<'a, I>(values: impl Fn() -> I + 'a) -> Values<'a>
+where
+    I: Iterator<Item = f64>,
+{
+    Box::new(move |w| values().try_for_each(|x| w.write_all(&x.to_le_bytes())))
+}
+
+/// Plane vectors as [x, y, 0].
+fn planar<'a>(v: &'a [[f64; 2]]) -> Values<'a> {
+    f64s(move || v.iter().flat_map(|d| [d[0], d[1], 0.0]))
+}
+
+/// Voigt triples, then `zeros` triples of zeros (the elements of B have
+/// no strain or stress of a body).
+fn voigt(v: &[[f64; 3]], zeros: usize) -> Values<'_> {
+    f64s(move || {
+        v.iter()
+            .flatten()
+            .copied()
+            .chain(std::iter::repeat_n(0.0, 3 * zeros))
+    })
+}
+
+/// The Int32 or Int64 values of connectivity and offsets.
+fn indices<'a, I>(wide: bool, values: impl Fn() -> I + 'a) -> Values<'a>
+where
+    I: Iterator<Item = usize>,
+{
+    // The caller chose Int32 only where every value fits.
+    Box::new(move |w| {
+        values().try_for_each(|v| {
+            if wide {
+                w.write_all(&(v as i64).to_le_bytes())
+            } else {
+                w.write_all(&(v as i32).to_le_bytes())
+            }
+        })
+    })
+}
+
+/// Whether connectivity and offsets need Int64: a node index or an
+/// offset past `i32::MAX`.
+fn wide_indices(points: usize, cells: usize) -> bool {
+    let max = i32::MAX as usize;
+    points > max || cells > max / 3
+}
+
+/// Writes the mesh in its initial configuration with the solved fields
+/// (the arrays of the [module's table](self)): point data `displacement`
+/// and, after a contact solve, `contact_pressure`, `contact_force` and
+/// `contact_gap`; cell data `body`, `J`, `strain` and `stress`, and under
+/// the strip weighting the elements of the contact mesh B appended after
+/// the body triangles (body −1) with `contact_element_active` and
+/// `contact_element_pressure`.
+///
+/// Errors: [`Status::InvalidState`] before a solve (nothing is written),
+/// [`Status::Io`] when the file cannot be written (the message names it
+/// and the reason). The model is never changed.
 pub fn write_vtu(model: &Model, path: &Path) -> Result<()> {
     let mesh = model
         .mesh()
@@ -28,94 +184,278 @@ pub fn write_vtu(model: &Model, path: &Path) -> Result<()> {
     let u = model.displacements()?;
     let strains = model.element_strains()?;
     let stresses = model.element_stresses()?;
-    let contact = model.contact_elements().ok();
-    let active = model.contact_active().ok();
-    let pressure = model.contact_pressure().ok();
-
-    let points: Vec<f64> = mesh
-        .nodes()
-        .iter()
-        .flat_map(|p| [p[0], p[1], 0.0])
-        .collect();
-    let mut conn: Vec<u64> = Vec::new();
-    let mut body = Vec::new();
-    let mut jac = Vec::new();
-    for (t, b) in mesh.triangles().iter().zip(mesh.body_of()) {
-        conn.extend(t.iter().map(|&v| v as u64));
-        body.push(f64::from(*b));
-        jac.push(TriGeometry::new(&mesh.corners(t)).j);
-    }
-    let n_body = mesh.triangles().len();
-    let n_contact = contact.map_or(0, |c| c.len());
-    let mut strain: Vec<f64> = strains.iter().flatten().copied().collect();
-    let mut stress: Vec<f64> = stresses.iter().flatten().copied().collect();
-    let mut c_active = vec![0.0; n_body];
-    let mut c_pressure = vec![0.0; n_body];
-    if let (Some(c), Some(a), Some(p)) = (contact, active, pressure) {
-        for (k, e) in c.iter().enumerate() {
-            conn.extend(e.nodes.iter().map(|&v| v as u64));
-            body.push(-1.0);
-            jac.push(e.j0);
-            c_active.push(if a[k] { 1.0 } else { 0.0 });
-            c_pressure.push(p[k]);
-        }
-        strain.extend(std::iter::repeat_n(0.0, 3 * n_contact));
-        stress.extend(std::iter::repeat_n(0.0, 3 * n_contact));
-    }
-    let n_cells = n_body + n_contact;
-    let offsets: Vec<u64> = (1..=n_cells as u64).map(|k| 3 * k).collect();
-    let displacement: Vec<f64> = u.iter().flat_map(|d| [d[0], d[1], 0.0]).collect();
-    let vtk = Vtk {
-        version: Version::new((1, 0)),
-        byte_order: ByteOrder::LittleEndian,
-        title: "tfem".to_string(),
-        file_path: None,
-        data: DataSet::inline(UnstructuredGridPiece {
-            points: points.into(),
-            cells: Cells {
-                cell_verts: VertexNumbers::XML {
-                    connectivity: conn,
-                    offsets,
-                },
-                types: vec![CellType::Triangle; n_cells],
-            },
-            data: Attributes {
-                point: vec![Attribute::DataArray(
-                    DataArray::vectors("displacement").with_data(displacement),
-                )],
-                cell: vec![
-                    cell_array("body", 1, body),
-                    cell_array("J", 1, jac),
-                    cell_array("strain", 3, strain),
-                    cell_array("stress", 3, stress),
-                    cell_array("contact_active", 1, c_active),
-                    cell_array("contact_pressure", 1, c_pressure),
-                ],
-            },
-        }),
+    // A contact solve's results, under either weighting; none after a
+    // solve without contact.
+    let contact = match model.contact_report() {
+        Ok(_) => Some((
+            model.contact_nodal_pressures()?,
+            model.contact_forces()?,
+            model.contact_gaps()?,
+        )),
+        Err(_) => None,
     };
-    vtk.export(path).map_err(|e| {
-        Error::new(
-            Status::Io,
-            format!("cannot write {}: {}", path.display(), reason(&e)),
-        )
-    })
+    let strip = match (&contact, model.contact_weighting()) {
+        (Some(_), ContactWeighting::Strip) => Some((
+            model.contact_elements()?,
+            model.contact_active()?,
+            model.contact_pressure()?,
+        )),
+        _ => None,
+    };
+    let b: &[_] = strip.map_or(&[], |s| s.0);
+
+    let (nodes, triangles) = (mesh.nodes(), mesh.triangles());
+    let n_points = nodes.len();
+    let n_cells = triangles.len() + b.len();
+    let wide = wide_indices(n_points, n_cells);
+    let index = if wide { Scalar::Int64 } else { Scalar::Int32 };
+
+    let points = vec![Array {
+        name: "Points",
+        scalar: Scalar::Float64,
+        components: XYZ,
+        tuples: n_points,
+        values: planar(nodes),
+    }];
+    let cells = vec![
+        Array {
+            name: "connectivity",
+            scalar: index,
+            components: SCALAR,
+            tuples: 3 * n_cells,
+            values: indices(wide, move || {
+                triangles
+                    .iter()
+                    .chain(b.iter().map(|e| &e.nodes))
+                    .flatten()
+                    .copied()
+            }),
+        },
+        Array {
+            name: "offsets",
+            scalar: index,
+            components: SCALAR,
+            tuples: n_cells,
+            values: indices(wide, move || (1..=n_cells).map(|k| 3 * k)),
+        },
+        Array {
+            name: "types",
+            scalar: Scalar::UInt8,
+            components: SCALAR,
+            tuples: n_cells,
+            values: Box::new(move |w| (0..n_cells).try_for_each(|_| w.write_all(&[TRIANGLE]))),
+        },
+    ];
+    let mut point_data = vec![Array {
+        name: "displacement",
+        scalar: Scalar::Float64,
+        components: XYZ,
+        tuples: n_points,
+        values: planar(&u),
+    }];
+    if let Some((pressure, force, gap)) = &contact {
+        point_data.extend([
+            Array {
+                name: "contact_pressure",
+                scalar: Scalar::Float64,
+                components: SCALAR,
+                tuples: n_points,
+                values: f64s(|| pressure.iter().copied()),
+            },
+            Array {
+                name: "contact_force",
+                scalar: Scalar::Float64,
+                components: XYZ,
+                tuples: n_points,
+                values: planar(force),
+            },
+            Array {
+                name: "contact_gap",
+                scalar: Scalar::Float64,
+                components: SCALAR,
+                tuples: n_points,
+                values: f64s(|| gap.iter().copied()),
+            },
+        ]);
+    }
+    let mut cell_data = vec![
+        Array {
+            name: "body",
+            scalar: Scalar::Int32,
+            components: SCALAR,
+            tuples: n_cells,
+            values: Box::new(move |w| {
+                mesh.body_of()
+                    .iter()
+                    .copied()
+                    .chain(std::iter::repeat_n(-1, b.len()))
+                    .try_for_each(|t: i32| w.write_all(&t.to_le_bytes()))
+            }),
+        },
+        Array {
+            name: "J",
+            scalar: Scalar::Float64,
+            components: SCALAR,
+            tuples: n_cells,
+            values: f64s(move || {
+                triangles
+                    .iter()
+                    .map(|t| TriGeometry::new(&mesh.corners(t)).j)
+                    .chain(b.iter().map(|e| e.j0))
+            }),
+        },
+        Array {
+            name: "strain",
+            scalar: Scalar::Float64,
+            components: VOIGT,
+            tuples: n_cells,
+            values: voigt(&strains, b.len()),
+        },
+        Array {
+            name: "stress",
+            scalar: Scalar::Float64,
+            components: VOIGT,
+            tuples: n_cells,
+            values: voigt(&stresses, b.len()),
+        },
+    ];
+    if let Some((_, active, pressure)) = strip {
+        let before = triangles.len();
+        cell_data.extend([
+            Array {
+                name: "contact_element_active",
+                scalar: Scalar::UInt8,
+                components: SCALAR,
+                tuples: n_cells,
+                values: Box::new(move |w| {
+                    std::iter::repeat_n(0, before)
+                        .chain(active.iter().map(|&a| u8::from(a)))
+                        .try_for_each(|a| w.write_all(&[a]))
+                }),
+            },
+            Array {
+                name: "contact_element_pressure",
+                scalar: Scalar::Float64,
+                components: SCALAR,
+                tuples: n_cells,
+                values: f64s(move || {
+                    std::iter::repeat_n(0.0, before).chain(pressure.iter().copied())
+                }),
+            },
+        ]);
+    }
+    let grid = Grid {
+        n_points,
+        n_cells,
+        points,
+        cells,
+        point_data,
+        cell_data,
+    };
+    write_file(&grid, path)
+        .map_err(|e| Error::new(Status::Io, format!("cannot write {}: {e}", path.display())))
 }
 
-/// Why `vtkio` could not write, in words: its own messages print their
-/// causes with `Debug` (`I/O error: Os { code: 2, kind: NotFound, … }`),
-/// so the cause is looked for down its chain: the operating system's
-/// error if there is one (`No such file or directory (os error 2)`), else
-/// the innermost cause.
-fn reason(e: &vtkio::Error) -> String {
-    let mut cause: &(dyn std::error::Error + 'static) = e;
-    loop {
-        if let Some(io) = cause.downcast_ref::<std::io::Error>() {
-            return io.to_string();
+/// The arrays of a piece, section by section.
+struct Grid<'a> {
+    n_points: usize,
+    n_cells: usize,
+    points: Vec<Array<'a>>,
+    cells: Vec<Array<'a>>,
+    point_data: Vec<Array<'a>>,
+    cell_data: Vec<Array<'a>>,
+}
+
+impl Grid<'_> {
+    /// The sections in the order of the file, each with its tag and the
+    /// attributes that name its active arrays.
+    fn sections(&self) -> [(&'static str, &'static str, &[Array<'_>]); 4] {
+        [
+            ("PointData", " Vectors=\"displacement\"", &self.point_data),
+            ("CellData", "", &self.cell_data),
+            ("Points", "", &self.points),
+            ("Cells", "", &self.cells),
+        ]
+    }
+
+    /// The XML up to the first byte of appended data.
+    fn header(&self) -> String {
+        let mut x = String::new();
+        // Writing into a String cannot fail.
+        let _ = write!(
+            x,
+            "<?xml version=\"1.0\"?>\n\
+             <VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\" \
+             header_type=\"UInt64\">\n  <UnstructuredGrid>\n    \
+             <Piece NumberOfPoints=\"{}\" NumberOfCells=\"{}\">\n",
+            self.n_points, self.n_cells
+        );
+        let mut offset = 0u64;
+        for (tag, attributes, arrays) in self.sections() {
+            let _ = writeln!(x, "      <{tag}{attributes}>");
+            for a in arrays {
+                let _ = write!(
+                    x,
+                    "        <DataArray type=\"{}\" Name=\"{}\" NumberOfComponents=\"{}\"",
+                    a.scalar.name(),
+                    a.name,
+                    a.components.len()
+                );
+                if a.components.len() > 1 {
+                    for (k, c) in a.components.iter().enumerate() {
+                        let _ = write!(x, " ComponentName{k}=\"{c}\"");
+                    }
+                }
+                let _ = writeln!(x, " format=\"appended\" offset=\"{offset}\"/>");
+                offset += 8 + a.bytes();
+            }
+            let _ = writeln!(x, "      </{tag}>");
         }
-        match cause.source() {
-            Some(next) => cause = next,
-            None => return cause.to_string(),
+        x.push_str("    </Piece>\n  </UnstructuredGrid>\n  <AppendedData encoding=\"raw\">\n   _");
+        x
+    }
+}
+
+fn write_file(grid: &Grid<'_>, path: &Path) -> std::io::Result<()> {
+    let file = std::fs::File::create(path)?;
+    let mut w = BufWriter::with_capacity(1 << 20, file);
+    w.write_all(grid.header().as_bytes())?;
+    for (_, _, arrays) in grid.sections() {
+        for a in arrays {
+            w.write_all(&a.bytes().to_le_bytes())?;
+            (a.values)(&mut w)?;
         }
+    }
+    // The line break before the end tag is where meshio's reader of raw
+    // data ends the data (it cuts at the last one).
+    w.write_all(b"\n  </AppendedData>\n</VTKFile>\n")?;
+    w.flush()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn indices_are_int32_up_to_the_largest_node_index_and_offset_that_fit() {
+        let max = i32::MAX as usize;
+        assert!(!wide_indices(max, max / 3));
+        assert!(wide_indices(max + 1, 1));
+        assert!(wide_indices(1, max / 3 + 1));
+    }
+
+    #[test]
+    fn wide_indices_are_written_as_int64_little_endian() {
+        let mut out = Vec::new();
+        indices(true, || [1usize, 1 << 40].into_iter())(&mut out).unwrap();
+        assert_eq!(out[..8], 1i64.to_le_bytes());
+        assert_eq!(out[8..], (1i64 << 40).to_le_bytes());
+    }
+
+    #[test]
+    fn narrow_indices_are_written_as_int32_little_endian() {
+        let mut out = Vec::new();
+        indices(false, || [7usize, 300].into_iter())(&mut out).unwrap();
+        assert_eq!(out, [7, 0, 0, 0, 44, 1, 0, 0]);
     }
 }
