@@ -73,22 +73,31 @@ pub(crate) struct CondensedState {
 
 /// How a loop that may stop at the interface settled.
 pub(crate) enum Outcome {
-    /// Settled on the interface: its values, with the condensed state they
-    /// are relative to; the whole field is [`expand`]ed when needed.
-    Interface {
-        /// The condensed state (its factor that of the final set).
-        state: Box<CondensedState>,
-        /// The interface values.
-        ui: Vec<f64>,
-        /// The final set.
-        active: Vec<bool>,
-        /// The final friction load factors (empty when frictionless).
-        friction: Vec<f64>,
-        /// One record per iteration.
-        history: Vec<IterationRecord>,
-    },
+    /// Settled on the interface, with the condensed state its values are
+    /// relative to; the whole field is [`expand`]ed when needed.
+    Interface(Box<InterfaceSettled>),
     /// Settled after a full solve (the condensation ended).
     Full(Box<Settled>),
+}
+
+/// A loop settled on the interface.
+pub(crate) struct InterfaceSettled {
+    /// The condensed state (its factor that of the final set).
+    pub state: Box<CondensedState>,
+    /// What it settled at.
+    pub at_interface: AtInterface,
+}
+
+/// The state a loop settled in on the interface.
+pub(crate) struct AtInterface {
+    /// The interface values.
+    pub ui: Vec<f64>,
+    /// The final set.
+    pub active: Vec<bool>,
+    /// The final friction load factors (empty when frictionless).
+    pub friction: Vec<f64>,
+    /// One record per iteration.
+    pub history: Vec<IterationRecord>,
 }
 
 /// The current solution of the loop.
@@ -350,13 +359,16 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
                     Iterate::Condensed(ui) => {
                         let (active, history) = self.set.into_parts();
                         let state = Box::new(self.condensed.expect("a condensed iterate"));
-                        Ok(Outcome::Interface {
-                            state,
+                        let at_interface = AtInterface {
                             ui,
                             active,
                             friction: self.friction,
                             history,
-                        })
+                        };
+                        Ok(Outcome::Interface(Box::new(InterfaceSettled {
+                            state,
+                            at_interface,
+                        })))
                     }
                     other => {
                         self.iterate = other;

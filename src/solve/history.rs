@@ -32,14 +32,14 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Instant;
 
 use super::active_set::{
-    ActiveSetLoop, CondensedState, LoopInput, Outcome as LoopOutcome, RECOVERED, Settled, Target,
-    body_energy, expand,
+    ActiveSetLoop, AtInterface, CondensedState, InterfaceSettled, LoopInput,
+    Outcome as LoopOutcome, RECOVERED, Settled, Target, body_energy, expand,
 };
 use super::condensed::{Condensed, FactorSnapshot};
 use super::diagnostics::singular_error;
 use super::linear::{Structure, check_finite, factor_and_solve};
 use super::memory;
-use super::report::{IterationRecord, SolveInfo, Timings};
+use super::report::{SolveInfo, Timings};
 use super::session::{Holds, Session, Settings, Wanted, analyse, factorisation};
 use super::{Field, Input, Outcome, Start, constraints, contact_outcome, finite_statistics};
 use crate::contact::constraints::Constraints;
@@ -506,7 +506,6 @@ impl History {
         let mesh = input.elements.mesh();
         let prescribed = scaled(input.prescribed, t);
         let before = self.state();
-        let key = self.key;
         let Session {
             dofs,
             pattern,
@@ -516,40 +515,23 @@ impl History {
             holds,
             ..
         } = &mut *session;
-        let set = constraints(
-            input,
-            &prescribed,
-            contact,
-            dofs,
-            options,
-            &self.friction.anchors,
-        )?;
-        let k1 = self.k1.as_mut().expect("a condensed history");
+        let anchors = &self.friction.anchors;
+        let set = constraints(input, &prescribed, contact, dofs, options, anchors)?;
+        let start = self.start(&set, from_initial);
+        let condensed = self.lend(t, &before)?;
         let chol = &mut analysis.as_mut().expect("the history's factor").chol;
-        let x1 = k1.x1_at(t);
-        check_size(k1, &x1, t)?;
-        let mut condensed = k1.state.take().expect("the condensed state is back");
-        condensed.x1 = x1;
-        k1.kept = Some(before.clone());
         let mut info = step_info((dofs, pattern), chol, condensed.system.len());
+        let at = Structure {
+            mesh,
+            dofs,
+            pattern,
+        };
         let loop_input = LoopInput {
-            at: Structure {
-                mesh,
-                dofs,
-                pattern,
-            },
+            at,
             elements: &input.elements,
             set: &set,
             interface: None,
             options: *options,
-        };
-        let start = match from_initial {
-            true => {
-                let initial = set.initial_active();
-                let loads = set.stick_loads(&initial);
-                (initial, loads)
-            }
-            false => warm_start(&set, (&self.warm, &self.friction)),
         };
         // The loop may refactorise the session's system (its condensed
         // matrix singular): K₁ is the session's again only if it did not.
@@ -562,72 +544,117 @@ impl History {
             start,
         )
         .run_to_interface();
+        info.condition_estimate = chol.condition_estimate();
+        info.timings = *timings;
         let step = Step {
             set: &set,
             pairs: input.pairs,
             mesh,
             prescribed: &prescribed,
             dofs,
-            at: (key, t),
+            at: (self.key, t),
         };
         match run {
-            Ok(LoopOutcome::Interface {
-                state,
-                ui,
-                active,
-                friction,
-                history: records,
-            }) => {
-                *holds = Holds::History(self.id);
-                k1.state = Some(*state);
-                k1.kept = None;
-                info.relative_residual = k1.first.relative_residual;
-                info.condition_estimate = chol.condition_estimate();
-                info.timings = *timings;
-                let pending = (ui, active, friction, records);
-                let outcome = match on_interface(k1, step, pending, info) {
-                    Ok(outcome) => outcome,
-                    Err(e) => {
-                        self.set_state(&before)?;
-                        return Err(e);
-                    }
-                };
-                let contact = outcome.contact.as_ref().expect("a contact outcome");
-                self.warm = contact.flags.clone();
-                if let Some(f) = &contact.friction {
-                    self.friction = f.next.clone();
-                }
-                Ok(Stepped {
-                    outcome,
-                    before,
-                    ended: false,
-                })
+            Ok(LoopOutcome::Interface(settled)) => {
+                let InterfaceSettled {
+                    state,
+                    at_interface,
+                } = *settled;
+                self.give_back(holds, state);
+                let outcome = on_interface(self.k1(), step, at_interface, info);
+                self.settled(outcome, before)
             }
-            Ok(LoopOutcome::Full(settled)) => {
-                // The condensed system was singular: solved whole, K₁ is
-                // gone and the history ends with this step.
-                info.relative_residual = system.relative_residual(pattern, &settled.x);
-                info.condition_estimate = chol.condition_estimate();
-                info.timings = *timings;
-                let outcome = on_full_solve(step, *settled, info)?;
-                Ok(Stepped {
-                    outcome,
-                    before,
-                    ended: true,
-                })
+            // The condensed system was singular: solved whole, K₁ is gone
+            // and the history ends with this step.
+            Ok(LoopOutcome::Full(settled)) => Ok(Stepped {
+                outcome: on_full_solve(step, (system, pattern), *settled, info)?,
+                before,
+                ended: true,
+            }),
+            Err(failed) => Err(self.loop_failed(holds, *failed, &before)),
+        }
+    }
+
+    /// The flags and friction loads a step starts from: the last step's, or
+    /// (`from_initial`) the initial set of the step's constraints `set`.
+    fn start(&self, set: &Constraints<'_>, from_initial: bool) -> (Vec<bool>, Vec<f64>) {
+        match from_initial {
+            true => {
+                let initial = set.initial_active();
+                let loads = set.stick_loads(&initial);
+                (initial, loads)
             }
-            Err(failed) => {
-                let (e, state) = *failed;
-                if let Some(mut state) = state {
-                    *holds = Holds::History(self.id);
-                    state.x1 = Vec::new();
-                    k1.state = Some(state);
-                    k1.kept = None;
-                    self.set_state(&before)?;
-                }
-                Err(e)
+            false => warm_start(set, (&self.warm, &self.friction)),
+        }
+    }
+
+    /// The history after a step's loop failed with `e`: back at `before`
+    /// with its condensed state if the loop gave it back (else K₁ is lost,
+    /// and rebuilt by the caller).
+    fn loop_failed(
+        &mut self,
+        holds: &mut Holds,
+        (e, state): (Error, Option<CondensedState>),
+        before: &StepState,
+    ) -> Error {
+        if let Some(mut state) = state {
+            state.x1 = Vec::new();
+            self.give_back(holds, Box::new(state));
+            if let Err(e) = self.set_state(before) {
+                return e;
             }
         }
+        e
+    }
+
+    /// K₁ of a condensed history.
+    fn k1(&self) -> &K1 {
+        self.k1.as_ref().expect("a condensed history")
+    }
+
+    /// Lends K₁'s condensed state to a step's loop at load factor `t` (its
+    /// x₁(t) in), keeping the history's state `before` while it is out.
+    /// Refuses a step whose field would overflow ([`check_size`]).
+    fn lend(&mut self, t: f64, before: &StepState) -> Result<CondensedState> {
+        let k1 = self.k1.as_mut().expect("a condensed history");
+        let x1 = k1.x1_at(t);
+        check_size(k1, &x1, t)?;
+        let mut condensed = k1.state.take().expect("the condensed state is back");
+        condensed.x1 = x1;
+        k1.kept = Some(before.clone());
+        Ok(condensed)
+    }
+
+    /// Takes back the condensed state a loop gave back: the session holds
+    /// K₁ again.
+    fn give_back(&mut self, holds: &mut Holds, state: Box<CondensedState>) {
+        let k1 = self.k1.as_mut().expect("a condensed history");
+        k1.state = Some(*state);
+        k1.kept = None;
+        *holds = Holds::History(self.id);
+    }
+
+    /// The history after a step settled on the interface with `outcome`:
+    /// its warm start and slip state move on, or, on error, it is back at
+    /// `before`.
+    fn settled(&mut self, outcome: Result<Outcome>, before: StepState) -> Result<Stepped> {
+        let outcome = match outcome {
+            Ok(outcome) => outcome,
+            Err(e) => {
+                self.set_state(&before)?;
+                return Err(e);
+            }
+        };
+        let contact = outcome.contact.as_ref().expect("a contact outcome");
+        self.warm = contact.flags.clone();
+        if let Some(f) = &contact.friction {
+            self.friction = f.next.clone();
+        }
+        Ok(Stepped {
+            outcome,
+            before,
+            ended: false,
+        })
     }
 
     /// The whole field of a pending step (global DOFs): u = x₁(t) +
@@ -961,17 +988,24 @@ struct Step<'a, 's> {
     at: (Key, f64),
 }
 
-/// The outcome of a step whose loop settled on the interface (values `ui`
-/// with the final set, friction loads and records): its field stays
-/// pending.
+/// The outcome of a step whose loop settled on the interface (`settled`:
+/// the interface values with the final set, friction loads and records):
+/// its field stays pending. Its statistics report K₁'s residual.
 fn on_interface(
     k1: &K1,
     step: Step<'_, '_>,
-    (ui, active, friction, records): (Vec<f64>, Vec<bool>, Vec<f64>, Vec<IterationRecord>),
-    info: SolveInfo,
+    settled: AtInterface,
+    mut info: SolveInfo,
 ) -> Result<Outcome> {
+    info.relative_residual = k1.first.relative_residual;
     finite_statistics(&info)?;
     let mut warnings = Vec::new();
+    let AtInterface {
+        ui,
+        active,
+        friction,
+        history,
+    } = settled;
     let contact = {
         let x1 = &k1.condensed().x1;
         let sys = &k1.condensed().system;
@@ -980,7 +1014,7 @@ fn on_interface(
             (step.set, step.pairs, step.mesh),
             value,
             (active.clone(), &friction),
-            records,
+            history,
             info,
             &mut warnings,
         )?
@@ -1002,9 +1036,15 @@ fn on_interface(
     })
 }
 
-/// The outcome of a step whose loop ended with a full solve (`settled`):
-/// its whole field at once.
-fn on_full_solve(step: Step<'_, '_>, settled: Settled, info: SolveInfo) -> Result<Outcome> {
+/// The outcome of a step whose loop ended with a full solve (`settled`,
+/// of the final system `system` on `pattern`): its whole field at once.
+fn on_full_solve(
+    step: Step<'_, '_>,
+    (system, pattern): (&super::system::AssembledSystem, &Pattern),
+    settled: Settled,
+    mut info: SolveInfo,
+) -> Result<Outcome> {
+    info.relative_residual = system.relative_residual(pattern, &settled.x);
     finite_statistics(&info)?;
     let mut warnings = Vec::new();
     super::diagnostics::conditioning_warning(&info, &mut warnings);
