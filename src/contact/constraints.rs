@@ -10,10 +10,16 @@
 //! history and the assembled system read parts through this type only;
 //! the shape of a part (a triangle of B, a slave node's gap) stays here.
 
-use super::mortar_set::{MortarSet, MortarState};
-use super::set::{ContactSet, FrictionOutcome, Verdict};
+use super::discretisation::Discretisation;
+use super::law::penalty_lengths;
+use super::mesh::Nodes;
+use super::mortar_set::{self, MortarSet, MortarState, PenaltyData};
+use super::set::{ContactSet, FrictionOutcome, Verdict, element_laws, softer};
+use super::{ContactElement, ContactLaw, ContactOptions, ContactPair};
 use crate::error::Result;
-use crate::fem::assembly::Pattern;
+use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
+use crate::fem::element_loop::ElementLoop;
+use crate::fem::material::Material;
 use crate::fem::mesh::Mesh;
 
 /// The constraints of one solve (module documentation).
@@ -23,6 +29,22 @@ pub struct Constraints<'a> {
     /// Prescribed displacements, a global vector: the values of a part's
     /// DOFs that have no unknown.
     prescribed: &'a [f64],
+}
+
+/// What the constraints of one solve are built from.
+pub struct Build<'a> {
+    /// The bodies' elements with their materials (and the mesh).
+    pub elements: ElementLoop<'a>,
+    /// The contact pairs.
+    pub pairs: &'a [ContactPair],
+    /// How the pairs are discretised.
+    pub discretisation: &'a Discretisation,
+    /// The unknowns.
+    pub dofs: &'a DofMap,
+    /// Prescribed displacements, a global vector.
+    pub prescribed: &'a [f64],
+    /// The solve's options.
+    pub options: &'a ContactOptions,
 }
 
 /// The state a solve's constraints settled in, for its outputs.
@@ -39,6 +61,18 @@ pub struct Settled {
 }
 
 impl<'a> Constraints<'a> {
+    /// The constraints of a built-in solve: the strip pairs' elements of
+    /// B, each element's law from its pair's softer body, frictional
+    /// (docs/method.md §6.15) when a pair has μ > 0 under the frictionless
+    /// law; and the mortar pairs' weighted gaps (§6.11) with the strip's
+    /// penalty per pair. A frictional set starts from the slip `anchors`
+    /// (empty: none).
+    pub fn build(b: Build<'a>, anchors: &[f64]) -> Result<Constraints<'a>> {
+        let strip = strip_set(&b, anchors)?;
+        let mortar = mortar_penalties(&b)?;
+        Ok(Constraints::new(strip, mortar, b.prescribed))
+    }
+
     /// The constraints of the strip set `strip` and the weighted gaps
     /// `mortar`, for the prescribed displacements `prescribed` (a global
     /// vector) they were built with.
@@ -271,4 +305,126 @@ impl<'a> Constraints<'a> {
             mortar,
         })
     }
+}
+
+/// The unknown of global DOF g, if it has one.
+fn equation(dofs: &DofMap) -> impl Fn(usize) -> Option<usize> + '_ {
+    move |g| Some(dofs.free(g)).filter(|&f| f != NOT_FREE)
+}
+
+/// The strip pairs' elements of B in one solve ([`Constraints::build`]).
+fn strip_set<'a>(b: &Build<'a>, anchors: &[f64]) -> Result<ContactSet<'a>> {
+    let mesh = b.elements.mesh();
+    let soft = pair_material(b);
+    let strip = b.discretisation.strip();
+    let laws = element_laws(mesh.index_base(), strip, &soft, mesh.size(), b.options)?;
+    let set = ContactSet::new(
+        Nodes::of(mesh),
+        strip,
+        laws,
+        equation(b.dofs),
+        b.prescribed,
+        b.options,
+    )?;
+    // μ = 0 everywhere is the frictionless set itself, bit for bit; the
+    // stick law already ties the surfaces.
+    let frictional = b.options.law == ContactLaw::Frictionless
+        && strip.iter().any(|e| b.pairs[e.pair].friction > 0.0);
+    if !frictional {
+        return Ok(set);
+    }
+    let mu: Vec<f64> = strip.iter().map(|e| b.pairs[e.pair].friction).collect();
+    // The stick part's shear modulus: G_c = E_c / (2(1 + ν)) of the pair's
+    // softer body, as in the stick law.
+    let shear: Vec<f64> = strip
+        .iter()
+        .map(|e| {
+            let s = soft(e.pair);
+            let e_c = b.options.contact_modulus.unwrap_or(s.young());
+            e_c / (2.0 * (1.0 + s.poisson()))
+        })
+        .collect();
+    set.with_friction(&mu, &shear, anchors, b.prescribed)
+}
+
+/// The mortar pairs' weighted gaps as penalties in one solve
+/// ([`Constraints::build`]); options the weighting does not serve are
+/// refused.
+fn mortar_penalties(b: &Build<'_>) -> Result<MortarSet> {
+    let d = b.discretisation;
+    if !d.has_mortar() {
+        return Ok(MortarSet::default());
+    }
+    let pairs = d.gaps().iter().map(|g| (g.pair, &b.pairs[g.pair]));
+    mortar_set::check_options(b.options, pairs)?;
+    let soft = pair_material(b);
+    let moduli: Vec<f64> = (0..b.pairs.len())
+        .map(|i| b.options.contact_modulus.unwrap_or(soft(i).young()))
+        .collect();
+    let equation = equation(b.dofs);
+    let data = PenaltyData {
+        moduli: &moduli,
+        lambda: b.options.lambda.unwrap_or(b.elements.mesh().size()),
+        h_c: penalty_lengths(d.elements()),
+        equation: &equation,
+        prescribed: b.prescribed,
+    };
+    MortarSet::new(d.gaps(), data)
+}
+
+/// The material that sets each pair's contact law: the softer body's, or
+/// where one side is a rigid tool ([`rigid_sides`]), the other body's.
+fn pair_material<'b>(b: &'b Build<'_>) -> impl Fn(usize) -> Material + 'b {
+    let mesh = b.elements.mesh();
+    let rigid = rigid_sides(b.pairs, b.discretisation.elements(), mesh, b.dofs);
+    move |pair: usize| {
+        let p = &b.pairs[pair];
+        let (m_a, m_b) = (
+            *b.elements.material(p.body_a),
+            *b.elements.material(p.body_b),
+        );
+        match rigid[pair] {
+            [true, false] => m_b,
+            [false, true] => m_a,
+            _ => softer(m_a, m_b),
+        }
+    }
+}
+
+/// For each pair, whether each side (a, b) is a rigid tool: every DOF of
+/// its contact nodes prescribed. Such a side moves as prescribed whatever
+/// its body's stiffness, so its material must not set the pair's contact
+/// law — a "rigid" punch given a nominal E of 1e3 against a steel block
+/// made E_c = 1e3, and the penalty overlap took 99.98 % of the indentation
+/// with an OK status (an outside probe). The pair's law then follows the
+/// other body (docs/method.md §6.14). A pair with no element (or
+/// self-contact, where the sides are one body) keeps the softer body.
+fn rigid_sides(
+    pairs: &[ContactPair],
+    contact: &[ContactElement],
+    mesh: &Mesh,
+    dofs: &DofMap,
+) -> Vec<[bool; 2]> {
+    let mut rigid = vec![[false; 2]; pairs.len()];
+    let mut seen = vec![[false; 2]; pairs.len()];
+    for el in contact {
+        let p = &pairs[el.pair];
+        if p.body_a == p.body_b {
+            continue;
+        }
+        for &n in &el.nodes {
+            let side = match mesh.node_body()[n] {
+                Some(b) if b == p.body_a => 0,
+                Some(b) if b == p.body_b => 1,
+                _ => continue,
+            };
+            let fixed = (0..2).all(|c| dofs.free(2 * n + c) == NOT_FREE);
+            if !seen[el.pair][side] {
+                seen[el.pair][side] = true;
+                rigid[el.pair][side] = true;
+            }
+            rigid[el.pair][side] &= fixed;
+        }
+    }
+    rigid
 }

@@ -29,6 +29,7 @@ pub mod mortar;
 pub(crate) mod mortar_set;
 pub mod pairing;
 pub mod set;
+pub(crate) mod settled;
 pub mod traction;
 
 pub use host::{HostContact, Update};

@@ -403,14 +403,15 @@ impl MortarState {
     /// the value interpolated along the nearest slave edge (zero at a slave
     /// node whose support does not face the master); zero elsewhere. A node
     /// on several pairs (where three bodies meet) gets the mean of its
-    /// pairs' values. Only pair `only` when given.
+    /// pairs' values. Only pair `only` when given. Gives the values and
+    /// which nodes were read.
     pub fn nodal_values(
         &self,
         mesh: &Mesh,
         pairs: &[ContactPair],
         only: Option<usize>,
         value: impl Fn(&SlaveNode) -> f64,
-    ) -> Result<Vec<f64>> {
+    ) -> Result<(Vec<f64>, Vec<bool>)> {
         let x = mesh.nodes();
         let mut sum = vec![0.0; x.len()];
         let mut count = vec![0u32; x.len()];
@@ -457,10 +458,11 @@ impl MortarState {
                 count[m] += 1;
             }
         }
-        Ok(sum
+        let values = sum
             .iter()
             .zip(&count)
             .map(|(s, &c)| if c > 0 { s / f64::from(c) } else { 0.0 })
-            .collect())
+            .collect();
+        Ok((values, count.iter().map(|&c| c > 0).collect()))
     }
 }

@@ -303,6 +303,11 @@ impl<'a> ContactSet<'a> {
         &self.laws
     }
 
+    /// The constitutive law of its elements (which sets their geometry).
+    pub fn law(&self) -> super::ContactLaw {
+        self.options.law
+    }
+
     /// The stiffness and initial-gap load of part `k` when active
     /// ([`ContactSet::parts`]).
     pub fn stiffness(&self, k: usize) -> &ContactStiffness {

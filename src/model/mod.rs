@@ -448,16 +448,9 @@ impl Model {
             }
         };
         session.holds = crate::solve::session::Holds::Solve(revision);
-        let elements = session.contact.strip();
         let options = options.copied();
-        let (solution, warnings) = solution_of(
-            outcome,
-            f_ext,
-            (elements, options),
-            timings,
-            t_start,
-            revision,
-        );
+        let (solution, warnings) =
+            solution_of(outcome, (f_ext, options), timings, t_start, revision);
         self.solve_warnings = warnings;
         if let Some(u) = solution.u.get() {
             reaction_warning(&self.problem, &solution, u, &mut self.solve_warnings);
@@ -587,34 +580,28 @@ impl Model {
     /// Refused after a solve under the mortar weighting, which has no B
     /// ([`Model::contact_mesh`] still gives the strip the pairs would make).
     pub fn contact_elements(&self) -> Result<&[ContactElement]> {
-        Ok(&self.strip_solution()?.elements)
+        Ok(&self.contact_solution()?.state.strip()?.elements)
     }
 
     /// Active flag of every element of B at convergence. Refused after a
     /// solve under the mortar weighting (its state is per slave node:
     /// [`Model::contact_slave_nodes`]).
     pub fn contact_active(&self) -> Result<&[bool]> {
-        Ok(&self.strip_solution()?.active)
+        Ok(&self.contact_solution()?.state.strip()?.active)
     }
 
     /// Contact pressure (positive in compression, zero when inactive) of
     /// every element of B. Refused after a solve under the mortar
     /// weighting ([`Model::contact_slave_nodes`]).
     pub fn contact_pressure(&self) -> Result<&[f64]> {
-        Ok(&self.strip_solution()?.pressure)
+        Ok(&self.contact_solution()?.state.strip()?.pressure)
     }
 
     /// The state of every slave node (pair, node, tributary, mean gap,
     /// pressure, active) after a contact solve under the mortar weighting
     /// ([`ContactWeighting::Mortar`]); refused after one under the strip's.
     pub fn contact_slave_nodes(&self) -> Result<&[SlaveNode]> {
-        let state = self.contact_solution()?.mortar.as_ref();
-        state.map(|m| &m.nodes[..]).ok_or_else(|| {
-            Error::state(
-                "the last contact solve used the strip weighting: its state is per element \
-                 of B (contact_active, contact_pressure), not per slave node",
-            )
-        })
+        self.contact_solution()?.state.slave_nodes()
     }
 
     /// Sets how every contact pair's energy is weighted along its
@@ -633,50 +620,26 @@ impl Model {
         self.problem.contact_weighting()
     }
 
-    /// The contact state of a strip solve, or the error of a mortar one.
-    fn strip_solution(&self) -> Result<&ContactSolution> {
-        let c = self.contact_solution()?;
-        match c.mortar {
-            None => Ok(c),
-            Some(_) => Err(Error::state(
-                "the last contact solve used the mortar weighting: its state is per slave node \
-                 (contact_slave_nodes, contact_nodal_pressures), not per element of B",
-            )),
-        }
-    }
-
     /// The shear traction τ = n·σ·t (t = (−n_y, n_x), n the element's
     /// normal) of every element of B in the last contact solve: zero when
     /// open, |τ| ≤ μ p when sticking, μ p when slipping; all zero when the
     /// solve was frictionless.
     pub fn contact_shear(&self) -> Result<Vec<f64>> {
-        let c = self.strip_solution()?;
-        Ok(match &c.friction {
-            Some(f) => f.shear.clone(),
-            None => vec![0.0; c.elements.len()],
-        })
+        Ok(self.contact_solution()?.state.strip()?.shear())
     }
 
     /// The frictional state of every element of B in the last contact
     /// solve: 0 open, 1 stick, 2 slip (a frictionless solve: 2 where
     /// active, its surfaces slide freely).
     pub fn contact_friction_state(&self) -> Result<Vec<u8>> {
-        let c = self.strip_solution()?;
-        Ok(match &c.friction {
-            Some(f) => f.state.clone(),
-            None => c.active.iter().map(|&a| if a { 2 } else { 0 }).collect(),
-        })
+        Ok(self.contact_solution()?.state.strip()?.friction_state())
     }
 
     /// The energy dissipated by slip in the last step (or solve) at every
     /// element of B, per unit thickness: ½ τ Δγ_p ≥ 0 (docs/method.md
     /// §6.15); zero when frictionless.
     pub fn contact_dissipation(&self) -> Result<Vec<f64>> {
-        let c = self.strip_solution()?;
-        Ok(match &c.friction {
-            Some(f) => f.dissipation.clone(),
-            None => vec![0.0; c.elements.len()],
-        })
+        Ok(self.contact_solution()?.state.strip()?.dissipation())
     }
 
     /// The report of the last contact solve.
@@ -710,11 +673,7 @@ impl Model {
     /// nodes of the other side that its weighted gaps read, the slave's
     /// pressure interpolated along the nearest slave edge.
     pub fn contact_nodal_pressures(&self) -> Result<Vec<f64>> {
-        if let Some(state) = &self.contact_solution()?.mortar {
-            let (mesh, pairs) = (self.problem.mesh_ref()?, self.problem.contact_pairs());
-            return state.nodal_values(mesh, pairs, None, |s| s.pressure);
-        }
-        self.interface_pressures(self.contact_elements()?)
+        self.nodal_pressures(None)
     }
 
     /// The contact pressure of pair `pair` (0-based) alone at every node of
@@ -731,33 +690,22 @@ impl Model {
         if pair >= n {
             return Err(crate::error::no_pair(pair, n));
         }
-        if let Some(state) = &self.contact_solution()?.mortar {
-            let (mesh, pairs) = (self.problem.mesh_ref()?, self.problem.contact_pairs());
-            return state.nodal_values(mesh, pairs, Some(pair), |s| s.pressure);
-        }
-        let elements: Vec<ContactElement> = self
-            .contact_elements()?
-            .iter()
-            .filter(|el| el.pair == pair)
-            .cloned()
-            .collect();
-        self.interface_pressures(&elements)
+        self.nodal_pressures(Some(pair))
     }
 
-    /// `contact::traction::interface_pressures` of `elements` (of the last
-    /// contact solve) at every node, zero elsewhere.
-    fn interface_pressures(&self, elements: &[ContactElement]) -> Result<Vec<f64>> {
-        let mesh = self.problem.mesh_ref()?;
-        let f = self
-            .solution()?
-            .contact_forces_by_pair(&self.problem, self.field()?)?;
-        let mut p = vec![0.0; mesh.nodes().len()];
-        let nodes = crate::contact::mesh::Nodes::of(mesh);
+    /// The nodal pressures of every pair, or of pair `only`
+    /// ([`crate::contact::settled::ContactState::nodal_pressures`]).
+    fn nodal_pressures(&self, only: Option<usize>) -> Result<Vec<f64>> {
+        let c = self.contact_solution()?;
+        let (mesh, pairs) = (self.problem.mesh_ref()?, self.problem.contact_pairs());
+        let f = match c.state.strip.elements.is_empty() {
+            true => Default::default(),
+            false => self
+                .solution()?
+                .contact_forces_by_pair(&self.problem, self.field()?)?,
+        };
         let force = |pair: usize, v: usize| f.get(&(pair, v)).copied().unwrap_or([0.0; 2]);
-        for q in crate::contact::traction::interface_pressures(nodes, elements, force) {
-            p[q.node] = q.pressure;
-        }
-        Ok(p)
+        c.state.nodal_pressures(mesh, pairs, only, force)
     }
 
     /// The normal gap at every node of the last contact solve (zero off the
@@ -793,7 +741,7 @@ fn keep_matrix(
         let friction = s
             .contact
             .as_ref()
-            .and_then(|c| c.friction.as_ref())
+            .and_then(|c| c.state.strip.friction.as_ref())
             .map_or(&[][..], |f| &f.next.loads[..]);
         if solve::restore(session, input, options, (&s.log, friction)).is_ok() {
             session.holds = crate::solve::session::Holds::Solve(revision);
@@ -850,12 +798,12 @@ fn session_of<'s>(
     Ok(slot.as_mut().expect("just built"))
 }
 
-/// The solution (and the solve's warnings) of a solve's outcome; fills
-/// in the timings of the whole call.
+/// The solution (and the solve's warnings) of a solve's outcome under the
+/// contact `options` (none: a solve without contact) for the external
+/// forces `f_ext`; fills in the timings of the whole call.
 fn solution_of(
     outcome: Outcome,
-    f_ext: Vec<f64>,
-    (elements, options): (&[ContactElement], Option<ContactOptions>),
+    (f_ext, options): (Vec<f64>, Option<ContactOptions>),
     mut timings: Timings,
     t_start: Instant,
     revision: u64,
@@ -868,14 +816,9 @@ fn solution_of(
         let mut report = c.report;
         report.info = info;
         ContactSolution {
-            elements: elements.to_vec(),
-            active: c.active,
-            pressure: c.pressure,
-            laws: c.laws,
-            friction: c.friction,
+            state: c.state,
             report,
             options: options.expect("a contact solve has options"),
-            mortar: c.mortar,
         }
     });
     let (u, pending) = match outcome.u {

@@ -3,16 +3,13 @@
 //! stresses, reactions — is computed from them when asked for.
 
 use super::problem::Problem;
-use crate::contact::mortar_set::MortarState;
-use crate::contact::{
-    ContactElement, ContactOptions, ElementLaw, FrictionOutcome, contact_stiffness, law_geometry,
-    linearised_opening, shear_vector,
-};
+use crate::contact::ContactOptions;
+use crate::contact::settled::{ContactState, forces_by_pair};
 use std::collections::BTreeMap;
 use std::sync::OnceLock;
 
 use crate::error::{Error, Result, ensure_finite};
-use crate::fem::element::{TriGeometry, b_hat, tempered_jacobian};
+use crate::fem::element::{b_hat, tempered_jacobian};
 use crate::fem::element_loop::element_values;
 use crate::solve::Pending;
 
@@ -45,23 +42,12 @@ pub(crate) struct Solution {
 /// The contact state of a solution.
 #[derive(Debug, Clone)]
 pub(crate) struct ContactSolution {
-    /// The elements of B.
-    pub elements: Vec<ContactElement>,
-    /// Active flag of every element at convergence.
-    pub active: Vec<bool>,
-    /// Contact pressure of every element (zero when inactive).
-    pub pressure: Vec<f64>,
-    /// Each element's law.
-    pub laws: Vec<ElementLaw>,
-    /// The frictional state, when frictional (docs/method.md §6.15).
-    pub friction: Option<FrictionOutcome>,
+    /// The state the constraints settled in.
+    pub state: ContactState,
     /// The report.
     pub report: ContactReport,
     /// The options of the solve.
     pub options: ContactOptions,
-    /// The state after a solve under the mortar weighting (then `active`,
-    /// `pressure` and `laws` are empty).
-    pub mortar: Option<MortarState>,
 }
 
 impl Solution {
@@ -174,38 +160,8 @@ impl Solution {
             }
             Ok(())
         })?;
-        if let Some(state) = self.contact.as_ref().and_then(|c| c.mortar.as_ref()) {
-            // The penalties' internal forces −p_i c_i on prescribed DOFs.
-            state.forces(|_, g, f| {
-                if fixed[g] {
-                    r[g] -= f;
-                    bound[g] += f64::EPSILON * f.abs();
-                }
-            });
-        } else if let Some(c) = &self.contact {
-            for (k, el) in c.elements.iter().enumerate() {
-                if c.active[k] {
-                    let corners = mesh.corners(&el.nodes);
-                    let geo = law_geometry(TriGeometry::new(&corners), c.options.law, el.normal);
-                    let law = &c.laws[k];
-                    let cs = contact_stiffness(&geo, &law.d, el.normal, el.j0, law.t);
-                    // The shear traction τ of a frictional element acts
-                    // through b_t, on prescribed DOFs too.
-                    let f0 = match &c.friction {
-                        Some(fr) => {
-                            let bt = shear_vector(&corners, el.normal);
-                            {
-                                // The traction, scaled to the share of the
-                                // edge the element carries it on.
-                                let tau = fr.shear[k] * el.facing_share();
-                                std::array::from_fn(|a| cs.f0[a] - tau * bt[a])
-                            }
-                        }
-                        None => cs.f0,
-                    };
-                    add(&el.nodes, &cs.k, Some(&f0));
-                }
-            }
+        if let Some(c) = &self.contact {
+            c.state.add_reactions(mesh, u, fixed, (&mut r, &mut bound));
         }
         for (g, v) in r.iter_mut().enumerate() {
             if fixed[g] {
@@ -222,24 +178,23 @@ impl Solution {
     pub fn contact_forces(&self, problem: &Problem, u: &[f64]) -> Result<Vec<[f64; 2]>> {
         let mesh = problem.mesh_ref()?;
         let mut f = vec![0.0; u.len()];
-        self.for_each_element_force(problem, u, |_, g, v| f[g] += v)?;
+        self.contact_state()?
+            .state
+            .forces(mesh, u, |_, g, v| f[g] += v);
         ensure_finite(f.iter().copied(), 2, "contact force", |v| mesh.node_name(v))?;
         Ok(f.chunks_exact(2).map(|c| [c[0], c[1]]).collect())
     }
 
     /// [`Solution::contact_forces`] of each pair apart: (pair, node) → the
-    /// force of that pair's elements on the node. A node on several pairs
-    /// (where three bodies meet) has one entry per pair.
+    /// force of that pair's constraints on the node. A node on several
+    /// pairs (where three bodies meet) has one entry per pair.
     pub fn contact_forces_by_pair(
         &self,
         problem: &Problem,
         u: &[f64],
     ) -> Result<BTreeMap<(usize, usize), [f64; 2]>> {
         let mesh = problem.mesh_ref()?;
-        let mut f: BTreeMap<(usize, usize), [f64; 2]> = BTreeMap::new();
-        self.for_each_element_force(problem, u, |pair, g, v| {
-            f.entry((pair, g / 2)).or_insert([0.0; 2])[g % 2] += v;
-        })?;
+        let f = forces_by_pair(&self.contact_state()?.state, mesh, u);
         let keys: Vec<(usize, usize)> = f.keys().copied().collect();
         ensure_finite(f.values().flatten().copied(), 2, "contact force", |i| {
             let (pair, v) = keys[i];
@@ -248,76 +203,11 @@ impl Solution {
         Ok(f)
     }
 
-    /// Calls `add(pair, global DOF, value)` with every active element's
-    /// contact force on each of its DOFs: −(K_e u_e − f0_e + τ b_t).
-    fn for_each_element_force(
-        &self,
-        problem: &Problem,
-        u: &[f64],
-        mut add: impl FnMut(usize, usize, f64),
-    ) -> Result<()> {
-        let c = self.contact_state()?;
-        let mesh = problem.mesh_ref()?;
-        if let Some(state) = &c.mortar {
-            state.forces(add);
-            return Ok(());
-        }
-        for (k, el) in c.elements.iter().enumerate() {
-            if !c.active[k] {
-                continue;
-            }
-            let corners = mesh.corners(&el.nodes);
-            let geo = law_geometry(TriGeometry::new(&corners), c.options.law, el.normal);
-            let law = &c.laws[k];
-            let cs = contact_stiffness(&geo, &law.d, el.normal, el.j0, law.t);
-            let ue = element_values(u, &el.nodes);
-            // The shear traction τ of a frictional element acts through b_t.
-            let (tau, bt) = match &c.friction {
-                Some(fr) => (
-                    fr.shear[k] * el.facing_share(),
-                    shear_vector(&corners, el.normal),
-                ),
-                None => (0.0, [0.0; 6]),
-            };
-            for a in 0..6 {
-                let ku: f64 = (0..6).map(|b| cs.k[a * 6 + b] * ue[b]).sum();
-                add(
-                    el.pair,
-                    2 * el.nodes[a / 2] + a % 2,
-                    -(ku - cs.f0[a] + tau * bt[a]),
-                );
-            }
-        }
-        Ok(())
-    }
-
-    /// The normal gap at every node (zero off the interfaces): the
-    /// smallest, over the elements of B at the node, of the distance of the
-    /// element's apex from its interface edge in the deformed configuration
-    /// (linearised, the opening over the edge length). Negative: the
-    /// bodies interpenetrate there.
+    /// The normal gap at every node ([`ContactState::gaps`]).
     pub fn contact_gaps(&self, problem: &Problem, u: &[f64]) -> Result<Vec<f64>> {
         let c = self.contact_state()?;
         let mesh = problem.mesh_ref()?;
-        if let Some(state) = &c.mortar {
-            let pairs = problem.contact_pairs();
-            return state.nodal_values(mesh, pairs, None, |s| s.gap);
-        }
-        let mut gap = vec![f64::INFINITY; mesh.nodes().len()];
-        for el in &c.elements {
-            if el.edge_length <= 0.0 {
-                continue;
-            }
-            let geo = TriGeometry::new(&mesh.corners(&el.nodes));
-            let ue = element_values(u, &el.nodes);
-            let g = linearised_opening(&geo, el.normal, &ue) / el.edge_length;
-            for &v in &el.nodes {
-                gap[v] = gap[v].min(g);
-            }
-        }
-        gap.iter_mut()
-            .filter(|g| **g == f64::INFINITY)
-            .for_each(|g| *g = 0.0);
+        let gap = c.state.gaps(mesh, problem.contact_pairs(), u)?;
         ensure_finite(gap.iter().copied(), 1, "contact gap", |v| mesh.node_name(v))?;
         Ok(gap)
     }

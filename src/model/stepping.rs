@@ -229,11 +229,9 @@ impl Model {
         };
         let dropped = restored.filter(|k| k.contact != contact);
         let f_scaled: Vec<f64> = f_ext.iter().map(|f| t * f).collect();
-        let elements = session.contact.strip();
         let (mut solution, mut solve_warnings) = solution_of(
             outcome,
-            f_scaled,
-            (elements, Some(*options)),
+            (f_scaled, Some(*options)),
             timings,
             t_start,
             revision,

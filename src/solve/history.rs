@@ -483,7 +483,7 @@ impl History {
         let outcome = super::solve_contact(session, &step_input, options, start, begun, timings)?;
         let contact = outcome.contact.as_ref().expect("a contact outcome");
         self.warm = contact.flags.clone();
-        if let Some(f) = &contact.friction {
+        if let Some(f) = &contact.state.strip.friction {
             self.friction = f.next.clone();
         }
         Ok(Stepped {
@@ -647,7 +647,7 @@ impl History {
         };
         let contact = outcome.contact.as_ref().expect("a contact outcome");
         self.warm = contact.flags.clone();
-        if let Some(f) = &contact.friction {
+        if let Some(f) = &contact.state.strip.friction {
             self.friction = f.next.clone();
         }
         Ok(Stepped {

@@ -27,16 +27,12 @@ use linear::{Structure, factor_and_solve};
 use report::{ContactReport, SolveInfo, Timings};
 use session::{Session, Settings, Wanted, factorisation};
 
-use crate::contact::constraints::Constraints;
+use crate::contact::constraints::{Build, Constraints};
 use crate::contact::discretisation::Discretisation;
-use crate::contact::law::penalty_lengths;
-use crate::contact::mortar_set::{self, MortarSet, MortarState, PenaltyData};
-use crate::contact::{
-    ContactElement, ContactLaw, ContactOptions, ContactPair, ContactSet, ElementLaw,
-    FrictionOutcome, FrictionState, Nodes, element_laws, softer,
-};
+use crate::contact::settled::{self, ContactState};
+use crate::contact::{ContactOptions, ContactPair, FrictionState};
 use crate::error::{Result, ensure_finite};
-use crate::fem::assembly::{DofMap, NOT_FREE};
+use crate::fem::assembly::DofMap;
 use crate::fem::body::Softened;
 use crate::fem::element_loop::ElementLoop;
 use crate::fem::mesh::Mesh;
@@ -91,19 +87,10 @@ pub(crate) struct ContactOutcome {
     /// The final flags over the constraints' parts (what the next load
     /// step starts from).
     pub flags: Vec<bool>,
-    /// Active flag of every element of B.
-    pub active: Vec<bool>,
-    /// Contact pressure of every element of B (zero when inactive).
-    pub pressure: Vec<f64>,
-    /// Each element's law.
-    pub laws: Vec<ElementLaw>,
-    /// The frictional state (docs/method.md §6.15), when frictional.
-    pub friction: Option<FrictionOutcome>,
+    /// The state the constraints settled in.
+    pub state: ContactState,
     /// The report (its `info` filled by the caller).
     pub report: ContactReport,
-    /// The weighted gaps' state, when some pair is under the mortar
-    /// weighting.
-    pub mortar: Option<MortarState>,
 }
 
 /// Solves `input` on `session`: without contact when `options` is `None`.
@@ -189,160 +176,27 @@ pub(crate) fn restore(
     Ok(())
 }
 
-/// The constraints of a built-in solve: the strip pairs' elements of B,
-/// each element's law from its pair's softer body, frictional
-/// (docs/method.md §6.15) when a pair has μ > 0 under the frictionless
-/// law, starting from the slip `anchors` (empty: none); and the mortar
-/// pairs' weighted gaps (§6.11) with the strip's penalty per pair; over the
-/// session's unknowns, for the prescribed displacements `prescribed`.
+/// The constraints of a built-in solve ([`Constraints::build`]) of
+/// `input`, for the prescribed displacements `prescribed`, over the
+/// session's unknowns `dofs`, starting from the slip `anchors` (empty:
+/// none).
 pub(crate) fn constraints<'a>(
     input: &Input<'a>,
     prescribed: &'a [f64],
     contact: &'a Discretisation,
-    dofs: &DofMap,
-    options: &ContactOptions,
+    dofs: &'a DofMap,
+    options: &'a ContactOptions,
     anchors: &[f64],
 ) -> Result<Constraints<'a>> {
-    let strip = strip_set(input, prescribed, contact, dofs, options, anchors)?;
-    let mortar = mortar_penalties(input, prescribed, contact, dofs, options)?;
-    Ok(Constraints::new(strip, mortar, prescribed))
-}
-
-/// The strip pairs' elements of B in one solve ([`constraints`]).
-fn strip_set<'a>(
-    input: &Input<'a>,
-    prescribed: &[f64],
-    contact: &'a Discretisation,
-    dofs: &DofMap,
-    options: &ContactOptions,
-    anchors: &[f64],
-) -> Result<ContactSet<'a>> {
-    let mesh = input.elements.mesh();
-    let soft = pair_material(input, contact.elements(), dofs);
-    let strip = contact.strip();
-    let laws = element_laws(mesh.index_base(), strip, &soft, mesh.size(), options)?;
-    let equation = |g: usize| Some(dofs.free(g)).filter(|&f| f != NOT_FREE);
-    let set = ContactSet::new(Nodes::of(mesh), strip, laws, equation, prescribed, options)?;
-    // μ = 0 everywhere is the frictionless set itself, bit for bit; the
-    // stick law already ties the surfaces.
-    let frictional = options.law == ContactLaw::Frictionless
-        && strip.iter().any(|e| input.pairs[e.pair].friction > 0.0);
-    if !frictional {
-        return Ok(set);
-    }
-    let mu: Vec<f64> = strip.iter().map(|e| input.pairs[e.pair].friction).collect();
-    // The stick part's shear modulus: G_c = E_c / (2(1 + ν)) of the pair's
-    // softer body, as in the stick law.
-    let shear: Vec<f64> = strip
-        .iter()
-        .map(|e| {
-            let s = soft(e.pair);
-            let e_c = options.contact_modulus.unwrap_or(s.young());
-            e_c / (2.0 * (1.0 + s.poisson()))
-        })
-        .collect();
-    set.with_friction(&mu, &shear, anchors, prescribed)
-}
-
-/// The mortar pairs' weighted gaps as penalties in one solve
-/// ([`constraints`]); options the weighting does not serve are refused.
-fn mortar_penalties(
-    input: &Input<'_>,
-    prescribed: &[f64],
-    contact: &Discretisation,
-    dofs: &DofMap,
-    options: &ContactOptions,
-) -> Result<MortarSet> {
-    if !contact.has_mortar() {
-        return Ok(MortarSet::default());
-    }
-    let pairs = contact
-        .gaps()
-        .iter()
-        .map(|g| (g.pair, &input.pairs[g.pair]));
-    mortar_set::check_options(options, pairs)?;
-    let moduli = pair_moduli(input, contact.elements(), dofs, options);
-    let equation = |g: usize| Some(dofs.free(g)).filter(|&f| f != NOT_FREE);
-    let data = PenaltyData {
-        moduli: &moduli,
-        lambda: options.lambda.unwrap_or(input.elements.mesh().size()),
-        h_c: penalty_lengths(contact.elements()),
-        equation: &equation,
+    let build = Build {
+        elements: input.elements,
+        pairs: input.pairs,
+        discretisation: contact,
+        dofs,
         prescribed,
+        options,
     };
-    MortarSet::new(contact.gaps(), data)
-}
-
-/// The material that sets each pair's contact law: the softer body's, or
-/// where one side is a rigid tool ([`rigid_sides`]), the other body's.
-fn pair_material<'i>(
-    input: &'i Input<'_>,
-    contact: &[ContactElement],
-    dofs: &DofMap,
-) -> impl Fn(usize) -> crate::fem::material::Material + 'i {
-    let rigid = rigid_sides(input.pairs, contact, input.elements.mesh(), dofs);
-    move |pair: usize| {
-        let p = &input.pairs[pair];
-        let elements = &input.elements;
-        let (a, b) = (*elements.material(p.body_a), *elements.material(p.body_b));
-        match rigid[pair] {
-            [true, false] => b,
-            [false, true] => a,
-            _ => softer(a, b),
-        }
-    }
-}
-
-/// E_c of every pair: the options' contact modulus, else the Young's
-/// modulus of [`pair_material`].
-pub(crate) fn pair_moduli(
-    input: &Input<'_>,
-    contact: &[ContactElement],
-    dofs: &DofMap,
-    options: &ContactOptions,
-) -> Vec<f64> {
-    let soft = pair_material(input, contact, dofs);
-    (0..input.pairs.len())
-        .map(|i| options.contact_modulus.unwrap_or(soft(i).young()))
-        .collect()
-}
-
-/// For each pair, whether each side (a, b) is a rigid tool: every DOF of
-/// its contact nodes prescribed. Such a side moves as prescribed whatever
-/// its body's stiffness, so its material must not set the pair's contact
-/// law — a "rigid" punch given a nominal E of 1e3 against a steel block
-/// made E_c = 1e3, and the penalty overlap took 99.98 % of the indentation
-/// with an OK status (an outside probe). The pair's law then follows the
-/// other body (docs/method.md §6.14). A pair with no element (or
-/// self-contact, where the sides are one body) keeps the softer body.
-fn rigid_sides(
-    pairs: &[ContactPair],
-    contact: &[ContactElement],
-    mesh: &Mesh,
-    dofs: &DofMap,
-) -> Vec<[bool; 2]> {
-    let mut rigid = vec![[false; 2]; pairs.len()];
-    let mut seen = vec![[false; 2]; pairs.len()];
-    for el in contact {
-        let p = &pairs[el.pair];
-        if p.body_a == p.body_b {
-            continue;
-        }
-        for &n in &el.nodes {
-            let side = match mesh.node_body()[n] {
-                Some(b) if b == p.body_a => 0,
-                Some(b) if b == p.body_b => 1,
-                _ => continue,
-            };
-            let fixed = (0..2).all(|c| dofs.free(2 * n + c) == NOT_FREE);
-            if !seen[el.pair][side] {
-                seen[el.pair][side] = true;
-                rigid[el.pair][side] = true;
-            }
-            rigid[el.pair][side] &= fixed;
-        }
-    }
-    rigid
+    Constraints::build(build, anchors)
 }
 
 /// The warning about well-shaped elements that tempering softens.
@@ -501,56 +355,6 @@ pub(crate) fn solve_contact(
     })
 }
 
-/// Below this many correct digits of the largest contact pressure a solve
-/// warns (`precision_warning`).
-const PRESSURE_DIGITS: f64 = 6.0;
-
-/// The error of a solved u over the rounding bound of its value: the solve
-/// adds its own. Measured on the flat punch (h = a/8, E_c = 1e15 … 1e21):
-/// the punch's reaction is off from the support's by 2–40× the rounding
-/// bound of the largest pressure, relative to it.
-const SOLVE_ERROR_FACTOR: f64 = 10.0;
-
-/// Warns when the contact pressures carry fewer than [`PRESSURE_DIGITS`]
-/// correct digits because the penalty's overlaps approach the rounding of
-/// the displacements (docs/method.md §6.14): a very stiff E_c against a
-/// prescribed body leaves a well-conditioned system (no conditioning
-/// warning: the penalty couples free to prescribed unknowns, so it enters
-/// the load) whose forces are nevertheless rounding. The bound compared is
-/// the largest error the displacements' own rounding leaves in an active
-/// element's pressure, against the largest pressure.
-fn precision_warning(
-    set: &ContactSet<'_>,
-    ue_of: impl Fn(usize) -> [f64; 6],
-    active: &[bool],
-    pressure: &[f64],
-    warnings: &mut Vec<String>,
-) {
-    let (mut worst, mut at) = (0.0f64, None);
-    for k in 0..set.len() {
-        if active[k] {
-            let r = SOLVE_ERROR_FACTOR * set.pressure_rounding(k, &ue_of(k));
-            if r > worst {
-                (worst, at) = (r, Some(k));
-            }
-        }
-    }
-    let largest = pressure.iter().fold(0.0f64, |m, p| m.max(p.abs()));
-    let Some(k) = at else { return };
-    if worst <= 10f64.powf(-PRESSURE_DIGITS) * largest {
-        return;
-    }
-    let digits = (largest / worst).log10().max(0.0);
-    warnings.push(format!(
-        "the contact pressures carry about {digits:.0} correct digits: the penalty's overlaps are \
-         near the rounding of the displacements (at contact element {}, the pressure {:.3e} may be off \
-         by {worst:.1e}, against a largest pressure of {largest:.3e}); where the contact carries a \
-         load, lower E_c or λ (docs/method.md §6.14)",
-        k + set.nodes().base,
-        pressure[k]
-    ));
-}
-
 /// Bytes held by the pattern, the matrix values and the factor.
 fn session_memory(
     at: Structure<'_>,
@@ -569,9 +373,9 @@ pub(crate) fn finite_statistics(info: &SolveInfo) -> Result<()> {
     })
 }
 
-/// Pressures, contact length and penetration of the settled set (flags
-/// over parts, with its friction load factors), the unknowns' values read
-/// by `value`, and its frictional state.
+/// The contact outcome of the settled flags `active` (over parts) and
+/// friction load factors `friction` of the constraints `set`, the
+/// unknowns' values read by `value`: its state and report.
 pub(crate) fn contact_outcome(
     (set, pairs, mesh): (&Constraints<'_>, &[ContactPair], &Mesh),
     value: impl Fn(usize) -> f64,
@@ -580,62 +384,19 @@ pub(crate) fn contact_outcome(
     info: SolveInfo,
     warnings: &mut Vec<String>,
 ) -> Result<ContactOutcome> {
-    let settled = set.settled((&active, friction), &value, mesh)?;
-    let strip = set.strip();
-    let name = |k: usize| format!("contact element {}", k + strip.nodes().base);
-    if let Some(f) = &settled.friction {
-        ensure_finite(f.shear.iter().copied(), 1, "shear traction", name)?;
-        ensure_finite(f.dissipation.iter().copied(), 1, "slip dissipation", name)?;
-    }
-    let ue_of = |k: usize| set.element_values(k, &value);
-    let (mut lc, mut max_pen) = (0.0, 0.0f64);
-    for (k, el) in strip.elements().iter().enumerate() {
-        if settled.active[k] && el.edge_length > 0.0 {
-            max_pen = max_pen.max(-strip.opening(k, &ue_of(k)) / el.edge_length);
-        }
-    }
-    // The part of each edge that faces the other side, the longer-active
-    // family of each contact zone (§6.8, §6.11).
-    let (zones_lc, one_sided) = crate::contact::conformity::contact_length_and_warnings(
-        strip.elements(),
-        &settled.active,
-        pairs,
-    );
-    lc += zones_lc;
-    ensure_finite(
-        settled.pressure.iter().copied(),
-        1,
-        "contact pressure",
-        name,
-    )?;
-    precision_warning(strip, ue_of, &settled.active, &settled.pressure, warnings);
-    warnings.extend(one_sided);
-    let mut active_count = settled.active.iter().filter(|&&a| a).count();
-    if let Some(m) = &settled.mortar {
-        let on = || m.nodes.iter().filter(|n| n.active);
-        lc += on().map(|n| n.tributary).sum::<f64>();
-        max_pen = on().fold(max_pen, |worst, n| worst.max(-n.gap));
-        active_count += on().count();
-    }
-    ensure_finite([lc, max_pen], 1, "contact length or penetration", |_| {
-        "the contact report".to_string()
-    })?;
+    let s = settled::settle(set, (active, friction), value, (mesh, pairs), warnings)?;
     let report = ContactReport {
         iterations: history.len(),
-        elements: strip.len() + set.mortar().len(),
-        active: active_count,
-        contact_length: lc,
-        max_penetration: max_pen,
+        elements: s.parts,
+        active: s.active,
+        contact_length: s.contact_length,
+        max_penetration: s.max_penetration,
         history,
         info,
     };
     Ok(ContactOutcome {
-        flags: active,
-        active: settled.active,
-        pressure: settled.pressure,
-        laws: strip.laws().to_vec(),
-        friction: settled.friction,
+        flags: s.flags,
+        state: s.state,
         report,
-        mortar: settled.mortar,
     })
 }
