@@ -2005,6 +2005,32 @@ static void the_contact_length_with_nothing_active_is_plus_zero(void) {
   tfem_contact_destroy(c);
 }
 
+/* Under the mortar weighting a contact solve that settles with no slave
+ * node active reported a contact length of -0.0 (a sum of nothing starts
+ * from -0.0 in Rust): two blocks clamped apart across a gap of 0.1. */
+static mesh_t Z;
+static void a_mortar_solve_with_nothing_active_reports_plus_zero(void) {
+  grid(&Z, 4, 1, 0.0, -1.0, 1.0, 1.0, 1, 200);
+  grid(&Z, 3, 1, 0.0, 0.1, 1.0, 1.0, 2, 210);
+  tfem_model *m = model_of(&Z, 2, 1000.0, 1.0, TFEM_PLANE_MODE_STRAIN);
+  CHECK(tfem_fix_edges(m, 202, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 202, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 213, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 213, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_add_contact_pair(m, 203, 212, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_set_contact_weighting(m, TFEM_CONTACT_WEIGHTING_MORTAR) == TFEM_STATUS_OK);
+  tfem_contact_report rep;
+  memset(&rep, 0xff, sizeof rep);
+  CHECK(tfem_solve_contact(m, NULL, &rep) == TFEM_STATUS_OK);
+  CHECK(rep.active == 0);
+  CHECK(rep.contact_length == 0.0 && !signbit(rep.contact_length));
+  CHECK(rep.max_penetration == 0.0 && !signbit(rep.max_penetration));
+  double p[2 * 64];
+  CHECK(tfem_get_contact_nodal_pressures(m, p, (size_t)Z.nn) == TFEM_STATUS_OK);
+  for (int v = 0; v < Z.nn; ++v) CHECK(p[v] == 0.0 && !signbit(p[v]));
+  tfem_destroy(m);
+}
+
 /* A non-matching host pair (side 1's nodes at 0, 2/3, 2 against 0, 1, 2)
  * is accepted at every length scale: its degeneracy test compared a length
  * with an area and refused every pair beyond ~1e12 length units. */
@@ -2755,6 +2781,7 @@ int main(int argc, char **argv) {
   the_mesh_reads_back_as_the_model_holds_it();
   a_host_side_given_clockwise_is_refused();
   a_failed_call_between_load_steps_keeps_the_history();
+  a_mortar_solve_with_nothing_active_reports_plus_zero();
   friction_obeys_coulomb_and_restarts_bit_for_bit();
   fuzz_found_defects_at_the_friction_boundary();
   facing_tags_are_paired_automatically();

@@ -1243,15 +1243,14 @@ pub fn check_facing(x: &[[f64; 2]], a: &Side, b: &Side) -> Result<()> {
 pub fn strip(nodes: Nodes<'_>, pair: usize, a: &Side, b: &Side) -> Result<Vec<ContactElement>> {
     match conforming(nodes, pair, a, b) {
         Ok(elements) => Ok(elements),
-        Err(conforming) => nonconforming(nodes, pair, a, b).map_err(|e| {
-            // The strip's reason comes first; the conforming test's, cut
-            // short, says why the strip was tried (messages stay short).
-            let mut why: String = conforming.message().chars().take(160).collect();
-            if why.len() < conforming.message().len() {
-                why.push('…');
-            }
+        // The strip's reason is the one to give, with why the strip was
+        // tried; the conforming test's own message (which node has no
+        // partner) would double the length, and cut to fit it ended
+        // mid-number ("… 6.544e-").
+        Err(_) => nonconforming(nodes, pair, a, b).map_err(|e| {
             Error::contact(format!(
-                "{} (as the strip triangulation; as a conforming interface: {why})",
+                "{} (the two sides' nodes do not match, so B is the strip triangulation \
+                 between them)",
                 e.message()
             ))
         }),

@@ -341,16 +341,23 @@ pub fn settle(
     ensure_finite([lc, max_pen], 1, "contact length or penetration", |_| {
         "the contact report".to_string()
     })?;
+    // +0.0 where a computation left −0.0 (a signed zero means nothing here;
+    // a contact length of −0.0 was reported): x + 0.0 changes nothing else.
+    let (lc, max_pen) = (lc + 0.0, max_pen + 0.0);
+    let mut mortar = settled.mortar;
+    for node in mortar.iter_mut().flat_map(|m| &mut m.nodes) {
+        (node.gap, node.pressure) = (node.gap + 0.0, node.pressure + 0.0);
+    }
     let state = ContactState {
         strip: StripState {
             elements: strip.elements().to_vec(),
             active: settled.active,
-            pressure: settled.pressure,
+            pressure: settled.pressure.iter().map(|p| p + 0.0).collect(),
             laws: strip.laws().to_vec(),
             friction: settled.friction,
             law: strip.law(),
         },
-        mortar: settled.mortar,
+        mortar,
     };
     Ok(Settlement {
         flags: active,

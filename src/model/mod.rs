@@ -20,7 +20,9 @@ use std::time::Instant;
 
 pub use problem::Problem;
 
-use solution::{ContactReport, ContactSolution, Solution, SolveInfo, SystemMatrix, Timings};
+use solution::{
+    ContactReport, ContactSolution, PositiveZero, Solution, SolveInfo, SystemMatrix, Timings,
+};
 
 use crate::contact::mortar::SlaveNode;
 use crate::contact::{ContactElement, ContactOptions, ContactPair, ContactWeighting};
@@ -503,13 +505,14 @@ impl Model {
 
     /// Nodal displacements [u, v] of the last solve.
     pub fn displacements(&self) -> Result<Vec<[f64; 2]>> {
-        Ok(Solution::displacements(self.field()?))
+        Ok(Solution::displacements(self.field()?).positive_zero())
     }
 
     /// Work of the external loads, Σ f·u (per unit thickness): for a
     /// pressure load, the compliance ∫ p (−u·n).
     pub fn external_work(&self) -> Result<f64> {
-        self.solution()?.external_work(self.field()?)
+        let work = self.solution()?.external_work(self.field()?);
+        work.map(PositiveZero::positive_zero)
     }
 
     /// Statistics of the last solve.
@@ -542,12 +545,14 @@ impl Model {
     /// request: B̂u / max(J, Jmin), the usual strain for J >= Jmin and the
     /// tempered one below (consistent with the tempered energy).
     pub fn element_strains(&self) -> Result<Vec<[f64; 3]>> {
-        self.solution()?.strains(&self.problem, self.field()?)
+        let strains = self.solution()?.strains(&self.problem, self.field()?);
+        strains.map(PositiveZero::positive_zero)
     }
 
     /// Element stresses [σ_xx, σ_yy, σ_xy] = D ε, computed on request.
     pub fn element_stresses(&self) -> Result<Vec<[f64; 3]>> {
-        self.solution()?.stresses(&self.problem, self.field()?)
+        let stresses = self.solution()?.stresses(&self.problem, self.field()?);
+        stresses.map(PositiveZero::positive_zero)
     }
 
     /// J (twice the signed area) of every triangle in the initial
@@ -566,7 +571,8 @@ impl Model {
     /// body and warns where a body's may carry fewer than six correct
     /// digits ([`Model::warnings`]; docs/method.md §6.14).
     pub fn reactions(&self) -> Result<Vec<[f64; 2]>> {
-        self.solution()?.reactions(&self.problem, self.field()?)
+        let reactions = self.solution()?.reactions(&self.problem, self.field()?);
+        reactions.map(PositiveZero::positive_zero)
     }
 
     fn contact_solution(&self) -> Result<&ContactSolution> {
@@ -625,7 +631,7 @@ impl Model {
     /// open, |τ| ≤ μ p when sticking, μ p when slipping; all zero when the
     /// solve was frictionless.
     pub fn contact_shear(&self) -> Result<Vec<f64>> {
-        Ok(self.contact_solution()?.state.strip()?.shear())
+        Ok(self.contact_solution()?.state.strip()?.shear().positive_zero())
     }
 
     /// The frictional state of every element of B in the last contact
@@ -639,7 +645,7 @@ impl Model {
     /// element of B, per unit thickness: ½ τ Δγ_p ≥ 0 (docs/method.md
     /// §6.15); zero when frictionless.
     pub fn contact_dissipation(&self) -> Result<Vec<f64>> {
-        Ok(self.contact_solution()?.state.strip()?.dissipation())
+        Ok(self.contact_solution()?.state.strip()?.dissipation().positive_zero())
     }
 
     /// The report of the last contact solve.
@@ -651,8 +657,8 @@ impl Model {
     /// solve, [f_x, f_y] per node (zero off the interfaces; force per unit
     /// thickness), computed on request. It sums to zero over each pair.
     pub fn contact_forces(&self) -> Result<Vec<[f64; 2]>> {
-        self.solution()?
-            .contact_forces(&self.problem, self.field()?)
+        let forces = self.solution()?.contact_forces(&self.problem, self.field()?);
+        forces.map(PositiveZero::positive_zero)
     }
 
     /// The contact pressure at every node of the last contact solve (force
@@ -705,7 +711,8 @@ impl Model {
                 .contact_forces_by_pair(&self.problem, self.field()?)?,
         };
         let force = |pair: usize, v: usize| f.get(&(pair, v)).copied().unwrap_or([0.0; 2]);
-        c.state.nodal_pressures(mesh, pairs, only, force)
+        let p = c.state.nodal_pressures(mesh, pairs, only, force);
+        p.map(PositiveZero::positive_zero)
     }
 
     /// The normal gap at every node of the last contact solve (zero off the
@@ -715,7 +722,8 @@ impl Model {
     /// Under the mortar weighting: a slave node's mean gap G_i/m_i, read
     /// at the master's nodes along the slave.
     pub fn contact_gaps(&self) -> Result<Vec<f64>> {
-        self.solution()?.contact_gaps(&self.problem, self.field()?)
+        let gaps = self.solution()?.contact_gaps(&self.problem, self.field()?);
+        gaps.map(PositiveZero::positive_zero)
     }
 
     /// The contact mesh B of the declared pairs, available before any

@@ -16,6 +16,34 @@ use crate::solve::Pending;
 pub use crate::solve::report::{ContactReport, IterationRecord, SolveInfo, Timings};
 pub use crate::solve::system::SystemMatrix;
 
+/// Results carry +0.0 where a computation left −0.0 (a sum of nothing, a
+/// product with a negative zero): a signed zero means nothing in a field or
+/// a force, and an output printed "-0" reads as a sign that is not there (a
+/// contact length of −0.0 was reported).
+pub(crate) trait PositiveZero {
+    /// The value with every −0.0 made +0.0 (nothing else changes: x + 0.0
+    /// is x for every other double).
+    fn positive_zero(self) -> Self;
+}
+
+impl PositiveZero for f64 {
+    fn positive_zero(self) -> f64 {
+        self + 0.0
+    }
+}
+
+impl<const N: usize> PositiveZero for [f64; N] {
+    fn positive_zero(self) -> [f64; N] {
+        self.map(|v| v + 0.0)
+    }
+}
+
+impl<T: PositiveZero> PositiveZero for Vec<T> {
+    fn positive_zero(self) -> Vec<T> {
+        self.into_iter().map(PositiveZero::positive_zero).collect()
+    }
+}
+
 /// The results of one successful solve of one revision of a problem.
 #[derive(Debug, Clone)]
 pub(crate) struct Solution {

@@ -98,6 +98,9 @@ impl StepState {
     /// `parts` parts, of which `frictional` are elements with friction
     /// (a normal and a stick part each, with their slip and loads).
     pub fn fits(&self, parts: usize, frictional: usize) -> Result<()> {
+        if self.is_fresh() {
+            return Ok(());
+        }
         if self.warm.len() != parts || self.factor_active.len() != parts {
             // Parts without friction, and with friction (a stick part more
             // per element of B).
@@ -126,6 +129,16 @@ impl StepState {
             )));
         }
         Ok(())
+    }
+}
+
+impl StepState {
+    /// Whether it is the state before any step of a history that does not
+    /// condense its interface (no set yet: its first step starts from the
+    /// initial set of its own loads), which a revert of that step brings
+    /// back.
+    pub fn is_fresh(&self) -> bool {
+        self.warm.is_empty()
     }
 }
 
@@ -170,6 +183,8 @@ pub(crate) struct History {
 struct K1 {
     /// The problem revision whose loads `x_load` solves.
     loads: u64,
+    /// The set of constraints K₁ holds (also while `state` is lent).
+    reference: Vec<bool>,
     /// K₁'s condensed state (lent to the loop during a step).
     state: Option<CondensedState>,
     x_load: Vec<f64>,
@@ -195,6 +210,11 @@ struct K1 {
 impl K1 {
     fn condensed(&self) -> &CondensedState {
         self.state.as_ref().expect("the condensed state is back")
+    }
+
+    /// The set K₁ holds.
+    fn reference(&self) -> Vec<bool> {
+        self.reference.clone()
     }
 
     /// K₁'s solution at load factor `t`: t·x_load + x_gap.
@@ -313,6 +333,15 @@ impl History {
     /// the state's set.
     pub fn set_state(&mut self, state: &StepState) -> Result<()> {
         state.fits(self.parts, self.frictional)?;
+        if state.is_fresh() {
+            // Back before the first step: its set, no slip.
+            self.warm = match &self.k1 {
+                Some(k1) => k1.reference(),
+                None => Vec::new(),
+            };
+            self.friction = FrictionState::default();
+            return Ok(());
+        }
         if let Some(k1) = self.k1.as_mut().filter(|k| state.base == Some(k.base)) {
             let condensed = k1.state.as_mut().expect("the condensed state is back");
             condensed.system.restore_factor(&state.factor)?;
@@ -796,6 +825,7 @@ fn begin_k1(
     info.interface_unknowns = condensed.len();
     let k1 = K1 {
         loads: revision,
+        reference: reference.clone(),
         state: Some(CondensedState {
             system: condensed,
             x1: Vec::new(),
