@@ -68,6 +68,62 @@ pub struct HostContact {
     built: Option<Built>,
 }
 
+/// A side as the host gives it to [`HostContact::add_side`], named for
+/// messages: what each step of adding it reads.
+struct GivenSide<'a> {
+    /// How messages name the side (`Side::name`).
+    name: String,
+    tag: i32,
+    body: i32,
+    /// The host's numbers of the side's interface nodes.
+    nodes: &'a [i64],
+    /// Each node's coordinates.
+    xy: &'a [[f64; 2]],
+    /// Each node's x and y equations (below the index base: none).
+    equations: &'a [[i64; 2]],
+    /// The side's edges as pairs of host node numbers.
+    edges: &'a [[i64; 2]],
+}
+
+impl GivenSide<'_> {
+    /// Refuses per-node arrays of different lengths.
+    fn check_lengths(&self) -> Result<()> {
+        let n = self.nodes.len();
+        if self.xy.len() != n || self.equations.len() != n {
+            return Err(Error::argument(format!(
+                "{}: {n} nodes but {} coordinates and {} equation pairs",
+                self.name,
+                self.xy.len(),
+                self.equations.len()
+            )));
+        }
+        Ok(())
+    }
+}
+
+/// A side's nodes and edges checked against the context without changing
+/// it: what [`HostContact::add_side`] commits once the whole side is
+/// accepted, so that on error nothing changes.
+struct StagedSide {
+    /// The side's nodes new to the context, in the order first given.
+    fresh: Vec<FreshNode>,
+    /// The context's node numbers and `fresh`'s, to local indices.
+    local: HashMap<i64, usize>,
+    /// The coordinates of the context's nodes, then `fresh`'s.
+    x: Vec<[f64; 2]>,
+    /// The side's edges over local indices.
+    edges: Vec<[usize; 2]>,
+}
+
+/// An interface node as the context keeps it.
+struct FreshNode {
+    /// The host's number.
+    id: i64,
+    x: [f64; 2],
+    /// The 0-based equations of its x and y unknowns.
+    equations: [Option<usize>; 2],
+}
+
 /// The most values a host vector of `f64` can hold (a Rust slice, and any
 /// C array, spans at most `isize::MAX` bytes): every equation is below it.
 const MAX_EQUATIONS: usize = isize::MAX as usize / std::mem::size_of::<f64>();
@@ -290,118 +346,205 @@ impl HostContact {
         edges: &[[i64; 2]],
     ) -> Result<usize> {
         self.check_open()?;
-        // The side in messages, as every message of the context names it
-        // (`Side::name`): its index, which pairs are declared with, and
-        // the host's tag.
-        let side_name = format!("side {} (tag {tag})", self.sides.len());
-        if xy.len() != nodes.len() || equations.len() != nodes.len() {
-            return Err(Error::argument(format!(
-                "{side_name}: {} nodes but {} coordinates and {} equation pairs",
-                nodes.len(),
-                xy.len(),
-                equations.len()
-            )));
-        }
-        // Every structure sized by the caller's counts is reserved
-        // fallibly before any work (`error::reserved`).
-        let what = side_name.clone();
-        let mut fresh: Vec<(i64, [f64; 2], [Option<usize>; 2])> = reserved(nodes.len(), &what)?;
-        let mut pairs = reserved(edges.len(), &what)?;
-        let mut x = reserved(self.x.len() + nodes.len(), &what)?;
+        let given = GivenSide {
+            // As every message of the context names a side (`Side::name`):
+            // its index, which pairs are declared with, and the host's tag.
+            name: format!("side {} (tag {tag})", self.sides.len()),
+            tag,
+            body,
+            nodes,
+            xy,
+            equations,
+            edges,
+        };
+        given.check_lengths()?;
+        let mut staged = self.stage(&given)?;
+        self.stage_nodes(&given, &mut staged)?;
+        self.reserve_commit(&staged, &given.name)?;
+        self.stage_edges(&given, &mut staged)?;
+        let side = self.staged_side(&given, &staged)?;
+        let shared = self.shared_with(&staged, &given.name)?;
+        Ok(self.commit(staged, side, material, shared))
+    }
+
+    /// An empty staging of `given` beside the context's nodes: every
+    /// structure sized by the caller's counts reserved fallibly before any
+    /// work (`error::reserved`), so that a count too large for memory is
+    /// an error, not an abort of the host.
+    fn stage(&self, given: &GivenSide) -> Result<StagedSide> {
+        let what = &given.name;
+        let fresh = reserved(given.nodes.len(), what)?;
+        let edges = reserved(given.edges.len(), what)?;
+        let x = reserved(self.x.len() + given.nodes.len(), what)?;
         let mut local = HashMap::new();
-        let room = self.local.len() + nodes.len();
+        let room = self.local.len() + given.nodes.len();
         local
             .try_reserve(room)
-            .map_err(|_| out_of_memory::<(i64, usize)>(room, &what))?;
+            .map_err(|_| out_of_memory::<(i64, usize)>(room, what))?;
         local.extend(self.local.iter().map(|(&k, &v)| (k, v)));
-        for (i, (&id, (&p, eq))) in nodes.iter().zip(xy.iter().zip(equations)).enumerate() {
-            // A number below the base would name no node of the host's
-            // (and was accepted, read back as if it did).
-            if id < self.base as i64 {
-                return Err(Error::argument(format!(
-                    "{side_name}: node {id} (entry {}) is below the index base {}",
-                    i + self.base,
-                    self.base
-                )));
-            }
-            let mut unknowns = [None; 2];
-            for c in 0..2 {
-                unknowns[c] = self.equation_of(eq[c]).map_err(|limit| {
-                    Error::argument(format!(
-                        "{side_name}: node {id} (entry {}) has equation {} for its {} \
-                         unknown, beyond any host vector (equations run from the index base \
-                         {} to at most {limit})",
-                        i + self.base,
-                        eq[c],
-                        ["x", "y"][c],
-                        self.base
-                    ))
-                })?;
-            }
-            let eq = unknowns;
-            if !(p[0].is_finite() && p[1].is_finite()) {
-                return Err(Error::argument(format!(
-                    "{side_name}: node {id} has coordinates ({:?}, {:?})",
-                    p[0], p[1]
-                )));
-            }
-            match local.get(&id) {
+        Ok(StagedSide {
+            fresh,
+            local,
+            x,
+            edges,
+        })
+    }
+
+    /// Stages the side's nodes, each checked ([`Self::checked_node`]):
+    /// a node new to the context is added, one given before (by another
+    /// side, a corner shared by bodies, or by this one) must come with the
+    /// same coordinates and equations. Then the coordinates of all.
+    fn stage_nodes(&self, given: &GivenSide, staged: &mut StagedSide) -> Result<()> {
+        for i in 0..given.nodes.len() {
+            let node = self.checked_node(given, i)?;
+            match staged.local.get(&node.id) {
                 Some(&k) => {
                     let (x0, e0) = match k < self.x.len() {
                         true => (self.x[k], self.equation[k]),
-                        false => (fresh[k - self.x.len()].1, fresh[k - self.x.len()].2),
+                        false => {
+                            let known = &staged.fresh[k - self.x.len()];
+                            (known.x, known.equations)
+                        }
                     };
-                    if x0 != p || e0 != eq {
+                    if x0 != node.x || e0 != node.equations {
                         return Err(Error::argument(format!(
-                            "{side_name}: node {id} (entry {}) is given again with other \
+                            "{}: node {} (entry {}) is given again with other \
                              coordinates or equations",
+                            given.name,
+                            node.id,
                             i + self.base
                         )));
                     }
                 }
                 None => {
-                    local.insert(id, self.x.len() + fresh.len());
-                    fresh.push((id, p, eq));
+                    staged
+                        .local
+                        .insert(node.id, self.x.len() + staged.fresh.len());
+                    staged.fresh.push(node);
                 }
             }
         }
-        x.extend_from_slice(&self.x);
-        x.extend(fresh.iter().map(|f| f.1));
-        reserve_more(&mut self.node_id, fresh.len(), &what)?;
-        reserve_more(&mut self.equation, fresh.len(), &what)?;
-        for (e, &[p, q]) in edges.iter().enumerate() {
+        staged.x.extend_from_slice(&self.x);
+        staged.x.extend(staged.fresh.iter().map(|f| f.x));
+        Ok(())
+    }
+
+    /// Entry `i` of the side's nodes on its own: its number (a number
+    /// below the base would name no node of the host's, and was accepted,
+    /// read back as if it did), its equations ([`Self::equation_of`]) and
+    /// its coordinates (finite).
+    fn checked_node(&self, given: &GivenSide, i: usize) -> Result<FreshNode> {
+        let (id, p, eq) = (given.nodes[i], given.xy[i], given.equations[i]);
+        if id < self.base as i64 {
+            return Err(Error::argument(format!(
+                "{}: node {id} (entry {}) is below the index base {}",
+                given.name,
+                i + self.base,
+                self.base
+            )));
+        }
+        let mut unknowns = [None; 2];
+        for c in 0..2 {
+            unknowns[c] = self.equation_of(eq[c]).map_err(|limit| {
+                Error::argument(format!(
+                    "{}: node {id} (entry {}) has equation {} for its {} \
+                     unknown, beyond any host vector (equations run from the index base \
+                     {} to at most {limit})",
+                    given.name,
+                    i + self.base,
+                    eq[c],
+                    ["x", "y"][c],
+                    self.base
+                ))
+            })?;
+        }
+        if !(p[0].is_finite() && p[1].is_finite()) {
+            return Err(Error::argument(format!(
+                "{}: node {id} has coordinates ({:?}, {:?})",
+                given.name, p[0], p[1]
+            )));
+        }
+        Ok(FreshNode {
+            id,
+            x: p,
+            equations: unknowns,
+        })
+    }
+
+    /// Room for the staged nodes in the context's own lists, so that
+    /// [`Self::commit`] cannot fail halfway.
+    fn reserve_commit(&mut self, staged: &StagedSide, what: &str) -> Result<()> {
+        reserve_more(&mut self.node_id, staged.fresh.len(), what)?;
+        reserve_more(&mut self.equation, staged.fresh.len(), what)
+    }
+
+    /// Stages the side's edges over local indices: an edge must name nodes
+    /// the context now knows.
+    fn stage_edges(&self, given: &GivenSide, staged: &mut StagedSide) -> Result<()> {
+        for (e, &[p, q]) in given.edges.iter().enumerate() {
             let find = |id: i64| {
-                local.get(&id).copied().ok_or_else(|| {
+                staged.local.get(&id).copied().ok_or_else(|| {
                     Error::argument(format!(
-                        "{side_name}: edge {} names node {id}, not one of the side's nodes",
+                        "{}: edge {} names node {id}, not one of the side's nodes",
+                        given.name,
                         e + self.base
                     ))
                 })
             };
-            pairs.push([find(p)?, find(q)?]);
+            let edge = [find(p)?, find(q)?];
+            staged.edges.push(edge);
         }
-        let mut ids = reserved(x.len(), &what)?;
+        Ok(())
+    }
+
+    /// The side over the context's nodes and the staged ones, its edges
+    /// checked to run one way ([`Side::from_edges`]).
+    fn staged_side(&self, given: &GivenSide, staged: &StagedSide) -> Result<Side> {
+        let mut ids = reserved(staged.x.len(), &given.name)?;
         ids.extend_from_slice(&self.node_id);
-        ids.extend(fresh.iter().map(|f| f.0));
+        ids.extend(staged.fresh.iter().map(|f| f.id));
         let named = Nodes {
-            x: &x,
+            x: &staged.x,
             base: self.base,
             ids: Some(&ids),
         };
-        let side = Side::from_edges(named, self.sides.len(), tag, body, &pairs)?;
-        let n_dofs = 2 * (self.equation.len() + fresh.len());
-        let equations = self.equation.iter().chain(fresh.iter().map(|f| &f.2));
-        let shared =
-            self.shared_equations || shares_equations(equations.flatten().copied(), n_dofs, &what)?;
-        self.x = x;
-        for (id, _, eq) in fresh {
-            self.node_id.push(id);
-            self.equation.push(eq);
+        let index = self.sides.len();
+        Side::from_edges(named, index, given.tag, given.body, &staged.edges)
+    }
+
+    /// Whether two DOFs share an equation once the staged nodes are added
+    /// (then [`HostContact::scatter_add`] checks running sums).
+    fn shared_with(&self, staged: &StagedSide, what: &str) -> Result<bool> {
+        if self.shared_equations {
+            return Ok(true);
         }
-        self.local = local;
+        let n_dofs = 2 * (self.equation.len() + staged.fresh.len());
+        let equations = self
+            .equation
+            .iter()
+            .chain(staged.fresh.iter().map(|f| &f.equations));
+        shares_equations(equations.flatten().copied(), n_dofs, what)
+    }
+
+    /// Makes the staged side the context's; cannot fail (its memory is
+    /// reserved), so that an error before leaves the context as it was.
+    /// Returns the side's index.
+    fn commit(
+        &mut self,
+        staged: StagedSide,
+        side: Side,
+        material: Material,
+        shared: bool,
+    ) -> usize {
+        self.x = staged.x;
+        for node in staged.fresh {
+            self.node_id.push(node.id);
+            self.equation.push(node.equations);
+        }
+        self.local = staged.local;
         self.shared_equations = shared;
         self.sides.push((side, material));
-        Ok(self.sides.len() - 1)
+        self.sides.len() - 1
     }
 
     /// Declares sides `a` and `b` (indices from [`HostContact::add_side`],

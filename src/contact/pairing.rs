@@ -308,44 +308,93 @@ pub fn facing_pairs(mesh: &Mesh, tags: Option<&[i32]>, tolerance: f64) -> Result
     if edges.len() < 2 {
         return Ok(Vec::new());
     }
-    // A uniform grid of cells of the larger of δ and the mean edge length,
-    // coarsened if it would hold many more cells than edges.
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
-    let mut total = 0.0;
-    for e in &edges {
-        for k in 0..2 {
-            lo[k] = lo[k].min(e.p[k]).min(e.q[k]);
-            hi[k] = hi[k].max(e.p[k]).max(e.q[k]);
+    let bins = Bins::new(&edges, tolerance);
+    let near = near_facing(&edges, &bins, tolerance);
+    Ok(tag_pairs(&edges, &near))
+}
+
+/// The candidate edges binned in a uniform grid, so that the edges near
+/// one are looked for in a few cells rather than among all edges.
+struct Bins {
+    /// The lower corner of the edges' bounding box.
+    lo: [f64; 2],
+    /// The side of a cell.
+    cell: f64,
+    /// The edges whose bounding box meets each cell.
+    cells: HashMap<(i64, i64), Vec<usize>>,
+}
+
+impl Bins {
+    /// Cells of the larger of δ and the mean edge length, coarsened if
+    /// there would be many more cells than edges.
+    fn new(edges: &[Edge], tolerance: f64) -> Bins {
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        let mut total = 0.0;
+        for e in edges {
+            for k in 0..2 {
+                lo[k] = lo[k].min(e.p[k]).min(e.q[k]);
+                hi[k] = hi[k].max(e.p[k]).max(e.q[k]);
+            }
+            total += sub(e.q, e.p)[0].hypot(sub(e.q, e.p)[1]);
         }
-        total += sub(e.q, e.p)[0].hypot(sub(e.q, e.p)[1]);
+        let extent = (hi[0] - lo[0]).max(hi[1] - lo[1]);
+        let mut cell = (total / edges.len() as f64).max(tolerance);
+        let cap = (4 * edges.len()) as f64;
+        if (extent / cell).powi(2) > cap {
+            cell = extent / cap.sqrt();
+        }
+        let mut bins = Bins {
+            lo,
+            cell,
+            cells: HashMap::new(),
+        };
+        for (k, e) in edges.iter().enumerate() {
+            for c in bins.cells_of(e, 0.0) {
+                bins.cells.entry(c).or_default().push(k);
+            }
+        }
+        bins
     }
-    let extent = (hi[0] - lo[0]).max(hi[1] - lo[1]);
-    let mut cell = (total / edges.len() as f64).max(tolerance);
-    let cap = (4 * edges.len()) as f64;
-    if (extent / cell).powi(2) > cap {
-        cell = extent / cap.sqrt();
+
+    /// The cell index of coordinate `x` along axis `k`.
+    fn index(&self, x: f64, k: usize) -> i64 {
+        ((x - self.lo[k]) / self.cell).floor() as i64
     }
-    let index = |x: f64, k: usize| -> i64 { ((x - lo[k]) / cell).floor() as i64 };
-    let cells_of = |e: &Edge, grow: f64| {
+
+    /// The cells that the bounding box of `e`, grown by `grow`, meets.
+    fn cells_of(&self, e: &Edge, grow: f64) -> impl Iterator<Item = (i64, i64)> + use<> {
         let (x0, x1) = (e.p[0].min(e.q[0]) - grow, e.p[0].max(e.q[0]) + grow);
         let (y0, y1) = (e.p[1].min(e.q[1]) - grow, e.p[1].max(e.q[1]) + grow);
-        (index(x0, 0)..=index(x1, 0))
-            .flat_map(move |i| (index(y0, 1)..=index(y1, 1)).map(move |j| (i, j)))
-    };
-    let mut grid: HashMap<(i64, i64), Vec<usize>> = HashMap::new();
-    for (k, e) in edges.iter().enumerate() {
-        for c in cells_of(e, 0.0) {
-            grid.entry(c).or_default().push(k);
-        }
+        let rows = self.index(y0, 1)..=self.index(y1, 1);
+        (self.index(x0, 0)..=self.index(x1, 0)).flat_map(move |i| rows.clone().map(move |j| (i, j)))
     }
-    // Every pair of edges facing each other within the tolerance, then
-    // those with a third body between them dropped.
+
+    /// The edges binned in cell `c`, its (column, row): a genuine pair,
+    /// as the cells are keyed.
+    fn edges_in(&self, c: (i64, i64)) -> &[usize] {
+        self.cells.get(&c).map_or(&[], Vec::as_slice)
+    }
+}
+
+/// An edge found facing another within the tolerance.
+#[derive(Clone, Copy)]
+struct Near {
+    /// The edge's index among the candidates.
+    edge: usize,
+    /// Its distance from the other.
+    distance: f64,
+}
+
+/// For every edge, the edges of other bodies that face it ([`facing`])
+/// within `tolerance`: each pair found once, and listed under both edges.
+fn near_facing(edges: &[Edge], bins: &Bins, tolerance: f64) -> Vec<Vec<Near>> {
+    // The last edge whose neighbourhood each edge was met in: an edge in
+    // several of its cells is looked at once.
     let mut seen = vec![usize::MAX; edges.len()];
-    let mut near: Vec<Vec<(usize, f64)>> = vec![Vec::new(); edges.len()];
+    let mut near: Vec<Vec<Near>> = vec![Vec::new(); edges.len()];
     for (k, e) in edges.iter().enumerate() {
-        for c in cells_of(e, tolerance) {
-            let Some(list) = grid.get(&c) else { continue };
-            for &m in list {
+        for c in bins.cells_of(e, tolerance) {
+            for &m in bins.edges_in(c) {
                 if m <= k || seen[m] == k {
                     continue;
                 }
@@ -354,27 +403,38 @@ pub fn facing_pairs(mesh: &Mesh, tags: Option<&[i32]>, tolerance: f64) -> Result
                 if f.body == e.body || !facing(e, f) {
                     continue;
                 }
-                // A gap of exactly δ pairs: the distance is computed from
-                // coordinates, so it may exceed δ by their rounding (a
-                // probe's gap of 0.1 read 0.10000000000000009).
-                let scale = [e.p, e.q, f.p, f.q]
-                    .iter()
-                    .fold(0.0f64, |m, x| m.max(x[0].abs()).max(x[1].abs()));
-                let distance = segment_distance(e.p, e.q, f.p, f.q);
-                if distance > tolerance + 4.0 * f64::EPSILON * scale {
+                let Some(distance) = distance_within(e, f, tolerance) else {
                     continue;
-                }
-                near[k].push((m, distance));
-                near[m].push((k, distance));
+                };
+                near[k].push(Near { edge: m, distance });
+                near[m].push(Near { edge: k, distance });
             }
         }
     }
+    near
+}
+
+/// The distance between edges `e` and `f` if it is at most `tolerance`
+/// up to the rounding of their coordinates: the distance is computed from
+/// coordinates, so a gap of exactly δ may exceed it by their rounding (a
+/// probe's gap of 0.1 read 0.10000000000000009), and must still pair.
+fn distance_within(e: &Edge, f: &Edge, tolerance: f64) -> Option<f64> {
+    let scale = [e.p, e.q, f.p, f.q]
+        .iter()
+        .fold(0.0f64, |m, x| m.max(x[0].abs()).max(x[1].abs()));
+    let distance = segment_distance(e.p, e.q, f.p, f.q);
+    (distance <= tolerance + 4.0 * f64::EPSILON * scale).then_some(distance)
+}
+
+/// The pairs of tags of the edges facing each other with no third body
+/// between them ([`hidden`]), each at the smallest distance of its
+/// edges, sorted by tags.
+fn tag_pairs(edges: &[Edge], near: &[Vec<Near>]) -> Vec<FacingPair> {
+    let hidden = |a: usize, b: &Edge| hidden(&edges[a], b, near[a].iter().map(|n| &edges[n.edge]));
     let mut found: BTreeMap<(i32, i32), FacingPair> = BTreeMap::new();
     for (k, e) in edges.iter().enumerate() {
-        for &(m, distance) in &near[k] {
+        for &Near { edge: m, distance } in &near[k] {
             let f = &edges[m];
-            let hidden =
-                |a: usize, b: &Edge| hidden(&edges[a], b, near[a].iter().map(|&(g, _)| &edges[g]));
             if m <= k || hidden(k, f) || hidden(m, e) {
                 continue;
             }
@@ -389,7 +449,7 @@ pub fn facing_pairs(mesh: &Mesh, tags: Option<&[i32]>, tolerance: f64) -> Result
             entry.distance = entry.distance.min(distance);
         }
     }
-    Ok(found.into_values().collect())
+    found.into_values().collect()
 }
 
 #[cfg(test)]

@@ -55,7 +55,8 @@ pub fn assemble(
     let (mut lo, mut hi) = target.pattern.split_columns(mid, values);
     let part = |cols: &mut Columns<'_>, rhs: &mut [f64], below: bool| {
         cols.clear();
-        assemble_columns(elements, target, prescribed, cols, rhs, (cut, below))
+        let side = CutSide { cut, below };
+        assemble_columns(elements, target, prescribed, cols, rhs, side)
     };
     let (r_lo, r_hi) = rayon::join(
         || part(&mut lo, rhs_lo, true),
@@ -68,21 +69,39 @@ pub fn assemble(
     }
 }
 
-/// What the loop knows of a triangle before computing it: its global DOFs,
-/// their unknowns, and whether this side owns it.
-type Selected = ([usize; 6], [usize; 6], bool);
+/// Which side of the cut between the two column ranges one assembly
+/// takes: the elements without unknowns are shared out by it, so that the
+/// two sides check every element once.
+#[derive(Clone, Copy)]
+struct CutSide {
+    /// The node of the first unknown above the cut.
+    cut: usize,
+    /// Whether this side is the lower column range.
+    below: bool,
+}
+
+/// What the loop knows of a triangle before computing it, so that the
+/// element's stiffness is computed only where this side needs it.
+struct Selected {
+    /// The global DOFs, node-major as in `DofMap::element_dofs`.
+    gd: [usize; 6],
+    /// Their unknowns ([`NOT_FREE`] where prescribed).
+    free: [usize; 6],
+    /// Whether this side owns the element (reports its tempering).
+    owns: bool,
+}
 
 /// Adds the body elements' stiffness into the columns of `cols` and
 /// their prescribed-displacement loads into `rhs` (the rows of the same
 /// range). Visits the elements with an unknown in the range and those
-/// without unknowns whose first node is on the `side` of node `cut`,
+/// without unknowns whose lowest node is on `side` of its cut node,
 /// so that the two sides of a cut check every element. Returns the
 /// elements that tempering softens among those it owns (first unknown
 /// in the range, or none and on its side): how many, and the first; or
 /// the first element that fails, with its index.
 ///
 /// Unknowns are numbered in node order, so the range's unknowns sit on
-/// nodes up to `cut` (below) or from `cut` on (above): an element
+/// nodes up to the cut (below) or from the cut on (above): an element
 /// entirely on the other side is skipped on its node numbers alone,
 /// without looking up its unknowns.
 fn assemble_columns(
@@ -95,7 +114,7 @@ fn assemble_columns(
     prescribed: &[f64],
     cols: &mut Columns<'_>,
     rhs: &mut [f64],
-    (cut, below): (usize, bool),
+    CutSide { cut, below }: CutSide,
 ) -> std::result::Result<Softened, (usize, Error)> {
     debug_assert_eq!(dofs.per_node(), 2);
     let range = cols.range();
@@ -130,9 +149,9 @@ fn assemble_columns(
         if !owns && !free.iter().any(|f| range.contains(f)) {
             return None;
         }
-        Some((gd, free, owns))
+        Some(Selected { gd, free, owns })
     };
-    elements.visit(select, |el, (gd, free, owns)| {
+    elements.visit(select, |el, Selected { gd, free, owns }| {
         let e = el.index;
         if let Jmin::Tempered(jmin) = el.jmin {
             if owns && el.geo.j < jmin && el.geo.j >= WELL_SHAPED * el.geo.h * el.geo.h {

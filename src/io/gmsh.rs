@@ -581,9 +581,9 @@ fn entity_kind(dim: i32) -> &'static str {
     }
 }
 
-impl Groups<'_> {
+impl<'a> Groups<'a> {
     /// The physical groups of an entity.
-    fn of(&self, dim: i32, entity: i32) -> &[i32] {
+    fn of(&self, dim: i32, entity: i32) -> &'a [i32] {
         let Some(e) = self.entities else { return &[] };
         let found = match dim {
             0 => e.points.iter().find(|p| p.0 == entity).map(|p| &p.1),
@@ -717,16 +717,24 @@ fn block_of<T>(blocks: &[T], first: impl Fn(&T) -> usize, i: usize) -> Option<&T
     k.checked_sub(1).map(|k| &blocks[k])
 }
 
-/// A section's header against what its blocks held: `claimed` is the
-/// header's (count, minimum tag, maximum tag), `range` the smallest and
-/// largest tags found.
-fn check_header(
-    what: &str,
-    claimed: (usize, u64, u64),
-    found: usize,
-    range: (u64, u64),
-) -> Parse<()> {
-    let (n, min, max) = claimed;
+/// What a section's header announces of the items in its blocks, read
+/// before the blocks and checked against them after
+/// ([`check_header`]).
+#[derive(Clone, Copy)]
+struct Announced {
+    /// How many items the blocks hold.
+    count: usize,
+    /// The smallest tag among them.
+    min: u64,
+    /// The largest tag among them.
+    max: u64,
+}
+
+/// A section's header against what its blocks held: `found` items, their
+/// tags running over `range` (smallest, largest: a genuine pair, as
+/// [`tag_range`] gives it).
+fn check_header(what: &str, claimed: Announced, found: usize, range: (u64, u64)) -> Parse<()> {
+    let Announced { count: n, min, max } = claimed;
     if found != n {
         return Err(format!("the header announces {n} {what}s but the blocks hold {found}").into());
     }
@@ -749,9 +757,11 @@ fn nodes(r: &mut Reader) -> Parse<Nodes> {
     const BLOCK: Cost = cost(3, 1, 0);
     const NODE: Cost = cost(0, 1, 3);
     let n_blocks = r.count("the number of entity blocks", BLOCK)?;
-    let n_nodes = r.count("the number of nodes", NODE)?;
-    let min = r.size("the minimum node tag")?;
-    let max = r.size("the maximum node tag")?;
+    let claimed = Announced {
+        count: r.count("the number of nodes", NODE)?,
+        min: r.size("the minimum node tag")?,
+        max: r.size("the maximum node tag")?,
+    };
     let mut out = Nodes::default();
     for b in 0..n_blocks {
         node_block(r, &mut out)
@@ -759,7 +769,7 @@ fn nodes(r: &mut Reader) -> Parse<Nodes> {
     }
     check_header(
         "node",
-        (n_nodes, min, max),
+        claimed,
         out.xyz.len(),
         tag_range(out.tags.iter().copied()),
     )?;
@@ -845,9 +855,11 @@ fn elements(r: &mut Reader, groups: Groups) -> Parse<Vec<Block>> {
     // The smallest element: a point, its tag and one node.
     const ELEMENT: Cost = cost(0, 2, 0);
     let n_blocks = r.count("the number of entity blocks", BLOCK)?;
-    let n_elements = r.count("the number of elements", ELEMENT)?;
-    let min = r.size("the minimum element tag")?;
-    let max = r.size("the maximum element tag")?;
+    let claimed = Announced {
+        count: r.count("the number of elements", ELEMENT)?,
+        min: r.size("the minimum element tag")?,
+        max: r.size("the maximum element tag")?,
+    };
     let mut blocks = Vec::new();
     let (mut found, mut range) = (0, (u64::MAX, 0));
     for b in 0..n_blocks {
@@ -858,13 +870,13 @@ fn elements(r: &mut Reader, groups: Groups) -> Parse<Vec<Block>> {
             blocks.push(block);
         }
     }
-    check_header("element", (n_elements, min, max), found, range)?;
+    check_header("element", claimed, found, range)?;
     Ok(blocks)
 }
 
-/// One block; counts its elements in `found` and widens `range` to their
-/// tags. An element type we cannot use is refused naming the entity and
-/// its physical groups.
+/// One block; counts its elements in `found` and widens `range` (smallest,
+/// largest: a genuine pair) to their tags. An element type we cannot use
+/// is refused naming the entity and its physical groups.
 fn element_block(
     r: &mut Reader,
     groups: Groups,
@@ -1136,184 +1148,300 @@ impl Places for FilePlaces<'_> {
     }
 }
 
+/// The mesh of the file's bytes: its sections checked, its elements
+/// taken as triangles and tagged edges, the mesh validated with messages
+/// in the file's terms, and what the model cannot hold said in warnings.
 fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
-    let file = parse(bytes)?;
-    let entities = file
-        .entities
-        .ok_or_else(|| Fail::mesh("$Entities: no such section, and physical groups are needed"))?;
-    let nodes = file
-        .nodes
-        .ok_or_else(|| Fail::mesh("$Nodes: no such section"))?;
-    let blocks = file
-        .elements
-        .ok_or_else(|| Fail::mesh("$Elements: no such section"))?;
-    let group_names = file.names.unwrap_or_default();
+    let Sections {
+        entities,
+        nodes,
+        blocks,
+        names,
+    } = parse(bytes)?.required()?;
     let groups = Groups {
         entities: Some(&entities),
-        names: &group_names,
+        names: &names,
     };
-    // Where a node lies: its block's entity.
-    let node_place = |k: usize| {
-        block_of(&nodes.blocks, |b| b.0, k).map(|&(_, dim, entity)| groups.place(dim, entity))
+    check_planar(&nodes, groups)?;
+    let index = NodeIndex {
+        nodes: &nodes,
+        groups,
     };
+    let (mut triangles, mut edges) = (Triangles::default(), Edges::default());
+    for block in &blocks {
+        if block.dim == 2 {
+            triangles.add_block(block, &index)?;
+        } else if let Some(physical) = entities.curves.get(&block.entity) {
+            edges.add_block(block, physical, &index)?;
+        }
+    }
+    if triangles.nodes.is_empty() {
+        return Err(Fail::mesh("$Elements: no triangles in a physical surface"));
+    }
+    let mut mesh = validated_mesh(&nodes, triangles, &edges, groups, index_base)?;
+    warn_surfaces_in_several_groups(&mut mesh, &blocks, groups);
+    warn_physical_points(&mut mesh, &entities.points);
+    Ok(mesh)
+}
 
+/// The sections a mesh is built from, all present.
+struct Sections {
+    entities: Entities,
+    nodes: Nodes,
+    blocks: Vec<Block>,
+    /// Empty when the file names no group.
+    names: GroupNames,
+}
+
+impl MshFile {
+    /// The sections a mesh needs, a missing one refused by name:
+    /// `$Entities` too, as bodies and tags are its physical groups.
+    fn required(self) -> Parse<Sections> {
+        let entities = self.entities.ok_or_else(|| {
+            Fail::mesh("$Entities: no such section, and physical groups are needed")
+        })?;
+        let nodes = self
+            .nodes
+            .ok_or_else(|| Fail::mesh("$Nodes: no such section"))?;
+        let blocks = self
+            .elements
+            .ok_or_else(|| Fail::mesh("$Elements: no such section"))?;
+        Ok(Sections {
+            entities,
+            nodes,
+            blocks,
+            names: self.names.unwrap_or_default(),
+        })
+    }
+}
+
+/// Refuses a node off the plane z = 0 (a NaN z too), named by its tag and
+/// entity: the model is 2D, and dropping z would solve another geometry
+/// without a word.
+fn check_planar(nodes: &Nodes, groups: Groups) -> Parse<()> {
     let scale = nodes
         .xyz
         .iter()
         .flat_map(|p| [p[0].abs(), p[1].abs()])
         .fold(0.0, f64::max)
         .max(f64::MIN_POSITIVE);
-    // A NaN z is refused too.
-    if let Some((k, p)) = nodes
+    let Some((k, p)) = nodes
         .xyz
         .iter()
         .enumerate()
         .find(|(_, p)| p[2].is_nan() || p[2].abs() > 1e-12 * scale)
-    {
-        let of = node_place(k).map_or_else(String::new, |p| format!(" of {p}"));
-        return Err(Fail::mesh(format!(
-            "$Nodes: node {}{of} has z = {:?}: only 2D meshes in the plane z = 0 are supported",
-            nodes.tags[k], p[2]
-        )));
-    }
+    else {
+        return Ok(());
+    };
+    // Where the node lies: its block's entity.
+    let place =
+        block_of(&nodes.blocks, |b| b.0, k).map(|&(_, dim, entity)| groups.place(dim, entity));
+    let of = place.map_or_else(String::new, |p| format!(" of {p}"));
+    Err(Fail::mesh(format!(
+        "$Nodes: node {}{of} has z = {:?}: only 2D meshes in the plane z = 0 are supported",
+        nodes.tags[k], p[2]
+    )))
+}
 
-    let lookup = |block: &Block, element: u64, tag: u64| -> Parse<usize> {
-        nodes.index_of.get(&tag).copied().ok_or_else(|| {
+/// The nodes of the file's elements, looked up by tag: the file's tags
+/// are not indices (node tag 1001 may be index 0).
+struct NodeIndex<'a> {
+    nodes: &'a Nodes,
+    /// For naming the element of a tag `$Nodes` does not define.
+    groups: Groups<'a>,
+}
+
+impl NodeIndex<'_> {
+    /// The index of node `tag` of element `element` of `block`, or an
+    /// error naming the element and its entity.
+    fn of(&self, block: &Block, element: u64, tag: u64) -> Parse<usize> {
+        self.nodes.index_of.get(&tag).copied().ok_or_else(|| {
             Fail::mesh(format!(
                 "$Elements: element {element} of {} refers to node {tag}, which is not defined \
                  in $Nodes",
-                groups.place(block.dim, block.entity)
+                self.groups.place(block.dim, block.entity)
             ))
         })
-    };
-    let (mut triangles, mut bodies, mut edges, mut edge_tags) =
-        (Vec::new(), Vec::new(), Vec::new(), Vec::new());
-    // The file's element tag of each triangle and edge, and the entity of
-    // each block of them, for messages.
-    let (mut triangle_elements, mut edge_elements) = (Vec::new(), Vec::new());
-    let (mut triangle_blocks, mut edge_blocks) = (Vec::new(), Vec::new());
-    // Surfaces in several physical groups: (surface, body, groups dropped).
-    let mut several = std::collections::BTreeMap::new();
-    for block in &blocks {
-        if block.dim == 2 {
-            let physical = groups.of(2, block.entity);
-            // A triangle has one body: the first group.
-            if let [body, dropped @ ..] = physical {
-                if !dropped.is_empty() {
-                    several.insert(block.entity, (*body, dropped));
-                }
-            }
-            let body = physical.first().copied().ok_or_else(|| {
-                    Fail::mesh(format!(
-                        "$Elements: surface {} has no physical group in $Entities: every surface must be a body",
-                        block.entity
-                    ))
-                })?;
-            let first = triangles.len();
-            triangle_blocks.push((first, block.entity, body));
-            let mut area = 0.0;
-            for (&element, e) in block
-                .tags
-                .iter()
-                .zip(block.node_tags.chunks_exact(block.nodes_per))
-            {
-                let t = [
-                    lookup(block, element, e[0])?,
-                    lookup(block, element, e[1])?,
-                    lookup(block, element, e[2])?,
-                ];
-                let [a, b, c] = t.map(|v| nodes.xyz[v]);
-                area += (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
-                triangles.push(t);
-                bodies.push(body);
-                triangle_elements.push(element);
-            }
-            // Gmsh orients a surface's triangles along its normal, which
-            // may be −z: make the surface counter-clockwise as a whole
-            // (individual inverted triangles, if any, stay inverted).
-            if area < 0.0 {
-                for t in &mut triangles[first..] {
-                    t.swap(1, 2);
-                }
-            }
-        } else if let Some(physical) = entities.curves.get(&block.entity) {
-            // An edge carries every group of its curve: a curve may be in
-            // its own group and in "the whole boundary" (the mesh holds an
-            // edge under several tags). Curves without a physical group
-            // carry no load or contact.
-            edge_blocks.push((edges.len(), block.entity));
-            for (&element, e) in block
-                .tags
-                .iter()
-                .zip(block.node_tags.chunks_exact(block.nodes_per))
-            {
-                let ends = [lookup(block, element, e[0])?, lookup(block, element, e[1])?];
-                for &tag in physical {
-                    edges.push(ends);
-                    edge_tags.push(tag);
-                    edge_elements.push(element);
-                }
+    }
+}
+
+/// The triangles of the physical surfaces as the mesh takes them, with
+/// where each came from in the file, for messages.
+#[derive(Default)]
+struct Triangles {
+    nodes: Vec<[usize; 3]>,
+    bodies: Vec<i32>,
+    /// The file's element tag of each triangle.
+    elements: Vec<u64>,
+    /// (first triangle, surface, body) of each block.
+    blocks: Vec<(usize, i32, i32)>,
+}
+
+impl Triangles {
+    /// Adds a block of triangles, of the body of its surface's first
+    /// physical group (a surface in none is refused: every surface must be
+    /// a body), the surface turned counter-clockwise as a whole.
+    fn add_block(&mut self, block: &Block, index: &NodeIndex) -> Parse<()> {
+        // A triangle has one body: the first group.
+        let body = index.groups.of(2, block.entity).first().copied().ok_or_else(|| {
+                Fail::mesh(format!(
+                    "$Elements: surface {} has no physical group in $Entities: every surface must be a body",
+                    block.entity
+                ))
+            })?;
+        let first = self.nodes.len();
+        self.blocks.push((first, block.entity, body));
+        let mut area = 0.0;
+        for (&element, e) in block
+            .tags
+            .iter()
+            .zip(block.node_tags.chunks_exact(block.nodes_per))
+        {
+            let t = [
+                index.of(block, element, e[0])?,
+                index.of(block, element, e[1])?,
+                index.of(block, element, e[2])?,
+            ];
+            let [a, b, c] = t.map(|v| index.nodes.xyz[v]);
+            area += (b[0] - a[0]) * (c[1] - a[1]) - (c[0] - a[0]) * (b[1] - a[1]);
+            self.nodes.push(t);
+            self.bodies.push(body);
+            self.elements.push(element);
+        }
+        // Gmsh orients a surface's triangles along its normal, which
+        // may be −z: make the surface counter-clockwise as a whole
+        // (individual inverted triangles, if any, stay inverted).
+        if area < 0.0 {
+            for t in &mut self.nodes[first..] {
+                t.swap(1, 2);
             }
         }
+        Ok(())
     }
-    if triangles.is_empty() {
-        return Err(Fail::mesh("$Elements: no triangles in a physical surface"));
+}
+
+/// The tagged boundary edges of the physical curves as the mesh takes
+/// them, with where each came from in the file, for messages.
+#[derive(Default)]
+struct Edges {
+    ends: Vec<[usize; 2]>,
+    /// The tag of each edge: a physical group of its curve.
+    tags: Vec<i32>,
+    /// The file's element tag of each edge.
+    elements: Vec<u64>,
+    /// (first edge, curve) of each block.
+    blocks: Vec<(usize, i32)>,
+}
+
+impl Edges {
+    /// Adds a block of lines of a curve in the groups `physical`, each
+    /// line once per group: a curve may be in its own group and in "the
+    /// whole boundary" (the mesh holds an edge under several tags). Curves
+    /// without a physical group carry no load or contact.
+    fn add_block(&mut self, block: &Block, physical: &[i32], index: &NodeIndex) -> Parse<()> {
+        self.blocks.push((self.ends.len(), block.entity));
+        for (&element, e) in block
+            .tags
+            .iter()
+            .zip(block.node_tags.chunks_exact(block.nodes_per))
+        {
+            let ends = [
+                index.of(block, element, e[0])?,
+                index.of(block, element, e[1])?,
+            ];
+            for &tag in physical {
+                self.ends.push(ends);
+                self.tags.push(tag);
+                self.elements.push(element);
+            }
+        }
+        Ok(())
     }
+}
+
+/// The mesh of the file's nodes, triangles and edges, validated with
+/// messages that name nodes and elements as the file does: the user knows
+/// them by their tags and physical groups, not by our indices.
+fn validated_mesh(
+    nodes: &Nodes,
+    triangles: Triangles,
+    edges: &Edges,
+    groups: Groups,
+    index_base: usize,
+) -> Parse<Mesh> {
     let coords: Vec<[f64; 2]> = nodes.xyz.iter().map(|p| [p[0], p[1]]).collect();
     let mesh_error = |e: Error| Fail {
         status: e.status(),
         message: e.message().to_string(),
     };
-    // The user knows the file's nodes and elements by their tags and
-    // physical groups, not by our indices (node tag 1001 may be index 0).
     let places = FilePlaces {
         groups,
         nodes: &nodes.blocks,
-        triangles: &triangle_blocks,
-        edges: &edge_blocks,
-        edge_tags: &edge_tags,
+        triangles: &triangles.blocks,
+        edges: &edges.blocks,
+        edge_tags: &edges.tags,
     };
     let names = Names {
         index_base,
         file: "Gmsh",
         node_tags: Some(&nodes.tags),
-        triangle_tags: Some(&triangle_elements),
-        edge_tags: Some(&edge_elements),
+        triangle_tags: Some(&triangles.elements),
+        edge_tags: Some(&edges.elements),
         places: Some(&places),
     };
-    let mut mesh = Mesh::with_names(coords, triangles, bodies, &names).map_err(mesh_error)?;
-    mesh.set_boundary_edges_with_names(&edges, &edge_tags, &names)
+    let mut mesh =
+        Mesh::with_names(coords, triangles.nodes, triangles.bodies, &names).map_err(mesh_error)?;
+    mesh.set_boundary_edges_with_names(&edges.ends, &edges.tags, &names)
         .map_err(mesh_error)?;
-    // What the file says and the model cannot hold, said rather than
-    // dropped without a word.
-    if !several.is_empty() {
-        let items: Vec<String> = several
-            .iter()
-            .map(|(surface, (body, dropped))| {
-                format!("surface {surface} (body {body}; dropped {})", tags(dropped))
-            })
-            .collect();
-        mesh.warn(format!(
-            "{} surface(s) in several physical groups: a triangle has one body, the first \
-             group; the others are dropped: {}",
-            items.len(),
-            bounded_list(&items)
-        ));
-    }
-    if !entities.points.is_empty() {
-        let items: Vec<String> = entities
-            .points
-            .iter()
-            .map(|(point, groups)| format!("point {point} (group {})", tags(groups)))
-            .collect();
-        mesh.warn(format!(
-            "{} point(s) in physical groups, which are not used (the model has no node \
-             groups: fix or load nodes by index): {}",
-            items.len(),
-            bounded_list(&items)
-        ));
-    }
     Ok(mesh)
+}
+
+/// Warns of the surfaces in several physical groups, each with the body
+/// it takes (the first) and the groups dropped: what the file says and
+/// the model cannot hold (a triangle has one body), said rather than
+/// dropped without a word.
+fn warn_surfaces_in_several_groups(mesh: &mut Mesh, blocks: &[Block], groups: Groups) {
+    let mut several = std::collections::BTreeMap::new();
+    for block in blocks.iter().filter(|b| b.dim == 2) {
+        if let [body, dropped @ ..] = groups.of(2, block.entity) {
+            if !dropped.is_empty() {
+                several.insert(block.entity, (*body, dropped));
+            }
+        }
+    }
+    if several.is_empty() {
+        return;
+    }
+    let items: Vec<String> = several
+        .iter()
+        .map(|(surface, (body, dropped))| {
+            format!("surface {surface} (body {body}; dropped {})", tags(dropped))
+        })
+        .collect();
+    mesh.warn(format!(
+        "{} surface(s) in several physical groups: a triangle has one body, the first \
+         group; the others are dropped: {}",
+        items.len(),
+        bounded_list(&items)
+    ));
+}
+
+/// Warns of the points in physical groups, which the model has no use
+/// for (it has no node groups), rather than dropping them without a word.
+fn warn_physical_points(mesh: &mut Mesh, points: &[(i32, Vec<i32>)]) {
+    if points.is_empty() {
+        return;
+    }
+    let items: Vec<String> = points
+        .iter()
+        .map(|(point, groups)| format!("point {point} (group {})", tags(groups)))
+        .collect();
+    mesh.warn(format!(
+        "{} point(s) in physical groups, which are not used (the model has no node \
+         groups: fix or load nodes by index): {}",
+        items.len(),
+        bounded_list(&items)
+    ));
 }
 
 /// Physical tags for a message: "8, 9"; past ten, the first ten, how many

@@ -55,9 +55,10 @@ use std::fmt::Write as _;
 use std::io::{BufWriter, Write};
 use std::path::Path;
 
-use crate::contact::ContactWeighting;
+use crate::contact::{ContactElement, ContactWeighting};
 use crate::error::{Error, Result, Status};
 use crate::fem::element::TriGeometry;
+use crate::fem::mesh::Mesh;
 use crate::model::Model;
 
 /// `VTK_TRIANGLE`.
@@ -178,182 +179,279 @@ fn wide_indices(points: usize, cells: usize) -> bool {
 /// [`Status::Io`] when the file cannot be written (the message names it
 /// and the reason). The model is never changed.
 pub fn write_vtu(model: &Model, path: &Path) -> Result<()> {
-    let mesh = model
-        .mesh()
-        .ok_or_else(|| Error::state("no mesh to write"))?;
-    let u = model.displacements()?;
-    let strains = model.element_strains()?;
-    let stresses = model.element_stresses()?;
-    // A contact solve's results, under either weighting; none after a
-    // solve without contact.
-    let contact = match model.contact_report() {
-        Ok(_) => Some((
-            model.contact_nodal_pressures()?,
-            model.contact_forces()?,
-            model.contact_gaps()?,
-        )),
-        Err(_) => None,
-    };
-    let strip = match (&contact, model.contact_weighting()) {
-        (Some(_), ContactWeighting::Strip) => Some((
-            model.contact_elements()?,
-            model.contact_active()?,
-            model.contact_pressure()?,
-        )),
-        _ => None,
-    };
-    let b: &[_] = strip.map_or(&[], |s| s.0);
+    let results = Results::of(model)?;
+    write_file(&results.grid(), path)
+        .map_err(|e| Error::new(Status::Io, format!("cannot write {}: {e}", path.display())))
+}
 
-    let (nodes, triangles) = (mesh.nodes(), mesh.triangles());
-    let n_points = nodes.len();
-    let n_cells = triangles.len() + b.len();
-    let wide = wide_indices(n_points, n_cells);
-    let index = if wide { Scalar::Int64 } else { Scalar::Int32 };
+/// What the file shows of a solved model, all read before anything is
+/// written: a model that cannot give one of them writes no file at all.
+struct Results<'a> {
+    mesh: &'a Mesh,
+    /// The displacement of every node.
+    u: Vec<[f64; 2]>,
+    /// Every triangle's strain (Voigt).
+    strains: Vec<[f64; 3]>,
+    /// Every triangle's stress (Voigt).
+    stresses: Vec<[f64; 3]>,
+    /// A contact solve's nodal results, under either weighting; `None`
+    /// after a solve without contact.
+    contact: Option<NodalContact>,
+    /// The contact mesh B and its state, under the strip weighting only.
+    strip: Option<StripContact<'a>>,
+}
 
-    let points = vec![Array {
-        name: "Points",
-        scalar: Scalar::Float64,
-        components: XYZ,
-        tuples: n_points,
-        values: planar(nodes),
-    }];
-    let cells = vec![
-        Array {
-            name: "connectivity",
-            scalar: index,
-            components: SCALAR,
-            tuples: 3 * n_cells,
-            values: indices(wide, move || {
-                triangles
-                    .iter()
-                    .chain(b.iter().map(|e| &e.nodes))
-                    .flatten()
-                    .copied()
+/// The nodal results of a contact solve, one value per node.
+struct NodalContact {
+    /// Contact pressure, positive in compression.
+    pressure: Vec<f64>,
+    /// Force the contact exerts on the node.
+    force: Vec<[f64; 2]>,
+    /// Normal gap, negative where the bodies interpenetrate.
+    gap: Vec<f64>,
+}
+
+/// The elements of the contact mesh B under the strip weighting, written
+/// as cells after the body triangles, with their state.
+#[derive(Clone, Copy)]
+struct StripContact<'a> {
+    elements: &'a [ContactElement],
+    /// Each element's active flag.
+    active: &'a [bool],
+    /// Each element's contact pressure.
+    pressure: &'a [f64],
+}
+
+impl<'a> Results<'a> {
+    /// The results of `model`, as its accessors give them.
+    fn of(model: &'a Model) -> Result<Results<'a>> {
+        let mesh = model
+            .mesh()
+            .ok_or_else(|| Error::state("no mesh to write"))?;
+        let u = model.displacements()?;
+        let strains = model.element_strains()?;
+        let stresses = model.element_stresses()?;
+        let contact = match model.contact_report() {
+            Ok(_) => Some(NodalContact {
+                pressure: model.contact_nodal_pressures()?,
+                force: model.contact_forces()?,
+                gap: model.contact_gaps()?,
             }),
-        },
-        Array {
-            name: "offsets",
-            scalar: index,
-            components: SCALAR,
-            tuples: n_cells,
-            values: indices(wide, move || (1..=n_cells).map(|k| 3 * k)),
-        },
-        Array {
-            name: "types",
-            scalar: Scalar::UInt8,
-            components: SCALAR,
-            tuples: n_cells,
-            values: Box::new(move |w| (0..n_cells).try_for_each(|_| w.write_all(&[TRIANGLE]))),
-        },
-    ];
-    let mut point_data = vec![Array {
-        name: "displacement",
-        scalar: Scalar::Float64,
-        components: XYZ,
-        tuples: n_points,
-        values: planar(&u),
-    }];
-    if let Some((pressure, force, gap)) = &contact {
-        point_data.extend([
-            Array {
-                name: "contact_pressure",
-                scalar: Scalar::Float64,
-                components: SCALAR,
-                tuples: n_points,
-                values: f64s(|| pressure.iter().copied()),
-            },
-            Array {
-                name: "contact_force",
-                scalar: Scalar::Float64,
-                components: XYZ,
-                tuples: n_points,
-                values: planar(force),
-            },
-            Array {
-                name: "contact_gap",
-                scalar: Scalar::Float64,
-                components: SCALAR,
-                tuples: n_points,
-                values: f64s(|| gap.iter().copied()),
-            },
-        ]);
+            Err(_) => None,
+        };
+        let strip = match (&contact, model.contact_weighting()) {
+            (Some(_), ContactWeighting::Strip) => Some(StripContact {
+                elements: model.contact_elements()?,
+                active: model.contact_active()?,
+                pressure: model.contact_pressure()?,
+            }),
+            _ => None,
+        };
+        Ok(Results {
+            mesh,
+            u,
+            strains,
+            stresses,
+            contact,
+            strip,
+        })
     }
-    let mut cell_data = vec![
-        Array {
-            name: "body",
-            scalar: Scalar::Int32,
-            components: SCALAR,
-            tuples: n_cells,
-            values: Box::new(move |w| {
-                mesh.body_of()
-                    .iter()
-                    .copied()
-                    .chain(std::iter::repeat_n(-1, b.len()))
-                    .try_for_each(|t: i32| w.write_all(&t.to_le_bytes()))
-            }),
-        },
-        Array {
-            name: "J",
+
+    /// The elements of B written as cells (none but under the strip
+    /// weighting).
+    fn b(&self) -> &'a [ContactElement] {
+        self.strip.map_or(&[], |s| s.elements)
+    }
+
+    fn n_points(&self) -> usize {
+        self.mesh.nodes().len()
+    }
+
+    /// The body triangles and the elements of B.
+    fn n_cells(&self) -> usize {
+        self.mesh.triangles().len() + self.b().len()
+    }
+
+    /// Every array of the file, section by section.
+    fn grid(&self) -> Grid<'_> {
+        Grid {
+            n_points: self.n_points(),
+            n_cells: self.n_cells(),
+            points: self.points(),
+            cells: self.cells(),
+            point_data: self.point_data(),
+            cell_data: self.cell_data(),
+        }
+    }
+
+    /// The points: the nodes in the initial configuration.
+    fn points(&self) -> Vec<Array<'a>> {
+        vec![Array {
+            name: "Points",
             scalar: Scalar::Float64,
-            components: SCALAR,
-            tuples: n_cells,
-            values: f64s(move || {
-                triangles
-                    .iter()
-                    .map(|t| TriGeometry::new(&mesh.corners(t)).j)
-                    .chain(b.iter().map(|e| e.j0))
-            }),
-        },
-        Array {
-            name: "strain",
-            scalar: Scalar::Float64,
-            components: VOIGT,
-            tuples: n_cells,
-            values: voigt(&strains, b.len()),
-        },
-        Array {
-            name: "stress",
-            scalar: Scalar::Float64,
-            components: VOIGT,
-            tuples: n_cells,
-            values: voigt(&stresses, b.len()),
-        },
-    ];
-    if let Some((_, active, pressure)) = strip {
-        let before = triangles.len();
-        cell_data.extend([
+            components: XYZ,
+            tuples: self.n_points(),
+            values: planar(self.mesh.nodes()),
+        }]
+    }
+
+    /// The cells: the body triangles, then the elements of B.
+    fn cells(&self) -> Vec<Array<'a>> {
+        let (triangles, b) = (self.mesh.triangles(), self.b());
+        let n_cells = self.n_cells();
+        let wide = wide_indices(self.n_points(), n_cells);
+        let index = if wide { Scalar::Int64 } else { Scalar::Int32 };
+        vec![
             Array {
-                name: "contact_element_active",
-                scalar: Scalar::UInt8,
+                name: "connectivity",
+                scalar: index,
                 components: SCALAR,
-                tuples: n_cells,
-                values: Box::new(move |w| {
-                    std::iter::repeat_n(0, before)
-                        .chain(active.iter().map(|&a| u8::from(a)))
-                        .try_for_each(|a| w.write_all(&[a]))
+                tuples: 3 * n_cells,
+                values: indices(wide, move || {
+                    triangles
+                        .iter()
+                        .chain(b.iter().map(|e| &e.nodes))
+                        .flatten()
+                        .copied()
                 }),
             },
             Array {
-                name: "contact_element_pressure",
+                name: "offsets",
+                scalar: index,
+                components: SCALAR,
+                tuples: n_cells,
+                values: indices(wide, move || (1..=n_cells).map(|k| 3 * k)),
+            },
+            Array {
+                name: "types",
+                scalar: Scalar::UInt8,
+                components: SCALAR,
+                tuples: n_cells,
+                values: Box::new(move |w| (0..n_cells).try_for_each(|_| w.write_all(&[TRIANGLE]))),
+            },
+        ]
+    }
+
+    /// The arrays on the points: the displacement, and the nodal contact
+    /// results after a contact solve.
+    fn point_data(&self) -> Vec<Array<'_>> {
+        let n_points = self.n_points();
+        let mut point_data = vec![Array {
+            name: "displacement",
+            scalar: Scalar::Float64,
+            components: XYZ,
+            tuples: n_points,
+            values: planar(&self.u),
+        }];
+        if let Some(NodalContact {
+            pressure,
+            force,
+            gap,
+        }) = &self.contact
+        {
+            point_data.extend([
+                Array {
+                    name: "contact_pressure",
+                    scalar: Scalar::Float64,
+                    components: SCALAR,
+                    tuples: n_points,
+                    values: f64s(|| pressure.iter().copied()),
+                },
+                Array {
+                    name: "contact_force",
+                    scalar: Scalar::Float64,
+                    components: XYZ,
+                    tuples: n_points,
+                    values: planar(force),
+                },
+                Array {
+                    name: "contact_gap",
+                    scalar: Scalar::Float64,
+                    components: SCALAR,
+                    tuples: n_points,
+                    values: f64s(|| gap.iter().copied()),
+                },
+            ]);
+        }
+        point_data
+    }
+
+    /// The arrays on the cells: body, J, strain and stress of every cell,
+    /// and the state of the elements of B under the strip weighting.
+    fn cell_data(&self) -> Vec<Array<'_>> {
+        let (mesh, triangles, b) = (self.mesh, self.mesh.triangles(), self.b());
+        let n_cells = self.n_cells();
+        let mut cell_data = vec![
+            Array {
+                name: "body",
+                scalar: Scalar::Int32,
+                components: SCALAR,
+                tuples: n_cells,
+                values: Box::new(move |w| {
+                    mesh.body_of()
+                        .iter()
+                        .copied()
+                        .chain(std::iter::repeat_n(-1, b.len()))
+                        .try_for_each(|t: i32| w.write_all(&t.to_le_bytes()))
+                }),
+            },
+            Array {
+                name: "J",
                 scalar: Scalar::Float64,
                 components: SCALAR,
                 tuples: n_cells,
                 values: f64s(move || {
-                    std::iter::repeat_n(0.0, before).chain(pressure.iter().copied())
+                    triangles
+                        .iter()
+                        .map(|t| TriGeometry::new(&mesh.corners(t)).j)
+                        .chain(b.iter().map(|e| e.j0))
                 }),
             },
-        ]);
+            Array {
+                name: "strain",
+                scalar: Scalar::Float64,
+                components: VOIGT,
+                tuples: n_cells,
+                values: voigt(&self.strains, b.len()),
+            },
+            Array {
+                name: "stress",
+                scalar: Scalar::Float64,
+                components: VOIGT,
+                tuples: n_cells,
+                values: voigt(&self.stresses, b.len()),
+            },
+        ];
+        if let Some(StripContact {
+            active, pressure, ..
+        }) = self.strip
+        {
+            let before = triangles.len();
+            cell_data.extend([
+                Array {
+                    name: "contact_element_active",
+                    scalar: Scalar::UInt8,
+                    components: SCALAR,
+                    tuples: n_cells,
+                    values: Box::new(move |w| {
+                        std::iter::repeat_n(0, before)
+                            .chain(active.iter().map(|&a| u8::from(a)))
+                            .try_for_each(|a| w.write_all(&[a]))
+                    }),
+                },
+                Array {
+                    name: "contact_element_pressure",
+                    scalar: Scalar::Float64,
+                    components: SCALAR,
+                    tuples: n_cells,
+                    values: f64s(move || {
+                        std::iter::repeat_n(0.0, before).chain(pressure.iter().copied())
+                    }),
+                },
+            ]);
+        }
+        cell_data
     }
-    let grid = Grid {
-        n_points,
-        n_cells,
-        points,
-        cells,
-        point_data,
-        cell_data,
-    };
-    write_file(&grid, path)
-        .map_err(|e| Error::new(Status::Io, format!("cannot write {}: {e}", path.display())))
 }
 
 /// The arrays of a piece, section by section.

@@ -89,8 +89,41 @@ pub(crate) struct SplitCholesky {
     schur: Option<Vec<f64>>,
 }
 
-/// Matrix copy, workspace and column cursors of a part's factorisation.
-type Buffers = (Vec<f64>, MemBuffer, Vec<u32>);
+/// What one numeric factorisation of a part needs besides the part:
+/// allocated on the calling thread ([`SplitCholesky::factorize_parts`]).
+struct Buffers {
+    /// M's values, in the order of the part's `row_idx`.
+    values: Vec<f64>,
+    /// faer's workspace.
+    workspace: MemBuffer,
+    /// Each column's next position in `values` while M is copied.
+    cursor: Vec<u32>,
+}
+
+/// The matrix a numeric factorisation factorises, K + shift·diag(K): both
+/// parts and the separator block read their entries through it, so that
+/// the shift is applied the same way everywhere.
+#[derive(Clone, Copy)]
+struct Shifted<'a> {
+    /// The pattern of K (upper triangle).
+    pattern: &'a Pattern,
+    /// K's values on `pattern`.
+    values: &'a [f64],
+    /// The relative shift of the diagonal.
+    shift: f64,
+}
+
+impl Shifted<'_> {
+    /// The value at position `p` of the pattern, shifted when it is on the
+    /// diagonal.
+    fn value(&self, p: usize, on_diagonal: bool) -> f64 {
+        if on_diagonal {
+            self.values[p] * (1.0 + self.shift)
+        } else {
+            self.values[p]
+        }
+    }
+}
 
 /// Where every unknown sits, shared by both parts.
 #[derive(Clone, Copy)]
@@ -113,6 +146,21 @@ fn zero_at(is_zero: &[bool], p: usize) -> bool {
 /// Marks a separator unknown that a part is not coupled to.
 const NONE: u32 = u32::MAX;
 
+/// The unknowns of one part's matrix M = K[own ∪ T_p]: what
+/// [`Members::visit`] walks, both before the part exists (its analysis) and
+/// after (each factorisation), so that both meet M's entries in one order.
+#[derive(Clone, Copy)]
+struct Members<'a> {
+    /// The part (0 or 1, as in [`Layout::owner`]).
+    who: u8,
+    /// The part's unknowns in factor order.
+    own: &'a [usize],
+    /// T_p as ascending indices into the separator.
+    seps: &'a [u32],
+    /// Each separator index's position in `seps`, or [`NONE`].
+    sep_pos: &'a [u32],
+}
+
 /// One part's factorisation of M = K[own ∪ T_p], own first, where T_p is
 /// the separator unknowns coupled to the part. The others contribute
 /// nothing to the part's Schur complement, so leaving them out keeps the
@@ -127,7 +175,7 @@ struct Part {
     /// Each separator index's position in `seps`, or [`NONE`].
     sep_pos: Vec<u32>,
     /// Lower triangle of M in local numbering (CSC), entries in the order
-    /// [`Part::visit`] meets them.
+    /// [`Members::visit`] meets them.
     col_ptr: Vec<u32>,
     row_idx: Vec<u32>,
     symbolic: SymbolicSupernodalCholesky<u32>,
@@ -281,41 +329,73 @@ impl SplitCholesky {
         shift: f64,
     ) -> Result<bool> {
         self.schur = None;
-        if let Some(&p) = self.zeros.iter().find(|&&p| values[p] != 0.0) {
-            return Err(Error::state(format!(
+        self.check_declared_zeros(values)?;
+        let matrix = Shifted {
+            pattern,
+            values,
+            shift,
+        };
+        if !self.factorize_parts(matrix)? {
+            return Ok(false);
+        }
+        self.form_schur(matrix);
+        let kept = match self.keep_schur {
+            true => Some(self.schur_copy()?),
+            false => None,
+        };
+        let r = self.factorize_top()?;
+        if r {
+            self.schur = kept;
+        }
+        Ok(r)
+    }
+
+    /// Refuses values where the analysis was told of zeros: the parts were
+    /// split on them, and a value there would couple them unseen.
+    fn check_declared_zeros(&self, values: &[f64]) -> Result<()> {
+        match self.zeros.iter().find(|&&p| values[p] != 0.0) {
+            Some(&p) => Err(Error::state(format!(
                 "matrix entry {p} was analysed as zero but holds {:e}",
                 values[p]
-            )));
+            ))),
+            None => Ok(()),
         }
+    }
+
+    /// Factorises both parts at the same time (the point of the split);
+    /// whether both are positive definite.
+    fn factorize_parts(&mut self, matrix: Shifted<'_>) -> Result<bool> {
         let layout = Layout {
             top: &self.top,
             owner: &self.owner,
             local: &self.local,
             is_zero: &[],
         };
-        let t = self.top.len();
         let [pa, pb] = &mut self.parts;
         // Buffers are allocated here, not on the worker threads, so that
         // they come from (and return to) this thread's heap rather than
         // leaving memory in per-thread allocator arenas.
         let (ba, bb) = (pa.buffers()?, pb.buffers()?);
         let (ra, rb) = rayon::join(
-            || pa.factorize(pattern, values, shift, layout, ba),
-            || pb.factorize(pattern, values, shift, layout, bb),
+            || pa.factorize(matrix, layout, ba),
+            || pb.factorize(matrix, layout, bb),
         );
-        if !(ra && rb) {
-            return Ok(false);
-        }
-        // S = K_TT + Σ_p (L_TT^p L_TT^pᵀ − K[T_p, T_p]) (lower triangle):
-        // each part's trailing product is K[T_p, T_p] minus its
-        // contribution to the Schur complement.
+        Ok(ra && rb)
+    }
+
+    /// Forms the Schur complement S on the separator in `top_factor`
+    /// (lower triangle) from the factorised parts:
+    /// S = K_TT + Σ_p (L_TT^p L_TT^pᵀ − K[T_p, T_p]). Each part's trailing
+    /// product is K[T_p, T_p] minus its contribution to S, so an entry of
+    /// K_TT held by both parts is subtracted once more.
+    fn form_schur(&mut self, matrix: Shifted<'_>) {
         let par = Par::rayon(0);
         let s = &mut self.top_factor;
         s.fill(0.0);
         for part in &self.parts {
             part.add_trailing_product(s.as_mut(), par);
         }
-        let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
+        let (cp, ri) = (matrix.pattern.col_ptr(), matrix.pattern.row_idx());
         for (kj, &j) in self.top.iter().enumerate() {
             for p in cp[j]..cp[j + 1] {
                 let i = ri[p];
@@ -324,40 +404,41 @@ impl SplitCholesky {
                     let in_both =
                         |part: &Part| part.sep_pos[ki] != NONE && part.sep_pos[kj] != NONE;
                     let copies = self.parts.iter().filter(|q| in_both(q)).count() as f64;
-                    let v = if i == j {
-                        values[p] * (1.0 + shift)
-                    } else {
-                        values[p]
-                    };
+                    let v = matrix.value(p, i == j);
                     s[(ki.max(kj), ki.min(kj))] += (1.0 - copies) * v;
                 }
             }
         }
-        let mut kept = None;
-        if self.keep_schur {
-            // Packed, half of t². (It cannot live in the factor's unused
-            // triangle: faer's dense Cholesky writes both, seen in 0.24.)
-            let mut copy = Vec::new();
-            copy.try_reserve_exact(packed_len(t))
-                .map_err(|_| oom("Schur complement copy"))?;
-            pack_lower(s.as_ref(), &mut copy);
-            kept = Some(copy);
-        }
+    }
+
+    /// A packed copy of the Schur complement just formed, for
+    /// [`Self::take_schur`]: the dense factorisation overwrites it.
+    fn schur_copy(&self) -> Result<Vec<f64>> {
+        // Packed, half of t². (It cannot live in the factor's unused
+        // triangle: faer's dense Cholesky writes both, seen in 0.24.)
+        let mut copy = Vec::new();
+        copy.try_reserve_exact(packed_len(self.top.len()))
+            .map_err(|_| oom("Schur complement copy"))?;
+        pack_lower(self.top_factor.as_ref(), &mut copy);
+        Ok(copy)
+    }
+
+    /// Factorises the Schur complement in `top_factor` in place (dense,
+    /// the last step of the split); whether it is positive definite.
+    fn factorize_top(&mut self) -> Result<bool> {
+        let t = self.top.len();
+        let par = Par::rayon(0);
         let mut mem =
             MemBuffer::try_new(cholesky_in_place_scratch::<f64>(t, par, Default::default()))
                 .map_err(|_| oom("separator workspace"))?;
-        let r = cholesky_in_place(
-            s.as_mut(),
+        Ok(cholesky_in_place(
+            self.top_factor.as_mut(),
             LltRegularization::default(),
             par,
             MemStack::new(&mut mem),
             Default::default(),
         )
-        .is_ok();
-        if r {
-            self.schur = kept;
-        }
-        Ok(r)
+        .is_ok())
     }
 
     /// x ← K⁻¹x with the last successful factorisation.
@@ -434,59 +515,27 @@ impl Part {
             .collect()
     }
 
-    /// Calls `f(column, row, position in the global values)` for every
-    /// entry of the lower triangle of M in local numbering, always in the
-    /// same order.
-    fn visit(
-        pattern: &Pattern,
-        who: u8,
-        own: &[usize],
-        (seps, sep_pos): (&[u32], &[u32]),
-        at: Layout<'_>,
-        mut f: impl FnMut(usize, usize, usize),
-    ) {
-        let n_own = own.len();
-        let lid = |u: usize| -> Option<usize> {
-            match at.owner[u] {
-                TOP => match sep_pos[at.local[u] as usize] {
-                    NONE => None,
-                    k => Some(n_own + k as usize),
-                },
-                h if h == who => Some(at.local[u] as usize),
-                _ => None,
-            }
-        };
-        let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
-        // Every entry of M has its (global) column in own ∪ T_p.
-        let top_columns = seps.iter().map(|&k| at.top[k as usize]);
-        for j in own.iter().copied().chain(top_columns) {
-            let lj = lid(j).expect("a column of the part");
-            for p in cp[j]..cp[j + 1] {
-                if let Some(li) = lid(ri[p]) {
-                    f(li.min(lj), li.max(lj), p);
-                }
-            }
-        }
-    }
-
     fn analyse(pattern: &Pattern, who: u8, own: Vec<usize>, at: Layout<'_>) -> Result<Part> {
         let seps = Self::coupled_separator(pattern, who, &own, at);
         let mut sep_pos = vec![NONE; at.top.len()];
         for (q, &k) in seps.iter().enumerate() {
             sep_pos[k as usize] = q as u32;
         }
-        let members = (&seps[..], &sep_pos[..]);
+        let members = Members {
+            who,
+            own: &own,
+            seps: &seps,
+            sep_pos: &sep_pos,
+        };
         let m = own.len() + seps.len();
         let mut col_ptr = vec![0u32; m + 1];
-        Self::visit(pattern, who, &own, members, at, |c, _, _| {
-            col_ptr[c + 1] += 1
-        });
+        members.visit(pattern, at, |c, _, _| col_ptr[c + 1] += 1);
         for k in 0..m {
             col_ptr[k + 1] += col_ptr[k];
         }
         let mut cursor = col_ptr.clone();
         let mut row_idx = vec![0u32; col_ptr[m] as usize];
-        Self::visit(pattern, who, &own, members, at, |c, r, _| {
+        members.visit(pattern, at, |c, r, _| {
             row_idx[cursor[c] as usize] = r as u32;
             cursor[c] += 1;
         });
@@ -541,23 +590,28 @@ impl Part {
         })
     }
 
-    fn factorize(
-        &mut self,
-        pattern: &Pattern,
-        values: &[f64],
-        shift: f64,
-        at: Layout<'_>,
-        (mut vals, mut mem, mut cursor): Buffers,
-    ) -> bool {
+    /// The part's members, as its analysis walked them.
+    fn members(&self, who: u8) -> Members<'_> {
+        Members {
+            who,
+            own: &self.own,
+            seps: &self.seps,
+            sep_pos: &self.sep_pos,
+        }
+    }
+
+    /// Copies M out of `matrix` and factorises it into the part's factor;
+    /// whether M is positive definite.
+    fn factorize(&mut self, matrix: Shifted<'_>, at: Layout<'_>, buffers: Buffers) -> bool {
+        let Buffers {
+            values: mut vals,
+            workspace: mut mem,
+            mut cursor,
+        } = buffers;
         let top_start = self.own.len();
         let who = at.owner[self.own[0]];
-        let members = (&self.seps[..], &self.sep_pos[..]);
-        Self::visit(pattern, who, &self.own, members, at, |c, r, p| {
-            vals[cursor[c] as usize] = if r == c {
-                values[p] * (1.0 + shift)
-            } else {
-                values[p]
-            };
+        self.members(who).visit(matrix.pattern, at, |c, r, p| {
+            vals[cursor[c] as usize] = matrix.value(p, r == c);
             cursor[c] += 1;
         });
         drop(cursor);
@@ -589,8 +643,12 @@ impl Part {
         vals.try_reserve_exact(self.row_idx.len())
             .map_err(|_| oom("matrix copy"))?;
         vals.resize(self.row_idx.len(), 0.0);
-        let mem = MemBuffer::try_new(self.factor_req).map_err(|_| oom("workspace"))?;
-        Ok((vals, mem, self.col_ptr.clone()))
+        let workspace = MemBuffer::try_new(self.factor_req).map_err(|_| oom("workspace"))?;
+        Ok(Buffers {
+            values: vals,
+            workspace,
+            cursor: self.col_ptr.clone(),
+        })
     }
 
     /// Zeroes the strict upper triangles of the diagonal blocks of the
@@ -755,6 +813,36 @@ impl Part {
                     .unwrap_or_else(PoisonError::into_inner),
             ),
         );
+    }
+}
+
+impl Members<'_> {
+    /// Calls `f(column, row, position in the global values)` for every
+    /// entry of the lower triangle of M in local numbering, always in the
+    /// same order.
+    fn visit(&self, pattern: &Pattern, at: Layout<'_>, mut f: impl FnMut(usize, usize, usize)) {
+        let n_own = self.own.len();
+        let lid = |u: usize| -> Option<usize> {
+            match at.owner[u] {
+                TOP => match self.sep_pos[at.local[u] as usize] {
+                    NONE => None,
+                    k => Some(n_own + k as usize),
+                },
+                h if h == self.who => Some(at.local[u] as usize),
+                _ => None,
+            }
+        };
+        let (cp, ri) = (pattern.col_ptr(), pattern.row_idx());
+        // Every entry of M has its (global) column in own ∪ T_p.
+        let top_columns = self.seps.iter().map(|&k| at.top[k as usize]);
+        for j in self.own.iter().copied().chain(top_columns) {
+            let lj = lid(j).expect("a column of the part");
+            for p in cp[j]..cp[j + 1] {
+                if let Some(li) = lid(ri[p]) {
+                    f(li.min(lj), li.max(lj), p);
+                }
+            }
+        }
     }
 }
 
