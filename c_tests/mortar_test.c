@@ -117,7 +117,7 @@ static void patch_test_is_exact(void) {
   int lb[NL + 1], ut[NU + 1];
   tfem_model *m = patch(lb, ut);
   int w = -1;
-  CHECK(tfem_get_contact_weighting(m, &w) == TFEM_STATUS_OK && w == TFEM_CONTACT_WEIGHTING_STRIP);
+  CHECK(tfem_get_contact_weighting(m, &w) == TFEM_STATUS_OK && w == TFEM_CONTACT_WEIGHTING_AUTO);
   CHECK(tfem_set_contact_weighting(m, TFEM_CONTACT_WEIGHTING_MORTAR) == TFEM_STATUS_OK);
   CHECK(tfem_get_contact_weighting(m, &w) == TFEM_STATUS_OK && w == TFEM_CONTACT_WEIGHTING_MORTAR);
   tfem_contact_report r;
@@ -183,14 +183,14 @@ static void refusals_name_what_the_weighting_does_not_serve(void) {
   int lb[NL + 1], ut[NU + 1];
   tfem_model *m = patch(lb, ut);
   EXPECT_ERROR(NULL, tfem_set_contact_weighting(NULL, 1), TFEM_STATUS_NULL_POINTER, "model");
-  EXPECT_ERROR(m, tfem_set_contact_weighting(m, 2), TFEM_STATUS_INVALID_ARGUMENT, "weighting = 2");
+  EXPECT_ERROR(m, tfem_set_contact_weighting(m, 3), TFEM_STATUS_INVALID_ARGUMENT, "weighting = 3");
   EXPECT_ERROR(m, tfem_set_contact_weighting(m, -1), TFEM_STATUS_INVALID_ARGUMENT,
                "weighting = -1");
   int w = -1;
-  CHECK(tfem_get_contact_weighting(m, &w) == TFEM_STATUS_OK && w == TFEM_CONTACT_WEIGHTING_STRIP);
+  CHECK(tfem_get_contact_weighting(m, &w) == TFEM_STATUS_OK && w == TFEM_CONTACT_WEIGHTING_AUTO);
   EXPECT_ERROR(m, tfem_get_contact_weighting(m, NULL), TFEM_STATUS_NULL_POINTER, "weighting");
 
-  /* Under the strip, there are no slave nodes. */
+  /* Straight sides take the strip by default: there are no slave nodes. */
   CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
   double pres[NU + 1];
   EXPECT_ERROR(m, tfem_get_contact_slave_nodes(m, NULL, NULL, NULL, pres, NU + 1),

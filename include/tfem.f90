@@ -216,11 +216,15 @@ module tfem_c
 
   ! enum tfem_contact_weighting: How the contact pairs' energy is weighted along their interfaces
   ! (argument `weighting` of `tfem_set_contact_weighting`).
-  !> The elements of the contact mesh B (the seed's method; default).
+  !> The elements of the contact mesh B (the seed's method) for every pair.
   integer(c_int), parameter :: TFEM_CONTACT_WEIGHTING_STRIP = 0
-  !> The sampled mortar weighting: one weighted gap per node of each pair's coarser side;
-  !! frictionless contact solves and load steps.
+  !> The sampled mortar weighting for every pair: one weighted gap per node of each interface's
+  !! coarser side; frictionless.
   integer(c_int), parameter :: TFEM_CONTACT_WEIGHTING_MORTAR = 1
+  !> Each pair what is right for its interface (the default): B where the two sides' nodes match,
+  !! the mortar weighting where they do not, B for a pair with friction or a contact mesh of its
+  !! own.
+  integer(c_int), parameter :: TFEM_CONTACT_WEIGHTING_AUTO = 2
 
   ! enum tfem_contact_law: The constitutive law of the contact elements.
   !> Only the normal strain is penalised: D_c = E_c m mᵀ with m = [n_x², n_y², n_x n_y]. Tangential
@@ -1025,18 +1029,21 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_get_contact_nodal_pressures
 
-    !> Chooses how every contact pair's energy is weighted along its interface: `weighting` is a
-    !! `ContactWeightingMode` (0 strip, the default: the elements of the contact mesh B; 1 mortar:
-    !! one weighted gap per node of each pair's coarser side, exact on the contact patch test
-    !! whatever the two sides' nodes, and the right reading on a stiff curved tool; frictionless
-    !! `tfem_solve_contact` and `tfem_step`). A change discards the results, like any change of the
-    !! contact pairs. Under the mortar weighting friction, the stick law and the literal inversion
-    !! test are refused, and so are the per-element outputs (`tfem_get_contact_active`,
+    !> Chooses how the contact pairs' energy is weighted along their interfaces: `weighting` is a
+    !! `ContactWeightingMode`. 2 automatic, the default: each pair what is right for it — the
+    !! elements of the contact mesh B (the seed's method) where the two sides' nodes match, one
+    !! weighted gap per node of the interface's coarser side where they do not (exact on the contact
+    !! patch test whatever the meshes, converging on curved interfaces where B reads one side only),
+    !! B for a pair with friction or a contact mesh of its own. 0 strip and 1 mortar force one
+    !! weighting on every pair (an expert's override). A change discards the results, like any
+    !! change of the contact pairs. Under the mortar weighting friction, the stick law and the
+    !! literal inversion test are refused. The per-element outputs (`tfem_get_contact_active`,
     !! `tfem_get_contact_pressure`, `tfem_get_contact_elements`, shear, friction state, dissipation;
-    !! `tfem_get_sizes` gives 0 contact elements; `tfem_get_contact_mesh` still gives the strip B
-    !! the pairs would make): the state is per slave node (`tfem_get_contact_slave_nodes`); nodal
-    !! pressures, gaps and forces, reactions and the report work as under the strip, the report's
-    !! `elements` counting slave nodes.
+    !! `tfem_get_sizes`' contact elements) cover the pairs weighted by B, and are refused when no
+    !! pair is (`tfem_get_contact_mesh` still gives the B the pairs would make); the state of the
+    !! others is per slave node (`tfem_get_contact_slave_nodes`). Nodal pressures, gaps and forces,
+    !! reactions and the report cover every pair, the report's `elements` counting elements of B and
+    !! slave nodes.
     function tfem_set_contact_weighting(model, weighting) &
         bind(C, name="tfem_set_contact_weighting") result(status)
       import
@@ -1045,7 +1052,8 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_set_contact_weighting
 
-    !> Writes the contact weighting (a `ContactWeightingMode`: 0 strip, 1 mortar) into `*weighting`.
+    !> Writes the contact weighting (a `ContactWeightingMode`: 0 strip, 1 mortar, 2 automatic, the
+    !! default) into `*weighting`.
     function tfem_get_contact_weighting(model, weighting) &
         bind(C, name="tfem_get_contact_weighting") result(status)
       import
@@ -5600,25 +5608,25 @@ module tfem
         TFEM_STATUS_INTERNAL, TFEM_STATUS_OUT_OF_MEMORY, TFEM_STATUS_IO, TFEM_TEMPERING_MODE_AUTO, &
         TFEM_TEMPERING_MODE_LAMBDA, TFEM_TEMPERING_MODE_FIXED_JMIN, TFEM_TEMPERING_MODE_OFF, &
         TFEM_ORDERING_MODE_AUTO, TFEM_ORDERING_MODE_AMD, TFEM_ORDERING_MODE_NESTED_DISSECTION, &
-        TFEM_CONTACT_WEIGHTING_STRIP, TFEM_CONTACT_WEIGHTING_MORTAR, TFEM_CONTACT_LAW_FRICTIONLESS, &
-        TFEM_CONTACT_LAW_STICK, TFEM_INVERSION_TEST_LINEARISED, TFEM_INVERSION_TEST_LITERAL, &
-        TFEM_PLANE_MODE_STRAIN, TFEM_PLANE_MODE_STRESS, TFEM_COMPONENT_X, TFEM_COMPONENT_Y, &
-        tfem_solve_info, tfem_contact_options, tfem_contact_report, tfem_version, tfem_create, &
-        tfem_destroy, tfem_warning_count, tfem_get_warning_size, tfem_set_mesh, tfem_load_gmsh, &
-        tfem_write_vtu, tfem_set_boundary_edges, tfem_set_material, tfem_set_tempering, &
-        tfem_set_ordering, tfem_fix, tfem_fix_edges, tfem_clear_constraints, tfem_add_pressure, &
-        tfem_add_traction, tfem_add_nodal_force, tfem_set_body_force, tfem_clear_loads, &
-        tfem_get_boundary_edge_count, tfem_element_stiffness, tfem_laplacian_stiffness, &
-        tfem_contact_options_default, tfem_get_contact_report, tfem_add_boundary_edges, &
-        tfem_get_external_work, tfem_set_contact_weighting, tfem_get_contact_weighting, &
-        tfem_get_contact_mesh_size, tfem_set_threads, tfem_get_threads, tfem_revert_step, &
-        tfem_get_contact_state_size, tfem_set_friction, tfem_set_prescribed, tfem_contact_create, &
-        tfem_contact_destroy, tfem_contact_set_options, tfem_contact_restart, tfem_contact_length, &
-        tfem_last_error, tfem_last_error_length, tfem_get_warning, tfem_get_mesh_nodes, &
-        tfem_get_displacements, tfem_get_element_strains, tfem_get_element_stresses, &
-        tfem_get_element_jacobians, tfem_get_reactions, tfem_get_system_matrix, &
-        tfem_get_contact_active, tfem_get_contact_pressure, tfem_get_contact_elements, &
-        tfem_get_contact_forces, tfem_get_contact_nodal_pressures, &
+        TFEM_CONTACT_WEIGHTING_STRIP, TFEM_CONTACT_WEIGHTING_MORTAR, TFEM_CONTACT_WEIGHTING_AUTO, &
+        TFEM_CONTACT_LAW_FRICTIONLESS, TFEM_CONTACT_LAW_STICK, TFEM_INVERSION_TEST_LINEARISED, &
+        TFEM_INVERSION_TEST_LITERAL, TFEM_PLANE_MODE_STRAIN, TFEM_PLANE_MODE_STRESS, TFEM_COMPONENT_X, &
+        TFEM_COMPONENT_Y, tfem_solve_info, tfem_contact_options, tfem_contact_report, tfem_version, &
+        tfem_create, tfem_destroy, tfem_warning_count, tfem_get_warning_size, tfem_set_mesh, &
+        tfem_load_gmsh, tfem_write_vtu, tfem_set_boundary_edges, tfem_set_material, &
+        tfem_set_tempering, tfem_set_ordering, tfem_fix, tfem_fix_edges, tfem_clear_constraints, &
+        tfem_add_pressure, tfem_add_traction, tfem_add_nodal_force, tfem_set_body_force, &
+        tfem_clear_loads, tfem_get_boundary_edge_count, tfem_element_stiffness, &
+        tfem_laplacian_stiffness, tfem_contact_options_default, tfem_get_contact_report, &
+        tfem_add_boundary_edges, tfem_get_external_work, tfem_set_contact_weighting, &
+        tfem_get_contact_weighting, tfem_get_contact_mesh_size, tfem_set_threads, tfem_get_threads, &
+        tfem_revert_step, tfem_get_contact_state_size, tfem_set_friction, tfem_set_prescribed, &
+        tfem_contact_create, tfem_contact_destroy, tfem_contact_set_options, tfem_contact_restart, &
+        tfem_contact_length, tfem_last_error, tfem_last_error_length, tfem_get_warning, &
+        tfem_get_mesh_nodes, tfem_get_displacements, tfem_get_element_strains, &
+        tfem_get_element_stresses, tfem_get_element_jacobians, tfem_get_reactions, &
+        tfem_get_system_matrix, tfem_get_contact_active, tfem_get_contact_pressure, &
+        tfem_get_contact_elements, tfem_get_contact_forces, tfem_get_contact_nodal_pressures, &
         tfem_get_contact_pair_nodal_pressures, tfem_get_contact_gaps, tfem_get_contact_mesh, &
         tfem_get_contact_element_pairs, tfem_get_contact_element_apexes, tfem_get_contact_state, &
         tfem_set_contact_state, tfem_get_contact_shear, tfem_get_contact_friction_state, &

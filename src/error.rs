@@ -77,6 +77,12 @@ impl Status {
     }
 }
 
+/// The length, in bytes, a message built of clauses keeps within, so that
+/// with the context a caller's layer puts before it (a pair, the automatic
+/// pairing) it stays within the 512 bytes a C caller's buffer commonly
+/// holds: a clause that would take it beyond is left out whole, never cut.
+pub const MESSAGE_BYTES: usize = 360;
+
 /// An error of the tfem API: a status code plus a message naming the
 /// offending item (node, element, body, edge or argument).
 #[derive(Debug, Clone, PartialEq)]

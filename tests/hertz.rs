@@ -1,17 +1,26 @@
 //! Hertz contact (plane strain): a cylinder pressed on a block, meshed by
-//! the built-in graded triangulator; the interface is curved, so B is the
-//! strip triangulation with initial gaps. Contact half-width a and peak
-//! pressure p₀ against a = √(4PR/(πE*)), p₀ = 2P/(πa).
+//! the built-in graded triangulator. Where the cylinder's nodes stand over
+//! the block's (the default) the pair takes the strip, its B a
+//! triangulation with initial gaps; a cylinder meshed otherwise takes the
+//! mortar weighting (the strip's own reading of it is tested forced).
+//! Contact half-width a and peak pressure p₀ against a = √(4PR/(πE*)),
+//! p₀ = 2P/(πa).
 //!
 //! Bounds are from measured runs (`cargo run --release --example hertz`,
 //! numbers in the comments), with margins; the rates are fitted over four
 //! levels h = a/4 … a/32.
 
-use tfem::ContactOptions;
 use tfem::scenes::hertz::{Hertz, HertzResult};
 use tfem::verification::{contact_imbalance, fitted_rate};
+use tfem::{ContactOptions, ContactWeighting};
 
 fn run(base: Hertz, levels: &[f64]) -> Vec<HertzResult> {
+    run_weighted(base, levels, ContactWeighting::Auto)
+}
+
+/// [`run`] under `weighting`: the strip forced on a non-matching cylinder
+/// is what the tests of its own reading take.
+fn run_weighted(base: Hertz, levels: &[f64], weighting: ContactWeighting) -> Vec<HertzResult> {
     levels
         .iter()
         .map(|k| {
@@ -20,6 +29,7 @@ fn run(base: Hertz, levels: &[f64]) -> Vec<HertzResult> {
                 ..base
             };
             let mut s = hz.build().unwrap();
+            s.model.set_contact_weighting(weighting);
             let r = s.solve(&hz, &ContactOptions::default()).unwrap();
             assert!(
                 r.report.iterations <= 20,
@@ -180,7 +190,7 @@ fn a_non_matching_loop_takes_at_most_one_iteration_more_than_a_matching_one() {
 }
 
 #[test]
-fn the_traction_read_from_both_sides_is_smoother_on_non_matching_meshes() {
+fn the_strips_traction_read_from_both_sides_is_smoother_on_non_matching_meshes() {
     // Largest |p_node − p_H(x)|/p₀ over the block's nodes within 0.8a at
     // a/32, the block's own reading against both sides'
     // (`interface_pressures`). Measured: cylinder 2.5× coarser 1.05e-1
@@ -188,12 +198,13 @@ fn the_traction_read_from_both_sides_is_smoother_on_non_matching_meshes() {
     // side's reading); 2.5× finer 3.31e-2 against 9.22e-3 (matching:
     // 1.60e-3 either way).
     for (ratio, bound) in [(2.5, 4e-2), (0.4, 1.5e-2)] {
-        let rs = run(
+        let rs = run_weighted(
             Hertz {
                 cylinder_mesh_ratio: ratio,
                 ..Default::default()
             },
             &[32.0],
+            ContactWeighting::Strip,
         );
         let r = &rs[0];
         let (own, both) = (
@@ -208,19 +219,20 @@ fn the_traction_read_from_both_sides_is_smoother_on_non_matching_meshes() {
 }
 
 #[test]
-fn the_finer_side_reads_the_coarser_sides_traction_as_closely_as_a_mortar() {
+fn the_strips_finer_side_reads_the_coarser_sides_traction_as_closely_as_a_mortar() {
     // Cylinder 2.5× coarser: the block's nodes take the cylinder's
     // both-sides reading, interpolated. Measured at a/16, a/32, a/64:
     // 1.92e-2, 1.53e-2, 9.55e-3 of p₀ within 0.8a (reading both sides at
     // the block's own nodes: 5.41e-2, 2.83e-2, 1.89e-2; the penalty dual
     // mortar of examples/mortar_probe.rs: 1.92e-2, 1.42e-2, 8.72e-3).
     let levels = [16.0, 32.0, 64.0];
-    let rs = run(
+    let rs = run_weighted(
         Hertz {
             cylinder_mesh_ratio: 2.5,
             ..Default::default()
         },
         &levels,
+        ContactWeighting::Strip,
     );
     let mortar = [1.92e-2, 1.42e-2, 8.72e-3];
     for ((k, r), m) in levels.iter().zip(&rs).zip(mortar) {

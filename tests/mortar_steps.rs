@@ -462,7 +462,13 @@ fn a_failed_step_of_new_options_leaves_the_step_before_readable() {
 fn unloading_to_zero_is_solved_from_a_contact_solves_first_set() {
     // A review's case: warm-started from the loaded set, the loop passed
     // through no contact at all, where the cylinder floats.
-    // Unloaded, the bodies do not move: against the loaded field's size.
+    // Unloaded, the bodies come to rest touching. The cylinder's polygon
+    // touches the block at a node, whose initial weighted gap the hats read
+    // open by the faceting (the sagitta h_c²/8R of its edge h_c): the
+    // cylinder settles by about that, measured 6.0e-6 against a sagitta of
+    // 4.9e-6 (the loaded field 1.1e-3). With the initial gap read by the
+    // dual weights it was −1.7e-24 and it did not move; the hats remove
+    // their aliasing of the faceting (docs/method.md §6.11).
     let options = ContactOptions::default();
     let mut model = stepped_unread();
     let loaded = model.displacements().unwrap();
@@ -476,7 +482,12 @@ fn unloading_to_zero_is_solved_from_a_contact_solves_first_set() {
         .as_flattened()
         .iter()
         .fold(0.0f64, |m, u| m.max(u.abs()));
-    assert!(moved <= 1e-12 * scale, "{moved:e} of {scale:e}");
+    let h_c = 2.5 * 0.02 / 8.0;
+    let sagitta = h_c * h_c / 8.0;
+    assert!(
+        moved <= 2.0 * sagitta,
+        "{moved:e} against a sagitta of {sagitta:e} ({scale:e} loaded)"
+    );
     let d = reverted_field_error(&mut model, 1.0);
     assert!(d < 1e-10, "{d:e}");
 }

@@ -11,11 +11,10 @@
 //! the shape of a part (a triangle of B, a slave node's gap) stays here.
 
 use super::discretisation::Discretisation;
-use super::law::penalty_lengths;
 use super::mesh::Nodes;
 use super::mortar_set::{self, MortarSet, MortarState, PenaltyData};
 use super::set::{ContactSet, FrictionOutcome, Verdict, element_laws, softer};
-use super::{ContactElement, ContactLaw, ContactOptions, ContactPair};
+use super::{ContactLaw, ContactOptions, ContactPair};
 use crate::error::Result;
 use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
 use crate::fem::element_loop::ElementLoop;
@@ -365,7 +364,7 @@ fn mortar_penalties(b: &Build<'_>) -> Result<MortarSet> {
     let data = PenaltyData {
         moduli: &moduli,
         lambda: b.options.lambda.unwrap_or(b.elements.mesh().size()),
-        h_c: penalty_lengths(d.elements()),
+        h_c: d.penalty_lengths(),
         equation: &equation,
         prescribed: b.prescribed,
     };
@@ -376,7 +375,7 @@ fn mortar_penalties(b: &Build<'_>) -> Result<MortarSet> {
 /// where one side is a rigid tool ([`rigid_sides`]), the other body's.
 fn pair_material<'b>(b: &'b Build<'_>) -> impl Fn(usize) -> Material + 'b {
     let mesh = b.elements.mesh();
-    let rigid = rigid_sides(b.pairs, b.discretisation.elements(), mesh, b.dofs);
+    let rigid = rigid_sides(b.pairs, b.discretisation.contact_nodes(), mesh, b.dofs);
     move |pair: usize| {
         let p = &b.pairs[pair];
         let (m_a, m_b) = (
@@ -401,30 +400,28 @@ fn pair_material<'b>(b: &'b Build<'_>) -> impl Fn(usize) -> Material + 'b {
 /// self-contact, where the sides are one body) keeps the softer body.
 fn rigid_sides(
     pairs: &[ContactPair],
-    contact: &[ContactElement],
+    contact: impl Iterator<Item = (usize, usize)>,
     mesh: &Mesh,
     dofs: &DofMap,
 ) -> Vec<[bool; 2]> {
     let mut rigid = vec![[false; 2]; pairs.len()];
     let mut seen = vec![[false; 2]; pairs.len()];
-    for el in contact {
-        let p = &pairs[el.pair];
+    for (pair, n) in contact {
+        let p = &pairs[pair];
         if p.body_a == p.body_b {
             continue;
         }
-        for &n in &el.nodes {
-            let side = match mesh.node_body()[n] {
-                Some(b) if b == p.body_a => 0,
-                Some(b) if b == p.body_b => 1,
-                _ => continue,
-            };
-            let fixed = (0..2).all(|c| dofs.free(2 * n + c) == NOT_FREE);
-            if !seen[el.pair][side] {
-                seen[el.pair][side] = true;
-                rigid[el.pair][side] = true;
-            }
-            rigid[el.pair][side] &= fixed;
+        let side = match mesh.node_body()[n] {
+            Some(b) if b == p.body_a => 0,
+            Some(b) if b == p.body_b => 1,
+            _ => continue,
+        };
+        let fixed = (0..2).all(|c| dofs.free(2 * n + c) == NOT_FREE);
+        if !seen[pair][side] {
+            seen[pair][side] = true;
+            rigid[pair][side] = true;
         }
+        rigid[pair][side] &= fixed;
     }
     rigid
 }

@@ -572,7 +572,16 @@ pub fn build_conforming(
     tag_b: i32,
 ) -> Result<Vec<ContactElement>> {
     let (a, b) = (side_of(mesh, tag_a)?, side_of(mesh, tag_b)?);
-    conforming(Nodes::of(mesh), pair, &a, &b)
+    conforming(Nodes::of(mesh), pair, &a, &b).map_err(|e| {
+        Error::new(
+            e.status(),
+            format!(
+                "{}; non-matching sides take the strip triangulation of B (docs/method.md \
+                 §6.11) or a handed-over contact mesh",
+                e.message()
+            ),
+        )
+    })
 }
 
 /// [`build_conforming`] on two sides.
@@ -763,9 +772,7 @@ fn unmatched(
         None => format!("no node of {name_a} within half an edge ({radius:.3e})"),
     };
     Error::contact(format!(
-        "node {} (contact {name_b}) has no matching node on {name_a}: {hint}; \
-         non-matching sides take the strip triangulation of B (docs/method.md §6.11) \
-         or a handed-over contact mesh",
+        "node {} (contact {name_b}) has no matching node on {name_a}: {hint}",
         nodes.name(vb)
     ))
 }
@@ -990,6 +997,7 @@ pub fn nonconforming(
         lo,
         hi,
         tol,
+        ..
     } = aligned(nodes, a, b)?;
     let (w, ends) = windows_and_ends(x, (&chain_a, &s_a), (&chain_b, &s_b), (lo, hi, tol));
     let (ca, sa) = (&chain_a[w[0]..=w[1]], &s_a[w[0]..=w[1]]);
@@ -1066,6 +1074,11 @@ pub(crate) struct Aligned {
     pub hi: f64,
     /// Round-off of an abscissa.
     pub tol: f64,
+    /// For two closed loops ([`alignment`]): the index ranges [a0, a1, b0,
+    /// b1] of one turn of each chain, which carries two nodes of the turn
+    /// before and after it (their abscissas ∓ the loop's length), so that
+    /// a node's support reaches across the seam. `None` for open chains.
+    pub turn: Option<[usize; 4]>,
 }
 
 /// [`Aligned`] of two sides; refuses sides that branch, close, fold back
@@ -1115,7 +1128,210 @@ pub(crate) fn aligned(nodes: Nodes<'_>, a: &Side, b: &Side) -> Result<Aligned> {
         lo,
         hi,
         tol: 1e-9 * shortest,
+        turn: None,
     })
+}
+
+/// The edges of a side as a closed loop [v0, …, v_{n−1}, v0] from its
+/// smallest node, in their orientation; `None` when the side is not one
+/// loop.
+fn closed_loop(side: &Side) -> Option<Vec<usize>> {
+    let mut next: HashMap<usize, usize> = HashMap::new();
+    for &[p, q] in &side.oriented {
+        if next.insert(p, q).is_some() {
+            return None;
+        }
+    }
+    let start = *next.keys().min()?;
+    let mut out = vec![start];
+    let mut v = start;
+    while out.len() <= side.oriented.len() {
+        v = *next.get(&v)?;
+        out.push(v);
+        if v == start {
+            break;
+        }
+    }
+    (out.len() == side.oriented.len() + 1 && v == start).then_some(out)
+}
+
+/// [`aligned`], also for two sides that are closed loops (a ring in a
+/// bore, a shaft in a hole): a's loop from its smallest node, b's turned
+/// round and started at the node whose projection on a comes first, each
+/// laid along a's arclength and carrying two nodes of wrap-around at
+/// either end ([`Aligned::turn`]); [lo, hi] is a's turn.
+pub(crate) fn alignment(nodes: Nodes<'_>, a: &Side, b: &Side) -> Result<Aligned> {
+    let (Some(loop_a), Some(loop_b)) = (closed_loop(a), closed_loop(b)) else {
+        return aligned(nodes, a, b);
+    };
+    let x = nodes.x;
+    let s_loop = arclengths(x, &loop_a);
+    let total = s_loop[s_loop.len() - 1];
+    let mut loop_b = loop_b;
+    // Facing each other, the loops run opposite ways.
+    loop_b.reverse();
+    let nb = loop_b.len() - 1;
+    let on_a: Vec<f64> = loop_b[..nb]
+        .iter()
+        .map(|&v| loop_abscissa(x, (&loop_a, &s_loop), x[v]))
+        .collect();
+    let first = (0..nb)
+        .min_by(|&i, &j| on_a[i].total_cmp(&on_a[j]))
+        .unwrap_or(0);
+    let (mut chain_b, mut s_b) = (Vec::with_capacity(nb + 1), Vec::with_capacity(nb + 1));
+    let mut turns = 0.0;
+    for t in 0..=nb {
+        let k = (first + t) % nb;
+        let mut sv = on_a[k] + turns;
+        if s_b
+            .last()
+            .is_some_and(|&prev: &f64| sv < prev - 0.5 * total)
+        {
+            turns += total;
+            sv += total;
+        }
+        chain_b.push(loop_b[k]);
+        s_b.push(sv);
+    }
+    if let Some(k) = (1..s_b.len()).find(|&k| s_b[k] < s_b[k - 1]) {
+        return Err(Error::contact(format!(
+            "interface {} folds back along interface {} at node {}: the two interfaces must \
+             face each other",
+            b.name(),
+            a.name(),
+            nodes.name(chain_b[k])
+        )));
+    }
+    let (chain_a, s_a) = wrapped(&loop_a, &s_loop, total);
+    let (chain_b, s_b) = wrapped(&chain_b, &s_b, total);
+    let shortest = chain_a
+        .windows(2)
+        .chain(chain_b.windows(2))
+        .map(|e| dist(x[e[0]], x[e[1]]))
+        .fold(f64::INFINITY, f64::min);
+    let (na, nb) = (chain_a.len(), chain_b.len());
+    Ok(Aligned {
+        lo: s_a[WRAP],
+        hi: s_a[na - 1 - WRAP],
+        chain_a,
+        s_a,
+        chain_b,
+        s_b,
+        tol: 1e-9 * shortest,
+        turn: Some([WRAP, na - 1 - WRAP, WRAP, nb - 1 - WRAP]),
+    })
+}
+
+/// Whether the nodes of sides `a` and `b` face each other across the
+/// interface, node for node, where the sides are close (within half an
+/// edge, where contact can form): [`conforming`] pairs them, or, the sides
+/// laid along each other by [`aligned`], every node of either side within
+/// half its edge of the other side sits at the abscissa of a node of the
+/// other side that is close too, within [`FACING_TOL`] of the local edge.
+/// Looser than [`conforming`]'s test, which needs every node paired (a
+/// cylinder over a block, meshed alike near the contact, differs where
+/// the gap is wide) with its offset normal to the interface (the end
+/// nodes of two concentric arcs read a radial offset δ as δ Δθ/2 along the
+/// interface: the end's normal is its chord's).
+pub fn matching(nodes: Nodes<'_>, a: &Side, b: &Side) -> bool {
+    if conforming(nodes, 0, a, b).is_ok() {
+        return true;
+    }
+    let Ok(al) = aligned(nodes, a, b) else {
+        return false;
+    };
+    let x = nodes.x;
+    // (abscissa, local edge) of a chain's nodes within half an edge of the
+    // other chain.
+    let close = |(chain, s): (&[usize], &[f64]), other: &[usize]| -> Vec<(f64, f64)> {
+        (0..chain.len())
+            .map(|k| {
+                let before = (k > 0).then(|| dist(x[chain[k - 1]], x[chain[k]]));
+                let after = (k + 1 < chain.len()).then(|| dist(x[chain[k]], x[chain[k + 1]]));
+                let h = before
+                    .into_iter()
+                    .chain(after)
+                    .fold(f64::INFINITY, f64::min);
+                (k, h)
+            })
+            .filter(|&(k, h)| distance_to_chain(x, x[chain[k]], other) <= 0.5 * h)
+            .map(|(k, h)| (s[k], h))
+            .collect()
+    };
+    let on_a = close((&al.chain_a, &al.s_a), &al.chain_b);
+    let on_b = close((&al.chain_b, &al.s_b), &al.chain_a);
+    !on_a.is_empty()
+        && on_a.len() == on_b.len()
+        && on_a
+            .iter()
+            .zip(&on_b)
+            .all(|(&(sa, ha), &(sb, hb))| (sa - sb).abs() <= FACING_TOL * ha.min(hb))
+}
+
+/// Whether side `side` is straight: one chain whose nodes all lie on the
+/// line through its ends, within round-off of its length.
+pub fn straight(nodes: Nodes<'_>, side: &Side) -> bool {
+    let Ok(chain) = chain(nodes, side) else {
+        return false;
+    };
+    let x = nodes.x;
+    let (p, q) = (x[chain[0]], x[chain[chain.len() - 1]]);
+    let d = [q[0] - p[0], q[1] - p[1]];
+    let length = d[0].hypot(d[1]);
+    length > 0.0
+        && chain.iter().all(|&v| {
+            let r = [x[v][0] - p[0], x[v][1] - p[1]];
+            (r[0] * d[1] - r[1] * d[0]).abs() <= STRAIGHT_TOL * length * length
+        })
+}
+
+/// How far from the line through its ends, relative to its length, a
+/// straight side's nodes may lie ([`straight`]): round-off of coordinates.
+const STRAIGHT_TOL: f64 = 1e-9;
+
+/// How far along the interface, relative to the local edge, two nodes may
+/// be and still face each other ([`matching`]): above the offset two
+/// concentric arcs' end nodes read (their gap times half an edge's turn;
+/// 5e-4 for the Lamé rings at δ = b/1000), below any non-matching mesh's
+/// (a third of an edge at 2:3).
+const FACING_TOL: f64 = 1e-2;
+
+/// The nodes of the turns before and after that a closed loop's chain
+/// carries at either end ([`alignment`]): enough for a slave node's support
+/// and the master edge it faces to reach across the seam.
+const WRAP: usize = 2;
+
+/// A closed loop's chain [v0, …, v0] with abscissas `s` (one turn of
+/// length `total`) extended by [`WRAP`] nodes of the turns before and
+/// after.
+fn wrapped(chain: &[usize], s: &[f64], total: f64) -> (Vec<usize>, Vec<f64>) {
+    let n = chain.len() - 1;
+    let mut c: Vec<usize> = (n - WRAP..n).map(|k| chain[k]).collect();
+    let mut t: Vec<f64> = (n - WRAP..n).map(|k| s[k] - total).collect();
+    c.extend_from_slice(chain);
+    t.extend_from_slice(s);
+    c.extend((1..=WRAP).map(|k| chain[k]));
+    t.extend((1..=WRAP).map(|k| s[k] + total));
+    (c, t)
+}
+
+/// The abscissa on a closed loop (`chain` with arclengths `s`) of its point
+/// nearest to `p`, in [0, the loop's length).
+fn loop_abscissa(x: &[[f64; 2]], (chain, s): (&[usize], &[f64]), p: [f64; 2]) -> f64 {
+    let total = s[s.len() - 1];
+    let mut best = (f64::INFINITY, 0.0);
+    for k in 0..chain.len() - 1 {
+        let (p0, p1) = (x[chain[k]], x[chain[k + 1]]);
+        let d = [p1[0] - p0[0], p1[1] - p0[1]];
+        let len2 = d[0] * d[0] + d[1] * d[1];
+        let t = (((p[0] - p0[0]) * d[0] + (p[1] - p0[1]) * d[1]) / len2).clamp(0.0, 1.0);
+        let foot = [p0[0] + t * d[0], p0[1] + t * d[1]];
+        let dd = dist(p, foot);
+        if dd < best.0 {
+            best = (dd, (s[k] + t * len2.sqrt()).rem_euclid(total));
+        }
+    }
+    best.1
 }
 
 /// The edges of one side chained into a single polyline, in their
@@ -1243,16 +1459,25 @@ pub fn check_facing(x: &[[f64; 2]], a: &Side, b: &Side) -> Result<()> {
 pub fn strip(nodes: Nodes<'_>, pair: usize, a: &Side, b: &Side) -> Result<Vec<ContactElement>> {
     match conforming(nodes, pair, a, b) {
         Ok(elements) => Ok(elements),
-        // The strip's reason is the one to give, with why the strip was
-        // tried; the conforming test's own message (which node has no
-        // partner) would double the length, and cut to fit it ended
-        // mid-number ("… 6.544e-").
-        Err(_) => nonconforming(nodes, pair, a, b).map_err(|e| {
-            Error::contact(format!(
-                "{} (the two sides' nodes do not match, so B is the strip triangulation \
-                 between them)",
-                e.message()
-            ))
+        // The strip's reason first, then why the strip was tried: the
+        // conforming test's message (which node has no partner) where both
+        // fit in a message, else only that the nodes do not match — whole
+        // clauses, never a message cut to a length (it ended mid-number,
+        // "… 6.544e-").
+        Err(conforming) => nonconforming(nodes, pair, a, b).map_err(|e| {
+            let whole = format!(
+                "{} (as the strip triangulation; as a conforming interface: {})",
+                e.message(),
+                conforming.message()
+            );
+            Error::contact(match whole.len() <= crate::error::MESSAGE_BYTES {
+                true => whole,
+                false => format!(
+                    "{} (the two sides' nodes do not match, so B is the strip triangulation \
+                     between them)",
+                    e.message()
+                ),
+            })
         }),
     }
 }

@@ -88,28 +88,47 @@ pub enum InversionTest {
 }
 
 /// How the contact energy of a pair is weighted along its interface
-/// (docs/method.md §6.11).
+/// (docs/method.md §6.11): chosen pair by pair by default, or forced for
+/// every pair (an expert's override).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
 pub enum ContactWeighting {
-    /// The elements of B, each a penalty on the gap at its apex over its
-    /// interface edge: the seed's method. The default.
+    /// Each pair what is right for its interface
+    /// ([`discretisation`](crate::contact)): where the two sides' nodes
+    /// match, the strip's elements of B (the seed's method); where they do
+    /// not, the mortar weighting — but for a pair with friction or a
+    /// contact mesh of its own, which keeps B. The default.
     #[default]
+    Auto,
+    /// The elements of B for every pair, each a penalty on the gap at its
+    /// apex over its interface edge: the seed's method. On a curved
+    /// interface whose nodes do not match, B reads one side only (a
+    /// warning says so where it does).
     Strip,
-    /// The sampled mortar weighting ([`mortar`]): one weighted gap
-    /// G_i = ∫ ψ_i g ds per node of the coarser side (the slave), a
-    /// penalty ½ (κ/m_i) G_i², active where G_i < 0. Exact on the contact
-    /// patch test whatever the two sides' nodes; frictionless contact
-    /// solves and load steps (no friction or host contact yet).
+    /// The sampled mortar weighting ([`mortar`]) for every pair: one
+    /// weighted gap G_i = ∫ ψ_i g ds per node of the coarser side of each
+    /// interface (the slave), a penalty ½ (κ/m_i) G_i², active where
+    /// G_i < 0. Exact on the contact patch test whatever the two sides'
+    /// nodes; frictionless (no friction or host contact yet).
     Mortar,
 }
 
 impl ContactWeighting {
-    /// Decodes the C ABI integer (0 = strip, 1 = mortar).
+    /// Decodes the C ABI integer (0 = strip, 1 = mortar, 2 = automatic).
     pub fn from_i32(value: i32) -> Option<ContactWeighting> {
         match value {
             0 => Some(ContactWeighting::Strip),
             1 => Some(ContactWeighting::Mortar),
+            2 => Some(ContactWeighting::Auto),
             _ => None,
+        }
+    }
+
+    /// The C ABI integer ([`ContactWeighting::from_i32`]).
+    pub fn to_i32(self) -> i32 {
+        match self {
+            ContactWeighting::Strip => 0,
+            ContactWeighting::Mortar => 1,
+            ContactWeighting::Auto => 2,
         }
     }
 }

@@ -59,7 +59,7 @@
 
 use std::collections::BTreeMap;
 
-use super::mesh::{Aligned, Nodes, Side, aligned};
+use super::mesh::{Aligned, Nodes, Side, alignment};
 use crate::error::{Error, Result};
 
 /// The weight ψ_i of a slave node's gap.
@@ -227,7 +227,18 @@ pub fn weighted_gaps(
     slave: Slave,
     basis: Basis,
 ) -> Result<Vec<WeightedGap>> {
-    let al = to_slave_ends(aligned(nodes, a, b)?, nodes.x, slave);
+    let al = alignment(nodes, a, b)?;
+    let al = match al.turn {
+        // Closed loops: the slave's whole turn faces the master.
+        Some([a0, a1, b0, b1]) => {
+            let (lo, hi) = match slave {
+                Slave::A => (al.s_a[a0], al.s_a[a1]),
+                Slave::B => (al.s_b[b0], al.s_b[b1]),
+            };
+            Aligned { lo, hi, ..al }
+        }
+        None => to_slave_ends(al, nodes.x, slave),
+    };
     let merged = merged_points(&al, slave);
     let gaps = integrated(nodes.x, &al, slave, basis, &merged)
         .into_iter()
@@ -529,19 +540,47 @@ fn bent(on_edge: &[(f64, Sample)], length: f64) -> bool {
 /// stiffer cylinder read zero), while the coarser slave converges on
 /// either mesh ratio.
 pub fn coarser_side(nodes: Nodes<'_>, a: &Side, b: &Side) -> Result<Slave> {
-    let al = aligned(nodes, a, b)?;
+    let [edges_a, edges_b] = facing_edges(nodes, a, b)?;
+    Ok(if edges_b < edges_a {
+        Slave::B
+    } else {
+        Slave::A
+    })
+}
+
+/// The number of edges of side a and of side b over the part where they
+/// face each other: [`coarser_side`]'s measure, summed over the pairs of
+/// one interface where it is cut into several.
+pub fn facing_edges(nodes: Nodes<'_>, a: &Side, b: &Side) -> Result<[usize; 2]> {
+    let al = alignment(nodes, a, b)?;
+    if let Some([a0, a1, b0, b1]) = al.turn {
+        // Closed loops face each other whole: a turn's edges.
+        return Ok([a1 - a0, b1 - b0]);
+    }
     let inside = |s: &[f64]| {
         s.iter()
             .filter(|&&v| v > al.lo + al.tol && v < al.hi - al.tol)
             .count()
     };
     // Edges over [lo, hi]: one more than the nodes strictly inside.
-    let (edges_a, edges_b) = (inside(&al.s_a) + 1, inside(&al.s_b) + 1);
-    Ok(if edges_b < edges_a {
-        Slave::B
-    } else {
-        Slave::A
-    })
+    Ok([inside(&al.s_a) + 1, inside(&al.s_b) + 1])
+}
+
+/// The penalty length h_c of a pair weighted by its sides `a` and `b`: the
+/// shortest edge of either side over the part where they face each other
+/// (with the edges across its ends), as the strip's B holds them
+/// (`contact::law::penalty_lengths`): both weightings penalise a uniform
+/// gap alike.
+pub fn penalty_length(nodes: Nodes<'_>, a: &Side, b: &Side) -> Result<f64> {
+    let al = alignment(nodes, a, b)?;
+    let x = nodes.x;
+    let shortest = |chain: &[usize], s: &[f64]| {
+        (0..chain.len() - 1)
+            .filter(|&k| s[k + 1] > al.lo - al.tol && s[k] < al.hi + al.tol)
+            .map(|k| dist(x[chain[k]], x[chain[k + 1]]))
+            .fold(f64::INFINITY, f64::min)
+    };
+    Ok(shortest(&al.chain_a, &al.s_a).min(shortest(&al.chain_b, &al.s_b)))
 }
 
 /// A weighted gap being summed.

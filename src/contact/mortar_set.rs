@@ -12,8 +12,8 @@
 
 use std::collections::BTreeMap;
 
-use super::mesh::{Nodes, Side};
-use super::mortar::{Basis, Slave, SlaveNode, WeightedGap, coarser_side, weighted_gaps};
+use super::mesh::Side;
+use super::mortar::{Slave, SlaveNode, WeightedGap};
 use super::{ContactLaw, ContactOptions, ContactPair, InversionTest};
 use crate::error::{Error, Result, ensure_finite};
 use crate::fem::mesh::Mesh;
@@ -27,36 +27,6 @@ pub struct PairGaps {
     pub slave: Slave,
     /// Its slave nodes' weighted gaps.
     pub gaps: Vec<WeightedGap>,
-}
-
-/// The weighted gaps of pair `i` (`p`), the coarser side as the slave (a
-/// finer slave over-constrains a stiff master: docs/method.md §6.11,
-/// "Which side is the slave"). Refuses a pair with a contact mesh of its
-/// own (the weighting reads the two sides, not B), naming it.
-pub fn pair_gaps(mesh: &Mesh, i: usize, p: &ContactPair) -> Result<PairGaps> {
-    if p.user_mesh.is_some() {
-        return Err(Error::contact(format!(
-            "contact pair {i} (tags {} and {}) has a contact mesh of its own: the mortar \
-             weighting integrates the gap along the two sides and uses no mesh B; drop the \
-             pair's mesh or use the strip weighting",
-            p.tag_a, p.tag_b
-        )));
-    }
-    let nodes = Nodes::of(mesh);
-    let (a, b) = (Side::of_tag(mesh, p.tag_a)?, Side::of_tag(mesh, p.tag_b)?);
-    let named = |e: Error| {
-        Error::new(
-            e.status(),
-            format!("contact pair {i} (mortar weighting): {}", e.message()),
-        )
-    };
-    let slave = coarser_side(nodes, &a, &b).map_err(named)?;
-    let gaps = weighted_gaps(nodes, &a, &b, slave, Basis::Dual).map_err(named)?;
-    Ok(PairGaps {
-        pair: i,
-        slave,
-        gaps,
-    })
 }
 
 /// Triangles whose node cliques cover the couplings of every weighted gap
@@ -416,6 +386,8 @@ impl MortarState {
         let mut sum = vec![0.0; x.len()];
         let mut count = vec![0u32; x.len()];
         let mut first = 0;
+        let every: std::collections::HashMap<usize, f64> =
+            self.nodes.iter().map(|s| (s.node, value(s))).collect();
         for pg in &self.gaps {
             let mine = &self.nodes[first..first + pg.gaps.len()];
             first += pg.gaps.len();
@@ -430,7 +402,9 @@ impl MortarState {
             };
             let at: std::collections::HashMap<usize, f64> =
                 mine.iter().map(|s| (s.node, value(s))).collect();
-            let of = |v: usize| at.get(&v).copied().unwrap_or(0.0);
+            // A slave node shared with a pair before it carries that pair's
+            // weighted gap (`discretisation::merge_shared`).
+            let of = |v: usize| at.get(&v).or_else(|| every.get(&v)).copied().unwrap_or(0.0);
             let mut read = std::collections::BTreeSet::new();
             for (wg, s) in pg.gaps.iter().zip(mine) {
                 sum[s.node] += value(s);

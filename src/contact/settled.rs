@@ -52,8 +52,9 @@ impl ContactState {
     pub fn strip(&self) -> Result<&StripState> {
         match (&self.mortar, self.strip.elements.is_empty()) {
             (Some(_), true) => Err(Error::state(
-                "the last contact solve used the mortar weighting: its state is per slave node \
-                 (contact_slave_nodes, contact_nodal_pressures), not per element of B",
+                "the last contact solve used the mortar weighting for every pair: its state is \
+                 per slave node (contact_slave_nodes, contact_nodal_pressures), not per element \
+                 of B",
             )),
             _ => Ok(&self.strip),
         }
@@ -64,8 +65,8 @@ impl ContactState {
     pub fn slave_nodes(&self) -> Result<&[SlaveNode]> {
         self.mortar.as_ref().map(|m| &m.nodes[..]).ok_or_else(|| {
             Error::state(
-                "the last contact solve used the strip weighting: its state is per element \
-                 of B (contact_active, contact_pressure), not per slave node",
+                "the last contact solve used the strip weighting for every pair: its state is \
+                 per element of B (contact_active, contact_pressure), not per slave node",
             )
         })
     }

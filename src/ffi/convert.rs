@@ -46,11 +46,16 @@ pub enum OrderingMode {
 #[repr(C)]
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum ContactWeightingMode {
-    /// The elements of the contact mesh B (the seed's method; default).
+    /// The elements of the contact mesh B (the seed's method) for every
+    /// pair.
     Strip = 0,
-    /// The sampled mortar weighting: one weighted gap per node of each
-    /// pair's coarser side; frictionless contact solves and load steps.
+    /// The sampled mortar weighting for every pair: one weighted gap per
+    /// node of each interface's coarser side; frictionless.
     Mortar = 1,
+    /// Each pair what is right for its interface (the default): B where
+    /// the two sides' nodes match, the mortar weighting where they do not,
+    /// B for a pair with friction or a contact mesh of its own.
+    Auto = 2,
 }
 
 /// Options of `tfem_solve_contact`. Fill with `tfem_contact_options_default`

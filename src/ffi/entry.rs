@@ -1169,23 +1169,25 @@ pub unsafe extern "C" fn tfem_get_contact_nodal_pressures(
     })
 }
 
-/// Chooses how every contact pair's energy is weighted along its
-/// interface: `weighting` is a `ContactWeightingMode` (0 strip, the
-/// default: the elements of the contact mesh B; 1 mortar: one weighted gap
-/// per node of each pair's coarser side, exact on the contact patch test
-/// whatever the two sides' nodes, and the right reading on a stiff curved
-/// tool; frictionless `tfem_solve_contact` and `tfem_step`). A change
-/// discards the results, like any change of the contact pairs. Under the
-/// mortar weighting friction, the stick law and the literal inversion test
-/// are refused, and so are the
-/// per-element outputs (`tfem_get_contact_active`,
+/// Chooses how the contact pairs' energy is weighted along their
+/// interfaces: `weighting` is a `ContactWeightingMode`. 2 automatic, the
+/// default: each pair what is right for it — the elements of the contact
+/// mesh B (the seed's method) where the two sides' nodes match, one
+/// weighted gap per node of the interface's coarser side where they do not
+/// (exact on the contact patch test whatever the meshes, converging on
+/// curved interfaces where B reads one side only), B for a pair with
+/// friction or a contact mesh of its own. 0 strip and 1 mortar force one
+/// weighting on every pair (an expert's override). A change discards the
+/// results, like any change of the contact pairs. Under the mortar
+/// weighting friction, the stick law and the literal inversion test are
+/// refused. The per-element outputs (`tfem_get_contact_active`,
 /// `tfem_get_contact_pressure`, `tfem_get_contact_elements`, shear,
-/// friction state, dissipation; `tfem_get_sizes` gives 0 contact
-/// elements; `tfem_get_contact_mesh` still gives the strip B the pairs
-/// would make): the
-/// state is per slave node (`tfem_get_contact_slave_nodes`); nodal
-/// pressures, gaps and forces, reactions and the report work as under the
-/// strip, the report's `elements` counting slave nodes.
+/// friction state, dissipation; `tfem_get_sizes`' contact elements) cover
+/// the pairs weighted by B, and are refused when no pair is
+/// (`tfem_get_contact_mesh` still gives the B the pairs would make); the
+/// state of the others is per slave node (`tfem_get_contact_slave_nodes`).
+/// Nodal pressures, gaps and forces, reactions and the report cover every
+/// pair, the report's `elements` counting elements of B and slave nodes.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_set_contact_weighting(
     model: *mut TfemModel,
@@ -1194,7 +1196,7 @@ pub unsafe extern "C" fn tfem_set_contact_weighting(
     with_model(model, |m| {
         let w = ContactWeighting::from_i32(weighting).ok_or_else(|| {
             Error::argument(format!(
-                "weighting = {weighting} must be 0 (strip) or 1 (mortar)"
+                "weighting = {weighting} must be 0 (strip), 1 (mortar) or 2 (automatic)"
             ))
         })?;
         m.model.set_contact_weighting(w);
@@ -1203,18 +1205,14 @@ pub unsafe extern "C" fn tfem_set_contact_weighting(
 }
 
 /// Writes the contact weighting (a `ContactWeightingMode`: 0 strip, 1
-/// mortar) into `*weighting`.
+/// mortar, 2 automatic, the default) into `*weighting`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_contact_weighting(
     model: *mut TfemModel,
     weighting: *mut c_int,
 ) -> Status {
     with_model(model, |m| {
-        let w = match m.model.contact_weighting() {
-            ContactWeighting::Strip => 0,
-            ContactWeighting::Mortar => 1,
-        };
-        write(weighting, w, "weighting")
+        write(weighting, m.model.contact_weighting().to_i32(), "weighting")
     })
 }
 

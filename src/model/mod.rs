@@ -631,7 +631,12 @@ impl Model {
     /// open, |τ| ≤ μ p when sticking, μ p when slipping; all zero when the
     /// solve was frictionless.
     pub fn contact_shear(&self) -> Result<Vec<f64>> {
-        Ok(self.contact_solution()?.state.strip()?.shear().positive_zero())
+        Ok(self
+            .contact_solution()?
+            .state
+            .strip()?
+            .shear()
+            .positive_zero())
     }
 
     /// The frictional state of every element of B in the last contact
@@ -645,7 +650,12 @@ impl Model {
     /// element of B, per unit thickness: ½ τ Δγ_p ≥ 0 (docs/method.md
     /// §6.15); zero when frictionless.
     pub fn contact_dissipation(&self) -> Result<Vec<f64>> {
-        Ok(self.contact_solution()?.state.strip()?.dissipation().positive_zero())
+        Ok(self
+            .contact_solution()?
+            .state
+            .strip()?
+            .dissipation()
+            .positive_zero())
     }
 
     /// The report of the last contact solve.
@@ -657,7 +667,9 @@ impl Model {
     /// solve, [f_x, f_y] per node (zero off the interfaces; force per unit
     /// thickness), computed on request. It sums to zero over each pair.
     pub fn contact_forces(&self) -> Result<Vec<[f64; 2]>> {
-        let forces = self.solution()?.contact_forces(&self.problem, self.field()?);
+        let forces = self
+            .solution()?
+            .contact_forces(&self.problem, self.field()?);
         forces.map(PositiveZero::positive_zero)
     }
 

@@ -72,7 +72,7 @@ impl Problem {
             prescribed: BTreeMap::new(),
             loads: Loads::default(),
             pairs: Vec::new(),
-            weighting: ContactWeighting::Strip,
+            weighting: ContactWeighting::Auto,
             pairing_warnings: Vec::new(),
             structure: 0,
             contact: 0,
@@ -504,16 +504,21 @@ impl Problem {
                 p.tag_a, p.tag_b
             )));
         }
-        // Build it now so that a bad interface is reported by this call.
-        contact::build(mesh, self.pairs.len(), tag_a, tag_b)?;
-        self.pairs.push(ContactPair {
+        let pair = ContactPair {
             tag_a,
             tag_b,
             body_a,
             body_b,
             user_mesh: None,
             friction: 0.0,
-        });
+        };
+        // Discretise it now so that a bad interface is reported by this
+        // call.
+        let mut pairs = self.pairs.clone();
+        pairs.push(pair.clone());
+        let at = (&pairs[..], self.pairs.len());
+        crate::contact::discretisation::check_pair(mesh, at, self.weighting)?;
+        self.pairs.push(pair);
         self.changed_contact("the contact pairs");
         Ok(self.pairs.len() - 1)
     }

@@ -57,10 +57,14 @@ pub fn contact_imbalance(model: &Model) -> Result<f64> {
     let fmax = f
         .iter()
         .fold(0.0f64, |m, v| m.max(v[0].abs().max(v[1].abs())));
-    let off = model
-        .contact_elements()?
-        .iter()
-        .flat_map(|el| el.nodes)
+    // The interface nodes: those of B, or under the mortar weighting those
+    // the weighted gaps load.
+    let nodes: Vec<usize> = match model.contact_elements() {
+        Ok(elements) => elements.iter().flat_map(|el| el.nodes).collect(),
+        Err(_) => (0..f.len()).filter(|&v| f[v] != [0.0; 2]).collect(),
+    };
+    let off = nodes
+        .into_iter()
         .map(|v| {
             (fbody[v][0] - f[v][0])
                 .abs()

@@ -342,18 +342,19 @@ impl HertzScene {
         } else {
             (f64::NAN, f64::NAN)
         };
-        let traction: BTreeMap<usize, f64> = match self.model.contact_weighting() {
-            // The library's nodal pressures: the slave's −κG_i/m_i, read
-            // at the master's nodes along the slave.
-            crate::ContactWeighting::Mortar => self
+        // The library's nodal pressures: under the mortar weighting the
+        // slave's −κG_i/m_i, read at the master's nodes along the slave;
+        // under the strip the interface traction of B's nodes.
+        let traction: BTreeMap<usize, f64> = match self.model.contact_elements() {
+            Err(_) => self
                 .model
                 .contact_nodal_pressures()?
                 .into_iter()
                 .enumerate()
                 .collect(),
-            crate::ContactWeighting::Strip => {
+            Ok(elements) => {
                 let f = self.model.contact_forces()?;
-                interface_pressures(Nodes::of(mesh), self.model.contact_elements()?, |_, v| f[v])
+                interface_pressures(Nodes::of(mesh), elements, |_, v| f[v])
                     .into_iter()
                     .map(|q| (q.node, q.pressure))
                     .collect()
