@@ -182,7 +182,7 @@ pub fn one_sided_warnings(
 
 fn warnings_of(zones: &[Zone], pairs: &[ContactPair]) -> Vec<String> {
     let mut warnings = Vec::new();
-    for z in zones {
+    for z in zones.iter().chain(&scattered(zones)) {
         let [la, lb] = z.active_length;
         let (long, short) = (la.max(lb), la.min(lb));
         if z.active < MIN_ACTIVE || short >= SHARE * long {
@@ -201,6 +201,36 @@ fn warnings_of(zones: &[Zone], pairs: &[ContactPair]) -> Vec<String> {
         ));
     }
     warnings
+}
+
+/// For each pair whose contact falls apart into zones too small to judge
+/// one by one, every one carried by one family, the pair's zones judged
+/// together: Σ of each zone's longer family against Σ of its shorter.
+/// The 2:3 shrink-fit rings, the coarser ring inside, press only the fine
+/// edges facing a coarse node: each active element is a zone of its own,
+/// the contact length a third of the circle, and no zone reached
+/// [`MIN_ACTIVE`] to say so.
+fn scattered(zones: &[Zone]) -> Vec<Zone> {
+    let mut whole: std::collections::BTreeMap<usize, Zone> = Default::default();
+    for z in zones.iter().filter(|z| z.active < MIN_ACTIVE) {
+        let [la, lb] = z.active_length;
+        let w = whole.entry(z.pair).or_insert(Zone {
+            pair: z.pair,
+            active_length: [0.0; 2],
+            active: 0,
+        });
+        w.active_length[0] += la.max(lb);
+        w.active_length[1] += la.min(lb);
+        w.active += z.active;
+    }
+    whole
+        .into_values()
+        .filter(|w| {
+            zones
+                .iter()
+                .all(|z| z.pair != w.pair || z.active < MIN_ACTIVE)
+        })
+        .collect()
 }
 
 /// Union–find over node numbers.

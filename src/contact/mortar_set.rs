@@ -344,6 +344,17 @@ fn penalty(pair: usize, wg: &WeightedGap, kappa: f64, data: &PenaltyData<'_>) ->
     }
 }
 
+/// One interface of the slave nodes ([`MortarState::nodal_values`]).
+#[derive(Default)]
+struct Interface<'s> {
+    /// Its slave nodes' states.
+    slaves: Vec<&'s SlaveNode>,
+    /// The master nodes its weighted gaps read.
+    masters: std::collections::BTreeSet<usize>,
+    /// Its slave edges.
+    edges: Vec<[usize; 2]>,
+}
+
 /// The state of a settled solve's weighted gaps, for its outputs: each
 /// slave node's state and the weighted gaps they are of (pair by pair, in
 /// the nodes' order).
@@ -385,40 +396,19 @@ impl MortarState {
         let x = mesh.nodes();
         let mut sum = vec![0.0; x.len()];
         let mut count = vec![0u32; x.len()];
-        let mut first = 0;
         let every: std::collections::HashMap<usize, f64> =
             self.nodes.iter().map(|s| (s.node, value(s))).collect();
-        for pg in &self.gaps {
-            let mine = &self.nodes[first..first + pg.gaps.len()];
-            first += pg.gaps.len();
-            if only.is_some_and(|o| o != pg.pair) || mine.is_empty() {
-                continue;
-            }
-            let p = &pairs[pg.pair];
-            let (a, b) = (Side::of_tag(mesh, p.tag_a)?, Side::of_tag(mesh, p.tag_b)?);
-            let slave_side = match pg.slave {
-                Slave::A => a,
-                Slave::B => b,
-            };
-            let at: std::collections::HashMap<usize, f64> =
-                mine.iter().map(|s| (s.node, value(s))).collect();
-            // A slave node shared with a pair before it carries that pair's
-            // weighted gap (`discretisation::merge_shared`).
-            let of = |v: usize| at.get(&v).or_else(|| every.get(&v)).copied().unwrap_or(0.0);
-            let mut read = std::collections::BTreeSet::new();
-            for (wg, s) in pg.gaps.iter().zip(mine) {
+        let of = |v: usize| every.get(&v).copied().unwrap_or(0.0);
+        for interface in self.interfaces(mesh, pairs, only)? {
+            for s in &interface.slaves {
                 sum[s.node] += value(s);
                 count[s.node] += 1;
-                read.extend(
-                    wg.coefficients
-                        .iter()
-                        .map(|&(g, _)| g / 2)
-                        .filter(|v| !slave_side.contains(*v)),
-                );
             }
-            for m in read {
+            // A master node reads the slave's value along the nearest
+            // slave edge of its interface, whichever pair the edge is of.
+            for &m in &interface.masters {
                 let (mut best, mut val) = (f64::INFINITY, 0.0);
-                for &[p, q] in slave_side.edges() {
+                for &[p, q] in &interface.edges {
                     let e = [x[q][0] - x[p][0], x[q][1] - x[p][1]];
                     let r = [x[m][0] - x[p][0], x[m][1] - x[p][1]];
                     let t =
@@ -438,5 +428,47 @@ impl MortarState {
             .map(|(s, &c)| if c > 0 { s / f64::from(c) } else { 0.0 })
             .collect();
         Ok((values, count.iter().map(|&c| c > 0).collect()))
+    }
+
+    /// The interfaces of the slave nodes — the pairs between the same slave
+    /// body and master body together (a ring cut into pairs is one
+    /// interface) —, or of pair `only` alone: each one's slave nodes, the
+    /// master nodes its weighted gaps read, and its slave edges.
+    fn interfaces(
+        &self,
+        mesh: &Mesh,
+        pairs: &[ContactPair],
+        only: Option<usize>,
+    ) -> Result<Vec<Interface<'_>>> {
+        let mut by_bodies: BTreeMap<(i32, i32), Interface<'_>> = BTreeMap::new();
+        let mut first = 0;
+        for pg in &self.gaps {
+            let mine = &self.nodes[first..first + pg.gaps.len()];
+            first += pg.gaps.len();
+            if only.is_some_and(|o| o != pg.pair) || mine.is_empty() {
+                continue;
+            }
+            let p = &pairs[pg.pair];
+            let (slave_tag, master_body) = match pg.slave {
+                Slave::A => (p.tag_a, p.body_b),
+                Slave::B => (p.tag_b, p.body_a),
+            };
+            let slave_side = Side::of_tag(mesh, slave_tag)?;
+            let interface = by_bodies.entry((slave_side.body, master_body)).or_default();
+            interface.slaves.extend(mine);
+            interface.edges.extend(slave_side.edges().iter().copied());
+            // The master's nodes: those of the other body (a slave node
+            // merged from a pair beside this one reads its own value).
+            let slave_body = Some(slave_side.body);
+            for wg in &pg.gaps {
+                interface.masters.extend(
+                    wg.coefficients
+                        .iter()
+                        .map(|&(g, _)| g / 2)
+                        .filter(|&v| mesh.node_body()[v] != slave_body),
+                );
+            }
+        }
+        Ok(by_bodies.into_values().collect())
     }
 }

@@ -10,6 +10,7 @@ pub mod lame;
 pub mod patch;
 pub mod punch;
 pub mod ring;
+pub mod shrink_fit;
 pub mod stack;
 pub mod wall;
 
