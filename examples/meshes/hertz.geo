@@ -1,5 +1,5 @@
 // The Hertz scene's geometry (src/studies/scenes/hertz.rs, half model) for
-// Gmsh, examples/ring_study.rs (issue 42): the block [0, 2R] x [-2R, 0]
+// Gmsh, probes/ring_study.rs and tests/gmsh_interfaces.rs: the block [0, 2R] x [-2R, 0]
 // (physical surface 1) and the part 0 <= x <= 0.8R of a cylinder of
 // radius R touching it at the origin (surface 2), each meshed on its own
 // (the interface nodes do not match). Size h within 1.5a of the contact

@@ -1,4 +1,4 @@
-// Two full rings in a shrink fit for examples/ring_study.rs (issue 42):
+// Two full rings in a shrink fit for probes/ring_study.rs and tests/gmsh_interfaces.rs:
 // the inner ring a <= r <= b + delta, the outer ring b <= r <= c, each
 // interface circle made of `narcs` arcs starting at angle `rot`, grouped
 // into two half-circles (physical curves 11, 12 on the inner ring and 21,

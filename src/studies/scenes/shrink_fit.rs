@@ -127,6 +127,31 @@ impl ShrinkFit {
     }
 }
 
+/// The mean radius over the angle of the closed polygon through `points`
+/// (by angle around the origin): Σ over its chords of ∫ r dθ, over 2π. Of
+/// two rings' facing polygons, the difference is their mean radial
+/// overlap, whose Lamé pressure a discretisation of the meshed rings
+/// converges to.
+pub fn polygon_mean_radius(points: &[[f64; 2]]) -> f64 {
+    let n = points.len();
+    let mut total = 0.0;
+    for k in 0..n {
+        let (p, q) = (points[k], points[(k + 1) % n]);
+        let e = [q[0] - p[0], q[1] - p[1]];
+        let length = e[0].hypot(e[1]);
+        // The chord's distance from the origin, and where p and q lie
+        // along it from the foot: ∫ r dθ = ∫ d sec φ dφ, φ = atan(t/d).
+        let d = (p[0] * q[1] - p[1] * q[0]).abs() / length;
+        let along = |x: [f64; 2]| (x[0] * e[0] + x[1] * e[1]) / length;
+        let primitive = |t: f64| {
+            let phi = (t / d).atan();
+            d * (1.0 / phi.cos() + phi.tan()).ln()
+        };
+        total += primitive(along(q)) - primitive(along(p));
+    }
+    total / (2.0 * PI)
+}
+
 /// Mean radius over the angle of a regular n-gon inscribed in the unit
 /// circle: ∫ r dθ / 2π over its chords, r = cos(π/n)/cos φ on each.
 fn polygon_mean(n: usize) -> f64 {
