@@ -249,14 +249,38 @@ static void refusals_name_what_the_weighting_does_not_serve(void) {
   o.law = TFEM_CONTACT_LAW_STICK;
   EXPECT_ERROR(m, tfem_solve_contact(m, &o, NULL), TFEM_STATUS_INVALID_ARGUMENT, "stick law");
   CHECK(tfem_get_contact_slave_nodes(m, NULL, NULL, NULL, pres, NU + 1) == TFEM_STATUS_OK);
+  /* Friction is refused where it is set, naming the pair, and the model
+   * keeps its results and its frictionless pair. */
+  EXPECT_ERROR(m, tfem_set_friction(m, 0, 0.3), TFEM_STATUS_INVALID_ARGUMENT, "contact pair 0");
+  CHECK(tfem_get_contact_slave_nodes(m, NULL, NULL, NULL, pres, NU + 1) == TFEM_STATUS_OK);
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  tfem_destroy(m);
+}
+
+/* The mortar weighting forced on a model whose pair has friction is
+ * refused by tfem_set_contact_weighting, naming the pair; the model keeps
+ * its weighting and solves as before. */
+static void the_mortar_weighting_refuses_a_frictional_pair_when_it_is_set(void) {
+  int lb[NL + 1], ut[NU + 1];
+  tfem_model *m = patch(lb, ut);
   CHECK(tfem_set_friction(m, 0, 0.3) == TFEM_STATUS_OK);
-  EXPECT_ERROR(m, tfem_solve_contact(m, NULL, NULL), TFEM_STATUS_INVALID_ARGUMENT, "friction");
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  EXPECT_ERROR(m, tfem_set_contact_weighting(m, TFEM_CONTACT_WEIGHTING_MORTAR),
+               TFEM_STATUS_INVALID_ARGUMENT, "contact pair 0 has friction");
+  int w = -1;
+  CHECK(tfem_get_contact_weighting(m, &w) == TFEM_STATUS_OK && w == TFEM_CONTACT_WEIGHTING_AUTO);
+  /* The refused call kept the results. */
+  double cp[64];
+  CHECK(tfem_get_contact_pressure(m, cp, 64) == TFEM_STATUS_OK);
+  CHECK(tfem_set_friction(m, 0, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_set_contact_weighting(m, TFEM_CONTACT_WEIGHTING_MORTAR) == TFEM_STATUS_OK);
   tfem_destroy(m);
 }
 
 int main(void) {
   patch_test_is_exact();
   refusals_name_what_the_weighting_does_not_serve();
+  the_mortar_weighting_refuses_a_frictional_pair_when_it_is_set();
   printf("mortar_test: %d passed, %d failed\n", passed, failed);
   return failed == 0 ? 0 : 1;
 }

@@ -83,7 +83,9 @@ fn main() {
             ..base
         };
         let mut s = hz.build().expect("scene");
-        s.model.set_contact_weighting(weighting);
+        s.model
+            .set_contact_weighting(weighting)
+            .expect("a frictionless scene");
         let t0 = std::time::Instant::now();
         match s.solve(&hz, &ContactOptions::default()) {
             Ok(r) => {

@@ -359,7 +359,7 @@ fn measure(
     weighting: ContactWeighting,
     dump: Option<&Path>,
 ) -> Result<Row, String> {
-    s.model.set_contact_weighting(weighting);
+    s.model.set_contact_weighting(weighting).unwrap();
     let t = Instant::now();
     let report = s
         .model
@@ -631,7 +631,7 @@ fn hertz(levels: &[usize], ws: &[ContactWeighting]) {
                 .add_pressure(4, 0.5 * load / (0.8 * hz.radius))
                 .unwrap();
             model.add_contact_pair(2, 3).unwrap();
-            model.set_contact_weighting(w);
+            model.set_contact_weighting(w).unwrap();
             let t = Instant::now();
             let rep = match model.solve_contact(&ContactOptions::default()) {
                 Ok(r) => r,

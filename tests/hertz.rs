@@ -29,7 +29,7 @@ fn run_weighted(base: Hertz, levels: &[f64], weighting: ContactWeighting) -> Vec
                 ..base
             };
             let mut s = hz.build().unwrap();
-            s.model.set_contact_weighting(weighting);
+            s.model.set_contact_weighting(weighting).unwrap();
             let r = s.solve(&hz, &ContactOptions::default()).unwrap();
             assert!(
                 r.report.iterations <= 20,

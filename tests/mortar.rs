@@ -12,7 +12,9 @@ const RATIOS: [f64; 7] = [1.0, 1.5, 2.0 / 3.0, 7.0 / 3.0, 3.0 / 7.0, 1.6, 5.0 / 
 /// Largest element stress error over p of a solved patch test.
 fn patch_error(test: &PatchTest) -> (f64, Vec<f64>) {
     let mut s = test.build().unwrap();
-    s.model.set_contact_weighting(ContactWeighting::Mortar);
+    s.model
+        .set_contact_weighting(ContactWeighting::Mortar)
+        .unwrap();
     let report = s.model.solve_contact(&ContactOptions::default()).unwrap();
     let r = s.stress_errors(test).unwrap().max;
     let _ = report;
@@ -75,7 +77,7 @@ fn seed(h: f64, w: ContactWeighting) -> ([f64; 4], usize) {
     }
     .build()
     .unwrap();
-    s.model.set_contact_weighting(w);
+    s.model.set_contact_weighting(w).unwrap();
     let r = s.solve(&ContactOptions::default()).unwrap();
     (
         [r.lc, r.gap_edge, r.v_top, r.compliance],
@@ -118,7 +120,7 @@ fn stiff_hertz(
         ..Hertz::default()
     };
     let mut s = hz.build().unwrap();
-    s.model.set_contact_weighting(w);
+    s.model.set_contact_weighting(w).unwrap();
     let options = ContactOptions {
         refactorize,
         ..ContactOptions::default()
@@ -179,7 +181,9 @@ fn solved_patch() -> tfem::scenes::patch::PatchScene {
         ..PatchTest::default()
     };
     let mut s = test.build().unwrap();
-    s.model.set_contact_weighting(ContactWeighting::Mortar);
+    s.model
+        .set_contact_weighting(ContactWeighting::Mortar)
+        .unwrap();
     s.model.solve_contact(&ContactOptions::default()).unwrap();
     s
 }
@@ -203,7 +207,7 @@ fn per_element_outputs_are_refused_under_the_mortar_weighting() {
 }
 
 #[test]
-fn friction_and_the_stick_law_are_refused_by_name_and_leave_the_results() {
+fn the_stick_law_is_refused_by_the_solve_by_name_and_leaves_the_results() {
     let mut s = solved_patch();
     let m = &mut s.model;
     let stick = ContactOptions {
@@ -211,19 +215,48 @@ fn friction_and_the_stick_law_are_refused_by_name_and_leave_the_results() {
         ..ContactOptions::default()
     };
     let e = m.solve_contact(&stick).unwrap_err();
-    assert!(e.message().contains("stick law"), "{}", e.message());
+    assert!(
+        e.message().contains("contact pair 0") && e.message().contains("stick law"),
+        "{}",
+        e.message()
+    );
     assert!(m.contact_slave_nodes().is_ok());
-    m.set_friction(0, 0.3).unwrap();
-    let e = m.solve_contact(&ContactOptions::default()).unwrap_err();
+}
+
+#[test]
+fn friction_under_the_mortar_weighting_is_refused_where_it_is_set() {
+    let mut s = solved_patch();
+    let m = &mut s.model;
+    let e = m.set_friction(0, 0.3).unwrap_err();
     assert!(
         e.message().contains("contact pair 0 has friction"),
         "{}",
         e.message()
     );
+    assert_eq!(m.contact_pairs()[0].friction, 0.0);
+    assert!(m.contact_slave_nodes().is_ok());
 }
 
 #[test]
-fn a_pair_with_its_own_contact_mesh_is_refused_by_name() {
+fn the_mortar_weighting_is_refused_where_it_is_set_on_a_frictional_pair() {
+    let mut s = PatchTest::default().build().unwrap();
+    s.model.set_friction(0, 0.3).unwrap();
+    s.model.solve_contact(&ContactOptions::default()).unwrap();
+    let e = s
+        .model
+        .set_contact_weighting(ContactWeighting::Mortar)
+        .unwrap_err();
+    assert!(
+        e.message().contains("contact pair 0 has friction"),
+        "{}",
+        e.message()
+    );
+    assert_eq!(s.model.contact_weighting(), ContactWeighting::Auto);
+    assert!(s.model.contact_pressure().is_ok());
+}
+
+#[test]
+fn a_pair_with_its_own_contact_mesh_is_refused_by_name_where_the_weighting_is_set() {
     let test = PatchTest::default();
     let mut s = test.build().unwrap();
     let b = s.model.contact_mesh().unwrap();
@@ -233,16 +266,29 @@ fn a_pair_with_its_own_contact_mesh_is_refused_by_name() {
     s.model
         .add_contact_pair_with_mesh(pair.tag_a, pair.tag_b, &tris)
         .unwrap();
-    s.model.set_contact_weighting(ContactWeighting::Mortar);
     let e = s
         .model
-        .solve_contact(&ContactOptions::default())
+        .set_contact_weighting(ContactWeighting::Mortar)
         .unwrap_err();
     assert!(
         e.message().contains("contact pair 0") && e.message().contains("mesh of its own"),
         "{}",
         e.message()
     );
+    // And the other way round: under the mortar weighting, a pair with a
+    // mesh of its own is refused where it is declared.
+    s.model.clear_contact_pairs();
+    s.model.add_contact_pair(pair.tag_a, pair.tag_b).unwrap();
+    s.model
+        .set_contact_weighting(ContactWeighting::Mortar)
+        .unwrap();
+    s.model.clear_contact_pairs();
+    let e = s
+        .model
+        .add_contact_pair_with_mesh(pair.tag_a, pair.tag_b, &tris)
+        .unwrap_err();
+    assert!(e.message().contains("mesh of its own"), "{}", e.message());
+    assert!(s.model.contact_pairs().is_empty());
 }
 
 #[test]
@@ -270,7 +316,9 @@ fn a_failed_solve_keeps_the_mortar_solves_matrix_to_the_bit() {
     }
     .build()
     .unwrap();
-    s.model.set_contact_weighting(ContactWeighting::Mortar);
+    s.model
+        .set_contact_weighting(ContactWeighting::Mortar)
+        .unwrap();
     s.model.solve_contact(&ContactOptions::default()).unwrap();
     let before = matrix_bits(&s.model);
     let capped = ContactOptions {
@@ -304,7 +352,9 @@ fn a_stack_of_non_matching_blocks_carries_the_uniform_stress_exactly() {
     // pairs, each with its own slave side; the exact stress is uniform.
     let st = tfem::scenes::stack::Stack::alternating(5, 0.2, &[8, 13, 5, 21]);
     let mut s = st.build().unwrap();
-    s.model.set_contact_weighting(ContactWeighting::Mortar);
+    s.model
+        .set_contact_weighting(ContactWeighting::Mortar)
+        .unwrap();
     let r = s.model.solve_contact(&ContactOptions::default()).unwrap();
     assert_eq!(r.active, r.elements);
     assert!(
@@ -343,7 +393,7 @@ fn a_rigid_cylinder_on_a_finer_mesh_reads_hertz_where_the_strip_is_one_sided() {
             ..base
         };
         let mut s = rc.build().unwrap();
-        s.scene.model.set_contact_weighting(w);
+        s.scene.model.set_contact_weighting(w).unwrap();
         let r = s.solve(&rc, &ContactOptions::default()).unwrap();
         r.hertz.inner_error(&r.hertz.interface_pressure)
     };
@@ -379,7 +429,9 @@ fn a_shrink_fit_converges_at_second_order_like_the_strip() {
                     ..Lame::default()
                 };
                 let mut s = lame.build().unwrap();
-                s.model.set_contact_weighting(ContactWeighting::Mortar);
+                s.model
+                    .set_contact_weighting(ContactWeighting::Mortar)
+                    .unwrap();
                 let r = s.solve(&lame, &ContactOptions::default()).unwrap();
                 p.push(r.pressure_error);
                 hoop.push(r.hoop_error);

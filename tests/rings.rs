@@ -149,18 +149,34 @@ fn a_ring_is_one_interface_read_as_its_two_halves_are() {
     );
 }
 
-#[test]
-fn the_strip_forced_on_non_matching_rings_is_warned_about() {
-    let f = fit(128, 2);
+/// The contact length the strip forced on the rings reports over the
+/// circle, and whether the solve warned "one-sided".
+fn strip_forced(pieces: usize) -> (f64, bool) {
+    let f = fit(128, pieces);
     let mut s = f.build().unwrap();
-    s.model.set_contact_weighting(ContactWeighting::Strip);
+    s.model
+        .set_contact_weighting(ContactWeighting::Strip)
+        .unwrap();
     let report = s.model.solve_contact(&ContactOptions::default()).unwrap();
     let circle = 2.0 * std::f64::consts::PI * f.lame().radius;
+    let warned = s.model.warnings().iter().any(|w| w.contains("one-sided"));
+    (report.contact_length / circle, warned)
+}
+
+#[test]
+fn the_strip_forced_on_non_matching_rings_is_warned_about() {
+    let (length, warned) = strip_forced(2);
     // Each pressed element is a zone of its own: a third of the circle.
-    assert!(report.contact_length < 0.4 * circle);
-    let warnings = s.model.warnings();
-    assert!(
-        warnings.iter().any(|w| w.contains("one-sided")),
-        "{warnings:?}"
-    );
+    assert!(length < 0.4, "{length}");
+    assert!(warned);
+}
+
+#[test]
+fn the_strip_forced_on_a_ring_as_one_closed_interface_is_built_and_warned_about() {
+    // Walked over one turn of each loop, the strip reads the ring as it
+    // reads its halves.
+    let (halves, _) = strip_forced(2);
+    let (ring, warned) = strip_forced(1);
+    assert!((ring - halves).abs() < 1e-3, "{ring} against {halves}");
+    assert!(warned);
 }

@@ -34,7 +34,7 @@ fn seed(weighting: ContactWeighting) -> Model {
     }
     .build()
     .unwrap();
-    s.model.set_contact_weighting(weighting);
+    s.model.set_contact_weighting(weighting).unwrap();
     s.solve(&ContactOptions::default()).unwrap();
     s.model
 }
@@ -391,7 +391,7 @@ fn a_load_step_writes_the_nodal_contact_arrays_under_either_weighting() {
         }
         .build()
         .unwrap();
-        s.model.set_contact_weighting(weighting);
+        s.model.set_contact_weighting(weighting).unwrap();
         s.model.step(0.5, &ContactOptions::default()).unwrap();
         let vtu = read_vtu(&written(&s.model, "step.vtu"));
         check_nodal_contact(&vtu, &s.model);

@@ -140,7 +140,7 @@ pub(crate) fn hertz(report: &mut String, a: &Args) {
                 ..case
             };
             let mut s = hz.build().expect("scene");
-            s.model.set_contact_weighting(weighting);
+            s.model.set_contact_weighting(weighting).unwrap();
             let t0 = Instant::now();
             match s.solve(&hz, &ContactOptions::default()) {
                 Ok(r) => {

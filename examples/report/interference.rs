@@ -63,7 +63,7 @@ pub(crate) fn interference(report: &mut String, a: &Args) {
                 };
                 let t0 = Instant::now();
                 let r = lame.build().and_then(|mut s| {
-                    s.model.set_contact_weighting(weighting);
+                    s.model.set_contact_weighting(weighting).unwrap();
                     s.solve(&lame, &ContactOptions::default())
                 });
                 let t = t0.elapsed().as_secs_f64();

@@ -278,7 +278,9 @@ fn patch_ratios_mortar(report: &mut String, levels: &[usize], ratios: &[(&str, f
                     };
                     let t0 = Instant::now();
                     let r = test.build().and_then(|mut s| {
-                        s.model.set_contact_weighting(ContactWeighting::Mortar);
+                        s.model
+                            .set_contact_weighting(ContactWeighting::Mortar)
+                            .unwrap();
                         let report = s.model.solve_contact(&ContactOptions::default())?;
                         let e = s.stress_errors(&test)?;
                         let nodes = s.model.contact_slave_nodes()?.to_vec();

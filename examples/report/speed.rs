@@ -81,14 +81,16 @@ pub(crate) fn speed_run(n: usize, ordering: &str, mode: &str) -> ! {
     // "mortar-historyN": the same history under the mortar weighting.
     if let Some(steps) = mode.strip_prefix("mortar-history") {
         s.model
-            .set_contact_weighting(tfem::ContactWeighting::Mortar);
+            .set_contact_weighting(tfem::ContactWeighting::Mortar)
+            .expect("a frictionless scene");
         history_run(&mut s.model, steps, rss_mesh);
     }
     let single = mode == "single";
     // "mortar": the condensed loop under the mortar weighting.
     if mode == "mortar" {
         s.model
-            .set_contact_weighting(tfem::ContactWeighting::Mortar);
+            .set_contact_weighting(tfem::ContactWeighting::Mortar)
+            .expect("a frictionless scene");
     }
     let mut options = ContactOptions {
         refactorize: !matches!(mode, "condensed" | "mortar"),

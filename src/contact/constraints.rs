@@ -354,8 +354,7 @@ fn mortar_penalties(b: &Build<'_>) -> Result<MortarSet> {
     if !d.has_mortar() {
         return Ok(MortarSet::default());
     }
-    let pairs = d.gaps().iter().map(|g| (g.pair, &b.pairs[g.pair]));
-    mortar_set::check_options(b.options, pairs)?;
+    mortar_set::check_options(b.options, d.gaps().iter().map(|g| g.pair))?;
     let soft = pair_material(b);
     let moduli: Vec<f64> = (0..b.pairs.len())
         .map(|i| b.options.contact_modulus.unwrap_or(soft(i).young()))

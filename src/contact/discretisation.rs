@@ -13,7 +13,8 @@
 //! splits into isolated elements (the 2:3 rings: a third of the contact
 //! length, nodal pressures 0.3p–1.8p, no warning). A pair with a contact
 //! mesh of its own, or with friction (which the weighted gaps do not carry
-//! yet), keeps B.
+//! yet), keeps B; forced, the mortar weighting refuses such a pair where
+//! it is set ([`serves`]).
 
 use std::collections::BTreeMap;
 
@@ -139,6 +140,31 @@ pub fn family_of(mesh: &Mesh, p: &ContactPair, weighting: ContactWeighting) -> R
     })
 }
 
+/// Refuses a pair — pair `i`, with friction coefficient `friction` and,
+/// when `own_mesh`, a contact mesh of its own — that `weighting` cannot
+/// serve, naming it: the mortar weighting's gaps are frictionless and
+/// integrate the gap along the two sides, with no mesh B. The one place of
+/// that rule, asked whenever a pair, its friction or the weighting is set.
+pub fn serves(weighting: ContactWeighting, i: usize, friction: f64, own_mesh: bool) -> Result<()> {
+    if weighting != ContactWeighting::Mortar {
+        return Ok(());
+    }
+    if friction > 0.0 {
+        return Err(Error::argument(format!(
+            "contact pair {i} has friction (mu = {friction}): the mortar weighting is \
+             frictionless; set mu = 0 or use the automatic or strip weighting"
+        )));
+    }
+    if own_mesh {
+        return Err(Error::argument(format!(
+            "contact pair {i} has a contact mesh of its own: the mortar weighting integrates \
+             the gap along the two sides and uses no mesh B; drop the pair's mesh or use the \
+             automatic or strip weighting"
+        )));
+    }
+    Ok(())
+}
+
 /// Checks that pair `i` of `pairs` can be discretised under `weighting`,
 /// so that a bad interface is reported when the pair is declared.
 pub fn check_pair(
@@ -184,14 +210,12 @@ fn mortar_gaps(
     let mut sides = Vec::with_capacity(which.len());
     for &i in which {
         let p = &pairs[i];
-        if p.user_mesh.is_some() {
-            return Err(Error::contact(format!(
-                "contact pair {i} (tags {} and {}) has a contact mesh of its own: the mortar \
-                 weighting integrates the gap along the two sides and uses no mesh B; drop the \
-                 pair's mesh or use the strip weighting",
-                p.tag_a, p.tag_b
-            )));
-        }
+        serves(
+            ContactWeighting::Mortar,
+            i,
+            p.friction,
+            p.user_mesh.is_some(),
+        )?;
         let (a, b) = (Side::of_tag(mesh, p.tag_a)?, Side::of_tag(mesh, p.tag_b)?);
         let edges = facing_edges(nodes, &a, &b).map_err(|e| named(e, i))?;
         sides.push((i, a, b, edges));

@@ -443,6 +443,16 @@ impl Ends {
         }
     }
 
+    /// No ends: two closed loops, which face each other all round.
+    fn none() -> Ends {
+        Ends {
+            lo: f64::NEG_INFINITY,
+            hi: f64::INFINITY,
+            tol_lo: 0.0,
+            tol_hi: 0.0,
+        }
+    }
+
     /// Whether a chain of abscissas `s` starts before lo and ends beyond hi.
     fn beyond(&self, s: &[f64]) -> (bool, bool) {
         (
@@ -968,9 +978,11 @@ pub fn checked_triangles(
 /// end): every edge's apex is the node of the other side nearest to its
 /// midpoint, but an edge across the other side's end, whose apex is that
 /// end. Such an edge faces the other side over part of its length only,
-/// which its element's [`ContactElement::facing`] holds. Each triangle has
-/// an edge on one interface and a node on the other; orientation and
-/// normals are set as for a user mesh.
+/// which its element's [`ContactElement::facing`] holds. Two closed loops
+/// (a ring in a bore) face each other all round: the strip is walked over
+/// one turn of each and closes on its first rung. Each triangle has an edge
+/// on one interface and a node on the other; orientation and normals are
+/// set as for a user mesh.
 pub fn build_nonconforming(
     mesh: &Mesh,
     pair: usize,
@@ -997,9 +1009,14 @@ pub fn nonconforming(
         lo,
         hi,
         tol,
-        ..
-    } = aligned(nodes, a, b)?;
-    let (w, ends) = windows_and_ends(x, (&chain_a, &s_a), (&chain_b, &s_b), (lo, hi, tol));
+        turn,
+    } = alignment(nodes, a, b)?;
+    // Two closed loops face each other all round: the strip is walked over
+    // one turn of each, its last rung the first, and no edge is cut.
+    let (w, ends) = match turn {
+        Some(w) => (w, Ends::none()),
+        None => windows_and_ends(x, (&chain_a, &s_a), (&chain_b, &s_b), (lo, hi, tol)),
+    };
     let (ca, sa) = (&chain_a[w[0]..=w[1]], &s_a[w[0]..=w[1]]);
     let (cb, sb) = (&chain_b[w[2]..=w[3]], &s_b[w[2]..=w[3]]);
     let (tris, fractions) = walk_strip((ca, sa), (cb, sb), &ends);
@@ -1519,6 +1536,53 @@ mod tests {
         let sliver = checked_triangles(Nodes::new(&x, 0), 0, &a, &b, &[[0, 1, 4]]);
         assert!(sliver.is_err(), "scale {s:e}: the sliver is accepted");
         checked_triangles(Nodes::new(&x, 0), 0, &a, &b, &[[1, 2, 4]]).map(|r| r.0)
+    }
+
+    /// A disc's boundary polygon of `na` nodes at radius 1 (side a, the
+    /// disc inside) and a bore's of `nb` nodes at radius `rb` (side b, the
+    /// body outside), the bore's first node half a step round.
+    fn ring_sides(na: usize, nb: usize, rb: f64) -> (Vec<[f64; 2]>, Side, Side) {
+        let at = |r: f64, t: f64| [r * t.cos(), r * t.sin()];
+        let tau = std::f64::consts::TAU;
+        let mut x: Vec<[f64; 2]> = (0..na)
+            .map(|k| at(1.0, tau * k as f64 / na as f64))
+            .collect();
+        x.extend((0..nb).map(|k| at(rb, tau * (k as f64 + 0.5) / nb as f64)));
+        // The disc on the left of p → q: counter-clockwise; the bore's
+        // body outside: clockwise.
+        let ea: Vec<[usize; 2]> = (0..na).map(|k| [k, (k + 1) % na]).collect();
+        let eb: Vec<[usize; 2]> = (0..nb).map(|k| [na + (k + 1) % nb, na + k]).collect();
+        let a = Side::from_edges(Nodes::new(&x, 0), 0, 1, 1, &ea).unwrap();
+        let b = Side::from_edges(Nodes::new(&x, 0), 1, 2, 2, &eb).unwrap();
+        (x, a, b)
+    }
+
+    #[test]
+    fn the_strip_between_two_closed_loops_has_one_triangle_on_every_edge_of_either() {
+        for (na, nb) in [(8, 12), (12, 8), (7, 7), (64, 96)] {
+            let (x, a, b) = ring_sides(na, nb, 1.001);
+            let elements = nonconforming(Nodes::new(&x, 0), 0, &a, &b)
+                .unwrap_or_else(|e| panic!("{na}:{nb}: {}", e.message()));
+            assert_eq!(elements.len(), na + nb, "{na}:{nb}");
+            let mut edges: Vec<[usize; 2]> = elements
+                .iter()
+                .map(|e| {
+                    let mut v: Vec<usize> =
+                        e.nodes.iter().copied().filter(|&n| n != e.apex).collect();
+                    v.sort_unstable();
+                    [v[0], v[1]]
+                })
+                .collect();
+            edges.sort_unstable();
+            edges.dedup();
+            assert_eq!(
+                edges.len(),
+                na + nb,
+                "{na}:{nb}: an edge carries two triangles"
+            );
+            // Every element faces the other side over its whole edge.
+            assert!(elements.iter().all(|e| e.facing == e.edge_length));
+        }
     }
 
     #[test]

@@ -49,34 +49,29 @@ pub fn cliques(all: &[PairGaps]) -> Vec<[usize; 3]> {
     tris
 }
 
-/// Refuses options the mortar weighting does not serve for the pairs
-/// `pairs` (index, pair) under it, naming them: it is frictionless (the
-/// stick law and μ > 0 need the strip) and activates a node on its
-/// linearised weighted gap (the literal test needs the strip).
-pub fn check_options<'p>(
+/// Refuses solve options the mortar weighting does not serve, naming the
+/// first pair of `pairs` it weights: its gaps are frictionless (the stick
+/// law needs B) and it activates a node on its linearised weighted gap
+/// (the literal test needs B). Friction and own meshes are refused where
+/// they are set ([`super::discretisation::serves`]).
+pub fn check_options(
     options: &ContactOptions,
-    mut pairs: impl Iterator<Item = (usize, &'p ContactPair)>,
+    mut pairs: impl Iterator<Item = usize>,
 ) -> Result<()> {
-    if options.law != ContactLaw::Frictionless {
-        return Err(Error::argument(
-            "the mortar weighting is frictionless: the stick law (ContactLaw::Stick) needs the \
-             strip weighting",
-        ));
-    }
-    if options.test != InversionTest::Linearised {
-        return Err(Error::argument(
-            "the mortar weighting activates a slave node on its linearised weighted gap: the \
-             literal inversion test needs the strip weighting",
-        ));
-    }
-    if let Some((i, p)) = pairs.find(|(_, p)| p.friction > 0.0) {
-        return Err(Error::argument(format!(
-            "contact pair {i} has friction (mu = {}): the mortar weighting is frictionless \
-             for now; set mu = 0 or use the strip weighting",
-            p.friction
-        )));
-    }
-    Ok(())
+    let what = match (options.law, options.test) {
+        (ContactLaw::Stick, _) => "is frictionless: the stick law (a tied interface)",
+        (_, InversionTest::Literal) => {
+            "activates a slave node on its linearised weighted gap: the literal inversion test"
+        }
+        _ => return Ok(()),
+    };
+    let pair = pairs
+        .next()
+        .map_or(String::new(), |i| format!("contact pair {i}: "));
+    Err(Error::argument(format!(
+        "{pair}the mortar weighting (the automatic choice where curved sides' nodes do not \
+         match) {what} needs the elements of B: set the strip weighting"
+    )))
 }
 
 /// One slave node's penalty over the unknowns.

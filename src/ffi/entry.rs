@@ -1178,9 +1178,12 @@ pub unsafe extern "C" fn tfem_get_contact_nodal_pressures(
 /// curved interfaces where B reads one side only), B for a pair with
 /// friction or a contact mesh of its own. 0 strip and 1 mortar force one
 /// weighting on every pair (an expert's override). A change discards the
-/// results, like any change of the contact pairs. Under the mortar
-/// weighting friction, the stick law and the literal inversion test are
-/// refused. The per-element outputs (`tfem_get_contact_active`,
+/// results, like any change of the contact pairs. The mortar weighting is
+/// frictionless and makes no mesh B: forcing it with a pair that has
+/// friction or a contact mesh of its own, or giving such a pair under it,
+/// is refused by that call (TFEM_ERR_ARGUMENT, naming the pair); a solve
+/// under it with the stick law or the literal inversion test is refused
+/// too. The per-element outputs (`tfem_get_contact_active`,
 /// `tfem_get_contact_pressure`, `tfem_get_contact_elements`, shear,
 /// friction state, dissipation; `tfem_get_sizes`' contact elements) cover
 /// the pairs weighted by B, and are refused when no pair is
@@ -1199,8 +1202,7 @@ pub unsafe extern "C" fn tfem_set_contact_weighting(
                 "weighting = {weighting} must be 0 (strip), 1 (mortar) or 2 (automatic)"
             ))
         })?;
-        m.model.set_contact_weighting(w);
-        Ok(())
+        m.model.set_contact_weighting(w)
     })
 }
 

@@ -611,14 +611,17 @@ impl Model {
     }
 
     /// Sets how every contact pair's energy is weighted along its
-    /// interface (docs/method.md §6.11): [`ContactWeighting::Strip`] (the
-    /// default, the elements of B) or [`ContactWeighting::Mortar`] (a
-    /// weighted gap per node of each pair's coarser side: exact on the
-    /// contact patch test whatever the meshes; frictionless contact solves
-    /// and load steps). A change drops the results' validity like any edit of the
-    /// contact pairs.
-    pub fn set_contact_weighting(&mut self, weighting: ContactWeighting) {
-        self.problem.set_contact_weighting(weighting);
+    /// interface (docs/method.md §6.11): [`ContactWeighting::Auto`] (the
+    /// default: each pair what is right for its interface),
+    /// [`ContactWeighting::Strip`] (the elements of B on every pair) or
+    /// [`ContactWeighting::Mortar`] (a weighted gap per node of each
+    /// interface's coarser side, frictionless). Refuses a weighting that
+    /// cannot serve a declared pair (the mortar weighting a pair with
+    /// friction or a contact mesh of its own), naming it, and leaves the
+    /// model as it was. A change drops the results' validity like any edit
+    /// of the contact pairs.
+    pub fn set_contact_weighting(&mut self, weighting: ContactWeighting) -> Result<()> {
+        self.edit(|p| p.set_contact_weighting(weighting))
     }
 
     /// How the contact pairs' energy is weighted.

@@ -234,24 +234,22 @@ impl Problem {
                 ))
             })?;
         }
+        let misfit = |i: usize, p: &ContactPair, e: Error| {
+            Error::contact(format!(
+                "contact pair {i} (tags {}, {}) no longer fits these edges: {}",
+                p.tag_a,
+                p.tag_b,
+                e.message()
+            ))
+        };
         let mut pairs = self.pairs.clone();
         for (i, p) in pairs.iter_mut().enumerate() {
-            let refit = || -> Result<(i32, i32)> {
-                let bodies = contact::pair_bodies(mesh, p.tag_a, p.tag_b)?;
-                match &p.user_mesh {
-                    None => contact::build(mesh, i, p.tag_a, p.tag_b).map(|_| ()),
-                    Some(t) => contact::check_user_mesh(mesh, i, p.tag_a, p.tag_b, t).map(|_| ()),
-                }?;
-                Ok(bodies)
-            };
-            (p.body_a, p.body_b) = refit().map_err(|e| {
-                Error::contact(format!(
-                    "contact pair {i} (tags {}, {}) no longer fits these edges: {}",
-                    p.tag_a,
-                    p.tag_b,
-                    e.message()
-                ))
-            })?;
+            (p.body_a, p.body_b) =
+                contact::pair_bodies(mesh, p.tag_a, p.tag_b).map_err(|e| misfit(i, p, e))?;
+        }
+        for (i, p) in pairs.iter().enumerate() {
+            contact::discretisation::check_pair(mesh, (&pairs, i), self.weighting)
+                .map_err(|e| misfit(i, p, e))?;
         }
         Ok(pairs)
     }
@@ -542,6 +540,7 @@ impl Problem {
         if triangles.is_empty() {
             return Err(Error::contact("the contact mesh has no triangles"));
         }
+        contact::discretisation::serves(self.weighting, self.pairs.len(), 0.0, true)?;
         let (elements, flipped) =
             contact::check_user_mesh(mesh, self.pairs.len(), tag_a, tag_b, triangles)?;
         self.pairs.push(ContactPair {
@@ -568,7 +567,7 @@ impl Problem {
     /// [`ContactLaw::Stick`]: crate::contact::ContactLaw::Stick
     pub fn set_friction(&mut self, pair: usize, mu: f64) -> Result<()> {
         let n = self.pairs.len();
-        let Some(p) = self.pairs.get_mut(pair) else {
+        let Some(p) = self.pairs.get(pair) else {
             return Err(crate::error::no_pair(pair, n));
         };
         if !(mu.is_finite() && mu >= 0.0) {
@@ -576,17 +575,25 @@ impl Problem {
                 "friction coefficient mu = {mu:?} of contact pair {pair} must be finite and >= 0"
             )));
         }
-        if p.friction.to_bits() != mu.to_bits() {
-            // A frictional pair's B measures along shared normals
-            // (contact::shared_normals): turning friction on or off rebuilds
-            // B. Otherwise μ decides which unknowns are on the interface,
-            // not the structure: a new K₁, the same pattern.
-            let rebuild = (p.friction > 0.0) != (mu > 0.0);
-            p.friction = mu;
-            match rebuild {
-                true => self.changed_contact("friction on/off"),
-                false => self.changed_stiffness(),
-            }
+        contact::discretisation::serves(self.weighting, pair, mu, p.user_mesh.is_some())?;
+        if p.friction.to_bits() == mu.to_bits() {
+            return Ok(());
+        }
+        // A frictional pair's B measures along shared normals
+        // (contact::shared_normals), and the automatic weighting gives it B:
+        // turning friction on or off rebuilds the pair, checked now.
+        // Otherwise μ decides which unknowns are on the interface, not the
+        // structure: a new K₁, the same pattern.
+        let rebuild = (p.friction > 0.0) != (mu > 0.0);
+        let mut pairs = self.pairs.clone();
+        pairs[pair].friction = mu;
+        if rebuild {
+            contact::discretisation::check_pair(self.mesh_ref()?, (&pairs, pair), self.weighting)?;
+        }
+        self.pairs = pairs;
+        match rebuild {
+            true => self.changed_contact("friction on/off"),
+            false => self.changed_stiffness(),
         }
         Ok(())
     }
@@ -614,13 +621,20 @@ impl Problem {
     }
 
     /// Sets how every pair's contact energy is weighted along its
-    /// interface. A change remakes the contact structures (the matrix
-    /// pattern holds the mortar couplings) and ends any load history.
-    pub fn set_contact_weighting(&mut self, weighting: ContactWeighting) {
+    /// interface; refuses a weighting that cannot serve a declared pair
+    /// (the mortar weighting a pair with friction or a contact mesh of its
+    /// own), naming it. A change remakes the contact structures (the
+    /// matrix pattern holds the mortar couplings) and ends any load
+    /// history.
+    pub fn set_contact_weighting(&mut self, weighting: ContactWeighting) -> Result<()> {
+        for (i, p) in self.pairs.iter().enumerate() {
+            contact::discretisation::serves(weighting, i, p.friction, p.user_mesh.is_some())?;
+        }
         if self.weighting != weighting {
             self.weighting = weighting;
             self.changed_contact("the contact weighting");
         }
+        Ok(())
     }
 
     /// How the pairs' contact energy is weighted.
