@@ -291,7 +291,11 @@ fn friction_is_refused_in_a_mortar_history_and_the_history_goes_on() {
     // The refusal changed nothing: the history's next step is taken.
     model.step(1.0, &options).unwrap();
     model.revert_step().unwrap();
-    assert_eq!(bits(&model), before, "the revert returns to the step before");
+    assert_eq!(
+        bits(&model),
+        before,
+        "the revert returns to the step before"
+    );
 }
 
 #[test]
