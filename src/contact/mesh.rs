@@ -1242,9 +1242,9 @@ pub(crate) fn alignment(nodes: Nodes<'_>, a: &Side, b: &Side) -> Result<Aligned>
 /// Whether the nodes of sides `a` and `b` face each other across the
 /// interface, node for node, where the sides are close (within half an
 /// edge, where contact can form): [`conforming`] pairs them, or, the sides
-/// laid along each other by [`aligned`], every node of either side within
+/// laid along each other by `aligned`, every node of either side within
 /// half its edge of the other side sits at the abscissa of a node of the
-/// other side that is close too, within [`FACING_TOL`] of the local edge.
+/// other side that is close too, within `FACING_TOL` of the local edge.
 /// Looser than [`conforming`]'s test, which needs every node paired (a
 /// cylinder over a block, meshed alike near the contact, differs where
 /// the gap is wide) with its offset normal to the interface (the end
