@@ -18,12 +18,11 @@
 
 use std::collections::BTreeMap;
 
+use super::mesh::pair_strip;
 use super::mesh::{Nodes, Side, matching, straight};
 use super::mortar::{Basis, Slave, WeightedGap, facing_edges, penalty_length, weighted_gaps};
 use super::mortar_set::PairGaps;
-use super::{
-    ContactElement, ContactPair, ContactWeighting, build, check_user_mesh, shared_normals,
-};
+use super::{ContactElement, ContactPair, ContactWeighting};
 use crate::error::{Error, Result};
 use crate::fem::mesh::Mesh;
 
@@ -61,7 +60,7 @@ impl Discretisation {
         let mut strip = Vec::new();
         for (i, p) in pairs.iter().enumerate() {
             if families[i] == Family::Strip {
-                strip.append(&mut strip_elements(mesh, i, p)?);
+                strip.append(&mut pair_strip(mesh, i, p)?);
             }
         }
         let mortar: Vec<usize> = (0..pairs.len())
@@ -173,26 +172,9 @@ pub fn check_pair(
     weighting: ContactWeighting,
 ) -> Result<()> {
     match family_of(mesh, &pairs[i], weighting)? {
-        Family::Strip => strip_elements(mesh, i, &pairs[i]).map(|_| ()),
+        Family::Strip => pair_strip(mesh, i, &pairs[i]).map(|_| ()),
         Family::Mortar => mortar_gaps(mesh, pairs, &[i]).map(|_| ()),
     }
-}
-
-/// B of pair `i`: built, or its own mesh checked; a frictional pair's
-/// elements measure along [`shared_normals`].
-fn strip_elements(mesh: &Mesh, i: usize, p: &ContactPair) -> Result<Vec<ContactElement>> {
-    let mut elements = match &p.user_mesh {
-        None => build(mesh, i, p.tag_a, p.tag_b)?,
-        Some(tris) => check_user_mesh(mesh, i, p.tag_a, p.tag_b, tris)?.0,
-    };
-    if p.friction > 0.0 {
-        shared_normals(
-            Nodes::of(mesh),
-            &Side::of_tag(mesh, p.tag_a)?,
-            &mut elements,
-        );
-    }
-    Ok(elements)
 }
 
 /// The weighted gaps of the mortar pairs `which` and their penalty lengths.

@@ -1403,22 +1403,28 @@ fn chain(nodes: Nodes<'_>, side: &Side) -> Result<Vec<usize>> {
     Ok(out)
 }
 
-/// B of every pair in turn (pair i's elements carry `pair = i`): built,
-/// or the user's mesh checked. The elements of a frictional pair (μ > 0)
-/// measure along [`shared_normals`].
+/// B of every pair in turn (pair i's elements carry `pair = i`), each
+/// as [`pair_strip`] makes it.
 pub fn build_all(mesh: &Mesh, pairs: &[ContactPair]) -> Result<Vec<ContactElement>> {
     let mut all = Vec::new();
     for (i, p) in pairs.iter().enumerate() {
-        let mut elements = match &p.user_mesh {
-            None => build(mesh, i, p.tag_a, p.tag_b)?,
-            Some(tris) => check_user_mesh(mesh, i, p.tag_a, p.tag_b, tris)?.0,
-        };
-        if p.friction > 0.0 {
-            shared_normals(Nodes::of(mesh), &side_of(mesh, p.tag_a)?, &mut elements);
-        }
-        all.append(&mut elements);
+        all.append(&mut pair_strip(mesh, i, p)?);
     }
     Ok(all)
+}
+
+/// B of pair `i`: built, or the user's mesh checked, its elements
+/// measuring along [`shared_normals`] — one normal per point of the
+/// interface for every pair, frictional or not, so that a tangential slip
+/// is never read as an opening and a frictionless interface transmits no
+/// tangential traction (docs/method.md §6.15, "One normal per point").
+pub fn pair_strip(mesh: &Mesh, i: usize, p: &ContactPair) -> Result<Vec<ContactElement>> {
+    let mut elements = match &p.user_mesh {
+        None => build(mesh, i, p.tag_a, p.tag_b)?,
+        Some(tris) => check_user_mesh(mesh, i, p.tag_a, p.tag_b, tris)?.0,
+    };
+    shared_normals(Nodes::of(mesh), &side_of(mesh, p.tag_a)?, &mut elements);
+    Ok(elements)
 }
 
 /// Builds B for a pair: conforming (node-to-node quads) when the nodes of

@@ -239,6 +239,11 @@ pub struct ContactElement {
 }
 
 impl ContactElement {
+    /// The position of its apex in `nodes`.
+    pub fn apex_position(&self) -> usize {
+        self.nodes.iter().position(|&v| v == self.apex).unwrap_or(2)
+    }
+
     /// f_e/ℓ_e: the share of its interface edge that faces the other side,
     /// 1 exactly where it all does. Its law's pressure and shear are this
     /// share of the traction (its T_e is ℓ_e/f_e larger;

@@ -81,20 +81,41 @@ impl ContactState {
             if !s.active[k] {
                 continue;
             }
-            let (cs, tau, bt) = s.element(mesh, k);
-            let ue = element_values(u, &el.nodes);
+            let f = s.element_force(mesh, u, k);
             for a in 0..6 {
-                let ku: f64 = (0..6).map(|b| cs.k[a * 6 + b] * ue[b]).sum();
-                add(
-                    el.pair,
-                    2 * el.nodes[a / 2] + a % 2,
-                    -(ku - cs.f0[a] + tau * bt[a]),
-                );
+                add(el.pair, 2 * el.nodes[a / 2] + a % 2, f[a]);
             }
         }
         if let Some(m) = &self.mortar {
             m.forces(add);
         }
+    }
+
+    /// The strip pairs' contact forces on their nodes, pair by pair, each
+    /// active element's force on a node split along the element's own
+    /// normal n (from side a to side b) and tangent t = (−n_y, n_x):
+    /// (pair, node) → [Σ f·n, Σ f·t]. The split is the law's own — a
+    /// frictionless element's force is along its n, so its tangential part
+    /// is round-off, and a frictional one's is its shear — where a node's
+    /// summed force split along one normal of the node would read the turn
+    /// between its elements' normals on a curved interface as shear.
+    pub fn framed_forces(&self, mesh: &Mesh, u: &[f64]) -> BTreeMap<(usize, usize), [f64; 2]> {
+        let s = &self.strip;
+        let mut framed: BTreeMap<(usize, usize), [f64; 2]> = BTreeMap::new();
+        for (k, el) in s.elements.iter().enumerate() {
+            if !s.active[k] {
+                continue;
+            }
+            let f = s.element_force(mesh, u, k);
+            let n = el.normal;
+            for (i, &v) in el.nodes.iter().enumerate() {
+                let fv = [f[2 * i], f[2 * i + 1]];
+                let e = framed.entry((el.pair, v)).or_insert([0.0; 2]);
+                e[0] += fv[0] * n[0] + fv[1] * n[1];
+                e[1] += fv[1] * n[0] - fv[0] * n[1];
+            }
+        }
+        framed
     }
 
     /// Adds to `r` the internal forces of the active constraints on the
@@ -172,21 +193,22 @@ impl ContactState {
         Ok(gap)
     }
 
-    /// The contact pressure at every node (zero off the interfaces), of
-    /// pair `only` alone when given: on the strip pairs the interface
-    /// traction read from both sides (`traction::interface_pressures`) with
-    /// the forces `force(pair, node)`; on the mortar pairs each slave
-    /// node's −κG_i/m_i and, at the nodes of the other side its weighted
-    /// gaps read, the slave's pressure interpolated along the nearest slave
-    /// edge.
-    pub fn nodal_pressures(
+    /// The contact traction at every node (zero off the interfaces), as
+    /// [pressure, shear], of pair `only` alone when given, for the
+    /// displacements `u` (global): on the strip pairs the interface
+    /// traction read from both sides (`traction::interface_tractions`) of
+    /// the elements' [`ContactState::framed_forces`]; on the mortar pairs
+    /// (frictionless, no shear) each slave node's −κG_i/m_i and, at the
+    /// nodes of the other side its weighted gaps read, the slave's pressure
+    /// interpolated along the nearest slave edge.
+    pub fn nodal_tractions(
         &self,
         mesh: &Mesh,
         pairs: &[ContactPair],
         only: Option<usize>,
-        force: impl Fn(usize, usize) -> [f64; 2],
-    ) -> Result<Vec<f64>> {
-        let mut p = vec![0.0; mesh.nodes().len()];
+        u: &[f64],
+    ) -> Result<Vec<[f64; 2]>> {
+        let mut t = vec![[0.0; 2]; mesh.nodes().len()];
         let nodes = Nodes::of(mesh);
         let elements: Vec<ContactElement> = match only {
             Some(pair) => (self.strip.elements.iter())
@@ -195,21 +217,20 @@ impl ContactState {
                 .collect(),
             None => self.strip.elements.clone(),
         };
-        for q in traction::interface_pressures(nodes, &elements, force) {
-            p[q.node] = q.pressure;
+        if !elements.is_empty() {
+            let f = self.framed_forces(mesh, u);
+            let force = |pair: usize, v: usize| f.get(&(pair, v)).copied().unwrap_or([0.0; 2]);
+            for q in traction::interface_tractions(nodes, &elements, force) {
+                t[q.node] = [q.pressure, q.shear];
+            }
         }
         if let Some(m) = &self.mortar {
             let (values, read) = m.nodal_values(mesh, pairs, only, |s| s.pressure)?;
-            overlay(&mut p, &values, &read);
+            for ((t, v), _) in t.iter_mut().zip(values).zip(read).filter(|(_, r)| *r) {
+                *t = [v, 0.0];
+            }
         }
-        Ok(p)
-    }
-}
-
-/// Puts `values` in `target` where `read`.
-fn overlay(target: &mut [f64], values: &[f64], read: &[bool]) {
-    for ((t, v), _) in target.iter_mut().zip(values).zip(read).filter(|(_, r)| **r) {
-        *t = *v;
+        Ok(t)
     }
 }
 
@@ -217,6 +238,17 @@ impl StripState {
     /// Element `k`'s stiffness and gap load, its shear traction τ (scaled to
     /// the share of its edge that carries it) and shear vector b_t (zero when
     /// frictionless).
+    /// The contact force of active element `k` on its nodes' DOFs for the
+    /// displacements `u` (global): −(K_e u_e − f0_e + τ b_t).
+    fn element_force(&self, mesh: &Mesh, u: &[f64], k: usize) -> [f64; 6] {
+        let (cs, tau, bt) = self.element(mesh, k);
+        let ue = element_values(u, &self.elements[k].nodes);
+        std::array::from_fn(|a| {
+            let ku: f64 = (0..6).map(|b| cs.k[a * 6 + b] * ue[b]).sum();
+            -(ku - cs.f0[a] + tau * bt[a])
+        })
+    }
+
     fn element(&self, mesh: &Mesh, k: usize) -> (super::ContactStiffness, f64, [f64; 6]) {
         let el = &self.elements[k];
         let corners = mesh.corners(&el.nodes);
@@ -258,19 +290,6 @@ impl StripState {
             None => vec![0.0; self.elements.len()],
         }
     }
-}
-
-/// The forces of `state` pair by pair: (pair, node) → force.
-pub fn forces_by_pair(
-    state: &ContactState,
-    mesh: &Mesh,
-    u: &[f64],
-) -> BTreeMap<(usize, usize), [f64; 2]> {
-    let mut f: BTreeMap<(usize, usize), [f64; 2]> = BTreeMap::new();
-    state.forces(mesh, u, |pair, g, v| {
-        f.entry((pair, g / 2)).or_insert([0.0; 2])[g % 2] += v;
-    });
-    f
 }
 
 /// What a solve's constraints settled in ([`settle`]): its state, the final
@@ -418,4 +437,11 @@ fn precision_warning(
         k + set.nodes().base,
         pressure[k]
     ));
+}
+
+/// Puts `values` in `target` where `read`.
+fn overlay(target: &mut [f64], values: &[f64], read: &[bool]) {
+    for ((t, v), _) in target.iter_mut().zip(values).zip(read).filter(|(_, r)| **r) {
+        *t = *v;
+    }
 }

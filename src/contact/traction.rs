@@ -25,24 +25,25 @@ use super::ContactElement;
 use super::mesh::Nodes;
 use crate::fem::element::TriGeometry;
 
-/// The contact pressure at one interface node.
+/// The contact traction at one interface node.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct NodalPressure {
+pub struct NodalTraction {
     /// The node (0-based).
     pub node: usize,
     /// Normal contact force on the node over its tributary length,
     /// positive in compression.
     pub pressure: f64,
+    /// Tangential contact force on the node over its tributary length,
+    /// along the tangent (−n_y, n_x) of its body's outward normal n (the
+    /// direction of travel along a counter-clockwise boundary): the shear
+    /// the other body exerts on the node's body. The two sides of an
+    /// interface read the same value for one traction.
+    pub shear: f64,
     /// Its tributary length: the integral of its hat over its interface
     /// edges as far as they face the other side of its pair, half its
     /// edges where they face it whole (summed over its pairs for a node on
     /// several).
     pub tributary: f64,
-}
-
-/// Position of the apex in `el.nodes`.
-fn apex_position(el: &ContactElement) -> usize {
-    el.nodes.iter().position(|&v| v == el.apex).unwrap_or(2)
 }
 
 /// For each element of B, whether its interface edge lies on side a (the
@@ -53,7 +54,7 @@ pub fn edge_on_side_a(nodes: Nodes<'_>, elements: &[ContactElement]) -> Vec<bool
         .iter()
         .map(|el| {
             let geo = TriGeometry::new(&nodes.corners(&el.nodes));
-            let g = geo.g[apex_position(el)];
+            let g = geo.g[el.apex_position()];
             g[0] * el.normal[0] + g[1] * el.normal[1] > 0.0
         })
         .collect()
@@ -233,9 +234,9 @@ fn by_pair(elements: &[ContactElement]) -> Vec<(usize, Cow<'_, [ContactElement]>
 /// that does). Sorted by node.
 fn per_pair(
     elements: &[ContactElement],
-    mut read: impl FnMut(usize, &[ContactElement]) -> Vec<NodalPressure>,
-) -> Vec<NodalPressure> {
-    let mut at: BTreeMap<usize, Vec<NodalPressure>> = BTreeMap::new();
+    mut read: impl FnMut(usize, &[ContactElement]) -> Vec<NodalTraction>,
+) -> Vec<NodalTraction> {
+    let mut at: BTreeMap<usize, Vec<NodalTraction>> = BTreeMap::new();
     for (pair, els) in by_pair(elements) {
         for q in read(pair, &els) {
             at.entry(q.node).or_default().push(q);
@@ -247,69 +248,64 @@ fn per_pair(
                 return *one;
             }
             let m: f64 = qs.iter().map(|q| q.tributary).sum();
-            let pressure = if m > 0.0 {
-                qs.iter().map(|q| q.pressure * q.tributary).sum::<f64>() / m
-            } else {
-                qs.iter().map(|q| q.pressure).sum::<f64>() / qs.len() as f64
+            let mean = |value: fn(&NodalTraction) -> f64| match m > 0.0 {
+                true => qs.iter().map(|q| value(q) * q.tributary).sum::<f64>() / m,
+                false => qs.iter().map(value).sum::<f64>() / qs.len() as f64,
             };
-            NodalPressure {
+            NodalTraction {
                 node: qs[0].node,
-                pressure,
+                pressure: mean(|q| q.pressure),
+                shear: mean(|q| q.shear),
                 tributary: m,
             }
         })
         .collect()
 }
 
-/// The contact pressure at every node of B from the contact forces
-/// `force(pair, node)` of each pair's elements on the node (e.g.
-/// `Model::contact_forces` when there is one pair): the normal force on
-/// the node over its tributary length (the part of its interface edges
-/// that faces the other side), positive when it pushes the node into its
-/// body. A node on several pairs reads their normal forces over their
-/// tributaries together. Sorted by node.
-pub fn nodal_pressures(
+/// The contact traction at every node of B from the forces
+/// `force(pair, node)` of each pair's elements on the node, split along
+/// each element's own normal and tangent (`ContactState::framed_forces`:
+/// [Σ f·n, Σ f·t], n from side a to side b, t = (−n_y, n_x)): the normal
+/// and tangential forces on the node over its tributary length (the part
+/// of its interface edges that faces the other side), the pressure
+/// positive when it pushes the node into its body, the shear along its
+/// body's counter-clockwise tangent. A node on several pairs reads their
+/// forces over their tributaries together. Sorted by node.
+pub fn nodal_tractions(
     nodes: Nodes<'_>,
     elements: &[ContactElement],
     force: impl Fn(usize, usize) -> [f64; 2],
-) -> Vec<NodalPressure> {
+) -> Vec<NodalTraction> {
     per_pair(elements, |pair, els| {
-        own_pressures(nodes, els, |v| force(pair, v))
+        own_tractions(nodes, els, |v| force(pair, v))
     })
 }
 
-/// [`nodal_pressures`] of the elements of one pair.
-fn own_pressures(
+/// [`nodal_tractions`] of the elements of one pair.
+fn own_tractions(
     nodes: Nodes<'_>,
     elements: &[ContactElement],
     force: impl Fn(usize) -> [f64; 2],
-) -> Vec<NodalPressure> {
+) -> Vec<NodalTraction> {
     let on_a = edge_on_side_a(nodes, elements);
     let (side, tributary) = (
         node_sides(elements, &on_a),
         tributaries(nodes, elements, &on_a),
     );
-    // The normal of a node: that of an element whose edge it ends, else of
-    // one it is the apex of (both point from a to b).
-    let mut normal: BTreeMap<usize, [f64; 2]> = BTreeMap::new();
-    for el in elements {
-        for &v in &el.nodes {
-            if v != el.apex {
-                normal.insert(v, el.normal);
-            } else {
-                normal.entry(v).or_insert(el.normal);
-            }
-        }
-    }
     side.iter()
         .map(|(&node, &on_side_a)| {
-            let (f, n, m) = (force(node), normal[&node], tributary[&node]);
-            let fnormal = f[0] * n[0] + f[1] * n[1];
-            // n points from a to b: compression pushes a along −n, b along +n.
-            let push = if on_side_a { -fnormal } else { fnormal };
-            NodalPressure {
+            let ([normal, tangential], m) = (force(node), tributary[&node]);
+            // n points from a to b, the outward normal of side a: compression
+            // pushes a along −n, b along +n; side b's tangent is −t.
+            let (push, shear) = match on_side_a {
+                true => (-normal, tangential),
+                false => (normal, -tangential),
+            };
+            let per_length = |f: f64| if m > 0.0 { f / m } else { 0.0 };
+            NodalTraction {
                 node,
-                pressure: if m > 0.0 { push / m } else { 0.0 },
+                pressure: per_length(push),
+                shear: per_length(shear),
                 tributary: m,
             }
         })
@@ -361,39 +357,39 @@ fn facing_edges(
 }
 
 /// The contact traction at every node of B read from both sides at once:
-/// the mean of the node's own [`nodal_pressures`] value and the other
+/// the mean of the node's own [`nodal_tractions`] value and the other
 /// side's, the other side's normal forces over its tributaries weighted by
 /// w_ij = φ_j(x_i) + φ_i(x_j) — interpolated where that side is coarser,
 /// averaged over the node's support where it is finer (docs/method.md
 /// §6.11, "Pressure as a traction", (6.12)); then a node of a side more
 /// than 1.8× finer than the edge it faces takes that edge's values,
 /// interpolated, blended with its own from 1.2× ((6.13)). One value per point of a matching interface. A
-/// uniform traction is read exactly, as by [`nodal_pressures`]; on a
+/// uniform traction is read exactly, as by [`nodal_tractions`]; on a
 /// curved non-matching interface the two sides' own readings err at the
 /// scale of the meshes with opposite signs, and this one is 3–6× closer
 /// to the traction, as close as a mortar's with the cylinder 2.5× coarser
 /// (Hertz). Nodes that face
 /// nothing (beyond the other side's ends) keep their own value. Each pair
-/// is read on its own (`force(pair, node)`, as for [`nodal_pressures`]); a
+/// is read on its own (`force(pair, node)`, as for [`nodal_tractions`]); a
 /// node on several pairs reads them together. Sorted by node.
-pub fn interface_pressures(
+pub fn interface_tractions(
     nodes: Nodes<'_>,
     elements: &[ContactElement],
     force: impl Fn(usize, usize) -> [f64; 2],
-) -> Vec<NodalPressure> {
+) -> Vec<NodalTraction> {
     per_pair(elements, |pair, els| {
         both_sides(nodes, els, |v| force(pair, v))
     })
 }
 
-/// [`interface_pressures`] of the elements of one pair.
+/// [`interface_tractions`] of the elements of one pair.
 fn both_sides(
     nodes: Nodes<'_>,
     elements: &[ContactElement],
     force: impl Fn(usize) -> [f64; 2],
-) -> Vec<NodalPressure> {
-    let own = own_pressures(nodes, elements, force);
-    let at: BTreeMap<usize, NodalPressure> = own.iter().map(|q| (q.node, *q)).collect();
+) -> Vec<NodalTraction> {
+    let own = own_tractions(nodes, elements, force);
+    let at: BTreeMap<usize, NodalTraction> = own.iter().map(|q| (q.node, *q)).collect();
     let on_a = edge_on_side_a(nodes, elements);
     let side = node_sides(elements, &on_a);
     let facing = facing_edges(nodes, elements, &on_a, &side);
@@ -402,14 +398,16 @@ fn both_sides(
     // (each node's hat evaluated at the other's projection): the other
     // side's values interpolated where it is coarser, averaged over i's
     // support where it is finer, and a uniform traction read exactly.
-    let mut acc: BTreeMap<usize, (f64, f64)> = BTreeMap::new();
+    // The shear is read alike: both sides read one traction's shear with
+    // one sign (NodalTraction::shear).
+    let mut acc: BTreeMap<usize, [f64; 3]> = BTreeMap::new();
     let load = |w: usize| {
         let r = at[&w];
-        (r.pressure * r.tributary, r.tributary)
+        [r.pressure * r.tributary, r.shear * r.tributary, r.tributary]
     };
-    let mut add = |to: usize, weight: f64, (f, m): (f64, f64)| {
-        let e = acc.entry(to).or_insert((0.0, 0.0));
-        *e = (e.0 + weight * f, e.1 + weight * m);
+    let mut add = |to: usize, weight: f64, f: [f64; 3]| {
+        let e = acc.entry(to).or_insert([0.0; 3]);
+        *e = std::array::from_fn(|c| e[c] + weight * f[c]);
     };
     for (&v, face) in &facing {
         let Some((p, q, t)) = *face else { continue };
@@ -418,19 +416,23 @@ fn both_sides(
         add(p, 1.0 - t, load(v));
         add(q, t, load(v));
     }
-    let read: Vec<NodalPressure> = own
+    let read: Vec<NodalTraction> = own
         .iter()
         .map(|q| {
             let other = acc
                 .get(&q.node)
-                .filter(|(_, m)| *m > 0.0)
-                .map(|(f, m)| f / m);
-            let pressure = match (q.tributary > 0.0, other) {
-                (true, Some(o)) => 0.5 * (q.pressure + o),
+                .filter(|f| f[2] > 0.0)
+                .map(|f| [f[0] / f[2], f[1] / f[2]]);
+            let [pressure, shear] = match (q.tributary > 0.0, other) {
+                (true, Some(o)) => [0.5 * (q.pressure + o[0]), 0.5 * (q.shear + o[1])],
                 (false, Some(o)) => o,
-                (_, None) => q.pressure,
+                (_, None) => [q.pressure, q.shear],
             };
-            NodalPressure { pressure, ..*q }
+            NodalTraction {
+                pressure,
+                shear,
+                ..*q
+            }
         })
         .collect();
     from_the_coarser_side(nodes, elements, &facing, read)
@@ -456,8 +458,8 @@ fn from_the_coarser_side(
     nodes: Nodes<'_>,
     elements: &[ContactElement],
     facing: &BTreeMap<usize, Option<(usize, usize, f64)>>,
-    read: Vec<NodalPressure>,
-) -> Vec<NodalPressure> {
+    read: Vec<NodalTraction>,
+) -> Vec<NodalTraction> {
     // The mean length of each node's own interface edges.
     let mut own: BTreeMap<usize, (f64, usize)> = BTreeMap::new();
     for el in elements {
@@ -466,7 +468,10 @@ fn from_the_coarser_side(
             *e = (e.0 + el.edge_length, e.1 + 1);
         }
     }
-    let value: BTreeMap<usize, f64> = read.iter().map(|q| (q.node, q.pressure)).collect();
+    let value: BTreeMap<usize, [f64; 2]> = read
+        .iter()
+        .map(|q| (q.node, [q.pressure, q.shear]))
+        .collect();
     let x = nodes.x;
     read.iter()
         .map(|q| {
@@ -479,10 +484,15 @@ fn from_the_coarser_side(
             let ratio = (x[r][0] - x[p][0]).hypot(x[r][1] - x[p][1]) / (sum / n as f64);
             let w = ((ratio - COARSER.0) / (COARSER.1 - COARSER.0)).clamp(0.0, 1.0);
             match (value.get(&p), value.get(&r)) {
-                (Some(vp), Some(vr)) if w > 0.0 => NodalPressure {
-                    pressure: (1.0 - w) * q.pressure + w * ((1.0 - t) * vp + t * vr),
-                    ..*q
-                },
+                (Some(vp), Some(vr)) if w > 0.0 => {
+                    let blend =
+                        |own: f64, c: usize| (1.0 - w) * own + w * ((1.0 - t) * vp[c] + t * vr[c]);
+                    NodalTraction {
+                        pressure: blend(q.pressure, 0),
+                        shear: blend(q.shear, 1),
+                        ..*q
+                    }
+                }
                 _ => *q,
             }
         })

@@ -714,20 +714,70 @@ impl Model {
         self.nodal_pressures(Some(pair))
     }
 
-    /// The nodal pressures of every pair, or of pair `only`
-    /// ([`crate::contact::settled::ContactState::nodal_pressures`]).
-    fn nodal_pressures(&self, only: Option<usize>) -> Result<Vec<f64>> {
+    /// The contact traction at every node of the last contact solve, as
+    /// [pressure, shear] per node (force per unit area; zero off the
+    /// interfaces), computed on request and read as
+    /// [`Model::contact_nodal_pressures`] reads the pressure: the pressure
+    /// positive in compression; the shear the tangential traction the
+    /// other body exerts on the node's body, along the tangent (−n_y, n_x)
+    /// of the body's outward normal n (the direction of travel along a
+    /// counter-clockwise boundary), so that both sides of an interface read
+    /// one traction with one sign. Each part of the force is the law's
+    /// own, split along the normal each element of B measures along (one
+    /// normal per point of the interface, side a's): a frictionless
+    /// interface reads no shear, to round-off, curved or not; a frictional
+    /// one its Coulomb shear. Under the mortar weighting (frictionless) the
+    /// shear is zero.
+    pub fn contact_nodal_tractions(&self) -> Result<Vec<[f64; 2]>> {
+        self.nodal_tractions(None)
+    }
+
+    /// The contact traction of pair `pair` (0-based) alone at every node,
+    /// as [pressure, shear] ([`Model::contact_nodal_tractions`], read over
+    /// that pair's forces and tributaries only, as
+    /// [`Model::contact_pair_nodal_pressures`]). An unknown pair is
+    /// refused, naming it.
+    pub fn contact_pair_nodal_tractions(&self, pair: usize) -> Result<Vec<[f64; 2]>> {
+        let n = self.contact_pairs().len();
+        if pair >= n {
+            return Err(crate::error::no_pair(pair, n));
+        }
+        self.nodal_tractions(Some(pair))
+    }
+
+    /// The strip pairs' contact forces on the nodes split along each
+    /// element's normal and tangent
+    /// ([`crate::contact::settled::ContactState::framed_forces`]), for the
+    /// studies' own readings of them.
+    #[cfg(feature = "studies")]
+    pub(crate) fn contact_framed_forces(
+        &self,
+    ) -> Result<std::collections::BTreeMap<(usize, usize), [f64; 2]>> {
         let c = self.contact_solution()?;
-        let (mesh, pairs) = (self.problem.mesh_ref()?, self.problem.contact_pairs());
-        let f = match c.state.strip.elements.is_empty() {
-            true => Default::default(),
-            false => self
-                .solution()?
-                .contact_forces_by_pair(&self.problem, self.field()?)?,
-        };
-        let force = |pair: usize, v: usize| f.get(&(pair, v)).copied().unwrap_or([0.0; 2]);
-        let p = c.state.nodal_pressures(mesh, pairs, only, force);
-        p.map(PositiveZero::positive_zero)
+        Ok(c.state
+            .framed_forces(self.problem.mesh_ref()?, self.field()?))
+    }
+
+    /// The nodal pressures of every pair, or of pair `only`.
+    fn nodal_pressures(&self, only: Option<usize>) -> Result<Vec<f64>> {
+        Ok(self
+            .nodal_tractions(only)?
+            .into_iter()
+            .map(|[p, _]| p)
+            .collect())
+    }
+
+    /// The nodal tractions of every pair, or of pair `only`
+    /// ([`crate::contact::settled::ContactState::nodal_tractions`]),
+    /// refused where one is not finite, naming its node.
+    fn nodal_tractions(&self, only: Option<usize>) -> Result<Vec<[f64; 2]>> {
+        let c = self.contact_solution()?;
+        let mesh = self.problem.mesh_ref()?;
+        let pairs = self.problem.contact_pairs();
+        let t = c.state.nodal_tractions(mesh, pairs, only, self.field()?)?;
+        let values = t.iter().flatten().copied();
+        crate::error::ensure_finite(values, 2, "contact traction", |v| mesh.node_name(v))?;
+        Ok(t.into_iter().map(|t| t.map(f64::positive_zero)).collect())
     }
 
     /// The normal gap at every node of the last contact solve (zero off the

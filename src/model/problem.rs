@@ -559,10 +559,9 @@ impl Problem {
     /// default, is frictionless, bit for bit; docs/method.md §6.15). μ must
     /// be finite and ≥ 0 (a tied interface is [`ContactLaw::Stick`]).
     /// Changing μ starts a new load history; turning friction on or off
-    /// rebuilds the pair's B, whose elements measure along
-    /// [`shared_normals`] when frictional.
-    ///
-    /// [`shared_normals`]: crate::contact::shared_normals
+    /// changes the pair's contact parts (and, under the automatic
+    /// weighting, may give it another family: a frictional pair keeps B),
+    /// checked now.
     ///
     /// [`ContactLaw::Stick`]: crate::contact::ContactLaw::Stick
     pub fn set_friction(&mut self, pair: usize, mu: f64) -> Result<()> {
@@ -579,11 +578,11 @@ impl Problem {
         if p.friction.to_bits() == mu.to_bits() {
             return Ok(());
         }
-        // A frictional pair's B measures along shared normals
-        // (contact::shared_normals), and the automatic weighting gives it B:
-        // turning friction on or off rebuilds the pair, checked now.
-        // Otherwise μ decides which unknowns are on the interface, not the
-        // structure: a new K₁, the same pattern.
+        // Turning friction on or off changes the pair's contact parts (a
+        // frictional element also carries its slip), and under the
+        // automatic weighting may change its family: the pair is checked
+        // now. Otherwise μ decides which unknowns are on the interface, not
+        // the structure: a new K₁, the same pattern.
         let rebuild = (p.friction > 0.0) != (mu > 0.0);
         let mut pairs = self.pairs.clone();
         pairs[pair].friction = mu;

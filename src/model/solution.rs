@@ -4,8 +4,7 @@
 
 use super::problem::Problem;
 use crate::contact::ContactOptions;
-use crate::contact::settled::{ContactState, forces_by_pair};
-use std::collections::BTreeMap;
+use crate::contact::settled::ContactState;
 use std::sync::OnceLock;
 
 use crate::error::{Error, Result, ensure_finite};
@@ -211,24 +210,6 @@ impl Solution {
             .forces(mesh, u, |_, g, v| f[g] += v);
         ensure_finite(f.iter().copied(), 2, "contact force", |v| mesh.node_name(v))?;
         Ok(f.chunks_exact(2).map(|c| [c[0], c[1]]).collect())
-    }
-
-    /// [`Solution::contact_forces`] of each pair apart: (pair, node) → the
-    /// force of that pair's constraints on the node. A node on several
-    /// pairs (where three bodies meet) has one entry per pair.
-    pub fn contact_forces_by_pair(
-        &self,
-        problem: &Problem,
-        u: &[f64],
-    ) -> Result<BTreeMap<(usize, usize), [f64; 2]>> {
-        let mesh = problem.mesh_ref()?;
-        let f = forces_by_pair(&self.contact_state()?.state, mesh, u);
-        let keys: Vec<(usize, usize)> = f.keys().copied().collect();
-        ensure_finite(f.values().flatten().copied(), 2, "contact force", |i| {
-            let (pair, v) = keys[i];
-            format!("{} (contact pair {pair})", mesh.node_name(v))
-        })?;
-        Ok(f)
     }
 
     /// The normal gap at every node ([`ContactState::gaps`]).

@@ -17,8 +17,6 @@
 use std::collections::{BTreeMap, BTreeSet};
 
 use crate::contact::ContactOptions;
-use crate::contact::mesh::Nodes;
-use crate::contact::traction::interface_pressures;
 use crate::error::{Error, Result};
 use crate::fem::element::{Jmin, Tempering, TriGeometry, elasticity_stiffness};
 use crate::fem::material::{Material, PlaneMode};
@@ -345,21 +343,12 @@ impl HertzScene {
         // The library's nodal pressures: under the mortar weighting the
         // slave's −κG_i/m_i, read at the master's nodes along the slave;
         // under the strip the interface traction of B's nodes.
-        let traction: BTreeMap<usize, f64> = match self.model.contact_elements() {
-            Err(_) => self
-                .model
-                .contact_nodal_pressures()?
-                .into_iter()
-                .enumerate()
-                .collect(),
-            Ok(elements) => {
-                let f = self.model.contact_forces()?;
-                interface_pressures(Nodes::of(mesh), elements, |_, v| f[v])
-                    .into_iter()
-                    .map(|q| (q.node, q.pressure))
-                    .collect()
-            }
-        };
+        let traction: BTreeMap<usize, f64> = self
+            .model
+            .contact_nodal_pressures()?
+            .into_iter()
+            .enumerate()
+            .collect();
         let interface_pressure: Vec<(f64, f64)> = self
             .block_top
             .iter()

@@ -14,7 +14,7 @@
 
 use crate::contact::ContactOptions;
 use crate::contact::mesh::Nodes;
-use crate::contact::traction::{interface_pressures, max_overlap, nodal_pressures};
+use crate::contact::traction::{interface_tractions, max_overlap, nodal_tractions};
 use crate::error::{Error, Result};
 use crate::fem::element::{Tempering, TriGeometry};
 use crate::fem::material::{Material, PlaneMode};
@@ -359,13 +359,15 @@ impl PatchScene {
         }
         let elements = model.contact_elements()?;
         let nodes = Nodes::of(mesh);
+        let framed = model.contact_framed_forces()?;
+        let force = |pair, v| framed.get(&(pair, v)).copied().unwrap_or([0.0; 2]);
         let traction = range(
-            &mut nodal_pressures(nodes, elements, |_, v| f[v])
+            &mut nodal_tractions(nodes, elements, force)
                 .into_iter()
                 .map(|q| q.pressure / p),
         );
         let interface_traction = range(
-            &mut interface_pressures(nodes, elements, |_, v| f[v])
+            &mut interface_tractions(nodes, elements, force)
                 .into_iter()
                 .map(|q| q.pressure / p),
         );

@@ -26,7 +26,7 @@ use nalgebra::{DMatrix, DVector};
 
 use crate::contact::ContactOptions;
 use crate::contact::mesh::Nodes;
-use crate::contact::traction::nodal_pressures;
+use crate::contact::traction::nodal_tractions;
 use crate::error::{Error, Result};
 use crate::fem::element::Tempering;
 use crate::fem::material::{Material, PlaneMode};
@@ -395,7 +395,9 @@ impl RingScene {
             .iter()
             .copied()
             .collect();
-        let pressures: Vec<(usize, f64)> = nodal_pressures(Nodes::of(mesh), elements, |_, v| f[v])
+        let framed = self.model.contact_framed_forces()?;
+        let force = |pair, v| framed.get(&(pair, v)).copied().unwrap_or([0.0; 2]);
+        let pressures: Vec<(usize, f64)> = nodal_tractions(Nodes::of(mesh), elements, force)
             .iter()
             .map(|q| {
                 let (v, r) = (q.node, x[q.node][0].hypot(x[q.node][1]));

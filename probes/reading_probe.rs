@@ -6,8 +6,8 @@
 //! interface (the nodes' own x; the cylinder is nearly flat there):
 //!
 //! * own: the side's normal contact force over its tributary
-//!   (`contact::traction::nodal_pressures`);
-//! * both sides (6.12): `interface_pressures`, what
+//!   (`contact::traction::nodal_tractions`);
+//! * both sides (6.12): `interface_tractions`, what
 //!   `Model::contact_nodal_pressures` returns (the Hertz example's column
 //!   is this one on the block);
 //! * the same two with the force taken from the bodies (K u of their own
@@ -68,7 +68,7 @@ use clap::Parser;
 
 use tfem::contact::ContactElement;
 use tfem::contact::mesh::Nodes;
-use tfem::contact::traction::{NodalPressure, interface_pressures, nodal_pressures};
+use tfem::contact::traction::{NodalTraction, interface_tractions, nodal_tractions};
 use tfem::scenes::hertz::{Hertz, HertzResult, TAG_BLOCK_TOP, TAG_CYLINDER};
 use tfem::scenes::nodes_by_x;
 use tfem::verification::{body_forces, contact_imbalance};
@@ -187,6 +187,31 @@ fn edge_of(el: &ContactElement) -> (usize, usize) {
 type Readings = Vec<(String, Vec<(f64, f64)>)>;
 
 /// Every reading of the model's last contact solve on the two sides.
+/// The nodal forces `f` split along one normal per node (that of an
+/// element of B whose edge the node ends, else of one it is the apex of),
+/// as the traction readings take them.
+fn framed<'a>(
+    elements: &'a [ContactElement],
+    f: &'a [[f64; 2]],
+) -> impl Fn(usize, usize) -> [f64; 2] + 'a {
+    let mut normal: BTreeMap<usize, [f64; 2]> = BTreeMap::new();
+    for el in elements {
+        for &v in &el.nodes {
+            match v != el.apex {
+                true => _ = normal.insert(v, el.normal),
+                false => _ = normal.entry(v).or_insert(el.normal),
+            }
+        }
+    }
+    move |_, v| {
+        let n = normal.get(&v).copied().unwrap_or([0.0; 2]);
+        [
+            f[v][0] * n[0] + f[v][1] * n[1],
+            f[v][1] * n[0] - f[v][0] * n[1],
+        ]
+    }
+}
+
 fn readings(model: &Model, block: &Side, cylinder: &Side) -> Readings {
     let mesh = model.mesh().expect("mesh");
     let x = mesh.nodes();
@@ -197,11 +222,11 @@ fn readings(model: &Model, block: &Side, cylinder: &Side) -> Readings {
     );
     let f = model.contact_forces().expect("forces");
     let nodes = Nodes::of(mesh);
-    let map = |qs: Vec<NodalPressure>| -> BTreeMap<usize, f64> {
+    let map = |qs: Vec<NodalTraction>| -> BTreeMap<usize, f64> {
         qs.into_iter().map(|q| (q.node, q.pressure)).collect()
     };
-    let own = map(nodal_pressures(nodes, elements, |_, v| f[v]));
-    let both = map(interface_pressures(nodes, elements, |_, v| f[v]));
+    let own = map(nodal_tractions(nodes, elements, framed(elements, &f)));
+    let both = map(interface_tractions(nodes, elements, framed(elements, &f)));
     // The same force read from the bodies instead of the strip: K u of the
     // bodies' own (tempered) elements at the interface nodes, where no
     // other load acts. Equal in exact arithmetic, but the strip's K_e u_e
@@ -213,8 +238,12 @@ fn readings(model: &Model, block: &Side, cylinder: &Side) -> Readings {
         "  largest |K u − contact force| at a node of B: {:.2e} of the largest contact force",
         contact_imbalance(model).expect("imbalance")
     );
-    let own_body = map(nodal_pressures(nodes, elements, |_, v| fbody[v]));
-    let both_body = map(interface_pressures(nodes, elements, |_, v| fbody[v]));
+    let own_body = map(nodal_tractions(nodes, elements, framed(elements, &fbody)));
+    let both_body = map(interface_tractions(
+        nodes,
+        elements,
+        framed(elements, &fbody),
+    ));
 
     // The strip's traction as a force density per unit x: an element's
     // force on either side, p_e ℓ_e/2, over its edge's x-span.
