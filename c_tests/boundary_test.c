@@ -2740,6 +2740,63 @@ static void a_failed_call_writes_none_of_its_outputs(void) {
   CHECK(tfem_contact_last_error(c, O[0].c, 512) == ARG && strstr(O[0].c, "destroyed") != NULL);
 }
 
+/* The nodal tractions (p, tau) of a frictionless interface: p is the
+ * nodal pressure, bit for bit, and tau is round-off (issue: a nodal shear
+ * accessor beside the nodal pressures). */
+static void nodal_tractions_read_the_pressure_and_no_shear_when_frictionless(void) {
+  tfem_model *m = two_blocks();
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  double t[2 * 64], p[64], pmax = 0.0, smax = 0.0;
+  CHECK(tfem_get_contact_nodal_tractions(m, t, 2 * B.nn) == TFEM_STATUS_OK);
+  CHECK(tfem_get_contact_nodal_pressures(m, p, B.nn) == TFEM_STATUS_OK);
+  int same = 1;
+  for (int i = 0; i < B.nn; ++i) {
+    same &= t[2 * i] == p[i];
+    pmax = fmax(pmax, t[2 * i]);
+    smax = fmax(smax, fabs(t[2 * i + 1]));
+  }
+  CHECK(same);
+  CHECK(pmax > 0.0 && smax <= 1e-8 * pmax);
+  double tp[2 * 64];
+  CHECK(tfem_get_contact_pair_nodal_tractions(m, 0, tp, 2 * B.nn) == TFEM_STATUS_OK);
+  CHECK(memcmp(tp, t, sizeof(double) * 2 * (size_t)B.nn) == 0);
+  EXPECT_ERROR(m, tfem_get_contact_pair_nodal_tractions(m, 1, tp, 2 * B.nn),
+               TFEM_STATUS_INVALID_ARGUMENT, "contact pair 1");
+  EXPECT_ERROR(m, tfem_get_contact_nodal_tractions(m, t, B.nn), TFEM_STATUS_BUFFER_TOO_SMALL,
+               "are needed");
+  tfem_destroy(m);
+}
+
+/* tfem_set_prescribed_edges changes a whole tag's prescribed values, all or
+ * nothing: what it refuses names the tag or node and changes nothing. */
+static void a_tags_prescribed_values_change_together_or_not_at_all(void) {
+  tfem_model *m = two_blocks();
+  CHECK(tfem_set_prescribed_edges(m, 12, TFEM_COMPONENT_Y, -1e-5) == TFEM_STATUS_OK);
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  double u[2 * 64], again[2 * 64];
+  CHECK(tfem_get_displacements(m, u, 2 * B.nn) == TFEM_STATUS_OK);
+  int moved = 0, lowered = 1;
+  for (int i = 0; i < B.nn; ++i) {
+    if (B.xy[2 * i + 1] == -0.25) {
+      ++moved;
+      lowered &= u[2 * i + 1] == -1e-5;
+    }
+  }
+  CHECK(moved > 0 && lowered);
+  EXPECT_ERROR(m, tfem_set_prescribed_edges(m, 12, TFEM_COMPONENT_X, 0.0),
+               TFEM_STATUS_INVALID_ARGUMENT, "is not prescribed");
+  EXPECT_ERROR(m, tfem_set_prescribed_edges(m, 999, TFEM_COMPONENT_Y, 0.0),
+               TFEM_STATUS_INVALID_ARGUMENT, "tag 999");
+  EXPECT_ERROR(m, tfem_set_prescribed_edges(m, 12, TFEM_COMPONENT_Y, NAN),
+               TFEM_STATUS_INVALID_ARGUMENT, "not finite");
+  EXPECT_ERROR(m, tfem_set_prescribed_edges(m, 12, 7, 0.0), TFEM_STATUS_INVALID_ARGUMENT,
+               "component");
+  /* Nothing changed: the results are still there, bit for bit. */
+  CHECK(tfem_get_displacements(m, again, 2 * B.nn) == TFEM_STATUS_OK);
+  CHECK(memcmp(u, again, sizeof(double) * 2 * (size_t)B.nn) == 0);
+  tfem_destroy(m);
+}
+
 int main(int argc, char **argv) {
   if (argc == 4 && strcmp(argv[1], "--solve-under-cap") == 0)
     return solve_under_cap(atof(argv[2]), argv[3]);
@@ -2823,6 +2880,8 @@ int main(int argc, char **argv) {
   a_gmsh_point_in_1500_groups_gives_a_short_warning();
   a_solve_under_any_memory_limit_fails_cleanly_or_succeeds();
   a_failed_call_writes_none_of_its_outputs();
+  nodal_tractions_read_the_pressure_and_no_shear_when_frictionless();
+  a_tags_prescribed_values_change_together_or_not_at_all();
 
   if (gmsh_dir[0] != '\0') rmdir(gmsh_dir);
 

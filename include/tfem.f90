@@ -940,7 +940,11 @@ module tfem_c
 
     !> Copies the contact pressure of every contact element (n_contact_elements values): the normal
     !! stress −n·σ·n in the element (force per unit area, Pa in SI), positive in compression, 0 when
-    !! inactive.
+    !! inactive. It is the traction at the element's apex (the interface point it measures: on
+    !! matching meshes the apex node), times the share of its edge that faces the other side; each
+    !! point is measured by two elements, one with its edge on either side. For the traction at the
+    !! interface nodes, read `tfem_get_contact_nodal_tractions` (on a non-matching interface one
+    !! family's element values read up to twice the traction).
     function tfem_get_contact_pressure(model, out, length) &
         bind(C, name="tfem_get_contact_pressure") result(status)
       import
@@ -1029,6 +1033,40 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_get_contact_nodal_pressures
 
+    !> Copies the contact traction at every node in the last contact solve or step, as (p, τ) per
+    !! node (2·n_nodes values; force per unit area, Pa in SI; zero off the contact interfaces),
+    !! computed on request. p is the pressure of `tfem_get_contact_nodal_pressures`, positive in
+    !! compression. τ is the tangential traction the other body exerts on the node's body, along t =
+    !! (−n_y, n_x) with n the body's outward normal (the direction of travel along a
+    !! counter-clockwise boundary), so that both sides of an interface read one traction with one
+    !! sign; the vector traction on the node's body is τ t − p n. Each part is the contact law's
+    !! own, read along the normal the contact mesh measures the point along (one per point of the
+    !! interface: its first side's): a frictionless interface reads τ = 0 to round-off, curved or
+    !! not, and a frictional one its Coulomb shear. Pairs under the mortar weighting (frictionless)
+    !! read τ = 0. Before a contact solve, or after a change, there are no results
+    !! (TFEM_STATUS_INVALID_STATE).
+    function tfem_get_contact_nodal_tractions(model, out, length) &
+        bind(C, name="tfem_get_contact_nodal_tractions") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_nodal_tractions
+
+    !> `tfem_get_contact_nodal_tractions` of contact pair `pair` (0-based) alone, read over that
+    !! pair's forces and tributaries as `tfem_get_contact_pair_nodal_pressures` reads its pressures
+    !! (2·n_nodes values). An unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT naming it).
+    function tfem_get_contact_pair_nodal_tractions(model, pair, out, length) &
+        bind(C, name="tfem_get_contact_pair_nodal_tractions") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: pair
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_pair_nodal_tractions
+
     !> Chooses how the contact pairs' energy is weighted along their interfaces: `weighting` is a
     !! `ContactWeightingMode`. 2 automatic, the default: each pair what is right for it — the
     !! elements of the contact mesh B (the seed's method) where the two sides' nodes match, one
@@ -1036,14 +1074,16 @@ module tfem_c
     !! patch test whatever the meshes, converging on curved interfaces where B reads one side only),
     !! B for a pair with friction or a contact mesh of its own. 0 strip and 1 mortar force one
     !! weighting on every pair (an expert's override). A change discards the results, like any
-    !! change of the contact pairs. Under the mortar weighting friction, the stick law and the
-    !! literal inversion test are refused. The per-element outputs (`tfem_get_contact_active`,
-    !! `tfem_get_contact_pressure`, `tfem_get_contact_elements`, shear, friction state, dissipation;
-    !! `tfem_get_sizes`' contact elements) cover the pairs weighted by B, and are refused when no
-    !! pair is (`tfem_get_contact_mesh` still gives the B the pairs would make); the state of the
-    !! others is per slave node (`tfem_get_contact_slave_nodes`). Nodal pressures, gaps and forces,
-    !! reactions and the report cover every pair, the report's `elements` counting elements of B and
-    !! slave nodes.
+    !! change of the contact pairs. The mortar weighting is frictionless and makes no mesh B:
+    !! forcing it with a pair that has friction or a contact mesh of its own, or giving such a pair
+    !! under it, is refused by that call (TFEM_ERR_ARGUMENT, naming the pair); a solve under it with
+    !! the stick law or the literal inversion test is refused too. The per-element outputs
+    !! (`tfem_get_contact_active`, `tfem_get_contact_pressure`, `tfem_get_contact_elements`, shear,
+    !! friction state, dissipation; `tfem_get_sizes`' contact elements) cover the pairs weighted by
+    !! B, and are refused when no pair is (`tfem_get_contact_mesh` still gives the B the pairs would
+    !! make); the state of the others is per slave node (`tfem_get_contact_slave_nodes`). Nodal
+    !! pressures, gaps and forces, reactions and the report cover every pair, the report's
+    !! `elements` counting elements of B and slave nodes.
     function tfem_set_contact_weighting(model, weighting) &
         bind(C, name="tfem_set_contact_weighting") result(status)
       import
@@ -1295,10 +1335,9 @@ module tfem_c
     !! `tfem_add_contact_pair`): stick while the shear stays within μ times the pressure, slip
     !! against the slip of the step beyond (docs/method.md §6.15). 0, the default, is frictionless,
     !! bit for bit. A negative or non-finite μ, or an unknown pair, is refused
-    !! (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load history; turning
-    !! friction on or off rebuilds the pair's contact mesh, whose elements then measure every point
-    !! of the interface along the first side's normal there (frictional) or along their own edges'
-    !! normals (frictionless).
+    !! (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load history. Frictional or
+    !! not, the elements of a pair's contact mesh measure every point of the interface along the
+    !! first side's normal there, so that a frictionless interface transmits no tangential traction.
     function tfem_set_friction(model, pair, mu) &
         bind(C, name="tfem_set_friction") result(status)
       import
@@ -1322,10 +1361,27 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_set_prescribed
 
+    !> Changes the value of displacement component `comp` (0 x, 1 y) on every node of the boundary
+    !! edges tagged `tag`, each prescribed before by `tfem_fix_edges` or `tfem_fix`:
+    !! `tfem_set_prescribed` for a whole tag, the loads of a load history given as `tfem_fix_edges`
+    !! gives them (the factorisation is kept). All or nothing: an unknown tag, a value that is not
+    !! finite or a node not prescribed in that component is refused (TFEM_STATUS_INVALID_ARGUMENT
+    !! naming it) and the model is unchanged.
+    function tfem_set_prescribed_edges(model, tag, comp, value) &
+        bind(C, name="tfem_set_prescribed_edges") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: tag
+      integer(c_int), value :: comp
+      real(c_double), value :: value
+      integer(c_int) :: status
+    end function tfem_set_prescribed_edges
+
     !> Copies the shear traction τ = n·σ·t (Pa in SI; t = (−n_y, n_x), n the element's normal, see
     !! `tfem_get_contact_mesh`) of every contact element of the last contact solve or step
     !! (n_contact_elements values): 0 when open, |τ| ≤ μp when sticking, μp when slipping; all 0
-    !! when frictionless.
+    !! when frictionless. An element value at its apex, as `tfem_get_contact_pressure`; the shear at
+    !! the interface nodes is `tfem_get_contact_nodal_tractions`'.
     function tfem_get_contact_shear(model, out, length) &
         bind(C, name="tfem_get_contact_shear") result(status)
       import
@@ -1755,7 +1811,8 @@ module tfem_specifics
         tfem_get_element_strains, tfem_get_element_stresses, tfem_get_element_jacobians, &
         tfem_get_reactions, tfem_get_system_matrix, tfem_get_contact_active, &
         tfem_get_contact_pressure, tfem_get_contact_elements, tfem_get_contact_forces, &
-        tfem_get_contact_nodal_pressures, tfem_get_contact_pair_nodal_pressures, &
+        tfem_get_contact_nodal_pressures, tfem_get_contact_nodal_tractions, &
+        tfem_get_contact_pair_nodal_tractions, tfem_get_contact_pair_nodal_pressures, &
         tfem_get_contact_gaps, tfem_get_contact_mesh, tfem_get_contact_element_pairs, &
         tfem_get_contact_element_apexes, tfem_get_contact_state, tfem_set_contact_state, &
         tfem_get_contact_shear, tfem_get_contact_friction_state, tfem_get_contact_dissipation, &
@@ -1804,7 +1861,10 @@ module tfem_specifics
   public :: tfem_get_contact_elements_i, tfem_get_contact_elements_i_r2, tfem_get_contact_forces_r2
   public :: tfem_get_contact_forces_i, tfem_get_contact_forces_i_r2
   public :: tfem_get_contact_nodal_pressures_r2, tfem_get_contact_nodal_pressures_i
-  public :: tfem_get_contact_nodal_pressures_i_r2, tfem_get_contact_slave_nodes_opt
+  public :: tfem_get_contact_nodal_pressures_i_r2, tfem_get_contact_nodal_tractions_r2
+  public :: tfem_get_contact_nodal_tractions_i, tfem_get_contact_nodal_tractions_i_r2
+  public :: tfem_get_contact_pair_nodal_tractions_r2, tfem_get_contact_pair_nodal_tractions_i
+  public :: tfem_get_contact_pair_nodal_tractions_i_r2, tfem_get_contact_slave_nodes_opt
   public :: tfem_get_contact_slave_nodes_opt_r2111, tfem_get_contact_slave_nodes_opt_r1211
   public :: tfem_get_contact_slave_nodes_opt_r2211, tfem_get_contact_slave_nodes_opt_r1121
   public :: tfem_get_contact_slave_nodes_opt_r2121, tfem_get_contact_slave_nodes_opt_r1221
@@ -3309,6 +3369,57 @@ contains
     integer(c_int) :: status
     status = tfem_get_contact_nodal_pressures(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_nodal_pressures_i_r2
+
+  function tfem_get_contact_nodal_tractions_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_nodal_tractions(model, out, length)
+  end function tfem_get_contact_nodal_tractions_r2
+
+  function tfem_get_contact_nodal_tractions_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_nodal_tractions(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_nodal_tractions_i
+
+  function tfem_get_contact_nodal_tractions_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_nodal_tractions(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_nodal_tractions_i_r2
+
+  function tfem_get_contact_pair_nodal_tractions_r2(model, pair, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: pair
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_pair_nodal_tractions(model, pair, out, length)
+  end function tfem_get_contact_pair_nodal_tractions_r2
+
+  function tfem_get_contact_pair_nodal_tractions_i(model, pair, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: pair
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_pair_nodal_tractions(model, pair, out, tfem_to_size_t(length))
+  end function tfem_get_contact_pair_nodal_tractions_i
+
+  function tfem_get_contact_pair_nodal_tractions_i_r2(model, pair, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: pair
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_pair_nodal_tractions(model, pair, out, tfem_to_size_t(length))
+  end function tfem_get_contact_pair_nodal_tractions_i_r2
 
   function tfem_get_contact_slave_nodes_opt(model, node, tributary, gap, pressure, &
         length) result(status)
@@ -5621,19 +5732,21 @@ module tfem
         tfem_add_boundary_edges, tfem_get_external_work, tfem_set_contact_weighting, &
         tfem_get_contact_weighting, tfem_get_contact_mesh_size, tfem_set_threads, tfem_get_threads, &
         tfem_revert_step, tfem_get_contact_state_size, tfem_set_friction, tfem_set_prescribed, &
-        tfem_contact_create, tfem_contact_destroy, tfem_contact_set_options, tfem_contact_restart, &
-        tfem_contact_length, tfem_last_error, tfem_last_error_length, tfem_get_warning, &
-        tfem_get_mesh_nodes, tfem_get_displacements, tfem_get_element_strains, &
-        tfem_get_element_stresses, tfem_get_element_jacobians, tfem_get_reactions, &
-        tfem_get_system_matrix, tfem_get_contact_active, tfem_get_contact_pressure, &
-        tfem_get_contact_elements, tfem_get_contact_forces, tfem_get_contact_nodal_pressures, &
-        tfem_get_contact_pair_nodal_pressures, tfem_get_contact_gaps, tfem_get_contact_mesh, &
-        tfem_get_contact_element_pairs, tfem_get_contact_element_apexes, tfem_get_contact_state, &
-        tfem_set_contact_state, tfem_get_contact_shear, tfem_get_contact_friction_state, &
-        tfem_get_contact_dissipation, tfem_contact_last_error, tfem_contact_last_error_length, &
-        tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, tfem_contact_scatter_add, &
-        tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, tfem_contact_pressures, &
-        tfem_contact_elements, tfem_contact_element_equations, tfem_contact_element_blocks
+        tfem_set_prescribed_edges, tfem_contact_create, tfem_contact_destroy, &
+        tfem_contact_set_options, tfem_contact_restart, tfem_contact_length, tfem_last_error, &
+        tfem_last_error_length, tfem_get_warning, tfem_get_mesh_nodes, tfem_get_displacements, &
+        tfem_get_element_strains, tfem_get_element_stresses, tfem_get_element_jacobians, &
+        tfem_get_reactions, tfem_get_system_matrix, tfem_get_contact_active, &
+        tfem_get_contact_pressure, tfem_get_contact_elements, tfem_get_contact_forces, &
+        tfem_get_contact_nodal_pressures, tfem_get_contact_nodal_tractions, &
+        tfem_get_contact_pair_nodal_tractions, tfem_get_contact_pair_nodal_pressures, &
+        tfem_get_contact_gaps, tfem_get_contact_mesh, tfem_get_contact_element_pairs, &
+        tfem_get_contact_element_apexes, tfem_get_contact_state, tfem_set_contact_state, &
+        tfem_get_contact_shear, tfem_get_contact_friction_state, tfem_get_contact_dissipation, &
+        tfem_contact_last_error, tfem_contact_last_error_length, tfem_contact_nodes, &
+        tfem_contact_pattern, tfem_contact_gather, tfem_contact_scatter_add, tfem_contact_get_active, &
+        tfem_contact_set_active, tfem_contact_gaps, tfem_contact_pressures, tfem_contact_elements, &
+        tfem_contact_element_equations, tfem_contact_element_blocks
   use tfem_specifics
   implicit none
   private :: c_strlen
@@ -5679,7 +5792,10 @@ module tfem
   private :: tfem_get_contact_elements_i, tfem_get_contact_elements_i_r2, tfem_get_contact_forces_r2
   private :: tfem_get_contact_forces_i, tfem_get_contact_forces_i_r2
   private :: tfem_get_contact_nodal_pressures_r2, tfem_get_contact_nodal_pressures_i
-  private :: tfem_get_contact_nodal_pressures_i_r2, tfem_get_contact_slave_nodes_opt
+  private :: tfem_get_contact_nodal_pressures_i_r2, tfem_get_contact_nodal_tractions_r2
+  private :: tfem_get_contact_nodal_tractions_i, tfem_get_contact_nodal_tractions_i_r2
+  private :: tfem_get_contact_pair_nodal_tractions_r2, tfem_get_contact_pair_nodal_tractions_i
+  private :: tfem_get_contact_pair_nodal_tractions_i_r2, tfem_get_contact_slave_nodes_opt
   private :: tfem_get_contact_slave_nodes_opt_r2111, tfem_get_contact_slave_nodes_opt_r1211
   private :: tfem_get_contact_slave_nodes_opt_r2211, tfem_get_contact_slave_nodes_opt_r1121
   private :: tfem_get_contact_slave_nodes_opt_r2121, tfem_get_contact_slave_nodes_opt_r1221
@@ -5999,6 +6115,26 @@ module tfem
     procedure tfem_get_contact_nodal_pressures_i
     procedure tfem_get_contact_nodal_pressures_i_r2
   end interface tfem_get_contact_nodal_pressures
+
+  !> Fortran: tfem_get_contact_nodal_tractions (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_nodal_tractions
+    procedure tfem_get_contact_nodal_tractions
+    procedure tfem_get_contact_nodal_tractions_r2
+    procedure tfem_get_contact_nodal_tractions_i
+    procedure tfem_get_contact_nodal_tractions_i_r2
+  end interface tfem_get_contact_nodal_tractions
+
+  !> Fortran: tfem_get_contact_pair_nodal_tractions (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_pair_nodal_tractions
+    procedure tfem_get_contact_pair_nodal_tractions
+    procedure tfem_get_contact_pair_nodal_tractions_r2
+    procedure tfem_get_contact_pair_nodal_tractions_i
+    procedure tfem_get_contact_pair_nodal_tractions_i_r2
+  end interface tfem_get_contact_pair_nodal_tractions
 
   !> Fortran: tfem_get_contact_slave_nodes (documented in module tfem_c). `node`, `tributary`, `gap`
   !! and `pressure` are OPTIONAL: omit them to pass NULL. `length` takes an integer(c_size_t) or a

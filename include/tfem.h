@@ -919,7 +919,13 @@ enum tfem_status tfem_get_contact_active(struct tfem_model *model, int *out, siz
 /**
  * Copies the contact pressure of every contact element (n_contact_elements
  * values): the normal stress −n·σ·n in the element (force per unit area,
- * Pa in SI), positive in compression, 0 when inactive.
+ * Pa in SI), positive in compression, 0 when inactive. It is the
+ * traction at the element's apex (the interface point it measures:
+ * on matching meshes the apex node), times the share of its edge that
+ * faces the other side; each point is measured by two elements, one
+ * with its edge on either side. For the traction at the interface
+ * nodes, read `tfem_get_contact_nodal_tractions` (on a non-matching
+ * interface one family's element values read up to twice the traction).
  */
 enum tfem_status tfem_get_contact_pressure(struct tfem_model *model, double *out, size_t length);
 
@@ -989,6 +995,39 @@ enum tfem_status tfem_get_contact_nodal_pressures(struct tfem_model *model,
                                                   size_t length);
 
 /**
+ * Copies the contact traction at every node in the last contact solve or
+ * step, as (p, τ) per node (2·n_nodes values; force per unit area, Pa in
+ * SI; zero off the contact interfaces), computed on request. p is the
+ * pressure of `tfem_get_contact_nodal_pressures`, positive in
+ * compression. τ is the tangential traction the other body exerts on the
+ * node's body, along t = (−n_y, n_x) with n the body's outward normal
+ * (the direction of travel along a counter-clockwise boundary), so that
+ * both sides of an interface read one traction with one sign; the vector
+ * traction on the node's body is τ t − p n. Each part is the contact
+ * law's own, read along the normal the contact mesh measures the point
+ * along (one per point of the interface: its first side's): a
+ * frictionless interface reads τ = 0 to round-off, curved or not, and a
+ * frictional one its Coulomb shear. Pairs under the mortar weighting
+ * (frictionless) read τ = 0. Before a contact solve, or after a change,
+ * there are no results (TFEM_STATUS_INVALID_STATE).
+ */
+enum tfem_status tfem_get_contact_nodal_tractions(struct tfem_model *model,
+                                                  double *out,
+                                                  size_t length);
+
+/**
+ * `tfem_get_contact_nodal_tractions` of contact pair `pair` (0-based)
+ * alone, read over that pair's forces and tributaries as
+ * `tfem_get_contact_pair_nodal_pressures` reads its pressures (2·n_nodes
+ * values). An unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT
+ * naming it).
+ */
+enum tfem_status tfem_get_contact_pair_nodal_tractions(struct tfem_model *model,
+                                                       int pair,
+                                                       double *out,
+                                                       size_t length);
+
+/**
  * Chooses how the contact pairs' energy is weighted along their
  * interfaces: `weighting` is a `ContactWeightingMode`. 2 automatic, the
  * default: each pair what is right for it — the elements of the contact
@@ -998,9 +1037,12 @@ enum tfem_status tfem_get_contact_nodal_pressures(struct tfem_model *model,
  * curved interfaces where B reads one side only), B for a pair with
  * friction or a contact mesh of its own. 0 strip and 1 mortar force one
  * weighting on every pair (an expert's override). A change discards the
- * results, like any change of the contact pairs. Under the mortar
- * weighting friction, the stick law and the literal inversion test are
- * refused. The per-element outputs (`tfem_get_contact_active`,
+ * results, like any change of the contact pairs. The mortar weighting is
+ * frictionless and makes no mesh B: forcing it with a pair that has
+ * friction or a contact mesh of its own, or giving such a pair under it,
+ * is refused by that call (TFEM_ERR_ARGUMENT, naming the pair); a solve
+ * under it with the stick law or the literal inversion test is refused
+ * too. The per-element outputs (`tfem_get_contact_active`,
  * `tfem_get_contact_pressure`, `tfem_get_contact_elements`, shear,
  * friction state, dissipation; `tfem_get_sizes`' contact elements) cover
  * the pairs weighted by B, and are refused when no pair is
@@ -1222,10 +1264,10 @@ enum tfem_status tfem_set_contact_state(struct tfem_model *model,
  * (docs/method.md §6.15). 0, the default, is frictionless, bit for bit.
  * A negative or non-finite μ, or an unknown pair, is refused
  * (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load
- * history; turning friction on or off rebuilds the pair's contact mesh,
- * whose elements then measure every point of the interface along the
- * first side's normal there (frictional) or along their own edges'
- * normals (frictionless).
+ * history. Frictional or not, the elements of a pair's contact mesh
+ * measure every point of the interface along the first side's normal
+ * there, so that a frictionless interface transmits no tangential
+ * traction.
  */
 enum tfem_status tfem_set_friction(struct tfem_model *model, int pair, double mu);
 
@@ -1239,10 +1281,26 @@ enum tfem_status tfem_set_friction(struct tfem_model *model, int pair, double mu
 enum tfem_status tfem_set_prescribed(struct tfem_model *model, int node, int comp, double value);
 
 /**
+ * Changes the value of displacement component `comp` (0 x, 1 y) on every
+ * node of the boundary edges tagged `tag`, each prescribed before by
+ * `tfem_fix_edges` or `tfem_fix`: `tfem_set_prescribed` for a whole tag,
+ * the loads of a load history given as `tfem_fix_edges` gives them (the
+ * factorisation is kept). All or nothing: an unknown tag, a value that is
+ * not finite or a node not prescribed in that component is refused
+ * (TFEM_STATUS_INVALID_ARGUMENT naming it) and the model is unchanged.
+ */
+enum tfem_status tfem_set_prescribed_edges(struct tfem_model *model,
+                                           int tag,
+                                           int comp,
+                                           double value);
+
+/**
  * Copies the shear traction τ = n·σ·t (Pa in SI; t = (−n_y, n_x), n the
  * element's normal, see `tfem_get_contact_mesh`) of every contact element
  * of the last contact solve or step (n_contact_elements values): 0 when
  * open, |τ| ≤ μp when sticking, μp when slipping; all 0 when frictionless.
+ * An element value at its apex, as `tfem_get_contact_pressure`; the
+ * shear at the interface nodes is `tfem_get_contact_nodal_tractions`'.
  */
 enum tfem_status tfem_get_contact_shear(struct tfem_model *model, double *out, size_t length);
 

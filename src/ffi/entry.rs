@@ -1053,7 +1053,13 @@ pub unsafe extern "C" fn tfem_get_contact_active(
 
 /// Copies the contact pressure of every contact element (n_contact_elements
 /// values): the normal stress −n·σ·n in the element (force per unit area,
-/// Pa in SI), positive in compression, 0 when inactive.
+/// Pa in SI), positive in compression, 0 when inactive. It is the
+/// traction at the element's apex (the interface point it measures:
+/// on matching meshes the apex node), times the share of its edge that
+/// faces the other side; each point is measured by two elements, one
+/// with its edge on either side. For the traction at the interface
+/// nodes, read `tfem_get_contact_nodal_tractions` (on a non-matching
+/// interface one family's element values read up to twice the traction).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_contact_pressure(
     model: *mut TfemModel,
@@ -1166,6 +1172,60 @@ pub unsafe extern "C" fn tfem_get_contact_nodal_pressures(
 ) -> Status {
     with_model(model, |m| {
         copy_out(&m.model.contact_nodal_pressures()?, out, length, "out")
+    })
+}
+
+/// Copies the contact traction at every node in the last contact solve or
+/// step, as (p, τ) per node (2·n_nodes values; force per unit area, Pa in
+/// SI; zero off the contact interfaces), computed on request. p is the
+/// pressure of `tfem_get_contact_nodal_pressures`, positive in
+/// compression. τ is the tangential traction the other body exerts on the
+/// node's body, along t = (−n_y, n_x) with n the body's outward normal
+/// (the direction of travel along a counter-clockwise boundary), so that
+/// both sides of an interface read one traction with one sign; the vector
+/// traction on the node's body is τ t − p n. Each part is the contact
+/// law's own, read along the normal the contact mesh measures the point
+/// along (one per point of the interface: its first side's): a
+/// frictionless interface reads τ = 0 to round-off, curved or not, and a
+/// frictional one its Coulomb shear. Pairs under the mortar weighting
+/// (frictionless) read τ = 0. Before a contact solve, or after a change,
+/// there are no results (TFEM_STATUS_INVALID_STATE).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_nodal_tractions(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let t: Vec<f64> = m
+            .model
+            .contact_nodal_tractions()?
+            .into_iter()
+            .flatten()
+            .collect();
+        copy_out(&t, out, length, "out")
+    })
+}
+
+/// `tfem_get_contact_nodal_tractions` of contact pair `pair` (0-based)
+/// alone, read over that pair's forces and tributaries as
+/// `tfem_get_contact_pair_nodal_pressures` reads its pressures (2·n_nodes
+/// values). An unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT
+/// naming it).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_pair_nodal_tractions(
+    model: *mut TfemModel,
+    pair: c_int,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let n = m.model.contact_pairs().len();
+        let p = usize::try_from(pair).map_err(|_| crate::error::no_pair(pair, n))?;
+        let t: Vec<f64> = (m.model.contact_pair_nodal_tractions(p)?.into_iter())
+            .flatten()
+            .collect();
+        copy_out(&t, out, length, "out")
     })
 }
 
@@ -1597,10 +1657,10 @@ pub unsafe extern "C" fn tfem_set_contact_state(
 /// (docs/method.md §6.15). 0, the default, is frictionless, bit for bit.
 /// A negative or non-finite μ, or an unknown pair, is refused
 /// (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load
-/// history; turning friction on or off rebuilds the pair's contact mesh,
-/// whose elements then measure every point of the interface along the
-/// first side's normal there (frictional) or along their own edges'
-/// normals (frictionless).
+/// history. Frictional or not, the elements of a pair's contact mesh
+/// measure every point of the interface along the first side's normal
+/// there, so that a frictionless interface transmits no tangential
+/// traction.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_set_friction(model: *mut TfemModel, pair: c_int, mu: f64) -> Status {
     with_model(model, |m| {
@@ -1629,10 +1689,32 @@ pub unsafe extern "C" fn tfem_set_prescribed(
     })
 }
 
+/// Changes the value of displacement component `comp` (0 x, 1 y) on every
+/// node of the boundary edges tagged `tag`, each prescribed before by
+/// `tfem_fix_edges` or `tfem_fix`: `tfem_set_prescribed` for a whole tag,
+/// the loads of a load history given as `tfem_fix_edges` gives them (the
+/// factorisation is kept). All or nothing: an unknown tag, a value that is
+/// not finite or a node not prescribed in that component is refused
+/// (TFEM_STATUS_INVALID_ARGUMENT naming it) and the model is unchanged.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_set_prescribed_edges(
+    model: *mut TfemModel,
+    tag: c_int,
+    comp: c_int,
+    value: f64,
+) -> Status {
+    with_model(model, |m| {
+        let c = component(comp)?;
+        m.model.set_prescribed_edges(tag, c, value)
+    })
+}
+
 /// Copies the shear traction τ = n·σ·t (Pa in SI; t = (−n_y, n_x), n the
 /// element's normal, see `tfem_get_contact_mesh`) of every contact element
 /// of the last contact solve or step (n_contact_elements values): 0 when
 /// open, |τ| ≤ μp when sticking, μp when slipping; all 0 when frictionless.
+/// An element value at its apex, as `tfem_get_contact_pressure`; the
+/// shear at the interface nodes is `tfem_get_contact_nodal_tractions`'.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_contact_shear(
     model: *mut TfemModel,

@@ -338,6 +338,19 @@ impl Model {
         self.edit(|p| p.set_prescribed(node, component, value))
     }
 
+    /// Changes the prescribed value of a component on every node of the
+    /// edges tagged `tag`, all or nothing
+    /// ([`problem::Problem::set_prescribed_edges`]): the loads of a load
+    /// history given per tag, as [`Model::fix_edges`] gives them.
+    pub fn set_prescribed_edges(
+        &mut self,
+        tag: i32,
+        component: Component,
+        value: f64,
+    ) -> Result<()> {
+        self.edit(|p| p.set_prescribed_edges(tag, component, value))
+    }
+
     /// Removes every contact pair.
     pub fn clear_contact_pairs(&mut self) {
         let _ = self.edit(|p| {

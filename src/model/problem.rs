@@ -346,6 +346,50 @@ impl Problem {
         }
     }
 
+    /// Changes the value of component `component` on every node of the
+    /// edges tagged `tag`, each prescribed before ([`Problem::fix_edges`]
+    /// or [`Problem::fix`]): [`Problem::set_prescribed`] for a whole tag.
+    /// All or nothing: an unknown tag, a value that is not finite or a
+    /// node not prescribed in that component is refused, naming it, and
+    /// nothing changes.
+    pub fn set_prescribed_edges(
+        &mut self,
+        tag: i32,
+        component: Component,
+        value: f64,
+    ) -> Result<()> {
+        let mesh = self.mesh_ref()?;
+        if !value.is_finite() {
+            return Err(Error::argument(format!(
+                "prescribed displacement {value:?} on tag {tag} is not finite"
+            )));
+        }
+        let nodes: Vec<usize> = mesh
+            .boundary_edges()
+            .iter()
+            .filter(|e| e.tag == tag)
+            .flat_map(|e| e.nodes)
+            .collect();
+        if nodes.is_empty() {
+            return Err(Error::argument(format!("no boundary edge has tag {tag}")));
+        }
+        let c = component as usize;
+        if let Some(&v) = nodes
+            .iter()
+            .find(|&&v| !self.prescribed.contains_key(&(2 * v + c)))
+        {
+            return Err(Error::argument(format!(
+                "node {} {} (tag {tag}) is not prescribed: fix it first",
+                v + mesh.index_base(),
+                if c == 0 { "u_x" } else { "u_y" }
+            )));
+        }
+        for v in nodes {
+            self.set_prescribed(v, component, value)?;
+        }
+        Ok(())
+    }
+
     /// Refuses to prescribe global DOF `g` a value other than the one it
     /// already has: one of the two would silently win (a corner shared by
     /// two constrained edges, say).
