@@ -302,10 +302,10 @@ module tfem_c
     !> A `ContactLaw` value: 0 = frictionless (default), 1 = stick.
     integer(c_int) :: law
     !> E_c of the contact elements; 0 = the smaller E of the two bodies, or where one side of a pair
-    !! has every DOF of its contact nodes prescribed (a rigid tool) the other body's E (before
-    !! 2026-11-24 the smaller E also there: a rigid tool given a nominal E set the penalty). The
-    !! host contact context (`tfem_contact_set_options`) still takes the smaller E of its two sides:
-    !! give a rigid side its neighbour's E, or set `contact_modulus`.
+    !! has every DOF of its contact nodes prescribed (a rigid tool) the other body's E, so that a
+    !! rigid tool's nominal E does not set the penalty. The host contact context
+    !! (`tfem_contact_set_options`) still takes the smaller E of its two sides: give a rigid side
+    !! its neighbour's E, or set `contact_modulus`.
     real(c_double) :: contact_modulus
     !> λ of the contact elements (Jmin = h³/λ), model length units; 0 = the larger side of the
     !! mesh's bounding box.
@@ -331,10 +331,9 @@ module tfem_c
     !> Contact length ℓc, model length units: the summed interface-edge length of the active
     !! elements, each as far as it faces the other side, of one of B's two families (edges on one
     !! side or on the other) in each contact zone (a pair's active elements connected through shared
-    !! nodes), the one active over the longer length. Until 2026-11-24 the mean of the two families,
-    !! which counted half the width of a contact carried by one family alone (curved sides whose
-    !! nodes differ, rigid curved tools; docs/method.md §6.8). Under the mortar weighting: the
-    !! active slave nodes' summed tributaries.
+    !! nodes), the one active over the longer length. (Not their mean, which counts half the width
+    !! of a contact carried by one family alone; docs/method.md §6.8.) Under the mortar weighting:
+    !! the active slave nodes' summed tributaries.
     real(c_double) :: contact_length
     !> Largest normal interpenetration, model length units (under the mortar weighting: of an active
     !! slave node's mean gap).
@@ -405,8 +404,7 @@ module tfem_c
     !! correct digits: a penalty E_c so stiff that its overlaps approach the rounding of the
     !! displacements; after `tfem_solve` or `tfem_solve_contact`, a body's reactions with fewer than
     !! six correct digits: a "rigid" body modelled with a huge Young's modulus; a one-sided contact
-    !! zone). Since 2026-11-24 the pairing warnings outlive solves, and the reaction and one-sided
-    !! warnings are new.
+    !! zone). The pairing warnings outlive solves.
     function tfem_warning_count(model, count) &
         bind(C, name="tfem_warning_count") result(status)
       import
@@ -418,7 +416,7 @@ module tfem_c
     !> Writes to `size` the size in bytes (including the final NUL) of warning number `index`
     !! (0-based, whatever the index base): a buffer of this size holds all of it in
     !! `tfem_get_warning`. An index out of range is refused (TFEM_STATUS_INVALID_ARGUMENT), `size`
-    !! unchanged. Added 2026-11-24.
+    !! unchanged.
     function tfem_get_warning_size(model, index, size) &
         bind(C, name="tfem_get_warning_size") result(status)
       import
@@ -469,11 +467,10 @@ module tfem_c
     !> Loads a Gmsh MSH 4.1 mesh (ASCII or binary) from the file `path` (NUL-terminated; on Unix any
     !! bytes, as the file system takes them, elsewhere UTF-8): physical surfaces become bodies (tag
     !! = body), physical curves become boundary-edge tags (a curve in several groups under each of
-    !! their tags — before 2026-11-24 only the first group of a curve tagged its edges; a surface in
-    !! several is the body of the first, and physical points are not used: a warning names both);
-    !! only 3-node triangles and 2-node lines, in the plane z = 0. Replaces the mesh like
-    !! `tfem_set_mesh` with the given `index_base` for later calls: node i is the i-th node of the
-    !! file's `$Nodes` section, whatever its Gmsh tag (`tfem_get_mesh_nodes`,
+    !! their tags; a surface in several is the body of the first, and physical points are not used:
+    !! a warning names both); only 3-node triangles and 2-node lines, in the plane z = 0. Replaces
+    !! the mesh like `tfem_set_mesh` with the given `index_base` for later calls: node i is the i-th
+    !! node of the file's `$Nodes` section, whatever its Gmsh tag (`tfem_get_mesh_nodes`,
     !! `tfem_get_mesh_triangles` and `tfem_get_boundary_edges` read the mesh back). Returns
     !! TFEM_STATUS_IO for an unreadable or malformed file, TFEM_STATUS_INVALID_MESH for unsupported
     !! content: another version of the format (MSH 2.2, 4.0, …; the message says how to convert the
@@ -496,20 +493,20 @@ module tfem_c
     !! binary: raw appended data, little-endian, UInt64 block headers, no compression): the mesh in
     !! its initial configuration (z = 0) with - point data `displacement` ([u, v, 0]) and, after a
     !! contact solve or load step under either weighting, `contact_pressure` (the nodal pressure of
-    !! `tfem_get_contact_nodal_pressures`), `contact_force` ([f_x, f_y, 0],
-    !! `tfem_get_contact_forces`) and `contact_gap` (`tfem_get_contact_gaps`); none of the three
-    !! after a solve without contact; - cell data `body` (the body tag), `J` (twice the signed
-    !! area), `strain` [ε_xx, ε_yy, γ_xy] and `stress` [σ_xx, σ_yy, σ_xy]; - under the strip
-    !! weighting only, the elements of the contact mesh B appended after the body triangles as cells
-    !! of body −1 (zero strain and stress), with cell data `contact_element_active` (UInt8, 1 where
-    !! active) and `contact_element_pressure` (`tfem_get_contact_active`,
-    !! `tfem_get_contact_pressure`; 0 on the body triangles). The mortar weighting has no B: no such
-    !! cells or arrays, its contact is in the nodal arrays. (Earlier versions named the last two
-    !! `contact_active` and `contact_pressure`, wrote them as zeros under the mortar weighting, and
-    !! wrote no nodal contact array.) Added 2026-11-24. Returns TFEM_STATUS_INVALID_STATE before a
-    !! solve (nothing is written), TFEM_STATUS_IO when the file cannot be written (the message names
-    !! it and the reason), TFEM_STATUS_INVALID_ARGUMENT if the library was built without the `vtu`
-    !! feature. The model is never changed.
+    !! `tfem_get_contact_nodal_pressures`), `contact_shear` (the nodal shear of
+    !! `tfem_get_contact_nodal_tractions`), `contact_force` ([f_x, f_y, 0],
+    !! `tfem_get_contact_forces`) and `contact_gap` (`tfem_get_contact_gaps`); none of them after a
+    !! solve without contact; - cell data `body` (the body tag), `J` (twice the signed area),
+    !! `strain` [ε_xx, ε_yy, γ_xy] and `stress` [σ_xx, σ_yy, σ_xy]; - for the pairs weighted by B,
+    !! its elements appended after the body triangles as cells of body −1 (zero strain and stress),
+    !! with cell data `contact_element_active` (UInt8, 1 where active) and
+    !! `contact_element_pressure` (`tfem_get_contact_active`, `tfem_get_contact_pressure`; 0 on the
+    !! body triangles). Pairs under the mortar weighting have no B: their contact is in the nodal
+    !! arrays. (Earlier versions named the last two `contact_active` and `contact_pressure`, wrote
+    !! them as zeros under the mortar weighting, and wrote no nodal contact array.) Returns
+    !! TFEM_STATUS_INVALID_STATE before a solve (nothing is written), TFEM_STATUS_IO when the file
+    !! cannot be written (the message names it and the reason), TFEM_STATUS_INVALID_ARGUMENT if the
+    !! library was built without the `vtu` feature. The model is never changed.
     function tfem_write_vtu(model, path) &
         bind(C, name="tfem_write_vtu") result(status)
       import
@@ -666,8 +663,7 @@ module tfem_c
 
     !> Solves a scene without contact. `info` may be NULL. A body that is not restrained gives
     !! TFEM_STATUS_SINGULAR naming it. A model with every DOF prescribed has nothing to solve:
-    !! TFEM_STATUS_INVALID_STATE (before 2026-11-24 it was reported as SINGULAR, "free mode: "); so
-    !! also `tfem_solve_contact` and `tfem_step`.
+    !! TFEM_STATUS_INVALID_STATE; so also `tfem_solve_contact` and `tfem_step`.
     function tfem_solve(model, info) &
         bind(C, name="tfem_solve") result(status)
       import
@@ -917,7 +913,7 @@ module tfem_c
     !! mortar weighting, `tfem_set_contact_weighting`, over the slave nodes whose weighted gap is
     !! negative). `options` may be NULL (defaults); `report` may be NULL. TFEM_STATUS_NOT_CONVERGED
     !! (cycle or iteration cap) gives the history in the message; the model is then unchanged. Every
-    !! DOF prescribed: TFEM_STATUS_INVALID_STATE (before 2026-11-24, SINGULAR).
+    !! DOF prescribed: TFEM_STATUS_INVALID_STATE.
     function tfem_solve_contact(model, options, report) &
         bind(C, name="tfem_solve_contact") result(status)
       import
@@ -1277,8 +1273,7 @@ module tfem_c
     !! state belongs to the one before; the message names the change. Fixing or clearing prescribed
     !! DOFs does not block it: like new materials, it changes the stiffness, not the contact mesh.
     !! The state brought back is the next step's start even if that step starts a new history (new
-    !! materials, options or prescribed DOFs), with that problem's own interface factor. Until
-    !! 2026-11-24 a change of the prescribed DOFs also blocked the revert.
+    !! materials, options or prescribed DOFs), with that problem's own interface factor.
     function tfem_revert_step(model) &
         bind(C, name="tfem_revert_step") result(status)
       import
@@ -1479,7 +1474,7 @@ module tfem_c
     !> Size in bytes (including the final NUL) of the message `tfem_contact_last_error` would give
     !! for `context` (a buffer of this size holds all of it): 1 after a successful call; for a
     !! handle that is not a live contact context (destroyed, or a model), the size of the message
-    !! saying so. `context` may be NULL: 1 (it has no message). Added 2026-11-24.
+    !! saying so. `context` may be NULL: 1 (it has no message).
     function tfem_contact_last_error_length(context) &
         bind(C, name="tfem_contact_last_error_length") result(res)
       import
@@ -1790,8 +1785,8 @@ module tfem_c
     !! contact zone (a pair's active elements of B connected through shared nodes), the summed
     !! interface-edge length of the active elements (each as far as it faces the other side) of the
     !! family — edges on one side, or on the other: each covers the interface once — active over the
-    !! longer length; +0.0 when no element is active. Until 2026-11-24 the mean of the two families,
-    !! which counted half the width where one family alone carries a curved contact.
+    !! longer length; +0.0 when no element is active. (Their mean would count half the width where
+    !! one family alone carries a contact.)
     function tfem_contact_length(context, length) &
         bind(C, name="tfem_contact_length") result(status)
       import

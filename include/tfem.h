@@ -383,8 +383,8 @@ typedef struct tfem_contact_options {
   /**
    * E_c of the contact elements; 0 = the smaller E of the two bodies, or
    * where one side of a pair has every DOF of its contact nodes prescribed
-   * (a rigid tool) the other body's E (before 2026-11-24 the smaller E
-   * also there: a rigid tool given a nominal E set the penalty). The
+   * (a rigid tool) the other body's E, so that a rigid tool's nominal E
+   * does not set the penalty. The
    * host contact context (`tfem_contact_set_options`) still takes the
    * smaller E of its two sides: give a rigid side its neighbour's E, or
    * set `contact_modulus`.
@@ -434,9 +434,8 @@ typedef struct tfem_contact_report {
    * side, of one of B's two families (edges on one side or on the other)
    * in each contact zone (a pair's active elements connected through
    * shared nodes), the one active over the longer length.
-   * Until 2026-11-24 the mean of the two families, which counted half the
-   * width of a contact carried by one family alone (curved sides whose
-   * nodes differ, rigid curved tools; docs/method.md §6.8). Under the
+   * (Not their mean, which counts half the width of a contact carried by
+   * one family alone; docs/method.md §6.8.) Under the
    * mortar weighting: the active slave nodes' summed tributaries.
    */
   double contact_length;
@@ -508,8 +507,7 @@ size_t tfem_last_error_length(const struct tfem_model *model);
  * the rounding of the displacements; after `tfem_solve` or
  * `tfem_solve_contact`, a body's reactions with fewer than six correct
  * digits: a "rigid" body modelled with a huge Young's modulus; a
- * one-sided contact zone). Since 2026-11-24 the pairing warnings outlive
- * solves, and the reaction and one-sided warnings are new.
+ * one-sided contact zone). The pairing warnings outlive solves.
  */
 enum tfem_status tfem_warning_count(struct tfem_model *model, int *count);
 
@@ -518,7 +516,6 @@ enum tfem_status tfem_warning_count(struct tfem_model *model, int *count);
  * warning number `index` (0-based, whatever the index base): a buffer
  * of this size holds all of it in `tfem_get_warning`. An index out of
  * range is refused (TFEM_STATUS_INVALID_ARGUMENT), `size` unchanged.
- * Added 2026-11-24.
  */
 enum tfem_status tfem_get_warning_size(struct tfem_model *model, int index, size_t *size);
 
@@ -560,8 +557,7 @@ enum tfem_status tfem_set_mesh(struct tfem_model *model,
  * (NUL-terminated; on Unix any bytes, as the file system takes them,
  * elsewhere UTF-8): physical surfaces become bodies (tag = body),
  * physical curves become boundary-edge tags (a curve in several groups
- * under each of their tags — before 2026-11-24 only the first group of a
- * curve tagged its edges; a surface in several is the body of the first,
+ * under each of their tags; a surface in several is the body of the first,
  * and physical points are not used: a warning names both); only
  * 3-node triangles and 2-node lines, in the plane z = 0. Replaces the
  * mesh like `tfem_set_mesh` with the given `index_base` for later calls:
@@ -589,23 +585,23 @@ enum tfem_status tfem_load_gmsh(struct tfem_model *model, const char *path, int 
  * the mesh in its initial configuration (z = 0) with
  * - point data `displacement` ([u, v, 0]) and, after a contact solve or
  *   load step under either weighting, `contact_pressure` (the nodal
- *   pressure of `tfem_get_contact_nodal_pressures`), `contact_force`
- *   ([f_x, f_y, 0], `tfem_get_contact_forces`) and `contact_gap`
- *   (`tfem_get_contact_gaps`); none of the three after a solve without
- *   contact;
+ *   pressure of `tfem_get_contact_nodal_pressures`), `contact_shear`
+ *   (the nodal shear of `tfem_get_contact_nodal_tractions`),
+ *   `contact_force` ([f_x, f_y, 0], `tfem_get_contact_forces`) and
+ *   `contact_gap` (`tfem_get_contact_gaps`); none of them after a solve
+ *   without contact;
  * - cell data `body` (the body tag), `J` (twice the signed area), `strain`
  *   [ε_xx, ε_yy, γ_xy] and `stress` [σ_xx, σ_yy, σ_xy];
- * - under the strip weighting only, the elements of the contact mesh B
+ * - for the pairs weighted by B, its elements
  *   appended after the body triangles as cells of body −1 (zero strain
  *   and stress), with cell data `contact_element_active` (UInt8, 1 where
  *   active) and `contact_element_pressure` (`tfem_get_contact_active`,
- *   `tfem_get_contact_pressure`; 0 on the body triangles). The mortar
- *   weighting has no B: no such cells or arrays, its contact is in the
- *   nodal arrays.
+ *   `tfem_get_contact_pressure`; 0 on the body triangles). Pairs under
+ *   the mortar weighting have no B: their contact is in the nodal arrays.
  *
  * (Earlier versions named the last two `contact_active` and
  * `contact_pressure`, wrote them as zeros under the mortar weighting,
- * and wrote no nodal contact array.) Added 2026-11-24.
+ * and wrote no nodal contact array.)
  * Returns TFEM_STATUS_INVALID_STATE before a solve (nothing is written),
  * TFEM_STATUS_IO when the file cannot be written (the message names it
  * and the reason), TFEM_STATUS_INVALID_ARGUMENT if the library was built
@@ -712,8 +708,7 @@ enum tfem_status tfem_clear_loads(struct tfem_model *model);
 /**
  * Solves a scene without contact. `info` may be NULL. A body that is not
  * restrained gives TFEM_STATUS_SINGULAR naming it. A model with every
- * DOF prescribed has nothing to solve: TFEM_STATUS_INVALID_STATE (before
- * 2026-11-24 it was reported as SINGULAR, "free mode: "); so also
+ * DOF prescribed has nothing to solve: TFEM_STATUS_INVALID_STATE; so also
  * `tfem_solve_contact` and `tfem_step`.
  */
 enum tfem_status tfem_solve(struct tfem_model *model, struct tfem_solve_info *info);
@@ -904,7 +899,7 @@ enum tfem_status tfem_contact_options_default(struct tfem_contact_options *optio
  * the slave nodes whose weighted gap is negative). `options` may be NULL (defaults); `report` may be NULL.
  * TFEM_STATUS_NOT_CONVERGED (cycle or iteration cap) gives the history in
  * the message; the model is then unchanged. Every DOF prescribed:
- * TFEM_STATUS_INVALID_STATE (before 2026-11-24, SINGULAR).
+ * TFEM_STATUS_INVALID_STATE.
  */
 enum tfem_status tfem_solve_contact(struct tfem_model *model,
                                     const struct tfem_contact_options *options,
@@ -1215,8 +1210,7 @@ enum tfem_status tfem_step(struct tfem_model *model,
  * changes the stiffness, not the contact mesh. The state brought back is
  * the next step's start even if that step starts a new history (new
  * materials, options or prescribed DOFs), with that problem's own
- * interface factor. Until 2026-11-24 a change of the prescribed DOFs also
- * blocked the revert.
+ * interface factor.
  */
 enum tfem_status tfem_revert_step(struct tfem_model *model);
 
@@ -1382,7 +1376,6 @@ enum tfem_status tfem_contact_last_error(const struct tfem_contact *context,
  * size holds all of it): 1 after a successful call; for a handle that is
  * not a live contact context (destroyed, or a model), the size of the
  * message saying so. `context` may be NULL: 1 (it has no message).
- * Added 2026-11-24.
  */
 size_t tfem_contact_last_error_length(const struct tfem_contact *context);
 
@@ -1652,8 +1645,8 @@ enum tfem_status tfem_contact_element_blocks(struct tfem_contact *context,
  * of the active elements (each as far as it faces the other side) of the
  * family — edges on one side, or on the other: each covers the interface
  * once — active over the longer length; +0.0 when no element is active.
- * Until 2026-11-24 the mean of the two families, which counted half the
- * width where one family alone carries a curved contact.
+ * (Their mean would count half the width where one family alone carries
+ * a contact.)
  */
 enum tfem_status tfem_contact_length(struct tfem_contact *context, double *length);
 

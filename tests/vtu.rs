@@ -323,6 +323,14 @@ fn check_nodal_contact(vtu: &Vtu, model: &Model) {
         &vtu.f64s("PointData", "contact_pressure", 1),
         &p,
     );
+    let shear: Vec<f64> = (model.contact_nodal_tractions().unwrap().iter())
+        .map(|t| t[1])
+        .collect();
+    same(
+        "contact_shear",
+        &vtu.f64s("PointData", "contact_shear", 1),
+        &shear,
+    );
     same(
         "contact_force",
         &vtu.f64s("PointData", "contact_force", 3),
@@ -347,8 +355,18 @@ fn the_file_is_a_little_endian_grid_with_uint64_headers() {
 
 #[test]
 fn a_strip_solve_writes_the_mesh_the_fields_and_the_elements_of_b_to_the_bit() {
-    let model = seed(ContactWeighting::Strip);
-    let vtu = read_vtu(&written(&model, "strip.vtu"));
+    check_strip_solve(ContactWeighting::Strip, "strip.vtu");
+}
+
+#[test]
+fn the_automatic_weighting_writes_the_elements_of_b_of_its_strip_pairs() {
+    // The seed's straight interface gets B under the automatic weighting.
+    check_strip_solve(ContactWeighting::Auto, "auto.vtu");
+}
+
+fn check_strip_solve(weighting: ContactWeighting, name: &str) {
+    let model = seed(weighting);
+    let vtu = read_vtu(&written(&model, name));
     let b = model.contact_elements().unwrap();
     assert!(!b.is_empty());
     check_mesh_and_body_fields(&vtu, &model, b);

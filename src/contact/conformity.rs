@@ -11,9 +11,9 @@
 //! first side's chords by the difference of their sagittas, far more than
 //! the penalty's overlap: one family carries the contact alone. The solve
 //! is then the exact contact of those two polygons; ℓc counts, contact
-//! zone by zone, the family active over the longer length (the mean of the two,
-//! as before 2026-11-24, counted half the width of a one-sided contact:
-//! an outside probe's rigid cylinder, ℓc 0.50 of 2a at h = a/64). Where
+//! zone by zone, the family active over the longer length (the mean of the
+//! two counts half the width of a one-sided contact: an outside probe's
+//! rigid cylinder read ℓc 0.50 of 2a at h = a/64). Where
 //! the carrying family's apices are the finer side's nodes, only those
 //! nearest the other side's edge midpoints carry force, and the nodal
 //! forces are lumpy (a Lamé fit with the outer ring 2× coarser: nodal

@@ -816,9 +816,8 @@ impl HostContact {
     /// per contact zone (a pair's active elements connected through shared
     /// nodes), the facing interface-edge length of the
     /// active elements of the family (edges on one side, or on the other)
-    /// active over the longer length; +0.0 when none is. Until 2026-11-24
-    /// the mean of the two families, half the width where one family alone
-    /// carries a curved contact.
+    /// active over the longer length; +0.0 when none is (their mean would
+    /// read half the width where one family alone carries a contact).
     pub fn contact_length(&mut self) -> Result<f64> {
         let b = self.built()?;
         let active = b.active.active();

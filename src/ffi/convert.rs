@@ -67,8 +67,8 @@ pub struct TfemContactOptions {
     pub law: c_int,
     /// E_c of the contact elements; 0 = the smaller E of the two bodies, or
     /// where one side of a pair has every DOF of its contact nodes prescribed
-    /// (a rigid tool) the other body's E (before 2026-11-24 the smaller E
-    /// also there: a rigid tool given a nominal E set the penalty). The
+    /// (a rigid tool) the other body's E, so that a rigid tool's nominal E
+    /// does not set the penalty. The
     /// host contact context (`tfem_contact_set_options`) still takes the
     /// smaller E of its two sides: give a rigid side its neighbour's E, or
     /// set `contact_modulus`.
@@ -139,9 +139,8 @@ pub struct TfemContactReport {
     /// side, of one of B's two families (edges on one side or on the other)
     /// in each contact zone (a pair's active elements connected through
     /// shared nodes), the one active over the longer length.
-    /// Until 2026-11-24 the mean of the two families, which counted half the
-    /// width of a contact carried by one family alone (curved sides whose
-    /// nodes differ, rigid curved tools; docs/method.md §6.8). Under the
+    /// (Not their mean, which counts half the width of a contact carried by
+    /// one family alone; docs/method.md §6.8.) Under the
     /// mortar weighting: the active slave nodes' summed tributaries.
     pub contact_length: f64,
     /// Largest normal interpenetration, model length units (under the

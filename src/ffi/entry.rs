@@ -114,8 +114,7 @@ fn model_error(model: *const TfemModel) -> Result<String> {
 /// the rounding of the displacements; after `tfem_solve` or
 /// `tfem_solve_contact`, a body's reactions with fewer than six correct
 /// digits: a "rigid" body modelled with a huge Young's modulus; a
-/// one-sided contact zone). Since 2026-11-24 the pairing warnings outlive
-/// solves, and the reaction and one-sided warnings are new.
+/// one-sided contact zone). The pairing warnings outlive solves.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_warning_count(model: *mut TfemModel, count: *mut c_int) -> Status {
     with_model(model, |m| {
@@ -127,7 +126,6 @@ pub unsafe extern "C" fn tfem_warning_count(model: *mut TfemModel, count: *mut c
 /// warning number `index` (0-based, whatever the index base): a buffer
 /// of this size holds all of it in `tfem_get_warning`. An index out of
 /// range is refused (TFEM_STATUS_INVALID_ARGUMENT), `size` unchanged.
-/// Added 2026-11-24.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_get_warning_size(
     model: *mut TfemModel,
@@ -248,8 +246,7 @@ pub unsafe extern "C" fn tfem_set_mesh(
 /// (NUL-terminated; on Unix any bytes, as the file system takes them,
 /// elsewhere UTF-8): physical surfaces become bodies (tag = body),
 /// physical curves become boundary-edge tags (a curve in several groups
-/// under each of their tags — before 2026-11-24 only the first group of a
-/// curve tagged its edges; a surface in several is the body of the first,
+/// under each of their tags; a surface in several is the body of the first,
 /// and physical points are not used: a warning names both); only
 /// 3-node triangles and 2-node lines, in the plane z = 0. Replaces the
 /// mesh like `tfem_set_mesh` with the given `index_base` for later calls:
@@ -329,23 +326,23 @@ fn load_gmsh(_: &mut TfemModel, _: &std::path::Path, _: usize) -> Result<()> {
 /// the mesh in its initial configuration (z = 0) with
 /// - point data `displacement` ([u, v, 0]) and, after a contact solve or
 ///   load step under either weighting, `contact_pressure` (the nodal
-///   pressure of `tfem_get_contact_nodal_pressures`), `contact_force`
-///   ([f_x, f_y, 0], `tfem_get_contact_forces`) and `contact_gap`
-///   (`tfem_get_contact_gaps`); none of the three after a solve without
-///   contact;
+///   pressure of `tfem_get_contact_nodal_pressures`), `contact_shear`
+///   (the nodal shear of `tfem_get_contact_nodal_tractions`),
+///   `contact_force` ([f_x, f_y, 0], `tfem_get_contact_forces`) and
+///   `contact_gap` (`tfem_get_contact_gaps`); none of them after a solve
+///   without contact;
 /// - cell data `body` (the body tag), `J` (twice the signed area), `strain`
 ///   [ε_xx, ε_yy, γ_xy] and `stress` [σ_xx, σ_yy, σ_xy];
-/// - under the strip weighting only, the elements of the contact mesh B
+/// - for the pairs weighted by B, its elements
 ///   appended after the body triangles as cells of body −1 (zero strain
 ///   and stress), with cell data `contact_element_active` (UInt8, 1 where
 ///   active) and `contact_element_pressure` (`tfem_get_contact_active`,
-///   `tfem_get_contact_pressure`; 0 on the body triangles). The mortar
-///   weighting has no B: no such cells or arrays, its contact is in the
-///   nodal arrays.
+///   `tfem_get_contact_pressure`; 0 on the body triangles). Pairs under
+///   the mortar weighting have no B: their contact is in the nodal arrays.
 ///
 /// (Earlier versions named the last two `contact_active` and
 /// `contact_pressure`, wrote them as zeros under the mortar weighting,
-/// and wrote no nodal contact array.) Added 2026-11-24.
+/// and wrote no nodal contact array.)
 /// Returns TFEM_STATUS_INVALID_STATE before a solve (nothing is written),
 /// TFEM_STATUS_IO when the file cannot be written (the message names it
 /// and the reason), TFEM_STATUS_INVALID_ARGUMENT if the library was built
@@ -605,8 +602,7 @@ pub unsafe extern "C" fn tfem_clear_loads(model: *mut TfemModel) -> Status {
 
 /// Solves a scene without contact. `info` may be NULL. A body that is not
 /// restrained gives TFEM_STATUS_SINGULAR naming it. A model with every
-/// DOF prescribed has nothing to solve: TFEM_STATUS_INVALID_STATE (before
-/// 2026-11-24 it was reported as SINGULAR, "free mode: "); so also
+/// DOF prescribed has nothing to solve: TFEM_STATUS_INVALID_STATE; so also
 /// `tfem_solve_contact` and `tfem_step`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_solve(model: *mut TfemModel, info: *mut TfemSolveInfo) -> Status {
@@ -1019,7 +1015,7 @@ pub unsafe extern "C" fn tfem_contact_options_default(options: *mut TfemContactO
 /// the slave nodes whose weighted gap is negative). `options` may be NULL (defaults); `report` may be NULL.
 /// TFEM_STATUS_NOT_CONVERGED (cycle or iteration cap) gives the history in
 /// the message; the model is then unchanged. Every DOF prescribed:
-/// TFEM_STATUS_INVALID_STATE (before 2026-11-24, SINGULAR).
+/// TFEM_STATUS_INVALID_STATE.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_solve_contact(
     model: *mut TfemModel,
@@ -1576,8 +1572,7 @@ pub unsafe extern "C" fn tfem_step(
 /// changes the stiffness, not the contact mesh. The state brought back is
 /// the next step's start even if that step starts a new history (new
 /// materials, options or prescribed DOFs), with that problem's own
-/// interface factor. Until 2026-11-24 a change of the prescribed DOFs also
-/// blocked the revert.
+/// interface factor.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_revert_step(model: *mut TfemModel) -> Status {
     with_model(model, |m| m.model.revert_step())

@@ -122,7 +122,6 @@ pub unsafe extern "C" fn tfem_contact_last_error(
 /// size holds all of it): 1 after a successful call; for a handle that is
 /// not a live contact context (destroyed, or a model), the size of the
 /// message saying so. `context` may be NULL: 1 (it has no message).
-/// Added 2026-11-24.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_last_error_length(context: *const TfemContact) -> usize {
     if context.is_null() {
@@ -596,8 +595,8 @@ pub unsafe extern "C" fn tfem_contact_element_blocks(
 /// of the active elements (each as far as it faces the other side) of the
 /// family — edges on one side, or on the other: each covers the interface
 /// once — active over the longer length; +0.0 when no element is active.
-/// Until 2026-11-24 the mean of the two families, which counted half the
-/// width where one family alone carries a curved contact.
+/// (Their mean would count half the width where one family alone carries
+/// a contact.)
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_contact_length(
     context: *mut TfemContact,

@@ -10,24 +10,24 @@
 //! |---|---|---|---|
 //! | `displacement` | points | Float64, 3 | [u, v, 0] ([`Model::displacements`]) |
 //! | `contact_pressure` | points | Float64, 1 | after a contact solve: the contact pressure at each node, positive in compression, zero off the interfaces ([`Model::contact_nodal_pressures`]) |
+//! | `contact_shear` | points | Float64, 1 | after a contact solve: the tangential contact traction at each node, along its body's counter-clockwise tangent ([`Model::contact_nodal_tractions`]) |
 //! | `contact_force` | points | Float64, 3 | after a contact solve: [f_x, f_y, 0], the force the contact exerts on each node per unit thickness ([`Model::contact_forces`]) |
 //! | `contact_gap` | points | Float64, 1 | after a contact solve: the normal gap at each node, negative where the bodies interpenetrate ([`Model::contact_gaps`]) |
 //! | `body` | cells | Int32, 1 | the body tag of a triangle; −1 on the elements of B |
 //! | `J` | cells | Float64, 1 | twice the signed area in the initial configuration (an element of B: its initial Jacobian) |
 //! | `strain` | cells | Float64, 3 | [ε_xx, ε_yy, γ_xy] ([`Model::element_strains`]); zero on the elements of B |
 //! | `stress` | cells | Float64, 3 | [σ_xx, σ_yy, σ_xy] ([`Model::element_stresses`]); zero on the elements of B |
-//! | `contact_element_active` | cells | UInt8, 1 | strip weighting only: 1 on an active element of B, 0 elsewhere ([`Model::contact_active`]) |
-//! | `contact_element_pressure` | cells | Float64, 1 | strip weighting only: the pressure of each element of B, 0 on the body triangles ([`Model::contact_pressure`]) |
+//! | `contact_element_active` | cells | UInt8, 1 | pairs weighted by B only: 1 on an active element of B, 0 elsewhere ([`Model::contact_active`]) |
+//! | `contact_element_pressure` | cells | Float64, 1 | pairs weighted by B only: the pressure of each element of B, 0 on the body triangles ([`Model::contact_pressure`]) |
 //!
 //! The nodal contact arrays are there after every contact solve or load
 //! step, under both weightings, and only then (after a solve without
 //! contact the file has no contact array at all, rather than zeros that
-//! would read as "no contact"). Under the strip weighting the elements of
-//! the contact mesh B follow the body triangles as cells of their own
-//! (body −1) with the two `contact_element_*` arrays; under the mortar
-//! weighting ([`ContactWeighting::Mortar`]) there is no B, so neither its
-//! cells nor those arrays are written: its contact state is per node, and
-//! the nodal arrays carry it.
+//! would read as "no contact"). The elements of the contact mesh B of the
+//! pairs weighted by it follow the body triangles as cells of their own
+//! (body −1) with the two `contact_element_*` arrays; the pairs under the
+//! mortar weighting ([`ContactWeighting::Mortar`](crate::ContactWeighting::Mortar)) have no B: their
+//! contact state is per node, and the nodal arrays carry it.
 //!
 //! # The format
 //!
@@ -55,7 +55,7 @@ use std::fmt::Write as _;
 use std::io::{BufWriter, Write};
 use std::path::Path;
 
-use crate::contact::{ContactElement, ContactWeighting};
+use crate::contact::ContactElement;
 use crate::error::{Error, Result, Status};
 use crate::fem::element::TriGeometry;
 use crate::fem::mesh::Mesh;
@@ -203,8 +203,9 @@ struct Results<'a> {
 
 /// The nodal results of a contact solve, one value per node.
 struct NodalContact {
-    /// Contact pressure, positive in compression.
-    pressure: Vec<f64>,
+    /// Contact traction [pressure, shear], the pressure positive in
+    /// compression.
+    traction: Vec<[f64; 2]>,
     /// Force the contact exerts on the node.
     force: Vec<[f64; 2]>,
     /// Normal gap, negative where the bodies interpenetrate.
@@ -233,15 +234,16 @@ impl<'a> Results<'a> {
         let stresses = model.element_stresses()?;
         let contact = match model.contact_report() {
             Ok(_) => Some(NodalContact {
-                pressure: model.contact_nodal_pressures()?,
+                traction: model.contact_nodal_tractions()?,
                 force: model.contact_forces()?,
                 gap: model.contact_gaps()?,
             }),
             Err(_) => None,
         };
-        let strip = match (&contact, model.contact_weighting()) {
-            (Some(_), ContactWeighting::Strip) => Some(StripContact {
-                elements: model.contact_elements()?,
+        // Refused when every pair is under the mortar weighting: no B.
+        let strip = match (&contact, model.contact_elements()) {
+            (Some(_), Ok(elements)) if !elements.is_empty() => Some(StripContact {
+                elements,
                 active: model.contact_active()?,
                 pressure: model.contact_pressure()?,
             }),
@@ -344,7 +346,7 @@ impl<'a> Results<'a> {
             values: planar(&self.u),
         }];
         if let Some(NodalContact {
-            pressure,
+            traction,
             force,
             gap,
         }) = &self.contact
@@ -355,7 +357,14 @@ impl<'a> Results<'a> {
                     scalar: Scalar::Float64,
                     components: SCALAR,
                     tuples: n_points,
-                    values: f64s(|| pressure.iter().copied()),
+                    values: f64s(|| traction.iter().map(|t| t[0])),
+                },
+                Array {
+                    name: "contact_shear",
+                    scalar: Scalar::Float64,
+                    components: SCALAR,
+                    tuples: n_points,
+                    values: f64s(|| traction.iter().map(|t| t[1])),
                 },
                 Array {
                     name: "contact_force",

@@ -68,7 +68,7 @@ pub struct ContactReport {
     /// interface-edge length (as far as it faces the other side) of the
     /// active elements of the family — edges on one side, or on the other;
     /// each tiles the interface once — active over the longer length
-    /// (docs/method.md §6.8; the mean of the two until 2026-11-24). Under
+    /// (docs/method.md §6.8). Under
     /// the mortar weighting: the summed tributaries m_i of the active slave
     /// nodes.
     pub contact_length: f64,
