@@ -73,13 +73,13 @@ fn a_frictionless_interface_reads_no_shear_at_any_node() {
     // with the strip forced (non-matching).
     let base = Hertz::default();
     let cases: [(&str, Hertz, bool); 3] = [
-        ("block first", base.clone(), false),
-        ("cylinder first", base.clone(), true),
+        ("block first", base, false),
+        ("cylinder first", base, true),
         (
             "non-matching",
             Hertz {
                 cylinder_mesh_ratio: 2.5,
-                ..base.clone()
+                ..base
             },
             false,
         ),
@@ -133,7 +133,7 @@ fn a_sideways_load_on_a_frictionless_curved_contact_is_refused_as_singular_namin
     model.set_mesh(mesh);
     model.set_boundary_edges(&edges, &tags).unwrap();
     for body in [1, 2] {
-        let m = scene.model.material(body).unwrap().clone();
+        let m = *scene.model.material(body).unwrap();
         model.set_material(body, m).unwrap();
     }
     model.fix_edges(TAG_SUPPORT, Component::X, 0.0).unwrap();
