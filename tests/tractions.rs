@@ -1,10 +1,14 @@
-//! A frictionless interface transmits no tangential traction, curved or
-//! straight, matching or not: every element of B measures along one normal
-//! per point of the interface, its first side's (docs/method.md §6.15,
-//! "One normal per point"), and its law's force is along that normal.
-//! Measured along each element's own edge normal instead, a rigid sideways
-//! shift of 0.002a of a cylinder pressed on a block carried 1.7e-3 P
-//! horizontally, and a sideways load of 1e-2 P cycled.
+//! Contact tractions where they act. A frictionless interface transmits no
+//! tangential traction, curved or straight, matching or not: every element
+//! of B measures along one normal per point of the interface, its first
+//! side's (docs/method.md §6.15, "One normal per point"), and its law's
+//! force is along that normal.
+//! Measured along each element's own edge normal instead, the cylinder
+//! pressed on a block below (a/16) carried a horizontal contact force of
+//! 8.1e-5, 8.4e-5, 1.5e-4 P under rigid sideways shifts of 0, 0.002a,
+//! 0.05a (a user's Gmsh scene: 1.7e-3 P), and a sideways load of 1e-2 P
+//! cycled. The nodal tractions
+//! (pressure and shear per node) carry the loads, both sides one sign.
 
 use tfem::scenes::cattaneo::{
     CattaneoMindlin, TAG_BLOCK_TOP, TAG_CYLINDER, TAG_PLATEN, TAG_SUPPORT,
@@ -152,4 +156,62 @@ fn a_sideways_load_on_a_frictionless_curved_contact_is_refused_as_singular_namin
         "{}",
         e.message()
     );
+}
+
+#[test]
+fn the_nodal_shear_carries_the_tangential_load_with_one_sign_on_both_sides() {
+    // Cattaneo–Mindlin at a/16, μ = 0.3: pressed, then shifted sideways by
+    // a tenth of the press. Measured: Σ τ m over the block's top = the
+    // tangential contact force within 7.4e-8; |τ|/p = 0.3 at the slipping
+    // edges, ~0.03 in the sticking centre.
+    let mu = 0.3;
+    let base = CattaneoMindlin::default();
+    let mut scene = CattaneoMindlin {
+        mesh_size: base.half_width / 16.0,
+        ..base
+    }
+    .build()
+    .unwrap();
+    scene.model.set_friction(0, mu).unwrap();
+    let press = 2e-6;
+    for shift in [0.0, 0.1 * press] {
+        for &v in &scene.platen {
+            scene.model.set_prescribed(v, Component::X, shift).unwrap();
+            scene.model.set_prescribed(v, Component::Y, -press).unwrap();
+        }
+        scene.model.step(1.0, &ContactOptions::default()).unwrap();
+    }
+    let n_block = scene.n_block_nodes;
+    let [q, _] = cylinder_resultant(&scene.model, n_block);
+    let xy = scene.model.mesh().unwrap().nodes();
+    let t = scene.model.contact_nodal_tractions().unwrap();
+    let mut top: Vec<usize> = (0..n_block).filter(|&v| xy[v][1] == 0.0).collect();
+    top.sort_by(|a, b| xy[*a][0].total_cmp(&xy[*b][0]));
+    // The block's top is straight: a node's tributary is half its edges.
+    let length = |k: usize, j: usize| (xy[top[j]][0] - xy[top[k]][0]).abs();
+    let carried: f64 = (0..top.len())
+        .map(|k| {
+            let left = if k > 0 { length(k - 1, k) } else { 0.0 };
+            let right = if k + 1 < top.len() {
+                length(k, k + 1)
+            } else {
+                0.0
+            };
+            t[top[k]][1] * 0.5 * (left + right)
+        })
+        .sum();
+    assert!(q.abs() > 0.0);
+    assert!(
+        (carried - q).abs() <= 1e-6 * q.abs(),
+        "Σ τ m = {carried:e}, Q = {q:e}"
+    );
+    let in_contact = |v: &usize| t[*v][0] > 0.0;
+    let slip = (top.iter().filter(|v| in_contact(v)))
+        .map(|&v| t[v][1].abs() / t[v][0])
+        .fold(0.0, f64::max);
+    assert!((slip - mu).abs() <= 1e-6 * mu, "largest |τ|/p {slip}");
+    // Both sides read one traction with one sign: the cylinder's too.
+    let cylinder = (n_block..xy.len()).filter(in_contact);
+    assert!(cylinder.clone().count() > 0);
+    assert!(cylinder.into_iter().all(|v| t[v][1] * q >= 0.0));
 }
