@@ -6,7 +6,22 @@
 ! string helpers. From tfem.h:
 !
 ! tfem -- the Tempered Finite Element Method for 2D elasticity and
-! frictionless contact. C ABI.
+! contact, frictionless or with Coulomb friction. C ABI.
+!
+! Overview
+! - Two objects. A tfem_model holds a whole problem: the mesh and its
+!   bodies, materials, loads and constraints, contact pairs, and the
+!   results of its last solve or load step. A tfem_contact is the contact
+!   context of a host code that keeps its own elements and solver: it
+!   gives back contact stiffness and forces to add to the host's system.
+! - Phases of a model: describe it (mesh, materials, loads and
+!   constraints, contact pairs), solve it (tfem_solve, tfem_solve_contact,
+!   or a load history of tfem_step), read the results (computed when
+!   asked). Any change to the description discards the results.
+! - The entry points below stand in groups, in that order, each under a
+!   head: lifecycle, mesh, materials, loads and constraints, contact pairs,
+!   solve, results, contact results, load history, utilities, and the
+!   host codes' contact context.
 !
 ! Conventions
 ! - Every function returns a tfem_status; TFEM_STATUS_OK (0) is success.
@@ -140,10 +155,10 @@
 ! in tfem is the bind(C) procedure itself: for c_funloc or a procedure actual argument, take it
 ! from tfem_c under another local name (use tfem_c, only: c_tfem_solve => tfem_solve). These
 ! functions are:
-!   tfem_solve, tfem_get_sizes, tfem_get_mesh_triangles, tfem_get_boundary_edges,
-!   tfem_get_system_matrix_size, tfem_add_contact_pair, tfem_add_contact_pair_with_mesh,
-!   tfem_solve_contact, tfem_get_contact_slave_nodes, tfem_get_contact_pair_bodies, tfem_step,
-!   tfem_add_contact_pairs_auto, tfem_contact_add_side, tfem_contact_add_pair,
+!   tfem_get_sizes, tfem_get_mesh_triangles, tfem_get_boundary_edges, tfem_add_contact_pair,
+!   tfem_add_contact_pair_with_mesh, tfem_add_contact_pairs_auto, tfem_get_contact_pair_bodies,
+!   tfem_solve, tfem_solve_contact, tfem_get_contact_slave_nodes, tfem_step,
+!   tfem_get_system_matrix_size, tfem_contact_add_side, tfem_contact_add_pair,
 !   tfem_contact_add_pair_with_mesh, tfem_contact_sizes, tfem_contact_evaluate, tfem_contact_update
 
 ! The C API as it is (see "Fortran 2008" above).
@@ -262,6 +277,29 @@ module tfem_c
   !> Vertical (v).
   integer(c_int), parameter :: TFEM_COMPONENT_Y = 1
 
+  !> Options of `tfem_solve_contact`. Fill with `tfem_contact_options_default` and change what you
+  !! need.
+  type, bind(C) :: tfem_contact_options
+    !> A `ContactLaw` value: 0 = frictionless (default), 1 = stick.
+    integer(c_int) :: law
+    !> E_c of the contact elements; 0 = the smaller E of the two bodies, or where one side of a pair
+    !! has every DOF of its contact nodes prescribed (a rigid tool) the other body's E, so that a
+    !! rigid tool's nominal E does not set the penalty. The host contact context
+    !! (`tfem_contact_set_options`) still takes the smaller E of its two sides: give a rigid side
+    !! its neighbour's E, or set `contact_modulus`.
+    real(c_double) :: contact_modulus
+    !> λ of the contact elements (Jmin = h³/λ), model length units; 0 = the larger side of the
+    !! mesh's bounding box.
+    real(c_double) :: lambda
+    !> An `InversionTest` value: 0 = linearised J (default), 1 = literal J.
+    integer(c_int) :: inversion_test
+    !> Cap on active-set iterations (default 50).
+    integer(c_int) :: max_iterations
+    !> 1 = refactorise the matrix at every active-set iteration; 0 (default) = condense the changes
+    !! on the contact interface (faster, exact).
+    integer(c_int) :: refactorize
+  end type tfem_contact_options
+
   !> Statistics of a solve. Times are wall-clock seconds.
   type, bind(C) :: tfem_solve_info
     !> Unknowns after Dirichlet elimination.
@@ -296,29 +334,6 @@ module tfem_c
     real(c_double) :: time_total
   end type tfem_solve_info
 
-  !> Options of `tfem_solve_contact`. Fill with `tfem_contact_options_default` and change what you
-  !! need.
-  type, bind(C) :: tfem_contact_options
-    !> A `ContactLaw` value: 0 = frictionless (default), 1 = stick.
-    integer(c_int) :: law
-    !> E_c of the contact elements; 0 = the smaller E of the two bodies, or where one side of a pair
-    !! has every DOF of its contact nodes prescribed (a rigid tool) the other body's E, so that a
-    !! rigid tool's nominal E does not set the penalty. The host contact context
-    !! (`tfem_contact_set_options`) still takes the smaller E of its two sides: give a rigid side
-    !! its neighbour's E, or set `contact_modulus`.
-    real(c_double) :: contact_modulus
-    !> λ of the contact elements (Jmin = h³/λ), model length units; 0 = the larger side of the
-    !! mesh's bounding box.
-    real(c_double) :: lambda
-    !> An `InversionTest` value: 0 = linearised J (default), 1 = literal J.
-    integer(c_int) :: inversion_test
-    !> Cap on active-set iterations (default 50).
-    integer(c_int) :: max_iterations
-    !> 1 = refactorise the matrix at every active-set iteration; 0 (default) = condense the changes
-    !! on the contact interface (faster, exact).
-    integer(c_int) :: refactorize
-  end type tfem_contact_options
-
   !> Report of `tfem_solve_contact`.
   type, bind(C) :: tfem_contact_report
     !> Active-set iterations (solves).
@@ -343,6 +358,13 @@ module tfem_c
   end type tfem_contact_report
 
   interface
+    ! ==============================================================================================
+    ! Lifecycle, errors and warnings: a model is created, used from one thread at a time, and
+    ! destroyed; every call returns a tfem_status, the message of the last failed one is
+    ! tfem_last_error's, and warnings (something really wrong that did not stop the call) are kept
+    ! until the next solve or change.
+    ! ==============================================================================================
+
     !> The library version as a static NUL-terminated string ("major.minor.patch"). Thread-safe;
     !! never NULL; do not free.
     function tfem_version() &
@@ -440,6 +462,33 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_get_warning
 
+    !> Sets the number of threads the model's solves run on: 1 <= `threads` <= 1024 gives the model
+    !! a pool of its own (1: no parallelism at all, for a host that runs its own OpenMP or MPI
+    !! threads); 0 (the default) uses the process-wide pool, with as many threads as cores or the
+    !! environment variable RAYON_NUM_THREADS. Results do not depend on it beyond round-off, and are
+    !! kept.
+    function tfem_set_threads(model, threads) &
+        bind(C, name="tfem_set_threads") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: threads
+      integer(c_int) :: status
+    end function tfem_set_threads
+
+    !> Writes the number of threads the model's solves run on (see `tfem_set_threads`).
+    function tfem_get_threads(model, threads) &
+        bind(C, name="tfem_get_threads") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: threads
+      integer(c_int) :: status
+    end function tfem_get_threads
+
+    ! ==============================================================================================
+    ! Mesh: nodes, triangles and their bodies (tfem_set_mesh, or a Gmsh file), and the tagged
+    ! boundary edges that loads, constraints and contact pairs name.
+    ! ==============================================================================================
+
     !> Sets the mesh: `n_nodes` nodes with coordinates `xy` (2·n_nodes values, x0 y0 x1 y1 …),
     !! `n_triangles` P1 triangles with `connectivity` (3·n_triangles node indices) and a body tag
     !! per triangle in `body_of_triangle`. `index_base` is 0 (C) or 1 (Fortran) and applies to every
@@ -488,33 +537,6 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_load_gmsh
 
-    !> Writes the solved model to the file `path` (NUL-terminated; on Unix any bytes, as for
-    !! `tfem_load_gmsh`) as a VTK XML unstructured grid (`.vtu`, read by ParaView, VTK and meshio;
-    !! binary: raw appended data, little-endian, UInt64 block headers, no compression): the mesh in
-    !! its initial configuration (z = 0) with - point data `displacement` ([u, v, 0]) and, after a
-    !! contact solve or load step under either weighting, `contact_pressure` (the nodal pressure of
-    !! `tfem_get_contact_nodal_pressures`), `contact_shear` (the nodal shear of
-    !! `tfem_get_contact_nodal_tractions`), `contact_force` ([f_x, f_y, 0],
-    !! `tfem_get_contact_forces`) and `contact_gap` (`tfem_get_contact_gaps`); none of them after a
-    !! solve without contact; - cell data `body` (the body tag), `J` (twice the signed area),
-    !! `strain` [ε_xx, ε_yy, γ_xy] and `stress` [σ_xx, σ_yy, σ_xy]; - for the pairs weighted by B,
-    !! its elements appended after the body triangles as cells of body −1 (zero strain and stress),
-    !! with cell data `contact_element_active` (UInt8, 1 where active) and
-    !! `contact_element_pressure` (`tfem_get_contact_active`, `tfem_get_contact_pressure`; 0 on the
-    !! body triangles). Pairs under the mortar weighting have no B: their contact is in the nodal
-    !! arrays. (Earlier versions named the last two `contact_active` and `contact_pressure`, wrote
-    !! them as zeros under the mortar weighting, and wrote no nodal contact array.) Returns
-    !! TFEM_STATUS_INVALID_STATE before a solve (nothing is written), TFEM_STATUS_IO when the file
-    !! cannot be written (the message names it and the reason), TFEM_STATUS_INVALID_ARGUMENT if the
-    !! library was built without the `vtu` feature. The model is never changed.
-    function tfem_write_vtu(model, path) &
-        bind(C, name="tfem_write_vtu") result(status)
-      import
-      type(c_ptr), value :: model
-      character(kind=c_char), intent(in) :: path(*)
-      integer(c_int) :: status
-    end function tfem_write_vtu
-
     !> Sets the tagged boundary edges: `n_edges` edges given by `edge_nodes` (2·n_edges node
     !! indices) with a tag each in `tags`. Tags name the edges for loads, constraints and contact
     !! pairs. Replaces previous edges (use `tfem_add_boundary_edges` to add one group at a time).
@@ -531,146 +553,19 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_set_boundary_edges
 
-    !> Sets the material of body `body`: Young's modulus `young` (> 0), Poisson ratio `poisson` (in
-    !! (-1, 0.5) for plane strain, (-1, 0.5] for plane stress) and `plane` (a `PlaneMode`: 0 strain,
-    !! 1 stress).
-    function tfem_set_material(model, body, young, poisson, plane_mode) &
-        bind(C, name="tfem_set_material") result(status)
+    !> Adds tagged boundary edges to those already set (see `tfem_set_boundary_edges`): `n_edges`
+    !! edges given by `edge_nodes` (2·n_edges node indices) with a tag each in `tags`, for instance
+    !! one call per boundary group. An edge given again with a tag it already has is refused (its
+    !! loads would count twice); on any error nothing changes.
+    function tfem_add_boundary_edges(model, n_edges, edge_nodes, tags) &
+        bind(C, name="tfem_add_boundary_edges") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int), value :: body
-      real(c_double), value :: young
-      real(c_double), value :: poisson
-      integer(c_int), value :: plane_mode
+      integer(c_int), value :: n_edges
+      integer(c_int), intent(in) :: edge_nodes(*)
+      integer(c_int), intent(in) :: tags(*)
       integer(c_int) :: status
-    end function tfem_set_material
-
-    !> Chooses Jmin: `mode` is a `TemperingMode` (0 auto, 1 lambda = `value`, 2 fixed Jmin =
-    !! `value`, 3 off); `value` is ignored for 0 and 3.
-    function tfem_set_tempering(model, mode, value) &
-        bind(C, name="tfem_set_tempering") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: mode
-      real(c_double), value :: value
-      integer(c_int) :: status
-    end function tfem_set_tempering
-
-    !> Chooses the fill-reducing ordering: `ordering` is an `OrderingMode` (0 auto, 1 AMD, 2 nested
-    !! dissection); `parallel_subtrees` = 1 (default) factorises the two subtrees of a nested
-    !! dissection concurrently, 0 as one tree. Results do not depend on either beyond round-off: the
-    !! results of the last solve (all of them, the matrix included) are kept, and the next solve
-    !! analyses the matrix anew.
-    function tfem_set_ordering(model, ordering, parallel_subtrees) &
-        bind(C, name="tfem_set_ordering") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: ordering
-      integer(c_int), value :: parallel_subtrees
-      integer(c_int) :: status
-    end function tfem_set_ordering
-
-    !> Prescribes displacement component `component` (0 x, 1 y) of `node` to `value` (model length
-    !! units). A component already prescribed a different value is refused
-    !! (TFEM_STATUS_INVALID_ARGUMENT naming the node): one of the two would silently win. Call
-    !! `tfem_clear_constraints` to change prescribed values.
-    function tfem_fix(model, node, comp, value) &
-        bind(C, name="tfem_fix") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: node
-      integer(c_int), value :: comp
-      real(c_double), value :: value
-      integer(c_int) :: status
-    end function tfem_fix
-
-    !> Prescribes component `component` to `value` on every node of the boundary edges tagged `tag`
-    !! (interior edges too). All or nothing: a node already prescribed a different value (see
-    !! `tfem_fix`) refuses the whole call.
-    function tfem_fix_edges(model, tag, comp, value) &
-        bind(C, name="tfem_fix_edges") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: tag
-      integer(c_int), value :: comp
-      real(c_double), value :: value
-      integer(c_int) :: status
-    end function tfem_fix_edges
-
-    !> Removes every prescribed displacement.
-    function tfem_clear_constraints(model) &
-        bind(C, name="tfem_clear_constraints") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int) :: status
-    end function tfem_clear_constraints
-
-    !> Applies pressure `pressure` on the boundary edges tagged `tag`: a stress (force per unit
-    !! area, Pa in SI), positive pushing into the body; with the 2D convention of unit thickness, an
-    !! edge of length ℓ carries the force ℓ·pressure per unit thickness. Loads add up.
-    function tfem_add_pressure(model, tag, pressure) &
-        bind(C, name="tfem_add_pressure") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: tag
-      real(c_double), value :: pressure
-      integer(c_int) :: status
-    end function tfem_add_pressure
-
-    !> Applies the traction (tx, ty) on the boundary edges tagged `tag`: a stress vector (force per
-    !! unit area, Pa in SI); an edge of length ℓ carries ℓ·(tx, ty) per unit thickness. Loads add
-    !! up.
-    function tfem_add_traction(model, tag, tx, ty) &
-        bind(C, name="tfem_add_traction") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: tag
-      real(c_double), value :: tx
-      real(c_double), value :: ty
-      integer(c_int) :: status
-    end function tfem_add_traction
-
-    !> Adds the point force (fx, fy) at `node`: force per unit thickness (N/m in SI). Loads add up.
-    function tfem_add_nodal_force(model, node, fx, fy) &
-        bind(C, name="tfem_add_nodal_force") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: node
-      real(c_double), value :: fx
-      real(c_double), value :: fy
-      integer(c_int) :: status
-    end function tfem_add_nodal_force
-
-    !> Sets the body force (bx, by) of body `body`: force per unit volume (ρg, N/m³ in SI), acting
-    !! on each unit area of the mesh per unit thickness.
-    function tfem_set_body_force(model, body, bx, by) &
-        bind(C, name="tfem_set_body_force") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: body
-      real(c_double), value :: bx
-      real(c_double), value :: by
-      integer(c_int) :: status
-    end function tfem_set_body_force
-
-    !> Removes every load.
-    function tfem_clear_loads(model) &
-        bind(C, name="tfem_clear_loads") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int) :: status
-    end function tfem_clear_loads
-
-    !> Solves a scene without contact. `info` may be NULL. A body that is not restrained gives
-    !! TFEM_STATUS_SINGULAR naming it. A model with every DOF prescribed has nothing to solve:
-    !! TFEM_STATUS_INVALID_STATE; so also `tfem_solve_contact` and `tfem_step`.
-    function tfem_solve(model, info) &
-        bind(C, name="tfem_solve") result(status)
-      import
-      type(c_ptr), value :: model
-      type(tfem_solve_info), intent(inout) :: info
-      integer(c_int) :: status
-    end function tfem_solve
+    end function tfem_add_boundary_edges
 
     !> Sizes: nodes, triangles, and elements of the contact mesh of the last contact solve (0
     !! otherwise). Any pointer may be NULL.
@@ -738,6 +633,403 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_get_boundary_edges
 
+    ! ==============================================================================================
+    ! Materials, tempering and ordering: one material per body; the tempering of degenerate
+    ! triangles; the fill-reducing ordering.
+    ! ==============================================================================================
+
+    !> Sets the material of body `body`: Young's modulus `young` (> 0), Poisson ratio `poisson` (in
+    !! (-1, 0.5) for plane strain, (-1, 0.5] for plane stress) and `plane` (a `PlaneMode`: 0 strain,
+    !! 1 stress).
+    function tfem_set_material(model, body, young, poisson, plane_mode) &
+        bind(C, name="tfem_set_material") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: body
+      real(c_double), value :: young
+      real(c_double), value :: poisson
+      integer(c_int), value :: plane_mode
+      integer(c_int) :: status
+    end function tfem_set_material
+
+    !> Chooses Jmin: `mode` is a `TemperingMode` (0 auto, 1 lambda = `value`, 2 fixed Jmin =
+    !! `value`, 3 off); `value` is ignored for 0 and 3.
+    function tfem_set_tempering(model, mode, value) &
+        bind(C, name="tfem_set_tempering") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: mode
+      real(c_double), value :: value
+      integer(c_int) :: status
+    end function tfem_set_tempering
+
+    !> Chooses the fill-reducing ordering: `ordering` is an `OrderingMode` (0 auto, 1 AMD, 2 nested
+    !! dissection); `parallel_subtrees` = 1 (default) factorises the two subtrees of a nested
+    !! dissection concurrently, 0 as one tree. Results do not depend on either beyond round-off: the
+    !! results of the last solve (all of them, the matrix included) are kept, and the next solve
+    !! analyses the matrix anew.
+    function tfem_set_ordering(model, ordering, parallel_subtrees) &
+        bind(C, name="tfem_set_ordering") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: ordering
+      integer(c_int), value :: parallel_subtrees
+      integer(c_int) :: status
+    end function tfem_set_ordering
+
+    ! ==============================================================================================
+    ! Loads and constraints: prescribed displacements per node or per tag, and their values changed
+    ! along a load history; pressures, tractions, nodal and body forces.
+    ! ==============================================================================================
+
+    !> Prescribes displacement component `component` (0 x, 1 y) of `node` to `value` (model length
+    !! units). A component already prescribed a different value is refused
+    !! (TFEM_STATUS_INVALID_ARGUMENT naming the node): one of the two would silently win. Call
+    !! `tfem_clear_constraints` to change prescribed values.
+    function tfem_fix(model, node, comp, value) &
+        bind(C, name="tfem_fix") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: node
+      integer(c_int), value :: comp
+      real(c_double), value :: value
+      integer(c_int) :: status
+    end function tfem_fix
+
+    !> Prescribes component `component` to `value` on every node of the boundary edges tagged `tag`
+    !! (interior edges too). All or nothing: a node already prescribed a different value (see
+    !! `tfem_fix`) refuses the whole call.
+    function tfem_fix_edges(model, tag, comp, value) &
+        bind(C, name="tfem_fix_edges") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: tag
+      integer(c_int), value :: comp
+      real(c_double), value :: value
+      integer(c_int) :: status
+    end function tfem_fix_edges
+
+    !> Changes the value of displacement component `comp` (0 x, 1 y) of `node`, prescribed before by
+    !! `tfem_fix` or `tfem_fix_edges`: the loads of a non-proportional load history, which goes on
+    !! with the same factorisation (the set of prescribed DOFs is unchanged). A node not prescribed
+    !! in that component is refused, naming it.
+    function tfem_set_prescribed(model, node, comp, value) &
+        bind(C, name="tfem_set_prescribed") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: node
+      integer(c_int), value :: comp
+      real(c_double), value :: value
+      integer(c_int) :: status
+    end function tfem_set_prescribed
+
+    !> Changes the value of displacement component `comp` (0 x, 1 y) on every node of the boundary
+    !! edges tagged `tag`, each prescribed before by `tfem_fix_edges` or `tfem_fix`:
+    !! `tfem_set_prescribed` for a whole tag, the loads of a load history given as `tfem_fix_edges`
+    !! gives them (the factorisation is kept). All or nothing: an unknown tag, a value that is not
+    !! finite or a node not prescribed in that component is refused (TFEM_STATUS_INVALID_ARGUMENT
+    !! naming it) and the model is unchanged.
+    function tfem_set_prescribed_edges(model, tag, comp, value) &
+        bind(C, name="tfem_set_prescribed_edges") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: tag
+      integer(c_int), value :: comp
+      real(c_double), value :: value
+      integer(c_int) :: status
+    end function tfem_set_prescribed_edges
+
+    !> Removes every prescribed displacement.
+    function tfem_clear_constraints(model) &
+        bind(C, name="tfem_clear_constraints") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int) :: status
+    end function tfem_clear_constraints
+
+    !> Applies pressure `pressure` on the boundary edges tagged `tag`: a stress (force per unit
+    !! area, Pa in SI), positive pushing into the body; with the 2D convention of unit thickness, an
+    !! edge of length ℓ carries the force ℓ·pressure per unit thickness. Loads add up.
+    function tfem_add_pressure(model, tag, pressure) &
+        bind(C, name="tfem_add_pressure") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: tag
+      real(c_double), value :: pressure
+      integer(c_int) :: status
+    end function tfem_add_pressure
+
+    !> Applies the traction (tx, ty) on the boundary edges tagged `tag`: a stress vector (force per
+    !! unit area, Pa in SI); an edge of length ℓ carries ℓ·(tx, ty) per unit thickness. Loads add
+    !! up.
+    function tfem_add_traction(model, tag, tx, ty) &
+        bind(C, name="tfem_add_traction") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: tag
+      real(c_double), value :: tx
+      real(c_double), value :: ty
+      integer(c_int) :: status
+    end function tfem_add_traction
+
+    !> Adds the point force (fx, fy) at `node`: force per unit thickness (N/m in SI). Loads add up.
+    function tfem_add_nodal_force(model, node, fx, fy) &
+        bind(C, name="tfem_add_nodal_force") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: node
+      real(c_double), value :: fx
+      real(c_double), value :: fy
+      integer(c_int) :: status
+    end function tfem_add_nodal_force
+
+    !> Sets the body force (bx, by) of body `body`: force per unit volume (ρg, N/m³ in SI), acting
+    !! on each unit area of the mesh per unit thickness.
+    function tfem_set_body_force(model, body, bx, by) &
+        bind(C, name="tfem_set_body_force") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: body
+      real(c_double), value :: bx
+      real(c_double), value :: by
+      integer(c_int) :: status
+    end function tfem_set_body_force
+
+    !> Removes every load.
+    function tfem_clear_loads(model) &
+        bind(C, name="tfem_clear_loads") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int) :: status
+    end function tfem_clear_loads
+
+    ! ==============================================================================================
+    ! Contact pairs: the interfaces between bodies (declared, or found by
+    ! tfem_add_contact_pairs_auto), their friction and weighting, and the contact mesh B the strip
+    ! weighting makes. These are the model's own contact pairs, solved by tfem_solve_contact and
+    ! tfem_step; a host code with its own elements and solver uses the contact context
+    ! (tfem_contact_*) at the end of the header instead.
+    ! ==============================================================================================
+
+    !> Declares a potential contact interface between the boundary edges tagged `tag_a` (one body)
+    !! and `tag_b` (another body). The contact mesh B is built from matching nodes when they match
+    !! (a small normal gap is allowed), else by triangulating the strip between the two interfaces
+    !! (each must be one open chain of edges). Writes the pair's index (0-based) to `pair` (may be
+    !! NULL). A pair declared already, or one whose tags share boundary edges with both tags of a
+    !! declared pair (the same interface under other tags, which would count twice), is refused with
+    !! TFEM_STATUS_INVALID_CONTACT.
+    function tfem_add_contact_pair(model, tag_a, tag_b, pair) &
+        bind(C, name="tfem_add_contact_pair") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: tag_a
+      integer(c_int), value :: tag_b
+      integer(c_int), intent(inout) :: pair
+      integer(c_int) :: status
+    end function tfem_add_contact_pair
+
+    !> Declares a contact pair with a user-made contact mesh B: `n_triangles` triangles in
+    !! `connectivity` (3 per triangle) over nodes of the two interfaces. Wrongly oriented triangles
+    !! are flipped; their number goes to `flipped` (may be NULL), the pair's index to `pair` (may be
+    !! NULL). A triangle given twice (the same three nodes, in any order) is refused with
+    !! TFEM_STATUS_INVALID_CONTACT naming both triangles. The triangles are the contact: a pair of
+    !! tags declared already, or sharing edges with a declared pair, is not refused here (several
+    !! meshes may cover parts of one interface), so do not give a part twice.
+    function tfem_add_contact_pair_with_mesh(model, tag_a, tag_b, n_triangles, connectivity, pair, &
+        flipped) &
+        bind(C, name="tfem_add_contact_pair_with_mesh") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: tag_a
+      integer(c_int), value :: tag_b
+      integer(c_int), value :: n_triangles
+      integer(c_int), intent(in) :: connectivity(*)
+      integer(c_int), intent(inout) :: pair
+      integer(c_int), intent(inout) :: flipped
+      integer(c_int) :: status
+    end function tfem_add_contact_pair_with_mesh
+
+    !> Declares a contact pair for every two boundary tags of different bodies whose edges face each
+    !! other within `tolerance` (model length units: some edge of the one within `tolerance` of some
+    !! edge of the other, outward normals opposed within 30°, each in front of the other,
+    !! overlapping along the interface, no third body between them; a gap of exactly `tolerance`
+    !! pairs; docs/method.md §6.16). `tags` (`n_tags` values) restricts the search to those tags;
+    !! with `n_tags` = 0 every tag that can be a contact side is considered, and `tags` may be NULL.
+    !! Pairs already declared are skipped, tags of one body never pair, and an interface found again
+    !! under tags that share its edges with a pair kept (a "whole boundary" group beside the faces)
+    !! is skipped: the pair of tags with the fewest edges is kept (to pair an interface under other
+    !! tags, declare that pair by hand instead). What is left out without an error — with `n_tags` =
+    !! 0, a tag whose edges bound several bodies; an interface found again under other tags — is
+    !! named in a warning (`tfem_warning_count`, `tfem_get_warning`). The pairs added get
+    !! consecutive indices: writes the first to `first` (may be NULL) and their number, 0 when
+    !! nothing faces within the tolerance, to `count` (may be NULL). A negative or non-finite
+    !! tolerance, an unknown tag or an interface whose contact mesh cannot be built is refused,
+    !! naming it, and nothing is added.
+    function tfem_add_contact_pairs_auto(model, n_tags, tags, tolerance, first, count) &
+        bind(C, name="tfem_add_contact_pairs_auto") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: n_tags
+      integer(c_int), intent(in) :: tags(*)
+      real(c_double), value :: tolerance
+      integer(c_int), intent(inout) :: first
+      integer(c_int), intent(inout) :: count
+      integer(c_int) :: status
+    end function tfem_add_contact_pairs_auto
+
+    !> Sets Coulomb's friction coefficient μ ≥ 0 of contact pair `pair` (0-based, from
+    !! `tfem_add_contact_pair`): stick while the shear stays within μ times the pressure, slip
+    !! against the slip of the step beyond (docs/method.md §6.15). 0, the default, is frictionless,
+    !! bit for bit. A negative or non-finite μ, or an unknown pair, is refused
+    !! (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load history. Frictional or
+    !! not, the elements of a pair's contact mesh measure every point of the interface along the
+    !! first side's normal there, so that a frictionless interface transmits no tangential traction.
+    function tfem_set_friction(model, pair, mu) &
+        bind(C, name="tfem_set_friction") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: pair
+      real(c_double), value :: mu
+      integer(c_int) :: status
+    end function tfem_set_friction
+
+    !> Chooses how the contact pairs' energy is weighted along their interfaces: `weighting` is a
+    !! `ContactWeightingMode`. 2 automatic, the default: each pair what is right for it — the
+    !! elements of the contact mesh B (the seed's method) where the two sides' nodes match, one
+    !! weighted gap per node of the interface's coarser side where they do not (exact on the contact
+    !! patch test whatever the meshes, converging on curved interfaces where B reads one side only),
+    !! B for a pair with friction or a contact mesh of its own. 0 strip and 1 mortar force one
+    !! weighting on every pair (an expert's override). A change discards the results, like any
+    !! change of the contact pairs. The mortar weighting is frictionless and makes no mesh B:
+    !! forcing it with a pair that has friction or a contact mesh of its own, or giving such a pair
+    !! under it, is refused by that call (TFEM_ERR_ARGUMENT, naming the pair); a solve under it with
+    !! the stick law or the literal inversion test is refused too. The per-element outputs
+    !! (`tfem_get_contact_active`, `tfem_get_contact_pressure`, `tfem_get_contact_elements`, shear,
+    !! friction state, dissipation; `tfem_get_sizes`' contact elements) cover the pairs weighted by
+    !! B, and are refused when no pair is (`tfem_get_contact_mesh` still gives the B the pairs would
+    !! make); the state of the others is per slave node (`tfem_get_contact_slave_nodes`). Nodal
+    !! pressures, gaps and forces, reactions and the report cover every pair, the report's
+    !! `elements` counting elements of B and slave nodes.
+    function tfem_set_contact_weighting(model, weighting) &
+        bind(C, name="tfem_set_contact_weighting") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: weighting
+      integer(c_int) :: status
+    end function tfem_set_contact_weighting
+
+    !> Writes the contact weighting (a `ContactWeightingMode`: 0 strip, 1 mortar, 2 automatic, the
+    !! default) into `*weighting`.
+    function tfem_get_contact_weighting(model, weighting) &
+        bind(C, name="tfem_get_contact_weighting") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: weighting
+      integer(c_int) :: status
+    end function tfem_get_contact_weighting
+
+    !> Writes the number of elements of the contact mesh B of the declared contact pairs, available
+    !! before any solve (0 without pairs).
+    function tfem_get_contact_mesh_size(model, n_elements) &
+        bind(C, name="tfem_get_contact_mesh_size") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: n_elements
+      integer(c_int) :: status
+    end function tfem_get_contact_mesh_size
+
+    !> Copies the nodes of every element of the contact mesh B of the declared contact pairs (3 per
+    !! element, in the model's index base, oriented so that J > 0 when the gap opens), available
+    !! before any solve: the same elements, in the same order, as `tfem_get_contact_elements` gives
+    !! after a contact solve.
+    function tfem_get_contact_mesh(model, out, length) &
+        bind(C, name="tfem_get_contact_mesh") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_mesh
+
+    !> Copies, for every element of the contact mesh B (see `tfem_get_contact_mesh`), the index of
+    !! its contact pair (0-based, as returned by `tfem_add_contact_pair`, whatever the index base).
+    function tfem_get_contact_element_pairs(model, out, length) &
+        bind(C, name="tfem_get_contact_element_pairs") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_element_pairs
+
+    !> Copies, for every element of the contact mesh B (see `tfem_get_contact_mesh`), its apex: the
+    !! node (in the model's index base) alone on its side of the interface, whose distance from the
+    !! element's interface edge is the element's gap.
+    function tfem_get_contact_element_apexes(model, out, length) &
+        bind(C, name="tfem_get_contact_element_apexes") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_element_apexes
+
+    !> Writes the bodies of contact pair `pair` (0-based, as returned by `tfem_add_contact_pair`):
+    !! `body_a` carries the pair's first tag, `body_b` its second. Either pointer may be NULL.
+    function tfem_get_contact_pair_bodies(model, pair, body_a, body_b) &
+        bind(C, name="tfem_get_contact_pair_bodies") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: pair
+      integer(c_int), intent(inout) :: body_a
+      integer(c_int), intent(inout) :: body_b
+      integer(c_int) :: status
+    end function tfem_get_contact_pair_bodies
+
+    ! ==============================================================================================
+    ! Solve: without contact (tfem_solve) or with it (tfem_solve_contact, one load; tfem_step for a
+    ! load history, below).
+    ! ==============================================================================================
+
+    !> Fills `options` with the defaults: frictionless law, E_c and λ derived from the model,
+    !! linearised inversion test, 50 iterations.
+    function tfem_contact_options_default(options) &
+        bind(C, name="tfem_contact_options_default") result(status)
+      import
+      type(tfem_contact_options), intent(inout) :: options
+      integer(c_int) :: status
+    end function tfem_contact_options_default
+
+    !> Solves a scene without contact. `info` may be NULL. A body that is not restrained gives
+    !! TFEM_STATUS_SINGULAR naming it. A model with every DOF prescribed has nothing to solve:
+    !! TFEM_STATUS_INVALID_STATE; so also `tfem_solve_contact` and `tfem_step`.
+    function tfem_solve(model, info) &
+        bind(C, name="tfem_solve") result(status)
+      import
+      type(c_ptr), value :: model
+      type(tfem_solve_info), intent(inout) :: info
+      integer(c_int) :: status
+    end function tfem_solve
+
+    !> Solves the contact problem by the active-set loop over inverted contact elements (under the
+    !! mortar weighting, `tfem_set_contact_weighting`, over the slave nodes whose weighted gap is
+    !! negative). `options` may be NULL (defaults); `report` may be NULL. TFEM_STATUS_NOT_CONVERGED
+    !! (cycle or iteration cap) gives the history in the message; the model is then unchanged. Every
+    !! DOF prescribed: TFEM_STATUS_INVALID_STATE.
+    function tfem_solve_contact(model, options, report) &
+        bind(C, name="tfem_solve_contact") result(status)
+      import
+      type(c_ptr), value :: model
+      type(tfem_contact_options), intent(in) :: options
+      type(tfem_contact_report), intent(inout) :: report
+      integer(c_int) :: status
+    end function tfem_solve_contact
+
+    ! ==============================================================================================
+    ! Results of the last solve or step: displacements, strains, stresses, reactions, external work,
+    ! and the VTU file.
+    ! ==============================================================================================
+
     !> Copies the nodal displacements (u0 v0 u1 v1 …, 2·n_nodes values) of the last solve into `out`
     !! of `length` values.
     function tfem_get_displacements(model, out, length) &
@@ -798,193 +1090,6 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_get_reactions
 
-    !> Sizes of the stiffness matrix of the last solve (see `tfem_get_system_matrix`): `n` unknowns
-    !! and `nnz` stored entries of its upper triangle. Either pointer may be NULL.
-    function tfem_get_system_matrix_size(model, n, nnz) &
-        bind(C, name="tfem_get_system_matrix_size") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int64_t), intent(inout) :: n
-      integer(c_int64_t), intent(inout) :: nnz
-      integer(c_int) :: status
-    end function tfem_get_system_matrix_size
-
-    !> Copies the stiffness matrix K of the last solve on its unknowns (the DOFs left after
-    !! Dirichlet elimination), the system K u = f whose solution `tfem_get_displacements` returns;
-    !! for a contact solve it holds the contact elements active at convergence. Upper triangle in
-    !! compressed sparse columns, rows ascending within each column: `col_ptr` (n + 1 values),
-    !! `row_idx` and `values` (nnz values each), indices in the model's index base (`col_ptr[0]` =
-    !! base). `dofs` (n values) gives each unknown's position in the array of
-    !! `tfem_get_displacements`, in the index base (2·node + component for base 0). Every buffer is
-    !! checked before any is written. Like every result it outlives a failed solve (which rebuilds
-    !! it bit for bit) and is discarded by a change of the problem (TFEM_STATUS_INVALID_STATE).
-    function tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length) &
-        bind(C, name="tfem_get_system_matrix") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int64_t), intent(inout) :: col_ptr(*)
-      integer(c_size_t), value :: col_ptr_length
-      integer(c_int64_t), intent(inout) :: row_idx(*)
-      integer(c_size_t), value :: row_idx_length
-      real(c_double), intent(inout) :: values(*)
-      integer(c_size_t), value :: values_length
-      integer(c_int64_t), intent(inout) :: dofs(*)
-      integer(c_size_t), value :: dofs_length
-      integer(c_int) :: status
-    end function tfem_get_system_matrix
-
-    !> Tempered elasticity stiffness of one P1 triangle with corners `xy` (x1 y1 x2 y2 x3 y3): K =
-    !! B̂ᵀ D B̂ / (2·max(J, jmin)), written row-major into `out` (36 values, DOFs u1 v1 u2 v2 u3
-    !! v3). `jmin` > 0 tempers; `jmin` = 0 is plain FEM (divides by |J|, fails for J = 0). Pure and
-    !! thread-safe; errors go to the thread's `tfem_last_error(NULL, …)`.
-    function tfem_element_stiffness(xy, young, poisson, plane_mode, jmin, out) &
-        bind(C, name="tfem_element_stiffness") result(status)
-      import
-      real(c_double), intent(in) :: xy(*)
-      real(c_double), value :: young
-      real(c_double), value :: poisson
-      integer(c_int), value :: plane_mode
-      real(c_double), value :: jmin
-      real(c_double), intent(inout) :: out(*)
-      integer(c_int) :: status
-    end function tfem_element_stiffness
-
-    !> Tempered Laplacian stiffness of one P1 triangle: K_ij = κ g_i·g_j / (2·max(J, jmin)),
-    !! row-major into `out` (9 values). `jmin` as in `tfem_element_stiffness`. Pure and thread-safe.
-    function tfem_laplacian_stiffness(xy, kappa, jmin, out) &
-        bind(C, name="tfem_laplacian_stiffness") result(status)
-      import
-      real(c_double), intent(in) :: xy(*)
-      real(c_double), value :: kappa
-      real(c_double), value :: jmin
-      real(c_double), intent(inout) :: out(*)
-      integer(c_int) :: status
-    end function tfem_laplacian_stiffness
-
-    !> Declares a potential contact interface between the boundary edges tagged `tag_a` (one body)
-    !! and `tag_b` (another body). The contact mesh B is built from matching nodes when they match
-    !! (a small normal gap is allowed), else by triangulating the strip between the two interfaces
-    !! (each must be one open chain of edges). Writes the pair's index (0-based) to `pair` (may be
-    !! NULL). A pair declared already, or one whose tags share boundary edges with both tags of a
-    !! declared pair (the same interface under other tags, which would count twice), is refused with
-    !! TFEM_STATUS_INVALID_CONTACT.
-    function tfem_add_contact_pair(model, tag_a, tag_b, pair) &
-        bind(C, name="tfem_add_contact_pair") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: tag_a
-      integer(c_int), value :: tag_b
-      integer(c_int), intent(inout) :: pair
-      integer(c_int) :: status
-    end function tfem_add_contact_pair
-
-    !> Declares a contact pair with a user-made contact mesh B: `n_triangles` triangles in
-    !! `connectivity` (3 per triangle) over nodes of the two interfaces. Wrongly oriented triangles
-    !! are flipped; their number goes to `flipped` (may be NULL), the pair's index to `pair` (may be
-    !! NULL). A triangle given twice (the same three nodes, in any order) is refused with
-    !! TFEM_STATUS_INVALID_CONTACT naming both triangles. The triangles are the contact: a pair of
-    !! tags declared already, or sharing edges with a declared pair, is not refused here (several
-    !! meshes may cover parts of one interface), so do not give a part twice.
-    function tfem_add_contact_pair_with_mesh(model, tag_a, tag_b, n_triangles, connectivity, pair, &
-        flipped) &
-        bind(C, name="tfem_add_contact_pair_with_mesh") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: tag_a
-      integer(c_int), value :: tag_b
-      integer(c_int), value :: n_triangles
-      integer(c_int), intent(in) :: connectivity(*)
-      integer(c_int), intent(inout) :: pair
-      integer(c_int), intent(inout) :: flipped
-      integer(c_int) :: status
-    end function tfem_add_contact_pair_with_mesh
-
-    !> Fills `options` with the defaults: frictionless law, E_c and λ derived from the model,
-    !! linearised inversion test, 50 iterations.
-    function tfem_contact_options_default(options) &
-        bind(C, name="tfem_contact_options_default") result(status)
-      import
-      type(tfem_contact_options), intent(inout) :: options
-      integer(c_int) :: status
-    end function tfem_contact_options_default
-
-    !> Solves the contact problem by the active-set loop over inverted contact elements (under the
-    !! mortar weighting, `tfem_set_contact_weighting`, over the slave nodes whose weighted gap is
-    !! negative). `options` may be NULL (defaults); `report` may be NULL. TFEM_STATUS_NOT_CONVERGED
-    !! (cycle or iteration cap) gives the history in the message; the model is then unchanged. Every
-    !! DOF prescribed: TFEM_STATUS_INVALID_STATE.
-    function tfem_solve_contact(model, options, report) &
-        bind(C, name="tfem_solve_contact") result(status)
-      import
-      type(c_ptr), value :: model
-      type(tfem_contact_options), intent(in) :: options
-      type(tfem_contact_report), intent(inout) :: report
-      integer(c_int) :: status
-    end function tfem_solve_contact
-
-    !> Copies the active flag (1 active, 0 not) of every contact element of the last contact solve
-    !! (n_contact_elements values, see `tfem_get_sizes`).
-    function tfem_get_contact_active(model, out, length) &
-        bind(C, name="tfem_get_contact_active") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), intent(inout) :: out(*)
-      integer(c_size_t), value :: length
-      integer(c_int) :: status
-    end function tfem_get_contact_active
-
-    !> Copies the contact pressure of every contact element (n_contact_elements values): the normal
-    !! stress −n·σ·n in the element (force per unit area, Pa in SI), positive in compression, 0 when
-    !! inactive. It is the traction at the element's apex (the interface point it measures: on
-    !! matching meshes the apex node), times the share of its edge that faces the other side; each
-    !! point is measured by two elements, one with its edge on either side. For the traction at the
-    !! interface nodes, read `tfem_get_contact_nodal_tractions` (on a non-matching interface one
-    !! family's element values read up to twice the traction).
-    function tfem_get_contact_pressure(model, out, length) &
-        bind(C, name="tfem_get_contact_pressure") result(status)
-      import
-      type(c_ptr), value :: model
-      real(c_double), intent(inout) :: out(*)
-      integer(c_size_t), value :: length
-      integer(c_int) :: status
-    end function tfem_get_contact_pressure
-
-    !> Copies the nodes of every contact element (3·n_contact_elements indices, in the model's index
-    !! base), oriented so that J > 0 when the gap opens. Refused (TFEM_STATUS_INVALID_STATE) after a
-    !! solve under the mortar weighting, which uses no B.
-    function tfem_get_contact_elements(model, out, length) &
-        bind(C, name="tfem_get_contact_elements") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), intent(inout) :: out(*)
-      integer(c_size_t), value :: length
-      integer(c_int) :: status
-    end function tfem_get_contact_elements
-
-    !> Writes the report of the last contact solve to `report`.
-    function tfem_get_contact_report(model, report) &
-        bind(C, name="tfem_get_contact_report") result(status)
-      import
-      type(c_ptr), value :: model
-      type(tfem_contact_report), intent(inout) :: report
-      integer(c_int) :: status
-    end function tfem_get_contact_report
-
-    !> Adds tagged boundary edges to those already set (see `tfem_set_boundary_edges`): `n_edges`
-    !! edges given by `edge_nodes` (2·n_edges node indices) with a tag each in `tags`, for instance
-    !! one call per boundary group. An edge given again with a tag it already has is refused (its
-    !! loads would count twice); on any error nothing changes.
-    function tfem_add_boundary_edges(model, n_edges, edge_nodes, tags) &
-        bind(C, name="tfem_add_boundary_edges") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: n_edges
-      integer(c_int), intent(in) :: edge_nodes(*)
-      integer(c_int), intent(in) :: tags(*)
-      integer(c_int) :: status
-    end function tfem_add_boundary_edges
-
     !> Writes the work of the external loads of the last solve, Σ f·u over every node (force ×
     !! length per unit thickness, J/m in SI): for a pressure load, the compliance ∫ p (−u·n) ds.
     function tfem_get_external_work(model, work) &
@@ -994,6 +1099,49 @@ module tfem_c
       real(c_double), intent(inout) :: work
       integer(c_int) :: status
     end function tfem_get_external_work
+
+    !> Writes the solved model to the file `path` (NUL-terminated; on Unix any bytes, as for
+    !! `tfem_load_gmsh`) as a VTK XML unstructured grid (`.vtu`, read by ParaView, VTK and meshio;
+    !! binary: raw appended data, little-endian, UInt64 block headers, no compression): the mesh in
+    !! its initial configuration (z = 0) with - point data `displacement` ([u, v, 0]) and, after a
+    !! contact solve or load step under either weighting, `contact_pressure` (the nodal pressure of
+    !! `tfem_get_contact_nodal_pressures`), `contact_shear` (the nodal shear of
+    !! `tfem_get_contact_nodal_tractions`), `contact_force` ([f_x, f_y, 0],
+    !! `tfem_get_contact_forces`) and `contact_gap` (`tfem_get_contact_gaps`); none of them after a
+    !! solve without contact; - cell data `body` (the body tag), `J` (twice the signed area),
+    !! `strain` [ε_xx, ε_yy, γ_xy] and `stress` [σ_xx, σ_yy, σ_xy]; - for the pairs weighted by B,
+    !! its elements appended after the body triangles as cells of body −1 (zero strain and stress),
+    !! with cell data `contact_element_active` (UInt8, 1 where active) and
+    !! `contact_element_pressure` (`tfem_get_contact_active`, `tfem_get_contact_pressure`; 0 on the
+    !! body triangles). Pairs under the mortar weighting have no B: their contact is in the nodal
+    !! arrays. (Earlier versions named the last two `contact_active` and `contact_pressure`, wrote
+    !! them as zeros under the mortar weighting, and wrote no nodal contact array.) Returns
+    !! TFEM_STATUS_INVALID_STATE before a solve (nothing is written), TFEM_STATUS_IO when the file
+    !! cannot be written (the message names it and the reason), TFEM_STATUS_INVALID_ARGUMENT if the
+    !! library was built without the `vtu` feature. The model is never changed.
+    function tfem_write_vtu(model, path) &
+        bind(C, name="tfem_write_vtu") result(status)
+      import
+      type(c_ptr), value :: model
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int) :: status
+    end function tfem_write_vtu
+
+    ! ==============================================================================================
+    ! Contact results of the last solve or step. Per node, for every pair: forces, pressures and
+    ! tractions, gaps. Per element of the contact mesh B (tfem_get_contact_active ... dissipation;
+    ! pairs weighted by B): element values at each element's apex. Per slave node (pairs under the
+    ! mortar weighting): tfem_get_contact_slave_nodes.
+    ! ==============================================================================================
+
+    !> Writes the report of the last contact solve to `report`.
+    function tfem_get_contact_report(model, report) &
+        bind(C, name="tfem_get_contact_report") result(status)
+      import
+      type(c_ptr), value :: model
+      type(tfem_contact_report), intent(inout) :: report
+      integer(c_int) :: status
+    end function tfem_get_contact_report
 
     !> Copies the force the contact exerts on every node in the last contact solve (fx fy per node,
     !! 2·n_nodes values; force per unit thickness, N/m in SI; zero off the contact interfaces),
@@ -1050,6 +1198,26 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_get_contact_nodal_tractions
 
+    !> Copies the contact pressure of contact pair `pair` (0-based, from `tfem_add_contact_pair` or
+    !! `tfem_add_contact_pairs_auto`) alone at every node in the last contact solve (n_nodes values,
+    !! as `tfem_get_contact_nodal_pressures`; zero off that pair's contact mesh), computed on
+    !! request from that pair's forces over that pair's tributaries: a node where three bodies meet
+    !! reads each face on its own (at a block's corner, the bed's pressure on the bed pair and the
+    !! head joint's on the head pair), where `tfem_get_contact_nodal_pressures` gives their
+    !! tributary-weighted mean. As there, where one side ends inside an edge of the other, the first
+    !! node of the other side past that end reads the other side's pressure near that end. An
+    !! unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT naming it); before a contact solve, or
+    !! after a change (declaring a pair is one), there are no results (TFEM_STATUS_INVALID_STATE).
+    function tfem_get_contact_pair_nodal_pressures(model, pair, out, length) &
+        bind(C, name="tfem_get_contact_pair_nodal_pressures") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: pair
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_pair_nodal_pressures
+
     !> `tfem_get_contact_nodal_tractions` of contact pair `pair` (0-based) alone, read over that
     !! pair's forces and tributaries as `tfem_get_contact_pair_nodal_pressures` reads its pressures
     !! (2·n_nodes values). An unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT naming it).
@@ -1063,40 +1231,95 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_get_contact_pair_nodal_tractions
 
-    !> Chooses how the contact pairs' energy is weighted along their interfaces: `weighting` is a
-    !! `ContactWeightingMode`. 2 automatic, the default: each pair what is right for it — the
-    !! elements of the contact mesh B (the seed's method) where the two sides' nodes match, one
-    !! weighted gap per node of the interface's coarser side where they do not (exact on the contact
-    !! patch test whatever the meshes, converging on curved interfaces where B reads one side only),
-    !! B for a pair with friction or a contact mesh of its own. 0 strip and 1 mortar force one
-    !! weighting on every pair (an expert's override). A change discards the results, like any
-    !! change of the contact pairs. The mortar weighting is frictionless and makes no mesh B:
-    !! forcing it with a pair that has friction or a contact mesh of its own, or giving such a pair
-    !! under it, is refused by that call (TFEM_ERR_ARGUMENT, naming the pair); a solve under it with
-    !! the stick law or the literal inversion test is refused too. The per-element outputs
-    !! (`tfem_get_contact_active`, `tfem_get_contact_pressure`, `tfem_get_contact_elements`, shear,
-    !! friction state, dissipation; `tfem_get_sizes`' contact elements) cover the pairs weighted by
-    !! B, and are refused when no pair is (`tfem_get_contact_mesh` still gives the B the pairs would
-    !! make); the state of the others is per slave node (`tfem_get_contact_slave_nodes`). Nodal
-    !! pressures, gaps and forces, reactions and the report cover every pair, the report's
-    !! `elements` counting elements of B and slave nodes.
-    function tfem_set_contact_weighting(model, weighting) &
-        bind(C, name="tfem_set_contact_weighting") result(status)
+    !> Copies the normal gap at every node in the last contact solve (n_nodes values, model length
+    !! units; zero off the contact interfaces), computed on request: the smallest, over the contact
+    !! elements at the node, of the distance of an element's apex from its interface edge in the
+    !! deformed configuration (linearised). Positive: open; negative: the bodies interpenetrate (by
+    !! O(h²), the penalty of the contact elements).
+    function tfem_get_contact_gaps(model, out, length) &
+        bind(C, name="tfem_get_contact_gaps") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int), value :: weighting
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
       integer(c_int) :: status
-    end function tfem_set_contact_weighting
+    end function tfem_get_contact_gaps
 
-    !> Writes the contact weighting (a `ContactWeightingMode`: 0 strip, 1 mortar, 2 automatic, the
-    !! default) into `*weighting`.
-    function tfem_get_contact_weighting(model, weighting) &
-        bind(C, name="tfem_get_contact_weighting") result(status)
+    !> Copies the active flag (1 active, 0 not) of every contact element of the last contact solve
+    !! (n_contact_elements values, see `tfem_get_sizes`).
+    function tfem_get_contact_active(model, out, length) &
+        bind(C, name="tfem_get_contact_active") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int), intent(inout) :: weighting
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
       integer(c_int) :: status
-    end function tfem_get_contact_weighting
+    end function tfem_get_contact_active
+
+    !> Copies the contact pressure of every contact element (n_contact_elements values): the normal
+    !! stress −n·σ·n in the element (force per unit area, Pa in SI), positive in compression, 0 when
+    !! inactive. It is the traction at the element's apex (the interface point it measures: on
+    !! matching meshes the apex node), times the share of its edge that faces the other side; each
+    !! point is measured by two elements, one with its edge on either side. For the traction at the
+    !! interface nodes, read `tfem_get_contact_nodal_tractions` (on a non-matching interface one
+    !! family's element values read up to twice the traction).
+    function tfem_get_contact_pressure(model, out, length) &
+        bind(C, name="tfem_get_contact_pressure") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_pressure
+
+    !> Copies the nodes of every contact element (3·n_contact_elements indices, in the model's index
+    !! base), oriented so that J > 0 when the gap opens. Refused (TFEM_STATUS_INVALID_STATE) after a
+    !! solve under the mortar weighting, which uses no B.
+    function tfem_get_contact_elements(model, out, length) &
+        bind(C, name="tfem_get_contact_elements") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_elements
+
+    !> Copies the shear traction τ = n·σ·t (Pa in SI; t = (−n_y, n_x), n the element's normal, see
+    !! `tfem_get_contact_mesh`) of every contact element of the last contact solve or step
+    !! (n_contact_elements values): 0 when open, |τ| ≤ μp when sticking, μp when slipping; all 0
+    !! when frictionless. An element value at its apex, as `tfem_get_contact_pressure`; the shear at
+    !! the interface nodes is `tfem_get_contact_nodal_tractions`'.
+    function tfem_get_contact_shear(model, out, length) &
+        bind(C, name="tfem_get_contact_shear") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_shear
+
+    !> Copies the frictional state of every contact element of the last contact solve or step
+    !! (n_contact_elements values): 0 open, 1 stick, 2 slip (a frictionless solve: 2 where active).
+    function tfem_get_contact_friction_state(model, out, length) &
+        bind(C, name="tfem_get_contact_friction_state") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_friction_state
+
+    !> Copies the energy dissipated by slip in the last step (or solve) at every contact element
+    !! (n_contact_elements values, J per unit thickness in SI): ½ τ Δγ_p ≥ 0; all 0 when
+    !! frictionless.
+    function tfem_get_contact_dissipation(model, out, length) &
+        bind(C, name="tfem_get_contact_dissipation") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_contact_dissipation
 
     !> Copies the state of every slave node after a contact solve under the mortar weighting, n =
     !! the report's `elements`, in the order of the pairs: `node` (n values: the slave node, in the
@@ -1119,119 +1342,10 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_get_contact_slave_nodes
 
-    !> Copies the contact pressure of contact pair `pair` (0-based, from `tfem_add_contact_pair` or
-    !! `tfem_add_contact_pairs_auto`) alone at every node in the last contact solve (n_nodes values,
-    !! as `tfem_get_contact_nodal_pressures`; zero off that pair's contact mesh), computed on
-    !! request from that pair's forces over that pair's tributaries: a node where three bodies meet
-    !! reads each face on its own (at a block's corner, the bed's pressure on the bed pair and the
-    !! head joint's on the head pair), where `tfem_get_contact_nodal_pressures` gives their
-    !! tributary-weighted mean. As there, where one side ends inside an edge of the other, the first
-    !! node of the other side past that end reads the other side's pressure near that end. An
-    !! unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT naming it); before a contact solve, or
-    !! after a change (declaring a pair is one), there are no results (TFEM_STATUS_INVALID_STATE).
-    function tfem_get_contact_pair_nodal_pressures(model, pair, out, length) &
-        bind(C, name="tfem_get_contact_pair_nodal_pressures") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: pair
-      real(c_double), intent(inout) :: out(*)
-      integer(c_size_t), value :: length
-      integer(c_int) :: status
-    end function tfem_get_contact_pair_nodal_pressures
-
-    !> Copies the normal gap at every node in the last contact solve (n_nodes values, model length
-    !! units; zero off the contact interfaces), computed on request: the smallest, over the contact
-    !! elements at the node, of the distance of an element's apex from its interface edge in the
-    !! deformed configuration (linearised). Positive: open; negative: the bodies interpenetrate (by
-    !! O(h²), the penalty of the contact elements).
-    function tfem_get_contact_gaps(model, out, length) &
-        bind(C, name="tfem_get_contact_gaps") result(status)
-      import
-      type(c_ptr), value :: model
-      real(c_double), intent(inout) :: out(*)
-      integer(c_size_t), value :: length
-      integer(c_int) :: status
-    end function tfem_get_contact_gaps
-
-    !> Writes the number of elements of the contact mesh B of the declared contact pairs, available
-    !! before any solve (0 without pairs).
-    function tfem_get_contact_mesh_size(model, n_elements) &
-        bind(C, name="tfem_get_contact_mesh_size") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), intent(inout) :: n_elements
-      integer(c_int) :: status
-    end function tfem_get_contact_mesh_size
-
-    !> Copies the nodes of every element of the contact mesh B of the declared contact pairs (3 per
-    !! element, in the model's index base, oriented so that J > 0 when the gap opens), available
-    !! before any solve: the same elements, in the same order, as `tfem_get_contact_elements` gives
-    !! after a contact solve.
-    function tfem_get_contact_mesh(model, out, length) &
-        bind(C, name="tfem_get_contact_mesh") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), intent(inout) :: out(*)
-      integer(c_size_t), value :: length
-      integer(c_int) :: status
-    end function tfem_get_contact_mesh
-
-    !> Copies, for every element of the contact mesh B (see `tfem_get_contact_mesh`), the index of
-    !! its contact pair (0-based, as returned by `tfem_add_contact_pair`, whatever the index base).
-    function tfem_get_contact_element_pairs(model, out, length) &
-        bind(C, name="tfem_get_contact_element_pairs") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), intent(inout) :: out(*)
-      integer(c_size_t), value :: length
-      integer(c_int) :: status
-    end function tfem_get_contact_element_pairs
-
-    !> Copies, for every element of the contact mesh B (see `tfem_get_contact_mesh`), its apex: the
-    !! node (in the model's index base) alone on its side of the interface, whose distance from the
-    !! element's interface edge is the element's gap.
-    function tfem_get_contact_element_apexes(model, out, length) &
-        bind(C, name="tfem_get_contact_element_apexes") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), intent(inout) :: out(*)
-      integer(c_size_t), value :: length
-      integer(c_int) :: status
-    end function tfem_get_contact_element_apexes
-
-    !> Writes the bodies of contact pair `pair` (0-based, as returned by `tfem_add_contact_pair`):
-    !! `body_a` carries the pair's first tag, `body_b` its second. Either pointer may be NULL.
-    function tfem_get_contact_pair_bodies(model, pair, body_a, body_b) &
-        bind(C, name="tfem_get_contact_pair_bodies") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: pair
-      integer(c_int), intent(inout) :: body_a
-      integer(c_int), intent(inout) :: body_b
-      integer(c_int) :: status
-    end function tfem_get_contact_pair_bodies
-
-    !> Sets the number of threads the model's solves run on: 1 <= `threads` <= 1024 gives the model
-    !! a pool of its own (1: no parallelism at all, for a host that runs its own OpenMP or MPI
-    !! threads); 0 (the default) uses the process-wide pool, with as many threads as cores or the
-    !! environment variable RAYON_NUM_THREADS. Results do not depend on it beyond round-off, and are
-    !! kept.
-    function tfem_set_threads(model, threads) &
-        bind(C, name="tfem_set_threads") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: threads
-      integer(c_int) :: status
-    end function tfem_set_threads
-
-    !> Writes the number of threads the model's solves run on (see `tfem_set_threads`).
-    function tfem_get_threads(model, threads) &
-        bind(C, name="tfem_get_threads") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), intent(inout) :: threads
-      integer(c_int) :: status
-    end function tfem_get_threads
+    ! ==============================================================================================
+    ! Load history: steps on one factorisation, revert, and the contact state saved and restored
+    ! (restarts).
+    ! ==============================================================================================
 
     !> One quasi-static load step: the contact problem with the loads and prescribed displacements
     !! as set, scaled by `load_factor`, warm-started from the contact state of the last step (the
@@ -1326,116 +1440,82 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_set_contact_state
 
-    !> Sets Coulomb's friction coefficient μ ≥ 0 of contact pair `pair` (0-based, from
-    !! `tfem_add_contact_pair`): stick while the shear stays within μ times the pressure, slip
-    !! against the slip of the step beyond (docs/method.md §6.15). 0, the default, is frictionless,
-    !! bit for bit. A negative or non-finite μ, or an unknown pair, is refused
-    !! (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load history. Frictional or
-    !! not, the elements of a pair's contact mesh measure every point of the interface along the
-    !! first side's normal there, so that a frictionless interface transmits no tangential traction.
-    function tfem_set_friction(model, pair, mu) &
-        bind(C, name="tfem_set_friction") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: pair
-      real(c_double), value :: mu
-      integer(c_int) :: status
-    end function tfem_set_friction
+    ! ==============================================================================================
+    ! Utilities: the assembled system matrix, and element stiffness matrices for codes that assemble
+    ! their own.
+    ! ==============================================================================================
 
-    !> Changes the value of displacement component `comp` (0 x, 1 y) of `node`, prescribed before by
-    !! `tfem_fix` or `tfem_fix_edges`: the loads of a non-proportional load history, which goes on
-    !! with the same factorisation (the set of prescribed DOFs is unchanged). A node not prescribed
-    !! in that component is refused, naming it.
-    function tfem_set_prescribed(model, node, comp, value) &
-        bind(C, name="tfem_set_prescribed") result(status)
+    !> Sizes of the stiffness matrix of the last solve (see `tfem_get_system_matrix`): `n` unknowns
+    !! and `nnz` stored entries of its upper triangle. Either pointer may be NULL.
+    function tfem_get_system_matrix_size(model, n, nnz) &
+        bind(C, name="tfem_get_system_matrix_size") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int), value :: node
-      integer(c_int), value :: comp
-      real(c_double), value :: value
+      integer(c_int64_t), intent(inout) :: n
+      integer(c_int64_t), intent(inout) :: nnz
       integer(c_int) :: status
-    end function tfem_set_prescribed
+    end function tfem_get_system_matrix_size
 
-    !> Changes the value of displacement component `comp` (0 x, 1 y) on every node of the boundary
-    !! edges tagged `tag`, each prescribed before by `tfem_fix_edges` or `tfem_fix`:
-    !! `tfem_set_prescribed` for a whole tag, the loads of a load history given as `tfem_fix_edges`
-    !! gives them (the factorisation is kept). All or nothing: an unknown tag, a value that is not
-    !! finite or a node not prescribed in that component is refused (TFEM_STATUS_INVALID_ARGUMENT
-    !! naming it) and the model is unchanged.
-    function tfem_set_prescribed_edges(model, tag, comp, value) &
-        bind(C, name="tfem_set_prescribed_edges") result(status)
+    !> Copies the stiffness matrix K of the last solve on its unknowns (the DOFs left after
+    !! Dirichlet elimination), the system K u = f whose solution `tfem_get_displacements` returns;
+    !! for a contact solve it holds the contact elements active at convergence. Upper triangle in
+    !! compressed sparse columns, rows ascending within each column: `col_ptr` (n + 1 values),
+    !! `row_idx` and `values` (nnz values each), indices in the model's index base (`col_ptr[0]` =
+    !! base). `dofs` (n values) gives each unknown's position in the array of
+    !! `tfem_get_displacements`, in the index base (2·node + component for base 0). Every buffer is
+    !! checked before any is written. Like every result it outlives a failed solve (which rebuilds
+    !! it bit for bit) and is discarded by a change of the problem (TFEM_STATUS_INVALID_STATE).
+    function tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length) &
+        bind(C, name="tfem_get_system_matrix") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int), value :: tag
-      integer(c_int), value :: comp
-      real(c_double), value :: value
+      integer(c_int64_t), intent(inout) :: col_ptr(*)
+      integer(c_size_t), value :: col_ptr_length
+      integer(c_int64_t), intent(inout) :: row_idx(*)
+      integer(c_size_t), value :: row_idx_length
+      real(c_double), intent(inout) :: values(*)
+      integer(c_size_t), value :: values_length
+      integer(c_int64_t), intent(inout) :: dofs(*)
+      integer(c_size_t), value :: dofs_length
       integer(c_int) :: status
-    end function tfem_set_prescribed_edges
+    end function tfem_get_system_matrix
 
-    !> Copies the shear traction τ = n·σ·t (Pa in SI; t = (−n_y, n_x), n the element's normal, see
-    !! `tfem_get_contact_mesh`) of every contact element of the last contact solve or step
-    !! (n_contact_elements values): 0 when open, |τ| ≤ μp when sticking, μp when slipping; all 0
-    !! when frictionless. An element value at its apex, as `tfem_get_contact_pressure`; the shear at
-    !! the interface nodes is `tfem_get_contact_nodal_tractions`'.
-    function tfem_get_contact_shear(model, out, length) &
-        bind(C, name="tfem_get_contact_shear") result(status)
+    !> Tempered elasticity stiffness of one P1 triangle with corners `xy` (x1 y1 x2 y2 x3 y3): K =
+    !! B̂ᵀ D B̂ / (2·max(J, jmin)), written row-major into `out` (36 values, DOFs u1 v1 u2 v2 u3
+    !! v3). `jmin` > 0 tempers; `jmin` = 0 is plain FEM (divides by |J|, fails for J = 0). Pure and
+    !! thread-safe; errors go to the thread's `tfem_last_error(NULL, …)`.
+    function tfem_element_stiffness(xy, young, poisson, plane_mode, jmin, out) &
+        bind(C, name="tfem_element_stiffness") result(status)
       import
-      type(c_ptr), value :: model
+      real(c_double), intent(in) :: xy(*)
+      real(c_double), value :: young
+      real(c_double), value :: poisson
+      integer(c_int), value :: plane_mode
+      real(c_double), value :: jmin
       real(c_double), intent(inout) :: out(*)
-      integer(c_size_t), value :: length
       integer(c_int) :: status
-    end function tfem_get_contact_shear
+    end function tfem_element_stiffness
 
-    !> Copies the frictional state of every contact element of the last contact solve or step
-    !! (n_contact_elements values): 0 open, 1 stick, 2 slip (a frictionless solve: 2 where active).
-    function tfem_get_contact_friction_state(model, out, length) &
-        bind(C, name="tfem_get_contact_friction_state") result(status)
+    !> Tempered Laplacian stiffness of one P1 triangle: K_ij = κ g_i·g_j / (2·max(J, jmin)),
+    !! row-major into `out` (9 values). `jmin` as in `tfem_element_stiffness`. Pure and thread-safe.
+    function tfem_laplacian_stiffness(xy, kappa, jmin, out) &
+        bind(C, name="tfem_laplacian_stiffness") result(status)
       import
-      type(c_ptr), value :: model
-      integer(c_int), intent(inout) :: out(*)
-      integer(c_size_t), value :: length
-      integer(c_int) :: status
-    end function tfem_get_contact_friction_state
-
-    !> Copies the energy dissipated by slip in the last step (or solve) at every contact element
-    !! (n_contact_elements values, J per unit thickness in SI): ½ τ Δγ_p ≥ 0; all 0 when
-    !! frictionless.
-    function tfem_get_contact_dissipation(model, out, length) &
-        bind(C, name="tfem_get_contact_dissipation") result(status)
-      import
-      type(c_ptr), value :: model
+      real(c_double), intent(in) :: xy(*)
+      real(c_double), value :: kappa
+      real(c_double), value :: jmin
       real(c_double), intent(inout) :: out(*)
-      integer(c_size_t), value :: length
       integer(c_int) :: status
-    end function tfem_get_contact_dissipation
+    end function tfem_laplacian_stiffness
 
-    !> Declares a contact pair for every two boundary tags of different bodies whose edges face each
-    !! other within `tolerance` (model length units: some edge of the one within `tolerance` of some
-    !! edge of the other, outward normals opposed within 30°, each in front of the other,
-    !! overlapping along the interface, no third body between them; a gap of exactly `tolerance`
-    !! pairs; docs/method.md §6.16). `tags` (`n_tags` values) restricts the search to those tags;
-    !! with `n_tags` = 0 every tag that can be a contact side is considered, and `tags` may be NULL.
-    !! Pairs already declared are skipped, tags of one body never pair, and an interface found again
-    !! under tags that share its edges with a pair kept (a "whole boundary" group beside the faces)
-    !! is skipped: the pair of tags with the fewest edges is kept (to pair an interface under other
-    !! tags, declare that pair by hand instead). What is left out without an error — with `n_tags` =
-    !! 0, a tag whose edges bound several bodies; an interface found again under other tags — is
-    !! named in a warning (`tfem_warning_count`, `tfem_get_warning`). The pairs added get
-    !! consecutive indices: writes the first to `first` (may be NULL) and their number, 0 when
-    !! nothing faces within the tolerance, to `count` (may be NULL). A negative or non-finite
-    !! tolerance, an unknown tag or an interface whose contact mesh cannot be built is refused,
-    !! naming it, and nothing is added.
-    function tfem_add_contact_pairs_auto(model, n_tags, tags, tolerance, first, count) &
-        bind(C, name="tfem_add_contact_pairs_auto") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: n_tags
-      integer(c_int), intent(in) :: tags(*)
-      real(c_double), value :: tolerance
-      integer(c_int), intent(inout) :: first
-      integer(c_int), intent(inout) :: count
-      integer(c_int) :: status
-    end function tfem_add_contact_pairs_auto
+    ! ==============================================================================================
+    ! Contact for host codes (tfem_contact_*): a contact context for a code that keeps its own
+    ! elements and solver. It takes the host's nodes, displacements and contact sides, and gives
+    ! back the contact's stiffness and forces to add to the host's system, and the contact state per
+    ! element of B (tfem_contact_get_active, tfem_contact_pressures; not the model's
+    ! tfem_get_contact_*).
+    ! ==============================================================================================
 
     !> Creates a contact context for a host code that keeps its own elements, assembly, solver and
     !! Newton loop: node numbers and equation numbers in `index_base` (0 for C, 1 for Fortran).
@@ -1801,27 +1881,27 @@ end module tfem_c
 ! interfaces" above); not for direct use.
 module tfem_specifics
   use, intrinsic :: iso_c_binding
-  use tfem_c, only: tfem_solve_info, tfem_contact_options, tfem_contact_report, tfem_last_error, &
-        tfem_last_error_length, tfem_get_warning, tfem_get_mesh_nodes, tfem_get_displacements, &
+  use tfem_c, only: tfem_contact_options, tfem_solve_info, tfem_contact_report, tfem_last_error, &
+        tfem_last_error_length, tfem_get_warning, tfem_get_mesh_nodes, tfem_get_contact_mesh, &
+        tfem_get_contact_element_pairs, tfem_get_contact_element_apexes, tfem_get_displacements, &
         tfem_get_element_strains, tfem_get_element_stresses, tfem_get_element_jacobians, &
-        tfem_get_reactions, tfem_get_system_matrix, tfem_get_contact_active, &
-        tfem_get_contact_pressure, tfem_get_contact_elements, tfem_get_contact_forces, &
-        tfem_get_contact_nodal_pressures, tfem_get_contact_nodal_tractions, &
-        tfem_get_contact_pair_nodal_tractions, tfem_get_contact_pair_nodal_pressures, &
-        tfem_get_contact_gaps, tfem_get_contact_mesh, tfem_get_contact_element_pairs, &
-        tfem_get_contact_element_apexes, tfem_get_contact_state, tfem_set_contact_state, &
-        tfem_get_contact_shear, tfem_get_contact_friction_state, tfem_get_contact_dissipation, &
-        tfem_contact_last_error, tfem_contact_last_error_length, tfem_contact_nodes, &
-        tfem_contact_pattern, tfem_contact_gather, tfem_contact_scatter_add, tfem_contact_get_active, &
-        tfem_contact_set_active, tfem_contact_gaps, tfem_contact_pressures, tfem_contact_elements, &
-        tfem_contact_element_equations, tfem_contact_element_blocks
+        tfem_get_reactions, tfem_get_contact_forces, tfem_get_contact_nodal_pressures, &
+        tfem_get_contact_nodal_tractions, tfem_get_contact_pair_nodal_pressures, &
+        tfem_get_contact_pair_nodal_tractions, tfem_get_contact_gaps, tfem_get_contact_active, &
+        tfem_get_contact_pressure, tfem_get_contact_elements, tfem_get_contact_shear, &
+        tfem_get_contact_friction_state, tfem_get_contact_dissipation, tfem_get_contact_state, &
+        tfem_set_contact_state, tfem_get_system_matrix, tfem_contact_last_error, &
+        tfem_contact_last_error_length, tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, &
+        tfem_contact_scatter_add, tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, &
+        tfem_contact_pressures, tfem_contact_elements, tfem_contact_element_equations, &
+        tfem_contact_element_blocks
   implicit none
   private
   public :: tfem_length_kind
   public :: tfem_last_error_i, tfem_last_error_str, tfem_last_error_str_i, tfem_last_error_no_model
   public :: tfem_last_error_no_model_i, tfem_last_error_no_model_str, tfem_last_error_no_model_str_i
   public :: tfem_last_error_length_no_model, tfem_get_warning_i, tfem_get_warning_str
-  public :: tfem_get_warning_str_i, tfem_solve_opt, tfem_get_sizes_opt, tfem_get_mesh_nodes_r2
+  public :: tfem_get_warning_str_i, tfem_get_sizes_opt, tfem_get_mesh_nodes_r2
   public :: tfem_get_mesh_nodes_i, tfem_get_mesh_nodes_i_r2, tfem_get_mesh_triangles_opt
   public :: tfem_get_mesh_triangles_opt_r21, tfem_get_mesh_triangles_opt_r12
   public :: tfem_get_mesh_triangles_opt_r22, tfem_get_mesh_triangles_opt_i
@@ -1830,12 +1910,55 @@ module tfem_specifics
   public :: tfem_get_boundary_edges_opt_r21, tfem_get_boundary_edges_opt_r12
   public :: tfem_get_boundary_edges_opt_r22, tfem_get_boundary_edges_opt_i
   public :: tfem_get_boundary_edges_opt_i_r21, tfem_get_boundary_edges_opt_i_r12
-  public :: tfem_get_boundary_edges_opt_i_r22, tfem_get_displacements_r2, tfem_get_displacements_i
-  public :: tfem_get_displacements_i_r2, tfem_get_element_strains_r2, tfem_get_element_strains_i
-  public :: tfem_get_element_strains_i_r2, tfem_get_element_stresses_r2, tfem_get_element_stresses_i
+  public :: tfem_get_boundary_edges_opt_i_r22, tfem_add_contact_pair_opt
+  public :: tfem_add_contact_pair_with_mesh_opt, tfem_add_contact_pair_with_mesh_opt_r2
+  public :: tfem_add_contact_pairs_auto_opt, tfem_add_contact_pairs_auto_opt_r2
+  public :: tfem_get_contact_mesh_r2, tfem_get_contact_mesh_i, tfem_get_contact_mesh_i_r2
+  public :: tfem_get_contact_element_pairs_r2, tfem_get_contact_element_pairs_i
+  public :: tfem_get_contact_element_pairs_i_r2, tfem_get_contact_element_apexes_r2
+  public :: tfem_get_contact_element_apexes_i, tfem_get_contact_element_apexes_i_r2
+  public :: tfem_get_contact_pair_bodies_opt, tfem_solve_opt, tfem_solve_contact_opt
+  public :: tfem_get_displacements_r2, tfem_get_displacements_i, tfem_get_displacements_i_r2
+  public :: tfem_get_element_strains_r2, tfem_get_element_strains_i, tfem_get_element_strains_i_r2
+  public :: tfem_get_element_stresses_r2, tfem_get_element_stresses_i
   public :: tfem_get_element_stresses_i_r2, tfem_get_element_jacobians_r2
   public :: tfem_get_element_jacobians_i, tfem_get_element_jacobians_i_r2, tfem_get_reactions_r2
-  public :: tfem_get_reactions_i, tfem_get_reactions_i_r2, tfem_get_system_matrix_size_opt
+  public :: tfem_get_reactions_i, tfem_get_reactions_i_r2, tfem_get_contact_forces_r2
+  public :: tfem_get_contact_forces_i, tfem_get_contact_forces_i_r2
+  public :: tfem_get_contact_nodal_pressures_r2, tfem_get_contact_nodal_pressures_i
+  public :: tfem_get_contact_nodal_pressures_i_r2, tfem_get_contact_nodal_tractions_r2
+  public :: tfem_get_contact_nodal_tractions_i, tfem_get_contact_nodal_tractions_i_r2
+  public :: tfem_get_contact_pair_nodal_pressures_r2, tfem_get_contact_pair_nodal_pressures_i
+  public :: tfem_get_contact_pair_nodal_pressures_i_r2, tfem_get_contact_pair_nodal_tractions_r2
+  public :: tfem_get_contact_pair_nodal_tractions_i, tfem_get_contact_pair_nodal_tractions_i_r2
+  public :: tfem_get_contact_gaps_r2, tfem_get_contact_gaps_i, tfem_get_contact_gaps_i_r2
+  public :: tfem_get_contact_active_r2, tfem_get_contact_active_i, tfem_get_contact_active_i_r2
+  public :: tfem_get_contact_pressure_r2, tfem_get_contact_pressure_i
+  public :: tfem_get_contact_pressure_i_r2, tfem_get_contact_elements_r2
+  public :: tfem_get_contact_elements_i, tfem_get_contact_elements_i_r2, tfem_get_contact_shear_r2
+  public :: tfem_get_contact_shear_i, tfem_get_contact_shear_i_r2
+  public :: tfem_get_contact_friction_state_r2, tfem_get_contact_friction_state_i
+  public :: tfem_get_contact_friction_state_i_r2, tfem_get_contact_dissipation_r2
+  public :: tfem_get_contact_dissipation_i, tfem_get_contact_dissipation_i_r2
+  public :: tfem_get_contact_slave_nodes_opt, tfem_get_contact_slave_nodes_opt_r2111
+  public :: tfem_get_contact_slave_nodes_opt_r1211, tfem_get_contact_slave_nodes_opt_r2211
+  public :: tfem_get_contact_slave_nodes_opt_r1121, tfem_get_contact_slave_nodes_opt_r2121
+  public :: tfem_get_contact_slave_nodes_opt_r1221, tfem_get_contact_slave_nodes_opt_r2221
+  public :: tfem_get_contact_slave_nodes_opt_r1112, tfem_get_contact_slave_nodes_opt_r2112
+  public :: tfem_get_contact_slave_nodes_opt_r1212, tfem_get_contact_slave_nodes_opt_r2212
+  public :: tfem_get_contact_slave_nodes_opt_r1122, tfem_get_contact_slave_nodes_opt_r2122
+  public :: tfem_get_contact_slave_nodes_opt_r1222, tfem_get_contact_slave_nodes_opt_r2222
+  public :: tfem_get_contact_slave_nodes_opt_i, tfem_get_contact_slave_nodes_opt_i_r2111
+  public :: tfem_get_contact_slave_nodes_opt_i_r1211, tfem_get_contact_slave_nodes_opt_i_r2211
+  public :: tfem_get_contact_slave_nodes_opt_i_r1121, tfem_get_contact_slave_nodes_opt_i_r2121
+  public :: tfem_get_contact_slave_nodes_opt_i_r1221, tfem_get_contact_slave_nodes_opt_i_r2221
+  public :: tfem_get_contact_slave_nodes_opt_i_r1112, tfem_get_contact_slave_nodes_opt_i_r2112
+  public :: tfem_get_contact_slave_nodes_opt_i_r1212, tfem_get_contact_slave_nodes_opt_i_r2212
+  public :: tfem_get_contact_slave_nodes_opt_i_r1122, tfem_get_contact_slave_nodes_opt_i_r2122
+  public :: tfem_get_contact_slave_nodes_opt_i_r1222, tfem_get_contact_slave_nodes_opt_i_r2222
+  public :: tfem_step_opt, tfem_get_contact_state_r2, tfem_get_contact_state_i
+  public :: tfem_get_contact_state_i_r2, tfem_set_contact_state_r2, tfem_set_contact_state_i
+  public :: tfem_set_contact_state_i_r2, tfem_get_system_matrix_size_opt
   public :: tfem_get_system_matrix_r2111, tfem_get_system_matrix_r1211, tfem_get_system_matrix_r2211
   public :: tfem_get_system_matrix_r1121, tfem_get_system_matrix_r2121, tfem_get_system_matrix_r1221
   public :: tfem_get_system_matrix_r2221, tfem_get_system_matrix_r1112, tfem_get_system_matrix_r2112
@@ -1848,80 +1971,38 @@ module tfem_specifics
   public :: tfem_get_system_matrix_i_r2112, tfem_get_system_matrix_i_r1212
   public :: tfem_get_system_matrix_i_r2212, tfem_get_system_matrix_i_r1122
   public :: tfem_get_system_matrix_i_r2122, tfem_get_system_matrix_i_r1222
-  public :: tfem_get_system_matrix_i_r2222, tfem_add_contact_pair_opt
-  public :: tfem_add_contact_pair_with_mesh_opt, tfem_add_contact_pair_with_mesh_opt_r2
-  public :: tfem_solve_contact_opt, tfem_get_contact_active_r2, tfem_get_contact_active_i
-  public :: tfem_get_contact_active_i_r2, tfem_get_contact_pressure_r2, tfem_get_contact_pressure_i
-  public :: tfem_get_contact_pressure_i_r2, tfem_get_contact_elements_r2
-  public :: tfem_get_contact_elements_i, tfem_get_contact_elements_i_r2, tfem_get_contact_forces_r2
-  public :: tfem_get_contact_forces_i, tfem_get_contact_forces_i_r2
-  public :: tfem_get_contact_nodal_pressures_r2, tfem_get_contact_nodal_pressures_i
-  public :: tfem_get_contact_nodal_pressures_i_r2, tfem_get_contact_nodal_tractions_r2
-  public :: tfem_get_contact_nodal_tractions_i, tfem_get_contact_nodal_tractions_i_r2
-  public :: tfem_get_contact_pair_nodal_tractions_r2, tfem_get_contact_pair_nodal_tractions_i
-  public :: tfem_get_contact_pair_nodal_tractions_i_r2, tfem_get_contact_slave_nodes_opt
-  public :: tfem_get_contact_slave_nodes_opt_r2111, tfem_get_contact_slave_nodes_opt_r1211
-  public :: tfem_get_contact_slave_nodes_opt_r2211, tfem_get_contact_slave_nodes_opt_r1121
-  public :: tfem_get_contact_slave_nodes_opt_r2121, tfem_get_contact_slave_nodes_opt_r1221
-  public :: tfem_get_contact_slave_nodes_opt_r2221, tfem_get_contact_slave_nodes_opt_r1112
-  public :: tfem_get_contact_slave_nodes_opt_r2112, tfem_get_contact_slave_nodes_opt_r1212
-  public :: tfem_get_contact_slave_nodes_opt_r2212, tfem_get_contact_slave_nodes_opt_r1122
-  public :: tfem_get_contact_slave_nodes_opt_r2122, tfem_get_contact_slave_nodes_opt_r1222
-  public :: tfem_get_contact_slave_nodes_opt_r2222, tfem_get_contact_slave_nodes_opt_i
-  public :: tfem_get_contact_slave_nodes_opt_i_r2111, tfem_get_contact_slave_nodes_opt_i_r1211
-  public :: tfem_get_contact_slave_nodes_opt_i_r2211, tfem_get_contact_slave_nodes_opt_i_r1121
-  public :: tfem_get_contact_slave_nodes_opt_i_r2121, tfem_get_contact_slave_nodes_opt_i_r1221
-  public :: tfem_get_contact_slave_nodes_opt_i_r2221, tfem_get_contact_slave_nodes_opt_i_r1112
-  public :: tfem_get_contact_slave_nodes_opt_i_r2112, tfem_get_contact_slave_nodes_opt_i_r1212
-  public :: tfem_get_contact_slave_nodes_opt_i_r2212, tfem_get_contact_slave_nodes_opt_i_r1122
-  public :: tfem_get_contact_slave_nodes_opt_i_r2122, tfem_get_contact_slave_nodes_opt_i_r1222
-  public :: tfem_get_contact_slave_nodes_opt_i_r2222, tfem_get_contact_pair_nodal_pressures_r2
-  public :: tfem_get_contact_pair_nodal_pressures_i, tfem_get_contact_pair_nodal_pressures_i_r2
-  public :: tfem_get_contact_gaps_r2, tfem_get_contact_gaps_i, tfem_get_contact_gaps_i_r2
-  public :: tfem_get_contact_mesh_r2, tfem_get_contact_mesh_i, tfem_get_contact_mesh_i_r2
-  public :: tfem_get_contact_element_pairs_r2, tfem_get_contact_element_pairs_i
-  public :: tfem_get_contact_element_pairs_i_r2, tfem_get_contact_element_apexes_r2
-  public :: tfem_get_contact_element_apexes_i, tfem_get_contact_element_apexes_i_r2
-  public :: tfem_get_contact_pair_bodies_opt, tfem_step_opt, tfem_get_contact_state_r2
-  public :: tfem_get_contact_state_i, tfem_get_contact_state_i_r2, tfem_set_contact_state_r2
-  public :: tfem_set_contact_state_i, tfem_set_contact_state_i_r2, tfem_get_contact_shear_r2
-  public :: tfem_get_contact_shear_i, tfem_get_contact_shear_i_r2
-  public :: tfem_get_contact_friction_state_r2, tfem_get_contact_friction_state_i
-  public :: tfem_get_contact_friction_state_i_r2, tfem_get_contact_dissipation_r2
-  public :: tfem_get_contact_dissipation_i, tfem_get_contact_dissipation_i_r2
-  public :: tfem_add_contact_pairs_auto_opt, tfem_add_contact_pairs_auto_opt_r2
-  public :: tfem_contact_last_error_i, tfem_contact_last_error_str, tfem_contact_last_error_str_i
-  public :: tfem_contact_last_error_length_no_context, tfem_contact_add_side_opt
-  public :: tfem_contact_add_side_opt_r2111, tfem_contact_add_side_opt_r1211
-  public :: tfem_contact_add_side_opt_r2211, tfem_contact_add_side_opt_r1121
-  public :: tfem_contact_add_side_opt_r2121, tfem_contact_add_side_opt_r1221
-  public :: tfem_contact_add_side_opt_r2221, tfem_contact_add_side_opt_r1112
-  public :: tfem_contact_add_side_opt_r2112, tfem_contact_add_side_opt_r1212
-  public :: tfem_contact_add_side_opt_r2212, tfem_contact_add_side_opt_r1122
-  public :: tfem_contact_add_side_opt_r2122, tfem_contact_add_side_opt_r1222
-  public :: tfem_contact_add_side_opt_r2222, tfem_contact_add_pair_opt
-  public :: tfem_contact_add_pair_with_mesh_opt, tfem_contact_add_pair_with_mesh_opt_r2
-  public :: tfem_contact_sizes_opt, tfem_contact_nodes_r2, tfem_contact_nodes_i
-  public :: tfem_contact_nodes_i_r2, tfem_contact_pattern_r21, tfem_contact_pattern_r12
-  public :: tfem_contact_pattern_r22, tfem_contact_pattern_i, tfem_contact_pattern_i_r21
-  public :: tfem_contact_pattern_i_r12, tfem_contact_pattern_i_r22, tfem_contact_evaluate_opt
-  public :: tfem_contact_evaluate_opt_r211, tfem_contact_evaluate_opt_r121
-  public :: tfem_contact_evaluate_opt_r221, tfem_contact_evaluate_opt_r112
-  public :: tfem_contact_evaluate_opt_r212, tfem_contact_evaluate_opt_r122
-  public :: tfem_contact_evaluate_opt_r222, tfem_contact_evaluate_opt_i
-  public :: tfem_contact_evaluate_opt_i_r211, tfem_contact_evaluate_opt_i_r121
-  public :: tfem_contact_evaluate_opt_i_r221, tfem_contact_evaluate_opt_i_r112
-  public :: tfem_contact_evaluate_opt_i_r212, tfem_contact_evaluate_opt_i_r122
-  public :: tfem_contact_evaluate_opt_i_r222, tfem_contact_gather_r21, tfem_contact_gather_r12
-  public :: tfem_contact_gather_r22, tfem_contact_gather_i, tfem_contact_gather_i_r21
-  public :: tfem_contact_gather_i_r12, tfem_contact_gather_i_r22, tfem_contact_scatter_add_r21
-  public :: tfem_contact_scatter_add_r12, tfem_contact_scatter_add_r22, tfem_contact_scatter_add_i
-  public :: tfem_contact_scatter_add_i_r21, tfem_contact_scatter_add_i_r12
-  public :: tfem_contact_scatter_add_i_r22, tfem_contact_update_opt, tfem_contact_update_opt_r2
-  public :: tfem_contact_update_opt_i, tfem_contact_update_opt_i_r2, tfem_contact_get_active_r2
-  public :: tfem_contact_get_active_i, tfem_contact_get_active_i_r2, tfem_contact_set_active_r2
-  public :: tfem_contact_set_active_i, tfem_contact_set_active_i_r2, tfem_contact_gaps_r21
-  public :: tfem_contact_gaps_r12, tfem_contact_gaps_r22, tfem_contact_gaps_i
+  public :: tfem_get_system_matrix_i_r2222, tfem_contact_last_error_i, tfem_contact_last_error_str
+  public :: tfem_contact_last_error_str_i, tfem_contact_last_error_length_no_context
+  public :: tfem_contact_add_side_opt, tfem_contact_add_side_opt_r2111
+  public :: tfem_contact_add_side_opt_r1211, tfem_contact_add_side_opt_r2211
+  public :: tfem_contact_add_side_opt_r1121, tfem_contact_add_side_opt_r2121
+  public :: tfem_contact_add_side_opt_r1221, tfem_contact_add_side_opt_r2221
+  public :: tfem_contact_add_side_opt_r1112, tfem_contact_add_side_opt_r2112
+  public :: tfem_contact_add_side_opt_r1212, tfem_contact_add_side_opt_r2212
+  public :: tfem_contact_add_side_opt_r1122, tfem_contact_add_side_opt_r2122
+  public :: tfem_contact_add_side_opt_r1222, tfem_contact_add_side_opt_r2222
+  public :: tfem_contact_add_pair_opt, tfem_contact_add_pair_with_mesh_opt
+  public :: tfem_contact_add_pair_with_mesh_opt_r2, tfem_contact_sizes_opt, tfem_contact_nodes_r2
+  public :: tfem_contact_nodes_i, tfem_contact_nodes_i_r2, tfem_contact_pattern_r21
+  public :: tfem_contact_pattern_r12, tfem_contact_pattern_r22, tfem_contact_pattern_i
+  public :: tfem_contact_pattern_i_r21, tfem_contact_pattern_i_r12, tfem_contact_pattern_i_r22
+  public :: tfem_contact_evaluate_opt, tfem_contact_evaluate_opt_r211
+  public :: tfem_contact_evaluate_opt_r121, tfem_contact_evaluate_opt_r221
+  public :: tfem_contact_evaluate_opt_r112, tfem_contact_evaluate_opt_r212
+  public :: tfem_contact_evaluate_opt_r122, tfem_contact_evaluate_opt_r222
+  public :: tfem_contact_evaluate_opt_i, tfem_contact_evaluate_opt_i_r211
+  public :: tfem_contact_evaluate_opt_i_r121, tfem_contact_evaluate_opt_i_r221
+  public :: tfem_contact_evaluate_opt_i_r112, tfem_contact_evaluate_opt_i_r212
+  public :: tfem_contact_evaluate_opt_i_r122, tfem_contact_evaluate_opt_i_r222
+  public :: tfem_contact_gather_r21, tfem_contact_gather_r12, tfem_contact_gather_r22
+  public :: tfem_contact_gather_i, tfem_contact_gather_i_r21, tfem_contact_gather_i_r12
+  public :: tfem_contact_gather_i_r22, tfem_contact_scatter_add_r21, tfem_contact_scatter_add_r12
+  public :: tfem_contact_scatter_add_r22, tfem_contact_scatter_add_i, tfem_contact_scatter_add_i_r21
+  public :: tfem_contact_scatter_add_i_r12, tfem_contact_scatter_add_i_r22, tfem_contact_update_opt
+  public :: tfem_contact_update_opt_r2, tfem_contact_update_opt_i, tfem_contact_update_opt_i_r2
+  public :: tfem_contact_get_active_r2, tfem_contact_get_active_i, tfem_contact_get_active_i_r2
+  public :: tfem_contact_set_active_r2, tfem_contact_set_active_i, tfem_contact_set_active_i_r2
+  public :: tfem_contact_gaps_r21, tfem_contact_gaps_r12, tfem_contact_gaps_r22, tfem_contact_gaps_i
   public :: tfem_contact_gaps_i_r21, tfem_contact_gaps_i_r12, tfem_contact_gaps_i_r22
   public :: tfem_contact_pressures_r21, tfem_contact_pressures_r12, tfem_contact_pressures_r22
   public :: tfem_contact_pressures_i, tfem_contact_pressures_i_r21, tfem_contact_pressures_i_r12
@@ -1941,14 +2022,6 @@ module tfem_specifics
   integer(c_int), target, save :: tfem_empty_c_int(1)
 
   interface
-    function tfem_solve_by_address(model, info) &
-        bind(C, name="tfem_solve") result(status)
-      import
-      type(c_ptr), value :: model
-      type(c_ptr), value :: info
-      integer(c_int) :: status
-    end function tfem_solve_by_address
-
     function tfem_get_sizes_by_address(model, n_nodes, n_triangles, n_contact_elements) &
         bind(C, name="tfem_get_sizes") result(status)
       import
@@ -1981,15 +2054,6 @@ module tfem_specifics
       integer(c_int) :: status
     end function tfem_get_boundary_edges_by_address
 
-    function tfem_get_system_matrix_size_by_address(model, n, nnz) &
-        bind(C, name="tfem_get_system_matrix_size") result(status)
-      import
-      type(c_ptr), value :: model
-      type(c_ptr), value :: n
-      type(c_ptr), value :: nnz
-      integer(c_int) :: status
-    end function tfem_get_system_matrix_size_by_address
-
     function tfem_add_contact_pair_by_address(model, tag_a, tag_b, pair) &
         bind(C, name="tfem_add_contact_pair") result(status)
       import
@@ -2014,6 +2078,36 @@ module tfem_specifics
       integer(c_int) :: status
     end function tfem_add_contact_pair_with_mesh_by_address
 
+    function tfem_add_contact_pairs_auto_by_address(model, n_tags, tags, tolerance, first, count) &
+        bind(C, name="tfem_add_contact_pairs_auto") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: n_tags
+      type(c_ptr), value :: tags
+      real(c_double), value :: tolerance
+      type(c_ptr), value :: first
+      type(c_ptr), value :: count
+      integer(c_int) :: status
+    end function tfem_add_contact_pairs_auto_by_address
+
+    function tfem_get_contact_pair_bodies_by_address(model, pair, body_a, body_b) &
+        bind(C, name="tfem_get_contact_pair_bodies") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: pair
+      type(c_ptr), value :: body_a
+      type(c_ptr), value :: body_b
+      integer(c_int) :: status
+    end function tfem_get_contact_pair_bodies_by_address
+
+    function tfem_solve_by_address(model, info) &
+        bind(C, name="tfem_solve") result(status)
+      import
+      type(c_ptr), value :: model
+      type(c_ptr), value :: info
+      integer(c_int) :: status
+    end function tfem_solve_by_address
+
     function tfem_solve_contact_by_address(model, options, report) &
         bind(C, name="tfem_solve_contact") result(status)
       import
@@ -2035,16 +2129,6 @@ module tfem_specifics
       integer(c_int) :: status
     end function tfem_get_contact_slave_nodes_by_address
 
-    function tfem_get_contact_pair_bodies_by_address(model, pair, body_a, body_b) &
-        bind(C, name="tfem_get_contact_pair_bodies") result(status)
-      import
-      type(c_ptr), value :: model
-      integer(c_int), value :: pair
-      type(c_ptr), value :: body_a
-      type(c_ptr), value :: body_b
-      integer(c_int) :: status
-    end function tfem_get_contact_pair_bodies_by_address
-
     function tfem_step_by_address(model, load_factor, options, report) &
         bind(C, name="tfem_step") result(status)
       import
@@ -2055,17 +2139,14 @@ module tfem_specifics
       integer(c_int) :: status
     end function tfem_step_by_address
 
-    function tfem_add_contact_pairs_auto_by_address(model, n_tags, tags, tolerance, first, count) &
-        bind(C, name="tfem_add_contact_pairs_auto") result(status)
+    function tfem_get_system_matrix_size_by_address(model, n, nnz) &
+        bind(C, name="tfem_get_system_matrix_size") result(status)
       import
       type(c_ptr), value :: model
-      integer(c_int), value :: n_tags
-      type(c_ptr), value :: tags
-      real(c_double), value :: tolerance
-      type(c_ptr), value :: first
-      type(c_ptr), value :: count
+      type(c_ptr), value :: n
+      type(c_ptr), value :: nnz
       integer(c_int) :: status
-    end function tfem_add_contact_pairs_auto_by_address
+    end function tfem_get_system_matrix_size_by_address
 
     function tfem_contact_add_side_by_address(context, tag, body, young, poisson, plane_mode, n_nodes, &
         nodes, xy, equations, n_edges, edges, side) &
@@ -2268,16 +2349,6 @@ contains
     integer(c_int) :: status
     status = tfem_get_warning(model, index, buffer, tfem_to_size_t(length))
   end function tfem_get_warning_str_i
-
-  function tfem_solve_opt(model, info) result(status)
-    type(c_ptr), value :: model
-    type(tfem_solve_info), intent(inout), optional, target :: info
-    integer(c_int) :: status
-    type(c_ptr) :: info_address
-    info_address = c_null_ptr
-    if (present(info)) info_address = c_loc(info)
-    status = tfem_solve_by_address(model, info_address)
-  end function tfem_solve_opt
 
   function tfem_get_sizes_opt(model, n_nodes, n_triangles, n_contact_elements) result(status)
     type(c_ptr), value :: model
@@ -2533,6 +2604,211 @@ contains
         tfem_to_size_t(tags_length))
   end function tfem_get_boundary_edges_opt_i_r22
 
+  function tfem_add_contact_pair_opt(model, tag_a, tag_b, pair) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: tag_a
+    integer(c_int), value :: tag_b
+    integer(c_int), intent(inout), optional, target :: pair
+    integer(c_int) :: status
+    type(c_ptr) :: pair_address
+    pair_address = c_null_ptr
+    if (present(pair)) pair_address = c_loc(pair)
+    status = tfem_add_contact_pair_by_address(model, tag_a, tag_b, pair_address)
+  end function tfem_add_contact_pair_opt
+
+  function tfem_add_contact_pair_with_mesh_opt(model, tag_a, tag_b, n_triangles, &
+        connectivity, pair, flipped) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: tag_a
+    integer(c_int), value :: tag_b
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: connectivity(*)
+    integer(c_int), intent(inout), optional, target :: pair
+    integer(c_int), intent(inout), optional, target :: flipped
+    integer(c_int) :: status
+    type(c_ptr) :: pair_address
+    type(c_ptr) :: flipped_address
+    pair_address = c_null_ptr
+    if (present(pair)) pair_address = c_loc(pair)
+    flipped_address = c_null_ptr
+    if (present(flipped)) flipped_address = c_loc(flipped)
+    status = tfem_add_contact_pair_with_mesh_by_address(model, tag_a, tag_b, n_triangles, &
+        connectivity, pair_address, flipped_address)
+  end function tfem_add_contact_pair_with_mesh_opt
+
+  function tfem_add_contact_pair_with_mesh_opt_r2(model, tag_a, tag_b, n_triangles, &
+        connectivity, pair, flipped) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: tag_a
+    integer(c_int), value :: tag_b
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: connectivity(1, *)
+    integer(c_int), intent(inout), optional, target :: pair
+    integer(c_int), intent(inout), optional, target :: flipped
+    integer(c_int) :: status
+    type(c_ptr) :: pair_address
+    type(c_ptr) :: flipped_address
+    pair_address = c_null_ptr
+    if (present(pair)) pair_address = c_loc(pair)
+    flipped_address = c_null_ptr
+    if (present(flipped)) flipped_address = c_loc(flipped)
+    status = tfem_add_contact_pair_with_mesh_by_address(model, tag_a, tag_b, n_triangles, &
+        connectivity, pair_address, flipped_address)
+  end function tfem_add_contact_pair_with_mesh_opt_r2
+
+  function tfem_add_contact_pairs_auto_opt(model, n_tags, tags, tolerance, first, &
+        count) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: n_tags
+    integer(c_int), intent(in), optional, target :: tags(*)
+    real(c_double), value :: tolerance
+    integer(c_int), intent(inout), optional, target :: first
+    integer(c_int), intent(inout), optional, target :: count
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    type(c_ptr) :: first_address
+    type(c_ptr) :: count_address
+    tags_address = tfem_address_c_int(tags, n_tags > 0)
+    first_address = c_null_ptr
+    if (present(first)) first_address = c_loc(first)
+    count_address = c_null_ptr
+    if (present(count)) count_address = c_loc(count)
+    status = tfem_add_contact_pairs_auto_by_address(model, n_tags, tags_address, tolerance, &
+        first_address, count_address)
+  end function tfem_add_contact_pairs_auto_opt
+
+  function tfem_add_contact_pairs_auto_opt_r2(model, n_tags, tags, tolerance, first, &
+        count) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: n_tags
+    integer(c_int), intent(in), target :: tags(1, *)
+    real(c_double), value :: tolerance
+    integer(c_int), intent(inout), optional, target :: first
+    integer(c_int), intent(inout), optional, target :: count
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    type(c_ptr) :: first_address
+    type(c_ptr) :: count_address
+    tags_address = tfem_address_c_int(tags, n_tags > 0)
+    first_address = c_null_ptr
+    if (present(first)) first_address = c_loc(first)
+    count_address = c_null_ptr
+    if (present(count)) count_address = c_loc(count)
+    status = tfem_add_contact_pairs_auto_by_address(model, n_tags, tags_address, tolerance, &
+        first_address, count_address)
+  end function tfem_add_contact_pairs_auto_opt_r2
+
+  function tfem_get_contact_mesh_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_mesh(model, out, length)
+  end function tfem_get_contact_mesh_r2
+
+  function tfem_get_contact_mesh_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_mesh(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_mesh_i
+
+  function tfem_get_contact_mesh_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_mesh(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_mesh_i_r2
+
+  function tfem_get_contact_element_pairs_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_element_pairs(model, out, length)
+  end function tfem_get_contact_element_pairs_r2
+
+  function tfem_get_contact_element_pairs_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_element_pairs(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_element_pairs_i
+
+  function tfem_get_contact_element_pairs_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_element_pairs(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_element_pairs_i_r2
+
+  function tfem_get_contact_element_apexes_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_element_apexes(model, out, length)
+  end function tfem_get_contact_element_apexes_r2
+
+  function tfem_get_contact_element_apexes_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_element_apexes(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_element_apexes_i
+
+  function tfem_get_contact_element_apexes_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_element_apexes(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_element_apexes_i_r2
+
+  function tfem_get_contact_pair_bodies_opt(model, pair, body_a, body_b) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: pair
+    integer(c_int), intent(inout), optional, target :: body_a
+    integer(c_int), intent(inout), optional, target :: body_b
+    integer(c_int) :: status
+    type(c_ptr) :: body_a_address
+    type(c_ptr) :: body_b_address
+    body_a_address = c_null_ptr
+    if (present(body_a)) body_a_address = c_loc(body_a)
+    body_b_address = c_null_ptr
+    if (present(body_b)) body_b_address = c_loc(body_b)
+    status = tfem_get_contact_pair_bodies_by_address(model, pair, body_a_address, body_b_address)
+  end function tfem_get_contact_pair_bodies_opt
+
+  function tfem_solve_opt(model, info) result(status)
+    type(c_ptr), value :: model
+    type(tfem_solve_info), intent(inout), optional, target :: info
+    integer(c_int) :: status
+    type(c_ptr) :: info_address
+    info_address = c_null_ptr
+    if (present(info)) info_address = c_loc(info)
+    status = tfem_solve_by_address(model, info_address)
+  end function tfem_solve_opt
+
+  function tfem_solve_contact_opt(model, options, report) result(status)
+    type(c_ptr), value :: model
+    type(tfem_contact_options), intent(in), optional, target :: options
+    type(tfem_contact_report), intent(inout), optional, target :: report
+    integer(c_int) :: status
+    type(c_ptr) :: options_address
+    type(c_ptr) :: report_address
+    options_address = c_null_ptr
+    if (present(options)) options_address = c_loc(options)
+    report_address = c_null_ptr
+    if (present(report)) report_address = c_loc(report)
+    status = tfem_solve_contact_by_address(model, options_address, report_address)
+  end function tfem_solve_contact_opt
+
   function tfem_get_displacements_r2(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(1, *)
@@ -2653,597 +2929,155 @@ contains
     status = tfem_get_reactions(model, out, tfem_to_size_t(length))
   end function tfem_get_reactions_i_r2
 
-  function tfem_get_system_matrix_size_opt(model, n, nnz) result(status)
+  function tfem_get_contact_forces_r2(model, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout), optional, target :: n
-    integer(c_int64_t), intent(inout), optional, target :: nnz
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
     integer(c_int) :: status
-    type(c_ptr) :: n_address
-    type(c_ptr) :: nnz_address
-    n_address = c_null_ptr
-    if (present(n)) n_address = c_loc(n)
-    nnz_address = c_null_ptr
-    if (present(nnz)) nnz_address = c_loc(nnz)
-    status = tfem_get_system_matrix_size_by_address(model, n_address, nnz_address)
-  end function tfem_get_system_matrix_size_opt
+    status = tfem_get_contact_forces(model, out, length)
+  end function tfem_get_contact_forces_r2
 
-  function tfem_get_system_matrix_r2111(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_forces_i(model, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
-    integer(c_size_t), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(*)
-    integer(c_size_t), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(*)
-    integer(c_size_t), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(*)
-    integer(c_size_t), intent(in) :: dofs_length
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length)
-  end function tfem_get_system_matrix_r2111
+    status = tfem_get_contact_forces(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_forces_i
 
-  function tfem_get_system_matrix_r1211(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_forces_i_r2(model, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(*)
-    integer(c_size_t), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(1, *)
-    integer(c_size_t), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(*)
-    integer(c_size_t), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(*)
-    integer(c_size_t), intent(in) :: dofs_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length)
-  end function tfem_get_system_matrix_r1211
+    status = tfem_get_contact_forces(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_forces_i_r2
 
-  function tfem_get_system_matrix_r2211(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_nodal_pressures_r2(model, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
-    integer(c_size_t), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(1, *)
-    integer(c_size_t), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(*)
-    integer(c_size_t), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(*)
-    integer(c_size_t), intent(in) :: dofs_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length)
-  end function tfem_get_system_matrix_r2211
+    status = tfem_get_contact_nodal_pressures(model, out, length)
+  end function tfem_get_contact_nodal_pressures_r2
 
-  function tfem_get_system_matrix_r1121(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_nodal_pressures_i(model, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(*)
-    integer(c_size_t), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(*)
-    integer(c_size_t), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(1, *)
-    integer(c_size_t), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(*)
-    integer(c_size_t), intent(in) :: dofs_length
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length)
-  end function tfem_get_system_matrix_r1121
+    status = tfem_get_contact_nodal_pressures(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_nodal_pressures_i
 
-  function tfem_get_system_matrix_r2121(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_nodal_pressures_i_r2(model, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
-    integer(c_size_t), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(*)
-    integer(c_size_t), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(1, *)
-    integer(c_size_t), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(*)
-    integer(c_size_t), intent(in) :: dofs_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length)
-  end function tfem_get_system_matrix_r2121
+    status = tfem_get_contact_nodal_pressures(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_nodal_pressures_i_r2
 
-  function tfem_get_system_matrix_r1221(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_nodal_tractions_r2(model, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(*)
-    integer(c_size_t), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(1, *)
-    integer(c_size_t), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(1, *)
-    integer(c_size_t), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(*)
-    integer(c_size_t), intent(in) :: dofs_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length)
-  end function tfem_get_system_matrix_r1221
+    status = tfem_get_contact_nodal_tractions(model, out, length)
+  end function tfem_get_contact_nodal_tractions_r2
 
-  function tfem_get_system_matrix_r2221(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_nodal_tractions_i(model, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
-    integer(c_size_t), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(1, *)
-    integer(c_size_t), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(1, *)
-    integer(c_size_t), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(*)
-    integer(c_size_t), intent(in) :: dofs_length
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length)
-  end function tfem_get_system_matrix_r2221
+    status = tfem_get_contact_nodal_tractions(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_nodal_tractions_i
 
-  function tfem_get_system_matrix_r1112(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_nodal_tractions_i_r2(model, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(*)
-    integer(c_size_t), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(*)
-    integer(c_size_t), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(*)
-    integer(c_size_t), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(1, *)
-    integer(c_size_t), intent(in) :: dofs_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length)
-  end function tfem_get_system_matrix_r1112
+    status = tfem_get_contact_nodal_tractions(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_nodal_tractions_i_r2
 
-  function tfem_get_system_matrix_r2112(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_pair_nodal_pressures_r2(model, pair, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
-    integer(c_size_t), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(*)
-    integer(c_size_t), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(*)
-    integer(c_size_t), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(1, *)
-    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int), value :: pair
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length)
-  end function tfem_get_system_matrix_r2112
+    status = tfem_get_contact_pair_nodal_pressures(model, pair, out, length)
+  end function tfem_get_contact_pair_nodal_pressures_r2
 
-  function tfem_get_system_matrix_r1212(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_pair_nodal_pressures_i(model, pair, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(*)
-    integer(c_size_t), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(1, *)
-    integer(c_size_t), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(*)
-    integer(c_size_t), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(1, *)
-    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int), value :: pair
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length)
-  end function tfem_get_system_matrix_r1212
+    status = tfem_get_contact_pair_nodal_pressures(model, pair, out, tfem_to_size_t(length))
+  end function tfem_get_contact_pair_nodal_pressures_i
 
-  function tfem_get_system_matrix_r2212(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_pair_nodal_pressures_i_r2(model, pair, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
-    integer(c_size_t), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(1, *)
-    integer(c_size_t), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(*)
-    integer(c_size_t), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(1, *)
-    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int), value :: pair
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length)
-  end function tfem_get_system_matrix_r2212
+    status = tfem_get_contact_pair_nodal_pressures(model, pair, out, tfem_to_size_t(length))
+  end function tfem_get_contact_pair_nodal_pressures_i_r2
 
-  function tfem_get_system_matrix_r1122(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_pair_nodal_tractions_r2(model, pair, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(*)
-    integer(c_size_t), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(*)
-    integer(c_size_t), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(1, *)
-    integer(c_size_t), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(1, *)
-    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int), value :: pair
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length)
-  end function tfem_get_system_matrix_r1122
+    status = tfem_get_contact_pair_nodal_tractions(model, pair, out, length)
+  end function tfem_get_contact_pair_nodal_tractions_r2
 
-  function tfem_get_system_matrix_r2122(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_pair_nodal_tractions_i(model, pair, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
-    integer(c_size_t), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(*)
-    integer(c_size_t), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(1, *)
-    integer(c_size_t), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(1, *)
-    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int), value :: pair
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length)
-  end function tfem_get_system_matrix_r2122
+    status = tfem_get_contact_pair_nodal_tractions(model, pair, out, tfem_to_size_t(length))
+  end function tfem_get_contact_pair_nodal_tractions_i
 
-  function tfem_get_system_matrix_r1222(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_pair_nodal_tractions_i_r2(model, pair, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(*)
-    integer(c_size_t), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(1, *)
-    integer(c_size_t), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(1, *)
-    integer(c_size_t), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(1, *)
-    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int), value :: pair
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length)
-  end function tfem_get_system_matrix_r1222
+    status = tfem_get_contact_pair_nodal_tractions(model, pair, out, tfem_to_size_t(length))
+  end function tfem_get_contact_pair_nodal_tractions_i_r2
 
-  function tfem_get_system_matrix_r2222(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_gaps_r2(model, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
-    integer(c_size_t), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(1, *)
-    integer(c_size_t), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(1, *)
-    integer(c_size_t), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(1, *)
-    integer(c_size_t), intent(in) :: dofs_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
-        values_length, dofs, dofs_length)
-  end function tfem_get_system_matrix_r2222
+    status = tfem_get_contact_gaps(model, out, length)
+  end function tfem_get_contact_gaps_r2
 
-  function tfem_get_system_matrix_i(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_gaps_i(model, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(*)
-    integer(tfem_length_kind), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(*)
-    integer(tfem_length_kind), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(*)
-    integer(tfem_length_kind), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(*)
-    integer(tfem_length_kind), intent(in) :: dofs_length
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
-        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
-        tfem_to_size_t(dofs_length))
-  end function tfem_get_system_matrix_i
+    status = tfem_get_contact_gaps(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_gaps_i
 
-  function tfem_get_system_matrix_i_r2111(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+  function tfem_get_contact_gaps_i_r2(model, out, length) result(status)
     type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
-    integer(tfem_length_kind), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(*)
-    integer(tfem_length_kind), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(*)
-    integer(tfem_length_kind), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(*)
-    integer(tfem_length_kind), intent(in) :: dofs_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
-        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
-        tfem_to_size_t(dofs_length))
-  end function tfem_get_system_matrix_i_r2111
-
-  function tfem_get_system_matrix_i_r1211(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(*)
-    integer(tfem_length_kind), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(1, *)
-    integer(tfem_length_kind), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(*)
-    integer(tfem_length_kind), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(*)
-    integer(tfem_length_kind), intent(in) :: dofs_length
-    integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
-        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
-        tfem_to_size_t(dofs_length))
-  end function tfem_get_system_matrix_i_r1211
-
-  function tfem_get_system_matrix_i_r2211(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
-    integer(tfem_length_kind), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(1, *)
-    integer(tfem_length_kind), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(*)
-    integer(tfem_length_kind), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(*)
-    integer(tfem_length_kind), intent(in) :: dofs_length
-    integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
-        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
-        tfem_to_size_t(dofs_length))
-  end function tfem_get_system_matrix_i_r2211
-
-  function tfem_get_system_matrix_i_r1121(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(*)
-    integer(tfem_length_kind), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(*)
-    integer(tfem_length_kind), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(1, *)
-    integer(tfem_length_kind), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(*)
-    integer(tfem_length_kind), intent(in) :: dofs_length
-    integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
-        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
-        tfem_to_size_t(dofs_length))
-  end function tfem_get_system_matrix_i_r1121
-
-  function tfem_get_system_matrix_i_r2121(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
-    integer(tfem_length_kind), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(*)
-    integer(tfem_length_kind), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(1, *)
-    integer(tfem_length_kind), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(*)
-    integer(tfem_length_kind), intent(in) :: dofs_length
-    integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
-        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
-        tfem_to_size_t(dofs_length))
-  end function tfem_get_system_matrix_i_r2121
-
-  function tfem_get_system_matrix_i_r1221(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(*)
-    integer(tfem_length_kind), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(1, *)
-    integer(tfem_length_kind), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(1, *)
-    integer(tfem_length_kind), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(*)
-    integer(tfem_length_kind), intent(in) :: dofs_length
-    integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
-        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
-        tfem_to_size_t(dofs_length))
-  end function tfem_get_system_matrix_i_r1221
-
-  function tfem_get_system_matrix_i_r2221(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
-    integer(tfem_length_kind), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(1, *)
-    integer(tfem_length_kind), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(1, *)
-    integer(tfem_length_kind), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(*)
-    integer(tfem_length_kind), intent(in) :: dofs_length
-    integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
-        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
-        tfem_to_size_t(dofs_length))
-  end function tfem_get_system_matrix_i_r2221
-
-  function tfem_get_system_matrix_i_r1112(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(*)
-    integer(tfem_length_kind), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(*)
-    integer(tfem_length_kind), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(*)
-    integer(tfem_length_kind), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(1, *)
-    integer(tfem_length_kind), intent(in) :: dofs_length
-    integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
-        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
-        tfem_to_size_t(dofs_length))
-  end function tfem_get_system_matrix_i_r1112
-
-  function tfem_get_system_matrix_i_r2112(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
-    integer(tfem_length_kind), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(*)
-    integer(tfem_length_kind), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(*)
-    integer(tfem_length_kind), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(1, *)
-    integer(tfem_length_kind), intent(in) :: dofs_length
-    integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
-        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
-        tfem_to_size_t(dofs_length))
-  end function tfem_get_system_matrix_i_r2112
-
-  function tfem_get_system_matrix_i_r1212(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(*)
-    integer(tfem_length_kind), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(1, *)
-    integer(tfem_length_kind), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(*)
-    integer(tfem_length_kind), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(1, *)
-    integer(tfem_length_kind), intent(in) :: dofs_length
-    integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
-        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
-        tfem_to_size_t(dofs_length))
-  end function tfem_get_system_matrix_i_r1212
-
-  function tfem_get_system_matrix_i_r2212(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
-    integer(tfem_length_kind), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(1, *)
-    integer(tfem_length_kind), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(*)
-    integer(tfem_length_kind), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(1, *)
-    integer(tfem_length_kind), intent(in) :: dofs_length
-    integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
-        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
-        tfem_to_size_t(dofs_length))
-  end function tfem_get_system_matrix_i_r2212
-
-  function tfem_get_system_matrix_i_r1122(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(*)
-    integer(tfem_length_kind), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(*)
-    integer(tfem_length_kind), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(1, *)
-    integer(tfem_length_kind), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(1, *)
-    integer(tfem_length_kind), intent(in) :: dofs_length
-    integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
-        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
-        tfem_to_size_t(dofs_length))
-  end function tfem_get_system_matrix_i_r1122
-
-  function tfem_get_system_matrix_i_r2122(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
-    integer(tfem_length_kind), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(*)
-    integer(tfem_length_kind), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(1, *)
-    integer(tfem_length_kind), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(1, *)
-    integer(tfem_length_kind), intent(in) :: dofs_length
-    integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
-        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
-        tfem_to_size_t(dofs_length))
-  end function tfem_get_system_matrix_i_r2122
-
-  function tfem_get_system_matrix_i_r1222(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(*)
-    integer(tfem_length_kind), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(1, *)
-    integer(tfem_length_kind), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(1, *)
-    integer(tfem_length_kind), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(1, *)
-    integer(tfem_length_kind), intent(in) :: dofs_length
-    integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
-        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
-        tfem_to_size_t(dofs_length))
-  end function tfem_get_system_matrix_i_r1222
-
-  function tfem_get_system_matrix_i_r2222(model, col_ptr, col_ptr_length, row_idx, &
-        row_idx_length, values, values_length, dofs, dofs_length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
-    integer(tfem_length_kind), intent(in) :: col_ptr_length
-    integer(c_int64_t), intent(inout) :: row_idx(1, *)
-    integer(tfem_length_kind), intent(in) :: row_idx_length
-    real(c_double), intent(inout) :: values(1, *)
-    integer(tfem_length_kind), intent(in) :: values_length
-    integer(c_int64_t), intent(inout) :: dofs(1, *)
-    integer(tfem_length_kind), intent(in) :: dofs_length
-    integer(c_int) :: status
-    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
-        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
-        tfem_to_size_t(dofs_length))
-  end function tfem_get_system_matrix_i_r2222
-
-  function tfem_add_contact_pair_opt(model, tag_a, tag_b, pair) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), value :: tag_a
-    integer(c_int), value :: tag_b
-    integer(c_int), intent(inout), optional, target :: pair
-    integer(c_int) :: status
-    type(c_ptr) :: pair_address
-    pair_address = c_null_ptr
-    if (present(pair)) pair_address = c_loc(pair)
-    status = tfem_add_contact_pair_by_address(model, tag_a, tag_b, pair_address)
-  end function tfem_add_contact_pair_opt
-
-  function tfem_add_contact_pair_with_mesh_opt(model, tag_a, tag_b, n_triangles, &
-        connectivity, pair, flipped) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), value :: tag_a
-    integer(c_int), value :: tag_b
-    integer(c_int), value :: n_triangles
-    integer(c_int), intent(in) :: connectivity(*)
-    integer(c_int), intent(inout), optional, target :: pair
-    integer(c_int), intent(inout), optional, target :: flipped
-    integer(c_int) :: status
-    type(c_ptr) :: pair_address
-    type(c_ptr) :: flipped_address
-    pair_address = c_null_ptr
-    if (present(pair)) pair_address = c_loc(pair)
-    flipped_address = c_null_ptr
-    if (present(flipped)) flipped_address = c_loc(flipped)
-    status = tfem_add_contact_pair_with_mesh_by_address(model, tag_a, tag_b, n_triangles, &
-        connectivity, pair_address, flipped_address)
-  end function tfem_add_contact_pair_with_mesh_opt
-
-  function tfem_add_contact_pair_with_mesh_opt_r2(model, tag_a, tag_b, n_triangles, &
-        connectivity, pair, flipped) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), value :: tag_a
-    integer(c_int), value :: tag_b
-    integer(c_int), value :: n_triangles
-    integer(c_int), intent(in) :: connectivity(1, *)
-    integer(c_int), intent(inout), optional, target :: pair
-    integer(c_int), intent(inout), optional, target :: flipped
-    integer(c_int) :: status
-    type(c_ptr) :: pair_address
-    type(c_ptr) :: flipped_address
-    pair_address = c_null_ptr
-    if (present(pair)) pair_address = c_loc(pair)
-    flipped_address = c_null_ptr
-    if (present(flipped)) flipped_address = c_loc(flipped)
-    status = tfem_add_contact_pair_with_mesh_by_address(model, tag_a, tag_b, n_triangles, &
-        connectivity, pair_address, flipped_address)
-  end function tfem_add_contact_pair_with_mesh_opt_r2
-
-  function tfem_solve_contact_opt(model, options, report) result(status)
-    type(c_ptr), value :: model
-    type(tfem_contact_options), intent(in), optional, target :: options
-    type(tfem_contact_report), intent(inout), optional, target :: report
-    integer(c_int) :: status
-    type(c_ptr) :: options_address
-    type(c_ptr) :: report_address
-    options_address = c_null_ptr
-    if (present(options)) options_address = c_loc(options)
-    report_address = c_null_ptr
-    if (present(report)) report_address = c_loc(report)
-    status = tfem_solve_contact_by_address(model, options_address, report_address)
-  end function tfem_solve_contact_opt
+    status = tfem_get_contact_gaps(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_gaps_i_r2
 
   function tfem_get_contact_active_r2(model, out, length) result(status)
     type(c_ptr), value :: model
@@ -3317,104 +3151,77 @@ contains
     status = tfem_get_contact_elements(model, out, tfem_to_size_t(length))
   end function tfem_get_contact_elements_i_r2
 
-  function tfem_get_contact_forces_r2(model, out, length) result(status)
+  function tfem_get_contact_shear_r2(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(1, *)
     integer(c_size_t), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_contact_forces(model, out, length)
-  end function tfem_get_contact_forces_r2
+    status = tfem_get_contact_shear(model, out, length)
+  end function tfem_get_contact_shear_r2
 
-  function tfem_get_contact_forces_i(model, out, length) result(status)
+  function tfem_get_contact_shear_i(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(*)
     integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_contact_forces(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_forces_i
+    status = tfem_get_contact_shear(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_shear_i
 
-  function tfem_get_contact_forces_i_r2(model, out, length) result(status)
+  function tfem_get_contact_shear_i_r2(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(1, *)
     integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_contact_forces(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_forces_i_r2
+    status = tfem_get_contact_shear(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_shear_i_r2
 
-  function tfem_get_contact_nodal_pressures_r2(model, out, length) result(status)
+  function tfem_get_contact_friction_state_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_friction_state(model, out, length)
+  end function tfem_get_contact_friction_state_r2
+
+  function tfem_get_contact_friction_state_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_friction_state(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_friction_state_i
+
+  function tfem_get_contact_friction_state_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_contact_friction_state(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_friction_state_i_r2
+
+  function tfem_get_contact_dissipation_r2(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(1, *)
     integer(c_size_t), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_contact_nodal_pressures(model, out, length)
-  end function tfem_get_contact_nodal_pressures_r2
+    status = tfem_get_contact_dissipation(model, out, length)
+  end function tfem_get_contact_dissipation_r2
 
-  function tfem_get_contact_nodal_pressures_i(model, out, length) result(status)
+  function tfem_get_contact_dissipation_i(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(*)
     integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_contact_nodal_pressures(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_nodal_pressures_i
+    status = tfem_get_contact_dissipation(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_dissipation_i
 
-  function tfem_get_contact_nodal_pressures_i_r2(model, out, length) result(status)
+  function tfem_get_contact_dissipation_i_r2(model, out, length) result(status)
     type(c_ptr), value :: model
     real(c_double), intent(inout) :: out(1, *)
     integer(tfem_length_kind), intent(in) :: length
     integer(c_int) :: status
-    status = tfem_get_contact_nodal_pressures(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_nodal_pressures_i_r2
-
-  function tfem_get_contact_nodal_tractions_r2(model, out, length) result(status)
-    type(c_ptr), value :: model
-    real(c_double), intent(inout) :: out(1, *)
-    integer(c_size_t), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_nodal_tractions(model, out, length)
-  end function tfem_get_contact_nodal_tractions_r2
-
-  function tfem_get_contact_nodal_tractions_i(model, out, length) result(status)
-    type(c_ptr), value :: model
-    real(c_double), intent(inout) :: out(*)
-    integer(tfem_length_kind), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_nodal_tractions(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_nodal_tractions_i
-
-  function tfem_get_contact_nodal_tractions_i_r2(model, out, length) result(status)
-    type(c_ptr), value :: model
-    real(c_double), intent(inout) :: out(1, *)
-    integer(tfem_length_kind), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_nodal_tractions(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_nodal_tractions_i_r2
-
-  function tfem_get_contact_pair_nodal_tractions_r2(model, pair, out, length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), value :: pair
-    real(c_double), intent(inout) :: out(1, *)
-    integer(c_size_t), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_pair_nodal_tractions(model, pair, out, length)
-  end function tfem_get_contact_pair_nodal_tractions_r2
-
-  function tfem_get_contact_pair_nodal_tractions_i(model, pair, out, length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), value :: pair
-    real(c_double), intent(inout) :: out(*)
-    integer(tfem_length_kind), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_pair_nodal_tractions(model, pair, out, tfem_to_size_t(length))
-  end function tfem_get_contact_pair_nodal_tractions_i
-
-  function tfem_get_contact_pair_nodal_tractions_i_r2(model, pair, out, length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), value :: pair
-    real(c_double), intent(inout) :: out(1, *)
-    integer(tfem_length_kind), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_pair_nodal_tractions(model, pair, out, tfem_to_size_t(length))
-  end function tfem_get_contact_pair_nodal_tractions_i_r2
+    status = tfem_get_contact_dissipation(model, out, tfem_to_size_t(length))
+  end function tfem_get_contact_dissipation_i_r2
 
   function tfem_get_contact_slave_nodes_opt(model, node, tributary, gap, pressure, &
         length) result(status)
@@ -4088,144 +3895,6 @@ contains
         gap_address, pressure_address, tfem_to_size_t(length))
   end function tfem_get_contact_slave_nodes_opt_i_r2222
 
-  function tfem_get_contact_pair_nodal_pressures_r2(model, pair, out, length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), value :: pair
-    real(c_double), intent(inout) :: out(1, *)
-    integer(c_size_t), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_pair_nodal_pressures(model, pair, out, length)
-  end function tfem_get_contact_pair_nodal_pressures_r2
-
-  function tfem_get_contact_pair_nodal_pressures_i(model, pair, out, length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), value :: pair
-    real(c_double), intent(inout) :: out(*)
-    integer(tfem_length_kind), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_pair_nodal_pressures(model, pair, out, tfem_to_size_t(length))
-  end function tfem_get_contact_pair_nodal_pressures_i
-
-  function tfem_get_contact_pair_nodal_pressures_i_r2(model, pair, out, length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), value :: pair
-    real(c_double), intent(inout) :: out(1, *)
-    integer(tfem_length_kind), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_pair_nodal_pressures(model, pair, out, tfem_to_size_t(length))
-  end function tfem_get_contact_pair_nodal_pressures_i_r2
-
-  function tfem_get_contact_gaps_r2(model, out, length) result(status)
-    type(c_ptr), value :: model
-    real(c_double), intent(inout) :: out(1, *)
-    integer(c_size_t), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_gaps(model, out, length)
-  end function tfem_get_contact_gaps_r2
-
-  function tfem_get_contact_gaps_i(model, out, length) result(status)
-    type(c_ptr), value :: model
-    real(c_double), intent(inout) :: out(*)
-    integer(tfem_length_kind), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_gaps(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_gaps_i
-
-  function tfem_get_contact_gaps_i_r2(model, out, length) result(status)
-    type(c_ptr), value :: model
-    real(c_double), intent(inout) :: out(1, *)
-    integer(tfem_length_kind), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_gaps(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_gaps_i_r2
-
-  function tfem_get_contact_mesh_r2(model, out, length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), intent(inout) :: out(1, *)
-    integer(c_size_t), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_mesh(model, out, length)
-  end function tfem_get_contact_mesh_r2
-
-  function tfem_get_contact_mesh_i(model, out, length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), intent(inout) :: out(*)
-    integer(tfem_length_kind), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_mesh(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_mesh_i
-
-  function tfem_get_contact_mesh_i_r2(model, out, length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), intent(inout) :: out(1, *)
-    integer(tfem_length_kind), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_mesh(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_mesh_i_r2
-
-  function tfem_get_contact_element_pairs_r2(model, out, length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), intent(inout) :: out(1, *)
-    integer(c_size_t), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_element_pairs(model, out, length)
-  end function tfem_get_contact_element_pairs_r2
-
-  function tfem_get_contact_element_pairs_i(model, out, length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), intent(inout) :: out(*)
-    integer(tfem_length_kind), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_element_pairs(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_element_pairs_i
-
-  function tfem_get_contact_element_pairs_i_r2(model, out, length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), intent(inout) :: out(1, *)
-    integer(tfem_length_kind), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_element_pairs(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_element_pairs_i_r2
-
-  function tfem_get_contact_element_apexes_r2(model, out, length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), intent(inout) :: out(1, *)
-    integer(c_size_t), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_element_apexes(model, out, length)
-  end function tfem_get_contact_element_apexes_r2
-
-  function tfem_get_contact_element_apexes_i(model, out, length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), intent(inout) :: out(*)
-    integer(tfem_length_kind), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_element_apexes(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_element_apexes_i
-
-  function tfem_get_contact_element_apexes_i_r2(model, out, length) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), intent(inout) :: out(1, *)
-    integer(tfem_length_kind), intent(in) :: length
-    integer(c_int) :: status
-    status = tfem_get_contact_element_apexes(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_element_apexes_i_r2
-
-  function tfem_get_contact_pair_bodies_opt(model, pair, body_a, body_b) result(status)
-    type(c_ptr), value :: model
-    integer(c_int), value :: pair
-    integer(c_int), intent(inout), optional, target :: body_a
-    integer(c_int), intent(inout), optional, target :: body_b
-    integer(c_int) :: status
-    type(c_ptr) :: body_a_address
-    type(c_ptr) :: body_b_address
-    body_a_address = c_null_ptr
-    if (present(body_a)) body_a_address = c_loc(body_a)
-    body_b_address = c_null_ptr
-    if (present(body_b)) body_b_address = c_loc(body_b)
-    status = tfem_get_contact_pair_bodies_by_address(model, pair, body_a_address, body_b_address)
-  end function tfem_get_contact_pair_bodies_opt
-
   function tfem_step_opt(model, load_factor, options, report) result(status)
     type(c_ptr), value :: model
     real(c_double), value :: load_factor
@@ -4289,119 +3958,531 @@ contains
     status = tfem_set_contact_state(model, buffer, tfem_to_size_t(length))
   end function tfem_set_contact_state_i_r2
 
-  function tfem_get_contact_shear_r2(model, out, length) result(status)
+  function tfem_get_system_matrix_size_opt(model, n, nnz) result(status)
     type(c_ptr), value :: model
-    real(c_double), intent(inout) :: out(1, *)
-    integer(c_size_t), intent(in) :: length
+    integer(c_int64_t), intent(inout), optional, target :: n
+    integer(c_int64_t), intent(inout), optional, target :: nnz
     integer(c_int) :: status
-    status = tfem_get_contact_shear(model, out, length)
-  end function tfem_get_contact_shear_r2
+    type(c_ptr) :: n_address
+    type(c_ptr) :: nnz_address
+    n_address = c_null_ptr
+    if (present(n)) n_address = c_loc(n)
+    nnz_address = c_null_ptr
+    if (present(nnz)) nnz_address = c_loc(nnz)
+    status = tfem_get_system_matrix_size_by_address(model, n_address, nnz_address)
+  end function tfem_get_system_matrix_size_opt
 
-  function tfem_get_contact_shear_i(model, out, length) result(status)
+  function tfem_get_system_matrix_r2111(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
     type(c_ptr), value :: model
-    real(c_double), intent(inout) :: out(*)
-    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(c_size_t), intent(in) :: dofs_length
     integer(c_int) :: status
-    status = tfem_get_contact_shear(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_shear_i
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r2111
 
-  function tfem_get_contact_shear_i_r2(model, out, length) result(status)
+  function tfem_get_system_matrix_r1211(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
     type(c_ptr), value :: model
-    real(c_double), intent(inout) :: out(1, *)
-    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(c_size_t), intent(in) :: dofs_length
     integer(c_int) :: status
-    status = tfem_get_contact_shear(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_shear_i_r2
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r1211
 
-  function tfem_get_contact_friction_state_r2(model, out, length) result(status)
+  function tfem_get_system_matrix_r2211(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
     type(c_ptr), value :: model
-    integer(c_int), intent(inout) :: out(1, *)
-    integer(c_size_t), intent(in) :: length
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(c_size_t), intent(in) :: dofs_length
     integer(c_int) :: status
-    status = tfem_get_contact_friction_state(model, out, length)
-  end function tfem_get_contact_friction_state_r2
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r2211
 
-  function tfem_get_contact_friction_state_i(model, out, length) result(status)
+  function tfem_get_system_matrix_r1121(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
     type(c_ptr), value :: model
-    integer(c_int), intent(inout) :: out(*)
-    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(c_size_t), intent(in) :: dofs_length
     integer(c_int) :: status
-    status = tfem_get_contact_friction_state(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_friction_state_i
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r1121
 
-  function tfem_get_contact_friction_state_i_r2(model, out, length) result(status)
+  function tfem_get_system_matrix_r2121(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
     type(c_ptr), value :: model
-    integer(c_int), intent(inout) :: out(1, *)
-    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(c_size_t), intent(in) :: dofs_length
     integer(c_int) :: status
-    status = tfem_get_contact_friction_state(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_friction_state_i_r2
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r2121
 
-  function tfem_get_contact_dissipation_r2(model, out, length) result(status)
+  function tfem_get_system_matrix_r1221(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
     type(c_ptr), value :: model
-    real(c_double), intent(inout) :: out(1, *)
-    integer(c_size_t), intent(in) :: length
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(c_size_t), intent(in) :: dofs_length
     integer(c_int) :: status
-    status = tfem_get_contact_dissipation(model, out, length)
-  end function tfem_get_contact_dissipation_r2
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r1221
 
-  function tfem_get_contact_dissipation_i(model, out, length) result(status)
+  function tfem_get_system_matrix_r2221(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
     type(c_ptr), value :: model
-    real(c_double), intent(inout) :: out(*)
-    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(c_size_t), intent(in) :: dofs_length
     integer(c_int) :: status
-    status = tfem_get_contact_dissipation(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_dissipation_i
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r2221
 
-  function tfem_get_contact_dissipation_i_r2(model, out, length) result(status)
+  function tfem_get_system_matrix_r1112(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
     type(c_ptr), value :: model
-    real(c_double), intent(inout) :: out(1, *)
-    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(c_size_t), intent(in) :: dofs_length
     integer(c_int) :: status
-    status = tfem_get_contact_dissipation(model, out, tfem_to_size_t(length))
-  end function tfem_get_contact_dissipation_i_r2
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r1112
 
-  function tfem_add_contact_pairs_auto_opt(model, n_tags, tags, tolerance, first, &
-        count) result(status)
+  function tfem_get_system_matrix_r2112(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
     type(c_ptr), value :: model
-    integer(c_int), value :: n_tags
-    integer(c_int), intent(in), optional, target :: tags(*)
-    real(c_double), value :: tolerance
-    integer(c_int), intent(inout), optional, target :: first
-    integer(c_int), intent(inout), optional, target :: count
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(c_size_t), intent(in) :: dofs_length
     integer(c_int) :: status
-    type(c_ptr) :: tags_address
-    type(c_ptr) :: first_address
-    type(c_ptr) :: count_address
-    tags_address = tfem_address_c_int(tags, n_tags > 0)
-    first_address = c_null_ptr
-    if (present(first)) first_address = c_loc(first)
-    count_address = c_null_ptr
-    if (present(count)) count_address = c_loc(count)
-    status = tfem_add_contact_pairs_auto_by_address(model, n_tags, tags_address, tolerance, &
-        first_address, count_address)
-  end function tfem_add_contact_pairs_auto_opt
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r2112
 
-  function tfem_add_contact_pairs_auto_opt_r2(model, n_tags, tags, tolerance, first, &
-        count) result(status)
+  function tfem_get_system_matrix_r1212(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
     type(c_ptr), value :: model
-    integer(c_int), value :: n_tags
-    integer(c_int), intent(in), target :: tags(1, *)
-    real(c_double), value :: tolerance
-    integer(c_int), intent(inout), optional, target :: first
-    integer(c_int), intent(inout), optional, target :: count
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(c_size_t), intent(in) :: dofs_length
     integer(c_int) :: status
-    type(c_ptr) :: tags_address
-    type(c_ptr) :: first_address
-    type(c_ptr) :: count_address
-    tags_address = tfem_address_c_int(tags, n_tags > 0)
-    first_address = c_null_ptr
-    if (present(first)) first_address = c_loc(first)
-    count_address = c_null_ptr
-    if (present(count)) count_address = c_loc(count)
-    status = tfem_add_contact_pairs_auto_by_address(model, n_tags, tags_address, tolerance, &
-        first_address, count_address)
-  end function tfem_add_contact_pairs_auto_opt_r2
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r1212
+
+  function tfem_get_system_matrix_r2212(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r2212
+
+  function tfem_get_system_matrix_r1122(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r1122
+
+  function tfem_get_system_matrix_r2122(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r2122
+
+  function tfem_get_system_matrix_r1222(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r1222
+
+  function tfem_get_system_matrix_r2222(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(c_size_t), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(c_size_t), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(c_size_t), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, col_ptr_length, row_idx, row_idx_length, values, &
+        values_length, dofs, dofs_length)
+  end function tfem_get_system_matrix_r2222
+
+  function tfem_get_system_matrix_i(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i
+
+  function tfem_get_system_matrix_i_r2111(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r2111
+
+  function tfem_get_system_matrix_i_r1211(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r1211
+
+  function tfem_get_system_matrix_i_r2211(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r2211
+
+  function tfem_get_system_matrix_i_r1121(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r1121
+
+  function tfem_get_system_matrix_i_r2121(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r2121
+
+  function tfem_get_system_matrix_i_r1221(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r1221
+
+  function tfem_get_system_matrix_i_r2221(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(*)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r2221
+
+  function tfem_get_system_matrix_i_r1112(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r1112
+
+  function tfem_get_system_matrix_i_r2112(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r2112
+
+  function tfem_get_system_matrix_i_r1212(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r1212
+
+  function tfem_get_system_matrix_i_r2212(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r2212
+
+  function tfem_get_system_matrix_i_r1122(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r1122
+
+  function tfem_get_system_matrix_i_r2122(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(*)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r2122
+
+  function tfem_get_system_matrix_i_r1222(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(*)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r1222
+
+  function tfem_get_system_matrix_i_r2222(model, col_ptr, col_ptr_length, row_idx, &
+        row_idx_length, values, values_length, dofs, dofs_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout) :: col_ptr(1, *)
+    integer(tfem_length_kind), intent(in) :: col_ptr_length
+    integer(c_int64_t), intent(inout) :: row_idx(1, *)
+    integer(tfem_length_kind), intent(in) :: row_idx_length
+    real(c_double), intent(inout) :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    integer(c_int64_t), intent(inout) :: dofs(1, *)
+    integer(tfem_length_kind), intent(in) :: dofs_length
+    integer(c_int) :: status
+    status = tfem_get_system_matrix(model, col_ptr, tfem_to_size_t(col_ptr_length), row_idx, &
+        tfem_to_size_t(row_idx_length), values, tfem_to_size_t(values_length), dofs, &
+        tfem_to_size_t(dofs_length))
+  end function tfem_get_system_matrix_i_r2222
 
   function tfem_contact_last_error_i(context, buffer, length) result(status)
     type(c_ptr), value :: context
@@ -5717,38 +5798,37 @@ module tfem
         TFEM_CONTACT_WEIGHTING_STRIP, TFEM_CONTACT_WEIGHTING_MORTAR, TFEM_CONTACT_WEIGHTING_AUTO, &
         TFEM_CONTACT_LAW_FRICTIONLESS, TFEM_CONTACT_LAW_STICK, TFEM_INVERSION_TEST_LINEARISED, &
         TFEM_INVERSION_TEST_LITERAL, TFEM_PLANE_MODE_STRAIN, TFEM_PLANE_MODE_STRESS, TFEM_COMPONENT_X, &
-        TFEM_COMPONENT_Y, tfem_solve_info, tfem_contact_options, tfem_contact_report, tfem_version, &
-        tfem_create, tfem_destroy, tfem_warning_count, tfem_get_warning_size, tfem_set_mesh, &
-        tfem_load_gmsh, tfem_write_vtu, tfem_set_boundary_edges, tfem_set_material, &
-        tfem_set_tempering, tfem_set_ordering, tfem_fix, tfem_fix_edges, tfem_clear_constraints, &
-        tfem_add_pressure, tfem_add_traction, tfem_add_nodal_force, tfem_set_body_force, &
-        tfem_clear_loads, tfem_get_boundary_edge_count, tfem_element_stiffness, &
-        tfem_laplacian_stiffness, tfem_contact_options_default, tfem_get_contact_report, &
-        tfem_add_boundary_edges, tfem_get_external_work, tfem_set_contact_weighting, &
-        tfem_get_contact_weighting, tfem_get_contact_mesh_size, tfem_set_threads, tfem_get_threads, &
-        tfem_revert_step, tfem_get_contact_state_size, tfem_set_friction, tfem_set_prescribed, &
-        tfem_set_prescribed_edges, tfem_contact_create, tfem_contact_destroy, &
-        tfem_contact_set_options, tfem_contact_restart, tfem_contact_length, tfem_last_error, &
-        tfem_last_error_length, tfem_get_warning, tfem_get_mesh_nodes, tfem_get_displacements, &
-        tfem_get_element_strains, tfem_get_element_stresses, tfem_get_element_jacobians, &
-        tfem_get_reactions, tfem_get_system_matrix, tfem_get_contact_active, &
-        tfem_get_contact_pressure, tfem_get_contact_elements, tfem_get_contact_forces, &
-        tfem_get_contact_nodal_pressures, tfem_get_contact_nodal_tractions, &
-        tfem_get_contact_pair_nodal_tractions, tfem_get_contact_pair_nodal_pressures, &
-        tfem_get_contact_gaps, tfem_get_contact_mesh, tfem_get_contact_element_pairs, &
-        tfem_get_contact_element_apexes, tfem_get_contact_state, tfem_set_contact_state, &
-        tfem_get_contact_shear, tfem_get_contact_friction_state, tfem_get_contact_dissipation, &
-        tfem_contact_last_error, tfem_contact_last_error_length, tfem_contact_nodes, &
-        tfem_contact_pattern, tfem_contact_gather, tfem_contact_scatter_add, tfem_contact_get_active, &
-        tfem_contact_set_active, tfem_contact_gaps, tfem_contact_pressures, tfem_contact_elements, &
-        tfem_contact_element_equations, tfem_contact_element_blocks
+        TFEM_COMPONENT_Y, tfem_contact_options, tfem_solve_info, tfem_contact_report, tfem_version, &
+        tfem_create, tfem_destroy, tfem_warning_count, tfem_get_warning_size, tfem_set_threads, &
+        tfem_get_threads, tfem_set_mesh, tfem_load_gmsh, tfem_set_boundary_edges, &
+        tfem_add_boundary_edges, tfem_get_boundary_edge_count, tfem_set_material, tfem_set_tempering, &
+        tfem_set_ordering, tfem_fix, tfem_fix_edges, tfem_set_prescribed, tfem_set_prescribed_edges, &
+        tfem_clear_constraints, tfem_add_pressure, tfem_add_traction, tfem_add_nodal_force, &
+        tfem_set_body_force, tfem_clear_loads, tfem_set_friction, tfem_set_contact_weighting, &
+        tfem_get_contact_weighting, tfem_get_contact_mesh_size, tfem_contact_options_default, &
+        tfem_get_external_work, tfem_write_vtu, tfem_get_contact_report, tfem_revert_step, &
+        tfem_get_contact_state_size, tfem_element_stiffness, tfem_laplacian_stiffness, &
+        tfem_contact_create, tfem_contact_destroy, tfem_contact_set_options, tfem_contact_restart, &
+        tfem_contact_length, tfem_last_error, tfem_last_error_length, tfem_get_warning, &
+        tfem_get_mesh_nodes, tfem_get_contact_mesh, tfem_get_contact_element_pairs, &
+        tfem_get_contact_element_apexes, tfem_get_displacements, tfem_get_element_strains, &
+        tfem_get_element_stresses, tfem_get_element_jacobians, tfem_get_reactions, &
+        tfem_get_contact_forces, tfem_get_contact_nodal_pressures, tfem_get_contact_nodal_tractions, &
+        tfem_get_contact_pair_nodal_pressures, tfem_get_contact_pair_nodal_tractions, &
+        tfem_get_contact_gaps, tfem_get_contact_active, tfem_get_contact_pressure, &
+        tfem_get_contact_elements, tfem_get_contact_shear, tfem_get_contact_friction_state, &
+        tfem_get_contact_dissipation, tfem_get_contact_state, tfem_set_contact_state, &
+        tfem_get_system_matrix, tfem_contact_last_error, tfem_contact_last_error_length, &
+        tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, tfem_contact_scatter_add, &
+        tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, tfem_contact_pressures, &
+        tfem_contact_elements, tfem_contact_element_equations, tfem_contact_element_blocks
   use tfem_specifics
   implicit none
   private :: c_strlen
   private :: tfem_last_error_i, tfem_last_error_str, tfem_last_error_str_i, tfem_last_error_no_model
   private :: tfem_last_error_no_model_i, tfem_last_error_no_model_str
   private :: tfem_last_error_no_model_str_i, tfem_last_error_length_no_model, tfem_get_warning_i
-  private :: tfem_get_warning_str, tfem_get_warning_str_i, tfem_solve_opt, tfem_get_sizes_opt
+  private :: tfem_get_warning_str, tfem_get_warning_str_i, tfem_get_sizes_opt
   private :: tfem_get_mesh_nodes_r2, tfem_get_mesh_nodes_i, tfem_get_mesh_nodes_i_r2
   private :: tfem_get_mesh_triangles_opt, tfem_get_mesh_triangles_opt_r21
   private :: tfem_get_mesh_triangles_opt_r12, tfem_get_mesh_triangles_opt_r22
@@ -5758,39 +5838,36 @@ module tfem
   private :: tfem_get_boundary_edges_opt_r12, tfem_get_boundary_edges_opt_r22
   private :: tfem_get_boundary_edges_opt_i, tfem_get_boundary_edges_opt_i_r21
   private :: tfem_get_boundary_edges_opt_i_r12, tfem_get_boundary_edges_opt_i_r22
-  private :: tfem_get_displacements_r2, tfem_get_displacements_i, tfem_get_displacements_i_r2
-  private :: tfem_get_element_strains_r2, tfem_get_element_strains_i, tfem_get_element_strains_i_r2
-  private :: tfem_get_element_stresses_r2, tfem_get_element_stresses_i
-  private :: tfem_get_element_stresses_i_r2, tfem_get_element_jacobians_r2
-  private :: tfem_get_element_jacobians_i, tfem_get_element_jacobians_i_r2, tfem_get_reactions_r2
-  private :: tfem_get_reactions_i, tfem_get_reactions_i_r2, tfem_get_system_matrix_size_opt
-  private :: tfem_get_system_matrix_r2111, tfem_get_system_matrix_r1211
-  private :: tfem_get_system_matrix_r2211, tfem_get_system_matrix_r1121
-  private :: tfem_get_system_matrix_r2121, tfem_get_system_matrix_r1221
-  private :: tfem_get_system_matrix_r2221, tfem_get_system_matrix_r1112
-  private :: tfem_get_system_matrix_r2112, tfem_get_system_matrix_r1212
-  private :: tfem_get_system_matrix_r2212, tfem_get_system_matrix_r1122
-  private :: tfem_get_system_matrix_r2122, tfem_get_system_matrix_r1222
-  private :: tfem_get_system_matrix_r2222, tfem_get_system_matrix_i, tfem_get_system_matrix_i_r2111
-  private :: tfem_get_system_matrix_i_r1211, tfem_get_system_matrix_i_r2211
-  private :: tfem_get_system_matrix_i_r1121, tfem_get_system_matrix_i_r2121
-  private :: tfem_get_system_matrix_i_r1221, tfem_get_system_matrix_i_r2221
-  private :: tfem_get_system_matrix_i_r1112, tfem_get_system_matrix_i_r2112
-  private :: tfem_get_system_matrix_i_r1212, tfem_get_system_matrix_i_r2212
-  private :: tfem_get_system_matrix_i_r1122, tfem_get_system_matrix_i_r2122
-  private :: tfem_get_system_matrix_i_r1222, tfem_get_system_matrix_i_r2222
   private :: tfem_add_contact_pair_opt, tfem_add_contact_pair_with_mesh_opt
-  private :: tfem_add_contact_pair_with_mesh_opt_r2, tfem_solve_contact_opt
-  private :: tfem_get_contact_active_r2, tfem_get_contact_active_i, tfem_get_contact_active_i_r2
-  private :: tfem_get_contact_pressure_r2, tfem_get_contact_pressure_i
-  private :: tfem_get_contact_pressure_i_r2, tfem_get_contact_elements_r2
-  private :: tfem_get_contact_elements_i, tfem_get_contact_elements_i_r2, tfem_get_contact_forces_r2
-  private :: tfem_get_contact_forces_i, tfem_get_contact_forces_i_r2
-  private :: tfem_get_contact_nodal_pressures_r2, tfem_get_contact_nodal_pressures_i
-  private :: tfem_get_contact_nodal_pressures_i_r2, tfem_get_contact_nodal_tractions_r2
-  private :: tfem_get_contact_nodal_tractions_i, tfem_get_contact_nodal_tractions_i_r2
+  private :: tfem_add_contact_pair_with_mesh_opt_r2, tfem_add_contact_pairs_auto_opt
+  private :: tfem_add_contact_pairs_auto_opt_r2, tfem_get_contact_mesh_r2, tfem_get_contact_mesh_i
+  private :: tfem_get_contact_mesh_i_r2, tfem_get_contact_element_pairs_r2
+  private :: tfem_get_contact_element_pairs_i, tfem_get_contact_element_pairs_i_r2
+  private :: tfem_get_contact_element_apexes_r2, tfem_get_contact_element_apexes_i
+  private :: tfem_get_contact_element_apexes_i_r2, tfem_get_contact_pair_bodies_opt, tfem_solve_opt
+  private :: tfem_solve_contact_opt, tfem_get_displacements_r2, tfem_get_displacements_i
+  private :: tfem_get_displacements_i_r2, tfem_get_element_strains_r2, tfem_get_element_strains_i
+  private :: tfem_get_element_strains_i_r2, tfem_get_element_stresses_r2
+  private :: tfem_get_element_stresses_i, tfem_get_element_stresses_i_r2
+  private :: tfem_get_element_jacobians_r2, tfem_get_element_jacobians_i
+  private :: tfem_get_element_jacobians_i_r2, tfem_get_reactions_r2, tfem_get_reactions_i
+  private :: tfem_get_reactions_i_r2, tfem_get_contact_forces_r2, tfem_get_contact_forces_i
+  private :: tfem_get_contact_forces_i_r2, tfem_get_contact_nodal_pressures_r2
+  private :: tfem_get_contact_nodal_pressures_i, tfem_get_contact_nodal_pressures_i_r2
+  private :: tfem_get_contact_nodal_tractions_r2, tfem_get_contact_nodal_tractions_i
+  private :: tfem_get_contact_nodal_tractions_i_r2, tfem_get_contact_pair_nodal_pressures_r2
+  private :: tfem_get_contact_pair_nodal_pressures_i, tfem_get_contact_pair_nodal_pressures_i_r2
   private :: tfem_get_contact_pair_nodal_tractions_r2, tfem_get_contact_pair_nodal_tractions_i
-  private :: tfem_get_contact_pair_nodal_tractions_i_r2, tfem_get_contact_slave_nodes_opt
+  private :: tfem_get_contact_pair_nodal_tractions_i_r2, tfem_get_contact_gaps_r2
+  private :: tfem_get_contact_gaps_i, tfem_get_contact_gaps_i_r2, tfem_get_contact_active_r2
+  private :: tfem_get_contact_active_i, tfem_get_contact_active_i_r2, tfem_get_contact_pressure_r2
+  private :: tfem_get_contact_pressure_i, tfem_get_contact_pressure_i_r2
+  private :: tfem_get_contact_elements_r2, tfem_get_contact_elements_i
+  private :: tfem_get_contact_elements_i_r2, tfem_get_contact_shear_r2, tfem_get_contact_shear_i
+  private :: tfem_get_contact_shear_i_r2, tfem_get_contact_friction_state_r2
+  private :: tfem_get_contact_friction_state_i, tfem_get_contact_friction_state_i_r2
+  private :: tfem_get_contact_dissipation_r2, tfem_get_contact_dissipation_i
+  private :: tfem_get_contact_dissipation_i_r2, tfem_get_contact_slave_nodes_opt
   private :: tfem_get_contact_slave_nodes_opt_r2111, tfem_get_contact_slave_nodes_opt_r1211
   private :: tfem_get_contact_slave_nodes_opt_r2211, tfem_get_contact_slave_nodes_opt_r1121
   private :: tfem_get_contact_slave_nodes_opt_r2121, tfem_get_contact_slave_nodes_opt_r1221
@@ -5806,21 +5883,24 @@ module tfem
   private :: tfem_get_contact_slave_nodes_opt_i_r2112, tfem_get_contact_slave_nodes_opt_i_r1212
   private :: tfem_get_contact_slave_nodes_opt_i_r2212, tfem_get_contact_slave_nodes_opt_i_r1122
   private :: tfem_get_contact_slave_nodes_opt_i_r2122, tfem_get_contact_slave_nodes_opt_i_r1222
-  private :: tfem_get_contact_slave_nodes_opt_i_r2222, tfem_get_contact_pair_nodal_pressures_r2
-  private :: tfem_get_contact_pair_nodal_pressures_i, tfem_get_contact_pair_nodal_pressures_i_r2
-  private :: tfem_get_contact_gaps_r2, tfem_get_contact_gaps_i, tfem_get_contact_gaps_i_r2
-  private :: tfem_get_contact_mesh_r2, tfem_get_contact_mesh_i, tfem_get_contact_mesh_i_r2
-  private :: tfem_get_contact_element_pairs_r2, tfem_get_contact_element_pairs_i
-  private :: tfem_get_contact_element_pairs_i_r2, tfem_get_contact_element_apexes_r2
-  private :: tfem_get_contact_element_apexes_i, tfem_get_contact_element_apexes_i_r2
-  private :: tfem_get_contact_pair_bodies_opt, tfem_step_opt, tfem_get_contact_state_r2
+  private :: tfem_get_contact_slave_nodes_opt_i_r2222, tfem_step_opt, tfem_get_contact_state_r2
   private :: tfem_get_contact_state_i, tfem_get_contact_state_i_r2, tfem_set_contact_state_r2
-  private :: tfem_set_contact_state_i, tfem_set_contact_state_i_r2, tfem_get_contact_shear_r2
-  private :: tfem_get_contact_shear_i, tfem_get_contact_shear_i_r2
-  private :: tfem_get_contact_friction_state_r2, tfem_get_contact_friction_state_i
-  private :: tfem_get_contact_friction_state_i_r2, tfem_get_contact_dissipation_r2
-  private :: tfem_get_contact_dissipation_i, tfem_get_contact_dissipation_i_r2
-  private :: tfem_add_contact_pairs_auto_opt, tfem_add_contact_pairs_auto_opt_r2
+  private :: tfem_set_contact_state_i, tfem_set_contact_state_i_r2, tfem_get_system_matrix_size_opt
+  private :: tfem_get_system_matrix_r2111, tfem_get_system_matrix_r1211
+  private :: tfem_get_system_matrix_r2211, tfem_get_system_matrix_r1121
+  private :: tfem_get_system_matrix_r2121, tfem_get_system_matrix_r1221
+  private :: tfem_get_system_matrix_r2221, tfem_get_system_matrix_r1112
+  private :: tfem_get_system_matrix_r2112, tfem_get_system_matrix_r1212
+  private :: tfem_get_system_matrix_r2212, tfem_get_system_matrix_r1122
+  private :: tfem_get_system_matrix_r2122, tfem_get_system_matrix_r1222
+  private :: tfem_get_system_matrix_r2222, tfem_get_system_matrix_i, tfem_get_system_matrix_i_r2111
+  private :: tfem_get_system_matrix_i_r1211, tfem_get_system_matrix_i_r2211
+  private :: tfem_get_system_matrix_i_r1121, tfem_get_system_matrix_i_r2121
+  private :: tfem_get_system_matrix_i_r1221, tfem_get_system_matrix_i_r2221
+  private :: tfem_get_system_matrix_i_r1112, tfem_get_system_matrix_i_r2112
+  private :: tfem_get_system_matrix_i_r1212, tfem_get_system_matrix_i_r2212
+  private :: tfem_get_system_matrix_i_r1122, tfem_get_system_matrix_i_r2122
+  private :: tfem_get_system_matrix_i_r1222, tfem_get_system_matrix_i_r2222
   private :: tfem_contact_last_error_i, tfem_contact_last_error_str, tfem_contact_last_error_str_i
   private :: tfem_contact_last_error_length_no_context, tfem_contact_add_side_opt
   private :: tfem_contact_add_side_opt_r2111, tfem_contact_add_side_opt_r1211
@@ -5893,12 +5973,6 @@ module tfem
     procedure tfem_get_warning_str_i
   end interface tfem_get_warning
 
-  !> Fortran: tfem_solve (documented in module tfem_c). `info` is OPTIONAL: omit it to pass NULL.
-  !! The name is no bind(C) procedure here (for c_funloc: module tfem_c).
-  interface tfem_solve
-    procedure tfem_solve_opt
-  end interface tfem_solve
-
   !> Fortran: tfem_get_sizes (documented in module tfem_c). `n_nodes`, `n_triangles` and
   !! `n_contact_elements` are OPTIONAL: omit them to pass NULL. The name is no bind(C) procedure
   !! here (for c_funloc: module tfem_c).
@@ -5945,6 +6019,77 @@ module tfem
     procedure tfem_get_boundary_edges_opt_i_r12
     procedure tfem_get_boundary_edges_opt_i_r22
   end interface tfem_get_boundary_edges
+
+  !> Fortran: tfem_add_contact_pair (documented in module tfem_c). `pair` is OPTIONAL: omit it to
+  !! pass NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_add_contact_pair
+    procedure tfem_add_contact_pair_opt
+  end interface tfem_add_contact_pair
+
+  !> Fortran: tfem_add_contact_pair_with_mesh (documented in module tfem_c). `pair` and `flipped`
+  !! are OPTIONAL: omit them to pass NULL. `connectivity` may have rank 1 or 2. The name is no
+  !! bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_add_contact_pair_with_mesh
+    procedure tfem_add_contact_pair_with_mesh_opt
+    procedure tfem_add_contact_pair_with_mesh_opt_r2
+  end interface tfem_add_contact_pair_with_mesh
+
+  !> Fortran: tfem_add_contact_pairs_auto (documented in module tfem_c). `tags`, `first` and `count`
+  !! are OPTIONAL: omit them to pass NULL. `tags` may have rank 1 or 2. The name is no bind(C)
+  !! procedure here (for c_funloc: module tfem_c).
+  interface tfem_add_contact_pairs_auto
+    procedure tfem_add_contact_pairs_auto_opt
+    procedure tfem_add_contact_pairs_auto_opt_r2
+  end interface tfem_add_contact_pairs_auto
+
+  !> Fortran: tfem_get_contact_mesh (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_mesh
+    procedure tfem_get_contact_mesh
+    procedure tfem_get_contact_mesh_r2
+    procedure tfem_get_contact_mesh_i
+    procedure tfem_get_contact_mesh_i_r2
+  end interface tfem_get_contact_mesh
+
+  !> Fortran: tfem_get_contact_element_pairs (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_element_pairs
+    procedure tfem_get_contact_element_pairs
+    procedure tfem_get_contact_element_pairs_r2
+    procedure tfem_get_contact_element_pairs_i
+    procedure tfem_get_contact_element_pairs_i_r2
+  end interface tfem_get_contact_element_pairs
+
+  !> Fortran: tfem_get_contact_element_apexes (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_element_apexes
+    procedure tfem_get_contact_element_apexes
+    procedure tfem_get_contact_element_apexes_r2
+    procedure tfem_get_contact_element_apexes_i
+    procedure tfem_get_contact_element_apexes_i_r2
+  end interface tfem_get_contact_element_apexes
+
+  !> Fortran: tfem_get_contact_pair_bodies (documented in module tfem_c). `body_a` and `body_b` are
+  !! OPTIONAL: omit them to pass NULL. The name is no bind(C) procedure here (for c_funloc: module
+  !! tfem_c).
+  interface tfem_get_contact_pair_bodies
+    procedure tfem_get_contact_pair_bodies_opt
+  end interface tfem_get_contact_pair_bodies
+
+  !> Fortran: tfem_solve (documented in module tfem_c). `info` is OPTIONAL: omit it to pass NULL.
+  !! The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_solve
+    procedure tfem_solve_opt
+  end interface tfem_solve
+
+  !> Fortran: tfem_solve_contact (documented in module tfem_c). `options` and `report` are OPTIONAL:
+  !! omit them to pass NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_solve_contact
+    procedure tfem_solve_contact_opt
+  end interface tfem_solve_contact
 
   !> Fortran: tfem_get_displacements (documented in module tfem_c). `length` takes an
   !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
@@ -5996,6 +6141,192 @@ module tfem
     procedure tfem_get_reactions_i_r2
   end interface tfem_get_reactions
 
+  !> Fortran: tfem_get_contact_forces (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_forces
+    procedure tfem_get_contact_forces
+    procedure tfem_get_contact_forces_r2
+    procedure tfem_get_contact_forces_i
+    procedure tfem_get_contact_forces_i_r2
+  end interface tfem_get_contact_forces
+
+  !> Fortran: tfem_get_contact_nodal_pressures (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_nodal_pressures
+    procedure tfem_get_contact_nodal_pressures
+    procedure tfem_get_contact_nodal_pressures_r2
+    procedure tfem_get_contact_nodal_pressures_i
+    procedure tfem_get_contact_nodal_pressures_i_r2
+  end interface tfem_get_contact_nodal_pressures
+
+  !> Fortran: tfem_get_contact_nodal_tractions (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_nodal_tractions
+    procedure tfem_get_contact_nodal_tractions
+    procedure tfem_get_contact_nodal_tractions_r2
+    procedure tfem_get_contact_nodal_tractions_i
+    procedure tfem_get_contact_nodal_tractions_i_r2
+  end interface tfem_get_contact_nodal_tractions
+
+  !> Fortran: tfem_get_contact_pair_nodal_pressures (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_pair_nodal_pressures
+    procedure tfem_get_contact_pair_nodal_pressures
+    procedure tfem_get_contact_pair_nodal_pressures_r2
+    procedure tfem_get_contact_pair_nodal_pressures_i
+    procedure tfem_get_contact_pair_nodal_pressures_i_r2
+  end interface tfem_get_contact_pair_nodal_pressures
+
+  !> Fortran: tfem_get_contact_pair_nodal_tractions (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_pair_nodal_tractions
+    procedure tfem_get_contact_pair_nodal_tractions
+    procedure tfem_get_contact_pair_nodal_tractions_r2
+    procedure tfem_get_contact_pair_nodal_tractions_i
+    procedure tfem_get_contact_pair_nodal_tractions_i_r2
+  end interface tfem_get_contact_pair_nodal_tractions
+
+  !> Fortran: tfem_get_contact_gaps (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_gaps
+    procedure tfem_get_contact_gaps
+    procedure tfem_get_contact_gaps_r2
+    procedure tfem_get_contact_gaps_i
+    procedure tfem_get_contact_gaps_i_r2
+  end interface tfem_get_contact_gaps
+
+  !> Fortran: tfem_get_contact_active (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_active
+    procedure tfem_get_contact_active
+    procedure tfem_get_contact_active_r2
+    procedure tfem_get_contact_active_i
+    procedure tfem_get_contact_active_i_r2
+  end interface tfem_get_contact_active
+
+  !> Fortran: tfem_get_contact_pressure (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_pressure
+    procedure tfem_get_contact_pressure
+    procedure tfem_get_contact_pressure_r2
+    procedure tfem_get_contact_pressure_i
+    procedure tfem_get_contact_pressure_i_r2
+  end interface tfem_get_contact_pressure
+
+  !> Fortran: tfem_get_contact_elements (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_elements
+    procedure tfem_get_contact_elements
+    procedure tfem_get_contact_elements_r2
+    procedure tfem_get_contact_elements_i
+    procedure tfem_get_contact_elements_i_r2
+  end interface tfem_get_contact_elements
+
+  !> Fortran: tfem_get_contact_shear (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_shear
+    procedure tfem_get_contact_shear
+    procedure tfem_get_contact_shear_r2
+    procedure tfem_get_contact_shear_i
+    procedure tfem_get_contact_shear_i_r2
+  end interface tfem_get_contact_shear
+
+  !> Fortran: tfem_get_contact_friction_state (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_friction_state
+    procedure tfem_get_contact_friction_state
+    procedure tfem_get_contact_friction_state_r2
+    procedure tfem_get_contact_friction_state_i
+    procedure tfem_get_contact_friction_state_i_r2
+  end interface tfem_get_contact_friction_state
+
+  !> Fortran: tfem_get_contact_dissipation (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_get_contact_dissipation
+    procedure tfem_get_contact_dissipation
+    procedure tfem_get_contact_dissipation_r2
+    procedure tfem_get_contact_dissipation_i
+    procedure tfem_get_contact_dissipation_i_r2
+  end interface tfem_get_contact_dissipation
+
+  !> Fortran: tfem_get_contact_slave_nodes (documented in module tfem_c). `node`, `tributary`, `gap`
+  !! and `pressure` are OPTIONAL: omit them to pass NULL. `length` takes an integer(c_size_t) or a
+  !! default integer (kind tfem_length_kind); a negative length is passed as 0. `node`, `tributary`,
+  !! `gap` and `pressure` may each have rank 1 or 2. The name is no bind(C) procedure here (for
+  !! c_funloc: module tfem_c).
+  interface tfem_get_contact_slave_nodes
+    procedure tfem_get_contact_slave_nodes_opt
+    procedure tfem_get_contact_slave_nodes_opt_r2111
+    procedure tfem_get_contact_slave_nodes_opt_r1211
+    procedure tfem_get_contact_slave_nodes_opt_r2211
+    procedure tfem_get_contact_slave_nodes_opt_r1121
+    procedure tfem_get_contact_slave_nodes_opt_r2121
+    procedure tfem_get_contact_slave_nodes_opt_r1221
+    procedure tfem_get_contact_slave_nodes_opt_r2221
+    procedure tfem_get_contact_slave_nodes_opt_r1112
+    procedure tfem_get_contact_slave_nodes_opt_r2112
+    procedure tfem_get_contact_slave_nodes_opt_r1212
+    procedure tfem_get_contact_slave_nodes_opt_r2212
+    procedure tfem_get_contact_slave_nodes_opt_r1122
+    procedure tfem_get_contact_slave_nodes_opt_r2122
+    procedure tfem_get_contact_slave_nodes_opt_r1222
+    procedure tfem_get_contact_slave_nodes_opt_r2222
+    procedure tfem_get_contact_slave_nodes_opt_i
+    procedure tfem_get_contact_slave_nodes_opt_i_r2111
+    procedure tfem_get_contact_slave_nodes_opt_i_r1211
+    procedure tfem_get_contact_slave_nodes_opt_i_r2211
+    procedure tfem_get_contact_slave_nodes_opt_i_r1121
+    procedure tfem_get_contact_slave_nodes_opt_i_r2121
+    procedure tfem_get_contact_slave_nodes_opt_i_r1221
+    procedure tfem_get_contact_slave_nodes_opt_i_r2221
+    procedure tfem_get_contact_slave_nodes_opt_i_r1112
+    procedure tfem_get_contact_slave_nodes_opt_i_r2112
+    procedure tfem_get_contact_slave_nodes_opt_i_r1212
+    procedure tfem_get_contact_slave_nodes_opt_i_r2212
+    procedure tfem_get_contact_slave_nodes_opt_i_r1122
+    procedure tfem_get_contact_slave_nodes_opt_i_r2122
+    procedure tfem_get_contact_slave_nodes_opt_i_r1222
+    procedure tfem_get_contact_slave_nodes_opt_i_r2222
+  end interface tfem_get_contact_slave_nodes
+
+  !> Fortran: tfem_step (documented in module tfem_c). `options` and `report` are OPTIONAL: omit
+  !! them to pass NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_step
+    procedure tfem_step_opt
+  end interface tfem_step
+
+  !> Fortran: tfem_get_contact_state (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `buffer` may have rank 1 or 2.
+  interface tfem_get_contact_state
+    procedure tfem_get_contact_state
+    procedure tfem_get_contact_state_r2
+    procedure tfem_get_contact_state_i
+    procedure tfem_get_contact_state_i_r2
+  end interface tfem_get_contact_state
+
+  !> Fortran: tfem_set_contact_state (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `buffer` may have rank 1 or 2.
+  interface tfem_set_contact_state
+    procedure tfem_set_contact_state
+    procedure tfem_set_contact_state_r2
+    procedure tfem_set_contact_state_i
+    procedure tfem_set_contact_state_i_r2
+  end interface tfem_set_contact_state
+
   !> Fortran: tfem_get_system_matrix_size (documented in module tfem_c). `n` and `nnz` are OPTIONAL:
   !! omit them to pass NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
   interface tfem_get_system_matrix_size
@@ -6040,257 +6371,6 @@ module tfem
     procedure tfem_get_system_matrix_i_r1222
     procedure tfem_get_system_matrix_i_r2222
   end interface tfem_get_system_matrix
-
-  !> Fortran: tfem_add_contact_pair (documented in module tfem_c). `pair` is OPTIONAL: omit it to
-  !! pass NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
-  interface tfem_add_contact_pair
-    procedure tfem_add_contact_pair_opt
-  end interface tfem_add_contact_pair
-
-  !> Fortran: tfem_add_contact_pair_with_mesh (documented in module tfem_c). `pair` and `flipped`
-  !! are OPTIONAL: omit them to pass NULL. `connectivity` may have rank 1 or 2. The name is no
-  !! bind(C) procedure here (for c_funloc: module tfem_c).
-  interface tfem_add_contact_pair_with_mesh
-    procedure tfem_add_contact_pair_with_mesh_opt
-    procedure tfem_add_contact_pair_with_mesh_opt_r2
-  end interface tfem_add_contact_pair_with_mesh
-
-  !> Fortran: tfem_solve_contact (documented in module tfem_c). `options` and `report` are OPTIONAL:
-  !! omit them to pass NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
-  interface tfem_solve_contact
-    procedure tfem_solve_contact_opt
-  end interface tfem_solve_contact
-
-  !> Fortran: tfem_get_contact_active (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `out` may have rank 1 or 2.
-  interface tfem_get_contact_active
-    procedure tfem_get_contact_active
-    procedure tfem_get_contact_active_r2
-    procedure tfem_get_contact_active_i
-    procedure tfem_get_contact_active_i_r2
-  end interface tfem_get_contact_active
-
-  !> Fortran: tfem_get_contact_pressure (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `out` may have rank 1 or 2.
-  interface tfem_get_contact_pressure
-    procedure tfem_get_contact_pressure
-    procedure tfem_get_contact_pressure_r2
-    procedure tfem_get_contact_pressure_i
-    procedure tfem_get_contact_pressure_i_r2
-  end interface tfem_get_contact_pressure
-
-  !> Fortran: tfem_get_contact_elements (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `out` may have rank 1 or 2.
-  interface tfem_get_contact_elements
-    procedure tfem_get_contact_elements
-    procedure tfem_get_contact_elements_r2
-    procedure tfem_get_contact_elements_i
-    procedure tfem_get_contact_elements_i_r2
-  end interface tfem_get_contact_elements
-
-  !> Fortran: tfem_get_contact_forces (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `out` may have rank 1 or 2.
-  interface tfem_get_contact_forces
-    procedure tfem_get_contact_forces
-    procedure tfem_get_contact_forces_r2
-    procedure tfem_get_contact_forces_i
-    procedure tfem_get_contact_forces_i_r2
-  end interface tfem_get_contact_forces
-
-  !> Fortran: tfem_get_contact_nodal_pressures (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `out` may have rank 1 or 2.
-  interface tfem_get_contact_nodal_pressures
-    procedure tfem_get_contact_nodal_pressures
-    procedure tfem_get_contact_nodal_pressures_r2
-    procedure tfem_get_contact_nodal_pressures_i
-    procedure tfem_get_contact_nodal_pressures_i_r2
-  end interface tfem_get_contact_nodal_pressures
-
-  !> Fortran: tfem_get_contact_nodal_tractions (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `out` may have rank 1 or 2.
-  interface tfem_get_contact_nodal_tractions
-    procedure tfem_get_contact_nodal_tractions
-    procedure tfem_get_contact_nodal_tractions_r2
-    procedure tfem_get_contact_nodal_tractions_i
-    procedure tfem_get_contact_nodal_tractions_i_r2
-  end interface tfem_get_contact_nodal_tractions
-
-  !> Fortran: tfem_get_contact_pair_nodal_tractions (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `out` may have rank 1 or 2.
-  interface tfem_get_contact_pair_nodal_tractions
-    procedure tfem_get_contact_pair_nodal_tractions
-    procedure tfem_get_contact_pair_nodal_tractions_r2
-    procedure tfem_get_contact_pair_nodal_tractions_i
-    procedure tfem_get_contact_pair_nodal_tractions_i_r2
-  end interface tfem_get_contact_pair_nodal_tractions
-
-  !> Fortran: tfem_get_contact_slave_nodes (documented in module tfem_c). `node`, `tributary`, `gap`
-  !! and `pressure` are OPTIONAL: omit them to pass NULL. `length` takes an integer(c_size_t) or a
-  !! default integer (kind tfem_length_kind); a negative length is passed as 0. `node`, `tributary`,
-  !! `gap` and `pressure` may each have rank 1 or 2. The name is no bind(C) procedure here (for
-  !! c_funloc: module tfem_c).
-  interface tfem_get_contact_slave_nodes
-    procedure tfem_get_contact_slave_nodes_opt
-    procedure tfem_get_contact_slave_nodes_opt_r2111
-    procedure tfem_get_contact_slave_nodes_opt_r1211
-    procedure tfem_get_contact_slave_nodes_opt_r2211
-    procedure tfem_get_contact_slave_nodes_opt_r1121
-    procedure tfem_get_contact_slave_nodes_opt_r2121
-    procedure tfem_get_contact_slave_nodes_opt_r1221
-    procedure tfem_get_contact_slave_nodes_opt_r2221
-    procedure tfem_get_contact_slave_nodes_opt_r1112
-    procedure tfem_get_contact_slave_nodes_opt_r2112
-    procedure tfem_get_contact_slave_nodes_opt_r1212
-    procedure tfem_get_contact_slave_nodes_opt_r2212
-    procedure tfem_get_contact_slave_nodes_opt_r1122
-    procedure tfem_get_contact_slave_nodes_opt_r2122
-    procedure tfem_get_contact_slave_nodes_opt_r1222
-    procedure tfem_get_contact_slave_nodes_opt_r2222
-    procedure tfem_get_contact_slave_nodes_opt_i
-    procedure tfem_get_contact_slave_nodes_opt_i_r2111
-    procedure tfem_get_contact_slave_nodes_opt_i_r1211
-    procedure tfem_get_contact_slave_nodes_opt_i_r2211
-    procedure tfem_get_contact_slave_nodes_opt_i_r1121
-    procedure tfem_get_contact_slave_nodes_opt_i_r2121
-    procedure tfem_get_contact_slave_nodes_opt_i_r1221
-    procedure tfem_get_contact_slave_nodes_opt_i_r2221
-    procedure tfem_get_contact_slave_nodes_opt_i_r1112
-    procedure tfem_get_contact_slave_nodes_opt_i_r2112
-    procedure tfem_get_contact_slave_nodes_opt_i_r1212
-    procedure tfem_get_contact_slave_nodes_opt_i_r2212
-    procedure tfem_get_contact_slave_nodes_opt_i_r1122
-    procedure tfem_get_contact_slave_nodes_opt_i_r2122
-    procedure tfem_get_contact_slave_nodes_opt_i_r1222
-    procedure tfem_get_contact_slave_nodes_opt_i_r2222
-  end interface tfem_get_contact_slave_nodes
-
-  !> Fortran: tfem_get_contact_pair_nodal_pressures (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `out` may have rank 1 or 2.
-  interface tfem_get_contact_pair_nodal_pressures
-    procedure tfem_get_contact_pair_nodal_pressures
-    procedure tfem_get_contact_pair_nodal_pressures_r2
-    procedure tfem_get_contact_pair_nodal_pressures_i
-    procedure tfem_get_contact_pair_nodal_pressures_i_r2
-  end interface tfem_get_contact_pair_nodal_pressures
-
-  !> Fortran: tfem_get_contact_gaps (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `out` may have rank 1 or 2.
-  interface tfem_get_contact_gaps
-    procedure tfem_get_contact_gaps
-    procedure tfem_get_contact_gaps_r2
-    procedure tfem_get_contact_gaps_i
-    procedure tfem_get_contact_gaps_i_r2
-  end interface tfem_get_contact_gaps
-
-  !> Fortran: tfem_get_contact_mesh (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `out` may have rank 1 or 2.
-  interface tfem_get_contact_mesh
-    procedure tfem_get_contact_mesh
-    procedure tfem_get_contact_mesh_r2
-    procedure tfem_get_contact_mesh_i
-    procedure tfem_get_contact_mesh_i_r2
-  end interface tfem_get_contact_mesh
-
-  !> Fortran: tfem_get_contact_element_pairs (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `out` may have rank 1 or 2.
-  interface tfem_get_contact_element_pairs
-    procedure tfem_get_contact_element_pairs
-    procedure tfem_get_contact_element_pairs_r2
-    procedure tfem_get_contact_element_pairs_i
-    procedure tfem_get_contact_element_pairs_i_r2
-  end interface tfem_get_contact_element_pairs
-
-  !> Fortran: tfem_get_contact_element_apexes (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `out` may have rank 1 or 2.
-  interface tfem_get_contact_element_apexes
-    procedure tfem_get_contact_element_apexes
-    procedure tfem_get_contact_element_apexes_r2
-    procedure tfem_get_contact_element_apexes_i
-    procedure tfem_get_contact_element_apexes_i_r2
-  end interface tfem_get_contact_element_apexes
-
-  !> Fortran: tfem_get_contact_pair_bodies (documented in module tfem_c). `body_a` and `body_b` are
-  !! OPTIONAL: omit them to pass NULL. The name is no bind(C) procedure here (for c_funloc: module
-  !! tfem_c).
-  interface tfem_get_contact_pair_bodies
-    procedure tfem_get_contact_pair_bodies_opt
-  end interface tfem_get_contact_pair_bodies
-
-  !> Fortran: tfem_step (documented in module tfem_c). `options` and `report` are OPTIONAL: omit
-  !! them to pass NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
-  interface tfem_step
-    procedure tfem_step_opt
-  end interface tfem_step
-
-  !> Fortran: tfem_get_contact_state (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `buffer` may have rank 1 or 2.
-  interface tfem_get_contact_state
-    procedure tfem_get_contact_state
-    procedure tfem_get_contact_state_r2
-    procedure tfem_get_contact_state_i
-    procedure tfem_get_contact_state_i_r2
-  end interface tfem_get_contact_state
-
-  !> Fortran: tfem_set_contact_state (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `buffer` may have rank 1 or 2.
-  interface tfem_set_contact_state
-    procedure tfem_set_contact_state
-    procedure tfem_set_contact_state_r2
-    procedure tfem_set_contact_state_i
-    procedure tfem_set_contact_state_i_r2
-  end interface tfem_set_contact_state
-
-  !> Fortran: tfem_get_contact_shear (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `out` may have rank 1 or 2.
-  interface tfem_get_contact_shear
-    procedure tfem_get_contact_shear
-    procedure tfem_get_contact_shear_r2
-    procedure tfem_get_contact_shear_i
-    procedure tfem_get_contact_shear_i_r2
-  end interface tfem_get_contact_shear
-
-  !> Fortran: tfem_get_contact_friction_state (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `out` may have rank 1 or 2.
-  interface tfem_get_contact_friction_state
-    procedure tfem_get_contact_friction_state
-    procedure tfem_get_contact_friction_state_r2
-    procedure tfem_get_contact_friction_state_i
-    procedure tfem_get_contact_friction_state_i_r2
-  end interface tfem_get_contact_friction_state
-
-  !> Fortran: tfem_get_contact_dissipation (documented in module tfem_c). `length` takes an
-  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
-  !! 0. `out` may have rank 1 or 2.
-  interface tfem_get_contact_dissipation
-    procedure tfem_get_contact_dissipation
-    procedure tfem_get_contact_dissipation_r2
-    procedure tfem_get_contact_dissipation_i
-    procedure tfem_get_contact_dissipation_i_r2
-  end interface tfem_get_contact_dissipation
-
-  !> Fortran: tfem_add_contact_pairs_auto (documented in module tfem_c). `tags`, `first` and `count`
-  !! are OPTIONAL: omit them to pass NULL. `tags` may have rank 1 or 2. The name is no bind(C)
-  !! procedure here (for c_funloc: module tfem_c).
-  interface tfem_add_contact_pairs_auto
-    procedure tfem_add_contact_pairs_auto_opt
-    procedure tfem_add_contact_pairs_auto_opt_r2
-  end interface tfem_add_contact_pairs_auto
 
   !> Fortran: tfem_contact_last_error (documented in module tfem_c). `length` takes an
   !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as

@@ -1,6 +1,21 @@
 /*
  * tfem -- the Tempered Finite Element Method for 2D elasticity and
- * frictionless contact. C ABI.
+ * contact, frictionless or with Coulomb friction. C ABI.
+ *
+ * Overview
+ * - Two objects. A tfem_model holds a whole problem: the mesh and its
+ *   bodies, materials, loads and constraints, contact pairs, and the
+ *   results of its last solve or load step. A tfem_contact is the contact
+ *   context of a host code that keeps its own elements and solver: it
+ *   gives back contact stiffness and forces to add to the host's system.
+ * - Phases of a model: describe it (mesh, materials, loads and
+ *   constraints, contact pairs), solve it (tfem_solve, tfem_solve_contact,
+ *   or a load history of tfem_step), read the results (computed when
+ *   asked). Any change to the description discards the results.
+ * - The entry points below stand in groups, in that order, each under a
+ *   head: lifecycle, mesh, materials, loads and constraints, contact pairs,
+ *   solve, results, contact results, load history, utilities, and the
+ *   host codes' contact context.
  *
  * Conventions
  * - Every function returns a tfem_status; TFEM_STATUS_OK (0) is success.
@@ -305,6 +320,45 @@ typedef struct tfem_contact tfem_contact;
 typedef struct tfem_model tfem_model;
 
 /**
+ * Options of `tfem_solve_contact`. Fill with `tfem_contact_options_default`
+ * and change what you need.
+ */
+typedef struct tfem_contact_options {
+  /**
+   * A `ContactLaw` value: 0 = frictionless (default), 1 = stick.
+   */
+  int law;
+  /**
+   * E_c of the contact elements; 0 = the smaller E of the two bodies, or
+   * where one side of a pair has every DOF of its contact nodes prescribed
+   * (a rigid tool) the other body's E, so that a rigid tool's nominal E
+   * does not set the penalty. The
+   * host contact context (`tfem_contact_set_options`) still takes the
+   * smaller E of its two sides: give a rigid side its neighbour's E, or
+   * set `contact_modulus`.
+   */
+  double contact_modulus;
+  /**
+   * λ of the contact elements (Jmin = h³/λ), model length units; 0 = the
+   * larger side of the mesh's bounding box.
+   */
+  double lambda;
+  /**
+   * An `InversionTest` value: 0 = linearised J (default), 1 = literal J.
+   */
+  int inversion_test;
+  /**
+   * Cap on active-set iterations (default 50).
+   */
+  int max_iterations;
+  /**
+   * 1 = refactorise the matrix at every active-set iteration; 0 (default)
+   * = condense the changes on the contact interface (faster, exact).
+   */
+  int refactorize;
+} tfem_contact_options;
+
+/**
  * Statistics of a solve. Times are wall-clock seconds.
  */
 typedef struct tfem_solve_info {
@@ -372,45 +426,6 @@ typedef struct tfem_solve_info {
 } tfem_solve_info;
 
 /**
- * Options of `tfem_solve_contact`. Fill with `tfem_contact_options_default`
- * and change what you need.
- */
-typedef struct tfem_contact_options {
-  /**
-   * A `ContactLaw` value: 0 = frictionless (default), 1 = stick.
-   */
-  int law;
-  /**
-   * E_c of the contact elements; 0 = the smaller E of the two bodies, or
-   * where one side of a pair has every DOF of its contact nodes prescribed
-   * (a rigid tool) the other body's E, so that a rigid tool's nominal E
-   * does not set the penalty. The
-   * host contact context (`tfem_contact_set_options`) still takes the
-   * smaller E of its two sides: give a rigid side its neighbour's E, or
-   * set `contact_modulus`.
-   */
-  double contact_modulus;
-  /**
-   * λ of the contact elements (Jmin = h³/λ), model length units; 0 = the
-   * larger side of the mesh's bounding box.
-   */
-  double lambda;
-  /**
-   * An `InversionTest` value: 0 = linearised J (default), 1 = literal J.
-   */
-  int inversion_test;
-  /**
-   * Cap on active-set iterations (default 50).
-   */
-  int max_iterations;
-  /**
-   * 1 = refactorise the matrix at every active-set iteration; 0 (default)
-   * = condense the changes on the contact interface (faster, exact).
-   */
-  int refactorize;
-} tfem_contact_options;
-
-/**
  * Report of `tfem_solve_contact`.
  */
 typedef struct tfem_contact_report {
@@ -453,6 +468,13 @@ typedef struct tfem_contact_report {
 #ifdef __cplusplus
 extern "C" {
 #endif // __cplusplus
+
+/****************************************************************************
+ * Lifecycle, errors and warnings: a model is created, used from one thread
+ * at a time, and destroyed; every call returns a tfem_status, the message of
+ * the last failed one is tfem_last_error's, and warnings (something really
+ * wrong that did not stop the call) are kept until the next solve or change.
+ ***************************************************************************/
 
 /**
  * The library version as a static NUL-terminated string ("major.minor.patch").
@@ -529,6 +551,28 @@ enum tfem_status tfem_get_warning_size(struct tfem_model *model, int index, size
 enum tfem_status tfem_get_warning(struct tfem_model *model, int index, char *buffer, size_t length);
 
 /**
+ * Sets the number of threads the model's solves run on: 1 <= `threads`
+ * <= 1024 gives the model a pool of its own (1: no parallelism at all, for a
+ * host that runs its own OpenMP or MPI threads); 0 (the default) uses
+ * the process-wide pool, with as many threads as cores or the
+ * environment variable RAYON_NUM_THREADS. Results do not depend on it
+ * beyond round-off, and are kept.
+ */
+enum tfem_status tfem_set_threads(struct tfem_model *model, int threads);
+
+/**
+ * Writes the number of threads the model's solves run on (see
+ * `tfem_set_threads`).
+ */
+enum tfem_status tfem_get_threads(struct tfem_model *model, int *threads);
+
+/****************************************************************************
+ * Mesh: nodes, triangles and their bodies (tfem_set_mesh, or a Gmsh file),
+ * and the tagged boundary edges that loads, constraints and contact pairs
+ * name.
+ ***************************************************************************/
+
+/**
  * Sets the mesh: `n_nodes` nodes with coordinates `xy` (2·n_nodes values,
  * x0 y0 x1 y1 …), `n_triangles` P1 triangles with `connectivity`
  * (3·n_triangles node indices) and a body tag per triangle in
@@ -578,38 +622,6 @@ enum tfem_status tfem_set_mesh(struct tfem_model *model,
 enum tfem_status tfem_load_gmsh(struct tfem_model *model, const char *path, int index_base);
 
 /**
- * Writes the solved model to the file `path` (NUL-terminated; on Unix any
- * bytes, as for `tfem_load_gmsh`) as a VTK XML unstructured grid (`.vtu`,
- * read by ParaView, VTK and meshio; binary: raw appended data,
- * little-endian, UInt64 block headers, no compression):
- * the mesh in its initial configuration (z = 0) with
- * - point data `displacement` ([u, v, 0]) and, after a contact solve or
- *   load step under either weighting, `contact_pressure` (the nodal
- *   pressure of `tfem_get_contact_nodal_pressures`), `contact_shear`
- *   (the nodal shear of `tfem_get_contact_nodal_tractions`),
- *   `contact_force` ([f_x, f_y, 0], `tfem_get_contact_forces`) and
- *   `contact_gap` (`tfem_get_contact_gaps`); none of them after a solve
- *   without contact;
- * - cell data `body` (the body tag), `J` (twice the signed area), `strain`
- *   [ε_xx, ε_yy, γ_xy] and `stress` [σ_xx, σ_yy, σ_xy];
- * - for the pairs weighted by B, its elements
- *   appended after the body triangles as cells of body −1 (zero strain
- *   and stress), with cell data `contact_element_active` (UInt8, 1 where
- *   active) and `contact_element_pressure` (`tfem_get_contact_active`,
- *   `tfem_get_contact_pressure`; 0 on the body triangles). Pairs under
- *   the mortar weighting have no B: their contact is in the nodal arrays.
- *
- * (Earlier versions named the last two `contact_active` and
- * `contact_pressure`, wrote them as zeros under the mortar weighting,
- * and wrote no nodal contact array.)
- * Returns TFEM_STATUS_INVALID_STATE before a solve (nothing is written),
- * TFEM_STATUS_IO when the file cannot be written (the message names it
- * and the reason), TFEM_STATUS_INVALID_ARGUMENT if the library was built
- * without the `vtu` feature. The model is never changed.
- */
-enum tfem_status tfem_write_vtu(struct tfem_model *model, const char *path);
-
-/**
  * Sets the tagged boundary edges: `n_edges` edges given by `edge_nodes`
  * (2·n_edges node indices) with a tag each in `tags`. Tags name the edges
  * for loads, constraints and contact pairs. Replaces previous edges (use
@@ -625,93 +637,16 @@ enum tfem_status tfem_set_boundary_edges(struct tfem_model *model,
                                          const int *tags);
 
 /**
- * Sets the material of body `body`: Young's modulus `young` (> 0), Poisson
- * ratio `poisson` (in (-1, 0.5) for plane strain, (-1, 0.5] for plane
- * stress) and `plane` (a `PlaneMode`: 0 strain, 1 stress).
+ * Adds tagged boundary edges to those already set (see
+ * `tfem_set_boundary_edges`): `n_edges` edges given by `edge_nodes`
+ * (2·n_edges node indices) with a tag each in `tags`, for instance one
+ * call per boundary group. An edge given again with a tag it already has
+ * is refused (its loads would count twice); on any error nothing changes.
  */
-enum tfem_status tfem_set_material(struct tfem_model *model,
-                                   int body,
-                                   double young,
-                                   double poisson,
-                                   int plane_mode);
-
-/**
- * Chooses Jmin: `mode` is a `TemperingMode` (0 auto, 1 lambda = `value`,
- * 2 fixed Jmin = `value`, 3 off); `value` is ignored for 0 and 3.
- */
-enum tfem_status tfem_set_tempering(struct tfem_model *model, int mode, double value);
-
-/**
- * Chooses the fill-reducing ordering: `ordering` is an `OrderingMode`
- * (0 auto, 1 AMD, 2 nested dissection); `parallel_subtrees` = 1 (default)
- * factorises the two subtrees of a nested dissection concurrently, 0 as
- * one tree. Results do not depend on either beyond round-off: the results
- * of the last solve (all of them, the matrix included) are kept, and the
- * next solve analyses the matrix anew.
- */
-enum tfem_status tfem_set_ordering(struct tfem_model *model, int ordering, int parallel_subtrees);
-
-/**
- * Prescribes displacement component `component` (0 x, 1 y) of `node` to
- * `value` (model length units). A component already prescribed a
- * different value is refused (TFEM_STATUS_INVALID_ARGUMENT naming the
- * node): one of the two would silently win. Call `tfem_clear_constraints`
- * to change prescribed values.
- */
-enum tfem_status tfem_fix(struct tfem_model *model, int node, int comp, double value);
-
-/**
- * Prescribes component `component` to `value` on every node of the
- * boundary edges tagged `tag` (interior edges too). All or nothing: a node
- * already prescribed a different value (see `tfem_fix`) refuses the
- * whole call.
- */
-enum tfem_status tfem_fix_edges(struct tfem_model *model, int tag, int comp, double value);
-
-/**
- * Removes every prescribed displacement.
- */
-enum tfem_status tfem_clear_constraints(struct tfem_model *model);
-
-/**
- * Applies pressure `pressure` on the boundary edges tagged `tag`: a
- * stress (force per unit area, Pa in SI), positive pushing into the body;
- * with the 2D convention of unit thickness, an edge of length ℓ carries
- * the force ℓ·pressure per unit thickness. Loads add up.
- */
-enum tfem_status tfem_add_pressure(struct tfem_model *model, int tag, double pressure);
-
-/**
- * Applies the traction (tx, ty) on the boundary edges tagged `tag`: a
- * stress vector (force per unit area, Pa in SI); an edge of length ℓ
- * carries ℓ·(tx, ty) per unit thickness. Loads add up.
- */
-enum tfem_status tfem_add_traction(struct tfem_model *model, int tag, double tx, double ty);
-
-/**
- * Adds the point force (fx, fy) at `node`: force per unit thickness (N/m
- * in SI). Loads add up.
- */
-enum tfem_status tfem_add_nodal_force(struct tfem_model *model, int node, double fx, double fy);
-
-/**
- * Sets the body force (bx, by) of body `body`: force per unit volume (ρg,
- * N/m³ in SI), acting on each unit area of the mesh per unit thickness.
- */
-enum tfem_status tfem_set_body_force(struct tfem_model *model, int body, double bx, double by);
-
-/**
- * Removes every load.
- */
-enum tfem_status tfem_clear_loads(struct tfem_model *model);
-
-/**
- * Solves a scene without contact. `info` may be NULL. A body that is not
- * restrained gives TFEM_STATUS_SINGULAR naming it. A model with every
- * DOF prescribed has nothing to solve: TFEM_STATUS_INVALID_STATE; so also
- * `tfem_solve_contact` and `tfem_step`.
- */
-enum tfem_status tfem_solve(struct tfem_model *model, struct tfem_solve_info *info);
+enum tfem_status tfem_add_boundary_edges(struct tfem_model *model,
+                                         int n_edges,
+                                         const int *edge_nodes,
+                                         const int *tags);
 
 /**
  * Sizes: nodes, triangles, and elements of the contact mesh of the last
@@ -765,6 +700,313 @@ enum tfem_status tfem_get_boundary_edges(struct tfem_model *model,
                                          int *tags,
                                          size_t tags_length);
 
+/****************************************************************************
+ * Materials, tempering and ordering: one material per body; the tempering of
+ * degenerate triangles; the fill-reducing ordering.
+ ***************************************************************************/
+
+/**
+ * Sets the material of body `body`: Young's modulus `young` (> 0), Poisson
+ * ratio `poisson` (in (-1, 0.5) for plane strain, (-1, 0.5] for plane
+ * stress) and `plane` (a `PlaneMode`: 0 strain, 1 stress).
+ */
+enum tfem_status tfem_set_material(struct tfem_model *model,
+                                   int body,
+                                   double young,
+                                   double poisson,
+                                   int plane_mode);
+
+/**
+ * Chooses Jmin: `mode` is a `TemperingMode` (0 auto, 1 lambda = `value`,
+ * 2 fixed Jmin = `value`, 3 off); `value` is ignored for 0 and 3.
+ */
+enum tfem_status tfem_set_tempering(struct tfem_model *model, int mode, double value);
+
+/**
+ * Chooses the fill-reducing ordering: `ordering` is an `OrderingMode`
+ * (0 auto, 1 AMD, 2 nested dissection); `parallel_subtrees` = 1 (default)
+ * factorises the two subtrees of a nested dissection concurrently, 0 as
+ * one tree. Results do not depend on either beyond round-off: the results
+ * of the last solve (all of them, the matrix included) are kept, and the
+ * next solve analyses the matrix anew.
+ */
+enum tfem_status tfem_set_ordering(struct tfem_model *model, int ordering, int parallel_subtrees);
+
+/****************************************************************************
+ * Loads and constraints: prescribed displacements per node or per tag, and
+ * their values changed along a load history; pressures, tractions, nodal and
+ * body forces.
+ ***************************************************************************/
+
+/**
+ * Prescribes displacement component `component` (0 x, 1 y) of `node` to
+ * `value` (model length units). A component already prescribed a
+ * different value is refused (TFEM_STATUS_INVALID_ARGUMENT naming the
+ * node): one of the two would silently win. Call `tfem_clear_constraints`
+ * to change prescribed values.
+ */
+enum tfem_status tfem_fix(struct tfem_model *model, int node, int comp, double value);
+
+/**
+ * Prescribes component `component` to `value` on every node of the
+ * boundary edges tagged `tag` (interior edges too). All or nothing: a node
+ * already prescribed a different value (see `tfem_fix`) refuses the
+ * whole call.
+ */
+enum tfem_status tfem_fix_edges(struct tfem_model *model, int tag, int comp, double value);
+
+/**
+ * Changes the value of displacement component `comp` (0 x, 1 y) of
+ * `node`, prescribed before by `tfem_fix` or `tfem_fix_edges`: the loads of
+ * a non-proportional load history, which goes on with the same
+ * factorisation (the set of prescribed DOFs is unchanged). A node not
+ * prescribed in that component is refused, naming it.
+ */
+enum tfem_status tfem_set_prescribed(struct tfem_model *model, int node, int comp, double value);
+
+/**
+ * Changes the value of displacement component `comp` (0 x, 1 y) on every
+ * node of the boundary edges tagged `tag`, each prescribed before by
+ * `tfem_fix_edges` or `tfem_fix`: `tfem_set_prescribed` for a whole tag,
+ * the loads of a load history given as `tfem_fix_edges` gives them (the
+ * factorisation is kept). All or nothing: an unknown tag, a value that is
+ * not finite or a node not prescribed in that component is refused
+ * (TFEM_STATUS_INVALID_ARGUMENT naming it) and the model is unchanged.
+ */
+enum tfem_status tfem_set_prescribed_edges(struct tfem_model *model,
+                                           int tag,
+                                           int comp,
+                                           double value);
+
+/**
+ * Removes every prescribed displacement.
+ */
+enum tfem_status tfem_clear_constraints(struct tfem_model *model);
+
+/**
+ * Applies pressure `pressure` on the boundary edges tagged `tag`: a
+ * stress (force per unit area, Pa in SI), positive pushing into the body;
+ * with the 2D convention of unit thickness, an edge of length ℓ carries
+ * the force ℓ·pressure per unit thickness. Loads add up.
+ */
+enum tfem_status tfem_add_pressure(struct tfem_model *model, int tag, double pressure);
+
+/**
+ * Applies the traction (tx, ty) on the boundary edges tagged `tag`: a
+ * stress vector (force per unit area, Pa in SI); an edge of length ℓ
+ * carries ℓ·(tx, ty) per unit thickness. Loads add up.
+ */
+enum tfem_status tfem_add_traction(struct tfem_model *model, int tag, double tx, double ty);
+
+/**
+ * Adds the point force (fx, fy) at `node`: force per unit thickness (N/m
+ * in SI). Loads add up.
+ */
+enum tfem_status tfem_add_nodal_force(struct tfem_model *model, int node, double fx, double fy);
+
+/**
+ * Sets the body force (bx, by) of body `body`: force per unit volume (ρg,
+ * N/m³ in SI), acting on each unit area of the mesh per unit thickness.
+ */
+enum tfem_status tfem_set_body_force(struct tfem_model *model, int body, double bx, double by);
+
+/**
+ * Removes every load.
+ */
+enum tfem_status tfem_clear_loads(struct tfem_model *model);
+
+/****************************************************************************
+ * Contact pairs: the interfaces between bodies (declared, or found by
+ * tfem_add_contact_pairs_auto), their friction and weighting, and the
+ * contact mesh B the strip weighting makes. These are the model's own
+ * contact pairs, solved by tfem_solve_contact and tfem_step; a host code
+ * with its own elements and solver uses the contact context (tfem_contact_*)
+ * at the end of the header instead.
+ ***************************************************************************/
+
+/**
+ * Declares a potential contact interface between the boundary edges tagged
+ * `tag_a` (one body) and `tag_b` (another body). The contact mesh B is
+ * built from matching nodes when they match (a small normal gap is
+ * allowed), else by triangulating the strip between the two interfaces
+ * (each must be one open chain of edges). Writes the pair's index
+ * (0-based) to `pair` (may be NULL). A pair declared already, or one
+ * whose tags share boundary edges with both tags of a declared pair (the
+ * same interface under other tags, which would count twice), is refused
+ * with TFEM_STATUS_INVALID_CONTACT.
+ */
+enum tfem_status tfem_add_contact_pair(struct tfem_model *model, int tag_a, int tag_b, int *pair);
+
+/**
+ * Declares a contact pair with a user-made contact mesh B: `n_triangles`
+ * triangles in `connectivity` (3 per triangle) over nodes of the two
+ * interfaces. Wrongly oriented triangles are flipped; their number goes to
+ * `flipped` (may be NULL), the pair's index to `pair` (may be NULL). A
+ * triangle given twice (the same three nodes, in any order) is refused
+ * with TFEM_STATUS_INVALID_CONTACT naming both triangles. The triangles
+ * are the contact: a pair of tags declared already, or sharing edges with
+ * a declared pair, is not refused here (several meshes may cover parts of
+ * one interface), so do not give a part twice.
+ */
+enum tfem_status tfem_add_contact_pair_with_mesh(struct tfem_model *model,
+                                                 int tag_a,
+                                                 int tag_b,
+                                                 int n_triangles,
+                                                 const int *connectivity,
+                                                 int *pair,
+                                                 int *flipped);
+
+/**
+ * Declares a contact pair for every two boundary tags of different bodies
+ * whose edges face each other within `tolerance` (model length units: some
+ * edge of the one within `tolerance` of some edge of the other, outward
+ * normals opposed within 30°, each in front of the other, overlapping
+ * along the interface, no third body between them; a gap of exactly
+ * `tolerance` pairs; docs/method.md §6.16). `tags` (`n_tags` values) restricts the search to
+ * those tags; with `n_tags` = 0 every tag that can be a contact side is
+ * considered, and `tags` may be NULL. Pairs already declared are skipped,
+ * tags of one body never pair, and an interface found again under tags
+ * that share its edges with a pair kept (a "whole boundary" group beside
+ * the faces) is skipped: the pair of tags with the fewest edges is kept
+ * (to pair an interface under other tags, declare that pair by hand
+ * instead). What is left out without an error — with `n_tags` = 0, a tag
+ * whose edges bound several bodies; an interface found again under other
+ * tags — is named in a warning (`tfem_warning_count`, `tfem_get_warning`).
+ * The pairs added get consecutive indices:
+ * writes the first to `first` (may be NULL) and their number, 0 when
+ * nothing faces within the tolerance, to `count` (may be NULL). A negative
+ * or non-finite tolerance, an unknown tag or an interface whose contact
+ * mesh cannot be built is refused, naming it, and nothing is added.
+ */
+enum tfem_status tfem_add_contact_pairs_auto(struct tfem_model *model,
+                                             int n_tags,
+                                             const int *tags,
+                                             double tolerance,
+                                             int *first,
+                                             int *count);
+
+/**
+ * Sets Coulomb's friction coefficient μ ≥ 0 of contact pair `pair`
+ * (0-based, from `tfem_add_contact_pair`): stick while the shear stays
+ * within μ times the pressure, slip against the slip of the step beyond
+ * (docs/method.md §6.15). 0, the default, is frictionless, bit for bit.
+ * A negative or non-finite μ, or an unknown pair, is refused
+ * (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load
+ * history. Frictional or not, the elements of a pair's contact mesh
+ * measure every point of the interface along the first side's normal
+ * there, so that a frictionless interface transmits no tangential
+ * traction.
+ */
+enum tfem_status tfem_set_friction(struct tfem_model *model, int pair, double mu);
+
+/**
+ * Chooses how the contact pairs' energy is weighted along their
+ * interfaces: `weighting` is a `ContactWeightingMode`. 2 automatic, the
+ * default: each pair what is right for it — the elements of the contact
+ * mesh B (the seed's method) where the two sides' nodes match, one
+ * weighted gap per node of the interface's coarser side where they do not
+ * (exact on the contact patch test whatever the meshes, converging on
+ * curved interfaces where B reads one side only), B for a pair with
+ * friction or a contact mesh of its own. 0 strip and 1 mortar force one
+ * weighting on every pair (an expert's override). A change discards the
+ * results, like any change of the contact pairs. The mortar weighting is
+ * frictionless and makes no mesh B: forcing it with a pair that has
+ * friction or a contact mesh of its own, or giving such a pair under it,
+ * is refused by that call (TFEM_ERR_ARGUMENT, naming the pair); a solve
+ * under it with the stick law or the literal inversion test is refused
+ * too. The per-element outputs (`tfem_get_contact_active`,
+ * `tfem_get_contact_pressure`, `tfem_get_contact_elements`, shear,
+ * friction state, dissipation; `tfem_get_sizes`' contact elements) cover
+ * the pairs weighted by B, and are refused when no pair is
+ * (`tfem_get_contact_mesh` still gives the B the pairs would make); the
+ * state of the others is per slave node (`tfem_get_contact_slave_nodes`).
+ * Nodal pressures, gaps and forces, reactions and the report cover every
+ * pair, the report's `elements` counting elements of B and slave nodes.
+ */
+enum tfem_status tfem_set_contact_weighting(struct tfem_model *model, int weighting);
+
+/**
+ * Writes the contact weighting (a `ContactWeightingMode`: 0 strip, 1
+ * mortar, 2 automatic, the default) into `*weighting`.
+ */
+enum tfem_status tfem_get_contact_weighting(struct tfem_model *model, int *weighting);
+
+/**
+ * Writes the number of elements of the contact mesh B of the declared
+ * contact pairs, available before any solve (0 without pairs).
+ */
+enum tfem_status tfem_get_contact_mesh_size(struct tfem_model *model, int *n_elements);
+
+/**
+ * Copies the nodes of every element of the contact mesh B of the declared
+ * contact pairs (3 per element, in the model's index base, oriented so
+ * that J > 0 when the gap opens), available before any solve: the same
+ * elements, in the same order, as `tfem_get_contact_elements` gives after
+ * a contact solve.
+ */
+enum tfem_status tfem_get_contact_mesh(struct tfem_model *model, int *out, size_t length);
+
+/**
+ * Copies, for every element of the contact mesh B (see
+ * `tfem_get_contact_mesh`), the index of its contact pair (0-based, as
+ * returned by `tfem_add_contact_pair`, whatever the index base).
+ */
+enum tfem_status tfem_get_contact_element_pairs(struct tfem_model *model, int *out, size_t length);
+
+/**
+ * Copies, for every element of the contact mesh B (see
+ * `tfem_get_contact_mesh`), its apex: the node (in the model's index
+ * base) alone on its side of the interface, whose distance from the
+ * element's interface edge is the element's gap.
+ */
+enum tfem_status tfem_get_contact_element_apexes(struct tfem_model *model, int *out, size_t length);
+
+/**
+ * Writes the bodies of contact pair `pair` (0-based, as returned by
+ * `tfem_add_contact_pair`): `body_a` carries the pair's first tag,
+ * `body_b` its second. Either pointer may be NULL.
+ */
+enum tfem_status tfem_get_contact_pair_bodies(struct tfem_model *model,
+                                              int pair,
+                                              int *body_a,
+                                              int *body_b);
+
+/****************************************************************************
+ * Solve: without contact (tfem_solve) or with it (tfem_solve_contact, one
+ * load; tfem_step for a load history, below).
+ ***************************************************************************/
+
+/**
+ * Fills `options` with the defaults: frictionless law, E_c and λ derived
+ * from the model, linearised inversion test, 50 iterations.
+ */
+enum tfem_status tfem_contact_options_default(struct tfem_contact_options *options);
+
+/**
+ * Solves a scene without contact. `info` may be NULL. A body that is not
+ * restrained gives TFEM_STATUS_SINGULAR naming it. A model with every
+ * DOF prescribed has nothing to solve: TFEM_STATUS_INVALID_STATE; so also
+ * `tfem_solve_contact` and `tfem_step`.
+ */
+enum tfem_status tfem_solve(struct tfem_model *model, struct tfem_solve_info *info);
+
+/**
+ * Solves the contact problem by the active-set loop over inverted contact
+ * elements (under the mortar weighting, `tfem_set_contact_weighting`, over
+ * the slave nodes whose weighted gap is negative). `options` may be NULL (defaults); `report` may be NULL.
+ * TFEM_STATUS_NOT_CONVERGED (cycle or iteration cap) gives the history in
+ * the message; the model is then unchanged. Every DOF prescribed:
+ * TFEM_STATUS_INVALID_STATE.
+ */
+enum tfem_status tfem_solve_contact(struct tfem_model *model,
+                                    const struct tfem_contact_options *options,
+                                    struct tfem_contact_report *report);
+
+/****************************************************************************
+ * Results of the last solve or step: displacements, strains, stresses,
+ * reactions, external work, and the VTU file.
+ ***************************************************************************/
+
 /**
  * Copies the nodal displacements (u0 v0 u1 v1 …, 2·n_nodes values) of the
  * last solve into `out` of `length` values.
@@ -804,158 +1046,57 @@ enum tfem_status tfem_get_element_jacobians(struct tfem_model *model, double *ou
 enum tfem_status tfem_get_reactions(struct tfem_model *model, double *out, size_t length);
 
 /**
- * Sizes of the stiffness matrix of the last solve (see
- * `tfem_get_system_matrix`): `n` unknowns and `nnz` stored entries of its
- * upper triangle. Either pointer may be NULL.
+ * Writes the work of the external loads of the last solve, Σ f·u over
+ * every node (force × length per unit thickness, J/m in SI): for a
+ * pressure load, the compliance ∫ p (−u·n) ds.
  */
-enum tfem_status tfem_get_system_matrix_size(struct tfem_model *model, int64_t *n, int64_t *nnz);
+enum tfem_status tfem_get_external_work(struct tfem_model *model, double *work);
 
 /**
- * Copies the stiffness matrix K of the last solve on its unknowns (the
- * DOFs left after Dirichlet elimination), the system K u = f whose
- * solution `tfem_get_displacements` returns; for a contact solve it holds
- * the contact elements active at convergence. Upper triangle in
- * compressed sparse columns, rows ascending within each column:
- * `col_ptr` (n + 1 values), `row_idx` and `values` (nnz values each),
- * indices in the model's index base (`col_ptr[0]` = base). `dofs` (n
- * values) gives each unknown's position in the array of
- * `tfem_get_displacements`, in the index base (2·node + component for
- * base 0). Every buffer is checked before any is written. Like every
- * result it outlives a failed solve (which rebuilds it bit for bit) and
- * is discarded by a change of the problem (TFEM_STATUS_INVALID_STATE).
+ * Writes the solved model to the file `path` (NUL-terminated; on Unix any
+ * bytes, as for `tfem_load_gmsh`) as a VTK XML unstructured grid (`.vtu`,
+ * read by ParaView, VTK and meshio; binary: raw appended data,
+ * little-endian, UInt64 block headers, no compression):
+ * the mesh in its initial configuration (z = 0) with
+ * - point data `displacement` ([u, v, 0]) and, after a contact solve or
+ *   load step under either weighting, `contact_pressure` (the nodal
+ *   pressure of `tfem_get_contact_nodal_pressures`), `contact_shear`
+ *   (the nodal shear of `tfem_get_contact_nodal_tractions`),
+ *   `contact_force` ([f_x, f_y, 0], `tfem_get_contact_forces`) and
+ *   `contact_gap` (`tfem_get_contact_gaps`); none of them after a solve
+ *   without contact;
+ * - cell data `body` (the body tag), `J` (twice the signed area), `strain`
+ *   [ε_xx, ε_yy, γ_xy] and `stress` [σ_xx, σ_yy, σ_xy];
+ * - for the pairs weighted by B, its elements
+ *   appended after the body triangles as cells of body −1 (zero strain
+ *   and stress), with cell data `contact_element_active` (UInt8, 1 where
+ *   active) and `contact_element_pressure` (`tfem_get_contact_active`,
+ *   `tfem_get_contact_pressure`; 0 on the body triangles). Pairs under
+ *   the mortar weighting have no B: their contact is in the nodal arrays.
+ *
+ * (Earlier versions named the last two `contact_active` and
+ * `contact_pressure`, wrote them as zeros under the mortar weighting,
+ * and wrote no nodal contact array.)
+ * Returns TFEM_STATUS_INVALID_STATE before a solve (nothing is written),
+ * TFEM_STATUS_IO when the file cannot be written (the message names it
+ * and the reason), TFEM_STATUS_INVALID_ARGUMENT if the library was built
+ * without the `vtu` feature. The model is never changed.
  */
-enum tfem_status tfem_get_system_matrix(struct tfem_model *model,
-                                        int64_t *col_ptr,
-                                        size_t col_ptr_length,
-                                        int64_t *row_idx,
-                                        size_t row_idx_length,
-                                        double *values,
-                                        size_t values_length,
-                                        int64_t *dofs,
-                                        size_t dofs_length);
+enum tfem_status tfem_write_vtu(struct tfem_model *model, const char *path);
 
-/**
- * Tempered elasticity stiffness of one P1 triangle with corners `xy`
- * (x1 y1 x2 y2 x3 y3): K = B̂ᵀ D B̂ / (2·max(J, jmin)), written row-major
- * into `out` (36 values, DOFs u1 v1 u2 v2 u3 v3). `jmin` > 0 tempers;
- * `jmin` = 0 is plain FEM (divides by |J|, fails for J = 0). Pure and
- * thread-safe; errors go to the thread's `tfem_last_error(NULL, …)`.
- */
-enum tfem_status tfem_element_stiffness(const double *xy,
-                                        double young,
-                                        double poisson,
-                                        int plane_mode,
-                                        double jmin,
-                                        double *out);
-
-/**
- * Tempered Laplacian stiffness of one P1 triangle: K_ij = κ g_i·g_j /
- * (2·max(J, jmin)), row-major into `out` (9 values). `jmin` as in
- * `tfem_element_stiffness`. Pure and thread-safe.
- */
-enum tfem_status tfem_laplacian_stiffness(const double *xy, double kappa, double jmin, double *out);
-
-/**
- * Declares a potential contact interface between the boundary edges tagged
- * `tag_a` (one body) and `tag_b` (another body). The contact mesh B is
- * built from matching nodes when they match (a small normal gap is
- * allowed), else by triangulating the strip between the two interfaces
- * (each must be one open chain of edges). Writes the pair's index
- * (0-based) to `pair` (may be NULL). A pair declared already, or one
- * whose tags share boundary edges with both tags of a declared pair (the
- * same interface under other tags, which would count twice), is refused
- * with TFEM_STATUS_INVALID_CONTACT.
- */
-enum tfem_status tfem_add_contact_pair(struct tfem_model *model, int tag_a, int tag_b, int *pair);
-
-/**
- * Declares a contact pair with a user-made contact mesh B: `n_triangles`
- * triangles in `connectivity` (3 per triangle) over nodes of the two
- * interfaces. Wrongly oriented triangles are flipped; their number goes to
- * `flipped` (may be NULL), the pair's index to `pair` (may be NULL). A
- * triangle given twice (the same three nodes, in any order) is refused
- * with TFEM_STATUS_INVALID_CONTACT naming both triangles. The triangles
- * are the contact: a pair of tags declared already, or sharing edges with
- * a declared pair, is not refused here (several meshes may cover parts of
- * one interface), so do not give a part twice.
- */
-enum tfem_status tfem_add_contact_pair_with_mesh(struct tfem_model *model,
-                                                 int tag_a,
-                                                 int tag_b,
-                                                 int n_triangles,
-                                                 const int *connectivity,
-                                                 int *pair,
-                                                 int *flipped);
-
-/**
- * Fills `options` with the defaults: frictionless law, E_c and λ derived
- * from the model, linearised inversion test, 50 iterations.
- */
-enum tfem_status tfem_contact_options_default(struct tfem_contact_options *options);
-
-/**
- * Solves the contact problem by the active-set loop over inverted contact
- * elements (under the mortar weighting, `tfem_set_contact_weighting`, over
- * the slave nodes whose weighted gap is negative). `options` may be NULL (defaults); `report` may be NULL.
- * TFEM_STATUS_NOT_CONVERGED (cycle or iteration cap) gives the history in
- * the message; the model is then unchanged. Every DOF prescribed:
- * TFEM_STATUS_INVALID_STATE.
- */
-enum tfem_status tfem_solve_contact(struct tfem_model *model,
-                                    const struct tfem_contact_options *options,
-                                    struct tfem_contact_report *report);
-
-/**
- * Copies the active flag (1 active, 0 not) of every contact element of
- * the last contact solve (n_contact_elements values, see `tfem_get_sizes`).
- */
-enum tfem_status tfem_get_contact_active(struct tfem_model *model, int *out, size_t length);
-
-/**
- * Copies the contact pressure of every contact element (n_contact_elements
- * values): the normal stress −n·σ·n in the element (force per unit area,
- * Pa in SI), positive in compression, 0 when inactive. It is the
- * traction at the element's apex (the interface point it measures:
- * on matching meshes the apex node), times the share of its edge that
- * faces the other side; each point is measured by two elements, one
- * with its edge on either side. For the traction at the interface
- * nodes, read `tfem_get_contact_nodal_tractions` (on a non-matching
- * interface one family's element values read up to twice the traction).
- */
-enum tfem_status tfem_get_contact_pressure(struct tfem_model *model, double *out, size_t length);
-
-/**
- * Copies the nodes of every contact element (3·n_contact_elements
- * indices, in the model's index base), oriented so that J > 0 when the gap
- * opens. Refused (TFEM_STATUS_INVALID_STATE) after a solve under
- * the mortar weighting, which uses no B.
- */
-enum tfem_status tfem_get_contact_elements(struct tfem_model *model, int *out, size_t length);
+/****************************************************************************
+ * Contact results of the last solve or step. Per node, for every pair:
+ * forces, pressures and tractions, gaps. Per element of the contact mesh B
+ * (tfem_get_contact_active ... dissipation; pairs weighted by B): element
+ * values at each element's apex. Per slave node (pairs under the mortar
+ * weighting): tfem_get_contact_slave_nodes.
+ ***************************************************************************/
 
 /**
  * Writes the report of the last contact solve to `report`.
  */
 enum tfem_status tfem_get_contact_report(struct tfem_model *model,
                                          struct tfem_contact_report *report);
-
-/**
- * Adds tagged boundary edges to those already set (see
- * `tfem_set_boundary_edges`): `n_edges` edges given by `edge_nodes`
- * (2·n_edges node indices) with a tag each in `tags`, for instance one
- * call per boundary group. An edge given again with a tag it already has
- * is refused (its loads would count twice); on any error nothing changes.
- */
-enum tfem_status tfem_add_boundary_edges(struct tfem_model *model,
-                                         int n_edges,
-                                         const int *edge_nodes,
-                                         const int *tags);
-
-/**
- * Writes the work of the external loads of the last solve, Σ f·u over
- * every node (force × length per unit thickness, J/m in SI): for a
- * pressure load, the compliance ∫ p (−u·n) ds.
- */
-enum tfem_status tfem_get_external_work(struct tfem_model *model, double *work);
 
 /**
  * Copies the force the contact exerts on every node in the last contact
@@ -1011,70 +1152,6 @@ enum tfem_status tfem_get_contact_nodal_tractions(struct tfem_model *model,
                                                   size_t length);
 
 /**
- * `tfem_get_contact_nodal_tractions` of contact pair `pair` (0-based)
- * alone, read over that pair's forces and tributaries as
- * `tfem_get_contact_pair_nodal_pressures` reads its pressures (2·n_nodes
- * values). An unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT
- * naming it).
- */
-enum tfem_status tfem_get_contact_pair_nodal_tractions(struct tfem_model *model,
-                                                       int pair,
-                                                       double *out,
-                                                       size_t length);
-
-/**
- * Chooses how the contact pairs' energy is weighted along their
- * interfaces: `weighting` is a `ContactWeightingMode`. 2 automatic, the
- * default: each pair what is right for it — the elements of the contact
- * mesh B (the seed's method) where the two sides' nodes match, one
- * weighted gap per node of the interface's coarser side where they do not
- * (exact on the contact patch test whatever the meshes, converging on
- * curved interfaces where B reads one side only), B for a pair with
- * friction or a contact mesh of its own. 0 strip and 1 mortar force one
- * weighting on every pair (an expert's override). A change discards the
- * results, like any change of the contact pairs. The mortar weighting is
- * frictionless and makes no mesh B: forcing it with a pair that has
- * friction or a contact mesh of its own, or giving such a pair under it,
- * is refused by that call (TFEM_ERR_ARGUMENT, naming the pair); a solve
- * under it with the stick law or the literal inversion test is refused
- * too. The per-element outputs (`tfem_get_contact_active`,
- * `tfem_get_contact_pressure`, `tfem_get_contact_elements`, shear,
- * friction state, dissipation; `tfem_get_sizes`' contact elements) cover
- * the pairs weighted by B, and are refused when no pair is
- * (`tfem_get_contact_mesh` still gives the B the pairs would make); the
- * state of the others is per slave node (`tfem_get_contact_slave_nodes`).
- * Nodal pressures, gaps and forces, reactions and the report cover every
- * pair, the report's `elements` counting elements of B and slave nodes.
- */
-enum tfem_status tfem_set_contact_weighting(struct tfem_model *model, int weighting);
-
-/**
- * Writes the contact weighting (a `ContactWeightingMode`: 0 strip, 1
- * mortar, 2 automatic, the default) into `*weighting`.
- */
-enum tfem_status tfem_get_contact_weighting(struct tfem_model *model, int *weighting);
-
-/**
- * Copies the state of every slave node after a contact solve under the
- * mortar weighting, n = the report's `elements`, in the order of the
- * pairs: `node` (n values: the slave node, in the model's index base),
- * `tributary` (n values: m_i, the length its hat covers where it faces
- * the other side), `gap` (n values: the mean gap G_i/m_i, negative where
- * the bodies overlap) and `pressure` (n values: −κG_i/m_i, positive in
- * compression, 0 when inactive; an active node whose weighted gap is at
- * the round-off of the displacements, as where the bodies touch without
- * load, can read a pressure of that round-off of either sign). Any pointer may be NULL (that column is
- * not written); `length` (>= n) is the size of each buffer given. Refused
- * after a solve under the strip weighting.
- */
-enum tfem_status tfem_get_contact_slave_nodes(struct tfem_model *model,
-                                              int *node,
-                                              double *tributary,
-                                              double *gap,
-                                              double *pressure,
-                                              size_t length);
-
-/**
  * Copies the contact pressure of contact pair `pair` (0-based, from
  * `tfem_add_contact_pair` or `tfem_add_contact_pairs_auto`) alone at every
  * node in the last contact solve (n_nodes values, as
@@ -1096,6 +1173,18 @@ enum tfem_status tfem_get_contact_pair_nodal_pressures(struct tfem_model *model,
                                                        size_t length);
 
 /**
+ * `tfem_get_contact_nodal_tractions` of contact pair `pair` (0-based)
+ * alone, read over that pair's forces and tributaries as
+ * `tfem_get_contact_pair_nodal_pressures` reads its pressures (2·n_nodes
+ * values). An unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT
+ * naming it).
+ */
+enum tfem_status tfem_get_contact_pair_nodal_tractions(struct tfem_model *model,
+                                                       int pair,
+                                                       double *out,
+                                                       size_t length);
+
+/**
  * Copies the normal gap at every node in the last contact solve
  * (n_nodes values, model length units; zero off the contact interfaces),
  * computed on request: the smallest, over the contact elements at the
@@ -1106,60 +1195,80 @@ enum tfem_status tfem_get_contact_pair_nodal_pressures(struct tfem_model *model,
 enum tfem_status tfem_get_contact_gaps(struct tfem_model *model, double *out, size_t length);
 
 /**
- * Writes the number of elements of the contact mesh B of the declared
- * contact pairs, available before any solve (0 without pairs).
+ * Copies the active flag (1 active, 0 not) of every contact element of
+ * the last contact solve (n_contact_elements values, see `tfem_get_sizes`).
  */
-enum tfem_status tfem_get_contact_mesh_size(struct tfem_model *model, int *n_elements);
+enum tfem_status tfem_get_contact_active(struct tfem_model *model, int *out, size_t length);
 
 /**
- * Copies the nodes of every element of the contact mesh B of the declared
- * contact pairs (3 per element, in the model's index base, oriented so
- * that J > 0 when the gap opens), available before any solve: the same
- * elements, in the same order, as `tfem_get_contact_elements` gives after
- * a contact solve.
+ * Copies the contact pressure of every contact element (n_contact_elements
+ * values): the normal stress −n·σ·n in the element (force per unit area,
+ * Pa in SI), positive in compression, 0 when inactive. It is the
+ * traction at the element's apex (the interface point it measures:
+ * on matching meshes the apex node), times the share of its edge that
+ * faces the other side; each point is measured by two elements, one
+ * with its edge on either side. For the traction at the interface
+ * nodes, read `tfem_get_contact_nodal_tractions` (on a non-matching
+ * interface one family's element values read up to twice the traction).
  */
-enum tfem_status tfem_get_contact_mesh(struct tfem_model *model, int *out, size_t length);
+enum tfem_status tfem_get_contact_pressure(struct tfem_model *model, double *out, size_t length);
 
 /**
- * Copies, for every element of the contact mesh B (see
- * `tfem_get_contact_mesh`), the index of its contact pair (0-based, as
- * returned by `tfem_add_contact_pair`, whatever the index base).
+ * Copies the nodes of every contact element (3·n_contact_elements
+ * indices, in the model's index base), oriented so that J > 0 when the gap
+ * opens. Refused (TFEM_STATUS_INVALID_STATE) after a solve under
+ * the mortar weighting, which uses no B.
  */
-enum tfem_status tfem_get_contact_element_pairs(struct tfem_model *model, int *out, size_t length);
+enum tfem_status tfem_get_contact_elements(struct tfem_model *model, int *out, size_t length);
 
 /**
- * Copies, for every element of the contact mesh B (see
- * `tfem_get_contact_mesh`), its apex: the node (in the model's index
- * base) alone on its side of the interface, whose distance from the
- * element's interface edge is the element's gap.
+ * Copies the shear traction τ = n·σ·t (Pa in SI; t = (−n_y, n_x), n the
+ * element's normal, see `tfem_get_contact_mesh`) of every contact element
+ * of the last contact solve or step (n_contact_elements values): 0 when
+ * open, |τ| ≤ μp when sticking, μp when slipping; all 0 when frictionless.
+ * An element value at its apex, as `tfem_get_contact_pressure`; the
+ * shear at the interface nodes is `tfem_get_contact_nodal_tractions`'.
  */
-enum tfem_status tfem_get_contact_element_apexes(struct tfem_model *model, int *out, size_t length);
+enum tfem_status tfem_get_contact_shear(struct tfem_model *model, double *out, size_t length);
 
 /**
- * Writes the bodies of contact pair `pair` (0-based, as returned by
- * `tfem_add_contact_pair`): `body_a` carries the pair's first tag,
- * `body_b` its second. Either pointer may be NULL.
+ * Copies the frictional state of every contact element of the last
+ * contact solve or step (n_contact_elements values): 0 open, 1 stick,
+ * 2 slip (a frictionless solve: 2 where active).
  */
-enum tfem_status tfem_get_contact_pair_bodies(struct tfem_model *model,
-                                              int pair,
-                                              int *body_a,
-                                              int *body_b);
+enum tfem_status tfem_get_contact_friction_state(struct tfem_model *model, int *out, size_t length);
 
 /**
- * Sets the number of threads the model's solves run on: 1 <= `threads`
- * <= 1024 gives the model a pool of its own (1: no parallelism at all, for a
- * host that runs its own OpenMP or MPI threads); 0 (the default) uses
- * the process-wide pool, with as many threads as cores or the
- * environment variable RAYON_NUM_THREADS. Results do not depend on it
- * beyond round-off, and are kept.
+ * Copies the energy dissipated by slip in the last step (or solve) at
+ * every contact element (n_contact_elements values, J per unit thickness
+ * in SI): ½ τ Δγ_p ≥ 0; all 0 when frictionless.
  */
-enum tfem_status tfem_set_threads(struct tfem_model *model, int threads);
+enum tfem_status tfem_get_contact_dissipation(struct tfem_model *model, double *out, size_t length);
 
 /**
- * Writes the number of threads the model's solves run on (see
- * `tfem_set_threads`).
+ * Copies the state of every slave node after a contact solve under the
+ * mortar weighting, n = the report's `elements`, in the order of the
+ * pairs: `node` (n values: the slave node, in the model's index base),
+ * `tributary` (n values: m_i, the length its hat covers where it faces
+ * the other side), `gap` (n values: the mean gap G_i/m_i, negative where
+ * the bodies overlap) and `pressure` (n values: −κG_i/m_i, positive in
+ * compression, 0 when inactive; an active node whose weighted gap is at
+ * the round-off of the displacements, as where the bodies touch without
+ * load, can read a pressure of that round-off of either sign). Any pointer may be NULL (that column is
+ * not written); `length` (>= n) is the size of each buffer given. Refused
+ * after a solve under the strip weighting.
  */
-enum tfem_status tfem_get_threads(struct tfem_model *model, int *threads);
+enum tfem_status tfem_get_contact_slave_nodes(struct tfem_model *model,
+                                              int *node,
+                                              double *tributary,
+                                              double *gap,
+                                              double *pressure,
+                                              size_t length);
+
+/****************************************************************************
+ * Load history: steps on one factorisation, revert, and the contact state
+ * saved and restored (restarts).
+ ***************************************************************************/
 
 /**
  * One quasi-static load step: the contact problem with the loads and
@@ -1251,95 +1360,71 @@ enum tfem_status tfem_set_contact_state(struct tfem_model *model,
                                         const uint8_t *buffer,
                                         size_t length);
 
-/**
- * Sets Coulomb's friction coefficient μ ≥ 0 of contact pair `pair`
- * (0-based, from `tfem_add_contact_pair`): stick while the shear stays
- * within μ times the pressure, slip against the slip of the step beyond
- * (docs/method.md §6.15). 0, the default, is frictionless, bit for bit.
- * A negative or non-finite μ, or an unknown pair, is refused
- * (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load
- * history. Frictional or not, the elements of a pair's contact mesh
- * measure every point of the interface along the first side's normal
- * there, so that a frictionless interface transmits no tangential
- * traction.
- */
-enum tfem_status tfem_set_friction(struct tfem_model *model, int pair, double mu);
+/****************************************************************************
+ * Utilities: the assembled system matrix, and element stiffness matrices for
+ * codes that assemble their own.
+ ***************************************************************************/
 
 /**
- * Changes the value of displacement component `comp` (0 x, 1 y) of
- * `node`, prescribed before by `tfem_fix` or `tfem_fix_edges`: the loads of
- * a non-proportional load history, which goes on with the same
- * factorisation (the set of prescribed DOFs is unchanged). A node not
- * prescribed in that component is refused, naming it.
+ * Sizes of the stiffness matrix of the last solve (see
+ * `tfem_get_system_matrix`): `n` unknowns and `nnz` stored entries of its
+ * upper triangle. Either pointer may be NULL.
  */
-enum tfem_status tfem_set_prescribed(struct tfem_model *model, int node, int comp, double value);
+enum tfem_status tfem_get_system_matrix_size(struct tfem_model *model, int64_t *n, int64_t *nnz);
 
 /**
- * Changes the value of displacement component `comp` (0 x, 1 y) on every
- * node of the boundary edges tagged `tag`, each prescribed before by
- * `tfem_fix_edges` or `tfem_fix`: `tfem_set_prescribed` for a whole tag,
- * the loads of a load history given as `tfem_fix_edges` gives them (the
- * factorisation is kept). All or nothing: an unknown tag, a value that is
- * not finite or a node not prescribed in that component is refused
- * (TFEM_STATUS_INVALID_ARGUMENT naming it) and the model is unchanged.
+ * Copies the stiffness matrix K of the last solve on its unknowns (the
+ * DOFs left after Dirichlet elimination), the system K u = f whose
+ * solution `tfem_get_displacements` returns; for a contact solve it holds
+ * the contact elements active at convergence. Upper triangle in
+ * compressed sparse columns, rows ascending within each column:
+ * `col_ptr` (n + 1 values), `row_idx` and `values` (nnz values each),
+ * indices in the model's index base (`col_ptr[0]` = base). `dofs` (n
+ * values) gives each unknown's position in the array of
+ * `tfem_get_displacements`, in the index base (2·node + component for
+ * base 0). Every buffer is checked before any is written. Like every
+ * result it outlives a failed solve (which rebuilds it bit for bit) and
+ * is discarded by a change of the problem (TFEM_STATUS_INVALID_STATE).
  */
-enum tfem_status tfem_set_prescribed_edges(struct tfem_model *model,
-                                           int tag,
-                                           int comp,
-                                           double value);
+enum tfem_status tfem_get_system_matrix(struct tfem_model *model,
+                                        int64_t *col_ptr,
+                                        size_t col_ptr_length,
+                                        int64_t *row_idx,
+                                        size_t row_idx_length,
+                                        double *values,
+                                        size_t values_length,
+                                        int64_t *dofs,
+                                        size_t dofs_length);
 
 /**
- * Copies the shear traction τ = n·σ·t (Pa in SI; t = (−n_y, n_x), n the
- * element's normal, see `tfem_get_contact_mesh`) of every contact element
- * of the last contact solve or step (n_contact_elements values): 0 when
- * open, |τ| ≤ μp when sticking, μp when slipping; all 0 when frictionless.
- * An element value at its apex, as `tfem_get_contact_pressure`; the
- * shear at the interface nodes is `tfem_get_contact_nodal_tractions`'.
+ * Tempered elasticity stiffness of one P1 triangle with corners `xy`
+ * (x1 y1 x2 y2 x3 y3): K = B̂ᵀ D B̂ / (2·max(J, jmin)), written row-major
+ * into `out` (36 values, DOFs u1 v1 u2 v2 u3 v3). `jmin` > 0 tempers;
+ * `jmin` = 0 is plain FEM (divides by |J|, fails for J = 0). Pure and
+ * thread-safe; errors go to the thread's `tfem_last_error(NULL, …)`.
  */
-enum tfem_status tfem_get_contact_shear(struct tfem_model *model, double *out, size_t length);
+enum tfem_status tfem_element_stiffness(const double *xy,
+                                        double young,
+                                        double poisson,
+                                        int plane_mode,
+                                        double jmin,
+                                        double *out);
 
 /**
- * Copies the frictional state of every contact element of the last
- * contact solve or step (n_contact_elements values): 0 open, 1 stick,
- * 2 slip (a frictionless solve: 2 where active).
+ * Tempered Laplacian stiffness of one P1 triangle: K_ij = κ g_i·g_j /
+ * (2·max(J, jmin)), row-major into `out` (9 values). `jmin` as in
+ * `tfem_element_stiffness`. Pure and thread-safe.
  */
-enum tfem_status tfem_get_contact_friction_state(struct tfem_model *model, int *out, size_t length);
+enum tfem_status tfem_laplacian_stiffness(const double *xy, double kappa, double jmin, double *out);
 
-/**
- * Copies the energy dissipated by slip in the last step (or solve) at
- * every contact element (n_contact_elements values, J per unit thickness
- * in SI): ½ τ Δγ_p ≥ 0; all 0 when frictionless.
- */
-enum tfem_status tfem_get_contact_dissipation(struct tfem_model *model, double *out, size_t length);
-
-/**
- * Declares a contact pair for every two boundary tags of different bodies
- * whose edges face each other within `tolerance` (model length units: some
- * edge of the one within `tolerance` of some edge of the other, outward
- * normals opposed within 30°, each in front of the other, overlapping
- * along the interface, no third body between them; a gap of exactly
- * `tolerance` pairs; docs/method.md §6.16). `tags` (`n_tags` values) restricts the search to
- * those tags; with `n_tags` = 0 every tag that can be a contact side is
- * considered, and `tags` may be NULL. Pairs already declared are skipped,
- * tags of one body never pair, and an interface found again under tags
- * that share its edges with a pair kept (a "whole boundary" group beside
- * the faces) is skipped: the pair of tags with the fewest edges is kept
- * (to pair an interface under other tags, declare that pair by hand
- * instead). What is left out without an error — with `n_tags` = 0, a tag
- * whose edges bound several bodies; an interface found again under other
- * tags — is named in a warning (`tfem_warning_count`, `tfem_get_warning`).
- * The pairs added get consecutive indices:
- * writes the first to `first` (may be NULL) and their number, 0 when
- * nothing faces within the tolerance, to `count` (may be NULL). A negative
- * or non-finite tolerance, an unknown tag or an interface whose contact
- * mesh cannot be built is refused, naming it, and nothing is added.
- */
-enum tfem_status tfem_add_contact_pairs_auto(struct tfem_model *model,
-                                             int n_tags,
-                                             const int *tags,
-                                             double tolerance,
-                                             int *first,
-                                             int *count);
+/****************************************************************************
+ * Contact for host codes (tfem_contact_*): a contact context for a code that
+ * keeps its own elements and solver. It takes the host's nodes,
+ * displacements and contact sides, and gives back the contact's stiffness
+ * and forces to add to the host's system, and the contact state per element
+ * of B (tfem_contact_get_active, tfem_contact_pressures; not the model's
+ * tfem_get_contact_*).
+ ***************************************************************************/
 
 /**
  * Creates a contact context for a host code that keeps its own elements,

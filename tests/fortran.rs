@@ -34,6 +34,9 @@ struct Proto {
     name: String,
     params: Vec<(String, String)>,
     doc: String,
+    /// The head of the group this prototype opens (the header's
+    /// `/****…` comments), if it does.
+    section: Option<String>,
 }
 
 fn squash(s: &str) -> String {
@@ -64,10 +67,16 @@ fn doc_before(text: &str, at: usize) -> String {
 fn prototypes(header: &str) -> Vec<Proto> {
     let mut out = Vec::new();
     let mut rest = header;
+    let mut section = None;
     while let Some(start) = rest.find("/**") {
         let end = rest[start..].find("*/").expect("closed comment") + start;
-        let doc = clean_doc(&rest[start + 3..end]);
+        let banner = rest[start..].starts_with("/****");
+        let doc = clean_doc(rest[start + 3..end].trim_matches('*'));
         rest = &rest[end + 2..];
+        if banner {
+            section = Some(doc);
+            continue;
+        }
         let semi = rest.find(';').unwrap_or(rest.len());
         let decl = squash(&rest[..semi]);
         let plain = !decl.contains("/*") && !decl.contains('{') && !decl.contains('}');
@@ -98,6 +107,7 @@ fn prototypes(header: &str) -> Vec<Proto> {
                 name,
                 params,
                 doc,
+                section: section.take(),
             });
         }
     }
@@ -1111,6 +1121,11 @@ fn module_tfem_c(
         if k > 0 {
             f.push('\n');
         }
+        if let Some(head) = &p.section {
+            writeln!(f, "    ! {}", "=".repeat(94)).unwrap();
+            wrap(f, "    ", head, "!", "!");
+            writeln!(f, "    ! {}\n", "=".repeat(94)).unwrap();
+        }
         interface_body(f, p, s);
     }
     f.push_str("  end interface\nend module tfem_c\n\n");
@@ -1586,6 +1601,7 @@ fn nullability_rule_reads_the_doc_wording() {
             ("struct tfem_solve_info *".into(), "info".into()),
         ],
         doc: doc.into(),
+        section: None,
     };
     let cases: [(&str, &[&str]); 9] = [
         ("Writes it to `count` (may be NULL).", &["count"]),

@@ -1,5 +1,8 @@
-//! The entry points of the C ABI, in the order of the header: each checks
-//! its arguments, calls the Rust API, and writes its outputs.
+//! The entry points of the C ABI for the model, by group in the order of
+//! the header (lifecycle, mesh, materials, loads and constraints, contact
+//! pairs, solve, results, contact results, load history, utilities; the
+//! host codes' contact context is `host`): each checks its arguments,
+//! calls the Rust API, and writes its outputs.
 
 use std::ffi::{c_char, c_int};
 
@@ -20,6 +23,8 @@ use crate::fem::material::Material;
 use crate::fem::mesh::Mesh;
 use crate::linalg::Ordering;
 use crate::model::Model;
+
+// -------- Lifecycle, errors and warnings ------------------------------
 
 /// The library version as a static NUL-terminated string ("major.minor.patch").
 /// Thread-safe; never NULL; do not free.
@@ -179,6 +184,33 @@ pub unsafe extern "C" fn tfem_get_warning(
     if s == Status::Ok { status } else { s }
 }
 
+/// Sets the number of threads the model's solves run on: 1 <= `threads`
+/// <= 1024 gives the model a pool of its own (1: no parallelism at all, for a
+/// host that runs its own OpenMP or MPI threads); 0 (the default) uses
+/// the process-wide pool, with as many threads as cores or the
+/// environment variable RAYON_NUM_THREADS. Results do not depend on it
+/// beyond round-off, and are kept.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_set_threads(model: *mut TfemModel, threads: c_int) -> Status {
+    with_model(model, |m| {
+        let n = usize::try_from(threads)
+            .map_err(|_| Error::argument(format!("threads = {threads} must be >= 0")))?;
+        m.model.set_threads(n)
+    })
+}
+
+/// Writes the number of threads the model's solves run on (see
+/// `tfem_set_threads`).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_threads(model: *mut TfemModel, threads: *mut c_int) -> Status {
+    with_model(model, |m| {
+        let n = c_int::try_from(m.model.threads()).unwrap_or(c_int::MAX);
+        write(threads, n, "threads")
+    })
+}
+
+// -------- Mesh --------------------------------------------------------
+
 /// Sets the mesh: `n_nodes` nodes with coordinates `xy` (2·n_nodes values,
 /// x0 y0 x1 y1 …), `n_triangles` P1 triangles with `connectivity`
 /// (3·n_triangles node indices) and a body tag per triangle in
@@ -319,58 +351,6 @@ fn load_gmsh(_: &mut TfemModel, _: &std::path::Path, _: usize) -> Result<()> {
     ))
 }
 
-/// Writes the solved model to the file `path` (NUL-terminated; on Unix any
-/// bytes, as for `tfem_load_gmsh`) as a VTK XML unstructured grid (`.vtu`,
-/// read by ParaView, VTK and meshio; binary: raw appended data,
-/// little-endian, UInt64 block headers, no compression):
-/// the mesh in its initial configuration (z = 0) with
-/// - point data `displacement` ([u, v, 0]) and, after a contact solve or
-///   load step under either weighting, `contact_pressure` (the nodal
-///   pressure of `tfem_get_contact_nodal_pressures`), `contact_shear`
-///   (the nodal shear of `tfem_get_contact_nodal_tractions`),
-///   `contact_force` ([f_x, f_y, 0], `tfem_get_contact_forces`) and
-///   `contact_gap` (`tfem_get_contact_gaps`); none of them after a solve
-///   without contact;
-/// - cell data `body` (the body tag), `J` (twice the signed area), `strain`
-///   [ε_xx, ε_yy, γ_xy] and `stress` [σ_xx, σ_yy, σ_xy];
-/// - for the pairs weighted by B, its elements
-///   appended after the body triangles as cells of body −1 (zero strain
-///   and stress), with cell data `contact_element_active` (UInt8, 1 where
-///   active) and `contact_element_pressure` (`tfem_get_contact_active`,
-///   `tfem_get_contact_pressure`; 0 on the body triangles). Pairs under
-///   the mortar weighting have no B: their contact is in the nodal arrays.
-///
-/// (Earlier versions named the last two `contact_active` and
-/// `contact_pressure`, wrote them as zeros under the mortar weighting,
-/// and wrote no nodal contact array.)
-/// Returns TFEM_STATUS_INVALID_STATE before a solve (nothing is written),
-/// TFEM_STATUS_IO when the file cannot be written (the message names it
-/// and the reason), TFEM_STATUS_INVALID_ARGUMENT if the library was built
-/// without the `vtu` feature. The model is never changed.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_write_vtu(model: *mut TfemModel, path: *const c_char) -> Status {
-    with_model(model, |m| {
-        if path.is_null() {
-            return Err(null("path"));
-        }
-        // SAFETY: a NUL-terminated string from the caller.
-        let path = unsafe { std::ffi::CStr::from_ptr(path) };
-        write_vtu(m, &path_of(path)?)
-    })
-}
-
-#[cfg(feature = "vtu")]
-fn write_vtu(m: &TfemModel, path: &std::path::Path) -> Result<()> {
-    crate::io::vtu::write_vtu(&m.model, path)
-}
-
-#[cfg(not(feature = "vtu"))]
-fn write_vtu(_: &TfemModel, _: &std::path::Path) -> Result<()> {
-    Err(Error::argument(
-        "this libtfem was built without the `vtu` feature",
-    ))
-}
-
 /// Sets the tagged boundary edges: `n_edges` edges given by `edge_nodes`
 /// (2·n_edges node indices) with a tag each in `tags`. Tags name the edges
 /// for loads, constraints and contact pairs. Replaces previous edges (use
@@ -413,203 +393,21 @@ fn edges_in<'t>(
     Ok((edges, tags))
 }
 
-/// Sets the material of body `body`: Young's modulus `young` (> 0), Poisson
-/// ratio `poisson` (in (-1, 0.5) for plane strain, (-1, 0.5] for plane
-/// stress) and `plane` (a `PlaneMode`: 0 strain, 1 stress).
+/// Adds tagged boundary edges to those already set (see
+/// `tfem_set_boundary_edges`): `n_edges` edges given by `edge_nodes`
+/// (2·n_edges node indices) with a tag each in `tags`, for instance one
+/// call per boundary group. An edge given again with a tag it already has
+/// is refused (its loads would count twice); on any error nothing changes.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_set_material(
+pub unsafe extern "C" fn tfem_add_boundary_edges(
     model: *mut TfemModel,
-    body: c_int,
-    young: f64,
-    poisson: f64,
-    plane_mode: c_int,
+    n_edges: c_int,
+    edge_nodes: *const c_int,
+    tags: *const c_int,
 ) -> Status {
     with_model(model, |m| {
-        let mat = Material::new(young, poisson, plane(plane_mode)?, &format!("body {body}"))?;
-        m.model.set_material(body, mat)
-    })
-}
-
-/// Chooses Jmin: `mode` is a `TemperingMode` (0 auto, 1 lambda = `value`,
-/// 2 fixed Jmin = `value`, 3 off); `value` is ignored for 0 and 3.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_set_tempering(
-    model: *mut TfemModel,
-    mode: c_int,
-    value: f64,
-) -> Status {
-    with_model(model, |m| {
-        let t = match mode {
-            0 => Tempering::Auto,
-            1 => Tempering::Lambda(value),
-            2 => Tempering::Fixed(value),
-            3 => Tempering::Off,
-            _ => {
-                return Err(Error::argument(format!(
-                    "tempering mode = {mode} must be 0, 1, 2 or 3"
-                )));
-            }
-        };
-        m.model.set_tempering(t)
-    })
-}
-
-/// Chooses the fill-reducing ordering: `ordering` is an `OrderingMode`
-/// (0 auto, 1 AMD, 2 nested dissection); `parallel_subtrees` = 1 (default)
-/// factorises the two subtrees of a nested dissection concurrently, 0 as
-/// one tree. Results do not depend on either beyond round-off: the results
-/// of the last solve (all of them, the matrix included) are kept, and the
-/// next solve analyses the matrix anew.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_set_ordering(
-    model: *mut TfemModel,
-    ordering: c_int,
-    parallel_subtrees: c_int,
-) -> Status {
-    with_model(model, |m| {
-        let ordering = match ordering {
-            0 => Ordering::Auto,
-            1 => Ordering::Amd,
-            2 => Ordering::NestedDissection,
-            _ => {
-                return Err(Error::argument(format!(
-                    "ordering = {ordering} must be 0 (auto), 1 (AMD) or 2 (nested dissection)"
-                )));
-            }
-        };
-        let parallel = match parallel_subtrees {
-            0 => false,
-            1 => true,
-            _ => {
-                return Err(Error::argument(format!(
-                    "parallel_subtrees = {parallel_subtrees} must be 0 or 1"
-                )));
-            }
-        };
-        m.model.set_ordering(ordering);
-        m.model.set_parallel_subtrees(parallel);
-        Ok(())
-    })
-}
-
-/// Prescribes displacement component `component` (0 x, 1 y) of `node` to
-/// `value` (model length units). A component already prescribed a
-/// different value is refused (TFEM_STATUS_INVALID_ARGUMENT naming the
-/// node): one of the two would silently win. Call `tfem_clear_constraints`
-/// to change prescribed values.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_fix(
-    model: *mut TfemModel,
-    node: c_int,
-    comp: c_int,
-    value: f64,
-) -> Status {
-    with_model(model, |m| {
-        let n = m.n_nodes()?;
-        let v = m.index(node, n, "node")?;
-        m.model.fix(v, component(comp)?, value)
-    })
-}
-
-/// Prescribes component `component` to `value` on every node of the
-/// boundary edges tagged `tag` (interior edges too). All or nothing: a node
-/// already prescribed a different value (see `tfem_fix`) refuses the
-/// whole call.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_fix_edges(
-    model: *mut TfemModel,
-    tag: c_int,
-    comp: c_int,
-    value: f64,
-) -> Status {
-    with_model(model, |m| {
-        let c = component(comp)?;
-        m.model.fix_edges(tag, c, value)
-    })
-}
-
-/// Removes every prescribed displacement.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_clear_constraints(model: *mut TfemModel) -> Status {
-    with_model(model, |m| {
-        m.model.clear_constraints();
-        Ok(())
-    })
-}
-
-/// Applies pressure `pressure` on the boundary edges tagged `tag`: a
-/// stress (force per unit area, Pa in SI), positive pushing into the body;
-/// with the 2D convention of unit thickness, an edge of length ℓ carries
-/// the force ℓ·pressure per unit thickness. Loads add up.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_add_pressure(
-    model: *mut TfemModel,
-    tag: c_int,
-    pressure: f64,
-) -> Status {
-    with_model(model, |m| m.model.add_pressure(tag, pressure))
-}
-
-/// Applies the traction (tx, ty) on the boundary edges tagged `tag`: a
-/// stress vector (force per unit area, Pa in SI); an edge of length ℓ
-/// carries ℓ·(tx, ty) per unit thickness. Loads add up.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_add_traction(
-    model: *mut TfemModel,
-    tag: c_int,
-    tx: f64,
-    ty: f64,
-) -> Status {
-    with_model(model, |m| m.model.add_traction(tag, [tx, ty]))
-}
-
-/// Adds the point force (fx, fy) at `node`: force per unit thickness (N/m
-/// in SI). Loads add up.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_add_nodal_force(
-    model: *mut TfemModel,
-    node: c_int,
-    fx: f64,
-    fy: f64,
-) -> Status {
-    with_model(model, |m| {
-        let n = m.n_nodes()?;
-        let v = m.index(node, n, "node")?;
-        m.model.add_nodal_force(v, [fx, fy])
-    })
-}
-
-/// Sets the body force (bx, by) of body `body`: force per unit volume (ρg,
-/// N/m³ in SI), acting on each unit area of the mesh per unit thickness.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_set_body_force(
-    model: *mut TfemModel,
-    body: c_int,
-    bx: f64,
-    by: f64,
-) -> Status {
-    with_model(model, |m| m.model.set_body_force(body, [bx, by]))
-}
-
-/// Removes every load.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_clear_loads(model: *mut TfemModel) -> Status {
-    with_model(model, |m| {
-        m.model.clear_loads();
-        Ok(())
-    })
-}
-
-/// Solves a scene without contact. `info` may be NULL. A body that is not
-/// restrained gives TFEM_STATUS_SINGULAR naming it. A model with every
-/// DOF prescribed has nothing to solve: TFEM_STATUS_INVALID_STATE; so also
-/// `tfem_solve_contact` and `tfem_step`.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_solve(model: *mut TfemModel, info: *mut TfemSolveInfo) -> Status {
-    with_model(model, |m| {
-        let i = m.model.solve()?;
-        write_optional(info, info_out(&i));
-        Ok(())
+        let (edges, tags) = edges_in(m, n_edges, edge_nodes, tags)?;
+        m.model.add_boundary_edges(&edges, tags)
     })
 }
 
@@ -734,199 +532,237 @@ pub unsafe extern "C" fn tfem_get_boundary_edges(
     })
 }
 
-/// Copies the nodal displacements (u0 v0 u1 v1 …, 2·n_nodes values) of the
-/// last solve into `out` of `length` values.
+// -------- Materials, tempering and ordering ---------------------------
+
+/// Sets the material of body `body`: Young's modulus `young` (> 0), Poisson
+/// ratio `poisson` (in (-1, 0.5) for plane strain, (-1, 0.5] for plane
+/// stress) and `plane` (a `PlaneMode`: 0 strain, 1 stress).
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_displacements(
+pub unsafe extern "C" fn tfem_set_material(
     model: *mut TfemModel,
-    out: *mut f64,
-    length: usize,
+    body: c_int,
+    young: f64,
+    poisson: f64,
+    plane_mode: c_int,
 ) -> Status {
     with_model(model, |m| {
-        let u: Vec<f64> = m.model.displacements()?.into_iter().flatten().collect();
-        copy_out(&u, out, length, "out")
+        let mat = Material::new(young, poisson, plane(plane_mode)?, &format!("body {body}"))?;
+        m.model.set_material(body, mat)
     })
 }
 
-/// Copies element strains (ε_xx ε_yy γ_xy per triangle, engineering shear,
-/// 3·n_triangles values), computed on request.
+/// Chooses Jmin: `mode` is a `TemperingMode` (0 auto, 1 lambda = `value`,
+/// 2 fixed Jmin = `value`, 3 off); `value` is ignored for 0 and 3.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_element_strains(
+pub unsafe extern "C" fn tfem_set_tempering(
     model: *mut TfemModel,
-    out: *mut f64,
-    length: usize,
+    mode: c_int,
+    value: f64,
 ) -> Status {
     with_model(model, |m| {
-        let v: Vec<f64> = m.model.element_strains()?.into_iter().flatten().collect();
-        copy_out(&v, out, length, "out")
+        let t = match mode {
+            0 => Tempering::Auto,
+            1 => Tempering::Lambda(value),
+            2 => Tempering::Fixed(value),
+            3 => Tempering::Off,
+            _ => {
+                return Err(Error::argument(format!(
+                    "tempering mode = {mode} must be 0, 1, 2 or 3"
+                )));
+            }
+        };
+        m.model.set_tempering(t)
     })
 }
 
-/// Copies element stresses (σ_xx σ_yy σ_xy per triangle, 3·n_triangles
-/// values; force per unit area, Pa in SI), computed on request. An
-/// overflow gives TFEM_STATUS_NUMERICAL_FAILURE naming the triangle.
+/// Chooses the fill-reducing ordering: `ordering` is an `OrderingMode`
+/// (0 auto, 1 AMD, 2 nested dissection); `parallel_subtrees` = 1 (default)
+/// factorises the two subtrees of a nested dissection concurrently, 0 as
+/// one tree. Results do not depend on either beyond round-off: the results
+/// of the last solve (all of them, the matrix included) are kept, and the
+/// next solve analyses the matrix anew.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_element_stresses(
+pub unsafe extern "C" fn tfem_set_ordering(
     model: *mut TfemModel,
-    out: *mut f64,
-    length: usize,
+    ordering: c_int,
+    parallel_subtrees: c_int,
 ) -> Status {
     with_model(model, |m| {
-        let v: Vec<f64> = m.model.element_stresses()?.into_iter().flatten().collect();
-        copy_out(&v, out, length, "out")
-    })
-}
-
-/// Copies J (twice the signed area, initial configuration) of every
-/// triangle as stored, that is after the turning of triangles numbered
-/// clockwise (see `tfem_set_mesh`): negative only for the mesh's folds
-/// (n_triangles values). Needs only a mesh.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_element_jacobians(
-    model: *mut TfemModel,
-    out: *mut f64,
-    length: usize,
-) -> Status {
-    with_model(model, |m| {
-        let v = m.model.element_jacobians()?;
-        copy_out(&v, out, length, "out")
-    })
-}
-
-/// Copies reaction forces (Rx Ry per node, 2·n_nodes values; force per
-/// unit thickness, N/m in SI; zero at DOFs that are not prescribed),
-/// computed on request. `tfem_solve` and `tfem_solve_contact` bound their
-/// rounding per body and warn (`tfem_get_warning`), naming the body, where
-/// its reactions may carry fewer than six correct digits (a "rigid" body
-/// given a huge Young's modulus: prescribe its motion with a modulus like
-/// its neighbours' instead).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_reactions(
-    model: *mut TfemModel,
-    out: *mut f64,
-    length: usize,
-) -> Status {
-    with_model(model, |m| {
-        let v: Vec<f64> = m.model.reactions()?.into_iter().flatten().collect();
-        copy_out(&v, out, length, "out")
-    })
-}
-
-/// Sizes of the stiffness matrix of the last solve (see
-/// `tfem_get_system_matrix`): `n` unknowns and `nnz` stored entries of its
-/// upper triangle. Either pointer may be NULL.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_system_matrix_size(
-    model: *mut TfemModel,
-    n: *mut i64,
-    nnz: *mut i64,
-) -> Status {
-    with_model(model, |m| {
-        let k = m.model.system_matrix()?;
-        write_optional(n, k.n() as i64);
-        write_optional(nnz, k.values.len() as i64);
+        let ordering = match ordering {
+            0 => Ordering::Auto,
+            1 => Ordering::Amd,
+            2 => Ordering::NestedDissection,
+            _ => {
+                return Err(Error::argument(format!(
+                    "ordering = {ordering} must be 0 (auto), 1 (AMD) or 2 (nested dissection)"
+                )));
+            }
+        };
+        let parallel = match parallel_subtrees {
+            0 => false,
+            1 => true,
+            _ => {
+                return Err(Error::argument(format!(
+                    "parallel_subtrees = {parallel_subtrees} must be 0 or 1"
+                )));
+            }
+        };
+        m.model.set_ordering(ordering);
+        m.model.set_parallel_subtrees(parallel);
         Ok(())
     })
 }
 
-/// Copies the stiffness matrix K of the last solve on its unknowns (the
-/// DOFs left after Dirichlet elimination), the system K u = f whose
-/// solution `tfem_get_displacements` returns; for a contact solve it holds
-/// the contact elements active at convergence. Upper triangle in
-/// compressed sparse columns, rows ascending within each column:
-/// `col_ptr` (n + 1 values), `row_idx` and `values` (nnz values each),
-/// indices in the model's index base (`col_ptr[0]` = base). `dofs` (n
-/// values) gives each unknown's position in the array of
-/// `tfem_get_displacements`, in the index base (2·node + component for
-/// base 0). Every buffer is checked before any is written. Like every
-/// result it outlives a failed solve (which rebuilds it bit for bit) and
-/// is discarded by a change of the problem (TFEM_STATUS_INVALID_STATE).
+// -------- Loads and constraints ---------------------------------------
+
+/// Prescribes displacement component `component` (0 x, 1 y) of `node` to
+/// `value` (model length units). A component already prescribed a
+/// different value is refused (TFEM_STATUS_INVALID_ARGUMENT naming the
+/// node): one of the two would silently win. Call `tfem_clear_constraints`
+/// to change prescribed values.
 #[unsafe(no_mangle)]
-#[allow(clippy::too_many_arguments)]
-pub unsafe extern "C" fn tfem_get_system_matrix(
+pub unsafe extern "C" fn tfem_fix(
     model: *mut TfemModel,
-    col_ptr: *mut i64,
-    col_ptr_length: usize,
-    row_idx: *mut i64,
-    row_idx_length: usize,
-    values: *mut f64,
-    values_length: usize,
-    dofs: *mut i64,
-    dofs_length: usize,
+    node: c_int,
+    comp: c_int,
+    value: f64,
 ) -> Status {
     with_model(model, |m| {
-        let k = m.model.system_matrix()?;
-        let (n, nnz) = (k.n(), k.values.len());
-        for (ptr, len, need, what) in [
-            (col_ptr.is_null(), col_ptr_length, n + 1, "col_ptr"),
-            (row_idx.is_null(), row_idx_length, nnz, "row_idx"),
-            (values.is_null(), values_length, nnz, "values"),
-            (dofs.is_null(), dofs_length, n, "dofs"),
-        ] {
-            if ptr {
-                return Err(null(what));
-            }
-            if len < need {
-                return Err(Error::new(
-                    Status::BufferTooSmall,
-                    format!("`{what}` holds {len} values but {need} are needed"),
-                ));
-            }
-        }
-        let b = m.index_base as i64;
-        let based = |i: usize| i as i64 + b;
-        map_out(k.col_ptr, col_ptr, col_ptr_length, "col_ptr", based)?;
-        map_out(k.row_idx, row_idx, row_idx_length, "row_idx", based)?;
-        copy_out(k.values, values, values_length, "values")?;
-        map_out(k.unknowns, dofs, dofs_length, "dofs", based)
+        let n = m.n_nodes()?;
+        let v = m.index(node, n, "node")?;
+        m.model.fix(v, component(comp)?, value)
     })
 }
 
-/// Tempered elasticity stiffness of one P1 triangle with corners `xy`
-/// (x1 y1 x2 y2 x3 y3): K = B̂ᵀ D B̂ / (2·max(J, jmin)), written row-major
-/// into `out` (36 values, DOFs u1 v1 u2 v2 u3 v3). `jmin` > 0 tempers;
-/// `jmin` = 0 is plain FEM (divides by |J|, fails for J = 0). Pure and
-/// thread-safe; errors go to the thread's `tfem_last_error(NULL, …)`.
+/// Prescribes component `component` to `value` on every node of the
+/// boundary edges tagged `tag` (interior edges too). All or nothing: a node
+/// already prescribed a different value (see `tfem_fix`) refuses the
+/// whole call.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_element_stiffness(
-    xy: *const f64,
-    young: f64,
-    poisson: f64,
-    plane_mode: c_int,
-    jmin: f64,
-    out: *mut f64,
+pub unsafe extern "C" fn tfem_fix_edges(
+    model: *mut TfemModel,
+    tag: c_int,
+    comp: c_int,
+    value: f64,
 ) -> Status {
-    without_model(|| {
-        let x = corners_arg(xy)?;
-        let mat = Material::new(young, poisson, plane(plane_mode)?, "element")?;
-        let k = elasticity_stiffness(&TriGeometry::new(&x), &mat.d_matrix(), jmin_arg(jmin)?)?;
-        let flat: Vec<f64> = k.iter().flatten().copied().collect();
-        copy_out(&flat, out, 36, "out")
+    with_model(model, |m| {
+        let c = component(comp)?;
+        m.model.fix_edges(tag, c, value)
     })
 }
 
-/// Tempered Laplacian stiffness of one P1 triangle: K_ij = κ g_i·g_j /
-/// (2·max(J, jmin)), row-major into `out` (9 values). `jmin` as in
-/// `tfem_element_stiffness`. Pure and thread-safe.
+/// Changes the value of displacement component `comp` (0 x, 1 y) of
+/// `node`, prescribed before by `tfem_fix` or `tfem_fix_edges`: the loads of
+/// a non-proportional load history, which goes on with the same
+/// factorisation (the set of prescribed DOFs is unchanged). A node not
+/// prescribed in that component is refused, naming it.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_laplacian_stiffness(
-    xy: *const f64,
-    kappa: f64,
-    jmin: f64,
-    out: *mut f64,
+pub unsafe extern "C" fn tfem_set_prescribed(
+    model: *mut TfemModel,
+    node: c_int,
+    comp: c_int,
+    value: f64,
 ) -> Status {
-    without_model(|| {
-        let x = corners_arg(xy)?;
-        if !(kappa.is_finite() && kappa > 0.0) {
-            return Err(Error::argument(format!(
-                "kappa = {kappa:?} must be finite and > 0"
-            )));
-        }
-        let k = laplacian_stiffness(&TriGeometry::new(&x), kappa, jmin_arg(jmin)?)?;
-        let flat: Vec<f64> = k.iter().flatten().copied().collect();
-        copy_out(&flat, out, 9, "out")
+    with_model(model, |m| {
+        let n = m.n_nodes()?;
+        let v = m.index(node, n, "node")?;
+        m.model.set_prescribed(v, component(comp)?, value)
     })
 }
+
+/// Changes the value of displacement component `comp` (0 x, 1 y) on every
+/// node of the boundary edges tagged `tag`, each prescribed before by
+/// `tfem_fix_edges` or `tfem_fix`: `tfem_set_prescribed` for a whole tag,
+/// the loads of a load history given as `tfem_fix_edges` gives them (the
+/// factorisation is kept). All or nothing: an unknown tag, a value that is
+/// not finite or a node not prescribed in that component is refused
+/// (TFEM_STATUS_INVALID_ARGUMENT naming it) and the model is unchanged.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_set_prescribed_edges(
+    model: *mut TfemModel,
+    tag: c_int,
+    comp: c_int,
+    value: f64,
+) -> Status {
+    with_model(model, |m| {
+        let c = component(comp)?;
+        m.model.set_prescribed_edges(tag, c, value)
+    })
+}
+
+/// Removes every prescribed displacement.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_clear_constraints(model: *mut TfemModel) -> Status {
+    with_model(model, |m| {
+        m.model.clear_constraints();
+        Ok(())
+    })
+}
+
+/// Applies pressure `pressure` on the boundary edges tagged `tag`: a
+/// stress (force per unit area, Pa in SI), positive pushing into the body;
+/// with the 2D convention of unit thickness, an edge of length ℓ carries
+/// the force ℓ·pressure per unit thickness. Loads add up.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_add_pressure(
+    model: *mut TfemModel,
+    tag: c_int,
+    pressure: f64,
+) -> Status {
+    with_model(model, |m| m.model.add_pressure(tag, pressure))
+}
+
+/// Applies the traction (tx, ty) on the boundary edges tagged `tag`: a
+/// stress vector (force per unit area, Pa in SI); an edge of length ℓ
+/// carries ℓ·(tx, ty) per unit thickness. Loads add up.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_add_traction(
+    model: *mut TfemModel,
+    tag: c_int,
+    tx: f64,
+    ty: f64,
+) -> Status {
+    with_model(model, |m| m.model.add_traction(tag, [tx, ty]))
+}
+
+/// Adds the point force (fx, fy) at `node`: force per unit thickness (N/m
+/// in SI). Loads add up.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_add_nodal_force(
+    model: *mut TfemModel,
+    node: c_int,
+    fx: f64,
+    fy: f64,
+) -> Status {
+    with_model(model, |m| {
+        let n = m.n_nodes()?;
+        let v = m.index(node, n, "node")?;
+        m.model.add_nodal_force(v, [fx, fy])
+    })
+}
+
+/// Sets the body force (bx, by) of body `body`: force per unit volume (ρg,
+/// N/m³ in SI), acting on each unit area of the mesh per unit thickness.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_set_body_force(
+    model: *mut TfemModel,
+    body: c_int,
+    bx: f64,
+    by: f64,
+) -> Status {
+    with_model(model, |m| m.model.set_body_force(body, [bx, by]))
+}
+
+/// Removes every load.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_clear_loads(model: *mut TfemModel) -> Status {
+    with_model(model, |m| {
+        m.model.clear_loads();
+        Ok(())
+    })
+}
+
+// -------- Contact pairs -----------------------------------------------
 
 /// Declares a potential contact interface between the boundary edges tagged
 /// `tag_a` (one body) and `tag_b` (another body). The contact mesh B is
@@ -989,239 +825,66 @@ pub unsafe extern "C" fn tfem_add_contact_pair_with_mesh(
     })
 }
 
-/// Fills `options` with the defaults: frictionless law, E_c and λ derived
-/// from the model, linearised inversion test, 50 iterations.
+/// Declares a contact pair for every two boundary tags of different bodies
+/// whose edges face each other within `tolerance` (model length units: some
+/// edge of the one within `tolerance` of some edge of the other, outward
+/// normals opposed within 30°, each in front of the other, overlapping
+/// along the interface, no third body between them; a gap of exactly
+/// `tolerance` pairs; docs/method.md §6.16). `tags` (`n_tags` values) restricts the search to
+/// those tags; with `n_tags` = 0 every tag that can be a contact side is
+/// considered, and `tags` may be NULL. Pairs already declared are skipped,
+/// tags of one body never pair, and an interface found again under tags
+/// that share its edges with a pair kept (a "whole boundary" group beside
+/// the faces) is skipped: the pair of tags with the fewest edges is kept
+/// (to pair an interface under other tags, declare that pair by hand
+/// instead). What is left out without an error — with `n_tags` = 0, a tag
+/// whose edges bound several bodies; an interface found again under other
+/// tags — is named in a warning (`tfem_warning_count`, `tfem_get_warning`).
+/// The pairs added get consecutive indices:
+/// writes the first to `first` (may be NULL) and their number, 0 when
+/// nothing faces within the tolerance, to `count` (may be NULL). A negative
+/// or non-finite tolerance, an unknown tag or an interface whose contact
+/// mesh cannot be built is refused, naming it, and nothing is added.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_contact_options_default(options: *mut TfemContactOptions) -> Status {
-    without_model(|| {
-        let d = ContactOptions::default();
-        write(
-            options,
-            TfemContactOptions {
-                law: d.law as c_int,
-                contact_modulus: 0.0,
-                lambda: 0.0,
-                inversion_test: d.test as c_int,
-                max_iterations: d.max_iterations as c_int,
-                refactorize: c_int::from(d.refactorize),
-            },
-            "options",
-        )
-    })
-}
-
-/// Solves the contact problem by the active-set loop over inverted contact
-/// elements (under the mortar weighting, `tfem_set_contact_weighting`, over
-/// the slave nodes whose weighted gap is negative). `options` may be NULL (defaults); `report` may be NULL.
-/// TFEM_STATUS_NOT_CONVERGED (cycle or iteration cap) gives the history in
-/// the message; the model is then unchanged. Every DOF prescribed:
-/// TFEM_STATUS_INVALID_STATE.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_solve_contact(
+pub unsafe extern "C" fn tfem_add_contact_pairs_auto(
     model: *mut TfemModel,
-    options: *const TfemContactOptions,
-    report: *mut TfemContactReport,
+    n_tags: c_int,
+    tags: *const c_int,
+    tolerance: f64,
+    first: *mut c_int,
+    count: *mut c_int,
 ) -> Status {
     with_model(model, |m| {
-        // SAFETY: NULL or a caller-owned options struct.
-        let opts = match unsafe { options.as_ref() } {
-            None => ContactOptions::default(),
-            Some(o) => options_in(o)?,
+        let n = usize::try_from(n_tags)
+            .map_err(|_| Error::argument(format!("n_tags = {n_tags} must be >= 0")))?;
+        let tags = match n {
+            0 => None,
+            _ => Some(slice_in(tags, n, "tags")?),
         };
-        let r = m.model.solve_contact(&opts)?;
-        write_optional(report, report_out(&r));
+        let before = m.model.contact_pairs().len();
+        let added = m.model.add_contact_pairs_auto(tags, tolerance)?;
+        write_optional(first, before as c_int);
+        write_optional(count, added.len() as c_int);
         Ok(())
     })
 }
 
-/// Copies the active flag (1 active, 0 not) of every contact element of
-/// the last contact solve (n_contact_elements values, see `tfem_get_sizes`).
+/// Sets Coulomb's friction coefficient μ ≥ 0 of contact pair `pair`
+/// (0-based, from `tfem_add_contact_pair`): stick while the shear stays
+/// within μ times the pressure, slip against the slip of the step beyond
+/// (docs/method.md §6.15). 0, the default, is frictionless, bit for bit.
+/// A negative or non-finite μ, or an unknown pair, is refused
+/// (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load
+/// history. Frictional or not, the elements of a pair's contact mesh
+/// measure every point of the interface along the first side's normal
+/// there, so that a frictionless interface transmits no tangential
+/// traction.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_active(
-    model: *mut TfemModel,
-    out: *mut c_int,
-    length: usize,
-) -> Status {
-    with_model(model, |m| {
-        map_out(m.model.contact_active()?, out, length, "out", c_int::from)
-    })
-}
-
-/// Copies the contact pressure of every contact element (n_contact_elements
-/// values): the normal stress −n·σ·n in the element (force per unit area,
-/// Pa in SI), positive in compression, 0 when inactive. It is the
-/// traction at the element's apex (the interface point it measures:
-/// on matching meshes the apex node), times the share of its edge that
-/// faces the other side; each point is measured by two elements, one
-/// with its edge on either side. For the traction at the interface
-/// nodes, read `tfem_get_contact_nodal_tractions` (on a non-matching
-/// interface one family's element values read up to twice the traction).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_pressure(
-    model: *mut TfemModel,
-    out: *mut f64,
-    length: usize,
-) -> Status {
-    with_model(model, |m| {
-        copy_out(m.model.contact_pressure()?, out, length, "out")
-    })
-}
-
-/// Copies the nodes of every contact element (3·n_contact_elements
-/// indices, in the model's index base), oriented so that J > 0 when the gap
-/// opens. Refused (TFEM_STATUS_INVALID_STATE) after a solve under
-/// the mortar weighting, which uses no B.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_elements(
-    model: *mut TfemModel,
-    out: *mut c_int,
-    length: usize,
-) -> Status {
-    with_model(model, |m| {
-        let b = m.index_base as c_int;
-        let v: Vec<c_int> = m
-            .model
-            .contact_elements()?
-            .iter()
-            .flat_map(|e| e.nodes.map(|n| n as c_int + b))
-            .collect();
-        copy_out(&v, out, length, "out")
-    })
-}
-
-/// Writes the report of the last contact solve to `report`.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_report(
-    model: *mut TfemModel,
-    report: *mut TfemContactReport,
-) -> Status {
-    with_model(model, |m| {
-        write(report, report_out(m.model.contact_report()?), "report")
-    })
-}
-
-/// Adds tagged boundary edges to those already set (see
-/// `tfem_set_boundary_edges`): `n_edges` edges given by `edge_nodes`
-/// (2·n_edges node indices) with a tag each in `tags`, for instance one
-/// call per boundary group. An edge given again with a tag it already has
-/// is refused (its loads would count twice); on any error nothing changes.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_add_boundary_edges(
-    model: *mut TfemModel,
-    n_edges: c_int,
-    edge_nodes: *const c_int,
-    tags: *const c_int,
-) -> Status {
-    with_model(model, |m| {
-        let (edges, tags) = edges_in(m, n_edges, edge_nodes, tags)?;
-        m.model.add_boundary_edges(&edges, tags)
-    })
-}
-
-/// Writes the work of the external loads of the last solve, Σ f·u over
-/// every node (force × length per unit thickness, J/m in SI): for a
-/// pressure load, the compliance ∫ p (−u·n) ds.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_external_work(model: *mut TfemModel, work: *mut f64) -> Status {
-    with_model(model, |m| write(work, m.model.external_work()?, "work"))
-}
-
-/// Copies the force the contact exerts on every node in the last contact
-/// solve (fx fy per node, 2·n_nodes values; force per unit thickness, N/m
-/// in SI; zero off the contact interfaces), computed on request. The
-/// forces of one pair sum to zero; on a body they balance its loads and
-/// reactions.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_forces(
-    model: *mut TfemModel,
-    out: *mut f64,
-    length: usize,
-) -> Status {
-    with_model(model, |m| {
-        let v: Vec<f64> = m.model.contact_forces()?.into_iter().flatten().collect();
-        copy_out(&v, out, length, "out")
-    })
-}
-
-/// Copies the contact pressure at every node in the last contact solve
-/// (n_nodes values; force per unit area, Pa in SI, positive in compression;
-/// zero off the contact interfaces), computed on request: the traction
-/// read from both sides of the interface (the mean of a node's normal
-/// contact force over its tributary — the integral of its hat over its
-/// interface edges as far as they face the other side, half its edges
-/// where they face it whole — and the other side's forces over their
-/// tributaries near it); where the other side is more than 1.8 times
-/// coarser, a node takes the other side's reading there, interpolated
-/// (the coarser side's reading is the closer to the traction), blended
-/// with its own from 1.2 times. Exact for a
-/// uniform pressure on matching and non-matching interfaces alike. Each
-/// pair is read with its own forces; a node on several pairs (where three
-/// bodies meet) gets their normal
-/// forces over their tributaries together: the pressure where two pairs
-/// continue one face, the tributary-weighted mean of its faces' pressures
-/// at a corner.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_nodal_pressures(
-    model: *mut TfemModel,
-    out: *mut f64,
-    length: usize,
-) -> Status {
-    with_model(model, |m| {
-        copy_out(&m.model.contact_nodal_pressures()?, out, length, "out")
-    })
-}
-
-/// Copies the contact traction at every node in the last contact solve or
-/// step, as (p, τ) per node (2·n_nodes values; force per unit area, Pa in
-/// SI; zero off the contact interfaces), computed on request. p is the
-/// pressure of `tfem_get_contact_nodal_pressures`, positive in
-/// compression. τ is the tangential traction the other body exerts on the
-/// node's body, along t = (−n_y, n_x) with n the body's outward normal
-/// (the direction of travel along a counter-clockwise boundary), so that
-/// both sides of an interface read one traction with one sign; the vector
-/// traction on the node's body is τ t − p n. Each part is the contact
-/// law's own, read along the normal the contact mesh measures the point
-/// along (one per point of the interface: its first side's): a
-/// frictionless interface reads τ = 0 to round-off, curved or not, and a
-/// frictional one its Coulomb shear. Pairs under the mortar weighting
-/// (frictionless) read τ = 0. Before a contact solve, or after a change,
-/// there are no results (TFEM_STATUS_INVALID_STATE).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_nodal_tractions(
-    model: *mut TfemModel,
-    out: *mut f64,
-    length: usize,
-) -> Status {
-    with_model(model, |m| {
-        let t: Vec<f64> = m
-            .model
-            .contact_nodal_tractions()?
-            .into_iter()
-            .flatten()
-            .collect();
-        copy_out(&t, out, length, "out")
-    })
-}
-
-/// `tfem_get_contact_nodal_tractions` of contact pair `pair` (0-based)
-/// alone, read over that pair's forces and tributaries as
-/// `tfem_get_contact_pair_nodal_pressures` reads its pressures (2·n_nodes
-/// values). An unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT
-/// naming it).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_pair_nodal_tractions(
-    model: *mut TfemModel,
-    pair: c_int,
-    out: *mut f64,
-    length: usize,
-) -> Status {
+pub unsafe extern "C" fn tfem_set_friction(model: *mut TfemModel, pair: c_int, mu: f64) -> Status {
     with_model(model, |m| {
         let n = m.model.contact_pairs().len();
         let p = usize::try_from(pair).map_err(|_| crate::error::no_pair(pair, n))?;
-        let t: Vec<f64> = (m.model.contact_pair_nodal_tractions(p)?.into_iter())
-            .flatten()
-            .collect();
-        copy_out(&t, out, length, "out")
+        m.model.set_friction(p, mu)
     })
 }
 
@@ -1271,110 +934,6 @@ pub unsafe extern "C" fn tfem_get_contact_weighting(
 ) -> Status {
     with_model(model, |m| {
         write(weighting, m.model.contact_weighting().to_i32(), "weighting")
-    })
-}
-
-/// Copies the state of every slave node after a contact solve under the
-/// mortar weighting, n = the report's `elements`, in the order of the
-/// pairs: `node` (n values: the slave node, in the model's index base),
-/// `tributary` (n values: m_i, the length its hat covers where it faces
-/// the other side), `gap` (n values: the mean gap G_i/m_i, negative where
-/// the bodies overlap) and `pressure` (n values: −κG_i/m_i, positive in
-/// compression, 0 when inactive; an active node whose weighted gap is at
-/// the round-off of the displacements, as where the bodies touch without
-/// load, can read a pressure of that round-off of either sign). Any pointer may be NULL (that column is
-/// not written); `length` (>= n) is the size of each buffer given. Refused
-/// after a solve under the strip weighting.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_slave_nodes(
-    model: *mut TfemModel,
-    node: *mut c_int,
-    tributary: *mut f64,
-    gap: *mut f64,
-    pressure: *mut f64,
-    length: usize,
-) -> Status {
-    with_model(model, |m| {
-        let slaves = m.model.contact_slave_nodes()?;
-        if length < slaves.len() {
-            return Err(Error::new(
-                Status::BufferTooSmall,
-                format!(
-                    "length = {length} is smaller than the {} slave nodes",
-                    slaves.len()
-                ),
-            ));
-        }
-        let base = m.index_base;
-        let names = slaves
-            .iter()
-            .map(|s| c_int::try_from(s.node + base))
-            .collect::<std::result::Result<Vec<c_int>, _>>()
-            .map_err(|_| Error::argument("a slave node's number does not fit in an int"))?;
-        if !node.is_null() {
-            copy_out(&names, node, length, "node")?;
-        }
-        let column = |out: *mut f64, f: fn(&SlaveNode) -> f64| -> Result<()> {
-            if out.is_null() {
-                return Ok(());
-            }
-            let v: Vec<f64> = slaves.iter().map(f).collect();
-            copy_out(&v, out, length, "slave node values")
-        };
-        column(tributary, |s| s.tributary)?;
-        column(gap, |s| s.gap)?;
-        column(pressure, |s| s.pressure)?;
-        Ok(())
-    })
-}
-
-/// Copies the contact pressure of contact pair `pair` (0-based, from
-/// `tfem_add_contact_pair` or `tfem_add_contact_pairs_auto`) alone at every
-/// node in the last contact solve (n_nodes values, as
-/// `tfem_get_contact_nodal_pressures`; zero off that pair's contact
-/// mesh), computed on request from that pair's forces over that pair's
-/// tributaries: a node where three bodies meet reads each face on its own
-/// (at a block's corner, the bed's pressure on the bed pair and the head
-/// joint's on the head pair), where `tfem_get_contact_nodal_pressures`
-/// gives their tributary-weighted mean. As there, where one side ends
-/// inside an edge of the other, the first node of the other side past
-/// that end reads the other side's pressure near that end.
-/// An unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT naming it);
-/// before a contact solve, or after a change (declaring a pair is one),
-/// there are no results (TFEM_STATUS_INVALID_STATE).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_pair_nodal_pressures(
-    model: *mut TfemModel,
-    pair: c_int,
-    out: *mut f64,
-    length: usize,
-) -> Status {
-    with_model(model, |m| {
-        let n = m.model.contact_pairs().len();
-        let p = usize::try_from(pair).map_err(|_| crate::error::no_pair(pair, n))?;
-        copy_out(
-            &m.model.contact_pair_nodal_pressures(p)?,
-            out,
-            length,
-            "out",
-        )
-    })
-}
-
-/// Copies the normal gap at every node in the last contact solve
-/// (n_nodes values, model length units; zero off the contact interfaces),
-/// computed on request: the smallest, over the contact elements at the
-/// node, of the distance of an element's apex from its interface edge in
-/// the deformed configuration (linearised). Positive: open; negative: the
-/// bodies interpenetrate (by O(h²), the penalty of the contact elements).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_gaps(
-    model: *mut TfemModel,
-    out: *mut f64,
-    length: usize,
-) -> Status {
-    with_model(model, |m| {
-        copy_out(&m.model.contact_gaps()?, out, length, "out")
     })
 }
 
@@ -1487,30 +1046,524 @@ pub unsafe extern "C" fn tfem_get_contact_pair_bodies(
     })
 }
 
-/// Sets the number of threads the model's solves run on: 1 <= `threads`
-/// <= 1024 gives the model a pool of its own (1: no parallelism at all, for a
-/// host that runs its own OpenMP or MPI threads); 0 (the default) uses
-/// the process-wide pool, with as many threads as cores or the
-/// environment variable RAYON_NUM_THREADS. Results do not depend on it
-/// beyond round-off, and are kept.
+// -------- Solve -------------------------------------------------------
+
+/// Fills `options` with the defaults: frictionless law, E_c and λ derived
+/// from the model, linearised inversion test, 50 iterations.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_set_threads(model: *mut TfemModel, threads: c_int) -> Status {
-    with_model(model, |m| {
-        let n = usize::try_from(threads)
-            .map_err(|_| Error::argument(format!("threads = {threads} must be >= 0")))?;
-        m.model.set_threads(n)
+pub unsafe extern "C" fn tfem_contact_options_default(options: *mut TfemContactOptions) -> Status {
+    without_model(|| {
+        let d = ContactOptions::default();
+        write(
+            options,
+            TfemContactOptions {
+                law: d.law as c_int,
+                contact_modulus: 0.0,
+                lambda: 0.0,
+                inversion_test: d.test as c_int,
+                max_iterations: d.max_iterations as c_int,
+                refactorize: c_int::from(d.refactorize),
+            },
+            "options",
+        )
     })
 }
 
-/// Writes the number of threads the model's solves run on (see
-/// `tfem_set_threads`).
+/// Solves a scene without contact. `info` may be NULL. A body that is not
+/// restrained gives TFEM_STATUS_SINGULAR naming it. A model with every
+/// DOF prescribed has nothing to solve: TFEM_STATUS_INVALID_STATE; so also
+/// `tfem_solve_contact` and `tfem_step`.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_threads(model: *mut TfemModel, threads: *mut c_int) -> Status {
+pub unsafe extern "C" fn tfem_solve(model: *mut TfemModel, info: *mut TfemSolveInfo) -> Status {
     with_model(model, |m| {
-        let n = c_int::try_from(m.model.threads()).unwrap_or(c_int::MAX);
-        write(threads, n, "threads")
+        let i = m.model.solve()?;
+        write_optional(info, info_out(&i));
+        Ok(())
     })
 }
+
+/// Solves the contact problem by the active-set loop over inverted contact
+/// elements (under the mortar weighting, `tfem_set_contact_weighting`, over
+/// the slave nodes whose weighted gap is negative). `options` may be NULL (defaults); `report` may be NULL.
+/// TFEM_STATUS_NOT_CONVERGED (cycle or iteration cap) gives the history in
+/// the message; the model is then unchanged. Every DOF prescribed:
+/// TFEM_STATUS_INVALID_STATE.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_solve_contact(
+    model: *mut TfemModel,
+    options: *const TfemContactOptions,
+    report: *mut TfemContactReport,
+) -> Status {
+    with_model(model, |m| {
+        // SAFETY: NULL or a caller-owned options struct.
+        let opts = match unsafe { options.as_ref() } {
+            None => ContactOptions::default(),
+            Some(o) => options_in(o)?,
+        };
+        let r = m.model.solve_contact(&opts)?;
+        write_optional(report, report_out(&r));
+        Ok(())
+    })
+}
+
+// -------- Results -----------------------------------------------------
+
+/// Copies the nodal displacements (u0 v0 u1 v1 …, 2·n_nodes values) of the
+/// last solve into `out` of `length` values.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_displacements(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let u: Vec<f64> = m.model.displacements()?.into_iter().flatten().collect();
+        copy_out(&u, out, length, "out")
+    })
+}
+
+/// Copies element strains (ε_xx ε_yy γ_xy per triangle, engineering shear,
+/// 3·n_triangles values), computed on request.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_element_strains(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let v: Vec<f64> = m.model.element_strains()?.into_iter().flatten().collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies element stresses (σ_xx σ_yy σ_xy per triangle, 3·n_triangles
+/// values; force per unit area, Pa in SI), computed on request. An
+/// overflow gives TFEM_STATUS_NUMERICAL_FAILURE naming the triangle.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_element_stresses(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let v: Vec<f64> = m.model.element_stresses()?.into_iter().flatten().collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies J (twice the signed area, initial configuration) of every
+/// triangle as stored, that is after the turning of triangles numbered
+/// clockwise (see `tfem_set_mesh`): negative only for the mesh's folds
+/// (n_triangles values). Needs only a mesh.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_element_jacobians(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let v = m.model.element_jacobians()?;
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies reaction forces (Rx Ry per node, 2·n_nodes values; force per
+/// unit thickness, N/m in SI; zero at DOFs that are not prescribed),
+/// computed on request. `tfem_solve` and `tfem_solve_contact` bound their
+/// rounding per body and warn (`tfem_get_warning`), naming the body, where
+/// its reactions may carry fewer than six correct digits (a "rigid" body
+/// given a huge Young's modulus: prescribe its motion with a modulus like
+/// its neighbours' instead).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_reactions(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let v: Vec<f64> = m.model.reactions()?.into_iter().flatten().collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Writes the work of the external loads of the last solve, Σ f·u over
+/// every node (force × length per unit thickness, J/m in SI): for a
+/// pressure load, the compliance ∫ p (−u·n) ds.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_external_work(model: *mut TfemModel, work: *mut f64) -> Status {
+    with_model(model, |m| write(work, m.model.external_work()?, "work"))
+}
+
+/// Writes the solved model to the file `path` (NUL-terminated; on Unix any
+/// bytes, as for `tfem_load_gmsh`) as a VTK XML unstructured grid (`.vtu`,
+/// read by ParaView, VTK and meshio; binary: raw appended data,
+/// little-endian, UInt64 block headers, no compression):
+/// the mesh in its initial configuration (z = 0) with
+/// - point data `displacement` ([u, v, 0]) and, after a contact solve or
+///   load step under either weighting, `contact_pressure` (the nodal
+///   pressure of `tfem_get_contact_nodal_pressures`), `contact_shear`
+///   (the nodal shear of `tfem_get_contact_nodal_tractions`),
+///   `contact_force` ([f_x, f_y, 0], `tfem_get_contact_forces`) and
+///   `contact_gap` (`tfem_get_contact_gaps`); none of them after a solve
+///   without contact;
+/// - cell data `body` (the body tag), `J` (twice the signed area), `strain`
+///   [ε_xx, ε_yy, γ_xy] and `stress` [σ_xx, σ_yy, σ_xy];
+/// - for the pairs weighted by B, its elements
+///   appended after the body triangles as cells of body −1 (zero strain
+///   and stress), with cell data `contact_element_active` (UInt8, 1 where
+///   active) and `contact_element_pressure` (`tfem_get_contact_active`,
+///   `tfem_get_contact_pressure`; 0 on the body triangles). Pairs under
+///   the mortar weighting have no B: their contact is in the nodal arrays.
+///
+/// (Earlier versions named the last two `contact_active` and
+/// `contact_pressure`, wrote them as zeros under the mortar weighting,
+/// and wrote no nodal contact array.)
+/// Returns TFEM_STATUS_INVALID_STATE before a solve (nothing is written),
+/// TFEM_STATUS_IO when the file cannot be written (the message names it
+/// and the reason), TFEM_STATUS_INVALID_ARGUMENT if the library was built
+/// without the `vtu` feature. The model is never changed.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_write_vtu(model: *mut TfemModel, path: *const c_char) -> Status {
+    with_model(model, |m| {
+        if path.is_null() {
+            return Err(null("path"));
+        }
+        // SAFETY: a NUL-terminated string from the caller.
+        let path = unsafe { std::ffi::CStr::from_ptr(path) };
+        write_vtu(m, &path_of(path)?)
+    })
+}
+
+#[cfg(feature = "vtu")]
+fn write_vtu(m: &TfemModel, path: &std::path::Path) -> Result<()> {
+    crate::io::vtu::write_vtu(&m.model, path)
+}
+
+#[cfg(not(feature = "vtu"))]
+fn write_vtu(_: &TfemModel, _: &std::path::Path) -> Result<()> {
+    Err(Error::argument(
+        "this libtfem was built without the `vtu` feature",
+    ))
+}
+
+// -------- Contact results ---------------------------------------------
+
+/// Writes the report of the last contact solve to `report`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_report(
+    model: *mut TfemModel,
+    report: *mut TfemContactReport,
+) -> Status {
+    with_model(model, |m| {
+        write(report, report_out(m.model.contact_report()?), "report")
+    })
+}
+
+/// Copies the force the contact exerts on every node in the last contact
+/// solve (fx fy per node, 2·n_nodes values; force per unit thickness, N/m
+/// in SI; zero off the contact interfaces), computed on request. The
+/// forces of one pair sum to zero; on a body they balance its loads and
+/// reactions.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_forces(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let v: Vec<f64> = m.model.contact_forces()?.into_iter().flatten().collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies the contact pressure at every node in the last contact solve
+/// (n_nodes values; force per unit area, Pa in SI, positive in compression;
+/// zero off the contact interfaces), computed on request: the traction
+/// read from both sides of the interface (the mean of a node's normal
+/// contact force over its tributary — the integral of its hat over its
+/// interface edges as far as they face the other side, half its edges
+/// where they face it whole — and the other side's forces over their
+/// tributaries near it); where the other side is more than 1.8 times
+/// coarser, a node takes the other side's reading there, interpolated
+/// (the coarser side's reading is the closer to the traction), blended
+/// with its own from 1.2 times. Exact for a
+/// uniform pressure on matching and non-matching interfaces alike. Each
+/// pair is read with its own forces; a node on several pairs (where three
+/// bodies meet) gets their normal
+/// forces over their tributaries together: the pressure where two pairs
+/// continue one face, the tributary-weighted mean of its faces' pressures
+/// at a corner.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_nodal_pressures(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        copy_out(&m.model.contact_nodal_pressures()?, out, length, "out")
+    })
+}
+
+/// Copies the contact traction at every node in the last contact solve or
+/// step, as (p, τ) per node (2·n_nodes values; force per unit area, Pa in
+/// SI; zero off the contact interfaces), computed on request. p is the
+/// pressure of `tfem_get_contact_nodal_pressures`, positive in
+/// compression. τ is the tangential traction the other body exerts on the
+/// node's body, along t = (−n_y, n_x) with n the body's outward normal
+/// (the direction of travel along a counter-clockwise boundary), so that
+/// both sides of an interface read one traction with one sign; the vector
+/// traction on the node's body is τ t − p n. Each part is the contact
+/// law's own, read along the normal the contact mesh measures the point
+/// along (one per point of the interface: its first side's): a
+/// frictionless interface reads τ = 0 to round-off, curved or not, and a
+/// frictional one its Coulomb shear. Pairs under the mortar weighting
+/// (frictionless) read τ = 0. Before a contact solve, or after a change,
+/// there are no results (TFEM_STATUS_INVALID_STATE).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_nodal_tractions(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let t: Vec<f64> = m
+            .model
+            .contact_nodal_tractions()?
+            .into_iter()
+            .flatten()
+            .collect();
+        copy_out(&t, out, length, "out")
+    })
+}
+
+/// Copies the contact pressure of contact pair `pair` (0-based, from
+/// `tfem_add_contact_pair` or `tfem_add_contact_pairs_auto`) alone at every
+/// node in the last contact solve (n_nodes values, as
+/// `tfem_get_contact_nodal_pressures`; zero off that pair's contact
+/// mesh), computed on request from that pair's forces over that pair's
+/// tributaries: a node where three bodies meet reads each face on its own
+/// (at a block's corner, the bed's pressure on the bed pair and the head
+/// joint's on the head pair), where `tfem_get_contact_nodal_pressures`
+/// gives their tributary-weighted mean. As there, where one side ends
+/// inside an edge of the other, the first node of the other side past
+/// that end reads the other side's pressure near that end.
+/// An unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT naming it);
+/// before a contact solve, or after a change (declaring a pair is one),
+/// there are no results (TFEM_STATUS_INVALID_STATE).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_pair_nodal_pressures(
+    model: *mut TfemModel,
+    pair: c_int,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let n = m.model.contact_pairs().len();
+        let p = usize::try_from(pair).map_err(|_| crate::error::no_pair(pair, n))?;
+        copy_out(
+            &m.model.contact_pair_nodal_pressures(p)?,
+            out,
+            length,
+            "out",
+        )
+    })
+}
+
+/// `tfem_get_contact_nodal_tractions` of contact pair `pair` (0-based)
+/// alone, read over that pair's forces and tributaries as
+/// `tfem_get_contact_pair_nodal_pressures` reads its pressures (2·n_nodes
+/// values). An unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT
+/// naming it).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_pair_nodal_tractions(
+    model: *mut TfemModel,
+    pair: c_int,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let n = m.model.contact_pairs().len();
+        let p = usize::try_from(pair).map_err(|_| crate::error::no_pair(pair, n))?;
+        let t: Vec<f64> = (m.model.contact_pair_nodal_tractions(p)?.into_iter())
+            .flatten()
+            .collect();
+        copy_out(&t, out, length, "out")
+    })
+}
+
+/// Copies the normal gap at every node in the last contact solve
+/// (n_nodes values, model length units; zero off the contact interfaces),
+/// computed on request: the smallest, over the contact elements at the
+/// node, of the distance of an element's apex from its interface edge in
+/// the deformed configuration (linearised). Positive: open; negative: the
+/// bodies interpenetrate (by O(h²), the penalty of the contact elements).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_gaps(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        copy_out(&m.model.contact_gaps()?, out, length, "out")
+    })
+}
+
+/// Copies the active flag (1 active, 0 not) of every contact element of
+/// the last contact solve (n_contact_elements values, see `tfem_get_sizes`).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_active(
+    model: *mut TfemModel,
+    out: *mut c_int,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        map_out(m.model.contact_active()?, out, length, "out", c_int::from)
+    })
+}
+
+/// Copies the contact pressure of every contact element (n_contact_elements
+/// values): the normal stress −n·σ·n in the element (force per unit area,
+/// Pa in SI), positive in compression, 0 when inactive. It is the
+/// traction at the element's apex (the interface point it measures:
+/// on matching meshes the apex node), times the share of its edge that
+/// faces the other side; each point is measured by two elements, one
+/// with its edge on either side. For the traction at the interface
+/// nodes, read `tfem_get_contact_nodal_tractions` (on a non-matching
+/// interface one family's element values read up to twice the traction).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_pressure(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        copy_out(m.model.contact_pressure()?, out, length, "out")
+    })
+}
+
+/// Copies the nodes of every contact element (3·n_contact_elements
+/// indices, in the model's index base), oriented so that J > 0 when the gap
+/// opens. Refused (TFEM_STATUS_INVALID_STATE) after a solve under
+/// the mortar weighting, which uses no B.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_elements(
+    model: *mut TfemModel,
+    out: *mut c_int,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let b = m.index_base as c_int;
+        let v: Vec<c_int> = m
+            .model
+            .contact_elements()?
+            .iter()
+            .flat_map(|e| e.nodes.map(|n| n as c_int + b))
+            .collect();
+        copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies the shear traction τ = n·σ·t (Pa in SI; t = (−n_y, n_x), n the
+/// element's normal, see `tfem_get_contact_mesh`) of every contact element
+/// of the last contact solve or step (n_contact_elements values): 0 when
+/// open, |τ| ≤ μp when sticking, μp when slipping; all 0 when frictionless.
+/// An element value at its apex, as `tfem_get_contact_pressure`; the
+/// shear at the interface nodes is `tfem_get_contact_nodal_tractions`'.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_shear(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        copy_out(&m.model.contact_shear()?, out, length, "out")
+    })
+}
+
+/// Copies the frictional state of every contact element of the last
+/// contact solve or step (n_contact_elements values): 0 open, 1 stick,
+/// 2 slip (a frictionless solve: 2 where active).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_friction_state(
+    model: *mut TfemModel,
+    out: *mut c_int,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let state = m.model.contact_friction_state()?;
+        map_out(&state, out, length, "out", c_int::from)
+    })
+}
+
+/// Copies the energy dissipated by slip in the last step (or solve) at
+/// every contact element (n_contact_elements values, J per unit thickness
+/// in SI): ½ τ Δγ_p ≥ 0; all 0 when frictionless.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_dissipation(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        copy_out(&m.model.contact_dissipation()?, out, length, "out")
+    })
+}
+
+/// Copies the state of every slave node after a contact solve under the
+/// mortar weighting, n = the report's `elements`, in the order of the
+/// pairs: `node` (n values: the slave node, in the model's index base),
+/// `tributary` (n values: m_i, the length its hat covers where it faces
+/// the other side), `gap` (n values: the mean gap G_i/m_i, negative where
+/// the bodies overlap) and `pressure` (n values: −κG_i/m_i, positive in
+/// compression, 0 when inactive; an active node whose weighted gap is at
+/// the round-off of the displacements, as where the bodies touch without
+/// load, can read a pressure of that round-off of either sign). Any pointer may be NULL (that column is
+/// not written); `length` (>= n) is the size of each buffer given. Refused
+/// after a solve under the strip weighting.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_contact_slave_nodes(
+    model: *mut TfemModel,
+    node: *mut c_int,
+    tributary: *mut f64,
+    gap: *mut f64,
+    pressure: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let slaves = m.model.contact_slave_nodes()?;
+        if length < slaves.len() {
+            return Err(Error::new(
+                Status::BufferTooSmall,
+                format!(
+                    "length = {length} is smaller than the {} slave nodes",
+                    slaves.len()
+                ),
+            ));
+        }
+        let base = m.index_base;
+        let names = slaves
+            .iter()
+            .map(|s| c_int::try_from(s.node + base))
+            .collect::<std::result::Result<Vec<c_int>, _>>()
+            .map_err(|_| Error::argument("a slave node's number does not fit in an int"))?;
+        if !node.is_null() {
+            copy_out(&names, node, length, "node")?;
+        }
+        let column = |out: *mut f64, f: fn(&SlaveNode) -> f64| -> Result<()> {
+            if out.is_null() {
+                return Ok(());
+            }
+            let v: Vec<f64> = slaves.iter().map(f).collect();
+            copy_out(&v, out, length, "slave node values")
+        };
+        column(tributary, |s| s.tributary)?;
+        column(gap, |s| s.gap)?;
+        column(pressure, |s| s.pressure)?;
+        Ok(())
+    })
+}
+
+// -------- Load history ------------------------------------------------
 
 /// One quasi-static load step: the contact problem with the loads and
 /// prescribed displacements as set, scaled by `load_factor`, warm-started
@@ -1646,150 +1699,120 @@ pub unsafe extern "C" fn tfem_set_contact_state(
     })
 }
 
-/// Sets Coulomb's friction coefficient μ ≥ 0 of contact pair `pair`
-/// (0-based, from `tfem_add_contact_pair`): stick while the shear stays
-/// within μ times the pressure, slip against the slip of the step beyond
-/// (docs/method.md §6.15). 0, the default, is frictionless, bit for bit.
-/// A negative or non-finite μ, or an unknown pair, is refused
-/// (TFEM_STATUS_INVALID_ARGUMENT naming it). Changing μ starts a new load
-/// history. Frictional or not, the elements of a pair's contact mesh
-/// measure every point of the interface along the first side's normal
-/// there, so that a frictionless interface transmits no tangential
-/// traction.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_set_friction(model: *mut TfemModel, pair: c_int, mu: f64) -> Status {
-    with_model(model, |m| {
-        let n = m.model.contact_pairs().len();
-        let p = usize::try_from(pair).map_err(|_| crate::error::no_pair(pair, n))?;
-        m.model.set_friction(p, mu)
-    })
-}
+// -------- Utilities ---------------------------------------------------
 
-/// Changes the value of displacement component `comp` (0 x, 1 y) of
-/// `node`, prescribed before by `tfem_fix` or `tfem_fix_edges`: the loads of
-/// a non-proportional load history, which goes on with the same
-/// factorisation (the set of prescribed DOFs is unchanged). A node not
-/// prescribed in that component is refused, naming it.
+/// Sizes of the stiffness matrix of the last solve (see
+/// `tfem_get_system_matrix`): `n` unknowns and `nnz` stored entries of its
+/// upper triangle. Either pointer may be NULL.
 #[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_set_prescribed(
+pub unsafe extern "C" fn tfem_get_system_matrix_size(
     model: *mut TfemModel,
-    node: c_int,
-    comp: c_int,
-    value: f64,
+    n: *mut i64,
+    nnz: *mut i64,
 ) -> Status {
     with_model(model, |m| {
-        let n = m.n_nodes()?;
-        let v = m.index(node, n, "node")?;
-        m.model.set_prescribed(v, component(comp)?, value)
-    })
-}
-
-/// Changes the value of displacement component `comp` (0 x, 1 y) on every
-/// node of the boundary edges tagged `tag`, each prescribed before by
-/// `tfem_fix_edges` or `tfem_fix`: `tfem_set_prescribed` for a whole tag,
-/// the loads of a load history given as `tfem_fix_edges` gives them (the
-/// factorisation is kept). All or nothing: an unknown tag, a value that is
-/// not finite or a node not prescribed in that component is refused
-/// (TFEM_STATUS_INVALID_ARGUMENT naming it) and the model is unchanged.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_set_prescribed_edges(
-    model: *mut TfemModel,
-    tag: c_int,
-    comp: c_int,
-    value: f64,
-) -> Status {
-    with_model(model, |m| {
-        let c = component(comp)?;
-        m.model.set_prescribed_edges(tag, c, value)
-    })
-}
-
-/// Copies the shear traction τ = n·σ·t (Pa in SI; t = (−n_y, n_x), n the
-/// element's normal, see `tfem_get_contact_mesh`) of every contact element
-/// of the last contact solve or step (n_contact_elements values): 0 when
-/// open, |τ| ≤ μp when sticking, μp when slipping; all 0 when frictionless.
-/// An element value at its apex, as `tfem_get_contact_pressure`; the
-/// shear at the interface nodes is `tfem_get_contact_nodal_tractions`'.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_shear(
-    model: *mut TfemModel,
-    out: *mut f64,
-    length: usize,
-) -> Status {
-    with_model(model, |m| {
-        copy_out(&m.model.contact_shear()?, out, length, "out")
-    })
-}
-
-/// Copies the frictional state of every contact element of the last
-/// contact solve or step (n_contact_elements values): 0 open, 1 stick,
-/// 2 slip (a frictionless solve: 2 where active).
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_friction_state(
-    model: *mut TfemModel,
-    out: *mut c_int,
-    length: usize,
-) -> Status {
-    with_model(model, |m| {
-        let state = m.model.contact_friction_state()?;
-        map_out(&state, out, length, "out", c_int::from)
-    })
-}
-
-/// Copies the energy dissipated by slip in the last step (or solve) at
-/// every contact element (n_contact_elements values, J per unit thickness
-/// in SI): ½ τ Δγ_p ≥ 0; all 0 when frictionless.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_get_contact_dissipation(
-    model: *mut TfemModel,
-    out: *mut f64,
-    length: usize,
-) -> Status {
-    with_model(model, |m| {
-        copy_out(&m.model.contact_dissipation()?, out, length, "out")
-    })
-}
-
-/// Declares a contact pair for every two boundary tags of different bodies
-/// whose edges face each other within `tolerance` (model length units: some
-/// edge of the one within `tolerance` of some edge of the other, outward
-/// normals opposed within 30°, each in front of the other, overlapping
-/// along the interface, no third body between them; a gap of exactly
-/// `tolerance` pairs; docs/method.md §6.16). `tags` (`n_tags` values) restricts the search to
-/// those tags; with `n_tags` = 0 every tag that can be a contact side is
-/// considered, and `tags` may be NULL. Pairs already declared are skipped,
-/// tags of one body never pair, and an interface found again under tags
-/// that share its edges with a pair kept (a "whole boundary" group beside
-/// the faces) is skipped: the pair of tags with the fewest edges is kept
-/// (to pair an interface under other tags, declare that pair by hand
-/// instead). What is left out without an error — with `n_tags` = 0, a tag
-/// whose edges bound several bodies; an interface found again under other
-/// tags — is named in a warning (`tfem_warning_count`, `tfem_get_warning`).
-/// The pairs added get consecutive indices:
-/// writes the first to `first` (may be NULL) and their number, 0 when
-/// nothing faces within the tolerance, to `count` (may be NULL). A negative
-/// or non-finite tolerance, an unknown tag or an interface whose contact
-/// mesh cannot be built is refused, naming it, and nothing is added.
-#[unsafe(no_mangle)]
-pub unsafe extern "C" fn tfem_add_contact_pairs_auto(
-    model: *mut TfemModel,
-    n_tags: c_int,
-    tags: *const c_int,
-    tolerance: f64,
-    first: *mut c_int,
-    count: *mut c_int,
-) -> Status {
-    with_model(model, |m| {
-        let n = usize::try_from(n_tags)
-            .map_err(|_| Error::argument(format!("n_tags = {n_tags} must be >= 0")))?;
-        let tags = match n {
-            0 => None,
-            _ => Some(slice_in(tags, n, "tags")?),
-        };
-        let before = m.model.contact_pairs().len();
-        let added = m.model.add_contact_pairs_auto(tags, tolerance)?;
-        write_optional(first, before as c_int);
-        write_optional(count, added.len() as c_int);
+        let k = m.model.system_matrix()?;
+        write_optional(n, k.n() as i64);
+        write_optional(nnz, k.values.len() as i64);
         Ok(())
+    })
+}
+
+/// Copies the stiffness matrix K of the last solve on its unknowns (the
+/// DOFs left after Dirichlet elimination), the system K u = f whose
+/// solution `tfem_get_displacements` returns; for a contact solve it holds
+/// the contact elements active at convergence. Upper triangle in
+/// compressed sparse columns, rows ascending within each column:
+/// `col_ptr` (n + 1 values), `row_idx` and `values` (nnz values each),
+/// indices in the model's index base (`col_ptr[0]` = base). `dofs` (n
+/// values) gives each unknown's position in the array of
+/// `tfem_get_displacements`, in the index base (2·node + component for
+/// base 0). Every buffer is checked before any is written. Like every
+/// result it outlives a failed solve (which rebuilds it bit for bit) and
+/// is discarded by a change of the problem (TFEM_STATUS_INVALID_STATE).
+#[unsafe(no_mangle)]
+#[allow(clippy::too_many_arguments)]
+pub unsafe extern "C" fn tfem_get_system_matrix(
+    model: *mut TfemModel,
+    col_ptr: *mut i64,
+    col_ptr_length: usize,
+    row_idx: *mut i64,
+    row_idx_length: usize,
+    values: *mut f64,
+    values_length: usize,
+    dofs: *mut i64,
+    dofs_length: usize,
+) -> Status {
+    with_model(model, |m| {
+        let k = m.model.system_matrix()?;
+        let (n, nnz) = (k.n(), k.values.len());
+        for (ptr, len, need, what) in [
+            (col_ptr.is_null(), col_ptr_length, n + 1, "col_ptr"),
+            (row_idx.is_null(), row_idx_length, nnz, "row_idx"),
+            (values.is_null(), values_length, nnz, "values"),
+            (dofs.is_null(), dofs_length, n, "dofs"),
+        ] {
+            if ptr {
+                return Err(null(what));
+            }
+            if len < need {
+                return Err(Error::new(
+                    Status::BufferTooSmall,
+                    format!("`{what}` holds {len} values but {need} are needed"),
+                ));
+            }
+        }
+        let b = m.index_base as i64;
+        let based = |i: usize| i as i64 + b;
+        map_out(k.col_ptr, col_ptr, col_ptr_length, "col_ptr", based)?;
+        map_out(k.row_idx, row_idx, row_idx_length, "row_idx", based)?;
+        copy_out(k.values, values, values_length, "values")?;
+        map_out(k.unknowns, dofs, dofs_length, "dofs", based)
+    })
+}
+
+/// Tempered elasticity stiffness of one P1 triangle with corners `xy`
+/// (x1 y1 x2 y2 x3 y3): K = B̂ᵀ D B̂ / (2·max(J, jmin)), written row-major
+/// into `out` (36 values, DOFs u1 v1 u2 v2 u3 v3). `jmin` > 0 tempers;
+/// `jmin` = 0 is plain FEM (divides by |J|, fails for J = 0). Pure and
+/// thread-safe; errors go to the thread's `tfem_last_error(NULL, …)`.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_element_stiffness(
+    xy: *const f64,
+    young: f64,
+    poisson: f64,
+    plane_mode: c_int,
+    jmin: f64,
+    out: *mut f64,
+) -> Status {
+    without_model(|| {
+        let x = corners_arg(xy)?;
+        let mat = Material::new(young, poisson, plane(plane_mode)?, "element")?;
+        let k = elasticity_stiffness(&TriGeometry::new(&x), &mat.d_matrix(), jmin_arg(jmin)?)?;
+        let flat: Vec<f64> = k.iter().flatten().copied().collect();
+        copy_out(&flat, out, 36, "out")
+    })
+}
+
+/// Tempered Laplacian stiffness of one P1 triangle: K_ij = κ g_i·g_j /
+/// (2·max(J, jmin)), row-major into `out` (9 values). `jmin` as in
+/// `tfem_element_stiffness`. Pure and thread-safe.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_laplacian_stiffness(
+    xy: *const f64,
+    kappa: f64,
+    jmin: f64,
+    out: *mut f64,
+) -> Status {
+    without_model(|| {
+        let x = corners_arg(xy)?;
+        if !(kappa.is_finite() && kappa > 0.0) {
+            return Err(Error::argument(format!(
+                "kappa = {kappa:?} must be finite and > 0"
+            )));
+        }
+        let k = laplacian_stiffness(&TriGeometry::new(&x), kappa, jmin_arg(jmin)?)?;
+        let flat: Vec<f64> = k.iter().flatten().copied().collect();
+        copy_out(&flat, out, 9, "out")
     })
 }
