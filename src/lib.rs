@@ -2,10 +2,12 @@
 //!
 //! P1 triangles whose stiffness divides by max(J, Jmin) instead of J, so that
 //! flat, degenerate and inverted elements stay finite and do not lock
-//! (docs/method.md §2), and frictionless contact between bodies by
-//! activating the inverted elements of a contact mesh (docs/method.md §3)
-//! or, under [`ContactWeighting::Mortar`], the slave nodes whose mortar
-//! weighted gap is negative (docs/method.md §6.11).
+//! (docs/method.md §2), and contact between bodies, frictionless or with
+//! Coulomb friction (docs/method.md §6.15), by activating the inverted
+//! elements of a contact mesh (docs/method.md §3) or, where the automatic
+//! weighting chooses the mortar weighting ([`ContactWeighting::Mortar`]),
+//! the slave nodes whose mortar weighted gap is negative (docs/method.md
+//! §6.11).
 //!
 //! The Rust API ([`Model`], [`Mesh`], [`Material`]) is the real API; the C
 //! ABI in [`ffi`] is a thin translation layer over it.
