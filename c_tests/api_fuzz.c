@@ -305,24 +305,16 @@ static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetrat
 #define API_FUZZ_REVERT_AFRESH 1
 #endif
 
-/* A library defect this tester found (c_tests/README.md, "The automatic
- * weighting"), still there on main at 3cf69ad: an interface cut into two
- * pairs under the mortar weighting (the same two bodies, a slave node
- * ending both) is solved as the uncut one, and since 20619d0 read as it
- * by tfem_get_contact_nodal_pressures (to 1e-9 of the largest, the slave
- * nodes' pressures to the bit: checked always, twin mode 5 and
- * oracle_slave_nodes); but the weighted gap at the shared slave node,
- * moved to the first pair (merge_shared), is read as that pair's alone by
- * tfem_get_contact_pair_nodal_pressures: the first pair reads the
- * pressure at master nodes beyond the cut, on the second pair's sides
- * only (the header: "zero off that pair's contact mesh"), and the second
- * pair reads 0 at the shared slave node, an end of its own side (not
- * checked here: a node of two pairs). Checked (finding: contact) unless
- * built with -DAPI_FUZZ_MORTAR_CUT_READING=0, which skips the per-pair
- * reading where a solve with some pair under the mortar weighting has two
- * pairs or more. */
+/* A library defect this tester found, since fixed (c_tests/README.md,
+ * "The automatic weighting"; regression test in c_tests/mortar_test.c):
+ * an interface cut into two pairs under the mortar weighting read, per
+ * pair (tfem_get_contact_pair_nodal_pressures), the first pair's pressure
+ * at master nodes on the second pair's sides only. Checked (finding:
+ * contact); -DAPI_FUZZ_MORTAR_CUT_READING=0 skips the per-pair reading
+ * where a solve with some pair under the mortar weighting has two pairs
+ * or more. */
 #ifndef API_FUZZ_MORTAR_CUT_READING
-#define API_FUZZ_MORTAR_CUT_READING 0
+#define API_FUZZ_MORTAR_CUT_READING 1
 #endif
 
 /* Messages name the item and say why; what must not happen is an

@@ -277,8 +277,66 @@ static void the_mortar_weighting_refuses_a_frictional_pair_when_it_is_set(void) 
   tfem_destroy(m);
 }
 
+/* Found by the API fuzzer: the seed's straight blocks, the interface cut
+ * at x = 1/2 into pairs (2, 3) and (5, 6) under the mortar weighting (one
+ * interface: one weighted gap at the shared slave node). Pair 0 read the
+ * pressure at nodes on pair 1's sides only, and pair 1 read 0 at the
+ * shared slave node ending its own side. Each pair reads the uniform
+ * pressure at every node of its two sides and nothing elsewhere. Lower
+ * block [0,1]x[-0.25,0], 5 nodes a row (nodes 0-9); upper [0,1]x[0,0.25],
+ * 3 a row (10-15, the slave side). */
+static void each_pair_of_a_cut_mortar_interface_reads_its_own_sides(void) {
+  double cx[2 * 16];
+  int n = 0;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 5; ++i, ++n) cx[2 * n] = 0.25 * i, cx[2 * n + 1] = -0.25 + 0.25 * j;
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 3; ++i, ++n) cx[2 * n] = 0.5 * i, cx[2 * n + 1] = 0.25 * j;
+  int ct[3 * 12], cb[12], t = 0;
+  for (int i = 0; i < 4; ++i) {
+    int a = i, b = i + 1, c = i + 6, d = i + 5;
+    ct[3 * t] = a, ct[3 * t + 1] = b, ct[3 * t + 2] = c, cb[t++] = 1;
+    ct[3 * t] = a, ct[3 * t + 1] = c, ct[3 * t + 2] = d, cb[t++] = 1;
+  }
+  for (int i = 0; i < 2; ++i) {
+    int a = 10 + i, b = 11 + i, c = 14 + i, d = 13 + i;
+    ct[3 * t] = a, ct[3 * t + 1] = b, ct[3 * t + 2] = c, cb[t++] = 2;
+    ct[3 * t] = a, ct[3 * t + 1] = c, ct[3 * t + 2] = d, cb[t++] = 2;
+  }
+  int ce[] = {0, 1, 1, 2, 2, 3, 3, 4, 6, 5, 7, 6, 8, 7, 9, 8, 10, 11, 11, 12, 14, 13, 15, 14};
+  int cg[] = {1, 1, 1, 1, 2, 2, 5, 5, 3, 6, 4, 4};
+  tfem_model *m = tfem_create();
+  CHECK(tfem_set_mesh(m, 16, cx, 12, ct, cb, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_set_boundary_edges(m, 12, ce, cg) == TFEM_STATUS_OK);
+  CHECK(tfem_set_material(m, 1, 1e10, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_set_material(m, 2, 1e11, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 1, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix(m, 2, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix(m, 14, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_add_pressure(m, 4, P) == TFEM_STATUS_OK);
+  CHECK(tfem_set_contact_weighting(m, TFEM_CONTACT_WEIGHTING_MORTAR) == TFEM_STATUS_OK);
+  CHECK(tfem_add_contact_pair(m, 2, 3, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_add_contact_pair(m, 5, 6, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  double p[2][16];
+  CHECK(tfem_get_contact_pair_nodal_pressures(m, 0, p[0], 16) == TFEM_STATUS_OK);
+  CHECK(tfem_get_contact_pair_nodal_pressures(m, 1, p[1], 16) == TFEM_STATUS_OK);
+  /* The interface nodes: lower 5..9, upper 10..12. */
+  int ok = 1;
+  for (int v = 5; v <= 12; ++v) {
+    double x = cx[2 * v];
+    for (int k = 0; k < 2; ++k) {
+      int on_side = k == 0 ? x <= 0.5 : x >= 0.5;
+      ok &= on_side ? fabs(p[k][v] - P) <= 1e-9 * P : p[k][v] == 0.0;
+    }
+  }
+  CHECK(ok);
+  tfem_destroy(m);
+}
+
 int main(void) {
   patch_test_is_exact();
+  each_pair_of_a_cut_mortar_interface_reads_its_own_sides();
   refusals_name_what_the_weighting_does_not_serve();
   the_mortar_weighting_refuses_a_frictional_pair_when_it_is_set();
   printf("mortar_test: %d passed, %d failed\n", passed, failed);

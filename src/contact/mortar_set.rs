@@ -339,6 +339,13 @@ fn penalty(pair: usize, wg: &WeightedGap, kappa: f64, data: &PenaltyData<'_>) ->
     }
 }
 
+/// The interfaces by (slave body, master body), and the interface of each
+/// pair ([`MortarState::interfaces`]).
+type Interfaces<'s> = (
+    BTreeMap<(i32, i32), Interface<'s>>,
+    BTreeMap<usize, (i32, i32)>,
+);
+
 /// One interface of the slave nodes ([`MortarState::nodal_values`]).
 #[derive(Default)]
 struct Interface<'s> {
@@ -379,8 +386,11 @@ impl MortarState {
     /// the value interpolated along the nearest slave edge (zero at a slave
     /// node whose support does not face the master); zero elsewhere. A node
     /// on several pairs (where three bodies meet) gets the mean of its
-    /// pairs' values. Only pair `only` when given. Gives the values and
-    /// which nodes were read.
+    /// pairs' values. Pair `only` when given: its interface read whole (a
+    /// slave node ending two of its pairs carries one weighted gap, and a
+    /// weighted gap reads master nodes on either side of a cut), at the
+    /// nodes of that pair's two sides only. Gives the values and which
+    /// nodes were read.
     pub fn nodal_values(
         &self,
         mesh: &Mesh,
@@ -394,7 +404,12 @@ impl MortarState {
         let every: std::collections::HashMap<usize, f64> =
             self.nodes.iter().map(|s| (s.node, value(s))).collect();
         let of = |v: usize| every.get(&v).copied().unwrap_or(0.0);
-        for interface in self.interfaces(mesh, pairs, only)? {
+        let (interfaces, of_pair) = self.interfaces(mesh, pairs)?;
+        let mine = only.map(|o| of_pair.get(&o).copied());
+        for (key, interface) in &interfaces {
+            if mine.is_some_and(|k| k != Some(*key)) {
+                continue;
+            }
             for s in &interface.slaves {
                 sum[s.node] += value(s);
                 count[s.node] += 1;
@@ -417,6 +432,18 @@ impl MortarState {
                 count[m] += 1;
             }
         }
+        if let Some(o) = only {
+            let p = &pairs[o];
+            let mut on = vec![false; x.len()];
+            for tag in [p.tag_a, p.tag_b] {
+                for e in mesh.boundary_edges().iter().filter(|e| e.tag == tag) {
+                    e.nodes.iter().for_each(|&v| on[v] = true);
+                }
+            }
+            for (c, _) in count.iter_mut().zip(&on).filter(|(_, on)| !**on) {
+                *c = 0;
+            }
+        }
         let values = sum
             .iter()
             .zip(&count)
@@ -427,29 +454,28 @@ impl MortarState {
 
     /// The interfaces of the slave nodes — the pairs between the same slave
     /// body and master body together (a ring cut into pairs is one
-    /// interface) —, or of pair `only` alone: each one's slave nodes, the
-    /// master nodes its weighted gaps read, and its slave edges.
-    fn interfaces(
-        &self,
-        mesh: &Mesh,
-        pairs: &[ContactPair],
-        only: Option<usize>,
-    ) -> Result<Vec<Interface<'_>>> {
+    /// interface) —, by (slave body, master body): each one's slave nodes,
+    /// the master nodes its weighted gaps read, and its slave edges; and
+    /// the interface of each pair.
+    fn interfaces(&self, mesh: &Mesh, pairs: &[ContactPair]) -> Result<Interfaces<'_>> {
         let mut by_bodies: BTreeMap<(i32, i32), Interface<'_>> = BTreeMap::new();
+        let mut of_pair = BTreeMap::new();
         let mut first = 0;
         for pg in &self.gaps {
             let mine = &self.nodes[first..first + pg.gaps.len()];
             first += pg.gaps.len();
-            if only.is_some_and(|o| o != pg.pair) || mine.is_empty() {
-                continue;
-            }
             let p = &pairs[pg.pair];
             let (slave_tag, master_body) = match pg.slave {
                 Slave::A => (p.tag_a, p.body_b),
                 Slave::B => (p.tag_b, p.body_a),
             };
             let slave_side = Side::of_tag(mesh, slave_tag)?;
-            let interface = by_bodies.entry((slave_side.body, master_body)).or_default();
+            let key = (slave_side.body, master_body);
+            of_pair.insert(pg.pair, key);
+            if mine.is_empty() {
+                continue;
+            }
+            let interface = by_bodies.entry(key).or_default();
             interface.slaves.extend(mine);
             interface.edges.extend(slave_side.edges().iter().copied());
             // The master's nodes: those of the other body (a slave node
@@ -464,6 +490,6 @@ impl MortarState {
                 );
             }
         }
-        Ok(by_bodies.into_values().collect())
+        Ok((by_bodies, of_pair))
     }
 }
