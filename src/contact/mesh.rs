@@ -854,7 +854,9 @@ pub fn check_user_mesh(
     checked_triangles(Nodes::of(mesh), pair, &a, &b, triangles)
 }
 
-/// [`check_user_mesh`] on two sides.
+/// [`check_user_mesh`] on two sides: each triangle checked in turn
+/// ([`check_corners`], [`check_once`]) and made an element of B
+/// ([`user_element`]). Gives the elements and how many were turned.
 pub fn checked_triangles(
     nodes_of: Nodes<'_>,
     pair: usize,
@@ -862,9 +864,6 @@ pub fn checked_triangles(
     b: &Side,
     triangles: &[[usize; 3]],
 ) -> Result<(Vec<ContactElement>, usize)> {
-    let (name_a, name_b) = (a.name(), b.name());
-    let (x, base) = (nodes_of.x, nodes_of.base);
-    let n_nodes = x.len();
     let mut out = reserved(triangles.len(), "the contact mesh")?;
     // Each triangle's nodes, sorted -> its index: a triangle given twice
     // would be two elements of B on one spot, doubling its contact.
@@ -873,99 +872,166 @@ pub fn checked_triangles(
         .map_err(|_| out_of_memory::<([usize; 3], usize)>(triangles.len(), "the contact mesh"))?;
     let mut flipped = 0;
     for (t, tri) in triangles.iter().enumerate() {
-        let name = format!("contact triangle {}", t + base);
-        if let Some(&v) = tri.iter().find(|&&v| v >= n_nodes) {
-            return Err(Error::contact(format!(
-                "{name}: node index {} is out of range",
-                v + base
-            )));
-        }
-        if tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] {
-            return Err(Error::contact(format!("{name}: a node is repeated")));
-        }
-        let mut key = *tri;
-        key.sort_unstable();
-        if let Some(first) = seen.insert(key, t) {
-            return Err(Error::contact(format!(
-                "{name} repeats contact triangle {} (nodes {}, {}, {}): each element of B \
-                 is given once",
-                first + base,
-                nodes_of.name(tri[0]),
-                nodes_of.name(tri[1]),
-                nodes_of.name(tri[2])
-            )));
-        }
-        let on_a: Vec<bool> = tri.iter().map(|v| a.nodes.contains(v)).collect();
-        if let Some(k) = (0..3).find(|&k| !on_a[k] && !b.nodes.contains(&tri[k])) {
-            return Err(Error::contact(format!(
-                "{name}: node {} is on neither interface ({name_a}, {name_b})",
-                nodes_of.name(tri[k])
-            )));
-        }
-        let count_a = on_a.iter().filter(|&&s| s).count();
-        if count_a == 0 || count_a == 3 {
-            return Err(Error::contact(format!(
-                "{name}: all its nodes are on one interface; it must bridge both"
-            )));
-        }
-        // The two nodes on the same side form its interface edge.
-        let same_on_a = count_a == 2;
-        let pairs: Vec<usize> = (0..3).filter(|&k| on_a[k] == same_on_a).collect();
-        let (p, q) = (tri[pairs[0]], tri[pairs[1]]);
-        let key = (p.min(q), p.max(q));
-        let normal = if same_on_a {
-            a.edges.get(&key).copied()
-        } else {
-            b.edges.get(&key).map(|n| [-n[0], -n[1]])
-        };
-        let Some(normal) = normal else {
-            return Err(Error::contact(format!(
-                "{name}: nodes {} and {} are not an edge of interface {}",
-                nodes_of.name(p),
-                nodes_of.name(q),
-                if same_on_a { &name_a } else { &name_b }
-            )));
-        };
-        let mut nodes = *tri;
-        let mut geo = TriGeometry::new(&nodes_of.corners(&nodes));
-        // dJ when the side-b nodes move along +n (the gap opens).
-        let sens: f64 = (0..3)
-            .filter(|&k| !on_a[k])
-            .map(|k| geo.g[k][0] * normal[0] + geo.g[k][1] * normal[1])
-            .sum();
-        // J is an area and the opening a length, so `sens` is a length:
-        // the interface edge's length times the cosine between the normal
-        // and the edge's normal. Compared with the longest edge h it gives
-        // a pure number, and the test is the same at every length scale
-        // (against h², it refused every non-matching pair beyond ~1e12
-        // length units and let through near-degenerate ones at 1e-9).
-        if sens.abs() <= 1e-12 * geo.h {
-            return Err(Error::contact(format!(
-                "{name}: its Jacobian does not change when the gap opens (degenerate across the interface)"
-            )));
-        }
-        if sens < 0.0 {
-            nodes.swap(1, 2);
-            geo = TriGeometry::new(&nodes_of.corners(&nodes));
-            flipped += 1;
-        }
-        let apex = tri[(0..3)
-            .find(|&k| on_a[k] != same_on_a)
-            .expect("one node apart")];
-        out.push(ContactElement {
-            nodes,
-            normal,
-            j0: geo.j,
-            h: geo.h,
-            edge_length: dist(x[p], x[q]),
-            // Whole: a user's B says nothing of where the sides end
-            // ([`nonconforming`] clips its own).
-            facing: dist(x[p], x[q]),
-            pair,
-            apex,
-        });
+        let name = format!("contact triangle {}", t + nodes_of.base);
+        check_corners(nodes_of, tri, &name)?;
+        check_once(nodes_of, &mut seen, t, tri)?;
+        let (element, turned) = user_element(nodes_of, [a, b], tri, &name, pair)?;
+        flipped += usize::from(turned);
+        out.push(element);
     }
     Ok((out, flipped))
+}
+
+/// Refuses a user's triangle `tri` (named `name`) with a node out of range
+/// or repeated.
+fn check_corners(nodes_of: Nodes<'_>, tri: &[usize; 3], name: &str) -> Result<()> {
+    if let Some(&v) = tri.iter().find(|&&v| v >= nodes_of.x.len()) {
+        return Err(Error::contact(format!(
+            "{name}: node index {} is out of range",
+            v + nodes_of.base
+        )));
+    }
+    if tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] {
+        return Err(Error::contact(format!("{name}: a node is repeated")));
+    }
+    Ok(())
+}
+
+/// Refuses user's triangle `t` (nodes `tri`) when its nodes were given
+/// before, naming both; `seen` maps each triangle's sorted nodes to it.
+fn check_once(
+    nodes_of: Nodes<'_>,
+    seen: &mut HashMap<[usize; 3], usize>,
+    t: usize,
+    tri: &[usize; 3],
+) -> Result<()> {
+    let mut key = *tri;
+    key.sort_unstable();
+    match seen.insert(key, t) {
+        None => Ok(()),
+        Some(first) => Err(Error::contact(format!(
+            "contact triangle {} repeats contact triangle {} (nodes {}, {}, {}): each element \
+             of B is given once",
+            t + nodes_of.base,
+            first + nodes_of.base,
+            nodes_of.name(tri[0]),
+            nodes_of.name(tri[1]),
+            nodes_of.name(tri[2])
+        ))),
+    }
+}
+
+/// How a user's triangle bridges the two sides: which of its nodes are on
+/// side a, whether its interface edge (the two nodes on one side) is on
+/// side a, that edge, and its normal from a to b.
+struct Bridge {
+    on_a: [bool; 3],
+    edge_on_a: bool,
+    edge: (usize, usize),
+    normal: [f64; 2],
+}
+
+/// The bridge of user's triangle `tri` (named `name`) between sides
+/// `[a, b]`, refused when a node is on neither side, all are on one, or
+/// its two nodes on one side are not an edge of it.
+fn bridge(nodes_of: Nodes<'_>, [a, b]: [&Side; 2], tri: &[usize; 3], name: &str) -> Result<Bridge> {
+    let on_a = tri.map(|v| a.nodes.contains(&v));
+    if let Some(k) = (0..3).find(|&k| !on_a[k] && !b.nodes.contains(&tri[k])) {
+        return Err(Error::contact(format!(
+            "{name}: node {} is on neither interface ({}, {})",
+            nodes_of.name(tri[k]),
+            a.name(),
+            b.name()
+        )));
+    }
+    let count_a = on_a.iter().filter(|&&s| s).count();
+    if count_a == 0 || count_a == 3 {
+        return Err(Error::contact(format!(
+            "{name}: all its nodes are on one interface; it must bridge both"
+        )));
+    }
+    // The two nodes on the same side form its interface edge.
+    let edge_on_a = count_a == 2;
+    let pairs: Vec<usize> = (0..3).filter(|&k| on_a[k] == edge_on_a).collect();
+    let (p, q) = (tri[pairs[0]], tri[pairs[1]]);
+    let key = (p.min(q), p.max(q));
+    let normal = match edge_on_a {
+        true => a.edges.get(&key).copied(),
+        false => b.edges.get(&key).map(|n| [-n[0], -n[1]]),
+    };
+    let Some(normal) = normal else {
+        return Err(Error::contact(format!(
+            "{name}: nodes {} and {} are not an edge of interface {}",
+            nodes_of.name(p),
+            nodes_of.name(q),
+            if edge_on_a { a.name() } else { b.name() }
+        )));
+    };
+    Ok(Bridge {
+        on_a,
+        edge_on_a,
+        edge: (p, q),
+        normal,
+    })
+}
+
+/// User's triangle `tri` (named `name`) of pair `pair` as an element of B
+/// between sides `[a, b]`, its nodes ordered so that J grows as the gap
+/// opens; and whether they were turned for that. Refused where J does
+/// not depend on the opening.
+fn user_element(
+    nodes_of: Nodes<'_>,
+    sides: [&Side; 2],
+    tri: &[usize; 3],
+    name: &str,
+    pair: usize,
+) -> Result<(ContactElement, bool)> {
+    let Bridge {
+        on_a,
+        edge_on_a,
+        edge: (p, q),
+        normal,
+    } = bridge(nodes_of, sides, tri, name)?;
+    let mut nodes = *tri;
+    let mut geo = TriGeometry::new(&nodes_of.corners(&nodes));
+    // dJ when the side-b nodes move along +n (the gap opens).
+    let sens: f64 = (0..3)
+        .filter(|&k| !on_a[k])
+        .map(|k| geo.g[k][0] * normal[0] + geo.g[k][1] * normal[1])
+        .sum();
+    // J is an area and the opening a length, so `sens` is a length: the
+    // interface edge's length times the cosine between the normal and the
+    // edge's normal. Compared with the longest edge h it gives a pure
+    // number, and the test is the same at every length scale (against h²,
+    // it refused every non-matching pair beyond ~1e12 length units and let
+    // through near-degenerate ones at 1e-9).
+    if sens.abs() <= 1e-12 * geo.h {
+        return Err(Error::contact(format!(
+            "{name}: its Jacobian does not change when the gap opens (degenerate across the interface)"
+        )));
+    }
+    let turned = sens < 0.0;
+    if turned {
+        nodes.swap(1, 2);
+        geo = TriGeometry::new(&nodes_of.corners(&nodes));
+    }
+    let apex = tri[(0..3)
+        .find(|&k| on_a[k] != edge_on_a)
+        .expect("one node apart")];
+    let x = nodes_of.x;
+    let element = ContactElement {
+        nodes,
+        normal,
+        j0: geo.j,
+        h: geo.h,
+        edge_length: dist(x[p], x[q]),
+        // Whole: a user's B says nothing of where the sides end
+        // ([`nonconforming`] clips its own).
+        facing: dist(x[p], x[q]),
+        pair,
+        apex,
+    };
+    Ok((element, turned))
 }
 
 /// Builds B for a pair whose interface nodes do not match (docs/method.md §5,

@@ -759,18 +759,10 @@ impl Problem {
         });
         // A tag over several bodies cannot be a side: left out, and said
         // (searching every tag; a tag given by name is refused instead).
-        let mut warnings: Vec<String> = Vec::new();
-        if tags.is_none() {
-            for (tag, bodies) in contact::pairing::tags_on_several_bodies(mesh) {
-                let bodies: Vec<String> = bodies.iter().map(|b| b.to_string()).collect();
-                warnings.push(format!(
-                    "automatic pairing left out tag {tag}: its edges bound bodies {}, and a \
-                     contact side must lie on one body; if part of it faces another body, give \
-                     that part a tag of its own, or declare the pair by hand",
-                    bodies.join(", ")
-                ));
-            }
-        }
+        let mut warnings = match tags {
+            None => several_bodies_warnings(mesh),
+            Some(_) => Vec::new(),
+        };
         let mut new: Vec<ContactPair> = Vec::new();
         for f in found {
             let declared = self.pairs.iter().chain(&new).any(|p: &ContactPair| {
@@ -784,30 +776,13 @@ impl Problem {
                 .map(|k| &self.pairs[k])
                 .or_else(|| shared.covered_by(&new, f.tag_a, f.tag_b).map(|k| &new[k]));
             if let Some(p) = kept {
-                warnings.push(format!(
-                    "automatic pairing did not pair tags {} (body {}) and {} (body {}), which \
-                     face each other: they share edges with the tags of contact pair ({}, {}), \
-                     which pairs that interface already (a second pair would count its contact \
-                     twice); to pair it under tags {} and {} instead, clear the contact pairs and \
-                     declare that pair by hand",
-                    f.tag_a, f.body_a, f.tag_b, f.body_b, p.tag_a, p.tag_b, f.tag_a, f.tag_b
-                ));
+                warnings.push(paired_already_warning(&f, p));
                 continue;
             }
             // Built now so that a bad interface is reported by this call.
-            contact::build(mesh, self.pairs.len() + new.len(), f.tag_a, f.tag_b).map_err(|e| {
-                Error::contact(format!(
-                    "automatic pairing: tags {} (body {}) and {} (body {}) face each other \
-                     ({:e} apart, tolerance {tolerance:e}), but their contact mesh cannot be \
-                     built: {}",
-                    f.tag_a,
-                    f.body_a,
-                    f.tag_b,
-                    f.body_b,
-                    f.distance,
-                    e.message()
-                ))
-            })?;
+            let index = self.pairs.len() + new.len();
+            contact::build(mesh, index, f.tag_a, f.tag_b)
+                .map_err(|e| unbuilt_pair_error(&f, tolerance, &e))?;
             new.push(ContactPair {
                 tag_a: f.tag_a,
                 tag_b: f.tag_b,
@@ -830,6 +805,50 @@ impl Problem {
         }
         Ok((first..self.pairs.len()).collect())
     }
+}
+
+/// What automatic pairing leaves out when it searches every tag: each tag
+/// whose edges bound several bodies, named in a warning.
+fn several_bodies_warnings(mesh: &Mesh) -> Vec<String> {
+    contact::pairing::tags_on_several_bodies(mesh)
+        .into_iter()
+        .map(|(tag, bodies)| {
+            let bodies: Vec<String> = bodies.iter().map(|b| b.to_string()).collect();
+            format!(
+                "automatic pairing left out tag {tag}: its edges bound bodies {}, and a \
+                 contact side must lie on one body; if part of it faces another body, give \
+                 that part a tag of its own, or declare the pair by hand",
+                bodies.join(", ")
+            )
+        })
+        .collect()
+}
+
+/// The warning for facing tags `f` left unpaired because pair `p` pairs
+/// their interface already under tags that share its edges.
+fn paired_already_warning(f: &contact::pairing::FacingPair, p: &ContactPair) -> String {
+    format!(
+        "automatic pairing did not pair tags {} (body {}) and {} (body {}), which face each \
+         other: they share edges with the tags of contact pair ({}, {}), which pairs that \
+         interface already (a second pair would count its contact twice); to pair it under \
+         tags {} and {} instead, clear the contact pairs and declare that pair by hand",
+        f.tag_a, f.body_a, f.tag_b, f.body_b, p.tag_a, p.tag_b, f.tag_a, f.tag_b
+    )
+}
+
+/// The error for facing tags `f` (found within `tolerance`) whose contact
+/// mesh cannot be built, with the reason `e`.
+fn unbuilt_pair_error(f: &contact::pairing::FacingPair, tolerance: f64, e: &Error) -> Error {
+    Error::contact(format!(
+        "automatic pairing: tags {} (body {}) and {} (body {}) face each other ({:e} apart, \
+         tolerance {tolerance:e}), but their contact mesh cannot be built: {}",
+        f.tag_a,
+        f.body_a,
+        f.tag_b,
+        f.body_b,
+        f.distance,
+        e.message()
+    ))
 }
 
 /// Boundary tags that share edges (an edge listed under several tags: a

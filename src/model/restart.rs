@@ -73,74 +73,115 @@ fn checksum(bytes: &[u8]) -> u64 {
     h
 }
 
-pub(super) fn decode(bytes: &[u8], fingerprint: u64) -> Result<StepState> {
-    let bad = |why: &str| Error::argument(format!("not a contact state of this model: {why}"));
-    let mut at = 0usize;
-    let mut take = |n: usize| -> Result<&[u8]> {
-        let slice = bytes
-            .get(at..at.checked_add(n).ok_or_else(|| bad("too long"))?)
+/// The refusal of bytes that are not a contact state of this model, saying
+/// why.
+fn bad(why: &str) -> Error {
+    Error::argument(format!("not a contact state of this model: {why}"))
+}
+
+/// The bytes of a contact state read in order, each read refused where
+/// they are cut short.
+struct Reader<'b> {
+    bytes: &'b [u8],
+    at: usize,
+}
+
+impl<'b> Reader<'b> {
+    fn take(&mut self, n: usize) -> Result<&'b [u8]> {
+        let end = self.at.checked_add(n).ok_or_else(|| bad("too long"))?;
+        let slice = self
+            .bytes
+            .get(self.at..end)
             .ok_or_else(|| bad("it is cut short"))?;
-        at += n;
+        self.at = end;
         Ok(slice)
-    };
-    let word = |b: &[u8]| u64::from_le_bytes(b.try_into().expect("8 bytes"));
-    let magic = take(8)?;
-    let version = match magic {
-        m if m == STATE_MAGIC => 2,
-        m if m == STATE_MAGIC_1 => 1,
-        _ => return Err(bad("no magic word")),
-    };
-    if word(take(8)?) != fingerprint {
-        return Err(bad("it belongs to another contact mesh"));
     }
-    // The checksum is checked once the bytes have parsed, so that a
-    // state cut short says so.
-    let (base, sum) = match version {
-        1 => (None, None),
-        _ => (
-            Some(word(take(8)?)).filter(|&b| b != 0),
-            Some(word(take(8)?)),
-        ),
-    };
-    let n = usize::try_from(word(take(8)?)).map_err(|_| bad("size"))?;
-    let m = usize::try_from(word(take(8)?)).map_err(|_| bad("size"))?;
-    let flags = |b: &[u8]| -> Result<Vec<bool>> {
-        b.iter()
+
+    fn word(&mut self) -> Result<u64> {
+        Ok(u64::from_le_bytes(
+            self.take(8)?.try_into().expect("8 bytes"),
+        ))
+    }
+
+    fn size(&mut self) -> Result<usize> {
+        usize::try_from(self.word()?).map_err(|_| bad("size"))
+    }
+
+    fn flags(&mut self, n: usize) -> Result<Vec<bool>> {
+        (self.take(n)?.iter())
             .map(|&v| match v {
                 0 => Ok(false),
                 1 => Ok(true),
                 _ => Err(bad("a flag is neither 0 nor 1")),
             })
             .collect()
-    };
-    let warm = flags(take(n)?)?;
-    let factor_active = flags(take(n)?)?;
-    let factored = flags(take(1)?)?[0];
-    let min_eigenvalue = f64::from_le_bytes(take(8)?.try_into().expect("8 bytes"));
-    let packed_bytes = take(m.checked_mul(8).ok_or_else(|| bad("size"))?)?;
-    let packed: Vec<f64> = packed_bytes
-        .chunks_exact(8)
-        .map(|c| f64::from_le_bytes(c.try_into().expect("8 bytes")))
-        .collect();
-    let mut friction = crate::contact::FrictionState::default();
-    // Bytes read so far: the header, two flag sets, the factor.
-    let header = if version == 1 { 32 } else { 48 };
-    let read = header + 2 * n + 9 + 8 * m;
-    if read < bytes.len() {
-        let f = usize::try_from(word(take(8)?)).map_err(|_| bad("size"))?;
-        let values = take(f.checked_mul(16).ok_or_else(|| bad("size"))?)?;
-        let mut v = values
+    }
+
+    fn f64s(&mut self, n: usize) -> Result<Vec<f64>> {
+        let bytes = self.take(n.checked_mul(8).ok_or_else(|| bad("size"))?)?;
+        Ok(bytes
             .chunks_exact(8)
-            .map(|c| f64::from_le_bytes(c.try_into().expect("8 bytes")));
-        friction.anchors = v.by_ref().take(f).collect();
-        friction.loads = v.collect();
+            .map(|c| f64::from_le_bytes(c.try_into().expect("8 bytes")))
+            .collect())
+    }
+}
+
+/// What a contact state's header says: its index base (0: none) and its
+/// checksum (both from version 2).
+struct Header {
+    base: Option<u64>,
+    sum: Option<u64>,
+}
+
+/// The header of a contact state, refused when it has no magic word or
+/// belongs to another contact mesh than the one of `fingerprint`.
+fn header(r: &mut Reader<'_>, fingerprint: u64) -> Result<Header> {
+    let version = match r.take(8)? {
+        m if m == STATE_MAGIC => 2,
+        m if m == STATE_MAGIC_1 => 1,
+        _ => return Err(bad("no magic word")),
+    };
+    if r.word()? != fingerprint {
+        return Err(bad("it belongs to another contact mesh"));
+    }
+    // The checksum is checked once the bytes have parsed, so that a
+    // state cut short says so.
+    let (base, sum) = match version {
+        1 => (None, None),
+        _ => (Some(r.word()?).filter(|&b| b != 0), Some(r.word()?)),
+    };
+    Ok(Header { base, sum })
+}
+
+/// The friction state after the factor, when the bytes go on
+/// (frictional histories write it): each element's anchor, then its load.
+fn friction_tail(r: &mut Reader<'_>) -> Result<crate::contact::FrictionState> {
+    let mut friction = crate::contact::FrictionState::default();
+    if r.at < r.bytes.len() {
+        let f = r.size()?;
+        let mut values = r.f64s(f.checked_mul(2).ok_or_else(|| bad("size"))?)?;
+        friction.loads = values.split_off(f);
+        friction.anchors = values;
         // A NaN anchor is an open element's (docs/method.md §6.15).
         let anchors_ok = friction.anchors.iter().all(|x| x.is_finite() || x.is_nan());
         if !anchors_ok || !friction.loads.iter().all(|x| x.is_finite()) {
             return Err(bad("a friction value is not finite"));
         }
     }
-    if at != bytes.len() {
+    Ok(friction)
+}
+
+pub(super) fn decode(bytes: &[u8], fingerprint: u64) -> Result<StepState> {
+    let r = &mut Reader { bytes, at: 0 };
+    let Header { base, sum } = header(r, fingerprint)?;
+    let (n, m) = (r.size()?, r.size()?);
+    let warm = r.flags(n)?;
+    let factor_active = r.flags(n)?;
+    let factored = r.flags(1)?[0];
+    let min_eigenvalue = f64::from_le_bytes(r.take(8)?.try_into().expect("8 bytes"));
+    let packed = r.f64s(m)?;
+    let friction = friction_tail(r)?;
+    if r.at != bytes.len() {
         return Err(bad("bytes left over"));
     }
     if sum.is_some_and(|sum| sum != checksum(bytes)) {
