@@ -855,8 +855,8 @@ pub fn check_user_mesh(
 }
 
 /// [`check_user_mesh`] on two sides: each triangle checked in turn
-/// ([`check_corners`], [`check_once`]) and made an element of B
-/// ([`user_element`]). Gives the elements and how many were turned.
+/// (`check_corners`, `check_once`) and made an element of B
+/// (`user_element`). Gives the elements and how many were turned.
 pub fn checked_triangles(
     nodes_of: Nodes<'_>,
     pair: usize,

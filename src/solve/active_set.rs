@@ -11,11 +11,11 @@
 //! refactorises it. The loop works over the unknowns throughout; the caller
 //! expands the result to global DOFs once.
 
-use std::borrow::Cow;
 use std::time::Instant;
 
 use super::condensed::{Condensed, ElementMatrix, LowRank};
 use super::diagnostics::add_energy;
+use super::friction_loads::FrictionLoads;
 use super::linear::{Structure, check_finite, factor_and_solve};
 use super::report::{IterationRecord, SolveInfo, Timings};
 use super::system::AssembledSystem;
@@ -123,101 +123,10 @@ pub(crate) struct ActiveSetLoop<'a, 's> {
     set: ActiveSet,
     /// The friction load factors of the next solve (docs/method.md §6.15;
     /// empty when frictionless).
-    friction: Vec<f64>,
-    /// The fixed point on the slip loads while the flags stand still.
-    mixing: Anderson,
+    friction: FrictionLoads,
     condensed: Option<CondensedState>,
     iterate: Iterate,
-    /// Whether the last solve held the slip loads implicit (its slip loads
-    /// follow from the flags and their signs).
-    coupled: bool,
 }
-
-/// Anderson mixing (type II, memory [`Anderson::MEMORY`]) of a fixed-point
-/// iteration c ← G(c).
-#[derive(Default)]
-struct Anderson {
-    /// (c_j, G(c_j) − c_j) of the last iterations.
-    history: Vec<(Vec<f64>, Vec<f64>)>,
-}
-
-impl Anderson {
-    const MEMORY: usize = 6;
-
-    /// The next iterate after G(`c`) = `g_of_c`: c + r − (ΔC + ΔR) γ, with γ
-    /// the least-squares fit of the residual r = G(c) − c by the residuals'
-    /// differences ΔR (plain iteration while the history is too short or
-    /// its fit degenerate).
-    fn next(&mut self, c: &[f64], g_of_c: Vec<f64>) -> Vec<f64> {
-        let r: Vec<f64> = g_of_c.iter().zip(c).map(|(g, x)| g - x).collect();
-        self.history.push((c.to_vec(), r.clone()));
-        if self.history.len() > Self::MEMORY + 1 {
-            self.history.remove(0);
-        }
-        let m = self.history.len() - 1;
-        if m == 0 {
-            return g_of_c;
-        }
-        let diff =
-            |a: &[f64], b: &[f64]| -> Vec<f64> { a.iter().zip(b).map(|(x, y)| x - y).collect() };
-        let h = &self.history;
-        let dr: Vec<Vec<f64>> = (0..m).map(|j| diff(&h[j + 1].1, &h[j].1)).collect();
-        let dc: Vec<Vec<f64>> = (0..m).map(|j| diff(&h[j + 1].0, &h[j].0)).collect();
-        let dot = |a: &[f64], b: &[f64]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f64>();
-        // Normal equations (m ≤ 6), Gaussian elimination with pivoting.
-        let mut a: Vec<Vec<f64>> = (0..m)
-            .map(|i| {
-                let mut row: Vec<f64> = (0..m).map(|j| dot(&dr[i], &dr[j])).collect();
-                row.push(dot(&dr[i], &r));
-                row
-            })
-            .collect();
-        let scale = (0..m).fold(0.0f64, |s, i| s.max(a[i][i]));
-        for i in 0..m {
-            a[i][i] += 1e-12 * scale;
-        }
-        for col in 0..m {
-            let pivot = (col..m)
-                .max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))
-                .expect("rows left");
-            a.swap(col, pivot);
-            if a[col][col] == 0.0 || a[col][col].is_nan() {
-                self.history.clear();
-                return g_of_c;
-            }
-            for row in col + 1..m {
-                let f = a[row][col] / a[col][col];
-                for k in col..=m {
-                    a[row][k] -= f * a[col][k];
-                }
-            }
-        }
-        let mut gamma = vec![0.0; m];
-        for i in (0..m).rev() {
-            let s: f64 = (i + 1..m).map(|k| a[i][k] * gamma[k]).sum();
-            gamma[i] = (a[i][m] - s) / a[i][i];
-        }
-        let next: Vec<f64> = (0..c.len())
-            .map(|k| {
-                let fit: f64 = (0..m).map(|j| (dc[j][k] + dr[j][k]) * gamma[j]).sum();
-                c[k] + r[k] - fit
-            })
-            .collect();
-        if next.iter().all(|v| v.is_finite()) {
-            next
-        } else {
-            self.history.clear();
-            g_of_c
-        }
-    }
-}
-
-/// Slip tractions that moved by less than this, relative to the largest
-/// friction load, have converged. The fixed point on μ p stalls at the
-/// round-off of the interface solve: measured 2e-11 to 3e-11 of the largest
-/// slip load at h = 1/256 (seed scene, μ = 1), so 1e-11 never settled
-/// there; 1e-9 keeps a margin of 30.
-const FRICTION_TOL: f64 = 1e-9;
 
 /// The backward error a field recovered from the condensed interface must
 /// be refined to, or the loop finishes with a full solve instead (and a
@@ -255,11 +164,9 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             timings,
             info,
             set: ActiveSet::new(initial),
-            friction,
-            mixing: Anderson::default(),
+            friction: FrictionLoads::new(friction),
             condensed: None,
             iterate: Iterate::None,
-            coupled: false,
         }
     }
 
@@ -280,11 +187,9 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             timings,
             info,
             set: ActiveSet::new(warm),
-            friction,
-            mixing: Anderson::default(),
+            friction: FrictionLoads::new(friction),
             condensed: Some(state),
             iterate: Iterate::None,
-            coupled: false,
         }
     }
 
@@ -296,48 +201,9 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             flags: next,
             loads: friction,
         } = self.verdict()?;
-        let scale = friction.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-        let moved = friction
-            .iter()
-            .zip(&self.friction)
-            .any(|(a, b)| (a - b).abs() > FRICTION_TOL * scale);
-        // With the flags standing still, the slip loads' update is an affine
-        // map (one linear solve, pressures linear in it): Anderson mixing
-        // finds its fixed point in a few steps where plain iteration
-        // contracts by about μ per step.
-        self.friction = match moved && next == self.set.active() {
-            true => self.mixing.next(&self.friction, friction),
-            false => {
-                self.mixing = Anderson::default();
-                friction
-            }
-        };
-        let key = self.state_loads(&next, &self.friction).into_owned();
+        let moved = self.friction.advance(friction, next == self.set.active());
+        let key = self.friction.state_key(&next).into_owned();
         self.set.advance_with(next, (&key, moved), iteration)
-    }
-
-    /// The loads that, with the flags `flags`, tell the loop's states
-    /// apart ([`ActiveSet::advance_with`]): a coupled solve's slip loads
-    /// follow from its flags and their signs (rounding aside, which depends
-    /// on the way the factor got there), so only their signs count; else
-    /// every bit of every load.
-    fn state_loads<'l>(&self, flags: &[bool], loads: &'l [f64]) -> Cow<'l, [f64]> {
-        if !self.coupled || loads.is_empty() {
-            return Cow::Borrowed(loads);
-        }
-        let n = loads.len();
-        let slipping = |k: usize| flags[k] && !flags[n + k];
-        Cow::Owned(
-            (0..n)
-                .map(|k| {
-                    if slipping(k) {
-                        loads[k].signum()
-                    } else {
-                        loads[k]
-                    }
-                })
-                .collect(),
-        )
     }
 
     /// Runs the loop like [`ActiveSetLoop::run`], but stops at the
@@ -362,7 +228,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
                         let at_interface = AtInterface {
                             ui,
                             active,
-                            friction: self.friction,
+                            friction: self.friction.c,
                             history,
                         };
                         Ok(Outcome::Interface(Box::new(InterfaceSettled {
@@ -444,8 +310,8 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         state.factor_active.extend_from_slice(active);
         if factored {
             let (ui, coupled) =
-                interface_solve(set, state, (active, &relative), &mut self.friction)?;
-            self.coupled = coupled;
+                interface_solve(set, state, (active, &relative), &mut self.friction.c)?;
+            self.friction.coupled = coupled;
             self.iterate = Iterate::Condensed(ui);
         } else {
             self.condensed = None;
@@ -463,8 +329,8 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         let t0 = Instant::now();
         let active = self.set.active();
         self.system.set_contact(active, set, at.pattern);
-        self.system.set_friction_loads(set, &self.friction);
-        self.coupled = false;
+        self.system.set_friction_loads(set, &self.friction.c);
+        self.friction.coupled = false;
         self.timings.assembly += t0.elapsed().as_secs_f64();
         let energy = |r: &[f64]| {
             let mut acc = body_energy(input.elements, r);
@@ -497,7 +363,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             x1: x,
             reference: self.set.active().to_vec(),
             factor_active: self.set.active().to_vec(),
-            friction_ref: self.friction.clone(),
+            friction_ref: self.friction.c.clone(),
         });
         self.iterate = Iterate::Reference;
         self.timings.interface += t0.elapsed().as_secs_f64();
@@ -520,7 +386,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
     /// The contact law's verdict on the current iterate
     /// ([`ContactSet::verdict`]).
     fn verdict(&self) -> Result<Verdict> {
-        let current = (self.set.active(), &self.friction[..]);
+        let current = (self.set.active(), &self.friction.c[..]);
         self.input.set.verdict(current, |i| self.value(i))
     }
 
@@ -536,7 +402,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
     /// [`ActiveSetLoop::recover`], or the loop back (`Err`) when the field
     /// recovered from a condensed iterate is not refined below
     /// [`RECOVERED`], or its slip loads disagree with its pressures by more
-    /// than [`FRICTION_TOL`]: the interface solve lost that much to
+    /// than [`FRICTION_TOL`](super::friction_loads::FRICTION_TOL): the interface solve lost that much to
     /// round-off (measured: 0.7 % on a model with a DOF prescribed at
     /// 1e30). The loop then goes on with full solves of the assembled
     /// system, which holds the final set.
@@ -555,8 +421,9 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             Iterate::Reference => self.refine_reference(&context)?,
             Iterate::Condensed(ui) => {
                 let (x, omega) = self.expand_condensed(ui, &context)?;
-                if omega.is_nan() || omega > RECOVERED || !self.slip_loads_hold(&x) {
-                    self.coupled = false;
+                let holds = self.friction.hold(self.input.set, self.set.active(), &x);
+                if omega.is_nan() || omega > RECOVERED || !holds {
+                    self.friction.coupled = false;
                     return Ok(Err(Box::new(self)));
                 }
                 x
@@ -567,36 +434,10 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         Ok(Ok(Settled {
             x,
             active,
-            friction: self.friction,
+            friction: self.friction.c,
             history,
             condensed_bytes,
         }))
-    }
-
-    /// The slip loads of the slipping elements, (k, c_k), that go with the
-    /// pressures of the field `x` (over the unknowns).
-    fn slip_loads_of(&self, x: &[f64]) -> Vec<(usize, f64)> {
-        let set = self.input.set;
-        set.slipping(self.set.active())
-            .into_iter()
-            .map(|k| (k, set.slip_load(k, |i| x[i], self.friction[k])))
-            .collect()
-    }
-
-    /// Sets the slip loads to those of the pressures of the field `x`.
-    fn take_slip_loads(&mut self, x: &[f64]) {
-        for (k, c) in self.slip_loads_of(x) {
-            self.friction[k] = c;
-        }
-    }
-
-    /// Whether the slip loads agree with the pressures of the field `x`
-    /// to [`FRICTION_TOL`] of the largest.
-    fn slip_loads_hold(&self, x: &[f64]) -> bool {
-        let scale = self.friction.iter().fold(0.0f64, |m, c| m.max(c.abs()));
-        self.slip_loads_of(x)
-            .iter()
-            .all(|&(k, c)| (c - self.friction[k]).abs() <= FRICTION_TOL * scale)
     }
 
     /// Settled at once: x₁ is the answer, not yet refined.
@@ -627,7 +468,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         let t0 = Instant::now();
         let active = self.set.active();
         self.system.set_contact(active, input.set, input.at.pattern);
-        self.system.set_friction_loads(input.set, &self.friction);
+        self.system.set_friction_loads(input.set, &self.friction.c);
         self.timings.assembly += t0.elapsed().as_secs_f64();
         let t0 = Instant::now();
         let (values, rhs) = (self.system.values(), self.system.rhs());
@@ -639,7 +480,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             product: &|v: &[f64], y: &mut [f64]| pattern.sym_mul(values, v, y),
             k_norm: &|| norm_inf(pattern, values),
             rhs,
-            friction: (&self.friction, &friction_ref),
+            friction: (&self.friction.c, &friction_ref),
         };
         let (mut x, mut omega) = expand(target, self.chol, (&system, &reference), x1, ui)?;
         if x.iter().any(|v| !v.is_finite()) {
@@ -654,12 +495,12 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         // largest slip load from 67k to 1M unknowns, seed scene, μ = 0.3):
         // bring the loads to the field, a refinement each.
         for _ in 0..SLIP_PASSES {
-            if self.slip_loads_hold(&x) {
+            let input = &self.input;
+            if self.friction.hold(input.set, self.set.active(), &x) {
                 break;
             }
-            self.take_slip_loads(&x);
-            let input = &self.input;
-            self.system.set_friction_loads(input.set, &self.friction);
+            self.friction.take(input.set, self.set.active(), &x);
+            self.system.set_friction_loads(input.set, &self.friction.c);
             let (values, rhs) = (self.system.values(), self.system.rhs());
             let target = Target {
                 at: input.at,
@@ -668,7 +509,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
                 product: &|v: &[f64], y: &mut [f64]| pattern.sym_mul(values, v, y),
                 k_norm: &|| norm_inf(pattern, values),
                 rhs,
-                friction: (&self.friction, &friction_ref),
+                friction: (&self.friction.c, &friction_ref),
             };
             omega = refine_expanded(target, self.chol, (&system, &reference), &mut x)?;
         }

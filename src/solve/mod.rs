@@ -13,6 +13,7 @@ pub mod condensed;
 pub(crate) mod diagnostics;
 #[cfg(test)]
 mod fixtures;
+pub(crate) mod friction_loads;
 pub(crate) mod history;
 pub(crate) mod linear;
 pub(crate) mod memory;
