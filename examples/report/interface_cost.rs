@@ -23,7 +23,7 @@ struct CostRun {
 
 fn cost_run(mut model: tfem::Model, refactorize: bool) -> tfem::Result<CostRun> {
     // Thin blocks release their contact zone slowly: room beyond the
-    // default cap of 50 iterations (as examples/interface_cost.rs).
+    // default cap of 50 iterations (as probes/interface_cost.rs).
     let options = ContactOptions {
         refactorize,
         max_iterations: 400,
@@ -69,7 +69,7 @@ fn dense_cholesky_seconds(n: usize) -> f64 {
 }
 
 /// Issue: the condensed interface's n_I³ cost and tfem's automatic switch to
-/// refactorisation (examples/interface_cost.rs, one run per row).
+/// refactorisation (probes/interface_cost.rs, one run per row).
 pub(crate) fn interface_cost(report: &mut String, a: &Args) {
     use tfem::scenes::stack::{Layer, Pairing, Stack};
     writeln!(
