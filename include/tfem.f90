@@ -1118,7 +1118,10 @@ module tfem_c
     !! them as zeros under the mortar weighting, and wrote no nodal contact array.) Returns
     !! TFEM_STATUS_INVALID_STATE before a solve (nothing is written), TFEM_STATUS_IO when the file
     !! cannot be written (the message names it and the reason), TFEM_STATUS_INVALID_ARGUMENT if the
-    !! library was built without the `vtu` feature. The model is never changed.
+    !! library was built without the `vtu` feature, and TFEM_STATUS_NUMERICAL_FAILURE (nothing is
+    !! written) when a result it holds cannot be computed as the accessors would refuse it: an
+    !! overflowing stress, or a load step's field that cannot be recovered to working accuracy,
+    !! named in the message. The model is never changed.
     function tfem_write_vtu(model, path) &
         bind(C, name="tfem_write_vtu") result(status)
       import

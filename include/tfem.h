@@ -1080,7 +1080,11 @@ enum tfem_status tfem_get_external_work(struct tfem_model *model, double *work);
  * Returns TFEM_STATUS_INVALID_STATE before a solve (nothing is written),
  * TFEM_STATUS_IO when the file cannot be written (the message names it
  * and the reason), TFEM_STATUS_INVALID_ARGUMENT if the library was built
- * without the `vtu` feature. The model is never changed.
+ * without the `vtu` feature, and TFEM_STATUS_NUMERICAL_FAILURE (nothing
+ * is written) when a result it holds cannot be computed as the accessors
+ * would refuse it: an overflowing stress, or a load step's field that
+ * cannot be recovered to working accuracy, named in the message. The
+ * model is never changed.
  */
 enum tfem_status tfem_write_vtu(struct tfem_model *model, const char *path);
 

@@ -1221,7 +1221,11 @@ pub unsafe extern "C" fn tfem_get_external_work(model: *mut TfemModel, work: *mu
 /// Returns TFEM_STATUS_INVALID_STATE before a solve (nothing is written),
 /// TFEM_STATUS_IO when the file cannot be written (the message names it
 /// and the reason), TFEM_STATUS_INVALID_ARGUMENT if the library was built
-/// without the `vtu` feature. The model is never changed.
+/// without the `vtu` feature, and TFEM_STATUS_NUMERICAL_FAILURE (nothing
+/// is written) when a result it holds cannot be computed as the accessors
+/// would refuse it: an overflowing stress, or a load step's field that
+/// cannot be recovered to working accuracy, named in the message. The
+/// model is never changed.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_write_vtu(model: *mut TfemModel, path: *const c_char) -> Status {
     with_model(model, |m| {
