@@ -364,15 +364,7 @@ impl Problem {
                 "prescribed displacement {value:?} on tag {tag} is not finite"
             )));
         }
-        let nodes: Vec<usize> = mesh
-            .boundary_edges()
-            .iter()
-            .filter(|e| e.tag == tag)
-            .flat_map(|e| e.nodes)
-            .collect();
-        if nodes.is_empty() {
-            return Err(Error::argument(format!("no boundary edge has tag {tag}")));
-        }
+        let nodes = tag_nodes(mesh, tag)?;
         let c = component as usize;
         if let Some(&v) = nodes
             .iter()
@@ -414,15 +406,7 @@ impl Problem {
                 "prescribed displacement {value:?} on tag {tag} is not finite"
             )));
         }
-        let nodes: Vec<usize> = mesh
-            .boundary_edges()
-            .iter()
-            .filter(|e| e.tag == tag)
-            .flat_map(|e| e.nodes)
-            .collect();
-        if nodes.is_empty() {
-            return Err(Error::argument(format!("no boundary edge has tag {tag}")));
-        }
+        let nodes = tag_nodes(mesh, tag)?;
         for &v in &nodes {
             self.check_unprescribed_or_equal(2 * v + component as usize, value)?;
         }
@@ -804,6 +788,21 @@ impl Problem {
             self.changed_contact("the contact pairs");
         }
         Ok((first..self.pairs.len()).collect())
+    }
+}
+
+/// The nodes of the boundary edges tagged `tag` (an edge's two in turn),
+/// refused when no edge has that tag.
+fn tag_nodes(mesh: &Mesh, tag: i32) -> Result<Vec<usize>> {
+    let nodes: Vec<usize> = mesh
+        .boundary_edges()
+        .iter()
+        .filter(|e| e.tag == tag)
+        .flat_map(|e| e.nodes)
+        .collect();
+    match nodes.is_empty() {
+        true => Err(Error::argument(format!("no boundary edge has tag {tag}"))),
+        false => Ok(nodes),
     }
 }
 
