@@ -14,7 +14,7 @@
 //! about 2× over them, the rates 0.2–0.3 below the fitted ones.
 
 use tfem::ContactOptions;
-use tfem::scenes::hertz::Hertz;
+use tfem::scenes::hertz::{Hertz, TAG_BLOCK_TOP, TAG_CYLINDER};
 use tfem::scenes::punch::{FlatPunch, FlatPunchResult, RigidCylinder, RigidCylinderResult};
 use tfem::verification::fitted_rate;
 use tfem::{Material, PlaneMode};
@@ -327,4 +327,36 @@ fn a_rigid_body_modelled_by_a_huge_modulus_has_its_reactions_warned_about() {
         w.iter().all(|w| !w.contains("reactions of body 1")),
         "{w:?}"
     );
+}
+
+#[test]
+fn the_automatic_weighting_gives_a_pair_its_family_whichever_side_is_first() {
+    // Measured (a/16): with the cylinder first, the nodes that face each
+    // other were read along the cylinder's polygon only, and a matching
+    // rigid cylinder got the mortar weighting where block-first got B.
+    for (ratio, strip) in [(1.0, true), (2.5, false), (0.4, false)] {
+        for cylinder_first in [false, true] {
+            let base = RigidCylinder::default();
+            let rc = RigidCylinder {
+                hertz: Hertz {
+                    mesh_size: base.hertz.half_width / 16.0,
+                    cylinder_mesh_ratio: ratio,
+                    ..base.hertz
+                },
+                ..base
+            };
+            let mut scene = rc.build().unwrap();
+            if cylinder_first {
+                let model = &mut scene.scene.model;
+                model.clear_contact_pairs();
+                model.add_contact_pair(TAG_CYLINDER, TAG_BLOCK_TOP).unwrap();
+            }
+            scene.solve(&rc, &ContactOptions::default()).unwrap();
+            let got = scene.scene.model.contact_elements().is_ok();
+            assert_eq!(
+                got, strip,
+                "ratio {ratio}, cylinder first: {cylinder_first}"
+            );
+        }
+    }
 }

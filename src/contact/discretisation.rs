@@ -120,7 +120,8 @@ impl Discretisation {
 }
 
 /// The family pair `p` takes under `weighting` (module documentation for
-/// [`ContactWeighting::Auto`]).
+/// [`ContactWeighting::Auto`]). Whether the nodes face each other is read
+/// both ways, so that either side may come first.
 pub fn family_of(mesh: &Mesh, p: &ContactPair, weighting: ContactWeighting) -> Result<Family> {
     Ok(match weighting {
         ContactWeighting::Strip => Family::Strip,
@@ -131,7 +132,10 @@ pub fn family_of(mesh: &Mesh, p: &ContactPair, weighting: ContactWeighting) -> R
             }
             let (a, b) = (Side::of_tag(mesh, p.tag_a)?, Side::of_tag(mesh, p.tag_b)?);
             let nodes = Nodes::of(mesh);
-            match matching(nodes, &a, &b) || straight(nodes, &a) && straight(nodes, &b) {
+            match matching(nodes, &a, &b)
+                || matching(nodes, &b, &a)
+                || straight(nodes, &a) && straight(nodes, &b)
+            {
                 true => Family::Strip,
                 false => Family::Mortar,
             }
