@@ -46,6 +46,7 @@ use tfem::io::gmsh::read_msh;
 use tfem::meshgen::MeshBuilder;
 use tfem::scenes::hertz::Hertz;
 use tfem::scenes::lame::{Lame, LameSolution};
+use tfem::scenes::shrink_fit::{polygon_mean, polygon_mean_radius, radii, ring};
 use tfem::{Component, ContactOptions, ContactWeighting, Material, Mesh, Model, PlaneMode};
 
 const TAG_IN: i32 = 10; // inner ring's surface, piece k: 11 + k
@@ -75,86 +76,6 @@ fn lame(delta: f64) -> Lame {
         interference: delta,
         ..Lame::default()
     }
-}
-
-/// Mean radius over the angle of a regular N-gon inscribed in a unit circle.
-fn polygon_mean(n: usize) -> f64 {
-    let al = PI / n as f64;
-    al.cos() * (1.0 / al.cos() + al.tan()).ln() / al
-}
-
-/// Mean radius over the angle of a closed polygon through `pts` (sorted by
-/// angle), exactly: Σ over chords of ∫ r dθ / 2π.
-fn polygon_mean_of(pts: &[[f64; 2]]) -> f64 {
-    let n = pts.len();
-    let mut total = 0.0;
-    for k in 0..n {
-        let (p, q) = (pts[k], pts[(k + 1) % n]);
-        // Line distance from origin and angles of p, q seen along it.
-        let e = [q[0] - p[0], q[1] - p[1]];
-        let len = e[0].hypot(e[1]);
-        let d = (p[0] * q[1] - p[1] * q[0]).abs() / len;
-        // foot parameter: angle of point relative to foot direction.
-        let t = |x: [f64; 2]| (x[0] * e[0] + x[1] * e[1]) / len; // signed distance along line
-        let (tp, tq) = (t(p), t(q));
-        // ∫ r dθ = ∫ d sec φ dφ, φ = atan(t/d).
-        let f = |tt: f64| {
-            let phi = (tt / d).atan();
-            d * (1.0 / phi.cos() + phi.tan()).ln()
-        };
-        total += f(tq) - f(tp);
-    }
-    total / (2.0 * PI)
-}
-
-fn polar(r: f64, j: usize, n: usize) -> [f64; 2] {
-    // Exact axes at the quarter angles.
-    if (4 * j) % n == 0 {
-        match (4 * j / n) % 4 {
-            0 => return [r, 0.0],
-            1 => return [0.0, r],
-            2 => return [-r, 0.0],
-            _ => return [0.0, -r],
-        }
-    }
-    let t = 2.0 * PI * j as f64 / n as f64;
-    [r * t.cos(), r * t.sin()]
-}
-
-/// A full ring meshed with `n` cells around and `radii`, each cell cut in
-/// four by its centre; rows[i][j] at radius i, angle j.
-fn ring(mb: &mut MeshBuilder, radii: &[f64], n: usize, body: i32) -> Vec<Vec<usize>> {
-    let rows: Vec<Vec<usize>> = radii
-        .iter()
-        .map(|&r| (0..n).map(|j| mb.add_node(polar(r, j, n))).collect())
-        .collect();
-    for i in 0..radii.len() - 1 {
-        for j in 0..n {
-            let jn = (j + 1) % n;
-            let rm = 0.5 * (radii[i] + radii[i + 1]);
-            let t = 2.0 * PI * (j as f64 + 0.5) / n as f64;
-            let c = mb.add_node([rm * t.cos(), rm * t.sin()]);
-            let q = [rows[i][j], rows[i + 1][j], rows[i + 1][jn], rows[i][jn]];
-            for k in 0..4 {
-                mb.triangles.push([q[k], q[(k + 1) % 4], c]);
-                mb.bodies.push(body);
-            }
-        }
-    }
-    rows
-}
-
-fn radii(r0: f64, r1: f64, h: f64) -> Vec<f64> {
-    let m = ((r1 - r0) / h).ceil().max(1.0) as usize;
-    (0..=m)
-        .map(|i| {
-            if i == m {
-                r1
-            } else {
-                r0 + (r1 - r0) * i as f64 / m as f64
-            }
-        })
-        .collect()
 }
 
 fn materials(model: &mut Model) {
@@ -311,7 +232,7 @@ fn gmsh_rings(h: f64, ratio: f64, delta: f64, rot: f64, narcs: usize) -> RingSce
     model.add_contact_pair(11, 21).unwrap();
     model.add_contact_pair(12, 22).unwrap();
     let pts = |v: &[usize]| v.iter().map(|&k| x[k]).collect::<Vec<_>>();
-    let d_eff = polygon_mean_of(&pts(&inner)) - polygon_mean_of(&pts(&outer));
+    let d_eff = polygon_mean_radius(&pts(&inner)) - polygon_mean_radius(&pts(&outer));
     RingScene {
         model,
         inner,

@@ -154,7 +154,7 @@ pub fn polygon_mean_radius(points: &[[f64; 2]]) -> f64 {
 
 /// Mean radius over the angle of a regular n-gon inscribed in the unit
 /// circle: ∫ r dθ / 2π over its chords, r = cos(π/n)/cos φ on each.
-fn polygon_mean(n: usize) -> f64 {
+pub fn polygon_mean(n: usize) -> f64 {
     let al = PI / n as f64;
     al.cos() * (1.0 / al.cos() + al.tan()).ln() / al
 }
@@ -177,7 +177,7 @@ fn polar(r: f64, j: usize, n: usize) -> [f64; 2] {
 /// cell cut in four by its centre (mirror-symmetric: the rigid-motion
 /// constraints are then symmetry conditions of the discrete ring); its
 /// nodes `rows[i][j]` at radius i, angle j.
-fn ring(mb: &mut MeshBuilder, radii: &[f64], n: usize, body: i32) -> Vec<Vec<usize>> {
+pub fn ring(mb: &mut MeshBuilder, radii: &[f64], n: usize, body: i32) -> Vec<Vec<usize>> {
     let rows: Vec<Vec<usize>> = radii
         .iter()
         .map(|&r| (0..n).map(|j| mb.add_node(polar(r, j, n))).collect())
@@ -199,7 +199,7 @@ fn ring(mb: &mut MeshBuilder, radii: &[f64], n: usize, body: i32) -> Vec<Vec<usi
 }
 
 /// Rows from r0 to r1 at about `h` apart.
-fn radii(r0: f64, r1: f64, h: f64) -> Vec<f64> {
+pub fn radii(r0: f64, r1: f64, h: f64) -> Vec<f64> {
     let m = ((r1 - r0) / h).ceil().max(1.0) as usize;
     (0..=m)
         .map(|i| match i == m {
