@@ -48,18 +48,21 @@ fn c_error(out: &TfemCattaneo, i: usize) -> f64 {
 }
 
 #[test]
-fn the_normal_step_settles_without_shear_and_its_half_width_converges() {
+fn the_normal_steps_shear_falls_with_h_and_its_half_width_converges() {
     let runs: Vec<TfemCattaneo> = LEVELS.iter().map(|&k| solve(k, 1.0, &[])).collect();
+    // With equal moduli (Dundurs β = 0) the exact normal step has no
+    // shear. The discrete one has: each element sticks where it closes
+    // (docs/method.md §6.15), and the two bodies' meshes give their
+    // surfaces slightly different tangential displacements after that.
+    // Measured max |q|/(μp₀): 0.145, 0.104, 0.074 (a/64: 0.053), rate
+    // 0.5; the independent node-to-node oracle loaded in 20 increments
+    // gives 0.152, 0.102 at a/8, a/16 and 0.053 at a/64. (One step gave
+    // 1e-6 while elements closing in a step carried no shear: a
+    // step-count artefact, 0.13 and 0.09 in 5 and 20 steps.)
+    let q: Vec<f64> = runs.iter().map(|o| o.steps[0].q_error_max).collect();
+    assert!(q[2] < 0.6 * q[0] && q[2] < 0.1, "max |q|/(μp₀) {q:?}");
     for (&k, out) in LEVELS.iter().zip(&runs) {
         let step = &out.steps[0];
-        // With equal moduli (Dundurs β = 0) the exact normal step has no
-        // shear. Measured max |q|/(μp₀): 8.0e-7, 1.1e-6, 2.4e-6 (3.9e-3 …
-        // before each point was measured along one normal); margin 4×.
-        assert!(
-            step.q_error_max < 1e-5,
-            "a/{k}: max |q|/(μp₀) = {:e}",
-            step.q_error_max
-        );
         // Measured 1.44e-3, 6.8e-4, 3.2e-4.
         let a_error = (step.a - step.analytic.a).abs() / step.analytic.a;
         assert!(a_error < 2e-3, "a/{k}: |a − a_H|/a_H = {a_error:e}");
@@ -96,12 +99,16 @@ fn the_shear_traction_converges_to_johnsons_with_equal_moduli() {
     let runs = equal_moduli();
     for (i, ratio) in RATIOS.iter().enumerate().map(|(i, r)| (i + 1, r)) {
         let e: Vec<f64> = runs.iter().map(|o| o.steps[i].q_error_l2).collect();
-        // Measured ‖q_h − q‖/‖q‖ from a/8 to a/32: 0.47 → 0.10, 0.14 →
-        // 0.031, 0.060 → 0.022, 0.093 → 0.030 (at a/64: 0.024, 0.024,
-        // 0.018, 0.012). q has square-root kinks at c and a, so the
-        // discrete L2 error of nodal values falls at about h^1 there.
+        // Measured ‖q_h − q‖/‖q‖ from a/8 to a/32: 0.77 → 0.185, 0.31 →
+        // 0.078, 0.17 → 0.049, 0.115 → 0.033. q has square-root kinks at
+        // c and a, so the discrete L2 error of nodal values falls at about
+        // h^1 there. The bounds were 0.15 and 0.05 (measured 0.10, 0.031,
+        // 0.022, 0.030) while the normal step carried no shear; it now
+        // carries the discrete path's (the test above), which Johnson's
+        // analysis has none of, and which weighs most against the
+        // smallest Q.
         assert!(e[2] < 0.6 * e[0], "Q/(μP) = {ratio}: q errors {e:?}");
-        let bound = if *ratio < 0.2 { 0.15 } else { 0.05 };
+        let bound = if *ratio < 0.2 { 0.25 } else { 0.1 };
         assert!(e[2] < bound, "Q/(μP) = {ratio}: q errors {e:?}");
     }
 }
@@ -119,18 +126,20 @@ fn every_element_dissipates_a_non_negative_energy_in_every_step() {
 #[test]
 fn the_tangential_steps_settle_with_unequal_moduli() {
     // E_cylinder = 10 E_block (β ≠ 0): a/16 cycled before (docs/method.md
-    // §6.15). Johnson's c is that of β = 0, which β ≠ 0 does not strictly
-    // obey: measured c_fit/c_J − 1 at a/32 +0.23 %, +0.37 %, +0.55 %,
-    // +0.70 %.
+    // §6.15). Under β ≠ 0 the normal load itself makes a shear,
+    // antisymmetric about the centre, which each element keeps from where
+    // it closed: Q adds to it on one side and takes from it on the other,
+    // so the stick zone is off-centre (measured at a/32, Q/(μP) = 0.15:
+    // from −4.7e-3 to +2.4e-3, c_J = 4.6e-3; at a/8, Q/(μP) = 0.6, the +x
+    // side slips whole) and Johnson's c, of β = 0, does not apply. (It was
+    // compared with Johnson's c to 0.7 % while closing elements carried
+    // no shear in the normal step.) Below μP part of the interface sticks.
     for k in LEVELS {
         let out = solve(k, 10.0, &RATIOS);
         assert_eq!(out.steps.len(), RATIOS.len() + 1);
-        if k == 32.0 {
-            for i in 1..=RATIOS.len() {
-                let s = &out.steps[i];
-                let rel = (s.c_fit / s.analytic.c - 1.0).abs();
-                assert!(rel < 2e-2, "step {i}: c_fit/c_J − 1 = {rel:e}");
-            }
+        for (i, s) in out.steps.iter().enumerate().skip(1) {
+            let sticks = s.c_sides.iter().any(|&c| c > 0.0);
+            assert!(sticks, "a/{k}, step {i}: stick zone {:?}", s.c_sides);
         }
         assert!(out.min_dissipation >= 0.0, "a/{k}: {}", out.min_dissipation);
     }

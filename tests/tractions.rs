@@ -210,8 +210,25 @@ fn the_nodal_shear_carries_the_tangential_load_with_one_sign_on_both_sides() {
         .map(|&v| t[v][1].abs() / t[v][0])
         .fold(0.0, f64::max);
     assert!((slip - mu).abs() <= 1e-6 * mu, "largest |τ|/p {slip}");
-    // Both sides read one traction with one sign: the cylinder's too.
-    let cylinder = (n_block..xy.len()).filter(in_contact);
-    assert!(cylinder.clone().count() > 0);
-    assert!(cylinder.into_iter().all(|v| t[v][1] * q >= 0.0));
+    // Both sides read one traction with one sign: each cylinder node in
+    // contact reads the shear of the block node under it (the meshes
+    // match), wherever that shear is more than rounding. (Not the sign of
+    // Q at every node: the press itself leaves a shear of either sign,
+    // which each element keeps from where it closed.)
+    let p0 = top.iter().map(|&v| t[v][0]).fold(0.0, f64::max);
+    let cylinder: Vec<usize> = (n_block..xy.len()).filter(in_contact).collect();
+    assert!(!cylinder.is_empty());
+    for v in cylinder {
+        let Some(&under) = top.iter().find(|&&b| xy[b][0] == xy[v][0]) else {
+            continue;
+        };
+        if t[under][1].abs() > 1e-3 * mu * p0 {
+            assert!(
+                t[v][1] * t[under][1] > 0.0,
+                "node {v}: {} against {}",
+                t[v][1],
+                t[under][1]
+            );
+        }
+    }
 }

@@ -102,6 +102,10 @@ pub struct FrictionOutcome {
     pub dissipation: Vec<f64>,
     /// What the next step starts from.
     pub next: FrictionState,
+    /// The elements open at the step's start that closed in it, without
+    /// shear: where along the step each closed is what a load history
+    /// ends its sub-steps at (docs/method.md §6.15).
+    pub closed: Vec<usize>,
 }
 
 /// What a frictional step carries to the next: per element of B, the slip
@@ -114,6 +118,14 @@ pub struct FrictionState {
     pub anchors: Vec<f64>,
     /// c per element.
     pub loads: Vec<f64>,
+    /// Per element, its linearised opening at the step's end
+    /// ([`ContactSet::opening`]); empty where not known (before the first
+    /// step: each element's initial opening J₀ then). With `at`, where a
+    /// history locates the closing of the elements open here.
+    pub openings: Vec<f64>,
+    /// The load factor of the step it ended (0 before the first; NaN
+    /// where not known: a state restored from an older version's bytes).
+    pub at: f64,
 }
 
 impl<'a> ContactSet<'a> {
@@ -408,6 +420,17 @@ impl<'a> ContactSet<'a> {
             return flags;
         };
         let n = self.len();
+        if loads.is_empty() && warm.len() == 2 * n {
+            // No step yet: the state at no load, where only the elements
+            // touching from the start are closed. The others start open,
+            // so that the loop's first solve is the start's response along
+            // the step, which says where each closes (a history's
+            // sub-steps, docs/method.md §6.15).
+            for k in (0..n).filter(|&k| f.anchors[k].is_nan()) {
+                (flags[k], flags[n + k]) = (false, false);
+            }
+            return flags;
+        }
         if loads.len() != n || warm.len() != 2 * n {
             return flags;
         }
@@ -555,10 +578,15 @@ impl<'a> ContactSet<'a> {
             next: FrictionState {
                 anchors: f.anchors.clone(),
                 loads: c.to_vec(),
+                openings: Vec::with_capacity(n),
+                at: f64::NAN,
             },
+            closed: Vec::new(),
         };
         for k in 0..n {
-            let gamma = 2.0 * dot6(&f.bt[k], &values(k));
+            let ue = values(k);
+            let gamma = 2.0 * dot6(&f.bt[k], &ue);
+            out.next.openings.push(self.opening(k, &ue));
             let anchor = &mut out.next.anchors[k];
             if !active[k] {
                 // An open element forgets its slip: should it close, it
@@ -572,6 +600,7 @@ impl<'a> ContactSet<'a> {
                 out.state[k] = 1;
                 *anchor = gamma;
                 out.next.loads[k] = f.g_over_t[k] * gamma;
+                out.closed.push(k);
             } else if active[n + k] {
                 out.state[k] = 1;
                 out.shear[k] = f.g_over_t[k] * (gamma - f.anchors[k]);

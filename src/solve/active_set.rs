@@ -53,6 +53,9 @@ pub(crate) struct Settled {
     pub history: Vec<IterationRecord>,
     /// Bytes the condensed system held (0 when not condensed).
     pub condensed_bytes: usize,
+    /// The openings of the strip's elements in the first iterate
+    /// ([`ActiveSetLoop::predicted`]; empty when frictionless).
+    pub predicted: Vec<f64>,
 }
 
 /// The condensed system with the solution x₁ of K₁ it is relative to, the
@@ -98,6 +101,9 @@ pub(crate) struct AtInterface {
     pub friction: Vec<f64>,
     /// One record per iteration.
     pub history: Vec<IterationRecord>,
+    /// The openings of the strip's elements in the first iterate
+    /// ([`ActiveSetLoop::predicted`]; empty when frictionless).
+    pub predicted: Vec<f64>,
 }
 
 /// The current solution of the loop.
@@ -126,6 +132,12 @@ pub(crate) struct ActiveSetLoop<'a, 's> {
     friction: FrictionLoads,
     condensed: Option<CondensedState>,
     iterate: Iterate,
+    /// The openings of the strip's elements in the first iterate, solved
+    /// with the flags the loop started from: along a load step from a
+    /// settled state, that start's response at the step's end, linear in
+    /// the load, which says where along the step an open element closes
+    /// (a history's sub-steps, docs/method.md §6.15). Frictional sets only.
+    predicted: Vec<f64>,
 }
 
 /// The backward error a field recovered from the condensed interface must
@@ -167,6 +179,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             friction: FrictionLoads::new(friction),
             condensed: None,
             iterate: Iterate::None,
+            predicted: Vec::new(),
         }
     }
 
@@ -190,6 +203,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             friction: FrictionLoads::new(friction),
             condensed: Some(state),
             iterate: Iterate::None,
+            predicted: Vec::new(),
         }
     }
 
@@ -197,6 +211,13 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
     /// Coulomb's law) and moves the flags and friction loads to the
     /// verdict: true when both stand still.
     fn advance(&mut self, iteration: usize) -> Result<bool> {
+        let set = self.input.set;
+        if iteration == 1 && set.is_frictional() {
+            let strip = set.strip();
+            self.predicted = (0..strip.len())
+                .map(|k| strip.opening(k, &set.element_values(k, |i| self.value(i))))
+                .collect();
+        }
         let Verdict {
             flags: next,
             loads: friction,
@@ -230,6 +251,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
                             active,
                             friction: self.friction.c,
                             history,
+                            predicted: self.predicted,
                         };
                         Ok(Outcome::Interface(Box::new(InterfaceSettled {
                             state,
@@ -437,6 +459,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             friction: self.friction.c,
             history,
             condensed_bytes,
+            predicted: self.predicted,
         }))
     }
 

@@ -41,7 +41,9 @@ use super::linear::{Structure, check_finite, factor_and_solve};
 use super::memory;
 use super::report::{SolveInfo, Timings};
 use super::session::{Holds, Session, Settings, Wanted, analyse, factorisation};
-use super::{Field, Input, Outcome, Start, constraints, contact_outcome, finite_statistics};
+use super::{
+    ContactOutcome, Field, Input, Outcome, Start, constraints, contact_outcome, finite_statistics,
+};
 use crate::contact::constraints::Constraints;
 use crate::contact::{ContactOptions, FrictionState};
 use crate::error::{Error, Result, Status, preflight, reserved};
@@ -121,7 +123,8 @@ impl StepState {
         }
         let f = &self.friction;
         let sizes = [f.anchors.len(), f.loads.len()];
-        if sizes.iter().any(|&m| m != 0 && m != frictional) || sizes[0] != sizes[1] {
+        let openings = f.openings.is_empty() || f.openings.len() == sizes[0];
+        if sizes.iter().any(|&m| m != 0 && m != frictional) || sizes[0] != sizes[1] || !openings {
             return Err(Error::argument(format!(
                 "the contact state's friction data ({} / {} values) do not fit {frictional} \
                  frictional contact elements",
@@ -177,6 +180,11 @@ pub(crate) struct History {
     frictional: usize,
     /// K₁ and its condensed interface, where the interface is condensed.
     k1: Option<K1>,
+    /// The problem revision whose loads the last step applied (`None`
+    /// before the first): a step on the same loads follows the straight
+    /// path from the last step's factor to its own, which sub-steps can
+    /// stop on ([`History::step`]).
+    stepped_on: Option<u64>,
 }
 
 /// K₁ of a history that condenses its interface.
@@ -264,12 +272,15 @@ impl History {
             parts: sizes.parts,
             frictional: sizes.frictional,
             k1,
+            stepped_on: None,
         };
         if history.k1.is_some() {
             session.holds = Holds::History(id);
         }
         if let Some(state) = restored {
             history.set_state(state)?;
+            // A restored state goes on along its own loads.
+            history.stepped_on = Some(revision);
         }
         Ok((history, warnings))
     }
@@ -387,6 +398,13 @@ impl History {
     /// warm start that leads nowhere (a free body, a cycle: unloading to
     /// zero from a loaded set passes through no contact at all) is tried
     /// again from the initial set of the step's own loads.
+    ///
+    /// A frictional step ends sub-steps where elements open at its start
+    /// close (docs/method.md §6.15): each closes at the factor its opening
+    /// reaches zero, interpolated along the step, and sticks or slips from
+    /// there, so that contact formed under shear carries its shear within
+    /// the step that forms it. The step reports the sum of its sub-steps'
+    /// iterations, and a revert goes back before all of them.
     pub fn step(
         &mut self,
         session: &mut Session,
@@ -396,6 +414,143 @@ impl History {
     ) -> Result<Stepped> {
         check_load_factor(t)?;
         super::ensure_unknowns(&session.dofs)?;
+        let at = Along {
+            t,
+            revision,
+            options,
+        };
+        let on_path = self.on_path(revision);
+        let stepped = self.step_once(session, input, &at, timings)?;
+        self.stepped_on = Some(revision);
+        match on_path {
+            true => self.sub_steps(session, input, stepped, &at, timings),
+            false => Ok(stepped),
+        }
+    }
+
+    /// Whether the next step, on the loads of `revision`, starts on the
+    /// straight path to its own factor: from no load at all, or from a
+    /// step on the same loads, at a known factor.
+    fn on_path(&self, revision: u64) -> bool {
+        let at = self.friction.at;
+        !self.friction.anchors.is_empty() && at.is_finite() && self.stepped_on == Some(revision)
+            || self.frictional > 0 && at == 0.0
+    }
+
+    /// Follows a step `stepped` that closed elements open at its start
+    /// (without shear) with sub-steps: back at the step's start, on to
+    /// the factor where the first of them closes, accepted there (they
+    /// stick or slip from there), then on to the step's factor again;
+    /// until a step to `at.t` closes none. Each sub-step is a loop on the
+    /// condensed interface, warm-started. Gives the last one, with the
+    /// state before the whole step and the iterations of all.
+    fn sub_steps(
+        &mut self,
+        session: &mut Session,
+        input: &Input<'_>,
+        mut stepped: Stepped,
+        at: &Along<'_>,
+        timings: &mut Timings,
+    ) -> Result<Stepped> {
+        let before = stepped.before.clone();
+        let t_first = before.friction.at;
+        let (mut iterations, mut taken) = (0, 0);
+        let cap = MAX_SUB_STEPS.max(4 * self.frictional);
+        while taken < cap && !stepped.ended {
+            let start = &stepped.before.friction;
+            if start.at == at.t {
+                break;
+            }
+            let Some(s) = first_closure(session, start, &stepped.outcome) else {
+                break;
+            };
+            // Just past the closing, by the least sub-step: at the closing
+            // itself the element sits on the inversion test's threshold,
+            // and the loop cycles on it. Closings nearer together are
+            // taken at once.
+            let past = (SUB_STEP_LEAST * (at.t - t_first) / (at.t - start.at)).abs();
+            if s + past >= 1.0 {
+                break;
+            }
+            let t_c = start.at + (s + past) * (at.t - start.at);
+            let start = stepped.before;
+            iterations += iterations_of(&stepped.outcome);
+            let result = self.set_state(&start).and_then(|()| {
+                let sub = self.step_once(session, input, &Along { t: t_c, ..*at }, timings)?;
+                iterations += iterations_of(&sub.outcome);
+                if sub.ended {
+                    return Err(Error::new(
+                        Status::NotConverged,
+                        format!(
+                            "the load step's sub-step to factor {t_c:?}, where contact forms \
+                             under shear, needed a factorisation of its own (its condensed \
+                             interface was singular): split the step"
+                        ),
+                    ));
+                }
+                self.step_once(session, input, at, timings)
+            });
+            stepped = match result {
+                Ok(next) => next,
+                Err(e) => {
+                    self.back_to(&before)?;
+                    return Err(e);
+                }
+            };
+            taken += 1;
+        }
+        if let Some(c) = stepped.outcome.contact.as_mut() {
+            c.report.iterations += iterations;
+        }
+        if taken == cap {
+            stepped.outcome.warnings.push(format!(
+                "contact formed at more than {cap} points along this load step: the elements                  closing after those carry no shear until the step's end; split the step"
+            ));
+        }
+        stepped.before = before;
+        Ok(stepped)
+    }
+
+    /// Back at `before` after a failed step: its state restored, or, where
+    /// the failure lost K₁'s condensed state, kept for the rebuild that
+    /// makes K₁ again ([`History::rebuild`]).
+    fn back_to(&mut self, before: &StepState) -> Result<()> {
+        match self.k1.as_mut() {
+            Some(k1) if k1.state.is_none() => {
+                k1.kept = Some(before.clone());
+                Ok(())
+            }
+            _ => self.set_state(before),
+        }
+    }
+
+    /// One step to `at.t` from the history's state, without sub-steps; a
+    /// frictional history's state then stands at `at.t`.
+    fn step_once(
+        &mut self,
+        session: &mut Session,
+        input: &Input<'_>,
+        at: &Along<'_>,
+        timings: &mut Timings,
+    ) -> Result<Stepped> {
+        let stepped = self.step_at(session, input, at, timings)?;
+        if !self.friction.anchors.is_empty() {
+            self.friction.at = at.t;
+        }
+        Ok(stepped)
+    }
+
+    /// One step to `at.t`: on the condensed interface from the last
+    /// step's set, tried again from the initial set where that leads
+    /// nowhere, or afresh where the interface is not condensed.
+    fn step_at(
+        &mut self,
+        session: &mut Session,
+        input: &Input<'_>,
+        at: &Along<'_>,
+        timings: &mut Timings,
+    ) -> Result<Stepped> {
+        let (t, revision, options) = (at.t, at.revision, at.options);
         if self.k1.is_none() {
             return self.step_afresh(session, input, (t, options), timings);
         }
@@ -761,6 +916,92 @@ impl History {
     }
 }
 
+/// The contact state a one-shot solve of a frictional problem starts from
+/// where contact forms along its load (docs/method.md §6.15): the end of a
+/// one-step load history from no load, whose sub-steps find where along
+/// the load each element closes, and so the shear it carries. The solve
+/// then settles from that state, with its own factorisation (its matrix
+/// and field are a solve's). With the factorisations it took; `None`
+/// where no pair is frictional or every element touches from the start
+/// (the solve's own start is then the path's).
+pub(crate) fn path_start(
+    session: &mut Session,
+    input: &Input<'_>,
+    options: &ContactOptions,
+    timings: &mut Timings,
+) -> Result<Option<(StepState, usize)>> {
+    let forms = {
+        let set = constraints(
+            input,
+            input.prescribed,
+            &session.contact,
+            &session.dofs,
+            options,
+            &[],
+        )?;
+        let strip = set.strip();
+        set.is_frictional() && (0..strip.len()).any(|k| strip.closing(k))
+    };
+    if !forms {
+        return Ok(None);
+    }
+    let key = Key::new(0, options);
+    let (mut history, _) = History::begin(session, input, (key, 0), None, timings)?;
+    let stepped = history.step(session, input, (1.0, 0, options), timings)?;
+    let factorizations = history.factorizations() + stepped.outcome.info.factorizations;
+    Ok(Some((history.state(), factorizations)))
+}
+
+/// Where a step goes: its load factor, the problem revision whose loads
+/// it applies, and its contact options.
+#[derive(Clone, Copy)]
+struct Along<'o> {
+    /// The load factor.
+    t: f64,
+    /// The problem revision of the loads.
+    revision: u64,
+    /// The contact options.
+    options: &'o ContactOptions,
+}
+
+/// The least sub-steps a step takes before it stops locating where
+/// contact forms along it (then the elements closing later carry no shear
+/// until its end, with a warning); more where the history has more
+/// frictional elements (four sub-steps each).
+const MAX_SUB_STEPS: usize = 64;
+
+/// The least sub-step, as a share of its step: closings nearer together
+/// along the step are taken at once.
+const SUB_STEP_LEAST: f64 = 1e-6;
+
+/// Where along a step (0 at its start, 1 at its end) the first of the
+/// elements that closed in it (`outcome`'s friction, from the state
+/// `start`) reaches zero opening: the start's response is linear in the
+/// load until something changes, so its opening goes from the one at the
+/// start (its initial opening J₀ before any step) to the one the loop's
+/// first solve predicted at the end, under the start's flags. `None`
+/// where none closed, or all at the end.
+fn first_closure(session: &Session, start: &FrictionState, outcome: &Outcome) -> Option<f64> {
+    let contact = outcome.contact.as_ref()?;
+    let f = contact.state.strip.friction.as_ref()?;
+    let elements = session.contact.elements();
+    let opening = |k: usize| start.openings.get(k).copied().unwrap_or(elements[k].j0);
+    let predicted = |k: usize| contact.predicted.get(k).copied().unwrap_or(f64::NAN);
+    f.closed
+        .iter()
+        .filter_map(|&k| {
+            let (o0, o1) = (opening(k), predicted(k));
+            (o0 > 0.0 && o1 < o0).then(|| o0 / (o0 - o1))
+        })
+        .filter(|&s| s < 1.0 - SUB_STEP_LEAST)
+        .min_by(f64::total_cmp)
+}
+
+/// The active-set iterations of a step's outcome.
+fn iterations_of(outcome: &Outcome) -> usize {
+    outcome.contact.as_ref().map_or(0, |c| c.report.iterations)
+}
+
 /// Refuses a load factor that is not finite or beyond 1e300 in magnitude.
 pub(crate) fn check_load_factor(t: f64) -> Result<()> {
     if t.is_finite() && t.abs() <= 1e300 {
@@ -1035,6 +1276,7 @@ fn on_interface(
         active,
         friction,
         history,
+        predicted,
     } = settled;
     let contact = {
         let x1 = &k1.condensed().x1;
@@ -1048,6 +1290,10 @@ fn on_interface(
             info,
             &mut warnings,
         )?
+    };
+    let contact = ContactOutcome {
+        predicted,
+        ..contact
     };
     let (key, t) = step.at;
     let pending = Pending {

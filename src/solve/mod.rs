@@ -92,6 +92,10 @@ pub(crate) struct ContactOutcome {
     pub state: ContactState,
     /// The report (its `info` filled by the caller).
     pub report: ContactReport,
+    /// The openings of the strip's elements at the solve's load under the
+    /// flags it started from: where along a load step its elements close
+    /// (empty when frictionless, or not known).
+    pub predicted: Vec<f64>,
 }
 
 /// Solves `input` on `session`: without contact when `options` is `None`.
@@ -101,11 +105,17 @@ pub(crate) fn solve(
     options: Option<&ContactOptions>,
     timings: &mut Timings,
 ) -> Result<Outcome> {
-    let (info, warnings) = prepare(session, input, timings)?;
-    match options {
-        None => solve_plain(session, input, info, timings, warnings),
-        Some(options) => solve_contact(session, input, options, None, (info, warnings), timings),
-    }
+    let Some(options) = options else {
+        let (info, warnings) = prepare(session, input, timings)?;
+        return solve_plain(session, input, info, timings, warnings);
+    };
+    let path = history::path_start(session, input, options, timings)?;
+    let (mut info, warnings) = prepare(session, input, timings)?;
+    let start = path.as_ref().map(|(state, factorizations)| {
+        info.factorizations += factorizations;
+        (&state.warm[..], &state.friction)
+    });
+    solve_contact(session, input, options, start, (info, warnings), timings)
 }
 
 /// Where a contact solve's loop starts: the constraints' initial set
@@ -337,7 +347,7 @@ pub(crate) fn solve_contact(
     conditioning_warning(&info, &mut warnings);
     let x = &settled.x;
     let verdict = (settled.active, &settled.friction[..]);
-    let contact = contact_outcome(
+    let mut contact = contact_outcome(
         (&set, input.pairs, mesh),
         |i| x[i],
         verdict,
@@ -345,6 +355,7 @@ pub(crate) fn solve_contact(
         info,
         &mut warnings,
     )?;
+    contact.predicted = settled.predicted;
     let u = dofs.expand(&settled.x, input.prescribed);
     drop(settled.x);
     Ok(Outcome {
@@ -399,5 +410,6 @@ pub(crate) fn contact_outcome(
         flags: s.flags,
         state: s.state,
         report,
+        predicted: Vec::new(),
     })
 }
