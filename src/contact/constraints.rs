@@ -209,7 +209,8 @@ impl<'a> Constraints<'a> {
     /// factors `c` ([`ContactSet::verdict`], [`MortarSet::verdict`]).
     pub fn verdict(
         &self,
-        (current, c): (&[bool], &[f64]),
+        current: &[bool],
+        c: &[f64],
         value: impl Fn(usize) -> f64,
     ) -> Result<Verdict> {
         let ns = self.strip.parts();
@@ -281,7 +282,8 @@ impl<'a> Constraints<'a> {
     /// in for the unknowns' values read by `value`.
     pub fn settled(
         &self,
-        (active, c): (&[bool], &[f64]),
+        active: &[bool],
+        c: &[f64],
         value: impl Fn(usize) -> f64,
         mesh: &Mesh,
     ) -> Result<Settled> {

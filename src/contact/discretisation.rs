@@ -172,7 +172,8 @@ pub fn serves(weighting: ContactWeighting, i: usize, friction: f64, own_mesh: bo
 /// so that a bad interface is reported when the pair is declared.
 pub fn check_pair(
     mesh: &Mesh,
-    (pairs, i): (&[ContactPair], usize),
+    pairs: &[ContactPair],
+    i: usize,
     weighting: ContactWeighting,
 ) -> Result<()> {
     match family_of(mesh, &pairs[i], weighting)? {
@@ -237,7 +238,7 @@ fn mortar_gaps(
         gaps.push(PairGaps {
             pair: *i,
             slave,
-            gaps: read_gaps(nodes, (a, b), slave).map_err(|e| named(e, *i))?,
+            gaps: read_gaps(nodes, a, b, slave).map_err(|e| named(e, *i))?,
         });
         h_c.insert(*i, penalty_length(nodes, a, b).map_err(|e| named(e, *i))?);
     }
@@ -264,7 +265,7 @@ fn named(e: Error, i: usize) -> Error {
 /// at δ = 1e-4 (docs/issue42 of the ring study). The hats integrate the
 /// same geometry smoothly and keep the patch test (they satisfy
 /// Σψ = 1 and ∫ψ_i = ∫φ_i alike).
-fn read_gaps(nodes: Nodes<'_>, (a, b): (&Side, &Side), slave: Slave) -> Result<Vec<WeightedGap>> {
+fn read_gaps(nodes: Nodes<'_>, a: &Side, b: &Side, slave: Slave) -> Result<Vec<WeightedGap>> {
     let mut gaps = weighted_gaps(nodes, a, b, slave, Basis::Dual)?;
     let hats = weighted_gaps(nodes, a, b, slave, Basis::Standard)?;
     for (g, h) in gaps.iter_mut().zip(&hats) {

@@ -403,24 +403,23 @@ struct Ends {
 }
 
 impl Ends {
-    /// The ends of the windowed chains `ca`, `cb` over [lo, hi];
-    /// `inner.0`/`inner.1`: whether b's first/last node is the one inside
-    /// (else a's). Round-off (`tol`) does not cut an end, nor does an
-    /// offset that curvature alone makes: on curved sides a distance d
-    /// apart (a gap or an overlap) the other side's end, projected on this
-    /// side, lands off its end by up to d times the sides' turn there
-    /// although the two ends face each other (the Lamé rings' quarter with
-    /// 1e-2 of overlap was cut, and its pressure error went from 8.9e-5 to
-    /// 1.3e-4 of p). The distance is the inner end node's from the other
-    /// side; on straight sides the turn is zero and every offset beyond
-    /// round-off cuts.
-    fn new(
-        x: &[[f64; 2]],
-        (ca, cb): (&[usize], &[usize]),
-        inner: (bool, bool),
-        (lo, hi): (f64, f64),
-        tol: f64,
-    ) -> Ends {
+    /// The ends of `al`'s chains windowed by `window` ([a0, a1, b0, b1],
+    /// [`windows_and_ends`]) over its [lo, hi]. Round-off (`al.tol`) does
+    /// not cut an end, nor does an offset that curvature alone makes: on
+    /// curved sides a distance d apart (a gap or an overlap) the other
+    /// side's end, projected on this side, lands off its end by up to d
+    /// times the sides' turn there although the two ends face each other
+    /// (the Lamé rings' quarter with 1e-2 of overlap was cut, and its
+    /// pressure error went from 8.9e-5 to 1.3e-4 of p). The distance is the
+    /// inner end node's from the other side; on straight sides the turn is
+    /// zero and every offset beyond round-off cuts.
+    fn new(x: &[[f64; 2]], al: &Aligned, window: [usize; 4]) -> Ends {
+        let [a0, a1, b0, b1] = window;
+        let (ca, cb) = (&al.chain_a[a0..=a1], &al.chain_b[b0..=b1]);
+        let total = al.s_a[al.s_a.len() - 1];
+        // Whether b's first/last node is the one inside (else a's).
+        let inner = (al.s_b[b0] > 0.0, al.s_b[b1] < total);
+        let (lo, hi, tol) = (al.lo, al.hi, al.tol);
         let slack = |inner: usize, other: &[usize], turns: [f64; 2]| {
             tol + distance_to_chain(x, x[inner], other) * turns[0].max(turns[1])
         };
@@ -484,16 +483,15 @@ impl Ends {
     }
 }
 
-/// The strip between the windowed chains (nodes and abscissas along side
-/// a): its triangles (an edge of one side, an apex on the other), each
-/// edge's apex the node of the other side nearest to its midpoint but at
-/// a cut end, and the share of each triangle's edge that faces the other
-/// side.
-fn walk_strip(
-    (ca, sa): (&[usize], &[f64]),
-    (cb, sb): (&[usize], &[f64]),
-    ends: &Ends,
-) -> (Vec<[usize; 3]>, Vec<f64>) {
+/// The strip between `al`'s chains windowed by `window` ([a0, a1, b0,
+/// b1]; nodes and abscissas along side a) with the ends `ends`: its
+/// triangles (an edge of one side, an apex on the other), each edge's apex
+/// the node of the other side nearest to its midpoint but at a cut end,
+/// and the share of each triangle's edge that faces the other side.
+fn walk_strip(al: &Aligned, window: [usize; 4], ends: &Ends) -> (Vec<[usize; 3]>, Vec<f64>) {
+    let [a0, a1, b0, b1] = window;
+    let (ca, sa) = (&al.chain_a[a0..=a1], &al.s_a[a0..=a1]);
+    let (cb, sb) = (&al.chain_b[b0..=b1], &al.s_b[b0..=b1]);
     let ((a_before, a_after), (b_before, b_after)) = (ends.beyond(sa), ends.beyond(sb));
     let mut tris = Vec::with_capacity(ca.len() + cb.len());
     let mut fractions = Vec::with_capacity(ca.len() + cb.len());
@@ -1066,26 +1064,14 @@ pub fn nonconforming(
     a: &Side,
     b: &Side,
 ) -> Result<Vec<ContactElement>> {
-    let x = nodes.x;
-    let Aligned {
-        chain_a,
-        s_a,
-        chain_b,
-        s_b,
-        lo,
-        hi,
-        tol,
-        turn,
-    } = alignment(nodes, a, b)?;
+    let al = alignment(nodes, a, b)?;
     // Two closed loops face each other all round: the strip is walked over
     // one turn of each, its last rung the first, and no edge is cut.
-    let (w, ends) = match turn {
+    let (w, ends) = match al.turn {
         Some(w) => (w, Ends::none()),
-        None => windows_and_ends(x, (&chain_a, &s_a), (&chain_b, &s_b), (lo, hi, tol)),
+        None => windows_and_ends(nodes.x, &al),
     };
-    let (ca, sa) = (&chain_a[w[0]..=w[1]], &s_a[w[0]..=w[1]]);
-    let (cb, sb) = (&chain_b[w[2]..=w[3]], &s_b[w[2]..=w[3]]);
-    let (tris, fractions) = walk_strip((ca, sa), (cb, sb), &ends);
+    let (tris, fractions) = walk_strip(&al, w, &ends);
     let mut elements = checked_triangles(nodes, pair, a, b, &tris)?.0;
     for (el, f) in elements.iter_mut().zip(fractions) {
         if f < 1.0 {
@@ -1095,28 +1081,21 @@ pub fn nonconforming(
     Ok(elements)
 }
 
-/// Each chain's window — the part over [lo, hi] plus, where the chain
-/// goes on beyond an end, the node beyond it (the edge across the end
-/// faces the other side over part of its length) — as [a0, a1, b0, b1],
-/// and the [`Ends`] of the windowed chains.
-fn windows_and_ends(
-    x: &[[f64; 2]],
-    (chain_a, s_a): (&[usize], &[f64]),
-    (chain_b, s_b): (&[usize], &[f64]),
-    (lo, hi, tol): (f64, f64, f64),
-) -> ([usize; 4], Ends) {
-    let total = s_a[s_a.len() - 1];
+/// Each of `al`'s chains' window — the part over [lo, hi] plus, where the
+/// chain goes on beyond an end, the node beyond it (the edge across the
+/// end faces the other side over part of its length) — as [a0, a1, b0,
+/// b1], and the [`Ends`] of the windowed chains.
+fn windows_and_ends(x: &[[f64; 2]], al: &Aligned) -> ([usize; 4], Ends) {
+    let (lo, hi, tol) = (al.lo, al.hi, al.tol);
     let window = |s: &[f64]| -> (usize, usize) {
         let first = s.iter().rposition(|&v| v <= lo + tol).unwrap_or(0);
         let last = s.iter().position(|&v| v >= hi - tol).unwrap_or(s.len() - 1);
         (first, last.max(first + 1).min(s.len() - 1))
     };
-    let (a0, a1) = window(s_a);
-    let (b0, b1) = window(s_b);
-    let (ca, cb) = (&chain_a[a0..=a1], &chain_b[b0..=b1]);
-    let inner = (s_b[b0] > 0.0, s_b[b1] < total);
-    let ends = Ends::new(x, (ca, cb), inner, (lo, hi), tol);
-    ([a0, a1, b0, b1], ends)
+    let (a0, a1) = window(&al.s_a);
+    let (b0, b1) = window(&al.s_b);
+    let w = [a0, a1, b0, b1];
+    (w, Ends::new(x, al, w))
 }
 
 impl Aligned {
@@ -1126,12 +1105,7 @@ impl Aligned {
     /// ends that face each other (the strip's own rule, [`Ends`];
     /// docs/method.md §6.11, "Sides that end inside an edge").
     pub(crate) fn end_slack(&self, x: &[[f64; 2]]) -> (f64, f64) {
-        let (_, ends) = windows_and_ends(
-            x,
-            (&self.chain_a, &self.s_a),
-            (&self.chain_b, &self.s_b),
-            (self.lo, self.hi, self.tol),
-        );
+        let (_, ends) = windows_and_ends(x, self);
         (ends.tol_lo, ends.tol_hi)
     }
 }
@@ -1256,7 +1230,7 @@ pub(crate) fn alignment(nodes: Nodes<'_>, a: &Side, b: &Side) -> Result<Aligned>
     let nb = loop_b.len() - 1;
     let on_a: Vec<f64> = loop_b[..nb]
         .iter()
-        .map(|&v| loop_abscissa(x, (&loop_a, &s_loop), x[v]))
+        .map(|&v| loop_abscissa(x, &loop_a, &s_loop, x[v]))
         .collect();
     let first = (0..nb)
         .min_by(|&i, &j| on_a[i].total_cmp(&on_a[j]))
@@ -1400,7 +1374,7 @@ fn wrapped(chain: &[usize], s: &[f64], total: f64) -> (Vec<usize>, Vec<f64>) {
 
 /// The abscissa on a closed loop (`chain` with arclengths `s`) of its point
 /// nearest to `p`, in [0, the loop's length).
-fn loop_abscissa(x: &[[f64; 2]], (chain, s): (&[usize], &[f64]), p: [f64; 2]) -> f64 {
+fn loop_abscissa(x: &[[f64; 2]], chain: &[usize], s: &[f64], p: [f64; 2]) -> f64 {
     let total = s[s.len() - 1];
     let mut best = (f64::INFINITY, 0.0);
     for k in 0..chain.len() - 1 {

@@ -141,7 +141,8 @@ struct Sample {
 /// (then c is on b, and the gap is c's position less the edge's).
 fn apex_sample(
     x: &[[f64; 2]],
-    (p, q): (usize, usize),
+    p: usize,
+    q: usize,
     c: usize,
     n: [f64; 2],
     edge_on_a: bool,
@@ -203,6 +204,25 @@ fn to_slave_ends(mut al: Aligned, x: &[[f64; 2]], slave: Slave) -> Aligned {
         al.hi = last;
     }
     al
+}
+
+/// One slave edge as the weighted gaps integrate over it: its nodes, the
+/// normal every gap sample on it is read along (one normal per slave edge,
+/// as in mortar methods), and where it lies along a and faces the master.
+struct SlaveEdge {
+    /// Its first and second node, in the slave chain's order.
+    nodes: (usize, usize),
+    /// Its unit normal ν, from a to b.
+    nu: [f64; 2],
+    /// The abscissa of its first node along a.
+    e0: f64,
+    /// The abscissa of its second node.
+    e1: f64,
+    /// Where it starts facing the master: e0 clipped to the facing
+    /// interval.
+    c0: f64,
+    /// Where it stops: e1 clipped likewise.
+    c1: f64,
 }
 
 /// One merged point: its abscissa along side a, its node, and whether it
@@ -321,23 +341,26 @@ fn merged_points(al: &Aligned, slave: Slave) -> Vec<Point> {
     merged
 }
 
-/// The gap at merged point `p` read along `nu`, the normal (from a to b)
-/// of slave edge `edge`: a master node against the edge's line (the apex
-/// gap (6.9) of the triangle (edge, node)); a slave node (an end of the
-/// edge) against the master polygon, where the ray from it along `nu`
+/// The gap at merged point `p` read along ν, the normal (from a to b) of
+/// slave edge `edge`: a master node against the edge's line (the apex gap
+/// (6.9) of the triangle (edge, node)); a slave node (an end of the edge)
+/// against the master polygon (`ms_chain`), where the ray from it along ν
 /// meets it (the apex gap of the triangle (that master edge, node) read
-/// along `nu`). One normal per slave edge, as in mortar methods: the gap
-/// is then continuous as a node crosses a vertex of the other side, and a
-/// pair and its mirror image read alike.
+/// along ν). `slave_on_a`: whether the slave is side a. One normal per
+/// slave edge, as in mortar methods: the gap is then continuous as a node
+/// crosses a vertex of the other side, and a pair and its mirror image
+/// read alike.
 fn sample_on_edge(
     x: &[[f64; 2]],
-    (ms_chain, slave_on_a): (&[usize], bool),
-    edge: (usize, usize),
-    nu: [f64; 2],
+    ms_chain: &[usize],
+    slave_on_a: bool,
+    edge: &SlaveEdge,
     p: &Point,
 ) -> Sample {
+    let nu = edge.nu;
     if !p.slave {
-        return apex_sample(x, edge, p.node, nu, slave_on_a);
+        let (ep, eq) = edge.nodes;
+        return apex_sample(x, ep, eq, p.node, nu, slave_on_a);
     }
     let c = x[p.node];
     let last = ms_chain.len() - 2;
@@ -368,7 +391,7 @@ fn sample_on_edge(
         // line along that edge's normal instead.
         let k = p.facing.min(last);
         let n = left_normal(x, ms_chain, k);
-        return apex_sample(x, (ms_chain[k], ms_chain[k + 1]), p.node, n, !slave_on_a);
+        return apex_sample(x, ms_chain[k], ms_chain[k + 1], p.node, n, !slave_on_a);
     };
     // The gap is the master's position less the slave's along ν when the
     // slave is side a, the reverse when it is b.
@@ -411,11 +434,17 @@ fn integrated(
         // ds along the slave edge per unit of abscissa along a.
         let jac = length / (e1 - e0);
         let whole = c0 - e0 <= al.tol && e1 - c1 <= al.tol;
-        let edge = (sl_chain[k], sl_chain[k + 1]);
-        // Both chains run with body a on their right (b was turned
-        // round): every edge's left normal points from a to b.
-        let nu = left_normal(x, sl_chain, k);
-        let on_edge = edge_samples(x, (al, slave), (edge, nu), (e0, e1, c0, c1), merged);
+        let edge = SlaveEdge {
+            nodes: (sl_chain[k], sl_chain[k + 1]),
+            // Both chains run with body a on their right (b was turned
+            // round): every edge's left normal points from a to b.
+            nu: left_normal(x, sl_chain, k),
+            e0,
+            e1,
+            c0,
+            c1,
+        };
+        let on_edge = edge_samples(x, al, slave, &edge, merged);
         // The dual weights read g at the nodes for a gap linear on the edge;
         // a gap that bends sharply across it (a step or a corner of the
         // master, far from contact) turns their negative lobe into a read
@@ -452,30 +481,38 @@ fn integrated(
     acc
 }
 
-/// The gap samples on slave edge `edge` (abscissas [e0, e1], facing the
-/// master over [c0, c1]), in order, each read along the edge's normal ν:
-/// its ends as merged (slave nodes, or the facing interval's bounds), and
-/// inside it every master vertex whose foot on the edge's line falls
-/// inside, at its foot. The gap along ν kinks where the ray passes a
-/// master vertex: at the vertex's foot, wherever the merged order (by
-/// projection on a) put the vertex. On curved sides a vertex facing a
-/// slave node projects onto one of the node's two chords only (a tie
-/// broken by round-off), yet the other chord's rays pass it too: without
-/// its foot there that chord read the ray's gap past the kink,
+/// The gap samples on slave edge `edge` of `al` (slave `slave`; abscissas
+/// [e0, e1], facing the master over [c0, c1]), in order, each read along
+/// the edge's normal ν: its ends as merged (slave nodes, or the facing
+/// interval's bounds), and inside it every master vertex whose foot on the
+/// edge's line falls inside, at its foot. The gap along ν kinks where the
+/// ray passes a master vertex: at the vertex's foot, wherever the merged
+/// order (by projection on a) put the vertex. On curved sides a vertex
+/// facing a slave node projects onto one of the node's two chords only (a
+/// tie broken by round-off), yet the other chord's rays pass it too:
+/// without its foot there that chord read the ray's gap past the kink,
 /// δ cos(Δθ/2)/cos Δθ, along its whole length instead of δ cos(Δθ/2) —
 /// O(δ Δθ²) on some interior nodes but not on the end nodes, the Lamé
 /// rings' 1 % end error at first order.
 fn edge_samples(
     x: &[[f64; 2]],
-    (al, slave): (&Aligned, Slave),
-    (edge, nu): ((usize, usize), [f64; 2]),
-    (e0, e1, c0, c1): (f64, f64, f64, f64),
+    al: &Aligned,
+    slave: Slave,
+    edge: &SlaveEdge,
     merged: &[Point],
 ) -> Vec<(f64, Sample)> {
     let (_, _, ms_chain, ms_s) = chains(al, slave);
+    let SlaveEdge {
+        nodes,
+        e0,
+        e1,
+        c0,
+        c1,
+        ..
+    } = *edge;
     let first = merged.partition_point(|p| p.s < c0 - al.tol);
     let last = merged.partition_point(|p| p.s <= c1 + al.tol);
-    let (xp, xq) = (x[edge.0], x[edge.1]);
+    let (xp, xq) = (x[nodes.0], x[nodes.1]);
     let ev = [xq[0] - xp[0], xq[1] - xp[1]];
     let ee = ev[0] * ev[0] + ev[1] * ev[1];
     let span = e1 - e0;
@@ -505,7 +542,7 @@ fn edge_samples(
     pts.sort_by(|p, q| p.0.total_cmp(&q.0));
     let slave_on_a = slave == Slave::A;
     pts.iter()
-        .map(|&(s, p)| (s, sample_on_edge(x, (ms_chain, slave_on_a), edge, nu, p)))
+        .map(|&(s, p)| (s, sample_on_edge(x, ms_chain, slave_on_a, edge, p)))
         .collect()
 }
 

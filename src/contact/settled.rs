@@ -126,7 +126,8 @@ impl ContactState {
         mesh: &Mesh,
         u: &[f64],
         fixed: &[bool],
-        (r, bound): (&mut [f64], &mut [f64]),
+        r: &mut [f64],
+        bound: &mut [f64],
     ) {
         let s = &self.strip;
         for (k, el) in s.elements.iter().enumerate() {
@@ -314,19 +315,32 @@ pub struct Settlement {
     pub max_penetration: f64,
 }
 
+/// The mesh a solve's constraints were built on with its contact pairs:
+/// what a settlement is read against (the weighted gaps' nodes, the
+/// pairs' contact zones).
+#[derive(Clone, Copy)]
+pub struct PairedMesh<'a> {
+    /// The mesh.
+    pub mesh: &'a Mesh,
+    /// Its contact pairs.
+    pub pairs: &'a [ContactPair],
+}
+
 /// The settlement of the constraints `set` in the flags `active` (over
 /// parts) with the friction load factors `friction`, the unknowns' values
-/// read by `value`. Its warnings (pressures near round-off, one-sided
-/// readings) go to `warnings`. Refuses a value that is not finite, naming
-/// its element.
+/// read by `value`, on `paired`'s mesh and pairs. Its warnings (pressures
+/// near round-off, one-sided readings) go to `warnings`. Refuses a value
+/// that is not finite, naming its element.
 pub fn settle(
     set: &Constraints<'_>,
-    (active, friction): (Vec<bool>, &[f64]),
+    active: Vec<bool>,
+    friction: &[f64],
     value: impl Fn(usize) -> f64,
-    (mesh, pairs): (&Mesh, &[ContactPair]),
+    paired: PairedMesh<'_>,
     warnings: &mut Vec<String>,
 ) -> Result<Settlement> {
-    let settled = set.settled((&active, friction), &value, mesh)?;
+    let PairedMesh { mesh, pairs } = paired;
+    let settled = set.settled(&active, friction, &value, mesh)?;
     let strip = set.strip();
     let name = |k: usize| format!("contact element {}", k + strip.nodes().base);
     if let Some(f) = &settled.friction {

@@ -464,8 +464,7 @@ impl Model {
         };
         session.holds = crate::solve::session::Holds::Solve(revision);
         let options = options.copied();
-        let (solution, warnings) =
-            solution_of(outcome, (f_ext, options), timings, t_start, revision);
+        let (solution, warnings) = solution_of(outcome, f_ext, options, timings, t_start, revision);
         self.solve_warnings = warnings;
         if let Some(u) = solution.u.get() {
             reaction_warning(&self.problem, &solution, u, &mut self.solve_warnings);
@@ -876,7 +875,8 @@ fn session_of<'s>(
             p.structure(),
             p.mesh_ref()?,
             prescribed,
-            (p.contact_pairs(), p.contact_weighting()),
+            p.contact_pairs(),
+            p.contact_weighting(),
         )?;
         timings.analysis = t0.elapsed().as_secs_f64();
         *slot = Some(s);
@@ -889,7 +889,8 @@ fn session_of<'s>(
 /// forces `f_ext`; fills in the timings of the whole call.
 fn solution_of(
     outcome: Outcome,
-    (f_ext, options): (Vec<f64>, Option<ContactOptions>),
+    f_ext: Vec<f64>,
+    options: Option<ContactOptions>,
     mut timings: Timings,
     t_start: Instant,
     revision: u64,

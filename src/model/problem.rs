@@ -248,7 +248,7 @@ impl Problem {
                 contact::pair_bodies(mesh, p.tag_a, p.tag_b).map_err(|e| misfit(i, p, e))?;
         }
         for (i, p) in pairs.iter().enumerate() {
-            contact::discretisation::check_pair(mesh, (&pairs, i), self.weighting)
+            contact::discretisation::check_pair(mesh, &pairs, i, self.weighting)
                 .map_err(|e| misfit(i, p, e))?;
         }
         Ok(pairs)
@@ -542,8 +542,8 @@ impl Problem {
         // call.
         let mut pairs = self.pairs.clone();
         pairs.push(pair.clone());
-        let at = (&pairs[..], self.pairs.len());
-        crate::contact::discretisation::check_pair(mesh, at, self.weighting)?;
+        let i = self.pairs.len();
+        crate::contact::discretisation::check_pair(mesh, &pairs, i, self.weighting)?;
         self.pairs.push(pair);
         self.changed_contact("the contact pairs");
         Ok(self.pairs.len() - 1)
@@ -615,7 +615,7 @@ impl Problem {
         let mut pairs = self.pairs.clone();
         pairs[pair].friction = mu;
         if rebuild {
-            contact::discretisation::check_pair(self.mesh_ref()?, (&pairs, pair), self.weighting)?;
+            contact::discretisation::check_pair(self.mesh_ref()?, &pairs, pair, self.weighting)?;
         }
         self.pairs = pairs;
         match rebuild {

@@ -188,7 +188,7 @@ impl Solution {
             Ok(())
         })?;
         if let Some(c) = &self.contact {
-            c.state.add_reactions(mesh, u, fixed, (&mut r, &mut bound));
+            c.state.add_reactions(mesh, u, fixed, &mut r, &mut bound);
         }
         for (g, v) in r.iter_mut().enumerate() {
             if fixed[g] {

@@ -231,7 +231,8 @@ impl Model {
         let f_scaled: Vec<f64> = f_ext.iter().map(|f| t * f).collect();
         let (mut solution, mut solve_warnings) = solution_of(
             outcome,
-            (f_scaled, Some(*options)),
+            f_scaled,
+            Some(*options),
             timings,
             t_start,
             revision,

@@ -16,9 +16,8 @@ use std::time::Instant;
 use super::condensed::{Condensed, ElementMatrix, LowRank};
 use super::diagnostics::add_energy;
 use super::friction_loads::FrictionLoads;
-use super::linear::{Structure, check_finite, factor_and_solve};
-use super::report::{IterationRecord, SolveInfo, Timings};
-use super::system::AssembledSystem;
+use super::linear::{Bookkeeping, Structure, SystemAndFactor, check_finite, factor_and_solve};
+use super::report::IterationRecord;
 use crate::contact::constraints::Constraints;
 use crate::contact::{ActiveSet, ContactOptions, Verdict};
 use crate::error::{Error, Result};
@@ -122,10 +121,11 @@ enum Iterate {
 /// The active-set loop over the contact elements of one solve.
 pub(crate) struct ActiveSetLoop<'a, 's> {
     input: LoopInput<'a, 's>,
-    chol: &'a mut Cholesky,
-    system: &'a mut AssembledSystem,
-    timings: &'a mut Timings,
-    info: &'a mut SolveInfo,
+    /// The session's system, updated to each iteration's set, and its
+    /// factor.
+    linear: SystemAndFactor<'a>,
+    /// Where the loop's time and statistics go.
+    books: Bookkeeping<'a>,
     set: ActiveSet,
     /// The friction load factors of the next solve (docs/method.md §6.15;
     /// empty when frictionless).
@@ -156,12 +156,12 @@ const SLIP_PASSES: usize = 4;
 
 impl<'a, 's> ActiveSetLoop<'a, 's> {
     /// A loop that starts from the constraints' initial set, or from the
-    /// flags and friction load factors `start`; `system` holds the bodies'
-    /// part, `chol` an analysis of its pattern.
+    /// flags and friction load factors `start`; `linear`'s system holds the
+    /// bodies' part, its factor an analysis of its pattern.
     pub fn new(
         input: LoopInput<'a, 's>,
-        (chol, system): (&'a mut Cholesky, &'a mut AssembledSystem),
-        (timings, info): (&'a mut Timings, &'a mut SolveInfo),
+        linear: SystemAndFactor<'a>,
+        books: Bookkeeping<'a>,
         start: Option<(Vec<bool>, Vec<f64>)>,
     ) -> ActiveSetLoop<'a, 's> {
         let (initial, friction) = start.unwrap_or_else(|| {
@@ -171,10 +171,8 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         });
         ActiveSetLoop {
             input,
-            chol,
-            system,
-            timings,
-            info,
+            linear,
+            books,
             set: ActiveSet::new(initial),
             friction: FrictionLoads::new(friction),
             condensed: None,
@@ -188,17 +186,16 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
     /// friction load factors `friction` (empty when frictionless).
     pub fn resume(
         input: LoopInput<'a, 's>,
-        (chol, system): (&'a mut Cholesky, &'a mut AssembledSystem),
-        (timings, info): (&'a mut Timings, &'a mut SolveInfo),
+        linear: SystemAndFactor<'a>,
+        books: Bookkeeping<'a>,
         state: CondensedState,
-        (warm, friction): (Vec<bool>, Vec<f64>),
+        warm: Vec<bool>,
+        friction: Vec<f64>,
     ) -> ActiveSetLoop<'a, 's> {
         ActiveSetLoop {
             input,
-            chol,
-            system,
-            timings,
-            info,
+            linear,
+            books,
             set: ActiveSet::new(warm),
             friction: FrictionLoads::new(friction),
             condensed: Some(state),
@@ -332,13 +329,13 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         state.factor_active.extend_from_slice(active);
         if factored {
             let (ui, coupled) =
-                interface_solve(set, state, (active, &relative), &mut self.friction.c)?;
+                interface_solve(set, state, active, &relative, &mut self.friction.c)?;
             self.friction.coupled = coupled;
             self.iterate = Iterate::Condensed(ui);
         } else {
             self.condensed = None;
         }
-        self.timings.interface += t0.elapsed().as_secs_f64();
+        self.books.timings.interface += t0.elapsed().as_secs_f64();
         Ok(factored)
     }
 
@@ -350,10 +347,10 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         let (at, set) = (input.at, input.set);
         let t0 = Instant::now();
         let active = self.set.active();
-        self.system.set_contact(active, set, at.pattern);
-        self.system.set_friction_loads(set, &self.friction.c);
+        self.linear.system.set_contact(active, set, at.pattern);
+        self.linear.system.set_friction_loads(set, &self.friction.c);
         self.friction.coupled = false;
-        self.timings.assembly += t0.elapsed().as_secs_f64();
+        self.books.timings.assembly += t0.elapsed().as_secs_f64();
         let energy = |r: &[f64]| {
             let mut acc = body_energy(input.elements, r);
             for k in (0..set.parts()).filter(|&k| active[k]) {
@@ -367,19 +364,16 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         let condense = iteration == 1 && input.interface.is_some();
         // A condensed loop refines its final solution against the final
         // matrix; refining x₁ as well would be wasted.
-        let (chol, system) = (&mut *self.chol, &*self.system);
-        let (timings, info) = (&mut *self.timings, &mut *self.info);
-        let x = factor_and_solve(
-            at, chol, system, &energy, !condense, &context, timings, info,
-        )?;
+        let (linear, books) = (&mut self.linear, &mut self.books);
+        let x = factor_and_solve(at, linear, &energy, !condense, &context, books)?;
         if !condense {
             self.iterate = Iterate::Full(x);
             return Ok(());
         }
         let t0 = Instant::now();
         let interface = input.interface.clone().expect("condensing");
-        let system = Condensed::new(self.chol, interface)?;
-        self.info.interface_unknowns = system.len();
+        let system = Condensed::new(self.linear.chol, interface)?;
+        self.books.info.interface_unknowns = system.len();
         self.condensed = Some(CondensedState {
             system,
             x1: x,
@@ -388,7 +382,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             friction_ref: self.friction.c.clone(),
         });
         self.iterate = Iterate::Reference;
-        self.timings.interface += t0.elapsed().as_secs_f64();
+        self.books.timings.interface += t0.elapsed().as_secs_f64();
         Ok(())
     }
 
@@ -408,8 +402,8 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
     /// The contact law's verdict on the current iterate
     /// ([`ContactSet::verdict`]).
     fn verdict(&self) -> Result<Verdict> {
-        let current = (self.set.active(), &self.friction.c[..]);
-        self.input.set.verdict(current, |i| self.value(i))
+        let (active, c) = (self.set.active(), &self.friction.c[..]);
+        self.input.set.verdict(active, c, |i| self.value(i))
     }
 
     /// The settled solution over all unknowns, refined against the final
@@ -469,11 +463,11 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         let t0 = Instant::now();
         let mut x = state.x1;
         drop(state.system);
-        let (pattern, chol) = (self.input.at.pattern, &mut *self.chol);
-        let (values, rhs) = (self.system.values(), self.system.rhs());
+        let (pattern, chol) = (self.input.at.pattern, &mut *self.linear.chol);
+        let (values, rhs) = (self.linear.system.values(), self.linear.system.rhs());
         refine(pattern, values, rhs, &mut x, &mut |r| chol.solve(r))?;
         check_finite(self.input.at, &x, context)?;
-        self.timings.solve += t0.elapsed().as_secs_f64();
+        self.books.timings.solve += t0.elapsed().as_secs_f64();
         Ok(x)
     }
 
@@ -490,11 +484,15 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         let input = &self.input;
         let t0 = Instant::now();
         let active = self.set.active();
-        self.system.set_contact(active, input.set, input.at.pattern);
-        self.system.set_friction_loads(input.set, &self.friction.c);
-        self.timings.assembly += t0.elapsed().as_secs_f64();
+        self.linear
+            .system
+            .set_contact(active, input.set, input.at.pattern);
+        self.linear
+            .system
+            .set_friction_loads(input.set, &self.friction.c);
+        self.books.timings.assembly += t0.elapsed().as_secs_f64();
         let t0 = Instant::now();
-        let (values, rhs) = (self.system.values(), self.system.rhs());
+        let (values, rhs) = (self.linear.system.values(), self.linear.system.rhs());
         let pattern = input.at.pattern;
         let target = Target {
             at: input.at,
@@ -505,12 +503,12 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             rhs,
             friction: (&self.friction.c, &friction_ref),
         };
-        let (mut x, mut omega) = expand(target, self.chol, (&system, &reference), x1, ui)?;
+        let (mut x, mut omega) = expand(target, self.linear.chol, &system, &reference, x1, ui)?;
         if x.iter().any(|v| !v.is_finite()) {
             // Lost in the condensed solve: the loop goes on with full
             // solves (which report an overflow of the problem itself), and
             // no slip load is taken from it.
-            self.timings.solve += t0.elapsed().as_secs_f64();
+            self.books.timings.solve += t0.elapsed().as_secs_f64();
             return Ok((x, f64::NAN));
         }
         // The slip loads came from the interface solve; the refined field's
@@ -523,8 +521,10 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
                 break;
             }
             self.friction.take(input.set, self.set.active(), &x);
-            self.system.set_friction_loads(input.set, &self.friction.c);
-            let (values, rhs) = (self.system.values(), self.system.rhs());
+            self.linear
+                .system
+                .set_friction_loads(input.set, &self.friction.c);
+            let (values, rhs) = (self.linear.system.values(), self.linear.system.rhs());
             let target = Target {
                 at: input.at,
                 set: input.set,
@@ -534,9 +534,9 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
                 rhs,
                 friction: (&self.friction.c, &friction_ref),
             };
-            omega = refine_expanded(target, self.chol, (&system, &reference), &mut x)?;
+            omega = refine_expanded(target, self.linear.chol, &system, &reference, &mut x)?;
         }
-        self.timings.solve += t0.elapsed().as_secs_f64();
+        self.books.timings.solve += t0.elapsed().as_secs_f64();
         check_finite(self.input.at, &x, context)?;
         Ok((x, omega))
     }
@@ -552,7 +552,8 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
 fn interface_solve(
     set: &Constraints<'_>,
     state: &mut CondensedState,
-    (active, relative): (&[bool], &[usize]),
+    active: &[bool],
+    relative: &[usize],
     friction: &mut [f64],
 ) -> Result<(Vec<f64>, bool)> {
     let sys = &mut state.system;
@@ -568,9 +569,9 @@ fn interface_solve(
     let y = sys.gather(&state.x1);
     let slipping = set.slipping(active);
     if !slipping.is_empty() {
-        let (coupling, loads) = slip_coupling(set, sys, (&state.x1, friction), &slipping);
+        let (coupling, loads) = slip_coupling(set, sys, &state.x1, friction, &slipping);
         let mut g = g.clone();
-        add_friction_loads(set, sys, (&loads, &state.friction_ref), &mut g);
+        add_friction_loads(set, sys, &loads, &state.friction_ref, &mut g);
         if let Some(ui) = sys.solve_with(&y, &g, &coupling)? {
             for &k in &slipping {
                 let value = |i: usize| sys.position(i).map_or(state.x1[i], |p| ui[p]);
@@ -579,7 +580,7 @@ fn interface_solve(
             return Ok((ui, true));
         }
     }
-    add_friction_loads(set, sys, (friction, &state.friction_ref), &mut g);
+    add_friction_loads(set, sys, friction, &state.friction_ref, &mut g);
     Ok((sys.solve(&y, &g)?, slipping.is_empty()))
 }
 
@@ -588,7 +589,8 @@ fn interface_solve(
 fn add_friction_loads(
     set: &Constraints<'_>,
     sys: &Condensed,
-    (c, c_ref): (&[f64], &[f64]),
+    c: &[f64],
+    c_ref: &[f64],
     g: &mut [f64],
 ) {
     set.add_friction_loads(c, c_ref, |i, v| {
@@ -609,7 +611,8 @@ fn add_friction_loads(
 fn slip_coupling(
     set: &Constraints<'_>,
     sys: &Condensed,
-    (x1, c): (&[f64], &[f64]),
+    x1: &[f64],
+    c: &[f64],
     slipping: &[usize],
 ) -> (LowRank, Vec<f64>) {
     let mut change = LowRank::default();
@@ -667,7 +670,8 @@ pub(crate) struct Target<'t, 's> {
 pub(crate) fn expand(
     target: Target<'_, '_>,
     chol: &Cholesky,
-    (sys, reference): (&Condensed, &[bool]),
+    sys: &Condensed,
+    reference: &[bool],
     x1: Vec<f64>,
     ui: Vec<f64>,
 ) -> Result<(Vec<f64>, f64)> {
@@ -678,7 +682,7 @@ pub(crate) fn expand(
     chol.solve(&mut x)?;
     x.iter_mut().zip(&x1).for_each(|(a, b)| *a += b);
     drop(x1);
-    let omega = refine_expanded(target, chol, (sys, reference), &mut x)?;
+    let omega = refine_expanded(target, chol, sys, reference, &mut x)?;
     Ok((x, omega))
 }
 
@@ -689,7 +693,8 @@ pub(crate) fn expand(
 pub(crate) fn refine_expanded(
     target: Target<'_, '_>,
     chol: &Cholesky,
-    (sys, reference): (&Condensed, &[bool]),
+    sys: &Condensed,
+    reference: &[bool],
     x: &mut [f64],
 ) -> Result<f64> {
     let changes = Changes::of(&target, reference);
@@ -797,6 +802,7 @@ mod tests {
     use crate::contact::InversionTest;
     use crate::model::{Component, Problem};
     use crate::solve::fixtures::{assembled, contact_set, two_blocks};
+    use crate::solve::report::{SolveInfo, Timings};
     use crate::solve::session::{Session, Settings, Wanted, factorisation};
 
     /// Solves `p` with the active set `active` held fixed: one loop
@@ -823,7 +829,7 @@ mod tests {
             test: InversionTest::Linearised,
             ..Default::default()
         };
-        let set = contact_set(p, (contact.strip(), dofs), &prescribed, &options);
+        let set = contact_set(p, contact.strip(), dofs, &prescribed, &options);
         let set = Constraints::new(set, Default::default(), &prescribed);
         let interface = set.interface_unknowns();
         let want = Wanted {
@@ -831,28 +837,22 @@ mod tests {
             zeros: &[],
         };
         let (mut timings, mut info) = (Timings::default(), SolveInfo::default());
-        let structure = (mesh, &*dofs, &*pattern);
-        let chol = factorisation(
-            analysis,
-            structure,
-            Settings::default(),
-            want,
-            &mut timings,
-            &mut info,
-        )
-        .unwrap();
+        let at = Structure {
+            mesh,
+            dofs,
+            pattern,
+        };
+        let mut books = Bookkeeping::new(&mut timings, &mut info);
+        let chol = factorisation(analysis, at, Settings::default(), want, &mut books).unwrap();
         let input = LoopInput {
-            at: Structure {
-                mesh,
-                dofs,
-                pattern,
-            },
+            at,
             elements: &elements,
             set: &set,
             interface: condense.then(|| interface.clone()),
             options,
         };
-        let mut lp = ActiveSetLoop::new(input, (chol, system), (&mut timings, &mut info), None);
+        let linear = SystemAndFactor { chol, system };
+        let mut lp = ActiveSetLoop::new(input, linear, books, None);
         // The set switched to `active` (when given) is recorded as the
         // verdict of an iteration, as the loop would.
         match active {

@@ -682,6 +682,7 @@ mod tests {
     fn fixture_condensed() -> Condensed {
         use crate::contact::ContactOptions;
         use crate::solve::fixtures::{assembled, contact_set, two_blocks};
+        use crate::solve::linear::{Bookkeeping, Structure};
         use crate::solve::report::{SolveInfo, Timings};
         use crate::solve::session::{Session, Settings, Wanted, factorisation};
         let p = two_blocks(4, 4);
@@ -697,7 +698,8 @@ mod tests {
         } = &mut session;
         let set = contact_set(
             &p,
-            (contact.strip(), dofs),
+            contact.strip(),
+            dofs,
             &prescribed,
             &ContactOptions::default(),
         );
@@ -712,15 +714,13 @@ mod tests {
             zeros: &[],
         };
         let (mut timings, mut info) = (Timings::default(), SolveInfo::default());
-        let chol = factorisation(
-            analysis,
-            (mesh, &*dofs, &*pattern),
-            Settings::default(),
-            want,
-            &mut timings,
-            &mut info,
-        )
-        .unwrap();
+        let at = Structure {
+            mesh,
+            dofs,
+            pattern,
+        };
+        let mut books = Bookkeeping::new(&mut timings, &mut info);
+        let chol = factorisation(analysis, at, Settings::default(), want, &mut books).unwrap();
         chol.factorize(pattern, system.values()).unwrap();
         Condensed::new(chol, interface).unwrap()
     }

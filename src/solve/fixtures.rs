@@ -67,14 +67,15 @@ pub(crate) fn assembled(p: &Problem) -> (Session, Vec<f64>) {
         0,
         mesh,
         prescribed_dof,
-        (p.contact_pairs(), p.contact_weighting()),
+        p.contact_pairs(),
+        p.contact_weighting(),
     )
     .unwrap();
     let elements = p.elements().unwrap();
     let prescribed = p.prescribed_vector().unwrap();
     let f_ext = p.load_vector().unwrap();
     session
-        .assemble_body(&elements, (&f_ext, &prescribed))
+        .assemble_body(&elements, &f_ext, &prescribed)
         .unwrap();
     (session, prescribed)
 }
@@ -83,7 +84,8 @@ pub(crate) fn assembled(p: &Problem) -> (Session, Vec<f64>) {
 /// E_c that of body 1.
 pub(crate) fn contact_set<'a>(
     p: &'a Problem,
-    (contact, dofs): (&'a [ContactElement], &DofMap),
+    contact: &'a [ContactElement],
+    dofs: &DofMap,
     prescribed: &[f64],
     options: &ContactOptions,
 ) -> ContactSet<'a> {

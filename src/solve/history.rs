@@ -722,10 +722,11 @@ impl History {
         *holds = Holds::Nothing;
         let run = ActiveSetLoop::resume(
             loop_input,
-            (chol, system),
-            (timings, &mut info),
+            super::linear::SystemAndFactor { chol, system },
+            super::linear::Bookkeeping::new(timings, &mut info),
             condensed,
-            start,
+            start.0,
+            start.1,
         )
         .run_to_interface();
         info.condition_estimate = chol.condition_estimate();
@@ -890,7 +891,7 @@ impl History {
             friction: (&pending.friction, &[]),
         };
         let state = (&k1.condensed().system, &k1.condensed().reference[..]);
-        let (mut x, mut omega) = expand(target, chol, state, x1, pending.ui.clone())?;
+        let (mut x, mut omega) = expand(target, chol, state.0, state.1, x1, pending.ui.clone())?;
         let context = format!(" (load step at factor {t:?})");
         if omega.is_nan() || omega > RECOVERED || x.iter().any(|v| !v.is_finite()) {
             // K₁'s factor is too poor an inverse of the step's matrix for
@@ -1106,7 +1107,7 @@ fn assemble_bodies(
 ) -> Result<Vec<f64>> {
     session.holds = Holds::Nothing;
     let t0 = Instant::now();
-    let softened = session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
+    let softened = session.assemble_body(&input.elements, input.f_ext, input.prescribed)?;
     timings.assembly += t0.elapsed().as_secs_f64();
     super::softening_warning(input.elements.mesh(), softened, input.lambda, warnings);
     Ok(session.system.rhs().to_vec())
@@ -1133,11 +1134,10 @@ fn solve_k1<'a>(
     let mut info = SolveInfo::default();
     let chol = factorisation(
         analysis,
-        (at.mesh, at.dofs, at.pattern),
+        at,
         input.settings,
         want,
-        timings,
-        &mut info,
+        &mut super::linear::Bookkeeping::new(timings, &mut info),
     )?;
     let t0 = Instant::now();
     system.set_contact(reference, set, at.pattern);
@@ -1150,7 +1150,14 @@ fn solve_k1<'a>(
         acc
     };
     let context = " (the first load step)";
-    let x = factor_and_solve(at, chol, system, &energy, true, context, timings, &mut info)?;
+    let x = factor_and_solve(
+        at,
+        &mut super::linear::SystemAndFactor { chol, system },
+        &energy,
+        true,
+        context,
+        &mut super::linear::Bookkeeping::new(timings, &mut info),
+    )?;
     info.relative_residual = system.relative_residual(at.pattern, &x);
     info.condition_estimate = chol.condition_estimate();
     finite_statistics(&info)?;
@@ -1424,7 +1431,7 @@ fn solved_whole(
         last: &[],
         zeros: &[],
     };
-    let mut chol = analyse((at.mesh, at.dofs, at.pattern), settings, whole)?;
+    let mut chol = analyse(at, settings, whole)?;
     // Beside the second factor, the solve's vectors, as for any solve.
     let need = memory::solve_bytes(at.mesh.nodes().len() * 2, 0);
     preflight(need, "the load step's solve")?;

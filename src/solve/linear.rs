@@ -28,24 +28,51 @@ pub(crate) struct Structure<'a> {
 /// global vector r: tells a free rigid mode from a restrained one.
 pub(crate) type Energy<'e> = &'e dyn Fn(&[f64]) -> (f64, f64);
 
-/// Factorises `system`'s matrix with `chol` (whose analysis fits its
+/// The session's assembled system with the factor its matrix is
+/// factorised into, borrowed together: a solve updates the one and
+/// refactorises the other, and the factor's analysis fits the system's
+/// pattern.
+pub(crate) struct SystemAndFactor<'a> {
+    /// The factor (its symbolic analysis made for the system's pattern).
+    pub chol: &'a mut Cholesky,
+    /// The assembled system (matrix values and right-hand side).
+    pub system: &'a mut AssembledSystem,
+}
+
+/// Where a solve's bookkeeping goes: the time of each phase and the
+/// statistics of the call, which every factorisation and solve adds to.
+pub(crate) struct Bookkeeping<'b> {
+    /// The time of each phase.
+    pub timings: &'b mut Timings,
+    /// The statistics of the call.
+    pub info: &'b mut SolveInfo,
+}
+
+impl<'b> Bookkeeping<'b> {
+    /// Bookkeeping into the caller's `timings` and `info`, which it reads
+    /// once the solve is done.
+    pub fn new(timings: &'b mut Timings, info: &'b mut SolveInfo) -> Bookkeeping<'b> {
+        Bookkeeping { timings, info }
+    }
+}
+
+/// Factorises `linear`'s system with its factor (whose analysis fits its
 /// pattern) and solves it; refines the solution when `refined`. Returns
-/// the unknowns, all finite. `context` ends every error message.
-#[allow(clippy::too_many_arguments)]
+/// the unknowns, all finite. `context` ends every error message; the time
+/// and the factorisation go to `books`.
 pub(crate) fn factor_and_solve(
     at: Structure<'_>,
-    chol: &mut Cholesky,
-    system: &AssembledSystem,
+    linear: &mut SystemAndFactor<'_>,
     energy: Energy<'_>,
     refined: bool,
     context: &str,
-    timings: &mut Timings,
-    info: &mut SolveInfo,
+    books: &mut Bookkeeping<'_>,
 ) -> Result<Vec<f64>> {
+    let (chol, system) = (&mut *linear.chol, &*linear.system);
     let t0 = Instant::now();
     let fact = chol.factorize(at.pattern, system.values());
-    timings.factorization += t0.elapsed().as_secs_f64();
-    info.factorizations += 1;
+    books.timings.factorization += t0.elapsed().as_secs_f64();
+    books.info.factorizations += 1;
     if let Err(e) = fact {
         accept_or_explain(at, chol, e, energy, context)?;
     }
@@ -61,7 +88,7 @@ pub(crate) fn factor_and_solve(
             &mut |r| chol.solve(r),
         )?;
     }
-    timings.solve += t0.elapsed().as_secs_f64();
+    books.timings.solve += t0.elapsed().as_secs_f64();
     check_finite(at, &x, context)?;
     Ok(x)
 }

@@ -24,7 +24,7 @@ pub mod system;
 use active_set::{ActiveSetLoop, LoopInput, body_energy};
 use condensed::Condensed;
 use diagnostics::conditioning_warning;
-use linear::{Structure, factor_and_solve};
+use linear::{Bookkeeping, Structure, SystemAndFactor, factor_and_solve};
 use report::{ContactReport, SolveInfo, Timings};
 use session::{Session, Settings, Wanted, factorisation};
 
@@ -135,7 +135,7 @@ pub(crate) fn prepare(
     session.holds = session::Holds::Nothing;
     let mesh = input.elements.mesh();
     let t0 = std::time::Instant::now();
-    let softened = session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
+    let softened = session.assemble_body(&input.elements, input.f_ext, input.prescribed)?;
     timings.assembly += t0.elapsed().as_secs_f64();
     let mut warnings = Vec::new();
     softening_warning(mesh, softened, input.lambda, &mut warnings);
@@ -171,7 +171,7 @@ pub(crate) fn restore(
     options: Option<&ContactOptions>,
     (log, friction): (&[Vec<usize>], &[f64]),
 ) -> Result<()> {
-    session.assemble_body(&input.elements, (input.f_ext, input.prescribed))?;
+    session.assemble_body(&input.elements, input.f_ext, input.prescribed)?;
     if let Some(options) = options {
         let Session {
             dofs,
@@ -258,16 +258,11 @@ fn solve_plain(
         dofs,
         pattern,
     };
-    let chol = factorisation(
-        analysis,
-        (mesh, dofs, pattern),
-        input.settings,
-        want,
-        timings,
-        &mut info,
-    )?;
+    let mut books = Bookkeeping::new(timings, &mut info);
+    let chol = factorisation(analysis, at, input.settings, want, &mut books)?;
     let energy = |r: &[f64]| body_energy(&input.elements, r);
-    let x = factor_and_solve(at, chol, system, &energy, true, "", timings, &mut info)?;
+    let mut linear = SystemAndFactor { chol, system };
+    let x = factor_and_solve(at, &mut linear, &energy, true, "", &mut books)?;
     info.relative_residual = system.relative_residual(pattern, &x);
     info.condition_estimate = chol.condition_estimate();
     info.memory_bytes = session_memory(at, system, chol);
@@ -315,20 +310,13 @@ pub(crate) fn solve_contact(
         last: if condense { &interface } else { &[] },
         zeros: &zeros,
     };
-    let structure = (mesh, &*dofs, &*pattern);
-    let chol = factorisation(
-        analysis,
-        structure,
-        input.settings,
-        want,
-        timings,
-        &mut info,
-    )?;
     let at = Structure {
         mesh,
         dofs,
         pattern,
     };
+    let mut books = Bookkeeping::new(timings, &mut info);
+    let chol = factorisation(analysis, at, input.settings, want, &mut books)?;
     let loop_input = LoopInput {
         at,
         elements: &input.elements,
@@ -337,8 +325,8 @@ pub(crate) fn solve_contact(
         options: *options,
     };
     let flags = start.map(|warm| history::warm_start(&set, warm));
-    let factor = (&mut *chol, &mut *system);
-    let settled = ActiveSetLoop::new(loop_input, factor, (timings, &mut info), flags).run()?;
+    let linear = SystemAndFactor { chol, system };
+    let settled = ActiveSetLoop::new(loop_input, linear, books, flags).run()?;
     info.memory_bytes = session_memory(at, system, chol) + settled.condensed_bytes;
     info.relative_residual = system.relative_residual(pattern, &settled.x);
     info.condition_estimate = chol.condition_estimate();
@@ -396,7 +384,8 @@ pub(crate) fn contact_outcome(
     info: SolveInfo,
     warnings: &mut Vec<String>,
 ) -> Result<ContactOutcome> {
-    let s = settled::settle(set, (active, friction), value, (mesh, pairs), warnings)?;
+    let paired = settled::PairedMesh { mesh, pairs };
+    let s = settled::settle(set, active, friction, value, paired, warnings)?;
     let report = ContactReport {
         iterations: history.len(),
         elements: s.parts,

@@ -8,8 +8,8 @@ use std::time::Instant;
 
 use rayon::prelude::*;
 
+use super::linear::{Bookkeeping, Structure};
 use super::memory;
-use super::report::{SolveInfo, Timings};
 use super::system::{AssembledSystem, SystemMatrix};
 use crate::contact::discretisation::Discretisation;
 use crate::contact::{ContactPair, ContactWeighting};
@@ -109,12 +109,14 @@ pub(crate) enum Holds {
 
 impl Session {
     /// Derives the unknowns (the DOFs of used nodes that `is_prescribed`
-    /// does not fix), B of every pair, the pattern and the slots.
+    /// does not fix), B of every pair under `weighting`, the pattern and
+    /// the slots.
     pub fn new(
         structure: u64,
         mesh: &Mesh,
         is_prescribed: impl Fn(usize) -> bool,
-        (pairs, weighting): (&[ContactPair], ContactWeighting),
+        pairs: &[ContactPair],
+        weighting: ContactWeighting,
     ) -> Result<Session> {
         let n_nodes = mesh.nodes().len();
         let contact = Discretisation::build(mesh, pairs, weighting)?;
@@ -148,19 +150,21 @@ impl Session {
     }
 
     /// Assembles the bodies' part into the system (no contact element in)
-    /// for the global vectors (external forces, prescribed values) `loads`.
-    /// Returns the elements tempering softens.
+    /// for the global vectors of external forces `f_ext` and prescribed
+    /// values `prescribed`. Returns the elements tempering softens.
     pub fn assemble_body(
         &mut self,
         elements: &ElementLoop<'_>,
-        loads: (&[f64], &[f64]),
+        f_ext: &[f64],
+        prescribed: &[f64],
     ) -> Result<Softened> {
         let target = Target {
             dofs: &self.dofs,
             pattern: &self.pattern,
             slots: &self.slots,
         };
-        self.system.assemble_body(elements, target, loads)
+        self.system
+            .assemble_body(elements, target, f_ext, prescribed)
     }
 
     /// The final matrix of the solve of problem revision `revision`.
@@ -187,13 +191,14 @@ fn triangle_slots(mesh: &Mesh, dofs: &DofMap, pattern: &Pattern) -> Vec<Slots> {
     slots
 }
 
-/// A new symbolic analysis of `pattern` as `want` asks with `settings`,
-/// once the memory it takes is checked.
-pub(crate) fn analyse(
-    (mesh, dofs, pattern): (&Mesh, &DofMap, &Pattern),
-    settings: Settings,
-    want: Wanted<'_>,
-) -> Result<Cholesky> {
+/// A new symbolic analysis of `at`'s pattern as `want` asks with
+/// `settings`, once the memory it takes is checked.
+pub(crate) fn analyse(at: Structure<'_>, settings: Settings, want: Wanted<'_>) -> Result<Cholesky> {
+    let Structure {
+        mesh,
+        dofs,
+        pattern,
+    } = at;
     let need = memory::analysis_bytes(pattern.n(), pattern.nnz());
     preflight(need, "the symbolic analysis (ordering)")?;
     // The unknowns' coordinates are only needed here (17 MB at 1M
@@ -213,17 +218,16 @@ pub(crate) fn analyse(
     Cholesky::analyse(pattern, &params)
 }
 
-/// The factorisation of `analysis`, analysed as `want` asks with
+/// The factorisation of `analysis` for `at`, analysed as `want` asks with
 /// `settings`: the existing one while it fits, else a new symbolic
-/// analysis (timed). Fills the factor's sizes into `info`.
-#[allow(clippy::too_many_arguments)]
+/// analysis (timed in `books`). Fills the factor's sizes into `books`'
+/// statistics.
 pub(crate) fn factorisation<'a>(
     analysis: &'a mut Option<Analysis>,
-    (mesh, dofs, pattern): (&Mesh, &DofMap, &Pattern),
+    at: Structure<'_>,
     settings: Settings,
     want: Wanted<'_>,
-    timings: &mut Timings,
-    info: &mut SolveInfo,
+    books: &mut Bookkeeping<'_>,
 ) -> Result<&'a mut Cholesky> {
     let fits = analysis
         .as_ref()
@@ -233,22 +237,22 @@ pub(crate) fn factorisation<'a>(
         let last = want.last;
         // Drop the old factor first: two at once may not fit in memory.
         *analysis = None;
-        let chol = analyse((mesh, dofs, pattern), settings, want)?;
+        let chol = analyse(at, settings, want)?;
         *analysis = Some(Analysis {
             last: last.to_vec(),
             zeros: want.zeros.to_vec(),
             settings,
             chol,
         });
-        timings.analysis += t0.elapsed().as_secs_f64();
+        books.timings.analysis += t0.elapsed().as_secs_f64();
     }
     // What the solve takes besides the factor, now that it holds its
     // memory (with the interface condensed, its dense matrices too).
-    let need = memory::solve_bytes(mesh.nodes().len() * 2, want.last.len());
+    let need = memory::solve_bytes(at.mesh.nodes().len() * 2, want.last.len());
     preflight(need, "the solve's vectors and interface matrices")?;
     let chol = &mut analysis.as_mut().expect("just analysed").chol;
-    info.factor_nnz = chol.factor_nnz();
-    info.factorization_bytes = chol.factorization_bytes();
-    info.split_factorization = chol.is_split();
+    books.info.factor_nnz = chol.factor_nnz();
+    books.info.factorization_bytes = chol.factorization_bytes();
+    books.info.split_factorization = chol.is_split();
     Ok(chol)
 }

@@ -66,13 +66,15 @@ impl AssembledSystem {
         8 * self.values.len()
     }
 
-    /// Assembles the bodies' part anew (no contact part in). Returns the
-    /// elements tempering softens.
+    /// Assembles the bodies' part anew (no contact part in) for the global
+    /// vectors of external forces `f_ext` and prescribed values
+    /// `prescribed`. Returns the elements tempering softens.
     pub fn assemble_body(
         &mut self,
         elements: &ElementLoop<'_>,
         target: Target<'_>,
-        (f_ext, prescribed): (&[f64], &[f64]),
+        f_ext: &[f64],
+        prescribed: &[f64],
     ) -> Result<Softened> {
         self.rhs = vec![0.0; target.dofs.n_free()];
         self.contact.clear();
