@@ -900,6 +900,84 @@ static void a_host_gets_contact_forces_gaps_and_the_contact_mesh_before_a_solve(
   tfem_destroy(m);
 }
 
+/* A block (body 2, tags 5-8) on a block (body 1, tags 1-4, bottom clamped)
+ * across a curved gap: body 2's bottom touches over |x| <= 0.25 and rises
+ * as y = 0.02 (|x| - 0.25)^2 beyond, its top flat, so contact spreads
+ * outwards as it is pressed. Its top is
+ * loaded by the traction (0.18 p, -p), p = 10 (E = 1000, nu = 0.3, plane
+ * strain); nothing holds it sideways but friction, mu = 0.3 on pair (4, 7). */
+static mesh_t S;
+static tfem_model *sheared_on_a_curved_gap(void) {
+  memset(&S, 0, sizeof S);
+  grid(&S, 16, 4, -1.0, -0.5, 2.0, 0.5, 1, 1);
+  int first = S.nn;
+  grid(&S, 16, 4, -1.0, 0.0, 2.0, 0.5, 2, 5);
+  for (int v = first; v < S.nn; ++v) {
+    double x = S.xy[2 * v], y = S.xy[2 * v + 1];
+    double off = fmax(fabs(x) - 0.25, 0.0);
+    S.xy[2 * v + 1] = y + 0.02 * off * off * (1.0 - y / 0.5);
+  }
+  tfem_model *m = model_of(&S, 2, 1000.0, 1.0, TFEM_PLANE_MODE_STRAIN);
+  CHECK(tfem_fix_edges(m, 3, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 3, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_add_traction(m, 8, 1.8, -10.0) == TFEM_STATUS_OK);
+  CHECK(tfem_add_contact_pair(m, 4, 7, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_set_friction(m, 0, 0.3) == TFEM_STATUS_OK);
+  return m;
+}
+
+/* The resultant contact force on body 2 (nodes from `first` on). */
+static void body_2_contact_force(tfem_model *m, int first, double f[2]) {
+  static double c[2 * 4096];
+  f[0] = f[1] = NAN;
+  if (tfem_get_contact_forces(m, c, 2 * (size_t)S.nn) != TFEM_STATUS_OK) return;
+  f[0] = f[1] = 0.0;
+  for (int v = first; v < S.nn; ++v) {
+    f[0] += c[2 * v];
+    f[1] += c[2 * v + 1];
+  }
+}
+
+/* Found by a user loading a press through the C API: a body held sideways
+ * by friction alone, pressed and sheared together (Q/P = 0.18 < mu), was
+ * SINGULAR ("not restrained") in one solve, since elements closing during
+ * a step carried no shear. Contact that forms under shear now sticks where
+ * it closes (docs/method.md §6.15): the solve carries Q, and one load step
+ * and five give one answer. */
+static void a_body_held_sideways_by_friction_alone_is_pressed_and_sheared_in_one_solve(void) {
+  int first = 17 * 5;
+  tfem_model *m = sheared_on_a_curved_gap();
+  tfem_status st = tfem_solve_contact(m, NULL, NULL);
+  if (st != TFEM_STATUS_OK) {
+    char msg[512];
+    tfem_last_error(m, msg, sizeof msg);
+    printf("  %s\n", msg);
+  }
+  CHECK(st == TFEM_STATUS_OK);
+  double f[2];
+  body_2_contact_force(m, first, f);
+  /* Equilibrium: the contact carries the load on the 2-long top. */
+  CHECK(fabs(f[0] + 3.6) <= 1e-6 * 20.0);
+  CHECK(fabs(f[1] - 20.0) <= 1e-6 * 20.0);
+  double one[2 * 4096], five[2 * 4096];
+  tfem_model *s1 = sheared_on_a_curved_gap(), *s5 = sheared_on_a_curved_gap();
+  CHECK(tfem_step(s1, 1.0, NULL, NULL) == TFEM_STATUS_OK);
+  for (int k = 1; k <= 5; ++k) CHECK(tfem_step(s5, k / 5.0, NULL, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_get_contact_nodal_tractions(s1, one, 2 * (size_t)S.nn) == TFEM_STATUS_OK);
+  CHECK(tfem_get_contact_nodal_tractions(s5, five, 2 * (size_t)S.nn) == TFEM_STATUS_OK);
+  double diff = 0, peak = 0;
+  for (int v = 0; v < S.nn; ++v) {
+    diff = fmax(diff, fabs(one[2 * v + 1] - five[2 * v + 1]));
+    peak = fmax(peak, fabs(one[2 * v]));
+  }
+  CHECK(all_finite(one, 2 * S.nn) && peak > 0.0);
+  /* Measured 2.5e-6 of the peak pressure. */
+  CHECK(diff <= 1e-3 * 0.3 * peak);
+  tfem_destroy(m);
+  tfem_destroy(s1);
+  tfem_destroy(s5);
+}
+
 static void a_load_history_steps_reverts_and_restarts_bit_for_bit(void) {
   tfem_model *m = two_blocks();
   tfem_contact_report rep;
@@ -2874,6 +2952,7 @@ int main(int argc, char **argv) {
   fixing_a_gmsh_group_of_every_curve_fixes_the_whole_boundary();
   a_gmsh_physical_point_group_is_named_in_a_warning();
   a_rigid_punchs_nominal_modulus_does_not_set_the_penalty();
+  a_body_held_sideways_by_friction_alone_is_pressed_and_sheared_in_one_solve();
   a_rigid_body_modelled_by_a_huge_modulus_has_its_reactions_warned_about();
   nothing_to_solve_is_said_in_words();
   a_warning_of_any_length_is_read_whole_by_its_size();

@@ -1,13 +1,24 @@
 #!/usr/bin/env python3
 """The shape of tfem's library code, as the restructuring notes report it.
 
-    python3 scripts/code_shape.py [SRC_DIR]     (default: src)
+    python3 scripts/code_shape.py [--list] [SRC_DIR]     (default: src)
 
 Prints the lines of the library without the verification harness
 (src/studies), the functions longer than 80 lines, those that take tuple
-parameters or seven parameters or more, and the public methods of `Model`.
+parameters (a tuple pattern such as `(a, b): (A, B)`) or seven parameters or
+more (a tuple pattern counting as the names it binds), and the public
+methods of `Model`. With --list, also prints each function with tuple
+parameters as `path:line name: <its tuple parameters>`.
+
 Functions are found by their `fn` line and their body by brace matching
-(strings and comments are skipped), which is enough for rustfmt'd code.
+(strings and comments are skipped), which is enough for rustfmt'd code: the
+body is the first `{` outside parentheses and brackets after the parameter
+list, so a `;` in a return type such as `-> Vec<[usize; 3]>` does not make
+the fn a declaration, and the `->` of an `impl Fn(..) -> T` parameter does
+not close a bracket. Test code is left out of the function counts: the
+items annotated `#[cfg(test)]` (to the end of their braces, or to `;`), and
+the files of modules declared `#[cfg(test)] mod name;`. The line count is of
+every file, tests included.
 """
 
 import re
@@ -55,14 +66,79 @@ def strip_code(text):
 
 
 FN = re.compile(r"\bfn\s+([A-Za-z_][A-Za-z0-9_]*)")
+CFG_TEST = re.compile(r"#\s*\[\s*cfg\s*\(\s*test\s*\)\s*\]")
+INNER_CFG_TEST = re.compile(r"#\s*!\s*\[\s*cfg\s*\(\s*test\s*\)\s*\]")
+
+
+def match_brace(code, b):
+    """The index of the '}' matching the '{' at b (len(code) if none)."""
+    depth, e = 0, b
+    while e < len(code):
+        if code[e] == "{":
+            depth += 1
+        elif code[e] == "}":
+            depth -= 1
+            if depth == 0:
+                return e
+        e += 1
+    return e
+
+
+def body_or_end(code, i):
+    """From i, the first '{' or ';' outside parentheses and brackets: its
+    index and which it is (len(code), None if neither)."""
+    depth = 0
+    while i < len(code):
+        c = code[i]
+        if c in "([":
+            depth += 1
+        elif c in ")]":
+            depth -= 1
+        elif depth <= 0 and c in "{;":
+            return i, c
+        i += 1
+    return i, None
+
+
+def test_spans(code):
+    """(start, end) offsets of the items annotated #[cfg(test)], and the
+    names of the modules declared `#[cfg(test)] mod name;`."""
+    spans, mods = [], []
+    for m in CFG_TEST.finditer(code):
+        i = m.end()
+        # Further attributes between this one and the item.
+        while True:
+            while i < len(code) and code[i].isspace():
+                i += 1
+            if not code.startswith("#", i):
+                break
+            j = code.find("[", i)
+            depth = 0
+            while j < len(code):
+                depth += {"[": 1, "]": -1}.get(code[j], 0)
+                j += 1
+                if depth == 0:
+                    break
+            i = j
+        k, c = body_or_end(code, i)
+        end = match_brace(code, k) if c == "{" else k
+        spans.append((m.start(), end))
+        decl = re.match(r"(pub(\([^)]*\))?\s+)?mod\s+(\w+)\s*;", code[i : end + 1])
+        if decl:
+            mods.append(decl.group(3))
+    return spans, mods
 
 
 def functions(path):
-    """(name, first line, body lines, parameter text) of every fn with a body."""
+    """(name, first line, body lines, parameter text) of every fn with a
+    body, those inside items annotated #[cfg(test)] left out."""
     text = path.read_text()
     code = strip_code(text)
+    spans, _ = test_spans(code)
     found = []
     for m in FN.finditer(code):
+        if any(a <= m.start() <= b for a, b in spans):
+            continue
         start = m.end()
         # The parameter list: from the first '(' to its match.
         p = code.find("(", start)
@@ -75,34 +151,45 @@ def functions(path):
             if depth == 0:
                 break
         params = code[p + 1 : q - 1]
-        # The body: the next '{' unless a ';' comes first (a declaration).
-        b = q
-        while b < len(code) and code[b] not in "{;":
-            b += 1
-        if b >= len(code) or code[b] == ";":
+        # The body: the next '{' outside parentheses and brackets, unless a
+        # ';' comes first (a declaration); `[usize; 3]` is inside brackets.
+        b, c = body_or_end(code, q)
+        if c != "{":
             continue
-        depth, e = 0, b
-        while e < len(code):
-            if code[e] == "{":
-                depth += 1
-            elif code[e] == "}":
-                depth -= 1
-                if depth == 0:
-                    break
-            e += 1
+        e = match_brace(code, b)
         first = code.count("\n", 0, m.start()) + 1
         last = code.count("\n", 0, e) + 1
         found.append((m.group(1), first, last - first + 1, params))
     return found
 
 
+def test_files(files):
+    """The files of modules declared `#[cfg(test)] mod name;` (or under
+    such a module's directory), and of files with an inner #![cfg(test)]."""
+    out = set()
+    for p in files:
+        code = strip_code(p.read_text())
+        if INNER_CFG_TEST.search(code):
+            out.add(p)
+        _, mods = test_spans(code)
+        # A mod.rs / lib.rs / main.rs declares its modules beside it, any
+        # other file in the directory named after it.
+        base = p.parent if p.name in ("mod.rs", "lib.rs", "main.rs") else p.with_suffix("")
+        for name in mods:
+            for q in files:
+                if q == base / f"{name}.rs" or (base / name) in q.parents:
+                    out.add(q)
+    return out
+
+
 def split_params(params):
     """Top-level comma-separated parameters."""
     out, depth, cur = [], 0, ""
-    for ch in params:
+    for i, ch in enumerate(params):
         if ch in "([{<":
             depth += 1
-        elif ch in ")]}>":
+        elif ch in ")]}" or (ch == ">" and params[i - 1 : i] != "-"):
+            # The '>' of a '->' (as in `impl Fn(usize) -> f64`) closes nothing.
             depth -= 1
         if ch == "," and depth == 0:
             out.append(cur.strip())
@@ -115,24 +202,25 @@ def split_params(params):
 
 
 def main():
-    src = Path(sys.argv[1] if len(sys.argv) > 1 else "src")
+    args = sys.argv[1:]
+    listing = "--list" in args
+    args = [a for a in args if a != "--list"]
+    src = Path(args[0] if args else "src")
     files = sorted(p for p in src.rglob("*.rs") if "studies" not in p.parts)
     lines = sum(len(p.read_text().splitlines()) for p in files)
+    tests = test_files(files)
     long_fns, tuples, many = [], [], []
     for p in files:
-        text = p.read_text()
-        test_at = text.find("#[cfg(test)]")
-        test_line = text.count("\n", 0, test_at) + 1 if test_at >= 0 else None
+        if p in tests:
+            continue
         for name, first, length, params in functions(p):
-            if test_line is not None and first > test_line:
-                continue
             where = f"{p}:{first} {name}"
             if length > 80:
                 long_fns.append((length, where))
             ps = split_params(params)
             packed = [q for q in ps if re.match(r"\(", q)]
             if packed:
-                tuples.append(where)
+                tuples.append((where, "; ".join(" ".join(q.split()) for q in packed)))
             # A tuple pattern counts as the parameters it packs.
             count = len(ps) + sum(len(split_params(q.split(":")[0].strip()[1:-1])) - 1 for q in packed)
             if count >= 7:
@@ -155,6 +243,9 @@ def main():
     for length, where in sorted(long_fns, reverse=True):
         print(f"  {length:4d}  {where}")
     print(f"functions with tuple parameters: {len(tuples)}")
+    if listing:
+        for where, packed in tuples:
+            print(f"  {where}: {packed}")
     print(f"functions with 7 or more parameters (a tuple's members counted): {len(many)}")
     for where in many:
         print(f"  {where}")

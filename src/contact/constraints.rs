@@ -216,7 +216,7 @@ impl<'a> Constraints<'a> {
         let ns = self.strip.parts();
         let mut verdict = self
             .strip
-            .verdict((&current[..ns], c), |k| self.element_values(k, &value))?;
+            .verdict(&current[..ns], c, |k| self.element_values(k, &value))?;
         verdict
             .flags
             .extend(self.mortar.verdict(&current[ns..], &value));

@@ -23,7 +23,7 @@
 use std::collections::HashMap;
 
 use super::mesh::{Nodes, Side, check_facing, checked_triangles, strip};
-use super::set::{ActiveSet, ContactSet, element_laws, softer};
+use super::set::{ActiveSet, ContactSet, Owners, element_laws, softer};
 use super::{ContactElement, ContactOptions};
 use crate::error::{Error, Result, Status, ensure_finite, out_of_memory, reserve_more, reserved};
 use crate::fem::material::Material;
@@ -714,7 +714,11 @@ impl HostContact {
         };
         let laws = element_laws(self.base, &elements, soft, self.size(), &self.options)?;
         let equation = |g: usize| self.equation[g / 2][g % 2];
-        let owners = (self.x.clone(), self.base, elements);
+        let owners = Owners {
+            x: std::borrow::Cow::Owned(self.x.clone()),
+            base: self.base,
+            elements: std::borrow::Cow::Owned(elements),
+        };
         let set = ContactSet::owned(owners, laws, equation, &[], &self.options)?;
         let active = ActiveSet::new(set.initial_active());
         let (mut rows, mut cols, mut entries) = (Vec::new(), Vec::new(), Vec::new());

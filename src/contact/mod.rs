@@ -42,8 +42,8 @@ pub use mesh::{
     pair_bodies, shared_normals,
 };
 pub use set::{
-    ActiveSet, ContactSet, ElementLaw, FrictionOutcome, FrictionState, IterationRecord, Verdict,
-    element_laws, initial_active_set, softer,
+    ActiveSet, ContactSet, ElementLaw, FrictionOutcome, FrictionState, IterationRecord, Owners,
+    SlipLoads, Verdict, element_laws, initial_active_set, softer,
 };
 
 use crate::error::{Error, Result};

@@ -128,6 +128,18 @@ pub struct FrictionState {
     pub at: f64,
 }
 
+/// What a set is made over: its nodes' coordinates and its elements of B,
+/// borrowed from a model's mesh or owned (a host's contact, which copies
+/// its sides' nodes).
+pub struct Owners<'a> {
+    /// The nodes' coordinates.
+    pub x: Cow<'a, [[f64; 2]]>,
+    /// The index base of the nodes and elements in messages.
+    pub base: usize,
+    /// The elements of B.
+    pub elements: Cow<'a, [ContactElement]>,
+}
+
 impl<'a> ContactSet<'a> {
     /// The set of `elements` (B over `nodes`) under `options`, with each
     /// element's law from [`element_laws`]. `equation(g)` numbers the
@@ -142,26 +154,28 @@ impl<'a> ContactSet<'a> {
         prescribed: &[f64],
         options: &ContactOptions,
     ) -> Result<ContactSet<'a>> {
-        let owners = (Cow::Borrowed(nodes.x), nodes.base, Cow::Borrowed(elements));
+        let owners = Owners {
+            x: Cow::Borrowed(nodes.x),
+            base: nodes.base,
+            elements: Cow::Borrowed(elements),
+        };
         Self::build(owners, laws, equation, prescribed, options)
     }
 
-    /// [`ContactSet::new`] owning its nodes' coordinates `x` (messages in
-    /// index base `base`) and its elements.
+    /// [`ContactSet::new`] owning its nodes' coordinates and its elements
+    /// (`owners`).
     pub fn owned(
-        (x, base, elements): (Vec<[f64; 2]>, usize, Vec<ContactElement>),
+        owners: Owners<'static>,
         laws: Vec<ElementLaw>,
         equation: impl Fn(usize) -> Option<usize>,
         prescribed: &[f64],
         options: &ContactOptions,
     ) -> Result<ContactSet<'static>> {
-        let owners = (Cow::Owned(x), base, Cow::Owned(elements));
         ContactSet::build(owners, laws, equation, prescribed, options)
     }
 
-    #[allow(clippy::type_complexity)]
     fn build(
-        (x, base, elements): (Cow<'a, [[f64; 2]]>, usize, Cow<'a, [ContactElement]>),
+        Owners { x, base, elements }: Owners<'a>,
         laws: Vec<ElementLaw>,
         equation: impl Fn(usize) -> Option<usize>,
         prescribed: &[f64],
@@ -509,7 +523,8 @@ impl<'a> ContactSet<'a> {
     /// test and no loads.
     pub fn verdict(
         &self,
-        (current, c): (&[bool], &[f64]),
+        current: &[bool],
+        c: &[f64],
         values: impl Fn(usize) -> [f64; 6],
     ) -> Result<Verdict> {
         let normal = self.inverted(current, &values)?;
@@ -868,6 +883,24 @@ pub struct IterationRecord {
     pub switched_off: usize,
 }
 
+/// The slip tractions' load factors of a frictional loop's next solve, and
+/// whether they moved in this iteration ([`ActiveSet::advance_with`]).
+#[derive(Debug, Clone, Copy)]
+pub struct SlipLoads<'l> {
+    /// The load factors (empty when frictionless).
+    pub loads: &'l [f64],
+    /// Whether they changed since the last solve.
+    pub moved: bool,
+}
+
+impl SlipLoads<'_> {
+    /// No slip loads: a frictionless loop.
+    pub const NONE: SlipLoads<'static> = SlipLoads {
+        loads: &[],
+        moved: false,
+    };
+}
+
 /// The active set of a loop over the elements of B: the current flags,
 /// the set it started from, the sets visited (coming back to one is a
 /// cycle) and the history of the iterations.
@@ -911,24 +944,24 @@ impl ActiveSet {
     /// set is settled (unchanged); else the flags become `next`, unless
     /// they were visited before — a cycle, refused with the history.
     pub fn advance(&mut self, next: Vec<bool>, iteration: usize) -> Result<bool> {
-        self.advance_with(next, (&[], false), iteration)
+        self.advance_with(next, SlipLoads::NONE, iteration)
     }
 
     /// [`ActiveSet::advance`] for a loop whose loads also move (the slip
     /// tractions of a frictional solve, `loads`): settled only when the
-    /// flags and the loads (`loads_moved` false) both stand still. A cycle
+    /// flags and the loads both stand still. A cycle
     /// is a revisit of the same flags with the same loads, to the bit: the
     /// same system solved again.
     pub fn advance_with(
         &mut self,
         next: Vec<bool>,
-        (loads, loads_moved): (&[f64], bool),
+        loads: SlipLoads<'_>,
         iteration: usize,
     ) -> Result<bool> {
-        if !loads.is_empty() {
-            let state = Self::state_key(&next, loads);
+        if !loads.loads.is_empty() {
+            let state = Self::state_key(&next, loads.loads);
             self.history.push(self.record(&next));
-            if next == self.active && !loads_moved {
+            if next == self.active && !loads.moved {
                 return Ok(true);
             }
             if !self.visited.insert(state) {

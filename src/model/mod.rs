@@ -828,7 +828,7 @@ fn keep_matrix(
             .as_ref()
             .and_then(|c| c.state.strip.friction.as_ref())
             .map_or(&[][..], |f| &f.next.loads[..]);
-        if solve::restore(session, input, options, (&s.log, friction)).is_ok() {
+        if solve::restore(session, input, options, &s.log, friction).is_ok() {
             session.holds = crate::solve::session::Holds::Solve(revision);
         }
     }

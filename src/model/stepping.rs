@@ -15,7 +15,7 @@ use super::{Model, Problem, input_of, keep_matrix, session_of, solution_of};
 use crate::contact::ContactOptions;
 use crate::contact::discretisation::Discretisation;
 use crate::error::{Error, Result};
-use crate::solve::history::{History, Key, Pending, StepState, check_load_factor};
+use crate::solve::history::{Along, History, Key, Pending, StepState, check_load_factor};
 use crate::solve::session::Session;
 use crate::solve::{Input, Outcome};
 
@@ -215,7 +215,13 @@ impl Model {
                 .filter(|k| k.contact == contact)
                 .map(|k| &k.state),
         };
-        let stepped = stepping.run(session, &input, start, (t, options), &mut timings);
+        let at = Along {
+            t,
+            revision,
+            options,
+            retry: true,
+        };
+        let stepped = stepping.run(session, &input, start, &at, &mut timings);
         let (outcome, before, warnings) = match stepped {
             Ok(stepped) => stepped,
             Err(e) => {
@@ -246,14 +252,15 @@ impl Model {
             contact,
             state: before,
         };
-        Ok(self.accept_step((solution, solve_warnings), undo))
+        Ok(self.accept_step(solution, solve_warnings, undo))
     }
 
     /// Makes a load step's `solution` the results, the results before it
     /// what [`Model::revert_step`] brings back with `undo`: its report.
     fn accept_step(
         &mut self,
-        (solution, warnings): (Solution, Vec<String>),
+        solution: Solution,
+        warnings: Vec<String>,
         undo: Undo,
     ) -> ContactReport {
         self.solve_warnings = warnings;
@@ -425,15 +432,15 @@ impl Stepping {
         session: &mut Session,
         input: &Input<'_>,
         start: StepStart<'_>,
-        (t, options): (f64, &ContactOptions),
+        at: &Along<'_>,
         timings: &mut Timings,
     ) -> Result<StepResult> {
         let old = self.take();
         let (mut history, replaced, warnings) = match old {
             Some(live) if start.continues => (live.history, None, Vec::new()),
             other => {
-                let at = (start.key, start.revision);
-                match History::begin(session, input, at, start.state, timings) {
+                let (key, revision) = (start.key, start.revision);
+                match History::begin(session, input, key, revision, start.state, timings) {
                     Ok((history, warnings)) => (history, other, warnings),
                     Err(e) => {
                         self.put_back(other, session, input, start.key.stiffness);
@@ -447,7 +454,7 @@ impl Stepping {
         } else {
             history.factorizations()
         };
-        match history.step(session, input, (t, start.revision, options), timings) {
+        match history.step(session, input, at, timings) {
             Ok(mut stepped) => {
                 stepped.outcome.info.factorizations += begun;
                 if let Some(c) = stepped.outcome.contact.as_mut() {

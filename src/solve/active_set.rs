@@ -19,7 +19,7 @@ use super::friction_loads::FrictionLoads;
 use super::linear::{Bookkeeping, Structure, SystemAndFactor, check_finite, factor_and_solve};
 use super::report::IterationRecord;
 use crate::contact::constraints::Constraints;
-use crate::contact::{ActiveSet, ContactOptions, Verdict};
+use crate::contact::{ActiveSet, ContactOptions, SlipLoads, Verdict};
 use crate::error::{Error, Result};
 use crate::fem::element_loop::ElementLoop;
 use crate::linalg::Cholesky;
@@ -103,6 +103,15 @@ pub(crate) struct AtInterface {
     /// The openings of the strip's elements in the first iterate
     /// ([`ActiveSetLoop::predicted`]; empty when frictionless).
     pub predicted: Vec<f64>,
+}
+
+/// A loop that failed: its error, and the condensed state it was resumed
+/// with if it still held it (its factor possibly changed).
+pub(crate) struct LoopFailure {
+    /// Why it failed.
+    pub error: Error,
+    /// The condensed state, given back.
+    pub state: Option<CondensedState>,
 }
 
 /// The current solution of the loop.
@@ -221,22 +230,24 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         } = self.verdict()?;
         let moved = self.friction.advance(friction, next == self.set.active());
         let key = self.friction.state_key(&next).into_owned();
-        self.set.advance_with(next, (&key, moved), iteration)
+        let loads = SlipLoads { loads: &key, moved };
+        self.set.advance_with(next, loads, iteration)
     }
 
     /// Runs the loop like [`ActiveSetLoop::run`], but stops at the
     /// interface when the last iterate is condensed. On error, gives back
     /// the condensed state it was resumed with (its factor possibly
     /// changed), if the loop still held it.
-    pub fn run_to_interface(
-        mut self,
-    ) -> std::result::Result<Outcome, Box<(Error, Option<CondensedState>)>> {
+    pub fn run_to_interface(mut self) -> std::result::Result<Outcome, Box<LoopFailure>> {
         let max_iterations = self.input.options.max_iterations;
         for iteration in 1..=max_iterations {
             let settled = self.solve(iteration).and_then(|()| self.advance(iteration));
             let settled = match settled {
                 Ok(s) => s,
-                Err(e) => return Err(Box::new((e, self.condensed.take()))),
+                Err(error) => {
+                    let state = self.condensed.take();
+                    return Err(Box::new(LoopFailure { error, state }));
+                }
             };
             if settled {
                 return match std::mem::replace(&mut self.iterate, Iterate::None) {
@@ -259,13 +270,14 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
                         self.iterate = other;
                         self.recover()
                             .map(|s| Outcome::Full(Box::new(s)))
-                            .map_err(|e| Box::new((e, None)))
+                            .map_err(|error| Box::new(LoopFailure { error, state: None }))
                     }
                 };
             }
         }
         let e = self.set.not_settled(max_iterations);
-        Err(Box::new((e, self.condensed.take())))
+        let state = self.condensed.take();
+        Err(Box::new(LoopFailure { error: e, state }))
     }
 
     /// Runs the loop (docs/method.md §3): solve with the active elements,

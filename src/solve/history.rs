@@ -32,7 +32,7 @@ use std::sync::atomic::{AtomicU64, Ordering};
 use std::time::Instant;
 
 use super::active_set::{
-    ActiveSetLoop, AtInterface, CondensedState, InterfaceSettled, LoopInput,
+    ActiveSetLoop, AtInterface, CondensedState, InterfaceSettled, LoopFailure, LoopInput,
     Outcome as LoopOutcome, RECOVERED, Settled, Target, body_energy, expand,
 };
 use super::condensed::{Condensed, FactorSnapshot};
@@ -42,9 +42,10 @@ use super::memory;
 use super::report::{SolveInfo, Timings};
 use super::session::{Holds, Session, Settings, Wanted, analyse, factorisation};
 use super::{
-    ContactOutcome, Field, Input, Outcome, Start, constraints, contact_outcome, finite_statistics,
+    Field, Input, Outcome, Start, WarmStart, constraints, contact_outcome, finite_statistics,
 };
 use crate::contact::constraints::Constraints;
+use crate::contact::settled;
 use crate::contact::{ContactOptions, FrictionState};
 use crate::error::{Error, Result, Status, preflight, reserved};
 use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
@@ -255,12 +256,13 @@ impl History {
     pub fn begin(
         session: &mut Session,
         input: &Input<'_>,
-        (key, revision): (Key, u64),
+        key: Key,
+        revision: u64,
         restored: Option<&StepState>,
         timings: &mut Timings,
     ) -> Result<(History, Vec<String>)> {
         let mut warnings = Vec::new();
-        let (k1, sizes) = begin_k1(session, input, (key, revision), timings, &mut warnings)?;
+        let (k1, sizes) = begin_k1(session, input, key, revision, timings, &mut warnings)?;
         let id = HISTORIES.fetch_add(1, Ordering::Relaxed);
         let mut history = History {
             key,
@@ -375,8 +377,7 @@ impl History {
         let (state, loads, loads_apart, first) =
             (self.state(), old.loads, old.loads_apart, old.first);
         let (mut timings, mut warnings) = (Timings::default(), Vec::new());
-        let at = (self.key, loads);
-        let (k1, _) = begin_k1(session, input, at, &mut timings, &mut warnings)?;
+        let (k1, _) = begin_k1(session, input, self.key, loads, &mut timings, &mut warnings)?;
         let Some(mut k1) = k1 else {
             return Err(Error::state(
                 "the load history's interface is no longer condensed",
@@ -409,23 +410,17 @@ impl History {
         &mut self,
         session: &mut Session,
         input: &Input<'_>,
-        (t, revision, options): (f64, u64, &ContactOptions),
+        at: &Along<'_>,
         timings: &mut Timings,
     ) -> Result<Stepped> {
-        check_load_factor(t)?;
+        check_load_factor(at.t)?;
         super::ensure_unknowns(&session.dofs)?;
-        let at = Along {
-            t,
-            revision,
-            options,
+        let stepped = match self.on_path(at.revision) {
+            true => self.sub_steps(session, input, at, timings)?,
+            false => self.step_once(session, input, at, timings)?,
         };
-        let on_path = self.on_path(revision);
-        let stepped = self.step_once(session, input, &at, timings)?;
-        self.stepped_on = Some(revision);
-        match on_path {
-            true => self.sub_steps(session, input, stepped, &at, timings),
-            false => Ok(stepped),
-        }
+        self.stepped_on = Some(at.revision);
+        Ok(stepped)
     }
 
     /// Whether the next step, on the loads of `revision`, starts on the
@@ -437,78 +432,72 @@ impl History {
             || self.frictional > 0 && at == 0.0
     }
 
-    /// Follows a step `stepped` that closed elements open at its start
-    /// (without shear) with sub-steps: back at the step's start, on to
-    /// the factor where the first of them closes, accepted there (they
-    /// stick or slip from there), then on to the step's factor again;
-    /// until a step to `at.t` closes none. Each sub-step is a loop on the
-    /// condensed interface, warm-started. Gives the last one, with the
-    /// state before the whole step and the iterations of all.
+    /// A frictional step to `at.t` in sub-steps: each goes from the
+    /// history's state towards a target (at first the step's end); one
+    /// that closes elements open at its start goes back and stops where
+    /// the first of them closes, and is accepted there (they stick or slip
+    /// from there); one that fails (a body held by nothing yet, a cycle)
+    /// is tried again to half its length; an accepted one short of the end
+    /// is followed by another to the end. Each is a warm-started loop on
+    /// the condensed interface. Gives the last, with the state before the
+    /// whole step and the iterations of all.
     fn sub_steps(
         &mut self,
         session: &mut Session,
         input: &Input<'_>,
-        mut stepped: Stepped,
         at: &Along<'_>,
         timings: &mut Timings,
     ) -> Result<Stepped> {
-        let before = stepped.before.clone();
-        let t_first = before.friction.at;
-        let (mut iterations, mut taken) = (0, 0);
-        let cap = MAX_SUB_STEPS.max(4 * self.frictional);
-        while taken < cap && !stepped.ended {
-            let start = &stepped.before.friction;
-            if start.at == at.t {
-                break;
-            }
-            let Some(s) = first_closure(session, start, &stepped.outcome) else {
-                break;
+        let before = self.state();
+        let mut plan = SubSteps::new(before.friction.at, at.t, self.frictional);
+        let mut last_resort = false;
+        loop {
+            let start = self.friction.at;
+            let target = Along {
+                t: plan.target,
+                retry: last_resort,
+                ..*at
             };
-            // Just past the closing, by the least sub-step: at the closing
-            // itself the element sits on the inversion test's threshold,
-            // and the loop cycles on it. Closings nearer together are
-            // taken at once.
-            let past = (SUB_STEP_LEAST * (at.t - t_first) / (at.t - start.at)).abs();
-            if s + past >= 1.0 {
-                break;
-            }
-            let t_c = start.at + (s + past) * (at.t - start.at);
-            let start = stepped.before;
-            iterations += iterations_of(&stepped.outcome);
-            let result = self.set_state(&start).and_then(|()| {
-                let sub = self.step_once(session, input, &Along { t: t_c, ..*at }, timings)?;
-                iterations += iterations_of(&sub.outcome);
-                if sub.ended {
-                    return Err(Error::new(
-                        Status::NotConverged,
-                        format!(
-                            "the load step's sub-step to factor {t_c:?}, where contact forms \
-                             under shear, needed a factorisation of its own (its condensed \
-                             interface was singular): split the step"
-                        ),
-                    ));
-                }
-                self.step_once(session, input, at, timings)
-            });
-            stepped = match result {
-                Ok(next) => next,
+            let stepped = match self.step_once(session, input, &target, timings) {
+                Ok(stepped) => stepped,
                 Err(e) => {
+                    // Halved, or, once halving is done, tried from the
+                    // initial set as a step of its own would be.
+                    let halved = !last_resort && plan.halve(start, &e);
+                    last_resort = !halved && !last_resort && e.status() != Status::NumericalFailure;
+                    let again = halved || last_resort;
+                    if again && (self.intact(session) || self.rebuild(session, input).is_ok()) {
+                        continue;
+                    }
                     self.back_to(&before)?;
                     return Err(e);
                 }
             };
-            taken += 1;
+            last_resort = false;
+            plan.iterations += iterations_of(&stepped.outcome);
+            let closing = closing_in(session, &stepped.before.friction, &stepped.outcome);
+            if let Some(target) = plan.stop_at(start, closing) {
+                // Back to the start, and on to where the first closes.
+                self.set_state(&stepped.before)?;
+                plan.target = target;
+                continue;
+            }
+            if stepped.ended && plan.target != at.t {
+                self.back_to(&before)?;
+                return Err(Error::new(
+                    Status::NotConverged,
+                    format!(
+                        "the load step's sub-step to factor {:?} needed a factorisation of its \
+                         own (its condensed interface was singular): split the step",
+                        plan.target
+                    ),
+                ));
+            }
+            if stepped.ended || plan.target == at.t {
+                return Ok(plan.finish(stepped, before));
+            }
+            (plan.target, plan.halvings) = (at.t, 0);
         }
-        if let Some(c) = stepped.outcome.contact.as_mut() {
-            c.report.iterations += iterations;
-        }
-        if taken == cap {
-            stepped.outcome.warnings.push(format!(
-                "contact formed at more than {cap} points along this load step: the elements                  closing after those carry no shear until the step's end; split the step"
-            ));
-        }
-        stepped.before = before;
-        Ok(stepped)
     }
 
     /// Back at `before` after a failed step: its state restored, or, where
@@ -550,15 +539,13 @@ impl History {
         at: &Along<'_>,
         timings: &mut Timings,
     ) -> Result<Stepped> {
-        let (t, revision, options) = (at.t, at.revision, at.options);
         if self.k1.is_none() {
-            return self.step_afresh(session, input, (t, options), timings);
+            return self.step_afresh(session, input, at, timings);
         }
-        let old_loads = self.loads_of(revision, session, input, timings)?;
-        let at = (t, options);
+        let old_loads = self.loads_of(at.revision, session, input, timings)?;
         let mut stepped = self.step_condensed(session, input, at, false, timings);
         let retry = match &stepped {
-            Err(e) => matches!(e.status(), Status::Singular | Status::NotConverged),
+            Err(e) => at.retry && matches!(e.status(), Status::Singular | Status::NotConverged),
             Ok(_) => false,
         };
         if retry {
@@ -651,20 +638,23 @@ impl History {
         &mut self,
         session: &mut Session,
         input: &Input<'_>,
-        (t, options): (f64, &ContactOptions),
+        at: &Along<'_>,
         timings: &mut Timings,
     ) -> Result<Stepped> {
         let before = self.state();
-        let (prescribed, f_ext) = (scaled(input.prescribed, t), scaled(input.f_ext, t));
+        let (prescribed, f_ext) = (scaled(input.prescribed, at.t), scaled(input.f_ext, at.t));
         let step_input = Input {
             prescribed: &prescribed,
             f_ext: &f_ext,
             ..*input
         };
-        let (info, warnings) = super::prepare(session, &step_input, timings)?;
-        let start: Start<'_> = (!self.warm.is_empty()).then_some((&self.warm[..], &self.friction));
-        let begun = (info, warnings);
-        let outcome = super::solve_contact(session, &step_input, options, start, begun, timings)?;
+        let begun = super::prepare(session, &step_input, timings)?;
+        let start: Start<'_> = (!self.warm.is_empty()).then_some(WarmStart {
+            flags: &self.warm,
+            friction: &self.friction,
+        });
+        let outcome =
+            super::solve_contact(session, &step_input, at.options, start, begun, timings)?;
         let contact = outcome.contact.as_ref().expect("a contact outcome");
         self.warm = contact.flags.clone();
         if let Some(f) = &contact.state.strip.friction {
@@ -683,12 +673,12 @@ impl History {
         &mut self,
         session: &mut Session,
         input: &Input<'_>,
-        (t, options): (f64, &ContactOptions),
+        at: &Along<'_>,
         from_initial: bool,
         timings: &mut Timings,
     ) -> Result<Stepped> {
         let mesh = input.elements.mesh();
-        let prescribed = scaled(input.prescribed, t);
+        let prescribed = scaled(input.prescribed, at.t);
         let before = self.state();
         let Session {
             dofs,
@@ -700,22 +690,22 @@ impl History {
             ..
         } = &mut *session;
         let anchors = &self.friction.anchors;
-        let set = constraints(input, &prescribed, contact, dofs, options, anchors)?;
+        let set = constraints(input, &prescribed, contact, dofs, at.options, anchors)?;
         let start = self.start(&set, from_initial);
-        let condensed = self.lend(t, &before)?;
+        let condensed = self.lend(at.t, &before)?;
         let chol = &mut analysis.as_mut().expect("the history's factor").chol;
-        let mut info = step_info((dofs, pattern), chol, condensed.system.len());
-        let at = Structure {
+        let mut info = step_info(dofs, pattern, chol, condensed.system.len());
+        let structure = Structure {
             mesh,
             dofs,
             pattern,
         };
         let loop_input = LoopInput {
-            at,
+            at: structure,
             elements: &input.elements,
             set: &set,
             interface: None,
-            options: *options,
+            options: *at.options,
         };
         // The loop may refactorise the session's system (its condensed
         // matrix singular): K₁ is the session's again only if it did not.
@@ -737,7 +727,7 @@ impl History {
             mesh,
             prescribed: &prescribed,
             dofs,
-            at: (self.key, t),
+            at: (self.key, at.t),
         };
         match run {
             Ok(LoopOutcome::Interface(settled)) => {
@@ -752,7 +742,7 @@ impl History {
             // The condensed system was singular: solved whole, K₁ is gone
             // and the history ends with this step.
             Ok(LoopOutcome::Full(settled)) => Ok(Stepped {
-                outcome: on_full_solve(step, (system, pattern), *settled, info)?,
+                outcome: on_full_solve(step, system, pattern, *settled, info)?,
                 before,
                 ended: true,
             }),
@@ -769,19 +759,15 @@ impl History {
                 let loads = set.stick_loads(&initial);
                 (initial, loads)
             }
-            false => warm_start(set, (&self.warm, &self.friction)),
+            false => warm_start(set, &self.warm, &self.friction),
         }
     }
 
     /// The history after a step's loop failed with `e`: back at `before`
     /// with its condensed state if the loop gave it back (else K₁ is lost,
     /// and rebuilt by the caller).
-    fn loop_failed(
-        &mut self,
-        holds: &mut Holds,
-        (e, state): (Error, Option<CondensedState>),
-        before: &StepState,
-    ) -> Error {
+    fn loop_failed(&mut self, holds: &mut Holds, failed: LoopFailure, before: &StepState) -> Error {
+        let LoopFailure { error: e, state } = failed;
         if let Some(mut state) = state {
             state.x1 = Vec::new();
             self.give_back(holds, Box::new(state));
@@ -947,8 +933,14 @@ pub(crate) fn path_start(
         return Ok(None);
     }
     let key = Key::new(0, options);
-    let (mut history, _) = History::begin(session, input, (key, 0), None, timings)?;
-    let stepped = history.step(session, input, (1.0, 0, options), timings)?;
+    let (mut history, _) = History::begin(session, input, key, 0, None, timings)?;
+    let at = Along {
+        t: 1.0,
+        revision: 0,
+        options,
+        retry: true,
+    };
+    let stepped = history.step(session, input, &at, timings)?;
     let factorizations = history.factorizations() + stepped.outcome.info.factorizations;
     Ok(Some((history.state(), factorizations)))
 }
@@ -956,14 +948,112 @@ pub(crate) fn path_start(
 /// Where a step goes: its load factor, the problem revision whose loads
 /// it applies, and its contact options.
 #[derive(Clone, Copy)]
-struct Along<'o> {
+pub(crate) struct Along<'o> {
     /// The load factor.
-    t: f64,
+    pub t: f64,
     /// The problem revision of the loads.
-    revision: u64,
+    pub revision: u64,
     /// The contact options.
-    options: &'o ContactOptions,
+    pub options: &'o ContactOptions,
+    /// Whether a step that leads nowhere from the last step's set (a free
+    /// body, a cycle) is tried again from the initial set of its loads. A
+    /// frictional step's sub-steps are halved first: the initial set's
+    /// first solve says nothing of where elements close.
+    pub retry: bool,
 }
+
+/// The plan of a frictional step's sub-steps ([`History::sub_steps`]).
+struct SubSteps {
+    /// The load factor the step starts from.
+    first: f64,
+    /// The step's end.
+    end: f64,
+    /// Where the next sub-step goes.
+    target: f64,
+    /// Sub-steps that stopped where elements closed.
+    closings: usize,
+    /// How many of those a step takes at most.
+    cap: usize,
+    /// Halvings in a row of a failing sub-step.
+    halvings: usize,
+    /// Active-set iterations of every sub-step.
+    iterations: usize,
+}
+
+impl SubSteps {
+    /// The plan of a step from `first` to `end` of a history with
+    /// `frictional` frictional elements.
+    fn new(first: f64, end: f64, frictional: usize) -> SubSteps {
+        SubSteps {
+            first,
+            end,
+            target: end,
+            closings: 0,
+            cap: MAX_SUB_STEPS.max(4 * frictional),
+            halvings: 0,
+            iterations: 0,
+        }
+    }
+
+    /// Where a sub-step from `start` whose elements closed as `closing`
+    /// says goes back to: just past the first closing, by the least
+    /// sub-step of the whole step (at the closing itself the element sits
+    /// on the inversion test's threshold, and the loop cycles on it;
+    /// closings nearer together are taken at once), or, where that is not
+    /// known, half-way. `None` where it stands: nothing closed before its
+    /// end, it is the least sub-step already, or the plan has taken its
+    /// cap.
+    fn stop_at(&mut self, start: f64, closing: Closing) -> Option<f64> {
+        let length = self.target - start;
+        let least = (SUB_STEP_LEAST * (self.end - self.first)).abs();
+        if length.abs() <= least || self.closings >= self.cap {
+            return None;
+        }
+        let share = match closing {
+            Closing::AtEnd => return None,
+            Closing::At(s) if s + 2.0 * least / length.abs() >= 1.0 => return None,
+            Closing::At(s) => s + least / length.abs(),
+            Closing::Unforeseen => 0.5,
+        };
+        self.closings += 1;
+        self.halvings = 0;
+        Some(start + share * length)
+    }
+
+    /// After a sub-step from `start` failed with `e`: its target halved
+    /// towards `start`, where the failure is one a shorter sub-step can
+    /// avoid (fewer elements closing in it) and the halvings allow.
+    fn halve(&mut self, start: f64, e: &Error) -> bool {
+        let retry = matches!(e.status(), Status::Singular | Status::NotConverged);
+        if !retry || self.halvings >= MAX_HALVINGS || self.target == start {
+            return false;
+        }
+        self.halvings += 1;
+        self.target = start + 0.5 * (self.target - start);
+        true
+    }
+
+    /// The step's outcome: the last sub-step's, with the state `before`
+    /// the whole step, the iterations of all, and a warning where the cap
+    /// stopped the locating.
+    fn finish(&self, mut stepped: Stepped, before: StepState) -> Stepped {
+        if let Some(c) = stepped.outcome.contact.as_mut() {
+            c.report.iterations = self.iterations;
+        }
+        if self.closings >= self.cap {
+            stepped.outcome.warnings.push(format!(
+                "contact formed at more than {} points along this load step: the elements \
+                 closing after those carry no shear until the step's end; split the step",
+                self.cap
+            ));
+        }
+        stepped.before = before;
+        stepped
+    }
+}
+
+/// The halvings in a row a failing sub-step is tried with.
+const MAX_HALVINGS: usize = 20;
 
 /// The least sub-steps a step takes before it stops locating where
 /// contact forms along it (then the elements closing later carry no shear
@@ -975,28 +1065,58 @@ const MAX_SUB_STEPS: usize = 64;
 /// along the step are taken at once.
 const SUB_STEP_LEAST: f64 = 1e-6;
 
-/// Where along a step (0 at its start, 1 at its end) the first of the
+/// What the elements that closed in a sub-step say of where it should
+/// have stopped ([`closing_in`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Closing {
+    /// Nowhere before its end: none closed, or all at the end.
+    AtEnd,
+    /// Where the first of them closed, as a share of the sub-step.
+    At(f64),
+    /// An element closed that the start's response leaves open: something
+    /// else changed first (an element slipped or opened), which that
+    /// response does not see, so where is not known.
+    Unforeseen,
+}
+
+/// Where in a sub-step (0 at its start, 1 at its end) the first of the
 /// elements that closed in it (`outcome`'s friction, from the state
 /// `start`) reaches zero opening: the start's response is linear in the
 /// load until something changes, so its opening goes from the one at the
 /// start (its initial opening J₀ before any step) to the one the loop's
-/// first solve predicted at the end, under the start's flags. `None`
-/// where none closed, or all at the end.
-fn first_closure(session: &Session, start: &FrictionState, outcome: &Outcome) -> Option<f64> {
-    let contact = outcome.contact.as_ref()?;
-    let f = contact.state.strip.friction.as_ref()?;
+/// first solve predicted at the end, under the start's flags.
+fn closing_in(session: &Session, start: &FrictionState, outcome: &Outcome) -> Closing {
+    let Some(contact) = outcome.contact.as_ref() else {
+        return Closing::AtEnd;
+    };
+    let Some(f) = contact.state.strip.friction.as_ref() else {
+        return Closing::AtEnd;
+    };
     let elements = session.contact.elements();
     let opening = |k: usize| start.openings.get(k).copied().unwrap_or(elements[k].j0);
     let predicted = |k: usize| contact.predicted.get(k).copied().unwrap_or(f64::NAN);
-    f.closed
-        .iter()
-        .filter_map(|&k| {
-            let (o0, o1) = (opening(k), predicted(k));
-            (o0 > 0.0 && o1 < o0).then(|| o0 / (o0 - o1))
-        })
-        .filter(|&s| s < 1.0 - SUB_STEP_LEAST)
-        .min_by(f64::total_cmp)
+    let mut first = 1.0f64;
+    for &k in &f.closed {
+        let (o0, o1) = (opening(k), predicted(k));
+        if o0.is_nan() || o0 <= 0.0 {
+            // Closed (or held open past zero) at the start already.
+            continue;
+        }
+        // Predicted to close by the end, to rounding of its opening.
+        if o1.is_nan() || o1 >= CLOSED_AT_END * o0 {
+            return Closing::Unforeseen;
+        }
+        first = first.min(o0 / (o0 - o1.min(0.0)));
+    }
+    match first < 1.0 {
+        true => Closing::At(first),
+        false => Closing::AtEnd,
+    }
 }
+
+/// An element whose predicted opening at a sub-step's end is below this
+/// share of its opening at the start closes by that end.
+const CLOSED_AT_END: f64 = 1e-9;
 
 /// The active-set iterations of a step's outcome.
 fn iterations_of(outcome: &Outcome) -> usize {
@@ -1021,7 +1141,8 @@ pub(crate) fn check_load_factor(t: f64) -> Result<()> {
 fn begin_k1(
     session: &mut Session,
     input: &Input<'_>,
-    (key, revision): (Key, u64),
+    key: Key,
+    revision: u64,
     timings: &mut Timings,
     warnings: &mut Vec<String>,
 ) -> Result<(Option<K1>, Sizes)> {
@@ -1056,10 +1177,14 @@ fn begin_k1(
         pattern,
     };
     let reference = set.initial_active();
-    let k1 = (&set, &interface[..], &reference[..]);
+    let k1 = K1Set {
+        set: &set,
+        interface: &interface,
+        reference: &reference,
+    };
     let (chol, x, mut info) = solve_k1(analysis, at, system, input, k1, timings)?;
     let norm = norm_inf(pattern, system.values());
-    let (x_load, x_gap) = split_gap(chol, system, (&set, &reference), x)?;
+    let (x_load, x_gap) = split_gap(chol, system, &set, &reference, x)?;
     let t0 = Instant::now();
     let condensed = Condensed::new(chol, interface)?;
     let base = condensed.factor_fingerprint();
@@ -1122,9 +1247,14 @@ fn solve_k1<'a>(
     at: Structure<'_>,
     system: &mut super::system::AssembledSystem,
     input: &Input<'_>,
-    (set, interface, reference): (&Constraints<'_>, &[usize], &[bool]),
+    k1: K1Set<'_, '_>,
     timings: &mut Timings,
 ) -> Result<(&'a mut Cholesky, Vec<f64>, SolveInfo)> {
+    let K1Set {
+        set,
+        interface,
+        reference,
+    } = k1;
     // The zeros are the bodies' alone: no contact part is in yet.
     let zeros = set.structural_zeros(at.pattern, system.values());
     let want = Wanted {
@@ -1164,6 +1294,17 @@ fn solve_k1<'a>(
     Ok((chol, x, info))
 }
 
+/// The constraints K₁ is made with: the set, the interface unknowns it
+/// condenses on, and the parts it holds.
+struct K1Set<'c, 's> {
+    /// The constraints.
+    set: &'c Constraints<'s>,
+    /// The interface unknowns, numbered last.
+    interface: &'c [usize],
+    /// The parts K₁ holds (the initial set).
+    reference: &'c [bool],
+}
+
 /// K₁'s solution `x` at factor 1 split into x_load and x_gap (module
 /// documentation): the gap part of the loads of `reference` does not scale
 /// with the load factor, so it is solved apart. Without gap loads, x is
@@ -1171,7 +1312,8 @@ fn solve_k1<'a>(
 fn split_gap(
     chol: &Cholesky,
     system: &super::system::AssembledSystem,
-    (set, reference): (&Constraints<'_>, &[bool]),
+    set: &Constraints<'_>,
+    reference: &[bool],
     x: Vec<f64>,
 ) -> Result<(Vec<f64>, Vec<f64>)> {
     let gap = gap_loads(set, reference, x.len());
@@ -1231,7 +1373,8 @@ fn scaled(v: &[f64], t: f64) -> Vec<f64> {
 /// it left no friction loads, those of sticking.
 pub(crate) fn warm_start(
     set: &Constraints<'_>,
-    (warm, friction): (&[bool], &FrictionState),
+    warm: &[bool],
+    friction: &FrictionState,
 ) -> (Vec<bool>, Vec<f64>) {
     let warm = set.warm_flags(warm, &friction.loads);
     let loads = match friction.loads.is_empty() {
@@ -1243,7 +1386,7 @@ pub(crate) fn warm_start(
 
 /// The statistics a step starts from: the sizes of its unknowns, matrix
 /// and factor, with `interface` unknowns condensed.
-fn step_info((dofs, pattern): (&DofMap, &Pattern), chol: &Cholesky, interface: usize) -> SolveInfo {
+fn step_info(dofs: &DofMap, pattern: &Pattern, chol: &Cholesky, interface: usize) -> SolveInfo {
     SolveInfo {
         unknowns: dofs.n_free(),
         matrix_nnz: pattern.nnz(),
@@ -1289,18 +1432,13 @@ fn on_interface(
         let x1 = &k1.condensed().x1;
         let sys = &k1.condensed().system;
         let value = |i: usize| sys.position(i).map_or(x1[i], |p| ui[p]);
-        contact_outcome(
-            (step.set, step.pairs, step.mesh),
-            value,
-            (active.clone(), &friction),
-            history,
-            info,
-            &mut warnings,
-        )?
-    };
-    let contact = ContactOutcome {
-        predicted,
-        ..contact
+        let paired = settled::PairedMesh {
+            mesh: step.mesh,
+            pairs: step.pairs,
+        };
+        let active = active.clone();
+        let s = settled::settle(step.set, active, &friction, value, paired, &mut warnings)?;
+        contact_outcome(s, history, info, predicted)
     };
     let (key, t) = step.at;
     let pending = Pending {
@@ -1323,7 +1461,8 @@ fn on_interface(
 /// of the final system `system` on `pattern`): its whole field at once.
 fn on_full_solve(
     step: Step<'_, '_>,
-    (system, pattern): (&super::system::AssembledSystem, &Pattern),
+    system: &super::system::AssembledSystem,
+    pattern: &Pattern,
     settled: Settled,
     mut info: SolveInfo,
 ) -> Result<Outcome> {
@@ -1332,15 +1471,13 @@ fn on_full_solve(
     let mut warnings = Vec::new();
     super::diagnostics::conditioning_warning(&info, &mut warnings);
     let x = &settled.x;
-    let verdict = (settled.active, &settled.friction[..]);
-    let contact = contact_outcome(
-        (step.set, step.pairs, step.mesh),
-        |i| x[i],
-        verdict,
-        settled.history,
-        info,
-        &mut warnings,
-    )?;
+    let paired = settled::PairedMesh {
+        mesh: step.mesh,
+        pairs: step.pairs,
+    };
+    let (active, friction) = (settled.active, &settled.friction);
+    let s = settled::settle(step.set, active, friction, |i| x[i], paired, &mut warnings)?;
+    let contact = contact_outcome(s, settled.history, info, settled.predicted);
     let u = step.dofs.expand(&settled.x, step.prescribed);
     Ok(Outcome {
         u: Field::Global(u),

@@ -106,22 +106,44 @@ pub(crate) fn solve(
     timings: &mut Timings,
 ) -> Result<Outcome> {
     let Some(options) = options else {
-        let (info, warnings) = prepare(session, input, timings)?;
+        let Begun { info, warnings } = prepare(session, input, timings)?;
         return solve_plain(session, input, info, timings, warnings);
     };
     let path = history::path_start(session, input, options, timings)?;
-    let (mut info, warnings) = prepare(session, input, timings)?;
+    let mut begun = prepare(session, input, timings)?;
     let start = path.as_ref().map(|(state, factorizations)| {
-        info.factorizations += factorizations;
-        (&state.warm[..], &state.friction)
+        begun.info.factorizations += factorizations;
+        WarmStart {
+            flags: &state.warm,
+            friction: &state.friction,
+        }
     });
-    solve_contact(session, input, options, start, (info, warnings), timings)
+    solve_contact(session, input, options, start, begun, timings)
 }
 
 /// Where a contact solve's loop starts: the constraints' initial set
 /// (`None`), or a load step's warm start — the set and friction state a
 /// step before ended with.
-pub(crate) type Start<'s> = Option<(&'s [bool], &'s FrictionState)>;
+pub(crate) type Start<'s> = Option<WarmStart<'s>>;
+
+/// A load step's warm start: the flags and friction state the step before
+/// ended with.
+#[derive(Clone, Copy)]
+pub(crate) struct WarmStart<'s> {
+    /// The flags over the constraints' parts.
+    pub flags: &'s [bool],
+    /// The slip state and friction loads.
+    pub friction: &'s FrictionState,
+}
+
+/// What a solve begins with ([`prepare`]): its statistics so far and the
+/// tempering's warnings.
+pub(crate) struct Begun {
+    /// The statistics.
+    pub info: SolveInfo,
+    /// The warnings.
+    pub warnings: Vec<String>,
+}
 
 /// What every solve does first: the bodies' part assembled afresh (a load
 /// history's K₁, strip or mortar, is gone), with the solve's statistics
@@ -130,7 +152,7 @@ pub(crate) fn prepare(
     session: &mut Session,
     input: &Input<'_>,
     timings: &mut Timings,
-) -> Result<(SolveInfo, Vec<String>)> {
+) -> Result<Begun> {
     ensure_unknowns(&session.dofs)?;
     session.holds = session::Holds::Nothing;
     let mesh = input.elements.mesh();
@@ -144,7 +166,7 @@ pub(crate) fn prepare(
         matrix_nnz: session.pattern.nnz(),
         ..Default::default()
     };
-    Ok((info, warnings))
+    Ok(Begun { info, warnings })
 }
 
 /// Refuses a model whose every DOF is prescribed: there is no system to
@@ -169,7 +191,8 @@ pub(crate) fn restore(
     session: &mut Session,
     input: &Input<'_>,
     options: Option<&ContactOptions>,
-    (log, friction): (&[Vec<usize>], &[f64]),
+    log: &[Vec<usize>],
+    friction: &[f64],
 ) -> Result<()> {
     session.assemble_body(&input.elements, input.f_ext, input.prescribed)?;
     if let Some(options) = options {
@@ -285,9 +308,13 @@ pub(crate) fn solve_contact(
     input: &Input<'_>,
     options: &ContactOptions,
     start: Start<'_>,
-    (mut info, mut warnings): (SolveInfo, Vec<String>),
+    begun: Begun,
     timings: &mut Timings,
 ) -> Result<Outcome> {
+    let Begun {
+        mut info,
+        mut warnings,
+    } = begun;
     let mesh = input.elements.mesh();
     let Session {
         dofs,
@@ -297,7 +324,7 @@ pub(crate) fn solve_contact(
         system,
         ..
     } = &mut *session;
-    let anchors = start.map_or(&[][..], |(_, f)| &f.anchors);
+    let anchors = start.map_or(&[][..], |w| &w.friction.anchors);
     let set = constraints(input, input.prescribed, contact, dofs, options, anchors)?;
     let interface = if options.refactorize {
         Vec::new()
@@ -324,7 +351,7 @@ pub(crate) fn solve_contact(
         interface: condense.then_some(interface),
         options: *options,
     };
-    let flags = start.map(|warm| history::warm_start(&set, warm));
+    let flags = start.map(|w| history::warm_start(&set, w.flags, w.friction));
     let linear = SystemAndFactor { chol, system };
     let settled = ActiveSetLoop::new(loop_input, linear, books, flags).run()?;
     info.memory_bytes = session_memory(at, system, chol) + settled.condensed_bytes;
@@ -334,16 +361,13 @@ pub(crate) fn solve_contact(
     finite_statistics(&info)?;
     conditioning_warning(&info, &mut warnings);
     let x = &settled.x;
-    let verdict = (settled.active, &settled.friction[..]);
-    let mut contact = contact_outcome(
-        (&set, input.pairs, mesh),
-        |i| x[i],
-        verdict,
-        settled.history,
-        info,
-        &mut warnings,
-    )?;
-    contact.predicted = settled.predicted;
+    let paired = settled::PairedMesh {
+        mesh,
+        pairs: input.pairs,
+    };
+    let (active, friction) = (settled.active, &settled.friction);
+    let s = settled::settle(&set, active, friction, |i| x[i], paired, &mut warnings)?;
+    let contact = contact_outcome(s, settled.history, info, settled.predicted);
     let u = dofs.expand(&settled.x, input.prescribed);
     drop(settled.x);
     Ok(Outcome {
@@ -373,19 +397,16 @@ pub(crate) fn finite_statistics(info: &SolveInfo) -> Result<()> {
     })
 }
 
-/// The contact outcome of the settled flags `active` (over parts) and
-/// friction load factors `friction` of the constraints `set`, the
-/// unknowns' values read by `value`: its state and report.
+/// The contact outcome of a solve that settled as `s`
+/// ([`settled::settle`]) after the iterations `history`, with the
+/// statistics `info` and the openings `predicted` of its first solve: its
+/// state and report.
 pub(crate) fn contact_outcome(
-    (set, pairs, mesh): (&Constraints<'_>, &[ContactPair], &Mesh),
-    value: impl Fn(usize) -> f64,
-    (active, friction): (Vec<bool>, &[f64]),
+    s: settled::Settlement,
     history: Vec<report::IterationRecord>,
     info: SolveInfo,
-    warnings: &mut Vec<String>,
-) -> Result<ContactOutcome> {
-    let paired = settled::PairedMesh { mesh, pairs };
-    let s = settled::settle(set, active, friction, value, paired, warnings)?;
+    predicted: Vec<f64>,
+) -> ContactOutcome {
     let report = ContactReport {
         iterations: history.len(),
         elements: s.parts,
@@ -395,10 +416,10 @@ pub(crate) fn contact_outcome(
         history,
         info,
     };
-    Ok(ContactOutcome {
+    ContactOutcome {
         flags: s.flags,
         state: s.state,
         report,
-        predicted: Vec::new(),
-    })
+        predicted,
+    }
 }
