@@ -18,6 +18,7 @@
 mod built;
 mod calculix;
 mod cattaneo;
+mod combined;
 mod common;
 mod friction;
 mod hertz;
@@ -40,6 +41,7 @@ use std::time::Instant;
 use crate::built::built;
 use crate::calculix::calculix;
 use crate::cattaneo::cattaneo;
+use crate::combined::combined;
 use crate::common::machine_and_date;
 use crate::friction::friction;
 use crate::hertz::hertz;
@@ -88,6 +90,7 @@ const SECTIONS: &[&str] = &[
     "interface_cost",
     "friction",
     "cattaneo",
+    "combined",
     "calculix",
     "host_codes",
     "q4_host",
@@ -175,7 +178,7 @@ fn main() {
     )
     .unwrap();
     type Section = fn(&mut String, &Args);
-    let sections: [(&str, Section); 18] = [
+    let sections: [(&str, Section); 19] = [
         ("manufactured", manufactured),
         ("seed", seed),
         ("patch_test", patch_test),
@@ -190,6 +193,7 @@ fn main() {
         ("interface_cost", interface_cost),
         ("friction", friction),
         ("cattaneo", cattaneo),
+        ("combined", combined),
         ("calculix", calculix),
         ("host_codes", host_codes),
         ("q4_host", q4_host),

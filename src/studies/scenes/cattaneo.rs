@@ -873,3 +873,103 @@ impl CattaneoScene {
         })
     }
 }
+
+/// How the platen of [`CattaneoScene::combined`] is moved: to
+/// (`ratio`·δₙ, −δₙ), δₙ = P/E* (the load's guess of the normal move), in
+/// `steps` equal load steps, or by one contact solve (`steps` = 0).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CombinedLoad {
+    /// The platen's sideways move per unit of its normal move.
+    pub ratio: f64,
+    /// Load steps (0: one contact solve).
+    pub steps: usize,
+}
+
+/// The block's top after a combined load ([`CattaneoScene::combined`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CombinedResult {
+    /// Q/P of the contact forces on the block's top.
+    pub q_over_p: f64,
+    /// μp₀, p₀ the largest nodal pressure.
+    pub mu_p0: f64,
+    /// Per block top node, by x: (x, pressure, shear along +x), from the
+    /// nodal tractions.
+    pub tractions: Vec<(f64, f64, f64)>,
+    /// Elements of B slipping at the end.
+    pub slipping: usize,
+    /// Active-set iterations over every step.
+    pub iterations: usize,
+    /// Wall time of the steps (or the solve) alone.
+    pub seconds: f64,
+}
+
+impl CombinedResult {
+    /// ‖q − (Q/P)p‖ / ‖(Q/P)p‖ over the block's top nodes: the distance
+    /// of the shear from Mindlin's answer for proportional loading below
+    /// μ, q = (Q/P)·p.
+    pub fn off_proportional(&self) -> f64 {
+        let (mut off, mut size) = (0.0, 0.0);
+        for &(_, p, q) in &self.tractions {
+            off += (q - self.q_over_p * p).powi(2);
+            size += (self.q_over_p * p).powi(2);
+        }
+        (off / size).sqrt()
+    }
+
+    /// max |q − q_other| / (μp₀) over the block's top nodes.
+    pub fn shear_difference(&self, other: &CombinedResult) -> f64 {
+        self.tractions
+            .iter()
+            .zip(&other.tractions)
+            .map(|(a, b)| (a.2 - b.2).abs() / self.mu_p0)
+            .fold(0.0, f64::max)
+    }
+}
+
+impl CattaneoScene {
+    /// The normal and tangential loads together (docs/method.md §6.15):
+    /// the platen moved along (ratio·δₙ, −δₙ) as `load` says, with
+    /// friction μ = `mu`, from rest.
+    pub fn combined(&mut self, cm: &CattaneoMindlin, load: CombinedLoad) -> Result<CombinedResult> {
+        let m = &mut self.model;
+        m.set_friction(0, cm.mu)?;
+        let dn = self.load / cm.e_star();
+        for &v in &self.platen {
+            m.set_prescribed(v, Component::X, load.ratio * dn)?;
+            m.set_prescribed(v, Component::Y, -dn)?;
+        }
+        let options = ContactOptions::default();
+        let t0 = std::time::Instant::now();
+        let mut iterations = 0;
+        if load.steps == 0 {
+            iterations += m.solve_contact(&options)?.iterations;
+        }
+        for i in 1..=load.steps {
+            iterations += m.step(i as f64 / load.steps as f64, &options)?.iterations;
+        }
+        let seconds = t0.elapsed().as_secs_f64();
+        let mesh = m.mesh().ok_or_else(|| Error::state("cattaneo: no mesh"))?;
+        let block_top = super::nodes_by_x(mesh, TAG_BLOCK_TOP);
+        let x = mesh.nodes();
+        let f = m.contact_forces()?;
+        let (p, q) = block_top
+            .iter()
+            .fold((0.0, 0.0), |(p, q), &v| (p - f[v][1], q + f[v][0]));
+        let t = m.contact_nodal_tractions()?;
+        // The block's tangent runs along −x on its top (outward normal +y).
+        let tractions: Vec<(f64, f64, f64)> = block_top
+            .iter()
+            .map(|&v| (x[v][0], t[v][0], -t[v][1]))
+            .collect();
+        let p0 = tractions.iter().map(|r| r.1).fold(0.0, f64::max);
+        let states = m.contact_friction_state()?;
+        Ok(CombinedResult {
+            q_over_p: q / p,
+            mu_p0: cm.mu * p0,
+            tractions,
+            slipping: states.iter().filter(|&&s| s == 2).count(),
+            iterations,
+            seconds,
+        })
+    }
+}
