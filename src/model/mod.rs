@@ -3,7 +3,7 @@
 //! facade.
 //!
 //! Every mutating call either succeeds or leaves the model exactly as it
-//! was. Results belong to one revision of the problem: any change of the
+//! was. Results belong to one epoch of the problem: any change of the
 //! problem makes them stale (their accessors then say so). What a solve
 //! derives from the structure (the unknowns, the pattern, the contact mesh,
 //! the symbolic factorisation) belongs to one structure epoch and is
@@ -98,25 +98,25 @@ impl Model {
     }
 
     /// Applies a change to the problem, then drops what it made stale: the
-    /// session of another structure, results of another revision.
+    /// session of another structure, results of another epoch.
     fn edit<T>(&mut self, change: impl FnOnce(&mut Problem) -> Result<T>) -> Result<T> {
-        let epoch = self.problem.contact_epoch();
+        let contact = self.problem.contact_epoch();
         let out = change(&mut self.problem)?;
         if self
             .session
             .as_ref()
-            .is_some_and(|s| s.structure() != self.problem.structure())
+            .is_some_and(|s| s.structure_epoch() != self.problem.structure_epoch())
         {
             // A frictional history's path survives a change that keeps its
             // contact mesh (a new prescribed DOF), as it survives a revert.
-            let kept = (self.problem.contact_epoch() == epoch).then_some(epoch);
+            let kept = (self.problem.contact_epoch() == contact).then_some(contact);
             self.stepping.session_dropped(kept);
             self.session = None;
         }
         if self
             .solution
             .as_ref()
-            .is_some_and(|s| s.revision != self.problem.revision())
+            .is_some_and(|s| s.epoch != self.problem.epoch())
         {
             self.solution = None;
         }
@@ -431,7 +431,7 @@ impl Model {
         })
     }
 
-    /// Solves the current revision of the problem and keeps its results.
+    /// Solves the current epoch of the problem and keeps its results.
     fn run(&mut self, options: Option<&ContactOptions>) -> Result<&Solution> {
         let t_start = Instant::now();
         self.problem.check_ready(options.is_some())?;
@@ -447,24 +447,24 @@ impl Model {
         let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
         let stepping = &mut self.stepping;
         let session = session_of(&mut self.session, &self.problem, &mut timings, stepping)?;
-        let revision = self.problem.revision();
+        let epoch = self.problem.epoch();
         // A solve ends a load history; a failed one must not (the next step
         // continues it as if the solve had not been tried).
         let live = stepping.take();
-        let had_matrix = session.system_matrix(revision).is_some();
+        let had_matrix = session.system_matrix(epoch).is_some();
         let outcome = match solve::solve(session, &input, options, &mut timings) {
             Ok(outcome) => outcome,
             Err(e) => {
                 if had_matrix {
-                    keep_matrix(session, &input, self.solution.as_ref(), revision);
+                    keep_matrix(session, &input, self.solution.as_ref(), epoch);
                 }
                 stepping.solve_failed(live, session, &input, &self.problem);
                 return Err(e);
             }
         };
-        session.holds = crate::solve::session::Holds::Solve(revision);
+        session.holds = crate::solve::session::Holds::Solve(epoch);
         let options = options.copied();
-        let (solution, warnings) = solution_of(outcome, f_ext, options, timings, t_start, revision);
+        let (solution, warnings) = solution_of(outcome, f_ext, options, timings, t_start, epoch);
         self.solve_warnings = warnings;
         if let Some(u) = solution.u.get() {
             reaction_warning(&self.problem, &solution, u, &mut self.solve_warnings);
@@ -507,7 +507,7 @@ impl Model {
     fn solution(&self) -> Result<&Solution> {
         self.solution
             .as_ref()
-            .filter(|s| s.revision == self.problem.revision())
+            .filter(|s| s.epoch == self.problem.epoch())
             .ok_or_else(|| {
                 Error::state(
                     "no results: solve the model first (results are discarded by any change)",
@@ -544,10 +544,10 @@ impl Model {
                  call solve_contact for one",
             ));
         }
-        let revision = solution.revision;
+        let epoch = solution.epoch;
         self.session
             .as_ref()
-            .and_then(|s| s.system_matrix(revision))
+            .and_then(|s| s.system_matrix(epoch))
             .ok_or_else(|| {
                 Error::state("no matrix: the last solve failed (solve again for its matrix)")
             })
@@ -811,16 +811,11 @@ impl Model {
     }
 }
 
-/// After a failed solve or step: the results of this revision stay, and
+/// After a failed solve or step: the results of this epoch stay, and
 /// so does their matrix (a load step's results have none), rebuilt in the
 /// session the failed call overwrote.
-fn keep_matrix(
-    session: &mut Session,
-    input: &Input<'_>,
-    solution: Option<&Solution>,
-    revision: u64,
-) {
-    let current = solution.filter(|s| s.revision == revision);
+fn keep_matrix(session: &mut Session, input: &Input<'_>, solution: Option<&Solution>, epoch: u64) {
+    let current = solution.filter(|s| s.epoch == epoch);
     if let Some(s) = current.filter(|s| !s.step) {
         let options = s.contact.as_ref().map(|c| &c.options);
         let friction = s
@@ -829,7 +824,7 @@ fn keep_matrix(
             .and_then(|c| c.state.strip.friction.as_ref())
             .map_or(&[][..], |f| &f.next.loads[..]);
         if solve::restore(session, input, options, &s.log, friction).is_ok() {
-            session.holds = crate::solve::session::Holds::Solve(revision);
+            session.holds = crate::solve::session::Holds::Solve(epoch);
         }
     }
 }
@@ -862,7 +857,7 @@ fn session_of<'s>(
 ) -> Result<&'s mut Session> {
     if slot
         .as_ref()
-        .is_some_and(|s| s.structure() != p.structure())
+        .is_some_and(|s| s.structure_epoch() != p.structure_epoch())
     {
         *slot = None;
     }
@@ -872,7 +867,7 @@ fn session_of<'s>(
         let t0 = Instant::now();
         let prescribed = |g| p.is_prescribed(g);
         let s = Session::new(
-            p.structure(),
+            p.structure_epoch(),
             p.mesh_ref()?,
             prescribed,
             p.contact_pairs(),
@@ -893,7 +888,7 @@ fn solution_of(
     options: Option<ContactOptions>,
     mut timings: Timings,
     t_start: Instant,
-    revision: u64,
+    epoch: u64,
 ) -> (Solution, Vec<String>) {
     let mut info = outcome.info;
     timings.total = t_start.elapsed().as_secs_f64();
@@ -913,7 +908,7 @@ fn solution_of(
         Field::Pending(p) => (OnceLock::new(), Some(p)),
     };
     let solution = Solution {
-        revision,
+        epoch,
         u,
         pending,
         f_ext,

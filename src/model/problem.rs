@@ -2,14 +2,16 @@
 //! the tempering, prescribed displacements, loads and contact pairs.
 //!
 //! Every setter either succeeds or leaves the problem exactly as it was.
-//! Two counters record changes: the *revision* moves with every change
-//! (results of an earlier revision are stale), the *structure* epoch with
+//! Changes are counted by epochs: the *epoch* moves with every change
+//! (results of an earlier epoch are stale); the *structure* epoch with
 //! the changes that alter what a solve derives from the problem — the mesh
 //! and its boundary edges, the set of prescribed DOFs, the contact pairs —
 //! so that everything derived checks the epoch instead of being cleared by
-//! hand. A third, the *contact* epoch, moves with the structure but the set
-//! of prescribed DOFs: with what the contact mesh B and its parts are made
-//! of, which a load step's contact state belongs to.
+//! hand; the *stiffness* epoch with the structure, the materials and the
+//! tempering (what a load history's one factorisation is valid for); the
+//! *contact* epoch with the structure but the set of prescribed DOFs: with
+//! what the contact mesh B and its parts are made of, which a load step's
+//! contact state belongs to.
 
 use std::collections::{BTreeMap, BTreeSet, HashMap};
 
@@ -42,7 +44,7 @@ pub struct Problem {
     contact: u64,
     contact_change: &'static str,
     stiffness: u64,
-    revision: u64,
+    epoch: u64,
 }
 
 impl Default for Problem {
@@ -78,13 +80,13 @@ impl Problem {
             contact: 0,
             contact_change: "nothing",
             stiffness: 0,
-            revision: 0,
+            epoch: 0,
         }
     }
 
     /// Counts a change; `structural` when it alters the structure.
     fn changed(&mut self, structural: bool) {
-        self.revision += 1;
+        self.epoch += 1;
         if structural {
             self.structure += 1;
             self.stiffness += 1;
@@ -106,14 +108,14 @@ impl Problem {
         self.stiffness += 1;
     }
 
-    /// The revision: moves with every change.
-    pub fn revision(&self) -> u64 {
-        self.revision
+    /// The epoch: moves with every change.
+    pub fn epoch(&self) -> u64 {
+        self.epoch
     }
 
     /// The structure epoch: moves with the mesh, its boundary edges, the
     /// set of prescribed DOFs and the contact pairs.
-    pub fn structure(&self) -> u64 {
+    pub fn structure_epoch(&self) -> u64 {
         self.structure
     }
 
@@ -135,7 +137,7 @@ impl Problem {
 
     /// The stiffness epoch: moves with the structure, the materials and the
     /// tempering — not with the loads.
-    pub fn stiffness(&self) -> u64 {
+    pub fn stiffness_epoch(&self) -> u64 {
         self.stiffness
     }
 

@@ -43,11 +43,11 @@ impl<T: PositiveZero> PositiveZero for Vec<T> {
     }
 }
 
-/// The results of one successful solve of one revision of a problem.
+/// The results of one successful solve of one epoch of a problem.
 #[derive(Debug, Clone)]
 pub(crate) struct Solution {
-    /// The problem revision it solves.
-    pub revision: u64,
+    /// The problem epoch it solves.
+    pub epoch: u64,
     /// Displacements over every global DOF: set by the solve, or recovered
     /// on first request from `pending` (a load step).
     pub u: OnceLock<Vec<f64>>,

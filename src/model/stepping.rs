@@ -184,7 +184,7 @@ impl Model {
         let mut timings = Timings::default();
         let prescribed = self.problem.prescribed_vector()?;
         let f_ext = self.problem.load_vector()?;
-        let key = Key::new(self.problem.stiffness(), options);
+        let key = Key::new(self.problem.stiffness_epoch(), options);
         let contact = self.problem.contact_epoch();
         let live = self.stepping.live.as_ref();
         let continues = live.is_some_and(|l| l.contact == contact && l.history.continues(&key));
@@ -199,14 +199,14 @@ impl Model {
                 .flatten()
         });
         let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
-        let revision = self.problem.revision();
+        let epoch = self.problem.epoch();
         let restored = self.stepping.restored.take();
         let stepping = &mut self.stepping;
         let session = session_of(&mut self.session, &self.problem, &mut timings, stepping)?;
-        let had_matrix = session.system_matrix(revision).is_some();
+        let had_matrix = session.system_matrix(epoch).is_some();
         let start = StepStart {
             key,
-            revision,
+            epoch,
             contact,
             continues,
             state: restored
@@ -217,7 +217,7 @@ impl Model {
         };
         let at = Along {
             t,
-            revision,
+            epoch,
             options,
             retry: true,
         };
@@ -225,8 +225,8 @@ impl Model {
         let (outcome, before, warnings) = match stepped {
             Ok(stepped) => stepped,
             Err(e) => {
-                if had_matrix && session.system_matrix(revision).is_none() {
-                    keep_matrix(session, &input, self.solution.as_ref(), revision);
+                if had_matrix && session.system_matrix(epoch).is_none() {
+                    keep_matrix(session, &input, self.solution.as_ref(), epoch);
                 }
                 // A failed step changes nothing: the next one carries it.
                 (self.stepping.restored, self.stepping.carried) = (restored, carried);
@@ -235,14 +235,8 @@ impl Model {
         };
         let dropped = restored.filter(|k| k.contact != contact);
         let f_scaled: Vec<f64> = f_ext.iter().map(|f| t * f).collect();
-        let (mut solution, mut solve_warnings) = solution_of(
-            outcome,
-            f_scaled,
-            Some(*options),
-            timings,
-            t_start,
-            revision,
-        );
+        let (mut solution, mut solve_warnings) =
+            solution_of(outcome, f_scaled, Some(*options), timings, t_start, epoch);
         solve_warnings.splice(0..0, warnings);
         if dropped.is_some() {
             solve_warnings.push(dropped_warning(&self.problem));
@@ -304,7 +298,7 @@ impl Model {
         // for the next step, which may begin another history (new
         // stiffness or options) and would otherwise lose it.
         if let Some(live) = self.stepping.live.as_mut() {
-            live.history.set_state(&before.state)?;
+            live.history.restore(&before.state)?;
         }
         let (solution, before) = self.stepping.undo.take().expect("checked above");
         self.solution = solution;
@@ -377,8 +371,8 @@ impl Model {
         if let Some(live) = self.stepping.live.as_mut() {
             let history = &mut live.history;
             let before = history.state();
-            if let Err(e) = history.set_state(&state) {
-                history.set_state(&before)?;
+            if let Err(e) = history.restore(&state) {
+                history.restore(&before)?;
                 return Err(e);
             }
         }
@@ -400,21 +394,20 @@ impl Model {
     /// before a call that may replace the history (a solve, a step that
     /// begins a new one, whose results then become the revert's).
     pub(super) fn recover_results(&mut self) {
-        let revision = self.problem.revision();
-        let waits =
-            |s: &Solution| s.pending.is_some() && s.u.get().is_none() && s.revision == revision;
+        let epoch = self.problem.epoch();
+        let waits = |s: &Solution| s.pending.is_some() && s.u.get().is_none() && s.epoch == epoch;
         if self.solution.as_ref().is_some_and(waits) {
             let _ = self.field();
         }
     }
 }
 
-/// Where a step starts: the history's key and the problem's revision and
+/// Where a step starts: the history's key and the problem's epoch and
 /// contact epoch, whether it continues the live history, and the contact
 /// state it starts from when it begins one.
 struct StepStart<'s> {
     key: Key,
-    revision: u64,
+    epoch: u64,
     contact: u64,
     continues: bool,
     state: Option<&'s StepState>,
@@ -439,8 +432,8 @@ impl Stepping {
         let (mut history, replaced, warnings) = match old {
             Some(live) if start.continues => (live.history, None, Vec::new()),
             other => {
-                let (key, revision) = (start.key, start.revision);
-                match History::begin(session, input, key, revision, start.state, timings) {
+                let (key, epoch) = (start.key, start.epoch);
+                match History::begin(session, input, key, epoch, start.state, timings) {
                     Ok((history, warnings)) => (history, other, warnings),
                     Err(e) => {
                         self.put_back(other, session, input, start.key.stiffness);
@@ -488,7 +481,7 @@ impl Stepping {
         input: &Input<'_>,
         problem: &Problem,
     ) {
-        self.put_back(live, session, input, problem.stiffness());
+        self.put_back(live, session, input, problem.stiffness_epoch());
     }
 }
 

@@ -47,7 +47,7 @@ pub(crate) struct Settled {
     /// The active set (over the set's parts).
     pub active: Vec<bool>,
     /// The friction load factors (empty when frictionless).
-    pub friction: Vec<f64>,
+    pub friction_loads: Vec<f64>,
     /// One record per iteration.
     pub history: Vec<IterationRecord>,
     /// Bytes the condensed system held (0 when not condensed).
@@ -70,7 +70,7 @@ pub(crate) struct CondensedState {
     /// The set the interface factor represents.
     pub factor_active: Vec<bool>,
     /// The friction load factors in K₁'s right-hand side (empty: none).
-    pub friction_ref: Vec<f64>,
+    pub reference_friction_loads: Vec<f64>,
 }
 
 /// How a loop that may stop at the interface settled.
@@ -97,7 +97,7 @@ pub(crate) struct AtInterface {
     /// The final set.
     pub active: Vec<bool>,
     /// The final friction load factors (empty when frictionless).
-    pub friction: Vec<f64>,
+    pub friction_loads: Vec<f64>,
     /// One record per iteration.
     pub history: Vec<IterationRecord>,
     /// The openings of the strip's elements in the first iterate
@@ -257,7 +257,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
                         let at_interface = AtInterface {
                             ui,
                             active,
-                            friction: self.friction.c,
+                            friction_loads: self.friction.c,
                             history,
                             predicted: self.predicted,
                         };
@@ -391,7 +391,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             x1: x,
             reference: self.set.active().to_vec(),
             factor_active: self.set.active().to_vec(),
-            friction_ref: self.friction.c.clone(),
+            reference_friction_loads: self.friction.c.clone(),
         });
         self.iterate = Iterate::Reference;
         self.books.timings.interface += t0.elapsed().as_secs_f64();
@@ -462,7 +462,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         Ok(Ok(Settled {
             x,
             active,
-            friction: self.friction.c,
+            friction_loads: self.friction.c,
             history,
             condensed_bytes,
             predicted: self.predicted,
@@ -490,7 +490,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             system,
             x1,
             reference,
-            friction_ref,
+            reference_friction_loads,
             ..
         } = self.condensed.take().expect("condensed");
         let input = &self.input;
@@ -513,7 +513,8 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
             product: &|v: &[f64], y: &mut [f64]| pattern.sym_mul(values, v, y),
             k_norm: &|| norm_inf(pattern, values),
             rhs,
-            friction: (&self.friction.c, &friction_ref),
+            friction_loads: &self.friction.c,
+            reference_friction_loads: &reference_friction_loads,
         };
         let (mut x, mut omega) = expand(target, self.linear.chol, &system, &reference, x1, ui)?;
         if x.iter().any(|v| !v.is_finite()) {
@@ -544,7 +545,8 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
                 product: &|v: &[f64], y: &mut [f64]| pattern.sym_mul(values, v, y),
                 k_norm: &|| norm_inf(pattern, values),
                 rhs,
-                friction: (&self.friction.c, &friction_ref),
+                friction_loads: &self.friction.c,
+                reference_friction_loads: &reference_friction_loads,
             };
             omega = refine_expanded(target, self.linear.chol, &system, &reference, &mut x)?;
         }
@@ -583,7 +585,7 @@ fn interface_solve(
     if !slipping.is_empty() {
         let (coupling, loads) = slip_coupling(set, sys, &state.x1, friction, &slipping);
         let mut g = g.clone();
-        add_friction_loads(set, sys, &loads, &state.friction_ref, &mut g);
+        add_friction_loads(set, sys, &loads, &state.reference_friction_loads, &mut g);
         if let Some(ui) = sys.solve_with(&y, &g, &coupling)? {
             for &k in &slipping {
                 let value = |i: usize| sys.position(i).map_or(state.x1[i], |p| ui[p]);
@@ -592,7 +594,7 @@ fn interface_solve(
             return Ok((ui, true));
         }
     }
-    add_friction_loads(set, sys, friction, &state.friction_ref, &mut g);
+    add_friction_loads(set, sys, friction, &state.reference_friction_loads, &mut g);
     Ok((sys.solve(&y, &g)?, slipping.is_empty()))
 }
 
@@ -668,9 +670,10 @@ pub(crate) struct Target<'t, 's> {
     pub k_norm: &'t dyn Fn() -> f64,
     /// The right-hand side of the final set.
     pub rhs: &'t [f64],
-    /// The final friction load factors and those of K₁'s right-hand side
-    /// (empty: none).
-    pub friction: (&'t [f64], &'t [f64]),
+    /// The final friction loads (empty: none).
+    pub friction_loads: &'t [f64],
+    /// The friction loads of K₁'s right-hand side (empty: none).
+    pub reference_friction_loads: &'t [f64],
 }
 
 /// Recovers the whole field from the interface values `ui` of the final
@@ -737,8 +740,10 @@ struct Changes<'c, 's> {
     active: &'c [bool],
     initial: &'c [bool],
     n: usize,
-    /// The final friction load factors and K₁'s.
-    friction: (&'c [f64], &'c [f64]),
+    /// The final friction loads.
+    friction_loads: &'c [f64],
+    /// K₁'s friction loads.
+    reference_friction_loads: &'c [f64],
 }
 
 /// The interface position of an unknown a contact element couples.
@@ -755,7 +760,8 @@ impl<'c, 's> Changes<'c, 's> {
             active: target.active,
             initial: reference,
             n: target.at.dofs.n_free(),
-            friction: target.friction,
+            friction_loads: target.friction_loads,
+            reference_friction_loads: target.reference_friction_loads,
         }
     }
 
@@ -784,8 +790,8 @@ impl<'c, 's> Changes<'c, 's> {
             }
         }
         if with_load {
-            let (c, c_ref) = self.friction;
-            set.add_friction_loads(c, c_ref, |i, v| p[i] += v);
+            let (loads, reference) = (self.friction_loads, self.reference_friction_loads);
+            set.add_friction_loads(loads, reference, |i, v| p[i] += v);
         }
         p
     }

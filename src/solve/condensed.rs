@@ -85,7 +85,7 @@ pub struct Condensed {
     par: Par,
     /// Counts the factors: a cached solve with the factor is valid while
     /// it stands.
-    generation: u64,
+    epoch: u64,
     /// The capacitance system of the last low-rank change solved with.
     capacitance: Option<Capacitance>,
 }
@@ -110,9 +110,9 @@ impl LowRank {
 
 /// Ẑ = Ŝ⁻¹Û and the LU factors of the capacitance matrix I + V̂ᵀẐ of a
 /// [`LowRank`] change (scaled: Û = diag(s)U, V̂ = diag(s)V), for the factor
-/// of generation `generation`.
+/// of epoch `epoch`.
 struct Capacitance {
-    generation: u64,
+    epoch: u64,
     change: LowRank,
     z: Mat<f64>,
     lu: nalgebra::linalg::LU<f64, nalgebra::Dyn, nalgebra::Dyn>,
@@ -174,7 +174,7 @@ impl Condensed {
             factored: true,
             min_eigenvalue: chol.min_eigenvalue_estimate(),
             par,
-            generation: 0,
+            epoch: 0,
             capacitance: None,
         })
     }
@@ -272,7 +272,7 @@ impl Condensed {
             self.check_change(e)?;
         }
         self.factored = false;
-        self.generation += 1;
+        self.epoch += 1;
         let n = self.len();
         {
             let mut f = self.factor.as_mut();
@@ -328,7 +328,7 @@ impl Condensed {
             self.check_change(e)?;
         }
         self.factored = false;
-        self.generation += 1;
+        self.epoch += 1;
         let mut columns: Vec<(Vec<(usize, f64)>, f64)> = Vec::new();
         for (e, sign) in changes {
             let dofs = e.unknowns.len();
@@ -433,7 +433,7 @@ impl Condensed {
         }
         self.factored = snapshot.factored;
         self.min_eigenvalue = snapshot.min_eigenvalue;
-        self.generation += 1;
+        self.epoch += 1;
         Ok(())
     }
 
@@ -575,7 +575,7 @@ impl Condensed {
         let fresh = self
             .capacitance
             .as_ref()
-            .is_some_and(|c| c.generation == self.generation && &c.change == change);
+            .is_some_and(|c| c.epoch == self.epoch && &c.change == change);
         if fresh {
             return true;
         }
@@ -610,7 +610,7 @@ impl Condensed {
             return false;
         }
         self.capacitance = Some(Capacitance {
-            generation: self.generation,
+            epoch: self.epoch,
             change: change.clone(),
             z,
             lu,

@@ -90,7 +90,7 @@ pub(crate) struct StepState {
     /// frictionless; docs/method.md §6.15).
     pub friction: FrictionState,
     /// The fingerprint of the interface system the history began with
-    /// ([`History::set_state`] restores `factor` only into the same one);
+    /// ([`History::restore`] restores `factor` only into the same one);
     /// `None` when not known (a state saved by an older version, or of a
     /// history that does not condense).
     pub base: Option<u64>,
@@ -158,7 +158,7 @@ pub(crate) struct Pending {
     /// The final set.
     pub active: Vec<bool>,
     /// The friction load factors it was solved with (empty: none).
-    pub friction: Vec<f64>,
+    pub friction_loads: Vec<f64>,
 }
 
 /// The numbers of histories, so that the session knows whose K₁ it holds.
@@ -181,7 +181,7 @@ pub(crate) struct History {
     frictional: usize,
     /// K₁ and its condensed interface, where the interface is condensed.
     k1: Option<K1>,
-    /// The problem revision whose loads the last step applied (`None`
+    /// The problem epoch whose loads the last step applied (`None`
     /// before the first): a step on the same loads follows the straight
     /// path from the last step's factor to its own, which sub-steps can
     /// stop on ([`History::step`]).
@@ -190,8 +190,8 @@ pub(crate) struct History {
 
 /// K₁ of a history that condenses its interface.
 struct K1 {
-    /// The problem revision whose loads `x_load` solves.
-    loads: u64,
+    /// The problem epoch whose loads `x_load` solves.
+    loads_epoch: u64,
     /// The set of constraints K₁ holds (also while `state` is lent).
     reference: Vec<bool>,
     /// K₁'s condensed state (lent to the loop during a step).
@@ -249,20 +249,20 @@ pub(crate) struct Stepped {
 }
 
 impl History {
-    /// Begins a history for `key` on the loads of `input` (problem revision
-    /// `revision`), from the contact state `restored` if given: K₁
+    /// Begins a history for `key` on the loads of `input` (problem epoch
+    /// `epoch`), from the contact state `restored` if given: K₁
     /// assembled and factorised (the only factorisation) with its condensed
     /// interface, or, where the interface is not condensed, nothing yet.
     pub fn begin(
         session: &mut Session,
         input: &Input<'_>,
         key: Key,
-        revision: u64,
+        epoch: u64,
         restored: Option<&StepState>,
         timings: &mut Timings,
     ) -> Result<(History, Vec<String>)> {
         let mut warnings = Vec::new();
-        let (k1, sizes) = begin_k1(session, input, key, revision, timings, &mut warnings)?;
+        let (k1, sizes) = begin_k1(session, input, key, epoch, timings, &mut warnings)?;
         let id = HISTORIES.fetch_add(1, Ordering::Relaxed);
         let mut history = History {
             key,
@@ -280,9 +280,9 @@ impl History {
             session.holds = Holds::History(id);
         }
         if let Some(state) = restored {
-            history.set_state(state)?;
+            history.restore(state)?;
             // A restored state goes on along its own loads.
-            history.stepped_on = Some(revision);
+            history.stepped_on = Some(epoch);
         }
         Ok((history, warnings))
     }
@@ -314,7 +314,7 @@ impl History {
         self.k1.as_ref().map_or(0, |k| k.first.factorizations)
     }
 
-    /// The contact state to continue from ([`History::set_state`]).
+    /// The contact state to continue from ([`History::restore`]).
     pub fn state(&self) -> StepState {
         if let Some(kept) = self.k1.as_ref().and_then(|k| k.kept.as_ref()) {
             return kept.clone();
@@ -344,7 +344,7 @@ impl History {
     /// under the same constraints) would solve the wrong interface
     /// problem: this history's own factor stays, and the loop updates it to
     /// the state's set.
-    pub fn set_state(&mut self, state: &StepState) -> Result<()> {
+    pub fn restore(&mut self, state: &StepState) -> Result<()> {
         state.fits(self.parts, self.frictional)?;
         if state.is_fresh() {
             // Back before the first step: its set, no slip.
@@ -375,7 +375,7 @@ impl History {
             return Ok(());
         };
         let (state, loads, loads_apart, first) =
-            (self.state(), old.loads, old.loads_apart, old.first);
+            (self.state(), old.loads_epoch, old.loads_apart, old.first);
         let (mut timings, mut warnings) = (Timings::default(), Vec::new());
         let (k1, _) = begin_k1(session, input, self.key, loads, &mut timings, &mut warnings)?;
         let Some(mut k1) = k1 else {
@@ -389,11 +389,11 @@ impl History {
         if loads_apart {
             self.new_loads(session, input, loads, &mut timings)?;
         }
-        self.set_state(&state)
+        self.restore(&state)
     }
 
     /// One load step at factor `t` of the loads and prescribed
-    /// displacements of `input` (revision `revision`), warm-started from
+    /// displacements of `input` (epoch `epoch`), warm-started from
     /// the last step's set. On error the history is as it was (but K₁,
     /// which the caller rebuilds where it is not [`History::intact`]). A
     /// warm start that leads nowhere (a free body, a cycle: unloading to
@@ -415,20 +415,20 @@ impl History {
     ) -> Result<Stepped> {
         check_load_factor(at.t)?;
         super::ensure_unknowns(&session.dofs)?;
-        let stepped = match self.on_path(at.revision) {
+        let stepped = match self.on_path(at.epoch) {
             true => self.sub_steps(session, input, at, timings)?,
             false => self.step_once(session, input, at, timings)?,
         };
-        self.stepped_on = Some(at.revision);
+        self.stepped_on = Some(at.epoch);
         Ok(stepped)
     }
 
-    /// Whether the next step, on the loads of `revision`, starts on the
+    /// Whether the next step, on the loads of `epoch`, starts on the
     /// straight path to its own factor: from no load at all, or from a
     /// step on the same loads, at a known factor.
-    fn on_path(&self, revision: u64) -> bool {
+    fn on_path(&self, epoch: u64) -> bool {
         let at = self.friction.at;
-        !self.friction.anchors.is_empty() && at.is_finite() && self.stepped_on == Some(revision)
+        !self.friction.anchors.is_empty() && at.is_finite() && self.stepped_on == Some(epoch)
             || self.frictional > 0 && at == 0.0
     }
 
@@ -469,7 +469,7 @@ impl History {
                     if again && (self.intact(session) || self.rebuild(session, input).is_ok()) {
                         continue;
                     }
-                    self.back_to(&before)?;
+                    self.restore_or_keep(&before)?;
                     return Err(e);
                 }
             };
@@ -478,12 +478,12 @@ impl History {
             let closing = closing_in(session, &stepped.before.friction, &stepped.outcome);
             if let Some(target) = plan.stop_at(start, closing) {
                 // Back to the start, and on to where the first closes.
-                self.set_state(&stepped.before)?;
+                self.restore(&stepped.before)?;
                 plan.target = target;
                 continue;
             }
             if stepped.ended && plan.target != at.t {
-                self.back_to(&before)?;
+                self.restore_or_keep(&before)?;
                 return Err(Error::new(
                     Status::NotConverged,
                     format!(
@@ -503,13 +503,13 @@ impl History {
     /// Back at `before` after a failed step: its state restored, or, where
     /// the failure lost K₁'s condensed state, kept for the rebuild that
     /// makes K₁ again ([`History::rebuild`]).
-    fn back_to(&mut self, before: &StepState) -> Result<()> {
+    fn restore_or_keep(&mut self, before: &StepState) -> Result<()> {
         match self.k1.as_mut() {
             Some(k1) if k1.state.is_none() => {
                 k1.kept = Some(before.clone());
                 Ok(())
             }
-            _ => self.set_state(before),
+            _ => self.restore(before),
         }
     }
 
@@ -542,7 +542,7 @@ impl History {
         if self.k1.is_none() {
             return self.step_afresh(session, input, at, timings);
         }
-        let old_loads = self.loads_of(at.revision, session, input, timings)?;
+        let old_loads = self.loads_of(at.epoch, session, input, timings)?;
         let mut stepped = self.step_condensed(session, input, at, false, timings);
         let retry = match &stepped {
             Err(e) => at.retry && matches!(e.status(), Status::Singular | Status::NotConverged),
@@ -556,37 +556,37 @@ impl History {
         }
         if stepped.is_err() {
             if let (Some(old), Some(k1)) = (old_loads, self.k1.as_mut()) {
-                (k1.x_load, k1.rhs_body, k1.loads) = old;
+                (k1.x_load, k1.rhs_body, k1.loads_epoch) = old;
             }
         }
         stepped
     }
 
-    /// Makes x_load that of the loads of revision `revision` if it is not:
+    /// Makes x_load that of the loads of epoch `epoch` if it is not:
     /// gives the loads it replaced (x_load, the bodies' right-hand side,
-    /// their revision), which a failed step puts back.
+    /// their epoch), which a failed step puts back.
     #[allow(clippy::type_complexity)]
     fn loads_of(
         &mut self,
-        revision: u64,
+        epoch: u64,
         session: &mut Session,
         input: &Input<'_>,
         timings: &mut Timings,
     ) -> Result<Option<(Vec<f64>, Vec<f64>, u64)>> {
-        if self.k1.as_ref().is_none_or(|k| k.loads == revision) {
+        if self.k1.as_ref().is_none_or(|k| k.loads_epoch == epoch) {
             return Ok(None);
         }
-        self.new_loads(session, input, revision, timings).map(Some)
+        self.new_loads(session, input, epoch, timings).map(Some)
     }
 
     /// New loads on the same stiffness: x_load anew (one sparse solve).
     /// Returns the loads replaced (x_load, the bodies' right-hand side and
-    /// their revision).
+    /// their epoch).
     fn new_loads(
         &mut self,
         session: &Session,
         input: &Input<'_>,
-        revision: u64,
+        epoch: u64,
         timings: &mut Timings,
     ) -> Result<(Vec<f64>, Vec<f64>, u64)> {
         let k1 = self.k1.as_mut().expect("a condensed history");
@@ -627,7 +627,7 @@ impl History {
         timings.solve += t0.elapsed().as_secs_f64();
         let x_load = std::mem::replace(&mut k1.x_load, a);
         let old_rhs = std::mem::replace(&mut k1.rhs_body, rhs_body);
-        let loads = std::mem::replace(&mut k1.loads, revision);
+        let loads = std::mem::replace(&mut k1.loads_epoch, epoch);
         k1.loads_apart = true;
         Ok((x_load, old_rhs, loads))
     }
@@ -771,7 +771,7 @@ impl History {
         if let Some(mut state) = state {
             state.x1 = Vec::new();
             self.give_back(holds, Box::new(state));
-            if let Err(e) = self.set_state(before) {
+            if let Err(e) = self.restore(before) {
                 return e;
             }
         }
@@ -812,7 +812,7 @@ impl History {
         let outcome = match outcome {
             Ok(outcome) => outcome,
             Err(e) => {
-                self.set_state(&before)?;
+                self.restore(&before)?;
                 return Err(e);
             }
         };
@@ -874,7 +874,8 @@ impl History {
             k_norm: &|| norm_inf(pattern, matrix.values),
             rhs: &rhs,
             // K₁'s right-hand side of a history holds no friction load.
-            friction: (&pending.friction, &[]),
+            friction_loads: &pending.friction_loads,
+            reference_friction_loads: &[],
         };
         let state = (&k1.condensed().system, &k1.condensed().reference[..]);
         let (mut x, mut omega) = expand(target, chol, state.0, state.1, x1, pending.ui.clone())?;
@@ -936,7 +937,7 @@ pub(crate) fn path_start(
     let (mut history, _) = History::begin(session, input, key, 0, None, timings)?;
     let at = Along {
         t: 1.0,
-        revision: 0,
+        epoch: 0,
         options,
         retry: true,
     };
@@ -945,14 +946,14 @@ pub(crate) fn path_start(
     Ok(Some((history.state(), factorizations)))
 }
 
-/// Where a step goes: its load factor, the problem revision whose loads
+/// Where a step goes: its load factor, the problem epoch whose loads
 /// it applies, and its contact options.
 #[derive(Clone, Copy)]
 pub(crate) struct Along<'o> {
     /// The load factor.
     pub t: f64,
-    /// The problem revision of the loads.
-    pub revision: u64,
+    /// The problem epoch of the loads.
+    pub epoch: u64,
     /// The contact options.
     pub options: &'o ContactOptions,
     /// Whether a step that leads nowhere from the last step's set (a free
@@ -1133,7 +1134,7 @@ pub(crate) fn check_load_factor(t: f64) -> Result<()> {
     )))
 }
 
-/// K₁ of a history for `key` at problem revision `revision`: the bodies'
+/// K₁ of a history for `key` at problem epoch `epoch`: the bodies'
 /// part at factor 1 with the initial constraints, factorised with the
 /// interface unknowns last, its condensed interface system and its two
 /// solutions; `None` where the interface is not condensed (each step then
@@ -1142,7 +1143,7 @@ fn begin_k1(
     session: &mut Session,
     input: &Input<'_>,
     key: Key,
-    revision: u64,
+    epoch: u64,
     timings: &mut Timings,
     warnings: &mut Vec<String>,
 ) -> Result<(Option<K1>, Sizes)> {
@@ -1191,7 +1192,7 @@ fn begin_k1(
     timings.interface += t0.elapsed().as_secs_f64();
     info.interface_unknowns = condensed.len();
     let k1 = K1 {
-        loads: revision,
+        loads_epoch: epoch,
         reference: reference.clone(),
         state: Some(CondensedState {
             system: condensed,
@@ -1199,7 +1200,7 @@ fn begin_k1(
             reference: reference.clone(),
             factor_active: reference,
             // K₁'s right-hand side holds no friction load.
-            friction_ref: Vec::new(),
+            reference_friction_loads: Vec::new(),
         }),
         x_load,
         x_gap,
@@ -1424,7 +1425,7 @@ fn on_interface(
     let AtInterface {
         ui,
         active,
-        friction,
+        friction_loads: friction,
         history,
         predicted,
     } = settled;
@@ -1446,7 +1447,7 @@ fn on_interface(
         t,
         ui,
         active,
-        friction,
+        friction_loads: friction,
     };
     Ok(Outcome {
         u: Field::Pending(pending),
@@ -1475,7 +1476,7 @@ fn on_full_solve(
         mesh: step.mesh,
         pairs: step.pairs,
     };
-    let (active, friction) = (settled.active, &settled.friction);
+    let (active, friction) = (settled.active, &settled.friction_loads);
     let s = settled::settle(step.set, active, friction, |i| x[i], paired, &mut warnings)?;
     let contact = contact_outcome(s, settled.history, info, settled.predicted);
     let u = step.dofs.expand(&settled.x, step.prescribed);
@@ -1500,7 +1501,7 @@ fn step_rhs(set: &Constraints<'_>, rhs_body: &[f64], pending: &Pending) -> Vec<f
             }
         }
     }
-    set.add_friction_loads(&pending.friction, &[], |i, v| rhs[i] += v);
+    set.add_friction_loads(&pending.friction_loads, &[], |i, v| rhs[i] += v);
     rhs
 }
 

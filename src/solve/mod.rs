@@ -365,7 +365,7 @@ pub(crate) fn solve_contact(
         mesh,
         pairs: input.pairs,
     };
-    let (active, friction) = (settled.active, &settled.friction);
+    let (active, friction) = (settled.active, &settled.friction_loads);
     let s = settled::settle(&set, active, friction, |i| x[i], paired, &mut warnings)?;
     let contact = contact_outcome(s, settled.history, info, settled.predicted);
     let u = dofs.expand(&settled.x, input.prescribed);

@@ -101,7 +101,7 @@ pub(crate) enum Holds {
     /// Nothing another call relies on (a call is assembling or
     /// factorising).
     Nothing,
-    /// The final system of the solve of this problem revision.
+    /// The final system of the solve of this problem epoch.
     Solve(u64),
     /// K₁ of the load history of this number.
     History(u64),
@@ -145,7 +145,7 @@ impl Session {
     }
 
     /// The structure epoch it was built for.
-    pub fn structure(&self) -> u64 {
+    pub fn structure_epoch(&self) -> u64 {
         self.structure
     }
 
@@ -167,10 +167,9 @@ impl Session {
             .assemble_body(elements, target, f_ext, prescribed)
     }
 
-    /// The final matrix of the solve of problem revision `revision`.
-    pub fn system_matrix(&self, revision: u64) -> Option<SystemMatrix<'_>> {
-        (self.holds == Holds::Solve(revision))
-            .then(|| self.system.matrix(&self.pattern, &self.dofs))
+    /// The final matrix of the solve of problem epoch `epoch`.
+    pub fn system_matrix(&self, epoch: u64) -> Option<SystemMatrix<'_>> {
+        (self.holds == Holds::Solve(epoch)).then(|| self.system.matrix(&self.pattern, &self.dofs))
     }
 }
 
