@@ -44,8 +44,7 @@ fn one_step_of_a_proportional_load_sticks_everywhere() {
 
 #[test]
 fn one_five_twenty_and_a_hundred_steps_give_one_shear() {
-    // Measured: 3.3e-6, 6.4e-7, 1.3e-7 μp₀ from the hundred steps' (a/16);
-    // before sub-steps, 0.98, 0.31, 0.13 of the cylinder.
+    // Measured: 3.3e-6, 6.4e-7, 1.3e-7 μp₀ from the hundred steps' (a/16).
     let runs: Vec<CombinedResult> = [1, 5, 20, 100]
         .iter()
         .map(|&n| combined(16.0, STICKING, n))

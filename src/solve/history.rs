@@ -918,6 +918,9 @@ pub(crate) fn path_start(
     options: &ContactOptions,
     timings: &mut Timings,
 ) -> Result<Option<(StepState, usize)>> {
+    if input.pairs.iter().all(|p| p.friction == 0.0) {
+        return Ok(None);
+    }
     let forms = {
         let set = constraints(
             input,
