@@ -159,3 +159,66 @@ fn every_pair_measures_every_point_along_the_first_sides_normal() {
     scene.model.set_friction(0, 0.3).unwrap();
     assert_eq!(b(&scene), frictionless);
 }
+
+/// ‖q_h − q_MD‖/‖q_MD‖ over the nodes of step `i` of `out`, unloaded from
+/// Q*/(μP) = `from` to `to` (Mindlin–Deresiewicz, Johnson §7.2).
+fn unloading_error(out: &TfemCattaneo, i: usize, from: f64, to: f64) -> f64 {
+    use tfem::scenes::cattaneo::{mindlin_deresiewicz, stick_half_width};
+    let s = &out.steps[i];
+    let (a, p0, mu) = (s.analytic.a, s.analytic.p0, CattaneoMindlin::default().mu);
+    let (c_star, c_back) = (
+        stick_half_width(a, from),
+        stick_half_width(a, (from - to) / 2.0),
+    );
+    let (mut off, mut size) = (0.0, 0.0);
+    for &(x, _, q) in &s.traction {
+        let exact = mindlin_deresiewicz(a, c_star, c_back, p0, mu, x);
+        off += (q - exact).powi(2);
+        size += exact.powi(2);
+    }
+    (off / size).sqrt()
+}
+
+#[test]
+fn the_unloaded_shear_converges_to_mindlin_deresiewicz() {
+    // Loaded to Q/(μP) = 0.6, unloaded to 0.3: reverse slip at the edges.
+    // Measured ‖q_h − q_MD‖/‖q_MD‖: 0.37, 0.127, 0.099 at a/8, a/16, a/32
+    // (the loading step to 0.6: 0.12, 0.061, 0.033).
+    let e: Vec<f64> = [8.0, 16.0, 32.0]
+        .iter()
+        .map(|&k| unloading_error(&solve(k, 1.0, &[0.6, 0.3]), 2, 0.6, 0.3))
+        .collect();
+    assert!(e[2] < 0.6 * e[0] && e[2] < 0.15, "{e:?}");
+}
+
+#[test]
+fn unloading_to_a_shear_leaves_another_traction_than_loading_to_it() {
+    // Mindlin–Deresiewicz against Cattaneo–Mindlin at Q/(μP) = 0.3: the
+    // path matters. Measured at a/32: the two tractions differ by up to
+    // 0.713 μp₀, Johnson's by 0.696 μp₀.
+    use tfem::scenes::cattaneo::{cattaneo_mindlin, mindlin_deresiewicz, stick_half_width};
+    let unloaded = solve(32.0, 1.0, &[0.6, 0.3]);
+    let loaded = &equal_moduli()[2];
+    let (s_u, s_l) = (&unloaded.steps[2], &loaded.steps[2]);
+    let (a, p0, mu) = (
+        s_u.analytic.a,
+        s_u.analytic.p0,
+        CattaneoMindlin::default().mu,
+    );
+    let (c_star, c_back, c_load) = (
+        stick_half_width(a, 0.6),
+        stick_half_width(a, 0.15),
+        stick_half_width(a, 0.3),
+    );
+    let mut measured = 0.0f64;
+    let mut exact = 0.0f64;
+    for (u, l) in s_u.traction.iter().zip(&s_l.traction) {
+        measured = measured.max((u.2 - l.2).abs() / (mu * p0));
+        let md = mindlin_deresiewicz(a, c_star, c_back, p0, mu, u.0);
+        exact = exact.max((md - cattaneo_mindlin(a, c_load, p0, mu, u.0)).abs() / (mu * p0));
+    }
+    assert!(
+        (measured - exact).abs() <= 0.2 * exact,
+        "{measured} against {exact}"
+    );
+}

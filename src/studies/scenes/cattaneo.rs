@@ -101,6 +101,15 @@ pub fn cattaneo_mindlin(a: f64, c: f64, p0: f64, mu: f64, x: f64) -> f64 {
     }
 }
 
+/// The Mindlin–Deresiewicz shear traction after unloading from Q* to
+/// Q < Q* at constant P (Johnson, *Contact Mechanics*, §7.2; β = 0): the
+/// loading's Cattaneo–Mindlin traction of stick half-width `c_star`, less
+/// twice that of a load (Q* − Q)/2, of stick half-width `c_back` =
+/// a√(1 − (Q* − Q)/(2μP)): reverse slip for c_back < |x| < a.
+pub fn mindlin_deresiewicz(a: f64, c_star: f64, c_back: f64, p0: f64, mu: f64, x: f64) -> f64 {
+    cattaneo_mindlin(a, c_star, p0, mu, x) - 2.0 * cattaneo_mindlin(a, c_back, p0, mu, x)
+}
+
 /// Parameters of the Cattaneo–Mindlin scene. [`Default`]: R = 1,
 /// a = 0.005R, equal steel-like bodies (β = 0), μ = 0.3, h = a/16, the
 /// normal load in one step.
