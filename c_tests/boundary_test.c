@@ -978,6 +978,26 @@ static void a_body_held_sideways_by_friction_alone_is_pressed_and_sheared_in_one
   tfem_destroy(s5);
 }
 
+/* Found by the API fuzzer: a frictional step on loads changed since the
+ * step before (no straight path between them: taken whole), reverted and
+ * taken again, went in sub-steps the second time (the history had
+ * forgotten which loads its state came from) and gave other results. */
+static void a_frictional_step_on_new_loads_repeats_bit_for_bit_after_a_revert(void) {
+  tfem_model *m = sheared_on_a_curved_gap();
+  tfem_contact_report first, again;
+  CHECK(tfem_step(m, 0.5, NULL, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_add_traction(m, 8, 0.5, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_step(m, 1.0, NULL, &first) == TFEM_STATUS_OK);
+  static double u[2 * 4096], v[2 * 4096];
+  CHECK(tfem_get_displacements(m, u, 2 * (size_t)S.nn) == TFEM_STATUS_OK);
+  CHECK(tfem_revert_step(m) == TFEM_STATUS_OK);
+  CHECK(tfem_step(m, 1.0, NULL, &again) == TFEM_STATUS_OK);
+  CHECK(tfem_get_displacements(m, v, 2 * (size_t)S.nn) == TFEM_STATUS_OK);
+  CHECK(first.iterations == again.iterations);
+  CHECK(memcmp(u, v, 2 * (size_t)S.nn * sizeof(double)) == 0);
+  tfem_destroy(m);
+}
+
 static void a_load_history_steps_reverts_and_restarts_bit_for_bit(void) {
   tfem_model *m = two_blocks();
   tfem_contact_report rep;
@@ -2953,6 +2973,7 @@ int main(int argc, char **argv) {
   a_gmsh_physical_point_group_is_named_in_a_warning();
   a_rigid_punchs_nominal_modulus_does_not_set_the_penalty();
   a_body_held_sideways_by_friction_alone_is_pressed_and_sheared_in_one_solve();
+  a_frictional_step_on_new_loads_repeats_bit_for_bit_after_a_revert();
   a_rigid_body_modelled_by_a_huge_modulus_has_its_reactions_warned_about();
   nothing_to_solve_is_said_in_words();
   a_warning_of_any_length_is_read_whole_by_its_size();

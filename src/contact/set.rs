@@ -126,6 +126,10 @@ pub struct FrictionState {
     /// The load factor of the step it ended (0 before the first; NaN
     /// where not known: a state restored from an older version's bytes).
     pub at: f64,
+    /// A fingerprint of the loads that step applied (forces and prescribed
+    /// values at factor 1): a step on the same loads goes on along the
+    /// straight path from `at` (0: not known).
+    pub load_key: u64,
 }
 
 /// What a set is made over: its nodes' coordinates and its elements of B,
@@ -595,6 +599,7 @@ impl<'a> ContactSet<'a> {
                 loads: c.to_vec(),
                 openings: Vec::with_capacity(n),
                 at: f64::NAN,
+                load_key: 0,
             },
             closed: Vec::new(),
         };

@@ -45,7 +45,9 @@ pub(super) fn encode(state: &StepState, fingerprint: u64) -> Vec<u8> {
         // Where the path stands, for the sub-steps of the next step: the
         // load factor and every element's opening.
         if f.openings.len() == f.anchors.len() {
-            for v in std::iter::once(&f.at).chain(&f.openings) {
+            out.extend_from_slice(&f.at.to_le_bytes());
+            out.extend_from_slice(&f.load_key.to_le_bytes());
+            for v in &f.openings {
                 out.extend_from_slice(&v.to_le_bytes());
             }
         }
@@ -162,9 +164,9 @@ fn header(r: &mut Reader<'_>, fingerprint: u64) -> Result<Header> {
 
 /// The friction state after the factor, when the bytes go on
 /// (frictional histories write it): each element's anchor, then its load,
-/// then, where the bytes still go on, the load factor of the state and
-/// each element's opening (absent from an older version's bytes: the
-/// load factor is then not known, NaN).
+/// then, where the bytes still go on, the load factor of the state, the
+/// fingerprint of its loads and each element's opening (absent from an
+/// older version's bytes: the load factor is then not known, NaN).
 fn friction_tail(r: &mut Reader<'_>) -> Result<crate::contact::FrictionState> {
     let mut friction = crate::contact::FrictionState::default();
     if r.at < r.bytes.len() {
@@ -179,10 +181,10 @@ fn friction_tail(r: &mut Reader<'_>) -> Result<crate::contact::FrictionState> {
         }
         friction.at = f64::NAN;
         if r.at < r.bytes.len() {
-            let mut path = r.f64s(f.checked_add(1).ok_or_else(|| bad("size"))?)?;
-            friction.openings = path.split_off(1);
-            friction.at = path[0];
-            if !path[0].is_finite() || !friction.openings.iter().all(|x| x.is_finite()) {
+            friction.at = r.f64s(1)?[0];
+            friction.load_key = r.word()?;
+            friction.openings = r.f64s(f)?;
+            if !friction.at.is_finite() || !friction.openings.iter().all(|x| x.is_finite()) {
                 return Err(bad("a friction value is not finite"));
             }
         }

@@ -181,11 +181,9 @@ pub(crate) struct History {
     frictional: usize,
     /// K₁ and its condensed interface, where the interface is condensed.
     k1: Option<K1>,
-    /// The problem epoch whose loads the last step applied (`None`
-    /// before the first): a step on the same loads follows the straight
-    /// path from the last step's factor to its own, which sub-steps can
-    /// stop on ([`History::step`]).
-    stepped_on: Option<u64>,
+    /// The fingerprint of the loads of a problem epoch
+    /// ([`History::load_key`]), kept for that epoch's steps.
+    load_key: Option<(u64, u64)>,
 }
 
 /// K₁ of a history that condenses its interface.
@@ -274,15 +272,13 @@ impl History {
             parts: sizes.parts,
             frictional: sizes.frictional,
             k1,
-            stepped_on: None,
+            load_key: None,
         };
         if history.k1.is_some() {
             session.holds = Holds::History(id);
         }
         if let Some(state) = restored {
             history.restore(state)?;
-            // A restored state goes on along its own loads.
-            history.stepped_on = Some(epoch);
         }
         Ok((history, warnings))
     }
@@ -415,21 +411,39 @@ impl History {
     ) -> Result<Stepped> {
         check_load_factor(at.t)?;
         super::ensure_unknowns(&session.dofs)?;
-        let stepped = match self.on_path(at.epoch) {
-            true => self.sub_steps(session, input, at, timings)?,
-            false => self.step_once(session, input, at, timings)?,
-        };
-        self.stepped_on = Some(at.epoch);
-        Ok(stepped)
+        match self.on_path(input, at.epoch) {
+            true => self.sub_steps(session, input, at, timings),
+            false => self.step_once(session, input, at, timings),
+        }
     }
 
-    /// Whether the next step, on the loads of `epoch`, starts on the
-    /// straight path to its own factor: from no load at all, or from a
-    /// step on the same loads, at a known factor.
-    fn on_path(&self, epoch: u64) -> bool {
-        let at = self.friction.at;
-        !self.friction.anchors.is_empty() && at.is_finite() && self.stepped_on == Some(epoch)
-            || self.frictional > 0 && at == 0.0
+    /// Whether a frictional step on the loads of `input` (problem epoch
+    /// `epoch`) starts on the straight path to its own factor: from no
+    /// load at all, or from a step on the same loads (the same
+    /// fingerprint, in this model or the one a restored state came from),
+    /// at a known factor.
+    fn on_path(&mut self, input: &Input<'_>, epoch: u64) -> bool {
+        let (at, key) = (self.friction.at, self.friction.load_key);
+        let frictional = self.frictional > 0;
+        frictional && at == 0.0
+            || frictional
+                && !self.friction.anchors.is_empty()
+                && at.is_finite()
+                && key == self.load_key(input, epoch)
+    }
+
+    /// The fingerprint of the loads of `input` (forces and prescribed
+    /// values at factor 1), computed once per problem epoch `epoch`.
+    fn load_key(&mut self, input: &Input<'_>, epoch: u64) -> u64 {
+        if let Some((_, key)) = self.load_key.filter(|&(e, _)| e == epoch) {
+            return key;
+        }
+        let values = input.f_ext.iter().chain(input.prescribed);
+        let key = values.fold(0xcbf2_9ce4_8422_2325u64, |h, v| {
+            (h ^ v.to_bits()).wrapping_mul(0x100_0000_01b3)
+        });
+        self.load_key = Some((epoch, key));
+        key
     }
 
     /// A frictional step to `at.t` in sub-steps: each goes from the
@@ -525,6 +539,7 @@ impl History {
         let stepped = self.step_at(session, input, at, timings)?;
         if !self.friction.anchors.is_empty() {
             self.friction.at = at.t;
+            self.friction.load_key = self.load_key(input, at.epoch);
         }
         Ok(stepped)
     }
