@@ -94,3 +94,33 @@ fn a_contact_solve_gives_the_one_step_history() {
     assert!(d <= 1e-6, "{d:.3e} μp₀");
     assert_eq!(solve.slipping, 0);
 }
+
+#[test]
+fn a_frictional_history_unloads_to_nothing_in_bounded_sub_steps() {
+    // Unloading to zero passes through no contact at all: the warm start
+    // leads nowhere, sub-steps halve, and the rest of the step is then
+    // tried from the initial set once, as a step of its own would be.
+    let base = CattaneoMindlin::default();
+    let cm = CattaneoMindlin {
+        mesh_size: base.half_width / 16.0,
+        ..base
+    };
+    let mut scene = cm.build().expect("scene");
+    let load = CombinedLoad {
+        ratio: STICKING,
+        steps: 1,
+    };
+    scene.combined(&cm, load).expect("loaded");
+    let report = scene
+        .model
+        .step(0.0, &tfem::ContactOptions::default())
+        .expect("unloaded");
+    assert!(
+        report.iterations < 10_000,
+        "{} iterations",
+        report.iterations
+    );
+    let f = scene.model.contact_forces().expect("forces");
+    let largest = f.iter().map(|v| v[0].hypot(v[1])).fold(0.0, f64::max);
+    assert_eq!(largest, 0.0);
+}

@@ -464,22 +464,18 @@ impl History {
     ) -> Result<Stepped> {
         let before = self.state();
         let mut plan = SubSteps::new(before.friction.at, at.t, self.frictional);
-        let mut last_resort = false;
         loop {
             let start = self.friction.at;
+            plan.attempts += 1;
             let target = Along {
                 t: plan.target,
-                retry: last_resort,
+                retry: std::mem::take(&mut plan.retry),
                 ..*at
             };
             let stepped = match self.step_once(session, input, &target, timings) {
                 Ok(stepped) => stepped,
                 Err(e) => {
-                    // Halved, or, once halving is done, tried from the
-                    // initial set as a step of its own would be.
-                    let halved = !last_resort && plan.halve(start, &e);
-                    last_resort = !halved && !last_resort && e.status() != Status::NumericalFailure;
-                    let again = halved || last_resort;
+                    let again = plan.after_failure(start, &e);
                     if again && (self.intact(session) || self.rebuild(session, input).is_ok()) {
                         continue;
                     }
@@ -487,7 +483,6 @@ impl History {
                     return Err(e);
                 }
             };
-            last_resort = false;
             plan.iterations += iterations_of(&stepped.outcome);
             let closing = closing_in(session, &stepped.before.friction, &stepped.outcome);
             if let Some(target) = plan.stop_at(start, closing) {
@@ -995,6 +990,15 @@ struct SubSteps {
     cap: usize,
     /// Halvings in a row of a failing sub-step.
     halvings: usize,
+    /// Sub-steps tried, accepted or not.
+    attempts: usize,
+    /// How many a step tries before it stops locating or halving.
+    budget: usize,
+    /// Whether the next sub-step, should it lead nowhere from the last
+    /// set, is tried again from the initial set.
+    retry: bool,
+    /// Whether the step has tried its rest from the initial set.
+    retried: bool,
     /// Active-set iterations of every sub-step.
     iterations: usize,
 }
@@ -1010,6 +1014,10 @@ impl SubSteps {
             closings: 0,
             cap: MAX_SUB_STEPS.max(4 * frictional),
             halvings: 0,
+            attempts: 0,
+            budget: 8 * MAX_SUB_STEPS.max(4 * frictional),
+            retry: false,
+            retried: false,
             iterations: 0,
         }
     }
@@ -1025,7 +1033,7 @@ impl SubSteps {
     fn stop_at(&mut self, start: f64, closing: Closing) -> Option<f64> {
         let length = self.target - start;
         let least = (SUB_STEP_LEAST * (self.end - self.first)).abs();
-        if length.abs() <= least || self.closings >= self.cap {
+        if length.abs() <= least || self.closings >= self.cap || self.attempts >= self.budget {
             return None;
         }
         let share = match closing {
@@ -1039,31 +1047,41 @@ impl SubSteps {
         Some(start + share * length)
     }
 
-    /// After a sub-step from `start` failed with `e`: its target halved
-    /// towards `start`, where the failure is one a shorter sub-step can
-    /// avoid (fewer elements closing in it) and the halvings allow.
-    fn halve(&mut self, start: f64, e: &Error) -> bool {
-        let retry = matches!(e.status(), Status::Singular | Status::NotConverged);
-        if !retry || self.halvings >= MAX_HALVINGS || self.target == start {
+    /// After a sub-step from `start` failed with `e`: whether to go on,
+    /// and how. Where a shorter sub-step can avoid the failure (fewer
+    /// elements closing in it) and the halvings and the budget allow, its
+    /// target is halved towards `start`; else, once per step, the whole
+    /// rest of the step is tried from the initial set, as a step of its own
+    /// would be; else the failure stands.
+    fn after_failure(&mut self, start: f64, e: &Error) -> bool {
+        if !matches!(e.status(), Status::Singular | Status::NotConverged) {
             return false;
         }
-        self.halvings += 1;
-        self.target = start + 0.5 * (self.target - start);
+        if self.halvings < MAX_HALVINGS && self.target != start && self.attempts < self.budget {
+            self.halvings += 1;
+            self.target = start + 0.5 * (self.target - start);
+            return true;
+        }
+        if self.retried {
+            return false;
+        }
+        (self.retried, self.retry, self.target) = (true, true, self.end);
         true
     }
 
     /// The step's outcome: the last sub-step's, with the state `before`
     /// the whole step, the iterations of all, and a warning where the cap
-    /// stopped the locating.
+    /// or the budget stopped the locating.
     fn finish(&self, mut stepped: Stepped, before: StepState) -> Stepped {
         if let Some(c) = stepped.outcome.contact.as_mut() {
             c.report.iterations = self.iterations;
         }
-        if self.closings >= self.cap {
+        if self.closings >= self.cap || self.attempts >= self.budget {
             stepped.outcome.warnings.push(format!(
-                "contact formed at more than {} points along this load step: the elements \
-                 closing after those carry no shear until the step's end; split the step",
-                self.cap
+                "this load step stopped locating where contact forms along it after {} \
+                 closings in {} sub-steps: the elements closing later carry no shear until the \
+                 step's end; split the step",
+                self.closings, self.attempts
             ));
         }
         stepped.before = before;
