@@ -451,7 +451,9 @@ impl History {
     /// that closes elements open at its start goes back and stops where
     /// the first of them closes, and is accepted there (they stick or slip
     /// from there); one that fails (a body held by nothing yet, a cycle)
-    /// is tried again to half its length; an accepted one short of the end
+    /// is tried again to half its length, and once halving is done the
+    /// rest of the step once from the initial set
+    /// ([`SubSteps::after_failure`]); an accepted one short of the end
     /// is followed by another to the end. Each is a warm-started loop on
     /// the condensed interface. Gives the last, with the state before the
     /// whole step and the iterations of all.
