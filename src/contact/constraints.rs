@@ -318,7 +318,7 @@ fn strip_set<'a>(b: &Build<'a>, anchors: &[f64]) -> Result<ContactSet<'a>> {
     let mesh = b.elements.mesh();
     let soft = pair_material(b);
     let strip = b.discretisation.strip();
-    let laws = element_laws(mesh.index_base(), strip, &soft, mesh.size(), b.options)?;
+    let laws = element_laws(Nodes::of(mesh), strip, &soft, mesh.size(), b.options)?;
     let set = ContactSet::new(
         Nodes::of(mesh),
         strip,

@@ -712,7 +712,13 @@ impl HostContact {
             let [a, b] = self.pairs[pair].sides;
             softer(self.sides[a].1, self.sides[b].1)
         };
-        let laws = element_laws(self.base, &elements, soft, self.size(), &self.options)?;
+        let laws = element_laws(
+            Nodes::new(&self.x, self.base),
+            &elements,
+            soft,
+            self.size(),
+            &self.options,
+        )?;
         let equation = |g: usize| self.equation[g / 2][g % 2];
         let owners = Owners {
             x: std::borrow::Cow::Owned(self.x.clone()),

@@ -32,6 +32,34 @@ pub struct ElementLaw {
     pub d: [[f64; 3]; 3],
     /// Tempered Jacobian T = Jmin = ℓ_e h_c²/λ (docs/method.md §6.11).
     pub t: f64,
+    /// The measure of its section at its centroid, which weighs every
+    /// force and stiffness it gives the bodies (not its pressure or shear,
+    /// which are tractions): 1 in the plane, 2πx̄ for a ring
+    /// ([`crate::fem::material::Section::weight`]; docs/method.md §7).
+    pub weight: f64,
+}
+
+impl ElementLaw {
+    /// The element's stiffness and initial-gap load with its geometry
+    /// `geo` (flattened by [`law_geometry`] where the law wants it),
+    /// weighted by its section's measure.
+    pub fn stiffness(&self, geo: &TriGeometry, el: &ContactElement) -> ContactStiffness {
+        weighted(
+            contact_stiffness(geo, &self.d, el.normal, el.j0, self.t),
+            self.weight,
+        )
+    }
+}
+
+/// A contact element's matrix and load times the measure `w` of its
+/// section (1 in the plane: unchanged to the bit).
+pub fn weighted(mut cs: ContactStiffness, w: f64) -> ContactStiffness {
+    if w != 1.0 {
+        cs.k.iter_mut()
+            .chain(cs.f0.iter_mut())
+            .for_each(|v| *v *= w);
+    }
+    cs
 }
 
 /// The elements of B with everything a solve needs of them.
@@ -198,7 +226,7 @@ impl<'a> ContactSet<'a> {
         let stiffness: Vec<ContactStiffness> = elements
             .iter()
             .enumerate()
-            .map(|(k, el)| contact_stiffness(&geos[k], &laws[k].d, el.normal, el.j0, laws[k].t))
+            .map(|(k, el)| laws[k].stiffness(&geos[k], el))
             .collect();
         let name = |k: usize| format!("contact element {}", k + nodes.base);
         let values = stiffness
@@ -260,7 +288,7 @@ impl<'a> ContactSet<'a> {
             })
             .collect();
         let stick: Vec<ContactStiffness> = (0..n)
-            .map(|k| stick_stiffness(&bt[k], g_over_t[k]))
+            .map(|k| weighted(stick_stiffness(&bt[k], g_over_t[k]), self.laws[k].weight))
             .collect();
         let name = |k: usize| format!("contact element {}", k + self.base);
         let values = stick.iter().flat_map(|cs| cs.k.iter().copied());
@@ -403,9 +431,10 @@ impl<'a> ContactSet<'a> {
             if dc == 0.0 {
                 continue;
             }
+            let w = self.laws[k].weight;
             for (a, e) in self.unknowns[k].iter().enumerate() {
                 if let Some(i) = e {
-                    add(*i, dc * f.bt[k][a]);
+                    add(*i, dc * (w * f.bt[k][a]));
                 }
             }
         }
@@ -483,7 +512,8 @@ impl<'a> ContactSet<'a> {
             e[c] = 1.0;
             self.pressure(k, &e) - p0
         });
-        Some((f.mu[k], f.bt[k], gradient))
+        let w = self.laws[k].weight;
+        Some((f.mu[k], f.bt[k].map(|v| w * v), gradient))
     }
 
     /// The friction load factor of slipping element `k` at element
@@ -802,11 +832,13 @@ impl<'a> ContactSet<'a> {
 }
 
 /// Each element's law: D_c of its pair's softer body `soft(pair)` with
-/// E_c (default: that body's E), and T = ℓ_e h_c²/λ_c (ℓ_e its interface
+/// E_c (default: that body's E), T = ℓ_e h_c²/λ_c (ℓ_e its interface
 /// edge, h_c its pair's shortest one, default λ_c: `size`, the model size;
-/// docs/method.md §6.11). Refuses a T that is not a positive finite number.
+/// docs/method.md §6.11), and the measure of that body's section at the
+/// element's centroid among `nodes`. Refuses a T that is not a positive
+/// finite number.
 pub fn element_laws(
-    base: usize,
+    nodes: Nodes<'_>,
     elements: &[ContactElement],
     soft: impl Fn(usize) -> Material,
     size: f64,
@@ -822,7 +854,9 @@ pub fn element_laws(
             let soft = soft(el.pair);
             let e_c = options.contact_modulus.unwrap_or(soft.young());
             let d = law_matrix(options.law, e_c, &soft, el.normal);
-            ElementLaw { d, t }
+            let x = nodes.corners(&el.nodes).iter().map(|c| c[0]).sum::<f64>() / 3.0;
+            let weight = soft.section().weight(x);
+            ElementLaw { d, t, weight }
         })
         .collect();
     if let Some(k) = laws.iter().position(|p| !(p.t > 0.0 && p.t.is_finite())) {
@@ -830,7 +864,7 @@ pub fn element_laws(
             Status::NumericalFailure,
             format!(
                 "contact element {}: Jmin = ℓ_e h_c²/λ is not a positive finite number",
-                k + base
+                k + nodes.base
             ),
         ));
     }

@@ -8,7 +8,7 @@
 use std::collections::BTreeMap;
 
 use super::constraints::Constraints;
-use super::law::{contact_stiffness, law_geometry, linearised_opening, shear_vector};
+use super::law::{law_geometry, linearised_opening, shear_vector};
 use super::mesh::Nodes;
 use super::mortar::SlaveNode;
 use super::mortar_set::MortarState;
@@ -17,6 +17,7 @@ use super::{ContactElement, ContactLaw, ContactPair, conformity, traction};
 use crate::error::{Error, Result, ensure_finite};
 use crate::fem::element::TriGeometry;
 use crate::fem::element_loop::element_values;
+use crate::fem::material::Section;
 use crate::fem::mesh::Mesh;
 
 /// The settled state of the strip pairs' elements of B.
@@ -206,6 +207,7 @@ impl ContactState {
         &self,
         mesh: &Mesh,
         pairs: &[ContactPair],
+        section: Section,
         only: Option<usize>,
         u: &[f64],
     ) -> Result<Vec<[f64; 2]>> {
@@ -221,7 +223,7 @@ impl ContactState {
         if !elements.is_empty() {
             let f = self.framed_forces(mesh, u);
             let force = |pair: usize, v: usize| f.get(&(pair, v)).copied().unwrap_or([0.0; 2]);
-            for q in traction::interface_tractions(nodes, &elements, force) {
+            for q in traction::interface_tractions(nodes, &elements, section, force) {
                 t[q.node] = [q.pressure, q.shear];
             }
         }
@@ -255,12 +257,12 @@ impl StripState {
         let corners = mesh.corners(&el.nodes);
         let geo = law_geometry(TriGeometry::new(&corners), self.law, el.normal);
         let law = &self.laws[k];
-        let cs = contact_stiffness(&geo, &law.d, el.normal, el.j0, law.t);
+        let cs = law.stiffness(&geo, el);
         match &self.friction {
             Some(fr) => (
                 cs,
                 fr.shear[k] * el.facing_share(),
-                shear_vector(&corners, el.normal),
+                shear_vector(&corners, el.normal).map(|v| law.weight * v),
             ),
             None => (cs, 0.0, [0.0; 6]),
         }

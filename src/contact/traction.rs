@@ -16,7 +16,9 @@
 //! the other side's edges projected on it: B reaches the edge across the
 //! other side's end, which faces nothing past it), and its force is that
 //! pair's. A node on several pairs (where three bodies meet) reads
-//! its pairs' normal forces over their tributaries together.
+//! its pairs' normal forces over their tributaries together. On rings
+//! the forces are the whole ring's and a tributary is ∫ φ_i 2πr ds
+//! ([`Section::span_shares`]).
 
 use std::borrow::Cow;
 use std::collections::{BTreeMap, BTreeSet};
@@ -24,6 +26,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use super::ContactElement;
 use super::mesh::Nodes;
 use crate::fem::element::TriGeometry;
+use crate::fem::material::Section;
 
 /// The contact traction at one interface node.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -182,17 +185,25 @@ fn tributaries(
     nodes: Nodes<'_>,
     elements: &[ContactElement],
     on_a: &[bool],
+    section: Section,
 ) -> BTreeMap<usize, f64> {
     let spans = facing_spans(nodes, elements, on_a);
     let mut tributary = BTreeMap::new();
     for (el, spans) in elements.iter().zip(&spans) {
-        // ∫ (1 − t) and ∫ t over the spans, the hats of the edge's first
-        // and second base nodes; (0, 1) gives ½ and ½ exactly.
+        // ∫ (1 − t) w and ∫ t w over the spans, the hats of the edge's
+        // first and second base nodes; (0, 1) gives ½ and ½ exactly in
+        // the plane.
+        let mut base_x = el
+            .nodes
+            .iter()
+            .filter(|&&v| v != el.apex)
+            .map(|&v| nodes.x[v][0]);
+        let (x0, x1) = (base_x.next().unwrap_or(0.0), base_x.next().unwrap_or(0.0));
         let (mut first, mut second) = (0.0, 0.0);
         for &(lo, hi) in spans {
-            let half_moment = 0.5 * (hi * hi - lo * lo);
-            first += (hi - lo) - half_moment;
-            second += half_moment;
+            let [f, s] = section.span_shares(x0, x1, lo, hi);
+            first += f;
+            second += s;
         }
         let mut base = 0;
         for &v in &el.nodes {
@@ -274,10 +285,11 @@ fn per_pair(
 pub fn nodal_tractions(
     nodes: Nodes<'_>,
     elements: &[ContactElement],
+    section: Section,
     force: impl Fn(usize, usize) -> [f64; 2],
 ) -> Vec<NodalTraction> {
     per_pair(elements, |pair, els| {
-        own_tractions(nodes, els, |v| force(pair, v))
+        own_tractions(nodes, els, section, |v| force(pair, v))
     })
 }
 
@@ -285,12 +297,13 @@ pub fn nodal_tractions(
 fn own_tractions(
     nodes: Nodes<'_>,
     elements: &[ContactElement],
+    section: Section,
     force: impl Fn(usize) -> [f64; 2],
 ) -> Vec<NodalTraction> {
     let on_a = edge_on_side_a(nodes, elements);
     let (side, tributary) = (
         node_sides(elements, &on_a),
-        tributaries(nodes, elements, &on_a),
+        tributaries(nodes, elements, &on_a, section),
     );
     side.iter()
         .map(|(&node, &on_side_a)| {
@@ -375,10 +388,11 @@ fn facing_edges(
 pub fn interface_tractions(
     nodes: Nodes<'_>,
     elements: &[ContactElement],
+    section: Section,
     force: impl Fn(usize, usize) -> [f64; 2],
 ) -> Vec<NodalTraction> {
     per_pair(elements, |pair, els| {
-        both_sides(nodes, els, |v| force(pair, v))
+        both_sides(nodes, els, section, |v| force(pair, v))
     })
 }
 
@@ -386,9 +400,10 @@ pub fn interface_tractions(
 fn both_sides(
     nodes: Nodes<'_>,
     elements: &[ContactElement],
+    section: Section,
     force: impl Fn(usize) -> [f64; 2],
 ) -> Vec<NodalTraction> {
-    let own = own_tractions(nodes, elements, force);
+    let own = own_tractions(nodes, elements, section, force);
     let at: BTreeMap<usize, NodalTraction> = own.iter().map(|q| (q.node, *q)).collect();
     let on_a = edge_on_side_a(nodes, elements);
     let side = node_sides(elements, &on_a);
@@ -565,7 +580,7 @@ mod tests {
         let (x, elements) = strip(&[0.0, 1.0, 2.0, 3.0], &[0.0, 0.75, 1.5]);
         let nodes = Nodes::new(&x, 0);
         let on_a = edge_on_side_a(nodes, &elements);
-        let m = tributaries(nodes, &elements, &on_a);
+        let m = tributaries(nodes, &elements, &on_a, Section::Plane);
         assert_eq!(m[&0], 0.5);
         // ∫ φ over [1, 1.5] of the cut edge: 3/8 to node 1, 1/8 to node 2,
         // the consistent loads the strip puts there (a uniform traction
@@ -582,7 +597,36 @@ mod tests {
     /// The tributaries of a pair's nodes.
     fn tributaries_of(x: &[[f64; 2]], elements: &[ContactElement]) -> BTreeMap<usize, f64> {
         let nodes = Nodes::new(x, 0);
-        tributaries(nodes, elements, &edge_on_side_a(nodes, elements))
+        tributaries(
+            nodes,
+            elements,
+            &edge_on_side_a(nodes, elements),
+            Section::Plane,
+        )
+    }
+
+    #[test]
+    fn on_a_ring_a_tributary_is_the_hat_integrated_against_two_pi_r() {
+        // The strip of the test above with x the radius: node 0 on the
+        // axis takes ∫₀¹ (1 − r) 2πr dr = π/3; node 2 (r = 2) the facing
+        // part [1, 1.5] of its edge, ∫ (r − 1) 2πr dr = π/3 too; node 1
+        // both, ∫₀¹ r·2πr dr + ∫₁^1.5 (2 − r) 2πr dr = 2π/3 + 2π·11/24.
+        let (x, elements) = strip(&[0.0, 1.0, 2.0, 3.0], &[0.0, 0.75, 1.5]);
+        let nodes = Nodes::new(&x, 0);
+        let ring = Section::Revolution {
+            coupling: 1.0,
+            hoop: 3.0,
+        };
+        let m = tributaries(nodes, &elements, &edge_on_side_a(nodes, &elements), ring);
+        let pi = std::f64::consts::PI;
+        let close = |a: f64, b: f64| (a - b).abs() <= 1e-14 * b.abs();
+        assert!(close(m[&0], pi / 3.0), "{}", m[&0]);
+        assert!(close(m[&2], pi / 3.0), "{}", m[&2]);
+        assert!(
+            close(m[&1], 2.0 * pi / 3.0 + 2.0 * pi * 11.0 / 24.0),
+            "{}",
+            m[&1]
+        );
     }
 
     #[test]

@@ -12,6 +12,7 @@
 //! which is finite for J = 0 and J < 0. Plain FEM (tempering off) divides by
 //! |J| (the usual area weight) and refuses J = 0.
 
+use super::material::Section;
 use crate::error::{Error, Result, Status};
 
 /// Adjugate-mapped gradients, Jacobian and size of one P1 triangle.
@@ -241,6 +242,76 @@ pub(crate) fn elasticity_stiffness_into(
         }
     }
     finite_or_error(k.iter().flatten())
+}
+
+/// The tempered stiffness of a body element of section `section` whose
+/// centroid lies at abscissa `x` (docs/method.md §7), into `k`.
+///
+/// In the plane, [`elasticity_stiffness_into`]. For a ring, tfem's rule
+/// K̃ = (J/T) K applied to the axisymmetric element of the one-point rule,
+/// in the adjugate form: with H the hoop row (1/(3x̄) on each u_r) and
+/// D₄ the 4×4 D,
+///
+/// K̃ = 2πx̄ (B̂ + J H)ᵀ D₄ (B̂ + J H) / (2T)
+///   = 2πx̄ B̂ᵀDB̂/(2T) + [2πJ/3 (v eᵀ + e vᵀ) + D_θθ 2πJ²/(9x̄) e eᵀ] / (2T),
+///
+/// v = B̂ᵀ D₄'s hoop column (λ g_i on each node's two unknowns), e the u_r
+/// indicator. A Gram form, so semidefinite for every J; plain FEM for
+/// J ≥ Jmin; at J = 0 the planar tempered element weighted by 2πx̄. Its
+/// hoop terms stay finite up to the axis: |J| ≤ 3x̄ h_e, so J²/x̄ ≤ 9x̄h_e².
+#[inline]
+pub(crate) fn section_stiffness_into(
+    geo: &TriGeometry,
+    d: &[[f64; 3]; 3],
+    section: Section,
+    x: f64,
+    jmin: Jmin,
+    k: &mut [[f64; 6]; 6],
+) -> Result<()> {
+    elasticity_stiffness_into(geo, d, jmin, k)?;
+    let Section::Revolution { coupling, hoop } = section else {
+        return Ok(());
+    };
+    let Some(t) = denominator(geo, jmin)? else {
+        return Ok(());
+    };
+    let w = section.weight(x);
+    for row in k.iter_mut() {
+        for v in row.iter_mut() {
+            *v *= w;
+        }
+    }
+    let tau = std::f64::consts::TAU;
+    let cross = tau * geo.j / 3.0 / (2.0 * t);
+    let ring = match geo.j != 0.0 && x > 0.0 {
+        true => hoop * tau * geo.j * geo.j / (9.0 * x) / (2.0 * t),
+        false => 0.0,
+    };
+    // v: the hoop column of D₄ through B̂, λ (g_x, g_y) at each node.
+    let v: [f64; 6] = std::array::from_fn(|c| coupling * geo.g[c / 2][c % 2]);
+    for a in 0..3 {
+        for c in 0..6 {
+            // Row u_a (e_{2a} = 1) and its mirror column.
+            k[2 * a][c] += cross * v[c];
+            k[c][2 * a] += cross * v[c];
+        }
+        for b in 0..3 {
+            k[2 * a][2 * b] += ring;
+        }
+    }
+    finite_or_error(k.iter().flatten())
+}
+
+/// The hoop strain ε_θθ that [`section_stiffness_into`] reads on a ring
+/// element with centroid abscissa `x`, element values `ue` and tempered
+/// Jacobian `t`: (J/T) ū_r/x̄ (ū_r/x̄ where J ≥ Jmin; 0 on the axis).
+pub fn hoop_strain(geo: &TriGeometry, x: f64, t: f64, ue: &[f64; 6]) -> f64 {
+    if x <= 0.0 {
+        return 0.0;
+    }
+    let mean = (ue[0] + ue[2] + ue[4]) / 3.0;
+    let ratio = if geo.j == t { 1.0 } else { geo.j / t };
+    ratio * mean / x
 }
 
 /// Scalar Laplacian K_ij = κ g_i·g_j / (2T). Returns zeros for a point

@@ -6,8 +6,8 @@
 
 use std::collections::BTreeMap;
 
-use super::element::{Jmin, Tempering, TriGeometry, elasticity_stiffness_into};
-use super::material::Material;
+use super::element::{Jmin, Tempering, TriGeometry, section_stiffness_into};
+use super::material::{Material, Section};
 use super::mesh::Mesh;
 use crate::error::{Error, Result};
 
@@ -31,8 +31,12 @@ pub struct ElementView<'a> {
     pub body: i32,
     /// Its geometry in the initial configuration.
     pub geo: TriGeometry,
-    /// Its body's constitutive matrix.
+    /// Its body's constitutive matrix (in-plane).
     pub d: [[f64; 3]; 3],
+    /// What it stands for in 3D: a slab or a ring.
+    pub section: Section,
+    /// The abscissa of its centroid (a ring's mean radius).
+    pub x: f64,
     /// Its resolved tempering.
     pub jmin: Jmin,
 }
@@ -80,26 +84,30 @@ impl<'a> ElementLoop<'a> {
     ) -> std::result::Result<(), E> {
         let mesh = self.mesh;
         // D changes only between bodies, which are mostly contiguous.
-        let mut d_cache: Option<(i32, [[f64; 3]; 3])> = None;
+        let mut d_cache: Option<(i32, [[f64; 3]; 3], Section)> = None;
         for (e, (tri, &body)) in mesh.triangles().iter().zip(mesh.body_of()).enumerate() {
             let Some(selected) = select(e, tri) else {
                 continue;
             };
-            let d = match d_cache {
-                Some((b, d)) if b == body => d,
+            let (d, section) = match d_cache {
+                Some((b, d, section)) if b == body => (d, section),
                 _ => {
-                    let d = self.materials[&body].d_matrix();
-                    d_cache = Some((body, d));
-                    d
+                    let material = &self.materials[&body];
+                    let (d, section) = (material.d_matrix(), material.section());
+                    d_cache = Some((body, d, section));
+                    (d, section)
                 }
             };
-            let geo = TriGeometry::new(&mesh.corners(tri));
+            let corners = mesh.corners(tri);
+            let geo = TriGeometry::new(&corners);
             let view = ElementView {
                 index: e,
                 nodes: tri,
                 body,
                 geo,
                 d,
+                section,
+                x: (corners[0][0] + corners[1][0] + corners[2][0]) / 3.0,
                 jmin: self.jmin(&geo),
             };
             visit(&view, selected)?;
@@ -116,7 +124,7 @@ impl<'a> ElementLoop<'a> {
     /// element and its body.
     #[inline]
     pub fn stiffness_into(&self, el: &ElementView<'_>, k: &mut [[f64; 6]; 6]) -> Result<()> {
-        elasticity_stiffness_into(&el.geo, &el.d, el.jmin, k).map_err(|err| {
+        section_stiffness_into(&el.geo, &el.d, el.section, el.x, el.jmin, k).map_err(|err| {
             let what = format!("{} (body {})", self.mesh.triangle_name(el.index), el.body);
             Error::new(err.status(), format!("{what}: {}", err.message()))
         })

@@ -4,6 +4,7 @@
 use std::collections::BTreeMap;
 
 use super::element::TriGeometry;
+use super::material::Section;
 use super::mesh::Mesh;
 use crate::error::{Error, Result};
 
@@ -51,12 +52,15 @@ impl Loads {
         &self.edge
     }
 
-    /// The consistent nodal vector of the loads on `mesh` (2 values per
-    /// node: f_x, f_y): each edge load split equally between the edge's
-    /// nodes, body forces split equally between the triangle's corners.
-    /// Fails, naming the edge, if a pressure acts on an edge without an
-    /// outward normal (which [`check_loaded_tag`] refuses beforehand).
-    pub fn nodal_vector(&self, mesh: &Mesh) -> Result<Vec<f64>> {
+    /// The consistent nodal vector of the loads on `mesh` of sections
+    /// `section` (2 values per node: f_x, f_y): edge loads and body forces
+    /// integrated against each node's hat with the section's measure
+    /// ([`Section::edge_shares`], [`Section::corner_shares`]; in the plane,
+    /// split equally between the edge's nodes or the triangle's corners).
+    /// Point forces are taken as given: for a ring, the force of the whole
+    /// ring. Fails, naming the edge, if a pressure acts on an edge without
+    /// an outward normal (which [`check_loaded_tag`] refuses beforehand).
+    pub fn nodal_vector(&self, mesh: &Mesh, section: Section) -> Result<Vec<f64>> {
         let mut f = vec![0.0; 2 * mesh.nodes().len()];
         for &(tag, load) in &self.edge {
             for (k, e) in mesh.boundary_edges().iter().enumerate() {
@@ -79,9 +83,10 @@ impl Loads {
                         [-pr * n[0], -pr * n[1]]
                     }
                 };
-                for v in [p, q] {
-                    f[2 * v] += 0.5 * len * t[0];
-                    f[2 * v + 1] += 0.5 * len * t[1];
+                let shares = section.edge_shares(xp[0], xq[0], len);
+                for (v, share) in [p, q].into_iter().zip(shares) {
+                    f[2 * v] += share * t[0];
+                    f[2 * v + 1] += share * t[1];
                 }
             }
         }
@@ -93,10 +98,12 @@ impl Loads {
             for (tri, body) in mesh.triangles().iter().zip(mesh.body_of()) {
                 if let Some(b) = self.body.get(body) {
                     // Inverted or flat elements carry no material volume.
-                    let area = 0.5 * TriGeometry::new(&mesh.corners(tri)).j.max(0.0);
-                    for &v in tri {
-                        f[2 * v] += b[0] * area / 3.0;
-                        f[2 * v + 1] += b[1] * area / 3.0;
+                    let corners = mesh.corners(tri);
+                    let area = 0.5 * TriGeometry::new(&corners).j.max(0.0);
+                    let shares = section.corner_shares(corners.map(|c| c[0]), area);
+                    for (&v, share) in tri.iter().zip(shares) {
+                        f[2 * v] += b[0] * share;
+                        f[2 * v + 1] += b[1] * share;
                     }
                 }
             }

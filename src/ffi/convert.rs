@@ -158,7 +158,7 @@ pub(super) fn component(c: i32) -> Result<Component> {
 pub(super) fn plane(p: i32) -> Result<PlaneMode> {
     PlaneMode::from_i32(p).ok_or_else(|| {
         Error::argument(format!(
-            "plane = {p} must be 0 (plane strain) or 1 (plane stress)"
+            "plane = {p} must be 0 (plane strain), 1 (plane stress) or 2 (axisymmetric)"
         ))
     })
 }

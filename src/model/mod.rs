@@ -567,6 +567,16 @@ impl Model {
         stresses.map(PositiveZero::positive_zero)
     }
 
+    /// Element stresses normal to the mesh's plane, computed on request:
+    /// the hoop stress σ_θθ of axisymmetric bodies, σ_zz = λ(ε_xx + ε_yy)
+    /// in plane strain, 0 in plane stress.
+    pub fn element_out_of_plane_stresses(&self) -> Result<Vec<f64>> {
+        let stresses = self
+            .solution()?
+            .out_of_plane_stresses(&self.problem, self.field()?);
+        stresses.map(PositiveZero::positive_zero)
+    }
+
     /// J (twice the signed area) of every triangle in the initial
     /// configuration. Needs only a mesh.
     pub fn element_jacobians(&self) -> Result<Vec<f64>> {
@@ -786,7 +796,9 @@ impl Model {
         let c = self.contact_solution()?;
         let mesh = self.problem.mesh_ref()?;
         let pairs = self.problem.contact_pairs();
-        let t = c.state.nodal_tractions(mesh, pairs, only, self.field()?)?;
+        let t =
+            c.state
+                .nodal_tractions(mesh, pairs, self.problem.section(), only, self.field()?)?;
         let values = t.iter().flatten().copied();
         crate::error::ensure_finite(values, 2, "contact traction", |v| mesh.node_name(v))?;
         Ok(t.into_iter().map(|t| t.map(f64::positive_zero)).collect())
@@ -871,7 +883,7 @@ fn session_of<'s>(
             p.mesh_ref()?,
             prescribed,
             p.contact_pairs(),
-            p.contact_weighting(),
+            p.weighting_in_use(),
         )?;
         timings.analysis = t0.elapsed().as_secs_f64();
         *slot = Some(s);

@@ -21,7 +21,7 @@ use crate::error::{Error, Result, Status};
 use crate::fem::element::Tempering;
 use crate::fem::element_loop::ElementLoop;
 use crate::fem::loads::{EdgeLoad, Loads, check_loaded_tag};
-use crate::fem::material::Material;
+use crate::fem::material::{Material, Section};
 use crate::fem::mesh::{BoundaryEdge, Mesh};
 
 /// A 2D elasticity (and contact) problem.
@@ -250,7 +250,7 @@ impl Problem {
                 contact::pair_bodies(mesh, p.tag_a, p.tag_b).map_err(|e| misfit(i, p, e))?;
         }
         for (i, p) in pairs.iter().enumerate() {
-            contact::discretisation::check_pair(mesh, &pairs, i, self.weighting)
+            contact::discretisation::check_pair(mesh, &pairs, i, self.weighting_in_use())
                 .map_err(|e| misfit(i, p, e))?;
         }
         Ok(pairs)
@@ -258,6 +258,12 @@ impl Problem {
 
     /// Sets the material of a body. Before a mesh is given any body tag is
     /// accepted; afterwards the body must exist.
+    ///
+    /// Axisymmetric bodies do not mix with plane ones (refused, naming a
+    /// body of the other kind), do not cross the axis x = 0 (refused,
+    /// naming the first node with x < 0) and do not take the mortar
+    /// weighting, which integrates along straight sides without the
+    /// ring's measure (refused).
     pub fn set_material(&mut self, body: i32, material: Material) -> Result<()> {
         if let Some(mesh) = &self.mesh {
             if mesh.bodies().binary_search(&body).is_err() {
@@ -270,9 +276,56 @@ impl Problem {
                 ));
             }
         }
+        let ring = material.section().is_revolution();
+        if let Some((other, m)) = self
+            .materials
+            .iter()
+            .find(|(b, m)| **b != body && m.section().is_revolution() != ring)
+        {
+            return Err(Error::new(
+                Status::InvalidMaterial,
+                format!(
+                    "body {body}: a {} material cannot join body {other}, which is {}: \
+                     a model is axisymmetric in every body or in none",
+                    material.plane().name(),
+                    m.plane().name()
+                ),
+            ));
+        }
+        if ring {
+            if self.weighting == ContactWeighting::Mortar {
+                return Err(Error::new(
+                    Status::InvalidMaterial,
+                    format!(
+                        "body {body}: axisymmetric bodies take the contact mesh B (the \
+                         automatic or strip weighting), not the mortar weighting"
+                    ),
+                ));
+            }
+            if let Some(mesh) = &self.mesh {
+                crossing_node(mesh, Some(body))
+                    .map_or(Ok(()), |v| Err(crossing_error(mesh, v, body)))?;
+            }
+        }
+        let was_ring = self.section().is_revolution();
         self.materials.insert(body, material);
-        self.changed_stiffness();
+        if was_ring != ring {
+            // The weighting the pairs take and the loads' measure change.
+            self.changed_contact("the bodies' section (plane or axisymmetric)");
+        } else {
+            self.changed_stiffness();
+        }
         Ok(())
+    }
+
+    /// The weighting the pairs take: the one set, except that axisymmetric
+    /// bodies take B where [`ContactWeighting::Auto`] would choose the
+    /// mortar weighting (it has no ring measure).
+    pub fn weighting_in_use(&self) -> ContactWeighting {
+        match (self.weighting, self.section().is_revolution()) {
+            (ContactWeighting::Auto, true) => ContactWeighting::Strip,
+            (w, _) => w,
+        }
     }
 
     /// The material of a body.
@@ -499,7 +552,17 @@ impl Problem {
     /// The assembled external load vector (2 values per node: f_x, f_y) of
     /// the current loads: consistent edge loads, nodal and body forces.
     pub fn load_vector(&self) -> Result<Vec<f64>> {
-        self.loads.nodal_vector(self.mesh_ref()?)
+        self.loads.nodal_vector(self.mesh_ref()?, self.section())
+    }
+
+    /// The section the model's bodies stand for: rings when their
+    /// materials are axisymmetric (then all are: [`Problem::set_material`]),
+    /// else slabs.
+    pub fn section(&self) -> Section {
+        self.materials
+            .values()
+            .next()
+            .map_or(Section::Plane, Material::section)
     }
 
     /// Declares a potential contact interface between the edges tagged
@@ -545,7 +608,7 @@ impl Problem {
         let mut pairs = self.pairs.clone();
         pairs.push(pair.clone());
         let i = self.pairs.len();
-        crate::contact::discretisation::check_pair(mesh, &pairs, i, self.weighting)?;
+        crate::contact::discretisation::check_pair(mesh, &pairs, i, self.weighting_in_use())?;
         self.pairs.push(pair);
         self.changed_contact("the contact pairs");
         Ok(self.pairs.len() - 1)
@@ -617,7 +680,12 @@ impl Problem {
         let mut pairs = self.pairs.clone();
         pairs[pair].friction = mu;
         if rebuild {
-            contact::discretisation::check_pair(self.mesh_ref()?, &pairs, pair, self.weighting)?;
+            contact::discretisation::check_pair(
+                self.mesh_ref()?,
+                &pairs,
+                pair,
+                self.weighting_in_use(),
+            )?;
         }
         self.pairs = pairs;
         match rebuild {
@@ -656,6 +724,12 @@ impl Problem {
     /// matrix pattern holds the mortar couplings) and ends any load
     /// history.
     pub fn set_contact_weighting(&mut self, weighting: ContactWeighting) -> Result<()> {
+        if weighting == ContactWeighting::Mortar && self.section().is_revolution() {
+            return Err(Error::argument(
+                "the mortar weighting integrates along the sides without the ring's measure: \
+                 axisymmetric bodies take the automatic or strip weighting",
+            ));
+        }
         for (i, p) in self.pairs.iter().enumerate() {
             contact::discretisation::serves(weighting, i, p.friction, p.user_mesh.is_some())?;
         }
@@ -683,6 +757,9 @@ impl Problem {
                 ));
             }
         }
+        if self.section().is_revolution() {
+            self.check_axis(mesh)?;
+        }
         match (with_contact, self.pairs.is_empty()) {
             (false, false) => Err(Error::state(format!(
                 "the model has {} contact pair(s): use solve_contact",
@@ -691,6 +768,43 @@ impl Problem {
             (true, true) => Err(Error::state("no contact pair: call add_contact_pair first")),
             _ => Ok(mesh),
         }
+    }
+
+    /// Checks the nodes of an axisymmetric model against the axis: none
+    /// across it (x < 0, beyond round-off), and u_r prescribed to 0 on every
+    /// node on it (|x| within 10⁻¹² of the model's size), where the ring
+    /// is a line and its radial displacement has no meaning.
+    fn check_axis(&self, mesh: &Mesh) -> Result<()> {
+        if let Some(v) = crossing_node(mesh, None) {
+            return Err(crossing_error(
+                mesh,
+                v,
+                mesh.node_body()[v].unwrap_or_default(),
+            ));
+        }
+        let tol = AXIS_TOLERANCE * mesh.size();
+        let used = mesh.node_body();
+        for (v, x) in mesh.nodes().iter().enumerate() {
+            if x[0].abs() > tol || used[v].is_none() {
+                continue;
+            }
+            match self.prescribed.get(&(2 * v)) {
+                Some(&u) if u == 0.0 => {}
+                other => {
+                    let given = other.map_or("free".to_string(), |u| format!("prescribed to {u}"));
+                    return Err(Error::new(
+                        Status::InvalidArgument,
+                        format!(
+                            "{} lies on the axis (x = {}) of an axisymmetric model and its u_r \
+                             is {given}: fix u_r = 0 on the axis (its edges' tag or its nodes)",
+                            mesh.node_name(v),
+                            x[0]
+                        ),
+                    ));
+                }
+            }
+        }
+        Ok(())
     }
 
     /// The loop over the body elements (every body needs a material:
@@ -702,6 +816,33 @@ impl Problem {
             self.tempering,
         ))
     }
+}
+
+/// How close to the axis, relative to the model's size, a node of an
+/// axisymmetric model counts as on it (and further out to the left, as
+/// across it).
+const AXIS_TOLERANCE: f64 = 1e-12;
+
+/// The first node of `body` (of any body: `None`) that lies across the
+/// axis, x < −10⁻¹² × the model's size.
+fn crossing_node(mesh: &Mesh, body: Option<i32>) -> Option<usize> {
+    let tol = AXIS_TOLERANCE * mesh.size();
+    let used = mesh.node_body();
+    mesh.nodes().iter().enumerate().position(|(v, x)| {
+        x[0] < -tol && used[v].is_some_and(|b| body.is_none_or(|want| want == b))
+    })
+}
+
+fn crossing_error(mesh: &Mesh, v: usize, body: i32) -> Error {
+    Error::new(
+        Status::InvalidMaterial,
+        format!(
+            "body {body} crosses the axis of an axisymmetric model: {} has x = {} < 0 \
+             (x is the radius)",
+            mesh.node_name(v),
+            mesh.nodes()[v][0]
+        ),
+    )
 }
 
 /// Automatic contact pairing (docs/method.md §6.16).

@@ -8,7 +8,7 @@ use crate::contact::settled::ContactState;
 use std::sync::OnceLock;
 
 use crate::error::{Error, Result, ensure_finite};
-use crate::fem::element::{b_hat, tempered_jacobian};
+use crate::fem::element::{b_hat, hoop_strain, tempered_jacobian};
 use crate::fem::element_loop::element_values;
 use crate::solve::Pending;
 
@@ -92,41 +92,69 @@ impl Solution {
 
     /// Element strains [ε_xx, ε_yy, γ_xy]: B̂u / max(J, Jmin).
     pub fn strains(&self, problem: &Problem, u: &[f64]) -> Result<Vec<[f64; 3]>> {
+        Ok(self
+            .all_strains(problem, u)?
+            .into_iter()
+            .map(|(e, _)| e)
+            .collect())
+    }
+
+    /// Each element's in-plane strain and its out-of-plane strain (a
+    /// ring's hoop strain, [`hoop_strain`]; 0 in the plane modes).
+    fn all_strains(&self, problem: &Problem, u: &[f64]) -> Result<Vec<([f64; 3], f64)>> {
         let elements = problem.elements()?;
         let mut out = Vec::with_capacity(elements.mesh().triangles().len());
         elements.for_each(|el| {
             let Some(t) = tempered_jacobian(&el.geo, el.jmin)? else {
-                out.push([0.0; 3]);
+                out.push(([0.0; 3], 0.0));
                 return Ok(());
             };
             let b = b_hat(&el.geo);
             let ue = element_values(u, el.nodes);
-            out.push(std::array::from_fn(|r| {
-                (0..6).map(|c| b[r][c] * ue[c]).sum::<f64>() / t
-            }));
+            let eps = std::array::from_fn(|r| (0..6).map(|c| b[r][c] * ue[c]).sum::<f64>() / t);
+            let normal = match el.section.is_revolution() {
+                true => hoop_strain(&el.geo, el.x, t, &ue),
+                false => 0.0,
+            };
+            out.push((eps, normal));
             Ok(())
         })?;
         let mesh = elements.mesh();
-        ensure_finite(out.iter().flatten().copied(), 3, "strain", |t| {
-            mesh.triangle_name(t)
-        })?;
+        let values = out.iter().flat_map(|(e, n)| e.iter().chain([n]).copied());
+        ensure_finite(values, 4, "strain", |t| mesh.triangle_name(t))?;
         Ok(out)
     }
 
-    /// Element stresses [σ_xx, σ_yy, σ_xy] = D ε.
+    /// Element stresses [σ_xx, σ_yy, σ_xy] = D ε (a ring's with the hoop
+    /// strain's part).
     pub fn stresses(&self, problem: &Problem, u: &[f64]) -> Result<Vec<[f64; 3]>> {
-        let strains = self.strains(problem, u)?;
+        let strains = self.all_strains(problem, u)?;
         let elements = problem.elements()?;
         let stresses: Vec<[f64; 3]> = strains
             .iter()
             .zip(elements.mesh().body_of())
-            .map(|(eps, &body)| {
-                let d = elements.material(body).d_matrix();
-                std::array::from_fn(|r| d[r][0] * eps[0] + d[r][1] * eps[1] + d[r][2] * eps[2])
-            })
+            .map(|((eps, hoop), &body)| elements.material(body).in_plane_stress(eps, *hoop))
             .collect();
         let mesh = elements.mesh();
         ensure_finite(stresses.iter().flatten().copied(), 3, "stress", |t| {
+            mesh.triangle_name(t)
+        })?;
+        Ok(stresses)
+    }
+
+    /// Element stresses normal to the mesh's plane: σ_zz in plane strain,
+    /// 0 in plane stress, the hoop stress σ_θθ of a ring
+    /// ([`crate::Material::out_of_plane_stress`]).
+    pub fn out_of_plane_stresses(&self, problem: &Problem, u: &[f64]) -> Result<Vec<f64>> {
+        let strains = self.all_strains(problem, u)?;
+        let elements = problem.elements()?;
+        let stresses: Vec<f64> = strains
+            .iter()
+            .zip(elements.mesh().body_of())
+            .map(|((eps, normal), &body)| elements.material(body).out_of_plane_stress(eps, *normal))
+            .collect();
+        let mesh = elements.mesh();
+        ensure_finite(stresses.iter().copied(), 1, "stress", |t| {
             mesh.triangle_name(t)
         })?;
         Ok(stresses)

@@ -387,7 +387,7 @@ impl Model {
     /// The contact discretisation of the declared pairs.
     fn discretisation(&self) -> Result<Discretisation> {
         let p = &self.problem;
-        Discretisation::build(p.mesh_ref()?, p.contact_pairs(), p.contact_weighting())
+        Discretisation::build(p.mesh_ref()?, p.contact_pairs(), p.weighting_in_use())
     }
 
     /// Recovers the results' field if it waits on the live load history,

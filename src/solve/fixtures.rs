@@ -68,7 +68,7 @@ pub(crate) fn assembled(p: &Problem) -> (Session, Vec<f64>) {
         mesh,
         prescribed_dof,
         p.contact_pairs(),
-        p.contact_weighting(),
+        p.weighting_in_use(),
     )
     .unwrap();
     let elements = p.elements().unwrap();
@@ -92,7 +92,14 @@ pub(crate) fn contact_set<'a>(
     let mesh = p.mesh().unwrap();
     let elements = p.elements().unwrap();
     let soft = |_pair: usize| *elements.material(1);
-    let laws = element_laws(0, contact, soft, mesh.size(), options).unwrap();
+    let laws = element_laws(
+        crate::contact::mesh::Nodes::of(mesh),
+        contact,
+        soft,
+        mesh.size(),
+        options,
+    )
+    .unwrap();
     let equation = |g: usize| Some(dofs.free(g)).filter(|&f| f != NOT_FREE);
     ContactSet::new(
         Nodes::of(mesh),

@@ -17,7 +17,7 @@ use crate::contact::mesh::Nodes;
 use crate::contact::traction::{interface_tractions, max_overlap, nodal_tractions};
 use crate::error::{Error, Result};
 use crate::fem::element::{Tempering, TriGeometry};
-use crate::fem::material::{Material, PlaneMode};
+use crate::fem::material::{Material, PlaneMode, Section};
 use crate::model::solution::ContactReport;
 use crate::model::{Component, Model};
 use crate::studies::meshgen::{Diagonal, MeshBuilder};
@@ -362,12 +362,12 @@ impl PatchScene {
         let framed = model.contact_framed_forces()?;
         let force = |pair, v| framed.get(&(pair, v)).copied().unwrap_or([0.0; 2]);
         let traction = range(
-            &mut nodal_tractions(nodes, elements, force)
+            &mut nodal_tractions(nodes, elements, Section::Plane, force)
                 .into_iter()
                 .map(|q| q.pressure / p),
         );
         let interface_traction = range(
-            &mut interface_tractions(nodes, elements, force)
+            &mut interface_tractions(nodes, elements, Section::Plane, force)
                 .into_iter()
                 .map(|q| q.pressure / p),
         );

@@ -29,7 +29,7 @@ use crate::contact::mesh::Nodes;
 use crate::contact::traction::nodal_tractions;
 use crate::error::{Error, Result};
 use crate::fem::element::Tempering;
-use crate::fem::material::{Material, PlaneMode};
+use crate::fem::material::{Material, PlaneMode, Section};
 use crate::model::solution::ContactReport;
 use crate::model::{Component, Model};
 use crate::studies::meshgen::{Diagonal, MeshBuilder};
@@ -397,15 +397,16 @@ impl RingScene {
             .collect();
         let framed = self.model.contact_framed_forces()?;
         let force = |pair, v| framed.get(&(pair, v)).copied().unwrap_or([0.0; 2]);
-        let pressures: Vec<(usize, f64)> = nodal_tractions(Nodes::of(mesh), elements, force)
-            .iter()
-            .map(|q| {
-                let (v, r) = (q.node, x[q.node][0].hypot(x[q.node][1]));
-                let radial = (f[v][0] * x[v][0] + f[v][1] * x[v][1]) / r;
-                let sign = if inner.contains(&v) { -1.0 } else { 1.0 };
-                (v, sign * radial / q.tributary)
-            })
-            .collect();
+        let pressures: Vec<(usize, f64)> =
+            nodal_tractions(Nodes::of(mesh), elements, Section::Plane, force)
+                .iter()
+                .map(|q| {
+                    let (v, r) = (q.node, x[q.node][0].hypot(x[q.node][1]));
+                    let radial = (f[v][0] * x[v][0] + f[v][1] * x[v][1]) / r;
+                    let sign = if inner.contains(&v) { -1.0 } else { 1.0 };
+                    (v, sign * radial / q.tributary)
+                })
+                .collect();
         let scale = self.exact.p0 + self.exact.p2.abs();
         let mut max_error = 0.0f64;
         // Least squares of p0_h + p2_h c over the nodes (c = cos 2θ).
