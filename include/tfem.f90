@@ -270,6 +270,10 @@ module tfem_c
   integer(c_int), parameter :: TFEM_PLANE_MODE_STRAIN = 0
   !> σ_zz = 0 (thin plates).
   integer(c_int), parameter :: TFEM_PLANE_MODE_STRESS = 1
+  !> Bodies of revolution about the axis x = 0: x is the radius r ≥ 0, y the axial coordinate z, and
+  !! the hoop strain ε_θθ = u_r/r. Every force and stiffness is that of the whole ring (2π radians):
+  !! docs/method.md §7.
+  integer(c_int), parameter :: TFEM_PLANE_MODE_AXISYMMETRIC = 2
 
   ! enum tfem_component: A displacement component.
   !> Horizontal (u).
@@ -639,8 +643,11 @@ module tfem_c
     ! ==============================================================================================
 
     !> Sets the material of body `body`: Young's modulus `young` (> 0), Poisson ratio `poisson` (in
-    !! (-1, 0.5) for plane strain, (-1, 0.5] for plane stress) and `plane` (a `PlaneMode`: 0 strain,
-    !! 1 stress).
+    !! (-1, 0.5) for plane strain and axisymmetric bodies, (-1, 0.5] for plane stress) and `plane`
+    !! (a `PlaneMode`: 0 strain, 1 stress, 2 axisymmetric). Axisymmetric bodies (x the radius, y the
+    !! axis) do not mix with plane ones, lie at x >= 0, need u_r = 0 fixed on nodes on the axis
+    !! (checked by the solve) and take the whole ring's forces: nodal forces and reactions are
+    !! totals around the circumference, pressures and tractions per unit area (docs/method.md §7).
     function tfem_set_material(model, body, young, poisson, plane_mode) &
         bind(C, name="tfem_set_material") result(status)
       import
@@ -1064,6 +1071,18 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_get_element_stresses
 
+    !> Copies each triangle's stress normal to the mesh's plane (n_triangles values), computed on
+    !! request: the hoop stress σ_θθ of axisymmetric bodies, σ_zz = λ(ε_xx + ε_yy) in plane strain,
+    !! 0 in plane stress.
+    function tfem_get_element_out_of_plane_stresses(model, out, length) &
+        bind(C, name="tfem_get_element_out_of_plane_stresses") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_element_out_of_plane_stresses
+
     !> Copies J (twice the signed area, initial configuration) of every triangle as stored, that is
     !! after the turning of triangles numbered clockwise (see `tfem_set_mesh`): negative only for
     !! the mesh's folds (n_triangles values). Needs only a mesh.
@@ -1486,8 +1505,10 @@ module tfem_c
 
     !> Tempered elasticity stiffness of one P1 triangle with corners `xy` (x1 y1 x2 y2 x3 y3): K =
     !! B̂ᵀ D B̂ / (2·max(J, jmin)), written row-major into `out` (36 values, DOFs u1 v1 u2 v2 u3
-    !! v3). `jmin` > 0 tempers; `jmin` = 0 is plain FEM (divides by |J|, fails for J = 0). Pure and
-    !! thread-safe; errors go to the thread's `tfem_last_error(NULL, …)`.
+    !! v3). For `TFEM_PLANE_MODE_AXISYMMETRIC` (x the radius, corners with x ≥ 0) the whole ring's K
+    !! = 2πx̄ (B̂ + J H)ᵀ D₄ (B̂ + J H) / (2·max(J, jmin)), H the hoop row 1/(3x̄) on each u_r
+    !! (docs/method.md §7). `jmin` > 0 tempers; `jmin` = 0 is plain FEM (divides by |J|, fails for J
+    !! = 0). Pure and thread-safe; errors go to the thread's `tfem_last_error(NULL, …)`.
     function tfem_element_stiffness(xy, young, poisson, plane_mode, jmin, out) &
         bind(C, name="tfem_element_stiffness") result(status)
       import
@@ -1887,17 +1908,17 @@ module tfem_specifics
   use tfem_c, only: tfem_contact_options, tfem_solve_info, tfem_contact_report, tfem_last_error, &
         tfem_last_error_length, tfem_get_warning, tfem_get_mesh_nodes, tfem_get_contact_mesh, &
         tfem_get_contact_element_pairs, tfem_get_contact_element_apexes, tfem_get_displacements, &
-        tfem_get_element_strains, tfem_get_element_stresses, tfem_get_element_jacobians, &
-        tfem_get_reactions, tfem_get_contact_forces, tfem_get_contact_nodal_pressures, &
-        tfem_get_contact_nodal_tractions, tfem_get_contact_pair_nodal_pressures, &
-        tfem_get_contact_pair_nodal_tractions, tfem_get_contact_gaps, tfem_get_contact_active, &
-        tfem_get_contact_pressure, tfem_get_contact_elements, tfem_get_contact_shear, &
-        tfem_get_contact_friction_state, tfem_get_contact_dissipation, tfem_get_contact_state, &
-        tfem_set_contact_state, tfem_get_system_matrix, tfem_contact_last_error, &
-        tfem_contact_last_error_length, tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, &
-        tfem_contact_scatter_add, tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, &
-        tfem_contact_pressures, tfem_contact_elements, tfem_contact_element_equations, &
-        tfem_contact_element_blocks
+        tfem_get_element_strains, tfem_get_element_stresses, tfem_get_element_out_of_plane_stresses, &
+        tfem_get_element_jacobians, tfem_get_reactions, tfem_get_contact_forces, &
+        tfem_get_contact_nodal_pressures, tfem_get_contact_nodal_tractions, &
+        tfem_get_contact_pair_nodal_pressures, tfem_get_contact_pair_nodal_tractions, &
+        tfem_get_contact_gaps, tfem_get_contact_active, tfem_get_contact_pressure, &
+        tfem_get_contact_elements, tfem_get_contact_shear, tfem_get_contact_friction_state, &
+        tfem_get_contact_dissipation, tfem_get_contact_state, tfem_set_contact_state, &
+        tfem_get_system_matrix, tfem_contact_last_error, tfem_contact_last_error_length, &
+        tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, tfem_contact_scatter_add, &
+        tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, tfem_contact_pressures, &
+        tfem_contact_elements, tfem_contact_element_equations, tfem_contact_element_blocks
   implicit none
   private
   public :: tfem_length_kind
@@ -1924,44 +1945,45 @@ module tfem_specifics
   public :: tfem_get_displacements_r2, tfem_get_displacements_i, tfem_get_displacements_i_r2
   public :: tfem_get_element_strains_r2, tfem_get_element_strains_i, tfem_get_element_strains_i_r2
   public :: tfem_get_element_stresses_r2, tfem_get_element_stresses_i
-  public :: tfem_get_element_stresses_i_r2, tfem_get_element_jacobians_r2
-  public :: tfem_get_element_jacobians_i, tfem_get_element_jacobians_i_r2, tfem_get_reactions_r2
-  public :: tfem_get_reactions_i, tfem_get_reactions_i_r2, tfem_get_contact_forces_r2
-  public :: tfem_get_contact_forces_i, tfem_get_contact_forces_i_r2
-  public :: tfem_get_contact_nodal_pressures_r2, tfem_get_contact_nodal_pressures_i
-  public :: tfem_get_contact_nodal_pressures_i_r2, tfem_get_contact_nodal_tractions_r2
-  public :: tfem_get_contact_nodal_tractions_i, tfem_get_contact_nodal_tractions_i_r2
-  public :: tfem_get_contact_pair_nodal_pressures_r2, tfem_get_contact_pair_nodal_pressures_i
-  public :: tfem_get_contact_pair_nodal_pressures_i_r2, tfem_get_contact_pair_nodal_tractions_r2
-  public :: tfem_get_contact_pair_nodal_tractions_i, tfem_get_contact_pair_nodal_tractions_i_r2
-  public :: tfem_get_contact_gaps_r2, tfem_get_contact_gaps_i, tfem_get_contact_gaps_i_r2
-  public :: tfem_get_contact_active_r2, tfem_get_contact_active_i, tfem_get_contact_active_i_r2
-  public :: tfem_get_contact_pressure_r2, tfem_get_contact_pressure_i
-  public :: tfem_get_contact_pressure_i_r2, tfem_get_contact_elements_r2
-  public :: tfem_get_contact_elements_i, tfem_get_contact_elements_i_r2, tfem_get_contact_shear_r2
-  public :: tfem_get_contact_shear_i, tfem_get_contact_shear_i_r2
-  public :: tfem_get_contact_friction_state_r2, tfem_get_contact_friction_state_i
-  public :: tfem_get_contact_friction_state_i_r2, tfem_get_contact_dissipation_r2
-  public :: tfem_get_contact_dissipation_i, tfem_get_contact_dissipation_i_r2
-  public :: tfem_get_contact_slave_nodes_opt, tfem_get_contact_slave_nodes_opt_r2111
-  public :: tfem_get_contact_slave_nodes_opt_r1211, tfem_get_contact_slave_nodes_opt_r2211
-  public :: tfem_get_contact_slave_nodes_opt_r1121, tfem_get_contact_slave_nodes_opt_r2121
-  public :: tfem_get_contact_slave_nodes_opt_r1221, tfem_get_contact_slave_nodes_opt_r2221
-  public :: tfem_get_contact_slave_nodes_opt_r1112, tfem_get_contact_slave_nodes_opt_r2112
-  public :: tfem_get_contact_slave_nodes_opt_r1212, tfem_get_contact_slave_nodes_opt_r2212
-  public :: tfem_get_contact_slave_nodes_opt_r1122, tfem_get_contact_slave_nodes_opt_r2122
-  public :: tfem_get_contact_slave_nodes_opt_r1222, tfem_get_contact_slave_nodes_opt_r2222
-  public :: tfem_get_contact_slave_nodes_opt_i, tfem_get_contact_slave_nodes_opt_i_r2111
-  public :: tfem_get_contact_slave_nodes_opt_i_r1211, tfem_get_contact_slave_nodes_opt_i_r2211
-  public :: tfem_get_contact_slave_nodes_opt_i_r1121, tfem_get_contact_slave_nodes_opt_i_r2121
-  public :: tfem_get_contact_slave_nodes_opt_i_r1221, tfem_get_contact_slave_nodes_opt_i_r2221
-  public :: tfem_get_contact_slave_nodes_opt_i_r1112, tfem_get_contact_slave_nodes_opt_i_r2112
-  public :: tfem_get_contact_slave_nodes_opt_i_r1212, tfem_get_contact_slave_nodes_opt_i_r2212
-  public :: tfem_get_contact_slave_nodes_opt_i_r1122, tfem_get_contact_slave_nodes_opt_i_r2122
-  public :: tfem_get_contact_slave_nodes_opt_i_r1222, tfem_get_contact_slave_nodes_opt_i_r2222
-  public :: tfem_step_opt, tfem_get_contact_state_r2, tfem_get_contact_state_i
-  public :: tfem_get_contact_state_i_r2, tfem_set_contact_state_r2, tfem_set_contact_state_i
-  public :: tfem_set_contact_state_i_r2, tfem_get_system_matrix_size_opt
+  public :: tfem_get_element_stresses_i_r2, tfem_get_element_out_of_plane_stresses_r2
+  public :: tfem_get_element_out_of_plane_stresses_i, tfem_get_element_out_of_plane_stresses_i_r2
+  public :: tfem_get_element_jacobians_r2, tfem_get_element_jacobians_i
+  public :: tfem_get_element_jacobians_i_r2, tfem_get_reactions_r2, tfem_get_reactions_i
+  public :: tfem_get_reactions_i_r2, tfem_get_contact_forces_r2, tfem_get_contact_forces_i
+  public :: tfem_get_contact_forces_i_r2, tfem_get_contact_nodal_pressures_r2
+  public :: tfem_get_contact_nodal_pressures_i, tfem_get_contact_nodal_pressures_i_r2
+  public :: tfem_get_contact_nodal_tractions_r2, tfem_get_contact_nodal_tractions_i
+  public :: tfem_get_contact_nodal_tractions_i_r2, tfem_get_contact_pair_nodal_pressures_r2
+  public :: tfem_get_contact_pair_nodal_pressures_i, tfem_get_contact_pair_nodal_pressures_i_r2
+  public :: tfem_get_contact_pair_nodal_tractions_r2, tfem_get_contact_pair_nodal_tractions_i
+  public :: tfem_get_contact_pair_nodal_tractions_i_r2, tfem_get_contact_gaps_r2
+  public :: tfem_get_contact_gaps_i, tfem_get_contact_gaps_i_r2, tfem_get_contact_active_r2
+  public :: tfem_get_contact_active_i, tfem_get_contact_active_i_r2, tfem_get_contact_pressure_r2
+  public :: tfem_get_contact_pressure_i, tfem_get_contact_pressure_i_r2
+  public :: tfem_get_contact_elements_r2, tfem_get_contact_elements_i
+  public :: tfem_get_contact_elements_i_r2, tfem_get_contact_shear_r2, tfem_get_contact_shear_i
+  public :: tfem_get_contact_shear_i_r2, tfem_get_contact_friction_state_r2
+  public :: tfem_get_contact_friction_state_i, tfem_get_contact_friction_state_i_r2
+  public :: tfem_get_contact_dissipation_r2, tfem_get_contact_dissipation_i
+  public :: tfem_get_contact_dissipation_i_r2, tfem_get_contact_slave_nodes_opt
+  public :: tfem_get_contact_slave_nodes_opt_r2111, tfem_get_contact_slave_nodes_opt_r1211
+  public :: tfem_get_contact_slave_nodes_opt_r2211, tfem_get_contact_slave_nodes_opt_r1121
+  public :: tfem_get_contact_slave_nodes_opt_r2121, tfem_get_contact_slave_nodes_opt_r1221
+  public :: tfem_get_contact_slave_nodes_opt_r2221, tfem_get_contact_slave_nodes_opt_r1112
+  public :: tfem_get_contact_slave_nodes_opt_r2112, tfem_get_contact_slave_nodes_opt_r1212
+  public :: tfem_get_contact_slave_nodes_opt_r2212, tfem_get_contact_slave_nodes_opt_r1122
+  public :: tfem_get_contact_slave_nodes_opt_r2122, tfem_get_contact_slave_nodes_opt_r1222
+  public :: tfem_get_contact_slave_nodes_opt_r2222, tfem_get_contact_slave_nodes_opt_i
+  public :: tfem_get_contact_slave_nodes_opt_i_r2111, tfem_get_contact_slave_nodes_opt_i_r1211
+  public :: tfem_get_contact_slave_nodes_opt_i_r2211, tfem_get_contact_slave_nodes_opt_i_r1121
+  public :: tfem_get_contact_slave_nodes_opt_i_r2121, tfem_get_contact_slave_nodes_opt_i_r1221
+  public :: tfem_get_contact_slave_nodes_opt_i_r2221, tfem_get_contact_slave_nodes_opt_i_r1112
+  public :: tfem_get_contact_slave_nodes_opt_i_r2112, tfem_get_contact_slave_nodes_opt_i_r1212
+  public :: tfem_get_contact_slave_nodes_opt_i_r2212, tfem_get_contact_slave_nodes_opt_i_r1122
+  public :: tfem_get_contact_slave_nodes_opt_i_r2122, tfem_get_contact_slave_nodes_opt_i_r1222
+  public :: tfem_get_contact_slave_nodes_opt_i_r2222, tfem_step_opt, tfem_get_contact_state_r2
+  public :: tfem_get_contact_state_i, tfem_get_contact_state_i_r2, tfem_set_contact_state_r2
+  public :: tfem_set_contact_state_i, tfem_set_contact_state_i_r2, tfem_get_system_matrix_size_opt
   public :: tfem_get_system_matrix_r2111, tfem_get_system_matrix_r1211, tfem_get_system_matrix_r2211
   public :: tfem_get_system_matrix_r1121, tfem_get_system_matrix_r2121, tfem_get_system_matrix_r1221
   public :: tfem_get_system_matrix_r2221, tfem_get_system_matrix_r1112, tfem_get_system_matrix_r2112
@@ -2883,6 +2905,30 @@ contains
     integer(c_int) :: status
     status = tfem_get_element_stresses(model, out, tfem_to_size_t(length))
   end function tfem_get_element_stresses_i_r2
+
+  function tfem_get_element_out_of_plane_stresses_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_element_out_of_plane_stresses(model, out, length)
+  end function tfem_get_element_out_of_plane_stresses_r2
+
+  function tfem_get_element_out_of_plane_stresses_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_element_out_of_plane_stresses(model, out, tfem_to_size_t(length))
+  end function tfem_get_element_out_of_plane_stresses_i
+
+  function tfem_get_element_out_of_plane_stresses_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_get_element_out_of_plane_stresses(model, out, tfem_to_size_t(length))
+  end function tfem_get_element_out_of_plane_stresses_i_r2
 
   function tfem_get_element_jacobians_r2(model, out, length) result(status)
     type(c_ptr), value :: model
@@ -5800,12 +5846,13 @@ module tfem
         TFEM_ORDERING_MODE_AUTO, TFEM_ORDERING_MODE_AMD, TFEM_ORDERING_MODE_NESTED_DISSECTION, &
         TFEM_CONTACT_WEIGHTING_STRIP, TFEM_CONTACT_WEIGHTING_MORTAR, TFEM_CONTACT_WEIGHTING_AUTO, &
         TFEM_CONTACT_LAW_FRICTIONLESS, TFEM_CONTACT_LAW_STICK, TFEM_INVERSION_TEST_LINEARISED, &
-        TFEM_INVERSION_TEST_LITERAL, TFEM_PLANE_MODE_STRAIN, TFEM_PLANE_MODE_STRESS, TFEM_COMPONENT_X, &
-        TFEM_COMPONENT_Y, tfem_contact_options, tfem_solve_info, tfem_contact_report, tfem_version, &
-        tfem_create, tfem_destroy, tfem_warning_count, tfem_get_warning_size, tfem_set_threads, &
-        tfem_get_threads, tfem_set_mesh, tfem_load_gmsh, tfem_set_boundary_edges, &
-        tfem_add_boundary_edges, tfem_get_boundary_edge_count, tfem_set_material, tfem_set_tempering, &
-        tfem_set_ordering, tfem_fix, tfem_fix_edges, tfem_set_prescribed, tfem_set_prescribed_edges, &
+        TFEM_INVERSION_TEST_LITERAL, TFEM_PLANE_MODE_STRAIN, TFEM_PLANE_MODE_STRESS, &
+        TFEM_PLANE_MODE_AXISYMMETRIC, TFEM_COMPONENT_X, TFEM_COMPONENT_Y, tfem_contact_options, &
+        tfem_solve_info, tfem_contact_report, tfem_version, tfem_create, tfem_destroy, &
+        tfem_warning_count, tfem_get_warning_size, tfem_set_threads, tfem_get_threads, tfem_set_mesh, &
+        tfem_load_gmsh, tfem_set_boundary_edges, tfem_add_boundary_edges, &
+        tfem_get_boundary_edge_count, tfem_set_material, tfem_set_tempering, tfem_set_ordering, &
+        tfem_fix, tfem_fix_edges, tfem_set_prescribed, tfem_set_prescribed_edges, &
         tfem_clear_constraints, tfem_add_pressure, tfem_add_traction, tfem_add_nodal_force, &
         tfem_set_body_force, tfem_clear_loads, tfem_set_friction, tfem_set_contact_weighting, &
         tfem_get_contact_weighting, tfem_get_contact_mesh_size, tfem_contact_options_default, &
@@ -5815,16 +5862,17 @@ module tfem
         tfem_contact_length, tfem_last_error, tfem_last_error_length, tfem_get_warning, &
         tfem_get_mesh_nodes, tfem_get_contact_mesh, tfem_get_contact_element_pairs, &
         tfem_get_contact_element_apexes, tfem_get_displacements, tfem_get_element_strains, &
-        tfem_get_element_stresses, tfem_get_element_jacobians, tfem_get_reactions, &
-        tfem_get_contact_forces, tfem_get_contact_nodal_pressures, tfem_get_contact_nodal_tractions, &
-        tfem_get_contact_pair_nodal_pressures, tfem_get_contact_pair_nodal_tractions, &
-        tfem_get_contact_gaps, tfem_get_contact_active, tfem_get_contact_pressure, &
-        tfem_get_contact_elements, tfem_get_contact_shear, tfem_get_contact_friction_state, &
-        tfem_get_contact_dissipation, tfem_get_contact_state, tfem_set_contact_state, &
-        tfem_get_system_matrix, tfem_contact_last_error, tfem_contact_last_error_length, &
-        tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, tfem_contact_scatter_add, &
-        tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, tfem_contact_pressures, &
-        tfem_contact_elements, tfem_contact_element_equations, tfem_contact_element_blocks
+        tfem_get_element_stresses, tfem_get_element_out_of_plane_stresses, tfem_get_element_jacobians, &
+        tfem_get_reactions, tfem_get_contact_forces, tfem_get_contact_nodal_pressures, &
+        tfem_get_contact_nodal_tractions, tfem_get_contact_pair_nodal_pressures, &
+        tfem_get_contact_pair_nodal_tractions, tfem_get_contact_gaps, tfem_get_contact_active, &
+        tfem_get_contact_pressure, tfem_get_contact_elements, tfem_get_contact_shear, &
+        tfem_get_contact_friction_state, tfem_get_contact_dissipation, tfem_get_contact_state, &
+        tfem_set_contact_state, tfem_get_system_matrix, tfem_contact_last_error, &
+        tfem_contact_last_error_length, tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, &
+        tfem_contact_scatter_add, tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, &
+        tfem_contact_pressures, tfem_contact_elements, tfem_contact_element_equations, &
+        tfem_contact_element_blocks
   use tfem_specifics
   implicit none
   private :: c_strlen
@@ -5852,43 +5900,45 @@ module tfem
   private :: tfem_get_displacements_i_r2, tfem_get_element_strains_r2, tfem_get_element_strains_i
   private :: tfem_get_element_strains_i_r2, tfem_get_element_stresses_r2
   private :: tfem_get_element_stresses_i, tfem_get_element_stresses_i_r2
-  private :: tfem_get_element_jacobians_r2, tfem_get_element_jacobians_i
-  private :: tfem_get_element_jacobians_i_r2, tfem_get_reactions_r2, tfem_get_reactions_i
-  private :: tfem_get_reactions_i_r2, tfem_get_contact_forces_r2, tfem_get_contact_forces_i
-  private :: tfem_get_contact_forces_i_r2, tfem_get_contact_nodal_pressures_r2
-  private :: tfem_get_contact_nodal_pressures_i, tfem_get_contact_nodal_pressures_i_r2
-  private :: tfem_get_contact_nodal_tractions_r2, tfem_get_contact_nodal_tractions_i
-  private :: tfem_get_contact_nodal_tractions_i_r2, tfem_get_contact_pair_nodal_pressures_r2
-  private :: tfem_get_contact_pair_nodal_pressures_i, tfem_get_contact_pair_nodal_pressures_i_r2
-  private :: tfem_get_contact_pair_nodal_tractions_r2, tfem_get_contact_pair_nodal_tractions_i
-  private :: tfem_get_contact_pair_nodal_tractions_i_r2, tfem_get_contact_gaps_r2
-  private :: tfem_get_contact_gaps_i, tfem_get_contact_gaps_i_r2, tfem_get_contact_active_r2
-  private :: tfem_get_contact_active_i, tfem_get_contact_active_i_r2, tfem_get_contact_pressure_r2
-  private :: tfem_get_contact_pressure_i, tfem_get_contact_pressure_i_r2
-  private :: tfem_get_contact_elements_r2, tfem_get_contact_elements_i
-  private :: tfem_get_contact_elements_i_r2, tfem_get_contact_shear_r2, tfem_get_contact_shear_i
-  private :: tfem_get_contact_shear_i_r2, tfem_get_contact_friction_state_r2
-  private :: tfem_get_contact_friction_state_i, tfem_get_contact_friction_state_i_r2
-  private :: tfem_get_contact_dissipation_r2, tfem_get_contact_dissipation_i
-  private :: tfem_get_contact_dissipation_i_r2, tfem_get_contact_slave_nodes_opt
-  private :: tfem_get_contact_slave_nodes_opt_r2111, tfem_get_contact_slave_nodes_opt_r1211
-  private :: tfem_get_contact_slave_nodes_opt_r2211, tfem_get_contact_slave_nodes_opt_r1121
-  private :: tfem_get_contact_slave_nodes_opt_r2121, tfem_get_contact_slave_nodes_opt_r1221
-  private :: tfem_get_contact_slave_nodes_opt_r2221, tfem_get_contact_slave_nodes_opt_r1112
-  private :: tfem_get_contact_slave_nodes_opt_r2112, tfem_get_contact_slave_nodes_opt_r1212
-  private :: tfem_get_contact_slave_nodes_opt_r2212, tfem_get_contact_slave_nodes_opt_r1122
-  private :: tfem_get_contact_slave_nodes_opt_r2122, tfem_get_contact_slave_nodes_opt_r1222
-  private :: tfem_get_contact_slave_nodes_opt_r2222, tfem_get_contact_slave_nodes_opt_i
-  private :: tfem_get_contact_slave_nodes_opt_i_r2111, tfem_get_contact_slave_nodes_opt_i_r1211
-  private :: tfem_get_contact_slave_nodes_opt_i_r2211, tfem_get_contact_slave_nodes_opt_i_r1121
-  private :: tfem_get_contact_slave_nodes_opt_i_r2121, tfem_get_contact_slave_nodes_opt_i_r1221
-  private :: tfem_get_contact_slave_nodes_opt_i_r2221, tfem_get_contact_slave_nodes_opt_i_r1112
-  private :: tfem_get_contact_slave_nodes_opt_i_r2112, tfem_get_contact_slave_nodes_opt_i_r1212
-  private :: tfem_get_contact_slave_nodes_opt_i_r2212, tfem_get_contact_slave_nodes_opt_i_r1122
-  private :: tfem_get_contact_slave_nodes_opt_i_r2122, tfem_get_contact_slave_nodes_opt_i_r1222
-  private :: tfem_get_contact_slave_nodes_opt_i_r2222, tfem_step_opt, tfem_get_contact_state_r2
-  private :: tfem_get_contact_state_i, tfem_get_contact_state_i_r2, tfem_set_contact_state_r2
-  private :: tfem_set_contact_state_i, tfem_set_contact_state_i_r2, tfem_get_system_matrix_size_opt
+  private :: tfem_get_element_out_of_plane_stresses_r2, tfem_get_element_out_of_plane_stresses_i
+  private :: tfem_get_element_out_of_plane_stresses_i_r2, tfem_get_element_jacobians_r2
+  private :: tfem_get_element_jacobians_i, tfem_get_element_jacobians_i_r2, tfem_get_reactions_r2
+  private :: tfem_get_reactions_i, tfem_get_reactions_i_r2, tfem_get_contact_forces_r2
+  private :: tfem_get_contact_forces_i, tfem_get_contact_forces_i_r2
+  private :: tfem_get_contact_nodal_pressures_r2, tfem_get_contact_nodal_pressures_i
+  private :: tfem_get_contact_nodal_pressures_i_r2, tfem_get_contact_nodal_tractions_r2
+  private :: tfem_get_contact_nodal_tractions_i, tfem_get_contact_nodal_tractions_i_r2
+  private :: tfem_get_contact_pair_nodal_pressures_r2, tfem_get_contact_pair_nodal_pressures_i
+  private :: tfem_get_contact_pair_nodal_pressures_i_r2, tfem_get_contact_pair_nodal_tractions_r2
+  private :: tfem_get_contact_pair_nodal_tractions_i, tfem_get_contact_pair_nodal_tractions_i_r2
+  private :: tfem_get_contact_gaps_r2, tfem_get_contact_gaps_i, tfem_get_contact_gaps_i_r2
+  private :: tfem_get_contact_active_r2, tfem_get_contact_active_i, tfem_get_contact_active_i_r2
+  private :: tfem_get_contact_pressure_r2, tfem_get_contact_pressure_i
+  private :: tfem_get_contact_pressure_i_r2, tfem_get_contact_elements_r2
+  private :: tfem_get_contact_elements_i, tfem_get_contact_elements_i_r2, tfem_get_contact_shear_r2
+  private :: tfem_get_contact_shear_i, tfem_get_contact_shear_i_r2
+  private :: tfem_get_contact_friction_state_r2, tfem_get_contact_friction_state_i
+  private :: tfem_get_contact_friction_state_i_r2, tfem_get_contact_dissipation_r2
+  private :: tfem_get_contact_dissipation_i, tfem_get_contact_dissipation_i_r2
+  private :: tfem_get_contact_slave_nodes_opt, tfem_get_contact_slave_nodes_opt_r2111
+  private :: tfem_get_contact_slave_nodes_opt_r1211, tfem_get_contact_slave_nodes_opt_r2211
+  private :: tfem_get_contact_slave_nodes_opt_r1121, tfem_get_contact_slave_nodes_opt_r2121
+  private :: tfem_get_contact_slave_nodes_opt_r1221, tfem_get_contact_slave_nodes_opt_r2221
+  private :: tfem_get_contact_slave_nodes_opt_r1112, tfem_get_contact_slave_nodes_opt_r2112
+  private :: tfem_get_contact_slave_nodes_opt_r1212, tfem_get_contact_slave_nodes_opt_r2212
+  private :: tfem_get_contact_slave_nodes_opt_r1122, tfem_get_contact_slave_nodes_opt_r2122
+  private :: tfem_get_contact_slave_nodes_opt_r1222, tfem_get_contact_slave_nodes_opt_r2222
+  private :: tfem_get_contact_slave_nodes_opt_i, tfem_get_contact_slave_nodes_opt_i_r2111
+  private :: tfem_get_contact_slave_nodes_opt_i_r1211, tfem_get_contact_slave_nodes_opt_i_r2211
+  private :: tfem_get_contact_slave_nodes_opt_i_r1121, tfem_get_contact_slave_nodes_opt_i_r2121
+  private :: tfem_get_contact_slave_nodes_opt_i_r1221, tfem_get_contact_slave_nodes_opt_i_r2221
+  private :: tfem_get_contact_slave_nodes_opt_i_r1112, tfem_get_contact_slave_nodes_opt_i_r2112
+  private :: tfem_get_contact_slave_nodes_opt_i_r1212, tfem_get_contact_slave_nodes_opt_i_r2212
+  private :: tfem_get_contact_slave_nodes_opt_i_r1122, tfem_get_contact_slave_nodes_opt_i_r2122
+  private :: tfem_get_contact_slave_nodes_opt_i_r1222, tfem_get_contact_slave_nodes_opt_i_r2222
+  private :: tfem_step_opt, tfem_get_contact_state_r2, tfem_get_contact_state_i
+  private :: tfem_get_contact_state_i_r2, tfem_set_contact_state_r2, tfem_set_contact_state_i
+  private :: tfem_set_contact_state_i_r2, tfem_get_system_matrix_size_opt
   private :: tfem_get_system_matrix_r2111, tfem_get_system_matrix_r1211
   private :: tfem_get_system_matrix_r2211, tfem_get_system_matrix_r1121
   private :: tfem_get_system_matrix_r2121, tfem_get_system_matrix_r1221
@@ -6123,6 +6173,16 @@ module tfem
     procedure tfem_get_element_stresses_i
     procedure tfem_get_element_stresses_i_r2
   end interface tfem_get_element_stresses
+
+  !> Fortran: tfem_get_element_out_of_plane_stresses (documented in module tfem_c). `length` takes
+  !! an integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
+  !! as 0. `out` may have rank 1 or 2.
+  interface tfem_get_element_out_of_plane_stresses
+    procedure tfem_get_element_out_of_plane_stresses
+    procedure tfem_get_element_out_of_plane_stresses_r2
+    procedure tfem_get_element_out_of_plane_stresses_i
+    procedure tfem_get_element_out_of_plane_stresses_i_r2
+  end interface tfem_get_element_out_of_plane_stresses
 
   !> Fortran: tfem_get_element_jacobians (documented in module tfem_c). `length` takes an
   !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as

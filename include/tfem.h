@@ -291,6 +291,13 @@ typedef enum tfem_plane_mode {
    * σ_zz = 0 (thin plates).
    */
   TFEM_PLANE_MODE_STRESS = 1,
+  /**
+   * Bodies of revolution about the axis x = 0: x is the radius r ≥ 0,
+   * y the axial coordinate z, and the hoop strain ε_θθ = u_r/r. Every
+   * force and stiffness is that of the whole ring (2π radians):
+   * docs/method.md §7.
+   */
+  TFEM_PLANE_MODE_AXISYMMETRIC = 2,
 } tfem_plane_mode;
 
 /**
@@ -707,8 +714,13 @@ enum tfem_status tfem_get_boundary_edges(struct tfem_model *model,
 
 /**
  * Sets the material of body `body`: Young's modulus `young` (> 0), Poisson
- * ratio `poisson` (in (-1, 0.5) for plane strain, (-1, 0.5] for plane
- * stress) and `plane` (a `PlaneMode`: 0 strain, 1 stress).
+ * ratio `poisson` (in (-1, 0.5) for plane strain and axisymmetric bodies,
+ * (-1, 0.5] for plane stress) and `plane` (a `PlaneMode`: 0 strain, 1
+ * stress, 2 axisymmetric). Axisymmetric bodies (x the radius, y the axis)
+ * do not mix with plane ones, lie at x >= 0, need u_r = 0 fixed on nodes
+ * on the axis (checked by the solve) and take the whole ring's forces:
+ * nodal forces and reactions are totals around the circumference,
+ * pressures and tractions per unit area (docs/method.md §7).
  */
 enum tfem_status tfem_set_material(struct tfem_model *model,
                                    int body,
@@ -1025,6 +1037,15 @@ enum tfem_status tfem_get_element_strains(struct tfem_model *model, double *out,
  * overflow gives TFEM_STATUS_NUMERICAL_FAILURE naming the triangle.
  */
 enum tfem_status tfem_get_element_stresses(struct tfem_model *model, double *out, size_t length);
+
+/**
+ * Copies each triangle's stress normal to the mesh's plane (n_triangles
+ * values), computed on request: the hoop stress σ_θθ of axisymmetric
+ * bodies, σ_zz = λ(ε_xx + ε_yy) in plane strain, 0 in plane stress.
+ */
+enum tfem_status tfem_get_element_out_of_plane_stresses(struct tfem_model *model,
+                                                        double *out,
+                                                        size_t length);
 
 /**
  * Copies J (twice the signed area, initial configuration) of every
@@ -1403,9 +1424,13 @@ enum tfem_status tfem_get_system_matrix(struct tfem_model *model,
 /**
  * Tempered elasticity stiffness of one P1 triangle with corners `xy`
  * (x1 y1 x2 y2 x3 y3): K = B̂ᵀ D B̂ / (2·max(J, jmin)), written row-major
- * into `out` (36 values, DOFs u1 v1 u2 v2 u3 v3). `jmin` > 0 tempers;
- * `jmin` = 0 is plain FEM (divides by |J|, fails for J = 0). Pure and
- * thread-safe; errors go to the thread's `tfem_last_error(NULL, …)`.
+ * into `out` (36 values, DOFs u1 v1 u2 v2 u3 v3). For
+ * `TFEM_PLANE_MODE_AXISYMMETRIC` (x the radius, corners with x ≥ 0) the
+ * whole ring's K = 2πx̄ (B̂ + J H)ᵀ D₄ (B̂ + J H) / (2·max(J, jmin)), H
+ * the hoop row 1/(3x̄) on each u_r (docs/method.md §7). `jmin` > 0
+ * tempers; `jmin` = 0 is plain FEM (divides by |J|, fails for J = 0).
+ * Pure and thread-safe; errors go to the thread's `tfem_last_error(NULL,
+ * …)`.
  */
 enum tfem_status tfem_element_stiffness(const double *xy,
                                         double young,

@@ -358,6 +358,7 @@ impl HostContact {
             edges,
         };
         given.check_lengths()?;
+        self.check_section(&given, &material)?;
         let mut staged = self.stage(&given)?;
         self.stage_nodes(&given, &mut staged)?;
         self.reserve_commit(&staged, &given.name)?;
@@ -365,6 +366,35 @@ impl HostContact {
         let side = self.staged_side(&given, &staged)?;
         let shared = self.shared_with(&staged, &given.name)?;
         Ok(self.commit(staged, side, material, shared))
+    }
+
+    /// Refuses a side whose material's section (plane or axisymmetric)
+    /// differs from the sides' before it, and an axisymmetric side with a
+    /// node across the axis (x < 0), naming it.
+    fn check_section(&self, given: &GivenSide, material: &Material) -> Result<()> {
+        let ring = material.section().is_revolution();
+        if let Some((i, (_, other))) = (self.sides.iter().enumerate())
+            .find(|(_, (_, m))| m.section().is_revolution() != ring)
+        {
+            return Err(Error::argument(format!(
+                "{}: a {} side cannot join side {i}, which is {}: a contact context is \
+                 axisymmetric in every side or in none",
+                given.name,
+                material.plane().name(),
+                other.plane().name()
+            )));
+        }
+        if let Some(i) = (0..given.xy.len()).find(|&i| ring && given.xy[i][0] < 0.0) {
+            return Err(Error::argument(format!(
+                "{}: node {} (entry {}) has x = {} < 0: an axisymmetric side lies at x >= 0 \
+                 (x is the radius)",
+                given.name,
+                given.nodes[i],
+                i + self.base,
+                given.xy[i][0]
+            )));
+        }
+        Ok(())
     }
 
     /// An empty staging of `given` beside the context's nodes: every

@@ -302,6 +302,20 @@ pub(crate) fn section_stiffness_into(
     finite_or_error(k.iter().flatten())
 }
 
+/// [`section_stiffness_into`] as a value: the tempered stiffness of a
+/// body element of material section `section` with corners `p`.
+pub fn section_stiffness(
+    p: &[[f64; 2]; 3],
+    d: &[[f64; 3]; 3],
+    section: Section,
+    jmin: Jmin,
+) -> Result<[[f64; 6]; 6]> {
+    let mut k = [[0.0; 6]; 6];
+    let x = (p[0][0] + p[1][0] + p[2][0]) / 3.0;
+    section_stiffness_into(&TriGeometry::new(p), d, section, x, jmin, &mut k)?;
+    Ok(k)
+}
+
 /// The hoop strain ε_θθ that [`section_stiffness_into`] reads on a ring
 /// element with centroid abscissa `x`, element values `ue` and tempered
 /// Jacobian `t`: (J/T) ū_r/x̄ (ū_r/x̄ where J ≥ Jmin; 0 on the axis).

@@ -18,7 +18,7 @@ use super::plumbing::{
 use crate::contact::mortar::SlaveNode;
 use crate::contact::{ContactOptions, ContactWeighting};
 use crate::error::{Error, Result, Status};
-use crate::fem::element::{Tempering, TriGeometry, elasticity_stiffness, laplacian_stiffness};
+use crate::fem::element::{Tempering, TriGeometry, laplacian_stiffness, section_stiffness};
 use crate::fem::material::Material;
 use crate::fem::mesh::Mesh;
 use crate::linalg::Ordering;
@@ -535,8 +535,13 @@ pub unsafe extern "C" fn tfem_get_boundary_edges(
 // -------- Materials, tempering and ordering ---------------------------
 
 /// Sets the material of body `body`: Young's modulus `young` (> 0), Poisson
-/// ratio `poisson` (in (-1, 0.5) for plane strain, (-1, 0.5] for plane
-/// stress) and `plane` (a `PlaneMode`: 0 strain, 1 stress).
+/// ratio `poisson` (in (-1, 0.5) for plane strain and axisymmetric bodies,
+/// (-1, 0.5] for plane stress) and `plane` (a `PlaneMode`: 0 strain, 1
+/// stress, 2 axisymmetric). Axisymmetric bodies (x the radius, y the axis)
+/// do not mix with plane ones, lie at x >= 0, need u_r = 0 fixed on nodes
+/// on the axis (checked by the solve) and take the whole ring's forces:
+/// nodal forces and reactions are totals around the circumference,
+/// pressures and tractions per unit area (docs/method.md §7).
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_set_material(
     model: *mut TfemModel,
@@ -1148,6 +1153,20 @@ pub unsafe extern "C" fn tfem_get_element_stresses(
     with_model(model, |m| {
         let v: Vec<f64> = m.model.element_stresses()?.into_iter().flatten().collect();
         copy_out(&v, out, length, "out")
+    })
+}
+
+/// Copies each triangle's stress normal to the mesh's plane (n_triangles
+/// values), computed on request: the hoop stress σ_θθ of axisymmetric
+/// bodies, σ_zz = λ(ε_xx + ε_yy) in plane strain, 0 in plane stress.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_element_out_of_plane_stresses(
+    model: *mut TfemModel,
+    out: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        copy_out(&m.model.element_out_of_plane_stresses()?, out, length, "out")
     })
 }
 
@@ -1777,9 +1796,13 @@ pub unsafe extern "C" fn tfem_get_system_matrix(
 
 /// Tempered elasticity stiffness of one P1 triangle with corners `xy`
 /// (x1 y1 x2 y2 x3 y3): K = B̂ᵀ D B̂ / (2·max(J, jmin)), written row-major
-/// into `out` (36 values, DOFs u1 v1 u2 v2 u3 v3). `jmin` > 0 tempers;
-/// `jmin` = 0 is plain FEM (divides by |J|, fails for J = 0). Pure and
-/// thread-safe; errors go to the thread's `tfem_last_error(NULL, …)`.
+/// into `out` (36 values, DOFs u1 v1 u2 v2 u3 v3). For
+/// `TFEM_PLANE_MODE_AXISYMMETRIC` (x the radius, corners with x ≥ 0) the
+/// whole ring's K = 2πx̄ (B̂ + J H)ᵀ D₄ (B̂ + J H) / (2·max(J, jmin)), H
+/// the hoop row 1/(3x̄) on each u_r (docs/method.md §7). `jmin` > 0
+/// tempers; `jmin` = 0 is plain FEM (divides by |J|, fails for J = 0).
+/// Pure and thread-safe; errors go to the thread's `tfem_last_error(NULL,
+/// …)`.
 #[unsafe(no_mangle)]
 pub unsafe extern "C" fn tfem_element_stiffness(
     xy: *const f64,
@@ -1792,7 +1815,16 @@ pub unsafe extern "C" fn tfem_element_stiffness(
     without_model(|| {
         let x = corners_arg(xy)?;
         let mat = Material::new(young, poisson, plane(plane_mode)?, "element")?;
-        let k = elasticity_stiffness(&TriGeometry::new(&x), &mat.d_matrix(), jmin_arg(jmin)?)?;
+        let section = mat.section();
+        if let Some(c) = (0..3).find(|&c| section.is_revolution() && x[c][0] < 0.0) {
+            return Err(Error::argument(format!(
+                "corner {} has x = {} < 0: an axisymmetric element lies at x >= 0 (x is \
+                 the radius)",
+                c + 1,
+                x[c][0]
+            )));
+        }
+        let k = section_stiffness(&x, &mat.d_matrix(), section, jmin_arg(jmin)?)?;
         let flat: Vec<f64> = k.iter().flatten().copied().collect();
         copy_out(&flat, out, 36, "out")
     })
