@@ -373,8 +373,8 @@ impl HostContact {
     /// node across the axis (x < 0), naming it.
     fn check_section(&self, given: &GivenSide, material: &Material) -> Result<()> {
         let ring = material.section().is_revolution();
-        if let Some((i, (_, other))) = (self.sides.iter().enumerate())
-            .find(|(_, (_, m))| m.section().is_revolution() != ring)
+        if let Some((i, (_, other))) =
+            (self.sides.iter().enumerate()).find(|(_, (_, m))| m.section().is_revolution() != ring)
         {
             return Err(Error::argument(format!(
                 "{}: a {} side cannot join side {i}, which is {}: a contact context is \

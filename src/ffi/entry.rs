@@ -1166,7 +1166,12 @@ pub unsafe extern "C" fn tfem_get_element_out_of_plane_stresses(
     length: usize,
 ) -> Status {
     with_model(model, |m| {
-        copy_out(&m.model.element_out_of_plane_stresses()?, out, length, "out")
+        copy_out(
+            &m.model.element_out_of_plane_stresses()?,
+            out,
+            length,
+            "out",
+        )
     })
 }
 

@@ -9,6 +9,7 @@ pub mod hertz;
 pub mod lame;
 pub mod patch;
 pub mod punch;
+pub mod revolution;
 pub mod ring;
 pub mod shrink_fit;
 pub mod stack;

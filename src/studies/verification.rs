@@ -13,7 +13,8 @@ use crate::fem::material::Material;
 use crate::fem::mesh::Mesh;
 use crate::model::{Component, Model};
 
-fn point(x: &[[f64; 2]; 3], q: &[f64; 3]) -> [f64; 2] {
+/// The point of barycentric coordinates `q` in the triangle `x`.
+pub fn point(x: &[[f64; 2]; 3], q: &[f64; 3]) -> [f64; 2] {
     [
         q[0] * x[0][0] + q[1] * x[1][0] + q[2] * x[2][0],
         q[0] * x[0][1] + q[1] * x[1][1] + q[2] * x[2][1],
