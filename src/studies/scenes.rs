@@ -12,6 +12,7 @@ pub mod punch;
 pub mod revolution;
 pub mod ring;
 pub mod shrink_fit;
+pub mod sphere;
 pub mod stack;
 pub mod wall;
 

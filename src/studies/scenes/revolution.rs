@@ -312,3 +312,425 @@ impl ThickCylinder {
         })
     }
 }
+
+/// Tag of the lower cylinder's bottom (held axially).
+pub const TAG_BASE: i32 = 1;
+/// Tag of the lower cylinder's top (contact side a).
+pub const TAG_LOWER_TOP: i32 = 2;
+/// Tag of the upper cylinder's bottom (contact side b).
+pub const TAG_UPPER_BOTTOM: i32 = 3;
+/// Tag of the upper cylinder's top (loaded).
+pub const TAG_TOP: i32 = 4;
+
+/// The axisymmetric contact patch test: two coaxial cylinders (or tubes)
+/// r0 ≤ r ≤ r0 + w stacked along z, the lower on [−H, 0] held axially at
+/// its bottom, the upper on [0, H] pressed by a uniform pressure p on its
+/// top, frictionless. Exact: σ_zz = −p in both, every other stress 0
+/// (each body expands radially by ν p r/E). [`Default`]: a solid cylinder
+/// (r0 = 0) of radius 1, H = 1/2, equal materials, 8 cells over the
+/// radius below and 12 above (non-matching).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StackedCylinders {
+    /// Inner radius r0 (0: solid cylinders, u_r = 0 on the axis).
+    pub inner: f64,
+    /// Wall width w.
+    pub width: f64,
+    /// Height H of each cylinder.
+    pub height: f64,
+    /// Cells over the width, lower and upper cylinder.
+    pub cells: [usize; 2],
+    /// Young's moduli, lower and upper.
+    pub e: [f64; 2],
+    /// Poisson ratios, lower and upper.
+    pub nu: [f64; 2],
+    /// The pressure p.
+    pub pressure: f64,
+}
+
+impl Default for StackedCylinders {
+    fn default() -> Self {
+        StackedCylinders {
+            inner: 0.0,
+            width: 1.0,
+            height: 0.5,
+            cells: [8, 12],
+            e: [1e3, 1e3],
+            nu: [0.3, 0.3],
+            pressure: 1.0,
+        }
+    }
+}
+
+/// The patch test's errors.
+#[derive(Debug, Clone, Copy)]
+pub struct PatchResult {
+    /// Largest |σ − σ_exact| over the elements and components (hoop
+    /// included), over p.
+    pub stress_error: f64,
+    /// Largest |p_node − p| over the contact nodes, over p.
+    pub pressure_error: f64,
+    /// The total reaction of the base against p π((r0 + w)² − r0²),
+    /// relative.
+    pub force_error: f64,
+    /// Whether every element of B ended active.
+    pub all_active: bool,
+}
+
+impl StackedCylinders {
+    /// Builds, solves and measures the patch test.
+    pub fn solve(&self) -> Result<PatchResult> {
+        let (r0, w, hh) = (self.inner, self.width, self.height);
+        let mut mb = MeshBuilder::new();
+        let mut rows = Vec::new();
+        for (k, zs) in [[-hh, 0.0], [0.0, hh]].iter().enumerate() {
+            let n = self.cells[k];
+            let rs: Vec<f64> = (0..=n).map(|i| r0 + w * i as f64 / n as f64).collect();
+            let nz = ((hh / w) * n as f64).ceil().max(1.0) as usize;
+            let zs: Vec<f64> = (0..=nz)
+                .map(|j| zs[0] + (zs[1] - zs[0]) * j as f64 / nz as f64)
+                .collect();
+            rows.push(mb.add_grid(&rs, &zs, k as i32 + 1, Diagonal::Forward));
+        }
+        let (lower, upper) = (&rows[0], &rows[1]);
+        let mut edges = Vec::new();
+        let mut tags = Vec::new();
+        let row_tag = [
+            (&lower[0], TAG_BASE),
+            (lower.last().expect("rows"), TAG_LOWER_TOP),
+            (&upper[0], TAG_UPPER_BOTTOM),
+            (upper.last().expect("rows"), TAG_TOP),
+        ];
+        for e in mb.boundary_edges() {
+            if let Some((_, tag)) = row_tag
+                .iter()
+                .find(|(row, _)| row.contains(&e[0]) && row.contains(&e[1]))
+            {
+                edges.push(e);
+                tags.push(*tag);
+            }
+        }
+        let axis: Vec<usize> = match r0 == 0.0 {
+            true => rows.iter().flatten().map(|row| row[0]).collect(),
+            false => Vec::new(),
+        };
+        let mut model = Model::new();
+        model.set_mesh(mb.build()?);
+        model.set_boundary_edges(&edges, &tags)?;
+        for k in 0..2 {
+            let what = format!("body {}", k + 1);
+            let m = Material::new(self.e[k], self.nu[k], PlaneMode::Axisymmetric, &what)?;
+            model.set_material(k as i32 + 1, m)?;
+        }
+        model.fix_edges(TAG_BASE, Component::Y, 0.0)?;
+        for &v in &axis {
+            model.fix(v, Component::X, 0.0)?;
+        }
+        model.add_pressure(TAG_TOP, self.pressure)?;
+        model.add_contact_pair(TAG_LOWER_TOP, TAG_UPPER_BOTTOM)?;
+        model.solve_contact(&crate::contact::ContactOptions::default())?;
+        let p = self.pressure;
+        let stresses = model.element_stresses()?;
+        let hoop = model.element_out_of_plane_stresses()?;
+        let stress_error = stresses
+            .iter()
+            .zip(&hoop)
+            .map(|(s, h)| {
+                let e = [s[0].abs(), (s[1] + p).abs(), s[2].abs(), h.abs()];
+                e.into_iter().fold(0.0, f64::max) / p
+            })
+            .fold(0.0, f64::max);
+        let nodal = model.contact_nodal_pressures()?;
+        let contact_nodes: Vec<usize> = lower
+            .last()
+            .expect("rows")
+            .iter()
+            .chain(&upper[0])
+            .copied()
+            .collect();
+        let pressure_error = contact_nodes
+            .iter()
+            .map(|&v| (nodal[v] - p).abs() / p)
+            .fold(0.0, f64::max);
+        let reactions = model.reactions()?;
+        let base: f64 = lower[0].iter().map(|&v| reactions[v][1]).sum();
+        let outer = r0 + w;
+        let total = p * std::f64::consts::PI * (outer * outer - r0 * r0);
+        Ok(PatchResult {
+            stress_error,
+            pressure_error,
+            force_error: (base - total).abs() / total,
+            all_active: model.contact_active()?.iter().all(|&a| a),
+        })
+    }
+}
+
+/// Tag of the shaft's surface (contact side a).
+pub const TAG_SHAFT: i32 = 5;
+/// Tag of the hub's bore (contact side b).
+pub const TAG_HUB_BORE: i32 = 6;
+/// Tag of the shaft's ends.
+pub const TAG_SHAFT_ENDS: i32 = 7;
+/// Tag of the hub's ends.
+pub const TAG_HUB_ENDS: i32 = 8;
+
+/// A hub b ≤ r ≤ c shrunk on a solid shaft of radius b + δ, both of length
+/// ℓ, their ends held axially (ε_zz = 0: a slice of a long fit), so that
+/// Lamé's plane-strain shrink fit is exact at every z: contact pressure
+///
+/// ```text
+///   p = E' δ (c² − b²) / (2 b c²),   E' = E/(1 − ν²)
+/// ```
+///
+/// (same material), hoop stress p (c² + b²)/(c² − b²) at the bore, −p in
+/// the shaft. With friction μ, pushing the shaft's ends along the axis by
+/// `push` slides it through the hub against the push-out force
+/// F = 2π b ℓ μ p. [`Default`]: b = 1, c = 2, ℓ = 2, δ = 10⁻³ b, steel,
+/// 8 cells over the shaft's radius and the hub's wall (h = 1/8), the hub's
+/// 3 cells for the shaft's 2 along z (non-matching).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ShaftHub {
+    /// Bore radius b.
+    pub bore: f64,
+    /// Outer radius c of the hub.
+    pub outer: f64,
+    /// Length ℓ.
+    pub length: f64,
+    /// Radial interference δ.
+    pub interference: f64,
+    /// Young's modulus (both).
+    pub e: f64,
+    /// Poisson ratio (both).
+    pub nu: f64,
+    /// Cells over the bore radius b (and per b along z, for the shaft).
+    pub cells: usize,
+    /// Cells of the hub along z per cell of the shaft, as a ratio
+    /// (numerator, denominator): (1, 1) matching, (3, 2) non-matching.
+    pub ratio: (usize, usize),
+    /// Coulomb coefficient μ of the fit.
+    pub mu: f64,
+}
+
+impl Default for ShaftHub {
+    fn default() -> Self {
+        ShaftHub {
+            bore: 1.0,
+            outer: 2.0,
+            length: 2.0,
+            interference: 1e-3,
+            e: 210e3,
+            nu: 0.3,
+            cells: 8,
+            ratio: (3, 2),
+            mu: 0.0,
+        }
+    }
+}
+
+/// A built shaft–hub fit.
+pub struct ShaftHubScene {
+    /// The model, ready for `solve_contact` or load steps.
+    pub model: Model,
+    /// The shaft's surface nodes (r = b + δ), by z.
+    pub shaft_surface: Vec<usize>,
+    /// The hub's bore nodes (r = b), by z.
+    pub hub_bore: Vec<usize>,
+    /// The shaft's end nodes (z = 0 and ℓ).
+    pub shaft_ends: Vec<usize>,
+    /// The first triangle of the hub (the shaft's come first).
+    pub first_hub_triangle: usize,
+}
+
+/// What a solved fit measures against Lamé.
+#[derive(Debug, Clone, Copy)]
+pub struct ShaftHubResult {
+    /// Mean nodal contact pressure over the middle half of the length
+    /// (ℓ/4 ≤ z ≤ 3ℓ/4, both sides), over Lamé's p, minus 1.
+    pub pressure_error: f64,
+    /// Largest |p_node/p − 1| over that middle half.
+    pub pressure_spread: f64,
+    /// Mean hoop stress of the hub's bore elements (their centroid within
+    /// h of the bore) over the middle half, against Lamé's at their mean
+    /// radius, relative.
+    pub hub_hoop_error: f64,
+    /// Mean hoop stress of the shaft's elements over the middle half
+    /// against −p, relative.
+    pub shaft_hoop_error: f64,
+    /// Unknowns.
+    pub unknowns: usize,
+    /// Seconds for the contact solve.
+    pub seconds: f64,
+}
+
+impl ShaftHub {
+    /// Lamé's contact pressure of the fit (plane strain, same material).
+    pub fn pressure(&self) -> f64 {
+        let (b, c) = (self.bore, self.outer);
+        let e_plane = self.e / (1.0 - self.nu * self.nu);
+        e_plane * self.interference * (c * c - b * b) / (2.0 * b * c * c)
+    }
+
+    /// Lamé's hoop stress in the hub at radius r.
+    pub fn hub_hoop(&self, r: f64) -> f64 {
+        let (b, c) = (self.bore, self.outer);
+        self.pressure() * b * b / (c * c - b * b) * (1.0 + c * c / (r * r))
+    }
+
+    /// The push-out force 2π b ℓ μ p.
+    pub fn push_out_force(&self) -> f64 {
+        TAU * self.bore * self.length * self.mu * self.pressure()
+    }
+
+    /// Builds the model: shaft body 1, hub body 2, ends held axially, u_r =
+    /// 0 on the axis, the pair (shaft, bore) with friction μ.
+    pub fn build(&self) -> Result<ShaftHubScene> {
+        let (b, c, l, d) = (self.bore, self.outer, self.length, self.interference);
+        if !(b > 0.0 && c > b && l > 0.0 && d >= 0.0 && d < 0.1 * b && self.cells >= 2) {
+            return Err(Error::argument(
+                "shaft and hub: need 0 < b < c, ℓ > 0, 0 <= δ < b/10, cells >= 2",
+            ));
+        }
+        let h = b / self.cells as f64;
+        let (num, den) = self.ratio;
+        let shaft_r = subdivide(0.0, b + d, &[], h)?;
+        let hub_r = subdivide(b, c, &[], h)?;
+        let shaft_z = subdivide(0.0, l, &[], h)?;
+        let hub_z = subdivide(0.0, l, &[], h * den as f64 / num as f64)?;
+        let mut mb = MeshBuilder::new();
+        let shaft = mb.add_grid(&shaft_r, &shaft_z, 1, Diagonal::Forward);
+        let first_hub_triangle = mb.triangles.len();
+        let hub = mb.add_grid(&hub_r, &hub_z, 2, Diagonal::Forward);
+        let shaft_surface: Vec<usize> = shaft.iter().map(|row| *row.last().expect("cells")).collect();
+        let hub_bore: Vec<usize> = hub.iter().map(|row| row[0]).collect();
+        let axis: Vec<usize> = shaft.iter().map(|row| row[0]).collect();
+        let shaft_ends: Vec<usize> = shaft[0]
+            .iter()
+            .chain(shaft.last().expect("rows"))
+            .copied()
+            .collect();
+        let hub_ends: Vec<usize> = hub[0].iter().chain(hub.last().expect("rows")).copied().collect();
+        let (mut edges, mut tags) = (Vec::new(), Vec::new());
+        for e in mb.boundary_edges() {
+            let both = |s: &[usize]| s.contains(&e[0]) && s.contains(&e[1]);
+            let tag = if both(&shaft_surface) {
+                TAG_SHAFT
+            } else if both(&hub_bore) {
+                TAG_HUB_BORE
+            } else if both(&shaft_ends) && mb.nodes[e[0]][1] == mb.nodes[e[1]][1] {
+                TAG_SHAFT_ENDS
+            } else if both(&hub_ends) && mb.nodes[e[0]][1] == mb.nodes[e[1]][1] {
+                TAG_HUB_ENDS
+            } else {
+                continue;
+            };
+            edges.push(e);
+            tags.push(tag);
+        }
+        let mut model = Model::new();
+        model.set_mesh(mb.build()?);
+        model.set_boundary_edges(&edges, &tags)?;
+        for (body, what) in [(1, "shaft"), (2, "hub")] {
+            let m = Material::new(self.e, self.nu, PlaneMode::Axisymmetric, what)?;
+            model.set_material(body, m)?;
+        }
+        for &v in &axis {
+            model.fix(v, Component::X, 0.0)?;
+        }
+        for &v in shaft_ends.iter().chain(&hub_ends) {
+            model.fix(v, Component::Y, 0.0)?;
+        }
+        let pair = model.add_contact_pair(TAG_SHAFT, TAG_HUB_BORE)?;
+        if self.mu > 0.0 {
+            model.set_friction(pair, self.mu)?;
+        }
+        Ok(ShaftHubScene {
+            model,
+            shaft_surface,
+            hub_bore,
+            shaft_ends,
+            first_hub_triangle,
+        })
+    }
+
+    /// Builds and solves the fit (one contact solve) and measures it.
+    pub fn solve(&self) -> Result<(ShaftHubScene, ShaftHubResult)> {
+        let mut scene = self.build()?;
+        let t0 = Instant::now();
+        let report = scene.model.solve_contact(&crate::contact::ContactOptions::default())?;
+        let seconds = t0.elapsed().as_secs_f64();
+        let result = self.measure(&scene, report.info.unknowns, seconds)?;
+        Ok((scene, result))
+    }
+
+    /// The push-out force: the fit made in one load step, then the
+    /// shaft's ends moved along the axis by `push` in `steps` more (the
+    /// hub's stay held); the force is the shaft ends' axial reaction (the
+    /// whole ring's). Gives it with the elements that slip at the end
+    /// over all of them.
+    pub fn push_out(&self, push: f64, steps: usize) -> Result<(f64, f64)> {
+        let mut scene = self.build()?;
+        let options = crate::contact::ContactOptions::default();
+        scene.model.step(1.0, &options)?;
+        for k in 1..=steps {
+            let at = push * k as f64 / steps as f64;
+            for &v in &scene.shaft_ends {
+                scene.model.set_prescribed(v, Component::Y, at)?;
+            }
+            scene.model.step(1.0, &options)?;
+        }
+        let reactions = scene.model.reactions()?;
+        let force: f64 = scene.shaft_ends.iter().map(|&v| reactions[v][1]).sum();
+        let states = scene.model.contact_friction_state()?;
+        let closed = states.iter().filter(|&&s| s != 0).count();
+        let slipping = states.iter().filter(|&&s| s == 2).count();
+        Ok((force.abs(), slipping as f64 / closed.max(1) as f64))
+    }
+
+    /// The fit's pressure and hoop stresses against Lamé over the middle
+    /// half of the length.
+    pub fn measure(
+        &self,
+        scene: &ShaftHubScene,
+        unknowns: usize,
+        seconds: f64,
+    ) -> Result<ShaftHubResult> {
+        let model = &scene.model;
+        let mesh = model.mesh().expect("built");
+        let l = self.length;
+        let middle = |z: f64| (0.25 * l..=0.75 * l).contains(&z);
+        let p = self.pressure();
+        let nodal = model.contact_nodal_pressures()?;
+        let ratios: Vec<f64> = (scene.shaft_surface.iter().chain(&scene.hub_bore))
+            .filter(|&&v| middle(mesh.nodes()[v][1]))
+            .map(|&v| nodal[v] / p)
+            .collect();
+        let mean = ratios.iter().sum::<f64>() / ratios.len() as f64;
+        let spread = ratios.iter().map(|r| (r - 1.0).abs()).fold(0.0, f64::max);
+        let hoop = model.element_out_of_plane_stresses()?;
+        let h = self.bore / self.cells as f64;
+        let (mut hub, mut hub_exact, mut shaft, mut n_shaft) = (0.0, 0.0, 0.0, 0usize);
+        for (t, tri) in mesh.triangles().iter().enumerate() {
+            let x = mesh.corners(tri);
+            let [r, z] = [0, 1].map(|c| (x[0][c] + x[1][c] + x[2][c]) / 3.0);
+            if !middle(z) {
+                continue;
+            }
+            if t >= scene.first_hub_triangle {
+                if r < self.bore + h {
+                    hub += hoop[t];
+                    hub_exact += self.hub_hoop(r);
+                }
+            } else {
+                shaft += hoop[t];
+                n_shaft += 1;
+            }
+        }
+        Ok(ShaftHubResult {
+            pressure_error: mean - 1.0,
+            pressure_spread: spread,
+            hub_hoop_error: hub / hub_exact - 1.0,
+            shaft_hoop_error: (shaft / n_shaft as f64) / (-p) - 1.0,
+            unknowns,
+            seconds,
+        })
+    }
+}
