@@ -287,16 +287,15 @@ pub(crate) fn section_stiffness_into(
         true => hoop * tau * geo.j * geo.j / (9.0 * x) / (2.0 * t),
         false => 0.0,
     };
-    // v: the hoop column of D₄ through B̂, λ (g_x, g_y) at each node.
+    // v: the hoop column of D₄ through B̂, λ (g_x, g_y) at each node; e:
+    // the u_r indicator. Mirrored, not recomputed: exactly symmetric.
     let v: [f64; 6] = std::array::from_fn(|c| coupling * geo.g[c / 2][c % 2]);
-    for a in 0..3 {
-        for c in 0..6 {
-            // Row u_a (e_{2a} = 1) and its mirror column.
-            k[2 * a][c] += cross * v[c];
-            k[c][2 * a] += cross * v[c];
-        }
-        for b in 0..3 {
-            k[2 * a][2 * b] += ring;
+    let e = |a: usize| if a % 2 == 0 { 1.0 } else { 0.0 };
+    for a in 0..6 {
+        for c in a..6 {
+            let extra = cross * (e(a) * v[c] + v[a] * e(c)) + ring * e(a) * e(c);
+            k[a][c] += extra;
+            k[c][a] = k[a][c];
         }
     }
     finite_or_error(k.iter().flatten())
