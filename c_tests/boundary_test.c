@@ -2865,6 +2865,72 @@ static void nodal_tractions_read_the_pressure_and_no_shear_when_frictionless(voi
   tfem_destroy(m);
 }
 
+/* Two solid cylinders of radius 1 stacked on the axis (axisymmetric,
+ * TFEM_PLANE_MODE_AXISYMMETRIC: x the radius), 4 cells over the radius
+ * below and 3 above (non-matching), the lower held axially at its bottom,
+ * u_r = 0 on the axis, a pressure p on the upper's top. Exact: σ_zz = −p,
+ * every other stress, the hoop stress included, 0; the base carries the
+ * whole ring's force p π. */
+static mesh_t S;
+static tfem_model *stacked_cylinders(void) {
+  memset(&S, 0, sizeof S);
+  grid(&S, 4, 2, 0.0, -0.5, 1.0, 0.5, 1, 1); /* axis 1, side 2, base 3, top 4 */
+  grid(&S, 3, 2, 0.0, 0.0, 1.0, 0.5, 2, 5);  /* axis 5, side 6, bottom 7, top 8 */
+  tfem_model *m = model_of(&S, 2, 1000.0, 10.0, TFEM_PLANE_MODE_AXISYMMETRIC);
+  CHECK(tfem_fix_edges(m, 3, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_add_pressure(m, 8, 2.0) == TFEM_STATUS_OK);
+  int pair = -1;
+  CHECK(tfem_add_contact_pair(m, 4, 7, &pair) == TFEM_STATUS_OK);
+  return m;
+}
+
+static void axisymmetric_cylinders_pressed_together_carry_a_uniform_stress_and_the_rings_force(void) {
+  tfem_model *m = stacked_cylinders();
+  EXPECT_ERROR(m, tfem_solve_contact(m, NULL, NULL), TFEM_STATUS_INVALID_ARGUMENT,
+               "lies on the axis");
+  CHECK(tfem_fix_edges(m, 1, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 5, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  double s[3 * 64], hoop[64], r[2 * 64], err = 0.0, base = 0.0;
+  CHECK(tfem_get_element_stresses(m, s, 3 * (size_t)S.nt) == TFEM_STATUS_OK);
+  CHECK(tfem_get_element_out_of_plane_stresses(m, hoop, (size_t)S.nt) == TFEM_STATUS_OK);
+  for (int t = 0; t < S.nt; ++t) {
+    err = fmax(err, fmax(fabs(s[3 * t]), fabs(s[3 * t + 1] + 2.0)));
+    err = fmax(err, fmax(fabs(s[3 * t + 2]), fabs(hoop[t])));
+  }
+  CHECK(err < 1e-12 * 2.0);
+  CHECK(tfem_get_reactions(m, r, 2 * (size_t)S.nn) == TFEM_STATUS_OK);
+  for (int v = 0; v < S.nn; ++v)
+    if (S.xy[2 * v + 1] == -0.5) base += r[2 * v + 1];
+  CHECK(fabs(base - 2.0 * M_PI) < 1e-12 * 2.0 * M_PI);
+  tfem_destroy(m);
+}
+
+/* What the axisymmetric mode refuses, naming the item, and leaves the
+ * model as it was: an unknown plane mode, a body across the axis, plane and
+ * axisymmetric bodies together, the mortar weighting. */
+static void the_axisymmetric_mode_refuses_what_it_cannot_model_by_name(void) {
+  tfem_model *m = stacked_cylinders();
+  EXPECT_ERROR(m, tfem_set_material(m, 1, 1.0, 0.3, 3), TFEM_STATUS_INVALID_ARGUMENT, "plane = 3");
+  EXPECT_ERROR(m, tfem_set_material(m, 2, 1.0, 0.3, TFEM_PLANE_MODE_STRAIN),
+               TFEM_STATUS_INVALID_MATERIAL, "body 1");
+  EXPECT_ERROR(m, tfem_set_contact_weighting(m, TFEM_CONTACT_WEIGHTING_MORTAR),
+               TFEM_STATUS_INVALID_ARGUMENT, "axisymmetric");
+  CHECK(tfem_set_material(m, 2, 1000.0, 0.3, TFEM_PLANE_MODE_AXISYMMETRIC) == TFEM_STATUS_OK);
+  tfem_destroy(m);
+  mesh_t *g = calloc(1, sizeof *g);
+  grid(g, 2, 2, -0.25, 0.0, 1.0, 1.0, 1, 1);
+  m = tfem_create();
+  CHECK(tfem_set_mesh(m, g->nn, g->xy, g->nt, g->tri, g->body, 0) == TFEM_STATUS_OK);
+  EXPECT_ERROR(m, tfem_set_material(m, 1, 1.0, 0.3, TFEM_PLANE_MODE_AXISYMMETRIC),
+               TFEM_STATUS_INVALID_MATERIAL, "node 0");
+  double xy[6] = {-0.1, 0.0, 1.0, 0.0, 0.5, 1.0}, k[36];
+  EXPECT_ERROR(NULL, tfem_element_stiffness(xy, 1.0, 0.3, TFEM_PLANE_MODE_AXISYMMETRIC, 1e-3, k),
+               TFEM_STATUS_INVALID_ARGUMENT, "corner 1");
+  tfem_destroy(m);
+  free(g);
+}
+
 /* tfem_set_prescribed_edges changes a whole tag's prescribed values, all or
  * nothing: what it refuses names the tag or node and changes nothing. */
 static void a_tags_prescribed_values_change_together_or_not_at_all(void) {
@@ -2982,6 +3048,8 @@ int main(int argc, char **argv) {
   a_failed_call_writes_none_of_its_outputs();
   nodal_tractions_read_the_pressure_and_no_shear_when_frictionless();
   a_tags_prescribed_values_change_together_or_not_at_all();
+  axisymmetric_cylinders_pressed_together_carry_a_uniform_stress_and_the_rings_force();
+  the_axisymmetric_mode_refuses_what_it_cannot_model_by_name();
 
   if (gmsh_dir[0] != '\0') rmdir(gmsh_dir);
 
