@@ -599,7 +599,10 @@ impl ShaftHub {
         let shaft = mb.add_grid(&shaft_r, &shaft_z, 1, Diagonal::Forward);
         let first_hub_triangle = mb.triangles.len();
         let hub = mb.add_grid(&hub_r, &hub_z, 2, Diagonal::Forward);
-        let shaft_surface: Vec<usize> = shaft.iter().map(|row| *row.last().expect("cells")).collect();
+        let shaft_surface: Vec<usize> = shaft
+            .iter()
+            .map(|row| *row.last().expect("cells"))
+            .collect();
         let hub_bore: Vec<usize> = hub.iter().map(|row| row[0]).collect();
         let axis: Vec<usize> = shaft.iter().map(|row| row[0]).collect();
         let shaft_ends: Vec<usize> = shaft[0]
@@ -607,7 +610,11 @@ impl ShaftHub {
             .chain(shaft.last().expect("rows"))
             .copied()
             .collect();
-        let hub_ends: Vec<usize> = hub[0].iter().chain(hub.last().expect("rows")).copied().collect();
+        let hub_ends: Vec<usize> = hub[0]
+            .iter()
+            .chain(hub.last().expect("rows"))
+            .copied()
+            .collect();
         let (mut edges, mut tags) = (Vec::new(), Vec::new());
         for e in mb.boundary_edges() {
             let both = |s: &[usize]| s.contains(&e[0]) && s.contains(&e[1]);
@@ -655,7 +662,9 @@ impl ShaftHub {
     pub fn solve(&self) -> Result<(ShaftHubScene, ShaftHubResult)> {
         let mut scene = self.build()?;
         let t0 = Instant::now();
-        let report = scene.model.solve_contact(&crate::contact::ContactOptions::default())?;
+        let report = scene
+            .model
+            .solve_contact(&crate::contact::ContactOptions::default())?;
         let seconds = t0.elapsed().as_secs_f64();
         let result = self.measure(&scene, report.info.unknowns, seconds)?;
         Ok((scene, result))
