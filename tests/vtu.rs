@@ -312,6 +312,13 @@ fn check_mesh_and_body_fields(vtu: &Vtu, model: &Model, b: &[tfem::contact::Cont
         &vtu.f64s("CellData", "stress", 3),
         &padded(model.element_stresses().unwrap(), b.len()),
     );
+    let mut normal = model.element_out_of_plane_stresses().unwrap();
+    normal.extend(std::iter::repeat_n(0.0, b.len()));
+    same(
+        "out_of_plane_stress",
+        &vtu.f64s("CellData", "out_of_plane_stress", 1),
+        &normal,
+    );
 }
 
 /// The nodal contact arrays against the model.
@@ -397,7 +404,10 @@ fn a_mortar_solve_writes_the_nodal_contact_arrays_and_no_cells_of_b() {
     let vtu = read_vtu(&written(&model, "mortar.vtu"));
     check_mesh_and_body_fields(&vtu, &model, &[]);
     check_nodal_contact(&vtu, &model);
-    assert_eq!(vtu.names("CellData"), ["body", "J", "strain", "stress"]);
+    assert_eq!(
+        vtu.names("CellData"),
+        ["body", "J", "strain", "stress", "out_of_plane_stress"]
+    );
 }
 
 #[test]
@@ -447,7 +457,10 @@ fn a_solve_without_contact_writes_no_contact_array() {
     let vtu = read_vtu(&written(&model, "no_contact.vtu"));
     check_mesh_and_body_fields(&vtu, &model, &[]);
     assert_eq!(vtu.names("PointData"), ["displacement"]);
-    assert_eq!(vtu.names("CellData"), ["body", "J", "strain", "stress"]);
+    assert_eq!(
+        vtu.names("CellData"),
+        ["body", "J", "strain", "stress", "out_of_plane_stress"]
+    );
     assert!(!vtu.has("PointData", "contact_pressure"));
 }
 

@@ -17,6 +17,7 @@
 //! | `J` | cells | Float64, 1 | twice the signed area in the initial configuration (an element of B: its initial Jacobian) |
 //! | `strain` | cells | Float64, 3 | [ε_xx, ε_yy, γ_xy] ([`Model::element_strains`]); zero on the elements of B |
 //! | `stress` | cells | Float64, 3 | [σ_xx, σ_yy, σ_xy] ([`Model::element_stresses`]); zero on the elements of B |
+//! | `out_of_plane_stress` | cells | Float64, 1 | the hoop stress σ_θθ of axisymmetric bodies, σ_zz in plane strain, 0 in plane stress ([`Model::element_out_of_plane_stresses`]); zero on the elements of B |
 //! | `contact_element_active` | cells | UInt8, 1 | pairs weighted by B only: 1 on an active element of B, 0 elsewhere ([`Model::contact_active`]) |
 //! | `contact_element_pressure` | cells | Float64, 1 | pairs weighted by B only: the pressure of each element of B, 0 on the body triangles ([`Model::contact_pressure`]) |
 //!
@@ -170,7 +171,8 @@ fn wide_indices(points: usize, cells: usize) -> bool {
 /// Writes the mesh in its initial configuration with the solved fields
 /// (the arrays of the [module's table](self)): point data `displacement`
 /// and, after a contact solve, `contact_pressure`, `contact_force` and
-/// `contact_gap`; cell data `body`, `J`, `strain` and `stress`, and under
+/// `contact_gap`; cell data `body`, `J`, `strain`, `stress` and
+/// `out_of_plane_stress`, and under
 /// the strip weighting the elements of the contact mesh B appended after
 /// the body triangles (body −1) with `contact_element_active` and
 /// `contact_element_pressure`.
@@ -194,6 +196,8 @@ struct Results<'a> {
     strains: Vec<[f64; 3]>,
     /// Every triangle's stress (Voigt).
     stresses: Vec<[f64; 3]>,
+    /// Every triangle's stress normal to the plane (a ring's hoop stress).
+    normal_stresses: Vec<f64>,
     /// A contact solve's nodal results, under either weighting; `None`
     /// after a solve without contact.
     contact: Option<NodalContact>,
@@ -232,6 +236,7 @@ impl<'a> Results<'a> {
         let u = model.displacements()?;
         let strains = model.element_strains()?;
         let stresses = model.element_stresses()?;
+        let normal_stresses = model.element_out_of_plane_stresses()?;
         let contact = match model.contact_report() {
             Ok(_) => Some(NodalContact {
                 traction: model.contact_nodal_tractions()?,
@@ -254,6 +259,7 @@ impl<'a> Results<'a> {
             u,
             strains,
             stresses,
+            normal_stresses,
             contact,
             strip,
         })
@@ -429,6 +435,15 @@ impl<'a> Results<'a> {
                 components: VOIGT,
                 tuples: n_cells,
                 values: voigt(&self.stresses, b.len()),
+            },
+            Array {
+                name: "out_of_plane_stress",
+                scalar: Scalar::Float64,
+                components: SCALAR,
+                tuples: n_cells,
+                values: f64s(move || {
+                    (self.normal_stresses.iter().copied()).chain(std::iter::repeat_n(0.0, b.len()))
+                }),
             },
         ];
         if let Some(StripContact {
