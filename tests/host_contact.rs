@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 
 use nalgebra::{DMatrix, DVector};
 use tfem::contact::HostContact;
-use tfem::element::{Jmin, TriGeometry, elasticity_stiffness};
+use tfem::element::{Jmin, section_stiffness};
 use tfem::scenes::{TAG_CONTACT_LOWER, TAG_CONTACT_UPPER, TwoBlocks};
 use tfem::{ContactOptions, Mesh, Model, Status};
 
@@ -33,10 +33,11 @@ fn host_of(model: &Model) -> Host {
     }
     let mut k = DMatrix::zeros(n, n);
     for (tri, body) in mesh.triangles().iter().zip(mesh.body_of()) {
-        let geo = TriGeometry::new(&mesh.corners(tri));
-        let d = model.material(*body).unwrap().d_matrix();
-        // Plain P1 (no tempering): the host's own element.
-        let ke = elasticity_stiffness(&geo, &d, Jmin::Off).unwrap();
+        let m = model.material(*body).unwrap();
+        // Plain P1 (no tempering): the host's own element (a ring's for
+        // axisymmetric bodies).
+        let ke =
+            section_stiffness(&mesh.corners(tri), &m.d_matrix(), m.section(), Jmin::Off).unwrap();
         for a in 0..6 {
             for b in 0..6 {
                 let (ga, gb) = (2 * tri[a / 2] + a % 2, 2 * tri[b / 2] + b % 2);
@@ -159,47 +160,11 @@ fn a_host_loop_with_its_own_assembly_reproduces_the_built_in_contact_solve() {
             .solve_contact(&ContactOptions::default())
             .unwrap();
         let expected = built_in.model.displacements().unwrap();
-        let model = &built_in.model;
-
-        let host = host_of(model);
-        let mut hc = HostContact::new(0, ContactOptions::default()).unwrap();
-        let a = add_side(&mut hc, model, &host, TAG_CONTACT_LOWER);
-        let b = add_side(&mut hc, model, &host, TAG_CONTACT_UPPER);
-        hc.add_pair(a, b).unwrap();
-        let (rows, cols) = hc.pattern().unwrap();
-        let (rows, cols) = (rows.to_vec(), cols.to_vec());
-        let n_if = hc.nodes().len();
-        let mut values = vec![0.0; rows.len()];
-        let (mut u_if, mut r0) = (vec![0.0; 2 * n_if], vec![0.0; 2 * n_if]);
-        let mut iterations = 0;
-        let u = loop {
-            iterations += 1;
-            // Linear host: K + K_c and f − r_c(0).
-            let zero = vec![0.0; 2 * n_if];
-            hc.evaluate(&zero, Some(&mut values), Some(&mut r0))
-                .unwrap();
-            let mut k = host.k.clone();
-            for ((&i, &j), &v) in rows.iter().zip(&cols).zip(&values) {
-                k[(i as usize, j as usize)] += v;
-            }
-            let mut f = host.f.clone();
-            for (v, eq) in hc.nodes().iter().map(|&v| v as usize).enumerate() {
-                for comp in 0..2 {
-                    if let Some(e) = host.equation[2 * eq + comp] {
-                        f[e] -= r0[2 * v + comp];
-                    }
-                }
-            }
-            let u = k.cholesky().expect("positive definite").solve(&f);
-            hc.gather(u.as_slice(), &mut u_if).unwrap();
-            if !hc.update(&u_if).unwrap().changed {
-                break u;
-            }
-        };
+        let (u, active, iterations) =
+            host_loop(&built_in.model, [TAG_CONTACT_LOWER, TAG_CONTACT_UPPER]);
         assert!(iterations > 1, "the set changes in the seed scene");
         let (mut err, mut scale) = (0.0f64, 0.0f64);
-        for (g, e) in host.equation.iter().enumerate() {
-            let mine = e.map_or(0.0, |e| u[e]);
+        for (g, mine) in u.iter().enumerate() {
             err = err.max((mine - expected[g / 2][g % 2]).abs());
             scale = scale.max(expected[g / 2][g % 2].abs());
         }
@@ -209,11 +174,106 @@ fn a_host_loop_with_its_own_assembly_reproduces_the_built_in_contact_solve() {
             2.0 * c
         );
         assert_eq!(
-            hc.active().unwrap(),
+            active,
             built_in.model.contact_active().unwrap(),
             "the same active set"
         );
     }
+}
+
+/// The host's own loop (linear host: K + K_c and f − r_c(0), tfem's
+/// contact contributions) on `model`'s pair of tags: its displacements
+/// over every global DOF, the context's final active set and the number of
+/// solves.
+fn host_loop(model: &Model, tags: [i32; 2]) -> (Vec<f64>, Vec<bool>, usize) {
+    let host = host_of(model);
+    let mut hc = HostContact::new(0, ContactOptions::default()).unwrap();
+    let a = add_side(&mut hc, model, &host, tags[0]);
+    let b = add_side(&mut hc, model, &host, tags[1]);
+    hc.add_pair(a, b).unwrap();
+    let (rows, cols) = hc.pattern().unwrap();
+    let (rows, cols) = (rows.to_vec(), cols.to_vec());
+    let n_if = hc.nodes().len();
+    let mut values = vec![0.0; rows.len()];
+    let (mut u_if, mut r0) = (vec![0.0; 2 * n_if], vec![0.0; 2 * n_if]);
+    let mut iterations = 0;
+    let u = loop {
+        iterations += 1;
+        hc.evaluate(&vec![0.0; 2 * n_if], Some(&mut values), Some(&mut r0))
+            .unwrap();
+        let mut k = host.k.clone();
+        for ((&i, &j), &v) in rows.iter().zip(&cols).zip(&values) {
+            k[(i as usize, j as usize)] += v;
+        }
+        let mut f = host.f.clone();
+        for (v, eq) in hc.nodes().iter().map(|&v| v as usize).enumerate() {
+            for comp in 0..2 {
+                if let Some(e) = host.equation[2 * eq + comp] {
+                    f[e] -= r0[2 * v + comp];
+                }
+            }
+        }
+        let u = k.cholesky().expect("positive definite").solve(&f);
+        hc.gather(u.as_slice(), &mut u_if).unwrap();
+        if !hc.update(&u_if).unwrap().changed {
+            break u;
+        }
+    };
+    let global = host
+        .equation
+        .iter()
+        .map(|e| e.map_or(0.0, |e| u[e]))
+        .collect();
+    (global, hc.active().unwrap().to_vec(), iterations)
+}
+
+#[test]
+fn an_axisymmetric_host_loop_reproduces_the_built_in_shrink_fit() {
+    use tfem::scenes::revolution::{ShaftHub, TAG_HUB_BORE, TAG_SHAFT};
+    for ratio in [(1, 1), (3, 2)] {
+        let fit = ShaftHub {
+            cells: 4,
+            ratio,
+            ..Default::default()
+        };
+        let (scene, _) = fit.solve().unwrap();
+        let expected: Vec<f64> = scene.model.displacements().unwrap().concat();
+        let (u, active, _) = host_loop(&scene.model, [TAG_SHAFT, TAG_HUB_BORE]);
+        let scale = expected.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        let err = u
+            .iter()
+            .zip(&expected)
+            .fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+        assert!(
+            err <= 1e-10 * scale,
+            "{ratio:?}: host vs built-in {err:e} of {scale:e}"
+        );
+        assert_eq!(active, scene.model.contact_active().unwrap(), "{ratio:?}");
+    }
+}
+
+#[test]
+fn a_host_context_is_axisymmetric_in_every_side_or_in_none() {
+    use tfem::scenes::revolution::{ShaftHub, TAG_HUB_BORE, TAG_SHAFT};
+    let (scene, _) = ShaftHub {
+        cells: 4,
+        ..Default::default()
+    }
+    .solve()
+    .unwrap();
+    let host = host_of(&scene.model);
+    let mut hc = HostContact::new(0, ContactOptions::default()).unwrap();
+    add_side(&mut hc, &scene.model, &host, TAG_SHAFT);
+    let before = hc.nodes().len();
+    let mut other = side_args(&scene.model, &host, TAG_HUB_BORE, 0, |_| false);
+    other.material = tfem::Material::new(1.0, 0.3, tfem::PlaneMode::Strain, "hub").unwrap();
+    let e = other.add(&mut hc).unwrap_err();
+    assert!(
+        e.message().contains("side 0") && e.message().contains("axisymmetric"),
+        "{}",
+        e.message()
+    );
+    assert_eq!(hc.nodes().len(), before);
 }
 
 #[test]

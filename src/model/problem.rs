@@ -789,7 +789,7 @@ impl Problem {
                 continue;
             }
             match self.prescribed.get(&(2 * v)) {
-                Some(&u) if u == 0.0 => {}
+                Some(0.0) => {}
                 other => {
                     let given = other.map_or("free".to_string(), |u| format!("prescribed to {u}"));
                     return Err(Error::new(
