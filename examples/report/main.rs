@@ -15,6 +15,7 @@
 //! and never with `--quick`: it needs `ccx` (Debian's `calculix-ccx`),
 //! which CI does not install; without `ccx` on the PATH it says so.
 
+mod axisymmetric;
 mod built;
 mod calculix;
 mod cattaneo;
@@ -38,6 +39,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use crate::axisymmetric::axisymmetric;
 use crate::built::built;
 use crate::calculix::calculix;
 use crate::cattaneo::cattaneo;
@@ -91,6 +93,7 @@ const SECTIONS: &[&str] = &[
     "friction",
     "cattaneo",
     "combined",
+    "axisymmetric",
     "calculix",
     "host_codes",
     "q4_host",
@@ -178,7 +181,7 @@ fn main() {
     )
     .unwrap();
     type Section = fn(&mut String, &Args);
-    let sections: [(&str, Section); 19] = [
+    let sections: [(&str, Section); 20] = [
         ("manufactured", manufactured),
         ("seed", seed),
         ("patch_test", patch_test),
@@ -194,6 +197,7 @@ fn main() {
         ("friction", friction),
         ("cattaneo", cattaneo),
         ("combined", combined),
+        ("axisymmetric", axisymmetric),
         ("calculix", calculix),
         ("host_codes", host_codes),
         ("q4_host", q4_host),

@@ -1,0 +1,249 @@
+//! Axisymmetric bodies (docs/method.md §7): error against run time on a
+//! manufactured ring field (regular, band of caps), Lamé's thick cylinder,
+//! the axisymmetric contact patch test and a hub shrunk on a shaft with
+//! its push-out force.
+
+use std::fmt::Write as _;
+use std::time::Instant;
+
+use tfem::scenes::revolution::{
+    ShaftHub, StackedCylinders, ThickCylinder, ring_square, run_manufactured_ring,
+};
+use tfem::verification::{StudyPoint, fitted_rate};
+use tfem::{Material, PlaneMode, Tempering};
+
+use crate::Args;
+use crate::common::{Curve, failure, figure};
+
+pub(crate) fn axisymmetric(report: &mut String, a: &Args) {
+    writeln!(report, "## Axisymmetric bodies\n").unwrap();
+    writeln!(
+        report,
+        "x = r the radius, y = z the axis; every force the whole ring's (docs/method.md §7). The \
+         tempered ring element is (J/max(J, Jmin))·K, semidefinite for every J.\n"
+    )
+    .unwrap();
+    let mut curves = manufactured(report, a);
+    thick_cylinder(report, a);
+    patch_test(report);
+    curves.push(shaft_hub(report, a));
+    figure(
+        report,
+        a,
+        "axisymmetric_error_time.svg",
+        "Axisymmetric: error against run time",
+        "solve time [s]",
+        "error",
+        &curves,
+        "Error against run time: the manufactured ring field and the shrink fit's pressure",
+    );
+}
+
+fn manufactured(report: &mut String, a: &Args) -> Vec<Curve> {
+    let levels: Vec<usize> = if a.quick {
+        vec![4, 8, 16, 32]
+    } else {
+        vec![8, 16, 32, 64, 128, 256]
+    };
+    let steel = Material::new(210e3, 0.3, PlaneMode::Axisymmetric, "body 1").expect("material");
+    writeln!(
+        report,
+        "### A manufactured ring field\n\nu_r = r² sin z/10, u_z = z cos r/10 on [r0, r0 + 1] × [0, 1], \
+         u prescribed on the boundary (u_r = 0 on the axis), ν = 0.3; L2 error weighted by 2πr. \
+         *Band*: a row of caps of height h⁵ along z = 1/2.\n"
+    )
+    .unwrap();
+    let mut curves = Vec::new();
+    for (name, r0, band, tempering) in [
+        ("axis in the mesh, TFEM", 0.0, false, Tempering::Auto),
+        ("r in [1, 2], TFEM", 1.0, false, Tempering::Auto),
+        ("band, axis, plain FEM", 0.0, true, Tempering::Off),
+        ("band, axis, TFEM", 0.0, true, Tempering::Auto),
+    ] {
+        writeln!(
+            report,
+            "#### {name}\n\n| h | unknowns | time [s] | L2 error |\n|---|---|---|---|"
+        )
+        .unwrap();
+        let mut pts: Vec<StudyPoint> = Vec::new();
+        for &n in &levels {
+            let eps = band.then(|| (1.0 / n as f64).powi(5));
+            let h = 1.0 / n as f64;
+            match run_manufactured_ring(ring_square(r0, n, eps), h, steel, tempering) {
+                Ok(p) => {
+                    writeln!(
+                        report,
+                        "| 1/{n} | {} | {:.3} | {:.3e} |",
+                        p.unknowns, p.seconds, p.l2
+                    )
+                    .unwrap();
+                    pts.push(p);
+                }
+                Err(e) => writeln!(report, "| 1/{n} | – | – | {} |", failure(&e)).unwrap(),
+            }
+        }
+        let h: Vec<f64> = pts.iter().map(|p| p.h).collect();
+        let l2: Vec<f64> = pts.iter().map(|p| p.l2).collect();
+        let t: Vec<f64> = pts.iter().map(|p| p.seconds.max(1e-6)).collect();
+        writeln!(
+            report,
+            "\nFitted L2 rate in h {:.2}; against time {:.2}.\n",
+            fitted_rate(&h, &l2),
+            fitted_rate(&t, &l2)
+        )
+        .unwrap();
+        curves.push(Curve {
+            label: format!("manufactured, {name}"),
+            points: t.into_iter().zip(l2).collect(),
+        });
+    }
+    curves
+}
+
+fn thick_cylinder(report: &mut String, a: &Args) {
+    let levels: &[usize] = if a.quick {
+        &[4, 8, 16, 32]
+    } else {
+        &[8, 16, 32, 64, 128]
+    };
+    writeln!(
+        report,
+        "### Lamé's thick cylinder\n\na = 1, b = 2, ℓ = 1, ends held axially, internal pressure p. \
+         Element hoop and radial stresses at the centroid against Lamé's (over p), nodal u_r (over u_r(a)), \
+         the ends' axial force against 2πνA(b² − a²).\n\n\
+         | cells over the wall | unknowns | time [s] | hoop | radial | u_r | axial force |\n|---|---|---|---|---|---|---|"
+    )
+    .unwrap();
+    for &cells in levels {
+        match (ThickCylinder {
+            cells,
+            ..Default::default()
+        })
+        .solve()
+        {
+            Ok(r) => writeln!(
+                report,
+                "| {cells} | {} | {:.3} | {:.2e} | {:.2e} | {:.2e} | {:.1e} |",
+                r.unknowns,
+                r.seconds,
+                r.hoop_error,
+                r.radial_error,
+                r.displacement_error,
+                r.axial_force_error
+            )
+            .unwrap(),
+            Err(e) => writeln!(report, "| {cells} | {} |", failure(&e)).unwrap(),
+        }
+    }
+    writeln!(
+        report,
+        "\nStresses of constant-strain elements read at their centroid converge at first order; \
+         the displacements faster.\n"
+    )
+    .unwrap();
+}
+
+fn patch_test(report: &mut String) {
+    writeln!(
+        report,
+        "### The axisymmetric contact patch test\n\nTwo coaxial cylinders (r0 = 0) or tubes (r0 = 1) of width 1 \
+         stacked along z, uniform pressure p on top, frictionless; lower cells / upper cells over the width, \
+         moduli lower / upper, ν 0.3 / 0.2. Largest error of any stress component (hoop included), of the nodal \
+         pressures and of the base's force, over p.\n\n\
+         | r0 | cells | moduli | stress | nodal pressure | base force | time [s] |\n|---|---|---|---|---|---|---|"
+    )
+    .unwrap();
+    for inner in [0.0, 1.0] {
+        for cells in [[8, 8], [8, 12], [7, 3]] {
+            for e in [[1e3, 1e3], [1e3, 1e4]] {
+                let scene = StackedCylinders {
+                    inner,
+                    cells,
+                    e,
+                    nu: [0.3, 0.2],
+                    ..Default::default()
+                };
+                let t0 = Instant::now();
+                match scene.solve() {
+                    Ok(r) => writeln!(
+                        report,
+                        "| {inner} | {}/{} | {:.0e}/{:.0e} | {:.1e} | {:.1e} | {:.1e} | {:.3} |",
+                        cells[0],
+                        cells[1],
+                        e[0],
+                        e[1],
+                        r.stress_error,
+                        r.pressure_error,
+                        r.force_error,
+                        t0.elapsed().as_secs_f64()
+                    )
+                    .unwrap(),
+                    Err(e) => writeln!(report, "| {inner} | {} |", failure(&e)).unwrap(),
+                }
+            }
+        }
+    }
+    writeln!(report).unwrap();
+}
+
+fn shaft_hub(report: &mut String, a: &Args) -> Curve {
+    let levels: &[usize] = if a.quick {
+        &[4, 8, 16, 32]
+    } else {
+        &[8, 16, 32, 64, 128]
+    };
+    writeln!(
+        report,
+        "### A hub shrunk on a shaft\n\nb = 1, c = 2, ℓ = 2, δ = 10⁻³ b, steel, ends held axially; hub and shaft \
+         nodes 3:2 along the interface. Mean contact pressure over the middle half of the length and its largest \
+         nodal deviation, hub hoop stress at the bore and shaft hoop stress, against Lamé's plane-strain shrink \
+         fit; with μ = 0.1 the shaft pushed by δ (one more load step on the same factorisation): the push-out \
+         force against 2πbℓμp.\n\n\
+         | h | unknowns | fit [s] | pressure | spread | hub hoop | shaft hoop | push-out | push-out [s] |\n\
+         |---|---|---|---|---|---|---|---|---|"
+    )
+    .unwrap();
+    let mut points = Vec::new();
+    for &cells in levels {
+        let fit = ShaftHub {
+            cells,
+            mu: 0.1,
+            ..Default::default()
+        };
+        let solved = fit.solve();
+        let t0 = Instant::now();
+        let push = fit.push_out(fit.interference, 1);
+        let push_seconds = t0.elapsed().as_secs_f64();
+        match (solved, push) {
+            (Ok((_, r)), Ok((force, _))) => {
+                writeln!(
+                    report,
+                    "| b/{cells} | {} | {:.3} | {:+.2e} | {:.2e} | {:+.2e} | {:+.2e} | {:+.2e} | {:.3} |",
+                    r.unknowns,
+                    r.seconds,
+                    r.pressure_error,
+                    r.pressure_spread,
+                    r.hub_hoop_error,
+                    r.shaft_hoop_error,
+                    force / fit.push_out_force() - 1.0,
+                    push_seconds
+                )
+                .unwrap();
+                points.push((r.seconds.max(1e-6), r.pressure_error.abs()));
+            }
+            (Err(e), _) | (_, Err(e)) => {
+                writeln!(report, "| b/{cells} | {} |", failure(&e)).unwrap()
+            }
+        }
+    }
+    writeln!(
+        report,
+        "\nThe pressure's error levels off at O(δ/b) = 10⁻³ of Lamé's small-interference formula (the shaft's \
+         surface lies at b + δ). CalculiX on the same mesh: docs/calculix.md.\n"
+    )
+    .unwrap();
+    Curve {
+        label: "shrink fit, mean pressure".to_string(),
+        points,
+    }
+}
