@@ -113,6 +113,22 @@ program fortran_generic_test
   call expect(status == TFEM_STATUS_OK .and. text(1:len(msg)) == msg, 'thread error, string')
   status = tfem_last_error(length=256_c_size_t, buffer=buf)
   call expect(status == TFEM_STATUS_OK .and. chars(buf) == msg, 'thread error, keywords and c_size_t')
+
+  ! The axisymmetric ring element (x the radius): an axial translation
+  ! costs nothing (row-major K, u = (0, 1, 0, 1, 0, 1)); across the axis it
+  ! is refused.
+  xy(1:6) = [1._dp, 0._dp, 2._dp, 0._dp, 1.5_dp, 1._dp]
+  status = tfem_element_stiffness(xy, 1._dp, 0.3_dp, TFEM_PLANE_MODE_AXISYMMETRIC, 1e-3_dp, stiff)
+  call expect(status == TFEM_STATUS_OK, 'ring element')
+  err = 0._dp
+  do i = 1, 6
+    err = max(err, abs(stiff(6*(i-1)+2) + stiff(6*(i-1)+4) + stiff(6*(i-1)+6)))
+  end do
+  call expect(err <= 1e-12_dp * maxval(abs(stiff)), 'ring element: an axial translation is free')
+  xy(1) = -0.1_dp
+  status = tfem_element_stiffness(xy, 1._dp, 0.3_dp, TFEM_PLANE_MODE_AXISYMMETRIC, 1e-3_dp, stiff)
+  call expect(status == TFEM_STATUS_INVALID_ARGUMENT .and. index(tfem_error_message(), 'corner 1') > 0, &
+      'ring element across the axis')
   call tfem_destroy(m)
 
   ! Warnings (node 4 is unused), read with default integers and a string.
