@@ -238,8 +238,9 @@ fn shaft_hub(report: &mut String, a: &Args) -> Curve {
     }
     writeln!(
         report,
-        "\nThe pressure's error levels off at O(δ/b) = 10⁻³ of Lamé's small-interference formula (the shaft's \
-         surface lies at b + δ). CalculiX on the same mesh: docs/calculix.md.\n"
+        "\nThe mean pressure levels off at −δ/(2b) and the shaft's hoop stress at −δ/b: the O(δ/b) left \
+         between the meshed geometry (the shaft's surface at b + δ) and Lamé's small-interference formula. \
+         CalculiX on the same mesh: docs/calculix.md.\n"
     )
     .unwrap();
     Curve {
