@@ -157,9 +157,10 @@
 ! functions are:
 !   tfem_get_sizes, tfem_get_mesh_triangles, tfem_get_boundary_edges, tfem_add_contact_pair,
 !   tfem_add_contact_pair_with_mesh, tfem_add_contact_pairs_auto, tfem_get_contact_pair_bodies,
-!   tfem_solve, tfem_solve_contact, tfem_get_contact_slave_nodes, tfem_step,
-!   tfem_get_system_matrix_size, tfem_contact_add_side, tfem_contact_add_pair,
-!   tfem_contact_add_pair_with_mesh, tfem_contact_sizes, tfem_contact_evaluate, tfem_contact_update
+!   tfem_solve, tfem_solve_contact, tfem_solve_adaptive, tfem_get_adapt_cycles,
+!   tfem_get_contact_slave_nodes, tfem_step, tfem_get_system_matrix_size, tfem_contact_add_side,
+!   tfem_contact_add_pair, tfem_contact_add_pair_with_mesh, tfem_contact_sizes,
+!   tfem_contact_evaluate, tfem_contact_update
 
 ! The C API as it is (see "Fortran 2008" above).
 module tfem_c
@@ -281,6 +282,12 @@ module tfem_c
   !> Vertical (v).
   integer(c_int), parameter :: TFEM_COMPONENT_Y = 1
 
+  ! enum tfem_adapt_goal: What the tolerance of `tfem_solve_adaptive` bounds (argument `goal`).
+  !> The relative error in the energy norm.
+  integer(c_int), parameter :: TFEM_ADAPT_GOAL_ENERGY = 0
+  !> The relative error of the compliance (f·u), the square of the energy's.
+  integer(c_int), parameter :: TFEM_ADAPT_GOAL_COMPLIANCE = 1
+
   !> Options of `tfem_solve_contact`. Fill with `tfem_contact_options_default` and change what you
   !! need.
   type, bind(C) :: tfem_contact_options
@@ -360,6 +367,23 @@ module tfem_c
     !> Solver statistics.
     type(tfem_solve_info) :: info
   end type tfem_contact_report
+
+  !> Report of `tfem_solve_adaptive`.
+  type, bind(C) :: tfem_adapt_report
+    !> Solves made (cycles); each cycle's numbers from `tfem_get_adapt_cycles`.
+    integer(c_int) :: cycles
+    !> 1 if the last estimate meets the tolerance, 0 if a limit stopped the refinement first (a
+    !! warning then says what was reached).
+    integer(c_int) :: reached
+    !> Unknowns of the last solve.
+    integer(c_int64_t) :: unknowns
+    !> Triangles of the refined mesh.
+    integer(c_int64_t) :: triangles
+    !> The last estimate of the goal's relative error.
+    real(c_double) :: estimate
+    !> Seconds of the whole adaptive solve, refinements included.
+    real(c_double) :: seconds
+  end type tfem_adapt_report
 
   interface
     ! ==============================================================================================
@@ -1031,6 +1055,45 @@ module tfem_c
       type(tfem_contact_report), intent(inout) :: report
       integer(c_int) :: status
     end function tfem_solve_contact
+
+    !> Solves to a tolerance (docs/method.md §8): solve (a contact solve with the `contact` options
+    !! when the model has pairs), estimate the error by stress recovery, refine the triangles
+    !! holding half of it by newest-vertex bisection, and again, until the estimated relative error
+    !! of `goal` (an `AdaptGoal`: 0 energy norm, 1 compliance) is at most `tolerance` (> 0), or the
+    !! next mesh would exceed `max_unknowns`, or `max_cycles` solves are done (either is a warning
+    !! with the estimate reached, `tfem_get_warning`, and TFEM_STATUS_OK). The model keeps the
+    !! refined mesh — the given nodes keep their indices, new ones follow; read it back with
+    !! `tfem_get_sizes`, `tfem_get_mesh_nodes`, `tfem_get_mesh_triangles` and
+    !! `tfem_get_boundary_edges` — its loads, constraints and pairs carried over, and the last
+    !! solve's results. `contact` may be NULL (the default options); `report` may be NULL. Bad
+    !! arguments change nothing; a failed solve restores the model as it was given.
+    function tfem_solve_adaptive(model, tolerance, goal, max_unknowns, max_cycles, contact, report) &
+        bind(C, name="tfem_solve_adaptive") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), value :: tolerance
+      integer(c_int), value :: goal
+      integer(c_int64_t), value :: max_unknowns
+      integer(c_int), value :: max_cycles
+      type(tfem_contact_options), intent(in) :: contact
+      type(tfem_adapt_report), intent(inout) :: report
+      integer(c_int) :: status
+    end function tfem_solve_adaptive
+
+    !> Copies each cycle of the last `tfem_solve_adaptive` (`cycles` of its report): its unknowns,
+    !! its estimated relative error and its seconds (solve and estimate), into arrays of `length`
+    !! values each: `unknowns` may be NULL, `estimates` may be NULL, `seconds` may be NULL. Nothing
+    !! is written unless `length` holds every cycle.
+    function tfem_get_adapt_cycles(model, unknowns, estimates, seconds, length) &
+        bind(C, name="tfem_get_adapt_cycles") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int64_t), intent(inout) :: unknowns
+      real(c_double), intent(inout) :: estimates
+      real(c_double), intent(inout) :: seconds(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_adapt_cycles
 
     ! ==============================================================================================
     ! Results of the last solve or step: displacements, strains, stresses, reactions, external work,
@@ -1905,12 +1968,12 @@ end module tfem_c
 ! interfaces" above); not for direct use.
 module tfem_specifics
   use, intrinsic :: iso_c_binding
-  use tfem_c, only: tfem_contact_options, tfem_solve_info, tfem_contact_report, tfem_last_error, &
-        tfem_last_error_length, tfem_get_warning, tfem_get_mesh_nodes, tfem_get_contact_mesh, &
-        tfem_get_contact_element_pairs, tfem_get_contact_element_apexes, tfem_get_displacements, &
-        tfem_get_element_strains, tfem_get_element_stresses, tfem_get_element_out_of_plane_stresses, &
-        tfem_get_element_jacobians, tfem_get_reactions, tfem_get_contact_forces, &
-        tfem_get_contact_nodal_pressures, tfem_get_contact_nodal_tractions, &
+  use tfem_c, only: tfem_contact_options, tfem_solve_info, tfem_contact_report, tfem_adapt_report, &
+        tfem_last_error, tfem_last_error_length, tfem_get_warning, tfem_get_mesh_nodes, &
+        tfem_get_contact_mesh, tfem_get_contact_element_pairs, tfem_get_contact_element_apexes, &
+        tfem_get_displacements, tfem_get_element_strains, tfem_get_element_stresses, &
+        tfem_get_element_out_of_plane_stresses, tfem_get_element_jacobians, tfem_get_reactions, &
+        tfem_get_contact_forces, tfem_get_contact_nodal_pressures, tfem_get_contact_nodal_tractions, &
         tfem_get_contact_pair_nodal_pressures, tfem_get_contact_pair_nodal_tractions, &
         tfem_get_contact_gaps, tfem_get_contact_active, tfem_get_contact_pressure, &
         tfem_get_contact_elements, tfem_get_contact_shear, tfem_get_contact_friction_state, &
@@ -1942,48 +2005,50 @@ module tfem_specifics
   public :: tfem_get_contact_element_pairs_i_r2, tfem_get_contact_element_apexes_r2
   public :: tfem_get_contact_element_apexes_i, tfem_get_contact_element_apexes_i_r2
   public :: tfem_get_contact_pair_bodies_opt, tfem_solve_opt, tfem_solve_contact_opt
-  public :: tfem_get_displacements_r2, tfem_get_displacements_i, tfem_get_displacements_i_r2
-  public :: tfem_get_element_strains_r2, tfem_get_element_strains_i, tfem_get_element_strains_i_r2
-  public :: tfem_get_element_stresses_r2, tfem_get_element_stresses_i
-  public :: tfem_get_element_stresses_i_r2, tfem_get_element_out_of_plane_stresses_r2
-  public :: tfem_get_element_out_of_plane_stresses_i, tfem_get_element_out_of_plane_stresses_i_r2
-  public :: tfem_get_element_jacobians_r2, tfem_get_element_jacobians_i
-  public :: tfem_get_element_jacobians_i_r2, tfem_get_reactions_r2, tfem_get_reactions_i
-  public :: tfem_get_reactions_i_r2, tfem_get_contact_forces_r2, tfem_get_contact_forces_i
-  public :: tfem_get_contact_forces_i_r2, tfem_get_contact_nodal_pressures_r2
-  public :: tfem_get_contact_nodal_pressures_i, tfem_get_contact_nodal_pressures_i_r2
-  public :: tfem_get_contact_nodal_tractions_r2, tfem_get_contact_nodal_tractions_i
-  public :: tfem_get_contact_nodal_tractions_i_r2, tfem_get_contact_pair_nodal_pressures_r2
-  public :: tfem_get_contact_pair_nodal_pressures_i, tfem_get_contact_pair_nodal_pressures_i_r2
-  public :: tfem_get_contact_pair_nodal_tractions_r2, tfem_get_contact_pair_nodal_tractions_i
-  public :: tfem_get_contact_pair_nodal_tractions_i_r2, tfem_get_contact_gaps_r2
-  public :: tfem_get_contact_gaps_i, tfem_get_contact_gaps_i_r2, tfem_get_contact_active_r2
-  public :: tfem_get_contact_active_i, tfem_get_contact_active_i_r2, tfem_get_contact_pressure_r2
-  public :: tfem_get_contact_pressure_i, tfem_get_contact_pressure_i_r2
-  public :: tfem_get_contact_elements_r2, tfem_get_contact_elements_i
-  public :: tfem_get_contact_elements_i_r2, tfem_get_contact_shear_r2, tfem_get_contact_shear_i
-  public :: tfem_get_contact_shear_i_r2, tfem_get_contact_friction_state_r2
-  public :: tfem_get_contact_friction_state_i, tfem_get_contact_friction_state_i_r2
-  public :: tfem_get_contact_dissipation_r2, tfem_get_contact_dissipation_i
-  public :: tfem_get_contact_dissipation_i_r2, tfem_get_contact_slave_nodes_opt
-  public :: tfem_get_contact_slave_nodes_opt_r2111, tfem_get_contact_slave_nodes_opt_r1211
-  public :: tfem_get_contact_slave_nodes_opt_r2211, tfem_get_contact_slave_nodes_opt_r1121
-  public :: tfem_get_contact_slave_nodes_opt_r2121, tfem_get_contact_slave_nodes_opt_r1221
-  public :: tfem_get_contact_slave_nodes_opt_r2221, tfem_get_contact_slave_nodes_opt_r1112
-  public :: tfem_get_contact_slave_nodes_opt_r2112, tfem_get_contact_slave_nodes_opt_r1212
-  public :: tfem_get_contact_slave_nodes_opt_r2212, tfem_get_contact_slave_nodes_opt_r1122
-  public :: tfem_get_contact_slave_nodes_opt_r2122, tfem_get_contact_slave_nodes_opt_r1222
-  public :: tfem_get_contact_slave_nodes_opt_r2222, tfem_get_contact_slave_nodes_opt_i
-  public :: tfem_get_contact_slave_nodes_opt_i_r2111, tfem_get_contact_slave_nodes_opt_i_r1211
-  public :: tfem_get_contact_slave_nodes_opt_i_r2211, tfem_get_contact_slave_nodes_opt_i_r1121
-  public :: tfem_get_contact_slave_nodes_opt_i_r2121, tfem_get_contact_slave_nodes_opt_i_r1221
-  public :: tfem_get_contact_slave_nodes_opt_i_r2221, tfem_get_contact_slave_nodes_opt_i_r1112
-  public :: tfem_get_contact_slave_nodes_opt_i_r2112, tfem_get_contact_slave_nodes_opt_i_r1212
-  public :: tfem_get_contact_slave_nodes_opt_i_r2212, tfem_get_contact_slave_nodes_opt_i_r1122
-  public :: tfem_get_contact_slave_nodes_opt_i_r2122, tfem_get_contact_slave_nodes_opt_i_r1222
-  public :: tfem_get_contact_slave_nodes_opt_i_r2222, tfem_step_opt, tfem_get_contact_state_r2
-  public :: tfem_get_contact_state_i, tfem_get_contact_state_i_r2, tfem_set_contact_state_r2
-  public :: tfem_set_contact_state_i, tfem_set_contact_state_i_r2, tfem_get_system_matrix_size_opt
+  public :: tfem_solve_adaptive_opt, tfem_get_adapt_cycles_opt, tfem_get_adapt_cycles_opt_r2
+  public :: tfem_get_adapt_cycles_opt_i, tfem_get_adapt_cycles_opt_i_r2, tfem_get_displacements_r2
+  public :: tfem_get_displacements_i, tfem_get_displacements_i_r2, tfem_get_element_strains_r2
+  public :: tfem_get_element_strains_i, tfem_get_element_strains_i_r2, tfem_get_element_stresses_r2
+  public :: tfem_get_element_stresses_i, tfem_get_element_stresses_i_r2
+  public :: tfem_get_element_out_of_plane_stresses_r2, tfem_get_element_out_of_plane_stresses_i
+  public :: tfem_get_element_out_of_plane_stresses_i_r2, tfem_get_element_jacobians_r2
+  public :: tfem_get_element_jacobians_i, tfem_get_element_jacobians_i_r2, tfem_get_reactions_r2
+  public :: tfem_get_reactions_i, tfem_get_reactions_i_r2, tfem_get_contact_forces_r2
+  public :: tfem_get_contact_forces_i, tfem_get_contact_forces_i_r2
+  public :: tfem_get_contact_nodal_pressures_r2, tfem_get_contact_nodal_pressures_i
+  public :: tfem_get_contact_nodal_pressures_i_r2, tfem_get_contact_nodal_tractions_r2
+  public :: tfem_get_contact_nodal_tractions_i, tfem_get_contact_nodal_tractions_i_r2
+  public :: tfem_get_contact_pair_nodal_pressures_r2, tfem_get_contact_pair_nodal_pressures_i
+  public :: tfem_get_contact_pair_nodal_pressures_i_r2, tfem_get_contact_pair_nodal_tractions_r2
+  public :: tfem_get_contact_pair_nodal_tractions_i, tfem_get_contact_pair_nodal_tractions_i_r2
+  public :: tfem_get_contact_gaps_r2, tfem_get_contact_gaps_i, tfem_get_contact_gaps_i_r2
+  public :: tfem_get_contact_active_r2, tfem_get_contact_active_i, tfem_get_contact_active_i_r2
+  public :: tfem_get_contact_pressure_r2, tfem_get_contact_pressure_i
+  public :: tfem_get_contact_pressure_i_r2, tfem_get_contact_elements_r2
+  public :: tfem_get_contact_elements_i, tfem_get_contact_elements_i_r2, tfem_get_contact_shear_r2
+  public :: tfem_get_contact_shear_i, tfem_get_contact_shear_i_r2
+  public :: tfem_get_contact_friction_state_r2, tfem_get_contact_friction_state_i
+  public :: tfem_get_contact_friction_state_i_r2, tfem_get_contact_dissipation_r2
+  public :: tfem_get_contact_dissipation_i, tfem_get_contact_dissipation_i_r2
+  public :: tfem_get_contact_slave_nodes_opt, tfem_get_contact_slave_nodes_opt_r2111
+  public :: tfem_get_contact_slave_nodes_opt_r1211, tfem_get_contact_slave_nodes_opt_r2211
+  public :: tfem_get_contact_slave_nodes_opt_r1121, tfem_get_contact_slave_nodes_opt_r2121
+  public :: tfem_get_contact_slave_nodes_opt_r1221, tfem_get_contact_slave_nodes_opt_r2221
+  public :: tfem_get_contact_slave_nodes_opt_r1112, tfem_get_contact_slave_nodes_opt_r2112
+  public :: tfem_get_contact_slave_nodes_opt_r1212, tfem_get_contact_slave_nodes_opt_r2212
+  public :: tfem_get_contact_slave_nodes_opt_r1122, tfem_get_contact_slave_nodes_opt_r2122
+  public :: tfem_get_contact_slave_nodes_opt_r1222, tfem_get_contact_slave_nodes_opt_r2222
+  public :: tfem_get_contact_slave_nodes_opt_i, tfem_get_contact_slave_nodes_opt_i_r2111
+  public :: tfem_get_contact_slave_nodes_opt_i_r1211, tfem_get_contact_slave_nodes_opt_i_r2211
+  public :: tfem_get_contact_slave_nodes_opt_i_r1121, tfem_get_contact_slave_nodes_opt_i_r2121
+  public :: tfem_get_contact_slave_nodes_opt_i_r1221, tfem_get_contact_slave_nodes_opt_i_r2221
+  public :: tfem_get_contact_slave_nodes_opt_i_r1112, tfem_get_contact_slave_nodes_opt_i_r2112
+  public :: tfem_get_contact_slave_nodes_opt_i_r1212, tfem_get_contact_slave_nodes_opt_i_r2212
+  public :: tfem_get_contact_slave_nodes_opt_i_r1122, tfem_get_contact_slave_nodes_opt_i_r2122
+  public :: tfem_get_contact_slave_nodes_opt_i_r1222, tfem_get_contact_slave_nodes_opt_i_r2222
+  public :: tfem_step_opt, tfem_get_contact_state_r2, tfem_get_contact_state_i
+  public :: tfem_get_contact_state_i_r2, tfem_set_contact_state_r2, tfem_set_contact_state_i
+  public :: tfem_set_contact_state_i_r2, tfem_get_system_matrix_size_opt
   public :: tfem_get_system_matrix_r2111, tfem_get_system_matrix_r1211, tfem_get_system_matrix_r2211
   public :: tfem_get_system_matrix_r1121, tfem_get_system_matrix_r2121, tfem_get_system_matrix_r1221
   public :: tfem_get_system_matrix_r2221, tfem_get_system_matrix_r1112, tfem_get_system_matrix_r2112
@@ -2141,6 +2206,31 @@ module tfem_specifics
       type(c_ptr), value :: report
       integer(c_int) :: status
     end function tfem_solve_contact_by_address
+
+    function tfem_solve_adaptive_by_address(model, tolerance, goal, max_unknowns, max_cycles, contact, &
+        report) &
+        bind(C, name="tfem_solve_adaptive") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), value :: tolerance
+      integer(c_int), value :: goal
+      integer(c_int64_t), value :: max_unknowns
+      integer(c_int), value :: max_cycles
+      type(c_ptr), value :: contact
+      type(c_ptr), value :: report
+      integer(c_int) :: status
+    end function tfem_solve_adaptive_by_address
+
+    function tfem_get_adapt_cycles_by_address(model, unknowns, estimates, seconds, length) &
+        bind(C, name="tfem_get_adapt_cycles") result(status)
+      import
+      type(c_ptr), value :: model
+      type(c_ptr), value :: unknowns
+      type(c_ptr), value :: estimates
+      type(c_ptr), value :: seconds
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_get_adapt_cycles_by_address
 
     function tfem_get_contact_slave_nodes_by_address(model, node, tributary, gap, pressure, length) &
         bind(C, name="tfem_get_contact_slave_nodes") result(status)
@@ -2833,6 +2923,102 @@ contains
     if (present(report)) report_address = c_loc(report)
     status = tfem_solve_contact_by_address(model, options_address, report_address)
   end function tfem_solve_contact_opt
+
+  function tfem_solve_adaptive_opt(model, tolerance, goal, max_unknowns, max_cycles, &
+        contact, report) result(status)
+    type(c_ptr), value :: model
+    real(c_double), value :: tolerance
+    integer(c_int), value :: goal
+    integer(c_int64_t), value :: max_unknowns
+    integer(c_int), value :: max_cycles
+    type(tfem_contact_options), intent(in), optional, target :: contact
+    type(tfem_adapt_report), intent(inout), optional, target :: report
+    integer(c_int) :: status
+    type(c_ptr) :: contact_address
+    type(c_ptr) :: report_address
+    contact_address = c_null_ptr
+    if (present(contact)) contact_address = c_loc(contact)
+    report_address = c_null_ptr
+    if (present(report)) report_address = c_loc(report)
+    status = tfem_solve_adaptive_by_address(model, tolerance, goal, max_unknowns, max_cycles, &
+        contact_address, report_address)
+  end function tfem_solve_adaptive_opt
+
+  function tfem_get_adapt_cycles_opt(model, unknowns, estimates, seconds, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout), optional, target :: unknowns
+    real(c_double), intent(inout), optional, target :: estimates
+    real(c_double), intent(inout), optional, target :: seconds(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: unknowns_address
+    type(c_ptr) :: estimates_address
+    type(c_ptr) :: seconds_address
+    unknowns_address = c_null_ptr
+    if (present(unknowns)) unknowns_address = c_loc(unknowns)
+    estimates_address = c_null_ptr
+    if (present(estimates)) estimates_address = c_loc(estimates)
+    seconds_address = tfem_address_c_double(seconds, length /= 0)
+    status = tfem_get_adapt_cycles_by_address(model, unknowns_address, estimates_address, &
+        seconds_address, length)
+  end function tfem_get_adapt_cycles_opt
+
+  function tfem_get_adapt_cycles_opt_r2(model, unknowns, estimates, seconds, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout), optional, target :: unknowns
+    real(c_double), intent(inout), optional, target :: estimates
+    real(c_double), intent(inout), target :: seconds(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: unknowns_address
+    type(c_ptr) :: estimates_address
+    type(c_ptr) :: seconds_address
+    unknowns_address = c_null_ptr
+    if (present(unknowns)) unknowns_address = c_loc(unknowns)
+    estimates_address = c_null_ptr
+    if (present(estimates)) estimates_address = c_loc(estimates)
+    seconds_address = tfem_address_c_double(seconds, length /= 0)
+    status = tfem_get_adapt_cycles_by_address(model, unknowns_address, estimates_address, &
+        seconds_address, length)
+  end function tfem_get_adapt_cycles_opt_r2
+
+  function tfem_get_adapt_cycles_opt_i(model, unknowns, estimates, seconds, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout), optional, target :: unknowns
+    real(c_double), intent(inout), optional, target :: estimates
+    real(c_double), intent(inout), optional, target :: seconds(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: unknowns_address
+    type(c_ptr) :: estimates_address
+    type(c_ptr) :: seconds_address
+    unknowns_address = c_null_ptr
+    if (present(unknowns)) unknowns_address = c_loc(unknowns)
+    estimates_address = c_null_ptr
+    if (present(estimates)) estimates_address = c_loc(estimates)
+    seconds_address = tfem_address_c_double(seconds, length > 0)
+    status = tfem_get_adapt_cycles_by_address(model, unknowns_address, estimates_address, &
+        seconds_address, tfem_to_size_t(length))
+  end function tfem_get_adapt_cycles_opt_i
+
+  function tfem_get_adapt_cycles_opt_i_r2(model, unknowns, estimates, seconds, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int64_t), intent(inout), optional, target :: unknowns
+    real(c_double), intent(inout), optional, target :: estimates
+    real(c_double), intent(inout), target :: seconds(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    type(c_ptr) :: unknowns_address
+    type(c_ptr) :: estimates_address
+    type(c_ptr) :: seconds_address
+    unknowns_address = c_null_ptr
+    if (present(unknowns)) unknowns_address = c_loc(unknowns)
+    estimates_address = c_null_ptr
+    if (present(estimates)) estimates_address = c_loc(estimates)
+    seconds_address = tfem_address_c_double(seconds, length > 0)
+    status = tfem_get_adapt_cycles_by_address(model, unknowns_address, estimates_address, &
+        seconds_address, tfem_to_size_t(length))
+  end function tfem_get_adapt_cycles_opt_i_r2
 
   function tfem_get_displacements_r2(model, out, length) result(status)
     type(c_ptr), value :: model
@@ -5847,32 +6033,32 @@ module tfem
         TFEM_CONTACT_WEIGHTING_STRIP, TFEM_CONTACT_WEIGHTING_MORTAR, TFEM_CONTACT_WEIGHTING_AUTO, &
         TFEM_CONTACT_LAW_FRICTIONLESS, TFEM_CONTACT_LAW_STICK, TFEM_INVERSION_TEST_LINEARISED, &
         TFEM_INVERSION_TEST_LITERAL, TFEM_PLANE_MODE_STRAIN, TFEM_PLANE_MODE_STRESS, &
-        TFEM_PLANE_MODE_AXISYMMETRIC, TFEM_COMPONENT_X, TFEM_COMPONENT_Y, tfem_contact_options, &
-        tfem_solve_info, tfem_contact_report, tfem_version, tfem_create, tfem_destroy, &
-        tfem_warning_count, tfem_get_warning_size, tfem_set_threads, tfem_get_threads, tfem_set_mesh, &
-        tfem_load_gmsh, tfem_set_boundary_edges, tfem_add_boundary_edges, &
-        tfem_get_boundary_edge_count, tfem_set_material, tfem_set_tempering, tfem_set_ordering, &
-        tfem_fix, tfem_fix_edges, tfem_set_prescribed, tfem_set_prescribed_edges, &
-        tfem_clear_constraints, tfem_add_pressure, tfem_add_traction, tfem_add_nodal_force, &
-        tfem_set_body_force, tfem_clear_loads, tfem_set_friction, tfem_set_contact_weighting, &
-        tfem_get_contact_weighting, tfem_get_contact_mesh_size, tfem_contact_options_default, &
-        tfem_get_external_work, tfem_write_vtu, tfem_get_contact_report, tfem_revert_step, &
-        tfem_get_contact_state_size, tfem_element_stiffness, tfem_laplacian_stiffness, &
-        tfem_contact_create, tfem_contact_destroy, tfem_contact_set_options, tfem_contact_restart, &
-        tfem_contact_length, tfem_last_error, tfem_last_error_length, tfem_get_warning, &
-        tfem_get_mesh_nodes, tfem_get_contact_mesh, tfem_get_contact_element_pairs, &
-        tfem_get_contact_element_apexes, tfem_get_displacements, tfem_get_element_strains, &
-        tfem_get_element_stresses, tfem_get_element_out_of_plane_stresses, tfem_get_element_jacobians, &
-        tfem_get_reactions, tfem_get_contact_forces, tfem_get_contact_nodal_pressures, &
-        tfem_get_contact_nodal_tractions, tfem_get_contact_pair_nodal_pressures, &
-        tfem_get_contact_pair_nodal_tractions, tfem_get_contact_gaps, tfem_get_contact_active, &
-        tfem_get_contact_pressure, tfem_get_contact_elements, tfem_get_contact_shear, &
-        tfem_get_contact_friction_state, tfem_get_contact_dissipation, tfem_get_contact_state, &
-        tfem_set_contact_state, tfem_get_system_matrix, tfem_contact_last_error, &
-        tfem_contact_last_error_length, tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, &
-        tfem_contact_scatter_add, tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, &
-        tfem_contact_pressures, tfem_contact_elements, tfem_contact_element_equations, &
-        tfem_contact_element_blocks
+        TFEM_PLANE_MODE_AXISYMMETRIC, TFEM_COMPONENT_X, TFEM_COMPONENT_Y, TFEM_ADAPT_GOAL_ENERGY, &
+        TFEM_ADAPT_GOAL_COMPLIANCE, tfem_contact_options, tfem_solve_info, tfem_contact_report, &
+        tfem_adapt_report, tfem_version, tfem_create, tfem_destroy, tfem_warning_count, &
+        tfem_get_warning_size, tfem_set_threads, tfem_get_threads, tfem_set_mesh, tfem_load_gmsh, &
+        tfem_set_boundary_edges, tfem_add_boundary_edges, tfem_get_boundary_edge_count, &
+        tfem_set_material, tfem_set_tempering, tfem_set_ordering, tfem_fix, tfem_fix_edges, &
+        tfem_set_prescribed, tfem_set_prescribed_edges, tfem_clear_constraints, tfem_add_pressure, &
+        tfem_add_traction, tfem_add_nodal_force, tfem_set_body_force, tfem_clear_loads, &
+        tfem_set_friction, tfem_set_contact_weighting, tfem_get_contact_weighting, &
+        tfem_get_contact_mesh_size, tfem_contact_options_default, tfem_get_external_work, &
+        tfem_write_vtu, tfem_get_contact_report, tfem_revert_step, tfem_get_contact_state_size, &
+        tfem_element_stiffness, tfem_laplacian_stiffness, tfem_contact_create, tfem_contact_destroy, &
+        tfem_contact_set_options, tfem_contact_restart, tfem_contact_length, tfem_last_error, &
+        tfem_last_error_length, tfem_get_warning, tfem_get_mesh_nodes, tfem_get_contact_mesh, &
+        tfem_get_contact_element_pairs, tfem_get_contact_element_apexes, tfem_get_displacements, &
+        tfem_get_element_strains, tfem_get_element_stresses, tfem_get_element_out_of_plane_stresses, &
+        tfem_get_element_jacobians, tfem_get_reactions, tfem_get_contact_forces, &
+        tfem_get_contact_nodal_pressures, tfem_get_contact_nodal_tractions, &
+        tfem_get_contact_pair_nodal_pressures, tfem_get_contact_pair_nodal_tractions, &
+        tfem_get_contact_gaps, tfem_get_contact_active, tfem_get_contact_pressure, &
+        tfem_get_contact_elements, tfem_get_contact_shear, tfem_get_contact_friction_state, &
+        tfem_get_contact_dissipation, tfem_get_contact_state, tfem_set_contact_state, &
+        tfem_get_system_matrix, tfem_contact_last_error, tfem_contact_last_error_length, &
+        tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, tfem_contact_scatter_add, &
+        tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, tfem_contact_pressures, &
+        tfem_contact_elements, tfem_contact_element_equations, tfem_contact_element_blocks
   use tfem_specifics
   implicit none
   private :: c_strlen
@@ -5896,7 +6082,9 @@ module tfem
   private :: tfem_get_contact_element_pairs_i, tfem_get_contact_element_pairs_i_r2
   private :: tfem_get_contact_element_apexes_r2, tfem_get_contact_element_apexes_i
   private :: tfem_get_contact_element_apexes_i_r2, tfem_get_contact_pair_bodies_opt, tfem_solve_opt
-  private :: tfem_solve_contact_opt, tfem_get_displacements_r2, tfem_get_displacements_i
+  private :: tfem_solve_contact_opt, tfem_solve_adaptive_opt, tfem_get_adapt_cycles_opt
+  private :: tfem_get_adapt_cycles_opt_r2, tfem_get_adapt_cycles_opt_i
+  private :: tfem_get_adapt_cycles_opt_i_r2, tfem_get_displacements_r2, tfem_get_displacements_i
   private :: tfem_get_displacements_i_r2, tfem_get_element_strains_r2, tfem_get_element_strains_i
   private :: tfem_get_element_strains_i_r2, tfem_get_element_stresses_r2
   private :: tfem_get_element_stresses_i, tfem_get_element_stresses_i_r2
@@ -6143,6 +6331,24 @@ module tfem
   interface tfem_solve_contact
     procedure tfem_solve_contact_opt
   end interface tfem_solve_contact
+
+  !> Fortran: tfem_solve_adaptive (documented in module tfem_c). `contact` and `report` are
+  !! OPTIONAL: omit them to pass NULL. The name is no bind(C) procedure here (for c_funloc: module
+  !! tfem_c).
+  interface tfem_solve_adaptive
+    procedure tfem_solve_adaptive_opt
+  end interface tfem_solve_adaptive
+
+  !> Fortran: tfem_get_adapt_cycles (documented in module tfem_c). `unknowns`, `estimates` and
+  !! `seconds` are OPTIONAL: omit them to pass NULL. `length` takes an integer(c_size_t) or a
+  !! default integer (kind tfem_length_kind); a negative length is passed as 0. `seconds` may have
+  !! rank 1 or 2. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_get_adapt_cycles
+    procedure tfem_get_adapt_cycles_opt
+    procedure tfem_get_adapt_cycles_opt_r2
+    procedure tfem_get_adapt_cycles_opt_i
+    procedure tfem_get_adapt_cycles_opt_i_r2
+  end interface tfem_get_adapt_cycles
 
   !> Fortran: tfem_get_displacements (documented in module tfem_c). `length` takes an
   !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as

@@ -315,6 +315,21 @@ typedef enum tfem_component {
 } tfem_component;
 
 /**
+ * What the tolerance of `tfem_solve_adaptive` bounds (argument `goal`).
+ */
+typedef enum tfem_adapt_goal {
+  /**
+   * The relative error in the energy norm.
+   */
+  TFEM_ADAPT_GOAL_ENERGY = 0,
+  /**
+   * The relative error of the compliance (f·u), the square of the
+   * energy's.
+   */
+  TFEM_ADAPT_GOAL_COMPLIANCE = 1,
+} tfem_adapt_goal;
+
+/**
  * Opaque handle to a contact context for a host code. Create with
  * `tfem_contact_create`, free with `tfem_contact_destroy`.
  */
@@ -471,6 +486,38 @@ typedef struct tfem_contact_report {
    */
   struct tfem_solve_info info;
 } tfem_contact_report;
+
+/**
+ * Report of `tfem_solve_adaptive`.
+ */
+typedef struct tfem_adapt_report {
+  /**
+   * Solves made (cycles); each cycle's numbers from
+   * `tfem_get_adapt_cycles`.
+   */
+  int cycles;
+  /**
+   * 1 if the last estimate meets the tolerance, 0 if a limit stopped the
+   * refinement first (a warning then says what was reached).
+   */
+  int reached;
+  /**
+   * Unknowns of the last solve.
+   */
+  int64_t unknowns;
+  /**
+   * Triangles of the refined mesh.
+   */
+  int64_t triangles;
+  /**
+   * The last estimate of the goal's relative error.
+   */
+  double estimate;
+  /**
+   * Seconds of the whole adaptive solve, refinements included.
+   */
+  double seconds;
+} tfem_adapt_report;
 
 #ifdef __cplusplus
 extern "C" {
@@ -1013,6 +1060,44 @@ enum tfem_status tfem_solve(struct tfem_model *model, struct tfem_solve_info *in
 enum tfem_status tfem_solve_contact(struct tfem_model *model,
                                     const struct tfem_contact_options *options,
                                     struct tfem_contact_report *report);
+
+/**
+ * Solves to a tolerance (docs/method.md §8): solve (a contact solve with
+ * the `contact` options when the model has pairs),
+ * estimate the error by stress recovery, refine the triangles holding
+ * half of it by newest-vertex bisection, and again, until the estimated
+ * relative error of `goal` (an `AdaptGoal`: 0 energy norm, 1 compliance)
+ * is at most `tolerance` (> 0), or the next mesh would exceed
+ * `max_unknowns`, or `max_cycles` solves are done (either is a warning
+ * with the estimate reached, `tfem_get_warning`, and TFEM_STATUS_OK).
+ * The model keeps the refined mesh — the given nodes keep their indices,
+ * new ones follow; read it back with `tfem_get_sizes`,
+ * `tfem_get_mesh_nodes`, `tfem_get_mesh_triangles` and
+ * `tfem_get_boundary_edges` — its loads, constraints and pairs carried
+ * over, and the last solve's results. `contact` may be NULL (the default
+ * options); `report` may be NULL. Bad arguments change nothing; a failed
+ * solve restores the model as it was given.
+ */
+enum tfem_status tfem_solve_adaptive(struct tfem_model *model,
+                                     double tolerance,
+                                     int goal,
+                                     int64_t max_unknowns,
+                                     int max_cycles,
+                                     const struct tfem_contact_options *contact,
+                                     struct tfem_adapt_report *report);
+
+/**
+ * Copies each cycle of the last `tfem_solve_adaptive` (`cycles` of its
+ * report): its unknowns, its estimated relative error and its seconds
+ * (solve and estimate), into arrays of `length` values each: `unknowns`
+ * may be NULL, `estimates` may be NULL, `seconds` may be NULL. Nothing is
+ * written unless `length` holds every cycle.
+ */
+enum tfem_status tfem_get_adapt_cycles(struct tfem_model *model,
+                                       int64_t *unknowns,
+                                       double *estimates,
+                                       double *seconds,
+                                       size_t length);
 
 /****************************************************************************
  * Results of the last solve or step: displacements, strains, stresses,

@@ -2,8 +2,9 @@
 //! ([`material`]), the tempered element ([`element`]), the numbering of
 //! unknowns and the sparsity pattern ([`assembly`]), loads ([`loads`]),
 //! the one loop over body elements ([`element_loop`]), the bodies' part
-//! of the system assembled on the pattern ([`body`]) and the orientation
-//! of triangles numbered clockwise ([`orientation`]).
+//! of the system assembled on the pattern ([`body`]), the orientation
+//! of triangles numbered clockwise ([`orientation`]) and adaptive
+//! refinement by newest-vertex bisection ([`refine`]).
 
 pub mod assembly;
 pub mod body;
@@ -13,3 +14,4 @@ pub mod loads;
 pub mod material;
 pub mod mesh;
 pub mod orientation;
+pub mod refine;

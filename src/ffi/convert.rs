@@ -150,6 +150,37 @@ pub struct TfemContactReport {
     pub info: TfemSolveInfo,
 }
 
+/// What the tolerance of `tfem_solve_adaptive` bounds (argument `goal`).
+#[repr(C)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum AdaptGoal {
+    /// The relative error in the energy norm.
+    Energy = 0,
+    /// The relative error of the compliance (f·u), the square of the
+    /// energy's.
+    Compliance = 1,
+}
+
+/// Report of `tfem_solve_adaptive`.
+#[repr(C)]
+#[derive(Debug, Clone, Copy, Default)]
+pub struct TfemAdaptReport {
+    /// Solves made (cycles); each cycle's numbers from
+    /// `tfem_get_adapt_cycles`.
+    pub cycles: c_int,
+    /// 1 if the last estimate meets the tolerance, 0 if a limit stopped the
+    /// refinement first (a warning then says what was reached).
+    pub reached: c_int,
+    /// Unknowns of the last solve.
+    pub unknowns: i64,
+    /// Triangles of the refined mesh.
+    pub triangles: i64,
+    /// The last estimate of the goal's relative error.
+    pub estimate: f64,
+    /// Seconds of the whole adaptive solve, refinements included.
+    pub seconds: f64,
+}
+
 pub(super) fn component(c: i32) -> Result<Component> {
     Component::from_i32(c)
         .ok_or_else(|| Error::argument(format!("component = {c} must be 0 (x) or 1 (y)")))

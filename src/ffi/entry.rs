@@ -7,8 +7,8 @@
 use std::ffi::{c_char, c_int};
 
 use super::convert::{
-    TfemContactOptions, TfemContactReport, TfemSolveInfo, component, corners_arg, info_out,
-    jmin_arg, options_in, plane, report_out,
+    AdaptGoal, TfemAdaptReport, TfemContactOptions, TfemContactReport, TfemSolveInfo, component,
+    corners_arg, info_out, jmin_arg, options_in, plane, report_out,
 };
 use super::plumbing::{
     LAST_ERROR, TfemModel, check_live, copy_in, copy_message, copy_out, count, guarded, map_out,
@@ -23,6 +23,7 @@ use crate::fem::material::Material;
 use crate::fem::mesh::Mesh;
 use crate::linalg::Ordering;
 use crate::model::Model;
+use crate::model::adapt::{AdaptOptions, Goal};
 
 // -------- Lifecycle, errors and warnings ------------------------------
 
@@ -42,6 +43,7 @@ pub extern "C" fn tfem_create() -> *mut TfemModel {
             model: Model::new(),
             index_base: 0,
             last_error: String::new(),
+            adapt: Vec::new(),
         })
     })
     .unwrap_or(std::ptr::null_mut())
@@ -1107,6 +1109,119 @@ pub unsafe extern "C" fn tfem_solve_contact(
         };
         let r = m.model.solve_contact(&opts)?;
         write_optional(report, report_out(&r));
+        Ok(())
+    })
+}
+
+/// Solves to a tolerance (docs/method.md §8): solve (a contact solve with
+/// the `contact` options when the model has pairs),
+/// estimate the error by stress recovery, refine the triangles holding
+/// half of it by newest-vertex bisection, and again, until the estimated
+/// relative error of `goal` (an `AdaptGoal`: 0 energy norm, 1 compliance)
+/// is at most `tolerance` (> 0), or the next mesh would exceed
+/// `max_unknowns`, or `max_cycles` solves are done (either is a warning
+/// with the estimate reached, `tfem_get_warning`, and TFEM_STATUS_OK).
+/// The model keeps the refined mesh — the given nodes keep their indices,
+/// new ones follow; read it back with `tfem_get_sizes`,
+/// `tfem_get_mesh_nodes`, `tfem_get_mesh_triangles` and
+/// `tfem_get_boundary_edges` — its loads, constraints and pairs carried
+/// over, and the last solve's results. `contact` may be NULL (the default
+/// options); `report` may be NULL. Bad arguments change nothing; a failed
+/// solve restores the model as it was given.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_solve_adaptive(
+    model: *mut TfemModel,
+    tolerance: f64,
+    goal: c_int,
+    max_unknowns: i64,
+    max_cycles: c_int,
+    contact: *const TfemContactOptions,
+    report: *mut TfemAdaptReport,
+) -> Status {
+    with_model(model, |m| {
+        let goal = match goal {
+            g if g == AdaptGoal::Energy as c_int => Goal::Energy,
+            g if g == AdaptGoal::Compliance as c_int => Goal::Compliance,
+            g => {
+                return Err(Error::argument(format!(
+                    "goal = {g} must be 0 (energy) or 1 (compliance)"
+                )));
+            }
+        };
+        let positive = |v: i64, what: &str| {
+            usize::try_from(v)
+                .ok()
+                .filter(|&v| v > 0)
+                .ok_or_else(|| Error::argument(format!("{what} = {v} must be at least 1")))
+        };
+        // SAFETY: NULL or a caller-owned options struct.
+        let contact = match unsafe { contact.as_ref() } {
+            None => ContactOptions::default(),
+            Some(o) => options_in(o)?,
+        };
+        let options = AdaptOptions {
+            tolerance,
+            goal,
+            max_unknowns: positive(max_unknowns, "max_unknowns")?,
+            max_cycles: positive(i64::from(max_cycles), "max_cycles")?,
+            contact,
+            ..AdaptOptions::default()
+        };
+        let r = m.model.solve_adaptive(&options)?;
+        let last = r.cycles.last().copied();
+        write_optional(
+            report,
+            TfemAdaptReport {
+                cycles: r.cycles.len() as c_int,
+                reached: c_int::from(r.reached),
+                unknowns: last.map_or(0, |c| c.unknowns as i64),
+                triangles: last.map_or(0, |c| c.triangles as i64),
+                estimate: last.map_or(f64::NAN, |c| c.estimate),
+                seconds: r.seconds,
+            },
+        );
+        m.adapt = r.cycles;
+        Ok(())
+    })
+}
+
+/// Copies each cycle of the last `tfem_solve_adaptive` (`cycles` of its
+/// report): its unknowns, its estimated relative error and its seconds
+/// (solve and estimate), into arrays of `length` values each: `unknowns`
+/// may be NULL, `estimates` may be NULL, `seconds` may be NULL. Nothing is
+/// written unless `length` holds every cycle.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_get_adapt_cycles(
+    model: *mut TfemModel,
+    unknowns: *mut i64,
+    estimates: *mut f64,
+    seconds: *mut f64,
+    length: usize,
+) -> Status {
+    with_model(model, |m| {
+        if m.adapt.is_empty() {
+            return Err(Error::state(
+                "no adaptive solve: call tfem_solve_adaptive first",
+            ));
+        }
+        let n: Vec<i64> = m.adapt.iter().map(|c| c.unknowns as i64).collect();
+        let e: Vec<f64> = m.adapt.iter().map(|c| c.estimate).collect();
+        let t: Vec<f64> = m.adapt.iter().map(|c| c.seconds).collect();
+        if length < n.len() {
+            return Err(Error::new(
+                Status::BufferTooSmall,
+                format!("length = {length}: {} values are needed", n.len()),
+            ));
+        }
+        if !unknowns.is_null() {
+            copy_out(&n, unknowns, length, "unknowns")?;
+        }
+        if !estimates.is_null() {
+            copy_out(&e, estimates, length, "estimates")?;
+        }
+        if !seconds.is_null() {
+            copy_out(&t, seconds, length, "seconds")?;
+        }
         Ok(())
     })
 }

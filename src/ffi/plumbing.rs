@@ -19,6 +19,9 @@ pub struct TfemModel {
     pub(super) model: Model,
     pub(super) index_base: usize,
     pub(super) last_error: String,
+    /// The cycles of the last `tfem_solve_adaptive`, for
+    /// `tfem_get_adapt_cycles`.
+    pub(super) adapt: Vec<crate::model::adapt::Cycle>,
 }
 
 thread_local! {

@@ -10,6 +10,8 @@
 //! reused by later solves while the epoch holds. Settings that change
 //! nothing physical (the ordering) keep every result.
 
+pub mod adapt;
+pub mod estimate;
 pub mod problem;
 mod restart;
 pub mod solution;

@@ -108,6 +108,17 @@ impl Problem {
         self.stiffness += 1;
     }
 
+    /// Puts this problem (an earlier state, restored) after `current`: its
+    /// epochs move past `current`'s, so that nothing derived from either
+    /// is taken for its own.
+    pub(crate) fn supersede(&mut self, current: &Problem) {
+        self.epoch = current.epoch;
+        self.structure = current.structure;
+        self.stiffness = current.stiffness;
+        self.contact = current.contact;
+        self.changed_contact("a failed adaptive solve (the model as given)");
+    }
+
     /// The epoch: moves with every change.
     pub fn epoch(&self) -> u64 {
         self.epoch
@@ -219,6 +230,53 @@ impl Problem {
                 Err(e)
             }
         }
+    }
+
+    /// The same problem on `mesh`, a refinement of its mesh whose first
+    /// nodes are the old ones (same indices) and whose node k beyond them
+    /// bisects the edge `parents[k − old]` ([`crate::fem::refine`]). The
+    /// materials, tempering, weighting, loads (by tag, node and body) and
+    /// pairs (by tag, with their friction) carry over as they are; a new
+    /// node takes a prescribed component when both ends of its edge have
+    /// it, at their mean, if the edge lies on the mesh's boundary or its
+    /// body is prescribed whole in that component (a rigid tool) — an
+    /// interior edge joining two fixed boundary nodes is not a fixed edge.
+    /// Refused for a pair with a contact mesh of its own (its nodes do not
+    /// refine), naming it.
+    pub fn refined(&self, mesh: Mesh, parents: &[[usize; 2]]) -> Result<Problem> {
+        if let Some(i) = self.pairs.iter().position(|p| p.user_mesh.is_some()) {
+            return Err(Error::argument(format!(
+                "contact pair {i} has a contact mesh of its own, which refinement cannot carry: \
+                 let tfem build it (add_contact_pair)"
+            )));
+        }
+        let old = self.mesh_ref()?;
+        let first_new = old.nodes().len();
+        let on_boundary = boundary_edge_set(old);
+        let whole = wholly_prescribed(old, &self.prescribed);
+        let mut prescribed = self.prescribed.clone();
+        for (k, &[p, q]) in parents.iter().enumerate() {
+            let v = first_new + k;
+            let edge = (p.min(q), p.max(q));
+            let body = mesh.node_body().get(v).copied().flatten();
+            for c in 0..2 {
+                let (Some(&a), Some(&b)) =
+                    (prescribed.get(&(2 * p + c)), prescribed.get(&(2 * q + c)))
+                else {
+                    continue;
+                };
+                let rigid = body.is_some_and(|b| whole.contains(&(b, c)));
+                if on_boundary.contains(&edge) || rigid {
+                    prescribed.insert(2 * v + c, 0.5 * (a + b));
+                }
+            }
+        }
+        let mut refined = self.clone();
+        refined.mesh = Some(mesh);
+        refined.prescribed = prescribed;
+        refined.pairs = refined.revalidated_pairs()?;
+        refined.changed_contact("the mesh (refined)");
+        Ok(refined)
     }
 
     /// Checks the loads and pairs against the mesh's current boundary
@@ -816,6 +874,42 @@ impl Problem {
             self.tempering,
         ))
     }
+}
+
+/// The edges of `mesh`'s boundary (used by one triangle), as (low, high)
+/// node pairs.
+fn boundary_edge_set(mesh: &Mesh) -> std::collections::HashSet<(usize, usize)> {
+    let mut count: std::collections::HashMap<(usize, usize), u32> = Default::default();
+    for t in mesh.triangles() {
+        for k in 0..3 {
+            let (p, q) = (t[k], t[(k + 1) % 3]);
+            *count.entry((p.min(q), p.max(q))).or_insert(0) += 1;
+        }
+    }
+    count
+        .into_iter()
+        .filter(|(_, n)| *n == 1)
+        .map(|(e, _)| e)
+        .collect()
+}
+
+/// The (body, component) pairs prescribed at every node of the body.
+fn wholly_prescribed(
+    mesh: &Mesh,
+    prescribed: &BTreeMap<usize, f64>,
+) -> std::collections::HashSet<(i32, usize)> {
+    let mut all: BTreeMap<(i32, usize), bool> = BTreeMap::new();
+    for (v, body) in mesh.node_body().iter().enumerate() {
+        let Some(b) = body else { continue };
+        for c in 0..2 {
+            let e = all.entry((*b, c)).or_insert(true);
+            *e &= prescribed.contains_key(&(2 * v + c));
+        }
+    }
+    all.into_iter()
+        .filter(|(_, w)| *w)
+        .map(|(k, _)| k)
+        .collect()
 }
 
 /// How close to the axis, relative to the model's size, a node of an

@@ -1,0 +1,223 @@
+//! The adaptive solve: solve, estimate, mark, refine, until the estimated
+//! error meets a tolerance or a limit is reached (docs/method.md §8).
+
+use std::time::Instant;
+
+use super::Model;
+use super::estimate::{Estimate, estimate};
+use crate::contact::ContactOptions;
+use crate::error::{Error, Result};
+use crate::fem::refine::Refinement;
+
+/// What the tolerance of an adaptive solve bounds.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Goal {
+    /// The relative error in energy, η/‖u‖_E.
+    Energy,
+    /// The relative error of the compliance f·u, estimated as (η/‖u‖_E)²
+    /// (for a load-driven linear problem the compliance's error is the
+    /// energy norm of the error squared).
+    Compliance,
+}
+
+/// The parameters of [`Model::solve_adaptive`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct AdaptOptions {
+    /// The tolerance on the estimated relative error of `goal` (> 0).
+    pub tolerance: f64,
+    /// What the tolerance bounds.
+    pub goal: Goal,
+    /// Stop before a cycle would exceed this many unknowns (its mesh is
+    /// not solved).
+    pub max_unknowns: usize,
+    /// At most this many solves.
+    pub max_cycles: usize,
+    /// Dörfler's bulk fraction θ ∈ (0, 1]: each cycle refines the fewest
+    /// triangles holding θ of the estimate's square (0.5).
+    pub fraction: f64,
+    /// The contact solves' options (unused without contact pairs).
+    pub contact: ContactOptions,
+}
+
+impl Default for AdaptOptions {
+    fn default() -> Self {
+        AdaptOptions {
+            tolerance: 1e-2,
+            goal: Goal::Energy,
+            max_unknowns: 2_000_000,
+            max_cycles: 30,
+            fraction: 0.5,
+            contact: ContactOptions::default(),
+        }
+    }
+}
+
+impl AdaptOptions {
+    /// Checks the parameters, naming the bad one.
+    pub fn validate(&self) -> Result<()> {
+        if !(self.tolerance.is_finite() && self.tolerance > 0.0) {
+            return Err(Error::argument(format!(
+                "tolerance = {:?} must be finite and > 0",
+                self.tolerance
+            )));
+        }
+        if !(self.fraction > 0.0 && self.fraction <= 1.0) {
+            return Err(Error::argument(format!(
+                "fraction = {:?} must lie in (0, 1]",
+                self.fraction
+            )));
+        }
+        if self.max_cycles == 0 || self.max_unknowns == 0 {
+            return Err(Error::argument(
+                "max_cycles and max_unknowns must be at least 1",
+            ));
+        }
+        self.contact.validate()
+    }
+}
+
+/// One cycle of an adaptive solve.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Cycle {
+    /// Unknowns of its solve.
+    pub unknowns: usize,
+    /// Triangles of its mesh.
+    pub triangles: usize,
+    /// Its estimate of the goal's relative error.
+    pub estimate: f64,
+    /// Seconds of the cycle: solve and estimate (refinement not counted).
+    pub seconds: f64,
+}
+
+/// The outcome of [`Model::solve_adaptive`].
+#[derive(Debug, Clone, PartialEq)]
+pub struct AdaptReport {
+    /// Every cycle, in order; the last is the model's solution.
+    pub cycles: Vec<Cycle>,
+    /// Whether the last estimate meets the tolerance.
+    pub reached: bool,
+    /// Total seconds, refinements included.
+    pub seconds: f64,
+}
+
+impl Model {
+    /// The error estimate of the last solve (docs/method.md §8), computed
+    /// on request.
+    pub fn error_estimate(&self) -> Result<Estimate> {
+        estimate(&self.problem, self.solution()?, self.field()?)
+    }
+
+    /// Solves to a tolerance: solve (a contact solve when the model has
+    /// pairs), estimate, refine the triangles that hold `fraction` of the
+    /// estimate by newest-vertex bisection, and again, until the estimate
+    /// of the goal's relative error meets `tolerance`, or the next mesh
+    /// would exceed `max_unknowns`, or `max_cycles` solves are done —
+    /// then a warning ([`Model::warnings`]) says what was reached. The
+    /// model keeps the refined mesh (nodes appended after the given ones,
+    /// which keep their indices), its loads, constraints and pairs carried
+    /// over ([`crate::Problem::refined`]), and the last solve's results.
+    /// Bad options are refused before anything changes; a failed solve
+    /// restores the model as it was given.
+    pub fn solve_adaptive(&mut self, options: &AdaptOptions) -> Result<AdaptReport> {
+        options.validate()?;
+        let before = self.problem.clone();
+        let report = self.adapt(options);
+        if report.is_err() {
+            let _ = self.edit(|p| {
+                let current = std::mem::replace(p, before);
+                p.supersede(&current);
+                Ok(())
+            });
+        }
+        report
+    }
+
+    fn adapt(&mut self, options: &AdaptOptions) -> Result<AdaptReport> {
+        let t_start = Instant::now();
+        let mut refinement = Refinement::new(self.problem.mesh_ref()?);
+        let mut cycles = Vec::new();
+        let with_contact = !self.problem.contact_pairs().is_empty();
+        loop {
+            let t0 = Instant::now();
+            let info = match with_contact {
+                true => self.solve_contact(&options.contact)?.info,
+                false => self.solve()?,
+            };
+            let est = self.error_estimate()?;
+            let relative = match options.goal {
+                Goal::Energy => est.relative(),
+                Goal::Compliance => est.relative() * est.relative(),
+            };
+            let mesh = self.problem.mesh_ref()?;
+            cycles.push(Cycle {
+                unknowns: info.unknowns,
+                triangles: mesh.triangles().len(),
+                estimate: relative,
+                seconds: t0.elapsed().as_secs_f64(),
+            });
+            if relative <= options.tolerance {
+                break;
+            }
+            if cycles.len() >= options.max_cycles {
+                self.warn_unreached(options, relative, "cycles");
+                break;
+            }
+            let marked = dorfler(&est.squared, options.fraction);
+            let refined = refinement.refine(mesh, &marked)?;
+            if refined_unknowns_estimate(info.unknowns, mesh, &refined) > options.max_unknowns {
+                self.warn_unreached(options, relative, "unknowns");
+                break;
+            }
+            self.edit(|p| {
+                *p = p.refined(refined.mesh, &refined.parents)?;
+                Ok(())
+            })?;
+        }
+        let reached = cycles
+            .last()
+            .is_some_and(|c| c.estimate <= options.tolerance);
+        Ok(AdaptReport {
+            cycles,
+            reached,
+            seconds: t_start.elapsed().as_secs_f64(),
+        })
+    }
+
+    fn warn_unreached(&mut self, options: &AdaptOptions, reached: f64, limit: &str) {
+        self.solve_warnings.push(format!(
+            "the adaptive solve stopped at its limit of {limit} with an estimated relative error of \
+             {reached:.3e}, above the tolerance {:.3e}",
+            options.tolerance
+        ));
+    }
+}
+
+/// The unknowns of the refined mesh: the present ones scaled by the growth
+/// of the node count (the same share of prescribed nodes).
+fn refined_unknowns_estimate(
+    unknowns: usize,
+    mesh: &crate::fem::mesh::Mesh,
+    refined: &crate::fem::refine::Refined,
+) -> usize {
+    let old = mesh.nodes().len().max(1);
+    let new = old + refined.parents.len();
+    (unknowns as f64 * new as f64 / old as f64).ceil() as usize
+}
+
+/// Dörfler's marking: the fewest triangles whose η_e² sum to at least
+/// `fraction` of the total, largest first.
+pub fn dorfler(squared: &[f64], fraction: f64) -> Vec<usize> {
+    let total: f64 = squared.iter().sum();
+    let mut order: Vec<usize> = (0..squared.len()).collect();
+    order.sort_by(|&a, &b| squared[b].total_cmp(&squared[a]));
+    let mut marked = Vec::new();
+    let mut sum = 0.0;
+    for e in order {
+        if sum >= fraction * total || squared[e] <= 0.0 {
+            break;
+        }
+        sum += squared[e];
+        marked.push(e);
+    }
+    marked
+}
