@@ -6,9 +6,11 @@
 use std::fmt::Write as _;
 use std::time::Instant;
 
+use tfem::ContactOptions;
 use tfem::scenes::revolution::{
     ShaftHub, StackedCylinders, ThickCylinder, ring_square, run_manufactured_ring,
 };
+use tfem::scenes::sphere::{CylindricalPunch, Sphere};
 use tfem::verification::{StudyPoint, fitted_rate};
 use tfem::{Material, PlaneMode, Tempering};
 
@@ -27,6 +29,7 @@ pub(crate) fn axisymmetric(report: &mut String, a: &Args) {
     thick_cylinder(report, a);
     patch_test(report);
     curves.push(shaft_hub(report, a));
+    curves.extend(indentation(report));
     figure(
         report,
         a,
@@ -247,4 +250,85 @@ fn shaft_hub(report: &mut String, a: &Args) -> Curve {
         label: "shrink fit, mean pressure".to_string(),
         points,
     }
+}
+
+fn indentation(report: &mut String) -> Vec<Curve> {
+    writeln!(
+        report,
+        "### A sphere on a block (Hertz) and a rigid flat punch (Boussinesq)\n\nSphere R = 1 on a block of \
+         radius and depth 100a (a = 0.02R), frictionless, P a pressure on the sphere's equatorial cut; a from \
+         the contact's extent, p₀ fitted to the nodal pressures within 0.8a (the axis node alone converges at \
+         first order: it carries a tributary of πh²/3). Punch of radius a into a block of 500a graded towards \
+         the punch's edge: P from its whole-ring reactions against 2aE*δ, and the largest error of p(r) within \
+         0.8a.\n\n| case | h | unknowns | time [s] | a | p₀ | P | p(r) |\n|---|---|---|---|---|---|---|---|"
+    )
+    .unwrap();
+    let rel = |x: f64, y: f64| x / y - 1.0;
+    let mut curves = Vec::new();
+    for (name, ratio) in [("sphere, equal moduli", 1.0), ("sphere 10× stiffer", 10.0)] {
+        let mut points = Vec::new();
+        for k in [8.0, 16.0, 32.0] {
+            let base = Sphere::default();
+            let s = Sphere {
+                mesh_size: base.contact_radius / k,
+                e_sphere: ratio * base.e_block,
+                ..base
+            };
+            let t0 = Instant::now();
+            match s
+                .build()
+                .and_then(|mut b| b.solve(&s, &ContactOptions::default()))
+            {
+                Ok(r) => {
+                    let t = t0.elapsed().as_secs_f64();
+                    writeln!(
+                        report,
+                        "| {name} | a/{k} | {} | {t:.3} | {:+.2e} | {:+.2e} | | |",
+                        r.report.info.unknowns,
+                        rel(r.a, r.a_exact),
+                        rel(r.p0_fit, r.p0_exact)
+                    )
+                    .unwrap();
+                    points.push((t, rel(r.p0_fit, r.p0_exact).abs()));
+                }
+                Err(e) => writeln!(report, "| {name} | a/{k} | {} |", failure(&e)).unwrap(),
+            }
+        }
+        curves.push(Curve {
+            label: format!("Hertz p0, {name}"),
+            points,
+        });
+    }
+    let mut points = Vec::new();
+    for k in [8.0, 16.0, 32.0] {
+        let p = CylindricalPunch {
+            mesh_size: 1.0 / k,
+            ..Default::default()
+        };
+        let t0 = Instant::now();
+        match p
+            .build()
+            .and_then(|mut b| b.solve(&p, &ContactOptions::default()))
+        {
+            Ok(r) => {
+                let t = t0.elapsed().as_secs_f64();
+                writeln!(
+                    report,
+                    "| flat punch | a/{k} | {} | {t:.3} | | | {:+.2e} | {:.2e} |",
+                    r.report.info.unknowns,
+                    rel(r.force, r.force_exact),
+                    r.pressure_error
+                )
+                .unwrap();
+                points.push((t, rel(r.force, r.force_exact).abs()));
+            }
+            Err(e) => writeln!(report, "| flat punch | a/{k} | {} |", failure(&e)).unwrap(),
+        }
+    }
+    curves.push(Curve {
+        label: "punch P".to_string(),
+        points,
+    });
+    writeln!(report).unwrap();
+    curves
 }
