@@ -163,6 +163,10 @@ impl Model {
                 break;
             }
             let marked = dorfler(&est.squared, options.fraction);
+            if marked.is_empty() {
+                // An estimate of exactly zero: no mesh is better.
+                break;
+            }
             let refined = refinement.refine(mesh, &marked)?;
             if refined_unknowns_estimate(info.unknowns, mesh, &refined) > options.max_unknowns {
                 self.warn_unreached(options, relative, "unknowns");
