@@ -18,6 +18,7 @@ use std::time::Instant;
 use clap::{Parser, ValueEnum};
 use plotters::prelude::*;
 use serde_json::{Value, json};
+use tfem::model::adapt::{AdaptOptions, AdaptReport, Cycle, Goal};
 use tfem::scenes::{TwoBlocks, TwoBlocksResult, TwoBlocksScene};
 use tfem::{ContactLaw, ContactOptions, InversionTest};
 
@@ -101,6 +102,15 @@ struct Args {
     /// factorisation for all of them); 1 solves the full load at once.
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
     steps: u32,
+    /// Solve to this tolerance on the compliance's relative error instead
+    /// of on the mesh `--mesh-size` gives: refine where the estimated
+    /// error is (docs/method.md §8), a progress line per cycle on stderr;
+    /// `--picture` then also draws the adapted mesh.
+    #[arg(long)]
+    adapt: Option<f64>,
+    /// The adaptive solve's limit on unknowns.
+    #[arg(long, default_value_t = 2_000_000)]
+    max_unknowns: usize,
     /// Print one JSON object instead of the table.
     #[arg(long)]
     json: bool,
@@ -166,6 +176,8 @@ impl Args {
 struct Run {
     scene: TwoBlocksScene,
     result: TwoBlocksResult,
+    /// The adaptive solve's cycles (`--adapt`).
+    adapt: Option<AdaptReport>,
     /// Numeric factorisations over the whole run (one for a history).
     factorizations: usize,
     seconds: f64,
@@ -175,6 +187,30 @@ fn run(args: &Args, c: f64, h: f64) -> Result<Run, tfem::Error> {
     let t0 = Instant::now();
     let mut scene = args.scene(c, h).build()?;
     let options = args.options();
+    if let Some(tolerance) = args.adapt {
+        let adapt = AdaptOptions {
+            tolerance,
+            goal: Goal::Compliance,
+            max_unknowns: args.max_unknowns,
+            contact: options,
+            progress: Some(|c: &Cycle| {
+                eprintln!(
+                    "cycle: {:>8} unknowns, estimated compliance error {:.3e}, {:.3} s",
+                    c.unknowns, c.estimate, c.seconds
+                )
+            }),
+            ..Default::default()
+        };
+        let report = scene.model.solve_adaptive(&adapt)?;
+        let result = scene.measure(scene.model.contact_report()?.clone())?;
+        return Ok(Run {
+            scene,
+            result,
+            factorizations: report.cycles.len(),
+            adapt: Some(report),
+            seconds: t0.elapsed().as_secs_f64(),
+        });
+    }
     let (result, factorizations) = if args.steps == 1 {
         let result = scene.solve(&options)?;
         let f = result.report.info.factorizations;
@@ -196,6 +232,7 @@ fn run(args: &Args, c: f64, h: f64) -> Result<Run, tfem::Error> {
         scene,
         result,
         factorizations,
+        adapt: None,
         seconds: t0.elapsed().as_secs_f64(),
     })
 }
@@ -296,6 +333,13 @@ fn single(args: &Args) -> i32 {
             "slip_edge": r.result.slip_edge,
             "max_shear": r.result.max_shear,
         });
+        if let Some(a) = &r.adapt {
+            let last = a.cycles.last();
+            obj["unknowns"] = json!(last.map(|c| c.unknowns));
+            obj["cycles"] = json!(a.cycles.len());
+            obj["estimate"] = json!(last.map(|c| c.estimate));
+            obj["tolerance_reached"] = json!(a.reached);
+        }
         if let Some(case) = &reference {
             for (k, v) in outputs(&r.result) {
                 obj[format!("{k}_reference")] = case[k]["value"].clone();
@@ -320,6 +364,17 @@ fn single(args: &Args) -> i32 {
             info.unknowns,
             r.result.report.elements
         );
+        if let Some(a) = &r.adapt {
+            println!(
+                "adapted from h = {} in {} cycles to {} unknowns: estimated compliance error {:.3e} ({} the tolerance {:.1e})",
+                args.mesh_size,
+                a.cycles.len(),
+                info.unknowns,
+                a.cycles.last().map_or(f64::NAN, |c| c.estimate),
+                if a.reached { "within" } else { "above" },
+                args.adapt.unwrap_or(f64::NAN)
+            );
+        }
         println!(
             "active-set loop: {} iterations, active per iteration {:?}",
             r.result.report.iterations,
@@ -418,6 +473,18 @@ fn write_files(args: &Args, scene: &TwoBlocksScene) -> Result<Vec<String>, Strin
         let t0 = Instant::now();
         draw_deformed(scene, &path).map_err(|e| format!("cannot draw {}: {e}", path.display()))?;
         written.push(said(&path, t0));
+        if args.adapt.is_some() {
+            let path = args.out.join("two_blocks_mesh.png");
+            let t0 = Instant::now();
+            let mesh = scene.model.mesh().ok_or("no mesh")?;
+            let title = format!(
+                "two blocks: the adapted mesh, {} triangles",
+                mesh.triangles().len()
+            );
+            picture::mesh_png(mesh.nodes(), mesh.triangles(), &title, &path)
+                .map_err(|e| format!("cannot draw {}: {e}", path.display()))?;
+            written.push(said(&path, t0));
+        }
     }
     Ok(written)
 }

@@ -102,6 +102,18 @@ impl Image {
         }
     }
 
+    /// A black line from `a` to `b` (pixel coordinates), one pixel wide.
+    pub fn line(&mut self, a: [f64; 2], b: [f64; 2]) {
+        let steps = (b[0] - a[0]).abs().max((b[1] - a[1]).abs()).ceil().max(1.0) as usize;
+        for k in 0..=steps {
+            let t = k as f64 / steps as f64;
+            let (x, y) = (a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1]));
+            if x >= 0.0 && y >= 0.0 {
+                self.set(x as usize, y as usize, [0; 3]);
+            }
+        }
+    }
+
     pub fn save_png(&self, path: &Path) -> Result<(), Box<dyn std::error::Error>> {
         let file = BufWriter::new(std::fs::File::create(path)?);
         let mut encoder = png::Encoder::new(file, WIDTH as u32, HEIGHT as u32);
@@ -183,6 +195,39 @@ pub fn field_png(
         image.rect(bar_x + 24, bar_top + k, 6, 1, [0; 3]);
         image.text(bar_x + 34, bar_top + k - 8, &format!("{v:.3e}"));
     }
+    image.save_png(path)?;
+    Ok(())
+}
+
+/// The triangles with corners `x` drawn as their edges (black on white),
+/// with `title` above: a mesh, as [`field_png`] fits it to the picture.
+pub fn mesh_png(
+    x: &[[f64; 2]],
+    triangles: &[[usize; 3]],
+    title: &str,
+    path: &Path,
+) -> Result<(), Box<dyn std::error::Error>> {
+    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    for q in x {
+        for k in 0..2 {
+            lo[k] = lo[k].min(q[k]);
+            hi[k] = hi[k].max(q[k]);
+        }
+    }
+    let (left, top, right, bottom) = (20.0, 50.0, WIDTH as f64 - 20.0, HEIGHT as f64 - 20.0);
+    let s = ((right - left) / (hi[0] - lo[0])).min((bottom - top) / (hi[1] - lo[1]));
+    let (x0, y0) = (
+        left + 0.5 * (right - left - s * (hi[0] - lo[0])),
+        top + 0.5 * (bottom - top + s * (hi[1] - lo[1])),
+    );
+    let to_pixels = |q: [f64; 2]| [x0 + s * (q[0] - lo[0]), y0 - s * (q[1] - lo[1])];
+    let mut image = Image::new();
+    for t in triangles {
+        for k in 0..3 {
+            image.line(to_pixels(x[t[k]]), to_pixels(x[t[(k + 1) % 3]]));
+        }
+    }
+    image.text(20, 16, title);
     image.save_png(path)?;
     Ok(())
 }

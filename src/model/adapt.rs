@@ -21,7 +21,7 @@ pub enum Goal {
 }
 
 /// The parameters of [`Model::solve_adaptive`].
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone)]
 pub struct AdaptOptions {
     /// The tolerance on the estimated relative error of `goal` (> 0).
     pub tolerance: f64,
@@ -37,6 +37,8 @@ pub struct AdaptOptions {
     pub fraction: f64,
     /// The contact solves' options (unused without contact pairs).
     pub contact: ContactOptions,
+    /// Called with each cycle as it ends (a progress line), if given.
+    pub progress: Option<fn(&Cycle)>,
 }
 
 impl Default for AdaptOptions {
@@ -48,6 +50,7 @@ impl Default for AdaptOptions {
             max_cycles: 30,
             fraction: 0.5,
             contact: ContactOptions::default(),
+            progress: None,
         }
     }
 }
@@ -149,12 +152,16 @@ impl Model {
                 Goal::Compliance => est.relative() * est.relative(),
             };
             let mesh = self.problem.mesh_ref()?;
-            cycles.push(Cycle {
+            let cycle = Cycle {
                 unknowns: info.unknowns,
                 triangles: mesh.triangles().len(),
                 estimate: relative,
                 seconds: t0.elapsed().as_secs_f64(),
-            });
+            };
+            if let Some(progress) = options.progress {
+                progress(&cycle);
+            }
+            cycles.push(cycle);
             if relative <= options.tolerance {
                 break;
             }
