@@ -2931,6 +2931,43 @@ static void the_axisymmetric_mode_refuses_what_it_cannot_model_by_name(void) {
   free(g);
 }
 
+/* tfem_solve_adaptive refines the seed-like two blocks to a tolerance on the
+ * compliance, keeps the given nodes where they were, reads back the refined
+ * mesh and each cycle; bad arguments name themselves and change nothing. */
+static void an_adaptive_solve_meets_its_tolerance_and_the_refined_mesh_reads_back(void) {
+  tfem_model *m = two_blocks();
+  int nn0 = 0, nt0 = 0, nn = 0, nt = 0;
+  CHECK(tfem_get_sizes(m, &nn0, &nt0, NULL) == TFEM_STATUS_OK);
+  EXPECT_ERROR(m, tfem_solve_adaptive(m, NAN, TFEM_ADAPT_GOAL_COMPLIANCE, 100000, 20, NULL, NULL),
+               TFEM_STATUS_INVALID_ARGUMENT, "tolerance");
+  EXPECT_ERROR(m, tfem_solve_adaptive(m, 1e-2, 7, 100000, 20, NULL, NULL),
+               TFEM_STATUS_INVALID_ARGUMENT, "goal = 7");
+  EXPECT_ERROR(m, tfem_solve_adaptive(m, 1e-2, TFEM_ADAPT_GOAL_ENERGY, 0, 20, NULL, NULL),
+               TFEM_STATUS_INVALID_ARGUMENT, "max_unknowns");
+  EXPECT_ERROR(m, tfem_get_adapt_cycles(m, NULL, NULL, NULL, 0), TFEM_STATUS_INVALID_STATE,
+               "tfem_solve_adaptive");
+  CHECK(tfem_get_sizes(m, &nn, &nt, NULL) == TFEM_STATUS_OK && nn == nn0 && nt == nt0);
+  tfem_adapt_report rep;
+  CHECK(tfem_solve_adaptive(m, 2e-2, TFEM_ADAPT_GOAL_COMPLIANCE, 100000, 30, NULL, &rep) ==
+        TFEM_STATUS_OK);
+  CHECK(rep.reached == 1 && rep.cycles >= 2 && rep.estimate <= 2e-2 && rep.estimate > 0.0);
+  CHECK(tfem_get_sizes(m, &nn, &nt, NULL) == TFEM_STATUS_OK && nn > nn0 && nt == rep.triangles);
+  double *xy = malloc(sizeof(double) * 2 * (size_t)nn);
+  CHECK(tfem_get_mesh_nodes(m, xy, 2 * (size_t)nn) == TFEM_STATUS_OK);
+  CHECK(memcmp(xy, B.xy, sizeof(double) * 2 * (size_t)nn0) == 0);
+  free(xy);
+  int64_t unknowns[64];
+  double estimates[64];
+  EXPECT_ERROR(m, tfem_get_adapt_cycles(m, unknowns, estimates, NULL, 1),
+               TFEM_STATUS_BUFFER_TOO_SMALL, "are needed");
+  CHECK(tfem_get_adapt_cycles(m, unknowns, estimates, NULL, 64) == TFEM_STATUS_OK);
+  CHECK(unknowns[rep.cycles - 1] == rep.unknowns && estimates[rep.cycles - 1] == rep.estimate);
+  CHECK(estimates[0] > estimates[rep.cycles - 1] && unknowns[0] < unknowns[rep.cycles - 1]);
+  double u[2];
+  CHECK(tfem_get_displacements(m, u, 2) == TFEM_STATUS_BUFFER_TOO_SMALL);
+  tfem_destroy(m);
+}
+
 /* tfem_set_prescribed_edges changes a whole tag's prescribed values, all or
  * nothing: what it refuses names the tag or node and changes nothing. */
 static void a_tags_prescribed_values_change_together_or_not_at_all(void) {
@@ -3050,6 +3087,7 @@ int main(int argc, char **argv) {
   a_tags_prescribed_values_change_together_or_not_at_all();
   axisymmetric_cylinders_pressed_together_carry_a_uniform_stress_and_the_rings_force();
   the_axisymmetric_mode_refuses_what_it_cannot_model_by_name();
+  an_adaptive_solve_meets_its_tolerance_and_the_refined_mesh_reads_back();
 
   if (gmsh_dir[0] != '\0') rmdir(gmsh_dir);
 
