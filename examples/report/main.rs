@@ -15,6 +15,7 @@
 //! and never with `--quick`: it needs `ccx` (Debian's `calculix-ccx`),
 //! which CI does not install; without `ccx` on the PATH it says so.
 
+mod adaptive;
 mod axisymmetric;
 mod built;
 mod calculix;
@@ -39,6 +40,7 @@ use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
+use crate::adaptive::adaptive;
 use crate::axisymmetric::axisymmetric;
 use crate::built::built;
 use crate::calculix::calculix;
@@ -94,6 +96,7 @@ const SECTIONS: &[&str] = &[
     "cattaneo",
     "combined",
     "axisymmetric",
+    "adaptive",
     "calculix",
     "host_codes",
     "q4_host",
@@ -181,7 +184,7 @@ fn main() {
     )
     .unwrap();
     type Section = fn(&mut String, &Args);
-    let sections: [(&str, Section); 20] = [
+    let sections: [(&str, Section); 21] = [
         ("manufactured", manufactured),
         ("seed", seed),
         ("patch_test", patch_test),
@@ -198,6 +201,7 @@ fn main() {
         ("cattaneo", cattaneo),
         ("combined", combined),
         ("axisymmetric", axisymmetric),
+        ("adaptive", adaptive),
         ("calculix", calculix),
         ("host_codes", host_codes),
         ("q4_host", q4_host),

@@ -29,14 +29,17 @@
 //! triangle count by exactly 4 (4^k after k rounds) and adds one node per
 //! edge; an unmarked triangle gives 1 to 4 children, as closure requires.
 //! A single bisection per marked triangle ("NVB1", 2 children) is not
-//! offered.
+//! offered. Cost: linear in the triangles (measured, release: 1.0M
+//! triangles all marked, to 4.0M, in 0.7–0.9 s, about half of it
+//! [`Mesh::new`] validating the result).
 //!
 //! **Conformity.** An edge is identified by its two nodes, so an edge
 //! shared by triangles of a body is bisected in all of them: no hanging
-//! node inside a body. Bodies share no nodes (docs/method.md §6), so two
+//! node inside a body. Bodies in contact have their own nodes, so two
 //! bodies meshed overlapping (a press fit) stay two bodies with their own
-//! nodes; their contact sides are refined independently and stay
-//! non-matching, as they were.
+//! nodes, each refined conformingly; their contact sides are refined
+//! independently and stay non-matching, as they were. (Were two bodies to
+//! share an edge's nodes, it would be bisected in both.)
 //!
 //! **Degenerate triangles** (docs/method.md §1–2: flat caps J = 0 and
 //! folds J < 0) are refined like any other: their longest side is well
@@ -54,7 +57,8 @@
 //! nodes appended, see [`Refined::parents`]), each triangle's body (the
 //! children's), the index base, and the tagged boundary edges: a bisected
 //! one becomes its two halves with the same tag and direction, its owner
-//! recomputed by [`Mesh::set_boundary_edges`]. The refined mesh's warnings
+//! recomputed as [`Mesh::checked_edges`] finds it (the first triangle with
+//! that side when only one has it). The refined mesh's warnings
 //! are its own validation's; warnings added to the old mesh with
 //! [`Mesh::warn`] are not carried over.
 
@@ -469,18 +473,20 @@ mod tests {
     use super::*;
     use crate::error::Status;
 
-    /// An nx × ny grid on [x0, x0 + w] × [0, h], each cell cut along the
+    /// A test mesh's data, and its tagged boundary edges.
+    struct Grid {
+        nodes: Vec<[f64; 2]>,
+        tris: Vec<[usize; 3]>,
+        edges: Vec<[usize; 2]>,
+        tags: Vec<i32>,
+    }
+
+    /// An n × n grid on [x0, x0 + 1] × [0, 1], each cell cut along the
     /// same diagonal, interior nodes moved by up to `jitter` of a cell
     /// (deterministically); boundary edges tagged 1 (bottom), 2 (right),
     /// 3 (top), 4 (left).
-    fn grid(
-        nx: usize,
-        ny: usize,
-        x0: f64,
-        w: f64,
-        h: f64,
-        jitter: f64,
-    ) -> (Vec<[f64; 2]>, Vec<[usize; 3]>, Vec<[usize; 2]>, Vec<i32>) {
+    fn grid(n: usize, x0: f64, jitter: f64) -> Grid {
+        let (nx, ny, w, h) = (n, n, 1.0, 1.0);
         let mut seed: u64 = 0x9e37_79b9_7f4a_7c15;
         let mut rand = || {
             seed = seed
@@ -524,11 +530,21 @@ mod tests {
             edges.push([id(0, j + 1), id(0, j)]);
             tags.push(4);
         }
-        (nodes, tris, edges, tags)
+        Grid {
+            nodes,
+            tris,
+            edges,
+            tags,
+        }
     }
 
     fn square_mesh(n: usize, jitter: f64) -> Mesh {
-        let (nodes, tris, edges, tags) = grid(n, n, 0.0, 1.0, 1.0, jitter);
+        let Grid {
+            nodes,
+            tris,
+            edges,
+            tags,
+        } = grid(n, 0.0, jitter);
         let nt = tris.len();
         let mut m = Mesh::new(nodes, tris, vec![1; nt], 0).unwrap();
         m.set_boundary_edges(&edges, &tags).unwrap();
@@ -721,10 +737,11 @@ mod tests {
             }
         }
         // ... and the angles stay in NVB's finitely many similarity
-        // classes of each initial triangle: measured, a smallest angle down
-        // to WORST of its initial triangle's; asserted with a margin.
+        // classes of each initial triangle: measured, no smallest angle
+        // below 0.595 of its initial triangle's (so at most a factor 1.68
+        // lost, whatever the number of cycles); asserted at 1/2.
         assert!(
-            worst >= 0.4,
+            worst >= 0.5,
             "an angle fell to {worst} of its initial triangle's"
         );
     }
@@ -812,7 +829,7 @@ mod tests {
 
     #[test]
     fn a_marked_index_out_of_range_is_an_error_naming_the_triangle() {
-        let (nodes, tris, _, _) = grid(2, 2, 0.0, 1.0, 1.0, 0.0);
+        let Grid { nodes, tris, .. } = grid(2, 0.0, 0.0);
         let m = Mesh::new(nodes, tris, vec![1; 8], 1).unwrap();
         let mut state = Refinement::new(&m);
         let before = state.clone();
@@ -828,9 +845,17 @@ mod tests {
 
     #[test]
     fn two_bodies_meshed_overlapping_stay_two_bodies_with_their_own_nodes() {
-        let (mut nodes, mut tris, _, _) = grid(3, 3, 0.0, 1.0, 1.0, 0.2);
+        let Grid {
+            mut nodes,
+            mut tris,
+            ..
+        } = grid(3, 0.0, 0.2);
         let mut body_of = vec![1; tris.len()];
-        let (n2, t2, _, _) = grid(3, 3, 0.9, 1.0, 1.0, 0.2);
+        let Grid {
+            nodes: n2,
+            tris: t2,
+            ..
+        } = grid(3, 0.9, 0.2);
         let off = nodes.len();
         nodes.extend(n2);
         body_of.extend(vec![2; t2.len()]);
@@ -925,7 +950,7 @@ mod tests {
 
     #[test]
     fn clockwise_input_is_turned_by_the_mesh_and_children_stay_counter_clockwise() {
-        let (nodes, tris, _, _) = grid(3, 3, 0.0, 1.0, 1.0, 0.2);
+        let Grid { nodes, tris, .. } = grid(3, 0.0, 0.2);
         let tris: Vec<[usize; 3]> = tris.iter().map(|t| [t[0], t[2], t[1]]).collect();
         let m = Mesh::new(nodes, tris, vec![1; 18], 0).unwrap();
         assert!(m.warnings().iter().any(|w| w.contains("clockwise")));
@@ -982,7 +1007,12 @@ mod tests {
     #[ignore]
     fn a_million_triangles_refine_in_linear_time() {
         for n in [354, 708] {
-            let (nodes, tris, edges, tags) = grid(n, n, 0.0, 1.0, 1.0, 0.3);
+            let Grid {
+                nodes,
+                tris,
+                edges,
+                tags,
+            } = grid(n, 0.0, 0.3);
             let nt = tris.len();
             let mut m = Mesh::new(nodes, tris, vec![1; nt], 0).unwrap();
             m.set_boundary_edges(&edges, &tags).unwrap();

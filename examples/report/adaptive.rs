@@ -1,0 +1,257 @@
+//! Error against run time, adaptive beside uniform, on the seed scene
+//! (docs/method.md §8), and beside CalculiX's uniform CPE4 meshes at equal
+//! accuracy.
+
+use std::fmt::Write as _;
+use std::time::Instant;
+
+use serde_json::Value;
+use tfem::ContactOptions;
+use tfem::model::adapt::{AdaptOptions, Goal};
+use tfem::scenes::{TwoBlocks, TwoBlocksResult};
+use tfem::verification::fitted_rate;
+
+use crate::Args;
+use crate::common::{Curve, failure, figure, reference};
+
+/// The four outputs of the reference file with their relative errors.
+fn errors(r: &TwoBlocksResult, case: &Value) -> [f64; 4] {
+    let rel = |v: f64, k: &str| case[k]["value"].as_f64().map_or(f64::NAN, |x| (v - x) / x);
+    [
+        rel(r.compliance, "compliance"),
+        rel(r.v_top, "v_top"),
+        rel(r.gap_edge, "gap_edge"),
+        rel(r.lc, "lc"),
+    ]
+}
+
+pub(crate) fn adaptive(report: &mut String, a: &Args) {
+    writeln!(report, "## Error against run time: adaptive beside uniform\n").unwrap();
+    writeln!(
+        report,
+        "The seed scene (canonical parameters), frictionless. *Adaptive*: from h = 1/16, refined by \
+         newest-vertex bisection where the stress-recovery estimate is (Dörfler, θ = ½), to a tolerance on the \
+         compliance's estimated relative error; time of the whole adaptive solve (every cycle's assembly, \
+         factorisation, contact solve, estimate and refinement), one thread. *Uniform*: one solve on the \
+         structured mesh of size h, one thread. Relative errors against the reference (GetFEM, \
+         docs/reference/; its error bars: compliance 1.8e-4, v_top 1.8e-4, gap_edge 1.4e-3, ℓc 1.2e-3 \
+         at 2C/L = 0.2). The estimate is of the energy norm: it drives the compliance and v_top, not ℓc \
+         (the contact zone's edge), which moves on the nodes it has.\n"
+    )
+    .unwrap();
+    let Some(refs) = reference(a) else {
+        writeln!(report, "Skipped: no reference file.\n").unwrap();
+        return;
+    };
+    let (tolerances, sizes): (&[f64], &[f64]) = if a.quick {
+        (&[1e-2, 1e-3], &[1.0 / 32.0, 1.0 / 64.0])
+    } else {
+        (&[1e-2, 1e-3, 3e-4, 1e-4], &[1.0 / 64.0, 1.0 / 128.0, 1.0 / 256.0, 1.0 / 512.0])
+    };
+    let widths: &[f64] = if a.quick { &[0.1] } else { &[0.1, 0.2, 0.3] };
+    let mut curves = Vec::new();
+    for &c in widths {
+        let key = format!("canonical_{:.1}", 2.0 * c);
+        let case = &refs["cases"][key.as_str()];
+        writeln!(
+            report,
+            "### 2C/L = {:.1}\n\n| run | unknowns | cycles | estimate | time [s] | compliance | v_top | gap_edge | ℓc |\n\
+             |---|---|---|---|---|---|---|---|---|",
+            2.0 * c
+        )
+        .unwrap();
+        let mut adaptive_points = Vec::new();
+        let (mut adaptive_n, mut uniform_n) = (Vec::new(), Vec::new());
+        for &tol in tolerances {
+            match adapt_run(c, tol) {
+                Ok((r, unknowns, cycles, estimate, t)) => {
+                    let e = errors(&r, case);
+                    writeln!(
+                        report,
+                        "| adaptive, tol {tol:.0e} | {unknowns} | {cycles} | {estimate:.2e} | {t:.3} | {:+.2e} | {:+.2e} | {:+.2e} | {:+.2e} |",
+                        e[0], e[1], e[2], e[3]
+                    )
+                    .unwrap();
+                    adaptive_points.push((t, e[0].abs()));
+                    adaptive_n.push((unknowns as f64, e[0].abs()));
+                }
+                Err(e) => writeln!(report, "| adaptive, tol {tol:.0e} | {} |", failure(&e)).unwrap(),
+            }
+        }
+        let mut uniform_points = Vec::new();
+        for &h in sizes {
+            match uniform_run(c, h) {
+                Ok((r, unknowns, t)) => {
+                    let e = errors(&r, case);
+                    writeln!(
+                        report,
+                        "| uniform, h = 1/{:.0} | {unknowns} | 1 | | {t:.3} | {:+.2e} | {:+.2e} | {:+.2e} | {:+.2e} |",
+                        1.0 / h,
+                        e[0],
+                        e[1],
+                        e[2],
+                        e[3]
+                    )
+                    .unwrap();
+                    uniform_points.push((t, e[0].abs()));
+                    uniform_n.push((unknowns as f64, e[0].abs()));
+                }
+                Err(e) => writeln!(report, "| uniform, h = 1/{:.0} | {} |", 1.0 / h, failure(&e)).unwrap(),
+            }
+        }
+        let order = |p: &[(f64, f64)]| {
+            let n: Vec<f64> = p.iter().map(|q| q.0).collect();
+            let e: Vec<f64> = p.iter().map(|q| q.1).collect();
+            -fitted_rate(&n, &e)
+        };
+        writeln!(
+            report,
+            "\nCompliance error against unknowns N: adaptive N^-{:.2}, uniform N^-{:.2}.",
+            order(&adaptive_n),
+            order(&uniform_n)
+        )
+        .unwrap();
+        speedup(report, &adaptive_points, &uniform_points);
+        if c == 0.1 {
+            calculix(report, &adaptive_points, case);
+        }
+        curves.push(Curve {
+            label: format!("adaptive, 2C/L = {:.1}", 2.0 * c),
+            points: adaptive_points,
+        });
+        curves.push(Curve {
+            label: format!("uniform, 2C/L = {:.1}", 2.0 * c),
+            points: uniform_points,
+        });
+    }
+    figure(
+        report,
+        a,
+        "adaptive_error_time.svg",
+        "Seed scene: compliance error against run time",
+        "time [s]",
+        "|compliance error|",
+        &curves,
+        "The compliance's error against run time, adaptive and uniform",
+    );
+}
+
+/// The adaptive solve to `tol`: outputs, unknowns, cycles, last estimate,
+/// seconds.
+fn adapt_run(c: f64, tol: f64) -> tfem::Result<(TwoBlocksResult, usize, usize, f64, f64)> {
+    let mut s = TwoBlocks {
+        c,
+        mesh_size: 1.0 / 16.0,
+        ..Default::default()
+    }
+    .build()?;
+    s.model.set_threads(1)?;
+    let options = AdaptOptions {
+        tolerance: tol,
+        goal: Goal::Compliance,
+        ..Default::default()
+    };
+    let t0 = Instant::now();
+    let r = s.model.solve_adaptive(&options)?;
+    let t = t0.elapsed().as_secs_f64();
+    let last = r.cycles.last().copied().expect("a cycle");
+    let result = s.measure(s.model.contact_report()?.clone())?;
+    Ok((result, last.unknowns, r.cycles.len(), last.estimate, t))
+}
+
+fn uniform_run(c: f64, h: f64) -> tfem::Result<(TwoBlocksResult, usize, f64)> {
+    let mut s = TwoBlocks {
+        c,
+        mesh_size: h,
+        ..Default::default()
+    }
+    .build()?;
+    s.model.set_threads(1)?;
+    let t0 = Instant::now();
+    let r = s.solve(&ContactOptions::default())?;
+    let unknowns = r.report.info.unknowns;
+    Ok((r, unknowns, t0.elapsed().as_secs_f64()))
+}
+
+/// For each adaptive point, what uniform refinement would take to reach
+/// its error: the uniform points' first-order fit of error against time
+/// (error ∝ t^(−s)), extrapolated where the runs do not reach.
+fn speedup(report: &mut String, adaptive: &[(f64, f64)], uniform: &[(f64, f64)]) {
+    if uniform.len() < 2 {
+        writeln!(report).unwrap();
+        return;
+    }
+    let (t0, e0) = uniform[uniform.len() - 2];
+    let (t1, e1) = uniform[uniform.len() - 1];
+    let slope = (e1 / e0).ln() / (t1 / t0).ln();
+    let line: Vec<String> = adaptive
+        .iter()
+        .map(|&(t, e)| {
+            let needed = t1 * (e / e1).powf(1.0 / slope);
+            format!("{e:.1e} in {t:.3} s (uniform: ~{needed:.3e} s, {:.0}×)", needed / t)
+        })
+        .collect();
+    writeln!(
+        report,
+        "Uniform's compliance error falls as time^{slope:.2}; at the adaptive runs' errors it would take: {}.\n",
+        line.join("; ")
+    )
+    .unwrap();
+}
+
+/// CalculiX's uniform CPE4 runs of the seed scene (scripts/calculix/
+/// results.jsonl, measured by scripts/calculix/table.sh: one thread, ccx's
+/// wall time) beside the adaptive runs at equal compliance error: its
+/// error and time fitted as a power of h through its runs, read at the
+/// adaptive errors (an extrapolation beyond its finest run, said so).
+fn calculix(report: &mut String, adaptive: &[(f64, f64)], case: &Value) {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scripts/calculix/results.jsonl");
+    let Ok(text) = std::fs::read_to_string(path) else {
+        return;
+    };
+    let exact = case["compliance"]["value"].as_f64().unwrap_or(f64::NAN);
+    let mut runs: Vec<(f64, f64, f64)> = text
+        .lines()
+        .filter_map(|l| serde_json::from_str::<Value>(l).ok())
+        .filter(|d| d["label"] == "cpe4" && d["mu"].as_f64() == Some(0.0))
+        .filter_map(|d| {
+            let h = d["h"].as_f64()?;
+            let e = (d["compliance"].as_f64()? - exact).abs() / exact;
+            Some((h, e, d["time_s"].as_f64()?))
+        })
+        .collect();
+    runs.sort_by(|a, b| b.0.total_cmp(&a.0));
+    if runs.len() < 2 {
+        return;
+    }
+    let (a, b) = (runs[0], runs[runs.len() - 1]);
+    let error_order = (b.1 / a.1).ln() / (b.0 / a.0).ln();
+    let time_order = (b.2 / a.2).ln() / (b.0 / a.0).ln();
+    let listed: Vec<String> = runs
+        .iter()
+        .map(|r| format!("h = 1/{:.0}: {:.2e} in {:.2} s", 1.0 / r.0, r.1, r.2))
+        .collect();
+    let at: Vec<String> = adaptive
+        .iter()
+        .map(|&(t, e)| {
+            let h = b.0 * (e / b.1).powf(1.0 / error_order);
+            let time = b.2 * (h / b.0).powf(time_order);
+            let beyond = if h < b.0 { ", extrapolated" } else { "" };
+            format!(
+                "{e:.1e}: CalculiX h ≈ 1/{:.0}, ~{time:.3e} s{beyond}; tfem {t:.3} s ({:.0}×)",
+                1.0 / h,
+                time / t
+            )
+        })
+        .collect();
+    writeln!(
+        report,
+        "CalculiX 2.20, uniform CPE4 with its node-to-surface penalty contact (docs/calculix.md; its runs: {}): \
+         its compliance error falls as h^{error_order:.2} and its time grows as h^{time_order:.2}. At the \
+         adaptive runs' errors: {}. (CalculiX's time is ccx's wall time with its deck already written; \
+         tfem's is the adaptive solve in the process, one thread.)\n",
+        listed.join(", "),
+        at.join("; ")
+    )
+    .unwrap();
+}
