@@ -72,7 +72,7 @@ use tfem::contact::traction::{NodalTraction, interface_tractions, nodal_traction
 use tfem::scenes::hertz::{Hertz, HertzResult, TAG_BLOCK_TOP, TAG_CYLINDER};
 use tfem::scenes::nodes_by_x;
 use tfem::verification::{body_forces, contact_imbalance};
-use tfem::{ContactOptions, Mesh, Model};
+use tfem::{ContactOptions, Mesh, Model, Section};
 
 /// One side of the interface: its nodes sorted by x, their x and the
 /// arc length of each of its edges.
@@ -225,8 +225,18 @@ fn readings(model: &Model, block: &Side, cylinder: &Side) -> Readings {
     let map = |qs: Vec<NodalTraction>| -> BTreeMap<usize, f64> {
         qs.into_iter().map(|q| (q.node, q.pressure)).collect()
     };
-    let own = map(nodal_tractions(nodes, elements, framed(elements, &f)));
-    let both = map(interface_tractions(nodes, elements, framed(elements, &f)));
+    let own = map(nodal_tractions(
+        nodes,
+        elements,
+        Section::Plane,
+        framed(elements, &f),
+    ));
+    let both = map(interface_tractions(
+        nodes,
+        elements,
+        Section::Plane,
+        framed(elements, &f),
+    ));
     // The same force read from the bodies instead of the strip: K u of the
     // bodies' own (tempered) elements at the interface nodes, where no
     // other load acts. Equal in exact arithmetic, but the strip's K_e u_e
@@ -238,10 +248,16 @@ fn readings(model: &Model, block: &Side, cylinder: &Side) -> Readings {
         "  largest |K u − contact force| at a node of B: {:.2e} of the largest contact force",
         contact_imbalance(model).expect("imbalance")
     );
-    let own_body = map(nodal_tractions(nodes, elements, framed(elements, &fbody)));
+    let own_body = map(nodal_tractions(
+        nodes,
+        elements,
+        Section::Plane,
+        framed(elements, &fbody),
+    ));
     let both_body = map(interface_tractions(
         nodes,
         elements,
+        Section::Plane,
         framed(elements, &fbody),
     ));
 

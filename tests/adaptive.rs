@@ -44,7 +44,9 @@ fn manufactured(n: usize) -> (Model, f64) {
     }
     m.solve().unwrap();
     let uh: Vec<f64> = m.displacements().unwrap().concat();
-    let e = energy_error(m.mesh().unwrap(), &uh, &mat.d_matrix(), |p| exact.gradient(p));
+    let e = energy_error(m.mesh().unwrap(), &uh, &mat.d_matrix(), |p| {
+        exact.gradient(p)
+    });
     (m, e)
 }
 
@@ -54,7 +56,10 @@ fn the_estimate_matches_the_true_energy_error_of_a_smooth_field() {
     for n in [8, 16, 32] {
         let (m, e) = manufactured(n);
         let effectivity = m.error_estimate().unwrap().global / e;
-        assert!((0.9..1.1).contains(&effectivity), "h = 1/{n}: {effectivity}");
+        assert!(
+            (0.9..1.1).contains(&effectivity),
+            "h = 1/{n}: {effectivity}"
+        );
         // Asymptotically exact: the effectivity tends to 1.
         assert!((effectivity - 1.0).abs() < last, "h = 1/{n}: {effectivity}");
         last = (effectivity - 1.0).abs();
@@ -71,7 +76,8 @@ fn seed(h: f64) -> tfem::scenes::TwoBlocksScene {
 }
 
 fn measured(s: &tfem::scenes::TwoBlocksScene) -> TwoBlocksResult {
-    s.measure(s.model.contact_report().unwrap().clone()).unwrap()
+    s.measure(s.model.contact_report().unwrap().clone())
+        .unwrap()
 }
 
 /// The seed scene adapted from h = 1/16 to a compliance tolerance of
@@ -97,7 +103,10 @@ fn on_the_seed_scene_the_compliance_estimate_tracks_its_true_error() {
     let last = report.cycles.last().unwrap();
     let error = (r.compliance - COMPLIANCE).abs() / COMPLIANCE;
     let effectivity = last.estimate / error;
-    assert!((0.5..2.0).contains(&effectivity), "{effectivity}: {report:?}");
+    assert!(
+        (0.5..2.0).contains(&effectivity),
+        "{effectivity}: {report:?}"
+    );
     // Uniform meshes: the estimate is 0.63 of the error (measured).
     let mut s = seed(1.0 / 64.0);
     let u = s.solve(&ContactOptions::default()).unwrap();
@@ -127,7 +136,11 @@ fn a_refined_mesh_keeps_the_given_nodes_and_the_seed_scenes_outputs_read_on() {
     let (r, _, nodes) = adapted();
     assert!(*nodes > 700, "refined: {nodes} nodes");
     // The corner and top-centre nodes keep their indices: v_top is read on.
-    assert!((r.v_top / -1.7587378152753418e-4 - 1.0).abs() < 2e-3, "{}", r.v_top);
+    assert!(
+        (r.v_top / -1.7587378152753418e-4 - 1.0).abs() < 2e-3,
+        "{}",
+        r.v_top
+    );
     assert!((r.support_reaction / 2e6 - 1.0).abs() < 1e-9);
 }
 
@@ -141,10 +154,18 @@ fn patch_blocks() -> Model {
     let upper = b.add_grid(&xs, &[0.0, 0.25, 0.5], 2, Diagonal::Forward);
     let mut edges = Vec::new();
     let mut tags = Vec::new();
-    let rows = [(&lower[0], 1), (&lower[2], 2), (&upper[0], 3), (&upper[2], 4)];
+    let rows = [
+        (&lower[0], 1),
+        (&lower[2], 2),
+        (&upper[0], 3),
+        (&upper[2], 4),
+    ];
     for e in b.boundary_edges() {
         let p = [b.nodes[e[0]], b.nodes[e[1]]];
-        if let Some((_, t)) = rows.iter().find(|(r, _)| r.contains(&e[0]) && r.contains(&e[1])) {
+        if let Some((_, t)) = rows
+            .iter()
+            .find(|(r, _)| r.contains(&e[0]) && r.contains(&e[1]))
+        {
             edges.push(e);
             tags.push(*t);
         } else if p[0][0] == 0.0 && p[1][0] == 0.0 {
@@ -183,7 +204,10 @@ fn refinement_carries_loads_constraints_and_pairs_and_keeps_the_patch_test_exact
     let mesh = m.mesh().unwrap();
     assert!(mesh.nodes().len() > before, "refined");
     for s in m.element_stresses().unwrap() {
-        assert!(s[0].abs() < 1e-12 && (s[1] + 1.0).abs() < 1e-12 && s[2].abs() < 1e-12, "{s:?}");
+        assert!(
+            s[0].abs() < 1e-12 && (s[1] + 1.0).abs() < 1e-12 && s[2].abs() < 1e-12,
+            "{s:?}"
+        );
     }
     // The load's total and the support's reaction are the pressure's.
     let f = m.load_vector().unwrap();
@@ -191,7 +215,11 @@ fn refinement_carries_loads_constraints_and_pairs_and_keeps_the_patch_test_exact
     assert!((total + 1.0).abs() < 1e-14, "{total}");
     // New nodes on the support and the rollers are held; none inside.
     for (v, x) in mesh.nodes().iter().enumerate().skip(before) {
-        let fixed: Vec<usize> = m.constraints().filter(|(g, _)| g / 2 == v).map(|(g, _)| g % 2).collect();
+        let fixed: Vec<usize> = m
+            .constraints()
+            .filter(|(g, _)| g / 2 == v)
+            .map(|(g, _)| g % 2)
+            .collect();
         let expect: Vec<usize> = match (x[0] == 0.0, x[1] == -0.5) {
             (true, true) => vec![0, 1],
             (true, false) => vec![0],
@@ -200,7 +228,11 @@ fn refinement_carries_loads_constraints_and_pairs_and_keeps_the_patch_test_exact
         };
         assert_eq!(fixed, expect, "node {v} at {x:?}");
     }
-    assert!(m.warnings().iter().any(|w| w.contains("limit of cycles")), "{:?}", m.warnings());
+    assert!(
+        m.warnings().iter().any(|w| w.contains("limit of cycles")),
+        "{:?}",
+        m.warnings()
+    );
 }
 
 #[test]
@@ -208,11 +240,41 @@ fn bad_adaptive_options_are_refused_and_change_nothing() {
     let mut m = patch_blocks();
     let nodes = m.mesh().unwrap().nodes().len();
     for (options, needle) in [
-        (AdaptOptions { tolerance: 0.0, ..Default::default() }, "tolerance"),
-        (AdaptOptions { tolerance: f64::NAN, ..Default::default() }, "tolerance"),
-        (AdaptOptions { tolerance: -1.0, ..Default::default() }, "tolerance"),
-        (AdaptOptions { fraction: 1.5, ..Default::default() }, "fraction"),
-        (AdaptOptions { max_cycles: 0, ..Default::default() }, "max_cycles"),
+        (
+            AdaptOptions {
+                tolerance: 0.0,
+                ..Default::default()
+            },
+            "tolerance",
+        ),
+        (
+            AdaptOptions {
+                tolerance: f64::NAN,
+                ..Default::default()
+            },
+            "tolerance",
+        ),
+        (
+            AdaptOptions {
+                tolerance: -1.0,
+                ..Default::default()
+            },
+            "tolerance",
+        ),
+        (
+            AdaptOptions {
+                fraction: 1.5,
+                ..Default::default()
+            },
+            "fraction",
+        ),
+        (
+            AdaptOptions {
+                max_cycles: 0,
+                ..Default::default()
+            },
+            "max_cycles",
+        ),
     ] {
         let e = m.solve_adaptive(&options).unwrap_err();
         assert_eq!(e.status(), Status::InvalidArgument);
@@ -242,15 +304,27 @@ fn an_unknowns_limit_stops_with_a_warning_saying_the_estimate_reached() {
     };
     let report = s.model.solve_adaptive(&options).unwrap();
     assert!(!report.reached);
-    assert!(report.cycles.iter().all(|c| c.unknowns <= 2_000), "{report:?}");
-    let warning = s.model.warnings().into_iter().find(|w| w.contains("limit of unknowns"));
+    assert!(
+        report.cycles.iter().all(|c| c.unknowns <= 2_000),
+        "{report:?}"
+    );
+    let warning = s
+        .model
+        .warnings()
+        .into_iter()
+        .find(|w| w.contains("limit of unknowns"));
     assert!(warning.is_some_and(|w| w.contains("estimated relative error")));
 }
 
 #[test]
 fn an_axisymmetric_fit_adapts_too() {
     use tfem::scenes::revolution::ShaftHub;
-    let mut scene = ShaftHub { cells: 4, ..Default::default() }.build().unwrap();
+    let mut scene = ShaftHub {
+        cells: 4,
+        ..Default::default()
+    }
+    .build()
+    .unwrap();
     let options = AdaptOptions {
         tolerance: 0.02,
         ..Default::default()

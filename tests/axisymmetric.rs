@@ -109,9 +109,9 @@ fn the_ring_element_is_positive_semidefinite_for_every_jacobian() {
             "{p:?}: smallest eigenvalue {} of {largest}",
             e[0]
         );
-        for a in 0..6 {
-            for c in 0..6 {
-                assert_eq!(k[a][c], k[c][a], "{p:?}: not symmetric");
+        for (a, row) in k.iter().enumerate() {
+            for (c, v) in row.iter().enumerate() {
+                assert_eq!(*v, k[c][a], "{p:?}: not symmetric");
             }
         }
     }

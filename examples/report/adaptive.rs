@@ -26,7 +26,11 @@ fn errors(r: &TwoBlocksResult, case: &Value) -> [f64; 4] {
 }
 
 pub(crate) fn adaptive(report: &mut String, a: &Args) {
-    writeln!(report, "## Error against run time: adaptive beside uniform\n").unwrap();
+    writeln!(
+        report,
+        "## Error against run time: adaptive beside uniform\n"
+    )
+    .unwrap();
     writeln!(
         report,
         "The seed scene (canonical parameters), frictionless. *Adaptive*: from h = 1/16, refined by \
@@ -46,7 +50,10 @@ pub(crate) fn adaptive(report: &mut String, a: &Args) {
     let (tolerances, sizes): (&[f64], &[f64]) = if a.quick {
         (&[1e-2, 1e-3], &[1.0 / 32.0, 1.0 / 64.0])
     } else {
-        (&[1e-2, 1e-3, 3e-4, 1e-4], &[1.0 / 64.0, 1.0 / 128.0, 1.0 / 256.0, 1.0 / 512.0])
+        (
+            &[1e-2, 1e-3, 3e-4, 1e-4],
+            &[1.0 / 64.0, 1.0 / 128.0, 1.0 / 256.0, 1.0 / 512.0],
+        )
     };
     let widths: &[f64] = if a.quick { &[0.1] } else { &[0.1, 0.2, 0.3] };
     let mut curves = Vec::new();
@@ -75,7 +82,9 @@ pub(crate) fn adaptive(report: &mut String, a: &Args) {
                     adaptive_points.push((t, e[0].abs()));
                     adaptive_n.push((unknowns as f64, e[0].abs()));
                 }
-                Err(e) => writeln!(report, "| adaptive, tol {tol:.0e} | {} |", failure(&e)).unwrap(),
+                Err(e) => {
+                    writeln!(report, "| adaptive, tol {tol:.0e} | {} |", failure(&e)).unwrap()
+                }
             }
         }
         let mut uniform_points = Vec::new();
@@ -96,7 +105,13 @@ pub(crate) fn adaptive(report: &mut String, a: &Args) {
                     uniform_points.push((t, e[0].abs()));
                     uniform_n.push((unknowns as f64, e[0].abs()));
                 }
-                Err(e) => writeln!(report, "| uniform, h = 1/{:.0} | {} |", 1.0 / h, failure(&e)).unwrap(),
+                Err(e) => writeln!(
+                    report,
+                    "| uniform, h = 1/{:.0} | {} |",
+                    1.0 / h,
+                    failure(&e)
+                )
+                .unwrap(),
             }
         }
         let order = |p: &[(f64, f64)]| {
@@ -188,7 +203,10 @@ fn speedup(report: &mut String, adaptive: &[(f64, f64)], uniform: &[(f64, f64)])
         .iter()
         .map(|&(t, e)| {
             let needed = t1 * (e / e1).powf(1.0 / slope);
-            format!("{e:.1e} in {t:.3} s (uniform: ~{needed:.3e} s, {:.0}×)", needed / t)
+            format!(
+                "{e:.1e} in {t:.3} s (uniform: ~{needed:.3e} s, {:.0}×)",
+                needed / t
+            )
         })
         .collect();
     writeln!(
@@ -205,7 +223,10 @@ fn speedup(report: &mut String, adaptive: &[(f64, f64)], uniform: &[(f64, f64)])
 /// error and time fitted as a power of h through its runs, read at the
 /// adaptive errors (an extrapolation beyond its finest run, said so).
 fn calculix(report: &mut String, adaptive: &[(f64, f64)], case: &Value) {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/scripts/calculix/results.jsonl");
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scripts/calculix/results.jsonl"
+    );
     let Ok(text) = std::fs::read_to_string(path) else {
         return;
     };

@@ -301,8 +301,9 @@ pub(crate) fn section_stiffness_into(
     finite_or_error(k.iter().flatten())
 }
 
-/// [`section_stiffness_into`] as a value: the tempered stiffness of a
-/// body element of material section `section` with corners `p`.
+/// The tempered stiffness of a body element of section `section` with
+/// corners `p`: in the plane B̂ᵀDB̂/(2T), for a ring 2πx̄ (B̂ + J H)ᵀ D₄
+/// (B̂ + J H)/(2T), tfem's (J/T)·K (docs/method.md §7.2).
 pub fn section_stiffness(
     p: &[[f64; 2]; 3],
     d: &[[f64; 3]; 3],
@@ -315,7 +316,7 @@ pub fn section_stiffness(
     Ok(k)
 }
 
-/// The hoop strain ε_θθ that [`section_stiffness_into`] reads on a ring
+/// The hoop strain ε_θθ that [`section_stiffness`] reads on a ring
 /// element with centroid abscissa `x`, element values `ue` and tempered
 /// Jacobian `t`: (J/T) ū_r/x̄ (ū_r/x̄ where J ≥ Jmin; 0 on the axis).
 pub fn hoop_strain(geo: &TriGeometry, x: f64, t: f64, ue: &[f64; 6]) -> f64 {
