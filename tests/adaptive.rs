@@ -333,3 +333,33 @@ fn an_axisymmetric_fit_adapts_too() {
     assert!(report.reached, "{report:?}");
     assert!(report.cycles.len() > 1);
 }
+
+#[test]
+fn an_adapted_punch_beats_a_hand_graded_mesh_on_fewer_unknowns() {
+    // A rigid flat cylindrical punch (axisymmetric, Boussinesq's P =
+    // 2aE*δ): from h = a/4 to 4 % in energy, against the scene's own mesh
+    // graded by hand towards the punch's edge at a/32 (32,623 unknowns, P
+    // within 4.9e-3). Measured: 18,484 unknowns, P within 3.2e-3.
+    use tfem::scenes::sphere::CylindricalPunch;
+    let punch = CylindricalPunch {
+        mesh_size: 0.25,
+        ..Default::default()
+    };
+    let mut scene = punch.build().unwrap();
+    let options = AdaptOptions {
+        tolerance: 0.05,
+        ..Default::default()
+    };
+    let report = scene.model.solve_adaptive(&options).unwrap();
+    let r = scene
+        .measure(&punch, scene.model.contact_report().unwrap().clone())
+        .unwrap();
+    let unknowns = report.cycles.last().unwrap().unknowns;
+    assert!(unknowns < 32_623, "{unknowns}");
+    assert!(
+        (r.force / r.force_exact - 1.0).abs() < 4.9e-3,
+        "{}",
+        r.force / r.force_exact
+    );
+    assert!(r.balance < 1e-6);
+}

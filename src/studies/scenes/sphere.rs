@@ -616,11 +616,20 @@ impl CylindricalPunchScene {
         let reactions = self.model.reactions()?;
         // The constraints hold the punch down against the block (R_z < 0)
         // and the block up (R_z > 0); whole-ring totals.
-        let force = -self.punch.iter().map(|&v| reactions[v][1]).sum::<f64>();
-        let support: f64 = self.support.iter().map(|&v| reactions[v][1]).sum();
+        // Read on the mesh as it is: an adaptive solve adds nodes to the
+        // punch, its face, the block's top and its support.
+        let punch_body = mesh.node_body()[self.punch[0]];
+        let force = -(0..mesh.nodes().len())
+            .filter(|&v| mesh.node_body()[v] == punch_body)
+            .map(|v| reactions[v][1])
+            .sum::<f64>();
+        let support: f64 = (super::nodes_by_x(mesh, TAG_SUPPORT).iter())
+            .map(|&v| reactions[v][1])
+            .sum();
         let contact = self.model.contact_forces()?;
-        let rs: Vec<f64> = self.block_top.iter().map(|&v| mesh.nodes()[v][0]).collect();
-        let fz: Vec<f64> = self.block_top.iter().map(|&v| contact[v][1]).collect();
+        let block_top = super::nodes_by_x(mesh, TAG_BLOCK_TOP);
+        let rs: Vec<f64> = block_top.iter().map(|&v| mesh.nodes()[v][0]).collect();
+        let fz: Vec<f64> = block_top.iter().map(|&v| contact[v][1]).collect();
         let pressure = ring_pressures(&rs, &fz);
         let pressure_error = pressure
             .iter()
