@@ -31,6 +31,7 @@ program fortran_generic_test
   character(len=256) :: text
   character(len=:), allocatable :: msg
   type(tfem_contact_report) :: report
+  type(tfem_adapt_report) :: adapt
   type(tfem_contact_options) :: options
 
   call expect(kind(0) == c_int, 'default integer is integer(c_int)')
@@ -190,6 +191,16 @@ program fortran_generic_test
   call expect(status == TFEM_STATUS_OK .and. all(alone == nodal), 'nodal pressures of pair 0')
   call expect(tfem_get_contact_pair_nodal_pressures(c, 1, alone, 8) == TFEM_STATUS_INVALID_ARGUMENT, &
       'nodal pressures of an unknown pair')
+  ! Adaptive: options omitted, then the report; the given nodes stay first.
+  status = tfem_solve_adaptive(c, 1e-2_dp, TFEM_ADAPT_GOAL_ENERGY, 100000_c_int64_t, 3)
+  call expect(status == TFEM_STATUS_OK, 'adaptive solve, options and report omitted: '//tfem_error_message(c))
+  status = tfem_solve_adaptive(c, 1e-2_dp, TFEM_ADAPT_GOAL_ENERGY, 100000_c_int64_t, 3, report=adapt)
+  call expect(status == TFEM_STATUS_OK .and. adapt%cycles == 3 .and. adapt%estimate > 0._dp, 'adaptive report')
+  status = tfem_get_sizes(c, n_nodes=n_tri)
+  call expect(status == TFEM_STATUS_OK .and. n_tri > 8, 'adaptive: refined nodes')
+  status = tfem_solve_adaptive(c, -1._dp, TFEM_ADAPT_GOAL_ENERGY, 100000_c_int64_t, 3)
+  call expect(status == TFEM_STATUS_INVALID_ARGUMENT .and. index(tfem_error_message(c), 'tolerance') > 0, &
+      'adaptive: bad tolerance')
   call tfem_destroy(c)
 
   ! A contact pair with a user mesh across a gap: pair index kept, flip count omitted.
