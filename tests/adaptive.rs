@@ -84,6 +84,7 @@ fn measured(s: &tfem::scenes::TwoBlocksScene) -> TwoBlocksResult {
 /// 10⁻³, once for the tests below.
 fn adapted() -> &'static (TwoBlocksResult, AdaptReport, usize) {
     static RUN: OnceLock<(TwoBlocksResult, AdaptReport, usize)> = OnceLock::new();
+    // (outputs, the adaptive report, the refined mesh's node count)
     RUN.get_or_init(|| {
         let mut s = seed(1.0 / 16.0);
         let options = AdaptOptions {
@@ -129,6 +130,18 @@ fn adapting_the_seed_scene_meets_the_tolerance_on_a_fraction_of_the_uniform_unkn
     for w in report.cycles.windows(2) {
         assert!(w[1].estimate < w[0].estimate, "{report:?}");
     }
+}
+
+#[test]
+fn each_cycle_starts_its_contact_loop_from_the_coarser_levels_field() {
+    let (r, _, _) = adapted();
+    // Warm: the coarser field interpolated on the refined mesh gives the
+    // set (measured: 1 iteration; 8–9 from the initial set of §6.6).
+    assert!(
+        r.report.iterations <= 2,
+        "{} iterations",
+        r.report.iterations
+    );
 }
 
 #[test]

@@ -140,11 +140,15 @@ impl Model {
         let mut refinement = Refinement::new(self.problem.mesh_ref()?);
         let mut cycles = Vec::new();
         let with_contact = !self.problem.contact_pairs().is_empty();
+        // The coarser level's field on the refined mesh: where the next
+        // contact solve starts.
+        let mut guess: Option<Vec<f64>> = None;
         loop {
             let t0 = Instant::now();
-            let info = match with_contact {
-                true => self.solve_contact(&options.contact)?.info,
-                false => self.solve()?,
+            let info = match (with_contact, &guess) {
+                (true, Some(u)) => self.solve_contact_from(&options.contact, u)?.info,
+                (true, None) => self.solve_contact(&options.contact)?.info,
+                (false, _) => self.solve()?,
             };
             let est = self.error_estimate()?;
             let relative = match options.goal {
@@ -179,6 +183,7 @@ impl Model {
                 self.warn_unreached(options, relative, "unknowns");
                 break;
             }
+            guess = Some(refined.interpolate(self.field()?, 2)?);
             self.edit(|p| {
                 *p = p.refined(refined.mesh, &refined.parents)?;
                 Ok(())

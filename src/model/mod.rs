@@ -433,8 +433,36 @@ impl Model {
         })
     }
 
+    /// [`Model::solve_contact`] starting from the set the field `guess`
+    /// inverts; from the usual initial set if that fails.
+    pub(crate) fn solve_contact_from(
+        &mut self,
+        options: &ContactOptions,
+        guess: &[f64],
+    ) -> Result<ContactReport> {
+        options.validate()?;
+        let guessed = self.in_pool(|m| {
+            m.run_from(Some(options), Some(guess))
+                .map(|s| s.contact.as_ref().map(|c| c.report.clone()))
+        });
+        match guessed {
+            Ok(Some(report)) => Ok(report),
+            _ => self.solve_contact(options),
+        }
+    }
+
     /// Solves the current epoch of the problem and keeps its results.
     fn run(&mut self, options: Option<&ContactOptions>) -> Result<&Solution> {
+        self.run_from(options, None)
+    }
+
+    /// [`Model::run`], a contact solve starting from the set the field
+    /// `guess` (global) inverts ([`crate::solve::Input::guess`]).
+    fn run_from(
+        &mut self,
+        options: Option<&ContactOptions>,
+        guess: Option<&[f64]>,
+    ) -> Result<&Solution> {
         let t_start = Instant::now();
         self.problem.check_ready(options.is_some())?;
         self.check_memory(0)?;
@@ -446,7 +474,8 @@ impl Model {
         // that cannot be recovered does not stop the solve, which replaces
         // it.
         self.recover_results();
-        let input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
+        let mut input = input_of(&self.problem, self.settings, &prescribed, &f_ext)?;
+        input.guess = guess;
         let stepping = &mut self.stepping;
         let session = session_of(&mut self.session, &self.problem, &mut timings, stepping)?;
         let epoch = self.problem.epoch();
@@ -858,6 +887,7 @@ fn input_of<'a>(
         f_ext,
         lambda: problem.tempering_lambda(),
         settings,
+        guess: None,
     })
 }
 

@@ -54,6 +54,10 @@ pub(crate) struct Input<'a> {
     pub lambda: Option<f64>,
     /// The factorisation's settings.
     pub settings: Settings,
+    /// A displacement field near the solution (global), from which a
+    /// frictionless contact solve without a warm start takes its first set:
+    /// the inversion test on it (an adaptive solve's coarser level).
+    pub guess: Option<&'a [f64]>,
 }
 
 /// The displacements a solve produced.
@@ -351,7 +355,17 @@ pub(crate) fn solve_contact(
         interface: condense.then_some(interface),
         options: *options,
     };
-    let flags = start.map(|w| history::warm_start(&set, w.flags, w.friction));
+    let flags = match (start, input.guess) {
+        (Some(w), _) => Some(history::warm_start(&set, w.flags, w.friction)),
+        (None, Some(u)) if !set.is_frictional() => {
+            let x = dofs.gather(u);
+            Some((
+                set.verdict(&set.initial_active(), &[], |i| x[i])?.flags,
+                Vec::new(),
+            ))
+        }
+        _ => None,
+    };
     let linear = SystemAndFactor { chol, system };
     let settled = ActiveSetLoop::new(loop_input, linear, books, flags).run()?;
     info.memory_bytes = session_memory(at, system, chol) + settled.condensed_bytes;
