@@ -5,6 +5,7 @@
 //! x = L/2 ± C, mirror-symmetric about x = L/2.
 
 pub mod cattaneo;
+pub mod corner;
 pub mod hertz;
 pub mod lame;
 pub mod patch;
