@@ -319,8 +319,7 @@ impl Refinement {
     /// that shows it. On error the state is unchanged. Marking nothing
     /// returns the same mesh.
     pub fn refine(&mut self, mesh: &Mesh, marked: &[usize]) -> Result<Refined> {
-        let tris = mesh.triangles();
-        let nt = tris.len();
+        let nt = mesh.triangles().len();
         if self.newest.len() != nt {
             return Err(Error::state(format!(
                 "the refinement state describes {} triangles but the mesh has {nt}: refine the \
@@ -334,9 +333,35 @@ impl Refinement {
                 mesh.triangle_name(t)
             )));
         }
-        // Each triangle as [a, b, c] with c its newest vertex (a cyclic
-        // turn: the orientation is kept).
-        let mut rot: Vec<[usize; 3]> = reserved(nt, "the refinement's triangles")?;
+        let rot = self.rotated(mesh)?;
+        let edges = Edges::new(mesh.nodes().len(), &rot)?;
+        let mark = marked_edges(mesh.nodes(), &edges, &rot, marked);
+        let mids = Midpoints::of(mesh.nodes(), &edges, &mark)?;
+        let children = self.children(mesh, &rot, &edges, &mark, &mids.index)?;
+        let (sides, tags) = split_boundary(mesh, &edges, &rot, &mark, &mids.index);
+        drop(edges);
+        drop(rot);
+        let mut refined = Mesh::new(
+            mids.nodes,
+            children.triangles,
+            children.body_of,
+            mesh.index_base(),
+        )?;
+        let owned = with_owners(&refined, &sides, &tags);
+        refined.replace_edges(owned);
+        self.newest = children.newest;
+        Ok(Refined {
+            mesh: refined,
+            parents: mids.parents,
+            triangle_parent: children.parent,
+        })
+    }
+
+    /// Each triangle as [a, b, c] with c its newest vertex (a cyclic turn:
+    /// the orientation is kept); an error if the state is another mesh's.
+    fn rotated(&self, mesh: &Mesh) -> Result<Vec<[usize; 3]>> {
+        let tris = mesh.triangles();
+        let mut rot: Vec<[usize; 3]> = reserved(tris.len(), "the refinement's triangles")?;
         for (t, tri) in tris.iter().enumerate() {
             let Some(k) = tri.iter().position(|&v| v == self.newest[t]) else {
                 return Err(Error::state(format!(
@@ -348,69 +373,37 @@ impl Refinement {
             };
             rot.push([tri[(k + 1) % 3], tri[(k + 2) % 3], tri[k]]);
         }
-        let nodes = mesh.nodes();
-        let edges = Edges::new(nodes.len(), &rot)?;
+        Ok(rot)
+    }
 
-        // Marking: every side of a marked triangle, then closure.
-        let mut mark = vec![false; edges.ends.len()];
-        let mut work: Vec<usize> = Vec::new();
-        for &t in marked {
-            let [a, b, c] = rot[t];
-            if nodes[a] == nodes[b] && nodes[b] == nodes[c] {
-                continue;
-            }
-            for e in edges.of[t] {
-                if !mark[e] {
-                    mark[e] = true;
-                    work.push(e);
-                }
-            }
-        }
-        while let Some(e) = work.pop() {
-            for &s in &edges.sides[edges.first[e]..edges.first[e + 1]] {
-                let r = edges.of[s / 3][0];
-                if !mark[r] {
-                    mark[r] = true;
-                    work.push(r);
-                }
-            }
-        }
-
-        // One midpoint per marked edge, in edge order.
-        let n_new = mark.iter().filter(|&&m| m).count();
-        let mut new_nodes: Vec<[f64; 2]> =
-            reserved(nodes.len() + n_new, "the refined mesh's nodes")?;
-        new_nodes.extend_from_slice(nodes);
-        let mut parents: Vec<[usize; 2]> = reserved(n_new, "the refined mesh's node parents")?;
-        let mut mid = vec![usize::MAX; edges.ends.len()];
-        for (e, &[p, q]) in edges.ends.iter().enumerate() {
-            if mark[e] {
-                mid[e] = new_nodes.len();
-                let (a, b) = (nodes[p], nodes[q]);
-                new_nodes.push([0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])]);
-                parents.push([p, q]);
-            }
-        }
-
-        // Children by the pattern of marked sides; each child's newest
-        // vertex is its third node.
-        let n_children: usize = edges
-            .of
-            .iter()
+    /// The children of every triangle by the pattern of its marked sides
+    /// (each child's newest vertex its third node), in triangle order.
+    fn children(
+        &self,
+        mesh: &Mesh,
+        rot: &[[usize; 3]],
+        edges: &Edges,
+        mark: &[bool],
+        mid: &[usize],
+    ) -> Result<Children> {
+        let tris = mesh.triangles();
+        let n: usize = (edges.of.iter())
             .map(|of| of.iter().filter(|&&e| mark[e]).count().max(1))
             .sum();
-        let mut children: Vec<[usize; 3]> = reserved(n_children, "the refined mesh's triangles")?;
-        let mut body_of: Vec<i32> = reserved(n_children, "the refined mesh's body tags")?;
-        let mut triangle_parent: Vec<usize> =
-            reserved(n_children, "the refined mesh's triangle parents")?;
-        let mut newest: Vec<usize> = reserved(n_children, "the refinement state")?;
-        for t in 0..nt {
+        let mut out = Children {
+            triangles: reserved(n, "the refined mesh's triangles")?,
+            body_of: reserved(n, "the refined mesh's body tags")?,
+            parent: reserved(n, "the refined mesh's triangle parents")?,
+            newest: reserved(n, "the refinement state")?,
+        };
+        let children = &mut out.triangles;
+        for t in 0..tris.len() {
             let [a, b, c] = rot[t];
             let [e0, e1, e2] = edges.of[t];
             let before = children.len();
             if !mark[e0] {
                 children.push(tris[t]);
-                newest.push(self.newest[t]);
+                out.newest.push(self.newest[t]);
             } else {
                 let m0 = mid[e0];
                 match (mark[e1], mark[e2]) {
@@ -428,44 +421,121 @@ impl Refinement {
                         children.extend([[m0, c, m2], [a, m0, m2], [m0, b, m1], [c, m0, m1]]);
                     }
                 }
-                newest.extend(children[before..].iter().map(|child| child[2]));
+                out.newest
+                    .extend(children[before..].iter().map(|child| child[2]));
             }
             let added = children.len() - before;
-            body_of.extend(std::iter::repeat_n(mesh.body_of()[t], added));
-            triangle_parent.extend(std::iter::repeat_n(t, added));
+            out.body_of
+                .extend(std::iter::repeat_n(mesh.body_of()[t], added));
+            out.parent.extend(std::iter::repeat_n(t, added));
         }
+        Ok(out)
+    }
+}
 
-        // Boundary edges: a bisected one becomes its halves, same tag and
-        // direction.
-        let old_edges = mesh.boundary_edges();
-        let mut sides: Vec<[usize; 2]> = Vec::with_capacity(old_edges.len());
-        let mut tags: Vec<i32> = Vec::with_capacity(old_edges.len());
-        for be in old_edges {
-            let [p, q] = be.nodes;
-            match edges.find(p, q, &rot).filter(|&e| mark[e]) {
-                Some(e) => {
-                    sides.extend([[p, mid[e]], [mid[e], q]]);
-                    tags.extend([be.tag, be.tag]);
-                }
-                None => {
-                    sides.push([p, q]);
-                    tags.push(be.tag);
-                }
+/// The refined triangles with what each carries.
+struct Children {
+    triangles: Vec<[usize; 3]>,
+    body_of: Vec<i32>,
+    /// The triangle each came from.
+    parent: Vec<usize>,
+    /// Each one's newest vertex.
+    newest: Vec<usize>,
+}
+
+/// The edges to bisect: every side of a marked triangle (not of a
+/// triangle collapsed to a point), then the closure — the refinement edge
+/// of every triangle with a bisected side — through a work list, so that
+/// each edge is handled once.
+fn marked_edges(
+    nodes: &[[f64; 2]],
+    edges: &Edges,
+    rot: &[[usize; 3]],
+    marked: &[usize],
+) -> Vec<bool> {
+    let mut mark = vec![false; edges.ends.len()];
+    let mut work: Vec<usize> = Vec::new();
+    for &t in marked {
+        let [a, b, c] = rot[t];
+        if nodes[a] == nodes[b] && nodes[b] == nodes[c] {
+            continue;
+        }
+        for e in edges.of[t] {
+            if !mark[e] {
+                mark[e] = true;
+                work.push(e);
             }
         }
-        drop(edges);
-        drop(rot);
-
-        let mut refined = Mesh::new(new_nodes, children, body_of, mesh.index_base())?;
-        let owned = with_owners(&refined, &sides, &tags);
-        refined.replace_edges(owned);
-        self.newest = newest;
-        Ok(Refined {
-            mesh: refined,
-            parents,
-            triangle_parent,
-        })
     }
+    while let Some(e) = work.pop() {
+        for &s in &edges.sides[edges.first[e]..edges.first[e + 1]] {
+            let r = edges.of[s / 3][0];
+            if !mark[r] {
+                mark[r] = true;
+                work.push(r);
+            }
+        }
+    }
+    mark
+}
+
+/// The refined mesh's nodes: the old ones, then one midpoint per marked
+/// edge in edge order.
+struct Midpoints {
+    nodes: Vec<[f64; 2]>,
+    /// The edge each new node bisects.
+    parents: Vec<[usize; 2]>,
+    /// The new node of each edge (usize::MAX if not bisected).
+    index: Vec<usize>,
+}
+
+impl Midpoints {
+    fn of(nodes: &[[f64; 2]], edges: &Edges, mark: &[bool]) -> Result<Midpoints> {
+        let n_new = mark.iter().filter(|&&m| m).count();
+        let mut out = Midpoints {
+            nodes: reserved(nodes.len() + n_new, "the refined mesh's nodes")?,
+            parents: reserved(n_new, "the refined mesh's node parents")?,
+            index: vec![usize::MAX; edges.ends.len()],
+        };
+        out.nodes.extend_from_slice(nodes);
+        for (e, &[p, q]) in edges.ends.iter().enumerate() {
+            if mark[e] {
+                out.index[e] = out.nodes.len();
+                let (a, b) = (nodes[p], nodes[q]);
+                out.nodes.push([0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])]);
+                out.parents.push([p, q]);
+            }
+        }
+        Ok(out)
+    }
+}
+
+/// The boundary edges of the refined mesh with their tags: a bisected one
+/// becomes its halves, same tag and direction.
+fn split_boundary(
+    mesh: &Mesh,
+    edges: &Edges,
+    rot: &[[usize; 3]],
+    mark: &[bool],
+    mid: &[usize],
+) -> (Vec<[usize; 2]>, Vec<i32>) {
+    let old_edges = mesh.boundary_edges();
+    let mut sides: Vec<[usize; 2]> = Vec::with_capacity(old_edges.len());
+    let mut tags: Vec<i32> = Vec::with_capacity(old_edges.len());
+    for be in old_edges {
+        let [p, q] = be.nodes;
+        match edges.find(p, q, rot).filter(|&e| mark[e]) {
+            Some(e) => {
+                sides.extend([[p, mid[e]], [mid[e], q]]);
+                tags.extend([be.tag, be.tag]);
+            }
+            None => {
+                sides.push([p, q]);
+                tags.push(be.tag);
+            }
+        }
+    }
+    (sides, tags)
 }
 
 #[cfg(test)]

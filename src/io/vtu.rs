@@ -391,6 +391,36 @@ impl<'a> Results<'a> {
         point_data
     }
 
+    /// The strain and stresses of the bodies' triangles, zero on the
+    /// `zeros` elements of B after them.
+    fn body_fields(&self, n_cells: usize, zeros: usize) -> [Array<'_>; 3] {
+        [
+            Array {
+                name: "strain",
+                scalar: Scalar::Float64,
+                components: VOIGT,
+                tuples: n_cells,
+                values: voigt(&self.strains, zeros),
+            },
+            Array {
+                name: "stress",
+                scalar: Scalar::Float64,
+                components: VOIGT,
+                tuples: n_cells,
+                values: voigt(&self.stresses, zeros),
+            },
+            Array {
+                name: "out_of_plane_stress",
+                scalar: Scalar::Float64,
+                components: SCALAR,
+                tuples: n_cells,
+                values: f64s(move || {
+                    (self.normal_stresses.iter().copied()).chain(std::iter::repeat_n(0.0, zeros))
+                }),
+            },
+        ]
+    }
+
     /// The arrays on the cells: body, J, strain and stress of every cell,
     /// and the state of the elements of B under the strip weighting.
     fn cell_data(&self) -> Vec<Array<'_>> {
@@ -422,30 +452,8 @@ impl<'a> Results<'a> {
                         .chain(b.iter().map(|e| e.j0))
                 }),
             },
-            Array {
-                name: "strain",
-                scalar: Scalar::Float64,
-                components: VOIGT,
-                tuples: n_cells,
-                values: voigt(&self.strains, b.len()),
-            },
-            Array {
-                name: "stress",
-                scalar: Scalar::Float64,
-                components: VOIGT,
-                tuples: n_cells,
-                values: voigt(&self.stresses, b.len()),
-            },
-            Array {
-                name: "out_of_plane_stress",
-                scalar: Scalar::Float64,
-                components: SCALAR,
-                tuples: n_cells,
-                values: f64s(move || {
-                    (self.normal_stresses.iter().copied()).chain(std::iter::repeat_n(0.0, b.len()))
-                }),
-            },
         ];
+        cell_data.extend(self.body_fields(n_cells, b.len()));
         if let Some(StripContact {
             active, pressure, ..
         }) = self.strip

@@ -125,6 +125,26 @@ pub(crate) fn solve(
     solve_contact(session, input, options, start, begun, timings)
 }
 
+/// The flags (and friction loads) a contact solve's loop starts from, when
+/// not the constraints' initial set: a load step's warm start, or, for a
+/// frictionless set, the inversion test on a guessed field (global).
+fn first_flags(
+    set: &Constraints<'_>,
+    dofs: &DofMap,
+    start: Start<'_>,
+    guess: Option<&[f64]>,
+) -> Result<Option<(Vec<bool>, Vec<f64>)>> {
+    Ok(match (start, guess) {
+        (Some(w), _) => Some(history::warm_start(set, w.flags, w.friction)),
+        (None, Some(u)) if !set.is_frictional() => {
+            let x = dofs.gather(u);
+            let flags = set.verdict(&set.initial_active(), &[], |i| x[i])?.flags;
+            Some((flags, Vec::new()))
+        }
+        _ => None,
+    })
+}
+
 /// Where a contact solve's loop starts: the constraints' initial set
 /// (`None`), or a load step's warm start — the set and friction state a
 /// step before ended with.
@@ -355,17 +375,7 @@ pub(crate) fn solve_contact(
         interface: condense.then_some(interface),
         options: *options,
     };
-    let flags = match (start, input.guess) {
-        (Some(w), _) => Some(history::warm_start(&set, w.flags, w.friction)),
-        (None, Some(u)) if !set.is_frictional() => {
-            let x = dofs.gather(u);
-            Some((
-                set.verdict(&set.initial_active(), &[], |i| x[i])?.flags,
-                Vec::new(),
-            ))
-        }
-        _ => None,
-    };
+    let flags = first_flags(&set, dofs, start, input.guess)?;
     let linear = SystemAndFactor { chol, system };
     let settled = ActiveSetLoop::new(loop_input, linear, books, flags).run()?;
     info.memory_bytes = session_memory(at, system, chol) + settled.condensed_bytes;
