@@ -1167,6 +1167,8 @@ pub unsafe extern "C" fn tfem_solve_adaptive(
             contact,
             ..AdaptOptions::default()
         };
+        // The cycles of an earlier call do not outlive a new one that fails.
+        m.adapt.clear();
         let r = m.model.solve_adaptive(&options)?;
         let last = r.cycles.last().copied();
         write_optional(
