@@ -780,7 +780,8 @@ module tfem_c
 
     !> Applies pressure `pressure` on the boundary edges tagged `tag`: a stress (force per unit
     !! area, Pa in SI), positive pushing into the body; with the 2D convention of unit thickness, an
-    !! edge of length ℓ carries the force ℓ·pressure per unit thickness. Loads add up.
+    !! edge of length ℓ carries the force ℓ·pressure per unit thickness (axisymmetric bodies: the
+    !! whole ring's, ∫ pressure·2πr ds). Loads add up.
     function tfem_add_pressure(model, tag, pressure) &
         bind(C, name="tfem_add_pressure") result(status)
       import
@@ -791,8 +792,8 @@ module tfem_c
     end function tfem_add_pressure
 
     !> Applies the traction (tx, ty) on the boundary edges tagged `tag`: a stress vector (force per
-    !! unit area, Pa in SI); an edge of length ℓ carries ℓ·(tx, ty) per unit thickness. Loads add
-    !! up.
+    !! unit area, Pa in SI); an edge of length ℓ carries ℓ·(tx, ty) per unit thickness (axisymmetric
+    !! bodies: the whole ring's, ∫ (tx, ty)·2πr ds). Loads add up.
     function tfem_add_traction(model, tag, tx, ty) &
         bind(C, name="tfem_add_traction") result(status)
       import
@@ -803,7 +804,8 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_add_traction
 
-    !> Adds the point force (fx, fy) at `node`: force per unit thickness (N/m in SI). Loads add up.
+    !> Adds the point force (fx, fy) at `node`: force per unit thickness (N/m in SI; axisymmetric
+    !! bodies: the total force on the node's ring, N). Loads add up.
     function tfem_add_nodal_force(model, node, fx, fy) &
         bind(C, name="tfem_add_nodal_force") result(status)
       import
@@ -815,7 +817,8 @@ module tfem_c
     end function tfem_add_nodal_force
 
     !> Sets the body force (bx, by) of body `body`: force per unit volume (ρg, N/m³ in SI), acting
-    !! on each unit area of the mesh per unit thickness.
+    !! on each unit area of the mesh per unit thickness (axisymmetric bodies: on the whole ring's
+    !! volume).
     function tfem_set_body_force(model, body, bx, by) &
         bind(C, name="tfem_set_body_force") result(status)
       import
@@ -1173,7 +1176,8 @@ module tfem_c
     end function tfem_get_reactions
 
     !> Writes the work of the external loads of the last solve, Σ f·u over every node (force ×
-    !! length per unit thickness, J/m in SI): for a pressure load, the compliance ∫ p (−u·n) ds.
+    !! length per unit thickness, J/m in SI; axisymmetric bodies: the whole ring's, J): for a
+    !! pressure load, the compliance ∫ p (−u·n) ds.
     function tfem_get_external_work(model, work) &
         bind(C, name="tfem_get_external_work") result(status)
       import
@@ -1229,9 +1233,9 @@ module tfem_c
     end function tfem_get_contact_report
 
     !> Copies the force the contact exerts on every node in the last contact solve (fx fy per node,
-    !! 2·n_nodes values; force per unit thickness, N/m in SI; zero off the contact interfaces),
-    !! computed on request. The forces of one pair sum to zero; on a body they balance its loads and
-    !! reactions.
+    !! 2·n_nodes values; force per unit thickness, N/m in SI, or the whole ring's for axisymmetric
+    !! bodies; zero off the contact interfaces), computed on request. The forces of one pair sum to
+    !! zero; on a body they balance its loads and reactions.
     function tfem_get_contact_forces(model, out, length) &
         bind(C, name="tfem_get_contact_forces") result(status)
       import
@@ -1395,8 +1399,9 @@ module tfem_c
     end function tfem_get_contact_friction_state
 
     !> Copies the energy dissipated by slip in the last step (or solve) at every contact element
-    !! (n_contact_elements values, J per unit thickness in SI): ½ τ Δγ_p ≥ 0; all 0 when
-    !! frictionless.
+    !! (n_contact_elements values, J per unit thickness in SI; for axisymmetric bodies per unit
+    !! length of the element's ring, 2πr̄ times less than the whole ring's): ½ τ Δγ_p ≥ 0; all 0
+    !! when frictionless.
     function tfem_get_contact_dissipation(model, out, length) &
         bind(C, name="tfem_get_contact_dissipation") result(status)
       import

@@ -846,26 +846,30 @@ enum tfem_status tfem_clear_constraints(struct tfem_model *model);
  * Applies pressure `pressure` on the boundary edges tagged `tag`: a
  * stress (force per unit area, Pa in SI), positive pushing into the body;
  * with the 2D convention of unit thickness, an edge of length ℓ carries
- * the force ℓ·pressure per unit thickness. Loads add up.
+ * the force ℓ·pressure per unit thickness (axisymmetric bodies: the
+ * whole ring's, ∫ pressure·2πr ds). Loads add up.
  */
 enum tfem_status tfem_add_pressure(struct tfem_model *model, int tag, double pressure);
 
 /**
  * Applies the traction (tx, ty) on the boundary edges tagged `tag`: a
  * stress vector (force per unit area, Pa in SI); an edge of length ℓ
- * carries ℓ·(tx, ty) per unit thickness. Loads add up.
+ * carries ℓ·(tx, ty) per unit thickness (axisymmetric bodies: the whole
+ * ring's, ∫ (tx, ty)·2πr ds). Loads add up.
  */
 enum tfem_status tfem_add_traction(struct tfem_model *model, int tag, double tx, double ty);
 
 /**
  * Adds the point force (fx, fy) at `node`: force per unit thickness (N/m
- * in SI). Loads add up.
+ * in SI; axisymmetric bodies: the total force on the node's ring, N).
+ * Loads add up.
  */
 enum tfem_status tfem_add_nodal_force(struct tfem_model *model, int node, double fx, double fy);
 
 /**
  * Sets the body force (bx, by) of body `body`: force per unit volume (ρg,
- * N/m³ in SI), acting on each unit area of the mesh per unit thickness.
+ * N/m³ in SI), acting on each unit area of the mesh per unit thickness
+ * (axisymmetric bodies: on the whole ring's volume).
  */
 enum tfem_status tfem_set_body_force(struct tfem_model *model, int body, double bx, double by);
 
@@ -1153,8 +1157,9 @@ enum tfem_status tfem_get_reactions(struct tfem_model *model, double *out, size_
 
 /**
  * Writes the work of the external loads of the last solve, Σ f·u over
- * every node (force × length per unit thickness, J/m in SI): for a
- * pressure load, the compliance ∫ p (−u·n) ds.
+ * every node (force × length per unit thickness, J/m in SI; axisymmetric
+ * bodies: the whole ring's, J): for a pressure load, the compliance
+ * ∫ p (−u·n) ds.
  */
 enum tfem_status tfem_get_external_work(struct tfem_model *model, double *work);
 
@@ -1211,7 +1216,8 @@ enum tfem_status tfem_get_contact_report(struct tfem_model *model,
 /**
  * Copies the force the contact exerts on every node in the last contact
  * solve (fx fy per node, 2·n_nodes values; force per unit thickness, N/m
- * in SI; zero off the contact interfaces), computed on request. The
+ * in SI, or the whole ring's for axisymmetric bodies; zero off the
+ * contact interfaces), computed on request. The
  * forces of one pair sum to zero; on a body they balance its loads and
  * reactions.
  */
@@ -1351,7 +1357,8 @@ enum tfem_status tfem_get_contact_friction_state(struct tfem_model *model, int *
 /**
  * Copies the energy dissipated by slip in the last step (or solve) at
  * every contact element (n_contact_elements values, J per unit thickness
- * in SI): ½ τ Δγ_p ≥ 0; all 0 when frictionless.
+ * in SI; for axisymmetric bodies per unit length of the element's ring,
+ * 2πr̄ times less than the whole ring's): ½ τ Δγ_p ≥ 0; all 0 when frictionless.
  */
 enum tfem_status tfem_get_contact_dissipation(struct tfem_model *model, double *out, size_t length);
 

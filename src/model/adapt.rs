@@ -119,13 +119,22 @@ impl Model {
     /// model keeps the refined mesh (nodes appended after the given ones,
     /// which keep their indices), its loads, constraints and pairs carried
     /// over ([`crate::Problem::refined`]), and the last solve's results.
-    /// Bad options are refused before anything changes; a failed solve
-    /// restores the model as it was given.
+    /// Bad options, and a pair with a contact mesh of its own (which does
+    /// not refine), are refused before anything changes; a solve that
+    /// fails before any refinement leaves the model as a failed solve does
+    /// (its earlier results kept), one that fails after restores the
+    /// model as it was given.
     pub fn solve_adaptive(&mut self, options: &AdaptOptions) -> Result<AdaptReport> {
         options.validate()?;
+        if let Some(i) = (self.problem.contact_pairs().iter()).position(|p| p.user_mesh.is_some()) {
+            return Err(Error::argument(format!(
+                "contact pair {i} has a contact mesh of its own, which refinement cannot carry: \
+                 let tfem build it (add_contact_pair)"
+            )));
+        }
         let before = self.problem.clone();
         let report = self.adapt(options);
-        if report.is_err() {
+        if report.is_err() && self.problem.epoch() != before.epoch() {
             let _ = self.edit(|p| {
                 let current = std::mem::replace(p, before);
                 p.supersede(&current);
@@ -179,13 +188,15 @@ impl Model {
                 break;
             }
             let refined = refinement.refine(mesh, &marked)?;
-            if refined_unknowns_estimate(info.unknowns, mesh, &refined) > options.max_unknowns {
+            let interpolated = refined.interpolate(self.field()?, 2)?;
+            let next = self.problem.refined(refined.mesh, &refined.parents)?;
+            if unknowns_of(&next)? > options.max_unknowns {
                 self.warn_unreached(options, relative, "unknowns");
                 break;
             }
-            guess = Some(refined.interpolate(self.field()?, 2)?);
+            guess = Some(interpolated);
             self.edit(|p| {
-                *p = p.refined(refined.mesh, &refined.parents)?;
+                *p = next;
                 Ok(())
             })?;
         }
@@ -208,16 +219,16 @@ impl Model {
     }
 }
 
-/// The unknowns of the refined mesh: the present ones scaled by the growth
-/// of the node count (the same share of prescribed nodes).
-fn refined_unknowns_estimate(
-    unknowns: usize,
-    mesh: &crate::fem::mesh::Mesh,
-    refined: &crate::fem::refine::Refined,
-) -> usize {
-    let old = mesh.nodes().len().max(1);
-    let new = old + refined.parents.len();
-    (unknowns as f64 * new as f64 / old as f64).ceil() as usize
+/// The unknowns a solve of `problem` would have: the DOFs of the nodes
+/// of bodies that are not prescribed.
+fn unknowns_of(problem: &crate::Problem) -> Result<usize> {
+    let mesh = problem.mesh_ref()?;
+    let used = mesh.node_body().iter().filter(|b| b.is_some()).count();
+    let fixed = problem
+        .constraints()
+        .filter(|(g, _)| mesh.node_body()[g / 2].is_some())
+        .count();
+    Ok(2 * used - fixed)
 }
 
 /// Dörfler's marking: the fewest triangles whose η_e² sum to at least

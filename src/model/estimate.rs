@@ -76,25 +76,7 @@ pub(crate) fn estimate(problem: &Problem, solution: &Solution, u: &[f64]) -> Res
             0.5 * g.j.max(0.0) * section.weight(x)
         })
         .collect();
-    let n = mesh.nodes().len();
-    let (mut sum, mut weight) = (vec![[0.0; 4]; n], vec![0.0; n]);
-    let (mut flat_sum, mut flat_count) = (vec![[0.0; 4]; n], vec![0.0f64; n]);
-    for (e, tri) in triangles.iter().enumerate() {
-        for &v in tri {
-            for c in 0..4 {
-                sum[v][c] += measure[e] * stresses[e][c];
-                flat_sum[v][c] += stresses[e][c];
-            }
-            weight[v] += measure[e];
-            flat_count[v] += 1.0;
-        }
-    }
-    let recovered: Vec<Stress4> = (0..n)
-        .map(|v| match weight[v] > 0.0 {
-            true => sum[v].map(|s| s / weight[v]),
-            false => flat_sum[v].map(|s| s / flat_count[v].max(1.0)),
-        })
-        .collect();
+    let recovered = Recovery::of(mesh, &stresses, &measure);
     let mut squared = Vec::with_capacity(triangles.len());
     let mut energy = 0.0;
     for (e, tri) in triangles.iter().enumerate() {
@@ -109,9 +91,9 @@ pub(crate) fn estimate(problem: &Problem, solution: &Solution, u: &[f64]) -> Res
             let (a, b) = (k, (k + 1) % 3);
             let x = 0.5 * (corners[a][0] + corners[b][0]);
             let w = area / 3.0 * section.weight(x);
-            let diff: Stress4 = std::array::from_fn(|c| {
-                0.5 * (recovered[tri[a]][c] + recovered[tri[b]][c]) - stresses[e][c]
-            });
+            let body = mesh.body_of()[e];
+            let (sa, sb) = (recovered.at(tri[a], body), recovered.at(tri[b], body));
+            let diff: Stress4 = std::array::from_fn(|c| 0.5 * (sa[c] + sb[c]) - stresses[e][c]);
             eta += w * complementary(material, &diff);
             own += w * complementary(material, &stresses[e]);
         }
@@ -122,18 +104,34 @@ pub(crate) fn estimate(problem: &Problem, solution: &Solution, u: &[f64]) -> Res
         mesh.triangle_name(t)
     })?;
     let global = squared.iter().sum::<f64>().sqrt();
+    let energy = energy.sqrt();
+    ensure_finite([global, energy], 1, "error estimate", |_| {
+        "the whole mesh (its sum)".to_string()
+    })?;
     Ok(Estimate {
         squared,
         global,
-        energy: energy.sqrt(),
+        energy,
     })
 }
 
 /// σᵀ D⁻¹ σ of the material for the stress `s` = [σ_xx, σ_yy, σ_xy, σ_n]:
-/// the complementary energy density (twice it), in closed form. In the
-/// plane the in-plane D is inverted (σ_n is not independent); for a ring
-/// the 3D isotropic compliance over the four components.
+/// the complementary energy density (twice it), in closed form, computed
+/// on the stress scaled to its largest component so that only a value
+/// beyond the doubles' range overflows (and is then an error, not 0).
 fn complementary(material: &Material, s: &Stress4) -> f64 {
+    let scale = s.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    if scale == 0.0 {
+        return 0.0;
+    }
+    let unit = s.map(|v| v / scale);
+    compliance_form(material, &unit) * scale * scale
+}
+
+/// [`complementary`] of a stress of moderate size. In the plane the
+/// in-plane D is inverted (σ_n is not independent); for a ring the 3D
+/// isotropic compliance over the four components.
+fn compliance_form(material: &Material, s: &Stress4) -> f64 {
     let (e, nu) = (material.young(), material.poisson());
     let shear = 2.0 * (1.0 + nu) / e * s[2] * s[2];
     match material.section().is_revolution() {
@@ -150,6 +148,69 @@ fn complementary(material: &Material, s: &Stress4) -> f64 {
             let (a, l) = (d[0][0], d[0][1]);
             let det = a * a - l * l;
             (a * (s[0] * s[0] + s[1] * s[1]) - 2.0 * l * s[0] * s[1]) / det + s[2] * s[2] / d[2][2]
+        }
+    }
+}
+
+/// The recovered nodal stresses σ*, one per node and body: a node shared
+/// by bodies of different materials (tied, conforming) gets one per body,
+/// so that the stress jump between them is not smeared.
+struct Recovery {
+    /// σ* of each node for its first body (the body of its first
+    /// triangle).
+    first: Vec<Stress4>,
+    /// The first body of each node.
+    body: Vec<i32>,
+    /// σ* of (node, body) for the node's other bodies.
+    others: std::collections::HashMap<(usize, i32), Stress4>,
+}
+
+impl Recovery {
+    /// Averages the triangles' `stresses` at their nodes, weighted by
+    /// `measure` (a node whose triangles all have none takes them
+    /// equally).
+    fn of(mesh: &crate::fem::mesh::Mesh, stresses: &[Stress4], measure: &[f64]) -> Recovery {
+        let n = mesh.nodes().len();
+        let mut body = vec![i32::MIN; n];
+        // Per (node, body): Σ w σ, Σ w, Σ σ, count.
+        type Acc = (Stress4, f64, Stress4, f64);
+        let mut first: Vec<Acc> = vec![([0.0; 4], 0.0, [0.0; 4], 0.0); n];
+        let mut others: std::collections::HashMap<(usize, i32), Acc> = Default::default();
+        for (e, (tri, &b)) in mesh.triangles().iter().zip(mesh.body_of()).enumerate() {
+            for &v in tri {
+                if body[v] == i32::MIN {
+                    body[v] = b;
+                }
+                let acc = match body[v] == b {
+                    true => &mut first[v],
+                    false => others
+                        .entry((v, b))
+                        .or_insert(([0.0; 4], 0.0, [0.0; 4], 0.0)),
+                };
+                for c in 0..4 {
+                    acc.0[c] += measure[e] * stresses[e][c];
+                    acc.2[c] += stresses[e][c];
+                }
+                acc.1 += measure[e];
+                acc.3 += 1.0;
+            }
+        }
+        let mean = |(sum, w, flat, count): &Acc| match *w > 0.0 {
+            true => sum.map(|s| s / w),
+            false => flat.map(|s| s / count.max(1.0)),
+        };
+        Recovery {
+            first: first.iter().map(mean).collect(),
+            body,
+            others: others.iter().map(|(k, a)| (*k, mean(a))).collect(),
+        }
+    }
+
+    /// σ* of node `v` for body `b`.
+    fn at(&self, v: usize, b: i32) -> Stress4 {
+        match self.body[v] == b {
+            true => self.first[v],
+            false => self.others.get(&(v, b)).copied().unwrap_or([0.0; 4]),
         }
     }
 }

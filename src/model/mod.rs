@@ -551,8 +551,9 @@ impl Model {
         Ok(Solution::displacements(self.field()?).positive_zero())
     }
 
-    /// Work of the external loads, Σ f·u (per unit thickness): for a
-    /// pressure load, the compliance ∫ p (−u·n).
+    /// Work of the external loads, Σ f·u (per unit thickness; the whole
+    /// ring's for axisymmetric bodies): for a pressure load, the
+    /// compliance ∫ p (−u·n).
     pub fn external_work(&self) -> Result<f64> {
         let work = self.solution()?.external_work(self.field()?);
         work.map(PositiveZero::positive_zero)
@@ -703,7 +704,8 @@ impl Model {
     }
 
     /// The energy dissipated by slip in the last step (or solve) at every
-    /// element of B, per unit thickness: ½ τ Δγ_p ≥ 0 (docs/method.md
+    /// element of B, per unit thickness (for a ring per unit length of
+    /// its circumference): ½ τ Δγ_p ≥ 0 (docs/method.md
     /// §6.15); zero when frictionless.
     pub fn contact_dissipation(&self) -> Result<Vec<f64>> {
         Ok(self

@@ -238,9 +238,11 @@ impl Problem {
     /// materials, tempering, weighting, loads (by tag, node and body) and
     /// pairs (by tag, with their friction) carry over as they are; a new
     /// node takes a prescribed component when both ends of its edge have
-    /// it, at their mean, if the edge lies on the mesh's boundary or its
-    /// body is prescribed whole in that component (a rigid tool) — an
-    /// interior edge joining two fixed boundary nodes is not a fixed edge.
+    /// it, at their mean, if the edge lies on the mesh's boundary, or one
+    /// of its ends inside the mesh (a constraint line through a body, such
+    /// as a symmetry line), or its body is prescribed whole in that
+    /// component (a rigid tool) — an interior edge joining two fixed
+    /// boundary nodes (across a clamped corner) is not a fixed edge.
     /// Refused for a pair with a contact mesh of its own (its nodes do not
     /// refine), naming it.
     pub fn refined(&self, mesh: Mesh, parents: &[[usize; 2]]) -> Result<Problem> {
@@ -253,6 +255,8 @@ impl Problem {
         let old = self.mesh_ref()?;
         let first_new = old.nodes().len();
         let on_boundary = boundary_edge_set(old);
+        let boundary_nodes: std::collections::HashSet<usize> =
+            on_boundary.iter().flat_map(|&(p, q)| [p, q]).collect();
         let whole = wholly_prescribed(old, &self.prescribed);
         let mut prescribed = self.prescribed.clone();
         for (k, &[p, q]) in parents.iter().enumerate() {
@@ -266,7 +270,8 @@ impl Problem {
                     continue;
                 };
                 let rigid = body.is_some_and(|b| whole.contains(&(b, c)));
-                if on_boundary.contains(&edge) || rigid {
+                let through = !boundary_nodes.contains(&p) || !boundary_nodes.contains(&q);
+                if on_boundary.contains(&edge) || through || rigid {
                     prescribed.insert(2 * v + c, 0.5 * (a + b));
                 }
             }
