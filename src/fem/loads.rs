@@ -55,7 +55,7 @@ impl Loads {
     /// The consistent nodal vector of the loads on `mesh` of sections
     /// `section` (2 values per node: f_x, f_y): edge loads and body forces
     /// integrated against each node's hat with the section's measure
-    /// ([`Section::edge_shares`], [`Section::corner_shares`]; in the plane,
+    /// ([`Section::edge_shares`], [`Section::corner_loads`]; in the plane,
     /// split equally between the edge's nodes or the triangle's corners).
     /// Point forces are taken as given: for a ring, the force of the whole
     /// ring. Fails, naming the edge, if a pressure acts on an edge without
@@ -100,10 +100,10 @@ impl Loads {
                     // Inverted or flat elements carry no material volume.
                     let corners = mesh.corners(tri);
                     let area = 0.5 * TriGeometry::new(&corners).j.max(0.0);
-                    let shares = section.corner_shares(corners.map(|c| c[0]), area);
-                    for (&v, share) in tri.iter().zip(shares) {
-                        f[2 * v] += b[0] * share;
-                        f[2 * v + 1] += b[1] * share;
+                    let loads = section.corner_loads(corners.map(|c| c[0]), area, *b);
+                    for (&v, load) in tri.iter().zip(loads) {
+                        f[2 * v] += load[0];
+                        f[2 * v + 1] += load[1];
                     }
                 }
             }

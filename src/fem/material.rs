@@ -84,17 +84,21 @@ impl Section {
         }
     }
 
-    /// The shares ∫ φ_i w dA of a triangle of area `area` whose corners
-    /// lie at abscissas `x`: area/3 each in the plane; for a ring,
-    /// 2π area (2x_i + x_j + x_k)/12 (exact).
+    /// The nodal forces ∫ φ_i b w dA of a uniform body force `b` on a
+    /// triangle of area `area` whose corners lie at abscissas `x`: b·area/3
+    /// each in the plane; for a ring, b·2π area (2x_i + x_j + x_k)/12
+    /// (exact).
     #[inline]
-    pub fn corner_shares(&self, x: [f64; 3], area: f64) -> [f64; 3] {
+    pub fn corner_loads(&self, x: [f64; 3], area: f64, b: [f64; 2]) -> [[f64; 2]; 3] {
         match self {
-            Section::Plane => [area / 3.0; 3],
+            Section::Plane => [[b[0] * area / 3.0, b[1] * area / 3.0]; 3],
             Section::Revolution { .. } => {
                 let x = x.map(|v| v.max(0.0));
                 let s = std::f64::consts::TAU * area / 12.0;
-                std::array::from_fn(|i| s * (x[0] + x[1] + x[2] + x[i]))
+                std::array::from_fn(|i| {
+                    let share = s * (x[0] + x[1] + x[2] + x[i]);
+                    [b[0] * share, b[1] * share]
+                })
             }
         }
     }
