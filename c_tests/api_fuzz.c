@@ -9,7 +9,7 @@
  * seed's two blocks in contact, a clockwise mesh, a user-made contact mesh,
  * a Gmsh file, the literal-test cycle, load steps, a host's contact
  * context, friction, automatic pairs, prescribed values moved, the mortar
- * weighting; boundary
+ * weighting, axisymmetric bodies, the adaptive solve; boundary
  * edges set at once or one group at a time, threads set anywhere)
  * mutated (wrong indices, counts,
  * NULLs, short buffers, NaN/Inf/denormal/huge values, wrong enums, index
@@ -51,7 +51,14 @@
  *     tfem_set_prescribed gave them, a load step's contact state restored
  *     in a fresh model) giving the same results; load steps repeated
  *     after a revert or a restored state bit for bit, under either
- *     weighting. A summary line counts the oracle checks made.
+ *     weighting; axisymmetric bodies (a body across the axis, a mix with
+ *     plane ones or the mortar weighting refused, no solve OK with a node
+ *     on the axis whose u_r is not fixed to 0, the ring's closed form, the
+ *     ring element symmetric and free in an axial translation), the
+ *     out-of-plane stresses against the strains, the adaptive solve
+ *     (bad arguments refused, its report against tfem_get_adapt_cycles,
+ *     its limits, the tolerance, the warning of a limit, the mesh read
+ *     back). A summary line counts the oracle checks made.
  * --replay-case K reruns one case verbosely and prints it as a C program
  * (a reproducer a developer can paste); --minimize first shrinks it to the
  * fewest calls that still show the violation.
@@ -134,6 +141,8 @@ enum {
   V_TWIN,           /* a twin model (the same problem declared another way) differs */
   V_WEIGHTING,      /* the contact weighting: set/get, the families, slave nodes, what the mortar refuses */
   V_NEG_ZERO,       /* a result output -0.0 (the library normalises its results to +0.0) */
+  V_ADAPT,          /* tfem_solve_adaptive / tfem_get_adapt_cycles not as documented */
+  V_AXI,            /* axisymmetric bodies: refusals, the ring's exact solution, out-of-plane stresses */
   NV
 };
 
@@ -145,7 +154,7 @@ static const char *const V_NAME[NV] = {
     "matrix_dropped", "double_edge",   "results_changed", "contact",      "external_work",
     "threads",        "null_pointer",  "other",          "step_repeat",  "host_contact",
     "friction",       "prescribed",    "auto_pairs",     "twin",          "weighting",
-    "negative_zero",
+    "negative_zero",  "adapt",         "axisymmetric",
 };
 
 static const char *const V_DESC[NV] = {
@@ -187,6 +196,11 @@ static const char *const V_DESC[NV] = {
     "tfem_get_contact_slave_nodes or a refusal not as documented",
     "a result of an OK call is -0.0 (the library's results carry +0.0: displacements, strains, stresses, reactions, "
     "external work, contact pressures, shear, dissipation, forces, gaps, slave nodes, the report's length and penetration)",
+    "tfem_solve_adaptive / tfem_get_adapt_cycles: a bad argument accepted or refused otherwise than INVALID_ARGUMENT, "
+    "the report against the cycles, the limits, the tolerance, the mesh read back or the warning",
+    "axisymmetric bodies: one crossing the axis, mixed with plane ones or under the mortar weighting accepted, a solve OK "
+    "with a node on the axis whose u_r is not fixed to 0, the ring's exact solution, the out-of-plane stresses, the "
+    "ring element",
 };
 
 /* The families of the contact pairs (what a pair is weighted by: the
@@ -221,6 +235,9 @@ enum {
   O_WEIGHTING,     /* set/get weighting outcomes, and what the mortar weighting refuses */
   O_SLAVE,         /* a mortar solve's slave nodes against its report */
   O_RESTART,       /* a load step's contact state restored in a fresh model: the same step */
+  O_ADAPT,         /* an adaptive solve's report against its cycles, limits, mesh and warning */
+  O_OUT_OF_PLANE,  /* out-of-plane stresses against the strains and the materials */
+  O_AXI,           /* axisymmetric refusals (axis, crossing, mixing, mortar) and the ring element */
   NO
 };
 static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetration", "work", "mesh_eq",
@@ -228,7 +245,8 @@ static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetrat
                                        "step_repeat", "host_pattern", "host_gather", "host_active",
                                        "coulomb", "friction_args", "prescribed", "auto_pairs", "twin",
                                        "pair_pressure", "vtu_file", "warning_size", "weighting",
-                                       "slave_nodes", "restart"};
+                                       "slave_nodes", "restart", "adapt", "out_of_plane",
+                                       "axisymmetric"};
 
 /* A library defect this tester found (c_tests/README.md, "The 3 entry
  * points of friction, prescribed values and automatic pairs"): with
@@ -315,6 +333,25 @@ static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetrat
  * or more. */
 #ifndef API_FUZZ_MORTAR_CUT_READING
 #define API_FUZZ_MORTAR_CUT_READING 1
+#endif
+
+/* Library defects this tester found (c_tests/README.md, "The 3 entry
+ * points of the adaptive solve"): a tfem_solve_adaptive that fails after a
+ * cycle's solve (NUMERICAL_FAILURE of an estimate that overflows,
+ * SINGULAR, NOT_CONVERGED) does not leave the model as it was: the solve's
+ * warnings stay (tfem_warning_count 0 -> 1: "the reactions of body ... may
+ * carry as few as 0 correct digits"), the results of the solve before it
+ * are gone (INVALID_STATE "no results") and, since fc3c91f, so are the
+ * cycles of the adaptive solve before it (INVALID_STATE "no adaptive
+ * solve"), also when the call is refused for its tolerance (0, NaN, ...:
+ * INVALID_ARGUMENT, where the header says that bad arguments change
+ * nothing). Checked (findings: state_change, results_lost,
+ * matrix_dropped, adapt) unless built with
+ * -DAPI_FUZZ_ADAPT_FAILURE_RESTORES=0, which takes what follows such a
+ * failure as not known here (no replay comparison after it, the results
+ * and cycles not known). */
+#ifndef API_FUZZ_ADAPT_FAILURE_RESTORES
+#define API_FUZZ_ADAPT_FAILURE_RESTORES 1
 #endif
 
 /* Messages name the item and say why; what must not happen is an
@@ -505,14 +542,20 @@ enum {
   F_SET_CONTACT_WEIGHTING,
   F_GET_CONTACT_WEIGHTING,
   F_GET_CONTACT_SLAVE_NODES,
+  /* added 2026-11-29: axisymmetric bodies' hoop stress, the adaptive solve */
+  F_GET_OUT_OF_PLANE,
+  F_SOLVE_ADAPTIVE,
+  F_GET_ADAPT_CYCLES,
   F_DESTROY_NULL, /* tfem_destroy(NULL) */
   F_RECREATE,     /* tfem_destroy(m); m = tfem_create() */
   F_TWIN,         /* not a call: the twin-model oracle (see oracle_twin) */
   NF
 };
 
-/* Output kinds (K_Z size_t, K_U8 the bytes of a contact state). */
-enum { K_D, K_I, K_L, K_C, K_SI, K_RE, K_OP, K_Z, K_U8 };
+/* Output kinds (K_Z size_t, K_U8 the bytes of a contact state, K_AR a
+ * tfem_adapt_report, K_T doubles that are timings: checked finite and >= 0,
+ * never compared on the replay). */
+enum { K_D, K_I, K_L, K_C, K_SI, K_RE, K_OP, K_Z, K_U8, K_AR, K_T };
 static size_t ksize(int k) {
   switch (k) {
   case K_D: return sizeof(double);
@@ -523,6 +566,8 @@ static size_t ksize(int k) {
   case K_U8: return 1;
   case K_SI: return sizeof(tfem_solve_info);
   case K_RE: return sizeof(tfem_contact_report);
+  case K_AR: return sizeof(tfem_adapt_report);
+  case K_T: return sizeof(double);
   default: return sizeof(tfem_contact_options);
   }
 }
@@ -532,10 +577,10 @@ enum { R_SCALAR, R_2NN, R_3NT, R_NT, R_NC, R_3NC, R_N1, R_NNZ, R_N, R_MSG, R_WAR
        /* the contact state; a context's interface nodes (x1, x2), elements of B (x1, x3, x6, x36), pattern
         * entries, message, the host's equations */
        R_STATE, R_CN, R_2CN, R_CE, R_3CE, R_6CE, R_36CE, R_CP, R_CMSG, R_NEQ,
-       /* slave nodes of a mortar solve (the report's elements) */
-       R_SLAVE };
+       /* slave nodes of a mortar solve (the report's elements); the cycles of the last adaptive solve */
+       R_SLAVE, R_CYC };
 
-#define MAXI 6
+#define MAXI 8
 #define MAXD 4
 #define MAXIN 4
 #define MAXOUT 4
@@ -549,7 +594,8 @@ typedef struct {
                     * (may be NULL), 'r' options (required), 'h' host node numbers, 'q' host equations
                     * (int64); made when the call runs (runtime inputs, from a recipe in the int
                     * arguments): 'U' doubles, 'a' active flags, 's' contact state bytes */
-  const char *outk; /* output kinds: d i l c S R O; upper-case letter = scalar pointer */
+  const char *outk; /* output kinds: d i l c S R O A (an adapt report) t (timings); upper-case letter = scalar
+                     * pointer */
   unsigned char req[MAXOUT];
   int scalar_out;   /* outputs are single objects (pointer, no length) */
 } fndesc;
@@ -562,10 +608,13 @@ typedef struct {
  *   state mode, A active-flags recipe, g host-vector recipe, V the path of
  *   a .vtu (vtu_path: a file in the private directory or an unwritable
  *   path there; out of range: NULL), W contact weighting (0 strip,
- *   1 mortar, 2 automatic; wild: -1, 3, INT_MAX, INT_MIN)
+ *   1 mortar, 2 automatic; wild: -1, 3, INT_MAX, INT_MIN), Z adaptive goal
+ *   (0 energy, 1 compliance), Y adaptive max_cycles (1..6; wild 0, -1,
+ *   INT_MIN), N adaptive max_unknowns (an int64_t: INT_MAX passes INT64_MAX,
+ *   INT_MIN INT64_MIN; 200..20000; wild 0, -1, 1, 50, INT_MAX, INT_MIN)
  * double roles: E young, p poisson, J jmin, K kappa, v tempering value,
  *   u displacement, f force, G contact modulus, l lambda, a load factor,
- *   y friction coefficient, d pairing tolerance */
+ *   y friction coefficient, d pairing tolerance, e adaptive tolerance */
 static const fndesc FN[NF] = {
     [F_VERSION] = {"tfem_version", 0, "", "", "", "", {0}, 0},
     [F_LAST_ERROR] = {"tfem_last_error", 1, "", "", "", "c", {R_MSG}, 0},
@@ -660,6 +709,12 @@ static const fndesc FN[NF] = {
     [F_GET_CONTACT_WEIGHTING] = {"tfem_get_contact_weighting", 1, "", "", "", "i", {R_SCALAR}, 1},
     [F_GET_CONTACT_SLAVE_NODES] = {"tfem_get_contact_slave_nodes", 1, "", "", "", "iddd",
                                    {R_SLAVE, R_SLAVE, R_SLAVE, R_SLAVE}, 0},
+    [F_GET_OUT_OF_PLANE] = {"tfem_get_element_out_of_plane_stresses", 1, "", "", "", "d", {R_NT}, 0},
+    /* (iv: the contact options' law, test, max_iterations, refactorize as in
+     * tfem_solve_contact, then goal, max_cycles, max_unknowns; dv: E_c,
+     * lambda, then the tolerance) */
+    [F_SOLVE_ADAPTIVE] = {"tfem_solve_adaptive", 1, "LTmxZYN", "Gle", "o", "A", {R_SCALAR}, 1},
+    [F_GET_ADAPT_CYCLES] = {"tfem_get_adapt_cycles", 1, "", "", "", "ldt", {R_CYC, R_CYC, R_CYC}, 0},
     [F_DESTROY_NULL] = {"tfem_destroy(NULL)", 0, "", "", "", "", {0}, 0},
     [F_RECREATE] = {"tfem_destroy+tfem_create", 0, "", "", "", "", {0}, 0},
     [F_TWIN] = {"(twin model oracle)", 0, "", "", "", "", {0}, 0},
@@ -679,6 +734,8 @@ static int out_kind(int f, int j) {
   case 'R': return K_RE;
   case 'z': return K_Z;
   case 'u': return K_U8;
+  case 'A': return K_AR;
+  case 't': return K_T;
   default: return K_OP;
   }
 }
@@ -695,6 +752,7 @@ static int out_nullable(int f, int j) {
   case F_STEP: case F_CONTACT_ADD_SIDE: case F_CONTACT_ADD_PAIR: case F_CONTACT_ADD_PAIR_WITH_MESH:
   case F_CONTACT_SIZES: case F_CONTACT_EVALUATE: case F_CONTACT_UPDATE: case F_ADD_CONTACT_PAIRS_AUTO:
   case F_GET_CONTACT_SLAVE_NODES: /* ("any pointer may be NULL") */
+  case F_SOLVE_ADAPTIVE: case F_GET_ADAPT_CYCLES:
     return 1;
   default: (void)j; return 0;
   }
@@ -715,6 +773,7 @@ static int reads_only(int f) {
   case F_GET_CONTACT_STATE_SIZE: case F_GET_CONTACT_STATE: case F_GET_CONTACT_SHEAR:
   case F_GET_CONTACT_FRICTION_STATE: case F_GET_CONTACT_DISSIPATION: case F_GET_CONTACT_PAIR_NODAL_PRESSURES:
   case F_WRITE_VTU: case F_GET_WARNING_SIZE: case F_GET_CONTACT_WEIGHTING: case F_GET_CONTACT_SLAVE_NODES:
+  case F_GET_OUT_OF_PLANE: case F_GET_ADAPT_CYCLES:
     return 1;
   default: return 0;
   }
@@ -1241,15 +1300,16 @@ static double plausible_double(rng_t *r, char role) {
   case 'a': { static const double v[] = {1.0, 0.5, 0.25, 2.0, 0.0, -0.5, 1.0}; return v[rint_(r, 7)]; }
   case 'y': { static const double v[] = {0.0, 0.1, 0.3, 0.5, 1.0, -0.0}; return v[rint_(r, 6)]; }
   case 'd': { static const double v[] = {1e-6, 0.01, 0.1, 0.0, 1e-3}; return v[rint_(r, 5)]; }
+  case 'e': { static const double v[] = {0.3, 0.1, 0.05, 0.5, 0.2, 1e-3}; return v[rint_(r, 6)]; }
   default: return runif(r);
   }
 }
 
 static int enum_max(char role) {
   switch (role) {
-  case 'P': case 'C': case 'L': case 'T': case 'x': return 1;
+  case 'C': case 'L': case 'T': case 'x': case 'Z': return 1;
   case 'M': return 3;
-  case 'O': return 2;
+  case 'O': case 'P': return 2; /* (P: strain, stress, axisymmetric) */
   default: return 1;
   }
 }
@@ -1281,6 +1341,9 @@ static int plausible_int(rng_t *r, char role, const ctx_t *cx) {
   case 'g': return rint_(r, 4);
   case 'W': return chance(r, 0.6) ? TFEM_CONTACT_WEIGHTING_MORTAR : chance(r, 0.5) ? TFEM_CONTACT_WEIGHTING_STRIP
                                                                      : TFEM_CONTACT_WEIGHTING_AUTO;
+  case 'Y': return chance(r, 0.8) ? rrange(r, 1, 4) : rrange(r, 5, 6);
+  case 'N': return (int[]){200, 500, 2000, 5000, 20000, 2000}[rint_(r, 6)];
+  case 'P': return chance(r, 0.8) ? rint_(r, 2) : TFEM_PLANE_MODE_AXISYMMETRIC;
   default: return rint_(r, enum_max(role) + 1);
   }
 }
@@ -1288,6 +1351,8 @@ static int plausible_int(rng_t *r, char role, const ctx_t *cx) {
 /* v + d and v * m without signed overflow (UB; -O2 wraps INT_MIN - 1 to
  * INT_MAX, a count the arrays were never sized for), clamped to int. */
 static int sat_int(long long v) { return v < INT_MIN ? INT_MIN : v > INT_MAX ? INT_MAX : (int)v; }
+/* max_unknowns of tfem_solve_adaptive from its int (role N). */
+static int64_t adapt_max_unknowns(int v) { return v == INT_MAX ? INT64_MAX : v == INT_MIN ? INT64_MIN : (int64_t)v; }
 static int64_t sat_inc64(int64_t v) { return v == INT64_MAX ? v : v + 1; }
 
 static int wild_int(rng_t *r, char role, int v, const ctx_t *cx) {
@@ -1297,6 +1362,10 @@ static int wild_int(rng_t *r, char role, int v, const ctx_t *cx) {
   if (role == 'h') return (int[]){-1, INT_MIN, -7, 3, 8, 0}[rint_(r, 6)];
   /* The contact weighting: not 0, 1 or 2 (refused, the model unchanged). */
   if (role == 'W') return (int[]){-1, 3, INT_MAX, INT_MIN}[rint_(r, 4)];
+  /* The adaptive solve's limits: never both large (max_cycles stays at 6
+   * or below: a tolerance of 1e-300 refines until a limit stops it). */
+  if (role == 'Y') return (int[]){0, -1, INT_MIN, 1, 6}[rint_(r, 5)];
+  if (role == 'N') return (int[]){0, -1, 1, 50, INT_MAX, INT_MIN}[rint_(r, 6)];
   switch (rint_(r, 8)) {
   case 0: return -1;
   case 1: return INT_MIN;
@@ -1466,6 +1535,7 @@ static void result_getters(rng_t *r, case_t *cs, int contact) {
   if (chance(r, 0.5)) add_call(cs, F_GET_STRAINS);
   if (chance(r, 0.5)) add_call(cs, F_GET_STRESSES);
   if (chance(r, 0.3)) add_call(cs, F_GET_JACOBIANS);
+  if (chance(r, 0.3)) add_call(cs, F_GET_OUT_OF_PLANE);
   if (chance(r, 0.5)) add_call(cs, F_GET_MATRIX_SIZE);
   if (chance(r, 0.5)) add_call(cs, F_GET_MATRIX);
   if (chance(r, 0.4)) add_call(cs, F_GET_EXTERNAL_WORK);
@@ -1708,6 +1778,248 @@ static int scene_two_blocks(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m, int vari
   free(lower);
   free(upper);
   return fam;
+}
+
+/* Axisymmetric bodies (TFEM_PLANE_MODE_AXISYMMETRIC): the section
+ * [x0, x0 + 1] x [0, 1] of a ring (x the radius, y the axis), nx x ny
+ * cells, E 1000, nu 0.3, tempering off, u_z = 0 on the bottom (tag 3),
+ * pulled along the axis by a traction p = 10 on the top (tag 4): the
+ * uniform stress sigma_zz = p, u_z = p y / E, u_r = -nu p r / E and a hoop
+ * stress of 0, exact for the ring element (linear fields). 30% of the
+ * solid and hollow ones are two bodies (x beyond x0 + 1/2: body 2, the
+ * same material), and then body 2 made plane strain is refused (a model is
+ * axisymmetric in every body or in none). Variants: 0 solid (x0 = 0) with
+ * u_r = 0 on the axis (tag 1): OK, the closed form; 1 hollow (x0 = 1/2):
+ * OK, the closed form; 2 solid, the axis left free: the solve refused
+ * (INVALID_ARGUMENT); 3 solid, u_r = 1e-3 on the axis: refused alike; 4
+ * across the axis (x0 = -1/4): tfem_set_material after the mesh refused
+ * (INVALID_MATERIAL; the body then has no material), or before it accepted
+ * and the solve refused (INVALID_MATERIAL). The material comes before the
+ * mesh in 30% of the cases. The solve is tfem_solve or (40%)
+ * tfem_solve_adaptive (a uniform stress: the estimate is round-off, one
+ * cycle, the mesh kept), refused alike. */
+static void scene_axisym(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
+  int variant = (int[]){0, 0, 0, 1, 1, 2, 2, 3, 4, 4}[rint_(r, 10)];
+  double x0 = variant == 1 ? 0.5 : variant == 4 ? -0.25 : 0.0, p = 10.0, e = 1000.0, nu = 0.3;
+  int nx = rrange(r, 1, 6), ny = rrange(r, 1, 6), base = rint_(r, 2);
+  int two = variant <= 1 && chance(r, 0.3), before = chance(r, 0.3);
+  double xs[8], ys[8];
+  for (int i = 0; i <= nx; ++i) xs[i] = i == nx ? x0 + 1.0 : x0 + (double)i / nx;
+  for (int j = 0; j <= ny; ++j) ys[j] = (double)j / ny;
+  int rows[64];
+  add_grid(m, xs, nx + 1, ys, ny + 1, 1, NAN, rows);
+  if (two)
+    for (int t = 0; t < m->nt; ++t) {
+      const int *v = &m->tri[3 * t];
+      if (m->xy[2 * v[0]] + m->xy[2 * v[1]] + m->xy[2 * v[2]] > 3.0 * (x0 + 0.5)) m->body[t] = 2;
+    }
+  int *be, nb = boundary_edges(m, &be);
+  for (int k = 0; k < nb; ++k) {
+    const double *a = &m->xy[2 * be[2 * k]], *b = &m->xy[2 * be[2 * k + 1]];
+    int tag = a[0] == x0 && b[0] == x0 ? 1 : a[0] == x0 + 1.0 && b[0] == x0 + 1.0 ? 2 : a[1] == 0 && b[1] == 0 ? 3 : 4;
+    mesh_edge(m, be[2 * k], be[2 * k + 1], tag);
+  }
+  free(be);
+  *cx = (ctx_t){m->nn, m->nt, base, {1, 2, 3, 4}, 4, {1, 2}, two ? 2 : 1, m, 0, 0, 0, {0}};
+  int want_mat = variant == 4 && !before ? TFEM_STATUS_INVALID_MATERIAL : TFEM_STATUS_OK;
+  for (int b = 1; b <= 1 + two && before; ++b) {
+    call_t *c = call_i(cs, F_SET_MATERIAL, b, TFEM_PLANE_MODE_AXISYMMETRIC);
+    c->dv[0] = e, c->dv[1] = nu;
+  }
+  set_mesh_call(cs, m, base);
+  edges_calls(r, cs, m, base);
+  for (int b = 1; b <= 1 + two && !before; ++b) {
+    call_t *c = call_i(cs, F_SET_MATERIAL, b, TFEM_PLANE_MODE_AXISYMMETRIC);
+    c->dv[0] = e, c->dv[1] = nu, c->want = 1 + want_mat;
+  }
+  if (two && chance(r, 0.5)) { /* a plane body among axisymmetric ones */
+    call_t *c = call_i(cs, F_SET_MATERIAL, 2, chance(r, 0.5) ? TFEM_PLANE_MODE_STRAIN : TFEM_PLANE_MODE_STRESS);
+    c->dv[0] = e, c->dv[1] = nu, c->want = 1 + TFEM_STATUS_INVALID_MATERIAL;
+  }
+  call_i(cs, F_SET_TEMPERING, TFEM_TEMPERING_MODE_OFF, 0);
+  fixc(cs, F_FIX_EDGES, 3, TFEM_COMPONENT_Y, 0.0);
+  if (variant == 0 || variant == 4) fixc(cs, F_FIX_EDGES, 1, TFEM_COMPONENT_X, 0.0);
+  if (variant == 3) fixc(cs, F_FIX_EDGES, 1, TFEM_COMPONENT_X, 1e-3);
+  load2(cs, F_ADD_TRACTION, 4, 0.0, p);
+  int ok = variant <= 1;
+  call_t *sv;
+  if (chance(r, 0.4)) {
+    sv = add_call(cs, F_SOLVE_ADAPTIVE);
+    sv->in[0].null_ = 1;
+    sv->iv[4] = rint_(r, 2);
+    sv->iv[5] = rrange(r, 1, 3);
+    sv->iv[6] = 2000;
+    sv->dv[2] = (double[]){0.05, 0.1, 1e-3}[rint_(r, 3)];
+    sv->expect = 1; /* (one cycle: the estimate of a uniform stress is round-off) */
+  } else {
+    sv = add_call(cs, F_SOLVE);
+  }
+  sv->want = 1 + (ok ? TFEM_STATUS_OK : variant == 4 ? TFEM_STATUS_INVALID_MATERIAL : TFEM_STATUS_INVALID_ARGUMENT);
+  result_getters(r, cs, 0);
+  int corner = rows[ny * (nx + 1) + nx];
+  for (int k = 0; k < 2; ++k) {
+    call_t *d = add_call(cs, F_GET_DISPLACEMENTS);
+    d->want = 1 + (ok ? TFEM_STATUS_OK : TFEM_STATUS_INVALID_STATE);
+    d->oracle = ok;
+    d->or_node = corner;
+    d->or_comp = k == 0 ? TFEM_COMPONENT_Y : TFEM_COMPONENT_X;
+    d->or_expect = k == 0 ? p / e : -nu * p * (x0 + 1.0) / e;
+    d->or_rtol = 1e-6;
+  }
+  call_t *h = add_call(cs, F_GET_OUT_OF_PLANE);
+  h->want = 1 + (ok ? TFEM_STATUS_OK : TFEM_STATUS_INVALID_STATE);
+  h->oracle = ok ? 2 : 0;
+  h->or_expect = p;
+  h->or_rtol = 1e-9;
+  if (chance(r, 0.3)) { /* the ring element of a triangle of the section */
+    call_t *k = add_call(cs, F_ELEMENT_STIFFNESS);
+    k->iv[0] = TFEM_PLANE_MODE_AXISYMMETRIC;
+    k->dv[0] = e, k->dv[1] = nu, k->dv[2] = chance(r, 0.5) ? 0.0 : 1e-3;
+    double xy[6];
+    for (int q = 0; q < 3; ++q) xy[2 * q] = m->xy[2 * m->tri[q]], xy[2 * q + 1] = m->xy[2 * m->tri[q] + 1];
+    in_set(k, 0, xy, 6, sizeof(double));
+    k->want = 1 + (x0 < 0 ? TFEM_STATUS_INVALID_ARGUMENT : TFEM_STATUS_OK);
+  }
+  if (chance(r, 0.2)) add_call(cs, F_GET_CONTACT_WEIGHTING);
+  if (chance(r, 0.2)) call_i(cs, F_SET_CONTACT_WEIGHTING, TFEM_CONTACT_WEIGHTING_MORTAR, 0)->want =
+      1 + (variant == 4 && !before ? TFEM_STATUS_OK : TFEM_STATUS_INVALID_ARGUMENT);
+}
+
+/* The adaptive solve (tfem_solve_adaptive, tfem_get_adapt_cycles) on the
+ * unit square of scene_square (a uniform field: when its exact solution is
+ * checked, one cycle, the mesh kept) or, 60% of the squares, with a force
+ * at the loaded corner too (refined), or on the seed's two blocks (each
+ * cycle a contact solve, the pair carried over to the refined mesh): the
+ * scene's first solve made adaptive, its limits cheap (max_unknowns 300 to
+ * 3000, 1 to 4 cycles). Before it, sometimes, refused calls (a tolerance
+ * of 0, -1, NaN, Inf; goal 2 or -1; max_unknowns 0 or -5; max_cycles 0 or
+ * -1: INVALID_ARGUMENT, the model unchanged) and tfem_get_adapt_cycles
+ * (INVALID_STATE); after it the cycles (the exact length, one short:
+ * BUFFER_TOO_SMALL, columns NULL), the sizes, sometimes refused calls
+ * again and the cycles (kept), the warnings and the scene's getters; then
+ * sometimes a second adaptive solve, a plain solve of the refined mesh,
+ * the first mesh set again (the cycles are kept), or, on the blocks, a
+ * second adaptive solve that fails (lambda = 1e-200) and the cycles and
+ * results of the first read (kept). */
+/* A refused tfem_solve_adaptive: the arguments of `keep` with one made
+ * bad (INVALID_ARGUMENT, the model unchanged). */
+static void bad_adaptive_call(rng_t *r, case_t *cs, const call_t *keep) {
+  call_t *b = add_call(cs, F_SOLVE_ADAPTIVE);
+  *b = *keep;
+  for (int j = 0; j < MAXIN; ++j) b->in[j].p = NULL, b->in[j].n = 0;
+  for (int j = 0; j <= MAXOUT; ++j) b->saved[j] = NULL, b->saved_n[j] = 0;
+  b->expect = 0;
+  b->want = 1 + TFEM_STATUS_INVALID_ARGUMENT;
+  switch (rint_(r, 4)) {
+  case 0: b->dv[2] = (double[]){0.0, -1.0, NAN, INFINITY, -0.0}[rint_(r, 5)]; break;
+  case 1: b->iv[4] = chance(r, 0.5) ? 2 : -1; break;
+  case 2: b->iv[6] = chance(r, 0.5) ? 0 : -5; break;
+  default: b->iv[5] = chance(r, 0.5) ? 0 : -1; break;
+  }
+}
+
+static void scene_adaptive(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
+  int blocks = chance(r, 0.4), corner = !blocks && chance(r, 0.6);
+  if (blocks) scene_two_blocks(r, cs, cx, m, 0);
+  else scene_square(r, cs, cx, m, 0, 0);
+  int si = -1;
+  for (int i = cs->n - 1; i >= 0; --i) {
+    if (cs->c[i].fn == F_TWIN) case_delete(cs, i);
+    else if (cs->c[i].fn == F_SOLVE || cs->c[i].fn == F_SOLVE_CONTACT) si = i;
+  }
+  if (si < 0) return;
+  int uniform = 0;
+  for (int i = 0; i < cs->n; ++i) {
+    uniform |= cs->c[i].oracle == 1;
+    if (corner) cs->c[i].oracle = 0;
+  }
+  uniform &= !corner;
+  if (corner) { /* a force at the loaded corner (node 1 up from the last, whatever the base: the grid's last) */
+    case_t one = {0};
+    call_t *f = call_i(&one, F_ADD_NODAL_FORCE, cx->base + m->nn - 1, 0);
+    f->dv[0] = 0.0, f->dv[1] = 5.0;
+    case_insert_copy(cs, si, f);
+    case_free(&one);
+    ++si;
+  }
+  call_t *a = &cs->c[si];
+  int was = a->fn;
+  a->fn = F_SOLVE_ADAPTIVE;
+  if (was == F_SOLVE) a->in[0].null_ = 1;
+  a->iv[4] = chance(r, 0.7) ? TFEM_ADAPT_GOAL_ENERGY : TFEM_ADAPT_GOAL_COMPLIANCE;
+  a->iv[5] = rrange(r, 1, 4);
+  a->iv[6] = (int[]){300, 1000, 3000}[rint_(r, 3)];
+  a->dv[2] = (double[]){0.2, 0.1, 0.05, 1e-3, 1e-300}[rint_(r, 5)];
+  a->want = 1 + TFEM_STATUS_OK;
+  a->expect = uniform && a->dv[2] >= 1e-3 ? 1 : 0;
+  call_t keep = *a; /* (its scalar arguments, for the calls made from it) */
+  /* after it (inserted in order at si + 1) */
+  case_t after = {0};
+  call_t *c = add_call(&after, F_GET_ADAPT_CYCLES);
+  c->want = 1 + TFEM_STATUS_OK;
+  if (chance(r, 0.3)) {
+    c = add_call(&after, F_GET_ADAPT_CYCLES);
+    for (int j = 0; j < 3; ++j) c->out[j].null_ = chance(r, 0.4);
+    if (chance(r, 0.5)) {
+      c->out[0] = (out_spec){LS_REL, -1, c->out[0].null_, 0, 0, 0};
+      c->want = 1 + TFEM_STATUS_BUFFER_TOO_SMALL;
+    }
+  }
+  add_call(&after, F_GET_SIZES);
+  if (chance(r, 0.4)) { /* refused after it: the cycles stay */
+    for (int k = rrange(r, 1, 2); k > 0; --k) bad_adaptive_call(r, &after, &keep);
+    add_call(&after, F_GET_ADAPT_CYCLES)->want = 1 + TFEM_STATUS_OK;
+  }
+  if (chance(r, 0.5)) add_call(&after, F_WARNING_COUNT);
+  if (chance(r, 0.3)) call_i(&after, F_GET_WARNING, 0, 0)->out[0] = (out_spec){LS_FIXED, 512, 0, 0, 0, 0};
+  for (int i = 0; i < after.n; ++i) case_insert_copy(cs, si + 1 + i, &after.c[i]);
+  case_free(&after);
+  /* before it: refusals, and no cycles yet */
+  case_t pre = {0};
+  if (chance(r, 0.3)) add_call(&pre, F_GET_ADAPT_CYCLES)->want = 1 + TFEM_STATUS_INVALID_STATE;
+  for (int k = chance(r, 0.4) ? rrange(r, 1, 2) : 0; k > 0; --k) bad_adaptive_call(r, &pre, &keep);
+  for (int i = 0; i < pre.n; ++i) case_insert_copy(cs, si + i, &pre.c[i]);
+  case_free(&pre);
+  /* then */
+  int v = rint_(r, 10);
+  if (v < 3) { /* a second adaptive solve, from the refined mesh */
+    c = add_call(cs, F_SOLVE_ADAPTIVE);
+    *c = keep;
+    for (int j = 0; j < MAXIN; ++j) c->in[j].p = NULL, c->in[j].n = 0;
+    for (int j = 0; j <= MAXOUT; ++j) c->saved[j] = NULL;
+    c->iv[4] = 1 - keep.iv[4];
+    c->iv[5] = rrange(r, 1, 2);
+    c->dv[2] = 0.1;
+    c->expect = keep.expect;
+    add_call(cs, F_GET_ADAPT_CYCLES);
+    result_getters(r, cs, blocks);
+  } else if (v < 5) { /* a plain solve of the refined mesh */
+    c = add_call(cs, blocks ? F_SOLVE_CONTACT : F_SOLVE);
+    c->in[0].null_ = 1;
+    c->want = 1 + TFEM_STATUS_OK;
+    add_call(cs, F_GET_DISPLACEMENTS);
+    if (chance(r, 0.5)) add_call(cs, F_GET_OUT_OF_PLANE);
+    add_call(cs, F_GET_ADAPT_CYCLES)->want = 1 + TFEM_STATUS_OK;
+  } else if (v < 6) { /* the first mesh again: the cycles stay */
+    set_mesh_call(cs, m, cx->base);
+    add_call(cs, F_GET_SIZES);
+    add_call(cs, F_GET_ADAPT_CYCLES)->want = 1 + TFEM_STATUS_OK;
+  } else if (v < 7 && blocks) {
+    /* a second adaptive solve that fails (lambda = 1e-200: SINGULAR, seen
+     * on these blocks): the cycles and results of the first stay (a failed
+     * call leaves the model as it was) */
+    c = add_call(cs, F_SOLVE_ADAPTIVE);
+    *c = keep;
+    for (int j = 0; j < MAXIN; ++j) c->in[j].p = NULL, c->in[j].n = 0;
+    for (int j = 0; j <= MAXOUT; ++j) c->saved[j] = NULL, c->saved_n[j] = 0;
+    c->in[0].null_ = 0;
+    c->iv[0] = c->iv[1] = c->iv[3] = 0, c->iv[2] = 50, c->dv[0] = 0.0, c->dv[1] = 1e-200;
+    c->want = c->expect = 0;
+    add_call(cs, F_GET_ADAPT_CYCLES);
+    add_call(cs, F_GET_DISPLACEMENTS);
+    if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_PRESSURE);
+    if (chance(r, 0.5)) add_call(cs, F_WARNING_COUNT);
+  }
 }
 
 /* A unit square whose middle row of nodes is lowered onto the row below:
@@ -2439,9 +2751,13 @@ static void scene_host(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
     c->dv[0] = chance(r, 0.7) ? 0 : 1e9;
     c->dv[1] = chance(r, 0.7) ? 0 : 0.5;
   }
-  int plane = chance(r, 0.8) ? TFEM_PLANE_MODE_STRAIN : TFEM_PLANE_MODE_STRESS;
+  /* (15% axisymmetric sides: the blocks lie at x >= 0; then, 30%, a plane
+   * side after them, refused: a context takes one section) */
+  int plane = chance(r, 0.15) ? TFEM_PLANE_MODE_AXISYMMETRIC : chance(r, 0.8) ? TFEM_PLANE_MODE_STRAIN : TFEM_PLANE_MODE_STRESS;
   host_side_call(cs, m, 2, 1, 1e10, plane, base, mul, off);
   host_side_call(cs, m, 3, 2, 1e11, plane, base, mul, off);
+  if (plane == TFEM_PLANE_MODE_AXISYMMETRIC && chance(r, 0.3))
+    host_side_call(cs, m, 3, 2, 1e11, TFEM_PLANE_MODE_STRAIN, base, mul, off);
   call_t *um = NULL;
   for (int i = 0; i < cs->n && variant; ++i)
     if (cs->c[i].fn == F_ADD_CONTACT_PAIR_WITH_MESH) um = &cs->c[i];
@@ -2541,7 +2857,8 @@ static void random_call(rng_t *r, case_t *cs, const ctx_t *cx, double wild, int 
       [F_GET_CONTACT_FRICTION_STATE] = 1, [F_GET_CONTACT_DISSIPATION] = 1, [F_SET_FRICTION] = 2,
       [F_SET_PRESCRIBED] = 2, [F_ADD_CONTACT_PAIRS_AUTO] = 2, [F_GET_CONTACT_PAIR_NODAL_PRESSURES] = 2,
       [F_WRITE_VTU] = 2, [F_GET_WARNING_SIZE] = 2, [F_CONTACT_LAST_ERROR_LENGTH] = 1,
-      [F_SET_CONTACT_WEIGHTING] = 3, [F_GET_CONTACT_WEIGHTING] = 1, [F_GET_CONTACT_SLAVE_NODES] = 3};
+      [F_SET_CONTACT_WEIGHTING] = 3, [F_GET_CONTACT_WEIGHTING] = 1, [F_GET_CONTACT_SLAVE_NODES] = 3,
+      [F_GET_OUT_OF_PLANE] = 3, [F_SOLVE_ADAPTIVE] = 2, [F_GET_ADAPT_CYCLES] = 2};
   int total = 0;
   for (int f = 0; f < NF; ++f) total += weight[f];
   int x = rint_(r, total), fn = 0;
@@ -2668,13 +2985,17 @@ static void random_call(rng_t *r, case_t *cs, const ctx_t *cx, double wild, int 
     break;
   }
   case F_ELEMENT_STIFFNESS: case F_LAPLACIAN_STIFFNESS: {
+    /* (a ring, axisymmetric: corners at x >= 0 half the time, on the axis
+     * sometimes, else some may lie across it) */
     double xy[6] = {0, 0, 1, 0, 0, 1};
+    int ring_side = fn == F_ELEMENT_STIFFNESS && c->iv[0] == TFEM_PLANE_MODE_AXISYMMETRIC && chance(r, 0.5);
     if (chance(r, 0.5))
-      for (int k = 0; k < 6; ++k) xy[k] = chance(r, wild) ? wild_double(r) : rint_(r, 5) * 0.5 - 1.0;
+      for (int k = 0; k < 6; ++k)
+        xy[k] = chance(r, wild) ? wild_double(r) : ring_side && k % 2 == 0 ? rint_(r, 3) * 0.5 : rint_(r, 5) * 0.5 - 1.0;
     in_set(c, 0, xy, 6, sizeof(double));
     break;
   }
-  case F_SOLVE_CONTACT: case F_STEP:
+  case F_SOLVE_CONTACT: case F_STEP: case F_SOLVE_ADAPTIVE:
     if (chance(r, 0.2)) c->in[0].null_ = 1;
     break;
   case F_ADD_CONTACT_PAIRS_AUTO:
@@ -2784,7 +3105,7 @@ static void mutate_arg(rng_t *r, call_t *c, const ctx_t *cx) {
       }
       break;
     default: /* options of a contact solve */
-      if (fn == F_SOLVE_CONTACT || fn == F_STEP || fn == F_CONTACT_SET_OPTIONS) {
+      if (fn == F_SOLVE_CONTACT || fn == F_STEP || fn == F_CONTACT_SET_OPTIONS || fn == F_SOLVE_ADAPTIVE) {
         int k = rint_(r, 6);
         if (k < 4) c->iv[k] = chance(r, 0.5) ? plausible_int(r, FN[fn].ir[k], cx) : wild_int(r, FN[fn].ir[k], c->iv[k], cx);
         else c->dv[k - 4] = chance(r, 0.5) ? plausible_double(r, FN[fn].dr[k - 4]) : wild_double(r);
@@ -2910,8 +3231,11 @@ static void gen_case(uint64_t seed, long index, case_t *cs, mesh_t *m) {
   int kind = rint_(&r, 100);
   if (kind < 70) {
     /* (a) a valid scene, mutated (10% left pristine) */
-    int s = rint_(&r, 128);
-    if (s >= 100) {
+    int s = rint_(&r, 134);
+    if (s >= 128) {
+      if (s < 131) { cs->kind = "axisymmetric"; scene_axisym(&r, cs, &cx, m); }
+      else { cs->kind = "adaptive"; scene_adaptive(&r, cs, &cx, m); }
+    } else if (s >= 100) {
       if (s < 108) { cs->kind = "steps"; scene_steps(&r, cs, &cx, m); }
       else if (s < 116) { cs->kind = "host"; scene_host(&r, cs, &cx, m); }
       else if (s < 120) { cs->kind = "friction"; scene_friction(&r, cs, &cx, m); }
@@ -2956,7 +3280,7 @@ static void gen_case(uint64_t seed, long index, case_t *cs, mesh_t *m) {
       set_mesh_call(cs, m, cx.base);
       if (chance(&r, 0.8)) edges_calls(&r, cs, m, cx.base);
       for (int b = 1; b <= nb; ++b)
-        if (chance(&r, 0.8)) material(cs, b, plausible_double(&r, 'E'), plausible_double(&r, 'p'), rint_(&r, 2));
+        if (chance(&r, 0.8)) material(cs, b, plausible_double(&r, 'E'), plausible_double(&r, 'p'), plausible_int(&r, 'P', &cx));
     } else {
       cx = (ctx_t){rrange(&r, 0, 6), 0, rint_(&r, 2), {1, 2, 3, 4}, 4, {1, 2}, 2, NULL, 0, 0, 0, {0}};
     }
@@ -3012,7 +3336,7 @@ static void gb_alloc(gbuf *g, int kind, size_t n) {
   g->p = g->blk + GUARD;
   memset(g->blk, CANARY, GUARD);
   memset(g->p + g->bytes, CANARY, GUARD);
-  if (kind == K_D)
+  if (kind == K_D || kind == K_T)
     for (size_t i = 0; i < n; ++i) memcpy(g->p + 8 * i, &PAT_D, 8);
   else
     memset(g->p, PAT_BYTE, g->bytes);
@@ -3024,7 +3348,7 @@ static int gb_canary_ok(const gbuf *g) {
 }
 static int gb_is_pattern(const gbuf *g, size_t i) {
   size_t es = ksize(g->kind);
-  if (g->kind == K_D) return memcmp(g->p + 8 * i, &PAT_D, 8) == 0;
+  if (g->kind == K_D || g->kind == K_T) return memcmp(g->p + 8 * i, &PAT_D, 8) == 0;
   for (size_t b = 0; b < es; ++b)
     if (g->p[i * es + b] != PAT_BYTE) return 0;
   return 1;
@@ -3098,6 +3422,19 @@ typedef struct {
   int weighting;   /* set by tfem_set_contact_weighting (0 strip, 1 mortar, 2 automatic: the default) */
   long prob_gen;   /* changes of the problem */
   long sol_gen;    /* changes of the results (solves, changes of the problem) */
+  /* the materials set successfully (16 bodies kept; a new mesh keeps them:
+   * the header), and their section: axi, every body axisymmetric (the
+   * model takes one section, tfem_set_material refuses a mix) */
+  int nmat, axi;
+  int mat_body[16], mat_plane[16];
+  double mat_young[16], mat_nu[16];
+  /* the cycles of the last adaptive solve (the model's, whatever the mesh):
+   * 0 none, -1 not known here; their unknowns and estimates (64 kept) and
+   * the call that made them */
+  long adapt_n;
+  int adapt_idx;
+  int64_t adapt_unk[64];
+  double adapt_est[64];
   /* snapshots: the contact mesh B, the contact elements of a contact solve
    * (both in the index base, with the problem generation they belong to),
    * and the displacements (a hash, with the results generation) */
@@ -3133,9 +3470,18 @@ static void sh_clear_mesh(shadow_t *s) {
   free(s->celem);
   int threads = s->threads, weighting = s->weighting;
   long pg = s->prob_gen, sg = s->sol_gen;
+  shadow_t keep = *s; /* (the model's materials and adaptive cycles) */
   sh_init(s);
   s->threads = threads;
   s->weighting = weighting;
+  s->nmat = keep.nmat, s->axi = keep.axi;
+  memcpy(s->mat_body, keep.mat_body, sizeof s->mat_body);
+  memcpy(s->mat_plane, keep.mat_plane, sizeof s->mat_plane);
+  memcpy(s->mat_young, keep.mat_young, sizeof s->mat_young);
+  memcpy(s->mat_nu, keep.mat_nu, sizeof s->mat_nu);
+  s->adapt_n = keep.adapt_n, s->adapt_idx = keep.adapt_idx;
+  memcpy(s->adapt_unk, keep.adapt_unk, sizeof s->adapt_unk);
+  memcpy(s->adapt_est, keep.adapt_est, sizeof s->adapt_est);
   s->prob_gen = pg + 1;
   s->sol_gen = sg + 1;
 }
@@ -3301,6 +3647,7 @@ static int sh_normal(const shadow_t *s, int p, int q, double n[2]) {
  * an edge without an outward normal) or are not finite. */
 static int sh_nodal_forces(const shadow_t *s, double *f) {
   memset(f, 0, sizeof(double) * 2 * (size_t)s->nn);
+  if (s->axi) return 0; /* (axisymmetric: the whole ring's forces, 2 pi r per unit length; not made here) */
   int ok = 1;
   for (int l = 0; l < s->nl && ok; ++l)
     for (int e = 0; e < s->ne; ++e) {
@@ -3554,6 +3901,10 @@ static int sh_matching(const shadow_t *s, const int *a, int na, const int *b, in
 /* The family of contact pair k under the model's weighting (FAM_*). */
 static int sh_pair_family(const shadow_t *s, int k) {
   if (s->weighting == TFEM_CONTACT_WEIGHTING_STRIP) return FAM_STRIP;
+  /* (axisymmetric bodies take B where the automatic weighting would take
+   * the mortar's, which has no ring measure: src/model/problem.rs
+   * weighting_in_use) */
+  if (s->axi && s->weighting == TFEM_CONTACT_WEIGHTING_AUTO) return FAM_STRIP;
   if (s->weighting == TFEM_CONTACT_WEIGHTING_MORTAR) return FAM_MORTAR;
   if (s->weighting != TFEM_CONTACT_WEIGHTING_AUTO || k >= 64) return FAM_UNKNOWN;
   if (s->pair_user[k] || s->pair_mu[k] > 0.0) return FAM_STRIP;
@@ -3712,6 +4063,7 @@ typedef struct {
    * needing it succeeded) */
   tfem_contact *ctx;
   int cbase, cbuilt;
+  int ctx_ring; /* the section of the context's sides: -1 no side yet, 0 plane, 1 axisymmetric */
   /* contact states saved (tfem_get_contact_state): the last, the one before */
   unsigned char *st_last, *st_prev;
   size_t n_last, n_prev;
@@ -3780,6 +4132,23 @@ static void excerpt(const char *s, size_t n, char *out, size_t cap) {
 }
 
 static int ctx_sizes(runner_t *R, int *nn, int *ne, int64_t *np);
+/* The cycles of the model's last adaptive solve (tfem_get_adapt_cycles
+ * with no column: OK once the length holds them all): 0 none (refused
+ * INVALID_STATE), -1 not known (another refusal, or more than 4096). */
+static long probe_cycles(tfem_model *m) {
+  int st = tfem_get_adapt_cycles(m, NULL, NULL, NULL, 0);
+  if (st == TFEM_STATUS_INVALID_STATE) return 0;
+  if (st == TFEM_STATUS_OK) return -1; /* (no cycle, yet an adaptive solve: reported below) */
+  if (st != TFEM_STATUS_BUFFER_TOO_SMALL) return -1;
+  long lo = 1, hi = 4096; /* the first length that holds them */
+  if (tfem_get_adapt_cycles(m, NULL, NULL, NULL, (size_t)hi) != TFEM_STATUS_OK) return -1;
+  while (lo < hi) {
+    long mid = (lo + hi) / 2;
+    if (tfem_get_adapt_cycles(m, NULL, NULL, NULL, (size_t)mid) == TFEM_STATUS_OK) hi = mid;
+    else lo = mid + 1;
+  }
+  return lo;
+}
 static long required_len(runner_t *R, const call_t *c, int j) {
   int rq = FN[c->fn].req[j];
   int nn = -1, nt = -1, nc = -1;
@@ -3811,6 +4180,7 @@ static long required_len(runner_t *R, const call_t *c, int j) {
     return (long)strlen(b) + 1;
   }
   case R_NEQ: return R->cs->coupled ? R->cs->neq : -1;
+  case R_CYC: return c->null_model ? -1 : R->sh.adapt_n > 0 ? R->sh.adapt_n : probe_cycles(R->m);
   case R_SLAVE: { /* the slave nodes: the report's elements less those of B (tfem_get_sizes) */
     tfem_contact_report rep;
     int nc = -1;
@@ -3899,6 +4269,20 @@ static unsigned char *out_bytes(const gbuf *g, size_t *n) {
     b = xmalloc(sizeof(tfem_contact_report));
     norm_report((const tfem_contact_report *)(const void *)g->p, (tfem_contact_report *)(void *)b);
     *n = sizeof(tfem_contact_report);
+  } else if (g->kind == K_AR) { /* (the seconds left out) */
+    const tfem_adapt_report *in = (const tfem_adapt_report *)(const void *)g->p;
+    tfem_adapt_report *o = xmalloc(sizeof *o);
+    memset(o, 0, sizeof *o);
+    o->cycles = in->cycles;
+    o->reached = in->reached;
+    o->unknowns = in->unknowns;
+    o->triangles = in->triangles;
+    o->estimate = in->estimate;
+    b = (unsigned char *)o;
+    *n = sizeof *o;
+  } else if (g->kind == K_T) { /* timings: not compared */
+    b = xcalloc(1, g->bytes);
+    *n = g->bytes;
   } else if (g->kind == K_OP) {
     b = xmalloc(sizeof(tfem_contact_options));
     norm_options((const tfem_contact_options *)(const void *)g->p, (tfem_contact_options *)(void *)b);
@@ -3947,7 +4331,7 @@ static int plus_zero_output(int fn) {
   case F_GET_DISPLACEMENTS: case F_GET_EXTERNAL_WORK: case F_GET_STRAINS: case F_GET_STRESSES: case F_GET_REACTIONS:
   case F_GET_CONTACT_PRESSURE: case F_GET_CONTACT_SHEAR: case F_GET_CONTACT_DISSIPATION: case F_GET_CONTACT_FORCES:
   case F_GET_CONTACT_NODAL_PRESSURES: case F_GET_CONTACT_PAIR_NODAL_PRESSURES: case F_GET_CONTACT_GAPS:
-  case F_GET_CONTACT_SLAVE_NODES: case F_CONTACT_LENGTH:
+  case F_GET_CONTACT_SLAVE_NODES: case F_CONTACT_LENGTH: case F_GET_OUT_OF_PLANE:
     return 1;
   default: return 0;
   }
@@ -5126,6 +5510,307 @@ static void oracle_host(runner_t *R, int idx, const call_t *c, gbuf *g) {
   cv_free(&v);
 }
 
+/* ------------------------------------------------------------------------ */
+/* Axisymmetric bodies, out-of-plane stresses, the adaptive solve           */
+/* ------------------------------------------------------------------------ */
+
+/* The material the shadow holds for a body (-1: none known). */
+static int sh_material(const shadow_t *s, int body) {
+  for (int k = 0; k < s->nmat; ++k)
+    if (s->mat_body[k] == body) return k;
+  return -1;
+}
+
+/* The axis of an axisymmetric model (src/model/problem.rs check_axis): a
+ * node of a triangle across it (x < 0) or on it (x = 0) with u_r not
+ * prescribed to 0 makes a solve refuse. With margins of a hundred times the
+ * library's 1e-12 of the mesh's size either way, so that only a node
+ * clearly across or clearly on the axis counts. For one body (body !=
+ * INT_MIN: what tfem_set_material refuses) only its nodes across the axis
+ * that no other body's triangle uses (the library names a node's body by
+ * one of its triangles: a node a plane body shares is left to the solve).
+ * Returns the node (0-based) and says why, or -1 (none, or the mesh not
+ * known here). */
+static int sh_axis_violation(const shadow_t *s, int body, char *why, size_t cap) {
+  if (!s->exact || s->nn <= 0) return -1;
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (int v = 0; v < s->nn; ++v)
+    for (int k = 0; k < 2; ++k) lo[k] = fmin(lo[k], s->xy[2 * v + k]), hi[k] = fmax(hi[k], s->xy[2 * v + k]);
+  double size = fmax(hi[0] - lo[0], hi[1] - lo[1]);
+  if (!(isfinite(size) && size > 0)) return -1;
+  for (int t = 0; t < s->nt; ++t) {
+    if (body != INT_MIN && s->body[t] != body) continue;
+    for (int k = 0; k < 3; ++k) {
+      int v = s->tri[3 * t + k];
+      double x = s->xy[2 * v];
+      int shared = 0;
+      for (int u = 0; u < s->nt && body != INT_MIN && x < -1e-10 * size && !shared; ++u)
+        shared = s->body[u] != body && (s->tri[3 * u] == v || s->tri[3 * u + 1] == v || s->tri[3 * u + 2] == v);
+      if (x < -1e-10 * size && !shared) {
+        snprintf(why, cap, "node %d (body %d) has x = %g < 0", v + s->base, s->body[t], x);
+        return v;
+      }
+      if (body == INT_MIN && fabs(x) <= 1e-14 * size && s->presc[2 * v] != 0.0) {
+        snprintf(why, cap, "node %d lies on the axis (x = %g) with u_r %s", v + s->base, x,
+                 isnan(s->presc[2 * v]) ? "free" : "prescribed to a value other than 0");
+        return v;
+      }
+    }
+  }
+  return -1;
+}
+
+/* tfem_set_material against the shadow's materials: an axisymmetric body
+ * joining a plane one (or the reverse), crossing the axis, or under the
+ * mortar weighting forced is refused (INVALID_MATERIAL). */
+static void oracle_material(runner_t *R, int idx, const call_t *c, int st, const char *msg) {
+  shadow_t *s = &R->sh;
+  int body = c->iv[0], plane = c->iv[1], ring = plane == TFEM_PLANE_MODE_AXISYMMETRIC;
+  if (plane < 0 || plane > 2) return;
+  const char *why = NULL;
+  char buf[200];
+  for (int k = 0; k < s->nmat && !why; ++k)
+    if (s->mat_body[k] != body && (s->mat_plane[k] == TFEM_PLANE_MODE_AXISYMMETRIC) != ring) {
+      snprintf(buf, sizeof buf, "body %d is %s", s->mat_body[k], ring ? "plane" : "axisymmetric");
+      why = buf;
+    }
+  if (!why && ring && s->weighting == TFEM_CONTACT_WEIGHTING_MORTAR) why = "the mortar weighting is forced";
+  int inmesh = 1;
+  if (s->exact) {
+    inmesh = 0;
+    for (int t = 0; t < s->nt && !inmesh; ++t) inmesh = s->body[t] == body;
+  }
+  if (!why && ring && inmesh && sh_axis_violation(s, body, buf, sizeof buf) >= 0) why = buf;
+  if (!why || !inmesh) return;
+  R->oracles[O_AXI]++;
+  if (st == TFEM_STATUS_OK)
+    finding(R, V_AXI, idx, "tfem_set_material(body %d, plane mode %d) is OK although %s", body, plane, why);
+  else if (st != TFEM_STATUS_INVALID_MATERIAL && st != TFEM_STATUS_NULL_POINTER)
+    finding(R, V_AXI, idx, "tfem_set_material(body %d, plane mode %d) refused with %s, not INVALID_MATERIAL (%s): "
+            "\"%.160s\"", body, plane, status_name(st), why, msg);
+}
+
+/* tfem_get_element_out_of_plane_stresses against the strains and the
+ * materials: 0 in plane stress, lambda (eps_xx + eps_yy) in plane strain
+ * (the header); an axisymmetric body's hoop stress needs the hoop strain,
+ * not read here (its pristine scene checks it against the closed form). */
+static void oracle_out_of_plane(runner_t *R, int idx, const double *sz) {
+  shadow_t *s = &R->sh;
+  int nt = s->nt, checked = 0;
+  if (!s->exact || nt <= 0) return;
+  double *eps = xmalloc(sizeof(double) * 3 * (size_t)nt + 1);
+  if (tfem_get_element_strains(R->m, eps, 3 * (size_t)nt) == TFEM_STATUS_OK) {
+    for (int t = 0; t < nt; ++t) {
+      int k = sh_material(s, s->body[t]);
+      if (k < 0) break;
+      double e = s->mat_young[k], nu = s->mat_nu[k], want, slack;
+      if (s->mat_plane[k] == TFEM_PLANE_MODE_STRESS) {
+        want = 0.0, slack = 0.0;
+      } else if (s->mat_plane[k] == TFEM_PLANE_MODE_STRAIN) {
+        double lam = e * nu / ((1.0 + nu) * (1.0 - 2.0 * nu));
+        want = lam * (eps[3 * t] + eps[3 * t + 1]);
+        slack = 1e-12 * fabs(lam) * (fabs(eps[3 * t]) + fabs(eps[3 * t + 1]));
+      } else {
+        continue;
+      }
+      if (!isfinite(want) || !isfinite(slack)) continue;
+      checked = 1;
+      if (!(fabs(sz[t] - want) <= slack)) {
+        finding(R, V_AXI, idx, "triangle %d (body %d, plane mode %d, E %g, nu %g): out-of-plane stress %.17g, the strains "
+                "%.6g %.6g give %.17g", t + s->base, s->body[t], s->mat_plane[k], e, nu, sz[t], eps[3 * t],
+                eps[3 * t + 1], want);
+        break;
+      }
+    }
+  }
+  R->oracles[O_OUT_OF_PLANE] += checked;
+  free(eps);
+}
+
+/* tfem_element_stiffness (OK): symmetric, no force for a translation
+ * along y (along the axis of a ring; also along x for a plane element),
+ * and an axisymmetric element has no corner at x < 0 (the header). */
+static void oracle_element_stiffness(runner_t *R, int idx, const call_t *c, const double *k) {
+  const double *xy = c->in[0].null_ ? NULL : c->in[0].p;
+  int ring = c->iv[0] == TFEM_PLANE_MODE_AXISYMMETRIC;
+  if (!xy) return;
+  if (ring)
+    for (int v = 0; v < 3; ++v)
+      if (xy[2 * v] < 0) {
+        finding(R, V_AXI, idx, "OK for an axisymmetric element with corner %d at x = %g < 0", v + 1, xy[2 * v]);
+        return;
+      }
+  double big = 0;
+  for (int i = 0; i < 36; ++i) big = fmax(big, fabs(k[i]));
+  if (!isfinite(big) || big < 1e-250 || big > 1e280) return;
+  /* (round-off: of the largest entry's size, lambda's as nu -> 1/2, in every sum) */
+  R->oracles[O_AXI] += ring;
+  for (int i = 0; i < 6; ++i)
+    for (int j = 0; j < i; ++j)
+      if (fabs(k[6 * i + j] - k[6 * j + i]) > 1e-12 * big) {
+        finding(R, ring ? V_AXI : V_OTHER, idx, "plane mode %d: K[%d][%d] = %.17g but K[%d][%d] = %.17g", c->iv[0], i, j,
+                k[6 * i + j], j, i, k[6 * j + i]);
+        return;
+      }
+  for (int d = ring ? 1 : 0; d < 2; ++d)
+    for (int i = 0; i < 6; ++i) {
+      double f = 0, m = 0;
+      for (int v = 0; v < 3; ++v) f += k[6 * i + 2 * v + d], m += fabs(k[6 * i + 2 * v + d]);
+      if (fabs(f) > 1e-12 * big + 1e-10 * m) {
+        finding(R, ring ? V_AXI : V_OTHER, idx, "plane mode %d: a translation along %c gives force %.6g at DOF %d (row "
+                "magnitude %.6g)", c->iv[0], d ? 'y' : 'x', f, i, m);
+        return;
+      }
+    }
+}
+
+/* tfem_solve_adaptive against the header: a bad argument (goal not 0 or 1,
+ * tolerance not finite and > 0, max_unknowns or max_cycles below 1) is
+ * refused with INVALID_ARGUMENT (the replay checks that nothing changed);
+ * OK: 1 to max_cycles solves, each read back (tfem_get_adapt_cycles: the
+ * last one's unknowns and estimate the report's, unknowns growing, a
+ * refined mesh's within max_unknowns, no cycle but the last meeting the
+ * tolerance), reached exactly when the last estimate meets the tolerance,
+ * else a warning saying so, the report's triangles the mesh's, the given
+ * nodes kept where they were (tfem_get_mesh_nodes), the mesh unchanged
+ * after one cycle. Called before the shadow takes the call. */
+static void oracle_adapt(runner_t *R, int idx, const call_t *c, int st, const gbuf *g, const char *msg) {
+  shadow_t *s = &R->sh;
+  double tol = c->dv[2];
+  int goal = c->iv[4], maxc = c->iv[5];
+  int64_t maxu = adapt_max_unknowns(c->iv[6]);
+  const char *bad = goal != TFEM_ADAPT_GOAL_ENERGY && goal != TFEM_ADAPT_GOAL_COMPLIANCE ? "goal"
+                    : !(isfinite(tol) && tol > 0)                                         ? "tolerance"
+                    : maxu < 1                                                            ? "max_unknowns"
+                    : maxc < 1                                                            ? "max_cycles"
+                                                                                          : NULL;
+  if (bad) {
+    R->oracles[O_ADAPT]++;
+    if (st != TFEM_STATUS_INVALID_ARGUMENT)
+      finding(R, V_ADAPT, idx, "%s with %s bad (tolerance %g, goal %d, max_unknowns %" PRId64 ", max_cycles %d), not "
+              "INVALID_ARGUMENT: \"%.160s\"", status_name(st), bad, tol, goal, maxu, maxc, msg);
+    return;
+  }
+  if (st != TFEM_STATUS_OK) return;
+  R->oracles[O_ADAPT]++;
+  tfem_adapt_report rep;
+  int have = !c->out[0].null_;
+  if (have) memcpy(&rep, g[0].p, sizeof rep);
+  long n = probe_cycles(R->m);
+  s->adapt_n = -1;
+  if (n < 1 || n > maxc) {
+    finding(R, V_ADAPT, idx, "tfem_get_adapt_cycles holds %ld cycle(s) after an adaptive solve of max_cycles %d", n, maxc);
+    return;
+  }
+  if (have && rep.cycles != n) finding(R, V_ADAPT, idx, "report: %d cycles, tfem_get_adapt_cycles holds %ld", rep.cycles, n);
+  if (c->expect > 0 && R->pristine && idx < R->full_prefix && n != c->expect)
+    finding(R, V_ADAPT, idx, "%ld cycles, the scene expects %d (a uniform field: the estimate is round-off)", n, c->expect);
+  int64_t *un = xmalloc(sizeof(int64_t) * (size_t)n);
+  double *es = xmalloc(sizeof(double) * (size_t)n), *sec = xmalloc(sizeof(double) * (size_t)n);
+  int gs = tfem_get_adapt_cycles(R->m, un, es, sec, (size_t)n);
+  if (gs != TFEM_STATUS_OK) {
+    finding(R, V_ADAPT, idx, "tfem_get_adapt_cycles of length %ld (the cycles it holds) gives %s", n, status_name(gs));
+  } else {
+    int reached = es[n - 1] <= tol;
+    s->adapt_n = n;
+    s->adapt_idx = idx;
+    for (long k = 0; k < n && k < 64; ++k) s->adapt_unk[k] = un[k], s->adapt_est[k] = es[k];
+    for (long k = 0; k < n; ++k) {
+      if (!isfinite(es[k]) || es[k] < 0 || !isfinite(sec[k]) || sec[k] < 0 || un[k] < 1) {
+        finding(R, isfinite(es[k]) && isfinite(sec[k]) ? V_ADAPT : V_NAN_OK, idx, "cycle %ld: %" PRId64
+                " unknowns, estimate %g, %g s", k, un[k], es[k], sec[k]);
+        break;
+      }
+      if (k > 0 && un[k] < un[k - 1]) {
+        finding(R, V_ADAPT, idx, "cycle %ld has %" PRId64 " unknowns, cycle %ld had %" PRId64 " (a refined mesh has no fewer)",
+                k, un[k], k - 1, un[k - 1]);
+        break;
+      }
+      if (k > 0 && un[k] > maxu) {
+        finding(R, V_ADAPT, idx, "cycle %ld solved a refined mesh of %" PRId64 " unknowns, beyond max_unknowns %" PRId64
+                " (the header: the refinement stops when the next mesh would exceed it)", k, un[k], maxu);
+        break;
+      }
+      if (k + 1 < n && es[k] <= tol) {
+        finding(R, V_ADAPT, idx, "cycle %ld's estimate %g meets the tolerance %g, yet cycle %ld followed", k, es[k], tol,
+                k + 1);
+        break;
+      }
+    }
+    if (have && (rep.unknowns != un[n - 1] || memcmp(&rep.estimate, &es[n - 1], sizeof(double)) != 0 ||
+                 rep.reached != reached))
+      finding(R, V_ADAPT, idx, "report: unknowns %" PRId64 ", estimate %.17g, reached %d; the last cycle: %" PRId64
+              ", %.17g (tolerance %g)", rep.unknowns, rep.estimate, rep.reached, un[n - 1], es[n - 1], tol);
+    if (!reached) { /* a limit stopped it: a warning says so */
+      int count = 0, said = 0;
+      char w[1024];
+      if (tfem_warning_count(R->m, &count) == TFEM_STATUS_OK)
+        for (int k = 0; k < count && !said; ++k)
+          said = tfem_get_warning(R->m, k, w, sizeof w) == TFEM_STATUS_OK && strstr(w, "adaptive") != NULL;
+      if (!said)
+        finding(R, V_ADAPT, idx, "the tolerance %g is not met (estimate %g after %ld of %d cycles) and no warning of "
+                "the %d says so", tol, es[n - 1], n, maxc, count);
+    }
+  }
+  free(un), free(es), free(sec);
+  int nn = -1, nt = -1;
+  if (tfem_get_sizes(R->m, &nn, &nt, NULL) != TFEM_STATUS_OK) {
+    finding(R, V_ADAPT, idx, "tfem_get_sizes refused after the adaptive solve");
+    return;
+  }
+  if (have && rep.triangles != nt)
+    finding(R, V_ADAPT, idx, "report: %" PRId64 " triangles, the model's mesh %d", rep.triangles, nt);
+  if (s->exact) {
+    if (nn < s->nn || nt < s->nt || (n == 1 && (nn != s->nn || nt != s->nt))) {
+      finding(R, V_ADAPT, idx, "%ld cycle(s): the mesh went from %d nodes, %d triangles to %d, %d", n, s->nn, s->nt, nn,
+              nt);
+    } else {
+      double *xy = xmalloc(sizeof(double) * 2 * (size_t)nn + 1);
+      if (tfem_get_mesh_nodes(R->m, xy, 2 * (size_t)nn) == TFEM_STATUS_OK &&
+          memcmp(xy, s->xy, sizeof(double) * 2 * (size_t)s->nn) != 0) {
+        int v = 0;
+        while (v < s->nn && !memcmp(&xy[2 * v], &s->xy[2 * v], 2 * sizeof(double))) ++v;
+        finding(R, V_ADAPT, idx, "node %d moved from (%g, %g) to (%g, %g) (the header: the given nodes keep their indices)",
+                v + s->base, s->xy[2 * v], s->xy[2 * v + 1], xy[2 * v], xy[2 * v + 1]);
+      }
+      free(xy);
+    }
+  }
+}
+
+/* tfem_get_adapt_cycles: INVALID_STATE before any adaptive solve,
+ * BUFFER_TOO_SMALL below the cycles' count, else OK with the cycles of
+ * the last adaptive solve, whatever came after it. */
+static void oracle_adapt_cycles(runner_t *R, int idx, const call_t *c, int st, const gbuf *g, const char *msg) {
+  shadow_t *s = &R->sh;
+  long n = s->adapt_n;
+  size_t L = c->out[0].len;
+  int want = n == 0 ? TFEM_STATUS_INVALID_STATE : n < 0 ? -1 : L < (size_t)n ? TFEM_STATUS_BUFFER_TOO_SMALL : TFEM_STATUS_OK;
+  if (want < 0) return;
+  R->oracles[O_ADAPT]++;
+  if (st != want && n > 0 && st == TFEM_STATUS_INVALID_STATE) {
+    finding(R, V_ADAPT, idx, "INVALID_STATE: the %ld cycles of the adaptive solve of call #%d are gone (the calls since "
+            "made no adaptive solve; %s expected): \"%.160s\"", n, s->adapt_idx, status_name(want), msg);
+    return;
+  }
+  if (st != want) {
+    finding(R, V_ADAPT, idx, "%s for length %zu (%ld cycles of an adaptive solve%s), %s expected: \"%.160s\"",
+            status_name(st), L, n, n ? "" : ": none", status_name(want), msg);
+    return;
+  }
+  if (st != TFEM_STATUS_OK) return;
+  for (long k = 0; k < n && k < 64; ++k) {
+    int64_t u = s->adapt_unk[k];
+    double e = s->adapt_est[k];
+    if ((!c->out[0].null_ && memcmp(g[0].p + sizeof(int64_t) * (size_t)k, &u, sizeof u)) ||
+        (!c->out[1].null_ && memcmp(g[1].p + sizeof(double) * (size_t)k, &e, sizeof e))) {
+      finding(R, V_ADAPT, idx, "cycle %ld differs from what the adaptive solve of call #%d left (%" PRId64 " unknowns, "
+              "estimate %.17g)", k, s->adapt_idx, u, e);
+      return;
+    }
+  }
+}
+
 static void exec_call(runner_t *R, int idx) {
   call_t *c = &R->cs->c[idx];
   int fn = c->fn;
@@ -5151,6 +5836,12 @@ static void exec_call(runner_t *R, int idx) {
       for (int j = 0; j < 4; ++j)
         if (c->out[j].ls != LS_EXACT) L = c->out[j].len;
       for (int j = 0; j < 4; ++j) c->out[j].len = L;
+    }
+    if (fn == F_GET_ADAPT_CYCLES) { /* (one length for the three, as for the slave nodes) */
+      size_t L = c->out[0].len;
+      for (int j = 0; j < 3; ++j)
+        if (c->out[j].ls != LS_EXACT) L = c->out[j].len;
+      for (int j = 0; j < 3; ++j) c->out[j].len = L;
     }
     make_inputs(R, c, idx);
   }
@@ -5258,6 +5949,7 @@ static void exec_call(runner_t *R, int idx) {
       R->ctx = nc;
       R->cbase = c->iv[0];
       R->cbuilt = 0;
+      R->ctx_ring = -1;
     } else {
       st = TFEM_STATUS_INVALID_ARGUMENT; /* (NULL: the message is the thread's) */
     }
@@ -5307,6 +5999,12 @@ static void exec_call(runner_t *R, int idx) {
   case F_GET_CONTACT_SLAVE_NODES:
     st = tfem_get_contact_slave_nodes(m, o[0], o[1], o[2], o[3], c->out[0].len);
     break;
+  case F_GET_OUT_OF_PLANE: st = tfem_get_element_out_of_plane_stresses(m, o[0], c->out[0].len); break;
+  case F_SOLVE_ADAPTIVE:
+    st = tfem_solve_adaptive(m, c->dv[2], c->iv[4], adapt_max_unknowns(c->iv[6]), c->iv[5], c->in[0].null_ ? NULL : &opts,
+                             o[0]);
+    break;
+  case F_GET_ADAPT_CYCLES: st = tfem_get_adapt_cycles(m, o[0], o[1], o[2], c->out[0].len); break;
   case F_DESTROY_NULL: tfem_destroy(NULL); break;
   case F_RECREATE:
     tfem_destroy(R->m);
@@ -5341,9 +6039,18 @@ static void exec_call(runner_t *R, int idx) {
 
   if (R->phase == 1) {
     /* Replay: the same call must succeed again with the same outputs. */
-    int v = V_NONDET;
-    for (int k = 0; k < idx; ++k)
+    int v = V_NONDET, known = 0;
+    for (int k = 0; k < idx; ++k) {
       if (R->cs->c[k].status != TFEM_STATUS_OK) v = V_STATE;
+      known |= !API_FUZZ_ADAPT_FAILURE_RESTORES && R->cs->c[k].fn == F_SOLVE_ADAPTIVE && R->cs->c[k].ran &&
+               !R->cs->c[k].null_model && R->cs->c[k].status != TFEM_STATUS_OK &&
+               R->cs->c[k].status != TFEM_STATUS_INVALID_ARGUMENT; /* (the defect above, when not checked) */
+    }
+    if (known) {
+      for (int j = 0; j < nout; ++j) free(g[j].blk);
+      free(vtu);
+      return;
+    }
     char why[400] = "";
     if (st != TFEM_STATUS_OK) {
       char msg[300] = "";
@@ -5410,6 +6117,11 @@ static void exec_call(runner_t *R, int idx) {
     char ex[600];
     excerpt(msg, strlen(msg), ex, sizeof ex);
     printf(" -> %s%s%s\n", status_name(st), st ? ": " : "", st ? ex : "");
+    if (fn == F_SOLVE_ADAPTIVE && st == TFEM_STATUS_OK && !c->out[0].null_) {
+      const tfem_adapt_report *ar = (const tfem_adapt_report *)(const void *)g[0].p;
+      printf("       (%d cycle(s) of at most %d, reached %d, %" PRId64 " unknowns, %" PRId64 " triangles, estimate %.3g, "
+             "tolerance %g)\n", ar->cycles, c->iv[5], ar->reached, ar->unknowns, ar->triangles, ar->estimate, c->dv[2]);
+    }
   }
   if (e0 >= 0 && e1 > e0) {
     /* Bytes are claimed once: with threads, other calls may overlap. */
@@ -5654,6 +6366,24 @@ static void exec_call(runner_t *R, int idx) {
         else if (op->law != 0 || op->inversion_test != 0 || op->max_iterations != 50 || op->refactorize != 0)
           finding(R, V_OTHER, idx, "default options %d %d %d %d differ from the header's", op->law, op->inversion_test,
                   op->max_iterations, op->refactorize);
+      } else if (b->kind == K_T) {
+        for (size_t i = 0; i < b->n; ++i) {
+          double v;
+          memcpy(&v, b->p + 8 * i, 8);
+          if (!gb_is_pattern(b, i) && !(isfinite(v) && v >= 0)) {
+            finding(R, isfinite(v) ? V_OTHER : V_NAN_OK, idx, "output %d element %zu = %g seconds", j, i, v);
+            break;
+          }
+        }
+      } else if (b->kind == K_AR) {
+        const tfem_adapt_report *ar = (const tfem_adapt_report *)(const void *)b->p;
+        if (!isfinite(ar->estimate) || !isfinite(ar->seconds))
+          finding(R, V_NAN_OK, idx, "adapt report estimate = %g, seconds = %g", ar->estimate, ar->seconds);
+        else if (ar->cycles < 1 || (ar->reached != 0 && ar->reached != 1) || ar->unknowns < 0 || ar->triangles < 1 ||
+                 ar->estimate < 0 || ar->seconds < 0)
+          finding(R, V_ADAPT, idx, "adapt report: cycles %d, reached %d, unknowns %" PRId64 ", triangles %" PRId64
+                  ", estimate %g, seconds %g", ar->cycles, ar->reached, ar->unknowns, ar->triangles, ar->estimate,
+                  ar->seconds);
       }
       /* Everything required written. */
       /* (a state's bytes, like a message's, may be the pattern's) */
@@ -5780,7 +6510,35 @@ static void exec_call(runner_t *R, int idx) {
   shadow_t *s = &R->sh;
   int need_results = fn == F_GET_DISPLACEMENTS || fn == F_GET_STRAINS || fn == F_GET_STRESSES ||
                      fn == F_GET_REACTIONS || fn == F_GET_MATRIX_SIZE || fn == F_GET_MATRIX ||
-                     fn == F_GET_EXTERNAL_WORK || fn == F_WRITE_VTU;
+                     fn == F_GET_EXTERNAL_WORK || fn == F_WRITE_VTU || fn == F_GET_OUT_OF_PLANE;
+  /* ---- axisymmetric bodies, the ring element, the adaptive solve ---- */
+  if (!c->null_model && fn == F_SET_MATERIAL) oracle_material(R, idx, c, st, msg);
+  if (hc && fn == F_CONTACT_ADD_SIDE && c->iv[2] >= 0 && c->iv[2] <= 2) {
+    /* a context is axisymmetric in every side or in none, an axisymmetric
+     * side at x >= 0 (src/contact/host.rs check_section) */
+    int ring = c->iv[2] == TFEM_PLANE_MODE_AXISYMMETRIC, across = -1;
+    const double *xy = c->in[1].null_ ? NULL : c->in[1].p;
+    for (int i = 0; ring && xy && i < c->iv[3] && 2 * i + 1 < c->in[1].n && across < 0; ++i)
+      if (xy[2 * i] < 0) across = i;
+    int mixed = R->ctx_ring >= 0 && R->ctx_ring != ring;
+    R->oracles[O_AXI] += mixed || across >= 0;
+    if (st == TFEM_STATUS_OK && (mixed || across >= 0))
+      finding(R, V_AXI, idx, "tfem_contact_add_side (plane mode %d) is OK although %s", c->iv[2],
+              mixed ? "the context's sides before it are of the other section" : "a node is at x < 0");
+    if (st == TFEM_STATUS_OK) R->ctx_ring = ring;
+  }
+  if (fn == F_ELEMENT_STIFFNESS && st == TFEM_STATUS_OK && !c->out[0].null_)
+    oracle_element_stiffness(R, idx, c, (const double *)(const void *)g[0].p);
+  if (!c->null_model && fn == F_SOLVE_ADAPTIVE) oracle_adapt(R, idx, c, st, g, msg);
+  if (!c->null_model && fn == F_GET_ADAPT_CYCLES) oracle_adapt_cycles(R, idx, c, st, g, msg);
+  if (!c->null_model && st == TFEM_STATUS_OK && s->axi &&
+      (fn == F_SOLVE || fn == F_SOLVE_CONTACT || fn == F_STEP || fn == F_SOLVE_ADAPTIVE)) {
+    /* an axisymmetric model's solve: no body across the axis, u_r = 0 on it */
+    char why[200];
+    R->oracles[O_AXI] += s->exact;
+    if (sh_axis_violation(s, INT_MIN, why, sizeof why) >= 0)
+      finding(R, V_AXI, idx, "OK for an axisymmetric model although %s (the header: refused by the solve)", why);
+  }
   int need_contact = fn == F_GET_CONTACT_ACTIVE || fn == F_GET_CONTACT_PRESSURE || fn == F_GET_CONTACT_ELEMENTS ||
                      fn == F_GET_CONTACT_REPORT || fn == F_GET_CONTACT_FORCES || fn == F_GET_CONTACT_GAPS ||
                      fn == F_GET_CONTACT_NODAL_PRESSURES || fn == F_GET_CONTACT_PAIR_NODAL_PRESSURES ||
@@ -5963,8 +6721,11 @@ static void exec_call(runner_t *R, int idx) {
   if (fn == F_REVERT_STEP && !c->null_model && st != TFEM_STATUS_OK && st != TFEM_STATUS_INVALID_STATE && !known_revert)
     finding(R, V_STEP, idx, "%s (the header: refused with INVALID_STATE only, when there is no step to revert or the "
             "contact mesh changed since): \"%.160s\"", status_name(st), msg);
-  if (c->want && R->pristine && idx < R->full_prefix && st != c->want - 1 && !known_revert)
-    finding(R, strcmp(R->cs->kind, "mortar") == 0 || fn == F_SET_CONTACT_WEIGHTING || fn == F_GET_CONTACT_WEIGHTING
+  if (c->want && R->pristine && idx < R->full_prefix && st != c->want - 1 && !known_revert &&
+      !(fn == F_GET_ADAPT_CYCLES && s->adapt_n < 0)) /* (cycles not known here: the switch above) */
+    finding(R, strcmp(R->cs->kind, "axisymmetric") == 0 ? V_AXI
+               : strcmp(R->cs->kind, "adaptive") == 0   ? V_ADAPT
+               : strcmp(R->cs->kind, "mortar") == 0 || fn == F_SET_CONTACT_WEIGHTING || fn == F_GET_CONTACT_WEIGHTING
                    ? V_WEIGHTING : V_STEP,
             idx, "%s, the scene expects %s (weighting %d): \"%.160s\"", status_name(st), status_name(c->want - 1),
             s->weighting, msg);
@@ -5988,7 +6749,14 @@ static void exec_call(runner_t *R, int idx) {
     snprintf(named, sizeof named, "weighting = %d", w);
     snprintf(pnamed, sizeof pnamed, "contact pair %d has", unserved);
     R->oracles[O_WEIGHTING]++;
-    if (unserved >= 0 && st == TFEM_STATUS_OK)
+    if (w == TFEM_CONTACT_WEIGHTING_MORTAR && s->axi) {
+      /* (axisymmetric bodies take B: the mortar weighting refused,
+       * INVALID_ARGUMENT, src/model/problem.rs set_contact_weighting) */
+      R->oracles[O_AXI]++;
+      if (st != TFEM_STATUS_INVALID_ARGUMENT)
+        finding(R, V_AXI, idx, "tfem_set_contact_weighting(1) with axisymmetric bodies: %s, not INVALID_ARGUMENT: "
+                "\"%.160s\"", status_name(st), msg);
+    } else if (unserved >= 0 && st == TFEM_STATUS_OK)
       finding(R, V_WEIGHTING, idx, "tfem_set_contact_weighting(1) is OK with pair %d %s (refused since dc75b81)",
               unserved, s->pair_user[unserved] ? "declared with a contact mesh of its own" : "frictional");
     else if (unserved >= 0 && (st != TFEM_STATUS_INVALID_ARGUMENT || !strstr(msg, pnamed)))
@@ -6156,6 +6924,18 @@ static void exec_call(runner_t *R, int idx) {
       break;
     case F_SET_BOUNDARY_EDGES: case F_ADD_BOUNDARY_EDGES:
       break; /* (the shadow's edges: below) */
+    case F_SET_MATERIAL: {
+      int k = sh_material(s, c->iv[0]);
+      if (k < 0 && s->nmat < 16) k = s->nmat++;
+      if (k >= 0) {
+        s->mat_body[k] = c->iv[0];
+        s->mat_plane[k] = c->iv[1];
+        s->mat_young[k] = c->dv[0];
+        s->mat_nu[k] = c->dv[1];
+      }
+      s->axi = c->iv[1] == TFEM_PLANE_MODE_AXISYMMETRIC; /* (one section for all: a mix is refused) */
+      break;
+    }
     case F_FIX: case F_FIX_EDGES:
       if (s->exact) {
         int comp = c->iv[1], reported = 0, nodes[2];
@@ -6387,24 +7167,35 @@ static void exec_call(runner_t *R, int idx) {
       }
       s->pre_valid = s->pre_disp_ok = 0;
       goto keep_results;
-    case F_SOLVE: case F_SOLVE_CONTACT: {
-      s->results = fn == F_SOLVE ? 1 : 2;
+    case F_SOLVE: case F_SOLVE_CONTACT: case F_SOLVE_ADAPTIVE: {
+      /* (an adaptive solve: a contact solve when the model has pairs; a
+       * refined mesh is not known here: the shadow's mesh stops being exact,
+       * its contact mesh is another) */
+      int contact = fn == F_SOLVE_CONTACT || (fn == F_SOLVE_ADAPTIVE && s->npairs > 0), was_exact = s->exact;
+      if (fn == F_SOLVE_ADAPTIVE) {
+        int nn = -1, nt = -1;
+        if (tfem_get_sizes(R->m, &nn, &nt, NULL) != TFEM_STATUS_OK || !s->exact || nn != s->nn || nt != s->nt) {
+          s->exact = 0;
+          s->prob_gen++;
+        }
+      }
+      s->results = contact ? 2 : 1;
       s->no_matrix = 0;
       s->res_unknown = 0;
       s->pre_valid = s->pre_disp_ok = 0;
       s->matrix_dropped = 0;
       s->sol_gen++;
-      s->contact_test = fn == F_SOLVE_CONTACT && !c->in[0].null_ ? c->iv[1] : TFEM_INVERSION_TEST_LINEARISED;
-      s->res_fam = fn == F_SOLVE_CONTACT ? sh_families(s) : 0;
-      s->contact_law = fn == F_SOLVE_CONTACT && !c->in[0].null_ ? c->iv[0] : TFEM_CONTACT_LAW_FRICTIONLESS;
+      s->contact_test = contact && !c->in[0].null_ ? c->iv[1] : TFEM_INVERSION_TEST_LINEARISED;
+      s->res_fam = contact ? sh_families(s) : 0;
+      s->contact_law = contact && !c->in[0].null_ ? c->iv[0] : TFEM_CONTACT_LAW_FRICTIONLESS;
       s->relres = NAN;
-      if (!c->out[0].null_) {
+      if (!c->out[0].null_ && fn != F_SOLVE_ADAPTIVE) {
         const tfem_solve_info *inf = fn == F_SOLVE ? (const tfem_solve_info *)(const void *)g[0].p
                                                    : &((const tfem_contact_report *)(const void *)g[0].p)->info;
         s->relres = inf->relative_residual;
         s->cond = inf->condition_estimate;
       }
-      if (s->exact)
+      if (was_exact)
         for (int l = 0; l < s->nl; ++l) {
           int found = 0;
           for (int e = 0; e < s->ne && !found; ++e) found = s->tag[e] == s->load[l].tag;
@@ -6483,6 +7274,22 @@ static void exec_call(runner_t *R, int idx) {
       sh_clear_mesh(s);
       s->threads = 0;
       s->weighting = TFEM_CONTACT_WEIGHTING_AUTO;
+      s->nmat = s->axi = 0;
+      s->adapt_n = 0;
+      goto keep_results;
+    case F_GET_OUT_OF_PLANE:
+      if (c->oracle == 2 && R->pristine && idx < R->full_prefix && out_full(c, 0)) {
+        /* a pristine scene's closed form: every value within or_rtol of or_expect's magnitude of 0 */
+        const double *v = (const double *)(const void *)g[0].p;
+        for (long t = 0; t < c->out[0].req; ++t)
+          if (!(fabs(v[t]) <= c->or_rtol * fabs(c->or_expect))) {
+            finding(R, V_AXI, idx, "triangle %ld: out-of-plane (hoop) stress %.6g, exactly 0 for the uniform axial "
+                    "stress %g of this scene", t + s->base, v[t], c->or_expect);
+            break;
+          }
+      }
+      if (out_full(c, 0) && s->exact && s->results && !s->res_unknown && c->out[0].req == s->nt)
+        oracle_out_of_plane(R, idx, (const double *)(const void *)g[0].p);
       goto keep_results;
     case F_SET_CONTACT_STATE: {
 #if !API_FUZZ_FRICTION_STATE_RESULTS
@@ -6565,7 +7372,13 @@ static void exec_call(runner_t *R, int idx) {
     s->sol_gen++;
   keep_results:;
   }
-  if (st != TFEM_STATUS_OK && !c->null_model && (fn == F_SOLVE || fn == F_SOLVE_CONTACT)) s->matrix_dropped = 1;
+  if (st != TFEM_STATUS_OK && !c->null_model && (fn == F_SOLVE || fn == F_SOLVE_CONTACT || fn == F_SOLVE_ADAPTIVE))
+    s->matrix_dropped = 1;
+  if (!API_FUZZ_ADAPT_FAILURE_RESTORES && st != TFEM_STATUS_OK && !c->null_model && fn == F_SOLVE_ADAPTIVE) {
+    /* (the defects above, when not checked) */
+    s->adapt_n = -1;
+    if (st != TFEM_STATUS_INVALID_ARGUMENT) s->res_unknown = 1;
+  }
 
   /* Keep the outputs for the replay. */
   if (st == TFEM_STATUS_OK) {
@@ -6618,6 +7431,8 @@ static const char *c_type(int kind) {
   case K_U8: return "uint8_t";
   case K_SI: return "tfem_solve_info";
   case K_RE: return "tfem_contact_report";
+  case K_AR: return "tfem_adapt_report";
+  case K_T: return "double";
   default: return "tfem_contact_options";
   }
 }
@@ -6889,6 +7704,24 @@ static void c_emit_call(FILE *f, const call_t *c, int idx) {
   case F_GET_CONTACT_SLAVE_NODES:
     fprintf(f, "    s = tfem_get_contact_slave_nodes(%s, %s, %s, %s, %s, %zu);\n", M, o[0], o[1], o[2], o[3], len[0]);
     break;
+  case F_GET_OUT_OF_PLANE:
+    fprintf(f, "    s = tfem_get_element_out_of_plane_stresses(%s, %s, %zu);\n", M, o[0], len[0]);
+    break;
+  case F_SOLVE_ADAPTIVE: {
+    char mu[32];
+    int64_t u = adapt_max_unknowns(I[6]);
+    if (u == INT64_MAX) snprintf(mu, sizeof mu, "INT64_MAX");
+    else if (u == INT64_MIN) snprintf(mu, sizeof mu, "INT64_MIN");
+    else snprintf(mu, sizeof mu, "%" PRId64, u);
+    if (!c->in[0].null_)
+      fprintf(f, "    tfem_contact_options opt = {%d, %s, %s, %d, %d, %d};\n", I[0], d[0], d[1], I[1], I[2], I[3]);
+    fprintf(f, "    s = tfem_solve_adaptive(%s, %s, %d, %s, %d, %s, %s);\n", M, d[2], I[4], mu, I[5],
+            c->in[0].null_ ? "NULL" : "&opt", o[0]);
+    break;
+  }
+  case F_GET_ADAPT_CYCLES:
+    fprintf(f, "    s = tfem_get_adapt_cycles(%s, %s, %s, %s, %zu);\n", M, o[0], o[1], o[2], len[0]);
+    break;
   case F_DESTROY_NULL: fprintf(f, "    tfem_destroy(NULL);\n"); break;
   case F_RECREATE: fprintf(f, "    tfem_destroy(m);\n    m = tfem_create();\n"); break;
   default: break;
@@ -6916,6 +7749,13 @@ static void c_emit_call(FILE *f, const call_t *c, int idx) {
         case K_U8: fprintf(f, "      printf(\"%%s #%d bytes hash %%016llx\\n\", L, fnv(o%d, %zu));\n", idx, j, n); break;
         case K_SI: fprintf(f, "      dump_info(%d, &o%d);\n", idx, j); break;
         case K_RE: fprintf(f, "      dump_report(%d, &o%d);\n", idx, j); break;
+        case K_T: fprintf(f, "      dump_d(%d, \"o%d (seconds)\", %so%d, %zu);\n", idx, j, p, j, n); break;
+        case K_AR:
+          fprintf(f, "      printf(\"%%s #%d adapt report: cycles %%d reached %%d unknowns %%lld triangles %%lld estimate "
+                     "%%.17g seconds %%g\\n\", L, o%d.cycles, o%d.reached, (long long)o%d.unknowns, (long long)o%d.triangles, "
+                     "o%d.estimate, o%d.seconds);\n",
+                  idx, j, j, j, j, j, j);
+          break;
         default:
           fprintf(f, "      printf(\"%%s #%d options %%d %%g %%g %%d %%d %%d\\n\", L, o%d.law, o%d.contact_modulus, o%d.lambda, "
                      "o%d.inversion_test, o%d.max_iterations, o%d.refactorize);\n",
@@ -7492,6 +8332,140 @@ static int self_test(void) {
     sh_clear_mesh(&sh);
     ST(plus_zero_output(F_GET_CONTACT_GAPS) && plus_zero_output(F_GET_DISPLACEMENTS) && !plus_zero_output(F_GET_JACOBIANS) &&
        !plus_zero_output(F_GET_MATRIX));
+  }
+  /* The adaptive solve and axisymmetric bodies (2026-11-29). */
+  ST(adapt_max_unknowns(INT_MAX) == INT64_MAX && adapt_max_unknowns(INT_MIN) == INT64_MIN && adapt_max_unknowns(300) == 300);
+  ST(enum_max('P') == TFEM_PLANE_MODE_AXISYMMETRIC && plus_zero_output(F_GET_OUT_OF_PLANE) && reads_only(F_GET_ADAPT_CYCLES));
+  {
+    /* the adaptive limits stay cheap: max_cycles never above 6 */
+    rng_t q = {99};
+    ctx_t cx0;
+    memset(&cx0, 0, sizeof cx0);
+    int ok = 1;
+    for (int k = 0; k < 2000; ++k) {
+      int w = wild_int(&q, 'Y', 3, &cx0), p = plausible_int(&q, 'Y', &cx0);
+      ok &= w <= 6 && p >= 1 && p <= 6;
+    }
+    ST(ok);
+  }
+  {
+    /* a report's seconds and the cycles' timings are left out of the
+     * replay's comparison, the rest not */
+    gbuf a, b;
+    gb_alloc(&a, K_AR, 1);
+    gb_alloc(&b, K_AR, 1);
+    tfem_adapt_report x = {3, 1, 100, 50, 0.01, 1.5}, y = x;
+    y.seconds = 2.5;
+    memcpy(a.p, &x, sizeof x);
+    memcpy(b.p, &y, sizeof y);
+    size_t na, nb;
+    unsigned char *ba = out_bytes(&a, &na), *bb = out_bytes(&b, &nb);
+    ST(na == nb && !memcmp(ba, bb, na));
+    free(bb);
+    y.estimate = nextafter(0.01, 1.0);
+    memcpy(b.p, &y, sizeof y);
+    bb = out_bytes(&b, &nb);
+    ST(na == nb && memcmp(ba, bb, na) != 0);
+    free(ba), free(bb), free(a.blk), free(b.blk);
+    gb_alloc(&a, K_T, 2);
+    ST(gb_is_pattern(&a, 0) && gb_untouched(&a));
+    double t = 0.25;
+    memcpy(a.p, &t, 8);
+    ST(!gb_is_pattern(&a, 0));
+    ba = out_bytes(&a, &na);
+    ST(na == 16 && ba[0] == 0 && ba[15] == 0);
+    free(ba), free(a.blk);
+  }
+  {
+    /* the axis of an axisymmetric model, on the shadow's unit square */
+    shadow_t sh;
+    sh_init(&sh);
+    double xy[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    int tri[6] = {0, 1, 2, 0, 2, 3}, body[2] = {1, 1};
+    char why[200];
+    sh_new_mesh(&sh, 4, xy, 2, tri, body, 0);
+    ST(sh_axis_violation(&sh, INT_MIN, why, sizeof why) == 0); /* node 0 on the axis, u_r free */
+    sh.presc[0] = 0.0;
+    ST(sh_axis_violation(&sh, INT_MIN, why, sizeof why) == 3);
+    sh.presc[6] = 1e-3; /* u_r prescribed, not to 0 */
+    ST(sh_axis_violation(&sh, INT_MIN, why, sizeof why) == 3);
+    sh.presc[6] = 0.0;
+    ST(sh_axis_violation(&sh, INT_MIN, why, sizeof why) == -1 && sh_axis_violation(&sh, 1, why, sizeof why) == -1);
+    sh.xy[6] = -1e-14; /* within the library's 1e-12 of the size: on the axis, not across */
+    ST(sh_axis_violation(&sh, 1, why, sizeof why) == -1);
+    sh.xy[6] = -1e-3; /* across */
+    ST(sh_axis_violation(&sh, 1, why, sizeof why) == 3 && sh_axis_violation(&sh, INT_MIN, why, sizeof why) == 3);
+    ST(sh_axis_violation(&sh, 2, why, sizeof why) == -1);
+    sh.axi = 1, sh.nmat = 1, sh.mat_body[0] = 1, sh.mat_plane[0] = TFEM_PLANE_MODE_AXISYMMETRIC;
+    double f[8];
+    ST(!sh_nodal_forces(&sh, f)); /* (the ring's forces are not made here) */
+    sh.adapt_n = 2;
+    sh_clear_mesh(&sh); /* (the materials and the cycles are the model's) */
+    ST(sh.axi == 1 && sh.nmat == 1 && sh_material(&sh, 1) == 0 && sh.adapt_n == 2 && !sh.has_mesh);
+    sh_clear_mesh(&sh);
+  }
+  {
+    /* the ring element's oracle: K = v v^T with v off the y DOFs is
+     * symmetric and gives no force for an axial translation; a breach of
+     * either, or a corner at x < 0, is a finding */
+    runner_t R0;
+    case_t cs0;
+    memset(&R0, 0, sizeof R0);
+    memset(&cs0, 0, sizeof cs0);
+    cs0.kind = "self-test";
+    R0.cs = &cs0;
+    sh_init(&R0.sh);
+    call_t c0;
+    memset(&c0, 0, sizeof c0);
+    c0.fn = F_ELEMENT_STIFFNESS;
+    c0.iv[0] = TFEM_PLANE_MODE_AXISYMMETRIC;
+    double xy[6] = {0, 0, 1, 0, 0, 1}, v[6] = {1, 0, 2, 0, 3, 0}, k[36];
+    in_set(&c0, 0, xy, 6, sizeof(double));
+    for (int i = 0; i < 36; ++i) k[i] = v[i / 6] * v[i % 6];
+    oracle_element_stiffness(&R0, 0, &c0, k);
+    ST(R0.counts[V_AXI] == 0);
+    k[1] += 1e-3; /* K[0][1] != K[1][0] */
+    oracle_element_stiffness(&R0, 0, &c0, k);
+    ST(R0.counts[V_AXI] == 1);
+    k[1] -= 1e-3, k[7] += 1.0; /* symmetric, but K t_y != 0 */
+    oracle_element_stiffness(&R0, 0, &c0, k);
+    ST(R0.counts[V_AXI] == 2);
+    k[7] -= 1.0, ((double *)c0.in[0].p)[2] = -0.5; /* corner 2 across the axis */
+    oracle_element_stiffness(&R0, 0, &c0, k);
+    ST(R0.counts[V_AXI] == 3);
+    call_free(&c0);
+    /* tfem_get_adapt_cycles against the shadow's cycles */
+    gbuf g3[3];
+    memset(&c0, 0, sizeof c0);
+    c0.fn = F_GET_ADAPT_CYCLES;
+    c0.out[0].len = 2;
+    gb_alloc(&g3[0], K_L, 2), gb_alloc(&g3[1], K_D, 2), gb_alloc(&g3[2], K_T, 2);
+    int64_t un[2] = {100, 250};
+    double es[2] = {0.3, 0.1};
+    memcpy(g3[0].p, un, sizeof un), memcpy(g3[1].p, es, sizeof es);
+    oracle_adapt_cycles(&R0, 0, &c0, TFEM_STATUS_INVALID_STATE, g3, ""); /* none yet: INVALID_STATE */
+    ST(R0.counts[V_ADAPT] == 0);
+    oracle_adapt_cycles(&R0, 0, &c0, TFEM_STATUS_OK, g3, "");
+    ST(R0.counts[V_ADAPT] == 1);
+    R0.sh.adapt_n = 2, R0.sh.adapt_unk[0] = 100, R0.sh.adapt_unk[1] = 250, R0.sh.adapt_est[0] = 0.3, R0.sh.adapt_est[1] = 0.1;
+    oracle_adapt_cycles(&R0, 0, &c0, TFEM_STATUS_OK, g3, "");
+    ST(R0.counts[V_ADAPT] == 1);
+    R0.sh.adapt_est[1] = nextafter(0.1, 1.0); /* a cycle changed since */
+    oracle_adapt_cycles(&R0, 0, &c0, TFEM_STATUS_OK, g3, "");
+    ST(R0.counts[V_ADAPT] == 2);
+    c0.out[0].len = 1; /* one short */
+    oracle_adapt_cycles(&R0, 0, &c0, TFEM_STATUS_OK, g3, "");
+    oracle_adapt_cycles(&R0, 0, &c0, TFEM_STATUS_BUFFER_TOO_SMALL, g3, "");
+    ST(R0.counts[V_ADAPT] == 3);
+    /* tfem_solve_adaptive: a bad argument accepted is a finding (no library call on that path) */
+    c0.fn = F_SOLVE_ADAPTIVE;
+    c0.iv[4] = 0, c0.iv[5] = 2, c0.iv[6] = 300, c0.dv[2] = NAN;
+    oracle_adapt(&R0, 0, &c0, TFEM_STATUS_OK, g3, "");
+    oracle_adapt(&R0, 0, &c0, TFEM_STATUS_INVALID_ARGUMENT, g3, "");
+    c0.dv[2] = 0.1, c0.iv[6] = INT_MIN; /* max_unknowns INT64_MIN */
+    oracle_adapt(&R0, 0, &c0, TFEM_STATUS_NOT_CONVERGED, g3, "");
+    ST(R0.counts[V_ADAPT] == 5);
+    for (int j = 0; j < 3; ++j) free(g3[j].blk);
   }
   /* Case generation is a pure function of (seed, case). */
   for (long k = 0; k < 200; ++k) {

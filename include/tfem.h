@@ -1091,8 +1091,8 @@ enum tfem_status tfem_solve_adaptive(struct tfem_model *model,
                                      struct tfem_adapt_report *report);
 
 /**
- * Copies each cycle of the last `tfem_solve_adaptive` (`cycles` of its
- * report): its unknowns, its estimated relative error and its seconds
+ * Copies each cycle of the last successful `tfem_solve_adaptive`
+ * (`cycles` of its report): its unknowns, its estimated relative error and its seconds
  * (solve and estimate), into arrays of `length` values each: `unknowns`
  * may be NULL, `estimates` may be NULL, `seconds` may be NULL. Nothing is
  * written unless `length` holds every cycle.

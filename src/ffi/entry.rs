@@ -1171,8 +1171,6 @@ pub unsafe extern "C" fn tfem_solve_adaptive(
             contact,
             ..AdaptOptions::default()
         };
-        // The cycles of an earlier call do not outlive a new one that fails.
-        m.adapt.clear();
         let r = m.model.solve_adaptive(&options)?;
         let last = r.cycles.last().copied();
         write_optional(
@@ -1191,8 +1189,8 @@ pub unsafe extern "C" fn tfem_solve_adaptive(
     })
 }
 
-/// Copies each cycle of the last `tfem_solve_adaptive` (`cycles` of its
-/// report): its unknowns, its estimated relative error and its seconds
+/// Copies each cycle of the last successful `tfem_solve_adaptive`
+/// (`cycles` of its report): its unknowns, its estimated relative error and its seconds
 /// (solve and estimate), into arrays of `length` values each: `unknowns`
 /// may be NULL, `estimates` may be NULL, `seconds` may be NULL. Nothing is
 /// written unless `length` holds every cycle.

@@ -4,7 +4,7 @@
 use std::time::Instant;
 
 use super::Model;
-use super::estimate::{Estimate, estimate};
+use super::estimate::{Estimate, estimate, scaled};
 use crate::contact::ContactOptions;
 use crate::error::{Error, Result};
 use crate::fem::refine::Refinement;
@@ -159,7 +159,8 @@ impl Model {
                 (true, None) => self.solve_contact(&options.contact)?.info,
                 (false, _) => self.solve()?,
             };
-            let est = self.error_estimate()?;
+            // Scaled: the estimate an adaptive solve reads cannot overflow.
+            let est = scaled(&self.problem, self.solution()?, self.field()?)?;
             let relative = match options.goal {
                 Goal::Energy => est.relative(),
                 Goal::Compliance => est.relative() * est.relative(),

@@ -54,15 +54,64 @@ impl Estimate {
 /// A stress with its out-of-plane component: [σ_xx, σ_yy, σ_xy, σ_n].
 type Stress4 = [f64; 4];
 
-/// Estimates the error of the field `u` of `solution` on `problem`.
+/// Estimates the error of the field `u` of `solution` on `problem`; an
+/// error if η² or the energy exceed the doubles' range.
 pub(crate) fn estimate(problem: &Problem, solution: &Solution, u: &[f64]) -> Result<Estimate> {
+    let s = scaled(problem, solution, u)?;
+    let s2 = s.scale * s.scale;
+    let squared: Vec<f64> = s.squared.iter().map(|v| v * s2).collect();
+    let mesh = problem.mesh_ref()?;
+    ensure_finite(squared.iter().copied(), 1, "error estimate", |t| {
+        mesh.triangle_name(t)
+    })?;
+    let (global, energy) = (s.global * s.scale, s.energy * s.scale);
+    ensure_finite([global, energy], 1, "error estimate", |_| {
+        "the whole mesh (its sum)".to_string()
+    })?;
+    Ok(Estimate {
+        squared,
+        global,
+        energy,
+    })
+}
+
+/// The estimate of stresses divided by their largest component, `scale`:
+/// the same numbers over scale (η, the energy) and scale² (η_e²), which
+/// do not overflow where the stresses' squares would; what the adaptive
+/// solve marks and compares.
+pub(crate) struct Scaled {
+    /// η_e² / scale².
+    pub squared: Vec<f64>,
+    /// η / scale.
+    pub global: f64,
+    /// The energy norm / scale.
+    pub energy: f64,
+    /// The largest stress component (1 when all are zero).
+    pub scale: f64,
+}
+
+impl Scaled {
+    /// η over the field's energy norm.
+    pub fn relative(&self) -> f64 {
+        if self.energy > 0.0 {
+            self.global / self.energy
+        } else {
+            self.global
+        }
+    }
+}
+
+/// [`estimate`] on the stresses scaled to their largest component.
+pub(crate) fn scaled(problem: &Problem, solution: &Solution, u: &[f64]) -> Result<Scaled> {
     let elements = problem.elements()?;
     let mesh = elements.mesh();
     let section = problem.section();
     let in_plane = solution.stresses(problem, u)?;
     let normal = solution.out_of_plane_stresses(problem, u)?;
+    let largest = (in_plane.iter().flatten().chain(&normal)).fold(0.0f64, |m, v| m.max(v.abs()));
+    let scale = if largest > 0.0 { largest } else { 1.0 };
     let stresses: Vec<Stress4> = (in_plane.iter().zip(&normal))
-        .map(|(s, n)| [s[0], s[1], s[2], *n])
+        .map(|(s, n)| [s[0] / scale, s[1] / scale, s[2] / scale, *n / scale])
         .collect();
     let triangles = mesh.triangles();
     let geos: Vec<TriGeometry> = (triangles.iter())
@@ -108,10 +157,11 @@ pub(crate) fn estimate(problem: &Problem, solution: &Solution, u: &[f64]) -> Res
     ensure_finite([global, energy], 1, "error estimate", |_| {
         "the whole mesh (its sum)".to_string()
     })?;
-    Ok(Estimate {
+    Ok(Scaled {
         squared,
         global,
         energy,
+        scale,
     })
 }
 
@@ -146,8 +196,11 @@ fn compliance_form(material: &Material, s: &Stress4) -> f64 {
             // The in-plane D = [[a, l], [l, a]] ⊕ [μ] inverted.
             let d = material.d_matrix();
             let (a, l) = (d[0][0], d[0][1]);
-            let det = a * a - l * l;
-            (a * (s[0] * s[0] + s[1] * s[1]) - 2.0 * l * s[0] * s[1]) / det + s[2] * s[2] / d[2][2]
+            // 1/(a² − l²) as (1/(a − l))·(1/(a + l)), each factor formed
+            // alone: no product of two moduli, which overflows for E ~ 1e300.
+            let inv = 1.0 / (a - l);
+            let (c, m) = (inv * (a / (a + l)), inv * (l / (a + l)));
+            c * (s[0] * s[0] + s[1] * s[1]) - 2.0 * m * s[0] * s[1] + s[2] * s[2] / d[2][2]
         }
     }
 }
