@@ -1083,10 +1083,10 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_solve_adaptive
 
-    !> Copies each cycle of the last `tfem_solve_adaptive` (`cycles` of its report): its unknowns,
-    !! its estimated relative error and its seconds (solve and estimate), into arrays of `length`
-    !! values each: `unknowns` may be NULL, `estimates` may be NULL, `seconds` may be NULL. Nothing
-    !! is written unless `length` holds every cycle.
+    !> Copies each cycle of the last successful `tfem_solve_adaptive` (`cycles` of its report): its
+    !! unknowns, its estimated relative error and its seconds (solve and estimate), into arrays of
+    !! `length` values each: `unknowns` may be NULL, `estimates` may be NULL, `seconds` may be NULL.
+    !! Nothing is written unless `length` holds every cycle.
     function tfem_get_adapt_cycles(model, unknowns, estimates, seconds, length) &
         bind(C, name="tfem_get_adapt_cycles") result(status)
       import
