@@ -195,8 +195,9 @@ fn run(args: &Args, c: f64, h: f64) -> Result<Run, tfem::Error> {
             contact: options,
             progress: Some(|c: &Cycle| {
                 eprintln!(
-                    "cycle: {:>8} unknowns, estimated compliance error {:.3e}, {:.3} s",
-                    c.unknowns, c.estimate, c.seconds
+                    "cycle: {:>8} unknowns, estimated compliance error {:.3e}, contact edges \
+                     to {:.1e} of lc, {:.3} s",
+                    c.unknowns, c.estimate, c.contact_edge, c.seconds
                 )
             }),
             ..Default::default()
@@ -338,6 +339,7 @@ fn single(args: &Args) -> i32 {
             obj["unknowns"] = json!(last.map(|c| c.unknowns));
             obj["cycles"] = json!(a.cycles.len());
             obj["estimate"] = json!(last.map(|c| c.estimate));
+            obj["contact_edge"] = json!(last.map(|c| c.contact_edge));
             obj["tolerance_reached"] = json!(a.reached);
         }
         if let Some(case) = &reference {

@@ -70,6 +70,7 @@ pub use studies::{laplace, meshgen, oracle, scenes, verification};
 pub use contact::{ContactLaw, ContactOptions, ContactWeighting, InversionTest};
 pub use element::{Jmin, Tempering, TriGeometry};
 pub use error::{Error, Result, Status};
+pub use fem::curve::Curve;
 pub use material::{Material, PlaneMode, Section};
 pub use mesh::Mesh;
 pub use model::{Component, Model, Problem};

@@ -10,6 +10,7 @@
 
 use std::collections::{BTreeMap, HashMap, HashSet};
 
+use super::curve::Curve;
 use super::element::TriGeometry;
 use super::orientation::{Turned, orient};
 use crate::error::{Error, Result, preflight, reserved};
@@ -37,6 +38,8 @@ pub struct Mesh {
     bodies: Vec<i32>,
     index_base: usize,
     warnings: Vec<String>,
+    /// The curves declared on tags ([`Mesh::set_curve`]), by tag.
+    curves: Vec<(i32, Curve)>,
 }
 
 const MAX_LISTED: usize = 5;
@@ -347,6 +350,7 @@ impl Mesh {
             bodies,
             index_base,
             warnings: Vec::new(),
+            curves: Vec::new(),
         };
         mesh.collect_warnings(&turned, names);
         Ok(mesh)
@@ -568,6 +572,56 @@ impl Mesh {
     /// Tagged boundary edges.
     pub fn boundary_edges(&self) -> &[BoundaryEdge] {
         &self.edges
+    }
+
+    /// Declares the exact shape of the boundary tagged `tag`, so that
+    /// refinement ([`crate::fem::refine`]) puts the nodes it adds on that
+    /// tag's edges on the curve rather than at their chords' midpoints; it
+    /// replaces a curve declared on the tag before. Refused, the mesh
+    /// unchanged, if the curve is ill defined, no edge has the tag, or a
+    /// node of the tag's edges lies farther from the curve than
+    /// [`crate::fem::curve::CURVE_TOLERANCE`] of its size (naming the node
+    /// and its distance).
+    pub fn set_curve(&mut self, tag: i32, curve: Curve) -> Result<()> {
+        curve.validate()?;
+        let mut any = false;
+        for e in self.edges.iter().filter(|e| e.tag == tag) {
+            any = true;
+            for v in e.nodes {
+                let d = curve.distance(self.nodes[v]);
+                if !(d <= curve.tolerance()) {
+                    return Err(Error::argument(format!(
+                        "{} of an edge tagged {tag} lies {d:.3e} from the curve declared on                          the tag (at most {:.3e}): {curve:?}",
+                        self.node_name(v),
+                        curve.tolerance()
+                    )));
+                }
+            }
+        }
+        if !any {
+            return Err(Error::argument(format!(
+                "no boundary edge has tag {tag}: a curve is declared on a tag of edges"
+            )));
+        }
+        self.curves.retain(|(t, _)| *t != tag);
+        self.curves.push((tag, curve));
+        Ok(())
+    }
+
+    /// The curve declared on `tag`, if any.
+    pub fn curve(&self, tag: i32) -> Option<&Curve> {
+        self.curves.iter().find(|(t, _)| *t == tag).map(|(_, c)| c)
+    }
+
+    /// The curves declared on tags, with their tags.
+    pub fn curves(&self) -> &[(i32, Curve)] {
+        &self.curves
+    }
+
+    /// Gives this mesh (a refinement of `from`, whose nodes on curves are
+    /// on them) the curves of `from`.
+    pub(crate) fn carry_curves(&mut self, from: &Mesh) {
+        self.curves = from.curves.clone();
     }
 
     /// Index base used in messages (0 for C, 1 for Fortran).

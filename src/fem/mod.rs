@@ -3,11 +3,13 @@
 //! unknowns and the sparsity pattern ([`assembly`]), loads ([`loads`]),
 //! the one loop over body elements ([`element_loop`]), the bodies' part
 //! of the system assembled on the pattern ([`body`]), the orientation
-//! of triangles numbered clockwise ([`orientation`]) and adaptive
-//! refinement by newest-vertex bisection ([`refine`]).
+//! of triangles numbered clockwise ([`orientation`]), adaptive
+//! refinement by newest-vertex bisection ([`refine`]) and the curves it
+//! puts new boundary nodes on ([`curve`]).
 
 pub mod assembly;
 pub mod body;
+pub mod curve;
 pub mod element;
 pub mod element_loop;
 pub mod loads;

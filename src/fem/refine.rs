@@ -58,12 +58,17 @@
 //! children's), the index base, and the tagged boundary edges: a bisected
 //! one becomes its two halves with the same tag and direction, its owner
 //! recomputed as [`Mesh::checked_edges`] finds it (the first triangle with
-//! that side when only one has it). The refined mesh's warnings
+//! that side when only one has it), and the curves declared on tags
+//! ([`crate::fem::curve`]): the new node of a bisected edge whose tag has a
+//! curve is put on the curve instead of at the chord's midpoint (an error,
+//! the state unchanged, if that would fold a triangle or the edge is a
+//! chord through a circle's centre). The refined mesh's warnings
 //! are its own validation's; warnings added to the old mesh with
 //! [`Mesh::warn`] are not carried over.
 
 use std::collections::HashMap;
 
+use super::curve::Curve;
 use super::mesh::{BoundaryEdge, Mesh};
 use crate::error::{Error, Result, reserved};
 
@@ -336,8 +341,12 @@ impl Refinement {
         let rot = self.rotated(mesh)?;
         let edges = Edges::new(mesh.nodes().len(), &rot)?;
         let mark = marked_edges(mesh.nodes(), &edges, &rot, marked);
-        let mids = Midpoints::of(mesh.nodes(), &edges, &mark)?;
+        let curved = curved_edges(mesh, &edges, &rot, &mark)?;
+        let mids = Midpoints::of(mesh, &edges, &mark, &curved)?;
         let children = self.children(mesh, &rot, &edges, &mark, &mids.index)?;
+        if !curved.is_empty() {
+            unfolded(mesh, &mids, &children)?;
+        }
         let (sides, tags) = split_boundary(mesh, &edges, &rot, &mark, &mids.index);
         drop(edges);
         drop(rot);
@@ -349,6 +358,7 @@ impl Refinement {
         )?;
         let owned = with_owners(&refined, &sides, &tags);
         refined.replace_edges(owned);
+        refined.carry_curves(mesh);
         self.newest = children.newest;
         Ok(Refined {
             mesh: refined,
@@ -490,7 +500,15 @@ struct Midpoints {
 }
 
 impl Midpoints {
-    fn of(nodes: &[[f64; 2]], edges: &Edges, mark: &[bool]) -> Result<Midpoints> {
+    /// One new node per marked edge: its midpoint, or where its curve
+    /// bisects it for an edge in `curved`.
+    fn of(
+        mesh: &Mesh,
+        edges: &Edges,
+        mark: &[bool],
+        curved: &HashMap<usize, (i32, Curve)>,
+    ) -> Result<Midpoints> {
+        let nodes = mesh.nodes();
         let n_new = mark.iter().filter(|&&m| m).count();
         let mut out = Midpoints {
             nodes: reserved(nodes.len() + n_new, "the refined mesh's nodes")?,
@@ -502,12 +520,79 @@ impl Midpoints {
             if mark[e] {
                 out.index[e] = out.nodes.len();
                 let (a, b) = (nodes[p], nodes[q]);
-                out.nodes.push([0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])]);
+                let at = match curved.get(&e) {
+                    None => [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])],
+                    Some((tag, curve)) => curve.bisect(a, b).ok_or_else(|| {
+                        Error::argument(format!(
+                            "the edge from {} to {} (tag {tag}) is a chord through the centre \
+                             of its curve {curve:?}: the mesh is too coarse along it",
+                            mesh.node_name(p),
+                            mesh.node_name(q)
+                        ))
+                    })?,
+                };
+                out.nodes.push(at);
                 out.parents.push([p, q]);
             }
         }
         Ok(out)
     }
+}
+
+/// The marked edges that lie on a declared curve, with its tag: the
+/// boundary edges of a tag with a curve ([`Mesh::set_curve`]). An error
+/// naming the edge if one of its ends is off the curve (moved since).
+fn curved_edges(
+    mesh: &Mesh,
+    edges: &Edges,
+    rot: &[[usize; 3]],
+    mark: &[bool],
+) -> Result<HashMap<usize, (i32, Curve)>> {
+    let mut curved = HashMap::new();
+    if mesh.curves().is_empty() {
+        return Ok(curved);
+    }
+    for be in mesh.boundary_edges() {
+        let Some(curve) = mesh.curve(be.tag) else {
+            continue;
+        };
+        let [p, q] = be.nodes;
+        let Some(e) = edges.find(p, q, rot).filter(|&e| mark[e]) else {
+            continue;
+        };
+        if let Some(&v) =
+            (be.nodes.iter()).find(|&&v| curve.distance(mesh.nodes()[v]) > curve.tolerance())
+        {
+            return Err(Error::argument(format!(
+                "{} of an edge tagged {} lies {:.3e} from the tag's curve {curve:?}",
+                mesh.node_name(v),
+                be.tag,
+                curve.distance(mesh.nodes()[v])
+            )));
+        }
+        curved.entry(e).or_insert((be.tag, *curve));
+    }
+    Ok(curved)
+}
+
+/// Checks that no triangle turned over when its new nodes went onto a
+/// curve: a child of a triangle with J > 0 must have J > 0 (a chord much
+/// longer than the triangle is high, on a concave side, could fold it).
+fn unfolded(mesh: &Mesh, mids: &Midpoints, children: &Children) -> Result<()> {
+    let area = |nodes: &[[f64; 2]], [a, b, c]: [usize; 3]| {
+        let (p, q, r) = (nodes[a], nodes[b], nodes[c]);
+        (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
+    };
+    for (child, &t) in children.triangles.iter().zip(&children.parent) {
+        if area(mesh.nodes(), mesh.triangles()[t]) > 0.0 && area(&mids.nodes, *child) <= 0.0 {
+            return Err(Error::argument(format!(
+                "{}: putting its new nodes on the curve of its tag folds it; the mesh is too \
+                 coarse along the curve",
+                mesh.triangle_name(t)
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// The boundary edges of the refined mesh with their tags: a bisected one

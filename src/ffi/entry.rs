@@ -18,6 +18,7 @@ use super::plumbing::{
 use crate::contact::mortar::SlaveNode;
 use crate::contact::{ContactOptions, ContactWeighting};
 use crate::error::{Error, Result, Status};
+use crate::fem::curve::Curve;
 use crate::fem::element::{Tempering, TriGeometry, laplacian_stiffness, section_stiffness};
 use crate::fem::material::Material;
 use crate::fem::mesh::Mesh;
@@ -703,6 +704,34 @@ pub unsafe extern "C" fn tfem_clear_constraints(model: *mut TfemModel) -> Status
     with_model(model, |m| {
         m.model.clear_constraints();
         Ok(())
+    })
+}
+
+/// Declares that the boundary edges tagged `tag` lie on the circle of
+/// centre (`center_x`, `center_y`) and radius `radius` (> 0), so that
+/// `tfem_solve_adaptive` puts the nodes it adds on those edges on the
+/// circle rather than at the chords' midpoints: the refined boundary then
+/// converges to the circle (a cylinder's contact, a ring's bore). It
+/// replaces a curve declared on the tag before and changes nothing of a
+/// solve. Refused, nothing changed, if the circle is ill defined, no edge
+/// has the tag, or a node of its edges lies farther than 1e-6·radius from
+/// the circle (the message names the node).
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn tfem_set_boundary_circle(
+    model: *mut TfemModel,
+    tag: c_int,
+    center_x: f64,
+    center_y: f64,
+    radius: f64,
+) -> Status {
+    with_model(model, |m| {
+        m.model.set_curve(
+            tag,
+            Curve::Circle {
+                center: [center_x, center_y],
+                radius,
+            },
+        )
     })
 }
 

@@ -4,7 +4,7 @@
 use std::time::Instant;
 
 use super::Model;
-use super::estimate::{Estimate, estimate, scaled};
+use super::estimate::{Estimate, Scaled, estimate, scaled};
 use crate::contact::ContactOptions;
 use crate::error::{Error, Result};
 use crate::fem::refine::Refinement;
@@ -37,6 +37,13 @@ pub struct AdaptOptions {
     pub fraction: f64,
     /// The contact solves' options (unused without contact pairs).
     pub contact: ContactOptions,
+    /// Whether the edges of the contact zones must be resolved to the
+    /// tolerance too (true): an interface edge with one end pressed and
+    /// the other free locates the zone's edge only to its length ℓ_t, an
+    /// error of the contact length ℓc the energy estimate does not see;
+    /// while max ℓ_t/ℓc exceeds the tolerance the triangles that own such
+    /// edges are refined as well, and the tolerance is not reached.
+    pub resolve_contact_edges: bool,
     /// Called with each cycle as it ends (a progress line), if given.
     pub progress: Option<fn(&Cycle)>,
 }
@@ -50,6 +57,7 @@ impl Default for AdaptOptions {
             max_cycles: 30,
             fraction: 0.5,
             contact: ContactOptions::default(),
+            resolve_contact_edges: true,
             progress: None,
         }
     }
@@ -88,6 +96,10 @@ pub struct Cycle {
     pub triangles: usize,
     /// Its estimate of the goal's relative error.
     pub estimate: f64,
+    /// How finely it locates the edges of its contact zones: the longest
+    /// interface edge with one end pressed and one free, over the contact
+    /// length ℓc (0 without contact).
+    pub contact_edge: f64,
     /// Seconds of the cycle: solve and estimate (refinement not counted).
     pub seconds: f64,
 }
@@ -97,7 +109,8 @@ pub struct Cycle {
 pub struct AdaptReport {
     /// Every cycle, in order; the last is the model's solution.
     pub cycles: Vec<Cycle>,
-    /// Whether the last estimate meets the tolerance.
+    /// Whether the last estimate (and its contact edges, if they are to be
+    /// resolved) meets the tolerance.
     pub reached: bool,
     /// Total seconds, refinements included.
     pub seconds: f64,
@@ -148,51 +161,42 @@ impl Model {
         let t_start = Instant::now();
         let mut refinement = Refinement::new(self.problem.mesh_ref()?);
         let mut cycles = Vec::new();
-        let with_contact = !self.problem.contact_pairs().is_empty();
         // The coarser level's field on the refined mesh: where the next
         // contact solve starts.
         let mut guess: Option<Vec<f64>> = None;
         loop {
-            let t0 = Instant::now();
-            let info = match (with_contact, &guess) {
-                (true, Some(u)) => self.solve_contact_from(&options.contact, u)?.info,
-                (true, None) => self.solve_contact(&options.contact)?.info,
-                (false, _) => self.solve()?,
-            };
-            // Scaled: the estimate an adaptive solve reads cannot overflow.
-            let est = scaled(&self.problem, self.solution()?, self.field()?)?;
-            let relative = match options.goal {
-                Goal::Energy => est.relative(),
-                Goal::Compliance => est.relative() * est.relative(),
-            };
-            let mesh = self.problem.mesh_ref()?;
-            let cycle = Cycle {
-                unknowns: info.unknowns,
-                triangles: mesh.triangles().len(),
-                estimate: relative,
-                seconds: t0.elapsed().as_secs_f64(),
-            };
+            let (cycle, est, edges) = self.cycle(options, guess.as_deref())?;
             if let Some(progress) = options.progress {
                 progress(&cycle);
             }
             cycles.push(cycle);
-            if relative <= options.tolerance {
+            let goal_met = cycle.estimate <= options.tolerance;
+            let edges_met = cycle.contact_edge <= options.tolerance;
+            if goal_met && edges_met {
                 break;
             }
             if cycles.len() >= options.max_cycles {
-                self.warn_unreached(options, relative, "cycles");
+                self.warn_unreached(options, &cycle, "cycles");
                 break;
             }
-            let marked = dorfler(&est.squared, options.fraction);
+            let mut marked = if goal_met {
+                Vec::new()
+            } else {
+                dorfler(&est.squared, options.fraction)
+            };
+            if !edges_met {
+                marked.extend(edges.owners);
+            }
             if marked.is_empty() {
                 // An estimate of exactly zero: no mesh is better.
                 break;
             }
+            let mesh = self.problem.mesh_ref()?;
             let refined = refinement.refine(mesh, &marked)?;
             let interpolated = refined.interpolate(self.field()?, 2)?;
             let next = self.problem.refined(refined.mesh, &refined.parents)?;
             if unknowns_of(&next)? > options.max_unknowns {
-                self.warn_unreached(options, relative, "unknowns");
+                self.warn_unreached(options, &cycle, "unknowns");
                 break;
             }
             guess = Some(interpolated);
@@ -201,9 +205,9 @@ impl Model {
                 Ok(())
             })?;
         }
-        let reached = cycles
-            .last()
-            .is_some_and(|c| c.estimate <= options.tolerance);
+        let reached = cycles.last().is_some_and(|c| {
+            c.estimate <= options.tolerance && c.contact_edge <= options.tolerance
+        });
         Ok(AdaptReport {
             cycles,
             reached,
@@ -211,13 +215,98 @@ impl Model {
         })
     }
 
-    fn warn_unreached(&mut self, options: &AdaptOptions, reached: f64, limit: &str) {
+    /// One cycle's solve (a contact solve from `guess` where given) and
+    /// what it says of its error.
+    fn cycle(
+        &mut self,
+        options: &AdaptOptions,
+        guess: Option<&[f64]>,
+    ) -> Result<(Cycle, Scaled, ContactEdges)> {
+        let t0 = Instant::now();
+        let with_contact = !self.problem.contact_pairs().is_empty();
+        let info = match (with_contact, guess) {
+            (true, Some(u)) => self.solve_contact_from(&options.contact, u)?.info,
+            (true, None) => self.solve_contact(&options.contact)?.info,
+            (false, _) => self.solve()?,
+        };
+        // Scaled: the estimate an adaptive solve reads cannot overflow.
+        let est = scaled(&self.problem, self.solution()?, self.field()?)?;
+        let relative = match options.goal {
+            Goal::Energy => est.relative(),
+            Goal::Compliance => est.relative() * est.relative(),
+        };
+        let edges = if with_contact && options.resolve_contact_edges {
+            self.contact_edges()?
+        } else {
+            ContactEdges::default()
+        };
+        let cycle = Cycle {
+            unknowns: info.unknowns,
+            triangles: self.problem.mesh_ref()?.triangles().len(),
+            estimate: relative,
+            contact_edge: edges.relative,
+            seconds: t0.elapsed().as_secs_f64(),
+        };
+        Ok((cycle, est, edges))
+    }
+
+    /// The edges of the contact zones of the last contact solve: the
+    /// interface edges (boundary edges of a pair's tags) with one end
+    /// pressed and the other free, read from the nodal pressures (pressed:
+    /// above 1e-9 of the largest, round-off below).
+    fn contact_edges(&self) -> Result<ContactEdges> {
+        let pressure = self.contact_nodal_pressures()?;
+        let length = self.contact_report()?.contact_length;
+        let largest = pressure.iter().fold(0.0f64, |m, &p| m.max(p));
+        let pressed = |v: usize| pressure[v] > 1e-9 * largest;
+        let mesh = self.problem.mesh_ref()?;
+        let tags: Vec<i32> = (self.problem.contact_pairs().iter())
+            .flat_map(|p| [p.tag_a, p.tag_b])
+            .collect();
+        let mut out = ContactEdges::default();
+        let mut longest = 0.0f64;
+        for e in mesh.boundary_edges() {
+            let [p, q] = e.nodes;
+            let (Some((owner, _)), true) = (e.owner, tags.contains(&e.tag)) else {
+                continue;
+            };
+            if pressed(p) != pressed(q) {
+                let (a, b) = (mesh.nodes()[p], mesh.nodes()[q]);
+                longest = longest.max((a[0] - b[0]).hypot(a[1] - b[1]));
+                out.owners.push(owner);
+            }
+        }
+        if length > 0.0 {
+            out.relative = longest / length;
+        }
+        Ok(out)
+    }
+
+    fn warn_unreached(&mut self, options: &AdaptOptions, reached: &Cycle, limit: &str) {
+        let edges = if reached.contact_edge > options.tolerance {
+            format!(
+                " and the contact zones' edges located to {:.3e} of the contact length",
+                reached.contact_edge
+            )
+        } else {
+            String::new()
+        };
         self.solve_warnings.push(format!(
             "the adaptive solve stopped at its limit of {limit} with an estimated relative error of \
-             {reached:.3e}, above the tolerance {:.3e}",
-            options.tolerance
+             {:.3e}{edges}, above the tolerance {:.3e}",
+            reached.estimate, options.tolerance
         ));
     }
+}
+
+/// Where a contact solve locates the edges of its zones only coarsely.
+#[derive(Debug, Default)]
+struct ContactEdges {
+    /// The longest interface edge with one end pressed and one free, over
+    /// the contact length (0 without contact).
+    relative: f64,
+    /// The triangles that own such edges.
+    owners: Vec<usize>,
 }
 
 /// The unknowns a solve of `problem` would have: the DOFs of the nodes

@@ -29,6 +29,7 @@ use solution::{
 use crate::contact::mortar::SlaveNode;
 use crate::contact::{ContactElement, ContactOptions, ContactPair, ContactWeighting};
 use crate::error::{Error, Result};
+use crate::fem::curve::Curve;
 use crate::fem::element::{Tempering, TriGeometry};
 use crate::fem::material::Material;
 use crate::fem::mesh::Mesh;
@@ -203,6 +204,13 @@ impl Model {
     /// [`Problem::set_boundary_edges`].
     pub fn set_boundary_edges(&mut self, edges: &[[usize; 2]], tags: &[i32]) -> Result<()> {
         self.edit(|p| p.set_boundary_edges(edges, tags))
+    }
+
+    /// Declares the exact shape of the boundary tagged `tag`, so that an
+    /// adaptive solve puts the nodes it adds there on the curve
+    /// ([`Mesh::set_curve`]). Results of a solve stay valid.
+    pub fn set_curve(&mut self, tag: i32, curve: Curve) -> Result<()> {
+        self.edit(|p| p.set_curve(tag, curve))
     }
 
     /// Adds tagged boundary edges (0-based nodes) to those already set.

@@ -18,6 +18,7 @@ use std::collections::{BTreeMap, BTreeSet, HashMap};
 use super::Component;
 use crate::contact::{self, ContactPair, ContactWeighting};
 use crate::error::{Error, Result, Status};
+use crate::fem::curve::Curve;
 use crate::fem::element::Tempering;
 use crate::fem::element_loop::ElementLoop;
 use crate::fem::loads::{EdgeLoad, Loads, check_loaded_tag};
@@ -230,6 +231,16 @@ impl Problem {
                 Err(e)
             }
         }
+    }
+
+    /// Declares the exact shape of the boundary tagged `tag`
+    /// ([`Mesh::set_curve`]): refinement puts its new nodes there. It
+    /// changes nothing of a solve (no epoch moves: results stay valid).
+    pub fn set_curve(&mut self, tag: i32, curve: Curve) -> Result<()> {
+        self.mesh
+            .as_mut()
+            .ok_or_else(|| Error::state("no mesh: call set_mesh first"))?
+            .set_curve(tag, curve)
     }
 
     /// The same problem on `mesh`, a refinement of its mesh whose first
