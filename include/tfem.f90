@@ -778,6 +778,24 @@ module tfem_c
       integer(c_int) :: status
     end function tfem_clear_constraints
 
+    !> Declares that the boundary edges tagged `tag` lie on the circle of centre (`center_x`,
+    !! `center_y`) and radius `radius` (> 0), so that `tfem_solve_adaptive` puts the nodes it adds
+    !! on those edges on the circle rather than at the chords' midpoints: the refined boundary then
+    !! converges to the circle (a cylinder's contact, a ring's bore). It replaces a curve declared
+    !! on the tag before and changes nothing of a solve. Refused, nothing changed, if the circle is
+    !! ill defined, no edge has the tag, or a node of its edges lies farther than 1e-6·radius from
+    !! the circle (the message names the node).
+    function tfem_set_boundary_circle(model, tag, center_x, center_y, radius) &
+        bind(C, name="tfem_set_boundary_circle") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: tag
+      real(c_double), value :: center_x
+      real(c_double), value :: center_y
+      real(c_double), value :: radius
+      integer(c_int) :: status
+    end function tfem_set_boundary_circle
+
     !> Applies pressure `pressure` on the boundary edges tagged `tag`: a stress (force per unit
     !! area, Pa in SI), positive pushing into the body; with the 2D convention of unit thickness, an
     !! edge of length ℓ carries the force ℓ·pressure per unit thickness (axisymmetric bodies: the
@@ -6044,26 +6062,27 @@ module tfem
         tfem_get_warning_size, tfem_set_threads, tfem_get_threads, tfem_set_mesh, tfem_load_gmsh, &
         tfem_set_boundary_edges, tfem_add_boundary_edges, tfem_get_boundary_edge_count, &
         tfem_set_material, tfem_set_tempering, tfem_set_ordering, tfem_fix, tfem_fix_edges, &
-        tfem_set_prescribed, tfem_set_prescribed_edges, tfem_clear_constraints, tfem_add_pressure, &
-        tfem_add_traction, tfem_add_nodal_force, tfem_set_body_force, tfem_clear_loads, &
-        tfem_set_friction, tfem_set_contact_weighting, tfem_get_contact_weighting, &
-        tfem_get_contact_mesh_size, tfem_contact_options_default, tfem_get_external_work, &
-        tfem_write_vtu, tfem_get_contact_report, tfem_revert_step, tfem_get_contact_state_size, &
-        tfem_element_stiffness, tfem_laplacian_stiffness, tfem_contact_create, tfem_contact_destroy, &
-        tfem_contact_set_options, tfem_contact_restart, tfem_contact_length, tfem_last_error, &
-        tfem_last_error_length, tfem_get_warning, tfem_get_mesh_nodes, tfem_get_contact_mesh, &
-        tfem_get_contact_element_pairs, tfem_get_contact_element_apexes, tfem_get_displacements, &
-        tfem_get_element_strains, tfem_get_element_stresses, tfem_get_element_out_of_plane_stresses, &
-        tfem_get_element_jacobians, tfem_get_reactions, tfem_get_contact_forces, &
-        tfem_get_contact_nodal_pressures, tfem_get_contact_nodal_tractions, &
-        tfem_get_contact_pair_nodal_pressures, tfem_get_contact_pair_nodal_tractions, &
-        tfem_get_contact_gaps, tfem_get_contact_active, tfem_get_contact_pressure, &
-        tfem_get_contact_elements, tfem_get_contact_shear, tfem_get_contact_friction_state, &
-        tfem_get_contact_dissipation, tfem_get_contact_state, tfem_set_contact_state, &
-        tfem_get_system_matrix, tfem_contact_last_error, tfem_contact_last_error_length, &
-        tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, tfem_contact_scatter_add, &
-        tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, tfem_contact_pressures, &
-        tfem_contact_elements, tfem_contact_element_equations, tfem_contact_element_blocks
+        tfem_set_prescribed, tfem_set_prescribed_edges, tfem_clear_constraints, &
+        tfem_set_boundary_circle, tfem_add_pressure, tfem_add_traction, tfem_add_nodal_force, &
+        tfem_set_body_force, tfem_clear_loads, tfem_set_friction, tfem_set_contact_weighting, &
+        tfem_get_contact_weighting, tfem_get_contact_mesh_size, tfem_contact_options_default, &
+        tfem_get_external_work, tfem_write_vtu, tfem_get_contact_report, tfem_revert_step, &
+        tfem_get_contact_state_size, tfem_element_stiffness, tfem_laplacian_stiffness, &
+        tfem_contact_create, tfem_contact_destroy, tfem_contact_set_options, tfem_contact_restart, &
+        tfem_contact_length, tfem_last_error, tfem_last_error_length, tfem_get_warning, &
+        tfem_get_mesh_nodes, tfem_get_contact_mesh, tfem_get_contact_element_pairs, &
+        tfem_get_contact_element_apexes, tfem_get_displacements, tfem_get_element_strains, &
+        tfem_get_element_stresses, tfem_get_element_out_of_plane_stresses, tfem_get_element_jacobians, &
+        tfem_get_reactions, tfem_get_contact_forces, tfem_get_contact_nodal_pressures, &
+        tfem_get_contact_nodal_tractions, tfem_get_contact_pair_nodal_pressures, &
+        tfem_get_contact_pair_nodal_tractions, tfem_get_contact_gaps, tfem_get_contact_active, &
+        tfem_get_contact_pressure, tfem_get_contact_elements, tfem_get_contact_shear, &
+        tfem_get_contact_friction_state, tfem_get_contact_dissipation, tfem_get_contact_state, &
+        tfem_set_contact_state, tfem_get_system_matrix, tfem_contact_last_error, &
+        tfem_contact_last_error_length, tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, &
+        tfem_contact_scatter_add, tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, &
+        tfem_contact_pressures, tfem_contact_elements, tfem_contact_element_equations, &
+        tfem_contact_element_blocks
   use tfem_specifics
   implicit none
   private :: c_strlen

@@ -843,6 +843,23 @@ enum tfem_status tfem_set_prescribed_edges(struct tfem_model *model,
 enum tfem_status tfem_clear_constraints(struct tfem_model *model);
 
 /**
+ * Declares that the boundary edges tagged `tag` lie on the circle of
+ * centre (`center_x`, `center_y`) and radius `radius` (> 0), so that
+ * `tfem_solve_adaptive` puts the nodes it adds on those edges on the
+ * circle rather than at the chords' midpoints: the refined boundary then
+ * converges to the circle (a cylinder's contact, a ring's bore). It
+ * replaces a curve declared on the tag before and changes nothing of a
+ * solve. Refused, nothing changed, if the circle is ill defined, no edge
+ * has the tag, or a node of its edges lies farther than 1e-6·radius from
+ * the circle (the message names the node).
+ */
+enum tfem_status tfem_set_boundary_circle(struct tfem_model *model,
+                                          int tag,
+                                          double center_x,
+                                          double center_y,
+                                          double radius);
+
+/**
  * Applies pressure `pressure` on the boundary edges tagged `tag`: a
  * stress (force per unit area, Pa in SI), positive pushing into the body;
  * with the 2D convention of unit thickness, an edge of length ℓ carries
