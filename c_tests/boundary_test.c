@@ -2998,6 +2998,207 @@ static void a_tags_prescribed_values_change_together_or_not_at_all(void) {
   tfem_destroy(m);
 }
 
+/* A quarter of the ring 1 <= r <= 2 (centre (0, 0), x, y >= 0), NR cells
+ * over the radius and NA over the angle, body 1, plane strain: u_x = 0 on
+ * x = 0 (tag 1, its edges from the outer arc inwards), u_y = 0 on y = 0
+ * (tag 2), the outer arc tag 3, the inner arc tag 4 pressed by 10. Every
+ * node of the arcs lies on its circle to round-off (x = 0 and y = 0 exactly
+ * on the straight sides). */
+enum { RING_NR = 2, RING_NA = 4 };
+#define RING_ID(i, j) ((j) * (RING_NR + 1) + (i))
+static tfem_model *quarter_ring(int *nn0, int *ne0) {
+  double xy[2 * (RING_NR + 1) * (RING_NA + 1)];
+  int tri[3 * 2 * RING_NR * RING_NA], body[2 * RING_NR * RING_NA], nt = 0;
+  int edges[2 * 2 * (RING_NR + RING_NA)], tags[2 * (RING_NR + RING_NA)], ne = 0;
+  for (int j = 0; j <= RING_NA; ++j)
+    for (int i = 0; i <= RING_NR; ++i) {
+      double r = 1.0 + (double)i / RING_NR, a = 0.5 * M_PI * j / RING_NA;
+      xy[2 * RING_ID(i, j)] = j == RING_NA ? 0.0 : r * cos(a);
+      xy[2 * RING_ID(i, j) + 1] = j == 0 ? 0.0 : r * sin(a);
+    }
+  for (int j = 0; j < RING_NA; ++j)
+    for (int i = 0; i < RING_NR; ++i) {
+      int a = RING_ID(i, j), b = RING_ID(i + 1, j), c = RING_ID(i + 1, j + 1), d = RING_ID(i, j + 1);
+      int t[6] = {a, b, c, a, c, d};
+      memcpy(&tri[3 * nt], t, sizeof t);
+      body[nt++] = 1;
+      body[nt++] = 1;
+    }
+  for (int i = RING_NR; i > 0; --i) {
+    edges[2 * ne] = RING_ID(i, RING_NA), edges[2 * ne + 1] = RING_ID(i - 1, RING_NA);
+    tags[ne++] = 1;
+  }
+  for (int i = 0; i < RING_NR; ++i) {
+    edges[2 * ne] = RING_ID(i, 0), edges[2 * ne + 1] = RING_ID(i + 1, 0);
+    tags[ne++] = 2;
+  }
+  for (int j = 0; j < RING_NA; ++j) {
+    edges[2 * ne] = RING_ID(RING_NR, j), edges[2 * ne + 1] = RING_ID(RING_NR, j + 1);
+    tags[ne++] = 3;
+    edges[2 * ne] = RING_ID(0, j + 1), edges[2 * ne + 1] = RING_ID(0, j);
+    tags[ne++] = 4;
+  }
+  *nn0 = (RING_NR + 1) * (RING_NA + 1);
+  *ne0 = ne;
+  tfem_model *m = tfem_create();
+  CHECK(tfem_set_mesh(m, *nn0, xy, nt, tri, body, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_set_boundary_edges(m, ne, edges, tags) == TFEM_STATUS_OK);
+  CHECK(tfem_set_material(m, 1, 1000.0, 0.3, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 1, TFEM_COMPONENT_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_fix_edges(m, 2, TFEM_COMPONENT_Y, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_add_pressure(m, 4, 10.0) == TFEM_STATUS_OK);
+  return m;
+}
+
+/* The nodes of the model's edges tagged `tag`: how many edges, the largest
+ * distance of their nodes from radius r about (0, 0), and the largest
+ * radius of those numbered from `first` on (nodes the refinement added;
+ * -1 if none). */
+typedef struct {
+  int edges;
+  double off, added_max;
+} ring_side_t;
+static ring_side_t ring_side(tfem_model *m, int tag, double r, int first) {
+  ring_side_t out = {0, INFINITY, -1.0};
+  int nn = 0, ne = 0;
+  if (tfem_get_sizes(m, &nn, NULL, NULL) != TFEM_STATUS_OK ||
+      tfem_get_boundary_edge_count(m, &ne) != TFEM_STATUS_OK)
+    return out;
+  double *xy = malloc(sizeof(double) * 2 * (size_t)nn);
+  int *edges = malloc(sizeof(int) * 2 * (size_t)ne), *tags = malloc(sizeof(int) * (size_t)ne);
+  if (tfem_get_mesh_nodes(m, xy, 2 * (size_t)nn) == TFEM_STATUS_OK &&
+      tfem_get_boundary_edges(m, edges, 2 * (size_t)ne, tags, (size_t)ne) == TFEM_STATUS_OK) {
+    out.off = 0.0;
+    for (int e = 0; e < ne; ++e) {
+      if (tags[e] != tag) continue;
+      ++out.edges;
+      for (int k = 0; k < 2; ++k) {
+        int v = edges[2 * e + k];
+        double rv = hypot(xy[2 * v], xy[2 * v + 1]);
+        out.off = fmax(out.off, fabs(rv - r));
+        if (v >= first) out.added_max = fmax(out.added_max, rv);
+      }
+    }
+  }
+  free(xy), free(edges), free(tags);
+  return out;
+}
+
+/* tfem_set_boundary_circle refuses an ill-defined circle (a centre not
+ * finite, a radius not finite or <= 0), a tag of no edge and a circle a
+ * node of the tag's edges is off (naming that node, not one on it), each
+ * with INVALID_ARGUMENT, and changes nothing: the results of the solve
+ * before stay, bit for bit, the mesh keeps its sizes, and an adaptive solve
+ * still puts its new nodes on the circle declared before the refusals. */
+static void a_bad_boundary_circle_is_refused_and_changes_nothing(void) {
+  int nn0 = 0, ne0 = 0, nn = 0, nt = 0, ne = 0, nt0 = 0;
+  tfem_model *m = quarter_ring(&nn0, &ne0);
+  CHECK(tfem_set_boundary_circle(m, 3, 0.0, 0.0, 2.0) == TFEM_STATUS_OK);
+  CHECK(tfem_solve(m, NULL) == TFEM_STATUS_OK);
+  double u[2 * 64], again[2 * 64];
+  CHECK(tfem_get_displacements(m, u, 2 * (size_t)nn0) == TFEM_STATUS_OK);
+  CHECK(tfem_get_sizes(m, NULL, &nt0, NULL) == TFEM_STATUS_OK);
+  const struct {
+    double cx, cy, r;
+    const char *needle;
+  } bad[] = {
+      {NAN, 0.0, 2.0, "centre"},       {0.0, NAN, 2.0, "centre"},
+      {INFINITY, 0.0, 2.0, "centre"},  {0.0, -INFINITY, 2.0, "centre"},
+      {0.0, 0.0, 0.0, "radius"},       {0.0, 0.0, -0.0, "radius"},
+      {0.0, 0.0, -2.0, "radius"},      {0.0, 0.0, NAN, "radius"},
+      {0.0, 0.0, INFINITY, "radius"},  {0.0, 0.0, -INFINITY, "radius"},
+      {NAN, NAN, NAN, "centre"},       {0.0, 0.0, 2.0 * (1.0 + 2e-6), "from the curve"},
+      {0.0, 0.0, 1.0, "from the curve"}, {1e-5, 0.0, 2.0, "from the curve"},
+  };
+  for (size_t k = 0; k < sizeof bad / sizeof bad[0]; ++k)
+    EXPECT_ERROR(m, tfem_set_boundary_circle(m, 3, bad[k].cx, bad[k].cy, bad[k].r),
+                 TFEM_STATUS_INVALID_ARGUMENT, bad[k].needle);
+  EXPECT_ERROR(m, tfem_set_boundary_circle(m, 99, 0.0, 0.0, 2.0), TFEM_STATUS_INVALID_ARGUMENT,
+               "no boundary edge has tag 99");
+  EXPECT_ERROR(m, tfem_set_boundary_circle(m, INT_MIN, 0.0, 0.0, 2.0),
+               TFEM_STATUS_INVALID_ARGUMENT, "no boundary edge has tag");
+  /* Tag 1's first edge runs from the outer arc (on r = 2) inwards: the
+   * node named is the next one, at r = 1.5. */
+  char needle[64];
+  snprintf(needle, sizeof needle, "node %d of an edge tagged 1 lies", RING_ID(RING_NR - 1, RING_NA));
+  EXPECT_ERROR(m, tfem_set_boundary_circle(m, 1, 0.0, 0.0, 2.0), TFEM_STATUS_INVALID_ARGUMENT,
+               needle);
+  snprintf(needle, sizeof needle, "node %d of", RING_ID(RING_NR, RING_NA));
+  char msg[512] = "";
+  tfem_last_error(m, msg, sizeof msg);
+  CHECK(strstr(msg, needle) == NULL);
+  /* The model as it was: results kept bit for bit, the same mesh. */
+  CHECK(tfem_get_displacements(m, again, 2 * (size_t)nn0) == TFEM_STATUS_OK);
+  CHECK(memcmp(u, again, sizeof(double) * 2 * (size_t)nn0) == 0);
+  CHECK(tfem_get_sizes(m, &nn, &nt, NULL) == TFEM_STATUS_OK && nn == nn0 && nt == nt0);
+  CHECK(tfem_get_boundary_edge_count(m, &ne) == TFEM_STATUS_OK && ne == ne0);
+  /* and the circle of tag 3 is still the first one: the refinement puts
+   * the nodes it adds there (a circle refused on tag 4 left it none: its
+   * new nodes are the chords' midpoints, inside r = 1). */
+  EXPECT_ERROR(m, tfem_set_boundary_circle(m, 4, 0.0, 0.0, 1.5), TFEM_STATUS_INVALID_ARGUMENT,
+               "from the curve");
+  CHECK(tfem_solve_adaptive(m, 1e-2, TFEM_ADAPT_GOAL_ENERGY, 100000, 4, NULL, NULL) ==
+        TFEM_STATUS_OK);
+  ring_side_t outer = ring_side(m, 3, 2.0, nn0), inner = ring_side(m, 4, 1.0, nn0);
+  CHECK(outer.edges > RING_NA && outer.off <= 1e-12 && outer.added_max > 0.0);
+  CHECK(inner.edges > RING_NA && inner.added_max > 0.0 && inner.added_max < 1.0 - 1e-6);
+  tfem_destroy(m);
+}
+
+/* tfem_solve_adaptive puts the nodes it adds on the edges of a tag with a
+ * declared circle on that circle: the quarter ring's arcs (tags 3, r = 2,
+ * and 4, r = 1), refined over a few cycles, keep every node on them to
+ * round-off. Without the declarations the new nodes are the chords'
+ * midpoints, inside the circle: the declaration is what moves them. A
+ * circle within 1e-6 of the radius of the nodes is accepted, and declared
+ * again on the tag it replaces the first. */
+static void an_adaptive_solve_puts_new_boundary_nodes_on_the_declared_circle(void) {
+  for (int declared = 1; declared >= 0; --declared) {
+    int nn0 = 0, ne0 = 0;
+    tfem_model *m = quarter_ring(&nn0, &ne0);
+    if (declared) {
+      CHECK(tfem_set_boundary_circle(m, 3, 0.0, 0.0, 2.0 * (1.0 + 5e-7)) == TFEM_STATUS_OK);
+      CHECK(tfem_set_boundary_circle(m, 3, 0.0, 0.0, 2.0) == TFEM_STATUS_OK);
+      CHECK(tfem_set_boundary_circle(m, 4, 0.0, 0.0, 1.0) == TFEM_STATUS_OK);
+    }
+    tfem_adapt_report rep;
+    CHECK(tfem_solve_adaptive(m, 1e-2, TFEM_ADAPT_GOAL_ENERGY, 100000, 5, NULL, &rep) ==
+          TFEM_STATUS_OK);
+    CHECK(rep.cycles >= 3);
+    int nn = 0, nt = 0;
+    CHECK(tfem_get_sizes(m, &nn, &nt, NULL) == TFEM_STATUS_OK && nn > nn0 && nt == rep.triangles);
+    ring_side_t outer = ring_side(m, 3, 2.0, nn0), inner = ring_side(m, 4, 1.0, nn0);
+    CHECK(outer.edges > RING_NA && inner.edges > RING_NA);
+    CHECK(outer.added_max > 0.0 && inner.added_max > 0.0);
+    if (declared) {
+      CHECK(outer.off <= 1e-12 && inner.off <= 1e-12);
+    } else {
+      CHECK(outer.added_max < 2.0 - 1e-6 && inner.added_max < 1.0 - 1e-6);
+    }
+    double *u = malloc(sizeof(double) * 2 * (size_t)nn);
+    CHECK(tfem_get_displacements(m, u, 2 * (size_t)nn) == TFEM_STATUS_OK && all_finite(u, 2 * nn));
+    free(u);
+    tfem_destroy(m);
+  }
+}
+
+/* Before a mesh there is no edge to put on a circle: INVALID_STATE, whatever
+ * the circle, and the model takes a mesh and a circle afterwards. A NULL
+ * model is NULL_POINTER. */
+static void a_boundary_circle_before_a_mesh_is_an_invalid_state(void) {
+  tfem_model *m = tfem_create();
+  EXPECT_ERROR(m, tfem_set_boundary_circle(m, 3, 0.0, 0.0, 2.0), TFEM_STATUS_INVALID_STATE,
+               "no mesh");
+  EXPECT_ERROR(m, tfem_set_boundary_circle(m, 3, NAN, 0.0, -1.0), TFEM_STATUS_INVALID_STATE,
+               "no mesh");
+  CHECK(tfem_set_boundary_circle(NULL, 3, 0.0, 0.0, 2.0) == TFEM_STATUS_NULL_POINTER);
+  tfem_destroy(m);
+  int nn0 = 0, ne0 = 0;
+  m = quarter_ring(&nn0, &ne0);
+  CHECK(tfem_set_boundary_circle(m, 3, 0.0, 0.0, 2.0) == TFEM_STATUS_OK);
+  tfem_destroy(m);
+}
+
 int main(int argc, char **argv) {
   if (argc == 4 && strcmp(argv[1], "--solve-under-cap") == 0)
     return solve_under_cap(atof(argv[2]), argv[3]);
@@ -3088,6 +3289,9 @@ int main(int argc, char **argv) {
   axisymmetric_cylinders_pressed_together_carry_a_uniform_stress_and_the_rings_force();
   the_axisymmetric_mode_refuses_what_it_cannot_model_by_name();
   an_adaptive_solve_meets_its_tolerance_and_the_refined_mesh_reads_back();
+  a_bad_boundary_circle_is_refused_and_changes_nothing();
+  an_adaptive_solve_puts_new_boundary_nodes_on_the_declared_circle();
+  a_boundary_circle_before_a_mesh_is_an_invalid_state();
 
   if (gmsh_dir[0] != '\0') rmdir(gmsh_dir);
 
