@@ -143,6 +143,7 @@ enum {
   V_NEG_ZERO,       /* a result output -0.0 (the library normalises its results to +0.0) */
   V_ADAPT,          /* tfem_solve_adaptive / tfem_get_adapt_cycles not as documented */
   V_AXI,            /* axisymmetric bodies: refusals, the ring's exact solution, out-of-plane stresses */
+  V_CIRCLE,         /* tfem_set_boundary_circle accepted or refused otherwise, new nodes off a declared circle */
   NV
 };
 
@@ -154,7 +155,7 @@ static const char *const V_NAME[NV] = {
     "matrix_dropped", "double_edge",   "results_changed", "contact",      "external_work",
     "threads",        "null_pointer",  "other",          "step_repeat",  "host_contact",
     "friction",       "prescribed",    "auto_pairs",     "twin",          "weighting",
-    "negative_zero",  "adapt",         "axisymmetric",
+    "negative_zero",  "adapt",         "axisymmetric",  "circle",
 };
 
 static const char *const V_DESC[NV] = {
@@ -201,6 +202,8 @@ static const char *const V_DESC[NV] = {
     "axisymmetric bodies: one crossing the axis, mixed with plane ones or under the mortar weighting accepted, a solve OK "
     "with a node on the axis whose u_r is not fixed to 0, the ring's exact solution, the out-of-plane stresses, the "
     "ring element",
+    "tfem_set_boundary_circle: accepted or refused otherwise than the header says (no mesh, a circle ill defined, a "
+    "tag of no edge, a node off the circle, named), or a node an adaptive solve added on a declared circle off it",
 };
 
 /* The families of the contact pairs (what a pair is weighted by: the
@@ -238,6 +241,7 @@ enum {
   O_ADAPT,         /* an adaptive solve's report against its cycles, limits, mesh and warning */
   O_OUT_OF_PLANE,  /* out-of-plane stresses against the strains and the materials */
   O_AXI,           /* axisymmetric refusals (axis, crossing, mixing, mortar) and the ring element */
+  O_CIRCLE,        /* a boundary circle accepted or refused as the shadow expects; refined nodes on it */
   NO
 };
 static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetration", "work", "mesh_eq",
@@ -246,7 +250,7 @@ static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetrat
                                        "coulomb", "friction_args", "prescribed", "auto_pairs", "twin",
                                        "pair_pressure", "vtu_file", "warning_size", "weighting",
                                        "slave_nodes", "restart", "adapt", "out_of_plane",
-                                       "axisymmetric"};
+                                       "axisymmetric", "circle"};
 
 /* A library defect this tester found (c_tests/README.md, "The 3 entry
  * points of friction, prescribed values and automatic pairs"): with
@@ -345,8 +349,12 @@ static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetrat
  * cycles of the adaptive solve before it (INVALID_STATE "no adaptive
  * solve"), also when the call is refused for its tolerance (0, NaN, ...:
  * INVALID_ARGUMENT, where the header says that bad arguments change
- * nothing). Checked (findings: state_change, results_lost,
- * matrix_dropped, adapt) unless built with
+ * nothing). The same, with the results of its first cycle kept where there
+ * were none or those of the solve before it gone, when its refinement
+ * refuses it after a cycle's solve (INVALID_ARGUMENT naming a curve of
+ * tfem_set_boundary_circle that would fold a triangle: the ring scene).
+ * Checked (findings: state_change, results_lost,
+ * matrix_dropped, adapt, other) unless built with
  * -DAPI_FUZZ_ADAPT_FAILURE_RESTORES=0, which takes what follows such a
  * failure as not known here (no replay comparison after it, the results
  * and cycles not known). */
@@ -546,6 +554,8 @@ enum {
   F_GET_OUT_OF_PLANE,
   F_SOLVE_ADAPTIVE,
   F_GET_ADAPT_CYCLES,
+  /* the exact shape of a tagged boundary */
+  F_SET_BOUNDARY_CIRCLE,
   F_DESTROY_NULL, /* tfem_destroy(NULL) */
   F_RECREATE,     /* tfem_destroy(m); m = tfem_create() */
   F_TWIN,         /* not a call: the twin-model oracle (see oracle_twin) */
@@ -614,7 +624,8 @@ typedef struct {
  *   INT_MIN INT64_MIN; 200..20000; wild 0, -1, 1, 50, INT_MAX, INT_MIN)
  * double roles: E young, p poisson, J jmin, K kappa, v tempering value,
  *   u displacement, f force, G contact modulus, l lambda, a load factor,
- *   y friction coefficient, d pairing tolerance, e adaptive tolerance */
+ *   y friction coefficient, d pairing tolerance, e adaptive tolerance, X a
+ *   circle's centre coordinate, r its radius */
 static const fndesc FN[NF] = {
     [F_VERSION] = {"tfem_version", 0, "", "", "", "", {0}, 0},
     [F_LAST_ERROR] = {"tfem_last_error", 1, "", "", "", "c", {R_MSG}, 0},
@@ -715,6 +726,8 @@ static const fndesc FN[NF] = {
      * lambda, then the tolerance) */
     [F_SOLVE_ADAPTIVE] = {"tfem_solve_adaptive", 1, "LTmxZYN", "Gle", "o", "A", {R_SCALAR}, 1},
     [F_GET_ADAPT_CYCLES] = {"tfem_get_adapt_cycles", 1, "", "", "", "ldt", {R_CYC, R_CYC, R_CYC}, 0},
+    /* (dv: the centre's x and y, the radius) */
+    [F_SET_BOUNDARY_CIRCLE] = {"tfem_set_boundary_circle", 1, "t", "XXr", "", "", {0}, 0},
     [F_DESTROY_NULL] = {"tfem_destroy(NULL)", 0, "", "", "", "", {0}, 0},
     [F_RECREATE] = {"tfem_destroy+tfem_create", 0, "", "", "", "", {0}, 0},
     [F_TWIN] = {"(twin model oracle)", 0, "", "", "", "", {0}, 0},
@@ -838,6 +851,9 @@ typedef struct {
   int tw, tw_a, tw_b, expect, got;
   /* the status a pristine scene's call must return, plus 1 (0: not checked) */
   int want;
+  /* a tfem_solve_adaptive refused by its refinement (INVALID_ARGUMENT naming
+   * a declared curve), after a cycle's solve (original run) */
+  int refine_refused;
   double tw_val;
   /* original run */
   int status;
@@ -1301,6 +1317,8 @@ static double plausible_double(rng_t *r, char role) {
   case 'y': { static const double v[] = {0.0, 0.1, 0.3, 0.5, 1.0, -0.0}; return v[rint_(r, 6)]; }
   case 'd': { static const double v[] = {1e-6, 0.01, 0.1, 0.0, 1e-3}; return v[rint_(r, 5)]; }
   case 'e': { static const double v[] = {0.3, 0.1, 0.05, 0.5, 0.2, 1e-3}; return v[rint_(r, 6)]; }
+  case 'X': { static const double v[] = {0.0, 0.0, 0.5, 1.0, -1.0, 0.25}; return v[rint_(r, 6)]; }
+  case 'r': { static const double v[] = {1.0, 2.0, 0.5, 0.25, 1.5, 0.7071067811865476}; return v[rint_(r, 6)]; }
   default: return runif(r);
   }
 }
@@ -2019,6 +2037,165 @@ static void scene_adaptive(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
     add_call(cs, F_GET_DISPLACEMENTS);
     if (chance(r, 0.5)) add_call(cs, F_GET_CONTACT_PRESSURE);
     if (chance(r, 0.5)) add_call(cs, F_WARNING_COUNT);
+  }
+}
+
+/* A circle for tfem_set_boundary_circle on the edges tagged `tag` of a
+ * scene's mesh (0-based), as (x, y, radius): the circumcircle of the tag's
+ * first edge and its first node not in line with it (the circle of an arc:
+ * accepted), else a circle through the first edge's ends, its centre on
+ * their bisector at the edge's midpoint (a chord through the centre), 0.5,
+ * 2 or 1e3 lengths away, or so far (1e8, 1e160) that every node of the tag
+ * is within its tolerance of 1e-6 of the radius; then sometimes the radius
+ * off by 5e-7 of it (accepted) or 2e-6 (refused). 0 if no edge has the tag. */
+static int circle_of_tag(rng_t *r, const mesh_t *m, int tag, double out[3]) {
+  int e0 = -1;
+  for (int e = 0; e < m->ne && e0 < 0; ++e)
+    if (m->tag[e] == tag) e0 = e;
+  if (e0 < 0) return 0;
+  const double *a = &m->xy[2 * m->edge[2 * e0]], *b = &m->xy[2 * m->edge[2 * e0 + 1]];
+  double ab[2] = {b[0] - a[0], b[1] - a[1]}, l2 = ab[0] * ab[0] + ab[1] * ab[1];
+  int third = -1;
+  for (int e = 0; e < m->ne && third < 0; ++e)
+    for (int k = 0; k < 2 && m->tag[e] == tag && third < 0; ++k) {
+      const double *c = &m->xy[2 * m->edge[2 * e + k]];
+      if (fabs(ab[0] * (c[1] - a[1]) - ab[1] * (c[0] - a[0])) > 1e-9 * l2) third = m->edge[2 * e + k];
+    }
+  if (third >= 0 && chance(r, 0.85)) {
+    const double *c = &m->xy[2 * third];
+    double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
+    double d = 2.0 * (bx * cy - by * cx), b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+    out[0] = a[0] + (cy * b2 - by * c2) / d;
+    out[1] = a[1] + (bx * c2 - cx * b2) / d;
+  } else {
+    double t = (double[]){0.0, 0.5, 2.0, 1e3, 1e8, 1e160}[rint_(r, 6)] * (chance(r, 0.5) ? 1 : -1);
+    out[0] = 0.5 * (a[0] + b[0]) - t * ab[1];
+    out[1] = 0.5 * (a[1] + b[1]) + t * ab[0];
+  }
+  out[2] = hypot(a[0] - out[0], a[1] - out[1]);
+  int v = rint_(r, 10);
+  if (v == 0) out[2] *= 1.0 + 5e-7;
+  else if (v == 1) out[2] *= 1.0 + 2e-6;
+  return 1;
+}
+
+/* tfem_set_boundary_circle of a scene, the status it must return plus 1
+ * (0: not checked). */
+static call_t *circle_call(case_t *cs, int tag, double x, double y, double radius, int want) {
+  call_t *c = add_call(cs, F_SET_BOUNDARY_CIRCLE);
+  c->iv[0] = tag;
+  c->dv[0] = x, c->dv[1] = y, c->dv[2] = radius;
+  c->want = want;
+  return c;
+}
+
+/* A quarter of a ring about (x0, y0), r1 <= r <= r1 + w, the angle from 0
+ * to 90 degrees in na cells and the radius in nr, body 1 (plane strain or
+ * stress), x = x0 (tag 1, u_x = 0), y = y0 (tag 2, u_y = 0), the outer arc
+ * tag 3, the inner arc tag 4 pressed by 10. The arcs' circles are declared
+ * (each 80%; the inner one 20% of those 5e-7 of its radius off: accepted),
+ * and refused around them as the header says: a circle before the mesh
+ * (INVALID_STATE) or before the edges, on a tag of no edge, with a centre
+ * or radius not finite, a radius <= 0, the radius off by 2e-6 of it or the
+ * centre by 1e-2, the outer circle on the inner arc, a circle on a straight
+ * side (INVALID_ARGUMENT); a straight side of one edge sometimes on a
+ * circle through its ends (its centre maybe far away: accepted). Then a
+ * plain solve (50%) with a circle declared after it (the results kept),
+ * and an adaptive solve: the nodes it adds on a declared arc lie on its
+ * circle (oracle_circle_nodes), its report and its mesh as the other
+ * adaptive scenes'; sometimes a second one (the circles carried to the
+ * refined mesh). */
+static void scene_ring(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
+  static const double centres[][2] = {{0.0, 0.0}, {0.5, -0.25}, {-3.0, 7.0}, {1e3, 1e3}};
+  const double *o = centres[rint_(r, 4)];
+  double r1 = (double[]){1.0, 0.5, 2.0}[rint_(r, 3)], w = (double[]){1.0, 0.5}[rint_(r, 2)];
+  int na = rrange(r, 1, 6), nr = rrange(r, 1, 3), base = rint_(r, 2);
+  int plane = chance(r, 0.7) ? TFEM_PLANE_MODE_STRAIN : TFEM_PLANE_MODE_STRESS;
+  for (int j = 0; j <= na; ++j)
+    for (int i = 0; i <= nr; ++i) {
+      double rad = r1 + w * i / nr, a = 0.5 * M_PI * j / na;
+      mesh_node(m, j == na ? o[0] : o[0] + rad * cos(a), j == 0 ? o[1] : o[1] + rad * sin(a));
+    }
+#define RID(i, j) ((j) * (nr + 1) + (i))
+  for (int j = 0; j < na; ++j)
+    for (int i = 0; i < nr; ++i) {
+      mesh_tri(m, RID(i, j), RID(i + 1, j), RID(i + 1, j + 1), 1);
+      mesh_tri(m, RID(i, j), RID(i + 1, j + 1), RID(i, j + 1), 1);
+    }
+  for (int i = nr; i > 0; --i) mesh_edge(m, RID(i, na), RID(i - 1, na), 1);
+  for (int i = 0; i < nr; ++i) mesh_edge(m, RID(i, 0), RID(i + 1, 0), 2);
+  for (int j = 0; j < na; ++j) {
+    mesh_edge(m, RID(nr, j), RID(nr, j + 1), 3);
+    mesh_edge(m, RID(0, j + 1), RID(0, j), 4);
+  }
+#undef RID
+  *cx = (ctx_t){m->nn, m->nt, base, {1, 2, 3, 4}, 4, {1}, 1, m, 0, 0, 0, {0}};
+  const int ok = 1 + TFEM_STATUS_OK, refused = 1 + TFEM_STATUS_INVALID_ARGUMENT;
+  double r2 = r1 + w;
+  if (chance(r, 0.15)) circle_call(cs, 3, o[0], o[1], r2, 1 + TFEM_STATUS_INVALID_STATE);
+  set_mesh_call(cs, m, base);
+  if (chance(r, 0.2)) circle_call(cs, 4, o[0], o[1], r1, refused); /* (no edge yet) */
+  edges_calls(r, cs, m, base);
+  material(cs, 1, 1000.0, 0.3, plane);
+  fixc(cs, F_FIX_EDGES, 1, TFEM_COMPONENT_X, 0.0);
+  fixc(cs, F_FIX_EDGES, 2, TFEM_COMPONENT_Y, 0.0);
+  call_i(cs, F_ADD_PRESSURE, 4, 0)->dv[0] = 10.0;
+  int outer = chance(r, 0.8), inner = chance(r, 0.8);
+  /* refusals, before and after the declarations */
+  int nbad = chance(r, 0.6) ? rrange(r, 1, 4) : 0, at_bad = rint_(r, 2);
+  for (int pass = 0; pass < 2; ++pass) {
+    if (pass == 1) {
+      if (outer) circle_call(cs, 3, o[0], o[1], r2, ok);
+      if (inner) circle_call(cs, 4, o[0], o[1], chance(r, 0.2) ? r1 * (1.0 + 1e-6 * 0.5) : r1, ok);
+    }
+    if (pass != at_bad) continue;
+    for (int k = 0; k < nbad; ++k) {
+      int tag = chance(r, 0.5) ? 3 : 4;
+      double x = o[0], y = o[1], rad = tag == 3 ? r2 : r1;
+      switch (rint_(r, 7)) {
+      case 0:
+        if (chance(r, 0.5)) x = (double[]){NAN, INFINITY, -INFINITY}[rint_(r, 3)];
+        else y = (double[]){NAN, INFINITY, -INFINITY}[rint_(r, 3)];
+        break;
+      case 1: rad = (double[]){0.0, -0.0, -rad, NAN, INFINITY, -INFINITY, -DBL_MAX}[rint_(r, 7)]; break;
+      case 2: rad *= 1.0 + (chance(r, 0.5) ? 2e-6 : -2e-6); break;
+      case 3: tag = 4, rad = r2; break;
+      case 4: tag = (int[]){99, 0, -1, INT_MIN, 5}[rint_(r, 5)]; break;
+      case 5: tag = rrange(r, 1, 2); break;
+      default: x += 0.01 * rad; break;
+      }
+      circle_call(cs, tag, x, y, rad, refused);
+    }
+  }
+  if (nr == 1 && chance(r, 0.25)) { /* a straight side of one edge on a circle through its ends (circle_of_tag) */
+    double q[3];
+    int tag = rrange(r, 1, 2);
+    if (circle_of_tag(r, m, tag, q)) circle_call(cs, tag, q[0], q[1], q[2], 0);
+  }
+  if (chance(r, 0.5)) {
+    add_call(cs, F_SOLVE)->want = ok;
+    add_call(cs, F_GET_DISPLACEMENTS);
+    if (chance(r, 0.5)) add_call(cs, F_GET_STRESSES);
+    circle_call(cs, chance(r, 0.5) ? 3 : 4, o[0], o[1], chance(r, 0.5) ? r2 : r1, 0); /* (either arc: either status) */
+    if (chance(r, 0.3)) circle_call(cs, 3, o[0], o[1], -1.0, refused);
+    add_call(cs, F_GET_DISPLACEMENTS)->want = ok; /* (kept, bit for bit: the results_kept oracle) */
+    if (chance(r, 0.5)) add_call(cs, F_GET_MATRIX);
+  }
+  call_t *a = add_call(cs, F_SOLVE_ADAPTIVE);
+  a->in[0].null_ = 1;
+  a->iv[4] = chance(r, 0.7) ? TFEM_ADAPT_GOAL_ENERGY : TFEM_ADAPT_GOAL_COMPLIANCE;
+  a->iv[5] = rrange(r, 1, 4);
+  a->iv[6] = (int[]){2000, 20000}[rint_(r, 2)];
+  a->dv[2] = (double[]){0.1, 0.02, 1e-3}[rint_(r, 3)];
+  add_call(cs, F_GET_ADAPT_CYCLES);
+  result_getters(r, cs, 0);
+  if (chance(r, 0.3)) { /* again, from the refined mesh */
+    if (chance(r, 0.5)) circle_call(cs, 3, o[0], o[1], r2, 0);
+    call_t *b = add_call(cs, F_SOLVE_ADAPTIVE);
+    b->in[0].null_ = 1;
+    b->iv[4] = TFEM_ADAPT_GOAL_ENERGY, b->iv[5] = rrange(r, 1, 2), b->iv[6] = 20000, b->dv[2] = 1e-3;
+    add_call(cs, F_GET_SIZES);
+    add_call(cs, F_GET_DISPLACEMENTS);
   }
 }
 
@@ -2858,7 +3035,7 @@ static void random_call(rng_t *r, case_t *cs, const ctx_t *cx, double wild, int 
       [F_SET_PRESCRIBED] = 2, [F_ADD_CONTACT_PAIRS_AUTO] = 2, [F_GET_CONTACT_PAIR_NODAL_PRESSURES] = 2,
       [F_WRITE_VTU] = 2, [F_GET_WARNING_SIZE] = 2, [F_CONTACT_LAST_ERROR_LENGTH] = 1,
       [F_SET_CONTACT_WEIGHTING] = 3, [F_GET_CONTACT_WEIGHTING] = 1, [F_GET_CONTACT_SLAVE_NODES] = 3,
-      [F_GET_OUT_OF_PLANE] = 3, [F_SOLVE_ADAPTIVE] = 2, [F_GET_ADAPT_CYCLES] = 2};
+      [F_GET_OUT_OF_PLANE] = 3, [F_SOLVE_ADAPTIVE] = 2, [F_GET_ADAPT_CYCLES] = 2, [F_SET_BOUNDARY_CIRCLE] = 3};
   int total = 0;
   for (int f = 0; f < NF; ++f) total += weight[f];
   int x = rint_(r, total), fn = 0;
@@ -2998,6 +3175,16 @@ static void random_call(rng_t *r, case_t *cs, const ctx_t *cx, double wild, int 
   case F_SOLVE_CONTACT: case F_STEP: case F_SOLVE_ADAPTIVE:
     if (chance(r, 0.2)) c->in[0].null_ = 1;
     break;
+  case F_SET_BOUNDARY_CIRCLE: {
+    /* most often a circle made for the tag's edges (of the arc they lie
+     * on, or through an edge's ends), one of its numbers sometimes wild */
+    double circle[3];
+    if (cx->mesh && chance(r, 0.6) && circle_of_tag(r, cx->mesh, c->iv[0], circle)) {
+      for (int k = 0; k < 3; ++k) c->dv[k] = circle[k];
+      if (chance(r, wild)) c->dv[rint_(r, 3)] = wild_double(r);
+    }
+    break;
+  }
   case F_ADD_CONTACT_PAIRS_AUTO:
     /* every tag (NULL or not), or a few (an unknown one sometimes) */
     if (c->iv[0] == 0 && chance(r, 0.5)) c->in[0].null_ = 1;
@@ -3231,10 +3418,11 @@ static void gen_case(uint64_t seed, long index, case_t *cs, mesh_t *m) {
   int kind = rint_(&r, 100);
   if (kind < 70) {
     /* (a) a valid scene, mutated (10% left pristine) */
-    int s = rint_(&r, 134);
+    int s = rint_(&r, 137);
     if (s >= 128) {
       if (s < 131) { cs->kind = "axisymmetric"; scene_axisym(&r, cs, &cx, m); }
-      else { cs->kind = "adaptive"; scene_adaptive(&r, cs, &cx, m); }
+      else if (s < 134) { cs->kind = "adaptive"; scene_adaptive(&r, cs, &cx, m); }
+      else { cs->kind = "ring"; scene_ring(&r, cs, &cx, m); }
     } else if (s >= 100) {
       if (s < 108) { cs->kind = "steps"; scene_steps(&r, cs, &cx, m); }
       else if (s < 116) { cs->kind = "host"; scene_host(&r, cs, &cx, m); }
@@ -3435,6 +3623,16 @@ typedef struct {
   int adapt_idx;
   int64_t adapt_unk[64];
   double adapt_est[64];
+  /* the circles declared on tags (tfem_set_boundary_circle; a new mesh has
+   * none), 16 kept (more: not known here): tag, centre and radius, and
+   * whether every edge of the tag is known to lie on it (clean: at its
+   * declaration and after an adaptive solve that kept them there, not
+   * after new boundary edges); the nodes of the mesh the last adaptive
+   * solve left (0: not known) */
+  int ncirc;
+  int circ_tag[16], circ_clean[16];
+  double circ[16][3];
+  int refined_nn;
   /* snapshots: the contact mesh B, the contact elements of a contact solve
    * (both in the index base, with the problem generation they belong to),
    * and the displacements (a hash, with the results generation) */
@@ -4038,6 +4236,42 @@ static uint64_t fnv64(const void *p, size_t n) {
   uint64_t h = 1469598103934665603ULL;
   for (size_t i = 0; i < n; ++i) h = (h ^ ((const unsigned char *)p)[i]) * 1099511628211ULL;
   return h;
+}
+
+/* What tfem_set_boundary_circle(tag, (x, y), radius) must return, from the
+ * shadow (the rules of src/fem/curve.rs and Mesh::set_curve): INVALID_STATE
+ * without a mesh; INVALID_ARGUMENT for a centre not finite or a radius not
+ * finite or <= 0, a tag of no edge, a node of the tag's edges farther than
+ * 1e-6 of the radius from the circle (off[v] set for each such node when
+ * off is given); else OK. `why` gets what the message must say. -1 when the
+ * shadow does not know the edges, or a node lies within 1e-9 of that bound
+ * either way (rounding decides). */
+static int circle_expect(const shadow_t *s, int tag, double x, double y, double radius, char *why, size_t cap,
+                         unsigned char *off) {
+  if (!s->has_mesh) return snprintf(why, cap, "no mesh"), TFEM_STATUS_INVALID_STATE;
+  if (!isfinite(x) || !isfinite(y)) return snprintf(why, cap, "centre"), TFEM_STATUS_INVALID_ARGUMENT;
+  if (!(isfinite(radius) && radius > 0)) return snprintf(why, cap, "radius"), TFEM_STATUS_INVALID_ARGUMENT;
+  if (!s->exact) return -1;
+  double tol = 1e-6 * radius;
+  int any = 0, out = 0, unsure = 0;
+  for (int e = 0; e < s->ne; ++e) {
+    if (s->tag[e] != tag) continue;
+    any = 1;
+    for (int k = 0; k < 2; ++k) {
+      int v = s->edge[2 * e + k];
+      double d = fabs(hypot(s->xy[2 * v] - x, s->xy[2 * v + 1] - y) - radius);
+      if (fabs(d - tol) <= 1e-9 * tol) unsure = 1;
+      else if (!(d <= tol)) {
+        out = 1;
+        if (off) off[v] = 1;
+      }
+    }
+  }
+  if (!any) return snprintf(why, cap, "no boundary edge has tag %d", tag), TFEM_STATUS_INVALID_ARGUMENT;
+  if (unsure) return -1;
+  if (out) return snprintf(why, cap, " of an edge tagged %d lies", tag), TFEM_STATUS_INVALID_ARGUMENT;
+  why[0] = 0;
+  return TFEM_STATUS_OK;
 }
 
 /* ------------------------------------------------------------------------ */
@@ -4965,6 +5199,7 @@ static int twin_exec(tfem_model **mp, const call_t *c, int apply) {
   case F_SET_FRICTION: return tfem_set_friction(m, c->iv[0], v0);
   case F_SET_PRESCRIBED: return tfem_set_prescribed(m, c->iv[0], c->iv[1], v0);
   case F_SET_CONTACT_WEIGHTING: return tfem_set_contact_weighting(m, c->iv[0]);
+  case F_SET_BOUNDARY_CIRCLE: return tfem_set_boundary_circle(m, c->iv[0], c->dv[0], c->dv[1], c->dv[2]);
   case F_ADD_CONTACT_PAIRS_AUTO:
     if (apply && c->tw == 3) return tfem_add_contact_pair(m, c->tw_a, c->tw_b, NULL);
     return tfem_add_contact_pairs_auto(m, c->iv[0], in[0], v0, NULL, NULL);
@@ -5811,6 +6046,103 @@ static void oracle_adapt_cycles(runner_t *R, int idx, const call_t *c, int st, c
   }
 }
 
+/* tfem_set_boundary_circle against circle_expect: the status, the message
+ * saying why, a node off the circle named as the one that is (in the
+ * index base). Called before the shadow takes the call. */
+static void oracle_circle(runner_t *R, int idx, const call_t *c, int st, const char *msg) {
+  shadow_t *s = &R->sh;
+  char why[96];
+  unsigned char *off = s->exact && s->has_mesh ? xcalloc((size_t)s->nn + 1, 1) : NULL;
+  int tag = c->iv[0], want = circle_expect(s, tag, c->dv[0], c->dv[1], c->dv[2], why, sizeof why, off);
+  if (want < 0) {
+    if (st != TFEM_STATUS_OK && st != TFEM_STATUS_INVALID_ARGUMENT)
+      finding(R, V_CIRCLE, idx, "%s (not OK or INVALID_ARGUMENT) for the circle (%g, %g) of radius %g on tag %d: "
+              "\"%.160s\"", status_name(st), c->dv[0], c->dv[1], c->dv[2], tag, msg);
+    free(off);
+    return;
+  }
+  R->oracles[O_CIRCLE]++;
+  int v = INT_MIN, t = INT_MIN;
+  if (st != want) {
+    finding(R, V_CIRCLE, idx, "%s for the circle (%.17g, %.17g) of radius %.17g on tag %d, %s expected%s%s: \"%.160s\"",
+            status_name(st), c->dv[0], c->dv[1], c->dv[2], tag, status_name(want), why[0] ? ": " : "", why, msg);
+  } else if (st != TFEM_STATUS_OK && !strstr(msg, why)) {
+    finding(R, V_CIRCLE, idx, "%s for the circle (%g, %g) of radius %g on tag %d without saying \"%s\": \"%.160s\"",
+            status_name(st), c->dv[0], c->dv[1], c->dv[2], tag, why, msg);
+  } else if (st != TFEM_STATUS_OK && off && strstr(why, "of an edge tagged")) {
+    if (sscanf(msg, "node %d of an edge tagged %d", &v, &t) != 2 || t != tag)
+      finding(R, V_CIRCLE, idx, "a node of tag %d is off the circle (%g, %g) of radius %g; the message does not name "
+              "it as \"node N of an edge tagged %d\": \"%.160s\"", tag, c->dv[0], c->dv[1], c->dv[2], tag, msg);
+    else if ((long)v - s->base < 0 || (long)v - s->base >= s->nn || !off[v - s->base])
+      finding(R, V_CIRCLE, idx, "the message names node %d, which is not a node of tag %d off the circle (%g, %g) of "
+              "radius %g (index base %d): \"%.160s\"", v, tag, c->dv[0], c->dv[1], c->dv[2], s->base, msg);
+  }
+  free(off);
+}
+
+/* After an adaptive solve that succeeded: every node of an edge tagged
+ * with a declared circle whose edges all lay on it (clean) lies on it, the
+ * nodes it added (numbered from the mesh's count before it, when known)
+ * to round-off of the circle's numbers (1e-12 of |centre| + radius), the
+ * others within the 1e-6 of the radius they were declared with. Called
+ * before the shadow takes the call; leaves the shadow's circles clean as
+ * found, and the refined mesh's node count. */
+static void oracle_circle_nodes(runner_t *R, int idx) {
+  shadow_t *s = &R->sh;
+  int nn = -1, ne = -1, before = s->exact ? s->nn : s->refined_nn;
+  s->refined_nn = 0;
+  if (tfem_get_sizes(R->m, &nn, NULL, NULL) != TFEM_STATUS_OK || nn < 1) return;
+  s->refined_nn = nn;
+  if (s->ncirc == 0 || s->ncirc > 16) return;
+  int clean[16], any = 0;
+  char why[96];
+  for (int k = 0; k < s->ncirc; ++k) {
+    clean[k] = s->exact ? circle_expect(s, s->circ_tag[k], s->circ[k][0], s->circ[k][1], s->circ[k][2], why,
+                                        sizeof why, NULL) == TFEM_STATUS_OK
+                        : s->circ_clean[k];
+    any |= clean[k];
+    s->circ_clean[k] = 0;
+  }
+  if (!any || tfem_get_boundary_edge_count(R->m, &ne) != TFEM_STATUS_OK || ne < 0) return;
+  double *xy = xmalloc(sizeof(double) * 2 * (size_t)nn);
+  int *edges = xmalloc(sizeof(int) * 2 * (size_t)ne + 1), *tags = xmalloc(sizeof(int) * (size_t)ne + 1);
+  if (tfem_get_mesh_nodes(R->m, xy, 2 * (size_t)nn) != TFEM_STATUS_OK ||
+      tfem_get_boundary_edges(R->m, edges, 2 * (size_t)ne, tags, (size_t)ne) != TFEM_STATUS_OK) {
+    finding(R, V_CIRCLE, idx, "the refined mesh (%d nodes, %d boundary edges) cannot be read back", nn, ne);
+    free(xy), free(edges), free(tags);
+    return;
+  }
+  int bad[16] = {0};
+  for (int e = 0; e < ne; ++e) {
+    int k = 0;
+    while (k < s->ncirc && s->circ_tag[k] != tags[e]) ++k;
+    if (k == s->ncirc || !clean[k] || bad[k]) continue;
+    const double *q = s->circ[k];
+    R->oracles[O_CIRCLE]++;
+    for (int j = 0; j < 2 && !bad[k]; ++j) {
+      long v = (long)edges[2 * e + j] - s->base;
+      if (v < 0 || v >= nn) {
+        finding(R, V_CIRCLE, idx, "boundary edge %d has node %d, outside the %d nodes (index base %d)", e + s->base,
+                edges[2 * e + j], nn, s->base);
+        bad[k] = 1;
+        break;
+      }
+      int added = before > 0 && v >= before;
+      double d = fabs(hypot(xy[2 * v] - q[0], xy[2 * v + 1] - q[1]) - q[2]);
+      double bound = added ? 1e-12 * (q[2] + fabs(q[0]) + fabs(q[1])) : 1e-6 * q[2] * (1.0 + 1e-9);
+      if (!(d <= bound)) {
+        finding(R, V_CIRCLE, idx, "node %ld (%s) of an edge tagged %d lies %.3g from the circle (%.17g, %.17g) of "
+                "radius %.17g declared on the tag (at most %.3g): at (%.17g, %.17g)", v + s->base,
+                added ? "added by the refinement" : "given", tags[e], d, q[0], q[1], q[2], bound, xy[2 * v],
+                xy[2 * v + 1]);
+        bad[k] = 1;
+      }
+    }
+  }
+  for (int k = 0; k < s->ncirc; ++k) s->circ_clean[k] = clean[k] && !bad[k];
+  free(xy), free(edges), free(tags);
+}
+
 static void exec_call(runner_t *R, int idx) {
   call_t *c = &R->cs->c[idx];
   int fn = c->fn;
@@ -6005,6 +6337,7 @@ static void exec_call(runner_t *R, int idx) {
                              o[0]);
     break;
   case F_GET_ADAPT_CYCLES: st = tfem_get_adapt_cycles(m, o[0], o[1], o[2], c->out[0].len); break;
+  case F_SET_BOUNDARY_CIRCLE: st = tfem_set_boundary_circle(m, c->iv[0], c->dv[0], c->dv[1], c->dv[2]); break;
   case F_DESTROY_NULL: tfem_destroy(NULL); break;
   case F_RECREATE:
     tfem_destroy(R->m);
@@ -6044,7 +6377,8 @@ static void exec_call(runner_t *R, int idx) {
       if (R->cs->c[k].status != TFEM_STATUS_OK) v = V_STATE;
       known |= !API_FUZZ_ADAPT_FAILURE_RESTORES && R->cs->c[k].fn == F_SOLVE_ADAPTIVE && R->cs->c[k].ran &&
                !R->cs->c[k].null_model && R->cs->c[k].status != TFEM_STATUS_OK &&
-               R->cs->c[k].status != TFEM_STATUS_INVALID_ARGUMENT; /* (the defect above, when not checked) */
+               (R->cs->c[k].status != TFEM_STATUS_INVALID_ARGUMENT ||
+                R->cs->c[k].refine_refused); /* (the defect above, when not checked) */
     }
     if (known) {
       for (int j = 0; j < nout; ++j) free(g[j].blk);
@@ -6113,6 +6447,7 @@ static void exec_call(runner_t *R, int idx) {
   msg[0] = 0;
   if (msg_fn && hslot) tfem_contact_last_error(hc, msg, sizeof msg);
   else if (msg_fn) tfem_last_error(slot, msg, 4096);
+  c->refine_refused = fn == F_SOLVE_ADAPTIVE && st == TFEM_STATUS_INVALID_ARGUMENT && strstr(msg, "curve") != NULL;
   if (R->verbose) {
     char ex[600];
     excerpt(msg, strlen(msg), ex, sizeof ex);
@@ -6531,6 +6866,8 @@ static void exec_call(runner_t *R, int idx) {
     oracle_element_stiffness(R, idx, c, (const double *)(const void *)g[0].p);
   if (!c->null_model && fn == F_SOLVE_ADAPTIVE) oracle_adapt(R, idx, c, st, g, msg);
   if (!c->null_model && fn == F_GET_ADAPT_CYCLES) oracle_adapt_cycles(R, idx, c, st, g, msg);
+  if (!c->null_model && fn == F_SET_BOUNDARY_CIRCLE) oracle_circle(R, idx, c, st, msg);
+  if (!c->null_model && fn == F_SOLVE_ADAPTIVE && st == TFEM_STATUS_OK) oracle_circle_nodes(R, idx);
   if (!c->null_model && st == TFEM_STATUS_OK && s->axi &&
       (fn == F_SOLVE || fn == F_SOLVE_CONTACT || fn == F_STEP || fn == F_SOLVE_ADAPTIVE)) {
     /* an axisymmetric model's solve: no body across the axis, u_r = 0 on it */
@@ -6725,6 +7062,7 @@ static void exec_call(runner_t *R, int idx) {
       !(fn == F_GET_ADAPT_CYCLES && s->adapt_n < 0)) /* (cycles not known here: the switch above) */
     finding(R, strcmp(R->cs->kind, "axisymmetric") == 0 ? V_AXI
                : strcmp(R->cs->kind, "adaptive") == 0   ? V_ADAPT
+               : strcmp(R->cs->kind, "ring") == 0       ? V_CIRCLE
                : strcmp(R->cs->kind, "mortar") == 0 || fn == F_SET_CONTACT_WEIGHTING || fn == F_GET_CONTACT_WEIGHTING
                    ? V_WEIGHTING : V_STEP,
             idx, "%s, the scene expects %s (weighting %d): \"%.160s\"", status_name(st), status_name(c->want - 1),
@@ -6923,7 +7261,20 @@ static void exec_call(runner_t *R, int idx) {
       }
       break;
     case F_SET_BOUNDARY_EDGES: case F_ADD_BOUNDARY_EDGES:
+      for (int k = 0; k < s->ncirc && k < 16; ++k) s->circ_clean[k] = 0; /* (a circle's tag may have other edges) */
       break; /* (the shadow's edges: below) */
+    case F_SET_BOUNDARY_CIRCLE: {
+      /* a circle replaces the one declared on its tag; nothing of a solve changes */
+      int k = 0;
+      while (k < s->ncirc && k < 16 && s->circ_tag[k] != c->iv[0]) ++k;
+      if (k == s->ncirc) s->ncirc++;
+      if (k < 16) {
+        s->circ_tag[k] = c->iv[0];
+        s->circ[k][0] = c->dv[0], s->circ[k][1] = c->dv[1], s->circ[k][2] = c->dv[2];
+        s->circ_clean[k] = 1;
+      }
+      goto keep_results;
+    }
     case F_SET_MATERIAL: {
       int k = sh_material(s, c->iv[0]);
       if (k < 0 && s->nmat < 16) k = s->nmat++;
@@ -7377,7 +7728,7 @@ static void exec_call(runner_t *R, int idx) {
   if (!API_FUZZ_ADAPT_FAILURE_RESTORES && st != TFEM_STATUS_OK && !c->null_model && fn == F_SOLVE_ADAPTIVE) {
     /* (the defects above, when not checked) */
     s->adapt_n = -1;
-    if (st != TFEM_STATUS_INVALID_ARGUMENT) s->res_unknown = 1;
+    if (st != TFEM_STATUS_INVALID_ARGUMENT || c->refine_refused) s->res_unknown = 1;
   }
 
   /* Keep the outputs for the replay. */
@@ -7721,6 +8072,9 @@ static void c_emit_call(FILE *f, const call_t *c, int idx) {
   }
   case F_GET_ADAPT_CYCLES:
     fprintf(f, "    s = tfem_get_adapt_cycles(%s, %s, %s, %s, %zu);\n", M, o[0], o[1], o[2], len[0]);
+    break;
+  case F_SET_BOUNDARY_CIRCLE:
+    fprintf(f, "    s = tfem_set_boundary_circle(%s, %d, %s, %s, %s);\n", M, I[0], d[0], d[1], d[2]);
     break;
   case F_DESTROY_NULL: fprintf(f, "    tfem_destroy(NULL);\n"); break;
   case F_RECREATE: fprintf(f, "    tfem_destroy(m);\n    m = tfem_create();\n"); break;

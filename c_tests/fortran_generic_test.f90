@@ -33,6 +33,16 @@ program fortran_generic_test
   type(tfem_contact_report) :: report
   type(tfem_adapt_report) :: adapt
   type(tfem_contact_options) :: options
+  ! A quarter of the ring 1 <= r <= 2 in two cells of 45 degrees (nodes 1..6, r = 1 at odd
+  ! nodes, 2 at even ones): x = 0 tag 1 (from the outer node inwards), y = 0 tag 2, the outer
+  ! arc tag 3, the inner arc tag 4.
+  real(dp), parameter :: c45 = 0.70710678118654752_dp
+  real(dp) :: xy3(12) = [1._dp, 0._dp, 2._dp, 0._dp, c45, c45, 2 * c45, 2 * c45, 0._dp, 1._dp, 0._dp, 2._dp]
+  integer :: conn3(12) = [1, 2, 4, 1, 4, 3, 3, 4, 6, 3, 6, 5], body3(4) = 1
+  integer :: edges3(12) = [6, 5, 1, 2, 2, 4, 4, 6, 3, 1, 5, 3], tags3(6) = [1, 2, 3, 3, 4, 4]
+  integer :: n_ring, ne_ring, on_arc
+  real(dp), allocatable :: xy_ring(:)
+  integer, allocatable :: edges_ring(:), tags_ring(:)
 
   call expect(kind(0) == c_int, 'default integer is integer(c_int)')
   m = tfem_create()
@@ -219,6 +229,48 @@ program fortran_generic_test
   call expect(status == TFEM_STATUS_OK .and. pair == 2 .and. flipped + flipped_ccw == 2, &
       'user contact mesh, both outputs')
   call tfem_destroy(c)
+
+  ! A boundary circle: a radius of -1 refused (INVALID_ARGUMENT), a circle off a node of the tag
+  ! naming it in index base 1, the outer arc's circle accepted; an adaptive solve then puts the
+  ! nodes it adds on the outer arc on that circle. (The status is taken before the message.)
+  m = tfem_create()
+  call expect(tfem_set_mesh(m, 6, xy3, 4, conn3, body3, 1) == TFEM_STATUS_OK, 'quarter ring')
+  call expect(tfem_set_boundary_edges(m, 6, edges3, tags3) == TFEM_STATUS_OK, 'quarter ring edges')
+  status = tfem_set_boundary_circle(m, 3, 0._dp, 0._dp, -1._dp)
+  msg = tfem_error_message(m)
+  call expect(status == TFEM_STATUS_INVALID_ARGUMENT .and. index(msg, 'radius') > 0, 'circle of radius -1: '//msg)
+  status = tfem_set_boundary_circle(m, 1, 0._dp, 0._dp, 2._dp)
+  msg = tfem_error_message(m)
+  call expect(status == TFEM_STATUS_INVALID_ARGUMENT .and. index(msg, 'node 5 of an edge tagged 1') > 0, &
+      'circle off node 5: '//msg)
+  status = tfem_set_boundary_circle(m, 3, 0._dp, 0._dp, 2._dp)
+  msg = tfem_error_message(m)
+  call expect(status == TFEM_STATUS_OK, 'circle of the outer arc: '//msg)
+  call expect(tfem_set_material(m, 1, 1000._dp, 0.3_dp, TFEM_PLANE_MODE_STRAIN) == TFEM_STATUS_OK, 'ring material')
+  call expect(tfem_fix_edges(m, 1, TFEM_COMPONENT_X, 0._dp) == TFEM_STATUS_OK, 'ring x = 0')
+  call expect(tfem_fix_edges(m, 2, TFEM_COMPONENT_Y, 0._dp) == TFEM_STATUS_OK, 'ring y = 0')
+  call expect(tfem_add_pressure(m, 4, 10._dp) == TFEM_STATUS_OK, 'ring pressure')
+  status = tfem_solve_adaptive(m, 1e-3_dp, TFEM_ADAPT_GOAL_ENERGY, 100000_c_int64_t, 4)
+  msg = tfem_error_message(m)
+  call expect(status == TFEM_STATUS_OK, 'ring adaptive solve: '//msg)
+  status = tfem_get_sizes(m, n_nodes=n_ring)
+  call expect(status == TFEM_STATUS_OK .and. n_ring > 6, 'ring refined')
+  status = tfem_get_boundary_edge_count(m, ne_ring)
+  call expect(status == TFEM_STATUS_OK .and. ne_ring > 6, 'ring edges refined')
+  allocate (xy_ring(2 * n_ring), edges_ring(2 * ne_ring), tags_ring(ne_ring))
+  call expect(tfem_get_mesh_nodes(m, xy_ring, size(xy_ring)) == TFEM_STATUS_OK, 'ring nodes')
+  call expect(tfem_get_boundary_edges(m, edges_ring, size(edges_ring), tags_ring, size(tags_ring)) == &
+      TFEM_STATUS_OK, 'ring boundary edges')
+  err = 0._dp
+  on_arc = 0
+  do i = 1, ne_ring
+    if (tags_ring(i) /= 3) cycle
+    on_arc = on_arc + 1
+    err = max(err, abs(hypot(xy_ring(2 * edges_ring(2 * i - 1) - 1), xy_ring(2 * edges_ring(2 * i - 1))) - 2), &
+        abs(hypot(xy_ring(2 * edges_ring(2 * i) - 1), xy_ring(2 * edges_ring(2 * i))) - 2))
+  end do
+  call expect(on_arc > 2 .and. err <= 1e-12_dp, 'new nodes of the outer arc on its circle')
+  call tfem_destroy(m)
 
   write (*, '(a, i0, a, i0, a)') 'fortran_generic_test: ', passed, ' passed, ', failed, ' failed'
   if (failed > 0) stop 1

@@ -39,8 +39,9 @@ pub(crate) fn adaptive(report: &mut String, a: &Args) {
          factorisation, contact solve, estimate and refinement), one thread. *Uniform*: one solve on the \
          structured mesh of size h, one thread. Relative errors against the reference (GetFEM, \
          docs/reference/; its error bars: compliance 1.8e-4, v_top 1.8e-4, gap_edge 1.4e-3, ℓc 1.2e-3 \
-         at 2C/L = 0.2). The estimate is of the energy norm: it drives the compliance and v_top, not ℓc \
-         (the contact zone's edge), which moves on the nodes it has.\n"
+         at 2C/L = 0.2). The estimate is of the energy norm: it drives the compliance and v_top; ℓc \
+         (the contact zone's edge), which the energy does not see, is located by refining the interface \
+         edges pressed at one end only until they are shorter than the tolerance times ℓc.\n"
     )
     .unwrap();
     let Some(refs) = reference(a) else {
@@ -140,6 +141,8 @@ pub(crate) fn adaptive(report: &mut String, a: &Args) {
         });
     }
     curves.extend(punch(report, a));
+    curves.extend(crate::adaptive_curved::lame(report, a));
+    curves.extend(crate::adaptive_curved::hertz(report, a));
     curves.extend(corner(report, a));
     figure(
         report,

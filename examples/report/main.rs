@@ -16,6 +16,7 @@
 //! which CI does not install; without `ccx` on the PATH it says so.
 
 mod adaptive;
+mod adaptive_curved;
 mod axisymmetric;
 mod built;
 mod calculix;

@@ -367,6 +367,38 @@ impl Refinement {
         })
     }
 
+    /// The edges, as node pairs (smaller first), that
+    /// [`Refinement::refine`] would bisect for `marked` — closure
+    /// included — without refining: what a caller that must keep two
+    /// sides' edges in step (facing edges of a contact pair) reads before
+    /// adding marks. Errors as [`Refinement::refine`]'s.
+    pub fn bisected_edges(
+        &self,
+        mesh: &Mesh,
+        marked: &[usize],
+    ) -> Result<std::collections::HashSet<[usize; 2]>> {
+        let nt = mesh.triangles().len();
+        if self.newest.len() != nt {
+            return Err(Error::state(format!(
+                "the refinement state describes {} triangles but the mesh has {nt}",
+                self.newest.len()
+            )));
+        }
+        if let Some(&t) = marked.iter().find(|&&t| t >= nt) {
+            return Err(Error::argument(format!(
+                "{} is marked for refinement but the mesh has {nt} triangles",
+                mesh.triangle_name(t)
+            )));
+        }
+        let rot = self.rotated(mesh)?;
+        let edges = Edges::new(mesh.nodes().len(), &rot)?;
+        let mark = marked_edges(mesh.nodes(), &edges, &rot, marked);
+        Ok((edges.ends.iter().zip(&mark))
+            .filter(|(_, m)| **m)
+            .map(|(&[p, q], _)| [p.min(q), p.max(q)])
+            .collect())
+    }
+
     /// Each triangle as [a, b, c] with c its newest vertex (a cyclic turn:
     /// the orientation is kept); an error if the state is another mesh's.
     fn rotated(&self, mesh: &Mesh) -> Result<Vec<[usize; 3]>> {

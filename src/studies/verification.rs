@@ -166,8 +166,33 @@ pub fn energy_error(
     d: &[[f64; 3]; 3],
     exact_grad: impl Fn([f64; 2]) -> [[f64; 2]; 2],
 ) -> f64 {
+    energy_error_where(mesh, uh, d, exact_grad, |_| true)
+}
+
+/// [`energy_error`] over the triangles of body `body` alone (bodies of
+/// other materials or other exact fields are measured on their own).
+pub fn energy_error_of_body(
+    mesh: &Mesh,
+    uh: &[f64],
+    body: i32,
+    d: &[[f64; 3]; 3],
+    exact_grad: impl Fn([f64; 2]) -> [[f64; 2]; 2],
+) -> f64 {
+    energy_error_where(mesh, uh, d, exact_grad, |t| mesh.body_of()[t] == body)
+}
+
+fn energy_error_where(
+    mesh: &Mesh,
+    uh: &[f64],
+    d: &[[f64; 3]; 3],
+    exact_grad: impl Fn([f64; 2]) -> [[f64; 2]; 2],
+    keep: impl Fn(usize) -> bool,
+) -> f64 {
     let mut sum = 0.0;
-    for tri in mesh.triangles() {
+    for (t, tri) in mesh.triangles().iter().enumerate() {
+        if !keep(t) {
+            continue;
+        }
         let x = mesh.corners(tri);
         let geo = TriGeometry::new(&x);
         if geo.j <= 0.0 {

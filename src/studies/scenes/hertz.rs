@@ -19,6 +19,7 @@ use std::collections::{BTreeMap, BTreeSet};
 use crate::contact::ContactOptions;
 use crate::error::{Error, Result};
 use crate::fem::element::{Jmin, Tempering, TriGeometry, elasticity_stiffness};
+use crate::fem::curve::Curve;
 use crate::fem::material::{Material, PlaneMode};
 use crate::model::solution::ContactReport;
 use crate::model::{Component, Model};
@@ -79,7 +80,8 @@ impl Default for Hertz {
 pub struct HertzScene {
     /// The model, ready for `solve_contact`.
     pub model: Model,
-    /// Block nodes on its top edge, sorted by x.
+    /// Block nodes on its top edge as built, sorted by x
+    /// ([`HertzScene::measure`] reads them from the model's current mesh).
     pub block_top: Vec<usize>,
     /// Nodes of the block (the first ones); the rest belong to the cylinder.
     pub n_block_nodes: usize,
@@ -223,6 +225,14 @@ impl Hertz {
         // Half the line load on the half model's centre line.
         model.add_pressure(TAG_LOAD, 0.5 * load / w_cyl)?;
         model.add_contact_pair(TAG_BLOCK_TOP, TAG_CYLINDER)?;
+        // The cylinder's surface: an adaptive solve refines onto it.
+        model.set_curve(
+            TAG_CYLINDER,
+            Curve::Circle {
+                center: [0.0, r],
+                radius: r,
+            },
+        )?;
         Ok(HertzScene {
             model,
             block_top,
@@ -258,13 +268,14 @@ impl HertzScene {
     pub fn measure(&self, hertz: &Hertz, report: ContactReport) -> Result<HertzResult> {
         let mesh = self.model.mesh().ok_or_else(|| Error::state("no mesh"))?;
         let u = self.model.displacements()?;
-        let on_top: BTreeMap<usize, usize> = self
-            .block_top
+        // Read from the model's mesh, which an adaptive solve refines.
+        let block_top = super::nodes_by_x(mesh, TAG_BLOCK_TOP);
+        let on_top: BTreeMap<usize, usize> = block_top
             .iter()
             .enumerate()
             .map(|(k, &v)| (v, k))
             .collect();
-        let mut force = vec![0.0; self.block_top.len()];
+        let mut force = vec![0.0; block_top.len()];
         let material = self
             .model
             .material(1)
@@ -282,7 +293,7 @@ impl HertzScene {
                 }
             }
         }
-        let x: Vec<f64> = self.block_top.iter().map(|&v| mesh.nodes()[v][0]).collect();
+        let x: Vec<f64> = block_top.iter().map(|&v| mesh.nodes()[v][0]).collect();
         let pressure: Vec<(f64, f64)> = (0..x.len())
             .map(|k| {
                 let left = if k > 0 { x[k] - x[k - 1] } else { 0.0 };
@@ -349,8 +360,7 @@ impl HertzScene {
             .into_iter()
             .enumerate()
             .collect();
-        let interface_pressure: Vec<(f64, f64)> = self
-            .block_top
+        let interface_pressure: Vec<(f64, f64)> = block_top
             .iter()
             .filter_map(|v| Some((mesh.nodes()[*v][0], *traction.get(v)?)))
             .collect();

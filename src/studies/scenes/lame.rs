@@ -43,15 +43,21 @@ use std::f64::consts::FRAC_PI_2;
 
 use crate::contact::ContactOptions;
 use crate::error::{Error, Result};
+use crate::fem::curve::Curve;
 use crate::fem::material::{Material, PlaneMode};
 use crate::model::solution::ContactReport;
 use crate::model::{Component, Model};
 use crate::studies::meshgen::MeshBuilder;
+use crate::studies::verification::energy_error_of_body;
 
 /// Tag of the inner ring's outer surface (contact side a).
 pub const TAG_INNER_RING: i32 = 1;
 /// Tag of the outer ring's inner surface (contact side b).
 pub const TAG_OUTER_RING: i32 = 2;
+/// Tag of the inner ring's bore, r = a (free).
+pub const TAG_BORE: i32 = 3;
+/// Tag of the outer ring's rim, r = c (free).
+pub const TAG_RIM: i32 = 4;
 
 /// Parameters of the shrink fit. [`Default`]: a = 0.5, b = 1, c = 1.5,
 /// δ = 1e-3 b, steel-like inner ring, an outer ring half as stiff, plane
@@ -140,6 +146,25 @@ impl Ring {
     pub fn u_r(&self, r: f64) -> f64 {
         let (a, b) = self.ab();
         r / self.e * ((1.0 - self.nu) * a + (1.0 + self.nu) * b / (r * r))
+    }
+
+    /// The displacement gradient [[∂u/∂x, ∂u/∂y], [∂v/∂x, ∂v/∂y]] at `p`:
+    /// u = u_r(r) e_r, so ∇u = u_r′ e_r e_rᵀ + (u_r/r)(I − e_r e_rᵀ), with
+    /// u_r′ = ε_rr = [(1 − ν) A − (1 + ν) B/r²]/E.
+    pub fn gradient(&self, p: [f64; 2]) -> [[f64; 2]; 2] {
+        let (a, b) = self.ab();
+        let r = p[0].hypot(p[1]);
+        let e = [p[0] / r, p[1] / r];
+        let radial = ((1.0 - self.nu) * a - (1.0 + self.nu) * b / (r * r)) / self.e;
+        let hoop = self.u_r(r) / r;
+        let mut g = [[0.0; 2]; 2];
+        for (i, row) in g.iter_mut().enumerate() {
+            for (j, gij) in row.iter_mut().enumerate() {
+                let delta = if i == j { 1.0 } else { 0.0 };
+                *gij = radial * e[i] * e[j] + hoop * (delta - e[i] * e[j]);
+            }
+        }
+        g
     }
 }
 
@@ -310,21 +335,40 @@ impl Lame {
             inner_surface.iter().copied().collect(),
             outer_surface.iter().copied().collect(),
         );
+        let (bore, rim): (BTreeSet<usize>, BTreeSet<usize>) = (
+            inner[0].iter().copied().collect(),
+            outer[outer.len() - 1].iter().copied().collect(),
+        );
         let mut edges = Vec::new();
         let mut tags = Vec::new();
         for e in mb.boundary_edges() {
             let both = |s: &BTreeSet<usize>| s.contains(&e[0]) && s.contains(&e[1]);
-            if both(&on_inner) {
+            let tag = [
+                (&on_inner, TAG_INNER_RING),
+                (&on_outer, TAG_OUTER_RING),
+                (&bore, TAG_BORE),
+                (&rim, TAG_RIM),
+            ]
+            .into_iter()
+            .find_map(|(set, tag)| both(set).then_some(tag));
+            if let Some(tag) = tag {
                 edges.push(e);
-                tags.push(TAG_INNER_RING);
-            } else if both(&on_outer) {
-                edges.push(e);
-                tags.push(TAG_OUTER_RING);
+                tags.push(tag);
             }
         }
         let mut model = Model::new();
         model.set_mesh(mb.build()?);
         model.set_boundary_edges(&edges, &tags)?;
+        // The surfaces are circles: an adaptive solve refines onto them.
+        for (tag, radius) in [(TAG_INNER_RING, b1), (TAG_OUTER_RING, b), (TAG_BORE, a), (TAG_RIM, c)] {
+            model.set_curve(
+                tag,
+                Curve::Circle {
+                    center: [0.0, 0.0],
+                    radius,
+                },
+            )?;
+        }
         model.set_material(
             1,
             Material::new(self.e_inner, self.nu_inner, self.plane, "inner ring")?,
@@ -386,6 +430,24 @@ pub(crate) fn criss_cross(
 }
 
 impl LameScene {
+    /// The energy norm of the last solve's error against the closed form,
+    /// (Σ over the rings ∫ (ε − ε_h)ᵀ D (ε − ε_h) dA)^½, on whatever mesh
+    /// the model holds (refined ones included).
+    pub fn energy_error(&self, lame: &Lame) -> Result<f64> {
+        let exact = lame.exact();
+        let mesh = self.model.mesh().ok_or_else(|| Error::state("no mesh"))?;
+        let uh: Vec<f64> = self.model.displacements()?.concat();
+        let mut sum = 0.0;
+        for (body, ring) in [(1, exact.inner), (2, exact.outer)] {
+            let d = (self.model.material(body))
+                .ok_or_else(|| Error::state(format!("no material for body {body}")))?
+                .d_matrix();
+            let e = energy_error_of_body(mesh, &uh, body, &d, |p| ring.gradient(p));
+            sum += e * e;
+        }
+        Ok(sum.sqrt())
+    }
+
     /// Solves and measures.
     pub fn solve(&mut self, lame: &Lame, options: &ContactOptions) -> Result<LameResult> {
         let report = self.model.solve_contact(options)?;
