@@ -163,7 +163,12 @@ pub(crate) fn hertz(report: &mut String, a: &Args) -> Vec<Curve> {
                 let r = s.model.solve_adaptive(&options)?;
                 r.cycles.last().map_or(0, |c| c.unknowns)
             }
-            None => s.model.solve_contact(&ContactOptions::default())?.info.unknowns,
+            None => {
+                s.model
+                    .solve_contact(&ContactOptions::default())?
+                    .info
+                    .unknowns
+            }
         };
         let seconds = t0.elapsed().as_secs_f64();
         let m = s.measure(&hz, s.model.contact_report()?.clone())?;
@@ -182,7 +187,10 @@ pub(crate) fn hertz(report: &mut String, a: &Args) -> Vec<Curve> {
         .map(|&tol| (tol, run(base.half_width / 2.0, Some(tol))))
         .collect();
     // W∞ from the last two adaptive runs: W∞ − W ∝ N^(−1).
-    let ok: Vec<&HertzRow> = adapted.iter().filter_map(|(_, r)| r.as_ref().ok()).collect();
+    let ok: Vec<&HertzRow> = adapted
+        .iter()
+        .filter_map(|(_, r)| r.as_ref().ok())
+        .collect();
     let limit = match ok.as_slice() {
         [.., p, q] => {
             let ratio = q.unknowns as f64 / p.unknowns as f64;

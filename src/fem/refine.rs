@@ -1341,6 +1341,9 @@ mod tests {
         m.set_curve(5, circle(1.0)).unwrap();
         let mut state = Refinement::new(&m);
         let e = state.refine(&m, &[0]).unwrap_err();
-        assert!(e.message().contains("triangle 0") && e.message().contains("folds"), "{e}");
+        assert!(
+            e.message().contains("triangle 0") && e.message().contains("folds"),
+            "{e}"
+        );
     }
 }

@@ -192,7 +192,12 @@ impl Model {
                 break;
             }
             let mesh = self.problem.mesh_ref()?;
-            in_step(&refinement, mesh, &facing_edges(&self.problem)?, &mut marked)?;
+            in_step(
+                &refinement,
+                mesh,
+                &facing_edges(&self.problem)?,
+                &mut marked,
+            )?;
             let refined = refinement.refine(mesh, &marked)?;
             let interpolated = refined.interpolate(self.field()?, 2)?;
             let next = self.problem.refined(refined.mesh, &refined.parents)?;

@@ -18,8 +18,8 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use crate::contact::ContactOptions;
 use crate::error::{Error, Result};
-use crate::fem::element::{Jmin, Tempering, TriGeometry, elasticity_stiffness};
 use crate::fem::curve::Curve;
+use crate::fem::element::{Jmin, Tempering, TriGeometry, elasticity_stiffness};
 use crate::fem::material::{Material, PlaneMode};
 use crate::model::solution::ContactReport;
 use crate::model::{Component, Model};
@@ -270,11 +270,8 @@ impl HertzScene {
         let u = self.model.displacements()?;
         // Read from the model's mesh, which an adaptive solve refines.
         let block_top = super::nodes_by_x(mesh, TAG_BLOCK_TOP);
-        let on_top: BTreeMap<usize, usize> = block_top
-            .iter()
-            .enumerate()
-            .map(|(k, &v)| (v, k))
-            .collect();
+        let on_top: BTreeMap<usize, usize> =
+            block_top.iter().enumerate().map(|(k, &v)| (v, k)).collect();
         let mut force = vec![0.0; block_top.len()];
         let material = self
             .model

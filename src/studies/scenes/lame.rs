@@ -360,7 +360,12 @@ impl Lame {
         model.set_mesh(mb.build()?);
         model.set_boundary_edges(&edges, &tags)?;
         // The surfaces are circles: an adaptive solve refines onto them.
-        for (tag, radius) in [(TAG_INNER_RING, b1), (TAG_OUTER_RING, b), (TAG_BORE, a), (TAG_RIM, c)] {
+        for (tag, radius) in [
+            (TAG_INNER_RING, b1),
+            (TAG_OUTER_RING, b),
+            (TAG_BORE, a),
+            (TAG_RIM, c),
+        ] {
             model.set_curve(
                 tag,
                 Curve::Circle {
