@@ -1151,14 +1151,19 @@ pub unsafe extern "C" fn tfem_solve_contact(
 /// estimate the error by stress recovery, refine the triangles holding
 /// half of it by newest-vertex bisection, and again, until the estimated
 /// relative error of `goal` (an `AdaptGoal`: 0 energy norm, 1 compliance)
-/// is at most `tolerance` (> 0), or the next mesh would exceed
+/// is at most `tolerance` (> 0) — and, with contact, the edges of the
+/// contact zones are located to `tolerance` of the contact length (the
+/// interface edges pressed at one end only refined until shorter) — or
+/// the next mesh would exceed
 /// `max_unknowns`, or `max_cycles` solves are done (either is a warning
 /// with the estimate reached, `tfem_get_warning`, and TFEM_STATUS_OK).
 /// The model keeps the refined mesh — the given nodes keep their indices,
 /// new ones follow; read it back with `tfem_get_sizes`,
 /// `tfem_get_mesh_nodes`, `tfem_get_mesh_triangles` and
 /// `tfem_get_boundary_edges` — its loads, constraints and pairs carried
-/// over, and the last solve's results. `contact` may be NULL (the default
+/// over, and the last solve's results. New nodes on edges whose tag has
+/// a circle (`tfem_set_boundary_circle`) go on the circle, and a curved
+/// interface's facing edges are bisected together. `contact` may be NULL (the default
 /// options); `report` may be NULL. Bad arguments change nothing; a failed
 /// solve restores the model as it was given.
 #[unsafe(no_mangle)]
