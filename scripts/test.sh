@@ -199,3 +199,17 @@ echo "== ctest (C, C++, Fortran tests and seed-scene regression baselines)"
 timed "configure (against the moved install)" configure -S c_tests -B build/c_tests -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH="$prefix"
 timed "build" cmake --build build/c_tests -j 2 >/dev/null
 timed "ctest" ctest --test-dir build/c_tests --output-on-failure
+
+echo "== the Python package: pip install . in a fresh virtual environment, pytest, the seed example"
+# Last: maturin builds the library with the python feature in the same
+# target directory (reusing the release build's dependencies, ~1 minute
+# instead of a whole build), which replaces the C library there; the
+# copy the tests compare results with (to the bit) is taken first.
+target_dir="${CARGO_TARGET_DIR:-$PWD/target}"
+cp "$target_dir/release/libtfem.so" build/libtfem_c.so
+rm -rf build/venv
+python3 -m venv build/venv
+build/venv/bin/python -m pip install -q --upgrade pip
+CARGO_TARGET_DIR="$target_dir" build/venv/bin/python -m pip install -q ".[test]" meshio gmsh
+TFEM_C_LIBRARY="$PWD/build/libtfem_c.so" build/venv/bin/python -m pytest -q python/tests
+build/venv/bin/python python/examples/seed.py

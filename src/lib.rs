@@ -54,6 +54,8 @@ pub mod ffi;
 pub mod io;
 pub mod linalg;
 pub mod model;
+#[cfg(feature = "python")]
+mod python;
 pub mod solve;
 #[cfg(feature = "studies")]
 pub mod studies;

@@ -81,7 +81,14 @@ impl Curve {
                 let d = [mid[0] - center[0], mid[1] - center[1]];
                 let r = d[0].hypot(d[1]);
                 (r > self.tolerance())
-                    .then(|| [center[0] + radius * d[0] / r, center[1] + radius * d[1] / r])
+                    // radius · (d/r): the unit direction first, so that a
+                    // huge circle neither overflows nor loses its digits.
+                    .then(|| {
+                        [
+                            center[0] + radius * (d[0] / r),
+                            center[1] + radius * (d[1] / r),
+                        ]
+                    })
             }
         }
     }
@@ -104,6 +111,22 @@ mod tests {
         let want = on(0.6);
         assert!((m[0] - want[0]).abs() < 1e-15 && (m[1] - want[1]).abs() < 1e-15);
         assert!(UNIT.distance(m) < 1e-15);
+    }
+
+    #[test]
+    fn a_huge_circle_bisects_without_overflow_or_lost_digits() {
+        // Nearly straight: the arc's midpoint is the chord's to 1e-32.
+        for big in [1e30, 1e155, 1e300] {
+            let c = Curve::Circle {
+                center: [-big, 0.125],
+                radius: big,
+            };
+            let m = c.bisect([0.0, 0.0], [0.0, 0.25]).expect("a point");
+            assert!(
+                m[0].abs() < 1e-12 && (m[1] - 0.125).abs() < 1e-12,
+                "{big}: {m:?}"
+            );
+        }
     }
 
     #[test]

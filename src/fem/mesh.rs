@@ -589,9 +589,11 @@ impl Mesh {
             any = true;
             for v in e.nodes {
                 let d = curve.distance(self.nodes[v]);
-                if !(d <= curve.tolerance()) {
+                // NaN (a non-finite node) is off the curve too.
+                if d.is_nan() || d > curve.tolerance() {
                     return Err(Error::argument(format!(
-                        "{} of an edge tagged {tag} lies {d:.3e} from the curve declared on                          the tag (at most {:.3e}): {curve:?}",
+                        "{} of an edge tagged {tag} lies {d:.3e} from the curve declared on \
+                         the tag (at most {:.3e}): {curve:?}",
                         self.node_name(v),
                         curve.tolerance()
                     )));

@@ -1310,6 +1310,7 @@ mod tests {
         let e = m.set_curve(3, circle(2.1)).unwrap_err();
         assert_eq!(e.status(), Status::InvalidArgument);
         assert!(e.message().contains("node 2 of an edge tagged 3"), "{e}");
+        assert!(!e.message().contains("  "), "{e}");
         let e = m.set_curve(7, circle(2.0)).unwrap_err();
         assert!(e.message().contains("no boundary edge has tag 7"), "{e}");
         let e = m.set_curve(3, circle(-2.0)).unwrap_err();

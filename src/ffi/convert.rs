@@ -168,7 +168,8 @@ pub struct TfemAdaptReport {
     /// Solves made (cycles); each cycle's numbers from
     /// `tfem_get_adapt_cycles`.
     pub cycles: c_int,
-    /// 1 if the last estimate meets the tolerance, 0 if a limit stopped the
+    /// 1 if the last estimate meets the tolerance (and, with contact, the
+    /// contact zones' edges are located to it), 0 if a limit stopped the
     /// refinement first (a warning then says what was reached).
     pub reached: c_int,
     /// Unknowns of the last solve.

@@ -133,10 +133,10 @@ impl Model {
     /// which keep their indices), its loads, constraints and pairs carried
     /// over ([`crate::Problem::refined`]), and the last solve's results.
     /// Bad options, and a pair with a contact mesh of its own (which does
-    /// not refine), are refused before anything changes; a solve that
-    /// fails before any refinement leaves the model as a failed solve does
-    /// (its earlier results kept), one that fails after restores the
-    /// model as it was given.
+    /// not refine), are refused before anything changes; a solve or a
+    /// refinement that fails leaves the model as it was given, earlier
+    /// results included (the cycles run on a copy of the problem, which
+    /// the model takes only when they succeed).
     pub fn solve_adaptive(&mut self, options: &AdaptOptions) -> Result<AdaptReport> {
         options.validate()?;
         if let Some(i) = (self.problem.contact_pairs().iter()).position(|p| p.user_mesh.is_some()) {
@@ -145,16 +145,20 @@ impl Model {
                  let tfem build it (add_contact_pair)"
             )));
         }
-        let before = self.problem.clone();
-        let report = self.adapt(options);
-        if report.is_err() && self.problem.epoch() != before.epoch() {
-            let _ = self.edit(|p| {
-                let current = std::mem::replace(p, before);
-                p.supersede(&current);
-                Ok(())
-            });
-        }
-        report
+        let mut work = Model {
+            problem: self.problem.clone(),
+            settings: self.settings,
+            pool: self.pool.clone(),
+            session: None,
+            solution: None,
+            solve_warnings: Vec::new(),
+            stepping: Default::default(),
+        };
+        let report = work.adapt(options)?;
+        // The refined problem's epochs run on from the given one's, past
+        // every result and session the model holds: all are replaced.
+        *self = work;
+        Ok(report)
     }
 
     fn adapt(&mut self, options: &AdaptOptions) -> Result<AdaptReport> {

@@ -109,17 +109,6 @@ impl Problem {
         self.stiffness += 1;
     }
 
-    /// Puts this problem (an earlier state, restored) after `current`: its
-    /// epochs move past `current`'s, so that nothing derived from either
-    /// is taken for its own.
-    pub(crate) fn supersede(&mut self, current: &Problem) {
-        self.epoch = current.epoch;
-        self.structure = current.structure;
-        self.stiffness = current.stiffness;
-        self.contact = current.contact;
-        self.changed_contact("a failed adaptive solve (the model as given)");
-    }
-
     /// The epoch: moves with every change.
     pub fn epoch(&self) -> u64 {
         self.epoch
