@@ -1972,25 +1972,35 @@ static void scene_adaptive(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
   a->iv[5] = rrange(r, 1, 4);
   a->iv[6] = (int[]){300, 1000, 3000}[rint_(r, 3)];
   a->dv[2] = (double[]){0.2, 0.1, 0.05, 1e-3, 1e-300}[rint_(r, 5)];
-  a->want = 1 + TFEM_STATUS_OK;
+  /* The blocks' contact options with the literal inversion test: the
+   * header (TFEM_INVERSION_TEST_LITERAL) says its second-order term "can
+   * exceed the penalty penetration on fine meshes and make the loop
+   * cycle", and the refinement makes finer meshes, so the adaptive solve
+   * may be NOT_CONVERGED (the model then as it was given, no cycles): no
+   * status is demanded of it, nor of the calls whose status follows from
+   * it (oracle_adapt and oracle_adapt_cycles still check them against
+   * what it did), as of the frictional steps that may cycle. */
+  int may_cycle = blocks && !a->in[0].null_ && a->iv[1] == TFEM_INVERSION_TEST_LITERAL;
+  int ok_after = may_cycle ? 0 : 1 + TFEM_STATUS_OK;
+  a->want = ok_after;
   a->expect = uniform && a->dv[2] >= 1e-3 ? 1 : 0;
   call_t keep = *a; /* (its scalar arguments, for the calls made from it) */
   /* after it (inserted in order at si + 1) */
   case_t after = {0};
   call_t *c = add_call(&after, F_GET_ADAPT_CYCLES);
-  c->want = 1 + TFEM_STATUS_OK;
+  c->want = ok_after;
   if (chance(r, 0.3)) {
     c = add_call(&after, F_GET_ADAPT_CYCLES);
     for (int j = 0; j < 3; ++j) c->out[j].null_ = chance(r, 0.4);
     if (chance(r, 0.5)) {
       c->out[0] = (out_spec){LS_REL, -1, c->out[0].null_, 0, 0, 0};
-      c->want = 1 + TFEM_STATUS_BUFFER_TOO_SMALL;
+      c->want = may_cycle ? 0 : 1 + TFEM_STATUS_BUFFER_TOO_SMALL;
     }
   }
   add_call(&after, F_GET_SIZES);
   if (chance(r, 0.4)) { /* refused after it: the cycles stay */
     for (int k = rrange(r, 1, 2); k > 0; --k) bad_adaptive_call(r, &after, &keep);
-    add_call(&after, F_GET_ADAPT_CYCLES)->want = 1 + TFEM_STATUS_OK;
+    add_call(&after, F_GET_ADAPT_CYCLES)->want = ok_after;
   }
   if (chance(r, 0.5)) add_call(&after, F_WARNING_COUNT);
   if (chance(r, 0.3)) call_i(&after, F_GET_WARNING, 0, 0)->out[0] = (out_spec){LS_FIXED, 512, 0, 0, 0, 0};
@@ -2021,11 +2031,11 @@ static void scene_adaptive(rng_t *r, case_t *cs, ctx_t *cx, mesh_t *m) {
     c->want = 1 + TFEM_STATUS_OK;
     add_call(cs, F_GET_DISPLACEMENTS);
     if (chance(r, 0.5)) add_call(cs, F_GET_OUT_OF_PLANE);
-    add_call(cs, F_GET_ADAPT_CYCLES)->want = 1 + TFEM_STATUS_OK;
+    add_call(cs, F_GET_ADAPT_CYCLES)->want = ok_after;
   } else if (v < 6) { /* the first mesh again: the cycles stay */
     set_mesh_call(cs, m, cx->base);
     add_call(cs, F_GET_SIZES);
-    add_call(cs, F_GET_ADAPT_CYCLES)->want = 1 + TFEM_STATUS_OK;
+    add_call(cs, F_GET_ADAPT_CYCLES)->want = ok_after;
   } else if (v < 7 && blocks) {
     /* a second adaptive solve that fails (lambda = 1e-200: SINGULAR, seen
      * on these blocks): the cycles and results of the first stay (a failed
@@ -6667,6 +6677,17 @@ static void exec_call(runner_t *R, int idx) {
           finding(R, V_OTHER, idx, "the .vtu (%zu bytes) is not a grid of %d points and %d (+ %d contact) cells: "
                   "NumberOfCells %ld", vtu_n, nn, nt, nc, ncells);
       }
+    } else if (path && known && st == TFEM_STATUS_NUMERICAL_FAILURE) {
+      /* A result the file would hold that its accessor refuses (a stress
+       * beyond DBL_MAX): the header's NUMERICAL_FAILURE, nothing written,
+       * the item named as that accessor names it (vtu_refusal_of_accessor) */
+      R->oracles[O_VTU]++;
+      if (vtu_found)
+        finding(R, V_OTHER, idx, "NUMERICAL_FAILURE, yet a file is at \"%s\" (the header: nothing is written): "
+                "\"%.160s\"", path, msg);
+      else if (!vtu_refusal_of_accessor(m, msg))
+        finding(R, V_OTHER, idx, "NUMERICAL_FAILURE for the path \"%s\" after a solve, yet no accessor of the "
+                "results it writes refuses them so: \"%.160s\"", path, msg);
     } else if (path && known && st != TFEM_STATUS_INVALID_STATE) {
       /* (INVALID_STATE with results: the results_lost oracle below) */
       int want_st = vtu_writable(c->iv[0]) ? TFEM_STATUS_OK : TFEM_STATUS_IO;
