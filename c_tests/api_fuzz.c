@@ -6654,7 +6654,8 @@ static void exec_call(runner_t *R, int idx) {
   }
   /* tfem_write_vtu: NULL refused; a file written only where it can be,
    * holding the grid of the model's points and cells; an unwritable path
-   * refused with TFEM_STATUS_IO once there are results. */
+   * refused with TFEM_STATUS_IO once there are results; NUMERICAL_FAILURE
+   * only as an accessor of what it writes refuses it, nothing written. */
   if (fn == F_WRITE_VTU && !c->null_model) {
     const shadow_t *sv = &R->sh;
     int known = sv->has_mesh && sv->results && !sv->res_unknown;

@@ -326,3 +326,21 @@ def test_every_method_has_a_docstring_from_the_rust_docs():
         if not name.startswith("_"):
             doc = getattr(tfem._tfem.Model, name).__doc__
             assert doc and doc.strip().endswith("."), name
+
+
+def test_tempering_off_refuses_a_flat_triangle_that_auto_tempers():
+    nodes = np.array([[0.0, 0.0], [1.0, 0.0], [0.5, 0.0], [0.5, 1.0]])
+    tris = np.array([[0, 1, 3], [0, 2, 1]])  # the second is flat (J = 0)
+    m = tfem.Model()
+    m.set_mesh(nodes, tris, [1, 1])
+    m.set_material(1, 1.0, 0.3)
+    for v in (0, 1):
+        m.fix(v, "x")
+        m.fix(v, "y")
+    m.add_nodal_force(3, 0.0, -1.0)
+    m.solve()
+    m.set_tempering("off")
+    with pytest.raises(tfem.DegenerateElement, match="triangle 1"):
+        m.solve()
+    with pytest.raises(tfem.InvalidArgument, match="needs a value"):
+        m.set_tempering("lambda")

@@ -299,6 +299,14 @@ class Model:
         """
         ...
 
+    def set_tempering(self, mode: Literal["auto", "off", "lambda", "fixed"], parameter: Optional[float] = None) -> None:
+        """
+        Chooses Jmin: "auto" (the default), "off" (plain FEM), "lambda"
+        (Jmin = h³/λ with λ = `parameter`, a length) or "fixed" (Jmin =
+        `parameter`).
+        """
+        ...
+
     def set_threads(self, threads: int) -> None:
         """
         Runs the solves on `threads` threads (0: as many as cores).

@@ -5,7 +5,8 @@
 //! of the system assembled on the pattern ([`body`]), the orientation
 //! of triangles numbered clockwise ([`orientation`]), adaptive
 //! refinement by newest-vertex bisection ([`refine`]) and the curves it
-//! puts new boundary nodes on ([`curve`]).
+//! puts new boundary nodes on ([`curve`]); and the tempered linear
+//! tetrahedron ([`tet`]), the first stage of three dimensions.
 
 pub mod assembly;
 pub mod body;
@@ -17,3 +18,4 @@ pub mod material;
 pub mod mesh;
 pub mod orientation;
 pub mod refine;
+pub mod tet;

@@ -13,6 +13,7 @@ use super::{TfemWarning, to_py};
 use crate::contact::ContactOptions;
 use crate::error::{Error, Result};
 use crate::fem::curve::Curve;
+use crate::fem::element::Tempering;
 use crate::fem::material::{Material, PlaneMode};
 use crate::fem::mesh::Mesh;
 use crate::model::adapt::{AdaptOptions, Goal};
@@ -230,6 +231,29 @@ impl PyModel {
         self.model.set_material(body, m).map_err(to_py)
     }
 
+    /// Chooses Jmin: "auto" (the default), "off" (plain FEM), "lambda"
+    /// (Jmin = h³/λ with λ = `parameter`, a length) or "fixed" (Jmin =
+    /// `parameter`).
+    #[pyo3(signature = (mode, parameter = None))]
+    fn set_tempering(&mut self, mode: &str, parameter: Option<f64>) -> PyResult<()> {
+        let needs = |what: &str| {
+            parameter
+                .ok_or_else(|| to_py(Error::argument(format!("tempering {what:?} needs a value"))))
+        };
+        let t = match mode {
+            "auto" => Tempering::Auto,
+            "off" => Tempering::Off,
+            "lambda" => Tempering::Lambda(needs(mode)?),
+            "fixed" => Tempering::Fixed(needs(mode)?),
+            _ => {
+                return Err(to_py(Error::argument(format!(
+                    "tempering = {mode:?} must be \"auto\", \"off\", \"lambda\" or \"fixed\""
+                ))));
+            }
+        };
+        self.model.set_tempering(t).map_err(to_py)
+    }
+
     /// Prescribes component `component` ("x" or "y") of node `node`.
     #[pyo3(signature = (node, component, value = 0.0))]
     fn fix(&mut self, node: usize, component: &Bound<'_, PyAny>, value: f64) -> PyResult<()> {
@@ -410,10 +434,7 @@ impl PyModel {
     }
 
     /// The tagged boundary edges: (edges (k, 2) int64, tags (k,) int32).
-    fn boundary_edges<'py>(
-        &self,
-        py: Python<'py>,
-    ) -> PyResult<TaggedEdges<'py>> {
+    fn boundary_edges<'py>(&self, py: Python<'py>) -> PyResult<TaggedEdges<'py>> {
         let be = self.mesh()?.boundary_edges();
         let flat: Vec<i64> = be.iter().flat_map(|e| e.nodes).map(|v| v as i64).collect();
         let tags: Vec<i32> = be.iter().map(|e| e.tag).collect();
