@@ -372,8 +372,9 @@ module tfem_c
   type, bind(C) :: tfem_adapt_report
     !> Solves made (cycles); each cycle's numbers from `tfem_get_adapt_cycles`.
     integer(c_int) :: cycles
-    !> 1 if the last estimate meets the tolerance, 0 if a limit stopped the refinement first (a
-    !! warning then says what was reached).
+    !> 1 if the last estimate meets the tolerance (and, with contact, the contact zones' edges are
+    !! located to it), 0 if a limit stopped the refinement first (a warning then says what was
+    !! reached).
     integer(c_int) :: reached
     !> Unknowns of the last solve.
     integer(c_int64_t) :: unknowns

@@ -497,7 +497,8 @@ typedef struct tfem_adapt_report {
    */
   int cycles;
   /**
-   * 1 if the last estimate meets the tolerance, 0 if a limit stopped the
+   * 1 if the last estimate meets the tolerance (and, with contact, the
+   * contact zones' edges are located to it), 0 if a limit stopped the
    * refinement first (a warning then says what was reached).
    */
   int reached;

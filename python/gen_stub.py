@@ -60,6 +60,7 @@ PARAMS = {
     "goal": 'Literal["energy", "compliance"]',
     "max_unknowns": "int",
     "max_cycles": "int",
+    "resolve_contact_edges": "bool",
     "path": "Union[str, os.PathLike[str]]",
 }
 

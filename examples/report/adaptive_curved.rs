@@ -34,67 +34,19 @@ pub(crate) fn lame(report: &mut String, a: &Args) -> Vec<Curve> {
     } else {
         (&[3e-2, 1e-2, 3e-3], &[8.0, 16.0, 32.0, 64.0])
     };
-    let (mut adaptive, mut uniform) = (Vec::new(), Vec::new());
+    let mut adaptive = Vec::new();
     for &tol in tolerances {
-        let lame = Lame {
-            mesh_size: 0.25,
-            ..Default::default()
-        };
-        let t0 = Instant::now();
-        let run = lame.build().and_then(|mut s| {
-            s.model.set_threads(1)?;
-            let options = AdaptOptions {
-                tolerance: tol,
-                goal: Goal::Energy,
-                ..Default::default()
-            };
-            let r = s.model.solve_adaptive(&options)?;
-            let t = t0.elapsed().as_secs_f64();
-            let est = s.model.error_estimate()?;
-            let e = s.energy_error(&lame)?;
-            Ok((r.cycles.last().map_or(0, |c| c.unknowns), t, e, est))
-        });
-        match run {
-            Ok((n, t, e, est)) => {
-                writeln!(
-                    report,
-                    "| adaptive, tol {tol:.0e} | {n} | {t:.3} | {:.3e} | {:.3} |",
-                    e / est.energy,
-                    est.global / e
-                )
-                .unwrap();
-                adaptive.push((t, e / est.energy));
-            }
-            Err(e) => writeln!(report, "| adaptive, tol {tol:.0e} | {} |", failure(&e)).unwrap(),
-        }
+        let name = format!("adaptive, tol {tol:.0e}");
+        adaptive.extend(lame_row(report, &name, 0.25, Some(tol)));
     }
+    let mut uniform = Vec::new();
     for &k in sizes {
-        let lame = Lame {
-            mesh_size: 1.0 / k,
-            ..Default::default()
-        };
-        let t0 = Instant::now();
-        let run = lame.build().and_then(|mut s| {
-            s.model.set_threads(1)?;
-            s.model.solve_contact(&ContactOptions::default())?;
-            let t = t0.elapsed().as_secs_f64();
-            let est = s.model.error_estimate()?;
-            let e = s.energy_error(&lame)?;
-            Ok((s.model.solve_info()?.unknowns, t, e, est))
-        });
-        match run {
-            Ok((n, t, e, est)) => {
-                writeln!(
-                    report,
-                    "| uniform, h = b/{k} | {n} | {t:.3} | {:.3e} | {:.3} |",
-                    e / est.energy,
-                    est.global / e
-                )
-                .unwrap();
-                uniform.push((t, e / est.energy));
-            }
-            Err(e) => writeln!(report, "| uniform, h = b/{k} | {} |", failure(&e)).unwrap(),
-        }
+        uniform.extend(lame_row(
+            report,
+            &format!("uniform, h = b/{k}"),
+            1.0 / k,
+            None,
+        ));
     }
     writeln!(
         report,
@@ -113,6 +65,61 @@ pub(crate) fn lame(report: &mut String, a: &Args) -> Vec<Curve> {
             points: uniform,
         },
     ]
+}
+
+/// One row of the Lamé table: the fit on h = `mesh_size`, adapted to
+/// `tol` if given; its (time, relative energy error) point.
+fn lame_row(
+    report: &mut String,
+    name: &str,
+    mesh_size: f64,
+    tol: Option<f64>,
+) -> Option<(f64, f64)> {
+    let lame = Lame {
+        mesh_size,
+        ..Default::default()
+    };
+    let t0 = Instant::now();
+    let run = lame.build().and_then(|mut s| {
+        s.model.set_threads(1)?;
+        let unknowns = match tol {
+            Some(tolerance) => {
+                let options = AdaptOptions {
+                    tolerance,
+                    goal: Goal::Energy,
+                    ..Default::default()
+                };
+                let r = s.model.solve_adaptive(&options)?;
+                r.cycles.last().map_or(0, |c| c.unknowns)
+            }
+            None => {
+                s.model
+                    .solve_contact(&ContactOptions::default())?
+                    .info
+                    .unknowns
+            }
+        };
+        let t = t0.elapsed().as_secs_f64();
+        let est = s.model.error_estimate()?;
+        let e = s.energy_error(&lame)?;
+        Ok((unknowns, t, e, est))
+    });
+    match run {
+        Ok((n, t, e, est)) => {
+            writeln!(
+                report,
+                "| {name} | {n} | {t:.3} | {:.3e} | {:.3} |",
+                e / est.energy,
+                est.global / e
+            )
+            .unwrap();
+            Some((t, e / est.energy))
+        }
+        Err(e) => {
+            writeln!(report, "| {name} | {} |", failure(&e)).unwrap();
+            None
+        }
+    }
 }
 
 /// One Hertz run's row: unknowns, seconds, a and p₀ errors, the relative
@@ -148,41 +155,7 @@ pub(crate) fn hertz(report: &mut String, a: &Args) -> Vec<Curve> {
         (&[0.1, 0.05, 0.03, 0.02, 0.01], &[4.0, 8.0, 16.0, 32.0])
     };
     let base = Hertz::default();
-    let run = |mesh_size: f64, tol: Option<f64>| -> tfem::Result<HertzRow> {
-        let hz = Hertz { mesh_size, ..base };
-        let t0 = Instant::now();
-        let mut s = hz.build()?;
-        s.model.set_threads(1)?;
-        let unknowns = match tol {
-            Some(tolerance) => {
-                let options = AdaptOptions {
-                    tolerance,
-                    goal: Goal::Energy,
-                    ..Default::default()
-                };
-                let r = s.model.solve_adaptive(&options)?;
-                r.cycles.last().map_or(0, |c| c.unknowns)
-            }
-            None => {
-                s.model
-                    .solve_contact(&ContactOptions::default())?
-                    .info
-                    .unknowns
-            }
-        };
-        let seconds = t0.elapsed().as_secs_f64();
-        let m = s.measure(&hz, s.model.contact_report()?.clone())?;
-        let est = s.model.error_estimate()?;
-        Ok(HertzRow {
-            unknowns,
-            seconds,
-            a: m.a / m.a_exact - 1.0,
-            p0: m.p0_fit / m.p0_exact - 1.0,
-            relative: est.relative(),
-            eta: est.global,
-            work: s.model.external_work()?,
-        })
-    };
+    let run = |mesh_size: f64, tol: Option<f64>| hertz_run(&base, mesh_size, tol);
     let adapted: Vec<(f64, tfem::Result<HertzRow>)> = (tolerances.iter())
         .map(|&tol| (tol, run(base.half_width / 2.0, Some(tol))))
         .collect();
@@ -198,35 +171,17 @@ pub(crate) fn hertz(report: &mut String, a: &Args) -> Vec<Curve> {
         }
         _ => f64::NAN,
     };
-    let (mut adaptive, mut graded) = (Vec::new(), Vec::new());
-    let mut row = |name: String, r: &tfem::Result<HertzRow>, with_effectivity: bool| match r {
-        Ok(r) => {
-            let eff = if with_effectivity && limit > r.work {
-                format!("{:.2}", r.eta / (limit - r.work).sqrt())
-            } else {
-                "—".to_string()
-            };
-            writeln!(
-                report,
-                "| {name} | {} | {:.3} | {:+.2e} | {:+.2e} | {:.2e} | {eff} |",
-                r.unknowns, r.seconds, r.a, r.p0, r.relative
-            )
-            .unwrap();
-            Some((r.seconds, r.a.abs()))
-        }
-        Err(e) => {
-            writeln!(report, "| {name} | {} |", failure(e)).unwrap();
-            None
-        }
-    };
+    let mut adaptive = Vec::new();
     let last = adapted.len().saturating_sub(1);
     for (i, (tol, r)) in adapted.iter().enumerate() {
         // The last run defines W∞ with its predecessor: no effectivity.
-        adaptive.extend(row(format!("adaptive, tol {tol}"), r, i < last));
+        let limit = if i < last { limit } else { f64::NAN };
+        adaptive.extend(hertz_row(report, &format!("adaptive, tol {tol}"), r, limit));
     }
+    let mut graded = Vec::new();
     for &k in sizes {
         let r = run(base.half_width / k, None);
-        graded.extend(row(format!("graded, a/{k}"), &r, false));
+        graded.extend(hertz_row(report, &format!("graded, a/{k}"), &r, f64::NAN));
     }
     writeln!(
         report,
@@ -250,4 +205,71 @@ pub(crate) fn hertz(report: &mut String, a: &Args) -> Vec<Curve> {
             points: graded,
         },
     ]
+}
+
+/// One row of the Hertz table, with the effectivity against the work's
+/// limit `limit` (NaN: none); its (time, |a error|) point.
+fn hertz_row(
+    report: &mut String,
+    name: &str,
+    r: &tfem::Result<HertzRow>,
+    limit: f64,
+) -> Option<(f64, f64)> {
+    match r {
+        Ok(r) => {
+            let eff = if limit > r.work {
+                format!("{:.2}", r.eta / (limit - r.work).sqrt())
+            } else {
+                "—".to_string()
+            };
+            writeln!(
+                report,
+                "| {name} | {} | {:.3} | {:+.2e} | {:+.2e} | {:.2e} | {eff} |",
+                r.unknowns, r.seconds, r.a, r.p0, r.relative
+            )
+            .unwrap();
+            Some((r.seconds, r.a.abs()))
+        }
+        Err(e) => {
+            writeln!(report, "| {name} | {} |", failure(e)).unwrap();
+            None
+        }
+    }
+}
+
+/// Hertz on h = `mesh_size` at the contact, adapted to `tol` if given.
+fn hertz_run(base: &Hertz, mesh_size: f64, tol: Option<f64>) -> tfem::Result<HertzRow> {
+    let hz = Hertz { mesh_size, ..*base };
+    let t0 = Instant::now();
+    let mut s = hz.build()?;
+    s.model.set_threads(1)?;
+    let unknowns = match tol {
+        Some(tolerance) => {
+            let options = AdaptOptions {
+                tolerance,
+                goal: Goal::Energy,
+                ..Default::default()
+            };
+            let r = s.model.solve_adaptive(&options)?;
+            r.cycles.last().map_or(0, |c| c.unknowns)
+        }
+        None => {
+            s.model
+                .solve_contact(&ContactOptions::default())?
+                .info
+                .unknowns
+        }
+    };
+    let seconds = t0.elapsed().as_secs_f64();
+    let m = s.measure(&hz, s.model.contact_report()?.clone())?;
+    let est = s.model.error_estimate()?;
+    Ok(HertzRow {
+        unknowns,
+        seconds,
+        a: m.a / m.a_exact - 1.0,
+        p0: m.p0_fit / m.p0_exact - 1.0,
+        relative: est.relative(),
+        eta: est.global,
+        work: s.model.external_work()?,
+    })
 }

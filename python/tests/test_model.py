@@ -138,8 +138,8 @@ def test_arrays_in_any_layout_and_integer_width_give_the_same_results():
     a.solve_contact()
     b = tfem.Model()
     b.set_threads(1)
-    b.set_mesh(np.asfortranarray(nodes), tris.astype(np.int32)[:, :], bodies.astype(np.int64))
-    b.set_boundary_edges(edges[::-1][::-1].astype(np.uint16), list(tags))
+    b.set_mesh(np.asfortranarray(nodes), np.asfortranarray(tris.astype(np.int32)), bodies.astype(np.int64)[::1])
+    b.set_boundary_edges(np.asfortranarray(edges.astype(np.uint16)), list(tags))
     b.set_material(1, 1e10, 0.3)
     b.set_material(2, 1e11, 0.3)
     b.add_pressure(3, 1e7)
@@ -156,7 +156,13 @@ def test_a_c_contiguous_array_of_the_native_dtype_is_passed_without_a_copy():
     assert tfem._array(nodes, np.float64, "nodes") is nodes
     tris = np.zeros((4, 3), dtype=np.int64)
     assert tfem._array(tris, np.int64, "triangles") is tris
-    assert tfem._array(np.asfortranarray(nodes.T).T, np.float64, "nodes") is not None
+
+
+def test_an_index_out_of_the_native_range_is_refused_not_wrapped():
+    nodes, tris, bodies, *_ = seed_arrays()
+    with pytest.raises(tfem.InvalidArgument, match="bodies holds 4294967297") as e:
+        tfem.Model().set_mesh(nodes, tris, np.full(len(tris), 2**32 + 1))
+    assert e.value.status == 2
 
 
 def test_results_are_numpy_arrays_of_the_mesh_shapes():
@@ -178,11 +184,11 @@ def test_the_reactions_balance_the_load():
 
 
 def test_solves_on_threads_release_the_gil_and_give_the_same_results():
-    serial = []
-    for _ in range(2):
-        m = seed_model(1 / 64)
-        m.solve_contact()
-        serial.append(m.displacements())
+    serial = seed_model(1 / 128)
+    serial.solve_contact()
+    expected = serial.displacements()
+    # Built first: only the solves run while the Python thread counts.
+    models = [seed_model(1 / 128) for _ in range(4)]
     ticks = 0
     stop = threading.Event()
 
@@ -190,25 +196,21 @@ def test_solves_on_threads_release_the_gil_and_give_the_same_results():
         nonlocal ticks
         while not stop.is_set():
             ticks += 1
-            time.sleep(0)
 
     counter = threading.Thread(target=count)
     counter.start()
-
-    def solve(_):
-        m = seed_model(1 / 64)
-        m.solve_contact()
-        return m.displacements()
-
-    t0 = ticks
+    t0 = time.perf_counter()
     with ThreadPoolExecutor(max_workers=2) as pool:
-        results = list(pool.map(solve, range(4)))
+        list(pool.map(lambda m: m.solve_contact(), models))
+    elapsed = time.perf_counter() - t0
     stop.set()
     counter.join()
-    for u in results:
-        assert np.array_equal(u, serial[0])
-    # The Python thread ran during the solves: the GIL was released.
-    assert ticks - t0 > 100, ticks - t0
+    for m in models:
+        assert np.array_equal(m.displacements(), expected)
+    # A pure-Python loop counts millions per second with the GIL; held by
+    # the solves, it would count only in the switch intervals left to it
+    # (5 ms each) between them.
+    assert ticks > 1e5 * elapsed, (ticks, elapsed)
 
 
 def test_a_frictionless_load_history_ends_where_one_solve_does():
@@ -281,7 +283,10 @@ def test_a_missing_file_raises_io_error_naming_it(tmp_path):
 
 
 def test_the_gmsh_python_api_model_becomes_a_tfem_model():
-    gmsh = pytest.importorskip("gmsh")
+    try:
+        import gmsh
+    except (ImportError, OSError) as e:  # the wheel needs GL and X libraries
+        pytest.skip(f"no gmsh module: {e}")
     gmsh.initialize()
     try:
         gmsh.option.setNumber("General.Terminal", 0)
@@ -289,7 +294,7 @@ def test_the_gmsh_python_api_model_becomes_a_tfem_model():
         s = gmsh.model.occ.addRectangle(0, 0, 0, 1, 0.5)
         gmsh.model.occ.synchronize()
         gmsh.model.addPhysicalGroup(2, [s], 1)
-        bottom = [c for _, c in gmsh.model.getBoundary([(2, s)]) if abs(gmsh.model.occ.getCenterOfMass(1, c)[1]) < 1e-9]
+        bottom = [c for _, c in gmsh.model.getBoundary([(2, s)], oriented=False) if abs(gmsh.model.occ.getCenterOfMass(1, c)[1]) < 1e-9]
         gmsh.model.addPhysicalGroup(1, bottom, 5)
         gmsh.option.setNumber("Mesh.MeshSizeMax", 0.1)
         gmsh.model.mesh.generate(2)

@@ -6,8 +6,11 @@ pairs, solves (with contact, load steps, or adaptively to a tolerance)
 and gives its results back as numpy arrays. Every failure raises an
 exception of the :class:`Error` family carrying ``status`` (the C ABI's
 code) and a message naming the offending node, triangle, edge, body or
-argument; the model is then unchanged. Warnings go to Python's
-``warnings`` as :class:`Warning`. Solves release the GIL.
+argument; the model is then unchanged. (An argument of the wrong Python
+type, or a negative count or index, raises Python's own ``TypeError`` or
+``OverflowError`` before the library is reached.) Warnings go to Python's
+``warnings`` as :class:`Warning`; turned into errors, a warning raises
+after the call that gave it has done its work. Solves release the GIL.
 
 Meshes: :func:`read_msh` (a Gmsh MSH 4.1 file), :func:`from_gmsh` (the
 current model of Gmsh's Python API), or arrays of your own
@@ -61,13 +64,28 @@ __all__ = [
 ]
 
 
+def _error(cls, message, status):
+    """An exception of the tfem family raised from Python, carrying the
+    status code and name its native siblings carry."""
+    e = cls(message)
+    e.status, e.status_name = status, {2: "invalid argument", 3: "invalid mesh"}[status]
+    return e
+
+
 def _array(a, dtype, what):
     """`a` as a C-contiguous array of `dtype`: `a` itself (no copy) when it
     is one already, else a converted copy; a wrong dtype kind (floats for
-    indices) is refused rather than truncated."""
+    indices) or a value the dtype cannot hold is refused rather than
+    truncated or wrapped."""
     arr = np.asarray(a)
-    if np.issubdtype(dtype, np.integer) and arr.size and not np.issubdtype(arr.dtype, np.integer):
-        raise InvalidArgument(f"{what} must hold integers (got dtype {arr.dtype})")
+    if np.issubdtype(dtype, np.integer) and arr.size:
+        if not np.issubdtype(arr.dtype, np.integer):
+            raise _error(InvalidArgument, f"{what} must hold integers (got dtype {arr.dtype})", 2)
+        info = np.iinfo(dtype)
+        lo, hi = arr.min(), arr.max()
+        if lo < info.min or hi > info.max:
+            bad = lo if lo < info.min else hi
+            raise _error(InvalidArgument, f"{what} holds {bad}, outside the range of {np.dtype(dtype).name}", 2)
     return np.ascontiguousarray(arr, dtype=dtype)
 
 
@@ -107,19 +125,36 @@ def read_msh(path) -> Model:
 
 def from_gmsh(gmsh=None) -> Model:
     """A model with the mesh of the current model of Gmsh's Python API
-    (``import gmsh``; a 2D mesh of 3-node triangles in the plane z = 0):
-    each physical surface's triangles become a body (tag = body), each
-    physical curve's 2-node lines boundary edges with its tag."""
+    (``import gmsh``; a 2D mesh of 3-node triangles in the plane z = 0),
+    read as :func:`read_msh` reads a file: each physical surface's
+    triangles become a body (tag = body; a surface in several groups goes
+    to the first, with a warning), each physical curve's 2-node lines
+    boundary edges with its tag; physical points are not used (a
+    warning); only the nodes of the elements read are kept."""
+    import warnings  # noqa: PLC0415
+
     if gmsh is None:
         import gmsh  # noqa: PLC0415  (optional dependency)
     tags, coords, _ = gmsh.model.mesh.getNodes()
     xyz = np.asarray(coords, dtype=np.float64).reshape(-1, 3)
-    if xyz.size and np.max(np.abs(xyz[:, 2])) > 0.0:
-        raise InvalidMesh("the Gmsh model has nodes off the plane z = 0")
     index = {int(t): i for i, t in enumerate(tags)}
     tris, bodies, edges, edge_tags = [], [], [], []
+    surfaces = {}
     for dim, phys in gmsh.model.getPhysicalGroups():
+        if dim == 0:
+            warnings.warn(f"physical group {phys} holds points: not used", Warning, stacklevel=2)
+            continue
         for entity in gmsh.model.getEntitiesForPhysicalGroup(dim, phys):
+            if dim == 2:
+                if int(entity) in surfaces:
+                    warnings.warn(
+                        f"surface {entity} is in physical groups {surfaces[int(entity)]} and {phys}: "
+                        f"its triangles go to body {surfaces[int(entity)]}",
+                        Warning,
+                        stacklevel=2,
+                    )
+                    continue
+                surfaces[int(entity)] = phys
             types, _, nodes = gmsh.model.mesh.getElements(dim, entity)
             for etype, enodes in zip(types, nodes):
                 conn = [index[int(v)] for v in enodes]
@@ -130,14 +165,24 @@ def from_gmsh(gmsh=None) -> Model:
                     edges.extend(np.reshape(conn, (-1, 2)).tolist())
                     edge_tags.extend([phys] * (len(conn) // 2))
                 else:
-                    raise InvalidMesh(
+                    raise _error(
+                        InvalidMesh,
                         f"physical group {phys} (dimension {dim}) has elements of Gmsh type "
-                        f"{etype}: only 3-node triangles (2) and 2-node lines (1) are read"
+                        f"{etype}: only 3-node triangles (2) and 2-node lines (1) are read",
+                        3,
                     )
+    if not tris:
+        raise _error(InvalidMesh, "the Gmsh model has no physical surface of triangles: define one", 3)
+    tris, edges = np.reshape(tris, (-1, 3)), np.reshape(edges, (-1, 2))
+    used = np.unique(np.concatenate([tris.ravel(), edges.ravel()]))
+    renumber = np.full(len(xyz), -1, dtype=np.int64)
+    renumber[used] = np.arange(len(used))
+    if np.max(np.abs(xyz[used, 2])) > 0.0:
+        raise _error(InvalidMesh, "the Gmsh model has nodes off the plane z = 0", 3)
     m = Model()
-    m.set_mesh(xyz[:, :2], np.reshape(tris, (-1, 3)), bodies)
-    if edges:
-        m.set_boundary_edges(np.reshape(edges, (-1, 2)), edge_tags)
+    m.set_mesh(xyz[used, :2], renumber[tris], bodies)
+    if len(edges):
+        m.set_boundary_edges(renumber[edges], edge_tags)
     return m
 
 

@@ -319,10 +319,12 @@ class Model:
         """
         ...
 
-    def solve_adaptive(self, tolerance: float, goal: Literal["energy", "compliance"] = 'energy', max_unknowns: int = 2000000, max_cycles: int = 30) -> Dict[str, Any]:
+    def solve_adaptive(self, tolerance: float, goal: Literal["energy", "compliance"] = 'energy', max_unknowns: int = 2000000, max_cycles: int = 30, resolve_contact_edges: bool = True) -> Dict[str, Any]:
         """
         Solves to a tolerance on the estimated relative error of `goal`
-        ("energy" or "compliance"), refining the mesh; a dict with
+        ("energy" or "compliance"), refining the mesh (with contact, also
+        until the contact zones' edges are located to the tolerance unless
+        `resolve_contact_edges` is false); a dict with
         `reached`, `seconds` and `cycles` (unknowns, estimate, contact_edge,
         seconds of each).
         """

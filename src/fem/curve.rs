@@ -82,7 +82,8 @@ impl Curve {
                 let r = d[0].hypot(d[1]);
                 (r > self.tolerance())
                     // radius · (d/r): the unit direction first, so that a
-                    // huge circle neither overflows nor loses its digits.
+                    // huge circle does not overflow (its points carry the
+                    // absolute round-off of its size, as any would).
                     .then(|| {
                         [
                             center[0] + radius * (d[0] / r),

@@ -87,7 +87,8 @@ pub struct Refined {
     /// side was.
     pub mesh: Mesh,
     /// For each new node (index `old node count + i` for entry `i`), the
-    /// two nodes of the old mesh whose midpoint it is. All parents are old
+    /// two nodes of the old mesh whose edge it bisects (at its midpoint, or
+    /// on the edge's curve: [`crate::fem::curve`]). All parents are old
     /// nodes (one refinement bisects each old edge at most once), so nodal
     /// values are carried by averaging the two parents' values, in any
     /// order: see [`Refined::interpolate`].
@@ -108,7 +109,9 @@ impl Refined {
     /// Carries nodal values of the old mesh (`components` per node, node by
     /// node) to the refined mesh: old nodes keep theirs, a new node gets
     /// the mean of its parents' (the P1 interpolant, exact for the old
-    /// mesh's P1 field). An error if `old` does not hold `components`
+    /// mesh's P1 field at a midpoint; for a node put on a curve, the value
+    /// at the chord's midpoint, off by the field's slope times the
+    /// sagitta). An error if `old` does not hold `components`
     /// values for each old node.
     pub fn interpolate(&self, old: &[f64], components: usize) -> Result<Vec<f64>> {
         let n_old = self.old_node_count();
@@ -529,6 +532,8 @@ struct Midpoints {
     parents: Vec<[usize; 2]>,
     /// The new node of each edge (usize::MAX if not bisected).
     index: Vec<usize>,
+    /// The new nodes put on a curve rather than at their chord's midpoint.
+    on_curve: std::collections::HashSet<usize>,
 }
 
 impl Midpoints {
@@ -546,6 +551,7 @@ impl Midpoints {
             nodes: reserved(nodes.len() + n_new, "the refined mesh's nodes")?,
             parents: reserved(n_new, "the refined mesh's node parents")?,
             index: vec![usize::MAX; edges.ends.len()],
+            on_curve: std::collections::HashSet::new(),
         };
         out.nodes.extend_from_slice(nodes);
         for (e, &[p, q]) in edges.ends.iter().enumerate() {
@@ -554,14 +560,17 @@ impl Midpoints {
                 let (a, b) = (nodes[p], nodes[q]);
                 let at = match curved.get(&e) {
                     None => [0.5 * (a[0] + b[0]), 0.5 * (a[1] + b[1])],
-                    Some((tag, curve)) => curve.bisect(a, b).ok_or_else(|| {
-                        Error::argument(format!(
-                            "the edge from {} to {} (tag {tag}) is a chord through the centre \
+                    Some((tag, curve)) => {
+                        out.on_curve.insert(out.nodes.len());
+                        curve.bisect(a, b).ok_or_else(|| {
+                            Error::argument(format!(
+                                "the edge from {} to {} (tag {tag}) is a chord through the centre \
                              of its curve {curve:?}: the mesh is too coarse along it",
-                            mesh.node_name(p),
-                            mesh.node_name(q)
-                        ))
-                    })?,
+                                mesh.node_name(p),
+                                mesh.node_name(q)
+                            ))
+                        })?
+                    }
                 };
                 out.nodes.push(at);
                 out.parents.push([p, q]);
@@ -608,14 +617,19 @@ fn curved_edges(
 }
 
 /// Checks that no triangle turned over when its new nodes went onto a
-/// curve: a child of a triangle with J > 0 must have J > 0 (a chord much
-/// longer than the triangle is high, on a concave side, could fold it).
+/// curve: a child with a node on a curve of a triangle with J > 0 must
+/// have J > 0 (a chord much longer than the triangle is high, on a concave
+/// side, could fold it). Children with midpoints only are not read: a
+/// nearly flat parent's may round to J ≤ 0, as without curves.
 fn unfolded(mesh: &Mesh, mids: &Midpoints, children: &Children) -> Result<()> {
     let area = |nodes: &[[f64; 2]], [a, b, c]: [usize; 3]| {
         let (p, q, r) = (nodes[a], nodes[b], nodes[c]);
         (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
     };
     for (child, &t) in children.triangles.iter().zip(&children.parent) {
+        if !child.iter().any(|v| mids.on_curve.contains(v)) {
+            continue;
+        }
         if area(mesh.nodes(), mesh.triangles()[t]) > 0.0 && area(&mids.nodes, *child) <= 0.0 {
             return Err(Error::argument(format!(
                 "{}: putting its new nodes on the curve of its tag folds it; the mesh is too \

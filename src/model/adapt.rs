@@ -5,6 +5,7 @@ use std::time::Instant;
 
 use super::Model;
 use super::estimate::{Estimate, Scaled, estimate, scaled};
+use super::facing::{facing_edges, in_step};
 use crate::contact::ContactOptions;
 use crate::error::{Error, Result};
 use crate::fem::refine::Refinement;
@@ -98,7 +99,8 @@ pub struct Cycle {
     pub estimate: f64,
     /// How finely it locates the edges of its contact zones: the longest
     /// interface edge with one end pressed and one free, over the contact
-    /// length ℓc (0 without contact).
+    /// length ℓc (0 without contact, or when the edges are not to be
+    /// resolved).
     pub contact_edge: f64,
     /// Seconds of the cycle: solve and estimate (refinement not counted).
     pub seconds: f64,
@@ -293,151 +295,24 @@ impl Model {
     }
 
     fn warn_unreached(&mut self, options: &AdaptOptions, reached: &Cycle, limit: &str) {
-        let edges = if reached.contact_edge > options.tolerance {
-            format!(
-                " and the contact zones' edges located to {:.3e} of the contact length",
+        let mut unmet = Vec::new();
+        if reached.estimate > options.tolerance {
+            unmet.push(format!(
+                "an estimated relative error of {:.3e}",
+                reached.estimate
+            ));
+        }
+        if reached.contact_edge > options.tolerance {
+            unmet.push(format!(
+                "the contact zones' edges located to {:.3e} of the contact length",
                 reached.contact_edge
-            )
-        } else {
-            String::new()
-        };
+            ));
+        }
         self.solve_warnings.push(format!(
-            "the adaptive solve stopped at its limit of {limit} with an estimated relative error of \
-             {:.3e}{edges}, above the tolerance {:.3e}",
-            reached.estimate, options.tolerance
+            "the adaptive solve stopped at its limit of {limit} with {}, above the tolerance {:.3e}",
+            unmet.join(" and "),
+            options.tolerance
         ));
-    }
-}
-
-/// Two interface edges that face each other across a pair, node for node,
-/// with the triangles that own them.
-#[derive(Debug)]
-struct Facing {
-    edges: [[usize; 2]; 2],
-    owners: [usize; 2],
-}
-
-/// The facing edges of the pairs with a curve on either side
-/// ([`crate::Mesh::set_curve`]): edges of the two sides whose ends are
-/// each within half an edge of an end of the other. Two polygons that
-/// matched on a curve and are refined apart no longer enclose the same
-/// overlap (a shrink fit's interference, smaller than the coarse chords'
-/// sagitta, would vanish between them), so such edges are bisected
-/// together; straight interfaces refine apart (their non-matching
-/// discretisation is exact on the patch test).
-fn facing_edges(problem: &crate::Problem) -> Result<Vec<Facing>> {
-    let mesh = problem.mesh_ref()?;
-    let x = mesh.nodes();
-    let dist = |p: usize, q: usize| (x[p][0] - x[q][0]).hypot(x[p][1] - x[q][1]);
-    let mut out = Vec::new();
-    for pair in problem.contact_pairs() {
-        if mesh.curve(pair.tag_a).is_none() && mesh.curve(pair.tag_b).is_none() {
-            continue;
-        }
-        let side = |tag: i32| -> Vec<([usize; 2], usize)> {
-            (mesh.boundary_edges().iter())
-                .filter(|e| e.tag == tag)
-                .filter_map(|e| e.owner.map(|(t, _)| (e.nodes, t)))
-                .collect()
-        };
-        let (a, b) = (side(pair.tag_a), side(pair.tag_b));
-        // Each node's shortest edge on its side.
-        let mut h: std::collections::HashMap<usize, f64> = std::collections::HashMap::new();
-        for &([p, q], _) in a.iter().chain(&b) {
-            for v in [p, q] {
-                let e = h.entry(v).or_insert(f64::INFINITY);
-                *e = e.min(dist(p, q));
-            }
-        }
-        // Cells as long as side b's longest edge: a partner, within half an
-        // edge, lies in the 3 × 3 cells around a node.
-        let longest = b.iter().fold(0.0f64, |m, ([p, q], _)| m.max(dist(*p, *q)));
-        let grid = NodeGrid::of(x, b.iter().flat_map(|(e, _)| *e), longest);
-        let partner = |v: usize| {
-            grid.nearest(x, x[v])
-                .filter(|&w| dist(v, w) <= 0.5 * h[&v].min(h[&w]))
-        };
-        let on_b: std::collections::HashMap<[usize; 2], usize> = (b.iter())
-            .map(|&([p, q], t)| ([p.min(q), p.max(q)], t))
-            .collect();
-        for &([p, q], t) in &a {
-            let (Some(fp), Some(fq)) = (partner(p), partner(q)) else {
-                continue;
-            };
-            if let Some(&u) = on_b.get(&[fp.min(fq), fp.max(fq)]) {
-                out.push(Facing {
-                    edges: [[p.min(q), p.max(q)], [fp.min(fq), fp.max(fq)]],
-                    owners: [t, u],
-                });
-            }
-        }
-    }
-    Ok(out)
-}
-
-/// Adds to `marked` the owners of the facing edges that refinement would
-/// otherwise bisect on one side only, until none is left (closure on one
-/// side can bisect more of its edges: read again).
-fn in_step(
-    refinement: &Refinement,
-    mesh: &crate::Mesh,
-    facing: &[Facing],
-    marked: &mut Vec<usize>,
-) -> Result<()> {
-    if facing.is_empty() {
-        return Ok(());
-    }
-    loop {
-        let cut = refinement.bisected_edges(mesh, marked)?;
-        let before = marked.len();
-        for f in facing {
-            match (cut.contains(&f.edges[0]), cut.contains(&f.edges[1])) {
-                (true, false) => marked.push(f.owners[1]),
-                (false, true) => marked.push(f.owners[0]),
-                _ => {}
-            }
-        }
-        if marked.len() == before {
-            return Ok(());
-        }
-    }
-}
-
-/// Nodes bucketed on a square grid, for nearest-node queries.
-struct NodeGrid {
-    cell: f64,
-    buckets: std::collections::HashMap<(i64, i64), Vec<usize>>,
-}
-
-impl NodeGrid {
-    fn of(x: &[[f64; 2]], nodes: impl Iterator<Item = usize>, cell: f64) -> NodeGrid {
-        let mut grid = NodeGrid {
-            cell: if cell > 0.0 { cell } else { 1.0 },
-            buckets: std::collections::HashMap::new(),
-        };
-        for v in nodes {
-            grid.buckets.entry(grid.key(x[v])).or_default().push(v);
-        }
-        grid
-    }
-
-    fn key(&self, p: [f64; 2]) -> (i64, i64) {
-        (
-            (p[0] / self.cell).floor() as i64,
-            (p[1] / self.cell).floor() as i64,
-        )
-    }
-
-    /// The nearest bucketed node within a cell of `p`, if any.
-    fn nearest(&self, x: &[[f64; 2]], p: [f64; 2]) -> Option<usize> {
-        let (i, j) = self.key(p);
-        let d = |v: usize| (x[v][0] - p[0]).hypot(x[v][1] - p[1]);
-        (-1..=1)
-            .flat_map(|di| (-1..=1).map(move |dj| (i + di, j + dj)))
-            .filter_map(|k| self.buckets.get(&k))
-            .flatten()
-            .copied()
-            .min_by(|&v, &w| d(v).total_cmp(&d(w)))
     }
 }
 

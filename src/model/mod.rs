@@ -12,6 +12,7 @@
 
 pub mod adapt;
 pub mod estimate;
+mod facing;
 pub mod problem;
 mod restart;
 pub mod solution;

@@ -363,10 +363,18 @@ impl PyModel {
     }
 
     /// Solves to a tolerance on the estimated relative error of `goal`
-    /// ("energy" or "compliance"), refining the mesh; a dict with
+    /// ("energy" or "compliance"), refining the mesh (with contact, also
+    /// until the contact zones' edges are located to the tolerance unless
+    /// `resolve_contact_edges` is false); a dict with
     /// `reached`, `seconds` and `cycles` (unknowns, estimate, contact_edge,
     /// seconds of each).
-    #[pyo3(signature = (tolerance, goal = "energy", max_unknowns = 2_000_000, max_cycles = 30))]
+    #[pyo3(signature = (
+        tolerance,
+        goal = "energy",
+        max_unknowns = 2_000_000,
+        max_cycles = 30,
+        resolve_contact_edges = true
+    ))]
     fn solve_adaptive<'py>(
         &mut self,
         py: Python<'py>,
@@ -374,6 +382,7 @@ impl PyModel {
         goal: &str,
         max_unknowns: usize,
         max_cycles: usize,
+        resolve_contact_edges: bool,
     ) -> PyResult<Bound<'py, PyDict>> {
         let goal = match goal {
             "energy" => Goal::Energy,
@@ -389,6 +398,7 @@ impl PyModel {
             goal,
             max_unknowns,
             max_cycles,
+            resolve_contact_edges,
             ..AdaptOptions::default()
         };
         let r = self.run(py, |m| m.solve_adaptive(&options))?;

@@ -335,45 +335,20 @@ impl Lame {
             inner_surface.iter().copied().collect(),
             outer_surface.iter().copied().collect(),
         );
-        let (bore, rim): (BTreeSet<usize>, BTreeSet<usize>) = (
-            inner[0].iter().copied().collect(),
-            outer[outer.len() - 1].iter().copied().collect(),
-        );
-        let mut edges = Vec::new();
-        let mut tags = Vec::new();
-        for e in mb.boundary_edges() {
-            let both = |s: &BTreeSet<usize>| s.contains(&e[0]) && s.contains(&e[1]);
-            let tag = [
+        let rows = |r: &[usize]| r.iter().copied().collect::<BTreeSet<usize>>();
+        let (edges, tags) = tagged(
+            mb.boundary_edges(),
+            [
                 (&on_inner, TAG_INNER_RING),
                 (&on_outer, TAG_OUTER_RING),
-                (&bore, TAG_BORE),
-                (&rim, TAG_RIM),
-            ]
-            .into_iter()
-            .find_map(|(set, tag)| both(set).then_some(tag));
-            if let Some(tag) = tag {
-                edges.push(e);
-                tags.push(tag);
-            }
-        }
+                (&rows(&inner[0]), TAG_BORE),
+                (&rows(&outer[outer.len() - 1]), TAG_RIM),
+            ],
+        );
         let mut model = Model::new();
         model.set_mesh(mb.build()?);
         model.set_boundary_edges(&edges, &tags)?;
-        // The surfaces are circles: an adaptive solve refines onto them.
-        for (tag, radius) in [
-            (TAG_INNER_RING, b1),
-            (TAG_OUTER_RING, b),
-            (TAG_BORE, a),
-            (TAG_RIM, c),
-        ] {
-            model.set_curve(
-                tag,
-                Curve::Circle {
-                    center: [0.0, 0.0],
-                    radius,
-                },
-            )?;
-        }
+        self.declare_circles(&mut model)?;
         model.set_material(
             1,
             Material::new(self.e_inner, self.nu_inner, self.plane, "inner ring")?,
@@ -397,6 +372,44 @@ impl Lame {
             outer_surface,
             n_inner_triangles,
         })
+    }
+}
+
+/// The boundary edges with both ends in one of `sets`, with its tag.
+fn tagged(
+    boundary: Vec<[usize; 2]>,
+    sets: [(&BTreeSet<usize>, i32); 4],
+) -> (Vec<[usize; 2]>, Vec<i32>) {
+    boundary
+        .into_iter()
+        .filter_map(|e| {
+            let both = |s: &BTreeSet<usize>| s.contains(&e[0]) && s.contains(&e[1]);
+            sets.iter().find(|(s, _)| both(s)).map(|&(_, tag)| (e, tag))
+        })
+        .unzip()
+}
+
+impl Lame {
+    /// Declares the four surfaces' circles: an adaptive solve refines
+    /// onto them.
+    fn declare_circles(&self, model: &mut Model) -> Result<()> {
+        let (a, b, c) = (self.inner_radius, self.radius, self.outer_radius);
+        let b1 = b + self.interference;
+        for (tag, radius) in [
+            (TAG_INNER_RING, b1),
+            (TAG_OUTER_RING, b),
+            (TAG_BORE, a),
+            (TAG_RIM, c),
+        ] {
+            model.set_curve(
+                tag,
+                Curve::Circle {
+                    center: [0.0, 0.0],
+                    radius,
+                },
+            )?;
+        }
+        Ok(())
     }
 }
 
