@@ -17,7 +17,7 @@ use faer::Mat;
 use faer::linalg::matmul::matmul;
 use faer::{Accum, Par};
 
-use crate::error::{Result, preflight};
+use crate::error::{Error, Result, Status, preflight};
 
 thread_local! {
     /// Whether this thread has taken its packing buffer.
@@ -83,11 +83,24 @@ pub fn ensure() -> Result<()> {
             "the global thread pool's threads",
         )?;
     }
-    let missing = usize::from(outside && !READY.get())
-        + rayon::broadcast(|_| !READY.get())
-            .into_iter()
-            .filter(|&m| m)
-            .count();
+    // The first broadcast outside any pool starts the global pool: where
+    // its threads still cannot start (a limit the preflight's bound did not
+    // foresee: the system's thread count, its per-thread heaps), rayon
+    // panics, and the pool stays unusable for the process — an
+    // out-of-memory status, not an internal error.
+    let first = outside && !GLOBAL_POOL_STARTED.load(Ordering::Acquire);
+    let busy = if first {
+        std::panic::catch_unwind(|| rayon::broadcast(|_| !READY.get())).map_err(|_| {
+            Error::new(
+                Status::OutOfMemory,
+                "the global thread pool's threads could not be started (a memory or thread \
+                 limit); a model with its own pool (set_threads) may still run",
+            )
+        })?
+    } else {
+        rayon::broadcast(|_| !READY.get())
+    };
+    let missing = usize::from(outside && !READY.get()) + busy.into_iter().filter(|&m| m).count();
     if missing == 0 {
         return Ok(());
     }
