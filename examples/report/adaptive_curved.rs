@@ -82,23 +82,7 @@ fn lame_row(
     let t0 = Instant::now();
     let run = lame.build().and_then(|mut s| {
         s.model.set_threads(1)?;
-        let unknowns = match tol {
-            Some(tolerance) => {
-                let options = AdaptOptions {
-                    tolerance,
-                    goal: Goal::Energy,
-                    ..Default::default()
-                };
-                let r = s.model.solve_adaptive(&options)?;
-                r.cycles.last().map_or(0, |c| c.unknowns)
-            }
-            None => {
-                s.model
-                    .solve_contact(&ContactOptions::default())?
-                    .info
-                    .unknowns
-            }
-        };
+        let unknowns = solve(&mut s.model, tol)?;
         let t = t0.elapsed().as_secs_f64();
         let est = s.model.error_estimate()?;
         let e = s.energy_error(&lame)?;
@@ -243,23 +227,7 @@ fn hertz_run(base: &Hertz, mesh_size: f64, tol: Option<f64>) -> tfem::Result<Her
     let t0 = Instant::now();
     let mut s = hz.build()?;
     s.model.set_threads(1)?;
-    let unknowns = match tol {
-        Some(tolerance) => {
-            let options = AdaptOptions {
-                tolerance,
-                goal: Goal::Energy,
-                ..Default::default()
-            };
-            let r = s.model.solve_adaptive(&options)?;
-            r.cycles.last().map_or(0, |c| c.unknowns)
-        }
-        None => {
-            s.model
-                .solve_contact(&ContactOptions::default())?
-                .info
-                .unknowns
-        }
-    };
+    let unknowns = solve(&mut s.model, tol)?;
     let seconds = t0.elapsed().as_secs_f64();
     let m = s.measure(&hz, s.model.contact_report()?.clone())?;
     let est = s.model.error_estimate()?;
@@ -271,5 +239,27 @@ fn hertz_run(base: &Hertz, mesh_size: f64, tol: Option<f64>) -> tfem::Result<Her
         relative: est.relative(),
         eta: est.global,
         work: s.model.external_work()?,
+    })
+}
+
+/// A contact solve on the model's mesh, or adapted from it to the energy
+/// tolerance `tol`; the unknowns of the last solve.
+fn solve(model: &mut tfem::Model, tol: Option<f64>) -> tfem::Result<usize> {
+    Ok(match tol {
+        Some(tolerance) => {
+            let options = AdaptOptions {
+                tolerance,
+                goal: Goal::Energy,
+                ..Default::default()
+            };
+            let r = model.solve_adaptive(&options)?;
+            r.cycles.last().map_or(0, |c| c.unknowns)
+        }
+        None => {
+            model
+                .solve_contact(&ContactOptions::default())?
+                .info
+                .unknowns
+        }
     })
 }
