@@ -327,20 +327,7 @@ impl Refinement {
     /// that shows it. On error the state is unchanged. Marking nothing
     /// returns the same mesh.
     pub fn refine(&mut self, mesh: &Mesh, marked: &[usize]) -> Result<Refined> {
-        let nt = mesh.triangles().len();
-        if self.newest.len() != nt {
-            return Err(Error::state(format!(
-                "the refinement state describes {} triangles but the mesh has {nt}: refine the \
-                 mesh it was built from, or the last one it returned",
-                self.newest.len()
-            )));
-        }
-        if let Some(&t) = marked.iter().find(|&&t| t >= nt) {
-            return Err(Error::argument(format!(
-                "{} is marked for refinement but the mesh has {nt} triangles",
-                mesh.triangle_name(t)
-            )));
-        }
+        self.check(mesh, marked)?;
         let rot = self.rotated(mesh)?;
         let edges = Edges::new(mesh.nodes().len(), &rot)?;
         let mark = marked_edges(mesh.nodes(), &edges, &rot, marked);
@@ -380,10 +367,24 @@ impl Refinement {
         mesh: &Mesh,
         marked: &[usize],
     ) -> Result<std::collections::HashSet<[usize; 2]>> {
+        self.check(mesh, marked)?;
+        let rot = self.rotated(mesh)?;
+        let edges = Edges::new(mesh.nodes().len(), &rot)?;
+        let mark = marked_edges(mesh.nodes(), &edges, &rot, marked);
+        Ok((edges.ends.iter().zip(&mark))
+            .filter(|(_, m)| **m)
+            .map(|(&[p, q], _)| [p.min(q), p.max(q)])
+            .collect())
+    }
+
+    /// Checks that this state describes `mesh` and that every mark names
+    /// one of its triangles.
+    fn check(&self, mesh: &Mesh, marked: &[usize]) -> Result<()> {
         let nt = mesh.triangles().len();
         if self.newest.len() != nt {
             return Err(Error::state(format!(
-                "the refinement state describes {} triangles but the mesh has {nt}",
+                "the refinement state describes {} triangles but the mesh has {nt}: refine the \
+                 mesh it was built from, or the last one it returned",
                 self.newest.len()
             )));
         }
@@ -393,13 +394,7 @@ impl Refinement {
                 mesh.triangle_name(t)
             )));
         }
-        let rot = self.rotated(mesh)?;
-        let edges = Edges::new(mesh.nodes().len(), &rot)?;
-        let mark = marked_edges(mesh.nodes(), &edges, &rot, marked);
-        Ok((edges.ends.iter().zip(&mark))
-            .filter(|(_, m)| **m)
-            .map(|(&[p, q], _)| [p.min(q), p.max(q)])
-            .collect())
+        Ok(())
     }
 
     /// Each triangle as [a, b, c] with c its newest vertex (a cyclic turn:
