@@ -36,6 +36,7 @@ mod patch;
 mod seed;
 mod speed;
 mod stability;
+mod tetrahedra;
 
 use std::fmt::Write as _;
 use std::path::{Path, PathBuf};
@@ -61,6 +62,7 @@ use crate::patch::{patch_ratios, patch_test};
 use crate::seed::seed;
 use crate::speed::{export_matrix, faer_alone, speed, speed_run};
 use crate::stability::stability;
+use crate::tetrahedra::tetrahedra;
 
 /// The reference values shipped in the repository (see
 /// `docs/reference/README.md`), found from any working directory.
@@ -98,6 +100,7 @@ const SECTIONS: &[&str] = &[
     "combined",
     "axisymmetric",
     "adaptive",
+    "tetrahedra",
     "calculix",
     "host_codes",
     "q4_host",
@@ -185,7 +188,7 @@ fn main() {
     )
     .unwrap();
     type Section = fn(&mut String, &Args);
-    let sections: [(&str, Section); 21] = [
+    let sections: [(&str, Section); 22] = [
         ("manufactured", manufactured),
         ("seed", seed),
         ("patch_test", patch_test),
@@ -203,6 +206,7 @@ fn main() {
         ("combined", combined),
         ("axisymmetric", axisymmetric),
         ("adaptive", adaptive),
+        ("tetrahedra", tetrahedra),
         ("calculix", calculix),
         ("host_codes", host_codes),
         ("q4_host", q4_host),

@@ -4,7 +4,10 @@
 //! frictionless and Coulomb-frictional ([`oracle`]),
 //! manufactured solutions and norms ([`verification`]), a tempered Poisson
 //! solver ([`laplace`]), structured and graded triangulations
-//! ([`meshgen`]) and the quadrature their norms use ([`quadrature`]).
+//! ([`meshgen`]) and the quadrature their norms use ([`quadrature`]), and
+//! the study of Jmin in three dimensions: tetrahedral meshes of the cube
+//! with bands of flat tetrahedra ([`tetmesh`]) and a manufactured solution
+//! solved on them ([`tet_study`]).
 //!
 //! The tests, examples and the report use it; the C library does not carry
 //! it. Its modules keep their old paths (`tfem::scenes`, …) as
@@ -15,4 +18,6 @@ pub mod meshgen;
 pub mod oracle;
 pub mod quadrature;
 pub mod scenes;
+pub mod tet_study;
+pub mod tetmesh;
 pub mod verification;
