@@ -15,6 +15,7 @@ fn study(tempering: TetTempering) -> TetStudy {
         young: 1.0,
         poisson: 0.3,
         tempering,
+        layer: tempering,
     }
 }
 

@@ -5,8 +5,8 @@
 use std::fmt::Write as _;
 
 use tfem::Tempering;
-use tfem::studies::tet_study::{TetPoint, TetStudy, TetTempering};
-use tfem::studies::tetmesh::{Band, TetMesh};
+use tfem::studies::tet_study::{TetPoint, TetStudy, TetTempering, tied_patch_test};
+use tfem::studies::tetmesh::{Band, Split, TetMesh};
 use tfem::verification::fitted_rate;
 
 use crate::Args;
@@ -126,6 +126,7 @@ pub(crate) fn tetrahedra(report: &mut String, a: &Args) {
             .zip(regular_l2)
             .collect(),
     });
+    tied(report, &levels);
     figure(
         report,
         a,
@@ -167,6 +168,7 @@ fn run(family: &Family, tempering: TetTempering, levels: &[usize]) -> tfem::Resu
         young: 1.0,
         poisson: 0.3,
         tempering,
+        layer: tempering,
     };
     levels
         .iter()
@@ -200,4 +202,106 @@ fn row(report: &mut String, name: &str, points: &tfem::Result<Vec<TetPoint>>) {
         pts.iter().map(|p| p.point.seconds).sum::<f64>()
     )
     .unwrap();
+}
+
+/// Stage 2: two blocks tied through a layer of zero-volume prisms.
+fn tied(report: &mut String, levels: &[usize]) {
+    writeln!(
+        report,
+        "### Two blocks tied through flat tetrahedra\n\n\
+         `TetMesh::tied_blocks`: the cube cut at z = 1/2 into two Kuhn blocks with their own nodes on \
+         the interface, joined by the layer of zero-volume prisms over its triangles, each split into \
+         three tetrahedra from every quadrilateral face's lowest-ranked node (ranks: node indices or a \
+         shuffle); *jittered*: interface nodes moved in the plane by up to 0.2 h. The layer's tie \
+         T_e = A_e h_c²/λ (A_e the tetrahedron's largest face, h_c = h, λ = 1); the blocks tempered by \
+         the chosen rule. *Patch test*: lower block E = 1 with its boundary prescribed, upper block \
+         E = 10 loaded by the tractions of a uniform stress (σ_zz = 1, σ_xz = 0.3, σ_yz = −0.2, \
+         σ_xx = σ_yy = ν/(1 − ν)) and held by the layer alone; largest stress error of a block \
+         tetrahedron over |σ|, and the spread of the jump across the layer over its mean.\n"
+    )
+    .unwrap();
+    writeln!(
+        report,
+        "| mesh | split | layer's Jmin | stress error | jump spread |\n|---|---|---|---|---|"
+    )
+    .unwrap();
+    for n in [4, 8] {
+        for (split, split_name) in [
+            (Split::ByIndex, "by index"),
+            (Split::Shuffled(1), "shuffled"),
+        ] {
+            for jitter in [0.0, 0.2] {
+                let mut mesh = TetMesh::tied_blocks(n, split);
+                mesh.jitter_interface(1.0 / n as f64, jitter, 99);
+                let tie = TetTempering::Tie {
+                    h_c: 1.0 / n as f64,
+                    lambda: 1.0,
+                };
+                let blocks_rule = TetTempering::Policy(Tempering::Auto);
+                for (rule, rule_name) in
+                    [(tie, "tie A_e h_c²/λ"), (blocks_rule, "min(h⁴/λ, 0.1 h³)")]
+                {
+                    let mesh_name =
+                        format!("h = 1/{n}{}", if jitter > 0.0 { ", jittered" } else { "" });
+                    match tied_patch_test(&mesh, [1.0, 10.0], 0.3, rule) {
+                        Ok(r) => writeln!(
+                            report,
+                            "| {mesh_name} | {split_name} | {rule_name} | {:.1e} | {:.1e} |",
+                            r.stress_error, r.jump_spread
+                        ),
+                        Err(e) => writeln!(
+                            report,
+                            "| {mesh_name} | {split_name} | {rule_name} | {} | |",
+                            e.message()
+                        ),
+                    }
+                    .unwrap();
+                }
+            }
+        }
+    }
+    writeln!(
+        report,
+        "\nThe manufactured field across the tied interface (split shuffled, tie as above) against one \
+         body:\n\n| h | L2, tied | L2, one body | energy, tied | energy, one body |\n|---|---|---|---|---|"
+    )
+    .unwrap();
+    let (mut h, mut tied_l2) = (Vec::new(), Vec::new());
+    for &n in levels {
+        let study = TetStudy {
+            young: 1.0,
+            poisson: 0.3,
+            tempering: TetTempering::Policy(Tempering::Auto),
+            layer: TetTempering::Tie {
+                h_c: 1.0 / n as f64,
+                lambda: 1.0,
+            },
+        };
+        let size = 1.0 / n as f64;
+        let tied = study.run(&TetMesh::tied_blocks(n, Split::Shuffled(5)), size);
+        let one = study.run(&TetMesh::unit_cube(n, None), size);
+        match (tied, one) {
+            (Ok(t), Ok(o)) => {
+                writeln!(
+                    report,
+                    "| 1/{n} | {:.3e} | {:.3e} | {:.3e} | {:.3e} |",
+                    t.point.l2, o.point.l2, t.energy_well_shaped, o.energy_well_shaped
+                )
+                .unwrap();
+                h.push(size);
+                tied_l2.push(t.point.l2);
+            }
+            (Err(e), _) | (_, Err(e)) => {
+                writeln!(report, "| 1/{n} | {} | | | |", e.message()).unwrap()
+            }
+        }
+    }
+    if h.len() >= 2 {
+        writeln!(
+            report,
+            "\nTied L2 rate: {:.2}.\n",
+            fitted_rate(&h, &tied_l2)
+        )
+        .unwrap();
+    }
 }

@@ -10,7 +10,7 @@
 
 use std::time::Instant;
 
-use super::tetmesh::TetMesh;
+use super::tetmesh::{LAYER, LOWER, TetMesh, UPPER};
 use super::verification::StudyPoint;
 use crate::error::{Error, Result, Status};
 use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
@@ -27,6 +27,19 @@ pub enum TetTempering {
     /// The product's policy ([`Tempering::jmin_tet`]), with the unit
     /// cube's model size 1.
     Policy(Tempering),
+    /// The tie of a flat layer (docs/method.md §9, stage 2): T_e = A_e
+    /// h_c²/λ with A_e the tetrahedron's largest face, the 3D form of the
+    /// 2D strip's T_e = ℓ_e h_c²/λ. Every tetrahedron of a split prism
+    /// joins one pair of facing nodes and has the prism's triangle as its
+    /// largest face, so each pair is tied with a stiffness proportional to
+    /// its tributary area whatever the split: one penalty κ ∝ λ/h_c² over
+    /// the interface.
+    Tie {
+        /// One length for the whole interface (its shortest edge).
+        h_c: f64,
+        /// The length λ.
+        lambda: f64,
+    },
     /// Jmin = min(c·h^k / λ^(k−3), cap·h³): k = 4 is the 2D rule's
     /// height criterion (a tetrahedron is tempered when its height over
     /// its largest face falls below about c·h²/λ, as a triangle's does
@@ -53,6 +66,11 @@ impl TetTempering {
         match *self {
             TetTempering::Off => 0.0,
             TetTempering::Policy(t) => t.jmin_tet(geo, 1.0),
+            TetTempering::Tie { h_c, lambda } => {
+                let area =
+                    (geo.a.iter()).map(|a| 0.5 * a.iter().map(|x| x * x).sum::<f64>().sqrt());
+                area.fold(0.0, f64::max) * h_c * h_c / lambda
+            }
             TetTempering::Power { k, c, lambda, cap } => {
                 (c * h.powi(k) / lambda.powi(k - 3)).min(cap * h.powi(3))
             }
@@ -177,6 +195,9 @@ pub struct TetStudy {
     pub poisson: f64,
     /// The rule for Jmin.
     pub tempering: TetTempering,
+    /// The rule for Jmin in the flat layer of a tied mesh
+    /// ([`TetMesh::tied_blocks`]; unused elsewhere).
+    pub layer: TetTempering,
 }
 
 impl TetStudy {
@@ -186,75 +207,321 @@ impl TetStudy {
     pub fn run(&self, mesh: &TetMesh, h: f64) -> Result<TetPoint> {
         let exact = ManufacturedTets::new(self.young, self.poisson);
         let d = isotropic_d(self.young, self.poisson)?;
-        let n = mesh.nodes.len();
-        let mut fixed = vec![false; n];
-        for v in mesh.boundary_nodes() {
-            fixed[v] = true;
-        }
-        let dofs = DofMap::new(n, 3, |g| !fixed[g / 3]);
-        let faces: Vec<[usize; 3]> = (mesh.tets.iter())
-            .flat_map(|t| {
-                [
-                    [t[0], t[1], t[2]],
-                    [t[0], t[1], t[3]],
-                    [t[0], t[2], t[3]],
-                    [t[1], t[2], t[3]],
-                ]
-            })
-            .collect();
-        let pattern = Pattern::build(&dofs, n, &faces);
-        let t0 = Instant::now();
-        let mut chol = Cholesky::analyse(&pattern, &AnalyseParams::default())?;
-        let mut values = vec![0.0; pattern.nnz()];
-        let mut rhs = vec![0.0; dofs.n_free()];
-        let rule = quadrature();
-        let prescribed: Vec<f64> = (0..3 * n)
-            .map(|g| exact.displacement(mesh.nodes[g / 3])[g % 3])
-            .collect();
-        for t in &mesh.tets {
-            let x = t.map(|v| mesh.nodes[v]);
-            let geo = TetGeometry::new(&x);
-            let k = stiffness(&geo, &d, self.tempering.jmin(&geo))?;
-            let unknowns: [usize; 12] = std::array::from_fn(|i| dofs.free(3 * t[i / 3] + i % 3));
-            let ke: Vec<f64> = k.iter().flatten().copied().collect();
-            pattern.add_element(&mut values, &unknowns, &ke);
-            let volume = geo.j.max(0.0) / 6.0;
-            for (i, &row) in unknowns.iter().enumerate() {
-                if row == NOT_FREE {
-                    continue;
-                }
-                let mut r = 0.0;
-                for &(b, w) in &rule {
-                    let phi = [1.0 - b[0] - b[1] - b[2], b[0], b[1], b[2]];
-                    r += w * volume * exact.body_force(at(&x, b))[i % 3] * phi[i / 3];
-                }
-                for (c, &col) in unknowns.iter().enumerate() {
-                    if col == NOT_FREE {
-                        r -= k[i][c] * prescribed[3 * t[c / 3] + c % 3];
-                    }
-                }
-                rhs[row] += r;
-            }
-        }
-        factorize(&mut chol, &pattern, &values)?;
-        chol.solve(&mut rhs)?;
-        let seconds = t0.elapsed().as_secs_f64();
-        let mut u = prescribed;
-        for (f, &g) in dofs.free_to_global().iter().enumerate() {
-            u[g] = rhs[f];
-        }
-        let e = errors(mesh, &u, &exact, &d, &rule);
+        let solution = solve(&TetProblem {
+            mesh,
+            d: &[d; 3],
+            tempering: self.tempering,
+            layer: self.layer,
+            body_force: &|_, p| exact.body_force(p),
+            boundary: &|_, p| exact.displacement(p),
+            supported: &|_| true,
+            free_stress: [[0.0; 3]; 3],
+        })?;
+        let e = errors(mesh, &solution.u, &exact, &d, &quadrature());
         Ok(TetPoint {
             point: StudyPoint {
                 h,
-                unknowns: dofs.n_free(),
+                unknowns: solution.unknowns,
                 l2: e.l2,
                 energy: e.energy,
-                seconds,
+                seconds: solution.seconds,
             },
             energy_well_shaped: e.energy_well_shaped,
         })
     }
+}
+
+/// A linear elastic problem on a tetrahedral mesh: u prescribed at its
+/// boundary nodes.
+pub struct TetProblem<'a> {
+    /// The mesh.
+    pub mesh: &'a TetMesh,
+    /// The elasticity matrix of each part of the mesh (one for a mesh
+    /// without parts).
+    pub d: &'a [[[f64; 6]; 6]],
+    /// The rule for Jmin.
+    pub tempering: TetTempering,
+    /// The rule for Jmin in the part [`LAYER`] of a tied mesh.
+    pub layer: TetTempering,
+    /// The body force in a part at a point.
+    pub body_force: &'a dyn Fn(usize, [f64; 3]) -> [f64; 3],
+    /// The displacement prescribed at a boundary node of a part (the part
+    /// of the first tetrahedron that holds the node).
+    pub boundary: &'a dyn Fn(usize, [f64; 3]) -> [f64; 3],
+    /// Whether a part's boundary nodes are prescribed; the others' faces
+    /// carry the traction σ·n of `free_stress`.
+    pub supported: &'a dyn Fn(usize) -> bool,
+    /// The uniform stress whose tractions load the faces of the parts that
+    /// are not supported.
+    pub free_stress: [[f64; 3]; 3],
+}
+
+/// The nodal displacements of a [`TetProblem`].
+pub struct TetSolution {
+    /// Three per node, prescribed ones included.
+    pub u: Vec<f64>,
+    /// Unknowns solved for.
+    pub unknowns: usize,
+    /// Seconds of the analysis, assembly, factorisation and solve.
+    pub seconds: f64,
+}
+
+/// Assembles and solves `problem`: each tetrahedron's tempered stiffness
+/// and consistent load (true volume: none on flat ones) into the shared
+/// Cholesky solver's pattern.
+pub fn solve(problem: &TetProblem<'_>) -> Result<TetSolution> {
+    let mesh = problem.mesh;
+    let part = |t: usize| mesh.parts.get(t).copied().unwrap_or(0);
+    let n = mesh.nodes.len();
+    let mut part_of_node = vec![usize::MAX; n];
+    for (e, t) in mesh.tets.iter().enumerate() {
+        for &v in t {
+            if part_of_node[v] == usize::MAX {
+                part_of_node[v] = part(e);
+            }
+        }
+    }
+    let mut fixed = vec![false; n];
+    let mut force = vec![0.0; 3 * n];
+    for (e, f) in mesh.boundary_faces() {
+        if (problem.supported)(part(e)) {
+            f.iter().for_each(|&v| fixed[v] = true);
+        } else {
+            let opposite = (mesh.tets[e].iter())
+                .find(|v| !f.contains(v))
+                .expect("a fourth node");
+            let t = traction(
+                f.map(|v| mesh.nodes[v]),
+                mesh.nodes[*opposite],
+                &problem.free_stress,
+            );
+            for &v in &f {
+                (0..3).for_each(|i| force[3 * v + i] += t[i] / 3.0);
+            }
+        }
+    }
+    let dofs = DofMap::new(n, 3, |g| !fixed[g / 3]);
+    let faces: Vec<[usize; 3]> = (mesh.tets.iter())
+        .flat_map(|t| {
+            [
+                [t[0], t[1], t[2]],
+                [t[0], t[1], t[3]],
+                [t[0], t[2], t[3]],
+                [t[1], t[2], t[3]],
+            ]
+        })
+        .collect();
+    let pattern = Pattern::build(&dofs, n, &faces);
+    let t0 = Instant::now();
+    let mut chol = Cholesky::analyse(&pattern, &AnalyseParams::default())?;
+    let mut values = vec![0.0; pattern.nnz()];
+    let mut rhs = vec![0.0; dofs.n_free()];
+    for (f, &g) in dofs.free_to_global().iter().enumerate() {
+        rhs[f] = force[g];
+    }
+    let rule = quadrature();
+    let prescribed: Vec<f64> = (0..3 * n)
+        .map(|g| match part_of_node[g / 3] {
+            usize::MAX => 0.0,
+            p => (problem.boundary)(p, mesh.nodes[g / 3])[g % 3],
+        })
+        .collect();
+    for (e, t) in mesh.tets.iter().enumerate() {
+        let x = t.map(|v| mesh.nodes[v]);
+        let geo = TetGeometry::new(&x);
+        let d = problem.d.get(part(e)).ok_or_else(|| {
+            Error::argument(format!("tetrahedron {e}: part {} has no material", part(e)))
+        })?;
+        let rule_e = if part(e) == LAYER && !mesh.parts.is_empty() {
+            problem.layer
+        } else {
+            problem.tempering
+        };
+        let k = stiffness(&geo, d, rule_e.jmin(&geo)).map_err(|err| {
+            Error::new(err.status(), format!("tetrahedron {e}: {}", err.message()))
+        })?;
+        let unknowns: [usize; 12] = std::array::from_fn(|i| dofs.free(3 * t[i / 3] + i % 3));
+        let ke: Vec<f64> = k.iter().flatten().copied().collect();
+        pattern.add_element(&mut values, &unknowns, &ke);
+        let volume = geo.j.max(0.0) / 6.0;
+        for (i, &row) in unknowns.iter().enumerate() {
+            if row == NOT_FREE {
+                continue;
+            }
+            let mut r = 0.0;
+            for &(b, w) in &rule {
+                let phi = [1.0 - b[0] - b[1] - b[2], b[0], b[1], b[2]];
+                r += w * volume * (problem.body_force)(part(e), at(&x, b))[i % 3] * phi[i / 3];
+            }
+            for (c, &col) in unknowns.iter().enumerate() {
+                if col == NOT_FREE {
+                    r -= k[i][c] * prescribed[3 * t[c / 3] + c % 3];
+                }
+            }
+            rhs[row] += r;
+        }
+    }
+    factorize(&mut chol, &pattern, &values)?;
+    chol.solve(&mut rhs)?;
+    let seconds = t0.elapsed().as_secs_f64();
+    let mut u = prescribed;
+    for (f, &g) in dofs.free_to_global().iter().enumerate() {
+        u[g] = rhs[f];
+    }
+    Ok(TetSolution {
+        u,
+        unknowns: dofs.n_free(),
+        seconds,
+    })
+}
+
+/// The force σ·n·area of a uniform stress on the triangle `f`, n pointing
+/// away from the tetrahedron's node `inside`.
+fn traction(f: [[f64; 3]; 3], inside: [f64; 3], stress: &[[f64; 3]; 3]) -> [f64; 3] {
+    let (u, v) = (sub(f[1], f[0]), sub(f[2], f[0]));
+    let mut n = [
+        u[1] * v[2] - u[2] * v[1],
+        u[2] * v[0] - u[0] * v[2],
+        u[0] * v[1] - u[1] * v[0],
+    ];
+    if (0..3).map(|i| n[i] * (f[0][i] - inside[i])).sum::<f64>() < 0.0 {
+        n = n.map(|x| -x);
+    }
+    // |n| is twice the area.
+    std::array::from_fn(|i| 0.5 * (0..3).map(|j| stress[i][j] * n[j]).sum::<f64>())
+}
+
+fn sub(p: [f64; 3], q: [f64; 3]) -> [f64; 3] {
+    [p[0] - q[0], p[1] - q[1], p[2] - q[2]]
+}
+
+/// What the tied patch test measures.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TiedPatch {
+    /// The largest error of a block tetrahedron's stress over |σ|.
+    pub stress_error: f64,
+    /// The jump u(upper) − u(lower) across the layer, averaged over the
+    /// interface's node pairs.
+    pub jump: [f64; 3],
+    /// The largest deviation of a pair's jump from that average, over its
+    /// length.
+    pub jump_spread: f64,
+}
+
+/// The tied patch test of docs/method.md §9, stage 2, on
+/// [`TetMesh::tied_blocks`] (n boxes per side): Young's moduli `young`
+/// for the lower and upper blocks (the layer takes the larger), Poisson's
+/// ratio `poisson`, a uniform stress across the interface — σ_zz = 1,
+/// σ_xz = 0.3, σ_yz = −0.2 and σ_xx = σ_yy = ν/(1 − ν), which leaves
+/// both blocks' in-plane strains zero — the lower block's displacement
+/// prescribed on its boundary, the upper block loaded by the stress's
+/// tractions on its faces and held by the layer alone (its tie `tie`, the
+/// blocks tempered as [`Tempering::Auto`]). Exact when every block
+/// tetrahedron carries σ and the layer opens by one uniform jump.
+pub fn tied_patch_test(
+    mesh: &TetMesh,
+    young: [f64; 2],
+    poisson: f64,
+    tie: TetTempering,
+) -> Result<TiedPatch> {
+    let nu = poisson;
+    let side = nu / (1.0 - nu);
+    let voigt = [side, side, 1.0, -0.2, 0.3, 0.0];
+    let stress = [[side, 0.0, 0.3], [0.0, side, -0.2], [0.3, -0.2, 1.0]];
+    let d = [
+        isotropic_d(young[0], nu)?,
+        isotropic_d(young[1], nu)?,
+        isotropic_d(young[0].max(young[1]), nu)?,
+    ];
+    // The lower block's field: a rigid motion and ∂u/∂z = (γ_xz, γ_yz, ε_zz).
+    let mu = young[0] / (2.0 * (1.0 + nu));
+    let ezz = (voigt[2] - nu * (voigt[0] + voigt[1])) / young[0];
+    let column = [voigt[4] / mu, voigt[3] / mu, ezz];
+    let exact = |_: usize, p: [f64; 3]| -> [f64; 3] {
+        let rigid = [0.1 - 0.01 * p[1], 0.2 + 0.01 * p[0], -0.3];
+        std::array::from_fn(|i| rigid[i] + column[i] * (p[2] - 0.5))
+    };
+    let solution = solve(&TetProblem {
+        mesh,
+        d: &d,
+        tempering: TetTempering::Policy(Tempering::Auto),
+        layer: tie,
+        body_force: &|_, _| [0.0; 3],
+        boundary: &exact,
+        supported: &|part| part == LOWER,
+        free_stress: stress,
+    })?;
+    let u = &solution.u;
+    let mut stress_error = 0.0f64;
+    for (e, t) in mesh.tets.iter().enumerate() {
+        let part = mesh.parts.get(e).copied().unwrap_or(LOWER);
+        let geo = TetGeometry::new(&t.map(|v| mesh.nodes[v]));
+        if part == LAYER || geo.j <= 0.0 {
+            continue;
+        }
+        let g: [[f64; 3]; 3] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| {
+                (0..4).map(|k| u[3 * t[k] + i] * geo.a[k][j]).sum::<f64>() / geo.j
+            })
+        });
+        let strain = [
+            g[0][0],
+            g[1][1],
+            g[2][2],
+            g[1][2] + g[2][1],
+            g[0][2] + g[2][0],
+            g[0][1] + g[1][0],
+        ];
+        for (r, &target) in voigt.iter().enumerate() {
+            let sr: f64 = (0..6).map(|c| d[part][r][c] * strain[c]).sum();
+            stress_error = stress_error.max((sr - target).abs());
+        }
+    }
+    let jumps = interface_jumps(mesh, u);
+    let count = jumps.len().max(1) as f64;
+    let jump: [f64; 3] = std::array::from_fn(|i| jumps.iter().map(|j| j[i]).sum::<f64>() / count);
+    let length = jump.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let spread = (jumps.iter())
+        .map(|j| (0..3).map(|i| (j[i] - jump[i]).powi(2)).sum::<f64>().sqrt())
+        .fold(0.0, f64::max);
+    Ok(TiedPatch {
+        stress_error,
+        jump,
+        jump_spread: spread / length,
+    })
+}
+
+/// u(upper copy) − u(lower copy) at each node pair of a tied mesh's
+/// interface (the layer's nodes, paired by position).
+fn interface_jumps(mesh: &TetMesh, u: &[f64]) -> Vec<[f64; 3]> {
+    let mut side = vec![usize::MAX; mesh.nodes.len()];
+    for (e, t) in mesh.tets.iter().enumerate() {
+        if mesh.parts[e] != LAYER {
+            t.iter().for_each(|&v| side[v] = mesh.parts[e]);
+        }
+    }
+    let mut layer: Vec<usize> = (mesh.tets.iter().enumerate())
+        .filter(|&(e, _)| mesh.parts[e] == LAYER)
+        .flat_map(|(_, t)| *t)
+        .collect();
+    layer.sort_unstable();
+    layer.dedup();
+    let key = |v: usize| (mesh.nodes[v][0].to_bits(), mesh.nodes[v][1].to_bits());
+    let mut lower: Vec<usize> = layer
+        .iter()
+        .copied()
+        .filter(|&v| side[v] == LOWER)
+        .collect();
+    let mut upper: Vec<usize> = layer
+        .iter()
+        .copied()
+        .filter(|&v| side[v] == UPPER)
+        .collect();
+    lower.sort_by_key(|&v| key(v));
+    upper.sort_by_key(|&v| key(v));
+    (lower.iter().zip(&upper))
+        .map(|(&a, &b)| std::array::from_fn(|i| u[3 * b + i] - u[3 * a + i]))
+        .collect()
 }
 
 fn factorize(chol: &mut Cholesky, pattern: &Pattern, values: &[f64]) -> Result<()> {

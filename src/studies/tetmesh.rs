@@ -6,12 +6,33 @@
 
 /// A tetrahedral mesh: nodes and positively oriented tetrahedra (J ≥ 0;
 /// flat ones have J = 0 up to round-off).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, Default)]
 pub struct TetMesh {
     /// Node coordinates.
     pub nodes: Vec<[f64; 3]>,
     /// Tetrahedra, four node indices each.
     pub tets: Vec<[usize; 4]>,
+    /// The part each tetrahedron belongs to (empty: one part). For
+    /// [`TetMesh::tied_blocks`]: [`LOWER`], [`UPPER`] or [`LAYER`].
+    pub parts: Vec<usize>,
+}
+
+/// The lower block of [`TetMesh::tied_blocks`].
+pub const LOWER: usize = 0;
+/// The upper block of [`TetMesh::tied_blocks`].
+pub const UPPER: usize = 1;
+/// The flat layer that ties them.
+pub const LAYER: usize = 2;
+
+/// How the prisms of a tied layer are split into tetrahedra: every
+/// quadrilateral face from its lowest-ranked node (so that neighbours agree
+/// and no prism meets a cycle of diagonals), the ranks given.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Split {
+    /// The ranks are the node indices.
+    ByIndex,
+    /// The ranks are a pseudo-random permutation drawn from this seed.
+    Shuffled(u64),
 }
 
 /// A band of flat tetrahedra across z = 1/2, of thickness `eps` (the
@@ -59,10 +80,7 @@ impl TetMesh {
     /// tetrahedra along its diagonal from its lowest corner, which makes
     /// every face's split the same and the mesh conforming.
     pub fn kuhn(xs: &[f64], ys: &[f64], zs: &[f64]) -> TetMesh {
-        let mut mesh = TetMesh {
-            nodes: Vec::new(),
-            tets: Vec::new(),
-        };
+        let mut mesh = TetMesh::default();
         let id = mesh.add_grid(xs, ys, zs);
         for k in 0..zs.len() - 1 {
             for j in 0..ys.len() - 1 {
@@ -142,10 +160,7 @@ impl TetMesh {
         let mut sheet: Vec<f64> = vec![0.0];
         sheet.extend((0..n).map(|i| (i as f64 + 0.5) * h));
         sheet.push(1.0);
-        let mut mesh = TetMesh {
-            nodes: Vec::new(),
-            tets: Vec::new(),
-        };
+        let mut mesh = TetMesh::default();
         let below = mesh.add_grid(&grid, &grid, &lower);
         let s = mesh.add_grid(&sheet, &sheet, &[0.5 + eps]);
         let above = mesh.add_grid(&grid, &grid, &upper);
@@ -229,36 +244,175 @@ impl TetMesh {
         }
     }
 
-    /// The nodes on the boundary: those of faces that belong to one
-    /// tetrahedron only.
-    pub fn boundary_nodes(&self) -> Vec<usize> {
-        let mut faces: Vec<[usize; 3]> = self
-            .tets
-            .iter()
-            .flat_map(|t| {
+    /// Two Kuhn blocks of the unit cube, [0,1]² × [0, 1/2] and
+    /// [0,1]² × [1/2, 1] with n boxes per side (n even), each with its own
+    /// nodes on z = 1/2, joined by the layer of zero-volume prisms over the
+    /// interface's (matching) triangles, each split into three flat
+    /// tetrahedra as `split` says: stage 2 of docs/method.md §9.
+    pub fn tied_blocks(n: usize, split: Split) -> TetMesh {
+        assert!(n >= 2 && n % 2 == 0, "the interface sits on a grid plane");
+        let grid: Vec<f64> = (0..=n).map(|i| i as f64 / n as f64).collect();
+        let (lower, upper) = (&grid[..=n / 2], &grid[n / 2..]);
+        let mut mesh = TetMesh::default();
+        let below = mesh.add_grid(&grid, &grid, lower);
+        for k in 0..n / 2 {
+            for j in 0..n {
+                for i in 0..n {
+                    mesh.add_kuhn_box(|a, b, c| below(i + a, j + b, k + c));
+                }
+            }
+        }
+        let above = mesh.add_grid(&grid, &grid, upper);
+        mesh.parts = vec![LOWER; mesh.tets.len()];
+        for k in 0..n / 2 {
+            for j in 0..n {
+                for i in 0..n {
+                    mesh.add_kuhn_box(|a, b, c| above(i + a, j + b, k + c));
+                }
+            }
+        }
+        mesh.parts.resize(mesh.tets.len(), UPPER);
+        let rank = ranks(mesh.nodes.len(), split);
+        // Orientation is decided with the upper face lifted: flat, every
+        // layer tetrahedron has J = 0.
+        let mut reference = mesh.nodes.clone();
+        for j in 0..=n {
+            for i in 0..=n {
+                reference[above(i, j, 0)][2] += 0.5 / n as f64;
+            }
+        }
+        for j in 0..n {
+            for i in 0..n {
+                // The interface's two triangles of cell (i, j), as the Kuhn
+                // boxes split it: along the diagonal (i, j)-(i+1, j+1).
+                for tri in [
+                    [(i, j), (i + 1, j), (i + 1, j + 1)],
+                    [(i, j), (i + 1, j + 1), (i, j + 1)],
+                ] {
+                    let bottom = tri.map(|(a, b)| below(a, b, n / 2));
+                    let top = tri.map(|(a, b)| above(a, b, 0));
+                    for t in split_prism(bottom, top, &rank) {
+                        mesh.add_oriented(t, &reference);
+                    }
+                }
+            }
+        }
+        mesh.parts.resize(mesh.tets.len(), LAYER);
+        mesh
+    }
+
+    /// Moves the nodes of the plane z = 1/2 that are not on the cube's
+    /// sides within the plane, each by up to `fraction` of `h` in x and y,
+    /// pseudo-randomly from `seed` and from its position, so that the two
+    /// copies of a tied interface move together: a non-uniform interface
+    /// triangulation.
+    pub fn jitter_interface(&mut self, h: f64, fraction: f64, seed: u64) {
+        for p in &mut self.nodes {
+            if p[2] != 0.5 || p[0] == 0.0 || p[0] == 1.0 || p[1] == 0.0 || p[1] == 1.0 {
+                continue;
+            }
+            let mut state = seed ^ p[0].to_bits().rotate_left(17) ^ p[1].to_bits();
+            let mut next = || {
+                state = state
+                    .wrapping_mul(6364136223846793005)
+                    .wrapping_add(1442695040888963407);
+                ((state >> 11) as f64 / (1u64 << 53) as f64) * 2.0 - 1.0
+            };
+            let (dx, dy) = (next(), next());
+            p[0] += fraction * h * dx;
+            p[1] += fraction * h * dy;
+        }
+    }
+
+    /// The faces that belong to one tetrahedron only, each with that
+    /// tetrahedron's index.
+    pub fn boundary_faces(&self) -> Vec<(usize, [usize; 3])> {
+        let mut faces: Vec<([usize; 3], usize, [usize; 3])> = (self.tets.iter().enumerate())
+            .flat_map(|(e, t)| {
                 [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]].map(|f| {
-                    let mut face = f.map(|k| t[k]);
-                    face.sort_unstable();
-                    face
+                    let face = f.map(|k| t[k]);
+                    let mut key = face;
+                    key.sort_unstable();
+                    (key, e, face)
                 })
             })
             .collect();
         faces.sort_unstable();
-        let mut nodes = Vec::new();
+        let mut open = Vec::new();
         let mut i = 0;
         while i < faces.len() {
             let mut j = i + 1;
-            while j < faces.len() && faces[j] == faces[i] {
+            while j < faces.len() && faces[j].0 == faces[i].0 {
                 j += 1;
             }
             if j - i == 1 {
-                nodes.extend(faces[i]);
+                open.push((faces[i].1, faces[i].2));
             }
             i = j;
         }
+        open
+    }
+
+    /// The nodes on the boundary: those of faces that belong to one
+    /// tetrahedron only.
+    pub fn boundary_nodes(&self) -> Vec<usize> {
+        let mut nodes: Vec<usize> = (self.boundary_faces().into_iter())
+            .flat_map(|(_, f)| f)
+            .collect();
         nodes.sort_unstable();
         nodes.dedup();
         nodes
+    }
+}
+
+/// The ranks of `n` nodes for [`Split`].
+fn ranks(n: usize, split: Split) -> Vec<usize> {
+    let mut rank: Vec<usize> = (0..n).collect();
+    if let Split::Shuffled(seed) = split {
+        // Fisher–Yates with a 64-bit LCG: reproducible, no dependency.
+        let mut state = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        for i in (1..n).rev() {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            let j = ((state >> 33) as usize) % (i + 1);
+            rank.swap(i, j);
+        }
+    }
+    rank
+}
+
+/// The three tetrahedra of the prism with bottom triangle `bottom` and top
+/// triangle `top` (node k of one over node k of the other), every
+/// quadrilateral face split from its lowest-ranked node (Dompierre et al.,
+/// *How to subdivide pyramids, prisms and hexahedra into tetrahedra*,
+/// 1999): from the lowest node v of the six, the tetrahedron of v and the
+/// opposite triangle, then the pyramid of v over the quadrilateral
+/// opposite it, split along that face's own diagonal.
+fn split_prism(bottom: [usize; 3], top: [usize; 3], rank: &[usize]) -> [[usize; 4]; 3] {
+    let all = [bottom[0], bottom[1], bottom[2], top[0], top[1], top[2]];
+    let lowest = (0..6).min_by_key(|&k| rank[all[k]]).expect("six nodes");
+    // Relabel so that the lowest node is a = near[0].
+    let (near, far) = if lowest < 3 {
+        (bottom, top)
+    } else {
+        (top, bottom)
+    };
+    let r = lowest % 3;
+    let rot = |t: [usize; 3]| [t[r], t[(r + 1) % 3], t[(r + 2) % 3]];
+    let ([a, b, c], [_, b2, c2]) = (rot(near), rot(far));
+    let cap = [a, far[r], b2, c2];
+    // The quadrilateral b c c2 b2, from its lowest node.
+    let quad_lowest = [b, c, c2, b2]
+        .into_iter()
+        .min_by_key(|&v| rank[v])
+        .expect("four");
+    if quad_lowest == b || quad_lowest == c2 {
+        [cap, [a, b, c, c2], [a, b, c2, b2]]
+    } else {
+        [cap, [a, b, c, b2], [a, c, c2, b2]]
     }
 }
 
@@ -275,6 +429,7 @@ mod tests {
 
     fn meshes() -> Vec<(&'static str, TetMesh)> {
         vec![
+            ("tied", TetMesh::tied_blocks(4, Split::Shuffled(3))),
             ("regular", TetMesh::unit_cube(4, None)),
             ("prisms", TetMesh::unit_cube(4, Some(Band::Prisms(1e-3)))),
             (
@@ -289,7 +444,8 @@ mod tests {
     fn every_mesh_fills_the_cube_once_with_positive_volumes() {
         for (name, m) in meshes() {
             let geo = geometries(&m);
-            assert!(geo.iter().all(|g| g.j > 0.0), "{name}");
+            let layer = |e: usize| m.parts.get(e) == Some(&LAYER);
+            assert!((0..geo.len()).all(|e| geo[e].j > 0.0 || layer(e)), "{name}");
             let volume: f64 = geo.iter().map(|g| g.j / 6.0).sum();
             assert!((volume - 1.0).abs() < 1e-13, "{name}: volume {volume}");
         }
@@ -336,6 +492,7 @@ mod tests {
                 .count();
             let expected = match name {
                 "regular" => 0,
+                "tied" => 6 * n * n,
                 // 6 per box of the slab.
                 "prisms" => 6 * n * n,
                 // Per layer: 2 per grid cell and per sheet cell, one per
@@ -356,6 +513,51 @@ mod tests {
             let volume: f64 = geometries(&m).iter().map(|g| g.j / 6.0).sum();
             assert!((volume - 1.0).abs() < 1e-13, "{band:?}: volume {volume}");
             assert!(geometries(&m).iter().all(|g| g.j > -1e-15), "{band:?}");
+        }
+    }
+
+    #[test]
+    fn a_prism_splits_into_three_tetrahedra_that_fill_it_for_every_ranking() {
+        // Bottom (0,0,0), (1,0,0), (0,1,0); top at z = 1: volume 1/2.
+        let nodes = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+            [1.0, 0.0, 1.0],
+            [0.0, 1.0, 1.0],
+        ];
+        for seed in 0..50 {
+            let rank = ranks(6, Split::Shuffled(seed));
+            let tets = split_prism([0, 1, 2], [3, 4, 5], &rank);
+            let volumes: Vec<f64> = (tets.iter())
+                .map(|t| TetGeometry::new(&t.map(|v| nodes[v])).j.abs() / 6.0)
+                .collect();
+            assert!(
+                volumes.iter().all(|&v| v > 1e-3),
+                "seed {seed}: {volumes:?}"
+            );
+            let total: f64 = volumes.iter().sum();
+            assert!((total - 0.5).abs() < 1e-15, "seed {seed}: {total}");
+        }
+    }
+
+    #[test]
+    fn tied_blocks_are_two_conforming_blocks_and_a_layer_of_exactly_flat_tetrahedra() {
+        let n = 4;
+        for split in [Split::ByIndex, Split::Shuffled(7)] {
+            let m = TetMesh::tied_blocks(n, split);
+            let geo = geometries(&m);
+            let layer: Vec<usize> = (0..m.tets.len()).filter(|&e| m.parts[e] == LAYER).collect();
+            assert_eq!(layer.len(), 3 * 2 * n * n, "three per interface triangle");
+            assert!(layer.iter().all(|&e| geo[e].j == 0.0), "{split:?}");
+            let blocks = (0..m.tets.len()).filter(|&e| m.parts[e] != LAYER);
+            assert!(blocks.clone().all(|e| geo[e].j > 0.0));
+            let volume: f64 = blocks.map(|e| geo[e].j / 6.0).sum();
+            assert!((volume - 1.0).abs() < 1e-13, "{volume}");
+            // Each node of z = 1/2 twice, once per block.
+            let on_interface = (m.nodes.iter()).filter(|p| p[2] == 0.5).count();
+            assert_eq!(on_interface, 2 * (n + 1) * (n + 1));
         }
     }
 
