@@ -244,8 +244,8 @@ impl TetMesh {
         }
     }
 
-    /// Two Kuhn blocks of the unit cube, [0,1]² × [0, 1/2] and
-    /// [0,1]² × [1/2, 1] with n boxes per side (n even), each with its own
+    /// Two Kuhn blocks of the unit cube, (0, 1)² × (0, 1/2) and
+    /// (0, 1)² × (1/2, 1) with n boxes per side (n even), each with its own
     /// nodes on z = 1/2, joined by the layer of zero-volume prisms over the
     /// interface's (matching) triangles, each split into three flat
     /// tetrahedra as `split` says: stage 2 of docs/method.md §9.
