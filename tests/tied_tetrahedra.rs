@@ -25,7 +25,7 @@ fn tie(n: usize) -> TetTempering {
 /// patch test survives, in 2D either.)
 fn jittered(n: usize, split: Split) -> TetMesh {
     let mut mesh = TetMesh::tied_blocks(n, split);
-    mesh.jitter_interface(1.0 / n as f64, 0.2, 99);
+    mesh.jitter_interface(0.5, 1.0 / n as f64, 0.2, 99);
     mesh
 }
 

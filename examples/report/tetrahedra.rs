@@ -5,6 +5,7 @@
 use std::fmt::Write as _;
 
 use tfem::Tempering;
+use tfem::studies::tet_contact::{TwoBlocks3d, contact_patch_test};
 use tfem::studies::tet_study::{TetPoint, TetStudy, TetTempering, tied_patch_test};
 use tfem::studies::tetmesh::{Band, Split, TetMesh};
 use tfem::verification::fitted_rate;
@@ -127,6 +128,7 @@ pub(crate) fn tetrahedra(report: &mut String, a: &Args) {
             .collect(),
     });
     tied(report, &levels);
+    contact(report, a);
     figure(
         report,
         a,
@@ -232,7 +234,7 @@ fn tied(report: &mut String, levels: &[usize]) {
         ] {
             for jitter in [0.0, 0.2] {
                 let mut mesh = TetMesh::tied_blocks(n, split);
-                mesh.jitter_interface(1.0 / n as f64, jitter, 99);
+                mesh.jitter_interface(0.5, 1.0 / n as f64, jitter, 99);
                 let tie = TetTempering::Tie {
                     h_c: 1.0 / n as f64,
                     lambda: 1.0,
@@ -304,4 +306,148 @@ fn tied(report: &mut String, levels: &[usize]) {
         )
         .unwrap();
     }
+}
+
+/// Stage 3 as a study: contact through B in 3D.
+fn contact(report: &mut String, a: &Args) {
+    writeln!(
+        report,
+        "### Contact through a layer of flat tetrahedra (stage 3, as a study)\n\n\
+         `tfem::studies::tet_contact`: two Kuhn blocks, B the layer of zero-volume prisms between their \
+         matching surfaces (split from node ranks), each tetrahedron of B switched on where it would \
+         invert (g = Σ w_k·u_k < 0, w_k = (n·a_k) n) with K = (E_c/(6T_e)) w wᵀ, T_e = A_e h_c²/λ, \
+         E_c the smaller modulus, by a primal active-set loop from all on — an independent prototype, \
+         not the product's loop. *Patch test*: the unit square's blocks (z < 0 with E = 1, z > 0 with \
+         E = 10, ν = 0.3), the top pressed by p, the bottom and the planes x = 0, y = 0 on rollers; \
+         largest stress error of a block tetrahedron over p and spread of the overlap over its mean.\n\n\
+         | h | split | interface | stress error | overlap spread | all in contact |\n|---|---|---|---|---|---|"
+    )
+    .unwrap();
+    for n in [4, 8] {
+        for (split, name) in [
+            (Split::ByIndex, "by index"),
+            (Split::Shuffled(1), "shuffled"),
+        ] {
+            for jitter in [0.0, 0.2] {
+                let h = 1.0 / n as f64;
+                let xs: Vec<f64> = (0..=n).map(|i| i as f64 * h).collect();
+                let lower: Vec<f64> = (0..=n / 2).map(|i| -0.5 + i as f64 * h).collect();
+                let upper: Vec<f64> = (0..=n / 2).map(|i| i as f64 * h).collect();
+                let mut mesh = TetMesh::stacked(&xs, &xs, &lower, &upper, split);
+                mesh.jitter_interface(0.0, h, jitter, 17);
+                let kind = if jitter > 0.0 {
+                    "jittered 0.2 h"
+                } else {
+                    "uniform"
+                };
+                match contact_patch_test(&mesh, [1.0, 10.0], 0.3, 1.0) {
+                    Ok(r) => writeln!(
+                        report,
+                        "| 1/{n} | {name} | {kind} | {:.1e} | {:.1e} | {} |",
+                        r.stress_error, r.overlap_spread, r.all_active
+                    ),
+                    Err(e) => writeln!(report, "| 1/{n} | {name} | {kind} | {} | | |", e.message()),
+                }
+                .unwrap();
+            }
+        }
+    }
+    seed_3d(report, a);
+}
+
+/// The seed scene in 3D, by mesh size, and the values extrapolated from
+/// the three finest.
+fn seed_3d(report: &mut String, a: &Args) {
+    let sizes: &[f64] = if a.quick {
+        &[0.05]
+    } else {
+        &[0.05, 0.025, 1.0 / 60.0]
+    };
+    writeln!(
+        report,
+        "\nThe seed scene in 3D (issue 41's statement: L = 1, H1 = H2 = 0.25, E1 = 1e10, E2 = 1e11, \
+         ν = 0.3, p = 1e7, C = 0.1, frictionless, zero gap; the quarter x, y ≤ L/2 with its symmetry \
+         planes; uniform Kuhn meshes of size h). *transmitted*: the upward force of the contact on Ω2 \
+         over p(2C)² (1 in equilibrium). Values of the whole scene; one thread, AMD, the factorisation \
+         repeated at each active-set solve.\n\n\
+         | h | unknowns | solves | time [s] | contact_area | gap_corner | v_top | compliance | transmitted |\n\
+         |---|---|---|---|---|---|---|---|---|"
+    )
+    .unwrap();
+    let mut rows = Vec::new();
+    for &h in sizes {
+        match (TwoBlocks3d {
+            h,
+            ..Default::default()
+        })
+        .solve()
+        {
+            Ok(r) => {
+                writeln!(
+                    report,
+                    "| 1/{:.0} | {} | {} | {:.2} | {:.5} | {:.4e} | {:.5e} | {:.5} | {:.12} |",
+                    1.0 / h,
+                    r.unknowns,
+                    r.iterations,
+                    r.seconds,
+                    r.contact_area,
+                    r.gap_corner,
+                    r.v_top,
+                    r.compliance,
+                    r.transmitted
+                )
+                .unwrap();
+                rows.push((h, [r.contact_area, r.gap_corner, r.v_top, r.compliance]));
+            }
+            Err(e) => writeln!(report, "| 1/{:.0} | {} |", 1.0 / h, e.message()).unwrap(),
+        }
+    }
+    writeln!(report).unwrap();
+    if rows.len() == 3 {
+        let names = ["contact_area", "gap_corner", "v_top", "compliance"];
+        let line: Vec<String> = (0..4)
+            .map(|k| {
+                let q: Vec<(f64, f64)> = rows.iter().map(|(h, v)| (*h, v[k])).collect();
+                match extrapolate(&q) {
+                    Some((value, order)) => format!(
+                        "{} → {value:.5e} (order {order:.2}; finest off by {:+.1e})",
+                        names[k],
+                        q[2].1 / value - 1.0
+                    ),
+                    None => format!("{}: not monotone, no extrapolation", names[k]),
+                }
+            })
+            .collect();
+        writeln!(
+            report,
+            "\nExtrapolated from the three meshes (q = q∞ + K h^s): {}.\n",
+            line.join("; ")
+        )
+        .unwrap();
+    }
+}
+
+/// q∞ and s of q = q∞ + K h^s through three points (h decreasing), or
+/// None when the differences change sign (no such fit).
+fn extrapolate(q: &[(f64, f64)]) -> Option<(f64, f64)> {
+    let [(h1, q1), (h2, q2), (h3, q3)] = [q[0], q[1], q[2]];
+    let ratio = (q1 - q2) / (q2 - q3);
+    if !(ratio > 0.0 && ratio.is_finite()) {
+        return None;
+    }
+    let f = |s: f64| (h1.powf(s) - h2.powf(s)) / (h2.powf(s) - h3.powf(s)) - ratio;
+    let (mut lo, mut hi) = (0.05, 6.0);
+    if f(lo).signum() == f(hi).signum() {
+        return None;
+    }
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if f(mid).signum() == f(lo).signum() {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let s = 0.5 * (lo + hi);
+    Some((q3 - (q2 - q3) * h3.powf(s) / (h2.powf(s) - h3.powf(s)), s))
 }

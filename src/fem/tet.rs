@@ -177,6 +177,26 @@ pub fn stiffness(geo: &TetGeometry, d: &[[f64; 6]; 6], jmin: f64) -> Result<[[f6
     Ok(k)
 }
 
+/// The gap weights of a tetrahedron of B, the mesh of the gap between two
+/// bodies (docs/method.md §9, stage 3): w_k = (n·a_k) n for the interface
+/// normal n (unit), so that g = Σ_k w_k·u_k is the change of J by the
+/// displacements' normal parts — for a flat tetrahedron of a split prism,
+/// twice its facing area times the normal opening of its pair of facing
+/// nodes (negative: penetration). The 3D form of the strip's
+/// w_(i,c) = (n·g_i) n_c (§6.1).
+pub fn gap_weights(geo: &TetGeometry, n: [f64; 3]) -> [f64; 12] {
+    std::array::from_fn(|i| dot(n, geo.a[i / 3]) * n[i % 3])
+}
+
+/// The frictionless contact stiffness of a tetrahedron of B:
+/// K = (E_c / (6T)) w wᵀ, the energy ½ E_c ε_nn² of its (tempered)
+/// volume: only the normal opening is resisted, tangential sliding is
+/// free. `t` is the tetrahedron's T_e (> 0).
+pub fn contact_stiffness(w: &[f64; 12], e_c: f64, t: f64) -> [[f64; 12]; 12] {
+    let scale = e_c / (6.0 * t);
+    std::array::from_fn(|i| std::array::from_fn(|j| scale * w[i] * w[j]))
+}
+
 /// The shape quality J/h³ from which [`Tempering::Auto`] leaves a
 /// tetrahedron plain (Kuhn's tetrahedron has 0.19, the regular one 0.71).
 pub const WELL_SHAPED_TET: f64 = 0.1;
@@ -366,5 +386,35 @@ mod tests {
                 .message()
                 .contains("Poisson")
         );
+    }
+
+    #[test]
+    fn gap_weights_measure_the_normal_opening_of_a_flat_prism_tetrahedron() {
+        // The cap of a flat prism over the triangle (0,0), (1,0), (0,1) at
+        // z = 0: bottom node 0, top nodes 1, 2, 3 over bottom nodes 0, 1, 2.
+        let x = [
+            [0.0, 0.0, 0.0],
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+        ];
+        let geo = TetGeometry::new(&x);
+        assert_eq!(geo.j, 0.0);
+        let w = gap_weights(&geo, [0.0, 0.0, 1.0]);
+        let opening = |d: [f64; 3]| -> f64 {
+            // The top nodes move by d, the bottom one stays.
+            (3..12).map(|i| w[i] * d[i % 3]).sum()
+        };
+        // Twice the facing area (1/2) times the normal opening.
+        assert!((opening([0.0, 0.0, 0.3]).abs() - 0.3).abs() < 1e-15);
+        assert_eq!(opening([0.7, -0.2, 0.0]), 0.0, "sliding is not an opening");
+        let k = contact_stiffness(&w, 2.0, 0.5);
+        let u: Vec<f64> = (0..12)
+            .map(|i| if i >= 3 && i % 3 == 0 { 1.0 } else { 0.0 })
+            .collect();
+        let energy: f64 = (0..12)
+            .map(|i| (0..12).map(|j| u[i] * k[i][j] * u[j]).sum::<f64>())
+            .sum();
+        assert_eq!(energy, 0.0, "a tangential slide of the top costs nothing");
     }
 }

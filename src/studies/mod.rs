@@ -7,7 +7,8 @@
 //! ([`meshgen`]) and the quadrature their norms use ([`quadrature`]), and
 //! the study of Jmin in three dimensions: tetrahedral meshes of the cube
 //! with bands of flat tetrahedra ([`tetmesh`]) and a manufactured solution
-//! solved on them ([`tet_study`]).
+//! solved on them ([`tet_study`]), and contact through a layer of flat
+//! tetrahedra ([`tet_contact`]).
 //!
 //! The tests, examples and the report use it; the C library does not carry
 //! it. Its modules keep their old paths (`tfem::scenes`, …) as
@@ -18,6 +19,7 @@ pub mod meshgen;
 pub mod oracle;
 pub mod quadrature;
 pub mod scenes;
+pub mod tet_contact;
 pub mod tet_study;
 pub mod tetmesh;
 pub mod verification;

@@ -252,44 +252,43 @@ impl TetMesh {
     pub fn tied_blocks(n: usize, split: Split) -> TetMesh {
         assert!(n >= 2 && n % 2 == 0, "the interface sits on a grid plane");
         let grid: Vec<f64> = (0..=n).map(|i| i as f64 / n as f64).collect();
-        let (lower, upper) = (&grid[..=n / 2], &grid[n / 2..]);
+        TetMesh::stacked(&grid, &grid, &grid[..=n / 2], &grid[n / 2..], split)
+    }
+
+    /// Two Kuhn blocks xs × ys × `lower` and xs × ys × `upper` (the last
+    /// of `lower` is the first of `upper`: the interface plane), each with
+    /// its own nodes on the interface, joined by the layer of zero-volume
+    /// prisms over its triangles split as `split` says; parts [`LOWER`],
+    /// [`UPPER`], [`LAYER`].
+    pub fn stacked(xs: &[f64], ys: &[f64], lower: &[f64], upper: &[f64], split: Split) -> TetMesh {
+        let (nx, ny) = (xs.len() - 1, ys.len() - 1);
         let mut mesh = TetMesh::default();
-        let below = mesh.add_grid(&grid, &grid, lower);
-        for k in 0..n / 2 {
-            for j in 0..n {
-                for i in 0..n {
-                    mesh.add_kuhn_box(|a, b, c| below(i + a, j + b, k + c));
-                }
-            }
-        }
-        let above = mesh.add_grid(&grid, &grid, upper);
+        let below = mesh.add_grid(xs, ys, lower);
+        mesh.add_kuhn_boxes(nx, ny, lower.len() - 1, &below);
         mesh.parts = vec![LOWER; mesh.tets.len()];
-        for k in 0..n / 2 {
-            for j in 0..n {
-                for i in 0..n {
-                    mesh.add_kuhn_box(|a, b, c| above(i + a, j + b, k + c));
-                }
-            }
-        }
+        let above = mesh.add_grid(xs, ys, upper);
+        mesh.add_kuhn_boxes(nx, ny, upper.len() - 1, &above);
         mesh.parts.resize(mesh.tets.len(), UPPER);
         let rank = ranks(mesh.nodes.len(), split);
         // Orientation is decided with the upper face lifted: flat, every
         // layer tetrahedron has J = 0.
         let mut reference = mesh.nodes.clone();
-        for j in 0..=n {
-            for i in 0..=n {
-                reference[above(i, j, 0)][2] += 0.5 / n as f64;
+        let lift = upper[1] - upper[0];
+        for j in 0..=ny {
+            for i in 0..=nx {
+                reference[above(i, j, 0)][2] += 0.5 * lift;
             }
         }
-        for j in 0..n {
-            for i in 0..n {
+        let top_of_lower = lower.len() - 1;
+        for j in 0..ny {
+            for i in 0..nx {
                 // The interface's two triangles of cell (i, j), as the Kuhn
                 // boxes split it: along the diagonal (i, j)-(i+1, j+1).
                 for tri in [
                     [(i, j), (i + 1, j), (i + 1, j + 1)],
                     [(i, j), (i + 1, j + 1), (i, j + 1)],
                 ] {
-                    let bottom = tri.map(|(a, b)| below(a, b, n / 2));
+                    let bottom = tri.map(|(a, b)| below(a, b, top_of_lower));
                     let top = tri.map(|(a, b)| above(a, b, 0));
                     for t in split_prism(bottom, top, &rank) {
                         mesh.add_oriented(t, &reference);
@@ -301,14 +300,31 @@ impl TetMesh {
         mesh
     }
 
-    /// Moves the nodes of the plane z = 1/2 that are not on the cube's
-    /// sides within the plane, each by up to `fraction` of `h` in x and y,
-    /// pseudo-randomly from `seed` and from its position, so that the two
-    /// copies of a tied interface move together: a non-uniform interface
-    /// triangulation.
-    pub fn jitter_interface(&mut self, h: f64, fraction: f64, seed: u64) {
+    /// The Kuhn boxes of an nx × ny × nz grid of nodes `id`.
+    fn add_kuhn_boxes(
+        &mut self,
+        nx: usize,
+        ny: usize,
+        nz: usize,
+        id: &impl Fn(usize, usize, usize) -> usize,
+    ) {
+        for k in 0..nz {
+            for j in 0..ny {
+                for i in 0..nx {
+                    self.add_kuhn_box(|a, b, c| id(i + a, j + b, k + c));
+                }
+            }
+        }
+    }
+
+    /// Moves the nodes of the plane z = `plane` that are not on the unit
+    /// square's sides within the plane, each by up to `fraction` of `h` in
+    /// x and y, pseudo-randomly from `seed` and from its position, so that
+    /// the two copies of a tied interface move together: a non-uniform
+    /// interface triangulation.
+    pub fn jitter_interface(&mut self, plane: f64, h: f64, fraction: f64, seed: u64) {
         for p in &mut self.nodes {
-            if p[2] != 0.5 || p[0] == 0.0 || p[0] == 1.0 || p[1] == 0.0 || p[1] == 1.0 {
+            if p[2] != plane || p[0] == 0.0 || p[0] == 1.0 || p[1] == 0.0 || p[1] == 1.0 {
                 continue;
             }
             let mut state = seed ^ p[0].to_bits().rotate_left(17) ^ p[1].to_bits();

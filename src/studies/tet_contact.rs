@@ -1,0 +1,608 @@
+//! Frictionless contact through the mesh of the gap in three dimensions, as
+//! a study (docs/method.md §9, stage 3): two blocks of tempered
+//! tetrahedra ([`TetMesh::stacked`]) and B, the layer of flat tetrahedra
+//! between them, each switched on where it would invert — K = (E_c/(6T_e))
+//! w wᵀ ([`crate::fem::tet::contact_stiffness`]) with the tie's T_e =
+//! A_e h_c²/λ — by a primal active-set loop.
+//!
+//! This answers the method's question in 3D with measurements (the contact
+//! patch test, the seed scene in 3D); it is an independent prototype, not
+//! the product: the product's contact loop, condensation and load
+//! histories take tetrahedra as a third kind of constraint, and this study
+//! is what they will be checked against.
+
+use std::time::Instant;
+
+use super::tetmesh::{LAYER, LOWER, TetMesh, UPPER};
+use crate::error::{Error, Result, Status};
+use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
+use crate::fem::element::Tempering;
+use crate::fem::tet::{TetGeometry, contact_stiffness, gap_weights, isotropic_d, stiffness};
+use crate::linalg::{AnalyseParams, Cholesky, FactorError};
+
+/// A contact problem between the two blocks of a stacked mesh.
+pub struct TetContactProblem<'a> {
+    /// The mesh: parts [`LOWER`], [`UPPER`] and the layer B.
+    pub mesh: &'a TetMesh,
+    /// Young's modulus and Poisson's ratio of the lower and upper blocks.
+    pub materials: [(f64, f64); 2],
+    /// The interface's length h_c (its shortest edge) and λ of the tie.
+    pub h_c: f64,
+    /// The length λ (also the blocks' tempering scale).
+    pub lambda: f64,
+    /// The displacement components prescribed at a boundary node of a
+    /// block (part, position), `None` where free.
+    pub fixed: &'a dyn Fn(usize, [f64; 3]) -> [Option<f64>; 3],
+    /// The traction on a boundary face of a block (part, centroid,
+    /// outward unit normal).
+    pub traction: &'a dyn Fn(usize, [f64; 3], [f64; 3]) -> [f64; 3],
+}
+
+/// The solution of a [`TetContactProblem`].
+#[derive(Debug, Clone)]
+pub struct TetContact {
+    /// Three displacements per node.
+    pub u: Vec<f64>,
+    /// Whether each tetrahedron of B is switched on (by index in the mesh;
+    /// false for the blocks').
+    pub active: Vec<bool>,
+    /// The consistent nodal forces of the tractions (three per node).
+    pub loads: Vec<f64>,
+    /// The force B exerts on the upper block: minus the active
+    /// tetrahedra's internal forces at the upper block's nodes.
+    pub transmitted: [f64; 3],
+    /// Active-set iterations (solves).
+    pub iterations: usize,
+    /// Unknowns.
+    pub unknowns: usize,
+    /// Seconds of the whole solve.
+    pub seconds: f64,
+}
+
+impl TetContact {
+    /// The area of the interface in contact: each active tetrahedron of B
+    /// stands for a third of its prism's triangle.
+    pub fn contact_area(&self, mesh: &TetMesh) -> f64 {
+        (mesh.tets.iter().enumerate())
+            .filter(|&(e, _)| self.active[e])
+            .map(|(_, t)| largest_face(&TetGeometry::new(&t.map(|v| mesh.nodes[v]))) / 3.0)
+            .sum()
+    }
+
+    /// The work of the loads, Σ f·u.
+    pub fn compliance(&self) -> f64 {
+        self.loads.iter().zip(&self.u).map(|(f, u)| f * u).sum()
+    }
+}
+
+fn largest_face(geo: &TetGeometry) -> f64 {
+    (geo.a.iter())
+        .map(|a| 0.5 * (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt())
+        .fold(0.0, f64::max)
+}
+
+/// What the loop needs of B: each tetrahedron's index, gap weights and
+/// matrix.
+struct Layer {
+    elements: Vec<usize>,
+    weights: Vec<[f64; 12]>,
+    matrices: Vec<Vec<f64>>,
+}
+
+/// Solves the contact problem: the blocks assembled once, then solves with
+/// the active tetrahedra of B added, each switched on while its gap
+/// g = Σ w_k·u_k is negative (an overlap) and off while it opens, from
+/// every one on, until the set repeats (at most 50 solves).
+pub fn solve_contact(problem: &TetContactProblem<'_>) -> Result<TetContact> {
+    let t0 = Instant::now();
+    let mesh = problem.mesh;
+    let n = mesh.nodes.len();
+    let (prescribed, fixed, loads) = boundary(problem)?;
+    let dofs = DofMap::new(n, 3, |g| !fixed[g]);
+    let pattern = Pattern::build(&dofs, n, &faces(mesh));
+    let mut chol = Cholesky::analyse(&pattern, &AnalyseParams::default())?;
+    let mut base = vec![0.0; pattern.nnz()];
+    let mut rhs = vec![0.0; dofs.n_free()];
+    for (f, &g) in dofs.free_to_global().iter().enumerate() {
+        rhs[f] = loads[g];
+    }
+    let size = model_size(mesh);
+    let e_c = problem.materials[0].0.min(problem.materials[1].0);
+    let d = [
+        isotropic_d(problem.materials[0].0, problem.materials[0].1)?,
+        isotropic_d(problem.materials[1].0, problem.materials[1].1)?,
+    ];
+    let mut layer = Layer {
+        elements: Vec::new(),
+        weights: Vec::new(),
+        matrices: Vec::new(),
+    };
+    for (e, t) in mesh.tets.iter().enumerate() {
+        let geo = TetGeometry::new(&t.map(|v| mesh.nodes[v]));
+        let k = if mesh.parts[e] == LAYER {
+            let w = gap_weights(&geo, [0.0, 0.0, 1.0]);
+            let t_e = largest_face(&geo) * problem.h_c * problem.h_c / problem.lambda;
+            let k = contact_stiffness(&w, e_c, t_e);
+            layer.elements.push(e);
+            layer.weights.push(w);
+            layer.matrices.push(k.iter().flatten().copied().collect());
+            continue;
+        } else {
+            let jmin = Tempering::Auto.jmin_tet(&geo, size);
+            stiffness(&geo, &d[mesh.parts[e]], jmin).map_err(|err| {
+                Error::new(err.status(), format!("tetrahedron {e}: {}", err.message()))
+            })?
+        };
+        let unknowns = unknowns_of(&dofs, t);
+        let ke: Vec<f64> = k.iter().flatten().copied().collect();
+        pattern.add_element(&mut base, &unknowns, &ke);
+        lift(&mut rhs, &unknowns, t, &ke, &prescribed);
+    }
+    let mut active = vec![true; layer.elements.len()];
+    let mut iterations = 0;
+    let u = loop {
+        iterations += 1;
+        let mut values = base.clone();
+        let mut b = rhs.clone();
+        for (i, &e) in layer.elements.iter().enumerate() {
+            if active[i] {
+                let t = &mesh.tets[e];
+                let unknowns = unknowns_of(&dofs, t);
+                pattern.add_element(&mut values, &unknowns, &layer.matrices[i]);
+                lift(&mut b, &unknowns, t, &layer.matrices[i], &prescribed);
+            }
+        }
+        factorize(&mut chol, &pattern, &values)?;
+        chol.solve(&mut b)?;
+        let mut u = prescribed.clone();
+        for (f, &g) in dofs.free_to_global().iter().enumerate() {
+            u[g] = b[f];
+        }
+        let next: Vec<bool> = (layer.elements.iter().zip(&layer.weights))
+            .map(|(&e, w)| {
+                let t = &mesh.tets[e];
+                let gap: f64 = (0..12).map(|i| w[i] * u[3 * t[i / 3] + i % 3]).sum();
+                gap < 0.0
+            })
+            .collect();
+        if next == active {
+            break u;
+        }
+        if iterations == 50 {
+            return Err(Error::new(
+                Status::NotConverged,
+                "the 3D contact study's active set did not settle in 50 solves",
+            ));
+        }
+        active = next;
+    };
+    let mut on = vec![false; mesh.tets.len()];
+    let mut transmitted = [0.0; 3];
+    let upper = upper_nodes(mesh);
+    for (i, &e) in layer.elements.iter().enumerate() {
+        on[e] = active[i];
+        if !active[i] {
+            continue;
+        }
+        let t = &mesh.tets[e];
+        for r in 0..12 {
+            if upper[t[r / 3]] {
+                let k = &layer.matrices[i][12 * r..12 * r + 12];
+                transmitted[r % 3] -= (0..12).map(|c| k[c] * u[3 * t[c / 3] + c % 3]).sum::<f64>();
+            }
+        }
+    }
+    Ok(TetContact {
+        u,
+        active: on,
+        loads,
+        transmitted,
+        iterations,
+        unknowns: dofs.n_free(),
+        seconds: t0.elapsed().as_secs_f64(),
+    })
+}
+
+/// Whether each node belongs to the upper block.
+fn upper_nodes(mesh: &TetMesh) -> Vec<bool> {
+    let mut upper = vec![false; mesh.nodes.len()];
+    for (e, t) in mesh.tets.iter().enumerate() {
+        if mesh.parts[e] == UPPER {
+            t.iter().for_each(|&v| upper[v] = true);
+        }
+    }
+    upper
+}
+
+/// The prescribed values and flags (per DOF) and the consistent loads of
+/// the tractions.
+fn boundary(problem: &TetContactProblem<'_>) -> Result<(Vec<f64>, Vec<bool>, Vec<f64>)> {
+    let mesh = problem.mesh;
+    let n = mesh.nodes.len();
+    let mut prescribed = vec![0.0; 3 * n];
+    let mut fixed = vec![false; 3 * n];
+    let mut loads = vec![0.0; 3 * n];
+    for (e, f) in mesh.boundary_faces() {
+        let part = mesh.parts[e];
+        if part != LOWER && part != UPPER {
+            continue;
+        }
+        for &v in &f {
+            for (c, value) in (problem.fixed)(part, mesh.nodes[v]).into_iter().enumerate() {
+                if let Some(x) = value {
+                    prescribed[3 * v + c] = x;
+                    fixed[3 * v + c] = true;
+                }
+            }
+        }
+        let x = f.map(|v| mesh.nodes[v]);
+        let inside = (mesh.tets[e].iter())
+            .find(|v| !f.contains(v))
+            .expect("a fourth node");
+        let (u, w) = (sub(x[1], x[0]), sub(x[2], x[0]));
+        let mut normal = [
+            u[1] * w[2] - u[2] * w[1],
+            u[2] * w[0] - u[0] * w[2],
+            u[0] * w[1] - u[1] * w[0],
+        ];
+        if (0..3)
+            .map(|i| normal[i] * (x[0][i] - mesh.nodes[*inside][i]))
+            .sum::<f64>()
+            < 0.0
+        {
+            normal = normal.map(|c| -c);
+        }
+        let twice_area = (normal.iter().map(|c| c * c).sum::<f64>()).sqrt();
+        let unit = normal.map(|c| c / twice_area);
+        let centroid: [f64; 3] = std::array::from_fn(|i| (x[0][i] + x[1][i] + x[2][i]) / 3.0);
+        let t = (problem.traction)(part, centroid, unit);
+        if t.iter().any(|c| !c.is_finite()) {
+            return Err(Error::argument(format!(
+                "a traction on tetrahedron {e}'s face is not finite"
+            )));
+        }
+        for &v in &f {
+            (0..3).for_each(|c| loads[3 * v + c] += t[c] * twice_area / 6.0);
+        }
+    }
+    Ok((prescribed, fixed, loads))
+}
+
+fn sub(p: [f64; 3], q: [f64; 3]) -> [f64; 3] {
+    [p[0] - q[0], p[1] - q[1], p[2] - q[2]]
+}
+
+fn faces(mesh: &TetMesh) -> Vec<[usize; 3]> {
+    (mesh.tets.iter())
+        .flat_map(|t| {
+            [
+                [t[0], t[1], t[2]],
+                [t[0], t[1], t[3]],
+                [t[0], t[2], t[3]],
+                [t[1], t[2], t[3]],
+            ]
+        })
+        .collect()
+}
+
+fn unknowns_of(dofs: &DofMap, t: &[usize; 4]) -> [usize; 12] {
+    std::array::from_fn(|i| dofs.free(3 * t[i / 3] + i % 3))
+}
+
+/// Moves the prescribed DOFs' share of an element to the right-hand side.
+fn lift(rhs: &mut [f64], unknowns: &[usize; 12], t: &[usize; 4], ke: &[f64], prescribed: &[f64]) {
+    for (i, &row) in unknowns.iter().enumerate() {
+        if row == NOT_FREE {
+            continue;
+        }
+        for (c, &col) in unknowns.iter().enumerate() {
+            if col == NOT_FREE {
+                rhs[row] -= ke[12 * i + c] * prescribed[3 * t[c / 3] + c % 3];
+            }
+        }
+    }
+}
+
+fn model_size(mesh: &TetMesh) -> f64 {
+    (0..3)
+        .map(|i| {
+            let (lo, hi) = (mesh.nodes.iter())
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+                    (a.min(p[i]), b.max(p[i]))
+                });
+            hi - lo
+        })
+        .fold(0.0, f64::max)
+}
+
+fn factorize(chol: &mut Cholesky, pattern: &Pattern, values: &[f64]) -> Result<()> {
+    match chol.factorize(pattern, values) {
+        Ok(()) => Ok(()),
+        Err(FactorError::Other(e)) => Err(e),
+        Err(FactorError::Singular { usable: true, .. }) if chol.accept_ill_conditioned() => Ok(()),
+        Err(e) => Err(Error::new(
+            Status::Singular,
+            format!(
+                "the 3D contact system does not factorise (a block held by contact alone lost it?): {e:?}"
+            ),
+        )),
+    }
+}
+
+/// What the 3D contact patch test measures.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ContactPatch {
+    /// The largest error of a block tetrahedron's stress, over p.
+    pub stress_error: f64,
+    /// The largest deviation of a facing pair's normal overlap from their
+    /// mean, over the mean.
+    pub overlap_spread: f64,
+    /// Whether every tetrahedron of B is on.
+    pub all_active: bool,
+}
+
+/// The contact patch test in 3D on a stacked mesh of the unit square's
+/// blocks (lower z < 0, upper z > 0): the upper block's top pressed by a
+/// uniform pressure `p`, the lower block's bottom on rollers (u_z = 0),
+/// the planes x = 0 and y = 0 of both on rollers; Young's moduli `young`
+/// (lower, upper), Poisson's ratio `poisson`. Exact: σ = −p e_z ⊗ e_z in
+/// every block tetrahedron, the blocks sliding on each other as their
+/// Poisson expansions differ, one uniform overlap.
+pub fn contact_patch_test(
+    mesh: &TetMesh,
+    young: [f64; 2],
+    poisson: f64,
+    p: f64,
+) -> Result<ContactPatch> {
+    let bottom = (mesh.nodes.iter()).fold(f64::INFINITY, |m, x| m.min(x[2]));
+    let top = (mesh.nodes.iter()).fold(f64::NEG_INFINITY, |m, x| m.max(x[2]));
+    let h_c = shortest_interface_edge(mesh);
+    let r = solve_contact(&TetContactProblem {
+        mesh,
+        materials: [(young[0], poisson), (young[1], poisson)],
+        h_c,
+        lambda: 1.0,
+        fixed: &|_, x| {
+            [
+                (x[0] == 0.0).then_some(0.0),
+                (x[1] == 0.0).then_some(0.0),
+                (x[2] == bottom).then_some(0.0),
+            ]
+        },
+        traction: &|_, c, n| {
+            if c[2] == top && n[2] > 0.5 {
+                [0.0, 0.0, -p]
+            } else {
+                [0.0; 3]
+            }
+        },
+    })?;
+    let mut stress_error = 0.0f64;
+    for (e, t) in mesh.tets.iter().enumerate() {
+        let part = mesh.parts[e];
+        if part == LAYER {
+            continue;
+        }
+        let geo = TetGeometry::new(&t.map(|v| mesh.nodes[v]));
+        let d = isotropic_d(young[part], poisson)?;
+        let g: [[f64; 3]; 3] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| {
+                (0..4).map(|k| r.u[3 * t[k] + i] * geo.a[k][j]).sum::<f64>() / geo.j
+            })
+        });
+        let strain = [
+            g[0][0],
+            g[1][1],
+            g[2][2],
+            g[1][2] + g[2][1],
+            g[0][2] + g[2][0],
+            g[0][1] + g[1][0],
+        ];
+        let target = [0.0, 0.0, -p, 0.0, 0.0, 0.0];
+        for (row, &want) in target.iter().enumerate() {
+            let s: f64 = (0..6).map(|c| d[row][c] * strain[c]).sum();
+            stress_error = stress_error.max((s - want).abs() / p);
+        }
+    }
+    let overlaps: Vec<f64> = facing_pairs(mesh)
+        .into_iter()
+        .map(|(a, b)| r.u[3 * a + 2] - r.u[3 * b + 2])
+        .collect();
+    let mean = overlaps.iter().sum::<f64>() / overlaps.len().max(1) as f64;
+    let spread = overlaps
+        .iter()
+        .map(|o| (o - mean).abs())
+        .fold(0.0, f64::max);
+    Ok(ContactPatch {
+        stress_error,
+        overlap_spread: spread / mean.abs(),
+        all_active: (0..mesh.tets.len()).all(|e| mesh.parts[e] != LAYER || r.active[e]),
+    })
+}
+
+/// The interface's node pairs (lower copy, upper copy), matched by
+/// position.
+pub fn facing_pairs(mesh: &TetMesh) -> Vec<(usize, usize)> {
+    let mut side = vec![usize::MAX; mesh.nodes.len()];
+    let mut on_layer = vec![false; mesh.nodes.len()];
+    for (e, t) in mesh.tets.iter().enumerate() {
+        for &v in t {
+            if mesh.parts[e] == LAYER {
+                on_layer[v] = true;
+            } else {
+                side[v] = mesh.parts[e];
+            }
+        }
+    }
+    let key = |v: &usize| (mesh.nodes[*v][0].to_bits(), mesh.nodes[*v][1].to_bits());
+    let pick = |part: usize| {
+        let mut nodes: Vec<usize> = (0..mesh.nodes.len())
+            .filter(|&v| on_layer[v] && side[v] == part)
+            .collect();
+        nodes.sort_by_key(key);
+        nodes
+    };
+    pick(LOWER).into_iter().zip(pick(UPPER)).collect()
+}
+
+/// The shortest edge of the interface's triangles (h_c).
+pub fn shortest_interface_edge(mesh: &TetMesh) -> f64 {
+    let mut shortest = f64::INFINITY;
+    for (e, t) in mesh.tets.iter().enumerate() {
+        if mesh.parts[e] != LAYER {
+            continue;
+        }
+        for i in 0..4 {
+            for j in i + 1..4 {
+                let d = sub(mesh.nodes[t[i]], mesh.nodes[t[j]]);
+                let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+                if l > 0.0 {
+                    shortest = shortest.min(l);
+                }
+            }
+        }
+    }
+    shortest
+}
+
+/// The seed scene in three dimensions (issue 41): Ω1 = [0, L]² × [−H1, 0]
+/// below Ω2 = [0, L]² × [0, H2], a pressure p on the top square
+/// [L/2 − C, L/2 + C]² of Ω2, u_z = 0 on the same square of Ω1's bottom,
+/// frictionless, zero initial gap; solved on the quarter x, y ≤ L/2 with
+/// u_x = 0 on x = L/2 and u_y = 0 on y = L/2. Uniform Kuhn meshes of size
+/// h (which must divide C and the heights).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TwoBlocks3d {
+    /// Side L.
+    pub l: f64,
+    /// Heights H1 (lower) and H2 (upper).
+    pub heights: [f64; 2],
+    /// Young's moduli E1, E2.
+    pub young: [f64; 2],
+    /// Poisson's ratio (both).
+    pub poisson: f64,
+    /// Pressure p.
+    pub pressure: f64,
+    /// Half-width C of the loaded and supported squares.
+    pub c: f64,
+    /// Mesh size h.
+    pub h: f64,
+}
+
+impl Default for TwoBlocks3d {
+    /// The canonical parameters of the 2D scene.
+    fn default() -> Self {
+        TwoBlocks3d {
+            l: 1.0,
+            heights: [0.25, 0.25],
+            young: [1e10, 1e11],
+            poisson: 0.3,
+            pressure: 1e7,
+            c: 0.1,
+            h: 0.05,
+        }
+    }
+}
+
+/// The outputs of [`TwoBlocks3d`] (of the whole scene, not the quarter).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TwoBlocks3dResult {
+    /// The area of the interface in contact.
+    pub contact_area: f64,
+    /// u_z of Ω2 minus u_z of Ω1 at the corner (0, 0, 0).
+    pub gap_corner: f64,
+    /// u_z of Ω2 at (L/2, L/2, H2).
+    pub v_top: f64,
+    /// ∫ p·(−u_z) over the loaded square.
+    pub compliance: f64,
+    /// The upward force the contact exerts on Ω2, over p·(2C)²: 1 in
+    /// equilibrium.
+    pub transmitted: f64,
+    /// Unknowns of the quarter model.
+    pub unknowns: usize,
+    /// Active-set solves.
+    pub iterations: usize,
+    /// Seconds of the solve.
+    pub seconds: f64,
+}
+
+impl TwoBlocks3d {
+    /// The quarter model's mesh.
+    pub fn mesh(&self) -> Result<TetMesh> {
+        let steps = |a: f64, b: f64| -> Result<Vec<f64>> {
+            let k = ((b - a) / self.h).round();
+            if !(k >= 1.0 && ((b - a) / self.h - k).abs() < 1e-9 && k < 1e4) {
+                return Err(Error::argument(format!(
+                    "h = {} must divide the length {}",
+                    self.h,
+                    b - a
+                )));
+            }
+            Ok((0..=k as usize)
+                .map(|i| a + (b - a) * i as f64 / k)
+                .collect())
+        };
+        let half = 0.5 * self.l;
+        steps(half - self.c, half)?;
+        let xs = steps(0.0, half)?;
+        Ok(TetMesh::stacked(
+            &xs,
+            &xs,
+            &steps(-self.heights[0], 0.0)?,
+            &steps(0.0, self.heights[1])?,
+            super::tetmesh::Split::ByIndex,
+        ))
+    }
+
+    /// Solves the scene and measures its outputs.
+    pub fn solve(&self) -> Result<TwoBlocks3dResult> {
+        let mesh = self.mesh()?;
+        let half = 0.5 * self.l;
+        let inner = half - self.c - 1e-12 * self.l;
+        let (bottom, top) = (-self.heights[0], self.heights[1]);
+        let p = self.pressure;
+        let r = solve_contact(&TetContactProblem {
+            mesh: &mesh,
+            materials: [(self.young[0], self.poisson), (self.young[1], self.poisson)],
+            h_c: self.h,
+            lambda: self.l,
+            fixed: &|part, x| {
+                let supported = part == LOWER && x[2] == bottom && x[0] >= inner && x[1] >= inner;
+                [
+                    (x[0] == half).then_some(0.0),
+                    (x[1] == half).then_some(0.0),
+                    supported.then_some(0.0),
+                ]
+            },
+            traction: &|part, c, n| {
+                let loaded =
+                    part == UPPER && c[2] == top && n[2] > 0.5 && c[0] >= inner && c[1] >= inner;
+                if loaded { [0.0, 0.0, -p] } else { [0.0; 3] }
+            },
+        })?;
+        let at = |part: usize, x: [f64; 3]| -> Result<f64> {
+            let v = (0..mesh.nodes.len())
+                .find(|&v| mesh.nodes[v] == x && node_part(&mesh, v) == Some(part))
+                .ok_or_else(|| Error::argument(format!("no node of part {part} at {x:?}")))?;
+            Ok(r.u[3 * v + 2])
+        };
+        let corner = [0.0, 0.0, 0.0];
+        Ok(TwoBlocks3dResult {
+            contact_area: 4.0 * r.contact_area(&mesh),
+            gap_corner: at(UPPER, corner)? - at(LOWER, corner)?,
+            v_top: at(UPPER, [half, half, top])?,
+            compliance: 4.0 * r.compliance(),
+            transmitted: 4.0 * r.transmitted[2] / (p * 4.0 * self.c * self.c),
+            unknowns: r.unknowns,
+            iterations: r.iterations,
+            seconds: r.seconds,
+        })
+    }
+}
+
+/// The block a node belongs to (None for a node of no block).
+fn node_part(mesh: &TetMesh, v: usize) -> Option<usize> {
+    (mesh.tets.iter().enumerate())
+        .find(|(e, t)| mesh.parts[*e] != LAYER && t.contains(&v))
+        .map(|(e, _)| mesh.parts[e])
+}
