@@ -3,9 +3,11 @@
 //! flat tetrahedra between their matching surfaces, each switched on where
 //! it would invert.
 
+use tfem::Tempering;
 use tfem::studies::tet_contact::{
-    TetContactProblem, TwoBlocks3d, contact_patch_test, facing_pairs, solve_contact,
+    TetContactProblem, contact_patch_test, facing_pairs, solve_contact,
 };
+use tfem::studies::tet_scenes::{Hertz3d, TwoBlocks3d};
 use tfem::studies::tetmesh::{Split, TetMesh};
 
 /// The unit square's blocks, lower z ∈ [−1/2, 0], upper z ∈ [0, 1/2], n
@@ -58,6 +60,8 @@ fn frictionless_blocks_slide_by_their_different_poisson_expansions() {
         materials: [(1.0, nu), (10.0, nu)],
         h_c: 0.25,
         lambda: 1.0,
+        plane: 0.0,
+        tempering: Tempering::Auto,
         fixed: &|_, x| {
             [
                 (x[0] == 0.0).then_some(0.0),
@@ -111,4 +115,53 @@ fn the_3d_seed_scene_refuses_a_mesh_size_that_does_not_divide_it() {
     .unwrap_err();
     assert_eq!(e.status(), tfem::Status::InvalidArgument);
     assert!(e.message().contains("h = 0.03"), "{}", e.message());
+}
+
+#[test]
+fn a_sphere_on_a_block_transmits_its_load_through_the_initial_gap() {
+    // The coarsest mesh, a/2: equilibrium to round-off, a and p0 near
+    // Hertz's (the report follows them to a/8).
+    let r = Hertz3d {
+        refinement: 2.0,
+        ..Default::default()
+    }
+    .solve()
+    .unwrap();
+    assert!((r.transmitted - 1.0).abs() < 1e-9, "{r:?}");
+    assert!(r.a_error.abs() < 0.05 && r.p0_error.abs() < 0.05, "{r:?}");
+}
+
+#[test]
+fn without_a_load_the_sphere_touches_the_block_at_one_point_only() {
+    // Only the elements at the axis have no initial gap; a zero load keeps
+    // the others open.
+    let h = Hertz3d {
+        refinement: 2.0,
+        ..Default::default()
+    };
+    let mesh = h.mesh();
+    let r = solve_contact(&TetContactProblem {
+        mesh: &mesh,
+        materials: [(1.0, 0.3); 2],
+        h_c: h.a / 2.0,
+        lambda: 1.0,
+        plane: 0.0,
+        tempering: Tempering::Off,
+        fixed: &|_, x| {
+            [
+                (x[0] == 0.0).then_some(0.0),
+                (x[1] == 0.0).then_some(0.0),
+                (x[2] < -0.49).then_some(0.0),
+            ]
+        },
+        traction: &|_, _, _| [0.0; 3],
+    })
+    .unwrap();
+    let on = (0..mesh.tets.len()).filter(|&e| r.active[e]).count();
+    assert!(on <= 6, "{on} elements of B on");
+    assert!(
+        r.transmitted.iter().all(|f| f.abs() < 1e-12),
+        "{:?}",
+        r.transmitted
+    );
 }

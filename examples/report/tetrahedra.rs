@@ -5,7 +5,8 @@
 use std::fmt::Write as _;
 
 use tfem::Tempering;
-use tfem::studies::tet_contact::{TwoBlocks3d, contact_patch_test};
+use tfem::studies::tet_contact::contact_patch_test;
+use tfem::studies::tet_scenes::{Hertz3d, TwoBlocks3d};
 use tfem::studies::tet_study::{TetPoint, TetStudy, TetTempering, tied_patch_test};
 use tfem::studies::tetmesh::{Band, Split, TetMesh};
 use tfem::verification::fitted_rate;
@@ -353,6 +354,42 @@ fn contact(report: &mut String, a: &Args) {
         }
     }
     seed_3d(report, a);
+    hertz_3d(report, a);
+}
+
+/// A sphere on a block in 3D against Hertz.
+fn hertz_3d(report: &mut String, a: &Args) {
+    let refinements: &[f64] = if a.quick { &[2.0] } else { &[2.0, 4.0, 8.0] };
+    let scene = Hertz3d::default();
+    writeln!(
+        report,
+        "A sphere on a block in 3D (`Hertz3d`: R = 1, a = 0.02R, equal moduli E = 1, ν = 0.3, both \
+         bodies {}a wide and deep, the sphere's underside z = R − √(R² − r²) straight above the block's \
+         nodes so that B spans the initial gap, g = J0 + w·u with J0 from the heights; P = 4E*a³/(3R) \
+         spread over the sphere body's flat top; quarter model; meshes graded from a/k within 1.5a, \
+         by 1.3 beyond; the bodies plain, B tempered by the tie). a from the contact area √(A/π); p₀ \
+         fitted to the nodal pressures within 0.8a.\n\n\
+         | h | unknowns | solves | time [s] | a | p₀ | transmitted |\n|---|---|---|---|---|---|---|",
+        scene.extent
+    )
+    .unwrap();
+    for &k in refinements {
+        match (Hertz3d {
+            refinement: k,
+            ..scene
+        })
+        .solve()
+        {
+            Ok(r) => writeln!(
+                report,
+                "| a/{k} | {} | {} | {:.1} | {:+.2e} | {:+.2e} | {:.12} |",
+                r.unknowns, r.iterations, r.seconds, r.a_error, r.p0_error, r.transmitted
+            ),
+            Err(e) => writeln!(report, "| a/{k} | {} |", e.message()),
+        }
+        .unwrap();
+    }
+    writeln!(report).unwrap();
 }
 
 /// The seed scene in 3D, by mesh size, and the values extrapolated from

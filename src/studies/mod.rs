@@ -8,7 +8,7 @@
 //! the study of Jmin in three dimensions: tetrahedral meshes of the cube
 //! with bands of flat tetrahedra ([`tetmesh`]) and a manufactured solution
 //! solved on them ([`tet_study`]), and contact through a layer of flat
-//! tetrahedra ([`tet_contact`]).
+//! tetrahedra ([`tet_contact`]) on 3D scenes ([`tet_scenes`]).
 //!
 //! The tests, examples and the report use it; the C library does not carry
 //! it. Its modules keep their old paths (`tfem::scenes`, …) as
@@ -20,6 +20,7 @@ pub mod oracle;
 pub mod quadrature;
 pub mod scenes;
 pub mod tet_contact;
+pub mod tet_scenes;
 pub mod tet_study;
 pub mod tetmesh;
 pub mod verification;

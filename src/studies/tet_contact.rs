@@ -28,8 +28,13 @@ pub struct TetContactProblem<'a> {
     pub materials: [(f64, f64); 2],
     /// The interface's length h_c (its shortest edge) and λ of the tie.
     pub h_c: f64,
-    /// The length λ (also the blocks' tempering scale).
+    /// The length λ of the tie.
     pub lambda: f64,
+    /// The plane z = `plane` B is built on: its nodes' heights above it
+    /// are the initial gap (0 on touching surfaces).
+    pub plane: f64,
+    /// The blocks' tempering (the model size as λ).
+    pub tempering: Tempering,
     /// The displacement components prescribed at a boundary node of a
     /// block (part, position), `None` where free.
     pub fixed: &'a dyn Fn(usize, [f64; 3]) -> [Option<f64>; 3],
@@ -51,6 +56,10 @@ pub struct TetContact {
     /// The force B exerts on the upper block: minus the active
     /// tetrahedra's internal forces at the upper block's nodes.
     pub transmitted: [f64; 3],
+    /// The contact pressure at each upper node of the interface: the
+    /// normal force of its pair's tetrahedra over its tributary area (a
+    /// third of each prism it belongs to).
+    pub pressures: Vec<(usize, f64)>,
     /// Active-set iterations (solves).
     pub iterations: usize,
     /// Unknowns.
@@ -81,126 +90,213 @@ fn largest_face(geo: &TetGeometry) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// What the loop needs of B: each tetrahedron's index, gap weights and
-/// matrix.
+/// B as the loop sees it: each tetrahedron's index, gap weights, initial
+/// gap J0 and matrix, and the scale E_c/(6T_e) of its force.
 struct Layer {
     elements: Vec<usize>,
     weights: Vec<[f64; 12]>,
+    initial: Vec<f64>,
+    scales: Vec<f64>,
     matrices: Vec<Vec<f64>>,
+}
+
+impl Layer {
+    /// B's tetrahedra of `mesh`, measured on their projection onto the
+    /// interface plane (flat, as the method builds B on touching
+    /// surfaces), the nodes' heights above it their initial gap.
+    fn new(problem: &TetContactProblem<'_>, e_c: f64) -> Layer {
+        let mesh = problem.mesh;
+        let mut layer = Layer {
+            elements: Vec::new(),
+            weights: Vec::new(),
+            initial: Vec::new(),
+            scales: Vec::new(),
+            matrices: Vec::new(),
+        };
+        for (e, t) in mesh.tets.iter().enumerate() {
+            if mesh.parts[e] != LAYER {
+                continue;
+            }
+            let flat = t.map(|v| {
+                let [x, y, _] = mesh.nodes[v];
+                [x, y, problem.plane]
+            });
+            let geo = TetGeometry::new(&flat);
+            let w = gap_weights(&geo, [0.0, 0.0, 1.0]);
+            let j0: f64 = (0..12)
+                .map(|i| w[i] * (mesh.nodes[t[i / 3]][i % 3] - flat[i / 3][i % 3]))
+                .sum();
+            let t_e = largest_face(&geo) * problem.h_c * problem.h_c / problem.lambda;
+            let k = contact_stiffness(&w, e_c, t_e);
+            layer.elements.push(e);
+            layer.weights.push(w);
+            layer.initial.push(j0);
+            layer.scales.push(e_c / (6.0 * t_e));
+            layer.matrices.push(k.iter().flatten().copied().collect());
+        }
+        layer
+    }
+
+    /// The gap J0 + w·u of element i (negative: an overlap).
+    fn gap(&self, i: usize, t: &[usize; 4], u: &[f64]) -> f64 {
+        let w = &self.weights[i];
+        self.initial[i] + (0..12).map(|k| w[k] * u[3 * t[k / 3] + k % 3]).sum::<f64>()
+    }
+}
+
+/// The blocks assembled once, and what every solve adds to.
+struct System {
+    dofs: DofMap,
+    pattern: Pattern,
+    chol: Cholesky,
+    base: Vec<f64>,
+    rhs: Vec<f64>,
+    prescribed: Vec<f64>,
+    loads: Vec<f64>,
+    layer: Layer,
 }
 
 /// Solves the contact problem: the blocks assembled once, then solves with
 /// the active tetrahedra of B added, each switched on while its gap
-/// g = Σ w_k·u_k is negative (an overlap) and off while it opens, from
-/// every one on, until the set repeats (at most 50 solves).
+/// J0 + Σ w_k·u_k is negative (an overlap) and off while it opens, from
+/// those touching at rest on (J0 ≤ 0), until the set repeats (at most 50
+/// solves).
 pub fn solve_contact(problem: &TetContactProblem<'_>) -> Result<TetContact> {
     let t0 = Instant::now();
+    let mut system = assemble(problem)?;
+    let (u, active, iterations) = active_set(&mut system, problem.mesh)?;
+    let mesh = problem.mesh;
+    let mut on = vec![false; mesh.tets.len()];
+    let mut transmitted = [0.0; 3];
+    let upper = upper_nodes(mesh);
+    let layer = &system.layer;
+    // Per upper node: tributary area and normal force.
+    let mut pair = std::collections::BTreeMap::<usize, (f64, f64)>::new();
+    for (i, &e) in layer.elements.iter().enumerate() {
+        on[e] = active[i];
+        let t = &mesh.tets[e];
+        // Its force on its nodes is scale·g·w; on the upper block minus that.
+        let force = if active[i] {
+            layer.scales[i] * layer.gap(i, t, &u)
+        } else {
+            0.0
+        };
+        for r in 0..12 {
+            let w = layer.weights[i][r];
+            if upper[t[r / 3]] {
+                transmitted[r % 3] -= force * w;
+                if r % 3 == 2 && w != 0.0 {
+                    let entry = pair.entry(t[r / 3]).or_insert((0.0, 0.0));
+                    entry.0 += w.abs() / 6.0;
+                    entry.1 -= force * w;
+                }
+            }
+        }
+    }
+    let pressures = (pair.into_iter())
+        .map(|(v, (area, force))| (v, force / area))
+        .collect();
+    Ok(TetContact {
+        u,
+        active: on,
+        loads: system.loads,
+        transmitted,
+        pressures,
+        iterations,
+        unknowns: system.dofs.n_free(),
+        seconds: t0.elapsed().as_secs_f64(),
+    })
+}
+
+/// The pattern of blocks and B, its analysis, the blocks' values and the
+/// loads.
+fn assemble(problem: &TetContactProblem<'_>) -> Result<System> {
     let mesh = problem.mesh;
     let n = mesh.nodes.len();
     let (prescribed, fixed, loads) = boundary(problem)?;
     let dofs = DofMap::new(n, 3, |g| !fixed[g]);
     let pattern = Pattern::build(&dofs, n, &faces(mesh));
-    let mut chol = Cholesky::analyse(&pattern, &AnalyseParams::default())?;
+    let chol = Cholesky::analyse(&pattern, &AnalyseParams::default())?;
     let mut base = vec![0.0; pattern.nnz()];
     let mut rhs = vec![0.0; dofs.n_free()];
     for (f, &g) in dofs.free_to_global().iter().enumerate() {
         rhs[f] = loads[g];
     }
     let size = model_size(mesh);
-    let e_c = problem.materials[0].0.min(problem.materials[1].0);
     let d = [
         isotropic_d(problem.materials[0].0, problem.materials[0].1)?,
         isotropic_d(problem.materials[1].0, problem.materials[1].1)?,
     ];
-    let mut layer = Layer {
-        elements: Vec::new(),
-        weights: Vec::new(),
-        matrices: Vec::new(),
-    };
     for (e, t) in mesh.tets.iter().enumerate() {
-        let geo = TetGeometry::new(&t.map(|v| mesh.nodes[v]));
-        let k = if mesh.parts[e] == LAYER {
-            let w = gap_weights(&geo, [0.0, 0.0, 1.0]);
-            let t_e = largest_face(&geo) * problem.h_c * problem.h_c / problem.lambda;
-            let k = contact_stiffness(&w, e_c, t_e);
-            layer.elements.push(e);
-            layer.weights.push(w);
-            layer.matrices.push(k.iter().flatten().copied().collect());
+        if mesh.parts[e] == LAYER {
             continue;
-        } else {
-            let jmin = Tempering::Auto.jmin_tet(&geo, size);
-            stiffness(&geo, &d[mesh.parts[e]], jmin).map_err(|err| {
-                Error::new(err.status(), format!("tetrahedron {e}: {}", err.message()))
-            })?
-        };
+        }
+        let geo = TetGeometry::new(&t.map(|v| mesh.nodes[v]));
+        let jmin = problem.tempering.jmin_tet(&geo, size);
+        let k = stiffness(&geo, &d[mesh.parts[e]], jmin).map_err(|err| {
+            Error::new(err.status(), format!("tetrahedron {e}: {}", err.message()))
+        })?;
         let unknowns = unknowns_of(&dofs, t);
         let ke: Vec<f64> = k.iter().flatten().copied().collect();
         pattern.add_element(&mut base, &unknowns, &ke);
         lift(&mut rhs, &unknowns, t, &ke, &prescribed);
     }
-    let mut active = vec![true; layer.elements.len()];
-    let mut iterations = 0;
-    let u = loop {
-        iterations += 1;
-        let mut values = base.clone();
-        let mut b = rhs.clone();
+    let e_c = problem.materials[0].0.min(problem.materials[1].0);
+    Ok(System {
+        dofs,
+        pattern,
+        chol,
+        base,
+        rhs,
+        prescribed,
+        loads,
+        layer: Layer::new(problem, e_c),
+    })
+}
+
+/// The primal active-set loop: the displacements, B's final set and the
+/// number of solves.
+fn active_set(system: &mut System, mesh: &TetMesh) -> Result<(Vec<f64>, Vec<bool>, usize)> {
+    let layer = &system.layer;
+    // From the touching elements on (every one on touching surfaces).
+    let mut active: Vec<bool> = layer.initial.iter().map(|&j0| j0 <= 0.0).collect();
+    for iterations in 1..=50 {
+        let mut values = system.base.clone();
+        let mut b = system.rhs.clone();
         for (i, &e) in layer.elements.iter().enumerate() {
             if active[i] {
                 let t = &mesh.tets[e];
-                let unknowns = unknowns_of(&dofs, t);
-                pattern.add_element(&mut values, &unknowns, &layer.matrices[i]);
-                lift(&mut b, &unknowns, t, &layer.matrices[i], &prescribed);
+                let unknowns = unknowns_of(&system.dofs, t);
+                system
+                    .pattern
+                    .add_element(&mut values, &unknowns, &layer.matrices[i]);
+                lift(&mut b, &unknowns, t, &layer.matrices[i], &system.prescribed);
+                // The initial gap's load, −scale·J0·w.
+                for (k, &row) in unknowns.iter().enumerate() {
+                    if row != NOT_FREE {
+                        b[row] -= layer.scales[i] * layer.initial[i] * layer.weights[i][k];
+                    }
+                }
             }
         }
-        factorize(&mut chol, &pattern, &values)?;
-        chol.solve(&mut b)?;
-        let mut u = prescribed.clone();
-        for (f, &g) in dofs.free_to_global().iter().enumerate() {
+        factorize(&mut system.chol, &system.pattern, &values)?;
+        system.chol.solve(&mut b)?;
+        let mut u = system.prescribed.clone();
+        for (f, &g) in system.dofs.free_to_global().iter().enumerate() {
             u[g] = b[f];
         }
-        let next: Vec<bool> = (layer.elements.iter().zip(&layer.weights))
-            .map(|(&e, w)| {
-                let t = &mesh.tets[e];
-                let gap: f64 = (0..12).map(|i| w[i] * u[3 * t[i / 3] + i % 3]).sum();
-                gap < 0.0
-            })
+        let next: Vec<bool> = (layer.elements.iter().enumerate())
+            .map(|(i, &e)| layer.gap(i, &mesh.tets[e], &u) < 0.0)
             .collect();
         if next == active {
-            break u;
-        }
-        if iterations == 50 {
-            return Err(Error::new(
-                Status::NotConverged,
-                "the 3D contact study's active set did not settle in 50 solves",
-            ));
+            return Ok((u, active, iterations));
         }
         active = next;
-    };
-    let mut on = vec![false; mesh.tets.len()];
-    let mut transmitted = [0.0; 3];
-    let upper = upper_nodes(mesh);
-    for (i, &e) in layer.elements.iter().enumerate() {
-        on[e] = active[i];
-        if !active[i] {
-            continue;
-        }
-        let t = &mesh.tets[e];
-        for r in 0..12 {
-            if upper[t[r / 3]] {
-                let k = &layer.matrices[i][12 * r..12 * r + 12];
-                transmitted[r % 3] -= (0..12).map(|c| k[c] * u[3 * t[c / 3] + c % 3]).sum::<f64>();
-            }
-        }
     }
-    Ok(TetContact {
-        u,
-        active: on,
-        loads,
-        transmitted,
-        iterations,
-        unknowns: dofs.n_free(),
-        seconds: t0.elapsed().as_secs_f64(),
-    })
+    Err(Error::new(
+        Status::NotConverged,
+        "the 3D contact study's active set did not settle in 50 solves",
+    ))
 }
 
 /// Whether each node belongs to the upper block.
@@ -362,6 +458,8 @@ pub fn contact_patch_test(
         materials: [(young[0], poisson), (young[1], poisson)],
         h_c,
         lambda: 1.0,
+        plane: 0.0,
+        tempering: Tempering::Auto,
         fixed: &|_, x| {
             [
                 (x[0] == 0.0).then_some(0.0),
@@ -463,146 +561,4 @@ pub fn shortest_interface_edge(mesh: &TetMesh) -> f64 {
         }
     }
     shortest
-}
-
-/// The seed scene in three dimensions (issue 41): Ω1 = [0, L]² × [−H1, 0]
-/// below Ω2 = [0, L]² × [0, H2], a pressure p on the top square
-/// [L/2 − C, L/2 + C]² of Ω2, u_z = 0 on the same square of Ω1's bottom,
-/// frictionless, zero initial gap; solved on the quarter x, y ≤ L/2 with
-/// u_x = 0 on x = L/2 and u_y = 0 on y = L/2. Uniform Kuhn meshes of size
-/// h (which must divide C and the heights).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct TwoBlocks3d {
-    /// Side L.
-    pub l: f64,
-    /// Heights H1 (lower) and H2 (upper).
-    pub heights: [f64; 2],
-    /// Young's moduli E1, E2.
-    pub young: [f64; 2],
-    /// Poisson's ratio (both).
-    pub poisson: f64,
-    /// Pressure p.
-    pub pressure: f64,
-    /// Half-width C of the loaded and supported squares.
-    pub c: f64,
-    /// Mesh size h.
-    pub h: f64,
-}
-
-impl Default for TwoBlocks3d {
-    /// The canonical parameters of the 2D scene.
-    fn default() -> Self {
-        TwoBlocks3d {
-            l: 1.0,
-            heights: [0.25, 0.25],
-            young: [1e10, 1e11],
-            poisson: 0.3,
-            pressure: 1e7,
-            c: 0.1,
-            h: 0.05,
-        }
-    }
-}
-
-/// The outputs of [`TwoBlocks3d`] (of the whole scene, not the quarter).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct TwoBlocks3dResult {
-    /// The area of the interface in contact.
-    pub contact_area: f64,
-    /// u_z of Ω2 minus u_z of Ω1 at the corner (0, 0, 0).
-    pub gap_corner: f64,
-    /// u_z of Ω2 at (L/2, L/2, H2).
-    pub v_top: f64,
-    /// ∫ p·(−u_z) over the loaded square.
-    pub compliance: f64,
-    /// The upward force the contact exerts on Ω2, over p·(2C)²: 1 in
-    /// equilibrium.
-    pub transmitted: f64,
-    /// Unknowns of the quarter model.
-    pub unknowns: usize,
-    /// Active-set solves.
-    pub iterations: usize,
-    /// Seconds of the solve.
-    pub seconds: f64,
-}
-
-impl TwoBlocks3d {
-    /// The quarter model's mesh.
-    pub fn mesh(&self) -> Result<TetMesh> {
-        let steps = |a: f64, b: f64| -> Result<Vec<f64>> {
-            let k = ((b - a) / self.h).round();
-            if !(k >= 1.0 && ((b - a) / self.h - k).abs() < 1e-9 && k < 1e4) {
-                return Err(Error::argument(format!(
-                    "h = {} must divide the length {}",
-                    self.h,
-                    b - a
-                )));
-            }
-            Ok((0..=k as usize)
-                .map(|i| a + (b - a) * i as f64 / k)
-                .collect())
-        };
-        let half = 0.5 * self.l;
-        steps(half - self.c, half)?;
-        let xs = steps(0.0, half)?;
-        Ok(TetMesh::stacked(
-            &xs,
-            &xs,
-            &steps(-self.heights[0], 0.0)?,
-            &steps(0.0, self.heights[1])?,
-            super::tetmesh::Split::ByIndex,
-        ))
-    }
-
-    /// Solves the scene and measures its outputs.
-    pub fn solve(&self) -> Result<TwoBlocks3dResult> {
-        let mesh = self.mesh()?;
-        let half = 0.5 * self.l;
-        let inner = half - self.c - 1e-12 * self.l;
-        let (bottom, top) = (-self.heights[0], self.heights[1]);
-        let p = self.pressure;
-        let r = solve_contact(&TetContactProblem {
-            mesh: &mesh,
-            materials: [(self.young[0], self.poisson), (self.young[1], self.poisson)],
-            h_c: self.h,
-            lambda: self.l,
-            fixed: &|part, x| {
-                let supported = part == LOWER && x[2] == bottom && x[0] >= inner && x[1] >= inner;
-                [
-                    (x[0] == half).then_some(0.0),
-                    (x[1] == half).then_some(0.0),
-                    supported.then_some(0.0),
-                ]
-            },
-            traction: &|part, c, n| {
-                let loaded =
-                    part == UPPER && c[2] == top && n[2] > 0.5 && c[0] >= inner && c[1] >= inner;
-                if loaded { [0.0, 0.0, -p] } else { [0.0; 3] }
-            },
-        })?;
-        let at = |part: usize, x: [f64; 3]| -> Result<f64> {
-            let v = (0..mesh.nodes.len())
-                .find(|&v| mesh.nodes[v] == x && node_part(&mesh, v) == Some(part))
-                .ok_or_else(|| Error::argument(format!("no node of part {part} at {x:?}")))?;
-            Ok(r.u[3 * v + 2])
-        };
-        let corner = [0.0, 0.0, 0.0];
-        Ok(TwoBlocks3dResult {
-            contact_area: 4.0 * r.contact_area(&mesh),
-            gap_corner: at(UPPER, corner)? - at(LOWER, corner)?,
-            v_top: at(UPPER, [half, half, top])?,
-            compliance: 4.0 * r.compliance(),
-            transmitted: 4.0 * r.transmitted[2] / (p * 4.0 * self.c * self.c),
-            unknowns: r.unknowns,
-            iterations: r.iterations,
-            seconds: r.seconds,
-        })
-    }
-}
-
-/// The block a node belongs to (None for a node of no block).
-fn node_part(mesh: &TetMesh, v: usize) -> Option<usize> {
-    (mesh.tets.iter().enumerate())
-        .find(|(e, t)| mesh.parts[*e] != LAYER && t.contains(&v))
-        .map(|(e, _)| mesh.parts[e])
 }

@@ -1,0 +1,310 @@
+//! Contact scenes in three dimensions for the stage-3 study
+//! ([`super::tet_contact`], docs/method.md §9): the seed scene in 3D and a
+//! sphere on a block (Hertz).
+
+use super::tet_contact::{TetContactProblem, solve_contact};
+use super::tetmesh::{LAYER, LOWER, Split, TetMesh, UPPER};
+use crate::error::{Error, Result};
+use crate::fem::element::Tempering;
+
+/// The seed scene in three dimensions (issue 41): Ω1 = [0, L]² × [−H1, 0]
+/// below Ω2 = [0, L]² × [0, H2], a pressure p on the top square
+/// [L/2 − C, L/2 + C]² of Ω2, u_z = 0 on the same square of Ω1's bottom,
+/// frictionless, zero initial gap; solved on the quarter x, y ≤ L/2 with
+/// u_x = 0 on x = L/2 and u_y = 0 on y = L/2. Uniform Kuhn meshes of size
+/// h (which must divide C and the heights).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TwoBlocks3d {
+    /// Side L.
+    pub l: f64,
+    /// Heights H1 (lower) and H2 (upper).
+    pub heights: [f64; 2],
+    /// Young's moduli E1, E2.
+    pub young: [f64; 2],
+    /// Poisson's ratio (both).
+    pub poisson: f64,
+    /// Pressure p.
+    pub pressure: f64,
+    /// Half-width C of the loaded and supported squares.
+    pub c: f64,
+    /// Mesh size h.
+    pub h: f64,
+}
+
+impl Default for TwoBlocks3d {
+    /// The canonical parameters of the 2D scene.
+    fn default() -> Self {
+        TwoBlocks3d {
+            l: 1.0,
+            heights: [0.25, 0.25],
+            young: [1e10, 1e11],
+            poisson: 0.3,
+            pressure: 1e7,
+            c: 0.1,
+            h: 0.05,
+        }
+    }
+}
+
+/// The outputs of [`TwoBlocks3d`] (of the whole scene, not the quarter).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TwoBlocks3dResult {
+    /// The area of the interface in contact.
+    pub contact_area: f64,
+    /// u_z of Ω2 minus u_z of Ω1 at the corner (0, 0, 0).
+    pub gap_corner: f64,
+    /// u_z of Ω2 at (L/2, L/2, H2).
+    pub v_top: f64,
+    /// ∫ p·(−u_z) over the loaded square.
+    pub compliance: f64,
+    /// The upward force the contact exerts on Ω2, over p·(2C)²: 1 in
+    /// equilibrium.
+    pub transmitted: f64,
+    /// Unknowns of the quarter model.
+    pub unknowns: usize,
+    /// Active-set solves.
+    pub iterations: usize,
+    /// Seconds of the solve.
+    pub seconds: f64,
+}
+
+impl TwoBlocks3d {
+    /// The quarter model's mesh.
+    pub fn mesh(&self) -> Result<TetMesh> {
+        let steps = |a: f64, b: f64| -> Result<Vec<f64>> {
+            let k = ((b - a) / self.h).round();
+            if !(k >= 1.0 && ((b - a) / self.h - k).abs() < 1e-9 && k < 1e4) {
+                return Err(Error::argument(format!(
+                    "h = {} must divide the length {}",
+                    self.h,
+                    b - a
+                )));
+            }
+            Ok((0..=k as usize)
+                .map(|i| a + (b - a) * i as f64 / k)
+                .collect())
+        };
+        let half = 0.5 * self.l;
+        steps(half - self.c, half)?;
+        let xs = steps(0.0, half)?;
+        Ok(TetMesh::stacked(
+            &xs,
+            &xs,
+            &steps(-self.heights[0], 0.0)?,
+            &steps(0.0, self.heights[1])?,
+            Split::ByIndex,
+        ))
+    }
+
+    /// Solves the scene and measures its outputs.
+    pub fn solve(&self) -> Result<TwoBlocks3dResult> {
+        let mesh = self.mesh()?;
+        let half = 0.5 * self.l;
+        let inner = half - self.c - 1e-12 * self.l;
+        let (bottom, top) = (-self.heights[0], self.heights[1]);
+        let p = self.pressure;
+        let r = solve_contact(&TetContactProblem {
+            mesh: &mesh,
+            materials: [(self.young[0], self.poisson), (self.young[1], self.poisson)],
+            h_c: self.h,
+            lambda: self.l,
+            plane: 0.0,
+            tempering: Tempering::Auto,
+            fixed: &|part, x| {
+                let supported = part == LOWER && x[2] == bottom && x[0] >= inner && x[1] >= inner;
+                [
+                    (x[0] == half).then_some(0.0),
+                    (x[1] == half).then_some(0.0),
+                    supported.then_some(0.0),
+                ]
+            },
+            traction: &|part, c, n| {
+                let loaded =
+                    part == UPPER && c[2] == top && n[2] > 0.5 && c[0] >= inner && c[1] >= inner;
+                if loaded { [0.0, 0.0, -p] } else { [0.0; 3] }
+            },
+        })?;
+        let at = |part: usize, x: [f64; 3]| -> Result<f64> {
+            let v = (0..mesh.nodes.len())
+                .find(|&v| mesh.nodes[v] == x && node_part(&mesh, v) == Some(part))
+                .ok_or_else(|| Error::argument(format!("no node of part {part} at {x:?}")))?;
+            Ok(r.u[3 * v + 2])
+        };
+        let corner = [0.0, 0.0, 0.0];
+        Ok(TwoBlocks3dResult {
+            contact_area: 4.0 * r.contact_area(&mesh),
+            gap_corner: at(UPPER, corner)? - at(LOWER, corner)?,
+            v_top: at(UPPER, [half, half, top])?,
+            compliance: 4.0 * r.compliance(),
+            transmitted: 4.0 * r.transmitted[2] / (p * 4.0 * self.c * self.c),
+            unknowns: r.unknowns,
+            iterations: r.iterations,
+            seconds: r.seconds,
+        })
+    }
+}
+
+/// The block a node belongs to (None for a node of no block).
+fn node_part(mesh: &TetMesh, v: usize) -> Option<usize> {
+    (mesh.tets.iter().enumerate())
+        .find(|(e, t)| mesh.parts[*e] != LAYER && t.contains(&v))
+        .map(|(e, _)| mesh.parts[e])
+}
+
+/// A sphere on a block (Hertz) in 3D: a body whose underside is the
+/// sphere z = R − √(R² − r²) over the block's top z = 0, its nodes
+/// straight above the block's (B's prisms span the initial gap), pressed
+/// by the load P of contact radius `a` (P = 4E*a³/(3R)) spread over its
+/// flat top; both bodies of side and depth `extent`·a, equal moduli;
+/// solved on the quarter x, y ≥ 0 with its symmetry planes. Meshes graded
+/// from a/`refinement` within 1.5a, growing by 1.3 beyond.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Hertz3d {
+    /// Sphere radius R.
+    pub radius: f64,
+    /// The contact radius a the load is chosen for (Hertz).
+    pub a: f64,
+    /// Side and depth of the bodies over a.
+    pub extent: f64,
+    /// Young's modulus (both) and Poisson's ratio.
+    pub young: f64,
+    /// Poisson's ratio.
+    pub poisson: f64,
+    /// The mesh size near the contact is a / refinement.
+    pub refinement: f64,
+}
+
+impl Default for Hertz3d {
+    fn default() -> Self {
+        Hertz3d {
+            radius: 1.0,
+            a: 0.02,
+            extent: 25.0,
+            young: 1.0,
+            poisson: 0.3,
+            refinement: 4.0,
+        }
+    }
+}
+
+/// The outputs of [`Hertz3d`], relative errors against Hertz.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Hertz3dResult {
+    /// The contact radius from the contact area, √(area/π), over a, − 1.
+    pub a_error: f64,
+    /// p0 fitted to the nodal pressures within 0.8a (measured a), over
+    /// Hertz's 3P/(2πa²), − 1.
+    pub p0_error: f64,
+    /// The force transmitted over P (1 in equilibrium).
+    pub transmitted: f64,
+    /// Unknowns (quarter).
+    pub unknowns: usize,
+    /// Active-set solves.
+    pub iterations: usize,
+    /// Seconds.
+    pub seconds: f64,
+}
+
+impl Hertz3d {
+    /// The load P of Hertz's contact radius a.
+    pub fn load(&self) -> f64 {
+        let e_star = self.young / (2.0 * (1.0 - self.poisson * self.poisson));
+        4.0 * e_star * self.a.powi(3) / (3.0 * self.radius)
+    }
+
+    /// Graded abscissas 0 … extent·a: a/refinement up to 1.5a, then each
+    /// step 1.3 times the last.
+    fn graded(&self) -> Vec<f64> {
+        let (h0, end) = (self.a / self.refinement, self.extent * self.a);
+        let mut x = vec![0.0];
+        let fine = (1.5 * self.refinement).round() as usize;
+        x.extend((1..=fine).map(|i| i as f64 * h0));
+        let mut step = h0;
+        while *x.last().expect("a point") < end {
+            step *= 1.3;
+            let next = x.last().expect("a point") + step;
+            x.push(if end - next < 0.5 * step { end } else { next });
+        }
+        x
+    }
+
+    /// The quarter model's mesh: the block below z = 0, the sphere's body
+    /// above its underside, B between.
+    pub fn mesh(&self) -> TetMesh {
+        let xs = self.graded();
+        let depth: Vec<f64> = xs.iter().rev().map(|z| -z).collect();
+        let mut mesh = TetMesh::stacked(&xs, &xs, &depth, &xs, Split::ByIndex);
+        let top = self.extent * self.a;
+        let r2 = self.radius * self.radius;
+        let mut upper = vec![false; mesh.nodes.len()];
+        for (e, t) in mesh.tets.iter().enumerate() {
+            if mesh.parts[e] == UPPER {
+                t.iter().for_each(|&v| upper[v] = true);
+            }
+        }
+        for (v, p) in mesh.nodes.iter_mut().enumerate() {
+            if upper[v] && p[2] < top {
+                let under = self.radius - (r2 - p[0] * p[0] - p[1] * p[1]).sqrt();
+                p[2] = under + p[2] * (top - under) / top;
+            }
+        }
+        mesh
+    }
+
+    /// Solves and measures.
+    pub fn solve(&self) -> Result<Hertz3dResult> {
+        let mesh = self.mesh();
+        let side = self.extent * self.a;
+        let p = self.load();
+        let q = p / (4.0 * side * side);
+        let r = solve_contact(&TetContactProblem {
+            mesh: &mesh,
+            materials: [(self.young, self.poisson); 2],
+            h_c: self.a / self.refinement,
+            lambda: side,
+            plane: 0.0,
+            tempering: Tempering::Off,
+            fixed: &|_, x| {
+                [
+                    (x[0] == 0.0).then_some(0.0),
+                    (x[1] == 0.0).then_some(0.0),
+                    (x[2] == -side).then_some(0.0),
+                ]
+            },
+            traction: &|part, c, n| {
+                if part == UPPER && c[2] == side && n[2] > 0.5 {
+                    [0.0, 0.0, -q]
+                } else {
+                    [0.0; 3]
+                }
+            },
+        })?;
+        let area = 4.0 * r.contact_area(&mesh);
+        let a = (area / std::f64::consts::PI).sqrt();
+        // p0 by least squares of p_i ≈ p0 √(1 − r_i²/a²) within 0.8a.
+        let (mut num, mut den) = (0.0, 0.0);
+        for &(v, pressure) in &r.pressures {
+            let x = mesh.nodes[v];
+            let rho2 = (x[0] * x[0] + x[1] * x[1]) / (a * a);
+            if rho2 < 0.64 {
+                let shape = (1.0 - rho2).sqrt();
+                num += pressure * shape;
+                den += shape * shape;
+            }
+        }
+        if den == 0.0 {
+            return Err(Error::argument(
+                "no pressed node within 0.8a: refine the mesh",
+            ));
+        }
+        let p0_hertz = 3.0 * p / (2.0 * std::f64::consts::PI * self.a * self.a);
+        Ok(Hertz3dResult {
+            a_error: a / self.a - 1.0,
+            p0_error: num / den / p0_hertz - 1.0,
+            transmitted: 4.0 * r.transmitted[2] / p,
+            unknowns: r.unknowns,
+            iterations: r.iterations,
+            seconds: r.seconds,
+        })
+    }
+}
