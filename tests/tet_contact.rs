@@ -4,9 +4,7 @@
 //! it would invert.
 
 use tfem::Tempering;
-use tfem::studies::tet_contact::{
-    TetContactProblem, contact_patch_test, facing_pairs, solve_contact,
-};
+use tfem::studies::tet_contact::{TetContactProblem, contact_patch_test, solve_contact};
 use tfem::studies::tet_scenes::{Hertz3d, TwoBlocks3d};
 use tfem::studies::tetmesh::{Split, TetMesh};
 
@@ -79,7 +77,7 @@ fn frictionless_blocks_slide_by_their_different_poisson_expansions() {
     })
     .unwrap();
     let mut checked = 0;
-    for (a, b) in facing_pairs(&mesh) {
+    for (a, b) in mesh.facing_pairs() {
         let x = mesh.nodes[a][0];
         let slide = r.u[3 * b] - r.u[3 * a];
         let expected = nu * p * x * (1.0 / 10.0 - 1.0);

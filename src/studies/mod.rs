@@ -19,6 +19,7 @@ pub mod meshgen;
 pub mod oracle;
 pub mod quadrature;
 pub mod scenes;
+pub mod tet_assembly;
 pub mod tet_contact;
 pub mod tet_scenes;
 pub mod tet_study;

@@ -13,12 +13,13 @@
 
 use std::time::Instant;
 
+use super::tet_assembly::{face_triangles, factorize, largest_face, lift, outward, unknowns_of};
 use super::tetmesh::{LAYER, LOWER, TetMesh, UPPER};
 use crate::error::{Error, Result, Status};
 use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
 use crate::fem::element::Tempering;
 use crate::fem::tet::{TetGeometry, contact_stiffness, gap_weights, isotropic_d, stiffness};
-use crate::linalg::{AnalyseParams, Cholesky, FactorError};
+use crate::linalg::{AnalyseParams, Cholesky};
 
 /// A contact problem between the two blocks of a stacked mesh.
 pub struct TetContactProblem<'a> {
@@ -82,12 +83,6 @@ impl TetContact {
     pub fn compliance(&self) -> f64 {
         self.loads.iter().zip(&self.u).map(|(f, u)| f * u).sum()
     }
-}
-
-fn largest_face(geo: &TetGeometry) -> f64 {
-    (geo.a.iter())
-        .map(|a| 0.5 * (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt())
-        .fold(0.0, f64::max)
 }
 
 /// B as the loop sees it: each tetrahedron's index, gap weights, initial
@@ -215,14 +210,14 @@ fn assemble(problem: &TetContactProblem<'_>) -> Result<System> {
     let n = mesh.nodes.len();
     let (prescribed, fixed, loads) = boundary(problem)?;
     let dofs = DofMap::new(n, 3, |g| !fixed[g]);
-    let pattern = Pattern::build(&dofs, n, &faces(mesh));
+    let pattern = Pattern::build(&dofs, n, &face_triangles(mesh));
     let chol = Cholesky::analyse(&pattern, &AnalyseParams::default())?;
     let mut base = vec![0.0; pattern.nnz()];
     let mut rhs = vec![0.0; dofs.n_free()];
     for (f, &g) in dofs.free_to_global().iter().enumerate() {
         rhs[f] = loads[g];
     }
-    let size = model_size(mesh);
+    let size = mesh.size();
     let d = [
         isotropic_d(problem.materials[0].0, problem.materials[0].1)?,
         isotropic_d(problem.materials[1].0, problem.materials[1].1)?,
@@ -279,11 +274,22 @@ fn active_set(system: &mut System, mesh: &TetMesh) -> Result<(Vec<f64>, Vec<bool
                 }
             }
         }
-        factorize(&mut system.chol, &system.pattern, &values)?;
+        factorize(
+            &mut system.chol,
+            &system.pattern,
+            &values,
+            "the 3D contact system",
+        )?;
         system.chol.solve(&mut b)?;
         let mut u = system.prescribed.clone();
         for (f, &g) in system.dofs.free_to_global().iter().enumerate() {
             u[g] = b[f];
+        }
+        if let Some(g) = u.iter().position(|x| !x.is_finite()) {
+            return Err(Error::new(
+                Status::Internal,
+                format!("the 3D contact study's displacement {g} is not finite"),
+            ));
         }
         let next: Vec<bool> = (layer.elements.iter().enumerate())
             .map(|(i, &e)| layer.gap(i, &mesh.tets[e], &u) < 0.0)
@@ -331,26 +337,10 @@ fn boundary(problem: &TetContactProblem<'_>) -> Result<(Vec<f64>, Vec<bool>, Vec
                 }
             }
         }
-        let x = f.map(|v| mesh.nodes[v]);
         let inside = (mesh.tets[e].iter())
             .find(|v| !f.contains(v))
             .expect("a fourth node");
-        let (u, w) = (sub(x[1], x[0]), sub(x[2], x[0]));
-        let mut normal = [
-            u[1] * w[2] - u[2] * w[1],
-            u[2] * w[0] - u[0] * w[2],
-            u[0] * w[1] - u[1] * w[0],
-        ];
-        if (0..3)
-            .map(|i| normal[i] * (x[0][i] - mesh.nodes[*inside][i]))
-            .sum::<f64>()
-            < 0.0
-        {
-            normal = normal.map(|c| -c);
-        }
-        let twice_area = (normal.iter().map(|c| c * c).sum::<f64>()).sqrt();
-        let unit = normal.map(|c| c / twice_area);
-        let centroid: [f64; 3] = std::array::from_fn(|i| (x[0][i] + x[1][i] + x[2][i]) / 3.0);
+        let (unit, area, centroid) = outward(f.map(|v| mesh.nodes[v]), mesh.nodes[*inside]);
         let t = (problem.traction)(part, centroid, unit);
         if t.iter().any(|c| !c.is_finite()) {
             return Err(Error::argument(format!(
@@ -358,71 +348,10 @@ fn boundary(problem: &TetContactProblem<'_>) -> Result<(Vec<f64>, Vec<bool>, Vec
             )));
         }
         for &v in &f {
-            (0..3).for_each(|c| loads[3 * v + c] += t[c] * twice_area / 6.0);
+            (0..3).for_each(|c| loads[3 * v + c] += t[c] * area / 3.0);
         }
     }
     Ok((prescribed, fixed, loads))
-}
-
-fn sub(p: [f64; 3], q: [f64; 3]) -> [f64; 3] {
-    [p[0] - q[0], p[1] - q[1], p[2] - q[2]]
-}
-
-fn faces(mesh: &TetMesh) -> Vec<[usize; 3]> {
-    (mesh.tets.iter())
-        .flat_map(|t| {
-            [
-                [t[0], t[1], t[2]],
-                [t[0], t[1], t[3]],
-                [t[0], t[2], t[3]],
-                [t[1], t[2], t[3]],
-            ]
-        })
-        .collect()
-}
-
-fn unknowns_of(dofs: &DofMap, t: &[usize; 4]) -> [usize; 12] {
-    std::array::from_fn(|i| dofs.free(3 * t[i / 3] + i % 3))
-}
-
-/// Moves the prescribed DOFs' share of an element to the right-hand side.
-fn lift(rhs: &mut [f64], unknowns: &[usize; 12], t: &[usize; 4], ke: &[f64], prescribed: &[f64]) {
-    for (i, &row) in unknowns.iter().enumerate() {
-        if row == NOT_FREE {
-            continue;
-        }
-        for (c, &col) in unknowns.iter().enumerate() {
-            if col == NOT_FREE {
-                rhs[row] -= ke[12 * i + c] * prescribed[3 * t[c / 3] + c % 3];
-            }
-        }
-    }
-}
-
-fn model_size(mesh: &TetMesh) -> f64 {
-    (0..3)
-        .map(|i| {
-            let (lo, hi) = (mesh.nodes.iter())
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
-                    (a.min(p[i]), b.max(p[i]))
-                });
-            hi - lo
-        })
-        .fold(0.0, f64::max)
-}
-
-fn factorize(chol: &mut Cholesky, pattern: &Pattern, values: &[f64]) -> Result<()> {
-    match chol.factorize(pattern, values) {
-        Ok(()) => Ok(()),
-        Err(FactorError::Other(e)) => Err(e),
-        Err(FactorError::Singular { usable: true, .. }) if chol.accept_ill_conditioned() => Ok(()),
-        Err(e) => Err(Error::new(
-            Status::Singular,
-            format!(
-                "the 3D contact system does not factorise (a block held by contact alone lost it?): {e:?}"
-            ),
-        )),
-    }
 }
 
 /// What the 3D contact patch test measures.
@@ -502,7 +431,8 @@ pub fn contact_patch_test(
             stress_error = stress_error.max((s - want).abs() / p);
         }
     }
-    let overlaps: Vec<f64> = facing_pairs(mesh)
+    let overlaps: Vec<f64> = mesh
+        .facing_pairs()
         .into_iter()
         .map(|(a, b)| r.u[3 * a + 2] - r.u[3 * b + 2])
         .collect();
@@ -518,31 +448,6 @@ pub fn contact_patch_test(
     })
 }
 
-/// The interface's node pairs (lower copy, upper copy), matched by
-/// position.
-pub fn facing_pairs(mesh: &TetMesh) -> Vec<(usize, usize)> {
-    let mut side = vec![usize::MAX; mesh.nodes.len()];
-    let mut on_layer = vec![false; mesh.nodes.len()];
-    for (e, t) in mesh.tets.iter().enumerate() {
-        for &v in t {
-            if mesh.parts[e] == LAYER {
-                on_layer[v] = true;
-            } else {
-                side[v] = mesh.parts[e];
-            }
-        }
-    }
-    let key = |v: &usize| (mesh.nodes[*v][0].to_bits(), mesh.nodes[*v][1].to_bits());
-    let pick = |part: usize| {
-        let mut nodes: Vec<usize> = (0..mesh.nodes.len())
-            .filter(|&v| on_layer[v] && side[v] == part)
-            .collect();
-        nodes.sort_by_key(key);
-        nodes
-    };
-    pick(LOWER).into_iter().zip(pick(UPPER)).collect()
-}
-
 /// The shortest edge of the interface's triangles (h_c).
 pub fn shortest_interface_edge(mesh: &TetMesh) -> f64 {
     let mut shortest = f64::INFINITY;
@@ -552,8 +457,8 @@ pub fn shortest_interface_edge(mesh: &TetMesh) -> f64 {
         }
         for i in 0..4 {
             for j in i + 1..4 {
-                let d = sub(mesh.nodes[t[i]], mesh.nodes[t[j]]);
-                let l = (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]).sqrt();
+                let (p, q) = (mesh.nodes[t[i]], mesh.nodes[t[j]]);
+                let l = (0..3).map(|k| (p[k] - q[k]).powi(2)).sum::<f64>().sqrt();
                 if l > 0.0 {
                     shortest = shortest.min(l);
                 }

@@ -369,6 +369,44 @@ impl TetMesh {
         open
     }
 
+    /// The largest side of the bounding box.
+    pub fn size(&self) -> f64 {
+        (0..3)
+            .map(|i| {
+                let (lo, hi) = (self.nodes.iter())
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+                        (a.min(p[i]), b.max(p[i]))
+                    });
+                hi - lo
+            })
+            .fold(0.0, f64::max)
+    }
+
+    /// The node pairs (lower copy, upper copy) that face each other across
+    /// the [`LAYER`] of a stacked mesh, matched by their x and y.
+    pub fn facing_pairs(&self) -> Vec<(usize, usize)> {
+        let mut side = vec![usize::MAX; self.nodes.len()];
+        let mut on_layer = vec![false; self.nodes.len()];
+        for (e, t) in self.tets.iter().enumerate() {
+            for &v in t {
+                if self.parts[e] == LAYER {
+                    on_layer[v] = true;
+                } else {
+                    side[v] = self.parts[e];
+                }
+            }
+        }
+        let key = |v: &usize| (self.nodes[*v][0].to_bits(), self.nodes[*v][1].to_bits());
+        let pick = |part: usize| {
+            let mut nodes: Vec<usize> = (0..self.nodes.len())
+                .filter(|&v| on_layer[v] && side[v] == part)
+                .collect();
+            nodes.sort_by_key(key);
+            nodes
+        };
+        pick(LOWER).into_iter().zip(pick(UPPER)).collect()
+    }
+
     /// The nodes on the boundary: those of faces that belong to one
     /// tetrahedron only.
     pub fn boundary_nodes(&self) -> Vec<usize> {

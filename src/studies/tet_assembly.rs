@@ -1,0 +1,103 @@
+//! What the tetrahedral studies ([`super::tet_study`],
+//! [`super::tet_contact`]) share to assemble and solve: the pattern's
+//! input, element scatter with prescribed values, boundary faces'
+//! geometry, and the factorisation with its failure named.
+
+use super::tetmesh::TetMesh;
+use crate::error::{Error, Result, Status};
+use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
+use crate::fem::tet::TetGeometry;
+use crate::linalg::{Cholesky, FactorError};
+
+/// Every tetrahedron's four faces, as the triangles
+/// [`Pattern::build`] couples the nodes of.
+pub fn face_triangles(mesh: &TetMesh) -> Vec<[usize; 3]> {
+    (mesh.tets.iter())
+        .flat_map(|t| {
+            [
+                [t[0], t[1], t[2]],
+                [t[0], t[1], t[3]],
+                [t[0], t[2], t[3]],
+                [t[1], t[2], t[3]],
+            ]
+        })
+        .collect()
+}
+
+/// The unknowns of a tetrahedron's 12 DOFs ([`NOT_FREE`] where prescribed).
+pub fn unknowns_of(dofs: &DofMap, t: &[usize; 4]) -> [usize; 12] {
+    std::array::from_fn(|i| dofs.free(3 * t[i / 3] + i % 3))
+}
+
+/// Moves the prescribed DOFs' share of an element matrix `ke` (12 × 12,
+/// row-major) to the right-hand side.
+pub fn lift(
+    rhs: &mut [f64],
+    unknowns: &[usize; 12],
+    t: &[usize; 4],
+    ke: &[f64],
+    prescribed: &[f64],
+) {
+    for (i, &row) in unknowns.iter().enumerate() {
+        if row == NOT_FREE {
+            continue;
+        }
+        for (c, &col) in unknowns.iter().enumerate() {
+            if col == NOT_FREE {
+                rhs[row] -= ke[12 * i + c] * prescribed[3 * t[c / 3] + c % 3];
+            }
+        }
+    }
+}
+
+/// A boundary triangle's outward unit normal (away from its
+/// tetrahedron's fourth node `inside`; zero for a degenerate triangle),
+/// area and centroid.
+pub fn outward(face: [[f64; 3]; 3], inside: [f64; 3]) -> ([f64; 3], f64, [f64; 3]) {
+    let (u, v) = (sub(face[1], face[0]), sub(face[2], face[0]));
+    let mut n = [
+        u[1] * v[2] - u[2] * v[1],
+        u[2] * v[0] - u[0] * v[2],
+        u[0] * v[1] - u[1] * v[0],
+    ];
+    if (0..3).map(|i| n[i] * (face[0][i] - inside[i])).sum::<f64>() < 0.0 {
+        n = n.map(|x| -x);
+    }
+    let twice_area = n.iter().map(|c| c * c).sum::<f64>().sqrt();
+    let centroid = std::array::from_fn(|i| (face[0][i] + face[1][i] + face[2][i]) / 3.0);
+    let unit = if twice_area > 0.0 {
+        n.map(|c| c / twice_area)
+    } else {
+        [0.0; 3]
+    };
+    (unit, 0.5 * twice_area, centroid)
+}
+
+/// The area of a tetrahedron's largest face (|a_k|/2 at most).
+pub fn largest_face(geo: &TetGeometry) -> f64 {
+    (geo.a.iter())
+        .map(|a| 0.5 * (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt())
+        .fold(0.0, f64::max)
+}
+
+/// Factorises, a singular matrix an error saying what `system` is.
+pub fn factorize(
+    chol: &mut Cholesky,
+    pattern: &Pattern,
+    values: &[f64],
+    system: &str,
+) -> Result<()> {
+    match chol.factorize(pattern, values) {
+        Ok(()) => Ok(()),
+        Err(FactorError::Other(e)) => Err(e),
+        Err(FactorError::Singular { usable: true, .. }) if chol.accept_ill_conditioned() => Ok(()),
+        Err(e) => Err(Error::new(
+            Status::Singular,
+            format!("{system} does not factorise: {e:?}"),
+        )),
+    }
+}
+
+fn sub(p: [f64; 3], q: [f64; 3]) -> [f64; 3] {
+    [p[0] - q[0], p[1] - q[1], p[2] - q[2]]
+}
