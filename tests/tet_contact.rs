@@ -3,10 +3,10 @@
 //! flat tetrahedra between their matching surfaces, each switched on where
 //! it would invert.
 
-use tfem::Tempering;
 use tfem::studies::tet_contact::{TetContactProblem, contact_patch_test, solve_contact};
 use tfem::studies::tet_scenes::{Hertz3d, TwoBlocks3d};
 use tfem::studies::tetmesh::{Split, TetMesh};
+use tfem::{Ordering, Tempering};
 
 /// The unit square's blocks, lower z ∈ [−1/2, 0], upper z ∈ [0, 1/2], n
 /// boxes per side, the interface jittered by `jitter` of h.
@@ -58,8 +58,8 @@ fn frictionless_blocks_slide_by_their_different_poisson_expansions() {
         materials: [(1.0, nu), (10.0, nu)],
         h_c: 0.25,
         lambda: 1.0,
-        plane: 0.0,
         tempering: Tempering::Auto,
+        ordering: Ordering::Auto,
         fixed: &|_, x| {
             [
                 (x[0] == 0.0).then_some(0.0),
@@ -137,14 +137,14 @@ fn without_a_load_the_sphere_touches_the_block_at_one_point_only() {
         refinement: 2.0,
         ..Default::default()
     };
-    let mesh = h.mesh();
+    let mesh = h.mesh().unwrap();
     let r = solve_contact(&TetContactProblem {
         mesh: &mesh,
         materials: [(1.0, 0.3); 2],
         h_c: h.a / 2.0,
         lambda: 1.0,
-        plane: 0.0,
         tempering: Tempering::Off,
+        ordering: Ordering::Auto,
         fixed: &|_, x| {
             [
                 (x[0] == 0.0).then_some(0.0),
@@ -162,4 +162,22 @@ fn without_a_load_the_sphere_touches_the_block_at_one_point_only() {
         "{:?}",
         r.transmitted
     );
+}
+
+#[test]
+fn a_mesh_without_a_layer_is_refused_not_a_panic() {
+    let e = contact_patch_test(&TetMesh::unit_cube(2, None), [1.0, 1.0], 0.3, 1.0).unwrap_err();
+    assert_eq!(e.status(), tfem::Status::InvalidArgument);
+    assert!(e.message().contains("TetMesh::stacked"), "{}", e.message());
+}
+
+#[test]
+fn a_block_wider_than_the_sphere_is_refused() {
+    let e = Hertz3d {
+        extent: 40.0,
+        ..Default::default()
+    }
+    .solve()
+    .unwrap_err();
+    assert_eq!(e.status(), tfem::Status::InvalidArgument, "{}", e.message());
 }

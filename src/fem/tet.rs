@@ -211,13 +211,13 @@ impl Tempering {
     /// a height of h²/λ over its longest edge, a tetrahedron below about
     /// h²/λ over its largest face), capped as in 2D so that no well-shaped
     /// tetrahedron is softened on coarse meshes. Chosen by the study of
-    /// docs/method.md §9: on a band of caps and slivers where plain FEM
-    /// locks it keeps O(h²) in L2 with errors within 4 % of the band-free
-    /// mesh's, and the band's energy falling at rate 2 as in 2D; a fixed
-    /// shape threshold (Jmin = c h³) also keeps L2 but leaves the band's
-    /// energy at rate 1 and, at c = 0.1, degrades the energy on bands of
-    /// thickness h². [`Tempering::Lambda`] is h⁴/λ, [`Tempering::Fixed`]
-    /// the given value (then a volume scale, length³).
+    /// docs/method.md §9 (its numbers there): on a band of caps and
+    /// slivers where plain FEM locks it keeps O(h²) in L2, a few per cent
+    /// below the band-free mesh's error, with the band's energy falling at
+    /// about rate 2 as in 2D; a fixed shape threshold (Jmin = c h³) either
+    /// loses O(h²) on other bands (c = 0.1) or leaves the bands' energy
+    /// falling at about 0.7 (c = 0.01). [`Tempering::Lambda`] is h⁴/λ,
+    /// [`Tempering::Fixed`] the given value (then a volume scale, length³).
     pub fn jmin_tet(&self, geo: &TetGeometry, model_size: f64) -> f64 {
         let h = geo.h;
         match *self {

@@ -206,6 +206,33 @@ impl Cholesky {
         })
     }
 
+    /// Symbolic analysis of `pattern` with a given fill-reducing
+    /// permutation (`perm[new] = old`), as a caller with its own ordering
+    /// (the 3D studies' nested dissection) needs; one tree, nothing
+    /// numbered last. An invalid permutation is refused.
+    pub fn analyse_ordered(pattern: &Pattern, perm: Vec<usize>) -> Result<Cholesky> {
+        let n = pattern.n();
+        let mut seen = vec![false; n];
+        if perm.len() != n
+            || perm
+                .iter()
+                .any(|&p| p >= n || std::mem::replace(&mut seen[p], true))
+        {
+            return Err(Error::argument(format!(
+                "the ordering is not a permutation of the {n} unknowns"
+            )));
+        }
+        Ok(Cholesky {
+            engine: Engine::Whole(Box::new(Whole::with_permutation(pattern, Some(perm))?)),
+            scale: vec![0.0; n],
+            factored: false,
+            usable: false,
+            min_eigenvalue: f64::NAN,
+            max_eigenvalue_bound: f64::NAN,
+            n_last: 0,
+        })
+    }
+
     /// Whether the factorisation is split into two concurrent subtrees.
     pub fn is_split(&self) -> bool {
         matches!(self.engine, Engine::Split(_))
@@ -486,8 +513,6 @@ impl Whole {
         last: &[usize],
     ) -> Result<Whole> {
         let n = pattern.n();
-        let sym =
-            SymbolicSparseColMatRef::new_checked(n, n, pattern.col_ptr(), None, pattern.row_idx());
         let perm = if last.is_empty() {
             match coords {
                 Some(c) if ordering.use_nested_dissection(n) => {
@@ -498,6 +523,15 @@ impl Whole {
         } else {
             Some(order_with_last(pattern, ordering, coords, last)?)
         };
+        Whole::with_permutation(pattern, perm)
+    }
+
+    /// The symbolic analysis with the permutation `perm` (`perm[new] =
+    /// old`), or AMD without one.
+    fn with_permutation(pattern: &Pattern, perm: Option<Vec<usize>>) -> Result<Whole> {
+        let n = pattern.n();
+        let sym =
+            SymbolicSparseColMatRef::new_checked(n, n, pattern.col_ptr(), None, pattern.row_idx());
         let inv = perm.as_ref().map(|fwd| {
             let mut inv = vec![0usize; n];
             for (new, &old) in fwd.iter().enumerate() {

@@ -1,6 +1,7 @@
 //! Fill-reducing orderings for the sparse Cholesky factorisation.
 //!
-//! faer's AMD works on the graph alone. For 2D finite-element meshes a
+//! faer's AMD works on the graph alone. For finite-element meshes (2D, and
+//! the 3D studies through [`crate::linalg::Cholesky::analyse_ordered`]) a
 //! geometric nested dissection does better on large meshes: split the
 //! unknowns at the median coordinate along the longer extent, take the
 //! unknowns of one half adjacent to the other as the separator, recurse, and
@@ -94,20 +95,27 @@ impl Graph {
 /// coordinates are equal along that axis. `mark` is all zero on entry and
 /// on exit.
 #[allow(clippy::type_complexity)]
-fn bisect(
+fn bisect<const D: usize>(
     graph: &Graph,
-    coords: &[[f64; 2]],
+    coords: &[[f64; D]],
     set: Vec<usize>,
     mark: &mut [bool],
 ) -> std::result::Result<(Vec<usize>, Vec<usize>, Vec<usize>), Vec<usize>> {
-    let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+    let (mut lo, mut hi) = ([f64::INFINITY; D], [f64::NEG_INFINITY; D]);
     for &v in &set {
-        for k in 0..2 {
+        for k in 0..D {
             lo[k] = lo[k].min(coords[v][k]);
             hi[k] = hi[k].max(coords[v][k]);
         }
     }
-    let axis = usize::from(hi[1] - lo[1] > hi[0] - lo[0]);
+    // The longest extent; the first axis among equals (in 2D: y only when
+    // strictly longer than x).
+    let mut axis = 0;
+    for k in 1..D {
+        if hi[k] - lo[k] > hi[axis] - lo[axis] {
+            axis = k;
+        }
+    }
     let mut sorted = set;
     let mid = sorted.len() / 2;
     sorted.select_nth_unstable_by(mid, |&a, &b| coords[a][axis].total_cmp(&coords[b][axis]));
@@ -132,7 +140,12 @@ fn bisect(
 /// Nested-dissection order of the vertices in `set` (a subset of the
 /// graph's vertices with no edge to the rest of the graph other than through
 /// vertices numbered after them).
-fn dissect(graph: &Graph, coords: &[[f64; 2]], set: Vec<usize>, mark: &mut [bool]) -> Vec<usize> {
+fn dissect<const D: usize>(
+    graph: &Graph,
+    coords: &[[f64; D]],
+    set: Vec<usize>,
+    mark: &mut [bool],
+) -> Vec<usize> {
     let mut out = Vec::with_capacity(set.len());
     // Explicit stack: (subset, separator to append after both halves).
     enum Task {
@@ -168,8 +181,12 @@ fn dissect(graph: &Graph, coords: &[[f64; 2]], set: Vec<usize>, mark: &mut [bool
 
 /// Nested-dissection permutation (`perm[new] = old`) of the symmetric graph
 /// given by the upper-triangular CSC pattern (`col_ptr`, `row_idx`), with a
-/// coordinate per vertex.
-pub fn nested_dissection(col_ptr: &[usize], row_idx: &[usize], coords: &[[f64; 2]]) -> Vec<usize> {
+/// point per vertex in D dimensions (planes cut across the longest extent).
+pub fn nested_dissection<const D: usize>(
+    col_ptr: &[usize],
+    row_idx: &[usize],
+    coords: &[[f64; D]],
+) -> Vec<usize> {
     let graph = Graph::from_upper(col_ptr, row_idx);
     let mut mark = vec![false; graph.n()];
     dissect(&graph, coords, (0..graph.n()).collect(), &mut mark)

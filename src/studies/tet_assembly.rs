@@ -7,7 +7,8 @@ use super::tetmesh::TetMesh;
 use crate::error::{Error, Result, Status};
 use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
 use crate::fem::tet::TetGeometry;
-use crate::linalg::{Cholesky, FactorError};
+use crate::linalg::ordering::{Ordering, nested_dissection};
+use crate::linalg::{AnalyseParams, Cholesky, FactorError};
 
 /// Every tetrahedron's four faces, as the triangles
 /// [`Pattern::build`] couples the nodes of.
@@ -78,6 +79,26 @@ pub fn largest_face(geo: &TetGeometry) -> f64 {
     (geo.a.iter())
         .map(|a| 0.5 * (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt())
         .fold(0.0, f64::max)
+}
+
+/// The analysis of `pattern` with `ordering`: geometric nested dissection
+/// on the nodes' positions in 3D ([`Ordering::Auto`]: from
+/// [`Ordering::AUTO_THRESHOLD`] unknowns, as the 2D product chooses it),
+/// or AMD.
+pub fn analyse(
+    pattern: &Pattern,
+    dofs: &DofMap,
+    mesh: &TetMesh,
+    ordering: Ordering,
+) -> Result<Cholesky> {
+    if !ordering.use_nested_dissection(pattern.n()) {
+        return Cholesky::analyse(pattern, &AnalyseParams::default());
+    }
+    let points: Vec<[f64; 3]> = (dofs.free_to_global().iter())
+        .map(|&g| mesh.nodes[g / 3])
+        .collect();
+    let perm = nested_dissection(pattern.col_ptr(), pattern.row_idx(), &points);
+    Cholesky::analyse_ordered(pattern, perm)
 }
 
 /// Factorises, a singular matrix an error saying what `system` is.

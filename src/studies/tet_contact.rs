@@ -13,13 +13,16 @@
 
 use std::time::Instant;
 
-use super::tet_assembly::{face_triangles, factorize, largest_face, lift, outward, unknowns_of};
+use super::tet_assembly::{
+    analyse, face_triangles, factorize, largest_face, lift, outward, unknowns_of,
+};
 use super::tetmesh::{LAYER, LOWER, TetMesh, UPPER};
 use crate::error::{Error, Result, Status};
 use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
 use crate::fem::element::Tempering;
 use crate::fem::tet::{TetGeometry, contact_stiffness, gap_weights, isotropic_d, stiffness};
-use crate::linalg::{AnalyseParams, Cholesky};
+use crate::linalg::Cholesky;
+use crate::linalg::ordering::Ordering;
 
 /// A contact problem between the two blocks of a stacked mesh.
 pub struct TetContactProblem<'a> {
@@ -27,15 +30,14 @@ pub struct TetContactProblem<'a> {
     pub mesh: &'a TetMesh,
     /// Young's modulus and Poisson's ratio of the lower and upper blocks.
     pub materials: [(f64, f64); 2],
-    /// The interface's length h_c (its shortest edge) and λ of the tie.
+    /// The interface's length h_c of the tie (its shortest edge).
     pub h_c: f64,
     /// The length λ of the tie.
     pub lambda: f64,
-    /// The plane z = `plane` B is built on: its nodes' heights above it
-    /// are the initial gap (0 on touching surfaces).
-    pub plane: f64,
     /// The blocks' tempering (the model size as λ).
     pub tempering: Tempering,
+    /// The fill-reducing ordering.
+    pub ordering: Ordering,
     /// The displacement components prescribed at a boundary node of a
     /// block (part, position), `None` where free.
     pub fixed: &'a dyn Fn(usize, [f64; 3]) -> [Option<f64>; 3],
@@ -57,6 +59,9 @@ pub struct TetContact {
     /// The force B exerts on the upper block: minus the active
     /// tetrahedra's internal forces at the upper block's nodes.
     pub transmitted: [f64; 3],
+    /// The area of the interface in contact: each active tetrahedron of B
+    /// stands for a third of its prism's triangle (projected).
+    pub contact_area: f64,
     /// The contact pressure at each upper node of the interface: the
     /// normal force of its pair's tetrahedra over its tributary area (a
     /// third of each prism it belongs to).
@@ -65,20 +70,13 @@ pub struct TetContact {
     pub iterations: usize,
     /// Unknowns.
     pub unknowns: usize,
+    /// Entries of the Cholesky factor.
+    pub factor_nnz: usize,
     /// Seconds of the whole solve.
     pub seconds: f64,
 }
 
 impl TetContact {
-    /// The area of the interface in contact: each active tetrahedron of B
-    /// stands for a third of its prism's triangle.
-    pub fn contact_area(&self, mesh: &TetMesh) -> f64 {
-        (mesh.tets.iter().enumerate())
-            .filter(|&(e, _)| self.active[e])
-            .map(|(_, t)| largest_face(&TetGeometry::new(&t.map(|v| mesh.nodes[v]))) / 3.0)
-            .sum()
-    }
-
     /// The work of the loads, Σ f·u.
     pub fn compliance(&self) -> f64 {
         self.loads.iter().zip(&self.u).map(|(f, u)| f * u).sum()
@@ -89,6 +87,8 @@ impl TetContact {
 /// gap J0 and matrix, and the scale E_c/(6T_e) of its force.
 struct Layer {
     elements: Vec<usize>,
+    /// The projected prism triangle's area of each.
+    areas: Vec<f64>,
     weights: Vec<[f64; 12]>,
     initial: Vec<f64>,
     scales: Vec<f64>,
@@ -96,13 +96,15 @@ struct Layer {
 }
 
 impl Layer {
-    /// B's tetrahedra of `mesh`, measured on their projection onto the
-    /// interface plane (flat, as the method builds B on touching
-    /// surfaces), the nodes' heights above it their initial gap.
+    /// B's tetrahedra of `mesh`, measured on their projection onto a plane
+    /// z = const (flat, as the method builds B on touching surfaces), the
+    /// differences of their nodes' heights their initial gap (J0 does not
+    /// depend on the plane: Σ_k a_k = 0).
     fn new(problem: &TetContactProblem<'_>, e_c: f64) -> Layer {
         let mesh = problem.mesh;
         let mut layer = Layer {
             elements: Vec::new(),
+            areas: Vec::new(),
             weights: Vec::new(),
             initial: Vec::new(),
             scales: Vec::new(),
@@ -114,7 +116,7 @@ impl Layer {
             }
             let flat = t.map(|v| {
                 let [x, y, _] = mesh.nodes[v];
-                [x, y, problem.plane]
+                [x, y, 0.0]
             });
             let geo = TetGeometry::new(&flat);
             let w = gap_weights(&geo, [0.0, 0.0, 1.0]);
@@ -124,6 +126,7 @@ impl Layer {
             let t_e = largest_face(&geo) * problem.h_c * problem.h_c / problem.lambda;
             let k = contact_stiffness(&w, e_c, t_e);
             layer.elements.push(e);
+            layer.areas.push(largest_face(&geo));
             layer.weights.push(w);
             layer.initial.push(j0);
             layer.scales.push(e_c / (6.0 * t_e));
@@ -153,10 +156,13 @@ struct System {
 
 /// Solves the contact problem: the blocks assembled once, then solves with
 /// the active tetrahedra of B added, each switched on while its gap
-/// J0 + Σ w_k·u_k is negative (an overlap) and off while it opens, from
+/// J0 + Σ w_k·u_k is not positive (an overlap, or touching: a body held
+/// only where it touches, unloaded, keeps that hold) and off while it
+/// opens, from
 /// those touching at rest on (J0 ≤ 0), until the set repeats (at most 50
 /// solves).
 pub fn solve_contact(problem: &TetContactProblem<'_>) -> Result<TetContact> {
+    problem.mesh.check_stacked()?;
     let t0 = Instant::now();
     let mut system = assemble(problem)?;
     let (u, active, iterations) = active_set(&mut system, problem.mesh)?;
@@ -188,6 +194,10 @@ pub fn solve_contact(problem: &TetContactProblem<'_>) -> Result<TetContact> {
             }
         }
     }
+    let contact_area = (0..layer.elements.len())
+        .filter(|&i| active[i])
+        .map(|i| layer.areas[i] / 3.0)
+        .sum();
     let pressures = (pair.into_iter())
         .map(|(v, (area, force))| (v, force / area))
         .collect();
@@ -196,9 +206,11 @@ pub fn solve_contact(problem: &TetContactProblem<'_>) -> Result<TetContact> {
         active: on,
         loads: system.loads,
         transmitted,
+        contact_area,
         pressures,
         iterations,
         unknowns: system.dofs.n_free(),
+        factor_nnz: system.chol.factor_nnz(),
         seconds: t0.elapsed().as_secs_f64(),
     })
 }
@@ -211,7 +223,7 @@ fn assemble(problem: &TetContactProblem<'_>) -> Result<System> {
     let (prescribed, fixed, loads) = boundary(problem)?;
     let dofs = DofMap::new(n, 3, |g| !fixed[g]);
     let pattern = Pattern::build(&dofs, n, &face_triangles(mesh));
-    let chol = Cholesky::analyse(&pattern, &AnalyseParams::default())?;
+    let chol = analyse(&pattern, &dofs, mesh, problem.ordering)?;
     let mut base = vec![0.0; pattern.nnz()];
     let mut rhs = vec![0.0; dofs.n_free()];
     for (f, &g) in dofs.free_to_global().iter().enumerate() {
@@ -292,7 +304,7 @@ fn active_set(system: &mut System, mesh: &TetMesh) -> Result<(Vec<f64>, Vec<bool
             ));
         }
         let next: Vec<bool> = (layer.elements.iter().enumerate())
-            .map(|(i, &e)| layer.gap(i, &mesh.tets[e], &u) < 0.0)
+            .map(|(i, &e)| layer.gap(i, &mesh.tets[e], &u) <= 0.0)
             .collect();
         if next == active {
             return Ok((u, active, iterations));
@@ -379,6 +391,7 @@ pub fn contact_patch_test(
     poisson: f64,
     p: f64,
 ) -> Result<ContactPatch> {
+    mesh.check_stacked()?;
     let bottom = (mesh.nodes.iter()).fold(f64::INFINITY, |m, x| m.min(x[2]));
     let top = (mesh.nodes.iter()).fold(f64::NEG_INFINITY, |m, x| m.max(x[2]));
     let h_c = shortest_interface_edge(mesh);
@@ -387,8 +400,8 @@ pub fn contact_patch_test(
         materials: [(young[0], poisson), (young[1], poisson)],
         h_c,
         lambda: 1.0,
-        plane: 0.0,
         tempering: Tempering::Auto,
+        ordering: Ordering::Auto,
         fixed: &|_, x| {
             [
                 (x[0] == 0.0).then_some(0.0),
@@ -411,6 +424,12 @@ pub fn contact_patch_test(
             continue;
         }
         let geo = TetGeometry::new(&t.map(|v| mesh.nodes[v]));
+        if geo.j <= 0.0 {
+            return Err(Error::argument(format!(
+                "block tetrahedron {e} has J = {:e}: the patch test needs valid blocks",
+                geo.j
+            )));
+        }
         let d = isotropic_d(young[part], poisson)?;
         let g: [[f64; 3]; 3] = std::array::from_fn(|i| {
             std::array::from_fn(|j| {

@@ -6,6 +6,7 @@ use super::tet_contact::{TetContactProblem, solve_contact};
 use super::tetmesh::{LAYER, LOWER, Split, TetMesh, UPPER};
 use crate::error::{Error, Result};
 use crate::fem::element::Tempering;
+use crate::linalg::ordering::Ordering;
 
 /// The seed scene in three dimensions (issue 41): Ω1 = [0, L]² × [−H1, 0]
 /// below Ω2 = [0, L]² × [0, H2], a pressure p on the top square
@@ -29,6 +30,8 @@ pub struct TwoBlocks3d {
     pub c: f64,
     /// Mesh size h.
     pub h: f64,
+    /// The fill-reducing ordering.
+    pub ordering: Ordering,
 }
 
 impl Default for TwoBlocks3d {
@@ -42,6 +45,7 @@ impl Default for TwoBlocks3d {
             pressure: 1e7,
             c: 0.1,
             h: 0.05,
+            ordering: Ordering::Auto,
         }
     }
 }
@@ -62,6 +66,8 @@ pub struct TwoBlocks3dResult {
     pub transmitted: f64,
     /// Unknowns of the quarter model.
     pub unknowns: usize,
+    /// Entries of the Cholesky factor.
+    pub factor_nnz: usize,
     /// Active-set solves.
     pub iterations: usize,
     /// Seconds of the solve.
@@ -108,8 +114,8 @@ impl TwoBlocks3d {
             materials: [(self.young[0], self.poisson), (self.young[1], self.poisson)],
             h_c: self.h,
             lambda: self.l,
-            plane: 0.0,
             tempering: Tempering::Auto,
+            ordering: self.ordering,
             fixed: &|part, x| {
                 let supported = part == LOWER && x[2] == bottom && x[0] >= inner && x[1] >= inner;
                 [
@@ -132,12 +138,13 @@ impl TwoBlocks3d {
         };
         let corner = [0.0, 0.0, 0.0];
         Ok(TwoBlocks3dResult {
-            contact_area: 4.0 * r.contact_area(&mesh),
+            contact_area: 4.0 * r.contact_area,
             gap_corner: at(UPPER, corner)? - at(LOWER, corner)?,
             v_top: at(UPPER, [half, half, top])?,
             compliance: 4.0 * r.compliance(),
             transmitted: 4.0 * r.transmitted[2] / (p * 4.0 * self.c * self.c),
             unknowns: r.unknowns,
+            factor_nnz: r.factor_nnz,
             iterations: r.iterations,
             seconds: r.seconds,
         })
@@ -172,6 +179,8 @@ pub struct Hertz3d {
     pub poisson: f64,
     /// The mesh size near the contact is a / refinement.
     pub refinement: f64,
+    /// The fill-reducing ordering.
+    pub ordering: Ordering,
 }
 
 impl Default for Hertz3d {
@@ -183,6 +192,7 @@ impl Default for Hertz3d {
             young: 1.0,
             poisson: 0.3,
             refinement: 4.0,
+            ordering: Ordering::Auto,
         }
     }
 }
@@ -199,6 +209,8 @@ pub struct Hertz3dResult {
     pub transmitted: f64,
     /// Unknowns (quarter).
     pub unknowns: usize,
+    /// Entries of the Cholesky factor.
+    pub factor_nnz: usize,
     /// Active-set solves.
     pub iterations: usize,
     /// Seconds.
@@ -229,8 +241,27 @@ impl Hertz3d {
     }
 
     /// The quarter model's mesh: the block below z = 0, the sphere's body
-    /// above its underside, B between.
-    pub fn mesh(&self) -> TetMesh {
+    /// above its underside, B between. Refuses parameters for which the
+    /// sphere does not cover the block (extent·a·√2 ≥ R) or the graded
+    /// region does not fit (extent < 2, refinement < 1).
+    pub fn mesh(&self) -> Result<TetMesh> {
+        let valid = |x: f64| x.is_finite() && x > 0.0;
+        if !(valid(self.radius)
+            && valid(self.a)
+            && valid(self.young)
+            && self.extent >= 2.0
+            && self.refinement >= 1.0)
+        {
+            return Err(Error::argument(format!(
+                "Hertz3d parameters out of range: {self:?}"
+            )));
+        }
+        if self.extent * self.a * 2f64.sqrt() >= self.radius {
+            return Err(Error::argument(format!(
+                "the block ({} a wide) reaches beyond the sphere (R = {})",
+                self.extent, self.radius
+            )));
+        }
         let xs = self.graded();
         let depth: Vec<f64> = xs.iter().rev().map(|z| -z).collect();
         let mut mesh = TetMesh::stacked(&xs, &xs, &depth, &xs, Split::ByIndex);
@@ -248,12 +279,12 @@ impl Hertz3d {
                 p[2] = under + p[2] * (top - under) / top;
             }
         }
-        mesh
+        Ok(mesh)
     }
 
     /// Solves and measures.
     pub fn solve(&self) -> Result<Hertz3dResult> {
-        let mesh = self.mesh();
+        let mesh = self.mesh()?;
         let side = self.extent * self.a;
         let p = self.load();
         let q = p / (4.0 * side * side);
@@ -262,8 +293,8 @@ impl Hertz3d {
             materials: [(self.young, self.poisson); 2],
             h_c: self.a / self.refinement,
             lambda: side,
-            plane: 0.0,
             tempering: Tempering::Off,
+            ordering: self.ordering,
             fixed: &|_, x| {
                 [
                     (x[0] == 0.0).then_some(0.0),
@@ -279,7 +310,7 @@ impl Hertz3d {
                 }
             },
         })?;
-        let area = 4.0 * r.contact_area(&mesh);
+        let area = 4.0 * r.contact_area;
         let a = (area / std::f64::consts::PI).sqrt();
         // p0 by least squares of p_i ≈ p0 √(1 − r_i²/a²) within 0.8a.
         let (mut num, mut den) = (0.0, 0.0);
@@ -303,6 +334,7 @@ impl Hertz3d {
             p0_error: num / den / p0_hertz - 1.0,
             transmitted: 4.0 * r.transmitted[2] / p,
             unknowns: r.unknowns,
+            factor_nnz: r.factor_nnz,
             iterations: r.iterations,
             seconds: r.seconds,
         })

@@ -10,14 +10,16 @@
 
 use std::time::Instant;
 
-use super::tet_assembly::{face_triangles, factorize, largest_face, lift, outward, unknowns_of};
+use super::tet_assembly::{
+    analyse, face_triangles, factorize, largest_face, lift, outward, unknowns_of,
+};
 use super::tetmesh::{LAYER, LOWER, TetMesh};
 use super::verification::StudyPoint;
 use crate::error::{Error, Result};
 use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
 use crate::fem::element::Tempering;
 use crate::fem::tet::{TetGeometry, isotropic_d, stiffness};
-use crate::linalg::{AnalyseParams, Cholesky};
+use crate::linalg::ordering::Ordering;
 
 /// How a tetrahedron's Jmin is chosen from its longest edge h: the
 /// candidates of the study, and the product's rule.
@@ -300,7 +302,7 @@ pub fn solve(problem: &TetProblem<'_>) -> Result<TetSolution> {
     let dofs = DofMap::new(n, 3, |g| !fixed[g / 3]);
     let pattern = Pattern::build(&dofs, n, &face_triangles(mesh));
     let t0 = Instant::now();
-    let mut chol = Cholesky::analyse(&pattern, &AnalyseParams::default())?;
+    let mut chol = analyse(&pattern, &dofs, mesh, Ordering::Auto)?;
     let mut values = vec![0.0; pattern.nnz()];
     let mut rhs = vec![0.0; dofs.n_free()];
     for (f, &g) in dofs.free_to_global().iter().enumerate() {
@@ -386,6 +388,7 @@ pub fn tied_patch_test(
     poisson: f64,
     tie: TetTempering,
 ) -> Result<TiedPatch> {
+    mesh.check_stacked()?;
     let nu = poisson;
     let side = nu / (1.0 - nu);
     let voigt = [side, side, 1.0, -0.2, 0.3, 0.0];
@@ -423,9 +426,15 @@ pub fn tied_patch_test(
     let mut stress_error = 0.0f64;
     for (e, t) in mesh.tets.iter().enumerate() {
         let part = mesh.parts.get(e).copied().unwrap_or(LOWER);
-        let geo = TetGeometry::new(&t.map(|v| mesh.nodes[v]));
-        if part == LAYER || geo.j <= 0.0 {
+        if part == LAYER {
             continue;
+        }
+        let geo = TetGeometry::new(&t.map(|v| mesh.nodes[v]));
+        if geo.j <= 0.0 {
+            return Err(Error::argument(format!(
+                "block tetrahedron {e} has J = {:e}: the patch test needs valid blocks",
+                geo.j
+            )));
         }
         let g: [[f64; 3]; 3] = std::array::from_fn(|i| {
             std::array::from_fn(|j| {

@@ -369,6 +369,24 @@ impl TetMesh {
         open
     }
 
+    /// Checks that the mesh is a stacked one ([`TetMesh::stacked`]): a part
+    /// for every tetrahedron, a [`LAYER`] and facing nodes across it.
+    pub fn check_stacked(&self) -> crate::error::Result<()> {
+        if self.parts.len() != self.tets.len() {
+            return Err(crate::error::Error::argument(format!(
+                "the mesh has {} tetrahedra but {} parts: build it with TetMesh::stacked",
+                self.tets.len(),
+                self.parts.len()
+            )));
+        }
+        if !self.parts.contains(&LAYER) || self.facing_pairs().is_empty() {
+            return Err(crate::error::Error::argument(
+                "the mesh has no layer between facing blocks: build it with TetMesh::stacked",
+            ));
+        }
+        Ok(())
+    }
+
     /// The largest side of the bounding box.
     pub fn size(&self) -> f64 {
         (0..3)

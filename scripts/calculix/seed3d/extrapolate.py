@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Richardson-type extrapolation q = q_inf + K h^s through the three finest
-runs of results.jsonl (per element type), for each output; prints a table
+runs of results.jsonl (per element, contact type and penalty; runs flagged
+"converged": false left out), for each output; prints a table
 and one JSON line per element. Only meaningful when the three values are
 monotone in h (else "not monotone" and no fit).
 
@@ -36,10 +37,12 @@ def main():
     path = sys.argv[1] if len(sys.argv) > 1 else os.path.join(
         os.path.dirname(os.path.abspath(__file__)), "results.jsonl")
     runs = [json.loads(l) for l in open(path) if l.strip()]
-    for el in sorted({r["element"] for r in runs}):
+    runs = [r for r in runs if r.get("converged") is not False]  # ccx's false convergences
+    for series in sorted({(r["element"], r["contact"], r["penalty"]) for r in runs}):
+        el = f"{series[0]} {series[1]} K={series[2]:g}"
         rs = {}
-        for r in runs:  # the last run per h (and the default penalty) wins
-            if r["element"] == el and r["penalty"] == 1e16:
+        for r in runs:  # the last run per h wins
+            if (r["element"], r["contact"], r["penalty"]) == series:
                 rs[round(1 / r["h"])] = r
         fine = sorted(rs.values(), key=lambda r: -r["h"])[-3:]
         if len(fine) < 3:

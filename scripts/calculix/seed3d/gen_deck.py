@@ -26,6 +26,11 @@ def main():
     ap.add_argument("--h", type=float, required=True)
     ap.add_argument("--element", choices=["C3D8", "C3D8I"], default="C3D8")
     ap.add_argument("--penalty", type=float, default=1e16, help="K [Pa/m]")
+    ap.add_argument("--contact", choices=["s2s", "n2s"], default="s2s",
+                    help="SURFACE TO SURFACE or NODE TO SURFACE (then sigma_inf = 1 Pa)")
+    ap.add_argument("--delcon", type=float, default=None,
+                    help="*CONTROLS, PARAMETERS=CONTACT first value: the relative change in "
+                         "the number of contact elements ccx accepts as converged (its default 1e-3)")
     ap.add_argument("--out", required=True, help="job path without .inp")
     a = ap.parse_args()
     L, H1, H2, C, p = 1.0, 0.25, 0.25, 0.1, 1e7
@@ -99,11 +104,14 @@ def main():
         f.write("*SURFACE, NAME=SUPPER, TYPE=ELEMENT\n")
         f.writelines(f"{e}, S{s}\n" for e, s in master)
         f.write("*SURFACE INTERACTION, NAME=SI\n")
-        f.write(f"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n{a.penalty!r}\n")
-        f.write("*CONTACT PAIR, INTERACTION=SI, TYPE=SURFACE TO SURFACE, SMALL SLIDING\n"
-                "SLOWER, SUPPER\n")
+        tension = ", 1.0" if a.contact == "n2s" else ""  # sigma_inf: see docs/calculix.md
+        f.write(f"*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR\n{a.penalty!r}{tension}\n")
+        ctype = "SURFACE TO SURFACE" if a.contact == "s2s" else "NODE TO SURFACE"
+        f.write(f"*CONTACT PAIR, INTERACTION=SI, TYPE={ctype}\nSLOWER, SUPPER\n")
         f.write("*BOUNDARY\nNSYMX, 1, 1, 0.0\nNSYMY, 2, 2, 0.0\nNSUP, 3, 3, 0.0\n")
         f.write("*STEP, INC=1000\n*STATIC, SOLVER=SPOOLES\n1.0, 1.0\n")
+        if a.delcon is not None:
+            f.write(f"*CONTROLS, PARAMETERS=CONTACT\n{a.delcon!r}\n")
         f.write("*DLOAD\n")
         f.writelines(f"{e}, P{s}, {p!r}\n" for e, s in loaded)
         f.write("*NODE PRINT, NSET=NOUT\nU\n")
@@ -112,7 +120,8 @@ def main():
         f.write("*END STEP\n")
 
     meta = {
-        "h": a.h, "element": a.element, "penalty": a.penalty, "p": p, "nx": nx,
+        "h": a.h, "element": a.element, "penalty": a.penalty, "contact": a.contact,
+        "delcon": a.delcon, "p": p, "nx": nx,
         "nodes": len(coords), "elements": len(elems),
         "dofs": 3 * len(coords), "dofs_free": 3 * len(coords) - len(sym_x) - len(sym_y) - len(support),
         "loaded_faces": loaded_faces, "face_area": (half / nx) ** 2,

@@ -69,6 +69,7 @@ def main():
     rz = dat_blocks(a.job + ".dat", "total force (fx,fy,fz) for set NSUP")[-1][0][2]
     res = {
         "h": m["h"], "element": m["element"], "penalty": m["penalty"],
+        "contact": m["contact"], "delcon": m["delcon"],
         "nodes": m["nodes"], "elements": m["elements"], "dofs_free": m["dofs_free"],
         "gap_corner": u[m["corner_upper"]][2] - u[m["corner_lower"]][2],
         "v_top": u[m["top_center"]][2],
@@ -76,7 +77,8 @@ def main():
         "transmitted": 4 * rz / (p * 0.2 ** 2),
     }
     c = frd_contact(a.job + ".frd")
-    press = [[c[n][3] for n in row] for row in m["if_lower"]]  # press[j][i]
+    c0 = [0.0] * 6  # node-to-face lists only the slave nodes near the master
+    press = [[c.get(n, c0)[3] for n in row] for row in m["if_lower"]]  # press[j][i]
     w = [0.5 if k in (0, nx) else 1.0 for k in range(nx + 1)]
     res["contact_area"] = 4 * h2 * sum(w[i] * w[j] for j in range(nx + 1)
                                        for i in range(nx + 1) if press[j][i] > 0)
@@ -86,7 +88,7 @@ def main():
     res["contact_area_faces_any"] = 4 * h2 * sum(1 for f in faces if max(f) > 0)
     res["active_slave_nodes"] = sum(1 for row in press for q in row if q > 0)
     res["p_max"] = max(max(row) for row in press)
-    res["max_penetration"] = max(0.0, max(-c[n][0] for row in m["if_lower"] for n in row))
+    res["max_penetration"] = max(0.0, max(-c.get(n, c0)[0] for row in m["if_lower"] for n in row))
     res["penetration_nodes"] = max(
         u[lo][2] - u[up][2] for rl, ru in zip(m["if_lower"], m["if_upper"]) for lo, up in zip(rl, ru))
     res["max_penetration_over_v_top"] = res["max_penetration"] / abs(res["v_top"])
@@ -97,6 +99,10 @@ def main():
     cvg = [l.split() for l in open(a.job + ".cvg") if l.split() and l.split()[0].isdigit()]
     res["contact_elements_final"] = int(cvg[-1][4])
     res["final_correction_pct"] = float(cvg[-1][6])  # last Newton correction, % of the increment
+    # ccx accepts a face-to-face state once the number of contact elements changes by less
+    # than DELCON (1e-3 relative) with a zero residual, whatever the correction: check it here
+    # (node-to-face has a nonzero residual and converges on it: not checked)
+    res["converged"] = res["final_correction_pct"] < 1e-3 if m["contact"] == "s2s" else None
     if a.log:
         text = open(a.log).read()
         res["finished"] = "Job finished" in text
