@@ -74,7 +74,29 @@ pub fn outward(face: [[f64; 3]; 3], inside: [f64; 3]) -> ([f64; 3], f64, [f64; 3
     (unit, 0.5 * twice_area, centroid)
 }
 
-/// The area of a tetrahedron's largest face (|a_k|/2 at most).
+/// ∇u of the linear field with nodal values `u` (three per node, global)
+/// on tetrahedron `t` (J ≠ 0): row i is ∇u_i = Σ_k u_k,i a_k / J.
+pub fn gradient(geo: &TetGeometry, t: &[usize; 4], u: &[f64]) -> [[f64; 3]; 3] {
+    std::array::from_fn(|i| {
+        std::array::from_fn(|j| (0..4).map(|k| u[3 * t[k] + i] * geo.a[k][j]).sum::<f64>() / geo.j)
+    })
+}
+
+/// The strain of a displacement gradient, Voigt with engineering shears
+/// (ε_xx, ε_yy, ε_zz, γ_yz, γ_xz, γ_xy), as [`crate::fem::tet`] orders it.
+pub fn voigt_strain(g: &[[f64; 3]; 3]) -> [f64; 6] {
+    [
+        g[0][0],
+        g[1][1],
+        g[2][2],
+        g[1][2] + g[2][1],
+        g[0][2] + g[2][0],
+        g[0][1] + g[1][0],
+    ]
+}
+
+/// The area of a tetrahedron's largest face: the largest |a_k|/2 (a_k is
+/// twice the opposite face's area along its normal).
 pub fn largest_face(geo: &TetGeometry) -> f64 {
     (geo.a.iter())
         .map(|a| 0.5 * (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt())

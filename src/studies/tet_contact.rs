@@ -14,7 +14,8 @@
 use std::time::Instant;
 
 use super::tet_assembly::{
-    analyse, face_triangles, factorize, largest_face, lift, outward, unknowns_of,
+    analyse, face_triangles, factorize, gradient, largest_face, lift, outward, unknowns_of,
+    voigt_strain,
 };
 use super::tetmesh::{LAYER, LOWER, TetMesh, UPPER};
 use crate::error::{Error, Result, Status};
@@ -431,19 +432,7 @@ pub fn contact_patch_test(
             )));
         }
         let d = isotropic_d(young[part], poisson)?;
-        let g: [[f64; 3]; 3] = std::array::from_fn(|i| {
-            std::array::from_fn(|j| {
-                (0..4).map(|k| r.u[3 * t[k] + i] * geo.a[k][j]).sum::<f64>() / geo.j
-            })
-        });
-        let strain = [
-            g[0][0],
-            g[1][1],
-            g[2][2],
-            g[1][2] + g[2][1],
-            g[0][2] + g[2][0],
-            g[0][1] + g[1][0],
-        ];
+        let strain = voigt_strain(&gradient(&geo, t, &r.u));
         let target = [0.0, 0.0, -p, 0.0, 0.0, 0.0];
         for (row, &want) in target.iter().enumerate() {
             let s: f64 = (0..6).map(|c| d[row][c] * strain[c]).sum();

@@ -11,7 +11,8 @@
 use std::time::Instant;
 
 use super::tet_assembly::{
-    analyse, face_triangles, factorize, largest_face, lift, outward, unknowns_of,
+    analyse, face_triangles, factorize, gradient, largest_face, lift, outward, unknowns_of,
+    voigt_strain,
 };
 use super::tetmesh::{LAYER, LOWER, TetMesh};
 use super::verification::StudyPoint;
@@ -436,19 +437,7 @@ pub fn tied_patch_test(
                 geo.j
             )));
         }
-        let g: [[f64; 3]; 3] = std::array::from_fn(|i| {
-            std::array::from_fn(|j| {
-                (0..4).map(|k| u[3 * t[k] + i] * geo.a[k][j]).sum::<f64>() / geo.j
-            })
-        });
-        let strain = [
-            g[0][0],
-            g[1][1],
-            g[2][2],
-            g[1][2] + g[2][1],
-            g[0][2] + g[2][0],
-            g[0][1] + g[1][0],
-        ];
+        let strain = voigt_strain(&gradient(&geo, t, u));
         for (r, &target) in voigt.iter().enumerate() {
             let sr: f64 = (0..6).map(|c| d[part][r][c] * strain[c]).sum();
             stress_error = stress_error.max((sr - target).abs());
@@ -502,9 +491,7 @@ fn errors(
         let volume = geo.j / 6.0;
         let nodal: [[f64; 3]; 4] = t.map(|v| [u[3 * v], u[3 * v + 1], u[3 * v + 2]]);
         // ∇u_h = Σ u_k ⊗ a_k / J.
-        let grad_h: [[f64; 3]; 3] = std::array::from_fn(|i| {
-            std::array::from_fn(|j| (0..4).map(|k| nodal[k][i] * geo.a[k][j]).sum::<f64>() / geo.j)
-        });
+        let grad_h = gradient(&geo, t, u);
         let mut element_energy = 0.0;
         for &(b, w) in rule {
             let p = at(&x, b);
@@ -517,14 +504,7 @@ fn errors(
             let g = exact.gradient(p);
             let e: [[f64; 3]; 3] =
                 std::array::from_fn(|i| std::array::from_fn(|j| g[i][j] - grad_h[i][j]));
-            let strain = [
-                e[0][0],
-                e[1][1],
-                e[2][2],
-                e[1][2] + e[2][1],
-                e[0][2] + e[2][0],
-                e[0][1] + e[1][0],
-            ];
+            let strain = voigt_strain(&e);
             let mut s = 0.0;
             for r in 0..6 {
                 for c in 0..6 {

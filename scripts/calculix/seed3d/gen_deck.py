@@ -6,9 +6,13 @@ Lower block [0, 1/2]^2 x [-H1, 0] (E1), upper block [0, 1/2]^2 x [0, H2]
 the two blocks meshed separately with coincident, unmerged interface nodes.
 Symmetry u_x = 0 on x = 1/2 and u_y = 0 on y = 1/2 (both blocks); pressure
 p on the upper block's top over x, y in [1/2 - C, 1/2]; u_z = 0 on the
-lower block's bottom nodes there. Frictionless face-to-face penalty
-contact (TYPE=SURFACE TO SURFACE, SMALL SLIDING), LINEAR pressure-
-overclosure with slope K [Pa/m], slave = the lower (softer) block's top.
+lower block's bottom nodes there. Frictionless penalty contact, LINEAR
+pressure-overclosure with slope K [Pa/m], slave = the lower (softer)
+block's top faces, master = the upper block's bottom faces:
+  --contact n2s (default): NODE TO SURFACE, K = 1e15, sigma_inf = 1 Pa;
+  --contact s2s: SURFACE TO SURFACE (ccx 2.20 refuses SMALL SLIDING with
+    it), use --penalty 1e16; it chatters and may stop unconverged (parse.py
+    flags it).
 
 Writes JOB.inp and JOB.meta.json (what parse.py reads).
 
@@ -25,8 +29,8 @@ def main():
                                  formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--h", type=float, required=True)
     ap.add_argument("--element", choices=["C3D8", "C3D8I"], default="C3D8")
-    ap.add_argument("--penalty", type=float, default=1e16, help="K [Pa/m]")
-    ap.add_argument("--contact", choices=["s2s", "n2s"], default="s2s",
+    ap.add_argument("--penalty", type=float, default=1e15, help="K [Pa/m]")
+    ap.add_argument("--contact", choices=["s2s", "n2s"], default="n2s",
                     help="SURFACE TO SURFACE or NODE TO SURFACE (then sigma_inf = 1 Pa)")
     ap.add_argument("--delcon", type=float, default=None,
                     help="*CONTROLS, PARAMETERS=CONTACT first value: the relative change in "

@@ -10,8 +10,9 @@ WHOLE scene (the quarter's integrals x 4):
                bilinear face: exact integral of p (-u_z))
   contact_area 4 x the tributary area (h^2, h^2/2 on a grid edge, h^2/4 at
                a corner) of the slave interface nodes with CPRESS > 0
-               [JOB.frd, *CONTACT FILE: face-to-face writes CPRESS/COPEN
-               at the slave nodes, extrapolated from its integration points]
+               [JOB.frd, *CONTACT FILE: CPRESS/COPEN at the slave nodes;
+               node-to-face: the nodes' own springs, face-to-face:
+               extrapolated from its integration points]
   contact_area_faces_all / _any  4 x the area of the slave faces with
                CPRESS > 0 at all 4 / at least 1 of their nodes (bounds)
   max_penetration  max of -COPEN over the slave nodes; penetration_nodes:

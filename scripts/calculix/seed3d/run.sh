@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # CalculiX (ccx 2.20) on tfem's seed scene in 3D (quarter model, hexahedra,
-# frictionless face-to-face penalty contact): writes the deck, runs ccx on one
+# frictionless penalty contact): writes the deck, runs ccx on one
 # thread (timed alone), parses, prints one JSON line; --append adds it to
 # scripts/calculix/seed3d/results.jsonl.
 #
 #   bash scripts/calculix/seed3d/run.sh --h 0.025
-#   bash scripts/calculix/seed3d/run.sh --h 0.0125 --append --element C3D8I
+#   bash scripts/calculix/seed3d/run.sh --h 0.0125 --append
+#   bash scripts/calculix/seed3d/run.sh --h 0.05 --contact s2s --penalty 1e16
 #
 # Options: --h H (required), --workdir DIR [/tmp/seed3d], --keep, --append;
-# anything else goes to gen_deck.py (--element C3D8|C3D8I, --penalty K).
+# anything else goes to gen_deck.py (--element C3D8|C3D8I,
+# --contact n2s|s2s, --penalty K, --delcon D). extrapolate.py fits the finest three.
 set -euo pipefail
 
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)"
