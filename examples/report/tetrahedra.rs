@@ -263,6 +263,11 @@ fn tied(report: &mut String, levels: &[usize]) {
             }
         }
     }
+    tied_convergence(report, levels);
+}
+
+/// The manufactured field across a tied interface against one body.
+fn tied_convergence(report: &mut String, levels: &[usize]) {
     writeln!(
         report,
         "\nThe manufactured field across the tied interface (split shuffled, tie as above) against one \

@@ -281,25 +281,7 @@ pub fn solve(problem: &TetProblem<'_>) -> Result<TetSolution> {
             }
         }
     }
-    let mut fixed = vec![false; n];
-    let mut force = vec![0.0; 3 * n];
-    for (e, f) in mesh.boundary_faces() {
-        if (problem.supported)(part(e)) {
-            f.iter().for_each(|&v| fixed[v] = true);
-        } else {
-            let inside = (mesh.tets[e].iter())
-                .find(|v| !f.contains(v))
-                .expect("a fourth node");
-            let (unit, area, _) = outward(f.map(|v| mesh.nodes[v]), mesh.nodes[*inside]);
-            let stress = &problem.free_stress;
-            for &v in &f {
-                for i in 0..3 {
-                    let t: f64 = (0..3).map(|j| stress[i][j] * unit[j]).sum();
-                    force[3 * v + i] += t * area / 3.0;
-                }
-            }
-        }
-    }
+    let (fixed, force) = boundary(problem);
     let dofs = DofMap::new(n, 3, |g| !fixed[g / 3]);
     let pattern = Pattern::build(&dofs, n, &face_triangles(mesh));
     let t0 = Instant::now();
@@ -371,6 +353,34 @@ pub struct TiedPatch {
     /// The largest deviation of a pair's jump from that average, over its
     /// length.
     pub jump_spread: f64,
+}
+
+/// Which nodes are prescribed (those of the supported parts' boundary
+/// faces) and the consistent forces of `free_stress` on the other parts'
+/// boundary faces.
+fn boundary(problem: &TetProblem<'_>) -> (Vec<bool>, Vec<f64>) {
+    let mesh = problem.mesh;
+    let n = mesh.nodes.len();
+    let mut fixed = vec![false; n];
+    let mut force = vec![0.0; 3 * n];
+    for (e, f) in mesh.boundary_faces() {
+        if (problem.supported)(mesh.parts.get(e).copied().unwrap_or(0)) {
+            f.iter().for_each(|&v| fixed[v] = true);
+            continue;
+        }
+        let inside = (mesh.tets[e].iter())
+            .find(|v| !f.contains(v))
+            .expect("a fourth node");
+        let (unit, area, _) = outward(f.map(|v| mesh.nodes[v]), mesh.nodes[*inside]);
+        let stress = &problem.free_stress;
+        for &v in &f {
+            for i in 0..3 {
+                let t: f64 = (0..3).map(|j| stress[i][j] * unit[j]).sum();
+                force[3 * v + i] += t * area / 3.0;
+            }
+        }
+    }
+    (fixed, force)
 }
 
 /// The tied patch test of docs/method.md §9, stage 2, on
