@@ -191,10 +191,22 @@ pub fn gap_weights(geo: &TetGeometry, n: [f64; 3]) -> [f64; 12] {
 /// The frictionless contact stiffness of a tetrahedron of B:
 /// K = (E_c / (6T)) w wᵀ, the energy ½ E_c ε_nn² of its (tempered)
 /// volume: only the normal opening is resisted, tangential sliding is
-/// free. `t` is the tetrahedron's T_e (> 0).
-pub fn contact_stiffness(w: &[f64; 12], e_c: f64, t: f64) -> [[f64; 12]; 12] {
+/// free. `t` is the tetrahedron's T_e; E_c and T_e must be finite and
+/// positive, and the matrix finite (an error naming the bad value).
+pub fn contact_stiffness(w: &[f64; 12], e_c: f64, t: f64) -> Result<[[f64; 12]; 12]> {
+    if !(e_c.is_finite() && e_c > 0.0 && t.is_finite() && t > 0.0) {
+        return Err(Error::argument(format!(
+            "a contact tetrahedron needs E_c > 0 and T_e > 0, finite: E_c = {e_c:?}, T_e = {t:?}"
+        )));
+    }
     let scale = e_c / (6.0 * t);
-    std::array::from_fn(|i| std::array::from_fn(|j| scale * w[i] * w[j]))
+    let k: [[f64; 12]; 12] = std::array::from_fn(|i| std::array::from_fn(|j| scale * w[i] * w[j]));
+    if k.iter().flatten().any(|x| !x.is_finite()) {
+        return Err(Error::argument(format!(
+            "a contact tetrahedron's stiffness overflows (E_c = {e_c:e}, T_e = {t:e})"
+        )));
+    }
+    Ok(k)
 }
 
 /// The shape quality J/h³ from which [`Tempering::Auto`] leaves a
@@ -408,7 +420,7 @@ mod tests {
         // Twice the facing area (1/2) times the normal opening.
         assert!((opening([0.0, 0.0, 0.3]).abs() - 0.3).abs() < 1e-15);
         assert_eq!(opening([0.7, -0.2, 0.0]), 0.0, "sliding is not an opening");
-        let k = contact_stiffness(&w, 2.0, 0.5);
+        let k = contact_stiffness(&w, 2.0, 0.5).unwrap();
         let u: Vec<f64> = (0..12)
             .map(|i| if i >= 3 && i % 3 == 0 { 1.0 } else { 0.0 })
             .collect();
@@ -416,5 +428,20 @@ mod tests {
             .map(|i| (0..12).map(|j| u[i] * k[i][j] * u[j]).sum::<f64>())
             .sum();
         assert_eq!(energy, 0.0, "a tangential slide of the top costs nothing");
+        for (e_c, t) in [
+            (0.0, 1.0),
+            (1.0, 0.0),
+            (f64::NAN, 1.0),
+            (1.0, f64::INFINITY),
+        ] {
+            assert!(
+                contact_stiffness(&w, e_c, t).is_err(),
+                "E_c = {e_c}, T = {t}"
+            );
+        }
+        assert!(
+            contact_stiffness(&w, 1e300, 1e-300).is_err(),
+            "an overflow is refused"
+        );
     }
 }

@@ -101,7 +101,7 @@ impl Layer {
     /// z = const (flat, as the method builds B on touching surfaces), the
     /// differences of their nodes' heights their initial gap (J0 does not
     /// depend on the plane: Σ_k a_k = 0).
-    fn new(problem: &TetContactProblem<'_>, e_c: f64) -> Layer {
+    fn new(problem: &TetContactProblem<'_>, e_c: f64) -> Result<Layer> {
         let mesh = problem.mesh;
         let mut layer = Layer {
             elements: Vec::new(),
@@ -125,7 +125,7 @@ impl Layer {
                 .map(|i| w[i] * (mesh.nodes[t[i / 3]][i % 3] - flat[i / 3][i % 3]))
                 .sum();
             let t_e = largest_face(&geo) * problem.h_c * problem.h_c / problem.lambda;
-            let k = contact_stiffness(&w, e_c, t_e);
+            let k = contact_stiffness(&w, e_c, t_e)?;
             layer.elements.push(e);
             layer.areas.push(largest_face(&geo));
             layer.weights.push(w);
@@ -133,7 +133,7 @@ impl Layer {
             layer.scales.push(e_c / (6.0 * t_e));
             layer.matrices.push(k.iter().flatten().copied().collect());
         }
-        layer
+        Ok(layer)
     }
 
     /// The gap J0 + w·u of element i (negative: an overlap).
@@ -258,7 +258,7 @@ fn assemble(problem: &TetContactProblem<'_>) -> Result<System> {
         rhs,
         prescribed,
         loads,
-        layer: Layer::new(problem, e_c),
+        layer: Layer::new(problem, e_c)?,
     })
 }
 
