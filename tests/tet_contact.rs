@@ -8,23 +8,13 @@ use tfem::studies::tet_scenes::{Hertz3d, TwoBlocks3d};
 use tfem::studies::tetmesh::{Split, TetMesh};
 use tfem::{Ordering, Tempering};
 
-/// The unit square's blocks, lower z ∈ [−1/2, 0], upper z ∈ [0, 1/2], n
-/// boxes per side, the interface jittered by `jitter` of h.
-fn blocks(n: usize, split: Split, jitter: f64) -> TetMesh {
-    let h = 1.0 / n as f64;
-    let xs: Vec<f64> = (0..=n).map(|i| i as f64 * h).collect();
-    let lower: Vec<f64> = (0..=n / 2).map(|i| -0.5 + i as f64 * h).collect();
-    let upper: Vec<f64> = (0..=n / 2).map(|i| i as f64 * h).collect();
-    let mut mesh = TetMesh::stacked(&xs, &xs, &lower, &upper, split);
-    mesh.jitter_interface(0.0, h, jitter, 17);
-    mesh
-}
-
 #[test]
 fn the_3d_contact_patch_test_is_exact_for_any_split() {
     for split in [Split::ByIndex, Split::Shuffled(1), Split::Shuffled(2)] {
         for n in [2, 4, 6] {
-            let r = contact_patch_test(&blocks(n, split, 0.0), [1.0, 10.0], 0.3, 1.0).unwrap();
+            let r =
+                contact_patch_test(&TetMesh::patch_blocks(n, split, 0.0), [1.0, 10.0], 0.3, 1.0)
+                    .unwrap();
             assert!(r.all_active, "{split:?}, n = {n}: {r:?}");
             assert!(r.stress_error < 1e-12, "{split:?}, n = {n}: {r:?}");
             assert!(r.overlap_spread < 1e-10, "{split:?}, n = {n}: {r:?}");
@@ -36,7 +26,7 @@ fn the_3d_contact_patch_test_is_exact_for_any_split() {
 fn the_3d_contact_patch_test_is_exact_on_a_jittered_interface() {
     for seed in [1, 2] {
         let r = contact_patch_test(
-            &blocks(4, Split::Shuffled(seed), 0.2),
+            &TetMesh::patch_blocks(4, Split::Shuffled(seed), 0.2),
             [1.0, 10.0],
             0.3,
             1.0,
@@ -51,7 +41,7 @@ fn frictionless_blocks_slide_by_their_different_poisson_expansions() {
     // Under the pressure p the lower block (E = 1) widens by ν p x, the
     // upper (E = 10) by ν p x / 10: the facing nodes at x = 1 part by the
     // difference, which a tied layer would not allow.
-    let mesh = blocks(4, Split::Shuffled(4), 0.0);
+    let mesh = TetMesh::patch_blocks(4, Split::Shuffled(4), 0.0);
     let (nu, p) = (0.3, 1.0);
     let r = solve_contact(&TetContactProblem {
         mesh: &mesh,

@@ -335,12 +335,7 @@ fn contact(report: &mut String, a: &Args) {
             (Split::Shuffled(1), "shuffled"),
         ] {
             for jitter in [0.0, 0.2] {
-                let h = 1.0 / n as f64;
-                let xs: Vec<f64> = (0..=n).map(|i| i as f64 * h).collect();
-                let lower: Vec<f64> = (0..=n / 2).map(|i| -0.5 + i as f64 * h).collect();
-                let upper: Vec<f64> = (0..=n / 2).map(|i| i as f64 * h).collect();
-                let mut mesh = TetMesh::stacked(&xs, &xs, &lower, &upper, split);
-                mesh.jitter_interface(0.0, h, jitter, 17);
+                let mesh = TetMesh::patch_blocks(n, split, jitter);
                 let kind = if jitter > 0.0 {
                     "jittered 0.2 h"
                 } else {

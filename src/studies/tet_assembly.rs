@@ -3,7 +3,7 @@
 //! input, element scatter with prescribed values, boundary faces'
 //! geometry, and the factorisation with its failure named.
 
-use super::tetmesh::TetMesh;
+use super::tetmesh::{LAYER, LOWER, TetMesh};
 use crate::error::{Error, Result, Status};
 use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
 use crate::fem::tet::TetGeometry;
@@ -93,6 +93,38 @@ pub fn voigt_strain(g: &[[f64; 3]; 3]) -> [f64; 6] {
         g[0][2] + g[2][0],
         g[0][1] + g[1][0],
     ]
+}
+
+/// The largest error of a block tetrahedron's stress D_part ε(u) against
+/// the uniform `target` (Voigt), over `scale`; the layer skipped, a block
+/// tetrahedron with J ≤ 0 refused (a patch test needs valid blocks).
+pub fn block_stress_error(
+    mesh: &TetMesh,
+    u: &[f64],
+    d: &[[[f64; 6]; 6]],
+    target: &[f64; 6],
+    scale: f64,
+) -> Result<f64> {
+    let mut worst = 0.0f64;
+    for (e, t) in mesh.tets.iter().enumerate() {
+        let part = mesh.parts.get(e).copied().unwrap_or(LOWER);
+        if part == LAYER {
+            continue;
+        }
+        let geo = TetGeometry::new(&t.map(|v| mesh.nodes[v]));
+        if geo.j <= 0.0 {
+            return Err(Error::argument(format!(
+                "block tetrahedron {e} has J = {:e}: the patch test needs valid blocks",
+                geo.j
+            )));
+        }
+        let strain = voigt_strain(&gradient(&geo, t, u));
+        for (row, &want) in target.iter().enumerate() {
+            let s: f64 = (0..6).map(|c| d[part][row][c] * strain[c]).sum();
+            worst = worst.max((s - want).abs() / scale);
+        }
+    }
+    Ok(worst)
 }
 
 /// The area of a tetrahedron's largest face: the largest |a_k|/2 (a_k is

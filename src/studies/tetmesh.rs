@@ -255,6 +255,19 @@ impl TetMesh {
         TetMesh::stacked(&grid, &grid, &grid[..=n / 2], &grid[n / 2..], split)
     }
 
+    /// The unit square's blocks of the 3D contact patch test, lower
+    /// z ∈ [−1/2, 0] and upper z ∈ [0, 1/2] with n boxes per side (n even),
+    /// the interface's nodes jittered by `jitter` of h.
+    pub fn patch_blocks(n: usize, split: Split, jitter: f64) -> TetMesh {
+        let h = 1.0 / n as f64;
+        let xs: Vec<f64> = (0..=n).map(|i| i as f64 * h).collect();
+        let lower: Vec<f64> = (0..=n / 2).map(|i| -0.5 + i as f64 * h).collect();
+        let upper: Vec<f64> = (0..=n / 2).map(|i| i as f64 * h).collect();
+        let mut mesh = TetMesh::stacked(&xs, &xs, &lower, &upper, split);
+        mesh.jitter_interface(0.0, h, jitter, 17);
+        mesh
+    }
+
     /// Two Kuhn blocks xs × ys × `lower` and xs × ys × `upper` (the last
     /// of `lower` is the first of `upper`: the interface plane), each with
     /// its own nodes on the interface, joined by the layer of zero-volume
