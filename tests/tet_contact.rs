@@ -1,10 +1,13 @@
-//! Stage 3 of three dimensions, as a study (docs/method.md §9): two blocks
-//! of tempered tetrahedra in frictionless contact through B, the layer of
-//! flat tetrahedra between their matching surfaces, each switched on where
-//! it would invert.
+//! Stage 3 of three dimensions (docs/method.md §9): two blocks of tempered
+//! tetrahedra in frictionless contact through B, the layer of flat
+//! tetrahedra between their matching surfaces, each switched on where it
+//! would invert — solved by the product's active-set loop, held to the
+//! study's independent prototype.
 
-use tfem::studies::tet_contact::{TetContactProblem, contact_patch_test, solve_contact};
-use tfem::studies::tet_scenes::{Hertz3d, TwoBlocks3d};
+use tfem::studies::tet_contact::{
+    ContactLoop, TetContactProblem, contact_patch_test, solve_contact,
+};
+use tfem::studies::tet_scenes::{Hertz3d, Punch3d, TwoBlocks3d};
 use tfem::studies::tetmesh::{Split, TetMesh};
 use tfem::{Ordering, Tempering};
 
@@ -50,6 +53,7 @@ fn frictionless_blocks_slide_by_their_different_poisson_expansions() {
         lambda: 1.0,
         tempering: Tempering::Auto,
         ordering: Ordering::Auto,
+        contact_loop: ContactLoop::Product,
         fixed: &|_, x| {
             [
                 (x[0] == 0.0).then_some(0.0),
@@ -135,6 +139,7 @@ fn without_a_load_the_sphere_touches_the_block_at_one_point_only() {
         lambda: 1.0,
         tempering: Tempering::Off,
         ordering: Ordering::Auto,
+        contact_loop: ContactLoop::Product,
         fixed: &|_, x| {
             [
                 (x[0] == 0.0).then_some(0.0),
@@ -170,4 +175,125 @@ fn a_block_wider_than_the_sphere_is_refused() {
     .solve()
     .unwrap_err();
     assert_eq!(e.status(), tfem::Status::InvalidArgument, "{}", e.message());
+}
+
+/// The contact patch test's blocks (E = 1 below, 10 above) pressed by a
+/// unit pressure on the top, held as `fixed` says.
+fn patch_problem<'a>(
+    mesh: &'a TetMesh,
+    contact_loop: ContactLoop,
+    fixed: &'a dyn Fn(usize, [f64; 3]) -> [Option<f64>; 3],
+) -> TetContactProblem<'a> {
+    TetContactProblem {
+        mesh,
+        materials: [(1.0, 0.3), (10.0, 0.3)],
+        h_c: 0.25,
+        lambda: 1.0,
+        tempering: Tempering::Auto,
+        ordering: Ordering::Auto,
+        contact_loop,
+        fixed,
+        traction: &|_, c, n| {
+            if c[2] == 0.5 && n[2] > 0.5 {
+                [0.0, 0.0, -1.0]
+            } else {
+                [0.0; 3]
+            }
+        },
+    }
+}
+
+/// Rollers at x = 0, y = 0 and the bottom, for both blocks.
+fn rollers(_: usize, x: [f64; 3]) -> [Option<f64>; 3] {
+    [
+        (x[0] == 0.0).then_some(0.0),
+        (x[1] == 0.0).then_some(0.0),
+        (x[2] == -0.5).then_some(0.0),
+    ]
+}
+
+#[test]
+fn the_product_loop_condenses_the_3d_interface_into_one_factorisation() {
+    let mesh = TetMesh::patch_blocks(4, Split::Shuffled(3), 0.2);
+    let study = solve_contact(&patch_problem(&mesh, ContactLoop::Study, &rollers)).unwrap();
+    let product = solve_contact(&patch_problem(&mesh, ContactLoop::Product, &rollers)).unwrap();
+    assert!(product.interface_unknowns > 0, "{product:?}");
+    assert_eq!(product.factorizations, 1);
+    assert_eq!(product.active, study.active);
+    let scale = study.u.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let worst = (study.u.iter().zip(&product.u)).fold(0.0f64, |m, (a, b)| m.max((a - b).abs()));
+    assert!(worst < 1e-12 * scale, "{worst:e} of {scale:e}");
+}
+
+#[test]
+fn the_product_loop_settles_the_3d_seed_scene_as_the_study_prototype_does() {
+    let solve = |contact_loop| {
+        TwoBlocks3d {
+            contact_loop,
+            ..Default::default()
+        }
+        .solve()
+        .unwrap()
+    };
+    let (study, product) = (solve(ContactLoop::Study), solve(ContactLoop::Product));
+    assert_eq!(product.iterations, study.iterations);
+    assert_eq!(product.contact_area, study.contact_area);
+    for (p, s) in [
+        (product.gap_corner, study.gap_corner),
+        (product.v_top, study.v_top),
+        (product.compliance, study.compliance),
+    ] {
+        assert!((p - s).abs() < 1e-10 * s.abs(), "{p:e} against {s:e}");
+    }
+}
+
+#[test]
+fn a_free_block_in_3d_is_named_with_its_free_motion() {
+    // The upper block is not held in x, and B is frictionless: it slides.
+    let mesh = TetMesh::patch_blocks(2, Split::ByIndex, 0.0);
+    let upper_free_in_x = |part: usize, x: [f64; 3]| {
+        let mut f = rollers(part, x);
+        if part == 1 {
+            f[0] = None;
+        }
+        f
+    };
+    let e = solve_contact(&patch_problem(
+        &mesh,
+        ContactLoop::Product,
+        &upper_free_in_x,
+    ))
+    .unwrap_err();
+    assert_eq!(e.status(), tfem::Status::Singular, "{e}");
+    assert!(
+        e.message().contains("body 1 is not restrained")
+            && e.message().contains("translation in x"),
+        "{e}"
+    );
+}
+
+#[test]
+fn a_rigid_flat_punch_converges_to_boussinesq_from_the_stiff_side() {
+    // P = 2aE*δ on a half-space; the block here is 50a, which adds about
+    // 1.4 % (measured: 25a → 7.9 %, 50a → 6.4 %, 100a → 5.8 %, 200a → 5.4 %
+    // at a/16, falling as 1/extent).
+    let errors: Vec<f64> = [4.0, 8.0, 16.0]
+        .into_iter()
+        .map(|refinement| {
+            let r = Punch3d {
+                refinement,
+                extent: 50.0,
+                ..Default::default()
+            }
+            .solve()
+            .unwrap();
+            assert_eq!(r.factorizations, 1, "every element of B stays on: {r:?}");
+            r.load_error
+        })
+        .collect();
+    assert!(errors.iter().all(|&e| e > 0.0), "{errors:?}");
+    for w in errors.windows(2) {
+        assert!(w[1] < 0.75 * w[0], "{errors:?}");
+    }
+    assert!(errors[2] < 0.08, "{errors:?}");
 }

@@ -1,7 +1,8 @@
 //! The constraints the active-set loop switches in one solve: the strip
-//! pairs' elements of B ([`ContactSet`], docs/method.md §3) and the mortar
-//! pairs' weighted gaps ([`MortarSet`], §6.11), numbered as one list of
-//! parts (the strip's first, then the weighted gaps).
+//! pairs' elements of B ([`ContactSet`], docs/method.md §3), the mortar
+//! pairs' weighted gaps ([`MortarSet`], §6.11) and, in three dimensions,
+//! B's flat tetrahedra ([`GapTets`], §9), numbered as one list of parts
+//! (the strip's first, then the weighted gaps, then the tetrahedra).
 //!
 //! Each part is a clique of unknowns with, while it is on, a symmetric
 //! matrix and a load; the contact law gives a verdict on a solution (which
@@ -11,6 +12,7 @@
 //! the shape of a part (a triangle of B, a slave node's gap) stays here.
 
 use super::discretisation::Discretisation;
+use super::gap_tets::GapTets;
 use super::mesh::Nodes;
 use super::mortar_set::{self, MortarSet, MortarState, PenaltyData};
 use super::set::{ContactSet, FrictionOutcome, Verdict, element_laws, softer};
@@ -25,6 +27,7 @@ use crate::fem::mesh::Mesh;
 pub struct Constraints<'a> {
     strip: ContactSet<'a>,
     mortar: MortarSet,
+    gap: GapTets,
     /// Prescribed displacements, a global vector: the values of a part's
     /// DOFs that have no unknown.
     prescribed: &'a [f64],
@@ -44,6 +47,13 @@ pub struct Build<'a> {
     pub prescribed: &'a [f64],
     /// The solve's options.
     pub options: &'a ContactOptions,
+}
+
+/// Which variant part `k` of the constraints is, and its index there.
+enum Part {
+    Strip(usize),
+    Mortar(usize),
+    Gap(usize),
 }
 
 /// The state a solve's constraints settled in, for its outputs.
@@ -79,8 +89,28 @@ impl<'a> Constraints<'a> {
         Constraints {
             strip,
             mortar,
+            gap: GapTets::default(),
             prescribed,
         }
+    }
+
+    /// The constraints of B's tetrahedra `gap` alone (three dimensions),
+    /// for the prescribed displacements `prescribed` (a global vector, three
+    /// per node) they were built with. Frictionless: no strip, no weighted
+    /// gap.
+    pub fn of_gap(gap: GapTets, prescribed: &'a [f64], options: &ContactOptions) -> Result<Self> {
+        let none = Nodes {
+            x: &[],
+            base: 0,
+            ids: None,
+        };
+        let strip = ContactSet::new(none, &[], Vec::new(), |_| None, &[], options)?;
+        Ok(Constraints {
+            strip,
+            mortar: MortarSet::default(),
+            gap,
+            prescribed,
+        })
     }
 
     /// The strip pairs' elements of B in this solve.
@@ -94,59 +124,81 @@ impl<'a> Constraints<'a> {
     }
 
     /// Number of parts: the strip's ([`ContactSet::parts`]: two per
-    /// element when frictional) and one per weighted gap.
+    /// element when frictional), one per weighted gap and one per
+    /// tetrahedron of B.
     pub fn parts(&self) -> usize {
-        self.strip.parts() + self.mortar.len()
+        self.strip.parts() + self.mortar.len() + self.gap.len()
     }
 
-    /// The part of the mortar set that part `k` is, if it is one.
-    fn mortar_part(&self, k: usize) -> Option<usize> {
-        k.checked_sub(self.strip.parts())
+    /// Which variant part `k` is.
+    fn part(&self, k: usize) -> Part {
+        let ns = self.strip.parts();
+        match k.checked_sub(ns) {
+            None => Part::Strip(k),
+            Some(m) if m < self.mortar.len() => Part::Mortar(m),
+            Some(m) => Part::Gap(m - self.mortar.len()),
+        }
     }
 
     /// The unknown of each DOF of part `k` (`None`: prescribed).
     pub fn unknowns(&self, k: usize) -> &[Option<usize>] {
-        match self.mortar_part(k) {
-            Some(m) => self.mortar.unknowns(m),
-            None => self.strip.unknowns(k),
+        match self.part(k) {
+            Part::Strip(k) => self.strip.unknowns(k),
+            Part::Mortar(m) => self.mortar.unknowns(m),
+            Part::Gap(g) => self.gap.unknowns(g),
         }
     }
 
     /// Part `k`'s matrix while on, row-major over its DOFs.
     pub fn matrix(&self, k: usize) -> &[f64] {
-        match self.mortar_part(k) {
-            Some(m) => self.mortar.matrix(m),
-            None => &self.strip.stiffness(k).k,
+        match self.part(k) {
+            Part::Strip(k) => &self.strip.stiffness(k).k,
+            Part::Mortar(m) => self.mortar.matrix(m),
+            Part::Gap(g) => self.gap.matrix(g),
         }
     }
 
     /// Part `k`'s load on its unknowns while on (zero on prescribed DOFs):
     /// its initial gap's load less the prescribed displacements' share.
     pub fn load(&self, k: usize) -> &[f64] {
-        match self.mortar_part(k) {
-            Some(m) => self.mortar.load(m),
-            None => self.strip.load(k),
+        match self.part(k) {
+            Part::Strip(k) => self.strip.load(k),
+            Part::Mortar(m) => self.mortar.load(m),
+            Part::Gap(g) => self.gap.load(g),
         }
     }
 
     /// The part of part `k`'s load of its initial gap alone (what does not
     /// scale with a load step's factor), on every DOF.
     pub fn gap_load(&self, k: usize) -> &[f64] {
-        match self.mortar_part(k) {
-            Some(m) => self.mortar.gap_load(m),
-            None => &self.strip.stiffness(k).f0,
+        match self.part(k) {
+            Part::Strip(k) => &self.strip.stiffness(k).f0,
+            Part::Mortar(m) => self.mortar.gap_load(m),
+            Part::Gap(g) => self.gap.gap_load(g),
         }
     }
 
-    /// The global DOF (2·node + component) of each DOF of part `k`.
+    /// The global DOF (dimension·node + component) of each DOF of part
+    /// `k`.
     fn global_dofs(&self, k: usize) -> Vec<usize> {
-        match self.mortar_part(k) {
-            Some(m) => self.mortar.dofs(m).to_vec(),
-            None => {
+        match self.part(k) {
+            Part::Strip(k) => {
                 let nodes = &self.strip.elements()[self.strip.element_of(k)].nodes;
                 (0..6).map(|a| 2 * nodes[a / 2] + a % 2).collect()
             }
+            Part::Mortar(m) => self.mortar.dofs(m).to_vec(),
+            Part::Gap(g) => self.gap.dofs(g).to_vec(),
         }
+    }
+
+    /// The values of the DOFs of B's tetrahedron `g`: `value(i)` of
+    /// unknown i, the prescribed value where a DOF has no unknown.
+    fn gap_values(&self, g: usize, value: impl Fn(usize) -> f64) -> [f64; 12] {
+        let (dofs, unknowns) = (self.gap.dofs(g), self.gap.unknowns(g));
+        std::array::from_fn(|a| match unknowns[a] {
+            Some(i) => value(i),
+            None => self.prescribed[dofs[a]],
+        })
     }
 
     /// The values of the DOFs of element `k` of the strip: `value(i)` of
@@ -176,6 +228,7 @@ impl<'a> Constraints<'a> {
     pub fn initial_active(&self) -> Vec<bool> {
         let mut active = self.strip.initial_active();
         active.extend(self.mortar.initial_active());
+        active.extend(self.gap.initial_active());
         active
     }
 
@@ -183,9 +236,12 @@ impl<'a> Constraints<'a> {
     /// (or in the strip's inversion test). Sorted.
     pub fn interface_unknowns(&self) -> Vec<usize> {
         let mut set = self.strip.interface_unknowns();
-        if !self.mortar.is_empty() {
+        if !self.mortar.is_empty() || !self.gap.is_empty() {
             for m in 0..self.mortar.len() {
                 set.extend(self.mortar.unknowns(m).iter().flatten());
+            }
+            for g in 0..self.gap.len() {
+                set.extend(self.gap.unknowns(g).iter().flatten());
             }
             set.sort_unstable();
             set.dedup();
@@ -197,10 +253,11 @@ impl<'a> Constraints<'a> {
     /// solve: zero in the bodies' part `body` and in every part's matrix.
     /// Sorted.
     pub fn structural_zeros(&self, pattern: &Pattern, body: &[f64]) -> Vec<usize> {
-        if self.mortar.is_empty() {
+        if self.mortar.is_empty() && self.gap.is_empty() {
             return self.strip.structural_zeros(pattern, body);
         }
-        // The weighted gaps couple every DOF of their nodes.
+        // The weighted gaps and B's tetrahedra couple every DOF of their
+        // nodes.
         Vec::new()
     }
 
@@ -217,9 +274,12 @@ impl<'a> Constraints<'a> {
         let mut verdict = self
             .strip
             .verdict(&current[..ns], c, |k| self.element_values(k, &value))?;
+        let nm = ns + self.mortar.len();
         verdict
             .flags
-            .extend(self.mortar.verdict(&current[ns..], &value));
+            .extend(self.mortar.verdict(&current[ns..nm], &value));
+        let gap = self.gap.verdict(|g| self.gap_values(g, &value));
+        verdict.flags.extend(gap);
         Ok(verdict)
     }
 

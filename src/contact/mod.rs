@@ -22,6 +22,7 @@
 pub mod conformity;
 pub(crate) mod constraints;
 pub(crate) mod discretisation;
+pub mod gap_tets;
 pub mod host;
 pub mod law;
 pub mod mesh;

@@ -11,6 +11,7 @@
 pub mod assembly;
 pub mod body;
 pub mod curve;
+pub mod domain;
 pub mod element;
 pub mod element_loop;
 pub mod loads;

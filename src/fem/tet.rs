@@ -81,6 +81,15 @@ impl TetGeometry {
             h,
         }
     }
+
+    /// The area of the largest face: the largest |a_k|/2 (a_k is twice the
+    /// opposite face's area along its normal). For a flat tetrahedron of B,
+    /// the facing area its T_e is measured on.
+    pub fn largest_face(&self) -> f64 {
+        (self.a.iter())
+            .map(|a| 0.5 * dot(*a, *a).sqrt())
+            .fold(0.0, f64::max)
+    }
 }
 
 /// The isotropic elasticity matrix D (6 × 6, Voigt with engineering

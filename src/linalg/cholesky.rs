@@ -73,7 +73,7 @@ pub struct AnalyseParams<'a> {
     /// The fill-reducing ordering.
     pub ordering: Ordering,
     /// One point per unknown, for nested dissection (`None`: AMD only).
-    pub coords: Option<&'a [[f64; 2]]>,
+    pub coords: Option<Points<'a>>,
     /// Unknowns numbered last, in this order (their Schur complement is
     /// then the trailing block of the factor).
     pub last: &'a [usize],
@@ -82,6 +82,34 @@ pub struct AnalyseParams<'a> {
     pub zeros: &'a [usize],
     /// Factorise the two subtrees of a nested dissection concurrently.
     pub parallel_subtrees: bool,
+}
+
+/// One point per unknown, in the plane or in space: where geometric
+/// nested dissection cuts.
+#[derive(Debug, Clone, Copy)]
+pub enum Points<'a> {
+    /// Triangles' unknowns.
+    Plane(&'a [[f64; 2]]),
+    /// Tetrahedra's unknowns.
+    Space(&'a [[f64; 3]]),
+}
+
+impl Points<'_> {
+    /// Nested dissection of the graph (`col_ptr`, `row_idx`: an upper
+    /// triangle) whose vertex k is the point `subset[k]` (all, in order,
+    /// when `subset` is `None`).
+    fn dissect(self, col_ptr: &[usize], row_idx: &[usize], subset: Option<&[usize]>) -> Vec<usize> {
+        fn pick<const D: usize>(p: &[[f64; D]], subset: Option<&[usize]>) -> Vec<[f64; D]> {
+            match subset {
+                Some(s) => s.iter().map(|&i| p[i]).collect(),
+                None => p.to_vec(),
+            }
+        }
+        match self {
+            Points::Plane(p) => nested_dissection(col_ptr, row_idx, &pick(p, subset)),
+            Points::Space(p) => nested_dissection(col_ptr, row_idx, &pick(p, subset)),
+        }
+    }
 }
 
 impl Default for AnalyseParams<'_> {
@@ -174,7 +202,8 @@ impl Cholesky {
             )));
         }
         let split = match coords {
-            Some(c)
+            // The split cuts the plane only.
+            Some(Points::Plane(c))
                 if parallel_subtrees
                     && n >= SPLIT_MIN
                     && ordering.use_nested_dissection(n - last.len())
@@ -509,14 +538,14 @@ impl Whole {
     fn analyse(
         pattern: &Pattern,
         ordering: Ordering,
-        coords: Option<&[[f64; 2]]>,
+        coords: Option<Points<'_>>,
         last: &[usize],
     ) -> Result<Whole> {
         let n = pattern.n();
         let perm = if last.is_empty() {
             match coords {
                 Some(c) if ordering.use_nested_dissection(n) => {
-                    Some(nested_dissection(pattern.col_ptr(), pattern.row_idx(), c))
+                    Some(c.dissect(pattern.col_ptr(), pattern.row_idx(), None))
                 }
                 _ => None,
             }
@@ -778,16 +807,13 @@ fn restricted(
 fn order_with_last(
     pattern: &Pattern,
     ordering: Ordering,
-    coords: Option<&[[f64; 2]]>,
+    coords: Option<Points<'_>>,
     last: &[usize],
 ) -> Result<Vec<usize>> {
     let (rest, col_ptr, row_idx) = restricted(pattern, last, &[])?;
     let m = rest.len();
     let order = match coords {
-        Some(c) if ordering.use_nested_dissection(m) => {
-            let c: Vec<[f64; 2]> = rest.iter().map(|&i| c[i]).collect();
-            nested_dissection(&col_ptr, &row_idx, &c)
-        }
+        Some(c) if ordering.use_nested_dissection(m) => c.dissect(&col_ptr, &row_idx, Some(&rest)),
         _ => {
             let (mut fwd, mut inv) = (vec![0usize; m], vec![0usize; m]);
             let sym = SymbolicSparseColMatRef::new_checked(m, m, &col_ptr, None, &row_idx);
@@ -963,7 +989,7 @@ mod tests {
                 &p,
                 &AnalyseParams {
                     ordering: Ordering::NestedDissection,
-                    coords: Some(&coords),
+                    coords: Some(Points::Plane(&coords)),
                     last: &last,
                     zeros: &[],
                     parallel_subtrees: true,

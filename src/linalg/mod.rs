@@ -15,5 +15,5 @@ pub mod refine;
 mod split;
 pub mod workspace;
 
-pub use cholesky::{AnalyseParams, Cholesky, FactorError, SINGULAR_TOL};
+pub use cholesky::{AnalyseParams, Cholesky, FactorError, Points, SINGULAR_TOL};
 pub use ordering::Ordering;

@@ -16,7 +16,9 @@ use std::time::Instant;
 use super::condensed::{Condensed, ElementMatrix, LowRank};
 use super::diagnostics::add_energy;
 use super::friction_loads::FrictionLoads;
-use super::linear::{Bookkeeping, Structure, SystemAndFactor, check_finite, factor_and_solve};
+use super::linear::{
+    Bookkeeping, Energy, Structure, SystemAndFactor, check_finite, factor_and_solve,
+};
 use super::report::IterationRecord;
 use crate::contact::constraints::Constraints;
 use crate::contact::{ActiveSet, ContactOptions, SlipLoads, Verdict};
@@ -29,8 +31,9 @@ use crate::linalg::refine::{Budget, norm_inf, refine, refine_by};
 pub(crate) struct LoopInput<'a, 's> {
     /// Mesh, unknowns and pattern.
     pub at: Structure<'a>,
-    /// The body elements (for the energy of a near-null mode).
-    pub elements: &'a ElementLoop<'a>,
+    /// The bodies' energy of a global vector (a near-null mode's judge,
+    /// [`body_energy`] for triangles).
+    pub body_energy: Energy<'a>,
     /// The constraints the loop switches, with their law.
     pub set: &'a Constraints<'s>,
     /// The interface unknowns to condense on, or `None` to refactorise at
@@ -364,7 +367,7 @@ impl<'a, 's> ActiveSetLoop<'a, 's> {
         self.friction.coupled = false;
         self.books.timings.assembly += t0.elapsed().as_secs_f64();
         let energy = |r: &[f64]| {
-            let mut acc = body_energy(input.elements, r);
+            let mut acc = (input.body_energy)(r);
             for k in (0..set.parts()).filter(|&k| active[k]) {
                 set.add_energy(k, &mut acc, r);
             }
@@ -862,9 +865,10 @@ mod tests {
         };
         let mut books = Bookkeeping::new(&mut timings, &mut info);
         let chol = factorisation(analysis, at, Settings::default(), want, &mut books).unwrap();
+        let energy = |r: &[f64]| body_energy(&elements, r);
         let input = LoopInput {
             at,
-            elements: &elements,
+            body_energy: &energy,
             set: &set,
             interface: condense.then(|| interface.clone()),
             options,

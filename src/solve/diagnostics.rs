@@ -8,8 +8,8 @@ use std::collections::BTreeMap;
 use super::report::SolveInfo;
 use crate::error::{Error, Status};
 use crate::fem::assembly::{DofMap, NOT_FREE};
+use crate::fem::domain::Domain;
 use crate::fem::element_loop::element_values;
-use crate::fem::mesh::Mesh;
 use crate::linalg::FactorError;
 
 /// Energy of a fitted rigid motion, relative to the element-wise diagonal
@@ -18,48 +18,121 @@ use crate::linalg::FactorError;
 /// contact against a 1e12 times stiffer one still gives ~1e-12.
 pub const RIGID_ENERGY_TOL: f64 = 1e-13;
 
-/// The nodes of a body and their centroid.
-fn body_nodes(mesh: &Mesh, body: i32) -> (Vec<usize>, [f64; 2]) {
-    let nodes: Vec<usize> = (0..mesh.nodes().len())
+/// The nodes of a body and their centroid (z = 0 in the plane).
+fn body_nodes(mesh: &dyn Domain, body: i32) -> (Vec<usize>, [f64; 3]) {
+    let nodes: Vec<usize> = (0..mesh.n_nodes())
         .filter(|&v| mesh.node_body()[v] == Some(body))
         .collect();
     let nn = nodes.len() as f64;
-    let c = nodes.iter().fold([0.0, 0.0], |acc, &v| {
-        [
-            acc[0] + mesh.nodes()[v][0] / nn,
-            acc[1] + mesh.nodes()[v][1] / nn,
-        ]
-    });
+    let mut c = [0.0; 3];
+    for &v in &nodes {
+        for (k, ck) in c.iter_mut().enumerate().take(mesh.dimension()) {
+            *ck += mesh.coordinate(v, k) / nn;
+        }
+    }
     (nodes, c)
+}
+
+/// The position of node `v` relative to `c` (z = 0 in the plane).
+fn relative(mesh: &dyn Domain, v: usize, c: &[f64; 3]) -> [f64; 3] {
+    std::array::from_fn(|k| match k < mesh.dimension() {
+        true => mesh.coordinate(v, k) - c[k],
+        false => 0.0,
+    })
+}
+
+/// A body's motion `m` (a global vector) at its nodes reduced to what a
+/// rigid motion about the centroid `c` sees: the mean translation, the
+/// angular momentum L = Σ d × m and the inertia I = Σ |d|² 1 − d dᵀ (in
+/// the plane, L and I are their z components).
+struct Moments {
+    translation: [f64; 3],
+    momentum: [f64; 3],
+    inertia: [[f64; 3]; 3],
+}
+
+impl Moments {
+    fn of(mesh: &dyn Domain, nodes: &[usize], c: &[f64; 3], m: &[f64]) -> Moments {
+        let (dim, nn) = (mesh.dimension(), nodes.len() as f64);
+        let mut r = Moments {
+            translation: [0.0; 3],
+            momentum: [0.0; 3],
+            inertia: [[0.0; 3]; 3],
+        };
+        for &v in nodes {
+            let d = relative(mesh, v, c);
+            let mv: [f64; 3] = std::array::from_fn(|k| if k < dim { m[dim * v + k] } else { 0.0 });
+            for k in 0..dim {
+                r.translation[k] += mv[k] / nn;
+            }
+            if dim == 2 {
+                r.momentum[2] += d[0] * mv[1] - d[1] * mv[0];
+                r.inertia[2][2] += d[0] * d[0] + d[1] * d[1];
+                continue;
+            }
+            let dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+            for a in 0..3 {
+                let (b, e) = ((a + 1) % 3, (a + 2) % 3);
+                r.momentum[a] += d[b] * mv[e] - d[e] * mv[b];
+                for (k, dk) in d.iter().enumerate() {
+                    r.inertia[a][k] += if a == k { dd } else { 0.0 } - d[a] * dk;
+                }
+            }
+        }
+        r
+    }
+
+    /// The angular velocity ω = I⁻¹ L of the best-fitting rotation (zero
+    /// about an axis the nodes do not span).
+    fn omega(&self) -> [f64; 3] {
+        let (i, l) = (&self.inertia, &self.momentum);
+        if i[0][0] == 0.0 && i[1][1] == 0.0 {
+            // The plane: about z only.
+            return [0.0, 0.0, if i[2][2] > 0.0 { l[2] / i[2][2] } else { 0.0 }];
+        }
+        let det = i[0][0] * (i[1][1] * i[2][2] - i[1][2] * i[2][1])
+            - i[0][1] * (i[1][0] * i[2][2] - i[1][2] * i[2][0])
+            + i[0][2] * (i[1][0] * i[2][1] - i[1][1] * i[2][0]);
+        let trace = i[0][0] + i[1][1] + i[2][2];
+        if det.abs() <= 1e-12 * trace.powi(3) {
+            return [0.0; 3];
+        }
+        // Cramer's rule on the symmetric 3×3 inertia.
+        std::array::from_fn(|a| {
+            let mut col = *i;
+            for (row, la) in col.iter_mut().zip(l) {
+                row[a] = *la;
+            }
+            (col[0][0] * (col[1][1] * col[2][2] - col[1][2] * col[2][1])
+                - col[0][1] * (col[1][0] * col[2][2] - col[1][2] * col[2][0])
+                + col[0][2] * (col[1][0] * col[2][1] - col[1][1] * col[2][0]))
+                / det
+        })
+    }
 }
 
 /// The rigid motion (translation and rotation about the centroid) of each
 /// body that best fits `mode` (over unknowns), zero on prescribed DOFs: a
 /// global vector.
-pub fn rigid_fit(mesh: &Mesh, dofs: &DofMap, mode: &[f64]) -> Vec<f64> {
-    let n = mesh.nodes().len();
-    let m = dofs.expand(mode, &vec![0.0; 2 * n]);
-    let mut r = vec![0.0; 2 * n];
+pub fn rigid_fit(mesh: &dyn Domain, dofs: &DofMap, mode: &[f64]) -> Vec<f64> {
+    let (n, dim) = (mesh.n_nodes(), mesh.dimension());
+    let m = dofs.expand(mode, &vec![0.0; dim * n]);
+    let mut r = vec![0.0; dim * n];
     for &body in mesh.bodies() {
         let (nodes, c) = body_nodes(mesh, body);
-        let nn = nodes.len() as f64;
-        let (mut t, mut rot, mut rr) = ([0.0, 0.0], 0.0, 0.0);
+        let moments = Moments::of(mesh, &nodes, &c, &m);
+        let (t, w) = (moments.translation, moments.omega());
         for &v in &nodes {
-            let (dx, dy) = (mesh.nodes()[v][0] - c[0], mesh.nodes()[v][1] - c[1]);
-            t[0] += m[2 * v] / nn;
-            t[1] += m[2 * v + 1] / nn;
-            rot += dx * m[2 * v + 1] - dy * m[2 * v];
-            rr += dx * dx + dy * dy;
-        }
-        let theta = if rr > 0.0 { rot / rr } else { 0.0 };
-        for &v in &nodes {
-            let (dx, dy) = (mesh.nodes()[v][0] - c[0], mesh.nodes()[v][1] - c[1]);
-            for (k, value) in [t[0] - theta * dy, t[1] + theta * dx]
-                .into_iter()
-                .enumerate()
-            {
-                if dofs.free(2 * v + k) != NOT_FREE {
-                    r[2 * v + k] = value;
+            let d = relative(mesh, v, &c);
+            // t + ω × d.
+            let motion = [
+                t[0] + (w[1] * d[2] - w[2] * d[1]),
+                t[1] + (w[2] * d[0] - w[0] * d[2]),
+                t[2] + (w[0] * d[1] - w[1] * d[0]),
+            ];
+            for (k, value) in motion.into_iter().enumerate().take(dim) {
+                if dofs.free(dim * v + k) != NOT_FREE {
+                    r[dim * v + k] = value;
                 }
             }
         }
@@ -81,20 +154,20 @@ pub fn add_energy(acc: &mut (f64, f64), ke: &[f64; 36], r: &[f64], tri: &[usize;
 /// The error of a failed factorisation, naming the unknown without
 /// stiffness or the bodies of the near-null mode; `context` says where in
 /// the solve it happened.
-pub fn singular_error(mesh: &Mesh, dofs: &DofMap, e: FactorError, context: &str) -> Error {
+pub fn singular_error(mesh: &dyn Domain, dofs: &DofMap, e: FactorError, context: &str) -> Error {
     let free_to_global = dofs.free_to_global();
     match e {
         FactorError::Other(err) => err,
         FactorError::ZeroDiagonal { unknown } => {
-            let g = free_to_global[unknown];
-            let node = g / 2;
+            let (g, dim) = (free_to_global[unknown], mesh.dimension());
+            let node = g / dim;
             Error::new(
                 Status::Singular,
                 format!(
                     "{} (body {}) has no stiffness in {}{context}",
                     mesh.node_name(node),
                     mesh.node_body()[node].unwrap_or_default(),
-                    if g % 2 == 0 { "x" } else { "y" }
+                    ["x", "y", "z"][g % dim]
                 ),
             )
         }
@@ -105,7 +178,7 @@ pub fn singular_error(mesh: &Mesh, dofs: &DofMap, e: FactorError, context: &str)
         FactorError::Singular {
             mode: Some(mode), ..
         } => {
-            let m = dofs.expand(&mode, &vec![0.0; 2 * mesh.nodes().len()]);
+            let m = dofs.expand(&mode, &vec![0.0; mesh.dimension() * mesh.n_nodes()]);
             Error::new(
                 Status::Singular,
                 format!(
@@ -133,11 +206,12 @@ pub fn conditioning_warning(info: &SolveInfo, warnings: &mut Vec<String>) {
 
 /// Names the bodies that move in a near-null mode `m` (a global vector)
 /// and the kind of motion.
-pub fn describe_mode(mesh: &Mesh, m: &[f64]) -> String {
+pub fn describe_mode(mesh: &dyn Domain, m: &[f64]) -> String {
+    let dim = mesh.dimension();
     let mut share: BTreeMap<i32, f64> = BTreeMap::new();
     for (v, body) in mesh.node_body().iter().enumerate() {
         if let Some(b) = body {
-            *share.entry(*b).or_default() += m[2 * v].powi(2) + m[2 * v + 1].powi(2);
+            *share.entry(*b).or_default() += (0..dim).map(|k| m[dim * v + k].powi(2)).sum::<f64>();
         }
     }
     let total: f64 = share.values().sum();
@@ -166,32 +240,30 @@ pub fn describe_mode(mesh: &Mesh, m: &[f64]) -> String {
 }
 
 /// The fractions of a body's motion in `m` that are rigid translations and
-/// rotation about its centroid (three orthogonal modes), in words.
-fn motion_kind(mesh: &Mesh, body: i32, m: &[f64]) -> String {
+/// rotations about its centroid, in words.
+fn motion_kind(mesh: &dyn Domain, body: i32, m: &[f64]) -> String {
     let (nodes, c) = body_nodes(mesh, body);
-    let nn = nodes.len() as f64;
-    let (mut tx, mut ty, mut rot, mut rr, mut e) = (0.0, 0.0, 0.0, 0.0, 0.0);
-    for &v in &nodes {
-        let (dx, dy) = (mesh.nodes()[v][0] - c[0], mesh.nodes()[v][1] - c[1]);
-        let (a, b) = (m[2 * v], m[2 * v + 1]);
-        tx += a;
-        ty += b;
-        rot += -dy * a + dx * b;
-        rr += dx * dx + dy * dy;
-        e += a * a + b * b;
-    }
-    let fx = tx * tx / nn / e;
-    let fy = ty * ty / nn / e;
-    let fr = if rr > 0.0 { rot * rot / rr / e } else { 0.0 };
-    if fx + fy + fr < 0.5 {
+    let (nn, dim) = (nodes.len() as f64, mesh.dimension());
+    let e: f64 = nodes
+        .iter()
+        .map(|&v| (0..dim).map(|k| m[dim * v + k].powi(2)).sum::<f64>())
+        .sum();
+    let moments = Moments::of(mesh, &nodes, &c, m);
+    // Σ_v m_v = nn·t; the rigid rotations' share is Lᵀ I⁻¹ L.
+    let translation = moments.translation.map(|t| t * t * nn / e);
+    let w = moments.omega();
+    let fr = (0..3).map(|a| w[a] * moments.momentum[a]).sum::<f64>() / e;
+    if translation.iter().sum::<f64>() + fr < 0.5 {
         return "a mechanism that is not a rigid motion".to_string();
     }
     let mut k = Vec::new();
-    for (f, name) in [
-        (fx, "translation in x"),
-        (fy, "translation in y"),
+    let named = [
+        (translation[0], "translation in x"),
+        (translation[1], "translation in y"),
+        (translation[2], "translation in z"),
         (fr, "rotation"),
-    ] {
+    ];
+    for (f, name) in named {
         if f >= 0.05 {
             k.push(format!("{:.0}% {name}", 100.0 * f));
         }

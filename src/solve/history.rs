@@ -712,9 +712,10 @@ impl History {
             dofs,
             pattern,
         };
+        let energy = |r: &[f64]| body_energy(&input.elements, r);
         let loop_input = LoopInput {
             at: structure,
-            elements: &input.elements,
+            body_energy: &energy,
             set: &set,
             interface: None,
             options: *at.options,
@@ -1609,7 +1610,7 @@ fn solved_whole(
     };
     let mut chol = analyse(at, settings, whole)?;
     // Beside the second factor, the solve's vectors, as for any solve.
-    let need = memory::solve_bytes(at.mesh.nodes().len() * 2, 0);
+    let need = memory::solve_bytes(at.dofs.n_global(), 0);
     preflight(need, "the load step's solve")?;
     let mut matrix = reserved::<f64>(step.values.len(), "the load step's matrix")?;
     matrix.extend_from_slice(step.values);

@@ -9,7 +9,7 @@ use super::report::{SolveInfo, Timings};
 use super::system::AssembledSystem;
 use crate::error::{Error, Result, Status};
 use crate::fem::assembly::{DofMap, Pattern};
-use crate::fem::mesh::Mesh;
+use crate::fem::domain::Domain;
 use crate::linalg::refine::refine;
 use crate::linalg::{Cholesky, FactorError};
 
@@ -17,7 +17,7 @@ use crate::linalg::{Cholesky, FactorError};
 #[derive(Clone, Copy)]
 pub(crate) struct Structure<'a> {
     /// The mesh (for naming nodes and bodies in errors).
-    pub mesh: &'a Mesh,
+    pub mesh: &'a dyn Domain,
     /// The unknowns.
     pub dofs: &'a DofMap,
     /// The matrix pattern.
@@ -146,7 +146,8 @@ pub(crate) fn check_finite(at: Structure<'_>, x: &[f64], context: &str) -> Resul
             Status::NumericalFailure,
             format!(
                 "the displacement of {} is not finite{context}",
-                at.mesh.node_name(at.dofs.free_to_global()[f] / 2)
+                at.mesh
+                    .node_name(at.dofs.free_to_global()[f] / at.mesh.dimension())
             ),
         )),
     }

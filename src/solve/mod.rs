@@ -19,6 +19,7 @@ pub(crate) mod linear;
 pub(crate) mod memory;
 pub mod report;
 pub(crate) mod session;
+pub mod solid;
 pub mod system;
 
 use active_set::{ActiveSetLoop, LoopInput, body_energy};
@@ -368,9 +369,10 @@ pub(crate) fn solve_contact(
     };
     let mut books = Bookkeeping::new(timings, &mut info);
     let chol = factorisation(analysis, at, input.settings, want, &mut books)?;
+    let energy = |r: &[f64]| body_energy(&input.elements, r);
     let loop_input = LoopInput {
         at,
-        elements: &input.elements,
+        body_energy: &energy,
         set: &set,
         interface: condense.then_some(interface),
         options: *options,

@@ -18,7 +18,7 @@ use crate::fem::assembly::{DofMap, Pattern, Slots};
 use crate::fem::body::{Softened, Target};
 use crate::fem::element_loop::ElementLoop;
 use crate::fem::mesh::Mesh;
-use crate::linalg::{AnalyseParams, Cholesky, Ordering};
+use crate::linalg::{AnalyseParams, Cholesky, Ordering, Points};
 
 /// Choices of the factorisation that change no result beyond round-off.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -202,14 +202,36 @@ pub(crate) fn analyse(at: Structure<'_>, settings: Settings, want: Wanted<'_>) -
     preflight(need, "the symbolic analysis (ordering)")?;
     // The unknowns' coordinates are only needed here (17 MB at 1M
     // unknowns), so they are not kept.
-    let coords: Vec<[f64; 2]> = dofs
-        .free_to_global()
-        .iter()
-        .map(|&g| mesh.nodes()[g / 2])
-        .collect();
+    let dim = mesh.dimension();
+    let point = |g: usize| -> [f64; 3] {
+        std::array::from_fn(|k| {
+            if k < dim {
+                mesh.coordinate(g / dim, k)
+            } else {
+                0.0
+            }
+        })
+    };
+    let unknowns = dofs.free_to_global().iter();
+    let (plane, space): (Vec<[f64; 2]>, Vec<[f64; 3]>) = match dim {
+        2 => (
+            unknowns
+                .map(|&g| {
+                    let p = point(g);
+                    [p[0], p[1]]
+                })
+                .collect(),
+            Vec::new(),
+        ),
+        _ => (Vec::new(), unknowns.map(|&g| point(g)).collect()),
+    };
+    let coords = match dim {
+        2 => Points::Plane(&plane),
+        _ => Points::Space(&space),
+    };
     let params = AnalyseParams {
         ordering: settings.ordering,
-        coords: Some(&coords),
+        coords: Some(coords),
         last: want.last,
         zeros: want.zeros,
         parallel_subtrees: settings.parallel_subtrees,
@@ -247,7 +269,7 @@ pub(crate) fn factorisation<'a>(
     }
     // What the solve takes besides the factor, now that it holds its
     // memory (with the interface condensed, its dense matrices too).
-    let need = memory::solve_bytes(at.mesh.nodes().len() * 2, want.last.len());
+    let need = memory::solve_bytes(at.dofs.n_global(), want.last.len());
     preflight(need, "the solve's vectors and interface matrices")?;
     let chol = &mut analysis.as_mut().expect("just analysed").chol;
     books.info.factor_nnz = chol.factor_nnz();

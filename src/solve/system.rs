@@ -46,6 +46,19 @@ impl AssembledSystem {
         }
     }
 
+    /// A system whose bodies' part a caller assembled: the matrix values
+    /// `values` (upper triangle on the pattern) and the load `rhs` (over
+    /// the unknowns), no contact part in.
+    pub fn of_bodies(values: Vec<f64>, rhs: Vec<f64>) -> AssembledSystem {
+        AssembledSystem {
+            values,
+            rhs,
+            contact: Vec::new(),
+            log: Vec::new(),
+            friction: Vec::new(),
+        }
+    }
+
     /// The matrix values (upper triangle on the pattern).
     pub fn values(&self) -> &[f64] {
         &self.values

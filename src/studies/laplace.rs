@@ -8,7 +8,7 @@ use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
 use crate::fem::element::{Tempering, TriGeometry, laplacian_stiffness};
 use crate::fem::mesh::Mesh;
 use crate::linalg::ordering::Ordering;
-use crate::linalg::{AnalyseParams, Cholesky, FactorError};
+use crate::linalg::{AnalyseParams, Cholesky, FactorError, Points};
 
 /// Solves −κΔu = f on `mesh` with u prescribed at the nodes listed in
 /// `dirichlet` (node, value). Returns the nodal values (prescribed ones
@@ -46,7 +46,7 @@ pub fn solve_poisson(
         .collect();
     let params = AnalyseParams {
         ordering: Ordering::Auto,
-        coords: Some(&coords),
+        coords: Some(Points::Plane(&coords)),
         last: &[],
         zeros: &[],
         parallel_subtrees: true,

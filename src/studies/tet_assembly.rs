@@ -127,12 +127,10 @@ pub fn block_stress_error(
     Ok(worst)
 }
 
-/// The area of a tetrahedron's largest face: the largest |a_k|/2 (a_k is
-/// twice the opposite face's area along its normal).
+/// The area of a tetrahedron's largest face
+/// ([`TetGeometry::largest_face`]).
 pub fn largest_face(geo: &TetGeometry) -> f64 {
-    (geo.a.iter())
-        .map(|a| 0.5 * (a[0] * a[0] + a[1] * a[1] + a[2] * a[2]).sqrt())
-        .fold(0.0, f64::max)
+    geo.largest_face()
 }
 
 /// The analysis of `pattern` with `ordering`: geometric nested dissection

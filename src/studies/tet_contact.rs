@@ -6,10 +6,11 @@
 //! A_e h_c²/λ — by a primal active-set loop.
 //!
 //! This answers the method's question in 3D with measurements (the contact
-//! patch test, the seed scene in 3D); it is an independent prototype, not
-//! the product: the product's contact loop, condensation and load
-//! histories take tetrahedra as a third kind of constraint, and this study
-//! is what they will be checked against.
+//! patch test, the seed scene in 3D). Two loops solve it
+//! ([`ContactLoop`]): the study's own primal loop, an independent
+//! prototype, and the product's active-set loop with B's tetrahedra as its
+//! third kind of constraint ([`crate::solve::solid`]: condensed interface,
+//! one factorisation per solve); the tests hold the one to the other.
 
 use std::time::Instant;
 
@@ -18,12 +19,27 @@ use super::tet_assembly::{
     unknowns_of,
 };
 use super::tetmesh::{LAYER, LOWER, TetMesh, UPPER};
+use crate::contact::ContactOptions;
+use crate::contact::gap_tets::{GapData, GapTetrahedron, GapTets};
 use crate::error::{Error, Result, Status};
 use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
+use crate::fem::domain::SolidNodes;
 use crate::fem::element::Tempering;
 use crate::fem::tet::{TetGeometry, contact_stiffness, gap_weights, isotropic_d, stiffness};
-use crate::linalg::Cholesky;
 use crate::linalg::ordering::Ordering;
+use crate::solve::solid::{SolidSystem, solve_gap_contact};
+
+/// Which active-set loop solves a [`TetContactProblem`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum ContactLoop {
+    /// The study's own primal loop: every solve refactorises (the
+    /// prototype the product is checked against).
+    Study,
+    /// The product's loop over B's tetrahedra as constraints
+    /// ([`solve_gap_contact`]): the interface condensed, one
+    /// factorisation per solve.
+    Product,
+}
 
 /// A contact problem between the two blocks of a stacked mesh.
 pub struct TetContactProblem<'a> {
@@ -37,8 +53,11 @@ pub struct TetContactProblem<'a> {
     pub lambda: f64,
     /// The blocks' tempering (the model size as λ).
     pub tempering: Tempering,
-    /// The fill-reducing ordering.
+    /// The fill-reducing ordering (the study's loop; the product's orders
+    /// as its analysis chooses).
     pub ordering: Ordering,
+    /// The loop that solves it.
+    pub contact_loop: ContactLoop,
     /// The displacement components prescribed at a boundary node of a
     /// block (part, position), `None` where free.
     pub fixed: &'a dyn Fn(usize, [f64; 3]) -> [Option<f64>; 3],
@@ -67,8 +86,12 @@ pub struct TetContact {
     /// normal force of its pair's tetrahedra over its tributary area (a
     /// third of each prism it belongs to).
     pub pressures: Vec<(usize, f64)>,
-    /// Active-set iterations (solves).
+    /// Active-set iterations.
     pub iterations: usize,
+    /// Numeric factorisations.
+    pub factorizations: usize,
+    /// Unknowns of the condensed interface (0: not condensed).
+    pub interface_unknowns: usize,
     /// Unknowns.
     pub unknowns: usize,
     /// Entries of the Cholesky factor.
@@ -147,7 +170,6 @@ impl Layer {
 struct System {
     dofs: DofMap,
     pattern: Pattern,
-    chol: Cholesky,
     base: Vec<f64>,
     rhs: Vec<f64>,
     prescribed: Vec<f64>,
@@ -165,9 +187,20 @@ struct System {
 pub fn solve_contact(problem: &TetContactProblem<'_>) -> Result<TetContact> {
     problem.mesh.check_stacked()?;
     let t0 = Instant::now();
-    let mut system = assemble(problem)?;
-    let (u, active, iterations) = active_set(&mut system, problem.mesh)?;
+    let system = assemble(problem)?;
     let mesh = problem.mesh;
+    let solved = match problem.contact_loop {
+        ContactLoop::Study => active_set(&system, problem)?,
+        ContactLoop::Product => product_loop(&system, problem)?,
+    };
+    let Solved {
+        u,
+        active,
+        iterations,
+        factorizations,
+        interface_unknowns,
+        factor_nnz,
+    } = solved;
     let mut on = vec![false; mesh.tets.len()];
     let mut transmitted = [0.0; 3];
     let upper = upper_nodes(mesh);
@@ -210,8 +243,10 @@ pub fn solve_contact(problem: &TetContactProblem<'_>) -> Result<TetContact> {
         contact_area,
         pressures,
         iterations,
+        factorizations,
+        interface_unknowns,
         unknowns: system.dofs.n_free(),
-        factor_nnz: system.chol.factor_nnz(),
+        factor_nnz,
         seconds: t0.elapsed().as_secs_f64(),
     })
 }
@@ -224,7 +259,6 @@ fn assemble(problem: &TetContactProblem<'_>) -> Result<System> {
     let (prescribed, fixed, loads) = boundary(problem)?;
     let dofs = DofMap::new(n, 3, |g| !fixed[g]);
     let pattern = Pattern::build(&dofs, n, &face_triangles(mesh));
-    let chol = analyse(&pattern, &dofs, mesh, problem.ordering)?;
     let mut base = vec![0.0; pattern.nnz()];
     let mut rhs = vec![0.0; dofs.n_free()];
     for (f, &g) in dofs.free_to_global().iter().enumerate() {
@@ -253,7 +287,6 @@ fn assemble(problem: &TetContactProblem<'_>) -> Result<System> {
     Ok(System {
         dofs,
         pattern,
-        chol,
         base,
         rhs,
         prescribed,
@@ -262,10 +295,22 @@ fn assemble(problem: &TetContactProblem<'_>) -> Result<System> {
     })
 }
 
-/// The primal active-set loop: the displacements, B's final set and the
-/// number of solves.
-fn active_set(system: &mut System, mesh: &TetMesh) -> Result<(Vec<f64>, Vec<bool>, usize)> {
-    let layer = &system.layer;
+/// What a loop settled in: the displacements, B's final set (by layer
+/// element), the iterations, the factorisations, the condensed interface
+/// and the factor's size.
+struct Solved {
+    u: Vec<f64>,
+    active: Vec<bool>,
+    iterations: usize,
+    factorizations: usize,
+    interface_unknowns: usize,
+    factor_nnz: usize,
+}
+
+/// The primal active-set loop of the study, refactorising every solve.
+fn active_set(system: &System, problem: &TetContactProblem<'_>) -> Result<Solved> {
+    let (layer, mesh) = (&system.layer, problem.mesh);
+    let mut chol = analyse(&system.pattern, &system.dofs, mesh, problem.ordering)?;
     // From the touching elements on (every one on touching surfaces).
     let mut active: Vec<bool> = layer.initial.iter().map(|&j0| j0 <= 0.0).collect();
     for iterations in 1..=50 {
@@ -287,13 +332,8 @@ fn active_set(system: &mut System, mesh: &TetMesh) -> Result<(Vec<f64>, Vec<bool
                 }
             }
         }
-        factorize(
-            &mut system.chol,
-            &system.pattern,
-            &values,
-            "the 3D contact system",
-        )?;
-        system.chol.solve(&mut b)?;
+        factorize(&mut chol, &system.pattern, &values, "the 3D contact system")?;
+        chol.solve(&mut b)?;
         let mut u = system.prescribed.clone();
         for (f, &g) in system.dofs.free_to_global().iter().enumerate() {
             u[g] = b[f];
@@ -308,7 +348,14 @@ fn active_set(system: &mut System, mesh: &TetMesh) -> Result<(Vec<f64>, Vec<bool
             .map(|(i, &e)| layer.gap(i, &mesh.tets[e], &u) <= 0.0)
             .collect();
         if next == active {
-            return Ok((u, active, iterations));
+            return Ok(Solved {
+                u,
+                active,
+                iterations,
+                factorizations: iterations,
+                interface_unknowns: 0,
+                factor_nnz: chol.factor_nnz(),
+            });
         }
         active = next;
     }
@@ -316,6 +363,64 @@ fn active_set(system: &mut System, mesh: &TetMesh) -> Result<(Vec<f64>, Vec<bool
         Status::NotConverged,
         "the 3D contact study's active set did not settle in 50 solves",
     ))
+}
+
+/// The product's loop ([`solve_gap_contact`]) on the study's assembly:
+/// B's tetrahedra as its constraints, with the tie the study's layer has.
+fn product_loop(system: &System, problem: &TetContactProblem<'_>) -> Result<Solved> {
+    let mesh = problem.mesh;
+    let body: Vec<Option<i32>> = (mesh.parts.iter())
+        .map(|&p| (p != LAYER).then_some(p as i32))
+        .collect();
+    let nodes = SolidNodes::new(mesh.nodes.clone(), &mesh.tets, &body);
+    let layer = &system.layer;
+    let elements: Vec<GapTetrahedron> = (layer.elements.iter())
+        .map(|&e| GapTetrahedron {
+            nodes: mesh.tets[e],
+            normal: [0.0, 0.0, 1.0],
+        })
+        .collect();
+    let e_c = problem.materials[0].0.min(problem.materials[1].0);
+    let dofs = &system.dofs;
+    let equation = |g: usize| Some(dofs.free(g)).filter(|&f| f != NOT_FREE);
+    let data = GapData {
+        points: &mesh.nodes,
+        moduli: &vec![e_c; elements.len()],
+        h_c: problem.h_c,
+        lambda: problem.lambda,
+        equation: &equation,
+        prescribed: &system.prescribed,
+    };
+    let gap = GapTets::new(&elements, &data)?;
+    // The bodies' energy of a global vector, over its unknowns.
+    let energy = |r: &[f64]| {
+        let x = dofs.gather(r);
+        let mut kx = vec![0.0; x.len()];
+        system.pattern.sym_mul(&system.base, &x, &mut kx);
+        // The diagonal ends each column of the upper triangle.
+        let diag: f64 = (0..x.len())
+            .map(|i| system.base[system.pattern.col_ptr()[i + 1] - 1].abs() * x[i] * x[i])
+            .sum();
+        (x.iter().zip(&kx).map(|(a, b)| a * b).sum(), diag)
+    };
+    let solid = SolidSystem {
+        nodes: &nodes,
+        dofs,
+        pattern: &system.pattern,
+        values: system.base.clone(),
+        rhs: system.rhs.clone(),
+        prescribed: &system.prescribed,
+        body_energy: &energy,
+    };
+    let r = solve_gap_contact(solid, gap, &ContactOptions::default())?;
+    Ok(Solved {
+        u: r.u,
+        active: r.active,
+        iterations: r.history.len(),
+        factorizations: r.info.factorizations,
+        interface_unknowns: r.info.interface_unknowns,
+        factor_nnz: r.info.factor_nnz,
+    })
 }
 
 /// Whether each node belongs to the upper block.
@@ -403,6 +508,7 @@ pub fn contact_patch_test(
         lambda: 1.0,
         tempering: Tempering::Auto,
         ordering: Ordering::Auto,
+        contact_loop: ContactLoop::Product,
         fixed: &|_, x| {
             [
                 (x[0] == 0.0).then_some(0.0),

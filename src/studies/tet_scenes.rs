@@ -1,8 +1,8 @@
-//! Contact scenes in three dimensions for the stage-3 study
-//! ([`super::tet_contact`], docs/method.md §9): the seed scene in 3D and a
-//! sphere on a block (Hertz).
+//! Contact scenes in three dimensions for stage 3
+//! ([`super::tet_contact`], docs/method.md §9): the seed scene in 3D, a
+//! sphere on a block (Hertz) and a rigid flat punch (Boussinesq).
 
-use super::tet_contact::{TetContactProblem, solve_contact};
+use super::tet_contact::{ContactLoop, TetContactProblem, solve_contact};
 use super::tetmesh::{LAYER, LOWER, Split, TetMesh, UPPER};
 use crate::error::{Error, Result};
 use crate::fem::element::Tempering;
@@ -32,6 +32,8 @@ pub struct TwoBlocks3d {
     pub h: f64,
     /// The fill-reducing ordering.
     pub ordering: Ordering,
+    /// The active-set loop that solves it.
+    pub contact_loop: ContactLoop,
 }
 
 impl Default for TwoBlocks3d {
@@ -46,6 +48,7 @@ impl Default for TwoBlocks3d {
             c: 0.1,
             h: 0.05,
             ordering: Ordering::Auto,
+            contact_loop: ContactLoop::Product,
         }
     }
 }
@@ -70,6 +73,8 @@ pub struct TwoBlocks3dResult {
     pub factor_nnz: usize,
     /// Active-set solves.
     pub iterations: usize,
+    /// Numeric factorisations of the solve.
+    pub factorizations: usize,
     /// Seconds of the solve.
     pub seconds: f64,
 }
@@ -116,6 +121,7 @@ impl TwoBlocks3d {
             lambda: self.l,
             tempering: Tempering::Auto,
             ordering: self.ordering,
+            contact_loop: self.contact_loop,
             fixed: &|part, x| {
                 let supported = part == LOWER && x[2] == bottom && x[0] >= inner && x[1] >= inner;
                 [
@@ -146,6 +152,7 @@ impl TwoBlocks3d {
             unknowns: r.unknowns,
             factor_nnz: r.factor_nnz,
             iterations: r.iterations,
+            factorizations: r.factorizations,
             seconds: r.seconds,
         })
     }
@@ -181,6 +188,8 @@ pub struct Hertz3d {
     pub refinement: f64,
     /// The fill-reducing ordering.
     pub ordering: Ordering,
+    /// The active-set loop that solves it.
+    pub contact_loop: ContactLoop,
 }
 
 impl Default for Hertz3d {
@@ -193,6 +202,7 @@ impl Default for Hertz3d {
             poisson: 0.3,
             refinement: 4.0,
             ordering: Ordering::Auto,
+            contact_loop: ContactLoop::Product,
         }
     }
 }
@@ -213,6 +223,8 @@ pub struct Hertz3dResult {
     pub factor_nnz: usize,
     /// Active-set solves.
     pub iterations: usize,
+    /// Numeric factorisations of the solve.
+    pub factorizations: usize,
     /// Seconds.
     pub seconds: f64,
 }
@@ -295,6 +307,7 @@ impl Hertz3d {
             lambda: side,
             tempering: Tempering::Off,
             ordering: self.ordering,
+            contact_loop: self.contact_loop,
             fixed: &|_, x| {
                 [
                     (x[0] == 0.0).then_some(0.0),
@@ -336,7 +349,194 @@ impl Hertz3d {
             unknowns: r.unknowns,
             factor_nnz: r.factor_nnz,
             iterations: r.iterations,
+            factorizations: r.factorizations,
             seconds: r.seconds,
         })
     }
+}
+
+/// A rigid flat cylindrical punch in 3D (Boussinesq): a punch of radius a
+/// pressed a depth δ into a block, frictionless; the half-space's load is
+/// P = 2aE*δ with E* = E/(1 − ν²). Solved on the quarter x, y ≥ 0 with
+/// its symmetry planes: the block of side and depth `extent`·a on rollers
+/// at its bottom; the punch a layer of tetrahedra over the disc r ≤ a with
+/// every node prescribed (0, 0, −δ), B between. The block's top is meshed
+/// to follow the punch's circle: a grid graded from a/`refinement` at the
+/// punch's edge (where the pressure is singular, ~(a − r)^(−1/2)) and at
+/// the top, each step 1.3 times the last away from them, whose square
+/// [0, a]² is mapped onto the quarter disc (each square shell onto its
+/// circle), blended back to the grid by 2a.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Punch3d {
+    /// The punch's radius a.
+    pub a: f64,
+    /// Side and depth of the block over a.
+    pub extent: f64,
+    /// Young's modulus of the block.
+    pub young: f64,
+    /// Poisson's ratio of the block.
+    pub poisson: f64,
+    /// The indentation δ.
+    pub indentation: f64,
+    /// The mesh size at the punch's edge and the top is a / refinement.
+    pub refinement: f64,
+    /// Each step of the mesh is this many times the last away from the
+    /// edge and the top.
+    pub growth: f64,
+    /// The fill-reducing ordering.
+    pub ordering: Ordering,
+    /// The active-set loop that solves it.
+    pub contact_loop: ContactLoop,
+}
+
+impl Default for Punch3d {
+    fn default() -> Self {
+        Punch3d {
+            a: 1.0,
+            extent: 100.0,
+            young: 1.0,
+            poisson: 0.3,
+            indentation: 1e-3,
+            refinement: 8.0,
+            growth: 1.3,
+            ordering: Ordering::Auto,
+            contact_loop: ContactLoop::Product,
+        }
+    }
+}
+
+/// The outputs of [`Punch3d`].
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Punch3dResult {
+    /// The load P the punch takes over Boussinesq's 2aE*δ, − 1.
+    pub load_error: f64,
+    /// The contact area over πa², − 1 (every tetrahedron of B on: 0 up to
+    /// the polygon's area against the circle's).
+    pub area_error: f64,
+    /// Unknowns (quarter).
+    pub unknowns: usize,
+    /// Entries of the Cholesky factor.
+    pub factor_nnz: usize,
+    /// Active-set iterations.
+    pub iterations: usize,
+    /// Numeric factorisations of the solve.
+    pub factorizations: usize,
+    /// Seconds.
+    pub seconds: f64,
+}
+
+impl Punch3d {
+    /// Boussinesq's load 2aE*δ.
+    pub fn load(&self) -> f64 {
+        let e_star = self.young / (1.0 - self.poisson * self.poisson);
+        2.0 * self.a * e_star * self.indentation
+    }
+
+    /// The quarter model's mesh: the block below z = 0, the punch above the
+    /// quarter disc, B between. Refuses parameters out of range.
+    pub fn mesh(&self) -> Result<TetMesh> {
+        let valid = |x: f64| x.is_finite() && x > 0.0;
+        if !(valid(self.a)
+            && valid(self.young)
+            && valid(self.indentation)
+            && self.extent >= 3.0
+            && self.refinement >= 1.0
+            && self.growth >= 1.01
+            && self.growth <= 2.0
+            && self.poisson > -1.0
+            && self.poisson < 0.5)
+        {
+            return Err(Error::argument(format!(
+                "Punch3d parameters out of range: {self:?}"
+            )));
+        }
+        let (h0, end) = (self.a / self.refinement, self.extent * self.a);
+        let inner = graded_abscissas(h0, 0, self.growth, self.a);
+        // Across: from the edge inwards (mirrored) and outwards.
+        let mut xs: Vec<f64> = inner.iter().rev().map(|x| self.a - x).collect();
+        let cover = xs.len() - 1;
+        xs.extend(
+            graded_abscissas(h0, 0, self.growth, end - self.a)
+                .iter()
+                .skip(1)
+                .map(|x| self.a + x),
+        );
+        let depth: Vec<f64> = graded_abscissas(h0, 0, self.growth, end)
+            .iter()
+            .rev()
+            .map(|z| -z)
+            .collect();
+        let upper = [0.0, h0];
+        let mut mesh = TetMesh::stacked_under(&xs, &xs, &depth, &upper, [cover; 2], Split::ByIndex);
+        for p in &mut mesh.nodes {
+            let [x, y] = disc_map([p[0], p[1]], self.a, 2.0 * self.a);
+            p[0] = x;
+            p[1] = y;
+        }
+        Ok(mesh)
+    }
+
+    /// Solves and measures.
+    pub fn solve(&self) -> Result<Punch3dResult> {
+        let mesh = self.mesh()?;
+        let side = self.extent * self.a;
+        let delta = self.indentation;
+        let r = solve_contact(&TetContactProblem {
+            mesh: &mesh,
+            materials: [(self.young, self.poisson); 2],
+            h_c: self.a / self.refinement,
+            lambda: side,
+            tempering: Tempering::Off,
+            ordering: self.ordering,
+            contact_loop: self.contact_loop,
+            fixed: &|part, x| match part {
+                UPPER => [Some(0.0), Some(0.0), Some(-delta)],
+                _ => [
+                    (x[0] == 0.0).then_some(0.0),
+                    (x[1] == 0.0).then_some(0.0),
+                    (x[2] == -side).then_some(0.0),
+                ],
+            },
+            traction: &|_, _, _| [0.0; 3],
+        })?;
+        let disc = std::f64::consts::PI * self.a * self.a;
+        Ok(Punch3dResult {
+            load_error: 4.0 * r.transmitted[2] / self.load() - 1.0,
+            area_error: 4.0 * r.contact_area / disc - 1.0,
+            unknowns: r.unknowns,
+            factor_nnz: r.factor_nnz,
+            iterations: r.iterations,
+            factorizations: r.factorizations,
+            seconds: r.seconds,
+        })
+    }
+}
+
+/// Abscissas 0 … `end`: `fine` steps of `h0`, then each step `growth`
+/// times the last (the last one stretched or merged to end at `end`).
+fn graded_abscissas(h0: f64, fine: usize, growth: f64, end: f64) -> Vec<f64> {
+    let mut x: Vec<f64> = (0..=fine).map(|i| i as f64 * h0).collect();
+    let mut step = h0;
+    while *x.last().expect("a point") < end {
+        step *= growth;
+        let next = x.last().expect("a point") + step;
+        x.push(if end - next < 0.5 * step { end } else { next });
+    }
+    x
+}
+
+/// Maps the quarter plane so that the square [0, r]² lands on the quarter
+/// disc of radius r, each square shell max(x, y) = ρ on the circle of
+/// radius ρ, blended back to the identity between the shells ρ = r and
+/// ρ = `blend`. Keeps the axes and the points beyond `blend`.
+fn disc_map(p: [f64; 2], r: f64, blend: f64) -> [f64; 2] {
+    let rho = p[0].max(p[1]);
+    let norm = p[0].hypot(p[1]);
+    if rho >= blend || norm == 0.0 {
+        return p;
+    }
+    let s = rho / norm;
+    let t = ((rho - r) / (blend - r)).max(0.0);
+    let k = (1.0 - t) * s + t;
+    [k * p[0], k * p[1]]
 }

@@ -274,27 +274,43 @@ impl TetMesh {
     /// prisms over its triangles split as `split` says; parts [`LOWER`],
     /// [`UPPER`], [`LAYER`].
     pub fn stacked(xs: &[f64], ys: &[f64], lower: &[f64], upper: &[f64], split: Split) -> TetMesh {
+        let cover = [xs.len() - 1, ys.len() - 1];
+        TetMesh::stacked_under(xs, ys, lower, upper, cover, split)
+    }
+
+    /// [`TetMesh::stacked`] with the upper block over the first
+    /// `cover[0]` × `cover[1]` cells of the lower one's top only (a tool
+    /// smaller than the block), the layer under it.
+    pub fn stacked_under(
+        xs: &[f64],
+        ys: &[f64],
+        lower: &[f64],
+        upper: &[f64],
+        cover: [usize; 2],
+        split: Split,
+    ) -> TetMesh {
         let (nx, ny) = (xs.len() - 1, ys.len() - 1);
+        let [cx, cy] = [cover[0].min(nx), cover[1].min(ny)];
         let mut mesh = TetMesh::default();
         let below = mesh.add_grid(xs, ys, lower);
         mesh.add_kuhn_boxes(nx, ny, lower.len() - 1, &below);
         mesh.parts = vec![LOWER; mesh.tets.len()];
-        let above = mesh.add_grid(xs, ys, upper);
-        mesh.add_kuhn_boxes(nx, ny, upper.len() - 1, &above);
+        let above = mesh.add_grid(&xs[..=cx], &ys[..=cy], upper);
+        mesh.add_kuhn_boxes(cx, cy, upper.len() - 1, &above);
         mesh.parts.resize(mesh.tets.len(), UPPER);
         let rank = ranks(mesh.nodes.len(), split);
         // Orientation is decided with the upper face lifted: flat, every
         // layer tetrahedron has J = 0.
         let mut reference = mesh.nodes.clone();
         let lift = upper[1] - upper[0];
-        for j in 0..=ny {
-            for i in 0..=nx {
+        for j in 0..=cy {
+            for i in 0..=cx {
                 reference[above(i, j, 0)][2] += 0.5 * lift;
             }
         }
         let top_of_lower = lower.len() - 1;
-        for j in 0..ny {
-            for i in 0..nx {
+        for j in 0..cy {
+            for i in 0..cx {
                 // The interface's two triangles of cell (i, j), as the Kuhn
                 // boxes split it: along the diagonal (i, j)-(i+1, j+1).
                 for tri in [

@@ -1,0 +1,113 @@
+//! The contact solve of a tetrahedral mesh (docs/method.md §9, stage 3):
+//! B's flat tetrahedra ([`GapTets`]) as the constraints of the one
+//! active-set loop ([`ActiveSetLoop`]), with the interface condensed and
+//! one factorisation per solve, exactly as in the plane. The bodies' part
+//! is the caller's: a tetrahedral mesh's assembly on its pattern.
+
+use super::active_set::{ActiveSetLoop, LoopInput};
+use super::condensed::Condensed;
+use super::linear::{Bookkeeping, Energy, Structure, SystemAndFactor};
+use super::report::{IterationRecord, SolveInfo, Timings};
+use super::session::{Settings, Wanted, factorisation};
+use super::system::AssembledSystem;
+use super::{conditioning_warning, finite_statistics};
+use crate::contact::ContactOptions;
+use crate::contact::constraints::Constraints;
+use crate::contact::gap_tets::GapTets;
+use crate::error::Result;
+use crate::fem::assembly::{DofMap, Pattern};
+use crate::fem::domain::SolidNodes;
+
+/// A tetrahedral mesh's system before contact: its bodies' part assembled.
+pub struct SolidSystem<'a> {
+    /// The nodes and their bodies.
+    pub nodes: &'a SolidNodes,
+    /// The unknowns (three per node).
+    pub dofs: &'a DofMap,
+    /// The pattern of the bodies' tetrahedra and B's.
+    pub pattern: &'a Pattern,
+    /// The bodies' matrix (upper triangle on the pattern).
+    pub values: Vec<f64>,
+    /// The bodies' load over the unknowns (the prescribed displacements'
+    /// share included).
+    pub rhs: Vec<f64>,
+    /// Prescribed displacements, a global vector.
+    pub prescribed: &'a [f64],
+    /// The bodies' energy of a global vector (a near-null mode's judge).
+    pub body_energy: Energy<'a>,
+}
+
+/// A settled contact solve of a tetrahedral mesh.
+#[derive(Debug, Clone)]
+pub struct SolidContact {
+    /// Three displacements per node.
+    pub u: Vec<f64>,
+    /// Whether each tetrahedron of B is on.
+    pub active: Vec<bool>,
+    /// One record per active-set iteration.
+    pub history: Vec<IterationRecord>,
+    /// The solve's statistics (factorisations, interface, residual).
+    pub info: SolveInfo,
+    /// What went wrong but not enough to fail (an ill-conditioned system).
+    pub warnings: Vec<String>,
+}
+
+/// Solves `system` with B's tetrahedra `gap` switched on where they would
+/// invert (frictionless), by the active-set loop under `options`: the
+/// interface condensed when that pays, else refactorised per iteration.
+pub fn solve_gap_contact(
+    system: SolidSystem<'_>,
+    gap: GapTets,
+    options: &ContactOptions,
+) -> Result<SolidContact> {
+    let (dofs, pattern) = (system.dofs, system.pattern);
+    let set = Constraints::of_gap(gap, system.prescribed, options)?;
+    let interface = match options.refactorize {
+        true => Vec::new(),
+        false => set.interface_unknowns(),
+    };
+    let condense = Condensed::worthwhile(interface.len(), pattern.nnz());
+    let want = Wanted {
+        last: if condense { &interface } else { &[] },
+        zeros: &[],
+    };
+    let at = Structure {
+        mesh: system.nodes,
+        dofs,
+        pattern,
+    };
+    let (mut timings, mut info) = (Timings::default(), SolveInfo::default());
+    info.unknowns = dofs.n_free();
+    info.matrix_nnz = pattern.nnz();
+    let mut analysis = None;
+    let mut books = Bookkeeping::new(&mut timings, &mut info);
+    let chol = factorisation(&mut analysis, at, Settings::default(), want, &mut books)?;
+    let mut assembled = AssembledSystem::of_bodies(system.values, system.rhs);
+    let input = LoopInput {
+        at,
+        body_energy: system.body_energy,
+        set: &set,
+        interface: condense.then_some(interface),
+        options: *options,
+    };
+    let linear = SystemAndFactor {
+        chol,
+        system: &mut assembled,
+    };
+    let settled = ActiveSetLoop::new(input, linear, books, None).run()?;
+    info.relative_residual = assembled.relative_residual(pattern, &settled.x);
+    info.timings = timings;
+    if let Some(a) = analysis.as_ref() {
+        info.condition_estimate = a.chol.condition_estimate();
+    }
+    finite_statistics(&info)?;
+    let mut warnings = Vec::new();
+    conditioning_warning(&info, &mut warnings);
+    Ok(SolidContact {
+        u: dofs.expand(&settled.x, system.prescribed),
+        active: settled.active,
+        history: settled.history,
+        info,
+        warnings,
+    })
+}
