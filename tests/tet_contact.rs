@@ -4,11 +4,13 @@
 //! would invert — solved by the product's active-set loop, held to the
 //! study's independent prototype.
 
+use tfem::contact::prism_layer::{FacingSurfaces, prism_layer};
+use tfem::fem::tet::TetGeometry;
 use tfem::studies::tet_contact::{
     ContactLoop, TetContactProblem, contact_patch_test, solve_contact,
 };
 use tfem::studies::tet_scenes::{Hertz3d, Punch3d, TwoBlocks3d};
-use tfem::studies::tetmesh::{Split, TetMesh};
+use tfem::studies::tetmesh::{LAYER, LOWER, Split, TetMesh, UPPER};
 use tfem::{Ordering, Tempering};
 
 #[test]
@@ -296,4 +298,74 @@ fn a_rigid_flat_punch_converges_to_boussinesq_from_the_stiff_side() {
         assert!(w[1] < 0.75 * w[0], "{errors:?}");
     }
     assert!(errors[2] < 0.08, "{errors:?}");
+}
+
+/// The triangles of a stacked mesh's interface: those of B's tetrahedra
+/// whose nodes are all on the lower block (a) or all on the upper (b).
+fn interface_triangles(mesh: &TetMesh) -> (Vec<[usize; 3]>, Vec<[usize; 3]>) {
+    let mut part = vec![usize::MAX; mesh.nodes.len()];
+    for (t, &p) in mesh.tets.iter().zip(&mesh.parts) {
+        if p != LAYER {
+            t.iter().for_each(|&v| part[v] = p);
+        }
+    }
+    let (mut a, mut b) = (Vec::new(), Vec::new());
+    for (t, _) in (mesh.tets.iter().zip(&mesh.parts)).filter(|(_, p)| **p == LAYER) {
+        for skip in 0..4 {
+            let f: Vec<usize> = (0..4).filter(|&k| k != skip).map(|k| t[k]).collect();
+            let mut f = [f[0], f[1], f[2]];
+            f.sort_unstable();
+            match f.map(|v| part[v]) {
+                [LOWER, LOWER, LOWER] => a.push(f),
+                [UPPER, UPPER, UPPER] => b.push(f),
+                _ => {}
+            }
+        }
+    }
+    for s in [&mut a, &mut b] {
+        s.sort_unstable();
+        s.dedup();
+    }
+    (a, b)
+}
+
+#[test]
+fn b_built_from_the_facing_surfaces_is_the_stacked_meshs_layer() {
+    for mesh in [
+        TetMesh::patch_blocks(4, Split::ByIndex, 0.2),
+        TwoBlocks3d::default().mesh().unwrap(),
+        Hertz3d::default().mesh().unwrap(),
+    ] {
+        let (a, b) = interface_triangles(&mesh);
+        let layer = prism_layer(&FacingSurfaces {
+            points: &mesh.nodes,
+            a: &a,
+            b: &b,
+            normal: [0.0, 0.0, 1.0],
+        })
+        .unwrap();
+        // The same tetrahedra, each numbered with the same orientation: J
+        // of the same sign once b is lifted off a.
+        let mut on_a = vec![false; mesh.nodes.len()];
+        a.iter().flatten().for_each(|&v| on_a[v] = true);
+        let key = |t: [usize; 4]| {
+            let mut s = t;
+            s.sort_unstable();
+            let lifted = t.map(|v| {
+                let [x, y, _] = mesh.nodes[v];
+                [x, y, if on_a[v] { 0.0 } else { 1.0 }]
+            });
+            (s, TetGeometry::new(&lifted).j > 0.0)
+        };
+        let mut built: Vec<_> = layer.iter().map(|t| key(t.nodes)).collect();
+        let mut meshed: Vec<_> = (mesh.tets.iter().zip(&mesh.parts))
+            .filter(|(_, p)| **p == LAYER)
+            .map(|(t, _)| key(*t))
+            .collect();
+        built.sort_unstable();
+        meshed.sort_unstable();
+        assert_eq!(built.len(), 3 * a.len());
+        assert!(a.len() >= 32, "{} interface triangles", a.len());
+        assert_eq!(built, meshed);
+    }
 }

@@ -29,6 +29,7 @@ pub mod mesh;
 pub mod mortar;
 pub(crate) mod mortar_set;
 pub mod pairing;
+pub mod prism_layer;
 pub mod set;
 pub(crate) mod settled;
 pub mod traction;

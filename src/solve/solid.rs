@@ -1,8 +1,11 @@
 //! The contact solve of a tetrahedral mesh (docs/method.md §9, stage 3):
 //! B's flat tetrahedra ([`GapTets`]) as the constraints of the one
-//! active-set loop ([`ActiveSetLoop`]), with the interface condensed and
-//! one factorisation per solve, exactly as in the plane. The bodies' part
-//! is the caller's: a tetrahedral mesh's assembly on its pattern.
+//! active-set loop (`solve::active_set`), as in the plane: the interface
+//! condensed into one factorisation per solve when its dense Schur
+//! complement is small beside the matrix, else refactorised at each
+//! iteration (B spans whole surfaces in 3D, so mostly the latter: docs/
+//! method.md §9). The bodies' part is the caller's: a tetrahedral mesh's
+//! assembly on its pattern.
 
 use super::active_set::{ActiveSetLoop, LoopInput};
 use super::condensed::Condensed;
@@ -17,6 +20,7 @@ use crate::contact::gap_tets::GapTets;
 use crate::error::Result;
 use crate::fem::assembly::{DofMap, Pattern};
 use crate::fem::domain::SolidNodes;
+use crate::linalg::Ordering;
 
 /// A tetrahedral mesh's system before contact: its bodies' part assembled.
 pub struct SolidSystem<'a> {
@@ -54,11 +58,13 @@ pub struct SolidContact {
 
 /// Solves `system` with B's tetrahedra `gap` switched on where they would
 /// invert (frictionless), by the active-set loop under `options`: the
-/// interface condensed when that pays, else refactorised per iteration.
+/// interface condensed when that pays, else refactorised per iteration;
+/// the unknowns ordered by `ordering`.
 pub fn solve_gap_contact(
     system: SolidSystem<'_>,
     gap: GapTets,
     options: &ContactOptions,
+    ordering: Ordering,
 ) -> Result<SolidContact> {
     let (dofs, pattern) = (system.dofs, system.pattern);
     let set = Constraints::of_gap(gap, system.prescribed, options)?;
@@ -81,7 +87,11 @@ pub fn solve_gap_contact(
     info.matrix_nnz = pattern.nnz();
     let mut analysis = None;
     let mut books = Bookkeeping::new(&mut timings, &mut info);
-    let chol = factorisation(&mut analysis, at, Settings::default(), want, &mut books)?;
+    let settings = Settings {
+        ordering,
+        ..Settings::default()
+    };
+    let chol = factorisation(&mut analysis, at, settings, want, &mut books)?;
     let mut assembled = AssembledSystem::of_bodies(system.values, system.rhs);
     let input = LoopInput {
         at,

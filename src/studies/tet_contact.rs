@@ -27,6 +27,7 @@ use crate::fem::domain::SolidNodes;
 use crate::fem::element::Tempering;
 use crate::fem::tet::{TetGeometry, contact_stiffness, gap_weights, isotropic_d, stiffness};
 use crate::linalg::ordering::Ordering;
+use crate::solve::report::Timings;
 use crate::solve::solid::{SolidSystem, solve_gap_contact};
 
 /// Which active-set loop solves a [`TetContactProblem`].
@@ -53,8 +54,7 @@ pub struct TetContactProblem<'a> {
     pub lambda: f64,
     /// The blocks' tempering (the model size as λ).
     pub tempering: Tempering,
-    /// The fill-reducing ordering (the study's loop; the product's orders
-    /// as its analysis chooses).
+    /// The fill-reducing ordering.
     pub ordering: Ordering,
     /// The loop that solves it.
     pub contact_loop: ContactLoop,
@@ -96,6 +96,13 @@ pub struct TetContact {
     pub unknowns: usize,
     /// Entries of the Cholesky factor.
     pub factor_nnz: usize,
+    /// Bytes one numeric factorisation needs at its peak (the factor, its
+    /// structure and workspace; the product's loop only, else 0).
+    pub factorization_bytes: usize,
+    /// The time of each phase: the bodies' assembly (with B's switches),
+    /// the analysis, the factorisations, the solves and the condensed
+    /// interface's dense work.
+    pub timings: Timings,
     /// Seconds of the whole solve.
     pub seconds: f64,
 }
@@ -188,6 +195,7 @@ pub fn solve_contact(problem: &TetContactProblem<'_>) -> Result<TetContact> {
     problem.mesh.check_stacked()?;
     let t0 = Instant::now();
     let system = assemble(problem)?;
+    let assembly = t0.elapsed().as_secs_f64();
     let mesh = problem.mesh;
     let solved = match problem.contact_loop {
         ContactLoop::Study => active_set(&system, problem)?,
@@ -200,7 +208,11 @@ pub fn solve_contact(problem: &TetContactProblem<'_>) -> Result<TetContact> {
         factorizations,
         interface_unknowns,
         factor_nnz,
+        factorization_bytes,
+        mut timings,
     } = solved;
+    timings.assembly += assembly;
+    timings.total = t0.elapsed().as_secs_f64();
     let mut on = vec![false; mesh.tets.len()];
     let mut transmitted = [0.0; 3];
     let upper = upper_nodes(mesh);
@@ -247,6 +259,8 @@ pub fn solve_contact(problem: &TetContactProblem<'_>) -> Result<TetContact> {
         interface_unknowns,
         unknowns: system.dofs.n_free(),
         factor_nnz,
+        factorization_bytes,
+        timings,
         seconds: t0.elapsed().as_secs_f64(),
     })
 }
@@ -305,12 +319,17 @@ struct Solved {
     factorizations: usize,
     interface_unknowns: usize,
     factor_nnz: usize,
+    factorization_bytes: usize,
+    timings: Timings,
 }
 
 /// The primal active-set loop of the study, refactorising every solve.
 fn active_set(system: &System, problem: &TetContactProblem<'_>) -> Result<Solved> {
     let (layer, mesh) = (&system.layer, problem.mesh);
+    let mut timings = Timings::default();
+    let t0 = Instant::now();
     let mut chol = analyse(&system.pattern, &system.dofs, mesh, problem.ordering)?;
+    timings.analysis = t0.elapsed().as_secs_f64();
     // From the touching elements on (every one on touching surfaces).
     let mut active: Vec<bool> = layer.initial.iter().map(|&j0| j0 <= 0.0).collect();
     for iterations in 1..=50 {
@@ -332,8 +351,12 @@ fn active_set(system: &System, problem: &TetContactProblem<'_>) -> Result<Solved
                 }
             }
         }
+        let t0 = Instant::now();
         factorize(&mut chol, &system.pattern, &values, "the 3D contact system")?;
+        timings.factorization += t0.elapsed().as_secs_f64();
+        let t0 = Instant::now();
         chol.solve(&mut b)?;
+        timings.solve += t0.elapsed().as_secs_f64();
         let mut u = system.prescribed.clone();
         for (f, &g) in system.dofs.free_to_global().iter().enumerate() {
             u[g] = b[f];
@@ -355,6 +378,8 @@ fn active_set(system: &System, problem: &TetContactProblem<'_>) -> Result<Solved
                 factorizations: iterations,
                 interface_unknowns: 0,
                 factor_nnz: chol.factor_nnz(),
+                factorization_bytes: 0,
+                timings,
             });
         }
         active = next;
@@ -412,7 +437,7 @@ fn product_loop(system: &System, problem: &TetContactProblem<'_>) -> Result<Solv
         prescribed: &system.prescribed,
         body_energy: &energy,
     };
-    let r = solve_gap_contact(solid, gap, &ContactOptions::default())?;
+    let r = solve_gap_contact(solid, gap, &ContactOptions::default(), problem.ordering)?;
     Ok(Solved {
         u: r.u,
         active: r.active,
@@ -420,6 +445,8 @@ fn product_loop(system: &System, problem: &TetContactProblem<'_>) -> Result<Solv
         factorizations: r.info.factorizations,
         interface_unknowns: r.info.interface_unknowns,
         factor_nnz: r.info.factor_nnz,
+        factorization_bytes: r.info.factorization_bytes,
+        timings: r.info.timings,
     })
 }
 

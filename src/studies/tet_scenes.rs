@@ -7,6 +7,7 @@ use super::tetmesh::{LAYER, LOWER, Split, TetMesh, UPPER};
 use crate::error::{Error, Result};
 use crate::fem::element::Tempering;
 use crate::linalg::ordering::Ordering;
+use crate::solve::report::Timings;
 
 /// The seed scene in three dimensions (issue 41): Ω1 = [0, L]² × [−H1, 0]
 /// below Ω2 = [0, L]² × [0, H2], a pressure p on the top square
@@ -75,6 +76,11 @@ pub struct TwoBlocks3dResult {
     pub iterations: usize,
     /// Numeric factorisations of the solve.
     pub factorizations: usize,
+    /// Bytes one numeric factorisation needs at its peak (the product's
+    /// loop).
+    pub factorization_bytes: usize,
+    /// The time of each phase of the solve.
+    pub timings: Timings,
     /// Seconds of the solve.
     pub seconds: f64,
 }
@@ -153,6 +159,8 @@ impl TwoBlocks3d {
             factor_nnz: r.factor_nnz,
             iterations: r.iterations,
             factorizations: r.factorizations,
+            factorization_bytes: r.factorization_bytes,
+            timings: r.timings,
             seconds: r.seconds,
         })
     }

@@ -4,6 +4,8 @@
 //! 3D analogues of the 2D band of flat triangles
 //! ([`crate::studies::meshgen::unit_square`]).
 
+use crate::contact::prism_layer::split_prism;
+
 /// A tetrahedral mesh: nodes and positively oriented tetrahedra (J ≥ 0;
 /// flat ones have J = 0 up to round-off).
 #[derive(Debug, Clone, PartialEq, Default)]
@@ -319,7 +321,7 @@ impl TetMesh {
                 ] {
                     let bottom = tri.map(|(a, b)| below(a, b, top_of_lower));
                     let top = tri.map(|(a, b)| above(a, b, 0));
-                    for t in split_prism(bottom, top, &rank) {
+                    for t in split_prism(bottom, top, |v| rank[v]) {
                         mesh.add_oriented(t, &reference);
                     }
                 }
@@ -485,38 +487,6 @@ fn ranks(n: usize, split: Split) -> Vec<usize> {
     rank
 }
 
-/// The three tetrahedra of the prism with bottom triangle `bottom` and top
-/// triangle `top` (node k of one over node k of the other), every
-/// quadrilateral face split from its lowest-ranked node (Dompierre et al.,
-/// *How to subdivide pyramids, prisms and hexahedra into tetrahedra*,
-/// 1999): from the lowest node v of the six, the tetrahedron of v and the
-/// opposite triangle, then the pyramid of v over the quadrilateral
-/// opposite it, split along that face's own diagonal.
-fn split_prism(bottom: [usize; 3], top: [usize; 3], rank: &[usize]) -> [[usize; 4]; 3] {
-    let all = [bottom[0], bottom[1], bottom[2], top[0], top[1], top[2]];
-    let lowest = (0..6).min_by_key(|&k| rank[all[k]]).expect("six nodes");
-    // Relabel so that the lowest node is a = near[0].
-    let (near, far) = if lowest < 3 {
-        (bottom, top)
-    } else {
-        (top, bottom)
-    };
-    let r = lowest % 3;
-    let rot = |t: [usize; 3]| [t[r], t[(r + 1) % 3], t[(r + 2) % 3]];
-    let ([a, b, c], [_, b2, c2]) = (rot(near), rot(far));
-    let cap = [a, far[r], b2, c2];
-    // The quadrilateral b c c2 b2, from its lowest node.
-    let quad_lowest = [b, c, c2, b2]
-        .into_iter()
-        .min_by_key(|&v| rank[v])
-        .expect("four");
-    if quad_lowest == b || quad_lowest == c2 {
-        [cap, [a, b, c, c2], [a, b, c2, b2]]
-    } else {
-        [cap, [a, b, c, b2], [a, c, c2, b2]]
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -630,7 +600,7 @@ mod tests {
         ];
         for seed in 0..50 {
             let rank = ranks(6, Split::Shuffled(seed));
-            let tets = split_prism([0, 1, 2], [3, 4, 5], &rank);
+            let tets = split_prism([0, 1, 2], [3, 4, 5], |v| rank[v]);
             let volumes: Vec<f64> = (tets.iter())
                 .map(|t| TetGeometry::new(&t.map(|v| nodes[v])).j.abs() / 6.0)
                 .collect();
