@@ -277,8 +277,9 @@ fn a_free_block_in_3d_is_named_with_its_free_motion() {
 #[test]
 fn a_rigid_flat_punch_converges_to_boussinesq_from_the_stiff_side() {
     // P = 2aE*δ on a half-space; the block here is 50a, which adds about
-    // 1.4 % (measured: 25a → 7.9 %, 50a → 6.4 %, 100a → 5.8 %, 200a → 5.4 %
-    // at a/16, falling as 1/extent).
+    // 1.4 % (measured at a/16: 25a → 8.0 %, 50a → 6.6 %, 100a → 5.9 %,
+    // 200a → 5.6 %, 400a → 5.4 %, falling as 1/extent; report section
+    // `tetrahedra`).
     let errors: Vec<f64> = [4.0, 8.0, 16.0]
         .into_iter()
         .map(|refinement| {

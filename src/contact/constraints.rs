@@ -223,8 +223,9 @@ impl<'a> Constraints<'a> {
         }
     }
 
-    /// The set a loop starts from: the strip's ([`ContactSet::initial_active`])
-    /// and the weighted gaps' ([`MortarSet::initial_active`]).
+    /// The set a loop starts from: the strip's ([`ContactSet::initial_active`]),
+    /// the weighted gaps' ([`MortarSet::initial_active`]) and B's
+    /// tetrahedra's ([`GapTets::initial_active`]).
     pub fn initial_active(&self) -> Vec<bool> {
         let mut active = self.strip.initial_active();
         active.extend(self.mortar.initial_active());
@@ -263,7 +264,8 @@ impl<'a> Constraints<'a> {
 
     /// The verdict of the contact law on the values of the unknowns read
     /// by `value`, for a solve with the flags `current` and friction load
-    /// factors `c` ([`ContactSet::verdict`], [`MortarSet::verdict`]).
+    /// factors `c` ([`ContactSet::verdict`], [`MortarSet::verdict`],
+    /// [`GapTets::verdict`]).
     pub fn verdict(
         &self,
         current: &[bool],
@@ -278,7 +280,7 @@ impl<'a> Constraints<'a> {
         verdict
             .flags
             .extend(self.mortar.verdict(&current[ns..nm], &value));
-        let gap = self.gap.verdict(|g| self.gap_values(g, &value));
+        let gap = self.gap.verdict(|g| self.gap_values(g, &value))?;
         verdict.flags.extend(gap);
         Ok(verdict)
     }
@@ -352,7 +354,10 @@ impl<'a> Constraints<'a> {
         let friction = self.strip.friction_outcome(&active[..ns], c, elements);
         let mortar = match self.mortar.is_empty() {
             true => None,
-            false => Some(self.mortar.settled(&active[ns..], &value, mesh)?),
+            false => {
+                let nm = ns + self.mortar.len();
+                Some(self.mortar.settled(&active[ns..nm], &value, mesh)?)
+            }
         };
         let n = self.strip.len();
         let mut pressure = vec![0.0; n];

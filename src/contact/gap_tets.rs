@@ -10,14 +10,17 @@
 //! It is on while g ≤ 0: overlapping, or touching (a body held only where
 //! it touches keeps that hold).
 
-use crate::error::{Error, Result};
+use crate::error::{Error, Result, Status};
 use crate::fem::tet::{TetGeometry, contact_stiffness, gap_weights};
 
 /// One flat tetrahedron of B: its nodes and the unit normal of the
 /// interface it lies on.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct GapTetrahedron {
-    /// The four nodes (their order does not matter).
+    /// The four nodes, numbered so that J (six times the signed volume)
+    /// grows as the gap opens: swapping two turns the gap g into −g, an
+    /// open tetrahedron into a pressed one. [`super::prism_layer`] numbers
+    /// them so.
     pub nodes: [usize; 4],
     /// The interface's unit normal.
     pub normal: [f64; 3],
@@ -64,6 +67,13 @@ impl GapTets {
             return Err(Error::argument(format!(
                 "the gap's tie needs h_c > 0 and λ > 0, finite: h_c = {:?}, λ = {:?}",
                 d.h_c, d.lambda
+            )));
+        }
+        if d.prescribed.len() != 3 * d.points.len() {
+            return Err(Error::argument(format!(
+                "{} prescribed values for {} nodes (three each)",
+                d.prescribed.len(),
+                d.points.len()
             )));
         }
         if d.moduli.len() != elements.len() {
@@ -215,10 +225,20 @@ impl GapTets {
     }
 
     /// The verdict of the inversion test: on while the gap is not
-    /// positive, for the values `ue(k)` of each tetrahedron's DOFs.
-    pub fn verdict(&self, ue: impl Fn(usize) -> [f64; 12]) -> Vec<bool> {
+    /// positive, for the values `ue(k)` of each tetrahedron's DOFs; a gap
+    /// that is not finite is refused, naming the tetrahedron.
+    pub fn verdict(&self, ue: impl Fn(usize) -> [f64; 12]) -> Result<Vec<bool>> {
         (0..self.len())
-            .map(|k| self.gap(k, &ue(k)) <= 0.0)
+            .map(|k| {
+                let g = self.gap(k, &ue(k));
+                match g.is_finite() {
+                    true => Ok(g <= 0.0),
+                    false => Err(Error::new(
+                        Status::NumericalFailure,
+                        format!("the gap of gap tetrahedron {k} is not finite"),
+                    )),
+                }
+            })
             .collect()
     }
 }
@@ -267,7 +287,7 @@ mod tests {
         let mut ue = [0.0; 12];
         ue[5] = -0.3;
         assert!((set.gap(0, &ue) + 0.05).abs() < 1e-15);
-        assert_eq!(set.verdict(|_| ue), vec![true]);
+        assert_eq!(set.verdict(|_| ue).unwrap(), vec![true]);
     }
 
     #[test]

@@ -5,6 +5,7 @@
 //! tetrahedra alike (docs/method.md §9).
 
 use super::mesh::Mesh;
+use crate::error::{Error, Result};
 
 /// A mesh as the solver's diagnostics see it: `dimension()` displacement
 /// components per node, numbered node-major.
@@ -60,9 +61,29 @@ pub struct SolidNodes {
 impl SolidNodes {
     /// The nodes `points` of the tetrahedra `tets`, tetrahedron e in body
     /// `body[e]` (`None`: in none, as the flat tetrahedra of a gap). A node
-    /// takes the body of the last body tetrahedron that holds it. Node
-    /// indices out of range are the caller's to refuse first.
-    pub fn new(points: Vec<[f64; 3]>, tets: &[[usize; 4]], body: &[Option<i32>]) -> SolidNodes {
+    /// takes the body of the last body tetrahedron that holds it. A body
+    /// list of another length than the tetrahedra's, or a node out of
+    /// range, is refused.
+    pub fn new(
+        points: Vec<[f64; 3]>,
+        tets: &[[usize; 4]],
+        body: &[Option<i32>],
+    ) -> Result<SolidNodes> {
+        if body.len() != tets.len() {
+            return Err(Error::argument(format!(
+                "{} bodies for {} tetrahedra",
+                body.len(),
+                tets.len()
+            )));
+        }
+        if let Some((e, _)) =
+            (tets.iter().enumerate()).find(|(_, t)| t.iter().any(|&v| v >= points.len()))
+        {
+            return Err(Error::argument(format!(
+                "tetrahedron {e} has a node out of range ({} nodes)",
+                points.len()
+            )));
+        }
         let mut node_body = vec![None; points.len()];
         let mut bodies = Vec::new();
         for (t, b) in tets.iter().zip(body) {
@@ -73,11 +94,11 @@ impl SolidNodes {
         }
         bodies.sort_unstable();
         bodies.dedup();
-        SolidNodes {
+        Ok(SolidNodes {
             points,
             node_body,
             bodies,
-        }
+        })
     }
 
     /// The nodes' positions.
@@ -120,12 +141,14 @@ mod tests {
     fn solid_nodes_take_the_bodies_of_their_tetrahedra_and_not_of_the_gap() {
         let points = vec![[0.0; 3]; 6];
         let tets = [[0, 1, 2, 3], [1, 2, 3, 4], [4, 5, 3, 2]];
-        let nodes = SolidNodes::new(points, &tets, &[Some(7), None, Some(2)]);
+        let nodes = SolidNodes::new(points.clone(), &tets, &[Some(7), None, Some(2)]).unwrap();
         assert_eq!(
             nodes.node_body(),
             &[Some(7), Some(7), Some(2), Some(2), Some(2), Some(2)]
         );
         assert_eq!(nodes.bodies(), &[2, 7]);
         assert_eq!(nodes.dimension(), 3);
+        let e = SolidNodes::new(points, &tets, &[Some(7)]).unwrap_err();
+        assert!(e.message().contains("1 bodies for 3 tetrahedra"), "{e}");
     }
 }

@@ -99,15 +99,23 @@ impl Points<'_> {
     /// triangle) whose vertex k is the point `subset[k]` (all, in order,
     /// when `subset` is `None`).
     fn dissect(self, col_ptr: &[usize], row_idx: &[usize], subset: Option<&[usize]>) -> Vec<usize> {
-        fn pick<const D: usize>(p: &[[f64; D]], subset: Option<&[usize]>) -> Vec<[f64; D]> {
+        fn cut<const D: usize>(
+            col_ptr: &[usize],
+            row_idx: &[usize],
+            p: &[[f64; D]],
+            subset: Option<&[usize]>,
+        ) -> Vec<usize> {
             match subset {
-                Some(s) => s.iter().map(|&i| p[i]).collect(),
-                None => p.to_vec(),
+                Some(s) => {
+                    let picked: Vec<[f64; D]> = s.iter().map(|&i| p[i]).collect();
+                    nested_dissection(col_ptr, row_idx, &picked)
+                }
+                None => nested_dissection(col_ptr, row_idx, p),
             }
         }
         match self {
-            Points::Plane(p) => nested_dissection(col_ptr, row_idx, &pick(p, subset)),
-            Points::Space(p) => nested_dissection(col_ptr, row_idx, &pick(p, subset)),
+            Points::Plane(p) => cut(col_ptr, row_idx, p, subset),
+            Points::Space(p) => cut(col_ptr, row_idx, p, subset),
         }
     }
 }
@@ -176,7 +184,7 @@ impl Cholesky {
     /// factor is the Cholesky factor of their Schur complement (see
     /// [`Cholesky::last_block_factor`]); the others are ordered as asked.
     ///
-    /// With `parallel_subtrees`, nested dissection, at least
+    /// With `parallel_subtrees`, nested dissection in the plane, at least
     /// 20 000 unknowns and two threads or more, the factorisation is split
     /// at the top of the elimination tree: the two subtrees are factorised
     /// concurrently and the separator (with `last`) as a dense block.

@@ -47,6 +47,8 @@ fn relative(mesh: &dyn Domain, v: usize, c: &[f64; 3]) -> [f64; 3] {
 /// the plane, L and I are their z components).
 struct Moments {
     translation: [f64; 3],
+    /// Σ m over the nodes (nn times the translation, summed plainly).
+    sum: [f64; 3],
     momentum: [f64; 3],
     inertia: [[f64; 3]; 3],
 }
@@ -56,6 +58,7 @@ impl Moments {
         let (dim, nn) = (mesh.dimension(), nodes.len() as f64);
         let mut r = Moments {
             translation: [0.0; 3],
+            sum: [0.0; 3],
             momentum: [0.0; 3],
             inertia: [[0.0; 3]; 3],
         };
@@ -64,6 +67,7 @@ impl Moments {
             let mv: [f64; 3] = std::array::from_fn(|k| if k < dim { m[dim * v + k] } else { 0.0 });
             for k in 0..dim {
                 r.translation[k] += mv[k] / nn;
+                r.sum[k] += mv[k];
             }
             if dim == 2 {
                 r.momentum[2] += d[0] * mv[1] - d[1] * mv[0];
@@ -83,7 +87,7 @@ impl Moments {
     }
 
     /// The angular velocity ω = I⁻¹ L of the best-fitting rotation (zero
-    /// about an axis the nodes do not span).
+    /// when the inertia is singular: nodes on one line).
     fn omega(&self) -> [f64; 3] {
         let (i, l) = (&self.inertia, &self.momentum);
         if i[0][0] == 0.0 && i[1][1] == 0.0 {
@@ -249,10 +253,19 @@ fn motion_kind(mesh: &dyn Domain, body: i32, m: &[f64]) -> String {
         .map(|&v| (0..dim).map(|k| m[dim * v + k].powi(2)).sum::<f64>())
         .sum();
     let moments = Moments::of(mesh, &nodes, &c, m);
-    // Σ_v m_v = nn·t; the rigid rotations' share is Lᵀ I⁻¹ L.
-    let translation = moments.translation.map(|t| t * t * nn / e);
-    let w = moments.omega();
-    let fr = (0..3).map(|a| w[a] * moments.momentum[a]).sum::<f64>() / e;
+    // The translations' share (Σ m)²/nn; the rotations' Lᵀ I⁻¹ L (L²/I in
+    // the plane).
+    let translation = moments.sum.map(|t| t * t / nn / e);
+    let fr = match dim {
+        2 => {
+            let (l, i) = (moments.momentum[2], moments.inertia[2][2]);
+            if i > 0.0 { l * l / i / e } else { 0.0 }
+        }
+        _ => {
+            let w = moments.omega();
+            (0..3).map(|a| w[a] * moments.momentum[a]).sum::<f64>() / e
+        }
+    };
     if translation.iter().sum::<f64>() + fr < 0.5 {
         return "a mechanism that is not a rigid motion".to_string();
     }

@@ -200,8 +200,8 @@ pub(crate) fn analyse(at: Structure<'_>, settings: Settings, want: Wanted<'_>) -
     } = at;
     let need = memory::analysis_bytes(pattern.n(), pattern.nnz());
     preflight(need, "the symbolic analysis (ordering)")?;
-    // The unknowns' coordinates are only needed here (17 MB at 1M
-    // unknowns), so they are not kept.
+    // The unknowns' coordinates are only needed here (16 MB at 1M
+    // unknowns in the plane, 24 MB in space), so they are not kept.
     let dim = mesh.dimension();
     let point = |g: usize| -> [f64; 3] {
         std::array::from_fn(|k| {

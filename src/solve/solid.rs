@@ -14,12 +14,12 @@ use super::report::{IterationRecord, SolveInfo, Timings};
 use super::session::{Settings, Wanted, factorisation};
 use super::system::AssembledSystem;
 use super::{conditioning_warning, finite_statistics};
-use crate::contact::ContactOptions;
 use crate::contact::constraints::Constraints;
 use crate::contact::gap_tets::GapTets;
-use crate::error::Result;
+use crate::contact::{ContactLaw, ContactOptions};
+use crate::error::{Error, Result};
 use crate::fem::assembly::{DofMap, Pattern};
-use crate::fem::domain::SolidNodes;
+use crate::fem::domain::{Domain, SolidNodes};
 use crate::linalg::Ordering;
 
 /// A tetrahedral mesh's system before contact: its bodies' part assembled.
@@ -37,8 +37,64 @@ pub struct SolidSystem<'a> {
     pub rhs: Vec<f64>,
     /// Prescribed displacements, a global vector.
     pub prescribed: &'a [f64],
-    /// The bodies' energy of a global vector (a near-null mode's judge).
+    /// The bodies' energy of a global vector r: (rᵀKr, Σ |K_jj| r_j²), the
+    /// judge of whether a near-null mode is a free body.
     pub body_energy: Energy<'a>,
+}
+
+impl SolidSystem<'_> {
+    /// Refuses sizes that do not fit together, and a `gap` whose couplings
+    /// the pattern lacks.
+    fn check(&self, gap: &GapTets) -> Result<()> {
+        let (dofs, pattern) = (self.dofs, self.pattern);
+        let sizes = [
+            ("DOFs", dofs.n_global(), 3 * self.nodes.n_nodes()),
+            ("prescribed values", self.prescribed.len(), dofs.n_global()),
+            ("pattern's unknowns", pattern.n(), dofs.n_free()),
+            ("matrix values", self.values.len(), pattern.nnz()),
+            ("load values", self.rhs.len(), dofs.n_free()),
+        ];
+        for (what, got, want) in sizes {
+            if got != want {
+                return Err(Error::argument(format!(
+                    "the 3D system has {got} {what} where {want} are needed"
+                )));
+            }
+        }
+        for k in 0..gap.len() {
+            let unknowns: Vec<usize> = gap.unknowns(k).iter().flatten().copied().collect();
+            for &i in &unknowns {
+                let coupled = |j: usize| pattern.position(i.min(j), i.max(j)).is_some();
+                if i >= pattern.n() || !unknowns.iter().all(|&j| coupled(j)) {
+                    return Err(Error::argument(format!(
+                        "gap tetrahedron {k} couples unknown {i} outside the pattern"
+                    )));
+                }
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Refuses the options B's tetrahedra do not read.
+fn check_options(options: &ContactOptions) -> Result<()> {
+    options.validate()?;
+    let default = ContactOptions::default();
+    if options.law != ContactLaw::Frictionless || options.test != default.test {
+        return Err(Error::argument(format!(
+            "contact in 3D is frictionless with its own inversion test (g ≤ 0): law {:?} and \
+             test {:?} are not available",
+            options.law, options.test
+        )));
+    }
+    if options.contact_modulus.is_some() || options.lambda.is_some() {
+        return Err(Error::argument(
+            "in 3D, E_c and λ are B's tetrahedra's own (`GapData`): leave them unset in the \
+             options"
+                .to_string(),
+        ));
+    }
+    Ok(())
 }
 
 /// A settled contact solve of a tetrahedral mesh.
@@ -57,15 +113,21 @@ pub struct SolidContact {
 }
 
 /// Solves `system` with B's tetrahedra `gap` switched on where they would
-/// invert (frictionless), by the active-set loop under `options`: the
-/// interface condensed when that pays, else refactorised per iteration;
-/// the unknowns ordered by `ordering`.
+/// invert (frictionless), by the active-set loop under `options` (its
+/// iterations and `refactorize`; B's law, E_c and λ are `gap`'s own, so
+/// another law, test, modulus or λ is refused): the interface condensed
+/// when that pays, else refactorised per iteration; the unknowns ordered
+/// by `ordering`. `gap` must be built with `system`'s unknowns and
+/// prescribed values, and the pattern hold its couplings; sizes that do
+/// not fit are refused, naming them.
 pub fn solve_gap_contact(
     system: SolidSystem<'_>,
     gap: GapTets,
     options: &ContactOptions,
     ordering: Ordering,
 ) -> Result<SolidContact> {
+    check_options(options)?;
+    system.check(&gap)?;
     let (dofs, pattern) = (system.dofs, system.pattern);
     let set = Constraints::of_gap(gap, system.prescribed, options)?;
     let interface = match options.refactorize {

@@ -9,8 +9,8 @@
 //! patch test, the seed scene in 3D). Two loops solve it
 //! ([`ContactLoop`]): the study's own primal loop, an independent
 //! prototype, and the product's active-set loop with B's tetrahedra as its
-//! third kind of constraint ([`crate::solve::solid`]: condensed interface,
-//! one factorisation per solve); the tests hold the one to the other.
+//! third kind of constraint ([`crate::solve::solid`]: the interface
+//! condensed where that pays); the tests hold the one to the other.
 
 use std::time::Instant;
 
@@ -37,8 +37,8 @@ pub enum ContactLoop {
     /// prototype the product is checked against).
     Study,
     /// The product's loop over B's tetrahedra as constraints
-    /// ([`solve_gap_contact`]): the interface condensed, one
-    /// factorisation per solve.
+    /// ([`solve_gap_contact`]): the interface condensed into one
+    /// factorisation where that pays, else refactorised per solve.
     Product,
 }
 
@@ -58,8 +58,9 @@ pub struct TetContactProblem<'a> {
     pub ordering: Ordering,
     /// The loop that solves it.
     pub contact_loop: ContactLoop,
-    /// The displacement components prescribed at a boundary node of a
-    /// block (part, position), `None` where free.
+    /// The displacement components prescribed at a node of a block (part,
+    /// position), `None` where free: asked of every node, those inside a
+    /// block and on the interface too.
     pub fixed: &'a dyn Fn(usize, [f64; 3]) -> [Option<f64>; 3],
     /// The traction on a boundary face of a block (part, centroid,
     /// outward unit normal).
@@ -99,9 +100,9 @@ pub struct TetContact {
     /// Bytes one numeric factorisation needs at its peak (the factor, its
     /// structure and workspace; the product's loop only, else 0).
     pub factorization_bytes: usize,
-    /// The time of each phase: the bodies' assembly (with B's switches),
-    /// the analysis, the factorisations, the solves and the condensed
-    /// interface's dense work.
+    /// The time of each phase: the bodies' assembly (and, in the product's
+    /// loop, B's switches), the analysis, the factorisations, the solves and
+    /// the condensed interface's dense work.
     pub timings: Timings,
     /// Seconds of the whole solve.
     pub seconds: f64,
@@ -397,7 +398,7 @@ fn product_loop(system: &System, problem: &TetContactProblem<'_>) -> Result<Solv
     let body: Vec<Option<i32>> = (mesh.parts.iter())
         .map(|&p| (p != LAYER).then_some(p as i32))
         .collect();
-    let nodes = SolidNodes::new(mesh.nodes.clone(), &mesh.tets, &body);
+    let nodes = SolidNodes::new(mesh.nodes.clone(), &mesh.tets, &body)?;
     let layer = &system.layer;
     let elements: Vec<GapTetrahedron> = (layer.elements.iter())
         .map(|&e| GapTetrahedron {
@@ -469,18 +470,26 @@ fn boundary(problem: &TetContactProblem<'_>) -> Result<(Vec<f64>, Vec<bool>, Vec
     let mut prescribed = vec![0.0; 3 * n];
     let mut fixed = vec![false; 3 * n];
     let mut loads = vec![0.0; 3 * n];
+    // Every node of a block, those on the interface too (a rigid tool's).
+    let mut part_of = vec![None; n];
+    for (t, &p) in mesh.tets.iter().zip(&mesh.parts) {
+        if p == LOWER || p == UPPER {
+            t.iter().for_each(|&v| part_of[v] = Some(p));
+        }
+    }
+    for (v, part) in part_of.into_iter().enumerate() {
+        let Some(part) = part else { continue };
+        for (c, value) in (problem.fixed)(part, mesh.nodes[v]).into_iter().enumerate() {
+            if let Some(x) = value {
+                prescribed[3 * v + c] = x;
+                fixed[3 * v + c] = true;
+            }
+        }
+    }
     for (e, f) in mesh.boundary_faces() {
         let part = mesh.parts[e];
         if part != LOWER && part != UPPER {
             continue;
-        }
-        for &v in &f {
-            for (c, value) in (problem.fixed)(part, mesh.nodes[v]).into_iter().enumerate() {
-                if let Some(x) = value {
-                    prescribed[3 * v + c] = x;
-                    fixed[3 * v + c] = true;
-                }
-            }
         }
         let inside = (mesh.tets[e].iter())
             .find(|v| !f.contains(v))

@@ -447,6 +447,8 @@ impl Punch3d {
         if !(valid(self.a)
             && valid(self.young)
             && valid(self.indentation)
+            && valid(self.extent)
+            && valid(self.refinement)
             && self.extent >= 3.0
             && self.refinement >= 1.0
             && self.growth >= 1.01
@@ -459,17 +461,17 @@ impl Punch3d {
             )));
         }
         let (h0, end) = (self.a / self.refinement, self.extent * self.a);
-        let inner = graded_abscissas(h0, 0, self.growth, self.a);
+        let inner = graded_abscissas(h0, 1, self.growth, self.a);
         // Across: from the edge inwards (mirrored) and outwards.
         let mut xs: Vec<f64> = inner.iter().rev().map(|x| self.a - x).collect();
         let cover = xs.len() - 1;
         xs.extend(
-            graded_abscissas(h0, 0, self.growth, end - self.a)
+            graded_abscissas(h0, 1, self.growth, end - self.a)
                 .iter()
                 .skip(1)
                 .map(|x| self.a + x),
         );
-        let depth: Vec<f64> = graded_abscissas(h0, 0, self.growth, end)
+        let depth: Vec<f64> = graded_abscissas(h0, 1, self.growth, end)
             .iter()
             .rev()
             .map(|z| -z)

@@ -282,7 +282,8 @@ impl TetMesh {
 
     /// [`TetMesh::stacked`] with the upper block over the first
     /// `cover[0]` × `cover[1]` cells of the lower one's top only (a tool
-    /// smaller than the block), the layer under it.
+    /// smaller than the block; a cover beyond the grid is the whole top),
+    /// the layer under it.
     pub fn stacked_under(
         xs: &[f64],
         ys: &[f64],
