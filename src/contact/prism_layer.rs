@@ -13,7 +13,7 @@ use std::collections::{HashMap, HashSet};
 
 use super::gap_tets::GapTetrahedron;
 use crate::error::{Error, Result};
-use crate::fem::tet::TetGeometry;
+use crate::fem::tet::{TetGeometry, cross, dot, sub};
 
 /// Two triangulated surfaces that face each other across a plane.
 pub struct FacingSurfaces<'a> {
@@ -243,24 +243,8 @@ fn sorted(mut t: [usize; 3]) -> [usize; 3] {
     t
 }
 
-fn sub(p: [f64; 3], q: [f64; 3]) -> [f64; 3] {
-    [p[0] - q[0], p[1] - q[1], p[2] - q[2]]
-}
-
 fn scale(p: [f64; 3], s: f64) -> [f64; 3] {
     [s * p[0], s * p[1], s * p[2]]
-}
-
-fn dot(u: [f64; 3], v: [f64; 3]) -> f64 {
-    u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
-}
-
-fn cross(u: [f64; 3], v: [f64; 3]) -> [f64; 3] {
-    [
-        u[1] * v[2] - u[2] * v[1],
-        u[2] * v[0] - u[0] * v[2],
-        u[0] * v[1] - u[1] * v[0],
-    ]
 }
 
 fn normalised(p: [f64; 3]) -> [f64; 3] {

@@ -40,11 +40,13 @@ pub struct TetGeometry {
     pub h: f64,
 }
 
-fn sub(p: [f64; 3], q: [f64; 3]) -> [f64; 3] {
+/// p − q.
+pub(crate) fn sub(p: [f64; 3], q: [f64; 3]) -> [f64; 3] {
     [p[0] - q[0], p[1] - q[1], p[2] - q[2]]
 }
 
-fn cross(u: [f64; 3], v: [f64; 3]) -> [f64; 3] {
+/// u × v.
+pub(crate) fn cross(u: [f64; 3], v: [f64; 3]) -> [f64; 3] {
     [
         u[1] * v[2] - u[2] * v[1],
         u[2] * v[0] - u[0] * v[2],
@@ -52,7 +54,8 @@ fn cross(u: [f64; 3], v: [f64; 3]) -> [f64; 3] {
     ]
 }
 
-fn dot(u: [f64; 3], v: [f64; 3]) -> f64 {
+/// u · v.
+pub(crate) fn dot(u: [f64; 3], v: [f64; 3]) -> f64 {
     u[0] * v[0] + u[1] * v[1] + u[2] * v[2]
 }
 

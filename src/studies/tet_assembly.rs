@@ -6,7 +6,7 @@
 use super::tetmesh::{LAYER, LOWER, TetMesh};
 use crate::error::{Error, Result, Status};
 use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
-use crate::fem::tet::TetGeometry;
+use crate::fem::tet::{TetGeometry, sub};
 use crate::linalg::ordering::{Ordering, nested_dissection};
 use crate::linalg::{AnalyseParams, Cholesky, FactorError};
 
@@ -169,8 +169,4 @@ pub fn factorize(
             format!("{system} does not factorise: {e:?}"),
         )),
     }
-}
-
-fn sub(p: [f64; 3], q: [f64; 3]) -> [f64; 3] {
-    [p[0] - q[0], p[1] - q[1], p[2] - q[2]]
 }
