@@ -183,3 +183,88 @@ pub fn solve_gap_contact(
         warnings,
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::contact::gap_tets::{GapData, GapTetrahedron};
+
+    /// One tetrahedron of body 0 and, above its top face, a flat one of B
+    /// to a fourth node: every DOF free.
+    struct Scene {
+        nodes: SolidNodes,
+        dofs: DofMap,
+        pattern: Pattern,
+        gap: GapTets,
+    }
+
+    fn scene() -> Scene {
+        let points = vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+            [0.0, 0.0, 0.0],
+        ];
+        let tets = [[0, 1, 2, 3], [0, 1, 2, 4]];
+        let nodes = SolidNodes::new(points.clone(), &tets[..1], &[Some(0)]).unwrap();
+        let dofs = DofMap::new(5, 3, |_| true);
+        // Every pair of a tetrahedron's nodes is an edge of a face.
+        let faces: Vec<[usize; 3]> = (tets.iter())
+            .flat_map(|t| [[t[0], t[1], t[2]], [t[0], t[1], t[3]], [t[0], t[2], t[3]]])
+            .collect();
+        let pattern = Pattern::build(&dofs, 5, &faces);
+        let equation = |g: usize| Some(g);
+        let data = GapData {
+            points: &points,
+            moduli: &[1.0],
+            h_c: 0.5,
+            lambda: 1.0,
+            equation: &equation,
+            prescribed: &[0.0; 15],
+        };
+        let element = GapTetrahedron {
+            nodes: [0, 1, 2, 4],
+            normal: [0.0, 0.0, 1.0],
+        };
+        let gap = GapTets::new(&[element], &data).unwrap();
+        Scene {
+            nodes,
+            dofs,
+            pattern,
+            gap,
+        }
+    }
+
+    fn solve(s: &Scene, rhs: usize, options: &ContactOptions) -> Result<SolidContact> {
+        let energy = |_: &[f64]| (0.0, 0.0);
+        let system = SolidSystem {
+            nodes: &s.nodes,
+            dofs: &s.dofs,
+            pattern: &s.pattern,
+            values: vec![0.0; s.pattern.nnz()],
+            rhs: vec![0.0; rhs],
+            prescribed: &[0.0; 15],
+            body_energy: &energy,
+        };
+        solve_gap_contact(system, s.gap.clone(), options, Ordering::Auto)
+    }
+
+    #[test]
+    fn sizes_that_do_not_fit_are_refused_by_name() {
+        let s = scene();
+        let e = solve(&s, 14, &ContactOptions::default()).unwrap_err();
+        assert!(e.message().contains("14 load values where 15"), "{e}");
+    }
+
+    #[test]
+    fn options_the_tetrahedra_do_not_read_are_refused() {
+        let s = scene();
+        let options = ContactOptions {
+            contact_modulus: Some(1.0),
+            ..Default::default()
+        };
+        let e = solve(&s, 15, &options).unwrap_err();
+        assert!(e.message().contains("leave them unset"), "{e}");
+    }
+}
