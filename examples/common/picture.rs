@@ -151,6 +151,20 @@ pub fn field_png(
     title: &str,
     path: &Path,
 ) -> Result<(), Box<dyn std::error::Error>> {
+    shaded_field_png(x, triangles, values, &[], title, path)
+}
+
+/// [`field_png`] with each triangle's colours times its `shade` in
+/// [0, 1] (a surface's lighting; empty: none), drawn in the order given
+/// (a painter's order: back to front).
+pub fn shaded_field_png(
+    x: &[[f64; 2]],
+    triangles: &[[usize; 3]],
+    values: &[f64],
+    shade: &[f64],
+    title: &str,
+    path: &Path,
+) -> Result<(), Box<dyn std::error::Error>> {
     let (vmin, vmax) = values
         .iter()
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
@@ -173,11 +187,12 @@ pub fn field_png(
     let to_pixels = |q: [f64; 2]| [x0 + s * (q[0] - lo[0]), y0 - s * (q[1] - lo[1])];
     let range = (vmax - vmin).max(f64::MIN_POSITIVE);
     let mut image = Image::new();
-    for t in triangles {
+    for (k, t) in triangles.iter().enumerate() {
+        let light = shade.get(k).copied().unwrap_or(1.0);
         image.fill_triangle(
             t.map(|v| to_pixels(x[v])),
             t.map(|v| (values[v] - vmin) / range),
-            colour,
+            |s| colour(s).map(|c| (light * c as f64).round() as u8),
         );
     }
     image.text(20, 16, title);

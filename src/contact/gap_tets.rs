@@ -32,8 +32,9 @@ pub struct GapData<'a> {
     pub points: &'a [[f64; 3]],
     /// The contact modulus E_c of each tetrahedron.
     pub moduli: &'a [f64],
-    /// The tie's length h_c (the interface's shortest edge).
-    pub h_c: f64,
+    /// The tie's length h_c of each tetrahedron (its interface's shortest
+    /// edge: pairs meshed apart keep their own).
+    pub h_c: &'a [f64],
     /// The tie's length λ (the model's size).
     pub lambda: f64,
     /// The unknown of global DOF g (3·node + component), if it has one.
@@ -63,10 +64,10 @@ impl GapTets {
     /// facing area, or a modulus or tie that is not finite and positive is
     /// refused, by its index.
     pub fn new(elements: &[GapTetrahedron], d: &GapData<'_>) -> Result<GapTets> {
-        if !(d.h_c.is_finite() && d.h_c > 0.0 && d.lambda.is_finite() && d.lambda > 0.0) {
+        if !(d.lambda.is_finite() && d.lambda > 0.0) {
             return Err(Error::argument(format!(
-                "the gap's tie needs h_c > 0 and λ > 0, finite: h_c = {:?}, λ = {:?}",
-                d.h_c, d.lambda
+                "the gap's tie needs λ > 0, finite: λ = {:?}",
+                d.lambda
             )));
         }
         if d.prescribed.len() != 3 * d.points.len() {
@@ -76,12 +77,16 @@ impl GapTets {
                 d.points.len()
             )));
         }
-        if d.moduli.len() != elements.len() {
-            return Err(Error::argument(format!(
-                "{} contact moduli for {} gap tetrahedra",
-                d.moduli.len(),
-                elements.len()
-            )));
+        for (what, len) in [
+            ("contact moduli", d.moduli.len()),
+            ("tie lengths", d.h_c.len()),
+        ] {
+            if len != elements.len() {
+                return Err(Error::argument(format!(
+                    "{len} {what} for {} gap tetrahedra",
+                    elements.len()
+                )));
+            }
         }
         let mut set = GapTets::default();
         for (e, el) in elements.iter().enumerate() {
@@ -127,7 +132,13 @@ impl GapTets {
         let j0: f64 = (0..12)
             .map(|i| w[i] * (x[i / 3][i % 3] - flat[i / 3][i % 3]))
             .sum();
-        let t_e = area * d.h_c * d.h_c / d.lambda;
+        let h_c = d.h_c[e];
+        if !(h_c.is_finite() && h_c > 0.0) {
+            return Err(Error::argument(format!(
+                "its tie length h_c = {h_c:?} must be finite and > 0"
+            )));
+        }
+        let t_e = area * h_c * h_c / d.lambda;
         let k = contact_stiffness(&w, d.moduli[e], t_e)?;
         let unknowns: [Option<usize>; 12] =
             std::array::from_fn(|i| (d.equation)(3 * el.nodes[i / 3] + i % 3));
@@ -268,7 +279,7 @@ mod tests {
         let data = GapData {
             points,
             moduli: &[2.0],
-            h_c: 0.5,
+            h_c: &[0.5],
             lambda: 1.0,
             equation: &equation,
             prescribed,

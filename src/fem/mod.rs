@@ -19,4 +19,6 @@ pub mod material;
 pub mod mesh;
 pub mod orientation;
 pub mod refine;
+pub mod solid_assembly;
+pub mod solid_mesh;
 pub mod tet;

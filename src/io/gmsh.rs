@@ -1,6 +1,9 @@
 //! Gmsh meshes (MSH 4.1, ASCII or binary). Feature `gmsh`.
 //!
-//! Physical surfaces become bodies (the physical tag is the body tag) and
+//! [`read_msh`] reads 2D meshes, [`read_solid_msh`] tetrahedral ones
+//! ([below](#three-dimensions)); both through the one reader of the file.
+//!
+//! In 2D, physical surfaces become bodies (the physical tag is the body tag) and
 //! physical curves become boundary-edge tags, for loads, supports and
 //! contact interfaces. A curve in several physical groups has its edges
 //! under every one of their tags (a side in its own group 13 and in a
@@ -11,6 +14,26 @@
 //! and ten groups of each at most, then how many more). A surface meshed clockwise (normal along −z) is
 //! turned counter-clockwise as a whole. Only 3-node triangles and 2-node lines are accepted;
 //! nodes must lie in the plane z = 0.
+//!
+//! # Three dimensions
+//!
+//! [`read_solid_msh`] takes the 4-node tetrahedra of the physical volumes
+//! as the bodies (the physical tag is the body tag) and the 3-node
+//! triangles of the physical surfaces as tagged boundary faces, a
+//! triangle in several physical surfaces under every one of their tags,
+//! as the 2D reader does with the lines of curves. As in 2D, a volume in no
+//! physical group is refused (every volume must be a body), and the
+//! triangles of surfaces in none carry nothing; unlike in 2D, a volume in
+//! several physical groups is refused too: a [`SolidMesh`] holds no
+//! warning of the reader's, and taking the first group without a word
+//! could give a volume the wrong material. Lines and points, physical or
+//! not, are not used (nothing of a solid mesh refers to them); elements of
+//! higher order (10-node tetrahedra, 6-node triangles, 3-node lines) are
+//! refused. Nodes are anywhere in space: the 2D reader's check of z = 0 is
+//! not made. A tagged triangle must be the face of exactly one tetrahedron
+//! (a side of the bodies, not an interface inside a body's mesh): the
+//! mesh's check, its refusal naming the Gmsh element. A 2D file read as a
+//! solid mesh is refused: it has no tetrahedra in a physical volume.
 //!
 //! # What is refused, and how it is said
 //!
@@ -94,6 +117,7 @@ use std::path::Path;
 
 use crate::error::{Error, Result, Status};
 use crate::fem::mesh::{Mesh, Names, Places};
+use crate::fem::solid_mesh::SolidMesh;
 
 /// A failure while reading: the status and the message, without the path
 /// or the section (added by [`read_msh`]).
@@ -840,6 +864,7 @@ fn type_name(ty: i32) -> String {
         8 => "3-node lines",
         9 => "6-node triangles",
         10 => "9-node quadrangles",
+        11 => "10-node tetrahedra",
         15 => "1-node points",
         16 => "8-node quadrangles",
         20 => "9-node triangles",
@@ -850,7 +875,16 @@ fn type_name(ty: i32) -> String {
     format!("Gmsh type {ty} ({name})")
 }
 
-fn elements(r: &mut Reader, groups: Groups) -> Parse<Vec<Block>> {
+/// Which mesh the file is read for: what elements it may hold.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Dims {
+    /// A 2D mesh ([`read_msh`]): triangles and lines, no volume elements.
+    Plane,
+    /// A 3D mesh ([`read_solid_msh`]): tetrahedra, triangles and lines.
+    Solid,
+}
+
+fn elements(r: &mut Reader, groups: Groups, dims: Dims) -> Parse<Vec<Block>> {
     const BLOCK: Cost = cost(3, 1, 0);
     // The smallest element: a point, its tag and one node.
     const ELEMENT: Cost = cost(0, 2, 0);
@@ -863,7 +897,7 @@ fn elements(r: &mut Reader, groups: Groups) -> Parse<Vec<Block>> {
     let mut blocks = Vec::new();
     let (mut found, mut range) = (0, (u64::MAX, 0));
     for b in 0..n_blocks {
-        let block = element_block(r, groups, &mut found, &mut range)
+        let block = element_block(r, groups, dims, &mut found, &mut range)
             .map_err(|f| f.within(format!("entity block {} of {n_blocks}", b + 1)))?;
         // Points carry nothing we use.
         if block.dim > 0 {
@@ -880,6 +914,7 @@ fn elements(r: &mut Reader, groups: Groups) -> Parse<Vec<Block>> {
 fn element_block(
     r: &mut Reader,
     groups: Groups,
+    dims: Dims,
     found: &mut usize,
     range: &mut (u64, u64),
 ) -> Parse<Block> {
@@ -888,6 +923,14 @@ fn element_block(
     let ty = r.int("the element type")?;
     let place = || groups.place(dim, entity);
     let nodes_per = match (dim, ty) {
+        (3, 4) if dims == Dims::Solid => 4,
+        (3, _) if dims == Dims::Solid => {
+            return Err(Fail::mesh(format!(
+                "{} has elements of {}: only 4-node tetrahedra are supported",
+                place(),
+                type_name(ty)
+            )));
+        }
         (2, 2) => 3,
         (1, 1) => 2,
         (0, 15) => 1,
@@ -960,7 +1003,7 @@ fn in_section<T>(section: &str, result: Parse<T>) -> Parse<T> {
     result.map_err(|f| f.within(section))
 }
 
-fn parse(bytes: &[u8]) -> Parse<MshFile> {
+fn parse(bytes: &[u8], dims: Dims) -> Parse<MshFile> {
     let mut r = Reader {
         bytes,
         pos: 0,
@@ -1022,7 +1065,7 @@ fn parse(bytes: &[u8]) -> Parse<MshFile> {
             }
             "$Entities" => file.entities = Some(in_section(section, entities(&mut r))?),
             "$Nodes" => file.nodes = Some(in_section(section, nodes(&mut r))?),
-            _ => file.elements = Some(in_section(section, elements(&mut r, groups))?),
+            _ => file.elements = Some(in_section(section, elements(&mut r, groups, dims))?),
         }
         let end = format!("$End{}", &section[1..]);
         in_section(section, r.end(&end, "the data the header announces"))?;
@@ -1106,6 +1149,28 @@ fn read_file(path: &Path) -> std::io::Result<Vec<u8>> {
 /// 2.2, with how to convert it), an element type, node or triangle we
 /// cannot take (named with its entity and physical group).
 pub fn read_msh(path: &Path, index_base: usize) -> Result<Mesh> {
+    read_with(path, |bytes| build(bytes, index_base))
+}
+
+/// Reads a Gmsh MSH 4.1 file into a tetrahedral [`SolidMesh`] with its
+/// tagged boundary faces: the tetrahedra of the physical volumes are the
+/// bodies, the triangles of the physical surfaces the faces that loads,
+/// supports and contact refer to ([module documentation](self#three-dimensions)).
+/// `index_base` only affects how messages number items.
+///
+/// Errors as [`read_msh`]'s: [`Status::Io`] for a file that cannot be
+/// read or is not well-formed MSH 4.1, [`Status::InvalidMesh`] for content
+/// a tetrahedral mesh cannot take (no tetrahedra in a physical volume, as
+/// in a 2D file; elements of higher order; a tagged triangle that is not
+/// the face of exactly one tetrahedron), named by the file's element and
+/// node tags and physical groups.
+pub fn read_solid_msh(path: &Path, index_base: usize) -> Result<SolidMesh> {
+    read_with(path, |bytes| build_solid(bytes, index_base))
+}
+
+/// What `build` makes of the file at `path`, its failures prefixed with
+/// the path: a caller reading several files must know which one failed.
+fn read_with<T>(path: &Path, build: impl FnOnce(&[u8]) -> Parse<T>) -> Result<T> {
     // The system's message for it would name nothing (": No such file or
     // directory").
     if path.as_os_str().is_empty() {
@@ -1113,8 +1178,7 @@ pub fn read_msh(path: &Path, index_base: usize) -> Result<Mesh> {
     }
     let bytes =
         read_file(path).map_err(|e| Error::new(Status::Io, format!("{}: {e}", path.display())))?;
-    build(&bytes, index_base)
-        .map_err(|f| Error::new(f.status, format!("{}: {}", path.display(), f.message)))
+    build(&bytes).map_err(|f| Error::new(f.status, format!("{}: {}", path.display(), f.message)))
 }
 
 /// Where the file puts each node, triangle and edge of the mesh built
@@ -1157,7 +1221,7 @@ fn build(bytes: &[u8], index_base: usize) -> Parse<Mesh> {
         nodes,
         blocks,
         names,
-    } = parse(bytes)?.required()?;
+    } = parse(bytes, Dims::Plane)?.required()?;
     let groups = Groups {
         entities: Some(&entities),
         names: &names,
@@ -1470,4 +1534,299 @@ fn bounded_list(items: &[String]) -> String {
         out.push_str(&format!(" and {} more", items.len() - SHOWN));
     }
     out
+}
+
+// ---------------------------------------------------------------------------
+// Tetrahedral meshes (read_solid_msh).
+// ---------------------------------------------------------------------------
+
+/// The tetrahedral mesh of the file's bytes: the same sections as
+/// [`build`]'s, the tetrahedra of the physical volumes as bodies and the
+/// triangles of the physical surfaces as tagged faces, checked with
+/// messages in the file's terms.
+fn build_solid(bytes: &[u8], index_base: usize) -> Parse<SolidMesh> {
+    let Sections {
+        entities,
+        nodes,
+        blocks,
+        names,
+    } = parse(bytes, Dims::Solid)?.required()?;
+    let groups = Groups {
+        entities: Some(&entities),
+        names: &names,
+    };
+    let index = NodeIndex {
+        nodes: &nodes,
+        groups,
+    };
+    let (mut tets, mut faces) = (Tets::default(), Faces::default());
+    for block in &blocks {
+        match block.dim {
+            3 => tets.add_block(block, &index)?,
+            2 => {
+                if let Some(physical) = entities.surfaces.get(&block.entity) {
+                    faces.add_block(block, physical, &index)?;
+                }
+            }
+            // Lines: nothing of a solid mesh refers to them.
+            _ => {}
+        }
+    }
+    if tets.nodes.is_empty() {
+        let surfaces_only = blocks.iter().any(|b| b.dim == 2);
+        return Err(Fail::mesh(format!(
+            "$Elements: no tetrahedra in a physical volume: a 3D mesh needs 4-node tetrahedra \
+             in physical volumes{}",
+            if surfaces_only {
+                " (the file has surface elements only: a 2D mesh?)"
+            } else {
+                ""
+            }
+        )));
+    }
+    check_finite(&nodes, groups, index_base)?;
+    let Nodes {
+        xyz,
+        tags: node_tags,
+        ..
+    } = nodes;
+    let names = SolidNames {
+        index_base,
+        node_tags: &node_tags,
+        groups,
+        faces: &faces,
+    };
+    names.check_tets(&tets)?;
+    let mut mesh = SolidMesh::new(xyz, tets.nodes, tets.bodies, index_base).map_err(from_error)?;
+    set_faces(&mut mesh, &names)?;
+    Ok(mesh)
+}
+
+/// A mesh's error as a reader's failure.
+fn from_error(e: Error) -> Fail {
+    Fail {
+        status: e.status(),
+        message: e.message().to_string(),
+    }
+}
+
+/// Refuses a node with a coordinate that is not finite, named by its tag
+/// and entity (the mesh would name it by an index the user cannot look
+/// up in the file).
+fn check_finite(nodes: &Nodes, groups: Groups, index_base: usize) -> Parse<()> {
+    let Some((k, p)) =
+        (nodes.xyz.iter().enumerate()).find(|(_, p)| p.iter().any(|x| !x.is_finite()))
+    else {
+        return Ok(());
+    };
+    let place =
+        block_of(&nodes.blocks, |b| b.0, k).map(|&(_, dim, entity)| groups.place(dim, entity));
+    let of = place.map_or_else(String::new, |p| format!(" of {p}"));
+    Err(Fail::mesh(format!(
+        "node {} (Gmsh node {}{of}): coordinates ({:?}, {:?}, {:?}) are not finite",
+        k + index_base,
+        nodes.tags[k],
+        p[0],
+        p[1],
+        p[2]
+    )))
+}
+
+/// The tetrahedra of the physical volumes, with where each came from in
+/// the file, for messages.
+#[derive(Default)]
+struct Tets {
+    nodes: Vec<[usize; 4]>,
+    bodies: Vec<i32>,
+    /// The file's element tag of each tetrahedron.
+    elements: Vec<u64>,
+    /// (first tetrahedron, volume, body) of each block.
+    blocks: Vec<(usize, i32, i32)>,
+}
+
+impl Tets {
+    /// Adds a block of tetrahedra, of the body of its volume's physical
+    /// group. A volume in none is refused, as a surface is in 2D: every
+    /// volume must be a body. A volume in several is refused too: a
+    /// tetrahedron has one body, and a solid mesh has no warnings to say
+    /// which group was dropped.
+    fn add_block(&mut self, block: &Block, index: &NodeIndex) -> Parse<()> {
+        let body = match index.groups.of(3, block.entity) {
+            [body] => *body,
+            [] => {
+                return Err(Fail::mesh(format!(
+                    "$Elements: volume {} has no physical group in $Entities: every volume must \
+                     be a body",
+                    block.entity
+                )));
+            }
+            _ => {
+                return Err(Fail::mesh(format!(
+                    "$Elements: {}: a tetrahedron has one body, so a volume must be in one \
+                     physical group",
+                    index.groups.place(3, block.entity)
+                )));
+            }
+        };
+        self.blocks.push((self.nodes.len(), block.entity, body));
+        for (&element, e) in block
+            .tags
+            .iter()
+            .zip(block.node_tags.chunks_exact(block.nodes_per))
+        {
+            self.nodes.push([
+                index.of(block, element, e[0])?,
+                index.of(block, element, e[1])?,
+                index.of(block, element, e[2])?,
+                index.of(block, element, e[3])?,
+            ]);
+            self.bodies.push(body);
+            self.elements.push(element);
+        }
+        Ok(())
+    }
+}
+
+/// The tagged triangles of the physical surfaces, with where each came
+/// from in the file, for messages.
+#[derive(Default)]
+struct Faces {
+    nodes: Vec<[usize; 3]>,
+    /// The tag of each face: a physical group of its surface.
+    tags: Vec<i32>,
+    /// The file's element tag of each face.
+    elements: Vec<u64>,
+    /// (first face, surface) of each block.
+    blocks: Vec<(usize, i32)>,
+}
+
+impl Faces {
+    /// Adds a block of triangles of a surface in the groups `physical`,
+    /// each triangle once per group, as [`Edges::add_block`] does with
+    /// lines: a side may be in its own group and in "the whole boundary".
+    fn add_block(&mut self, block: &Block, physical: &[i32], index: &NodeIndex) -> Parse<()> {
+        self.blocks.push((self.nodes.len(), block.entity));
+        for (&element, e) in block
+            .tags
+            .iter()
+            .zip(block.node_tags.chunks_exact(block.nodes_per))
+        {
+            let nodes = [
+                index.of(block, element, e[0])?,
+                index.of(block, element, e[1])?,
+                index.of(block, element, e[2])?,
+            ];
+            for &tag in physical {
+                self.nodes.push(nodes);
+                self.tags.push(tag);
+                self.elements.push(element);
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Names the nodes, tetrahedra and faces of a solid mesh as the file
+/// does, for messages: by index and by the file's tags and groups.
+struct SolidNames<'a> {
+    index_base: usize,
+    node_tags: &'a [u64],
+    groups: Groups<'a>,
+    faces: &'a Faces,
+}
+
+impl SolidNames<'_> {
+    /// Node `i`: "5 (Gmsh node 1006)".
+    fn node(&self, i: usize) -> String {
+        format!("{} (Gmsh node {})", i + self.index_base, self.node_tags[i])
+    }
+
+    /// Tetrahedron `e`: "tetrahedron 3 (Gmsh element 57 of volume 1 in
+    /// physical group 7)".
+    fn tet(&self, tets: &Tets, e: usize) -> String {
+        let place = block_of(&tets.blocks, |b| b.0, e)
+            .map_or_else(String::new, |&(_, volume, body)| {
+                format!(" of {}", self.groups.place_in(3, volume, body))
+            });
+        format!(
+            "tetrahedron {} (Gmsh element {}{place})",
+            e + self.index_base,
+            tets.elements[e]
+        )
+    }
+
+    /// Face `f`: "Gmsh triangle element 12 of surface 3 in physical group
+    /// 20 (Gmsh nodes 5, 6, 9)".
+    fn face(&self, f: usize) -> String {
+        let place = block_of(&self.faces.blocks, |b| b.0, f).map_or_else(String::new, |b| {
+            format!(" of {}", self.groups.place_in(2, b.1, self.faces.tags[f]))
+        });
+        let [p, q, r] = self.faces.nodes[f].map(|v| self.node_tags[v]);
+        format!(
+            "Gmsh triangle element {}{place} (Gmsh nodes {p}, {q}, {r})",
+            self.faces.elements[f]
+        )
+    }
+
+    /// Refuses a tetrahedron with a repeated node, and one given twice
+    /// (the same four nodes in any order: its stiffness would count twice,
+    /// as the 2D mesh refuses a triangle given twice).
+    fn check_tets(&self, tets: &Tets) -> Parse<()> {
+        for (e, t) in tets.nodes.iter().enumerate() {
+            if let Some(&v) = (0..4).find_map(|i| t[i + 1..].iter().find(|&&w| w == t[i])) {
+                return Err(Fail::mesh(format!(
+                    "{}: node {} is repeated ({})",
+                    self.tet(tets, e),
+                    self.node(v),
+                    t.map(|v| self.node(v)).join(", ")
+                )));
+            }
+        }
+        let mut keyed: Vec<([usize; 4], usize)> = (tets.nodes.iter().enumerate())
+            .map(|(e, t)| {
+                let mut key = *t;
+                key.sort_unstable();
+                (key, e)
+            })
+            .collect();
+        keyed.sort_unstable();
+        if let Some(w) = keyed.windows(2).find(|w| w[0].0 == w[1].0) {
+            return Err(Fail::mesh(format!(
+                "{} has the nodes of {}: a tetrahedron given twice would count twice",
+                self.tet(tets, w[1].1),
+                self.tet(tets, w[0].1)
+            )));
+        }
+        Ok(())
+    }
+}
+
+/// Gives `mesh` the file's tagged faces, or the mesh's refusal of the
+/// first face it refuses, named as the file names it: the mesh's message
+/// says "boundary face 7", an index the user cannot look up in the file.
+fn set_faces(mesh: &mut SolidMesh, names: &SolidNames) -> Parse<()> {
+    let (faces, tags) = (&names.faces.nodes, &names.faces.tags);
+    let Err(mut error) = mesh.set_boundary_faces(faces, tags) else {
+        return Ok(());
+    };
+    // The mesh checks each face against the tetrahedra and the faces
+    // before it, so the shortest prefix refused ends with the first face
+    // refused: found by bisection (a few passes over the mesh, on the
+    // error path only), `ok` accepted and `bad` refused.
+    let (mut ok, mut bad) = (0, faces.len());
+    while bad - ok > 1 {
+        let mid = ok + (bad - ok) / 2;
+        match mesh.set_boundary_faces(&faces[..mid], &tags[..mid]) {
+            Ok(()) => ok = mid,
+            Err(e) => (bad, error) = (mid, e),
+        }
+    }
+    Err(Fail {
+        status: error.status(),
+        message: format!(
+            "$Elements: {}: {}",
+            names.face(bad.max(1) - 1),
+            error.message()
+        ),
+    })
 }

@@ -3,7 +3,8 @@
 //!
 //! # What the file holds
 //!
-//! The mesh in its initial configuration (points with z = 0, 3-node
+//! Of a 2D model ([`write_vtu`]; a tetrahedral mesh: [below](#solid-meshes)),
+//! the mesh in its initial configuration (points with z = 0, 3-node
 //! triangles) and, by name:
 //!
 //! | array | on | type, components | what |
@@ -30,6 +31,20 @@
 //! mortar weighting ([`ContactWeighting::Mortar`](crate::ContactWeighting::Mortar)) have no B: their
 //! contact state is per node, and the nodal arrays carry it.
 //!
+//! # Solid meshes
+//!
+//! [`write_solid_vtu`] writes a tetrahedral [`SolidMesh`] (points in
+//! space, 4-node tetrahedra, VTK type 10) with the fields its caller gives
+//! in [`SolidFields`], each array only where given:
+//!
+//! | array | on | type, components | what |
+//! |---|---|---|---|
+//! | `displacement` | points | Float64, 3 | [u, v, w] |
+//! | `contact_pressure` | points | Float64, 1 | the contact pressure at each node, positive in compression |
+//! | `body` | cells | Int32, 1 | the body tag of a tetrahedron |
+//! | `J` | cells | Float64, 1 | six times the signed volume (flat tetrahedra, which TFEM tempers, show as J ≈ 0) |
+//! | `stress` | cells | Float64, 6 | [σ_xx, σ_yy, σ_zz, σ_xy, σ_yz, σ_xz]: VTK's order of a symmetric tensor, which its tensor filters (principal stresses, glyphs) read, not Voigt's order the caller gives |
+//!
 //! # The format
 //!
 //! `<VTKFile type="UnstructuredGrid" version="1.0" byte_order="LittleEndian"
@@ -39,7 +54,7 @@
 //! byte count (UInt64) followed by its values, little-endian, with no
 //! compression. Connectivity and offsets are Int32 when every index fits
 //! (any mesh tfem can hold in memory today), else Int64; the cell types
-//! UInt8 (5, `VTK_TRIANGLE`). Raw appended data is the compact form both
+//! UInt8 (5, `VTK_TRIANGLE`, or 10, `VTK_TETRA`). Raw appended data is the compact form both
 //! VTK (ParaView's reader) and meshio read: 8 bytes per Float64, where the
 //! inline base64 form takes 10.7 and ASCII about 24.
 //!
@@ -60,10 +75,13 @@ use crate::contact::ContactElement;
 use crate::error::{Error, Result, Status};
 use crate::fem::element::TriGeometry;
 use crate::fem::mesh::Mesh;
+use crate::fem::solid_mesh::SolidMesh;
 use crate::model::Model;
 
 /// `VTK_TRIANGLE`.
 const TRIANGLE: u8 = 5;
+/// `VTK_TETRA`.
+const TETRA: u8 = 10;
 
 /// The scalar types of the arrays written, as VTK names them.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -120,6 +138,10 @@ const SCALAR: &[&str] = &["value"];
 const XYZ: &[&str] = &["x", "y", "z"];
 /// Voigt components of a plane strain or stress.
 const VOIGT: &[&str] = &["xx", "yy", "xy"];
+/// A symmetric tensor in space, in the order VTK's tensor filters read
+/// six components (`vtkTensorPrincipalInvariants` takes the fourth as
+/// xy), not Voigt's.
+const SYMMETRIC: &[&str] = &["xx", "yy", "zz", "xy", "yz", "xz"];
 
 fn f64s<'a, I>(values: impl Fn() -> I + 'a) -> Values<'a>
 where
@@ -162,10 +184,49 @@ where
 }
 
 /// Whether connectivity and offsets need Int64: a node index or an
-/// offset past `i32::MAX`.
-fn wide_indices(points: usize, cells: usize) -> bool {
+/// offset (`corners` per cell) past `i32::MAX`.
+fn wide_indices(points: usize, cells: usize, corners: usize) -> bool {
     let max = i32::MAX as usize;
-    points > max || cells > max / 3
+    points > max || cells > max / corners
+}
+
+/// The `Cells` arrays of `n_cells` cells of one VTK type, `corners` nodes
+/// each, listed by `connectivity` (the nodes of every cell in turn).
+fn cell_arrays<'a, I>(
+    n_points: usize,
+    n_cells: usize,
+    corners: usize,
+    cell_type: u8,
+    connectivity: impl Fn() -> I + 'a,
+) -> Vec<Array<'a>>
+where
+    I: Iterator<Item = usize>,
+{
+    let wide = wide_indices(n_points, n_cells, corners);
+    let index = if wide { Scalar::Int64 } else { Scalar::Int32 };
+    vec![
+        Array {
+            name: "connectivity",
+            scalar: index,
+            components: SCALAR,
+            tuples: corners * n_cells,
+            values: indices(wide, connectivity),
+        },
+        Array {
+            name: "offsets",
+            scalar: index,
+            components: SCALAR,
+            tuples: n_cells,
+            values: indices(wide, move || (1..=n_cells).map(move |k| corners * k)),
+        },
+        Array {
+            name: "types",
+            scalar: Scalar::UInt8,
+            components: SCALAR,
+            tuples: n_cells,
+            values: Box::new(move |w| (0..n_cells).try_for_each(|_| w.write_all(&[cell_type]))),
+        },
+    ]
 }
 
 /// Writes the mesh in its initial configuration with the solved fields
@@ -287,6 +348,7 @@ impl<'a> Results<'a> {
             n_cells: self.n_cells(),
             points: self.points(),
             cells: self.cells(),
+            point_attributes: DISPLACEMENT_VECTORS,
             point_data: self.point_data(),
             cell_data: self.cell_data(),
         }
@@ -306,38 +368,13 @@ impl<'a> Results<'a> {
     /// The cells: the body triangles, then the elements of B.
     fn cells(&self) -> Vec<Array<'a>> {
         let (triangles, b) = (self.mesh.triangles(), self.b());
-        let n_cells = self.n_cells();
-        let wide = wide_indices(self.n_points(), n_cells);
-        let index = if wide { Scalar::Int64 } else { Scalar::Int32 };
-        vec![
-            Array {
-                name: "connectivity",
-                scalar: index,
-                components: SCALAR,
-                tuples: 3 * n_cells,
-                values: indices(wide, move || {
-                    triangles
-                        .iter()
-                        .chain(b.iter().map(|e| &e.nodes))
-                        .flatten()
-                        .copied()
-                }),
-            },
-            Array {
-                name: "offsets",
-                scalar: index,
-                components: SCALAR,
-                tuples: n_cells,
-                values: indices(wide, move || (1..=n_cells).map(|k| 3 * k)),
-            },
-            Array {
-                name: "types",
-                scalar: Scalar::UInt8,
-                components: SCALAR,
-                tuples: n_cells,
-                values: Box::new(move |w| (0..n_cells).try_for_each(|_| w.write_all(&[TRIANGLE]))),
-            },
-        ]
+        cell_arrays(self.n_points(), self.n_cells(), 3, TRIANGLE, move || {
+            triangles
+                .iter()
+                .chain(b.iter().map(|e| &e.nodes))
+                .flatten()
+                .copied()
+        })
     }
 
     /// The arrays on the points: the displacement, and the nodal contact
@@ -486,12 +523,151 @@ impl<'a> Results<'a> {
     }
 }
 
+/// The fields written with a tetrahedral mesh by [`write_solid_vtu`], each
+/// where given: a solid solve's results are plain arrays (there is no 3D
+/// model to read them from), so the caller hands over those it has.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct SolidFields<'a> {
+    /// The displacement of every node.
+    pub displacement: Option<&'a [[f64; 3]]>,
+    /// The stress of every tetrahedron, in Voigt's order [σ_xx, σ_yy,
+    /// σ_zz, σ_yz, σ_xz, σ_xy].
+    pub stress: Option<&'a [[f64; 6]]>,
+    /// The contact pressure at every node, positive in compression.
+    pub contact_pressure: Option<&'a [f64]>,
+}
+
+/// Writes a tetrahedral mesh in its initial configuration with the fields
+/// given (the arrays of the [module's table](self#solid-meshes)): cell
+/// data `body` and `J` always; point data `displacement` and
+/// `contact_pressure`, cell data `stress`, each where `fields` has it.
+///
+/// Errors: [`Status::InvalidArgument`] for a field of another length than
+/// the mesh's nodes or tetrahedra (the message names the field and both
+/// lengths; nothing is written), [`Status::Io`] when the file cannot be
+/// written (the message names it and the reason).
+pub fn write_solid_vtu(mesh: &SolidMesh, fields: &SolidFields<'_>, path: &Path) -> Result<()> {
+    let (n_points, n_cells) = (mesh.nodes().len(), mesh.tets().len());
+    let check = |name: &str, len: Option<usize>, want: usize, of: &str| match len {
+        Some(len) if len != want => Err(Error::argument(format!(
+            "{name} has {len} values for the mesh's {want} {of}"
+        ))),
+        _ => Ok(()),
+    };
+    check(
+        "displacement",
+        fields.displacement.map(<[_]>::len),
+        n_points,
+        "nodes",
+    )?;
+    check(
+        "stress",
+        fields.stress.map(<[_]>::len),
+        n_cells,
+        "tetrahedra",
+    )?;
+    check(
+        "contact_pressure",
+        fields.contact_pressure.map(<[_]>::len),
+        n_points,
+        "nodes",
+    )?;
+    write_file(&solid_grid(mesh, fields), path)
+        .map_err(|e| Error::new(Status::Io, format!("cannot write {}: {e}", path.display())))
+}
+
+/// Every array of a solid mesh's file, section by section.
+fn solid_grid<'a>(mesh: &'a SolidMesh, fields: &SolidFields<'a>) -> Grid<'a> {
+    let (n_points, n_cells) = (mesh.nodes().len(), mesh.tets().len());
+    let nodes = mesh.nodes();
+    let tets = mesh.tets();
+    let mut point_data = Vec::new();
+    if let Some(u) = fields.displacement {
+        point_data.push(Array {
+            name: "displacement",
+            scalar: Scalar::Float64,
+            components: XYZ,
+            tuples: n_points,
+            values: f64s(move || u.iter().flatten().copied()),
+        });
+    }
+    if let Some(p) = fields.contact_pressure {
+        point_data.push(Array {
+            name: "contact_pressure",
+            scalar: Scalar::Float64,
+            components: SCALAR,
+            tuples: n_points,
+            values: f64s(move || p.iter().copied()),
+        });
+    }
+    let mut cell_data = vec![
+        Array {
+            name: "body",
+            scalar: Scalar::Int32,
+            components: SCALAR,
+            tuples: n_cells,
+            values: Box::new(move |w| {
+                (mesh.body_of().iter()).try_for_each(|t| w.write_all(&t.to_le_bytes()))
+            }),
+        },
+        Array {
+            name: "J",
+            scalar: Scalar::Float64,
+            components: SCALAR,
+            tuples: n_cells,
+            values: f64s(move || (0..n_cells).map(move |e| mesh.geometry(e).j)),
+        },
+    ];
+    if let Some(stress) = fields.stress {
+        cell_data.push(Array {
+            name: "stress",
+            scalar: Scalar::Float64,
+            components: SYMMETRIC,
+            tuples: n_cells,
+            // Voigt's [xx, yy, zz, yz, xz, xy] in VTK's order.
+            values: f64s(move || {
+                stress
+                    .iter()
+                    .flat_map(|s| [s[0], s[1], s[2], s[5], s[3], s[4]])
+            }),
+        });
+    }
+    Grid {
+        n_points,
+        n_cells,
+        points: vec![Array {
+            name: "Points",
+            scalar: Scalar::Float64,
+            components: XYZ,
+            tuples: n_points,
+            values: f64s(move || nodes.iter().flatten().copied()),
+        }],
+        cells: cell_arrays(n_points, n_cells, 4, TETRA, move || {
+            tets.iter().flatten().copied()
+        }),
+        point_attributes: if fields.displacement.is_some() {
+            DISPLACEMENT_VECTORS
+        } else {
+            ""
+        },
+        point_data,
+        cell_data,
+    }
+}
+
+/// The attribute of `PointData` that makes the displacement its active
+/// vectors (ParaView's "Warp By Vector" picks it).
+const DISPLACEMENT_VECTORS: &str = " Vectors=\"displacement\"";
+
 /// The arrays of a piece, section by section.
 struct Grid<'a> {
     n_points: usize,
     n_cells: usize,
     points: Vec<Array<'a>>,
     cells: Vec<Array<'a>>,
+    /// The attributes of `PointData` naming its active arrays: none where
+    /// the array they would name is not written.
+    point_attributes: &'static str,
     point_data: Vec<Array<'a>>,
     cell_data: Vec<Array<'a>>,
 }
@@ -501,7 +677,7 @@ impl Grid<'_> {
     /// attributes that name its active arrays.
     fn sections(&self) -> [(&'static str, &'static str, &[Array<'_>]); 4] {
         [
-            ("PointData", " Vectors=\"displacement\"", &self.point_data),
+            ("PointData", self.point_attributes, &self.point_data),
             ("CellData", "", &self.cell_data),
             ("Points", "", &self.points),
             ("Cells", "", &self.cells),
@@ -569,9 +745,11 @@ mod tests {
     #[test]
     fn indices_are_int32_up_to_the_largest_node_index_and_offset_that_fit() {
         let max = i32::MAX as usize;
-        assert!(!wide_indices(max, max / 3));
-        assert!(wide_indices(max + 1, 1));
-        assert!(wide_indices(1, max / 3 + 1));
+        assert!(!wide_indices(max, max / 3, 3));
+        assert!(wide_indices(max + 1, 1, 3));
+        assert!(wide_indices(1, max / 3 + 1, 3));
+        assert!(!wide_indices(max, max / 4, 4));
+        assert!(wide_indices(1, max / 4 + 1, 4));
     }
 
     #[test]

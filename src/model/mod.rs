@@ -15,6 +15,7 @@ pub mod estimate;
 mod facing;
 pub mod problem;
 mod restart;
+pub mod solid;
 pub mod solution;
 mod stepping;
 

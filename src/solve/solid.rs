@@ -11,7 +11,7 @@ use super::active_set::{ActiveSetLoop, LoopInput};
 use super::condensed::Condensed;
 use super::linear::{Bookkeeping, Energy, Structure, SystemAndFactor};
 use super::report::{IterationRecord, SolveInfo, Timings};
-use super::session::{Settings, Wanted, factorisation};
+use super::session::{Analysis, Settings, Wanted, factorisation};
 use super::system::AssembledSystem;
 use super::{conditioning_warning, finite_statistics};
 use crate::contact::constraints::Constraints;
@@ -19,13 +19,13 @@ use crate::contact::gap_tets::GapTets;
 use crate::contact::{ContactLaw, ContactOptions};
 use crate::error::{Error, Result};
 use crate::fem::assembly::{DofMap, Pattern};
-use crate::fem::domain::{Domain, SolidNodes};
+use crate::fem::domain::Domain;
 use crate::linalg::Ordering;
 
 /// A tetrahedral mesh's system before contact: its bodies' part assembled.
 pub struct SolidSystem<'a> {
     /// The nodes and their bodies.
-    pub nodes: &'a SolidNodes,
+    pub nodes: &'a dyn Domain,
     /// The unknowns (three per node).
     pub dofs: &'a DofMap,
     /// The pattern of the bodies' tetrahedra and B's.
@@ -112,6 +112,22 @@ pub struct SolidContact {
     pub warnings: Vec<String>,
 }
 
+/// What one tetrahedral contact solve hands the next on the same
+/// structure (unknowns, pattern, ordering): the symbolic analysis and its
+/// factor's storage, so that a load history analyses once.
+#[derive(Default)]
+pub struct SolidAnalysis {
+    analysis: Option<Analysis>,
+}
+
+impl std::fmt::Debug for SolidAnalysis {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("SolidAnalysis")
+            .field("analysed", &self.analysis.is_some())
+            .finish()
+    }
+}
+
 /// Solves `system` with B's tetrahedra `gap` switched on where they would
 /// invert (frictionless), by the active-set loop under `options` (its
 /// iterations and `refactorize`; B's law, E_c and λ are `gap`'s own, so
@@ -126,8 +142,32 @@ pub fn solve_gap_contact(
     options: &ContactOptions,
     ordering: Ordering,
 ) -> Result<SolidContact> {
+    let mut fresh = SolidAnalysis::default();
+    solve_gap_contact_from(system, gap, options, ordering, &mut fresh, None)
+}
+
+/// [`solve_gap_contact`] reusing `analysis` where it was made for the same
+/// structure and ordering (else analysing anew into it), and starting from
+/// the set `start` (one flag per tetrahedron of `gap`; `None`: those
+/// touching or overlapping at rest) — a step of a load history,
+/// warm-started from the step before.
+pub fn solve_gap_contact_from(
+    system: SolidSystem<'_>,
+    gap: GapTets,
+    options: &ContactOptions,
+    ordering: Ordering,
+    analysis: &mut SolidAnalysis,
+    start: Option<Vec<bool>>,
+) -> Result<SolidContact> {
     check_options(options)?;
     system.check(&gap)?;
+    if let Some(set) = start.as_ref().filter(|s| s.len() != gap.len()) {
+        return Err(Error::argument(format!(
+            "a start of {} flags for {} gap tetrahedra",
+            set.len(),
+            gap.len()
+        )));
+    }
     let (dofs, pattern) = (system.dofs, system.pattern);
     let set = Constraints::of_gap(gap, system.prescribed, options)?;
     let interface = match options.refactorize {
@@ -147,13 +187,13 @@ pub fn solve_gap_contact(
     let (mut timings, mut info) = (Timings::default(), SolveInfo::default());
     info.unknowns = dofs.n_free();
     info.matrix_nnz = pattern.nnz();
-    let mut analysis = None;
     let mut books = Bookkeeping::new(&mut timings, &mut info);
     let settings = Settings {
         ordering,
         ..Settings::default()
     };
-    let chol = factorisation(&mut analysis, at, settings, want, &mut books)?;
+    let analysis = &mut analysis.analysis;
+    let chol = factorisation(analysis, at, settings, want, &mut books)?;
     let mut assembled = AssembledSystem::of_bodies(system.values, system.rhs);
     let input = LoopInput {
         at,
@@ -166,7 +206,8 @@ pub fn solve_gap_contact(
         chol,
         system: &mut assembled,
     };
-    let settled = ActiveSetLoop::new(input, linear, books, None).run()?;
+    let start = start.map(|s| (s, Vec::new()));
+    let settled = ActiveSetLoop::new(input, linear, books, start).run()?;
     info.relative_residual = assembled.relative_residual(pattern, &settled.x);
     info.timings = timings;
     if let Some(a) = analysis.as_ref() {
@@ -188,6 +229,7 @@ pub fn solve_gap_contact(
 mod tests {
     use super::*;
     use crate::contact::gap_tets::{GapData, GapTetrahedron};
+    use crate::fem::domain::SolidNodes;
 
     /// One tetrahedron of body 0 and, above its top face, a flat one of B
     /// to a fourth node: every DOF free.
@@ -218,7 +260,7 @@ mod tests {
         let data = GapData {
             points: &points,
             moduli: &[1.0],
-            h_c: 0.5,
+            h_c: &[0.5],
             lambda: 1.0,
             equation: &equation,
             prescribed: &[0.0; 15],

@@ -412,7 +412,7 @@ fn product_loop(system: &System, problem: &TetContactProblem<'_>) -> Result<Solv
     let data = GapData {
         points: &mesh.nodes,
         moduli: &vec![e_c; elements.len()],
-        h_c: problem.h_c,
+        h_c: &vec![problem.h_c; elements.len()],
         lambda: problem.lambda,
         equation: &equation,
         prescribed: &system.prescribed,

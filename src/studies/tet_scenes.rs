@@ -4,9 +4,12 @@
 
 use super::tet_contact::{ContactLoop, TetContactProblem, solve_contact};
 use super::tetmesh::{LAYER, LOWER, Split, TetMesh, UPPER};
+use crate::contact::ContactOptions;
 use crate::error::{Error, Result};
 use crate::fem::element::Tempering;
+use crate::fem::solid_mesh::{Brick, SolidMesh};
 use crate::linalg::ordering::Ordering;
+use crate::model::solid::{Axis, SolidMaterial, SolidModel};
 use crate::solve::report::Timings;
 
 /// The seed scene in three dimensions (issue 41): Ω1 = [0, L]² × [−H1, 0]
@@ -23,8 +26,8 @@ pub struct TwoBlocks3d {
     pub heights: [f64; 2],
     /// Young's moduli E1, E2.
     pub young: [f64; 2],
-    /// Poisson's ratio (both).
-    pub poisson: f64,
+    /// Poisson's ratios ν1, ν2.
+    pub poisson: [f64; 2],
     /// Pressure p.
     pub pressure: f64,
     /// Half-width C of the loaded and supported squares.
@@ -44,7 +47,7 @@ impl Default for TwoBlocks3d {
             l: 1.0,
             heights: [0.25, 0.25],
             young: [1e10, 1e11],
-            poisson: 0.3,
+            poisson: [0.3, 0.3],
             pressure: 1e7,
             c: 0.1,
             h: 0.05,
@@ -122,7 +125,10 @@ impl TwoBlocks3d {
         let p = self.pressure;
         let r = solve_contact(&TetContactProblem {
             mesh: &mesh,
-            materials: [(self.young[0], self.poisson), (self.young[1], self.poisson)],
+            materials: [
+                (self.young[0], self.poisson[0]),
+                (self.young[1], self.poisson[1]),
+            ],
             h_c: self.h,
             lambda: self.l,
             tempering: Tempering::Auto,
@@ -162,6 +168,133 @@ impl TwoBlocks3d {
             factorization_bytes: r.factorization_bytes,
             timings: r.timings,
             seconds: r.seconds,
+        })
+    }
+}
+
+/// The tags of [`TwoBlocks3d::model`]'s faces: each brick's sides (x = 0,
+/// x = L/2, y = 0, y = L/2, bottom, top) and the squares within them.
+pub mod tags {
+    /// Ω1's sides.
+    pub const LOWER_SIDES: [i32; 6] = [11, 12, 13, 14, 15, 16];
+    /// Ω2's sides.
+    pub const UPPER_SIDES: [i32; 6] = [21, 22, 23, 24, 25, 26];
+    /// The supported square of Ω1's bottom.
+    pub const SUPPORT: i32 = 17;
+    /// The loaded square of Ω2's top.
+    pub const LOAD: i32 = 27;
+}
+
+impl TwoBlocks3d {
+    /// The quarter model as a user builds it: two bricks (bodies 1 and 2)
+    /// of the same Kuhn meshes as [`TwoBlocks3d::mesh`], the squares tagged
+    /// ([`tags`]), the symmetry planes and the support prescribed, the
+    /// pressure on the loaded square, one contact pair from Ω1's top to
+    /// Ω2's bottom.
+    pub fn model(&self) -> Result<SolidModel> {
+        let grid = self.mesh()?;
+        let half = 0.5 * self.l;
+        let axis = |lo: f64, hi: f64| -> Vec<f64> {
+            let mut v: Vec<f64> = (grid.nodes.iter())
+                .map(|p| p[2])
+                .filter(|&z| z >= lo && z <= hi)
+                .collect();
+            v.sort_by(f64::total_cmp);
+            v.dedup();
+            v
+        };
+        let mut xs: Vec<f64> = grid.nodes.iter().map(|p| p[0]).collect();
+        xs.sort_by(f64::total_cmp);
+        xs.dedup();
+        let brick = |zs: Vec<f64>, body: i32, side_tags: [i32; 6]| Brick {
+            xs: xs.clone(),
+            ys: xs.clone(),
+            zs,
+            body,
+            side_tags,
+        };
+        let (bottom, top) = (-self.heights[0], self.heights[1]);
+        let mut mesh = SolidMesh::bricks(&[
+            brick(axis(bottom, 0.0), 1, tags::LOWER_SIDES),
+            brick(axis(0.0, top), 2, tags::UPPER_SIDES),
+        ])?;
+        let inner = half - self.c - 1e-12 * self.l;
+        let square = |tag: i32, into: i32| -> (Vec<[usize; 3]>, Vec<i32>) {
+            let faces: Vec<[usize; 3]> = (mesh.boundary_faces().iter())
+                .filter(|f| f.tag == tag)
+                .filter(|f| {
+                    let c = mesh.face_geometry(f).centroid;
+                    c[0] >= inner && c[1] >= inner
+                })
+                .map(|f| f.nodes)
+                .collect();
+            let n = faces.len();
+            (faces, vec![into; n])
+        };
+        let (support, s_tags) = square(tags::LOWER_SIDES[4], tags::SUPPORT);
+        let (load, l_tags) = square(tags::UPPER_SIDES[5], tags::LOAD);
+        mesh.add_boundary_faces(&support, &s_tags)?;
+        mesh.add_boundary_faces(&load, &l_tags)?;
+        let mut model = SolidModel::new();
+        model.set_mesh(mesh);
+        model.set_material(1, SolidMaterial::new(self.young[0], self.poisson[0])?);
+        model.set_material(2, SolidMaterial::new(self.young[1], self.poisson[1])?);
+        model.set_ordering(self.ordering);
+        for sides in [tags::LOWER_SIDES, tags::UPPER_SIDES] {
+            model.fix_faces(sides[1], Axis::X, 0.0)?;
+            model.fix_faces(sides[3], Axis::Y, 0.0)?;
+        }
+        model.fix_faces(tags::SUPPORT, Axis::Z, 0.0)?;
+        model.add_pressure(tags::LOAD, self.pressure)?;
+        model.add_contact_pair(tags::LOWER_SIDES[5], tags::UPPER_SIDES[4])?;
+        Ok(model)
+    }
+
+    /// The contact options of the scene's model: λ = L, the full scene's
+    /// size (the quarter's mesh is half as large).
+    pub fn options(&self) -> ContactOptions {
+        ContactOptions {
+            lambda: Some(self.l),
+            ..ContactOptions::default()
+        }
+    }
+
+    /// Solves [`TwoBlocks3d::model`] and measures its outputs (of the whole
+    /// scene).
+    pub fn solve_model(&self) -> Result<TwoBlocks3dResult> {
+        let mut model = self.model()?;
+        let t0 = std::time::Instant::now();
+        let info = model.solve_contact(&self.options())?;
+        let seconds = t0.elapsed().as_secs_f64();
+        let mesh = model.mesh().expect("set");
+        let u = model.displacements()?;
+        let half = 0.5 * self.l;
+        let at = |body: i32, x: [f64; 3]| -> Result<f64> {
+            let v = (0..mesh.nodes().len())
+                .find(|&v| mesh.nodes()[v] == x && mesh.node_body()[v] == Some(body))
+                .ok_or_else(|| Error::argument(format!("no node of body {body} at {x:?}")))?;
+            Ok(u[v][2])
+        };
+        let corner = [0.0; 3];
+        let forces = model.contact_forces()?;
+        let upward: f64 = (0..forces.len())
+            .filter(|&v| mesh.node_body()[v] == Some(2))
+            .map(|v| forces[v][2])
+            .sum();
+        let p = self.pressure;
+        Ok(TwoBlocks3dResult {
+            contact_area: 4.0 * model.contact_area()?,
+            gap_corner: at(2, corner)? - at(1, corner)?,
+            v_top: at(2, [half, half, self.heights[1]])?,
+            compliance: 4.0 * model.external_work()?,
+            transmitted: 4.0 * upward / (p * 4.0 * self.c * self.c),
+            unknowns: info.unknowns,
+            factor_nnz: info.factor_nnz,
+            iterations: model.iterations()?,
+            factorizations: info.factorizations,
+            factorization_bytes: info.factorization_bytes,
+            timings: info.timings,
+            seconds,
         })
     }
 }
