@@ -24,6 +24,7 @@ pub(crate) mod constraints;
 pub(crate) mod discretisation;
 pub mod gap_tets;
 pub mod host;
+pub mod host_solid;
 pub mod law;
 pub mod mesh;
 pub mod mortar;

@@ -239,6 +239,11 @@ impl SolidModel {
         Ok(())
     }
 
+    /// The prescribed displacements: (node, component, value).
+    pub fn constraints(&self) -> impl Iterator<Item = (usize, Axis, f64)> + '_ {
+        self.fixed.iter().map(|(&(v, a), &x)| (v, a, x))
+    }
+
     /// Removes every prescribed displacement.
     pub fn clear_constraints(&mut self) {
         self.fixed.clear();

@@ -14,6 +14,8 @@
 //! it. Its modules keep their old paths (`tfem::scenes`, …) as
 //! re-exports.
 
+#[cfg(feature = "gmsh")]
+pub mod graded_punch;
 pub mod laplace;
 pub mod meshgen;
 pub mod oracle;
