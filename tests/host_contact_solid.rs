@@ -76,35 +76,52 @@ fn outward_triangles(mesh: &SolidMesh, tag: i32) -> Vec<[i64; 3]> {
         .collect()
 }
 
-/// The side of the faces tagged `tag` of body `body`.
-fn side(
-    mesh: &SolidMesh,
-    host: &Host,
+/// A side's arrays in the host's numbering.
+struct SideData {
     tag: i32,
     body: i32,
     young: f64,
-) -> (
-    Vec<i64>,
-    Vec<[f64; 3]>,
-    Vec<[i64; 3]>,
-    Vec<[i64; 3]>,
-    i32,
-    i32,
-    f64,
-) {
-    let triangles = outward_triangles(mesh, tag);
-    let mut nodes: Vec<i64> = triangles.iter().flatten().copied().collect();
-    nodes.sort_unstable();
-    nodes.dedup();
-    let xyz = nodes
-        .iter()
-        .map(|&v| mesh.nodes()[v as usize - 1])
-        .collect();
-    let equations = nodes
-        .iter()
-        .map(|&v| host.equations[v as usize - 1])
-        .collect();
-    (nodes, xyz, equations, triangles, tag, body, young)
+    nodes: Vec<i64>,
+    xyz: Vec<[f64; 3]>,
+    equations: Vec<[i64; 3]>,
+    triangles: Vec<[i64; 3]>,
+}
+
+impl SideData {
+    /// The side of the faces tagged `tag` of body `body`.
+    fn new(mesh: &SolidMesh, host: &Host, tag: i32, body: i32, young: f64) -> SideData {
+        let triangles = outward_triangles(mesh, tag);
+        let mut nodes: Vec<i64> = triangles.iter().flatten().copied().collect();
+        nodes.sort_unstable();
+        nodes.dedup();
+        SideData {
+            tag,
+            body,
+            young,
+            xyz: nodes
+                .iter()
+                .map(|&v| mesh.nodes()[v as usize - 1])
+                .collect(),
+            equations: nodes
+                .iter()
+                .map(|&v| host.equations[v as usize - 1])
+                .collect(),
+            nodes,
+            triangles,
+        }
+    }
+
+    fn surface(&self) -> HostSurface<'_> {
+        HostSurface {
+            tag: self.tag,
+            body: self.body,
+            young: self.young,
+            nodes: &self.nodes,
+            xyz: &self.xyz,
+            equations: &self.equations,
+            triangles: &self.triangles,
+        }
+    }
 }
 
 fn contact(mesh: &SolidMesh, host: &Host, scene: &TwoBlocks3d) -> SolidHostContact {
@@ -113,25 +130,11 @@ fn contact(mesh: &SolidMesh, host: &Host, scene: &TwoBlocks3d) -> SolidHostConta
         ..ContactOptions::default()
     };
     let mut contact = SolidHostContact::new(1, options).unwrap();
-    let a = side(mesh, host, tags::LOWER_SIDES[5], 1, scene.young[0]);
-    let b = side(mesh, host, tags::UPPER_SIDES[4], 2, scene.young[1]);
-    let mut ids = Vec::new();
-    for s in [&a, &b] {
-        ids.push(
-            contact
-                .add_side(&HostSurface {
-                    tag: s.4,
-                    body: s.5,
-                    young: s.6,
-                    nodes: &s.0,
-                    xyz: &s.1,
-                    equations: &s.2,
-                    triangles: &s.3,
-                })
-                .unwrap(),
-        );
-    }
-    contact.add_pair(ids[0], ids[1]).unwrap();
+    let a = SideData::new(mesh, host, tags::LOWER_SIDES[5], 1, scene.young[0]);
+    let b = SideData::new(mesh, host, tags::UPPER_SIDES[4], 2, scene.young[1]);
+    let a = contact.add_side(&a.surface()).unwrap();
+    let b = contact.add_side(&b.surface()).unwrap();
+    contact.add_pair(a, b).unwrap();
     contact
 }
 
