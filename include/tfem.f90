@@ -14,14 +14,18 @@
 !   results of its last solve or load step. A tfem_contact is the contact
 !   context of a host code that keeps its own elements and solver: it
 !   gives back contact stiffness and forces to add to the host's system.
+!   A tfem_solid_model holds a problem in space (tetrahedra, tagged
+!   boundary faces, frictionless contact between tagged surfaces): its
+!   functions, tfem_solid_*, follow the same phases and conventions, and
+!   one is used by one thread at a time like a tfem_model.
 ! - Phases of a model: describe it (mesh, materials, loads and
 !   constraints, contact pairs), solve it (tfem_solve, tfem_solve_contact,
 !   or a load history of tfem_step), read the results (computed when
 !   asked). Any change to the description discards the results.
 ! - The entry points below stand in groups, in that order, each under a
 !   head: lifecycle, mesh, materials, loads and constraints, contact pairs,
-!   solve, results, contact results, load history, utilities, and the
-!   host codes' contact context.
+!   solve, results, contact results, load history, utilities, the host
+!   codes' contact context, and the 3D model.
 !
 ! Conventions
 ! - Every function returns a tfem_status; TFEM_STATUS_OK (0) is success.
@@ -86,9 +90,12 @@
 !   TFEM_STATUS_* parameters below. tfem_error_message([model]) returns the last error as a
 !   Fortran string (model omitted: the calling thread's model-free calls);
 !   tfem_contact_error_message(context) that of a contact context;
-!   tfem_warning_message(model, index) and tfem_version_string() return strings too.
-! - Indices: pass index_base = 1 to tfem_set_mesh (or tfem_load_gmsh) and every node, triangle
-!   and edge number of later calls and messages is 1-based, like Fortran arrays. Numbers that a
+!   tfem_solid_error_message(model) that of a 3D model (from tfem_solid_create);
+!   tfem_warning_message(model, index), tfem_solid_warning_message(model, index) and
+!   tfem_version_string() return strings too.
+! - Indices: pass index_base = 1 to tfem_set_mesh (or tfem_load_gmsh; for a 3D model
+!   tfem_solid_set_mesh or tfem_solid_load_gmsh) and every node, triangle, tetrahedron, edge and
+!   face number of later calls and messages is 1-based, like Fortran arrays. Numbers that a
 !   function documents as 0-based stay 0-based.
 ! - NULL: a pointer argument that the C documentation says may be NULL is OPTIONAL: omit it (by
 !   keyword, or at the end of the list) and the library receives NULL. A nullable model handle
@@ -160,7 +167,9 @@
 !   tfem_solve, tfem_solve_contact, tfem_solve_adaptive, tfem_get_adapt_cycles,
 !   tfem_get_contact_slave_nodes, tfem_step, tfem_get_system_matrix_size, tfem_contact_add_side,
 !   tfem_contact_add_pair, tfem_contact_add_pair_with_mesh, tfem_contact_sizes,
-!   tfem_contact_evaluate, tfem_contact_update
+!   tfem_contact_evaluate, tfem_contact_update, tfem_solid_get_sizes,
+!   tfem_solid_get_mesh_tetrahedra, tfem_solid_get_boundary_faces, tfem_solid_add_contact_pair,
+!   tfem_solid_solve, tfem_solid_solve_contact, tfem_solid_step
 
 ! The C API as it is (see "Fortran 2008" above).
 module tfem_c
@@ -287,6 +296,16 @@ module tfem_c
   integer(c_int), parameter :: TFEM_ADAPT_GOAL_ENERGY = 0
   !> The relative error of the compliance (f·u), the square of the energy's.
   integer(c_int), parameter :: TFEM_ADAPT_GOAL_COMPLIANCE = 1
+
+  ! enum tfem_axis: A displacement component in space (argument `comp` of `tfem_solid_fix` and
+  ! `tfem_solid_fix_faces`): the 2D `tfem_component` has no z, and its values must keep their
+  ! meaning, so 3D has its own.
+  !> u_x.
+  integer(c_int), parameter :: TFEM_AXIS_X = 0
+  !> u_y.
+  integer(c_int), parameter :: TFEM_AXIS_Y = 1
+  !> u_z.
+  integer(c_int), parameter :: TFEM_AXIS_Z = 2
 
   !> Options of `tfem_solve_contact`. Fill with `tfem_contact_options_default` and change what you
   !! need.
@@ -1988,6 +2007,602 @@ module tfem_c
       real(c_double), intent(inout) :: length
       integer(c_int) :: status
     end function tfem_contact_length
+
+    ! ==============================================================================================
+    ! The 3D model (tfem_solid_*): a handle of its own, tfem_solid_model, with the conventions of
+    ! tfem_model. Tetrahedra and tagged boundary faces, one isotropic material per body, constraints
+    ! and loads per node or per face tag, frictionless contact pairs between tagged surfaces (a
+    ! planar side facing a matching one, docs/method.md §9), a solve, and its results per node, per
+    ! tetrahedron and per tetrahedron of the contact layer B.
+    ! ==============================================================================================
+
+    !> Creates an empty 3D model. Returns NULL only if memory is exhausted. Free it with
+    !! `tfem_solid_destroy`. A 3D model is its own handle: the 2D functions (`tfem_*` without
+    !! `solid`) refuse it, and the 3D ones refuse a 2D model.
+    function tfem_solid_create() &
+        bind(C, name="tfem_solid_create") result(res)
+      import
+      type(c_ptr) :: res
+    end function tfem_solid_create
+
+    !> Destroys a 3D model and everything it owns. NULL is a no-op, and so is a pointer that is not
+    !! a live 3D model (destroyed already, or another kind of handle): do not use a handle after
+    !! destroying it.
+    subroutine tfem_solid_destroy(model) &
+        bind(C, name="tfem_solid_destroy")
+      import
+      type(c_ptr), value :: model
+    end subroutine tfem_solid_destroy
+
+    !> Copies the message of the last failed call on `model` (empty after a successful call) into
+    !! `buffer` (`length` bytes including the final NUL), truncating like `tfem_last_error`
+    !! (TFEM_STATUS_BUFFER_TOO_SMALL; `tfem_solid_last_error_length` gives the size needed). A 3D
+    !! model keeps its own messages; calls given no handle at all leave theirs in the thread's slot,
+    !! read with `tfem_last_error(NULL, …)`. A `model` that is not a live 3D model gives
+    !! TFEM_STATUS_INVALID_ARGUMENT with the message saying so in `buffer`.
+    function tfem_solid_last_error(model, buffer, length) &
+        bind(C, name="tfem_solid_last_error") result(status)
+      import
+      type(c_ptr), value :: model
+      character(kind=c_char), intent(inout) :: buffer(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_last_error
+
+    !> Size in bytes (including the final NUL) of the message `tfem_solid_last_error` would give for
+    !! `model`, so that a buffer of this size holds all of it: 1 after a successful call; for a
+    !! handle that is not a live 3D model, the size of the message saying so. `model` may be NULL: 1
+    !! (it has no message).
+    function tfem_solid_last_error_length(model) &
+        bind(C, name="tfem_solid_last_error_length") result(res)
+      import
+      type(c_ptr), value :: model
+      integer(c_size_t) :: res
+    end function tfem_solid_last_error_length
+
+    !> Number of warnings: what the mesh noticed (tetrahedra numbered with negative volume and
+    !! renumbered, nodes used by no tetrahedron) and what the last solve noticed but did not refuse
+    !! (an ill-conditioned system). They are kept until the next solve or mesh.
+    function tfem_solid_warning_count(model, count) &
+        bind(C, name="tfem_solid_warning_count") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: count
+      integer(c_int) :: status
+    end function tfem_solid_warning_count
+
+    !> Writes to `size` the size in bytes (including the final NUL) of warning number `index`
+    !! (0-based, whatever the index base), so that a buffer of this size holds all of it in
+    !! `tfem_solid_get_warning`. An index out of range is refused (TFEM_STATUS_INVALID_ARGUMENT),
+    !! `size` unchanged.
+    function tfem_solid_get_warning_size(model, index, size) &
+        bind(C, name="tfem_solid_get_warning_size") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: index
+      integer(c_size_t), intent(inout) :: size
+      integer(c_int) :: status
+    end function tfem_solid_get_warning_size
+
+    !> Copies warning number `index` (0-based, whatever the index base) into `buffer` of `length`
+    !! bytes, truncating like `tfem_get_warning`: the truncated warning is written with
+    !! TFEM_STATUS_BUFFER_TOO_SMALL; on any other error `buffer` is unchanged.
+    function tfem_solid_get_warning(model, index, buffer, length) &
+        bind(C, name="tfem_solid_get_warning") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: index
+      character(kind=c_char), intent(inout) :: buffer(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_get_warning
+
+    !> Sets the mesh: `n_nodes` nodes with coordinates `xyz` (3·n_nodes values, x0 y0 z0 x1 …),
+    !! `n_tetrahedra` linear tetrahedra with `connectivity` (4·n_tetrahedra node indices) and a body
+    !! tag per tetrahedron in `body_of_tetrahedron`. `index_base` is 0 (C) or 1 (Fortran) and
+    !! applies to every index of every later call and message, as `tfem_set_mesh`'s. A tetrahedron
+    !! numbered with negative volume is renumbered (its last two nodes swapped; a warning counts
+    !! them, and every output refers to the renumbered ones); flat ones are legal (tempered). The
+    !! mesh has no tagged faces yet: give them with `tfem_solid_set_boundary_faces`. Replacing a
+    !! mesh discards constraints, loads, contact pairs and results; materials and tempering are
+    !! kept. Refused, naming the tetrahedron or node, for a node index out of range, a node repeated
+    !! in a tetrahedron or a coordinate that is not finite (TFEM_STATUS_INVALID_MESH).
+    function tfem_solid_set_mesh(model, n_nodes, xyz, n_tetrahedra, connectivity, body_of_tetrahedron, &
+        index_base) &
+        bind(C, name="tfem_solid_set_mesh") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: n_nodes
+      real(c_double), intent(in) :: xyz(*)
+      integer(c_int), value :: n_tetrahedra
+      integer(c_int), intent(in) :: connectivity(*)
+      integer(c_int), intent(in) :: body_of_tetrahedron(*)
+      integer(c_int), value :: index_base
+      integer(c_int) :: status
+    end function tfem_solid_set_mesh
+
+    !> Loads a Gmsh MSH 4.1 mesh (ASCII or binary) of tetrahedra from the file `path`
+    !! (NUL-terminated; on Unix any bytes, as for `tfem_load_gmsh`): physical volumes become bodies
+    !! (tag = body), the triangles of physical surfaces become tagged boundary faces (tag = the
+    !! physical surface's), node i being the i-th node of the file's `$Nodes` section. Replaces the
+    !! mesh like `tfem_solid_set_mesh` with the given `index_base`. Returns TFEM_STATUS_IO for an
+    !! unreadable or malformed file, TFEM_STATUS_INVALID_MESH for content a tetrahedral mesh cannot
+    !! take (another version of the format, no tetrahedra in a physical volume as in a 2D file,
+    !! elements of higher order, a tagged triangle that is not the face of exactly one tetrahedron;
+    !! named by the file's tags and physical groups), TFEM_STATUS_INVALID_ARGUMENT if the library
+    !! was built without the `gmsh` feature. On error the model is unchanged.
+    function tfem_solid_load_gmsh(model, path, index_base) &
+        bind(C, name="tfem_solid_load_gmsh") result(status)
+      import
+      type(c_ptr), value :: model
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int), value :: index_base
+      integer(c_int) :: status
+    end function tfem_solid_load_gmsh
+
+    !> Sets the tagged boundary faces: `n_faces` triangles given by `face_nodes` (3·n_faces node
+    !! indices, in any order: the outward side is away from the tetrahedron the face belongs to)
+    !! with a tag each in `tags`. Tags name the faces for constraints, loads and contact pairs.
+    !! Replaces previous faces (`tfem_solid_add_boundary_faces` adds one group at a time). Each must
+    !! be a face of exactly one tetrahedron, and a face given twice with one tag is refused (its
+    !! loads would count twice): TFEM_STATUS_INVALID_MESH naming the face. Faces are given before
+    !! the constraints, loads and contact pairs that name them: while any is declared the call is
+    !! refused (TFEM_STATUS_INVALID_STATE). Discards the results. On any error nothing changes.
+    function tfem_solid_set_boundary_faces(model, n_faces, face_nodes, tags) &
+        bind(C, name="tfem_solid_set_boundary_faces") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: n_faces
+      integer(c_int), intent(in) :: face_nodes(*)
+      integer(c_int), intent(in) :: tags(*)
+      integer(c_int) :: status
+    end function tfem_solid_set_boundary_faces
+
+    !> Adds tagged boundary faces to those already set, checked as `tfem_solid_set_boundary_faces`
+    !! checks them (a face already holding the tag is refused): for instance one call per physical
+    !! surface.
+    function tfem_solid_add_boundary_faces(model, n_faces, face_nodes, tags) &
+        bind(C, name="tfem_solid_add_boundary_faces") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: n_faces
+      integer(c_int), intent(in) :: face_nodes(*)
+      integer(c_int), intent(in) :: tags(*)
+      integer(c_int) :: status
+    end function tfem_solid_add_boundary_faces
+
+    !> Sizes: nodes, tetrahedra, and tetrahedra of the contact layer B of the last solve (0 before a
+    !! solve, or without contact pairs), which size the buffers of the getters. Any pointer may be
+    !! NULL.
+    function tfem_solid_get_sizes(model, n_nodes, n_tetrahedra, n_contact_tetrahedra) &
+        bind(C, name="tfem_solid_get_sizes") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: n_nodes
+      integer(c_int), intent(inout) :: n_tetrahedra
+      integer(c_int), intent(inout) :: n_contact_tetrahedra
+      integer(c_int) :: status
+    end function tfem_solid_get_sizes
+
+    !> Number of tagged boundary faces the model holds, from `tfem_solid_set_boundary_faces` /
+    !! `tfem_solid_add_boundary_faces` or a Gmsh file's physical surfaces; see
+    !! `tfem_solid_get_boundary_faces`.
+    function tfem_solid_get_boundary_face_count(model, count) &
+        bind(C, name="tfem_solid_get_boundary_face_count") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: count
+      integer(c_int) :: status
+    end function tfem_solid_get_boundary_face_count
+
+    !> Copies the node coordinates the model holds (x0 y0 z0 x1 …, 3·n_nodes values) into `xyz` of
+    !! `length` values: after `tfem_solid_load_gmsh`, the mesh the file gave.
+    function tfem_solid_get_mesh_nodes(model, xyz, length) &
+        bind(C, name="tfem_solid_get_mesh_nodes") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: xyz(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_get_mesh_nodes
+
+    !> Copies the tetrahedra the model holds (4·n_tetrahedra node indices in the model's index base,
+    !! those given with negative volume renumbered) into `tetrahedra` of `length` values and each
+    !! one's body tag into `bodies` of `bodies_length` values; `bodies` may be NULL. Nothing is
+    !! written unless both buffers are large enough.
+    function tfem_solid_get_mesh_tetrahedra(model, tetrahedra, length, bodies, bodies_length) &
+        bind(C, name="tfem_solid_get_mesh_tetrahedra") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: tetrahedra(*)
+      integer(c_size_t), value :: length
+      integer(c_int), intent(inout) :: bodies(*)
+      integer(c_size_t), value :: bodies_length
+      integer(c_int) :: status
+    end function tfem_solid_get_mesh_tetrahedra
+
+    !> Copies the tagged boundary faces the model holds (3·count node indices in the model's index
+    !! base, count from `tfem_solid_get_boundary_face_count`) into `faces` of `length` values and
+    !! each face's tag into `tags` of `tags_length` values, in the order they were given; `tags` may
+    !! be NULL. Nothing is written unless both buffers are large enough.
+    function tfem_solid_get_boundary_faces(model, faces, length, tags, tags_length) &
+        bind(C, name="tfem_solid_get_boundary_faces") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: faces(*)
+      integer(c_size_t), value :: length
+      integer(c_int), intent(inout) :: tags(*)
+      integer(c_size_t), value :: tags_length
+      integer(c_int) :: status
+    end function tfem_solid_get_boundary_faces
+
+    !> Sets the isotropic material of body `body`: Young's modulus `young` (finite, > 0) and
+    !! Poisson's ratio `poisson` (in (-1, 0.5)); a body may be given its material before or after
+    !! the mesh. Refused with TFEM_STATUS_INVALID_MATERIAL naming the body. Every body of the mesh
+    !! needs one before a solve.
+    function tfem_solid_set_material(model, body, young, poisson) &
+        bind(C, name="tfem_solid_set_material") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: body
+      real(c_double), value :: young
+      real(c_double), value :: poisson
+      integer(c_int) :: status
+    end function tfem_solid_set_material
+
+    !> Chooses Jmin, the floor of the tempered tetrahedra's Jacobian, with `tfem_set_tempering`'s
+    !! encoding (a `tfem_tempering_mode`): 0 auto, Jmin = min(h⁴/λ, h³/10) with λ the larger side of
+    !! the mesh's bounding box (h the element's longest edge); 1 the same h⁴/λ with λ = `value` (a
+    !! length); 2 Jmin = `value` for every tetrahedron (length³; J is six times the volume); 3 off,
+    !! plain FEM (a flat tetrahedron is then an error). `value` is ignored for 0 and 3, and must be
+    !! finite and > 0 for 1 and 2.
+    function tfem_solid_set_tempering(model, mode, value) &
+        bind(C, name="tfem_solid_set_tempering") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: mode
+      real(c_double), value :: value
+      integer(c_int) :: status
+    end function tfem_solid_set_tempering
+
+    !> Chooses the fill-reducing ordering of the factorisation (a `tfem_ordering_mode`: 0 auto, 1
+    !! AMD, 2 nested dissection). Results do not depend on it beyond round-off, and are kept.
+    function tfem_solid_set_ordering(model, ordering) &
+        bind(C, name="tfem_solid_set_ordering") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: ordering
+      integer(c_int) :: status
+    end function tfem_solid_set_ordering
+
+    !> Prescribes displacement component `comp` (a `tfem_axis`: 0 x, 1 y, 2 z) of `node` to `value`
+    !! (model length units). A component prescribed again takes the new value (unlike `tfem_fix`,
+    !! which refuses a different one). Refused, naming it, for a node out of range, a component
+    !! other than 0, 1, 2 or a value that is not finite.
+    function tfem_solid_fix(model, node, comp, value) &
+        bind(C, name="tfem_solid_fix") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: node
+      integer(c_int), value :: comp
+      real(c_double), value :: value
+      integer(c_int) :: status
+    end function tfem_solid_fix
+
+    !> Prescribes component `comp` (0 x, 1 y, 2 z) to `value` on every node of the boundary faces
+    !! tagged `tag`, as they are when called (faces are fixed before constraints: see
+    !! `tfem_solid_set_boundary_faces`). An unknown tag is refused, naming it.
+    function tfem_solid_fix_faces(model, tag, comp, value) &
+        bind(C, name="tfem_solid_fix_faces") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: tag
+      integer(c_int), value :: comp
+      real(c_double), value :: value
+      integer(c_int) :: status
+    end function tfem_solid_fix_faces
+
+    !> Removes every prescribed displacement (and so lets the boundary faces change again, once
+    !! loads and pairs are cleared too).
+    function tfem_solid_clear_constraints(model) &
+        bind(C, name="tfem_solid_clear_constraints") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int) :: status
+    end function tfem_solid_clear_constraints
+
+    !> Applies pressure `pressure` on the boundary faces tagged `tag`: a stress (force per unit
+    !! area, Pa in SI), positive pushing into the body, along each face's outward normal. Loads add
+    !! up.
+    function tfem_solid_add_pressure(model, tag, pressure) &
+        bind(C, name="tfem_solid_add_pressure") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: tag
+      real(c_double), value :: pressure
+      integer(c_int) :: status
+    end function tfem_solid_add_pressure
+
+    !> Applies the traction (tx, ty, tz) on the boundary faces tagged `tag`: a stress vector (force
+    !! per unit area, Pa in SI) whatever the faces' orientation. Loads add up.
+    function tfem_solid_add_traction(model, tag, tx, ty, tz) &
+        bind(C, name="tfem_solid_add_traction") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: tag
+      real(c_double), value :: tx
+      real(c_double), value :: ty
+      real(c_double), value :: tz
+      integer(c_int) :: status
+    end function tfem_solid_add_traction
+
+    !> Adds the point force (fx, fy, fz) at `node` (N in SI). Loads add up.
+    function tfem_solid_add_nodal_force(model, node, fx, fy, fz) &
+        bind(C, name="tfem_solid_add_nodal_force") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: node
+      real(c_double), value :: fx
+      real(c_double), value :: fy
+      real(c_double), value :: fz
+      integer(c_int) :: status
+    end function tfem_solid_add_nodal_force
+
+    !> Removes every load.
+    function tfem_solid_clear_loads(model) &
+        bind(C, name="tfem_solid_clear_loads") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int) :: status
+    end function tfem_solid_clear_loads
+
+    !> Declares a frictionless contact interface between the boundary faces tagged `tag_a` and those
+    !! tagged `tag_b`, on two bodies. Side a must be planar: its outward normal is the direction
+    !! that opens the gap, and the contact layer B is a layer of flat tetrahedra built across that
+    !! plane (docs/method.md §9). Side b must face side a node to node (matching meshes); that, the
+    !! planarity and the two bodies are checked by the solve, which names the pair and its tags.
+    !! Writes the pair's index (0-based, whatever the index base) to `pair` (may be NULL). Two equal
+    !! tags or a tag without faces are refused here, naming the tag.
+    function tfem_solid_add_contact_pair(model, tag_a, tag_b, pair) &
+        bind(C, name="tfem_solid_add_contact_pair") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: tag_a
+      integer(c_int), value :: tag_b
+      integer(c_int), intent(inout) :: pair
+      integer(c_int) :: status
+    end function tfem_solid_add_contact_pair
+
+    !> Removes every contact pair.
+    function tfem_solid_clear_contact_pairs(model) &
+        bind(C, name="tfem_solid_clear_contact_pairs") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int) :: status
+    end function tfem_solid_clear_contact_pairs
+
+    !> Solves the model with the default contact options (as `tfem_solid_solve_contact` without
+    !! options), the call for a model without contact pairs: one linear solve then. `info` may be
+    !! NULL.
+    function tfem_solid_solve(model, info) &
+        bind(C, name="tfem_solid_solve") result(status)
+      import
+      type(c_ptr), value :: model
+      type(tfem_solve_info), intent(inout) :: info
+      integer(c_int) :: status
+    end function tfem_solid_solve
+
+    !> Solves the model: where it has contact pairs, the tetrahedra of B are switched on where they
+    !! would invert, by the active-set loop of the 2D contact solve. `options` may be NULL
+    !! (defaults: see `tfem_contact_options_default`); 3D contact is frictionless with its own
+    !! inversion test, so `law` must be 0 and `inversion_test` 0 (TFEM_STATUS_INVALID_ARGUMENT
+    !! saying so otherwise); `contact_modulus` and `lambda` (0: the smaller E of the pair's bodies,
+    !! the other body's for a rigid tool; the mesh's size), `max_iterations` and `refactorize` are
+    !! read. `info` may be NULL. A body without material gives TFEM_STATUS_INVALID_MATERIAL naming
+    !! it, a body not restrained TFEM_STATUS_SINGULAR naming it, a pair whose sides do not fit (side
+    !! a not planar, sides not matching node to node, both on one body) an error naming the pair and
+    !! its tags. On error the model is unchanged, its previous results included.
+    function tfem_solid_solve_contact(model, options, info) &
+        bind(C, name="tfem_solid_solve_contact") result(status)
+      import
+      type(c_ptr), value :: model
+      type(tfem_contact_options), intent(in) :: options
+      type(tfem_solve_info), intent(inout) :: info
+      integer(c_int) :: status
+    end function tfem_solid_solve_contact
+
+    !> One quasi-static load step: the model's loads and prescribed displacements times
+    !! `load_factor` (finite; initial gaps as they are), started from the active set of the last
+    !! solve or step, on the structure, pattern and symbolic analysis the first solve derived, so
+    !! that a load history repeats neither the analysis nor the active-set iterations a cold start
+    !! would. Frictionless contact has no memory: a step's answer is that of a solve at its factor,
+    !! and the loads may change between steps (a non-proportional history). `options` may be NULL
+    !! (defaults; refused as by `tfem_solid_solve_contact`); `info` may be NULL.
+    !! `tfem_solid_revert_step` takes the step back. On error the model is unchanged.
+    function tfem_solid_step(model, load_factor, options, info) &
+        bind(C, name="tfem_solid_step") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), value :: load_factor
+      type(tfem_contact_options), intent(in) :: options
+      type(tfem_solve_info), intent(inout) :: info
+      integer(c_int) :: status
+    end function tfem_solid_step
+
+    !> Takes back the last load step: its results, and the active set the next step starts from, are
+    !! those before it. Once per step, and not after a change of the model (which discards the
+    !! results): refused then with TFEM_STATUS_INVALID_STATE, the model unchanged.
+    function tfem_solid_revert_step(model) &
+        bind(C, name="tfem_solid_revert_step") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int) :: status
+    end function tfem_solid_revert_step
+
+    !> Writes the statistics of the last solve (unknowns, factorisations, interface unknowns,
+    !! residual, times) to `info`.
+    function tfem_solid_get_solve_info(model, info) &
+        bind(C, name="tfem_solid_get_solve_info") result(status)
+      import
+      type(c_ptr), value :: model
+      type(tfem_solve_info), intent(inout) :: info
+      integer(c_int) :: status
+    end function tfem_solid_get_solve_info
+
+    !> Writes the active-set iterations of the last solve (1 without contact) to `iterations`.
+    function tfem_solid_get_iterations(model, iterations) &
+        bind(C, name="tfem_solid_get_iterations") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: iterations
+      integer(c_int) :: status
+    end function tfem_solid_get_iterations
+
+    !> Copies the nodal displacements (ux0 uy0 uz0 ux1 …, 3·n_nodes values) of the last solve into
+    !! `out` of `length` values.
+    function tfem_solid_get_displacements(model, out, length) &
+        bind(C, name="tfem_solid_get_displacements") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_get_displacements
+
+    !> Copies element strains (ε_xx ε_yy ε_zz γ_yz γ_xz γ_xy per tetrahedron, engineering shears,
+    !! 6·n_tetrahedra values), computed on request and tempered below Jmin as the stiffness is.
+    function tfem_solid_get_element_strains(model, out, length) &
+        bind(C, name="tfem_solid_get_element_strains") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_get_element_strains
+
+    !> Copies element stresses (σ_xx σ_yy σ_zz σ_yz σ_xz σ_xy per tetrahedron, 6·n_tetrahedra
+    !! values, the order of the strains; force per unit area, Pa in SI), computed on request. An
+    !! overflow gives TFEM_STATUS_NUMERICAL_FAILURE naming the tetrahedron.
+    function tfem_solid_get_element_stresses(model, out, length) &
+        bind(C, name="tfem_solid_get_element_stresses") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_get_element_stresses
+
+    !> Copies reaction forces (Rx Ry Rz per node, 3·n_nodes values, N in SI; zero at components that
+    !! are not prescribed), computed on request: with the loads and the contact forces they balance
+    !! every body.
+    function tfem_solid_get_reactions(model, out, length) &
+        bind(C, name="tfem_solid_get_reactions") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_get_reactions
+
+    !> Writes the work of the external loads of the last solve, Σ f·u over every node (J in SI): for
+    !! a pressure load, the compliance.
+    function tfem_solid_get_external_work(model, work) &
+        bind(C, name="tfem_solid_get_external_work") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: work
+      integer(c_int) :: status
+    end function tfem_solid_get_external_work
+
+    !> Copies the nodes of every tetrahedron of the contact layer B of the last solve
+    !! (4·n_contact_tetrahedra indices in the model's index base, pair by pair, numbered so that
+    !! opening the gap makes J positive).
+    function tfem_solid_get_contact_tetrahedra(model, out, length) &
+        bind(C, name="tfem_solid_get_contact_tetrahedra") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_get_contact_tetrahedra
+
+    !> Copies the active flag (1 pressed, 0 open) of every tetrahedron of B in the last solve
+    !! (n_contact_tetrahedra values, see `tfem_solid_get_sizes`).
+    function tfem_solid_get_contact_active(model, out, length) &
+        bind(C, name="tfem_solid_get_contact_active") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_get_contact_active
+
+    !> Copies the force the contact exerts on every node in the last solve (fx fy fz per node,
+    !! 3·n_nodes values, N in SI; zero off the contact interfaces), computed on request: the forces
+    !! of one pair sum to zero.
+    function tfem_solid_get_contact_forces(model, out, length) &
+        bind(C, name="tfem_solid_get_contact_forces") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_get_contact_forces
+
+    !> Copies the contact pressure at every node in the last solve (n_nodes values; force per unit
+    !! area, Pa in SI, positive in compression; zero off the pairs' faces), computed on request: the
+    !! normal force B exerts on the node over its tributary area, a third of each of its faces.
+    function tfem_solid_get_contact_nodal_pressures(model, out, length) &
+        bind(C, name="tfem_solid_get_contact_nodal_pressures") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_get_contact_nodal_pressures
+
+    !> Writes the area in contact in the last solve, every pair together (model length units
+    !! squared): each active tetrahedron of B stands for a third of the facing triangle of its
+    !! prism, so a closed interface reads its whole area.
+    function tfem_solid_get_contact_area(model, area) &
+        bind(C, name="tfem_solid_get_contact_area") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), intent(inout) :: area
+      integer(c_int) :: status
+    end function tfem_solid_get_contact_area
+
+    !> Writes the area in contact of contact pair `pair` alone (0-based, as
+    !! `tfem_solid_add_contact_pair` returned it, whatever the index base) in the last solve. An
+    !! unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT naming it).
+    function tfem_solid_get_contact_pair_area(model, pair, area) &
+        bind(C, name="tfem_solid_get_contact_pair_area") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: pair
+      real(c_double), intent(inout) :: area
+      integer(c_int) :: status
+    end function tfem_solid_get_contact_pair_area
+
+    !> Writes the solved model to the file `path` (NUL-terminated; on Unix any bytes, as for
+    !! `tfem_load_gmsh`) as a VTK XML unstructured grid (`.vtu`, binary appended data, read by
+    !! ParaView, VTK and meshio): the tetrahedra in their initial configuration with point data
+    !! `displacement` ([u_x, u_y, u_z]) and, when the model has contact pairs, `contact_pressure`
+    !! (`tfem_solid_get_contact_nodal_pressures`); cell data `body`, `J` (six times the signed
+    !! volume) and `stress` (VTK's order of a symmetric tensor, [σ_xx, σ_yy, σ_zz, σ_xy, σ_yz,
+    !! σ_xz], so that its tensor filters read it; not the Voigt order of
+    !! `tfem_solid_get_element_stresses`). Returns TFEM_STATUS_INVALID_STATE before a solve,
+    !! TFEM_STATUS_NUMERICAL_FAILURE for a result that is not finite (nothing is written then),
+    !! TFEM_STATUS_IO when the file cannot be written (the message names it and the reason), and
+    !! TFEM_STATUS_INVALID_ARGUMENT if the library was built without the `vtu` feature. The model is
+    !! never changed.
+    function tfem_solid_write_vtu(model, path) &
+        bind(C, name="tfem_solid_write_vtu") result(status)
+      import
+      type(c_ptr), value :: model
+      character(kind=c_char), intent(in) :: path(*)
+      integer(c_int) :: status
+    end function tfem_solid_write_vtu
   end interface
 end module tfem_c
 
@@ -2008,7 +2623,12 @@ module tfem_specifics
         tfem_get_system_matrix, tfem_contact_last_error, tfem_contact_last_error_length, &
         tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, tfem_contact_scatter_add, &
         tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, tfem_contact_pressures, &
-        tfem_contact_elements, tfem_contact_element_equations, tfem_contact_element_blocks
+        tfem_contact_elements, tfem_contact_element_equations, tfem_contact_element_blocks, &
+        tfem_solid_last_error, tfem_solid_last_error_length, tfem_solid_get_warning, &
+        tfem_solid_get_mesh_nodes, tfem_solid_get_displacements, tfem_solid_get_element_strains, &
+        tfem_solid_get_element_stresses, tfem_solid_get_reactions, tfem_solid_get_contact_tetrahedra, &
+        tfem_solid_get_contact_active, tfem_solid_get_contact_forces, &
+        tfem_solid_get_contact_nodal_pressures
   implicit none
   private
   public :: tfem_length_kind
@@ -2127,7 +2747,32 @@ module tfem_specifics
   public :: tfem_contact_elements_i_r2, tfem_contact_element_equations_r2
   public :: tfem_contact_element_equations_i, tfem_contact_element_equations_i_r2
   public :: tfem_contact_element_blocks_r2, tfem_contact_element_blocks_i
-  public :: tfem_contact_element_blocks_i_r2
+  public :: tfem_contact_element_blocks_i_r2, tfem_solid_last_error_i, tfem_solid_last_error_str
+  public :: tfem_solid_last_error_str_i, tfem_solid_last_error_length_no_model
+  public :: tfem_solid_get_warning_i, tfem_solid_get_warning_str, tfem_solid_get_warning_str_i
+  public :: tfem_solid_get_sizes_opt, tfem_solid_get_mesh_nodes_r2, tfem_solid_get_mesh_nodes_i
+  public :: tfem_solid_get_mesh_nodes_i_r2, tfem_solid_get_mesh_tetrahedra_opt
+  public :: tfem_solid_get_mesh_tetrahedra_opt_r21, tfem_solid_get_mesh_tetrahedra_opt_r12
+  public :: tfem_solid_get_mesh_tetrahedra_opt_r22, tfem_solid_get_mesh_tetrahedra_opt_i
+  public :: tfem_solid_get_mesh_tetrahedra_opt_i_r21, tfem_solid_get_mesh_tetrahedra_opt_i_r12
+  public :: tfem_solid_get_mesh_tetrahedra_opt_i_r22, tfem_solid_get_boundary_faces_opt
+  public :: tfem_solid_get_boundary_faces_opt_r21, tfem_solid_get_boundary_faces_opt_r12
+  public :: tfem_solid_get_boundary_faces_opt_r22, tfem_solid_get_boundary_faces_opt_i
+  public :: tfem_solid_get_boundary_faces_opt_i_r21, tfem_solid_get_boundary_faces_opt_i_r12
+  public :: tfem_solid_get_boundary_faces_opt_i_r22, tfem_solid_add_contact_pair_opt
+  public :: tfem_solid_solve_opt, tfem_solid_solve_contact_opt, tfem_solid_step_opt
+  public :: tfem_solid_get_displacements_r2, tfem_solid_get_displacements_i
+  public :: tfem_solid_get_displacements_i_r2, tfem_solid_get_element_strains_r2
+  public :: tfem_solid_get_element_strains_i, tfem_solid_get_element_strains_i_r2
+  public :: tfem_solid_get_element_stresses_r2, tfem_solid_get_element_stresses_i
+  public :: tfem_solid_get_element_stresses_i_r2, tfem_solid_get_reactions_r2
+  public :: tfem_solid_get_reactions_i, tfem_solid_get_reactions_i_r2
+  public :: tfem_solid_get_contact_tetrahedra_r2, tfem_solid_get_contact_tetrahedra_i
+  public :: tfem_solid_get_contact_tetrahedra_i_r2, tfem_solid_get_contact_active_r2
+  public :: tfem_solid_get_contact_active_i, tfem_solid_get_contact_active_i_r2
+  public :: tfem_solid_get_contact_forces_r2, tfem_solid_get_contact_forces_i
+  public :: tfem_solid_get_contact_forces_i_r2, tfem_solid_get_contact_nodal_pressures_r2
+  public :: tfem_solid_get_contact_nodal_pressures_i, tfem_solid_get_contact_nodal_pressures_i_r2
 
   !> The kind of the lengths the generic interfaces accept besides integer(c_size_t): c_int (the
   !! default integer) where size_t is wider, else c_int64_t.
@@ -2366,6 +3011,75 @@ module tfem_specifics
       type(c_ptr), value :: changed
       integer(c_int) :: status
     end function tfem_contact_update_by_address
+
+    function tfem_solid_get_sizes_by_address(model, n_nodes, n_tetrahedra, n_contact_tetrahedra) &
+        bind(C, name="tfem_solid_get_sizes") result(status)
+      import
+      type(c_ptr), value :: model
+      type(c_ptr), value :: n_nodes
+      type(c_ptr), value :: n_tetrahedra
+      type(c_ptr), value :: n_contact_tetrahedra
+      integer(c_int) :: status
+    end function tfem_solid_get_sizes_by_address
+
+    function tfem_solid_get_mesh_tetrahedra_by_address(model, tetrahedra, length, bodies, bodies_length) &
+        bind(C, name="tfem_solid_get_mesh_tetrahedra") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: tetrahedra(*)
+      integer(c_size_t), value :: length
+      type(c_ptr), value :: bodies
+      integer(c_size_t), value :: bodies_length
+      integer(c_int) :: status
+    end function tfem_solid_get_mesh_tetrahedra_by_address
+
+    function tfem_solid_get_boundary_faces_by_address(model, faces, length, tags, tags_length) &
+        bind(C, name="tfem_solid_get_boundary_faces") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), intent(inout) :: faces(*)
+      integer(c_size_t), value :: length
+      type(c_ptr), value :: tags
+      integer(c_size_t), value :: tags_length
+      integer(c_int) :: status
+    end function tfem_solid_get_boundary_faces_by_address
+
+    function tfem_solid_add_contact_pair_by_address(model, tag_a, tag_b, pair) &
+        bind(C, name="tfem_solid_add_contact_pair") result(status)
+      import
+      type(c_ptr), value :: model
+      integer(c_int), value :: tag_a
+      integer(c_int), value :: tag_b
+      type(c_ptr), value :: pair
+      integer(c_int) :: status
+    end function tfem_solid_add_contact_pair_by_address
+
+    function tfem_solid_solve_by_address(model, info) &
+        bind(C, name="tfem_solid_solve") result(status)
+      import
+      type(c_ptr), value :: model
+      type(c_ptr), value :: info
+      integer(c_int) :: status
+    end function tfem_solid_solve_by_address
+
+    function tfem_solid_solve_contact_by_address(model, options, info) &
+        bind(C, name="tfem_solid_solve_contact") result(status)
+      import
+      type(c_ptr), value :: model
+      type(c_ptr), value :: options
+      type(c_ptr), value :: info
+      integer(c_int) :: status
+    end function tfem_solid_solve_contact_by_address
+
+    function tfem_solid_step_by_address(model, load_factor, options, info) &
+        bind(C, name="tfem_solid_step") result(status)
+      import
+      type(c_ptr), value :: model
+      real(c_double), value :: load_factor
+      type(c_ptr), value :: options
+      type(c_ptr), value :: info
+      integer(c_int) :: status
+    end function tfem_solid_step_by_address
   end interface
 
 contains
@@ -6044,6 +6758,566 @@ contains
     status = tfem_contact_element_blocks(context, out, tfem_to_size_t(length))
   end function tfem_contact_element_blocks_i_r2
 
+  function tfem_solid_last_error_i(model, buffer, length) result(status)
+    type(c_ptr), value :: model
+    character(kind=c_char), intent(inout) :: buffer(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_last_error(model, buffer, tfem_to_size_t(length))
+  end function tfem_solid_last_error_i
+
+  function tfem_solid_last_error_str(model, buffer, length) result(status)
+    type(c_ptr), value :: model
+    character(kind=c_char, len=*), intent(inout) :: buffer
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_last_error(model, buffer, length)
+  end function tfem_solid_last_error_str
+
+  function tfem_solid_last_error_str_i(model, buffer, length) result(status)
+    type(c_ptr), value :: model
+    character(kind=c_char, len=*), intent(inout) :: buffer
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_last_error(model, buffer, tfem_to_size_t(length))
+  end function tfem_solid_last_error_str_i
+
+  function tfem_solid_last_error_length_no_model() result(res)
+    integer(c_size_t) :: res
+    res = tfem_solid_last_error_length(c_null_ptr)
+  end function tfem_solid_last_error_length_no_model
+
+  function tfem_solid_get_warning_i(model, index, buffer, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: index
+    character(kind=c_char), intent(inout) :: buffer(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_warning(model, index, buffer, tfem_to_size_t(length))
+  end function tfem_solid_get_warning_i
+
+  function tfem_solid_get_warning_str(model, index, buffer, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: index
+    character(kind=c_char, len=*), intent(inout) :: buffer
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_warning(model, index, buffer, length)
+  end function tfem_solid_get_warning_str
+
+  function tfem_solid_get_warning_str_i(model, index, buffer, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: index
+    character(kind=c_char, len=*), intent(inout) :: buffer
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_warning(model, index, buffer, tfem_to_size_t(length))
+  end function tfem_solid_get_warning_str_i
+
+  function tfem_solid_get_sizes_opt(model, n_nodes, n_tetrahedra, n_contact_tetrahedra) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout), optional, target :: n_nodes
+    integer(c_int), intent(inout), optional, target :: n_tetrahedra
+    integer(c_int), intent(inout), optional, target :: n_contact_tetrahedra
+    integer(c_int) :: status
+    type(c_ptr) :: n_nodes_address
+    type(c_ptr) :: n_tetrahedra_address
+    type(c_ptr) :: n_contact_tetrahedra_address
+    n_nodes_address = c_null_ptr
+    if (present(n_nodes)) n_nodes_address = c_loc(n_nodes)
+    n_tetrahedra_address = c_null_ptr
+    if (present(n_tetrahedra)) n_tetrahedra_address = c_loc(n_tetrahedra)
+    n_contact_tetrahedra_address = c_null_ptr
+    if (present(n_contact_tetrahedra)) n_contact_tetrahedra_address = c_loc(n_contact_tetrahedra)
+    status = tfem_solid_get_sizes_by_address(model, n_nodes_address, n_tetrahedra_address, &
+        n_contact_tetrahedra_address)
+  end function tfem_solid_get_sizes_opt
+
+  function tfem_solid_get_mesh_nodes_r2(model, xyz, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: xyz(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_mesh_nodes(model, xyz, length)
+  end function tfem_solid_get_mesh_nodes_r2
+
+  function tfem_solid_get_mesh_nodes_i(model, xyz, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: xyz(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_mesh_nodes(model, xyz, tfem_to_size_t(length))
+  end function tfem_solid_get_mesh_nodes_i
+
+  function tfem_solid_get_mesh_nodes_i_r2(model, xyz, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: xyz(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_mesh_nodes(model, xyz, tfem_to_size_t(length))
+  end function tfem_solid_get_mesh_nodes_i_r2
+
+  function tfem_solid_get_mesh_tetrahedra_opt(model, tetrahedra, length, bodies, &
+        bodies_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: tetrahedra(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int), intent(inout), optional, target :: bodies(*)
+    integer(c_size_t), intent(in) :: bodies_length
+    integer(c_int) :: status
+    type(c_ptr) :: bodies_address
+    bodies_address = tfem_address_c_int(bodies, bodies_length /= 0)
+    status = tfem_solid_get_mesh_tetrahedra_by_address(model, tetrahedra, length, bodies_address, &
+        bodies_length)
+  end function tfem_solid_get_mesh_tetrahedra_opt
+
+  function tfem_solid_get_mesh_tetrahedra_opt_r21(model, tetrahedra, length, bodies, &
+        bodies_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: tetrahedra(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int), intent(inout), optional, target :: bodies(*)
+    integer(c_size_t), intent(in) :: bodies_length
+    integer(c_int) :: status
+    type(c_ptr) :: bodies_address
+    bodies_address = tfem_address_c_int(bodies, bodies_length /= 0)
+    status = tfem_solid_get_mesh_tetrahedra_by_address(model, tetrahedra, length, bodies_address, &
+        bodies_length)
+  end function tfem_solid_get_mesh_tetrahedra_opt_r21
+
+  function tfem_solid_get_mesh_tetrahedra_opt_r12(model, tetrahedra, length, bodies, &
+        bodies_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: tetrahedra(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int), intent(inout), target :: bodies(1, *)
+    integer(c_size_t), intent(in) :: bodies_length
+    integer(c_int) :: status
+    type(c_ptr) :: bodies_address
+    bodies_address = tfem_address_c_int(bodies, bodies_length /= 0)
+    status = tfem_solid_get_mesh_tetrahedra_by_address(model, tetrahedra, length, bodies_address, &
+        bodies_length)
+  end function tfem_solid_get_mesh_tetrahedra_opt_r12
+
+  function tfem_solid_get_mesh_tetrahedra_opt_r22(model, tetrahedra, length, bodies, &
+        bodies_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: tetrahedra(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int), intent(inout), target :: bodies(1, *)
+    integer(c_size_t), intent(in) :: bodies_length
+    integer(c_int) :: status
+    type(c_ptr) :: bodies_address
+    bodies_address = tfem_address_c_int(bodies, bodies_length /= 0)
+    status = tfem_solid_get_mesh_tetrahedra_by_address(model, tetrahedra, length, bodies_address, &
+        bodies_length)
+  end function tfem_solid_get_mesh_tetrahedra_opt_r22
+
+  function tfem_solid_get_mesh_tetrahedra_opt_i(model, tetrahedra, length, bodies, &
+        bodies_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: tetrahedra(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int), intent(inout), optional, target :: bodies(*)
+    integer(tfem_length_kind), intent(in) :: bodies_length
+    integer(c_int) :: status
+    type(c_ptr) :: bodies_address
+    bodies_address = tfem_address_c_int(bodies, bodies_length > 0)
+    status = tfem_solid_get_mesh_tetrahedra_by_address(model, tetrahedra, tfem_to_size_t(length), &
+        bodies_address, tfem_to_size_t(bodies_length))
+  end function tfem_solid_get_mesh_tetrahedra_opt_i
+
+  function tfem_solid_get_mesh_tetrahedra_opt_i_r21(model, tetrahedra, length, bodies, &
+        bodies_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: tetrahedra(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int), intent(inout), optional, target :: bodies(*)
+    integer(tfem_length_kind), intent(in) :: bodies_length
+    integer(c_int) :: status
+    type(c_ptr) :: bodies_address
+    bodies_address = tfem_address_c_int(bodies, bodies_length > 0)
+    status = tfem_solid_get_mesh_tetrahedra_by_address(model, tetrahedra, tfem_to_size_t(length), &
+        bodies_address, tfem_to_size_t(bodies_length))
+  end function tfem_solid_get_mesh_tetrahedra_opt_i_r21
+
+  function tfem_solid_get_mesh_tetrahedra_opt_i_r12(model, tetrahedra, length, bodies, &
+        bodies_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: tetrahedra(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int), intent(inout), target :: bodies(1, *)
+    integer(tfem_length_kind), intent(in) :: bodies_length
+    integer(c_int) :: status
+    type(c_ptr) :: bodies_address
+    bodies_address = tfem_address_c_int(bodies, bodies_length > 0)
+    status = tfem_solid_get_mesh_tetrahedra_by_address(model, tetrahedra, tfem_to_size_t(length), &
+        bodies_address, tfem_to_size_t(bodies_length))
+  end function tfem_solid_get_mesh_tetrahedra_opt_i_r12
+
+  function tfem_solid_get_mesh_tetrahedra_opt_i_r22(model, tetrahedra, length, bodies, &
+        bodies_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: tetrahedra(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int), intent(inout), target :: bodies(1, *)
+    integer(tfem_length_kind), intent(in) :: bodies_length
+    integer(c_int) :: status
+    type(c_ptr) :: bodies_address
+    bodies_address = tfem_address_c_int(bodies, bodies_length > 0)
+    status = tfem_solid_get_mesh_tetrahedra_by_address(model, tetrahedra, tfem_to_size_t(length), &
+        bodies_address, tfem_to_size_t(bodies_length))
+  end function tfem_solid_get_mesh_tetrahedra_opt_i_r22
+
+  function tfem_solid_get_boundary_faces_opt(model, faces, length, tags, tags_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: faces(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int), intent(inout), optional, target :: tags(*)
+    integer(c_size_t), intent(in) :: tags_length
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    tags_address = tfem_address_c_int(tags, tags_length /= 0)
+    status = tfem_solid_get_boundary_faces_by_address(model, faces, length, tags_address, tags_length)
+  end function tfem_solid_get_boundary_faces_opt
+
+  function tfem_solid_get_boundary_faces_opt_r21(model, faces, length, tags, &
+        tags_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: faces(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int), intent(inout), optional, target :: tags(*)
+    integer(c_size_t), intent(in) :: tags_length
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    tags_address = tfem_address_c_int(tags, tags_length /= 0)
+    status = tfem_solid_get_boundary_faces_by_address(model, faces, length, tags_address, tags_length)
+  end function tfem_solid_get_boundary_faces_opt_r21
+
+  function tfem_solid_get_boundary_faces_opt_r12(model, faces, length, tags, &
+        tags_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: faces(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int), intent(inout), target :: tags(1, *)
+    integer(c_size_t), intent(in) :: tags_length
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    tags_address = tfem_address_c_int(tags, tags_length /= 0)
+    status = tfem_solid_get_boundary_faces_by_address(model, faces, length, tags_address, tags_length)
+  end function tfem_solid_get_boundary_faces_opt_r12
+
+  function tfem_solid_get_boundary_faces_opt_r22(model, faces, length, tags, &
+        tags_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: faces(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int), intent(inout), target :: tags(1, *)
+    integer(c_size_t), intent(in) :: tags_length
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    tags_address = tfem_address_c_int(tags, tags_length /= 0)
+    status = tfem_solid_get_boundary_faces_by_address(model, faces, length, tags_address, tags_length)
+  end function tfem_solid_get_boundary_faces_opt_r22
+
+  function tfem_solid_get_boundary_faces_opt_i(model, faces, length, tags, tags_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: faces(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int), intent(inout), optional, target :: tags(*)
+    integer(tfem_length_kind), intent(in) :: tags_length
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    tags_address = tfem_address_c_int(tags, tags_length > 0)
+    status = tfem_solid_get_boundary_faces_by_address(model, faces, tfem_to_size_t(length), &
+        tags_address, tfem_to_size_t(tags_length))
+  end function tfem_solid_get_boundary_faces_opt_i
+
+  function tfem_solid_get_boundary_faces_opt_i_r21(model, faces, length, tags, &
+        tags_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: faces(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int), intent(inout), optional, target :: tags(*)
+    integer(tfem_length_kind), intent(in) :: tags_length
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    tags_address = tfem_address_c_int(tags, tags_length > 0)
+    status = tfem_solid_get_boundary_faces_by_address(model, faces, tfem_to_size_t(length), &
+        tags_address, tfem_to_size_t(tags_length))
+  end function tfem_solid_get_boundary_faces_opt_i_r21
+
+  function tfem_solid_get_boundary_faces_opt_i_r12(model, faces, length, tags, &
+        tags_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: faces(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int), intent(inout), target :: tags(1, *)
+    integer(tfem_length_kind), intent(in) :: tags_length
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    tags_address = tfem_address_c_int(tags, tags_length > 0)
+    status = tfem_solid_get_boundary_faces_by_address(model, faces, tfem_to_size_t(length), &
+        tags_address, tfem_to_size_t(tags_length))
+  end function tfem_solid_get_boundary_faces_opt_i_r12
+
+  function tfem_solid_get_boundary_faces_opt_i_r22(model, faces, length, tags, &
+        tags_length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: faces(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int), intent(inout), target :: tags(1, *)
+    integer(tfem_length_kind), intent(in) :: tags_length
+    integer(c_int) :: status
+    type(c_ptr) :: tags_address
+    tags_address = tfem_address_c_int(tags, tags_length > 0)
+    status = tfem_solid_get_boundary_faces_by_address(model, faces, tfem_to_size_t(length), &
+        tags_address, tfem_to_size_t(tags_length))
+  end function tfem_solid_get_boundary_faces_opt_i_r22
+
+  function tfem_solid_add_contact_pair_opt(model, tag_a, tag_b, pair) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), value :: tag_a
+    integer(c_int), value :: tag_b
+    integer(c_int), intent(inout), optional, target :: pair
+    integer(c_int) :: status
+    type(c_ptr) :: pair_address
+    pair_address = c_null_ptr
+    if (present(pair)) pair_address = c_loc(pair)
+    status = tfem_solid_add_contact_pair_by_address(model, tag_a, tag_b, pair_address)
+  end function tfem_solid_add_contact_pair_opt
+
+  function tfem_solid_solve_opt(model, info) result(status)
+    type(c_ptr), value :: model
+    type(tfem_solve_info), intent(inout), optional, target :: info
+    integer(c_int) :: status
+    type(c_ptr) :: info_address
+    info_address = c_null_ptr
+    if (present(info)) info_address = c_loc(info)
+    status = tfem_solid_solve_by_address(model, info_address)
+  end function tfem_solid_solve_opt
+
+  function tfem_solid_solve_contact_opt(model, options, info) result(status)
+    type(c_ptr), value :: model
+    type(tfem_contact_options), intent(in), optional, target :: options
+    type(tfem_solve_info), intent(inout), optional, target :: info
+    integer(c_int) :: status
+    type(c_ptr) :: options_address
+    type(c_ptr) :: info_address
+    options_address = c_null_ptr
+    if (present(options)) options_address = c_loc(options)
+    info_address = c_null_ptr
+    if (present(info)) info_address = c_loc(info)
+    status = tfem_solid_solve_contact_by_address(model, options_address, info_address)
+  end function tfem_solid_solve_contact_opt
+
+  function tfem_solid_step_opt(model, load_factor, options, info) result(status)
+    type(c_ptr), value :: model
+    real(c_double), value :: load_factor
+    type(tfem_contact_options), intent(in), optional, target :: options
+    type(tfem_solve_info), intent(inout), optional, target :: info
+    integer(c_int) :: status
+    type(c_ptr) :: options_address
+    type(c_ptr) :: info_address
+    options_address = c_null_ptr
+    if (present(options)) options_address = c_loc(options)
+    info_address = c_null_ptr
+    if (present(info)) info_address = c_loc(info)
+    status = tfem_solid_step_by_address(model, load_factor, options_address, info_address)
+  end function tfem_solid_step_opt
+
+  function tfem_solid_get_displacements_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_displacements(model, out, length)
+  end function tfem_solid_get_displacements_r2
+
+  function tfem_solid_get_displacements_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_displacements(model, out, tfem_to_size_t(length))
+  end function tfem_solid_get_displacements_i
+
+  function tfem_solid_get_displacements_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_displacements(model, out, tfem_to_size_t(length))
+  end function tfem_solid_get_displacements_i_r2
+
+  function tfem_solid_get_element_strains_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_element_strains(model, out, length)
+  end function tfem_solid_get_element_strains_r2
+
+  function tfem_solid_get_element_strains_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_element_strains(model, out, tfem_to_size_t(length))
+  end function tfem_solid_get_element_strains_i
+
+  function tfem_solid_get_element_strains_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_element_strains(model, out, tfem_to_size_t(length))
+  end function tfem_solid_get_element_strains_i_r2
+
+  function tfem_solid_get_element_stresses_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_element_stresses(model, out, length)
+  end function tfem_solid_get_element_stresses_r2
+
+  function tfem_solid_get_element_stresses_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_element_stresses(model, out, tfem_to_size_t(length))
+  end function tfem_solid_get_element_stresses_i
+
+  function tfem_solid_get_element_stresses_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_element_stresses(model, out, tfem_to_size_t(length))
+  end function tfem_solid_get_element_stresses_i_r2
+
+  function tfem_solid_get_reactions_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_reactions(model, out, length)
+  end function tfem_solid_get_reactions_r2
+
+  function tfem_solid_get_reactions_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_reactions(model, out, tfem_to_size_t(length))
+  end function tfem_solid_get_reactions_i
+
+  function tfem_solid_get_reactions_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_reactions(model, out, tfem_to_size_t(length))
+  end function tfem_solid_get_reactions_i_r2
+
+  function tfem_solid_get_contact_tetrahedra_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_contact_tetrahedra(model, out, length)
+  end function tfem_solid_get_contact_tetrahedra_r2
+
+  function tfem_solid_get_contact_tetrahedra_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_contact_tetrahedra(model, out, tfem_to_size_t(length))
+  end function tfem_solid_get_contact_tetrahedra_i
+
+  function tfem_solid_get_contact_tetrahedra_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_contact_tetrahedra(model, out, tfem_to_size_t(length))
+  end function tfem_solid_get_contact_tetrahedra_i_r2
+
+  function tfem_solid_get_contact_active_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_contact_active(model, out, length)
+  end function tfem_solid_get_contact_active_r2
+
+  function tfem_solid_get_contact_active_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_contact_active(model, out, tfem_to_size_t(length))
+  end function tfem_solid_get_contact_active_i
+
+  function tfem_solid_get_contact_active_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_contact_active(model, out, tfem_to_size_t(length))
+  end function tfem_solid_get_contact_active_i_r2
+
+  function tfem_solid_get_contact_forces_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_contact_forces(model, out, length)
+  end function tfem_solid_get_contact_forces_r2
+
+  function tfem_solid_get_contact_forces_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_contact_forces(model, out, tfem_to_size_t(length))
+  end function tfem_solid_get_contact_forces_i
+
+  function tfem_solid_get_contact_forces_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_contact_forces(model, out, tfem_to_size_t(length))
+  end function tfem_solid_get_contact_forces_i_r2
+
+  function tfem_solid_get_contact_nodal_pressures_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_contact_nodal_pressures(model, out, length)
+  end function tfem_solid_get_contact_nodal_pressures_r2
+
+  function tfem_solid_get_contact_nodal_pressures_i(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_contact_nodal_pressures(model, out, tfem_to_size_t(length))
+  end function tfem_solid_get_contact_nodal_pressures_i
+
+  function tfem_solid_get_contact_nodal_pressures_i_r2(model, out, length) result(status)
+    type(c_ptr), value :: model
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_get_contact_nodal_pressures(model, out, tfem_to_size_t(length))
+  end function tfem_solid_get_contact_nodal_pressures_i_r2
+
 end module tfem_specifics
 
 ! The module to use: tfem_c's constants and types, its interfaces where nothing is
@@ -6061,32 +7335,45 @@ module tfem
         TFEM_CONTACT_LAW_FRICTIONLESS, TFEM_CONTACT_LAW_STICK, TFEM_INVERSION_TEST_LINEARISED, &
         TFEM_INVERSION_TEST_LITERAL, TFEM_PLANE_MODE_STRAIN, TFEM_PLANE_MODE_STRESS, &
         TFEM_PLANE_MODE_AXISYMMETRIC, TFEM_COMPONENT_X, TFEM_COMPONENT_Y, TFEM_ADAPT_GOAL_ENERGY, &
-        TFEM_ADAPT_GOAL_COMPLIANCE, tfem_contact_options, tfem_solve_info, tfem_contact_report, &
-        tfem_adapt_report, tfem_version, tfem_create, tfem_destroy, tfem_warning_count, &
-        tfem_get_warning_size, tfem_set_threads, tfem_get_threads, tfem_set_mesh, tfem_load_gmsh, &
-        tfem_set_boundary_edges, tfem_add_boundary_edges, tfem_get_boundary_edge_count, &
-        tfem_set_material, tfem_set_tempering, tfem_set_ordering, tfem_fix, tfem_fix_edges, &
-        tfem_set_prescribed, tfem_set_prescribed_edges, tfem_clear_constraints, &
-        tfem_set_boundary_circle, tfem_add_pressure, tfem_add_traction, tfem_add_nodal_force, &
-        tfem_set_body_force, tfem_clear_loads, tfem_set_friction, tfem_set_contact_weighting, &
-        tfem_get_contact_weighting, tfem_get_contact_mesh_size, tfem_contact_options_default, &
-        tfem_get_external_work, tfem_write_vtu, tfem_get_contact_report, tfem_revert_step, &
-        tfem_get_contact_state_size, tfem_element_stiffness, tfem_laplacian_stiffness, &
-        tfem_contact_create, tfem_contact_destroy, tfem_contact_set_options, tfem_contact_restart, &
-        tfem_contact_length, tfem_last_error, tfem_last_error_length, tfem_get_warning, &
-        tfem_get_mesh_nodes, tfem_get_contact_mesh, tfem_get_contact_element_pairs, &
-        tfem_get_contact_element_apexes, tfem_get_displacements, tfem_get_element_strains, &
-        tfem_get_element_stresses, tfem_get_element_out_of_plane_stresses, tfem_get_element_jacobians, &
-        tfem_get_reactions, tfem_get_contact_forces, tfem_get_contact_nodal_pressures, &
-        tfem_get_contact_nodal_tractions, tfem_get_contact_pair_nodal_pressures, &
-        tfem_get_contact_pair_nodal_tractions, tfem_get_contact_gaps, tfem_get_contact_active, &
-        tfem_get_contact_pressure, tfem_get_contact_elements, tfem_get_contact_shear, &
-        tfem_get_contact_friction_state, tfem_get_contact_dissipation, tfem_get_contact_state, &
-        tfem_set_contact_state, tfem_get_system_matrix, tfem_contact_last_error, &
-        tfem_contact_last_error_length, tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, &
-        tfem_contact_scatter_add, tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, &
-        tfem_contact_pressures, tfem_contact_elements, tfem_contact_element_equations, &
-        tfem_contact_element_blocks
+        TFEM_ADAPT_GOAL_COMPLIANCE, TFEM_AXIS_X, TFEM_AXIS_Y, TFEM_AXIS_Z, tfem_contact_options, &
+        tfem_solve_info, tfem_contact_report, tfem_adapt_report, tfem_version, tfem_create, &
+        tfem_destroy, tfem_warning_count, tfem_get_warning_size, tfem_set_threads, tfem_get_threads, &
+        tfem_set_mesh, tfem_load_gmsh, tfem_set_boundary_edges, tfem_add_boundary_edges, &
+        tfem_get_boundary_edge_count, tfem_set_material, tfem_set_tempering, tfem_set_ordering, &
+        tfem_fix, tfem_fix_edges, tfem_set_prescribed, tfem_set_prescribed_edges, &
+        tfem_clear_constraints, tfem_set_boundary_circle, tfem_add_pressure, tfem_add_traction, &
+        tfem_add_nodal_force, tfem_set_body_force, tfem_clear_loads, tfem_set_friction, &
+        tfem_set_contact_weighting, tfem_get_contact_weighting, tfem_get_contact_mesh_size, &
+        tfem_contact_options_default, tfem_get_external_work, tfem_write_vtu, tfem_get_contact_report, &
+        tfem_revert_step, tfem_get_contact_state_size, tfem_element_stiffness, &
+        tfem_laplacian_stiffness, tfem_contact_create, tfem_contact_destroy, tfem_contact_set_options, &
+        tfem_contact_restart, tfem_contact_length, tfem_solid_create, tfem_solid_destroy, &
+        tfem_solid_warning_count, tfem_solid_get_warning_size, tfem_solid_set_mesh, &
+        tfem_solid_load_gmsh, tfem_solid_set_boundary_faces, tfem_solid_add_boundary_faces, &
+        tfem_solid_get_boundary_face_count, tfem_solid_set_material, tfem_solid_set_tempering, &
+        tfem_solid_set_ordering, tfem_solid_fix, tfem_solid_fix_faces, tfem_solid_clear_constraints, &
+        tfem_solid_add_pressure, tfem_solid_add_traction, tfem_solid_add_nodal_force, &
+        tfem_solid_clear_loads, tfem_solid_clear_contact_pairs, tfem_solid_revert_step, &
+        tfem_solid_get_solve_info, tfem_solid_get_iterations, tfem_solid_get_external_work, &
+        tfem_solid_get_contact_area, tfem_solid_get_contact_pair_area, tfem_solid_write_vtu, &
+        tfem_last_error, tfem_last_error_length, tfem_get_warning, tfem_get_mesh_nodes, &
+        tfem_get_contact_mesh, tfem_get_contact_element_pairs, tfem_get_contact_element_apexes, &
+        tfem_get_displacements, tfem_get_element_strains, tfem_get_element_stresses, &
+        tfem_get_element_out_of_plane_stresses, tfem_get_element_jacobians, tfem_get_reactions, &
+        tfem_get_contact_forces, tfem_get_contact_nodal_pressures, tfem_get_contact_nodal_tractions, &
+        tfem_get_contact_pair_nodal_pressures, tfem_get_contact_pair_nodal_tractions, &
+        tfem_get_contact_gaps, tfem_get_contact_active, tfem_get_contact_pressure, &
+        tfem_get_contact_elements, tfem_get_contact_shear, tfem_get_contact_friction_state, &
+        tfem_get_contact_dissipation, tfem_get_contact_state, tfem_set_contact_state, &
+        tfem_get_system_matrix, tfem_contact_last_error, tfem_contact_last_error_length, &
+        tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, tfem_contact_scatter_add, &
+        tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, tfem_contact_pressures, &
+        tfem_contact_elements, tfem_contact_element_equations, tfem_contact_element_blocks, &
+        tfem_solid_last_error, tfem_solid_last_error_length, tfem_solid_get_warning, &
+        tfem_solid_get_mesh_nodes, tfem_solid_get_displacements, tfem_solid_get_element_strains, &
+        tfem_solid_get_element_stresses, tfem_solid_get_reactions, tfem_solid_get_contact_tetrahedra, &
+        tfem_solid_get_contact_active, tfem_solid_get_contact_forces, &
+        tfem_solid_get_contact_nodal_pressures
   use tfem_specifics
   implicit none
   private :: c_strlen
@@ -6209,7 +7496,32 @@ module tfem
   private :: tfem_contact_elements_i_r2, tfem_contact_element_equations_r2
   private :: tfem_contact_element_equations_i, tfem_contact_element_equations_i_r2
   private :: tfem_contact_element_blocks_r2, tfem_contact_element_blocks_i
-  private :: tfem_contact_element_blocks_i_r2
+  private :: tfem_contact_element_blocks_i_r2, tfem_solid_last_error_i, tfem_solid_last_error_str
+  private :: tfem_solid_last_error_str_i, tfem_solid_last_error_length_no_model
+  private :: tfem_solid_get_warning_i, tfem_solid_get_warning_str, tfem_solid_get_warning_str_i
+  private :: tfem_solid_get_sizes_opt, tfem_solid_get_mesh_nodes_r2, tfem_solid_get_mesh_nodes_i
+  private :: tfem_solid_get_mesh_nodes_i_r2, tfem_solid_get_mesh_tetrahedra_opt
+  private :: tfem_solid_get_mesh_tetrahedra_opt_r21, tfem_solid_get_mesh_tetrahedra_opt_r12
+  private :: tfem_solid_get_mesh_tetrahedra_opt_r22, tfem_solid_get_mesh_tetrahedra_opt_i
+  private :: tfem_solid_get_mesh_tetrahedra_opt_i_r21, tfem_solid_get_mesh_tetrahedra_opt_i_r12
+  private :: tfem_solid_get_mesh_tetrahedra_opt_i_r22, tfem_solid_get_boundary_faces_opt
+  private :: tfem_solid_get_boundary_faces_opt_r21, tfem_solid_get_boundary_faces_opt_r12
+  private :: tfem_solid_get_boundary_faces_opt_r22, tfem_solid_get_boundary_faces_opt_i
+  private :: tfem_solid_get_boundary_faces_opt_i_r21, tfem_solid_get_boundary_faces_opt_i_r12
+  private :: tfem_solid_get_boundary_faces_opt_i_r22, tfem_solid_add_contact_pair_opt
+  private :: tfem_solid_solve_opt, tfem_solid_solve_contact_opt, tfem_solid_step_opt
+  private :: tfem_solid_get_displacements_r2, tfem_solid_get_displacements_i
+  private :: tfem_solid_get_displacements_i_r2, tfem_solid_get_element_strains_r2
+  private :: tfem_solid_get_element_strains_i, tfem_solid_get_element_strains_i_r2
+  private :: tfem_solid_get_element_stresses_r2, tfem_solid_get_element_stresses_i
+  private :: tfem_solid_get_element_stresses_i_r2, tfem_solid_get_reactions_r2
+  private :: tfem_solid_get_reactions_i, tfem_solid_get_reactions_i_r2
+  private :: tfem_solid_get_contact_tetrahedra_r2, tfem_solid_get_contact_tetrahedra_i
+  private :: tfem_solid_get_contact_tetrahedra_i_r2, tfem_solid_get_contact_active_r2
+  private :: tfem_solid_get_contact_active_i, tfem_solid_get_contact_active_i_r2
+  private :: tfem_solid_get_contact_forces_r2, tfem_solid_get_contact_forces_i
+  private :: tfem_solid_get_contact_forces_i_r2, tfem_solid_get_contact_nodal_pressures_r2
+  private :: tfem_solid_get_contact_nodal_pressures_i, tfem_solid_get_contact_nodal_pressures_i_r2
 
   !> Fortran: tfem_last_error (documented in module tfem_c). `model` may be omitted (NULL is
   !! passed). `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
@@ -6894,6 +8206,186 @@ module tfem
     procedure tfem_contact_element_blocks_i_r2
   end interface tfem_contact_element_blocks
 
+  !> Fortran: tfem_solid_last_error (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `buffer` may also be a character string.
+  interface tfem_solid_last_error
+    procedure tfem_solid_last_error
+    procedure tfem_solid_last_error_i
+    procedure tfem_solid_last_error_str
+    procedure tfem_solid_last_error_str_i
+  end interface tfem_solid_last_error
+
+  !> Fortran: tfem_solid_last_error_length (documented in module tfem_c). `model` may be omitted
+  !! (NULL is passed).
+  interface tfem_solid_last_error_length
+    procedure tfem_solid_last_error_length
+    procedure tfem_solid_last_error_length_no_model
+  end interface tfem_solid_last_error_length
+
+  !> Fortran: tfem_solid_get_warning (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `buffer` may also be a character string.
+  interface tfem_solid_get_warning
+    procedure tfem_solid_get_warning
+    procedure tfem_solid_get_warning_i
+    procedure tfem_solid_get_warning_str
+    procedure tfem_solid_get_warning_str_i
+  end interface tfem_solid_get_warning
+
+  !> Fortran: tfem_solid_get_sizes (documented in module tfem_c). `n_nodes`, `n_tetrahedra` and
+  !! `n_contact_tetrahedra` are OPTIONAL: omit them to pass NULL. The name is no bind(C) procedure
+  !! here (for c_funloc: module tfem_c).
+  interface tfem_solid_get_sizes
+    procedure tfem_solid_get_sizes_opt
+  end interface tfem_solid_get_sizes
+
+  !> Fortran: tfem_solid_get_mesh_nodes (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `xyz` may have rank 1 or 2.
+  interface tfem_solid_get_mesh_nodes
+    procedure tfem_solid_get_mesh_nodes
+    procedure tfem_solid_get_mesh_nodes_r2
+    procedure tfem_solid_get_mesh_nodes_i
+    procedure tfem_solid_get_mesh_nodes_i_r2
+  end interface tfem_solid_get_mesh_nodes
+
+  !> Fortran: tfem_solid_get_mesh_tetrahedra (documented in module tfem_c). `bodies` is OPTIONAL:
+  !! omit it to pass NULL. `length` and `bodies_length` take integer(c_size_t) or default integers
+  !! (kind tfem_length_kind), all of one kind; a negative length is passed as 0. `tetrahedra` and
+  !! `bodies` may each have rank 1 or 2. The name is no bind(C) procedure here (for c_funloc: module
+  !! tfem_c).
+  interface tfem_solid_get_mesh_tetrahedra
+    procedure tfem_solid_get_mesh_tetrahedra_opt
+    procedure tfem_solid_get_mesh_tetrahedra_opt_r21
+    procedure tfem_solid_get_mesh_tetrahedra_opt_r12
+    procedure tfem_solid_get_mesh_tetrahedra_opt_r22
+    procedure tfem_solid_get_mesh_tetrahedra_opt_i
+    procedure tfem_solid_get_mesh_tetrahedra_opt_i_r21
+    procedure tfem_solid_get_mesh_tetrahedra_opt_i_r12
+    procedure tfem_solid_get_mesh_tetrahedra_opt_i_r22
+  end interface tfem_solid_get_mesh_tetrahedra
+
+  !> Fortran: tfem_solid_get_boundary_faces (documented in module tfem_c). `tags` is OPTIONAL: omit
+  !! it to pass NULL. `length` and `tags_length` take integer(c_size_t) or default integers (kind
+  !! tfem_length_kind), all of one kind; a negative length is passed as 0. `faces` and `tags` may
+  !! each have rank 1 or 2. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_solid_get_boundary_faces
+    procedure tfem_solid_get_boundary_faces_opt
+    procedure tfem_solid_get_boundary_faces_opt_r21
+    procedure tfem_solid_get_boundary_faces_opt_r12
+    procedure tfem_solid_get_boundary_faces_opt_r22
+    procedure tfem_solid_get_boundary_faces_opt_i
+    procedure tfem_solid_get_boundary_faces_opt_i_r21
+    procedure tfem_solid_get_boundary_faces_opt_i_r12
+    procedure tfem_solid_get_boundary_faces_opt_i_r22
+  end interface tfem_solid_get_boundary_faces
+
+  !> Fortran: tfem_solid_add_contact_pair (documented in module tfem_c). `pair` is OPTIONAL: omit it
+  !! to pass NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_solid_add_contact_pair
+    procedure tfem_solid_add_contact_pair_opt
+  end interface tfem_solid_add_contact_pair
+
+  !> Fortran: tfem_solid_solve (documented in module tfem_c). `info` is OPTIONAL: omit it to pass
+  !! NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_solid_solve
+    procedure tfem_solid_solve_opt
+  end interface tfem_solid_solve
+
+  !> Fortran: tfem_solid_solve_contact (documented in module tfem_c). `options` and `info` are
+  !! OPTIONAL: omit them to pass NULL. The name is no bind(C) procedure here (for c_funloc: module
+  !! tfem_c).
+  interface tfem_solid_solve_contact
+    procedure tfem_solid_solve_contact_opt
+  end interface tfem_solid_solve_contact
+
+  !> Fortran: tfem_solid_step (documented in module tfem_c). `options` and `info` are OPTIONAL: omit
+  !! them to pass NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_solid_step
+    procedure tfem_solid_step_opt
+  end interface tfem_solid_step
+
+  !> Fortran: tfem_solid_get_displacements (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_solid_get_displacements
+    procedure tfem_solid_get_displacements
+    procedure tfem_solid_get_displacements_r2
+    procedure tfem_solid_get_displacements_i
+    procedure tfem_solid_get_displacements_i_r2
+  end interface tfem_solid_get_displacements
+
+  !> Fortran: tfem_solid_get_element_strains (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_solid_get_element_strains
+    procedure tfem_solid_get_element_strains
+    procedure tfem_solid_get_element_strains_r2
+    procedure tfem_solid_get_element_strains_i
+    procedure tfem_solid_get_element_strains_i_r2
+  end interface tfem_solid_get_element_strains
+
+  !> Fortran: tfem_solid_get_element_stresses (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_solid_get_element_stresses
+    procedure tfem_solid_get_element_stresses
+    procedure tfem_solid_get_element_stresses_r2
+    procedure tfem_solid_get_element_stresses_i
+    procedure tfem_solid_get_element_stresses_i_r2
+  end interface tfem_solid_get_element_stresses
+
+  !> Fortran: tfem_solid_get_reactions (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_solid_get_reactions
+    procedure tfem_solid_get_reactions
+    procedure tfem_solid_get_reactions_r2
+    procedure tfem_solid_get_reactions_i
+    procedure tfem_solid_get_reactions_i_r2
+  end interface tfem_solid_get_reactions
+
+  !> Fortran: tfem_solid_get_contact_tetrahedra (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_solid_get_contact_tetrahedra
+    procedure tfem_solid_get_contact_tetrahedra
+    procedure tfem_solid_get_contact_tetrahedra_r2
+    procedure tfem_solid_get_contact_tetrahedra_i
+    procedure tfem_solid_get_contact_tetrahedra_i_r2
+  end interface tfem_solid_get_contact_tetrahedra
+
+  !> Fortran: tfem_solid_get_contact_active (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_solid_get_contact_active
+    procedure tfem_solid_get_contact_active
+    procedure tfem_solid_get_contact_active_r2
+    procedure tfem_solid_get_contact_active_i
+    procedure tfem_solid_get_contact_active_i_r2
+  end interface tfem_solid_get_contact_active
+
+  !> Fortran: tfem_solid_get_contact_forces (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_solid_get_contact_forces
+    procedure tfem_solid_get_contact_forces
+    procedure tfem_solid_get_contact_forces_r2
+    procedure tfem_solid_get_contact_forces_i
+    procedure tfem_solid_get_contact_forces_i_r2
+  end interface tfem_solid_get_contact_forces
+
+  !> Fortran: tfem_solid_get_contact_nodal_pressures (documented in module tfem_c). `length` takes
+  !! an integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed
+  !! as 0. `out` may have rank 1 or 2.
+  interface tfem_solid_get_contact_nodal_pressures
+    procedure tfem_solid_get_contact_nodal_pressures
+    procedure tfem_solid_get_contact_nodal_pressures_r2
+    procedure tfem_solid_get_contact_nodal_pressures_i
+    procedure tfem_solid_get_contact_nodal_pressures_i_r2
+  end interface tfem_solid_get_contact_nodal_pressures
+
 contains
 
   pure function c_strlen(buf) result(n)
@@ -6947,6 +8439,50 @@ contains
       msg(i:i) = buf(i)
     end do
   end function tfem_contact_error_message
+
+  !> The message of the last failed call on the 3D model (from tfem_solid_create), as a
+  !! Fortran string: a 3D model keeps its own messages, which tfem_error_message, reading a
+  !! 2D model's, does not see. The buffer is sized by tfem_solid_last_error_length, so that
+  !! a message of any length comes whole.
+  function tfem_solid_error_message(model) result(msg)
+    type(c_ptr), intent(in) :: model
+    character(len=:), allocatable :: msg
+    character(kind=c_char), allocatable :: buf(:)
+    integer(c_int) :: status
+    integer :: i, n
+    allocate(buf(tfem_solid_last_error_length(model)))
+    buf(1) = c_null_char
+    status = tfem_solid_last_error(model, buf, size(buf, kind=c_size_t))
+    n = c_strlen(buf)
+    if (status == TFEM_STATUS_NULL_POINTER) n = 0
+    allocate(character(len=n) :: msg)
+    do i = 1, n
+      msg(i:i) = buf(i)
+    end do
+  end function tfem_solid_error_message
+
+  !> Warning number index (0-based) of the 3D model, as a Fortran string. The buffer is
+  !! sized by tfem_solid_get_warning_size, so that a warning of any length comes whole.
+  function tfem_solid_warning_message(model, index) result(msg)
+    type(c_ptr), intent(in) :: model
+    integer, intent(in) :: index
+    character(len=:), allocatable :: msg
+    character(kind=c_char), allocatable :: buf(:)
+    integer(c_size_t) :: bytes
+    integer(c_int) :: status
+    integer :: i, n
+    bytes = 1
+    if (tfem_solid_get_warning_size(model, int(index, c_int), bytes) /= TFEM_STATUS_OK) bytes = 1
+    allocate(buf(bytes))
+    buf(1) = c_null_char
+    status = tfem_solid_get_warning(model, int(index, c_int), buf, size(buf, kind=c_size_t))
+    n = c_strlen(buf)
+    if (status /= TFEM_STATUS_OK .and. status /= TFEM_STATUS_BUFFER_TOO_SMALL) n = 0
+    allocate(character(len=n) :: msg)
+    do i = 1, n
+      msg(i:i) = buf(i)
+    end do
+  end function tfem_solid_warning_message
 
   !> Warning number index (0-based) of model, as a Fortran string. The buffer is sized by
   !! tfem_get_warning_size, so that a warning of any length comes whole.

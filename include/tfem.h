@@ -8,14 +8,18 @@
  *   results of its last solve or load step. A tfem_contact is the contact
  *   context of a host code that keeps its own elements and solver: it
  *   gives back contact stiffness and forces to add to the host's system.
+ *   A tfem_solid_model holds a problem in space (tetrahedra, tagged
+ *   boundary faces, frictionless contact between tagged surfaces): its
+ *   functions, tfem_solid_*, follow the same phases and conventions, and
+ *   one is used by one thread at a time like a tfem_model.
  * - Phases of a model: describe it (mesh, materials, loads and
  *   constraints, contact pairs), solve it (tfem_solve, tfem_solve_contact,
  *   or a load history of tfem_step), read the results (computed when
  *   asked). Any change to the description discards the results.
  * - The entry points below stand in groups, in that order, each under a
  *   head: lifecycle, mesh, materials, loads and constraints, contact pairs,
- *   solve, results, contact results, load history, utilities, and the
- *   host codes' contact context.
+ *   solve, results, contact results, load history, utilities, the host
+ *   codes' contact context, and the 3D model.
  *
  * Conventions
  * - Every function returns a tfem_status; TFEM_STATUS_OK (0) is success.
@@ -330,6 +334,26 @@ typedef enum tfem_adapt_goal {
 } tfem_adapt_goal;
 
 /**
+ * A displacement component in space (argument `comp` of `tfem_solid_fix`
+ * and `tfem_solid_fix_faces`): the 2D `tfem_component` has no z, and its
+ * values must keep their meaning, so 3D has its own.
+ */
+typedef enum tfem_axis {
+  /**
+   * u_x.
+   */
+  TFEM_AXIS_X = 0,
+  /**
+   * u_y.
+   */
+  TFEM_AXIS_Y = 1,
+  /**
+   * u_z.
+   */
+  TFEM_AXIS_Z = 2,
+} tfem_axis;
+
+/**
  * Opaque handle to a contact context for a host code. Create with
  * `tfem_contact_create`, free with `tfem_contact_destroy`.
  */
@@ -340,6 +364,12 @@ typedef struct tfem_contact tfem_contact;
  * `tfem_destroy`.
  */
 typedef struct tfem_model tfem_model;
+
+/**
+ * Opaque handle to a 3D model. Create with `tfem_solid_create`, free with
+ * `tfem_solid_destroy`.
+ */
+typedef struct tfem_solid_model tfem_solid_model;
 
 /**
  * Options of `tfem_solve_contact`. Fill with `tfem_contact_options_default`
@@ -1878,6 +1908,499 @@ enum tfem_status tfem_contact_element_blocks(struct tfem_contact *context,
  * a contact.)
  */
 enum tfem_status tfem_contact_length(struct tfem_contact *context, double *length);
+
+/****************************************************************************
+ * The 3D model (tfem_solid_*): a handle of its own, tfem_solid_model, with
+ * the conventions of tfem_model. Tetrahedra and tagged boundary faces, one
+ * isotropic material per body, constraints and loads per node or per face
+ * tag, frictionless contact pairs between tagged surfaces (a planar side
+ * facing a matching one, docs/method.md §9), a solve, and its results per
+ * node, per tetrahedron and per tetrahedron of the contact layer B.
+ ***************************************************************************/
+
+/**
+ * Creates an empty 3D model. Returns NULL only if memory is exhausted.
+ * Free it with `tfem_solid_destroy`. A 3D model is its own handle: the
+ * 2D functions (`tfem_*` without `solid`) refuse it, and the 3D ones
+ * refuse a 2D model.
+ */
+struct tfem_solid_model *tfem_solid_create(void);
+
+/**
+ * Destroys a 3D model and everything it owns. NULL is a no-op, and so is
+ * a pointer that is not a live 3D model (destroyed already, or another
+ * kind of handle): do not use a handle after destroying it.
+ */
+void tfem_solid_destroy(struct tfem_solid_model *model);
+
+/**
+ * Copies the message of the last failed call on `model` (empty after a
+ * successful call) into `buffer` (`length` bytes including the final
+ * NUL), truncating like `tfem_last_error` (TFEM_STATUS_BUFFER_TOO_SMALL;
+ * `tfem_solid_last_error_length` gives the size needed). A 3D model keeps
+ * its own messages; calls given no handle at all leave theirs in the
+ * thread's slot, read with `tfem_last_error(NULL, …)`. A `model` that is
+ * not a live 3D model gives TFEM_STATUS_INVALID_ARGUMENT with the message
+ * saying so in `buffer`.
+ */
+enum tfem_status tfem_solid_last_error(const struct tfem_solid_model *model,
+                                       char *buffer,
+                                       size_t length);
+
+/**
+ * Size in bytes (including the final NUL) of the message
+ * `tfem_solid_last_error` would give for `model`, so that a buffer of
+ * this size holds all of it: 1 after a successful call; for a handle
+ * that is not a live 3D model, the size of the message saying so.
+ * `model` may be NULL: 1 (it has no message).
+ */
+size_t tfem_solid_last_error_length(const struct tfem_solid_model *model);
+
+/**
+ * Number of warnings: what the mesh noticed (tetrahedra numbered with
+ * negative volume and renumbered, nodes used by no tetrahedron) and what
+ * the last solve noticed but did not refuse (an ill-conditioned system).
+ * They are kept until the next solve or mesh.
+ */
+enum tfem_status tfem_solid_warning_count(struct tfem_solid_model *model, int *count);
+
+/**
+ * Writes to `size` the size in bytes (including the final NUL) of
+ * warning number `index` (0-based, whatever the index base), so that a
+ * buffer of this size holds all of it in `tfem_solid_get_warning`. An
+ * index out of range is refused (TFEM_STATUS_INVALID_ARGUMENT), `size`
+ * unchanged.
+ */
+enum tfem_status tfem_solid_get_warning_size(struct tfem_solid_model *model,
+                                             int index,
+                                             size_t *size);
+
+/**
+ * Copies warning number `index` (0-based, whatever the index base) into
+ * `buffer` of `length` bytes, truncating like `tfem_get_warning`: the
+ * truncated warning is written with TFEM_STATUS_BUFFER_TOO_SMALL; on any
+ * other error `buffer` is unchanged.
+ */
+enum tfem_status tfem_solid_get_warning(struct tfem_solid_model *model,
+                                        int index,
+                                        char *buffer,
+                                        size_t length);
+
+/**
+ * Sets the mesh: `n_nodes` nodes with coordinates `xyz` (3·n_nodes
+ * values, x0 y0 z0 x1 …), `n_tetrahedra` linear tetrahedra with
+ * `connectivity` (4·n_tetrahedra node indices) and a body tag per
+ * tetrahedron in `body_of_tetrahedron`. `index_base` is 0 (C) or 1
+ * (Fortran) and applies to every index of every later call and message,
+ * as `tfem_set_mesh`'s. A tetrahedron numbered with negative volume is
+ * renumbered (its last two nodes swapped; a warning counts them, and
+ * every output refers to the renumbered ones); flat ones are legal
+ * (tempered). The mesh has no tagged faces yet: give them with
+ * `tfem_solid_set_boundary_faces`. Replacing a mesh discards
+ * constraints, loads, contact pairs and results; materials and
+ * tempering are kept. Refused, naming the tetrahedron or node, for a
+ * node index out of range, a node repeated in a tetrahedron or a
+ * coordinate that is not finite (TFEM_STATUS_INVALID_MESH).
+ */
+enum tfem_status tfem_solid_set_mesh(struct tfem_solid_model *model,
+                                     int n_nodes,
+                                     const double *xyz,
+                                     int n_tetrahedra,
+                                     const int *connectivity,
+                                     const int *body_of_tetrahedron,
+                                     int index_base);
+
+/**
+ * Loads a Gmsh MSH 4.1 mesh (ASCII or binary) of tetrahedra from the file
+ * `path` (NUL-terminated; on Unix any bytes, as for `tfem_load_gmsh`):
+ * physical volumes become bodies (tag = body), the triangles of physical
+ * surfaces become tagged boundary faces (tag = the physical surface's),
+ * node i being the i-th node of the file's `$Nodes` section. Replaces the
+ * mesh like `tfem_solid_set_mesh` with the given `index_base`. Returns
+ * TFEM_STATUS_IO for an unreadable or malformed file,
+ * TFEM_STATUS_INVALID_MESH for content a tetrahedral mesh cannot take
+ * (another version of the format, no tetrahedra in a physical volume as
+ * in a 2D file, elements of higher order, a tagged triangle that is not
+ * the face of exactly one tetrahedron; named by the file's tags and
+ * physical groups), TFEM_STATUS_INVALID_ARGUMENT if the library was built
+ * without the `gmsh` feature. On error the model is unchanged.
+ */
+enum tfem_status tfem_solid_load_gmsh(struct tfem_solid_model *model,
+                                      const char *path,
+                                      int index_base);
+
+/**
+ * Sets the tagged boundary faces: `n_faces` triangles given by
+ * `face_nodes` (3·n_faces node indices, in any order: the outward side is
+ * away from the tetrahedron the face belongs to) with a tag each in
+ * `tags`. Tags name the faces for constraints, loads and contact pairs.
+ * Replaces previous faces (`tfem_solid_add_boundary_faces` adds one group
+ * at a time). Each must be a face of exactly one tetrahedron, and a face
+ * given twice with one tag is refused (its loads would count twice):
+ * TFEM_STATUS_INVALID_MESH naming the face. Faces are given before the
+ * constraints, loads and contact pairs that name them: while any is
+ * declared the call is refused (TFEM_STATUS_INVALID_STATE). Discards the
+ * results. On any error nothing changes.
+ */
+enum tfem_status tfem_solid_set_boundary_faces(struct tfem_solid_model *model,
+                                               int n_faces,
+                                               const int *face_nodes,
+                                               const int *tags);
+
+/**
+ * Adds tagged boundary faces to those already set, checked as
+ * `tfem_solid_set_boundary_faces` checks them (a face already holding
+ * the tag is refused): for instance one call per physical surface.
+ */
+enum tfem_status tfem_solid_add_boundary_faces(struct tfem_solid_model *model,
+                                               int n_faces,
+                                               const int *face_nodes,
+                                               const int *tags);
+
+/**
+ * Sizes: nodes, tetrahedra, and tetrahedra of the contact layer B of the
+ * last solve (0 before a solve, or without contact pairs), which size the
+ * buffers of the getters. Any pointer may be NULL.
+ */
+enum tfem_status tfem_solid_get_sizes(struct tfem_solid_model *model,
+                                      int *n_nodes,
+                                      int *n_tetrahedra,
+                                      int *n_contact_tetrahedra);
+
+/**
+ * Number of tagged boundary faces the model holds, from
+ * `tfem_solid_set_boundary_faces` / `tfem_solid_add_boundary_faces` or a
+ * Gmsh file's physical surfaces; see `tfem_solid_get_boundary_faces`.
+ */
+enum tfem_status tfem_solid_get_boundary_face_count(struct tfem_solid_model *model, int *count);
+
+/**
+ * Copies the node coordinates the model holds (x0 y0 z0 x1 …, 3·n_nodes
+ * values) into `xyz` of `length` values: after `tfem_solid_load_gmsh`,
+ * the mesh the file gave.
+ */
+enum tfem_status tfem_solid_get_mesh_nodes(struct tfem_solid_model *model,
+                                           double *xyz,
+                                           size_t length);
+
+/**
+ * Copies the tetrahedra the model holds (4·n_tetrahedra node indices in
+ * the model's index base, those given with negative volume renumbered)
+ * into `tetrahedra` of `length` values and each one's body tag into
+ * `bodies` of `bodies_length` values; `bodies` may be NULL. Nothing is
+ * written unless both buffers are large enough.
+ */
+enum tfem_status tfem_solid_get_mesh_tetrahedra(struct tfem_solid_model *model,
+                                                int *tetrahedra,
+                                                size_t length,
+                                                int *bodies,
+                                                size_t bodies_length);
+
+/**
+ * Copies the tagged boundary faces the model holds (3·count node indices
+ * in the model's index base, count from
+ * `tfem_solid_get_boundary_face_count`) into `faces` of `length` values
+ * and each face's tag into `tags` of `tags_length` values, in the order
+ * they were given; `tags` may be NULL. Nothing is written unless both
+ * buffers are large enough.
+ */
+enum tfem_status tfem_solid_get_boundary_faces(struct tfem_solid_model *model,
+                                               int *faces,
+                                               size_t length,
+                                               int *tags,
+                                               size_t tags_length);
+
+/**
+ * Sets the isotropic material of body `body`: Young's modulus `young`
+ * (finite, > 0) and Poisson's ratio `poisson` (in (-1, 0.5)); a body may
+ * be given its material before or after the mesh. Refused with
+ * TFEM_STATUS_INVALID_MATERIAL naming the body. Every body of the mesh
+ * needs one before a solve.
+ */
+enum tfem_status tfem_solid_set_material(struct tfem_solid_model *model,
+                                         int body,
+                                         double young,
+                                         double poisson);
+
+/**
+ * Chooses Jmin, the floor of the tempered tetrahedra's Jacobian, with
+ * `tfem_set_tempering`'s encoding (a `tfem_tempering_mode`): 0 auto,
+ * Jmin = min(h⁴/λ, h³/10) with λ the larger side of the mesh's bounding
+ * box (h the element's longest edge); 1 the same h⁴/λ with λ = `value`
+ * (a length); 2 Jmin = `value` for every tetrahedron (length³; J is six
+ * times the volume); 3 off, plain FEM (a flat tetrahedron is then an
+ * error). `value` is ignored for 0 and 3, and must be finite and > 0 for
+ * 1 and 2.
+ */
+enum tfem_status tfem_solid_set_tempering(struct tfem_solid_model *model, int mode, double value);
+
+/**
+ * Chooses the fill-reducing ordering of the factorisation (a
+ * `tfem_ordering_mode`: 0 auto, 1 AMD, 2 nested dissection). Results do
+ * not depend on it beyond round-off, and are kept.
+ */
+enum tfem_status tfem_solid_set_ordering(struct tfem_solid_model *model, int ordering);
+
+/**
+ * Prescribes displacement component `comp` (a `tfem_axis`: 0 x, 1 y,
+ * 2 z) of `node` to `value` (model length units). A component prescribed
+ * again takes the new value (unlike `tfem_fix`, which refuses a different
+ * one). Refused, naming it, for a node out of range, a component other
+ * than 0, 1, 2 or a value that is not finite.
+ */
+enum tfem_status tfem_solid_fix(struct tfem_solid_model *model, int node, int comp, double value);
+
+/**
+ * Prescribes component `comp` (0 x, 1 y, 2 z) to `value` on every node of
+ * the boundary faces tagged `tag`, as they are when called (faces are
+ * fixed before constraints: see `tfem_solid_set_boundary_faces`). An
+ * unknown tag is refused, naming it.
+ */
+enum tfem_status tfem_solid_fix_faces(struct tfem_solid_model *model,
+                                      int tag,
+                                      int comp,
+                                      double value);
+
+/**
+ * Removes every prescribed displacement (and so lets the boundary faces
+ * change again, once loads and pairs are cleared too).
+ */
+enum tfem_status tfem_solid_clear_constraints(struct tfem_solid_model *model);
+
+/**
+ * Applies pressure `pressure` on the boundary faces tagged `tag`: a
+ * stress (force per unit area, Pa in SI), positive pushing into the body,
+ * along each face's outward normal. Loads add up.
+ */
+enum tfem_status tfem_solid_add_pressure(struct tfem_solid_model *model, int tag, double pressure);
+
+/**
+ * Applies the traction (tx, ty, tz) on the boundary faces tagged `tag`: a
+ * stress vector (force per unit area, Pa in SI) whatever the faces'
+ * orientation. Loads add up.
+ */
+enum tfem_status tfem_solid_add_traction(struct tfem_solid_model *model,
+                                         int tag,
+                                         double tx,
+                                         double ty,
+                                         double tz);
+
+/**
+ * Adds the point force (fx, fy, fz) at `node` (N in SI). Loads add up.
+ */
+enum tfem_status tfem_solid_add_nodal_force(struct tfem_solid_model *model,
+                                            int node,
+                                            double fx,
+                                            double fy,
+                                            double fz);
+
+/**
+ * Removes every load.
+ */
+enum tfem_status tfem_solid_clear_loads(struct tfem_solid_model *model);
+
+/**
+ * Declares a frictionless contact interface between the boundary faces
+ * tagged `tag_a` and those tagged `tag_b`, on two bodies. Side a must be
+ * planar: its outward normal is the direction that opens the gap, and the
+ * contact layer B is a layer of flat tetrahedra built across that plane
+ * (docs/method.md §9). Side b must face side a node to node (matching
+ * meshes); that, the planarity and the two bodies are checked by the
+ * solve, which names the pair and its tags. Writes the pair's index
+ * (0-based, whatever the index base) to `pair` (may be NULL). Two equal
+ * tags or a tag without faces are refused here, naming the tag.
+ */
+enum tfem_status tfem_solid_add_contact_pair(struct tfem_solid_model *model,
+                                             int tag_a,
+                                             int tag_b,
+                                             int *pair);
+
+/**
+ * Removes every contact pair.
+ */
+enum tfem_status tfem_solid_clear_contact_pairs(struct tfem_solid_model *model);
+
+/**
+ * Solves the model with the default contact options (as
+ * `tfem_solid_solve_contact` without options), the call for a model
+ * without contact pairs: one linear solve then. `info` may be NULL.
+ */
+enum tfem_status tfem_solid_solve(struct tfem_solid_model *model, struct tfem_solve_info *info);
+
+/**
+ * Solves the model: where it has contact pairs, the tetrahedra of B are
+ * switched on where they would invert, by the active-set loop of the 2D
+ * contact solve. `options` may be NULL (defaults: see
+ * `tfem_contact_options_default`); 3D contact is frictionless with its
+ * own inversion test, so `law` must be 0 and `inversion_test` 0
+ * (TFEM_STATUS_INVALID_ARGUMENT saying so otherwise); `contact_modulus`
+ * and `lambda` (0: the smaller E of the pair's bodies, the other body's
+ * for a rigid tool; the mesh's size), `max_iterations` and `refactorize`
+ * are read. `info` may be NULL. A body without material gives
+ * TFEM_STATUS_INVALID_MATERIAL naming it, a body not restrained
+ * TFEM_STATUS_SINGULAR naming it, a pair whose sides do not fit (side a
+ * not planar, sides not matching node to node, both on one body) an
+ * error naming the pair and its tags. On error the model is unchanged,
+ * its previous results included.
+ */
+enum tfem_status tfem_solid_solve_contact(struct tfem_solid_model *model,
+                                          const struct tfem_contact_options *options,
+                                          struct tfem_solve_info *info);
+
+/**
+ * One quasi-static load step: the model's loads and prescribed
+ * displacements times `load_factor` (finite; initial gaps as they are),
+ * started from the active set of the last solve or step, on the
+ * structure, pattern and symbolic analysis the first solve derived, so
+ * that a load history repeats neither the analysis nor the active-set
+ * iterations a cold start would. Frictionless contact has no memory: a
+ * step's answer is that of a solve at its factor, and the loads may
+ * change between steps (a non-proportional history). `options` may be
+ * NULL (defaults; refused as by `tfem_solid_solve_contact`); `info` may be
+ * NULL. `tfem_solid_revert_step` takes the step back. On error the model
+ * is unchanged.
+ */
+enum tfem_status tfem_solid_step(struct tfem_solid_model *model,
+                                 double load_factor,
+                                 const struct tfem_contact_options *options,
+                                 struct tfem_solve_info *info);
+
+/**
+ * Takes back the last load step: its results, and the active set the
+ * next step starts from, are those before it. Once per step, and not
+ * after a change of the model (which discards the results): refused then
+ * with TFEM_STATUS_INVALID_STATE, the model unchanged.
+ */
+enum tfem_status tfem_solid_revert_step(struct tfem_solid_model *model);
+
+/**
+ * Writes the statistics of the last solve (unknowns, factorisations,
+ * interface unknowns, residual, times) to `info`.
+ */
+enum tfem_status tfem_solid_get_solve_info(struct tfem_solid_model *model,
+                                           struct tfem_solve_info *info);
+
+/**
+ * Writes the active-set iterations of the last solve (1 without contact)
+ * to `iterations`.
+ */
+enum tfem_status tfem_solid_get_iterations(struct tfem_solid_model *model, int *iterations);
+
+/**
+ * Copies the nodal displacements (ux0 uy0 uz0 ux1 …, 3·n_nodes values)
+ * of the last solve into `out` of `length` values.
+ */
+enum tfem_status tfem_solid_get_displacements(struct tfem_solid_model *model,
+                                              double *out,
+                                              size_t length);
+
+/**
+ * Copies element strains (ε_xx ε_yy ε_zz γ_yz γ_xz γ_xy per tetrahedron,
+ * engineering shears, 6·n_tetrahedra values), computed on request and
+ * tempered below Jmin as the stiffness is.
+ */
+enum tfem_status tfem_solid_get_element_strains(struct tfem_solid_model *model,
+                                                double *out,
+                                                size_t length);
+
+/**
+ * Copies element stresses (σ_xx σ_yy σ_zz σ_yz σ_xz σ_xy per tetrahedron,
+ * 6·n_tetrahedra values, the order of the strains; force per unit area,
+ * Pa in SI), computed on request. An overflow gives
+ * TFEM_STATUS_NUMERICAL_FAILURE naming the tetrahedron.
+ */
+enum tfem_status tfem_solid_get_element_stresses(struct tfem_solid_model *model,
+                                                 double *out,
+                                                 size_t length);
+
+/**
+ * Copies reaction forces (Rx Ry Rz per node, 3·n_nodes values, N in SI;
+ * zero at components that are not prescribed), computed on request: with
+ * the loads and the contact forces they balance every body.
+ */
+enum tfem_status tfem_solid_get_reactions(struct tfem_solid_model *model,
+                                          double *out,
+                                          size_t length);
+
+/**
+ * Writes the work of the external loads of the last solve, Σ f·u over
+ * every node (J in SI): for a pressure load, the compliance.
+ */
+enum tfem_status tfem_solid_get_external_work(struct tfem_solid_model *model, double *work);
+
+/**
+ * Copies the nodes of every tetrahedron of the contact layer B of the
+ * last solve (4·n_contact_tetrahedra indices in the model's index base,
+ * pair by pair, numbered so that opening the gap makes J positive).
+ */
+enum tfem_status tfem_solid_get_contact_tetrahedra(struct tfem_solid_model *model,
+                                                   int *out,
+                                                   size_t length);
+
+/**
+ * Copies the active flag (1 pressed, 0 open) of every tetrahedron of B
+ * in the last solve (n_contact_tetrahedra values, see
+ * `tfem_solid_get_sizes`).
+ */
+enum tfem_status tfem_solid_get_contact_active(struct tfem_solid_model *model,
+                                               int *out,
+                                               size_t length);
+
+/**
+ * Copies the force the contact exerts on every node in the last solve
+ * (fx fy fz per node, 3·n_nodes values, N in SI; zero off the contact
+ * interfaces), computed on request: the forces of one pair sum to zero.
+ */
+enum tfem_status tfem_solid_get_contact_forces(struct tfem_solid_model *model,
+                                               double *out,
+                                               size_t length);
+
+/**
+ * Copies the contact pressure at every node in the last solve (n_nodes
+ * values; force per unit area, Pa in SI, positive in compression; zero
+ * off the pairs' faces), computed on request: the normal force B exerts
+ * on the node over its tributary area, a third of each of its faces.
+ */
+enum tfem_status tfem_solid_get_contact_nodal_pressures(struct tfem_solid_model *model,
+                                                        double *out,
+                                                        size_t length);
+
+/**
+ * Writes the area in contact in the last solve, every pair together
+ * (model length units squared): each active tetrahedron of B stands for
+ * a third of the facing triangle of its prism, so a closed interface
+ * reads its whole area.
+ */
+enum tfem_status tfem_solid_get_contact_area(struct tfem_solid_model *model, double *area);
+
+/**
+ * Writes the area in contact of contact pair `pair` alone (0-based, as
+ * `tfem_solid_add_contact_pair` returned it, whatever the index base) in
+ * the last solve. An unknown pair is refused (TFEM_STATUS_INVALID_ARGUMENT
+ * naming it).
+ */
+enum tfem_status tfem_solid_get_contact_pair_area(struct tfem_solid_model *model,
+                                                  int pair,
+                                                  double *area);
+
+/**
+ * Writes the solved model to the file `path` (NUL-terminated; on Unix any
+ * bytes, as for `tfem_load_gmsh`) as a VTK XML unstructured grid (`.vtu`,
+ * binary appended data, read by ParaView, VTK and meshio): the
+ * tetrahedra in their initial configuration with point data
+ * `displacement` ([u_x, u_y, u_z]) and, when the model has contact pairs,
+ * `contact_pressure` (`tfem_solid_get_contact_nodal_pressures`); cell
+ * data `body`, `J` (six times the signed volume) and `stress` (VTK's
+ * order of a symmetric tensor, [σ_xx, σ_yy, σ_zz, σ_xy, σ_yz, σ_xz], so
+ * that its tensor filters read it; not the Voigt order of
+ * `tfem_solid_get_element_stresses`). Returns TFEM_STATUS_INVALID_STATE
+ * before a solve, TFEM_STATUS_NUMERICAL_FAILURE for a result that is not
+ * finite (nothing is written then), TFEM_STATUS_IO when the file cannot
+ * be written (the message names it and the reason), and
+ * TFEM_STATUS_INVALID_ARGUMENT if the library was built without the `vtu`
+ * feature. The model is never changed.
+ */
+enum tfem_status tfem_solid_write_vtu(struct tfem_solid_model *model, const char *path);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -68,6 +68,19 @@ fn the_mortar_weighting_passes_the_patch_test_through_the_c_abi() {
     assert!(out.contains(" 0 failed"), "{out}");
 }
 
+/// The 3D model's C ABI (`tfem_solid_*`): two stacked cubes of Kuhn
+/// tetrahedra pressed into frictionless contact, held to the exact
+/// uniaxial stress, contact area and reactions, and every refusal (NULL,
+/// a node out of range, a wrong component, a body without material, a
+/// buffer too short, a handle of the other kind) leaving the model usable.
+#[test]
+fn the_3d_model_passes_the_contact_patch_test_through_the_c_abi() {
+    let exe = build("solid_test.c", &["-std=c11"]);
+    let folder = lib_dir().join("c_tests");
+    let out = run(&exe, &[folder.to_str().expect("a UTF-8 path")]);
+    assert!(out.contains(" 0 failed"), "{out}");
+}
+
 #[test]
 fn c_boundary_regressions_hold() {
     let exe = build("boundary_test.c", &["-std=c11"]);

@@ -276,7 +276,11 @@ const ANY_POINTER_MAY_BE_NULL: [&str; 3] = [
 ];
 
 /// The opaque handles of the C ABI, passed as `type(c_ptr), value`.
-const HANDLES: [&str; 2] = ["struct tfem_model", "struct tfem_contact"];
+const HANDLES: [&str; 3] = [
+    "struct tfem_model",
+    "struct tfem_contact",
+    "struct tfem_solid_model",
+];
 
 fn is_handle(ty: &str) -> bool {
     let base = ty.trim_start_matches("const ").trim_end_matches('*').trim();
@@ -437,9 +441,12 @@ In Fortran (`use tfem`), where it differs from the C conventions above
   TFEM_STATUS_* parameters below. tfem_error_message([model]) returns the last error as a
   Fortran string (model omitted: the calling thread's model-free calls);
   tfem_contact_error_message(context) that of a contact context;
-  tfem_warning_message(model, index) and tfem_version_string() return strings too.
-- Indices: pass index_base = 1 to tfem_set_mesh (or tfem_load_gmsh) and every node, triangle
-  and edge number of later calls and messages is 1-based, like Fortran arrays. Numbers that a
+  tfem_solid_error_message(model) that of a 3D model (from tfem_solid_create);
+  tfem_warning_message(model, index), tfem_solid_warning_message(model, index) and
+  tfem_version_string() return strings too.
+- Indices: pass index_base = 1 to tfem_set_mesh (or tfem_load_gmsh; for a 3D model
+  tfem_solid_set_mesh or tfem_solid_load_gmsh) and every node, triangle, tetrahedron, edge and
+  face number of later calls and messages is 1-based, like Fortran arrays. Numbers that a
   function documents as 0-based stay 0-based.
 - NULL: a pointer argument that the C documentation says may be NULL is OPTIONAL: omit it (by
   keyword, or at the end of the list) and the library receives NULL. A nullable model handle
@@ -833,9 +840,10 @@ fn result_of(p: &Proto) -> (&'static str, &'static str, &'static str) {
         "void" => ("subroutine", "", ""),
         "enum tfem_status" => ("function", " result(status)", "integer(c_int) :: status"),
         "size_t" => ("function", " result(res)", "integer(c_size_t) :: res"),
-        "const char *" | "struct tfem_model *" | "struct tfem_contact *" => {
-            ("function", " result(res)", "type(c_ptr) :: res")
-        }
+        "const char *"
+        | "struct tfem_model *"
+        | "struct tfem_contact *"
+        | "struct tfem_solid_model *" => ("function", " result(res)", "type(c_ptr) :: res"),
         t => panic!("no Fortran mapping for return type {t}"),
     }
 }
@@ -1323,6 +1331,48 @@ fn module_tfem(
          \x20     msg(i:i) = buf(i)\n\
          \x20   end do\n\
          \x20 end function tfem_contact_error_message\n\n\
+         \x20 !> The message of the last failed call on the 3D model (from tfem_solid_create), as a\n\
+         \x20 !! Fortran string: a 3D model keeps its own messages, which tfem_error_message, reading a\n\
+         \x20 !! 2D model's, does not see. The buffer is sized by tfem_solid_last_error_length, so that\n\
+         \x20 !! a message of any length comes whole.\n\
+         \x20 function tfem_solid_error_message(model) result(msg)\n\
+         \x20   type(c_ptr), intent(in) :: model\n\
+         \x20   character(len=:), allocatable :: msg\n\
+         \x20   character(kind=c_char), allocatable :: buf(:)\n\
+         \x20   integer(c_int) :: status\n\
+         \x20   integer :: i, n\n\
+         \x20   allocate(buf(tfem_solid_last_error_length(model)))\n\
+         \x20   buf(1) = c_null_char\n\
+         \x20   status = tfem_solid_last_error(model, buf, size(buf, kind=c_size_t))\n\
+         \x20   n = c_strlen(buf)\n\
+         \x20   if (status == TFEM_STATUS_NULL_POINTER) n = 0\n\
+         \x20   allocate(character(len=n) :: msg)\n\
+         \x20   do i = 1, n\n\
+         \x20     msg(i:i) = buf(i)\n\
+         \x20   end do\n\
+         \x20 end function tfem_solid_error_message\n\n\
+         \x20 !> Warning number index (0-based) of the 3D model, as a Fortran string. The buffer is\n\
+         \x20 !! sized by tfem_solid_get_warning_size, so that a warning of any length comes whole.\n\
+         \x20 function tfem_solid_warning_message(model, index) result(msg)\n\
+         \x20   type(c_ptr), intent(in) :: model\n\
+         \x20   integer, intent(in) :: index\n\
+         \x20   character(len=:), allocatable :: msg\n\
+         \x20   character(kind=c_char), allocatable :: buf(:)\n\
+         \x20   integer(c_size_t) :: bytes\n\
+         \x20   integer(c_int) :: status\n\
+         \x20   integer :: i, n\n\
+         \x20   bytes = 1\n\
+         \x20   if (tfem_solid_get_warning_size(model, int(index, c_int), bytes) /= TFEM_STATUS_OK) bytes = 1\n\
+         \x20   allocate(buf(bytes))\n\
+         \x20   buf(1) = c_null_char\n\
+         \x20   status = tfem_solid_get_warning(model, int(index, c_int), buf, size(buf, kind=c_size_t))\n\
+         \x20   n = c_strlen(buf)\n\
+         \x20   if (status /= TFEM_STATUS_OK .and. status /= TFEM_STATUS_BUFFER_TOO_SMALL) n = 0\n\
+         \x20   allocate(character(len=n) :: msg)\n\
+         \x20   do i = 1, n\n\
+         \x20     msg(i:i) = buf(i)\n\
+         \x20   end do\n\
+         \x20 end function tfem_solid_warning_message\n\n\
          \x20 !> Warning number index (0-based) of model, as a Fortran string. The buffer is sized by\n\
          \x20 !! tfem_get_warning_size, so that a warning of any length comes whole.\n\
          \x20 function tfem_warning_message(model, index) result(msg)\n\
@@ -1524,7 +1574,9 @@ fn every_header_function_has_a_matching_fortran_interface() {
                 "uint8_t" => decl.contains("c_int8_t"),
                 "size_t" => decl.contains("c_size_t"),
                 "char" => decl.contains("c_char"),
-                "struct tfem_model" | "struct tfem_contact" => decl.contains("c_ptr"),
+                "struct tfem_model" | "struct tfem_contact" | "struct tfem_solid_model" => {
+                    decl.contains("c_ptr")
+                }
                 s => decl.contains(s.trim_start_matches("struct ")),
             };
             assert!(kind_ok, "{}: {n} declared `{decl}` for C type {ty}", p.name);
@@ -2489,6 +2541,20 @@ fn fortran_legacy_client_with_rank_2_arrays_passes_every_check() {
     let exe = build_fortran(
         &[&root().join("c_tests/fortran_legacy_f2008_test.f90")],
         "fortran_legacy_f2008_test",
+    );
+    let out = run(&exe, &[]);
+    assert!(out.contains(" 0 failed"), "{out}");
+}
+
+/// The 3D model (`tfem_solid_*`) from a client built with -std=f2008,
+/// index_base = 1 and rank-2 arrays: two stacked cubes of Kuhn tetrahedra
+/// pressed into frictionless contact, against the exact uniaxial stress,
+/// contact area and reactions, and its refusals named in 1-based numbers.
+#[test]
+fn fortran_solid_client_passes_the_3d_contact_patch_test() {
+    let exe = build_fortran(
+        &[&root().join("c_tests/fortran_solid_f2008_test.f90")],
+        "fortran_solid_f2008_test",
     );
     let out = run(&exe, &[]);
     assert!(out.contains(" 0 failed"), "{out}");

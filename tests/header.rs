@@ -17,9 +17,10 @@ fn generate() -> String {
 }
 
 /// The header's groups, in the order the entry points stand in the sources
-/// (`src/ffi/entry.rs`, then `src/ffi/host.rs`): the first entry point of
-/// each and the head put before it. cbindgen carries the items' own
-/// documentation only, so the heads are put in here.
+/// (`src/ffi/entry.rs`, then `src/ffi/host.rs`, then `src/ffi/solid.rs`):
+/// the first entry point of each and the head put before it. cbindgen
+/// carries the items' own documentation only, so the heads are put in
+/// here.
 const SECTIONS: &[(&str, &str)] = &[
     (
         "tfem_version",
@@ -91,6 +92,16 @@ const SECTIONS: &[(&str, &str)] = &[
          contact's stiffness and forces to add to the host's system, and \
          the contact state per element of B (tfem_contact_get_active, \
          tfem_contact_pressures; not the model's tfem_get_contact_*).",
+    ),
+    (
+        "tfem_solid_create",
+        "The 3D model (tfem_solid_*): a handle of its own, tfem_solid_model, \
+         with the conventions of tfem_model. Tetrahedra and tagged boundary \
+         faces, one isotropic material per body, constraints and loads per \
+         node or per face tag, frictionless contact pairs between tagged \
+         surfaces (a planar side facing a matching one, docs/method.md §9), \
+         a solve, and its results per node, per tetrahedron and per \
+         tetrahedron of the contact layer B.",
     ),
 ];
 

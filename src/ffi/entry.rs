@@ -326,14 +326,14 @@ pub unsafe extern "C" fn tfem_load_gmsh(
 /// file named in Latin-1 (`lat\xe9.msh`) must open as the shell opens it,
 /// so the bytes are taken as they are.
 #[cfg(unix)]
-fn path_of(path: &std::ffi::CStr) -> Result<std::path::PathBuf> {
+pub(super) fn path_of(path: &std::ffi::CStr) -> Result<std::path::PathBuf> {
     use std::os::unix::ffi::OsStrExt;
     Ok(std::ffi::OsStr::from_bytes(path.to_bytes()).into())
 }
 
 /// A C path as a file-system path: elsewhere than on Unix, UTF-8 text.
 #[cfg(not(unix))]
-fn path_of(path: &std::ffi::CStr) -> Result<std::path::PathBuf> {
+pub(super) fn path_of(path: &std::ffi::CStr) -> Result<std::path::PathBuf> {
     path.to_str()
         .map(Into::into)
         .map_err(|_| Error::argument("path is not valid UTF-8"))

@@ -1,7 +1,9 @@
-//! The C ABI: a thin translation layer over [`crate::Model`] and
-//! [`crate::contact::HostContact`], in four parts: the entry points of the
-//! model (`entry`) and of the contact context for host codes (`host`), the
-//! plumbing every entry point shares
+//! The C ABI: a thin translation layer over [`crate::Model`],
+//! [`crate::contact::HostContact`] and the 3D
+//! [`crate::model::solid::SolidModel`], in five parts: the entry points of
+//! the model (`entry`), of the contact context for host codes (`host`) and
+//! of the 3D model (`solid`, `tfem_solid_*`), the plumbing every entry
+//! point shares
 //! (handles, panics, errors, caller buffers: `plumbing`) and the `repr(C)`
 //! mirrors of the Rust types with their conversions (`convert`).
 //!
@@ -29,6 +31,7 @@ mod convert;
 mod entry;
 mod host;
 mod plumbing;
+mod solid;
 
 pub use convert::{
     ContactWeightingMode, OrderingMode, TemperingMode, TfemContactOptions, TfemContactReport,
@@ -37,3 +40,4 @@ pub use convert::{
 pub use entry::*;
 pub use host::*;
 pub use plumbing::TfemModel;
+pub use solid::*;
