@@ -352,3 +352,57 @@ fn reverting_a_step_brings_back_the_one_before() {
     assert!(model.step(f64::NAN, &options).is_err());
     assert_eq!(model.displacements().unwrap(), before);
 }
+
+#[test]
+fn a_pair_given_twice_is_refused_at_the_solve() {
+    let mut model = stacked(2);
+    model.add_contact_pair(6, 15).unwrap();
+    model.add_contact_pair(6, 15).unwrap();
+    let err = model.solve().unwrap_err();
+    assert!(err.message().contains("pairs 0 and 1"), "{}", err.message());
+}
+
+#[test]
+fn two_tools_on_one_surface_read_the_pressure_of_each() {
+    // Two cubes side by side on a block's top (tag 6): the block's top is
+    // side b of both pairs (each cube's bottom, planar, is side a), and
+    // each of its faces faces one cube.
+    let block = Brick::uniform([0.0, 0.0, -1.0], [2.0, 1.0, 0.0], [4, 2, 2], 1);
+    let mut left = Brick::uniform([0.0; 3], [1.0, 1.0, 1.0], [2; 3], 2);
+    left.side_tags = [21, 22, 23, 24, 25, 26];
+    let mut right = Brick::uniform([1.0, 0.0, 0.0], [2.0, 1.0, 1.0], [2; 3], 3);
+    right.side_tags = [31, 32, 33, 34, 35, 36];
+    let mut model = SolidModel::new();
+    model.set_mesh(SolidMesh::bricks(&[block, left, right]).unwrap());
+    for body in [1, 2, 3] {
+        model.set_material(body, SolidMaterial::new(1.0, 0.25).unwrap());
+    }
+    model.fix_faces(5, Axis::Z, 0.0).unwrap();
+    for tag in [1, 21, 31] {
+        model.fix_faces(tag, Axis::X, 0.0).unwrap();
+    }
+    for tag in [3, 23, 33] {
+        model.fix_faces(tag, Axis::Y, 0.0).unwrap();
+    }
+    // Each tool on rollers against its neighbour's side too.
+    model.fix_faces(22, Axis::X, 0.0).unwrap();
+    model.fix_faces(32, Axis::X, 0.0).unwrap();
+    model.fix_faces(2, Axis::X, 0.0).unwrap();
+    model.add_pressure(26, 0.1).unwrap();
+    model.add_pressure(36, 0.1).unwrap();
+    model.add_contact_pair(25, 6).unwrap();
+    model.add_contact_pair(35, 6).unwrap();
+    model.solve().unwrap();
+    assert!((model.contact_area().unwrap() - 2.0).abs() < 1e-12);
+    let pressures = model.contact_nodal_pressures().unwrap();
+    let mesh = model.mesh().unwrap();
+    for f in mesh.boundary_faces().iter().filter(|f| f.tag == 6) {
+        for &v in &f.nodes {
+            assert!(
+                (pressures[v] - 0.1).abs() < 1e-9,
+                "block node {v}: {}",
+                pressures[v]
+            );
+        }
+    }
+}

@@ -140,9 +140,10 @@ impl SolidMesh {
     }
 
     /// Sets the tagged boundary faces (0-based nodes), replacing previous
-    /// ones. Each must be a face of exactly one tetrahedron; the same face
-    /// with the same tag twice is refused (its loads would count twice). On
-    /// error the mesh is unchanged.
+    /// ones. Each must be a face of exactly one tetrahedron, with volume
+    /// (a flat one has no outward side); the same face with the same tag
+    /// twice is refused (its loads would count twice). On error the mesh
+    /// is unchanged.
     pub fn set_boundary_faces(&mut self, faces: &[[usize; 3]], tags: &[i32]) -> Result<()> {
         self.faces = self.checked_faces(faces, tags, &[])?;
         Ok(())
@@ -223,6 +224,16 @@ impl SolidMesh {
                     )));
                 }
             };
+            let geo = self.geometry(owner);
+            if geo.j.abs() <= 1e-12 * geo.h * geo.h * geo.h {
+                return Err(Error::mesh(format!(
+                    "boundary face {} (nodes {}) is a face of flat tetrahedron {} only: its \
+                     outward side is undefined (tag a face of a tetrahedron with volume)",
+                    f + b,
+                    self.list(&nodes),
+                    owner + b
+                )));
+            }
             if !seen.insert((key, tag)) {
                 return Err(Error::mesh(format!(
                     "boundary face {} (nodes {}) is given tag {tag} twice: its loads would \
@@ -576,6 +587,19 @@ mod tests {
             "{}",
             out.message()
         );
+    }
+
+    #[test]
+    fn a_face_of_a_flat_tetrahedron_alone_is_refused() {
+        let nodes = vec![[0.0; 3], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]];
+        let mut mesh = SolidMesh::new(nodes, vec![[0, 1, 2, 3]], vec![1], 0).unwrap();
+        let out = mesh.set_boundary_faces(&[[0, 1, 3]], &[4]).unwrap_err();
+        assert!(
+            out.message().contains("flat tetrahedron 0"),
+            "{}",
+            out.message()
+        );
+        assert!(mesh.boundary_faces().is_empty());
     }
 
     #[test]

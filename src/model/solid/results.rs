@@ -103,17 +103,25 @@ impl SolidModel {
         let mesh = self.mesh_ref()?;
         let forces = self.contact_forces()?;
         let mut area = vec![0.0; forces.len()];
-        // Each node's outward normal, its faces' weighted by their shares.
+        // Each node's outward normal, its faces' weighted by their shares;
+        // a face on a side of several pairs counts once.
         let mut normal = vec![[0.0; 3]; forces.len()];
-        for pair in &self.pairs {
-            for tag in [pair.tag_a, pair.tag_b] {
-                for face in mesh.boundary_faces().iter().filter(|f| f.tag == tag) {
-                    let g = mesh.face_geometry(face);
-                    for &v in &face.nodes {
-                        area[v] += g.area / 3.0;
-                        (0..3).for_each(|c| normal[v][c] += g.normal[c] * g.area / 3.0);
-                    }
-                }
+        let tags: BTreeSet<i32> = self.pairs.iter().flat_map(|p| [p.tag_a, p.tag_b]).collect();
+        let mut faces = BTreeSet::new();
+        for face in mesh
+            .boundary_faces()
+            .iter()
+            .filter(|f| tags.contains(&f.tag))
+        {
+            let mut key = face.nodes;
+            key.sort_unstable();
+            if !faces.insert(key) {
+                continue;
+            }
+            let g = mesh.face_geometry(face);
+            for &v in &face.nodes {
+                area[v] += g.area / 3.0;
+                (0..3).for_each(|c| normal[v][c] += g.normal[c] * g.area / 3.0);
             }
         }
         Ok((0..forces.len())

@@ -48,8 +48,10 @@ impl SolidModel {
     /// pair's bodies, the other body's where one side is a rigid tool, and
     /// the mesh's size), from those touching or overlapping at rest;
     /// without pairs, one linear solve with no contact structure. What the
-    /// structure gives (unknowns, B, pattern, matrix, analysis) is kept for
-    /// the next solve. On error the model keeps its previous solution.
+    /// structure gives (unknowns, B, pattern, matrix, analysis and the
+    /// factor's storage) is kept for the next solve until the structure
+    /// changes. Pairs whose B overlap (one given twice) are refused. On
+    /// error the model keeps its previous solution.
     pub fn solve_contact(&mut self, options: &ContactOptions) -> Result<SolveInfo> {
         let solution = self.solve_at(1.0, options, None)?;
         Ok(self.settle(solution, false))
@@ -320,6 +322,7 @@ impl SolidModel {
                 .resize(layer.moduli.len() + elements.len(), modulus);
             layer.elements.extend(elements);
         }
+        refuse_overlapping_pairs(&layer)?;
         Ok(layer)
     }
 
@@ -337,6 +340,24 @@ impl SolidModel {
             _ => young(a).min(young(b)),
         }
     }
+}
+
+/// Refuses pairs whose B overlap (a pair given twice, or the other way
+/// round, or two pairs over the same faces): B would tie those faces
+/// twice as stiffly and count their contact twice.
+fn refuse_overlapping_pairs(layer: &Layer) -> Result<()> {
+    let mut seen: std::collections::HashMap<[usize; 4], usize> = Default::default();
+    for (e, &k) in layer.elements.iter().zip(&layer.pair_of) {
+        let mut key = e.nodes;
+        key.sort_unstable();
+        if let Some(first) = seen.insert(key, k).filter(|&first| first != k) {
+            return Err(Error::argument(format!(
+                "contact pairs {first} and {k} build B over the same faces: a pair given \
+                 twice, or both ways round"
+            )));
+        }
+    }
+    Ok(())
 }
 
 fn axis(c: usize) -> Axis {
