@@ -17,7 +17,9 @@
 !   A tfem_solid_model holds a problem in space (tetrahedra, tagged
 !   boundary faces, frictionless contact between tagged surfaces): its
 !   functions, tfem_solid_*, follow the same phases and conventions, and
-!   one is used by one thread at a time like a tfem_model.
+!   one is used by one thread at a time like a tfem_model. A
+!   tfem_solid_contact is the contact context of a 3D host code, the
+!   tfem_contact of tetrahedral meshes (tfem_solid_contact_*).
 ! - Phases of a model: describe it (mesh, materials, loads and
 !   constraints, contact pairs), solve it (tfem_solve, tfem_solve_contact,
 !   or a load history of tfem_step), read the results (computed when
@@ -25,7 +27,8 @@
 ! - The entry points below stand in groups, in that order, each under a
 !   head: lifecycle, mesh, materials, loads and constraints, contact pairs,
 !   solve, results, contact results, load history, utilities, the host
-!   codes' contact context, and the 3D model.
+!   codes' contact context, the 3D model, and the 3D host codes' contact
+!   context.
 !
 ! Conventions
 ! - Every function returns a tfem_status; TFEM_STATUS_OK (0) is success.
@@ -40,13 +43,15 @@
 ! - A call that returns an error writes none of its outputs: every buffer,
 !   and every value or struct given back through a pointer (a size, count
 !   or index, a tfem_solve_info, a tfem_contact_report, the host vector of
-!   tfem_contact_scatter_add), keeps the bytes it held, whatever the error
-!   (a handle or argument refused, a wrong state, one of several buffers
-!   too short or NULL, a solve that fails). The only exceptions are the
-!   message copies: tfem_last_error, tfem_contact_last_error and
-!   tfem_get_warning write the message cut to the buffer (NUL-terminated)
-!   with TFEM_STATUS_BUFFER_TOO_SMALL, and tfem_last_error and
-!   tfem_contact_last_error write the message refusing a handle that is
+!   tfem_contact_scatter_add and tfem_solid_contact_scatter_add), keeps the
+!   bytes it held, whatever the error (a handle or argument refused, a
+!   wrong state, one of several buffers too short or NULL, a solve that
+!   fails). The only exceptions are the message copies: tfem_last_error,
+!   tfem_contact_last_error and tfem_get_warning (and the 3D handles'
+!   tfem_solid_last_error, tfem_solid_get_warning and
+!   tfem_solid_contact_last_error) write the message cut to the buffer
+!   (NUL-terminated) with TFEM_STATUS_BUFFER_TOO_SMALL, and the
+!   *_last_error functions write the message refusing a handle that is
 !   not live with TFEM_STATUS_INVALID_ARGUMENT.
 ! - A failed call leaves the model as it was, its results included. Any
 !   change to the problem (mesh, boundary edges, materials, constraints,
@@ -67,8 +72,8 @@
 ! - Handles are checked before use: a destroyed model or context, or a
 !   handle of the other kind (a Fortran type(c_ptr) does not tell them
 !   apart), is refused with TFEM_STATUS_INVALID_ARGUMENT (its message in
-!   the thread's slot, or in the buffer of tfem_last_error and
-!   tfem_contact_last_error), and destroying it is a no-op. (A destroyed
+!   the thread's slot, or in the buffer of the *_last_error functions),
+!   and destroying it is a no-op. (A destroyed
 !   handle whose address a new handle has taken reaches the new one.)
 !
 ! Thread contract
@@ -91,12 +96,14 @@
 !   Fortran string (model omitted: the calling thread's model-free calls);
 !   tfem_contact_error_message(context) that of a contact context;
 !   tfem_solid_error_message(model) that of a 3D model (from tfem_solid_create);
+!   tfem_solid_contact_error_message(context) that of a 3D contact context;
 !   tfem_warning_message(model, index), tfem_solid_warning_message(model, index) and
 !   tfem_version_string() return strings too.
 ! - Indices: pass index_base = 1 to tfem_set_mesh (or tfem_load_gmsh; for a 3D model
-!   tfem_solid_set_mesh or tfem_solid_load_gmsh) and every node, triangle, tetrahedron, edge and
-!   face number of later calls and messages is 1-based, like Fortran arrays. Numbers that a
-!   function documents as 0-based stay 0-based.
+!   tfem_solid_set_mesh or tfem_solid_load_gmsh; for a contact context tfem_contact_create or
+!   tfem_solid_contact_create) and every node, triangle, tetrahedron, edge and face number of
+!   later calls and messages is 1-based, like Fortran arrays. Numbers that a function documents
+!   as 0-based stay 0-based.
 ! - NULL: a pointer argument that the C documentation says may be NULL is OPTIONAL: omit it (by
 !   keyword, or at the end of the list) and the library receives NULL. A nullable model handle
 !   is passed by value: its generic has a specific without it instead (tfem_last_error(buffer,
@@ -169,7 +176,9 @@
 !   tfem_contact_add_pair, tfem_contact_add_pair_with_mesh, tfem_contact_sizes,
 !   tfem_contact_evaluate, tfem_contact_update, tfem_solid_get_sizes,
 !   tfem_solid_get_mesh_tetrahedra, tfem_solid_get_boundary_faces, tfem_solid_add_contact_pair,
-!   tfem_solid_solve, tfem_solid_solve_contact, tfem_solid_step
+!   tfem_solid_solve, tfem_solid_solve_contact, tfem_solid_step, tfem_solid_contact_create,
+!   tfem_solid_contact_add_side, tfem_solid_contact_add_pair, tfem_solid_contact_sizes,
+!   tfem_solid_contact_evaluate, tfem_solid_contact_update
 
 ! The C API as it is (see "Fortran 2008" above).
 module tfem_c
@@ -2603,6 +2612,355 @@ module tfem_c
       character(kind=c_char), intent(in) :: path(*)
       integer(c_int) :: status
     end function tfem_solid_write_vtu
+
+    ! ==============================================================================================
+    ! Contact for 3D host codes (tfem_solid_contact_*): the contact context of tfem_contact_* for a
+    ! code with its own tetrahedral elements and solver, a handle of its own, tfem_solid_contact.
+    ! The host gives each side's nodes, coordinates, equations (x, y, z) and triangles,
+    ! counter-clockwise seen from outside its body; it gets back B's stiffness and forces in its
+    ! equations, in a pattern fixed once, the verdict of the active-set loop, and the state per
+    ! tetrahedron of B. Side, pair and tetrahedron numbers are in the context's index base.
+    ! ==============================================================================================
+
+    !> Creates a 3D contact context for a host code that keeps its own elements, assembly, solver
+    !! and Newton loop: node numbers, equation numbers, and side, pair and contact-tetrahedron
+    !! numbers in `index_base` (0 for C, 1 for Fortran). `options` may be NULL (the defaults of
+    !! `tfem_contact_options_default`); they are fixed here, as B is built from them once:
+    !! `contact_modulus` (0: the smaller Young's modulus of a pair's two sides), `lambda` (0: the
+    !! larger side of the interface nodes' bounding box) and `max_iterations` (the number of
+    !! `tfem_solid_contact_update` calls of one loop before it counts as not converged) are read,
+    !! `refactorize` is ignored; 3D contact is frictionless with its own inversion test, so `law`
+    !! and `inversion_test` must be 0. Returns NULL if `index_base` is not 0 or 1 or an option is
+    !! refused (message in `tfem_last_error(NULL, …)`), or memory is exhausted. The host then adds
+    !! the sides (`tfem_solid_contact_add_side`) and pairs (`tfem_solid_contact_add_pair`); the
+    !! first call that needs B builds it, after which sides and pairs are fixed. A 3D context is its
+    !! own handle: the 2D `tfem_contact_*` functions refuse it, and these refuse a 2D context or a
+    !! model.
+    function tfem_solid_contact_create(index_base, options) &
+        bind(C, name="tfem_solid_contact_create") result(res)
+      import
+      integer(c_int), value :: index_base
+      type(tfem_contact_options), intent(in) :: options
+      type(c_ptr) :: res
+    end function tfem_solid_contact_create
+
+    !> Destroys a 3D contact context. NULL is a no-op, and so is a pointer that is not a live 3D
+    !! context (destroyed already, or another kind of handle): do not use a handle after destroying
+    !! it.
+    subroutine tfem_solid_contact_destroy(context) &
+        bind(C, name="tfem_solid_contact_destroy")
+      import
+      type(c_ptr), value :: context
+    end subroutine tfem_solid_contact_destroy
+
+    !> Copies the message of the last failed call on `context` (empty after a successful call) into
+    !! `buffer` (`length` bytes including the final NUL), truncating like `tfem_last_error`
+    !! (TFEM_STATUS_BUFFER_TOO_SMALL; `tfem_solid_contact_last_error_length` gives the size needed).
+    !! A 3D context keeps its own messages. A `context` that is not a live 3D contact context gives
+    !! TFEM_STATUS_INVALID_ARGUMENT with the message saying so in `buffer`.
+    function tfem_solid_contact_last_error(context, buffer, length) &
+        bind(C, name="tfem_solid_contact_last_error") result(status)
+      import
+      type(c_ptr), value :: context
+      character(kind=c_char), intent(inout) :: buffer(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_contact_last_error
+
+    !> Size in bytes (including the final NUL) of the message `tfem_solid_contact_last_error` would
+    !! give for `context`, so that a buffer of this size holds all of it: 1 after a successful call;
+    !! for a handle that is not a live 3D contact context (destroyed, or another kind), the size of
+    !! the message saying so. `context` may be NULL: 1 (it has no message).
+    function tfem_solid_contact_last_error_length(context) &
+        bind(C, name="tfem_solid_contact_last_error_length") result(res)
+      import
+      type(c_ptr), value :: context
+      integer(c_size_t) :: res
+    end function tfem_solid_contact_last_error_length
+
+    !> Adds one side of a contact interface, of body `body` (Young's modulus `young`, finite and >
+    !! 0: the softer side's is the default E_c): `n_nodes` interface nodes `nodes` (the host's node
+    !! numbers) with their coordinates `xyz` (3 per node) and the equations of their x, y and z
+    !! unknowns `equations` (3 per node, in the index base; a value below the base marks a fixed DOF
+    !! without an equation), and `n_triangles` triangles `triangles` (3 host node numbers each)
+    !! numbered counter-clockwise seen from outside the body, so that the two sides of a pair face
+    !! each other. A node of two sides must come with the same coordinates and equations. Refused
+    !! with TFEM_STATUS_INVALID_ARGUMENT, naming the side (by its number in the index base and its
+    !! tag), the node or the triangle: a node number below the index base, a coordinate that is not
+    !! finite, an equation no host vector can hold (from index_base + PTRDIFF_MAX / 8 on), a
+    !! triangle over a node the side does not give, a side without triangles;
+    !! TFEM_STATUS_INVALID_STATE once B is built. The host's system size is not known here:
+    !! `tfem_solid_contact_gather` and `tfem_solid_contact_scatter_add` check every equation against
+    !! the vector they are given. Writes the side's number (in the index base) to `side` (may be
+    !! NULL). On error nothing changes.
+    function tfem_solid_contact_add_side(context, tag, body, young, n_nodes, nodes, xyz, equations, &
+        n_triangles, triangles, side) &
+        bind(C, name="tfem_solid_contact_add_side") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), value :: tag
+      integer(c_int), value :: body
+      real(c_double), value :: young
+      integer(c_int), value :: n_nodes
+      integer(c_int), intent(in) :: nodes(*)
+      real(c_double), intent(in) :: xyz(*)
+      integer(c_int64_t), intent(in) :: equations(*)
+      integer(c_int), value :: n_triangles
+      integer(c_int), intent(in) :: triangles(*)
+      integer(c_int), intent(inout) :: side
+      integer(c_int) :: status
+    end function tfem_solid_contact_add_side
+
+    !> Declares sides `side_a` and `side_b` (their numbers in the index base, of two different
+    !! bodies) a contact pair: side a must be planar (its outward normal opens the gap) and side b
+    !! face it node to node; B, a layer of flat tetrahedra over the prisms between the facing
+    !! triangles, is built from them (docs/method.md §9). A side that does not exist, or two sides
+    !! of one body, are refused with TFEM_STATUS_INVALID_ARGUMENT naming them; sides that do not fit
+    !! (side a not planar, sides not facing each other or not matching) are refused by the call that
+    !! builds B, naming the pair and its sides. Writes the pair's number (in the index base) to
+    !! `pair` (may be NULL).
+    function tfem_solid_contact_add_pair(context, side_a, side_b, pair) &
+        bind(C, name="tfem_solid_contact_add_pair") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), value :: side_a
+      integer(c_int), value :: side_b
+      integer(c_int), intent(inout) :: pair
+      integer(c_int) :: status
+    end function tfem_solid_contact_add_pair
+
+    !> Builds B of every pair and the pattern now, so that a host learns of sides that do not fit
+    !! where it declares them rather than at its first evaluation (every call that needs B builds it
+    !! otherwise). Sides and pairs are fixed from then on; the active set starts from the tetrahedra
+    !! touching or overlapping at rest. Without a pair, TFEM_STATUS_INVALID_STATE. Calling it again
+    !! does nothing.
+    function tfem_solid_contact_setup(context) &
+        bind(C, name="tfem_solid_contact_setup") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int) :: status
+    end function tfem_solid_contact_setup
+
+    !> Builds B (if not yet) and writes the sizes: interface nodes (3 values per node in every
+    !! per-node array: displacements and residuals), tetrahedra of B (the length of the
+    !! per-tetrahedron arrays), and entries of the pattern. Any pointer may be NULL.
+    function tfem_solid_contact_sizes(context, n_nodes, n_tetrahedra, n_entries) &
+        bind(C, name="tfem_solid_contact_sizes") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), intent(inout) :: n_nodes
+      integer(c_int), intent(inout) :: n_tetrahedra
+      integer(c_int64_t), intent(inout) :: n_entries
+      integer(c_int) :: status
+    end function tfem_solid_contact_sizes
+
+    !> Copies the interface nodes (host numbers, n_nodes values), in the order of every per-node
+    !! array: the order in which the sides first gave them.
+    function tfem_solid_contact_nodes(context, out, length) &
+        bind(C, name="tfem_solid_contact_nodes") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_contact_nodes
+
+    !> Copies the nodes of every tetrahedron of B (4 host node numbers each, numbered so that J
+    !! grows as the gap opens), pair by pair: with the per-tetrahedron arrays (active flags, gaps),
+    !! where the contact is.
+    function tfem_solid_contact_tetrahedra(context, out, length) &
+        bind(C, name="tfem_solid_contact_tetrahedra") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_contact_tetrahedra
+
+    !> Copies the fixed pattern of the contact contributions into `rows` (n_entries values) and
+    !! `cols` (n_entries values), in the host's equation numbering and index base: tetrahedron after
+    !! tetrahedron of B, each one's 12×12 block row by row over its DOFs (x, y, z of its first node,
+    !! then of its second …), the DOFs without an equation left out; both triangles of each block.
+    !! Entries repeat where tetrahedra share a DOF pair: the host sums them. B's topology never
+    !! changes, so a host sets up its sparse matrix once.
+    function tfem_solid_contact_pattern(context, rows, cols, length) &
+        bind(C, name="tfem_solid_contact_pattern") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int64_t), intent(inout) :: rows(*)
+      integer(c_int64_t), intent(inout) :: cols(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_contact_pattern
+
+    !> Copies the equations of every tetrahedron's twelve DOFs (12 per tetrahedron, x, y, z of each
+    !! node, in the index base; index_base − 1 marks a DOF without an equation): with
+    !! `tfem_solid_contact_element_blocks`, the contributions as unassembled element blocks, for a
+    !! host that assembles elements rather than a pattern.
+    function tfem_solid_contact_element_equations(context, out, length) &
+        bind(C, name="tfem_solid_contact_element_equations") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int64_t), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_contact_element_equations
+
+    !> Copies every tetrahedron's 12×12 tangent block (144 values per tetrahedron, row-major over
+    !! its DOFs as in `tfem_solid_contact_element_equations`): its stiffness when active, zeros when
+    !! not.
+    function tfem_solid_contact_element_blocks(context, out, length) &
+        bind(C, name="tfem_solid_contact_element_blocks") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_contact_element_blocks
+
+    !> The contact contributions at the displacements `u` of the interface nodes (3 per node,
+    !! `u_length` = 3·n_nodes): the tangent's values in the pattern's order into `values` (n_entries
+    !! values, zeros for inactive tetrahedra), and the contact residual Σ (K_e u_e − f0_e) of the
+    !! active tetrahedra, 3 per interface node, into `residual`. `values` may be NULL; `residual`
+    !! may be NULL. A linear host adds the values to its matrix and minus the residual at u₀ to its
+    !! right-hand side, u₀ zero at DOFs with an equation and the prescribed value at those without
+    !! (a rigid tool pressed by δ: `tfem_solid_contact_gather` reads such DOFs as 0, so set them in
+    !! `u` itself, here and for `tfem_solid_contact_update`); that is the load of the initial gaps
+    !! and of the prescribed values. A Newton host adds the values to its tangent and the residual
+    !! at its current u to its residual. The law is linear in u for a given active set: the values
+    !! depend on the active set only, and change only when `tfem_solid_contact_update` or
+    !! `tfem_solid_contact_set_active` changes it. A non-finite value in `u` is refused
+    !! (TFEM_STATUS_INVALID_ARGUMENT naming the node); a residual that overflows is
+    !! TFEM_STATUS_NUMERICAL_FAILURE naming the node; either way the buffers are unchanged.
+    function tfem_solid_contact_evaluate(context, u, u_length, values, values_length, residual, &
+        residual_length) &
+        bind(C, name="tfem_solid_contact_evaluate") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(in) :: u(*)
+      integer(c_size_t), value :: u_length
+      real(c_double), intent(inout) :: values(*)
+      integer(c_size_t), value :: values_length
+      real(c_double), intent(inout) :: residual(*)
+      integer(c_size_t), value :: residual_length
+      integer(c_int) :: status
+    end function tfem_solid_contact_evaluate
+
+    !> Copies into `u` (3 per interface node) the displacements of the interface nodes from the
+    !! host's solution vector `u_equations` (`n_equations` values; entry i is equation i +
+    !! index_base); a DOF without an equation counts as fixed at zero. An interface node's equation
+    !! beyond `n_equations`, or a non-finite entry there, is refused (TFEM_STATUS_INVALID_ARGUMENT
+    !! naming the node and the equation); `u` is then unchanged.
+    function tfem_solid_contact_gather(context, u_equations, n_equations, u, u_length) &
+        bind(C, name="tfem_solid_contact_gather") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(in) :: u_equations(*)
+      integer(c_size_t), value :: n_equations
+      real(c_double), intent(inout) :: u(*)
+      integer(c_size_t), value :: u_length
+      integer(c_int) :: status
+    end function tfem_solid_contact_gather
+
+    !> Adds per-node values `residual` (3 per interface node, as `tfem_solid_contact_evaluate`
+    !! writes them) into the host's vector `host_vector` (`n_equations` values, entry i is equation
+    !! i + index_base); DOFs without an equation are left out. A non-finite value in `residual` is
+    !! refused (TFEM_STATUS_INVALID_ARGUMENT naming the node), and so is a sum that would not be
+    !! finite: an entry of `host_vector` that is not finite already (TFEM_STATUS_INVALID_ARGUMENT),
+    !! or an overflow (TFEM_STATUS_NUMERICAL_FAILURE), naming the node and the equation; an equation
+    !! beyond `n_equations` is refused naming the node. `host_vector` is then unchanged.
+    function tfem_solid_contact_scatter_add(context, residual, residual_length, host_vector, n_equations) &
+        bind(C, name="tfem_solid_contact_scatter_add") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(in) :: residual(*)
+      integer(c_size_t), value :: residual_length
+      real(c_double), intent(inout) :: host_vector(*)
+      integer(c_size_t), value :: n_equations
+      integer(c_int) :: status
+    end function tfem_solid_contact_scatter_add
+
+    !> The inversion test at the displacements `u` (3 per interface node) of a solve with the
+    !! current active set: the tetrahedra of B whose gap is not positive (pressed, or touching) are
+    !! switched on, the others off. `changed` (may be NULL) is set to 1 if the set changed, 0 if it
+    !! settled; `switched_on` (may be NULL) and `switched_off` (may be NULL) to the number of
+    !! tetrahedra switched each way. The same test and cycle detection as tfem's own loop: a set
+    !! visited before, or more calls than the options' `max_iterations` since the last
+    !! `tfem_solid_contact_restart`, gives TFEM_STATUS_NOT_CONVERGED with the history, the set
+    !! unchanged. Call it with converged displacements of the host's problem for the current set
+    !! (after its Newton loop, not at every Newton iteration): the test judges the solution. A
+    !! non-finite value in `u` is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node).
+    function tfem_solid_contact_update(context, u, u_length, changed, switched_on, switched_off) &
+        bind(C, name="tfem_solid_contact_update") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(in) :: u(*)
+      integer(c_size_t), value :: u_length
+      integer(c_int), intent(inout) :: changed
+      integer(c_int), intent(inout) :: switched_on
+      integer(c_int), intent(inout) :: switched_off
+      integer(c_int) :: status
+    end function tfem_solid_contact_update
+
+    !> Starts a new active-set loop from the current flags (a new load step): the history and the
+    !! sets visited are forgotten, so that a set met in an earlier step is no cycle.
+    function tfem_solid_contact_restart(context) &
+        bind(C, name="tfem_solid_contact_restart") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int) :: status
+    end function tfem_solid_contact_restart
+
+    !> Copies the active flag (1 active, 0 not) of every tetrahedron of B (n_tetrahedra values): the
+    !! state a host saves to restore with `tfem_solid_contact_set_active`.
+    function tfem_solid_contact_get_active(context, out, length) &
+        bind(C, name="tfem_solid_contact_get_active") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_contact_get_active
+
+    !> Sets the active flags of the tetrahedra of B (n_tetrahedra values, 0 or 1): a warm start or a
+    !! restored state; starts a new loop. A value other than 0 or 1, or another count, is refused
+    !! (TFEM_STATUS_INVALID_ARGUMENT), the flags unchanged.
+    function tfem_solid_contact_set_active(context, active, length) &
+        bind(C, name="tfem_solid_contact_set_active") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), intent(in) :: active(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_contact_set_active
+
+    !> Copies the opening of every tetrahedron of B (n_tetrahedra values, model length units) at the
+    !! displacements `u` (3 per interface node): its linearised gap over its facing area, the
+    !! distance across the interface (negative: an overlap). Per tetrahedron rather than per node as
+    !! in 2D: in space a node's tetrahedra may face different triangles. A non-finite value in `u`
+    !! is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node), a gap that overflows is
+    !! TFEM_STATUS_NUMERICAL_FAILURE naming the tetrahedron; `out` is then unchanged.
+    function tfem_solid_contact_gaps(context, u, u_length, out, length) &
+        bind(C, name="tfem_solid_contact_gaps") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(in) :: u(*)
+      integer(c_size_t), value :: u_length
+      real(c_double), intent(inout) :: out(*)
+      integer(c_size_t), value :: length
+      integer(c_int) :: status
+    end function tfem_solid_contact_gaps
+
+    !> Writes the area in contact of the current active set to `area` (model length units squared):
+    !! each active tetrahedron of B stands for a third of its prism's facing triangle, so that a
+    !! closed interface reads its whole area. A sum that overflows is TFEM_STATUS_NUMERICAL_FAILURE.
+    function tfem_solid_contact_area(context, area) &
+        bind(C, name="tfem_solid_contact_area") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(inout) :: area
+      integer(c_int) :: status
+    end function tfem_solid_contact_area
   end interface
 end module tfem_c
 
@@ -2628,7 +2986,11 @@ module tfem_specifics
         tfem_solid_get_mesh_nodes, tfem_solid_get_displacements, tfem_solid_get_element_strains, &
         tfem_solid_get_element_stresses, tfem_solid_get_reactions, tfem_solid_get_contact_tetrahedra, &
         tfem_solid_get_contact_active, tfem_solid_get_contact_forces, &
-        tfem_solid_get_contact_nodal_pressures
+        tfem_solid_get_contact_nodal_pressures, tfem_solid_contact_last_error, &
+        tfem_solid_contact_last_error_length, tfem_solid_contact_nodes, tfem_solid_contact_tetrahedra, &
+        tfem_solid_contact_pattern, tfem_solid_contact_element_equations, &
+        tfem_solid_contact_element_blocks, tfem_solid_contact_gather, tfem_solid_contact_scatter_add, &
+        tfem_solid_contact_get_active, tfem_solid_contact_set_active, tfem_solid_contact_gaps
   implicit none
   private
   public :: tfem_length_kind
@@ -2773,6 +3135,50 @@ module tfem_specifics
   public :: tfem_solid_get_contact_forces_r2, tfem_solid_get_contact_forces_i
   public :: tfem_solid_get_contact_forces_i_r2, tfem_solid_get_contact_nodal_pressures_r2
   public :: tfem_solid_get_contact_nodal_pressures_i, tfem_solid_get_contact_nodal_pressures_i_r2
+  public :: tfem_solid_contact_create_opt, tfem_solid_contact_last_error_i
+  public :: tfem_solid_contact_last_error_str, tfem_solid_contact_last_error_str_i
+  public :: tfem_solid_contact_last_error_length_no_context, tfem_solid_contact_add_side_opt
+  public :: tfem_solid_contact_add_side_opt_r2111, tfem_solid_contact_add_side_opt_r1211
+  public :: tfem_solid_contact_add_side_opt_r2211, tfem_solid_contact_add_side_opt_r1121
+  public :: tfem_solid_contact_add_side_opt_r2121, tfem_solid_contact_add_side_opt_r1221
+  public :: tfem_solid_contact_add_side_opt_r2221, tfem_solid_contact_add_side_opt_r1112
+  public :: tfem_solid_contact_add_side_opt_r2112, tfem_solid_contact_add_side_opt_r1212
+  public :: tfem_solid_contact_add_side_opt_r2212, tfem_solid_contact_add_side_opt_r1122
+  public :: tfem_solid_contact_add_side_opt_r2122, tfem_solid_contact_add_side_opt_r1222
+  public :: tfem_solid_contact_add_side_opt_r2222, tfem_solid_contact_add_pair_opt
+  public :: tfem_solid_contact_sizes_opt, tfem_solid_contact_nodes_r2, tfem_solid_contact_nodes_i
+  public :: tfem_solid_contact_nodes_i_r2, tfem_solid_contact_tetrahedra_r2
+  public :: tfem_solid_contact_tetrahedra_i, tfem_solid_contact_tetrahedra_i_r2
+  public :: tfem_solid_contact_pattern_r21, tfem_solid_contact_pattern_r12
+  public :: tfem_solid_contact_pattern_r22, tfem_solid_contact_pattern_i
+  public :: tfem_solid_contact_pattern_i_r21, tfem_solid_contact_pattern_i_r12
+  public :: tfem_solid_contact_pattern_i_r22, tfem_solid_contact_element_equations_r2
+  public :: tfem_solid_contact_element_equations_i, tfem_solid_contact_element_equations_i_r2
+  public :: tfem_solid_contact_element_blocks_r2, tfem_solid_contact_element_blocks_i
+  public :: tfem_solid_contact_element_blocks_i_r2, tfem_solid_contact_evaluate_opt
+  public :: tfem_solid_contact_evaluate_opt_r211, tfem_solid_contact_evaluate_opt_r121
+  public :: tfem_solid_contact_evaluate_opt_r221, tfem_solid_contact_evaluate_opt_r112
+  public :: tfem_solid_contact_evaluate_opt_r212, tfem_solid_contact_evaluate_opt_r122
+  public :: tfem_solid_contact_evaluate_opt_r222, tfem_solid_contact_evaluate_opt_i
+  public :: tfem_solid_contact_evaluate_opt_i_r211, tfem_solid_contact_evaluate_opt_i_r121
+  public :: tfem_solid_contact_evaluate_opt_i_r221, tfem_solid_contact_evaluate_opt_i_r112
+  public :: tfem_solid_contact_evaluate_opt_i_r212, tfem_solid_contact_evaluate_opt_i_r122
+  public :: tfem_solid_contact_evaluate_opt_i_r222, tfem_solid_contact_gather_r21
+  public :: tfem_solid_contact_gather_r12, tfem_solid_contact_gather_r22
+  public :: tfem_solid_contact_gather_i, tfem_solid_contact_gather_i_r21
+  public :: tfem_solid_contact_gather_i_r12, tfem_solid_contact_gather_i_r22
+  public :: tfem_solid_contact_scatter_add_r21, tfem_solid_contact_scatter_add_r12
+  public :: tfem_solid_contact_scatter_add_r22, tfem_solid_contact_scatter_add_i
+  public :: tfem_solid_contact_scatter_add_i_r21, tfem_solid_contact_scatter_add_i_r12
+  public :: tfem_solid_contact_scatter_add_i_r22, tfem_solid_contact_update_opt
+  public :: tfem_solid_contact_update_opt_r2, tfem_solid_contact_update_opt_i
+  public :: tfem_solid_contact_update_opt_i_r2, tfem_solid_contact_get_active_r2
+  public :: tfem_solid_contact_get_active_i, tfem_solid_contact_get_active_i_r2
+  public :: tfem_solid_contact_set_active_r2, tfem_solid_contact_set_active_i
+  public :: tfem_solid_contact_set_active_i_r2, tfem_solid_contact_gaps_r21
+  public :: tfem_solid_contact_gaps_r12, tfem_solid_contact_gaps_r22, tfem_solid_contact_gaps_i
+  public :: tfem_solid_contact_gaps_i_r21, tfem_solid_contact_gaps_i_r12
+  public :: tfem_solid_contact_gaps_i_r22
 
   !> The kind of the lengths the generic interfaces accept besides integer(c_size_t): c_int (the
   !! default integer) where size_t is wider, else c_int64_t.
@@ -3080,6 +3486,79 @@ module tfem_specifics
       type(c_ptr), value :: info
       integer(c_int) :: status
     end function tfem_solid_step_by_address
+
+    function tfem_solid_contact_create_by_address(index_base, options) &
+        bind(C, name="tfem_solid_contact_create") result(res)
+      import
+      integer(c_int), value :: index_base
+      type(c_ptr), value :: options
+      type(c_ptr) :: res
+    end function tfem_solid_contact_create_by_address
+
+    function tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side) &
+        bind(C, name="tfem_solid_contact_add_side") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), value :: tag
+      integer(c_int), value :: body
+      real(c_double), value :: young
+      integer(c_int), value :: n_nodes
+      integer(c_int), intent(in) :: nodes(*)
+      real(c_double), intent(in) :: xyz(*)
+      integer(c_int64_t), intent(in) :: equations(*)
+      integer(c_int), value :: n_triangles
+      integer(c_int), intent(in) :: triangles(*)
+      type(c_ptr), value :: side
+      integer(c_int) :: status
+    end function tfem_solid_contact_add_side_by_address
+
+    function tfem_solid_contact_add_pair_by_address(context, side_a, side_b, pair) &
+        bind(C, name="tfem_solid_contact_add_pair") result(status)
+      import
+      type(c_ptr), value :: context
+      integer(c_int), value :: side_a
+      integer(c_int), value :: side_b
+      type(c_ptr), value :: pair
+      integer(c_int) :: status
+    end function tfem_solid_contact_add_pair_by_address
+
+    function tfem_solid_contact_sizes_by_address(context, n_nodes, n_tetrahedra, n_entries) &
+        bind(C, name="tfem_solid_contact_sizes") result(status)
+      import
+      type(c_ptr), value :: context
+      type(c_ptr), value :: n_nodes
+      type(c_ptr), value :: n_tetrahedra
+      type(c_ptr), value :: n_entries
+      integer(c_int) :: status
+    end function tfem_solid_contact_sizes_by_address
+
+    function tfem_solid_contact_evaluate_by_address(context, u, u_length, values, values_length, residual, &
+        residual_length) &
+        bind(C, name="tfem_solid_contact_evaluate") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(in) :: u(*)
+      integer(c_size_t), value :: u_length
+      type(c_ptr), value :: values
+      integer(c_size_t), value :: values_length
+      type(c_ptr), value :: residual
+      integer(c_size_t), value :: residual_length
+      integer(c_int) :: status
+    end function tfem_solid_contact_evaluate_by_address
+
+    function tfem_solid_contact_update_by_address(context, u, u_length, changed, switched_on, &
+        switched_off) &
+        bind(C, name="tfem_solid_contact_update") result(status)
+      import
+      type(c_ptr), value :: context
+      real(c_double), intent(in) :: u(*)
+      integer(c_size_t), value :: u_length
+      type(c_ptr), value :: changed
+      type(c_ptr), value :: switched_on
+      type(c_ptr), value :: switched_off
+      integer(c_int) :: status
+    end function tfem_solid_contact_update_by_address
   end interface
 
 contains
@@ -7318,6 +7797,1241 @@ contains
     status = tfem_solid_get_contact_nodal_pressures(model, out, tfem_to_size_t(length))
   end function tfem_solid_get_contact_nodal_pressures_i_r2
 
+  function tfem_solid_contact_create_opt(index_base, options) result(res)
+    integer(c_int), value :: index_base
+    type(tfem_contact_options), intent(in), optional, target :: options
+    type(c_ptr) :: res
+    type(c_ptr) :: options_address
+    options_address = c_null_ptr
+    if (present(options)) options_address = c_loc(options)
+    res = tfem_solid_contact_create_by_address(index_base, options_address)
+  end function tfem_solid_contact_create_opt
+
+  function tfem_solid_contact_last_error_i(context, buffer, length) result(status)
+    type(c_ptr), value :: context
+    character(kind=c_char), intent(inout) :: buffer(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_last_error(context, buffer, tfem_to_size_t(length))
+  end function tfem_solid_contact_last_error_i
+
+  function tfem_solid_contact_last_error_str(context, buffer, length) result(status)
+    type(c_ptr), value :: context
+    character(kind=c_char, len=*), intent(inout) :: buffer
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_last_error(context, buffer, length)
+  end function tfem_solid_contact_last_error_str
+
+  function tfem_solid_contact_last_error_str_i(context, buffer, length) result(status)
+    type(c_ptr), value :: context
+    character(kind=c_char, len=*), intent(inout) :: buffer
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_last_error(context, buffer, tfem_to_size_t(length))
+  end function tfem_solid_contact_last_error_str_i
+
+  function tfem_solid_contact_last_error_length_no_context() result(res)
+    integer(c_size_t) :: res
+    res = tfem_solid_contact_last_error_length(c_null_ptr)
+  end function tfem_solid_contact_last_error_length_no_context
+
+  function tfem_solid_contact_add_side_opt(context, tag, body, young, n_nodes, nodes, &
+        xyz, equations, n_triangles, triangles, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(*)
+    real(c_double), intent(in) :: xyz(*)
+    integer(c_int64_t), intent(in) :: equations(*)
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: triangles(*)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side_address)
+  end function tfem_solid_contact_add_side_opt
+
+  function tfem_solid_contact_add_side_opt_r2111(context, tag, body, young, n_nodes, &
+        nodes, xyz, equations, n_triangles, triangles, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(1, *)
+    real(c_double), intent(in) :: xyz(*)
+    integer(c_int64_t), intent(in) :: equations(*)
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: triangles(*)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side_address)
+  end function tfem_solid_contact_add_side_opt_r2111
+
+  function tfem_solid_contact_add_side_opt_r1211(context, tag, body, young, n_nodes, &
+        nodes, xyz, equations, n_triangles, triangles, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(*)
+    real(c_double), intent(in) :: xyz(1, *)
+    integer(c_int64_t), intent(in) :: equations(*)
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: triangles(*)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side_address)
+  end function tfem_solid_contact_add_side_opt_r1211
+
+  function tfem_solid_contact_add_side_opt_r2211(context, tag, body, young, n_nodes, &
+        nodes, xyz, equations, n_triangles, triangles, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(1, *)
+    real(c_double), intent(in) :: xyz(1, *)
+    integer(c_int64_t), intent(in) :: equations(*)
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: triangles(*)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side_address)
+  end function tfem_solid_contact_add_side_opt_r2211
+
+  function tfem_solid_contact_add_side_opt_r1121(context, tag, body, young, n_nodes, &
+        nodes, xyz, equations, n_triangles, triangles, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(*)
+    real(c_double), intent(in) :: xyz(*)
+    integer(c_int64_t), intent(in) :: equations(1, *)
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: triangles(*)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side_address)
+  end function tfem_solid_contact_add_side_opt_r1121
+
+  function tfem_solid_contact_add_side_opt_r2121(context, tag, body, young, n_nodes, &
+        nodes, xyz, equations, n_triangles, triangles, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(1, *)
+    real(c_double), intent(in) :: xyz(*)
+    integer(c_int64_t), intent(in) :: equations(1, *)
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: triangles(*)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side_address)
+  end function tfem_solid_contact_add_side_opt_r2121
+
+  function tfem_solid_contact_add_side_opt_r1221(context, tag, body, young, n_nodes, &
+        nodes, xyz, equations, n_triangles, triangles, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(*)
+    real(c_double), intent(in) :: xyz(1, *)
+    integer(c_int64_t), intent(in) :: equations(1, *)
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: triangles(*)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side_address)
+  end function tfem_solid_contact_add_side_opt_r1221
+
+  function tfem_solid_contact_add_side_opt_r2221(context, tag, body, young, n_nodes, &
+        nodes, xyz, equations, n_triangles, triangles, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(1, *)
+    real(c_double), intent(in) :: xyz(1, *)
+    integer(c_int64_t), intent(in) :: equations(1, *)
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: triangles(*)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side_address)
+  end function tfem_solid_contact_add_side_opt_r2221
+
+  function tfem_solid_contact_add_side_opt_r1112(context, tag, body, young, n_nodes, &
+        nodes, xyz, equations, n_triangles, triangles, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(*)
+    real(c_double), intent(in) :: xyz(*)
+    integer(c_int64_t), intent(in) :: equations(*)
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: triangles(1, *)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side_address)
+  end function tfem_solid_contact_add_side_opt_r1112
+
+  function tfem_solid_contact_add_side_opt_r2112(context, tag, body, young, n_nodes, &
+        nodes, xyz, equations, n_triangles, triangles, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(1, *)
+    real(c_double), intent(in) :: xyz(*)
+    integer(c_int64_t), intent(in) :: equations(*)
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: triangles(1, *)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side_address)
+  end function tfem_solid_contact_add_side_opt_r2112
+
+  function tfem_solid_contact_add_side_opt_r1212(context, tag, body, young, n_nodes, &
+        nodes, xyz, equations, n_triangles, triangles, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(*)
+    real(c_double), intent(in) :: xyz(1, *)
+    integer(c_int64_t), intent(in) :: equations(*)
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: triangles(1, *)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side_address)
+  end function tfem_solid_contact_add_side_opt_r1212
+
+  function tfem_solid_contact_add_side_opt_r2212(context, tag, body, young, n_nodes, &
+        nodes, xyz, equations, n_triangles, triangles, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(1, *)
+    real(c_double), intent(in) :: xyz(1, *)
+    integer(c_int64_t), intent(in) :: equations(*)
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: triangles(1, *)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side_address)
+  end function tfem_solid_contact_add_side_opt_r2212
+
+  function tfem_solid_contact_add_side_opt_r1122(context, tag, body, young, n_nodes, &
+        nodes, xyz, equations, n_triangles, triangles, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(*)
+    real(c_double), intent(in) :: xyz(*)
+    integer(c_int64_t), intent(in) :: equations(1, *)
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: triangles(1, *)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side_address)
+  end function tfem_solid_contact_add_side_opt_r1122
+
+  function tfem_solid_contact_add_side_opt_r2122(context, tag, body, young, n_nodes, &
+        nodes, xyz, equations, n_triangles, triangles, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(1, *)
+    real(c_double), intent(in) :: xyz(*)
+    integer(c_int64_t), intent(in) :: equations(1, *)
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: triangles(1, *)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side_address)
+  end function tfem_solid_contact_add_side_opt_r2122
+
+  function tfem_solid_contact_add_side_opt_r1222(context, tag, body, young, n_nodes, &
+        nodes, xyz, equations, n_triangles, triangles, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(*)
+    real(c_double), intent(in) :: xyz(1, *)
+    integer(c_int64_t), intent(in) :: equations(1, *)
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: triangles(1, *)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side_address)
+  end function tfem_solid_contact_add_side_opt_r1222
+
+  function tfem_solid_contact_add_side_opt_r2222(context, tag, body, young, n_nodes, &
+        nodes, xyz, equations, n_triangles, triangles, side) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: tag
+    integer(c_int), value :: body
+    real(c_double), value :: young
+    integer(c_int), value :: n_nodes
+    integer(c_int), intent(in) :: nodes(1, *)
+    real(c_double), intent(in) :: xyz(1, *)
+    integer(c_int64_t), intent(in) :: equations(1, *)
+    integer(c_int), value :: n_triangles
+    integer(c_int), intent(in) :: triangles(1, *)
+    integer(c_int), intent(inout), optional, target :: side
+    integer(c_int) :: status
+    type(c_ptr) :: side_address
+    side_address = c_null_ptr
+    if (present(side)) side_address = c_loc(side)
+    status = tfem_solid_contact_add_side_by_address(context, tag, body, young, n_nodes, nodes, xyz, &
+        equations, n_triangles, triangles, side_address)
+  end function tfem_solid_contact_add_side_opt_r2222
+
+  function tfem_solid_contact_add_pair_opt(context, side_a, side_b, pair) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), value :: side_a
+    integer(c_int), value :: side_b
+    integer(c_int), intent(inout), optional, target :: pair
+    integer(c_int) :: status
+    type(c_ptr) :: pair_address
+    pair_address = c_null_ptr
+    if (present(pair)) pair_address = c_loc(pair)
+    status = tfem_solid_contact_add_pair_by_address(context, side_a, side_b, pair_address)
+  end function tfem_solid_contact_add_pair_opt
+
+  function tfem_solid_contact_sizes_opt(context, n_nodes, n_tetrahedra, n_entries) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout), optional, target :: n_nodes
+    integer(c_int), intent(inout), optional, target :: n_tetrahedra
+    integer(c_int64_t), intent(inout), optional, target :: n_entries
+    integer(c_int) :: status
+    type(c_ptr) :: n_nodes_address
+    type(c_ptr) :: n_tetrahedra_address
+    type(c_ptr) :: n_entries_address
+    n_nodes_address = c_null_ptr
+    if (present(n_nodes)) n_nodes_address = c_loc(n_nodes)
+    n_tetrahedra_address = c_null_ptr
+    if (present(n_tetrahedra)) n_tetrahedra_address = c_loc(n_tetrahedra)
+    n_entries_address = c_null_ptr
+    if (present(n_entries)) n_entries_address = c_loc(n_entries)
+    status = tfem_solid_contact_sizes_by_address(context, n_nodes_address, n_tetrahedra_address, &
+        n_entries_address)
+  end function tfem_solid_contact_sizes_opt
+
+  function tfem_solid_contact_nodes_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_nodes(context, out, length)
+  end function tfem_solid_contact_nodes_r2
+
+  function tfem_solid_contact_nodes_i(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_nodes(context, out, tfem_to_size_t(length))
+  end function tfem_solid_contact_nodes_i
+
+  function tfem_solid_contact_nodes_i_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_nodes(context, out, tfem_to_size_t(length))
+  end function tfem_solid_contact_nodes_i_r2
+
+  function tfem_solid_contact_tetrahedra_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_tetrahedra(context, out, length)
+  end function tfem_solid_contact_tetrahedra_r2
+
+  function tfem_solid_contact_tetrahedra_i(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_tetrahedra(context, out, tfem_to_size_t(length))
+  end function tfem_solid_contact_tetrahedra_i
+
+  function tfem_solid_contact_tetrahedra_i_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_tetrahedra(context, out, tfem_to_size_t(length))
+  end function tfem_solid_contact_tetrahedra_i_r2
+
+  function tfem_solid_contact_pattern_r21(context, rows, cols, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: rows(1, *)
+    integer(c_int64_t), intent(inout) :: cols(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_pattern(context, rows, cols, length)
+  end function tfem_solid_contact_pattern_r21
+
+  function tfem_solid_contact_pattern_r12(context, rows, cols, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: rows(*)
+    integer(c_int64_t), intent(inout) :: cols(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_pattern(context, rows, cols, length)
+  end function tfem_solid_contact_pattern_r12
+
+  function tfem_solid_contact_pattern_r22(context, rows, cols, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: rows(1, *)
+    integer(c_int64_t), intent(inout) :: cols(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_pattern(context, rows, cols, length)
+  end function tfem_solid_contact_pattern_r22
+
+  function tfem_solid_contact_pattern_i(context, rows, cols, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: rows(*)
+    integer(c_int64_t), intent(inout) :: cols(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_pattern(context, rows, cols, tfem_to_size_t(length))
+  end function tfem_solid_contact_pattern_i
+
+  function tfem_solid_contact_pattern_i_r21(context, rows, cols, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: rows(1, *)
+    integer(c_int64_t), intent(inout) :: cols(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_pattern(context, rows, cols, tfem_to_size_t(length))
+  end function tfem_solid_contact_pattern_i_r21
+
+  function tfem_solid_contact_pattern_i_r12(context, rows, cols, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: rows(*)
+    integer(c_int64_t), intent(inout) :: cols(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_pattern(context, rows, cols, tfem_to_size_t(length))
+  end function tfem_solid_contact_pattern_i_r12
+
+  function tfem_solid_contact_pattern_i_r22(context, rows, cols, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: rows(1, *)
+    integer(c_int64_t), intent(inout) :: cols(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_pattern(context, rows, cols, tfem_to_size_t(length))
+  end function tfem_solid_contact_pattern_i_r22
+
+  function tfem_solid_contact_element_equations_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_element_equations(context, out, length)
+  end function tfem_solid_contact_element_equations_r2
+
+  function tfem_solid_contact_element_equations_i(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_element_equations(context, out, tfem_to_size_t(length))
+  end function tfem_solid_contact_element_equations_i
+
+  function tfem_solid_contact_element_equations_i_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int64_t), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_element_equations(context, out, tfem_to_size_t(length))
+  end function tfem_solid_contact_element_equations_i_r2
+
+  function tfem_solid_contact_element_blocks_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_element_blocks(context, out, length)
+  end function tfem_solid_contact_element_blocks_r2
+
+  function tfem_solid_contact_element_blocks_i(context, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_element_blocks(context, out, tfem_to_size_t(length))
+  end function tfem_solid_contact_element_blocks_i
+
+  function tfem_solid_contact_element_blocks_i_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_element_blocks(context, out, tfem_to_size_t(length))
+  end function tfem_solid_contact_element_blocks_i_r2
+
+  function tfem_solid_contact_evaluate_opt(context, u, u_length, values, values_length, &
+        residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout), optional, target :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    real(c_double), intent(inout), optional, target :: residual(*)
+    integer(c_size_t), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length /= 0)
+    residual_address = tfem_address_c_double(residual, residual_length /= 0)
+    status = tfem_solid_contact_evaluate_by_address(context, u, u_length, values_address, &
+        values_length, residual_address, residual_length)
+  end function tfem_solid_contact_evaluate_opt
+
+  function tfem_solid_contact_evaluate_opt_r211(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout), optional, target :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    real(c_double), intent(inout), optional, target :: residual(*)
+    integer(c_size_t), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length /= 0)
+    residual_address = tfem_address_c_double(residual, residual_length /= 0)
+    status = tfem_solid_contact_evaluate_by_address(context, u, u_length, values_address, &
+        values_length, residual_address, residual_length)
+  end function tfem_solid_contact_evaluate_opt_r211
+
+  function tfem_solid_contact_evaluate_opt_r121(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout), target :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    real(c_double), intent(inout), optional, target :: residual(*)
+    integer(c_size_t), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length /= 0)
+    residual_address = tfem_address_c_double(residual, residual_length /= 0)
+    status = tfem_solid_contact_evaluate_by_address(context, u, u_length, values_address, &
+        values_length, residual_address, residual_length)
+  end function tfem_solid_contact_evaluate_opt_r121
+
+  function tfem_solid_contact_evaluate_opt_r221(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout), target :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    real(c_double), intent(inout), optional, target :: residual(*)
+    integer(c_size_t), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length /= 0)
+    residual_address = tfem_address_c_double(residual, residual_length /= 0)
+    status = tfem_solid_contact_evaluate_by_address(context, u, u_length, values_address, &
+        values_length, residual_address, residual_length)
+  end function tfem_solid_contact_evaluate_opt_r221
+
+  function tfem_solid_contact_evaluate_opt_r112(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout), optional, target :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    real(c_double), intent(inout), target :: residual(1, *)
+    integer(c_size_t), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length /= 0)
+    residual_address = tfem_address_c_double(residual, residual_length /= 0)
+    status = tfem_solid_contact_evaluate_by_address(context, u, u_length, values_address, &
+        values_length, residual_address, residual_length)
+  end function tfem_solid_contact_evaluate_opt_r112
+
+  function tfem_solid_contact_evaluate_opt_r212(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout), optional, target :: values(*)
+    integer(c_size_t), intent(in) :: values_length
+    real(c_double), intent(inout), target :: residual(1, *)
+    integer(c_size_t), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length /= 0)
+    residual_address = tfem_address_c_double(residual, residual_length /= 0)
+    status = tfem_solid_contact_evaluate_by_address(context, u, u_length, values_address, &
+        values_length, residual_address, residual_length)
+  end function tfem_solid_contact_evaluate_opt_r212
+
+  function tfem_solid_contact_evaluate_opt_r122(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout), target :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    real(c_double), intent(inout), target :: residual(1, *)
+    integer(c_size_t), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length /= 0)
+    residual_address = tfem_address_c_double(residual, residual_length /= 0)
+    status = tfem_solid_contact_evaluate_by_address(context, u, u_length, values_address, &
+        values_length, residual_address, residual_length)
+  end function tfem_solid_contact_evaluate_opt_r122
+
+  function tfem_solid_contact_evaluate_opt_r222(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout), target :: values(1, *)
+    integer(c_size_t), intent(in) :: values_length
+    real(c_double), intent(inout), target :: residual(1, *)
+    integer(c_size_t), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length /= 0)
+    residual_address = tfem_address_c_double(residual, residual_length /= 0)
+    status = tfem_solid_contact_evaluate_by_address(context, u, u_length, values_address, &
+        values_length, residual_address, residual_length)
+  end function tfem_solid_contact_evaluate_opt_r222
+
+  function tfem_solid_contact_evaluate_opt_i(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout), optional, target :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    real(c_double), intent(inout), optional, target :: residual(*)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length > 0)
+    residual_address = tfem_address_c_double(residual, residual_length > 0)
+    status = tfem_solid_contact_evaluate_by_address(context, u, tfem_to_size_t(u_length), &
+        values_address, tfem_to_size_t(values_length), residual_address, &
+        tfem_to_size_t(residual_length))
+  end function tfem_solid_contact_evaluate_opt_i
+
+  function tfem_solid_contact_evaluate_opt_i_r211(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout), optional, target :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    real(c_double), intent(inout), optional, target :: residual(*)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length > 0)
+    residual_address = tfem_address_c_double(residual, residual_length > 0)
+    status = tfem_solid_contact_evaluate_by_address(context, u, tfem_to_size_t(u_length), &
+        values_address, tfem_to_size_t(values_length), residual_address, &
+        tfem_to_size_t(residual_length))
+  end function tfem_solid_contact_evaluate_opt_i_r211
+
+  function tfem_solid_contact_evaluate_opt_i_r121(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout), target :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    real(c_double), intent(inout), optional, target :: residual(*)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length > 0)
+    residual_address = tfem_address_c_double(residual, residual_length > 0)
+    status = tfem_solid_contact_evaluate_by_address(context, u, tfem_to_size_t(u_length), &
+        values_address, tfem_to_size_t(values_length), residual_address, &
+        tfem_to_size_t(residual_length))
+  end function tfem_solid_contact_evaluate_opt_i_r121
+
+  function tfem_solid_contact_evaluate_opt_i_r221(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout), target :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    real(c_double), intent(inout), optional, target :: residual(*)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length > 0)
+    residual_address = tfem_address_c_double(residual, residual_length > 0)
+    status = tfem_solid_contact_evaluate_by_address(context, u, tfem_to_size_t(u_length), &
+        values_address, tfem_to_size_t(values_length), residual_address, &
+        tfem_to_size_t(residual_length))
+  end function tfem_solid_contact_evaluate_opt_i_r221
+
+  function tfem_solid_contact_evaluate_opt_i_r112(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout), optional, target :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    real(c_double), intent(inout), target :: residual(1, *)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length > 0)
+    residual_address = tfem_address_c_double(residual, residual_length > 0)
+    status = tfem_solid_contact_evaluate_by_address(context, u, tfem_to_size_t(u_length), &
+        values_address, tfem_to_size_t(values_length), residual_address, &
+        tfem_to_size_t(residual_length))
+  end function tfem_solid_contact_evaluate_opt_i_r112
+
+  function tfem_solid_contact_evaluate_opt_i_r212(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout), optional, target :: values(*)
+    integer(tfem_length_kind), intent(in) :: values_length
+    real(c_double), intent(inout), target :: residual(1, *)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length > 0)
+    residual_address = tfem_address_c_double(residual, residual_length > 0)
+    status = tfem_solid_contact_evaluate_by_address(context, u, tfem_to_size_t(u_length), &
+        values_address, tfem_to_size_t(values_length), residual_address, &
+        tfem_to_size_t(residual_length))
+  end function tfem_solid_contact_evaluate_opt_i_r212
+
+  function tfem_solid_contact_evaluate_opt_i_r122(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout), target :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    real(c_double), intent(inout), target :: residual(1, *)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length > 0)
+    residual_address = tfem_address_c_double(residual, residual_length > 0)
+    status = tfem_solid_contact_evaluate_by_address(context, u, tfem_to_size_t(u_length), &
+        values_address, tfem_to_size_t(values_length), residual_address, &
+        tfem_to_size_t(residual_length))
+  end function tfem_solid_contact_evaluate_opt_i_r122
+
+  function tfem_solid_contact_evaluate_opt_i_r222(context, u, u_length, values, &
+        values_length, residual, residual_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout), target :: values(1, *)
+    integer(tfem_length_kind), intent(in) :: values_length
+    real(c_double), intent(inout), target :: residual(1, *)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    integer(c_int) :: status
+    type(c_ptr) :: values_address
+    type(c_ptr) :: residual_address
+    values_address = tfem_address_c_double(values, values_length > 0)
+    residual_address = tfem_address_c_double(residual, residual_length > 0)
+    status = tfem_solid_contact_evaluate_by_address(context, u, tfem_to_size_t(u_length), &
+        values_address, tfem_to_size_t(values_length), residual_address, &
+        tfem_to_size_t(residual_length))
+  end function tfem_solid_contact_evaluate_opt_i_r222
+
+  function tfem_solid_contact_gather_r21(context, u_equations, n_equations, u, &
+        u_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u_equations(1, *)
+    integer(c_size_t), intent(in) :: n_equations
+    real(c_double), intent(inout) :: u(*)
+    integer(c_size_t), intent(in) :: u_length
+    integer(c_int) :: status
+    status = tfem_solid_contact_gather(context, u_equations, n_equations, u, u_length)
+  end function tfem_solid_contact_gather_r21
+
+  function tfem_solid_contact_gather_r12(context, u_equations, n_equations, u, &
+        u_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u_equations(*)
+    integer(c_size_t), intent(in) :: n_equations
+    real(c_double), intent(inout) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    integer(c_int) :: status
+    status = tfem_solid_contact_gather(context, u_equations, n_equations, u, u_length)
+  end function tfem_solid_contact_gather_r12
+
+  function tfem_solid_contact_gather_r22(context, u_equations, n_equations, u, &
+        u_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u_equations(1, *)
+    integer(c_size_t), intent(in) :: n_equations
+    real(c_double), intent(inout) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    integer(c_int) :: status
+    status = tfem_solid_contact_gather(context, u_equations, n_equations, u, u_length)
+  end function tfem_solid_contact_gather_r22
+
+  function tfem_solid_contact_gather_i(context, u_equations, n_equations, u, u_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u_equations(*)
+    integer(tfem_length_kind), intent(in) :: n_equations
+    real(c_double), intent(inout) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    integer(c_int) :: status
+    status = tfem_solid_contact_gather(context, u_equations, tfem_to_size_t(n_equations), u, &
+        tfem_to_size_t(u_length))
+  end function tfem_solid_contact_gather_i
+
+  function tfem_solid_contact_gather_i_r21(context, u_equations, n_equations, u, &
+        u_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u_equations(1, *)
+    integer(tfem_length_kind), intent(in) :: n_equations
+    real(c_double), intent(inout) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    integer(c_int) :: status
+    status = tfem_solid_contact_gather(context, u_equations, tfem_to_size_t(n_equations), u, &
+        tfem_to_size_t(u_length))
+  end function tfem_solid_contact_gather_i_r21
+
+  function tfem_solid_contact_gather_i_r12(context, u_equations, n_equations, u, &
+        u_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u_equations(*)
+    integer(tfem_length_kind), intent(in) :: n_equations
+    real(c_double), intent(inout) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    integer(c_int) :: status
+    status = tfem_solid_contact_gather(context, u_equations, tfem_to_size_t(n_equations), u, &
+        tfem_to_size_t(u_length))
+  end function tfem_solid_contact_gather_i_r12
+
+  function tfem_solid_contact_gather_i_r22(context, u_equations, n_equations, u, &
+        u_length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u_equations(1, *)
+    integer(tfem_length_kind), intent(in) :: n_equations
+    real(c_double), intent(inout) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    integer(c_int) :: status
+    status = tfem_solid_contact_gather(context, u_equations, tfem_to_size_t(n_equations), u, &
+        tfem_to_size_t(u_length))
+  end function tfem_solid_contact_gather_i_r22
+
+  function tfem_solid_contact_scatter_add_r21(context, residual, residual_length, &
+        host_vector, n_equations) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: residual(1, *)
+    integer(c_size_t), intent(in) :: residual_length
+    real(c_double), intent(inout) :: host_vector(*)
+    integer(c_size_t), intent(in) :: n_equations
+    integer(c_int) :: status
+    status = tfem_solid_contact_scatter_add(context, residual, residual_length, host_vector, &
+        n_equations)
+  end function tfem_solid_contact_scatter_add_r21
+
+  function tfem_solid_contact_scatter_add_r12(context, residual, residual_length, &
+        host_vector, n_equations) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: residual(*)
+    integer(c_size_t), intent(in) :: residual_length
+    real(c_double), intent(inout) :: host_vector(1, *)
+    integer(c_size_t), intent(in) :: n_equations
+    integer(c_int) :: status
+    status = tfem_solid_contact_scatter_add(context, residual, residual_length, host_vector, &
+        n_equations)
+  end function tfem_solid_contact_scatter_add_r12
+
+  function tfem_solid_contact_scatter_add_r22(context, residual, residual_length, &
+        host_vector, n_equations) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: residual(1, *)
+    integer(c_size_t), intent(in) :: residual_length
+    real(c_double), intent(inout) :: host_vector(1, *)
+    integer(c_size_t), intent(in) :: n_equations
+    integer(c_int) :: status
+    status = tfem_solid_contact_scatter_add(context, residual, residual_length, host_vector, &
+        n_equations)
+  end function tfem_solid_contact_scatter_add_r22
+
+  function tfem_solid_contact_scatter_add_i(context, residual, residual_length, &
+        host_vector, n_equations) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: residual(*)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    real(c_double), intent(inout) :: host_vector(*)
+    integer(tfem_length_kind), intent(in) :: n_equations
+    integer(c_int) :: status
+    status = tfem_solid_contact_scatter_add(context, residual, tfem_to_size_t(residual_length), &
+        host_vector, tfem_to_size_t(n_equations))
+  end function tfem_solid_contact_scatter_add_i
+
+  function tfem_solid_contact_scatter_add_i_r21(context, residual, residual_length, &
+        host_vector, n_equations) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: residual(1, *)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    real(c_double), intent(inout) :: host_vector(*)
+    integer(tfem_length_kind), intent(in) :: n_equations
+    integer(c_int) :: status
+    status = tfem_solid_contact_scatter_add(context, residual, tfem_to_size_t(residual_length), &
+        host_vector, tfem_to_size_t(n_equations))
+  end function tfem_solid_contact_scatter_add_i_r21
+
+  function tfem_solid_contact_scatter_add_i_r12(context, residual, residual_length, &
+        host_vector, n_equations) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: residual(*)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    real(c_double), intent(inout) :: host_vector(1, *)
+    integer(tfem_length_kind), intent(in) :: n_equations
+    integer(c_int) :: status
+    status = tfem_solid_contact_scatter_add(context, residual, tfem_to_size_t(residual_length), &
+        host_vector, tfem_to_size_t(n_equations))
+  end function tfem_solid_contact_scatter_add_i_r12
+
+  function tfem_solid_contact_scatter_add_i_r22(context, residual, residual_length, &
+        host_vector, n_equations) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: residual(1, *)
+    integer(tfem_length_kind), intent(in) :: residual_length
+    real(c_double), intent(inout) :: host_vector(1, *)
+    integer(tfem_length_kind), intent(in) :: n_equations
+    integer(c_int) :: status
+    status = tfem_solid_contact_scatter_add(context, residual, tfem_to_size_t(residual_length), &
+        host_vector, tfem_to_size_t(n_equations))
+  end function tfem_solid_contact_scatter_add_i_r22
+
+  function tfem_solid_contact_update_opt(context, u, u_length, changed, switched_on, &
+        switched_off) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(c_size_t), intent(in) :: u_length
+    integer(c_int), intent(inout), optional, target :: changed
+    integer(c_int), intent(inout), optional, target :: switched_on
+    integer(c_int), intent(inout), optional, target :: switched_off
+    integer(c_int) :: status
+    type(c_ptr) :: changed_address
+    type(c_ptr) :: switched_on_address
+    type(c_ptr) :: switched_off_address
+    changed_address = c_null_ptr
+    if (present(changed)) changed_address = c_loc(changed)
+    switched_on_address = c_null_ptr
+    if (present(switched_on)) switched_on_address = c_loc(switched_on)
+    switched_off_address = c_null_ptr
+    if (present(switched_off)) switched_off_address = c_loc(switched_off)
+    status = tfem_solid_contact_update_by_address(context, u, u_length, changed_address, &
+        switched_on_address, switched_off_address)
+  end function tfem_solid_contact_update_opt
+
+  function tfem_solid_contact_update_opt_r2(context, u, u_length, changed, switched_on, &
+        switched_off) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    integer(c_int), intent(inout), optional, target :: changed
+    integer(c_int), intent(inout), optional, target :: switched_on
+    integer(c_int), intent(inout), optional, target :: switched_off
+    integer(c_int) :: status
+    type(c_ptr) :: changed_address
+    type(c_ptr) :: switched_on_address
+    type(c_ptr) :: switched_off_address
+    changed_address = c_null_ptr
+    if (present(changed)) changed_address = c_loc(changed)
+    switched_on_address = c_null_ptr
+    if (present(switched_on)) switched_on_address = c_loc(switched_on)
+    switched_off_address = c_null_ptr
+    if (present(switched_off)) switched_off_address = c_loc(switched_off)
+    status = tfem_solid_contact_update_by_address(context, u, u_length, changed_address, &
+        switched_on_address, switched_off_address)
+  end function tfem_solid_contact_update_opt_r2
+
+  function tfem_solid_contact_update_opt_i(context, u, u_length, changed, switched_on, &
+        switched_off) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    integer(c_int), intent(inout), optional, target :: changed
+    integer(c_int), intent(inout), optional, target :: switched_on
+    integer(c_int), intent(inout), optional, target :: switched_off
+    integer(c_int) :: status
+    type(c_ptr) :: changed_address
+    type(c_ptr) :: switched_on_address
+    type(c_ptr) :: switched_off_address
+    changed_address = c_null_ptr
+    if (present(changed)) changed_address = c_loc(changed)
+    switched_on_address = c_null_ptr
+    if (present(switched_on)) switched_on_address = c_loc(switched_on)
+    switched_off_address = c_null_ptr
+    if (present(switched_off)) switched_off_address = c_loc(switched_off)
+    status = tfem_solid_contact_update_by_address(context, u, tfem_to_size_t(u_length), &
+        changed_address, switched_on_address, switched_off_address)
+  end function tfem_solid_contact_update_opt_i
+
+  function tfem_solid_contact_update_opt_i_r2(context, u, u_length, changed, &
+        switched_on, switched_off) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    integer(c_int), intent(inout), optional, target :: changed
+    integer(c_int), intent(inout), optional, target :: switched_on
+    integer(c_int), intent(inout), optional, target :: switched_off
+    integer(c_int) :: status
+    type(c_ptr) :: changed_address
+    type(c_ptr) :: switched_on_address
+    type(c_ptr) :: switched_off_address
+    changed_address = c_null_ptr
+    if (present(changed)) changed_address = c_loc(changed)
+    switched_on_address = c_null_ptr
+    if (present(switched_on)) switched_on_address = c_loc(switched_on)
+    switched_off_address = c_null_ptr
+    if (present(switched_off)) switched_off_address = c_loc(switched_off)
+    status = tfem_solid_contact_update_by_address(context, u, tfem_to_size_t(u_length), &
+        changed_address, switched_on_address, switched_off_address)
+  end function tfem_solid_contact_update_opt_i_r2
+
+  function tfem_solid_contact_get_active_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_get_active(context, out, length)
+  end function tfem_solid_contact_get_active_r2
+
+  function tfem_solid_contact_get_active_i(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_get_active(context, out, tfem_to_size_t(length))
+  end function tfem_solid_contact_get_active_i
+
+  function tfem_solid_contact_get_active_i_r2(context, out, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_get_active(context, out, tfem_to_size_t(length))
+  end function tfem_solid_contact_get_active_i_r2
+
+  function tfem_solid_contact_set_active_r2(context, active, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(in) :: active(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_set_active(context, active, length)
+  end function tfem_solid_contact_set_active_r2
+
+  function tfem_solid_contact_set_active_i(context, active, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(in) :: active(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_set_active(context, active, tfem_to_size_t(length))
+  end function tfem_solid_contact_set_active_i
+
+  function tfem_solid_contact_set_active_i_r2(context, active, length) result(status)
+    type(c_ptr), value :: context
+    integer(c_int), intent(in) :: active(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_set_active(context, active, tfem_to_size_t(length))
+  end function tfem_solid_contact_set_active_i_r2
+
+  function tfem_solid_contact_gaps_r21(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(*)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_gaps(context, u, u_length, out, length)
+  end function tfem_solid_contact_gaps_r21
+
+  function tfem_solid_contact_gaps_r12(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_gaps(context, u, u_length, out, length)
+  end function tfem_solid_contact_gaps_r12
+
+  function tfem_solid_contact_gaps_r22(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(c_size_t), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(c_size_t), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_gaps(context, u, u_length, out, length)
+  end function tfem_solid_contact_gaps_r22
+
+  function tfem_solid_contact_gaps_i(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_gaps(context, u, tfem_to_size_t(u_length), out, &
+        tfem_to_size_t(length))
+  end function tfem_solid_contact_gaps_i
+
+  function tfem_solid_contact_gaps_i_r21(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(*)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_gaps(context, u, tfem_to_size_t(u_length), out, &
+        tfem_to_size_t(length))
+  end function tfem_solid_contact_gaps_i_r21
+
+  function tfem_solid_contact_gaps_i_r12(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(*)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_gaps(context, u, tfem_to_size_t(u_length), out, &
+        tfem_to_size_t(length))
+  end function tfem_solid_contact_gaps_i_r12
+
+  function tfem_solid_contact_gaps_i_r22(context, u, u_length, out, length) result(status)
+    type(c_ptr), value :: context
+    real(c_double), intent(in) :: u(1, *)
+    integer(tfem_length_kind), intent(in) :: u_length
+    real(c_double), intent(inout) :: out(1, *)
+    integer(tfem_length_kind), intent(in) :: length
+    integer(c_int) :: status
+    status = tfem_solid_contact_gaps(context, u, tfem_to_size_t(u_length), out, &
+        tfem_to_size_t(length))
+  end function tfem_solid_contact_gaps_i_r22
+
 end module tfem_specifics
 
 ! The module to use: tfem_c's constants and types, its interfaces where nothing is
@@ -7356,24 +9070,30 @@ module tfem
         tfem_solid_clear_loads, tfem_solid_clear_contact_pairs, tfem_solid_revert_step, &
         tfem_solid_get_solve_info, tfem_solid_get_iterations, tfem_solid_get_external_work, &
         tfem_solid_get_contact_area, tfem_solid_get_contact_pair_area, tfem_solid_write_vtu, &
-        tfem_last_error, tfem_last_error_length, tfem_get_warning, tfem_get_mesh_nodes, &
-        tfem_get_contact_mesh, tfem_get_contact_element_pairs, tfem_get_contact_element_apexes, &
-        tfem_get_displacements, tfem_get_element_strains, tfem_get_element_stresses, &
-        tfem_get_element_out_of_plane_stresses, tfem_get_element_jacobians, tfem_get_reactions, &
-        tfem_get_contact_forces, tfem_get_contact_nodal_pressures, tfem_get_contact_nodal_tractions, &
-        tfem_get_contact_pair_nodal_pressures, tfem_get_contact_pair_nodal_tractions, &
-        tfem_get_contact_gaps, tfem_get_contact_active, tfem_get_contact_pressure, &
-        tfem_get_contact_elements, tfem_get_contact_shear, tfem_get_contact_friction_state, &
-        tfem_get_contact_dissipation, tfem_get_contact_state, tfem_set_contact_state, &
-        tfem_get_system_matrix, tfem_contact_last_error, tfem_contact_last_error_length, &
-        tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, tfem_contact_scatter_add, &
-        tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, tfem_contact_pressures, &
-        tfem_contact_elements, tfem_contact_element_equations, tfem_contact_element_blocks, &
-        tfem_solid_last_error, tfem_solid_last_error_length, tfem_solid_get_warning, &
-        tfem_solid_get_mesh_nodes, tfem_solid_get_displacements, tfem_solid_get_element_strains, &
-        tfem_solid_get_element_stresses, tfem_solid_get_reactions, tfem_solid_get_contact_tetrahedra, &
-        tfem_solid_get_contact_active, tfem_solid_get_contact_forces, &
-        tfem_solid_get_contact_nodal_pressures
+        tfem_solid_contact_destroy, tfem_solid_contact_setup, tfem_solid_contact_restart, &
+        tfem_solid_contact_area, tfem_last_error, tfem_last_error_length, tfem_get_warning, &
+        tfem_get_mesh_nodes, tfem_get_contact_mesh, tfem_get_contact_element_pairs, &
+        tfem_get_contact_element_apexes, tfem_get_displacements, tfem_get_element_strains, &
+        tfem_get_element_stresses, tfem_get_element_out_of_plane_stresses, tfem_get_element_jacobians, &
+        tfem_get_reactions, tfem_get_contact_forces, tfem_get_contact_nodal_pressures, &
+        tfem_get_contact_nodal_tractions, tfem_get_contact_pair_nodal_pressures, &
+        tfem_get_contact_pair_nodal_tractions, tfem_get_contact_gaps, tfem_get_contact_active, &
+        tfem_get_contact_pressure, tfem_get_contact_elements, tfem_get_contact_shear, &
+        tfem_get_contact_friction_state, tfem_get_contact_dissipation, tfem_get_contact_state, &
+        tfem_set_contact_state, tfem_get_system_matrix, tfem_contact_last_error, &
+        tfem_contact_last_error_length, tfem_contact_nodes, tfem_contact_pattern, tfem_contact_gather, &
+        tfem_contact_scatter_add, tfem_contact_get_active, tfem_contact_set_active, tfem_contact_gaps, &
+        tfem_contact_pressures, tfem_contact_elements, tfem_contact_element_equations, &
+        tfem_contact_element_blocks, tfem_solid_last_error, tfem_solid_last_error_length, &
+        tfem_solid_get_warning, tfem_solid_get_mesh_nodes, tfem_solid_get_displacements, &
+        tfem_solid_get_element_strains, tfem_solid_get_element_stresses, tfem_solid_get_reactions, &
+        tfem_solid_get_contact_tetrahedra, tfem_solid_get_contact_active, &
+        tfem_solid_get_contact_forces, tfem_solid_get_contact_nodal_pressures, &
+        tfem_solid_contact_last_error, tfem_solid_contact_last_error_length, tfem_solid_contact_nodes, &
+        tfem_solid_contact_tetrahedra, tfem_solid_contact_pattern, &
+        tfem_solid_contact_element_equations, tfem_solid_contact_element_blocks, &
+        tfem_solid_contact_gather, tfem_solid_contact_scatter_add, tfem_solid_contact_get_active, &
+        tfem_solid_contact_set_active, tfem_solid_contact_gaps
   use tfem_specifics
   implicit none
   private :: c_strlen
@@ -7522,6 +9242,50 @@ module tfem
   private :: tfem_solid_get_contact_forces_r2, tfem_solid_get_contact_forces_i
   private :: tfem_solid_get_contact_forces_i_r2, tfem_solid_get_contact_nodal_pressures_r2
   private :: tfem_solid_get_contact_nodal_pressures_i, tfem_solid_get_contact_nodal_pressures_i_r2
+  private :: tfem_solid_contact_create_opt, tfem_solid_contact_last_error_i
+  private :: tfem_solid_contact_last_error_str, tfem_solid_contact_last_error_str_i
+  private :: tfem_solid_contact_last_error_length_no_context, tfem_solid_contact_add_side_opt
+  private :: tfem_solid_contact_add_side_opt_r2111, tfem_solid_contact_add_side_opt_r1211
+  private :: tfem_solid_contact_add_side_opt_r2211, tfem_solid_contact_add_side_opt_r1121
+  private :: tfem_solid_contact_add_side_opt_r2121, tfem_solid_contact_add_side_opt_r1221
+  private :: tfem_solid_contact_add_side_opt_r2221, tfem_solid_contact_add_side_opt_r1112
+  private :: tfem_solid_contact_add_side_opt_r2112, tfem_solid_contact_add_side_opt_r1212
+  private :: tfem_solid_contact_add_side_opt_r2212, tfem_solid_contact_add_side_opt_r1122
+  private :: tfem_solid_contact_add_side_opt_r2122, tfem_solid_contact_add_side_opt_r1222
+  private :: tfem_solid_contact_add_side_opt_r2222, tfem_solid_contact_add_pair_opt
+  private :: tfem_solid_contact_sizes_opt, tfem_solid_contact_nodes_r2, tfem_solid_contact_nodes_i
+  private :: tfem_solid_contact_nodes_i_r2, tfem_solid_contact_tetrahedra_r2
+  private :: tfem_solid_contact_tetrahedra_i, tfem_solid_contact_tetrahedra_i_r2
+  private :: tfem_solid_contact_pattern_r21, tfem_solid_contact_pattern_r12
+  private :: tfem_solid_contact_pattern_r22, tfem_solid_contact_pattern_i
+  private :: tfem_solid_contact_pattern_i_r21, tfem_solid_contact_pattern_i_r12
+  private :: tfem_solid_contact_pattern_i_r22, tfem_solid_contact_element_equations_r2
+  private :: tfem_solid_contact_element_equations_i, tfem_solid_contact_element_equations_i_r2
+  private :: tfem_solid_contact_element_blocks_r2, tfem_solid_contact_element_blocks_i
+  private :: tfem_solid_contact_element_blocks_i_r2, tfem_solid_contact_evaluate_opt
+  private :: tfem_solid_contact_evaluate_opt_r211, tfem_solid_contact_evaluate_opt_r121
+  private :: tfem_solid_contact_evaluate_opt_r221, tfem_solid_contact_evaluate_opt_r112
+  private :: tfem_solid_contact_evaluate_opt_r212, tfem_solid_contact_evaluate_opt_r122
+  private :: tfem_solid_contact_evaluate_opt_r222, tfem_solid_contact_evaluate_opt_i
+  private :: tfem_solid_contact_evaluate_opt_i_r211, tfem_solid_contact_evaluate_opt_i_r121
+  private :: tfem_solid_contact_evaluate_opt_i_r221, tfem_solid_contact_evaluate_opt_i_r112
+  private :: tfem_solid_contact_evaluate_opt_i_r212, tfem_solid_contact_evaluate_opt_i_r122
+  private :: tfem_solid_contact_evaluate_opt_i_r222, tfem_solid_contact_gather_r21
+  private :: tfem_solid_contact_gather_r12, tfem_solid_contact_gather_r22
+  private :: tfem_solid_contact_gather_i, tfem_solid_contact_gather_i_r21
+  private :: tfem_solid_contact_gather_i_r12, tfem_solid_contact_gather_i_r22
+  private :: tfem_solid_contact_scatter_add_r21, tfem_solid_contact_scatter_add_r12
+  private :: tfem_solid_contact_scatter_add_r22, tfem_solid_contact_scatter_add_i
+  private :: tfem_solid_contact_scatter_add_i_r21, tfem_solid_contact_scatter_add_i_r12
+  private :: tfem_solid_contact_scatter_add_i_r22, tfem_solid_contact_update_opt
+  private :: tfem_solid_contact_update_opt_r2, tfem_solid_contact_update_opt_i
+  private :: tfem_solid_contact_update_opt_i_r2, tfem_solid_contact_get_active_r2
+  private :: tfem_solid_contact_get_active_i, tfem_solid_contact_get_active_i_r2
+  private :: tfem_solid_contact_set_active_r2, tfem_solid_contact_set_active_i
+  private :: tfem_solid_contact_set_active_i_r2, tfem_solid_contact_gaps_r21
+  private :: tfem_solid_contact_gaps_r12, tfem_solid_contact_gaps_r22, tfem_solid_contact_gaps_i
+  private :: tfem_solid_contact_gaps_i_r21, tfem_solid_contact_gaps_i_r12
+  private :: tfem_solid_contact_gaps_i_r22
 
   !> Fortran: tfem_last_error (documented in module tfem_c). `model` may be omitted (NULL is
   !! passed). `length` takes an integer(c_size_t) or a default integer (kind tfem_length_kind); a
@@ -8386,6 +10150,215 @@ module tfem
     procedure tfem_solid_get_contact_nodal_pressures_i_r2
   end interface tfem_solid_get_contact_nodal_pressures
 
+  !> Fortran: tfem_solid_contact_create (documented in module tfem_c). `options` is OPTIONAL: omit
+  !! it to pass NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_solid_contact_create
+    procedure tfem_solid_contact_create_opt
+  end interface tfem_solid_contact_create
+
+  !> Fortran: tfem_solid_contact_last_error (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `buffer` may also be a character string.
+  interface tfem_solid_contact_last_error
+    procedure tfem_solid_contact_last_error
+    procedure tfem_solid_contact_last_error_i
+    procedure tfem_solid_contact_last_error_str
+    procedure tfem_solid_contact_last_error_str_i
+  end interface tfem_solid_contact_last_error
+
+  !> Fortran: tfem_solid_contact_last_error_length (documented in module tfem_c). `context` may be
+  !! omitted (NULL is passed).
+  interface tfem_solid_contact_last_error_length
+    procedure tfem_solid_contact_last_error_length
+    procedure tfem_solid_contact_last_error_length_no_context
+  end interface tfem_solid_contact_last_error_length
+
+  !> Fortran: tfem_solid_contact_add_side (documented in module tfem_c). `side` is OPTIONAL: omit it
+  !! to pass NULL. `nodes`, `xyz`, `equations` and `triangles` may each have rank 1 or 2. The name
+  !! is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_solid_contact_add_side
+    procedure tfem_solid_contact_add_side_opt
+    procedure tfem_solid_contact_add_side_opt_r2111
+    procedure tfem_solid_contact_add_side_opt_r1211
+    procedure tfem_solid_contact_add_side_opt_r2211
+    procedure tfem_solid_contact_add_side_opt_r1121
+    procedure tfem_solid_contact_add_side_opt_r2121
+    procedure tfem_solid_contact_add_side_opt_r1221
+    procedure tfem_solid_contact_add_side_opt_r2221
+    procedure tfem_solid_contact_add_side_opt_r1112
+    procedure tfem_solid_contact_add_side_opt_r2112
+    procedure tfem_solid_contact_add_side_opt_r1212
+    procedure tfem_solid_contact_add_side_opt_r2212
+    procedure tfem_solid_contact_add_side_opt_r1122
+    procedure tfem_solid_contact_add_side_opt_r2122
+    procedure tfem_solid_contact_add_side_opt_r1222
+    procedure tfem_solid_contact_add_side_opt_r2222
+  end interface tfem_solid_contact_add_side
+
+  !> Fortran: tfem_solid_contact_add_pair (documented in module tfem_c). `pair` is OPTIONAL: omit it
+  !! to pass NULL. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_solid_contact_add_pair
+    procedure tfem_solid_contact_add_pair_opt
+  end interface tfem_solid_contact_add_pair
+
+  !> Fortran: tfem_solid_contact_sizes (documented in module tfem_c). `n_nodes`, `n_tetrahedra` and
+  !! `n_entries` are OPTIONAL: omit them to pass NULL. The name is no bind(C) procedure here (for
+  !! c_funloc: module tfem_c).
+  interface tfem_solid_contact_sizes
+    procedure tfem_solid_contact_sizes_opt
+  end interface tfem_solid_contact_sizes
+
+  !> Fortran: tfem_solid_contact_nodes (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_solid_contact_nodes
+    procedure tfem_solid_contact_nodes
+    procedure tfem_solid_contact_nodes_r2
+    procedure tfem_solid_contact_nodes_i
+    procedure tfem_solid_contact_nodes_i_r2
+  end interface tfem_solid_contact_nodes
+
+  !> Fortran: tfem_solid_contact_tetrahedra (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_solid_contact_tetrahedra
+    procedure tfem_solid_contact_tetrahedra
+    procedure tfem_solid_contact_tetrahedra_r2
+    procedure tfem_solid_contact_tetrahedra_i
+    procedure tfem_solid_contact_tetrahedra_i_r2
+  end interface tfem_solid_contact_tetrahedra
+
+  !> Fortran: tfem_solid_contact_pattern (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `rows` and `cols` may each have rank 1 or 2.
+  interface tfem_solid_contact_pattern
+    procedure tfem_solid_contact_pattern
+    procedure tfem_solid_contact_pattern_r21
+    procedure tfem_solid_contact_pattern_r12
+    procedure tfem_solid_contact_pattern_r22
+    procedure tfem_solid_contact_pattern_i
+    procedure tfem_solid_contact_pattern_i_r21
+    procedure tfem_solid_contact_pattern_i_r12
+    procedure tfem_solid_contact_pattern_i_r22
+  end interface tfem_solid_contact_pattern
+
+  !> Fortran: tfem_solid_contact_element_equations (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_solid_contact_element_equations
+    procedure tfem_solid_contact_element_equations
+    procedure tfem_solid_contact_element_equations_r2
+    procedure tfem_solid_contact_element_equations_i
+    procedure tfem_solid_contact_element_equations_i_r2
+  end interface tfem_solid_contact_element_equations
+
+  !> Fortran: tfem_solid_contact_element_blocks (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_solid_contact_element_blocks
+    procedure tfem_solid_contact_element_blocks
+    procedure tfem_solid_contact_element_blocks_r2
+    procedure tfem_solid_contact_element_blocks_i
+    procedure tfem_solid_contact_element_blocks_i_r2
+  end interface tfem_solid_contact_element_blocks
+
+  !> Fortran: tfem_solid_contact_evaluate (documented in module tfem_c). `values` and `residual` are
+  !! OPTIONAL: omit them to pass NULL. `u_length`, `values_length` and `residual_length` take
+  !! integer(c_size_t) or default integers (kind tfem_length_kind), all of one kind; a negative
+  !! length is passed as 0. `u`, `values` and `residual` may each have rank 1 or 2. The name is no
+  !! bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_solid_contact_evaluate
+    procedure tfem_solid_contact_evaluate_opt
+    procedure tfem_solid_contact_evaluate_opt_r211
+    procedure tfem_solid_contact_evaluate_opt_r121
+    procedure tfem_solid_contact_evaluate_opt_r221
+    procedure tfem_solid_contact_evaluate_opt_r112
+    procedure tfem_solid_contact_evaluate_opt_r212
+    procedure tfem_solid_contact_evaluate_opt_r122
+    procedure tfem_solid_contact_evaluate_opt_r222
+    procedure tfem_solid_contact_evaluate_opt_i
+    procedure tfem_solid_contact_evaluate_opt_i_r211
+    procedure tfem_solid_contact_evaluate_opt_i_r121
+    procedure tfem_solid_contact_evaluate_opt_i_r221
+    procedure tfem_solid_contact_evaluate_opt_i_r112
+    procedure tfem_solid_contact_evaluate_opt_i_r212
+    procedure tfem_solid_contact_evaluate_opt_i_r122
+    procedure tfem_solid_contact_evaluate_opt_i_r222
+  end interface tfem_solid_contact_evaluate
+
+  !> Fortran: tfem_solid_contact_gather (documented in module tfem_c). `n_equations` and `u_length`
+  !! take integer(c_size_t) or default integers (kind tfem_length_kind), all of one kind; a negative
+  !! length is passed as 0. `u_equations` and `u` may each have rank 1 or 2.
+  interface tfem_solid_contact_gather
+    procedure tfem_solid_contact_gather
+    procedure tfem_solid_contact_gather_r21
+    procedure tfem_solid_contact_gather_r12
+    procedure tfem_solid_contact_gather_r22
+    procedure tfem_solid_contact_gather_i
+    procedure tfem_solid_contact_gather_i_r21
+    procedure tfem_solid_contact_gather_i_r12
+    procedure tfem_solid_contact_gather_i_r22
+  end interface tfem_solid_contact_gather
+
+  !> Fortran: tfem_solid_contact_scatter_add (documented in module tfem_c). `residual_length` and
+  !! `n_equations` take integer(c_size_t) or default integers (kind tfem_length_kind), all of one
+  !! kind; a negative length is passed as 0. `residual` and `host_vector` may each have rank 1 or 2.
+  interface tfem_solid_contact_scatter_add
+    procedure tfem_solid_contact_scatter_add
+    procedure tfem_solid_contact_scatter_add_r21
+    procedure tfem_solid_contact_scatter_add_r12
+    procedure tfem_solid_contact_scatter_add_r22
+    procedure tfem_solid_contact_scatter_add_i
+    procedure tfem_solid_contact_scatter_add_i_r21
+    procedure tfem_solid_contact_scatter_add_i_r12
+    procedure tfem_solid_contact_scatter_add_i_r22
+  end interface tfem_solid_contact_scatter_add
+
+  !> Fortran: tfem_solid_contact_update (documented in module tfem_c). `changed`, `switched_on` and
+  !! `switched_off` are OPTIONAL: omit them to pass NULL. `u_length` takes an integer(c_size_t) or a
+  !! default integer (kind tfem_length_kind); a negative length is passed as 0. `u` may have rank 1
+  !! or 2. The name is no bind(C) procedure here (for c_funloc: module tfem_c).
+  interface tfem_solid_contact_update
+    procedure tfem_solid_contact_update_opt
+    procedure tfem_solid_contact_update_opt_r2
+    procedure tfem_solid_contact_update_opt_i
+    procedure tfem_solid_contact_update_opt_i_r2
+  end interface tfem_solid_contact_update
+
+  !> Fortran: tfem_solid_contact_get_active (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `out` may have rank 1 or 2.
+  interface tfem_solid_contact_get_active
+    procedure tfem_solid_contact_get_active
+    procedure tfem_solid_contact_get_active_r2
+    procedure tfem_solid_contact_get_active_i
+    procedure tfem_solid_contact_get_active_i_r2
+  end interface tfem_solid_contact_get_active
+
+  !> Fortran: tfem_solid_contact_set_active (documented in module tfem_c). `length` takes an
+  !! integer(c_size_t) or a default integer (kind tfem_length_kind); a negative length is passed as
+  !! 0. `active` may have rank 1 or 2.
+  interface tfem_solid_contact_set_active
+    procedure tfem_solid_contact_set_active
+    procedure tfem_solid_contact_set_active_r2
+    procedure tfem_solid_contact_set_active_i
+    procedure tfem_solid_contact_set_active_i_r2
+  end interface tfem_solid_contact_set_active
+
+  !> Fortran: tfem_solid_contact_gaps (documented in module tfem_c). `u_length` and `length` take
+  !! integer(c_size_t) or default integers (kind tfem_length_kind), all of one kind; a negative
+  !! length is passed as 0. `u` and `out` may each have rank 1 or 2.
+  interface tfem_solid_contact_gaps
+    procedure tfem_solid_contact_gaps
+    procedure tfem_solid_contact_gaps_r21
+    procedure tfem_solid_contact_gaps_r12
+    procedure tfem_solid_contact_gaps_r22
+    procedure tfem_solid_contact_gaps_i
+    procedure tfem_solid_contact_gaps_i_r21
+    procedure tfem_solid_contact_gaps_i_r12
+    procedure tfem_solid_contact_gaps_i_r22
+  end interface tfem_solid_contact_gaps
+
 contains
 
   pure function c_strlen(buf) result(n)
@@ -8460,6 +10433,28 @@ contains
       msg(i:i) = buf(i)
     end do
   end function tfem_solid_error_message
+
+  !> The message of the last failed call on the 3D contact context (from
+  !! tfem_solid_contact_create), as a Fortran string: a context keeps its own messages,
+  !! which tfem_error_message and tfem_contact_error_message do not see. The buffer is
+  !! sized by tfem_solid_contact_last_error_length, so that a message of any length comes
+  !! whole.
+  function tfem_solid_contact_error_message(context) result(msg)
+    type(c_ptr), intent(in) :: context
+    character(len=:), allocatable :: msg
+    character(kind=c_char), allocatable :: buf(:)
+    integer(c_int) :: status
+    integer :: i, n
+    allocate(buf(tfem_solid_contact_last_error_length(context)))
+    buf(1) = c_null_char
+    status = tfem_solid_contact_last_error(context, buf, size(buf, kind=c_size_t))
+    n = c_strlen(buf)
+    if (status == TFEM_STATUS_NULL_POINTER) n = 0
+    allocate(character(len=n) :: msg)
+    do i = 1, n
+      msg(i:i) = buf(i)
+    end do
+  end function tfem_solid_contact_error_message
 
   !> Warning number index (0-based) of the 3D model, as a Fortran string. The buffer is
   !! sized by tfem_solid_get_warning_size, so that a warning of any length comes whole.

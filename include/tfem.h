@@ -11,7 +11,9 @@
  *   A tfem_solid_model holds a problem in space (tetrahedra, tagged
  *   boundary faces, frictionless contact between tagged surfaces): its
  *   functions, tfem_solid_*, follow the same phases and conventions, and
- *   one is used by one thread at a time like a tfem_model.
+ *   one is used by one thread at a time like a tfem_model. A
+ *   tfem_solid_contact is the contact context of a 3D host code, the
+ *   tfem_contact of tetrahedral meshes (tfem_solid_contact_*).
  * - Phases of a model: describe it (mesh, materials, loads and
  *   constraints, contact pairs), solve it (tfem_solve, tfem_solve_contact,
  *   or a load history of tfem_step), read the results (computed when
@@ -19,7 +21,8 @@
  * - The entry points below stand in groups, in that order, each under a
  *   head: lifecycle, mesh, materials, loads and constraints, contact pairs,
  *   solve, results, contact results, load history, utilities, the host
- *   codes' contact context, and the 3D model.
+ *   codes' contact context, the 3D model, and the 3D host codes' contact
+ *   context.
  *
  * Conventions
  * - Every function returns a tfem_status; TFEM_STATUS_OK (0) is success.
@@ -34,13 +37,15 @@
  * - A call that returns an error writes none of its outputs: every buffer,
  *   and every value or struct given back through a pointer (a size, count
  *   or index, a tfem_solve_info, a tfem_contact_report, the host vector of
- *   tfem_contact_scatter_add), keeps the bytes it held, whatever the error
- *   (a handle or argument refused, a wrong state, one of several buffers
- *   too short or NULL, a solve that fails). The only exceptions are the
- *   message copies: tfem_last_error, tfem_contact_last_error and
- *   tfem_get_warning write the message cut to the buffer (NUL-terminated)
- *   with TFEM_STATUS_BUFFER_TOO_SMALL, and tfem_last_error and
- *   tfem_contact_last_error write the message refusing a handle that is
+ *   tfem_contact_scatter_add and tfem_solid_contact_scatter_add), keeps the
+ *   bytes it held, whatever the error (a handle or argument refused, a
+ *   wrong state, one of several buffers too short or NULL, a solve that
+ *   fails). The only exceptions are the message copies: tfem_last_error,
+ *   tfem_contact_last_error and tfem_get_warning (and the 3D handles'
+ *   tfem_solid_last_error, tfem_solid_get_warning and
+ *   tfem_solid_contact_last_error) write the message cut to the buffer
+ *   (NUL-terminated) with TFEM_STATUS_BUFFER_TOO_SMALL, and the
+ *   *_last_error functions write the message refusing a handle that is
  *   not live with TFEM_STATUS_INVALID_ARGUMENT.
  * - A failed call leaves the model as it was, its results included. Any
  *   change to the problem (mesh, boundary edges, materials, constraints,
@@ -61,8 +66,8 @@
  * - Handles are checked before use: a destroyed model or context, or a
  *   handle of the other kind (a Fortran type(c_ptr) does not tell them
  *   apart), is refused with TFEM_STATUS_INVALID_ARGUMENT (its message in
- *   the thread's slot, or in the buffer of tfem_last_error and
- *   tfem_contact_last_error), and destroying it is a no-op. (A destroyed
+ *   the thread's slot, or in the buffer of the *_last_error functions),
+ *   and destroying it is a no-op. (A destroyed
  *   handle whose address a new handle has taken reaches the new one.)
  *
  * Thread contract
@@ -364,6 +369,12 @@ typedef struct tfem_contact tfem_contact;
  * `tfem_destroy`.
  */
 typedef struct tfem_model tfem_model;
+
+/**
+ * Opaque handle to a 3D contact context for a host code. Create with
+ * `tfem_solid_contact_create`, free with `tfem_solid_contact_destroy`.
+ */
+typedef struct tfem_solid_contact tfem_solid_contact;
 
 /**
  * Opaque handle to a 3D model. Create with `tfem_solid_create`, free with
@@ -2401,6 +2412,331 @@ enum tfem_status tfem_solid_get_contact_pair_area(struct tfem_solid_model *model
  * feature. The model is never changed.
  */
 enum tfem_status tfem_solid_write_vtu(struct tfem_solid_model *model, const char *path);
+
+/****************************************************************************
+ * Contact for 3D host codes (tfem_solid_contact_*): the contact context of
+ * tfem_contact_* for a code with its own tetrahedral elements and solver, a
+ * handle of its own, tfem_solid_contact. The host gives each side's nodes,
+ * coordinates, equations (x, y, z) and triangles, counter-clockwise seen
+ * from outside its body; it gets back B's stiffness and forces in its
+ * equations, in a pattern fixed once, the verdict of the active-set loop,
+ * and the state per tetrahedron of B. Side, pair and tetrahedron numbers are
+ * in the context's index base.
+ ***************************************************************************/
+
+/**
+ * Creates a 3D contact context for a host code that keeps its own
+ * elements, assembly, solver and Newton loop: node numbers, equation
+ * numbers, and side, pair and contact-tetrahedron numbers in
+ * `index_base` (0 for C, 1 for Fortran). `options` may be NULL (the
+ * defaults of `tfem_contact_options_default`); they are fixed here, as B
+ * is built from them once: `contact_modulus` (0: the smaller Young's
+ * modulus of a pair's two sides), `lambda` (0: the larger side of the
+ * interface nodes' bounding box) and `max_iterations` (the number of
+ * `tfem_solid_contact_update` calls of one loop before it counts as not
+ * converged) are read, `refactorize` is ignored; 3D contact is
+ * frictionless with its own inversion test, so `law` and
+ * `inversion_test` must be 0. Returns NULL if `index_base` is not 0 or 1
+ * or an option is refused (message in `tfem_last_error(NULL, …)`), or
+ * memory is exhausted. The host then adds the sides
+ * (`tfem_solid_contact_add_side`) and pairs
+ * (`tfem_solid_contact_add_pair`); the first call that needs B builds it,
+ * after which sides and pairs are fixed. A 3D context is its own handle:
+ * the 2D `tfem_contact_*` functions refuse it, and these refuse a 2D
+ * context or a model.
+ */
+struct tfem_solid_contact *tfem_solid_contact_create(int index_base,
+                                                     const struct tfem_contact_options *options);
+
+/**
+ * Destroys a 3D contact context. NULL is a no-op, and so is a pointer
+ * that is not a live 3D context (destroyed already, or another kind of
+ * handle): do not use a handle after destroying it.
+ */
+void tfem_solid_contact_destroy(struct tfem_solid_contact *context);
+
+/**
+ * Copies the message of the last failed call on `context` (empty after a
+ * successful call) into `buffer` (`length` bytes including the final NUL),
+ * truncating like `tfem_last_error` (TFEM_STATUS_BUFFER_TOO_SMALL;
+ * `tfem_solid_contact_last_error_length` gives the size needed). A 3D
+ * context keeps its own messages. A `context` that is not a live 3D
+ * contact context gives TFEM_STATUS_INVALID_ARGUMENT with the message
+ * saying so in `buffer`.
+ */
+enum tfem_status tfem_solid_contact_last_error(const struct tfem_solid_contact *context,
+                                               char *buffer,
+                                               size_t length);
+
+/**
+ * Size in bytes (including the final NUL) of the message
+ * `tfem_solid_contact_last_error` would give for `context`, so that a
+ * buffer of this size holds all of it: 1 after a successful call; for a
+ * handle that is not a live 3D contact context (destroyed, or another
+ * kind), the size of the message saying so. `context` may be NULL: 1 (it
+ * has no message).
+ */
+size_t tfem_solid_contact_last_error_length(const struct tfem_solid_contact *context);
+
+/**
+ * Adds one side of a contact interface, of body `body` (Young's modulus
+ * `young`, finite and > 0: the softer side's is the default E_c):
+ * `n_nodes` interface nodes `nodes` (the host's node numbers) with their
+ * coordinates `xyz` (3 per node) and the equations of their x, y and z
+ * unknowns `equations` (3 per node, in the index base; a value below the
+ * base marks a fixed DOF without an equation), and `n_triangles`
+ * triangles `triangles` (3 host node numbers each) numbered
+ * counter-clockwise seen from outside the body, so that the two sides of
+ * a pair face each other. A node of two sides must come with the same
+ * coordinates and equations. Refused with TFEM_STATUS_INVALID_ARGUMENT,
+ * naming the side (by its number in the index base and its tag), the node
+ * or the triangle: a node number below the index base, a coordinate that
+ * is not finite, an equation no host vector can hold (from index_base +
+ * PTRDIFF_MAX / 8 on), a triangle over a node the side does not give, a
+ * side without triangles; TFEM_STATUS_INVALID_STATE once B is built. The
+ * host's system size is not known here: `tfem_solid_contact_gather` and
+ * `tfem_solid_contact_scatter_add` check every equation against the
+ * vector they are given. Writes the side's number (in the index base) to
+ * `side` (may be NULL). On error nothing changes.
+ */
+enum tfem_status tfem_solid_contact_add_side(struct tfem_solid_contact *context,
+                                             int tag,
+                                             int body,
+                                             double young,
+                                             int n_nodes,
+                                             const int *nodes,
+                                             const double *xyz,
+                                             const int64_t *equations,
+                                             int n_triangles,
+                                             const int *triangles,
+                                             int *side);
+
+/**
+ * Declares sides `side_a` and `side_b` (their numbers in the index base,
+ * of two different bodies) a contact pair: side a must be planar (its
+ * outward normal opens the gap) and side b face it node to node; B, a
+ * layer of flat tetrahedra over the prisms between the facing triangles,
+ * is built from them (docs/method.md §9). A side that does not exist, or
+ * two sides of one body, are refused with TFEM_STATUS_INVALID_ARGUMENT
+ * naming them; sides that do not fit (side a not planar, sides not facing
+ * each other or not matching) are refused by the call that builds B,
+ * naming the pair and its sides. Writes the pair's number (in the index
+ * base) to `pair` (may be NULL).
+ */
+enum tfem_status tfem_solid_contact_add_pair(struct tfem_solid_contact *context,
+                                             int side_a,
+                                             int side_b,
+                                             int *pair);
+
+/**
+ * Builds B of every pair and the pattern now, so that a host learns of
+ * sides that do not fit where it declares them rather than at its first
+ * evaluation (every call that needs B builds it otherwise). Sides and
+ * pairs are fixed from then on; the active set starts from the
+ * tetrahedra touching or overlapping at rest. Without a pair,
+ * TFEM_STATUS_INVALID_STATE. Calling it again does nothing.
+ */
+enum tfem_status tfem_solid_contact_setup(struct tfem_solid_contact *context);
+
+/**
+ * Builds B (if not yet) and writes the sizes: interface nodes (3 values
+ * per node in every per-node array: displacements and residuals),
+ * tetrahedra of B (the length of the per-tetrahedron arrays), and entries
+ * of the pattern. Any pointer may be NULL.
+ */
+enum tfem_status tfem_solid_contact_sizes(struct tfem_solid_contact *context,
+                                          int *n_nodes,
+                                          int *n_tetrahedra,
+                                          int64_t *n_entries);
+
+/**
+ * Copies the interface nodes (host numbers, n_nodes values), in the
+ * order of every per-node array: the order in which the sides first gave
+ * them.
+ */
+enum tfem_status tfem_solid_contact_nodes(struct tfem_solid_contact *context,
+                                          int *out,
+                                          size_t length);
+
+/**
+ * Copies the nodes of every tetrahedron of B (4 host node numbers each,
+ * numbered so that J grows as the gap opens), pair by pair: with the
+ * per-tetrahedron arrays (active flags, gaps), where the contact is.
+ */
+enum tfem_status tfem_solid_contact_tetrahedra(struct tfem_solid_contact *context,
+                                               int *out,
+                                               size_t length);
+
+/**
+ * Copies the fixed pattern of the contact contributions into `rows`
+ * (n_entries values) and `cols` (n_entries values), in the host's
+ * equation numbering and index base: tetrahedron after tetrahedron of B,
+ * each one's 12×12 block row by row over its DOFs (x, y, z of its first
+ * node, then of its second …), the DOFs without an equation left out;
+ * both triangles of each block. Entries repeat where tetrahedra share a
+ * DOF pair: the host sums them. B's topology never changes, so a host
+ * sets up its sparse matrix once.
+ */
+enum tfem_status tfem_solid_contact_pattern(struct tfem_solid_contact *context,
+                                            int64_t *rows,
+                                            int64_t *cols,
+                                            size_t length);
+
+/**
+ * Copies the equations of every tetrahedron's twelve DOFs (12 per
+ * tetrahedron, x, y, z of each node, in the index base; index_base − 1
+ * marks a DOF without an equation): with
+ * `tfem_solid_contact_element_blocks`, the contributions as unassembled
+ * element blocks, for a host that assembles elements rather than a
+ * pattern.
+ */
+enum tfem_status tfem_solid_contact_element_equations(struct tfem_solid_contact *context,
+                                                      int64_t *out,
+                                                      size_t length);
+
+/**
+ * Copies every tetrahedron's 12×12 tangent block (144 values per
+ * tetrahedron, row-major over its DOFs as in
+ * `tfem_solid_contact_element_equations`): its stiffness when active,
+ * zeros when not.
+ */
+enum tfem_status tfem_solid_contact_element_blocks(struct tfem_solid_contact *context,
+                                                   double *out,
+                                                   size_t length);
+
+/**
+ * The contact contributions at the displacements `u` of the interface
+ * nodes (3 per node, `u_length` = 3·n_nodes): the tangent's values in the
+ * pattern's order into `values` (n_entries values, zeros for inactive
+ * tetrahedra), and the contact residual Σ (K_e u_e − f0_e) of the active
+ * tetrahedra, 3 per interface node, into `residual`. `values` may be
+ * NULL; `residual` may be NULL. A linear host adds the values to its
+ * matrix and minus the residual at u₀ to its right-hand side, u₀ zero at
+ * DOFs with an equation and the prescribed value at those without (a
+ * rigid tool pressed by δ: `tfem_solid_contact_gather` reads such DOFs
+ * as 0, so set them in `u` itself, here and for
+ * `tfem_solid_contact_update`); that is the load of the initial gaps and
+ * of the prescribed values. A Newton host adds the values to its tangent and
+ * the residual at its current u to its residual. The law is linear in u
+ * for a given active set: the values depend on the active set only, and
+ * change only when `tfem_solid_contact_update` or
+ * `tfem_solid_contact_set_active` changes it. A non-finite value in `u`
+ * is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node); a residual
+ * that overflows is TFEM_STATUS_NUMERICAL_FAILURE naming the node;
+ * either way the buffers are unchanged.
+ */
+enum tfem_status tfem_solid_contact_evaluate(struct tfem_solid_contact *context,
+                                             const double *u,
+                                             size_t u_length,
+                                             double *values,
+                                             size_t values_length,
+                                             double *residual,
+                                             size_t residual_length);
+
+/**
+ * Copies into `u` (3 per interface node) the displacements of the
+ * interface nodes from the host's solution vector `u_equations`
+ * (`n_equations` values; entry i is equation i + index_base); a DOF
+ * without an equation counts as fixed at zero. An interface node's
+ * equation beyond `n_equations`, or a non-finite entry there, is refused
+ * (TFEM_STATUS_INVALID_ARGUMENT naming the node and the equation); `u` is
+ * then unchanged.
+ */
+enum tfem_status tfem_solid_contact_gather(struct tfem_solid_contact *context,
+                                           const double *u_equations,
+                                           size_t n_equations,
+                                           double *u,
+                                           size_t u_length);
+
+/**
+ * Adds per-node values `residual` (3 per interface node, as
+ * `tfem_solid_contact_evaluate` writes them) into the host's vector
+ * `host_vector` (`n_equations` values, entry i is equation i +
+ * index_base); DOFs without an equation are left out. A non-finite value
+ * in `residual` is refused (TFEM_STATUS_INVALID_ARGUMENT naming the
+ * node), and so is a sum that would not be finite: an entry of
+ * `host_vector` that is not finite already (TFEM_STATUS_INVALID_ARGUMENT),
+ * or an overflow (TFEM_STATUS_NUMERICAL_FAILURE), naming the node and the
+ * equation; an equation beyond `n_equations` is refused naming the node.
+ * `host_vector` is then unchanged.
+ */
+enum tfem_status tfem_solid_contact_scatter_add(struct tfem_solid_contact *context,
+                                                const double *residual,
+                                                size_t residual_length,
+                                                double *host_vector,
+                                                size_t n_equations);
+
+/**
+ * The inversion test at the displacements `u` (3 per interface node) of
+ * a solve with the current active set: the tetrahedra of B whose gap is
+ * not positive (pressed, or touching) are switched on, the others off.
+ * `changed` (may be NULL) is set to 1 if the set changed, 0 if it
+ * settled; `switched_on` (may be NULL) and `switched_off` (may be NULL)
+ * to the number of tetrahedra switched each way. The same test and cycle
+ * detection as tfem's own loop: a set visited before, or more calls than
+ * the options' `max_iterations` since the last
+ * `tfem_solid_contact_restart`, gives TFEM_STATUS_NOT_CONVERGED with the
+ * history, the set unchanged. Call it with converged displacements of
+ * the host's problem for the current set (after its Newton loop, not at
+ * every Newton iteration): the test judges the solution. A non-finite
+ * value in `u` is refused (TFEM_STATUS_INVALID_ARGUMENT naming the node).
+ */
+enum tfem_status tfem_solid_contact_update(struct tfem_solid_contact *context,
+                                           const double *u,
+                                           size_t u_length,
+                                           int *changed,
+                                           int *switched_on,
+                                           int *switched_off);
+
+/**
+ * Starts a new active-set loop from the current flags (a new load step):
+ * the history and the sets visited are forgotten, so that a set met in
+ * an earlier step is no cycle.
+ */
+enum tfem_status tfem_solid_contact_restart(struct tfem_solid_contact *context);
+
+/**
+ * Copies the active flag (1 active, 0 not) of every tetrahedron of B
+ * (n_tetrahedra values): the state a host saves to restore with
+ * `tfem_solid_contact_set_active`.
+ */
+enum tfem_status tfem_solid_contact_get_active(struct tfem_solid_contact *context,
+                                               int *out,
+                                               size_t length);
+
+/**
+ * Sets the active flags of the tetrahedra of B (n_tetrahedra values, 0
+ * or 1): a warm start or a restored state; starts a new loop. A value
+ * other than 0 or 1, or another count, is refused
+ * (TFEM_STATUS_INVALID_ARGUMENT), the flags unchanged.
+ */
+enum tfem_status tfem_solid_contact_set_active(struct tfem_solid_contact *context,
+                                               const int *active,
+                                               size_t length);
+
+/**
+ * Copies the opening of every tetrahedron of B (n_tetrahedra values,
+ * model length units) at the displacements `u` (3 per interface node):
+ * its linearised gap over its facing area, the distance across the
+ * interface (negative: an overlap). Per tetrahedron rather than per node
+ * as in 2D: in space a node's tetrahedra may face different triangles. A
+ * non-finite value in `u` is refused (TFEM_STATUS_INVALID_ARGUMENT naming
+ * the node), a gap that overflows is TFEM_STATUS_NUMERICAL_FAILURE naming
+ * the tetrahedron; `out` is then unchanged.
+ */
+enum tfem_status tfem_solid_contact_gaps(struct tfem_solid_contact *context,
+                                         const double *u,
+                                         size_t u_length,
+                                         double *out,
+                                         size_t length);
+
+/**
+ * Writes the area in contact of the current active set to `area` (model
+ * length units squared): each active tetrahedron of B stands for a third
+ * of its prism's facing triangle, so that a closed interface reads its
+ * whole area. A sum that overflows is TFEM_STATUS_NUMERICAL_FAILURE.
+ */
+enum tfem_status tfem_solid_contact_area(struct tfem_solid_contact *context, double *area);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -81,6 +81,21 @@ fn the_3d_model_passes_the_contact_patch_test_through_the_c_abi() {
     assert!(out.contains(" 0 failed"), "{out}");
 }
 
+/// The 3D contact context for host codes (`tfem_solid_contact_*`): a C
+/// host with its own tetrahedra, stiffness, dense Cholesky solver and
+/// active-set loop presses two stacked cubes into frictionless contact
+/// through tfem's B in its 1-based (and 0-based) equations, exact (uniform
+/// σ_zz = −p from the host's own solution, every tetrahedron of B active,
+/// contact area 1), and every refusal (NULL, a wrong length, a node not in
+/// its side, a side out of range, a NaN, a handle of another kind or
+/// destroyed) with its status and message, writing nothing.
+#[test]
+fn a_3d_host_passes_the_contact_patch_test_through_the_c_abi() {
+    let exe = build("solid_host_test.c", &["-std=c11"]);
+    let out = run(&exe, &[]);
+    assert!(out.contains(" 0 failed"), "{out}");
+}
+
 #[test]
 fn c_boundary_regressions_hold() {
     let exe = build("boundary_test.c", &["-std=c11"]);

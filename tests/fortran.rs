@@ -276,10 +276,11 @@ const ANY_POINTER_MAY_BE_NULL: [&str; 3] = [
 ];
 
 /// The opaque handles of the C ABI, passed as `type(c_ptr), value`.
-const HANDLES: [&str; 3] = [
+const HANDLES: [&str; 4] = [
     "struct tfem_model",
     "struct tfem_contact",
     "struct tfem_solid_model",
+    "struct tfem_solid_contact",
 ];
 
 fn is_handle(ty: &str) -> bool {
@@ -442,12 +443,14 @@ In Fortran (`use tfem`), where it differs from the C conventions above
   Fortran string (model omitted: the calling thread's model-free calls);
   tfem_contact_error_message(context) that of a contact context;
   tfem_solid_error_message(model) that of a 3D model (from tfem_solid_create);
+  tfem_solid_contact_error_message(context) that of a 3D contact context;
   tfem_warning_message(model, index), tfem_solid_warning_message(model, index) and
   tfem_version_string() return strings too.
 - Indices: pass index_base = 1 to tfem_set_mesh (or tfem_load_gmsh; for a 3D model
-  tfem_solid_set_mesh or tfem_solid_load_gmsh) and every node, triangle, tetrahedron, edge and
-  face number of later calls and messages is 1-based, like Fortran arrays. Numbers that a
-  function documents as 0-based stay 0-based.
+  tfem_solid_set_mesh or tfem_solid_load_gmsh; for a contact context tfem_contact_create or
+  tfem_solid_contact_create) and every node, triangle, tetrahedron, edge and face number of
+  later calls and messages is 1-based, like Fortran arrays. Numbers that a function documents
+  as 0-based stay 0-based.
 - NULL: a pointer argument that the C documentation says may be NULL is OPTIONAL: omit it (by
   keyword, or at the end of the list) and the library receives NULL. A nullable model handle
   is passed by value: its generic has a specific without it instead (tfem_last_error(buffer,
@@ -843,7 +846,8 @@ fn result_of(p: &Proto) -> (&'static str, &'static str, &'static str) {
         "const char *"
         | "struct tfem_model *"
         | "struct tfem_contact *"
-        | "struct tfem_solid_model *" => ("function", " result(res)", "type(c_ptr) :: res"),
+        | "struct tfem_solid_model *"
+        | "struct tfem_solid_contact *" => ("function", " result(res)", "type(c_ptr) :: res"),
         t => panic!("no Fortran mapping for return type {t}"),
     }
 }
@@ -1351,6 +1355,27 @@ fn module_tfem(
          \x20     msg(i:i) = buf(i)\n\
          \x20   end do\n\
          \x20 end function tfem_solid_error_message\n\n\
+         \x20 !> The message of the last failed call on the 3D contact context (from\n\
+         \x20 !! tfem_solid_contact_create), as a Fortran string: a context keeps its own messages,\n\
+         \x20 !! which tfem_error_message and tfem_contact_error_message do not see. The buffer is\n\
+         \x20 !! sized by tfem_solid_contact_last_error_length, so that a message of any length comes\n\
+         \x20 !! whole.\n\
+         \x20 function tfem_solid_contact_error_message(context) result(msg)\n\
+         \x20   type(c_ptr), intent(in) :: context\n\
+         \x20   character(len=:), allocatable :: msg\n\
+         \x20   character(kind=c_char), allocatable :: buf(:)\n\
+         \x20   integer(c_int) :: status\n\
+         \x20   integer :: i, n\n\
+         \x20   allocate(buf(tfem_solid_contact_last_error_length(context)))\n\
+         \x20   buf(1) = c_null_char\n\
+         \x20   status = tfem_solid_contact_last_error(context, buf, size(buf, kind=c_size_t))\n\
+         \x20   n = c_strlen(buf)\n\
+         \x20   if (status == TFEM_STATUS_NULL_POINTER) n = 0\n\
+         \x20   allocate(character(len=n) :: msg)\n\
+         \x20   do i = 1, n\n\
+         \x20     msg(i:i) = buf(i)\n\
+         \x20   end do\n\
+         \x20 end function tfem_solid_contact_error_message\n\n\
          \x20 !> Warning number index (0-based) of the 3D model, as a Fortran string. The buffer is\n\
          \x20 !! sized by tfem_solid_get_warning_size, so that a warning of any length comes whole.\n\
          \x20 function tfem_solid_warning_message(model, index) result(msg)\n\
@@ -1574,9 +1599,10 @@ fn every_header_function_has_a_matching_fortran_interface() {
                 "uint8_t" => decl.contains("c_int8_t"),
                 "size_t" => decl.contains("c_size_t"),
                 "char" => decl.contains("c_char"),
-                "struct tfem_model" | "struct tfem_contact" | "struct tfem_solid_model" => {
-                    decl.contains("c_ptr")
-                }
+                "struct tfem_model"
+                | "struct tfem_contact"
+                | "struct tfem_solid_model"
+                | "struct tfem_solid_contact" => decl.contains("c_ptr"),
                 s => decl.contains(s.trim_start_matches("struct ")),
             };
             assert!(kind_ok, "{}: {n} declared `{decl}` for C type {ty}", p.name);
@@ -2555,6 +2581,22 @@ fn fortran_solid_client_passes_the_3d_contact_patch_test() {
     let exe = build_fortran(
         &[&root().join("c_tests/fortran_solid_f2008_test.f90")],
         "fortran_solid_f2008_test",
+    );
+    let out = run(&exe, &[]);
+    assert!(out.contains(" 0 failed"), "{out}");
+}
+
+/// The 3D contact context for host codes (`tfem_solid_contact_*`) from a
+/// client built with -std=f2008, index_base = 1 and rank-2 arrays: a host
+/// with its own tetrahedra, stiffness and dense solver presses two stacked
+/// cubes into frictionless contact through its own active-set loop, against
+/// the exact uniaxial stress and contact area, and the refusals named in
+/// 1-based numbers.
+#[test]
+fn fortran_solid_host_passes_the_3d_contact_patch_test() {
+    let exe = build_fortran(
+        &[&root().join("c_tests/fortran_solid_host_f2008_test.f90")],
+        "fortran_solid_host_f2008_test",
     );
     let out = run(&exe, &[]);
     assert!(out.contains(" 0 failed"), "{out}");

@@ -17,10 +17,10 @@ fn generate() -> String {
 }
 
 /// The header's groups, in the order the entry points stand in the sources
-/// (`src/ffi/entry.rs`, then `src/ffi/host.rs`, then `src/ffi/solid.rs`):
-/// the first entry point of each and the head put before it. cbindgen
-/// carries the items' own documentation only, so the heads are put in
-/// here.
+/// (`src/ffi/entry.rs`, then `src/ffi/host.rs`, `src/ffi/solid.rs` and
+/// `src/ffi/solid_contact.rs`): the first entry point of each and the head
+/// put before it. cbindgen carries the items' own documentation only, so
+/// the heads are put in here.
 const SECTIONS: &[(&str, &str)] = &[
     (
         "tfem_version",
@@ -102,6 +102,18 @@ const SECTIONS: &[(&str, &str)] = &[
          surfaces (a planar side facing a matching one, docs/method.md §9), \
          a solve, and its results per node, per tetrahedron and per \
          tetrahedron of the contact layer B.",
+    ),
+    (
+        "tfem_solid_contact_create",
+        "Contact for 3D host codes (tfem_solid_contact_*): the contact \
+         context of tfem_contact_* for a code with its own tetrahedral \
+         elements and solver, a handle of its own, tfem_solid_contact. The \
+         host gives each side's nodes, coordinates, equations (x, y, z) and \
+         triangles, counter-clockwise seen from outside its body; it gets \
+         back B's stiffness and forces in its equations, in a pattern fixed \
+         once, the verdict of the active-set loop, and the state per \
+         tetrahedron of B. Side, pair and tetrahedron numbers are in the \
+         context's index base.",
     ),
 ];
 

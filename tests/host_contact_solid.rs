@@ -346,3 +346,118 @@ fn sides_that_do_not_face_each_other_are_refused() {
         err.message()
     );
 }
+
+#[test]
+fn a_rigid_tool_prescribed_at_the_interface_reaches_the_host_through_u() {
+    use tfem::fem::solid_mesh::Brick;
+    use tfem::model::solid::SolidMaterial;
+    let delta = 0.01;
+    let lower = Brick::uniform([0.0, 0.0, -1.0], [1.0, 1.0, 0.0], [2; 3], 1);
+    let mut tool = Brick::uniform([0.0; 3], [1.0, 1.0, 0.25], [2, 2, 1], 2);
+    tool.side_tags = [11, 12, 13, 14, 15, 16];
+    let mut model = SolidModel::new();
+    model.set_mesh(SolidMesh::bricks(&[lower, tool]).unwrap());
+    for body in [1, 2] {
+        model.set_material(body, SolidMaterial::new(1.0, 0.25).unwrap());
+    }
+    model.fix_faces(5, Axis::Z, 0.0).unwrap();
+    model.fix_faces(1, Axis::X, 0.0).unwrap();
+    model.fix_faces(3, Axis::Y, 0.0).unwrap();
+    let n = model.mesh().unwrap().nodes().len();
+    for v in 0..n {
+        if model.mesh().unwrap().node_body()[v] == Some(2) {
+            model.fix(v, Axis::X, 0.0).unwrap();
+            model.fix(v, Axis::Y, 0.0).unwrap();
+            model.fix(v, Axis::Z, -delta).unwrap();
+        }
+    }
+    model.add_contact_pair(6, 15).unwrap();
+    let options = ContactOptions {
+        lambda: Some(1.0),
+        ..ContactOptions::default()
+    };
+    model.solve_contact(&options).unwrap();
+    let mesh = model.mesh().unwrap();
+    let host = Host::new(&model);
+    let mut contact = SolidHostContact::new(1, options).unwrap();
+    let a = SideData::new(mesh, &host, 6, 1, 1.0);
+    let b = SideData::new(mesh, &host, 15, 2, 1.0);
+    let (a, b) = (
+        contact.add_side(&a.surface()).unwrap(),
+        contact.add_side(&b.surface()).unwrap(),
+    );
+    contact.add_pair(a, b).unwrap();
+    // The host's own matrix of the lower block (the tool is rigid).
+    let d = [0, 1].map(|_| isotropic_d(1.0, 0.25).unwrap());
+    let bodies = SolidBodies {
+        mesh,
+        d: &d,
+        tempering: Tempering::Auto,
+    };
+    let mut k = DMatrix::zeros(host.n, host.n);
+    for (e, t) in mesh.tets().iter().enumerate() {
+        let ke = bodies.matrix(e).unwrap();
+        for i in 0..12 {
+            for j in 0..12 {
+                let (p, q) = (
+                    host.equations[t[i / 3]][i % 3],
+                    host.equations[t[j / 3]][j % 3],
+                );
+                if p > 0 && q > 0 {
+                    k[(p as usize - 1, q as usize - 1)] += ke[12 * i + j];
+                }
+            }
+        }
+    }
+    // u₀: the tool's prescribed values at its interface nodes.
+    let nodes = contact.nodes().to_vec();
+    let prescribed = |id: i64| match mesh.node_body()[id as usize - 1] {
+        Some(2) => [0.0, 0.0, -delta],
+        _ => [0.0; 3],
+    };
+    let u0: Vec<f64> = nodes.iter().flat_map(|&id| prescribed(id)).collect();
+    let (rows, cols) = contact
+        .pattern()
+        .map(|(r, c)| (r.to_vec(), c.to_vec()))
+        .unwrap();
+    let mut u = DVector::zeros(host.n);
+    for _ in 0..20 {
+        let mut values = vec![0.0; rows.len()];
+        let mut r0 = vec![0.0; u0.len()];
+        contact
+            .evaluate(&u0, Some(&mut values), Some(&mut r0))
+            .unwrap();
+        let mut kt = k.clone();
+        for ((&i, &j), v) in rows.iter().zip(&cols).zip(&values) {
+            kt[(i as usize - 1, j as usize - 1)] += v;
+        }
+        let mut rhs = vec![0.0; host.n];
+        contact.scatter_add(&r0, &mut rhs).unwrap();
+        u = kt.cholesky().unwrap().solve(&(-DVector::from_vec(rhs)));
+        let mut local = vec![0.0; u0.len()];
+        contact.gather(u.as_slice(), &mut local).unwrap();
+        for (i, &id) in nodes.iter().enumerate() {
+            if mesh.node_body()[id as usize - 1] == Some(2) {
+                local[3 * i..3 * i + 3].copy_from_slice(&prescribed(id));
+            }
+        }
+        if !contact.update(&local).unwrap().changed {
+            break;
+        }
+    }
+    let expected = model.displacements().unwrap();
+    let mut largest = 0.0f64;
+    for (v, eq) in host.equations.iter().enumerate() {
+        for c in 0..3 {
+            if eq[c] > 0 {
+                let got = u[eq[c] as usize - 1];
+                largest = largest.max(got.abs());
+                assert!(
+                    (got - expected[v][c]).abs() < 1e-9 * delta,
+                    "node {v}: {got}"
+                );
+            }
+        }
+    }
+    assert!(largest > 0.1 * delta, "the tool pressed nothing: {largest}");
+}

@@ -15,6 +15,16 @@
 //! f0_e = −s J0 w the load of its initial gap J0. Between solves the host
 //! asks [`SolidHostContact::update`] which tetrahedra would invert (the
 //! same verdict and cycle detection as tfem's own loop).
+//!
+//! The displacements `u` every call takes are the interface nodes' whole
+//! values: a DOF without an equation that the host prescribes to a
+//! non-zero value (a rigid tool pressed by δ) must carry that value in
+//! `u` ([`SolidHostContact::gather`] reads such DOFs as 0). A linear host
+//! then adds minus the residual at u₀ (zero at free DOFs, the prescribed
+//! values elsewhere) to its right-hand side: the load of the initial gaps
+//! and of the prescribed values together. The default λ is the interface
+//! nodes' bounding box, as the plane's host API takes it (the model takes
+//! the whole mesh's); a host that wants the model's answer sets λ.
 
 use std::collections::HashMap;
 
@@ -130,6 +140,17 @@ impl SolidHostContact {
     /// numbers).
     pub fn nodes(&self) -> &[i64] {
         &self.node_id
+    }
+
+    /// The host equations (index base applied) of the x, y and z unknowns
+    /// of interface node `v` (an index into [`SolidHostContact::nodes`]),
+    /// `None` where the DOF has none: what a caller checks its own vectors
+    /// against before handing them over — the C ABI refuses a non-finite
+    /// entry of the host's vector as the caller's input, naming the node
+    /// and the equation, before [`SolidHostContact::scatter_add`] would
+    /// call it an overflow. Panics if `v` is not an interface node.
+    pub fn equations(&self, v: usize) -> [Option<i64>; 3] {
+        self.equation[v].map(|e| e.map(|e| (e + self.base) as i64))
     }
 
     /// Adds one side of a contact interface; returns its index (0-based).
@@ -544,7 +565,8 @@ impl SolidHostContact {
 
     /// The per-node displacements (3 per interface node) of the host's
     /// solution vector `u_eq` (indexed by equation, index base applied);
-    /// DOFs without an equation count as fixed at zero. An equation beyond
+    /// DOFs without an equation read 0 (a host prescribing them to other
+    /// values sets those itself: module documentation). An equation beyond
     /// `u_eq` or a non-finite value there is refused, naming the node;
     /// nothing is written then.
     pub fn gather(&self, u_eq: &[f64], u: &mut [f64]) -> Result<()> {

@@ -1,9 +1,11 @@
 //! The C ABI: a thin translation layer over [`crate::Model`],
-//! [`crate::contact::HostContact`] and the 3D
-//! [`crate::model::solid::SolidModel`], in five parts: the entry points of
-//! the model (`entry`), of the contact context for host codes (`host`) and
-//! of the 3D model (`solid`, `tfem_solid_*`), the plumbing every entry
-//! point shares
+//! [`crate::contact::HostContact`], the 3D
+//! [`crate::model::solid::SolidModel`] and the 3D contact for host codes
+//! [`crate::contact::host_solid::SolidHostContact`], in six parts: the
+//! entry points of the model (`entry`), of the contact context for host
+//! codes (`host`), of the 3D model (`solid`, `tfem_solid_*`) and of the 3D
+//! contact context (`solid_contact`, `tfem_solid_contact_*`), the plumbing
+//! every entry point shares
 //! (handles, panics, errors, caller buffers: `plumbing`) and the `repr(C)`
 //! mirrors of the Rust types with their conversions (`convert`).
 //!
@@ -32,6 +34,7 @@ mod entry;
 mod host;
 mod plumbing;
 mod solid;
+mod solid_contact;
 
 pub use convert::{
     ContactWeightingMode, OrderingMode, TemperingMode, TfemContactOptions, TfemContactReport,
@@ -41,3 +44,4 @@ pub use entry::*;
 pub use host::*;
 pub use plumbing::TfemModel;
 pub use solid::*;
+pub use solid_contact::*;
