@@ -5,50 +5,17 @@
 
 use super::tetmesh::{LAYER, LOWER, TetMesh};
 use crate::error::{Error, Result, Status};
-use crate::fem::assembly::{DofMap, NOT_FREE, Pattern};
+use crate::fem::assembly::{DofMap, Pattern};
 use crate::fem::tet::{TetGeometry, sub};
 use crate::linalg::ordering::{Ordering, nested_dissection};
 use crate::linalg::{AnalyseParams, Cholesky, FactorError};
 
+pub use crate::fem::solid_assembly::{lift, unknowns_of};
+
 /// Every tetrahedron's four faces, as the triangles
 /// [`Pattern::build`] couples the nodes of.
 pub fn face_triangles(mesh: &TetMesh) -> Vec<[usize; 3]> {
-    (mesh.tets.iter())
-        .flat_map(|t| {
-            [
-                [t[0], t[1], t[2]],
-                [t[0], t[1], t[3]],
-                [t[0], t[2], t[3]],
-                [t[1], t[2], t[3]],
-            ]
-        })
-        .collect()
-}
-
-/// The unknowns of a tetrahedron's 12 DOFs ([`NOT_FREE`] where prescribed).
-pub fn unknowns_of(dofs: &DofMap, t: &[usize; 4]) -> [usize; 12] {
-    std::array::from_fn(|i| dofs.free(3 * t[i / 3] + i % 3))
-}
-
-/// Moves the prescribed DOFs' share of an element matrix `ke` (12 × 12,
-/// row-major) to the right-hand side.
-pub fn lift(
-    rhs: &mut [f64],
-    unknowns: &[usize; 12],
-    t: &[usize; 4],
-    ke: &[f64],
-    prescribed: &[f64],
-) {
-    for (i, &row) in unknowns.iter().enumerate() {
-        if row == NOT_FREE {
-            continue;
-        }
-        for (c, &col) in unknowns.iter().enumerate() {
-            if col == NOT_FREE {
-                rhs[row] -= ke[12 * i + c] * prescribed[3 * t[c / 3] + c % 3];
-            }
-        }
-    }
+    crate::fem::solid_assembly::tet_cliques(&mesh.tets)
 }
 
 /// A boundary triangle's outward unit normal (away from its
