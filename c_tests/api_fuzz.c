@@ -16,8 +16,14 @@
  * NULLs, short buffers, NaN/Inf/denormal/huge values, wrong enums, index
  * base, calls inserted, deleted, duplicated, reordered, a group of edges
  * added twice or late, threads set to 1/2/0/negative around the solves),
- * or a fully random sequence of any entry points. Every call is checked
- * against the header's promises:
+ * or a fully random sequence of any entry points. A share of the cases
+ * (--solid-share, 8%) are 3D cases: the 3D model (tfem_solid_*) and its
+ * host contact context (tfem_solid_contact_*) in scenes (a cube pulled,
+ * the stacked cubes pressed into contact, across a gap, load steps on
+ * them, a 3D host, a tetrahedral Gmsh file) mutated or pristine, or in
+ * random sequences, with handles of another kind or destroyed ones given
+ * to 3D and 2D functions alike. Every call is checked against the
+ * header's promises:
  *   - output buffers are allocated with canaries before and after; nothing
  *     may be written beyond the declared length, nor at all by a failed
  *     call (except the documented truncation of messages);
@@ -61,7 +67,15 @@
  *     its limits, the tolerance, the warning of a limit, the mesh read
  *     back), tfem_set_boundary_circle accepted or refused as the shadow's
  *     mesh says (naming the node off the circle) and the nodes an adaptive
- *     solve adds on a declared circle lying on it. A summary line counts
+ *     solve adds on a declared circle lying on it; the 3D model's and
+ *     context's arguments accepted or refused as the header says, their
+ *     results kept or gone, the mesh and faces read back, contact forces
+ *     summing to zero, pressures only on the pairs' faces, steps reverted
+ *     and repeated bit for bit and proportional to the loads, the closed
+ *     forms of the pristine 3D scenes, the context's pattern, values,
+ *     gather, scatter_add and flags against its own element outputs, and
+ *     handles of another kind or destroyed refused (INVALID_ARGUMENT, the
+ *     message saying so) and destroyed as a no-op. A summary line counts
  *     the oracle checks made.
  * --replay-case K reruns one case verbosely and prints it as a C program
  * (a reproducer a developer can paste); --minimize first shrinks it to the
@@ -148,6 +162,9 @@ enum {
   V_ADAPT,          /* tfem_solve_adaptive / tfem_get_adapt_cycles not as documented */
   V_AXI,            /* axisymmetric bodies: refusals, the ring's exact solution, out-of-plane stresses */
   V_CIRCLE,         /* tfem_set_boundary_circle accepted or refused otherwise, new nodes off a declared circle */
+  V_SOLID,          /* the 3D model (tfem_solid_*): refusals, results kept or gone, read-back, contact, steps, exact solutions */
+  V_SOLID_HOST,     /* the 3D contact context (tfem_solid_contact_*): refusals, pattern, gather, scatter_add, flags */
+  V_HANDLE,         /* a handle of another kind or destroyed: accepted, refused otherwise, or destroyed by a no-op */
   NV
 };
 
@@ -159,7 +176,8 @@ static const char *const V_NAME[NV] = {
     "matrix_dropped", "double_edge",   "results_changed", "contact",      "external_work",
     "threads",        "null_pointer",  "other",          "step_repeat",  "host_contact",
     "friction",       "prescribed",    "auto_pairs",     "twin",          "weighting",
-    "negative_zero",  "adapt",         "axisymmetric",  "circle",
+    "negative_zero",  "adapt",         "axisymmetric",  "circle",        "solid",
+    "solid_host",     "handle",
 };
 
 static const char *const V_DESC[NV] = {
@@ -208,6 +226,16 @@ static const char *const V_DESC[NV] = {
     "ring element",
     "tfem_set_boundary_circle: accepted or refused otherwise than the header says (no mesh, a circle ill defined, a "
     "tag of no edge, a node off the circle, named), or a node an adaptive solve added on a declared circle off it",
+    "the 3D model (tfem_solid_*): an argument accepted or refused otherwise than the header says, results gone or "
+    "changed without a change of the problem (or returned after one), the mesh read back otherwise than given, "
+    "contact forces that do not sum to zero, a pressure off the pairs' faces, a step repeated or reverted otherwise, "
+    "a pristine scene's exact solution not met",
+    "the 3D contact context (tfem_solid_contact_*): a side, pair or call accepted or refused otherwise than the header "
+    "says, the pattern against the element equations, the values against the element blocks, gather, scatter_add, "
+    "the active flags, the area",
+    "a handle of another kind (a 2D model or context given to a 3D function, or the other way round) or a destroyed "
+    "one: accepted, refused otherwise than INVALID_ARGUMENT (its message in the thread's slot; the *_last_error "
+    "functions' in their buffer), or a *_destroy of it that was not a no-op",
 };
 
 /* The families of the contact pairs (what a pair is weighted by: the
@@ -246,6 +274,14 @@ enum {
   O_OUT_OF_PLANE,  /* out-of-plane stresses against the strains and the materials */
   O_AXI,           /* axisymmetric refusals (axis, crossing, mixing, mortar) and the ring element */
   O_CIRCLE,        /* a boundary circle accepted or refused as the shadow expects; refined nodes on it */
+  O_SOLID_ARGS,    /* a 3D call accepted or refused as the shadow expects */
+  O_SOLID_KEPT,    /* 3D results kept bit for bit, gone after a change, kept by a failed call */
+  O_SOLID_MESH,    /* the 3D mesh, faces and sizes read back as given */
+  O_SOLID_CONTACT, /* 3D contact forces summing to zero, pressures on the pairs' faces, flags, areas */
+  O_SOLID_STEP,    /* 3D steps: reverted, repeated bit for bit, proportional to the loads */
+  O_SOLID_EXACT,   /* a pristine 3D scene's closed form */
+  O_SOLID_HOST,    /* the 3D context: sides, pairs, pattern, values, gather, scatter_add, flags */
+  O_HANDLE,        /* a handle of another kind or destroyed refused, its message, a destroy of it a no-op */
   NO
 };
 static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetration", "work", "mesh_eq",
@@ -254,7 +290,8 @@ static const char *const O_NAME[NO] = {"pair_sum", "body_balance", "gap_penetrat
                                        "coulomb", "friction_args", "prescribed", "auto_pairs", "twin",
                                        "pair_pressure", "vtu_file", "warning_size", "weighting",
                                        "slave_nodes", "restart", "adapt", "out_of_plane",
-                                       "axisymmetric", "circle"};
+                                       "axisymmetric", "circle", "solid_args", "solid_kept", "solid_mesh",
+                                       "solid_contact", "solid_step", "solid_exact", "solid_host", "handles"};
 
 /* A library defect this tester found (c_tests/README.md, "The 3 entry
  * points of friction, prescribed values and automatic pairs"): with
@@ -560,6 +597,76 @@ enum {
   F_GET_ADAPT_CYCLES,
   /* the exact shape of a tagged boundary */
   F_SET_BOUNDARY_CIRCLE,
+  /* the 3D model (tfem_solid_*), a handle of its own */
+  F_S_LAST_ERROR,
+  F_S_LAST_ERROR_LENGTH,
+  F_S_WARNING_COUNT,
+  F_S_GET_WARNING_SIZE,
+  F_S_GET_WARNING,
+  F_S_SET_MESH,
+  F_S_LOAD_GMSH,
+  F_S_SET_FACES,
+  F_S_ADD_FACES,
+  F_S_GET_SIZES,
+  F_S_FACE_COUNT,
+  F_S_MESH_NODES,
+  F_S_MESH_TETS,
+  F_S_GET_FACES,
+  F_S_SET_MATERIAL,
+  F_S_SET_TEMPERING,
+  F_S_SET_ORDERING,
+  F_S_FIX,
+  F_S_FIX_FACES,
+  F_S_CLEAR_CONSTRAINTS,
+  F_S_ADD_PRESSURE,
+  F_S_ADD_TRACTION,
+  F_S_ADD_NODAL_FORCE,
+  F_S_CLEAR_LOADS,
+  F_S_ADD_PAIR,
+  F_S_CLEAR_PAIRS,
+  F_S_SOLVE,
+  F_S_SOLVE_CONTACT,
+  F_S_STEP,
+  F_S_REVERT_STEP,
+  F_S_SOLVE_INFO,
+  F_S_ITERATIONS,
+  F_S_DISPLACEMENTS,
+  F_S_STRAINS,
+  F_S_STRESSES,
+  F_S_REACTIONS,
+  F_S_WORK,
+  F_S_CONTACT_TETS,
+  F_S_CONTACT_ACTIVE,
+  F_S_CONTACT_FORCES,
+  F_S_NODAL_PRESSURES,
+  F_S_AREA,
+  F_S_PAIR_AREA,
+  F_S_WRITE_VTU,
+  F_S_DESTROY,  /* tfem_solid_destroy of the handle the call passes (the model's own: it is gone) */
+  F_S_RECREATE, /* tfem_solid_destroy(sm); sm = tfem_solid_create() */
+  /* the 3D contact context for host codes (tfem_solid_contact_*), a handle of its own */
+  F_SC_CREATE,
+  F_SC_DESTROY,
+  F_SC_LAST_ERROR,
+  F_SC_LAST_ERROR_LENGTH,
+  F_SC_ADD_SIDE,
+  F_SC_ADD_PAIR,
+  F_SC_SETUP,
+  F_SC_SIZES,
+  F_SC_NODES,
+  F_SC_TETS,
+  F_SC_PATTERN,
+  F_SC_ELEMENT_EQUATIONS,
+  F_SC_ELEMENT_BLOCKS,
+  F_SC_EVALUATE,
+  F_SC_GATHER,
+  F_SC_SCATTER_ADD,
+  F_SC_UPDATE,
+  F_SC_RESTART,
+  F_SC_GET_ACTIVE,
+  F_SC_SET_ACTIVE,
+  F_SC_GAPS,
+  F_SC_AREA,
   F_DESTROY_NULL, /* tfem_destroy(NULL) */
   F_RECREATE,     /* tfem_destroy(m); m = tfem_create() */
   F_TWIN,         /* not a call: the twin-model oracle (see oracle_twin) */
@@ -592,7 +699,12 @@ enum { R_SCALAR, R_2NN, R_3NT, R_NT, R_NC, R_3NC, R_N1, R_NNZ, R_N, R_MSG, R_WAR
         * entries, message, the host's equations */
        R_STATE, R_CN, R_2CN, R_CE, R_3CE, R_6CE, R_36CE, R_CP, R_CMSG, R_NEQ,
        /* slave nodes of a mortar solve (the report's elements); the cycles of the last adaptive solve */
-       R_SLAVE, R_CYC };
+       R_SLAVE, R_CYC,
+       /* the 3D model: nodes (x3, x1), tetrahedra (x6, x4, x1), tetrahedra of B (x1, x4), faces (x3, x1),
+        * message, warning; the 3D context: interface nodes (x1, x3), tetrahedra of B (x1, x4, x12, x144),
+        * pattern entries, message, the host's equations */
+       R_S3NN, R_SNN, R_S6NT, R_S4NT, R_SNT, R_SNC, R_S4NC, R_S3NF, R_SNF, R_SMSG, R_SWARN,
+       R_SCN, R_S3CN, R_SCT, R_S4CT, R_S12CT, R_S144CT, R_SCP, R_SCMSG, R_SNEQ };
 
 #define MAXI 8
 #define MAXD 4
@@ -601,7 +713,8 @@ enum { R_SCALAR, R_2NN, R_3NT, R_NT, R_NC, R_3NC, R_N1, R_NNZ, R_N, R_MSG, R_WAR
 
 typedef struct {
   const char *name;
-  int model;       /* 1: the first argument is the model; 2: the contact context */
+  int model;       /* 1: the first argument is the model; 2: the contact context; 3: the 3D model; 4: the 3D
+                    * contact context */
   const char *ir;  /* roles of the int arguments */
   const char *dr;  /* roles of the double arguments */
   const char *ink; /* input arrays: 'x' coords (double), 'n' node indices, 'b' bodies, 't' tags, 'o' options
@@ -625,7 +738,8 @@ typedef struct {
  *   1 mortar, 2 automatic; wild: -1, 3, INT_MAX, INT_MIN), Z adaptive goal
  *   (0 energy, 1 compliance), Y adaptive max_cycles (1..6; wild 0, -1,
  *   INT_MIN), N adaptive max_unknowns (an int64_t: INT_MAX passes INT64_MAX,
- *   INT_MIN INT64_MIN; 200..20000; wild 0, -1, 1, 50, INT_MAX, INT_MIN)
+ *   INT_MIN INT64_MIN; 200..20000; wild 0, -1, 1, 50, INT_MAX, INT_MIN), F a 3D Gmsh file (sg_path),
+ *   K a 3D component (tfem_axis 0..2), Q a 3D contact pair (0-based), e a 3D context's side (in its base)
  * double roles: E young, p poisson, J jmin, K kappa, v tempering value,
  *   u displacement, f force, G contact modulus, l lambda, a load factor,
  *   y friction coefficient, d pairing tolerance, e adaptive tolerance, X a
@@ -732,6 +846,76 @@ static const fndesc FN[NF] = {
     [F_GET_ADAPT_CYCLES] = {"tfem_get_adapt_cycles", 1, "", "", "", "ldt", {R_CYC, R_CYC, R_CYC}, 0},
     /* (dv: the centre's x and y, the radius) */
     [F_SET_BOUNDARY_CIRCLE] = {"tfem_set_boundary_circle", 1, "t", "XXr", "", "", {0}, 0},
+    /* the 3D model (iv of F_S_SOLVE_CONTACT and F_S_STEP: the options as in tfem_solve_contact) */
+    [F_S_LAST_ERROR] = {"tfem_solid_last_error", 3, "", "", "", "c", {R_SMSG}, 0},
+    [F_S_LAST_ERROR_LENGTH] = {"tfem_solid_last_error_length", 3, "", "", "", "", {0}, 0},
+    [F_S_WARNING_COUNT] = {"tfem_solid_warning_count", 3, "", "", "", "i", {R_SCALAR}, 1},
+    [F_S_GET_WARNING_SIZE] = {"tfem_solid_get_warning_size", 3, "w", "", "", "z", {R_SCALAR}, 1},
+    [F_S_GET_WARNING] = {"tfem_solid_get_warning", 3, "w", "", "", "c", {R_SWARN}, 0},
+    [F_S_SET_MESH] = {"tfem_solid_set_mesh", 3, "ccB", "", "xnb", "", {0}, 0},
+    [F_S_LOAD_GMSH] = {"tfem_solid_load_gmsh", 3, "FB", "", "", "", {0}, 0},
+    [F_S_SET_FACES] = {"tfem_solid_set_boundary_faces", 3, "c", "", "nt", "", {0}, 0},
+    [F_S_ADD_FACES] = {"tfem_solid_add_boundary_faces", 3, "c", "", "nt", "", {0}, 0},
+    [F_S_GET_SIZES] = {"tfem_solid_get_sizes", 3, "", "", "", "iii", {R_SCALAR, R_SCALAR, R_SCALAR}, 1},
+    [F_S_FACE_COUNT] = {"tfem_solid_get_boundary_face_count", 3, "", "", "", "i", {R_SCALAR}, 1},
+    [F_S_MESH_NODES] = {"tfem_solid_get_mesh_nodes", 3, "", "", "", "d", {R_S3NN}, 0},
+    [F_S_MESH_TETS] = {"tfem_solid_get_mesh_tetrahedra", 3, "", "", "", "ii", {R_S4NT, R_SNT}, 0},
+    [F_S_GET_FACES] = {"tfem_solid_get_boundary_faces", 3, "", "", "", "ii", {R_S3NF, R_SNF}, 0},
+    [F_S_SET_MATERIAL] = {"tfem_solid_set_material", 3, "b", "Ep", "", "", {0}, 0},
+    [F_S_SET_TEMPERING] = {"tfem_solid_set_tempering", 3, "M", "v", "", "", {0}, 0},
+    [F_S_SET_ORDERING] = {"tfem_solid_set_ordering", 3, "O", "", "", "", {0}, 0},
+    [F_S_FIX] = {"tfem_solid_fix", 3, "nK", "u", "", "", {0}, 0},
+    [F_S_FIX_FACES] = {"tfem_solid_fix_faces", 3, "tK", "u", "", "", {0}, 0},
+    [F_S_CLEAR_CONSTRAINTS] = {"tfem_solid_clear_constraints", 3, "", "", "", "", {0}, 0},
+    [F_S_ADD_PRESSURE] = {"tfem_solid_add_pressure", 3, "t", "f", "", "", {0}, 0},
+    [F_S_ADD_TRACTION] = {"tfem_solid_add_traction", 3, "t", "fff", "", "", {0}, 0},
+    [F_S_ADD_NODAL_FORCE] = {"tfem_solid_add_nodal_force", 3, "n", "fff", "", "", {0}, 0},
+    [F_S_CLEAR_LOADS] = {"tfem_solid_clear_loads", 3, "", "", "", "", {0}, 0},
+    [F_S_ADD_PAIR] = {"tfem_solid_add_contact_pair", 3, "tt", "", "", "i", {R_SCALAR}, 1},
+    [F_S_CLEAR_PAIRS] = {"tfem_solid_clear_contact_pairs", 3, "", "", "", "", {0}, 0},
+    [F_S_SOLVE] = {"tfem_solid_solve", 3, "", "", "", "S", {R_SCALAR}, 1},
+    [F_S_SOLVE_CONTACT] = {"tfem_solid_solve_contact", 3, "LTmx", "Gl", "o", "S", {R_SCALAR}, 1},
+    [F_S_STEP] = {"tfem_solid_step", 3, "LTmx", "Gla", "o", "S", {R_SCALAR}, 1},
+    [F_S_REVERT_STEP] = {"tfem_solid_revert_step", 3, "", "", "", "", {0}, 0},
+    [F_S_SOLVE_INFO] = {"tfem_solid_get_solve_info", 3, "", "", "", "S", {R_SCALAR}, 1},
+    [F_S_ITERATIONS] = {"tfem_solid_get_iterations", 3, "", "", "", "i", {R_SCALAR}, 1},
+    [F_S_DISPLACEMENTS] = {"tfem_solid_get_displacements", 3, "", "", "", "d", {R_S3NN}, 0},
+    [F_S_STRAINS] = {"tfem_solid_get_element_strains", 3, "", "", "", "d", {R_S6NT}, 0},
+    [F_S_STRESSES] = {"tfem_solid_get_element_stresses", 3, "", "", "", "d", {R_S6NT}, 0},
+    [F_S_REACTIONS] = {"tfem_solid_get_reactions", 3, "", "", "", "d", {R_S3NN}, 0},
+    [F_S_WORK] = {"tfem_solid_get_external_work", 3, "", "", "", "d", {R_SCALAR}, 1},
+    [F_S_CONTACT_TETS] = {"tfem_solid_get_contact_tetrahedra", 3, "", "", "", "i", {R_S4NC}, 0},
+    [F_S_CONTACT_ACTIVE] = {"tfem_solid_get_contact_active", 3, "", "", "", "i", {R_SNC}, 0},
+    [F_S_CONTACT_FORCES] = {"tfem_solid_get_contact_forces", 3, "", "", "", "d", {R_S3NN}, 0},
+    [F_S_NODAL_PRESSURES] = {"tfem_solid_get_contact_nodal_pressures", 3, "", "", "", "d", {R_SNN}, 0},
+    [F_S_AREA] = {"tfem_solid_get_contact_area", 3, "", "", "", "d", {R_SCALAR}, 1},
+    [F_S_PAIR_AREA] = {"tfem_solid_get_contact_pair_area", 3, "Q", "", "", "d", {R_SCALAR}, 1},
+    [F_S_WRITE_VTU] = {"tfem_solid_write_vtu", 3, "V", "", "", "", {0}, 0},
+    [F_S_DESTROY] = {"tfem_solid_destroy", 3, "", "", "", "", {0}, 0},
+    [F_S_RECREATE] = {"tfem_solid_destroy+tfem_solid_create", 0, "", "", "", "", {0}, 0},
+    /* the 3D contact context (F_SC_CREATE: the options as in tfem_solve_contact, then the index base) */
+    [F_SC_CREATE] = {"tfem_solid_contact_create", 0, "LTmxB", "Gl", "o", "", {0}, 0},
+    [F_SC_DESTROY] = {"tfem_solid_contact_destroy", 4, "", "", "", "", {0}, 0},
+    [F_SC_LAST_ERROR] = {"tfem_solid_contact_last_error", 4, "", "", "", "c", {R_SCMSG}, 0},
+    [F_SC_LAST_ERROR_LENGTH] = {"tfem_solid_contact_last_error_length", 4, "", "", "", "", {0}, 0},
+    [F_SC_ADD_SIDE] = {"tfem_solid_contact_add_side", 4, "tbcc", "E", "hxqh", "i", {R_SCALAR}, 1},
+    [F_SC_ADD_PAIR] = {"tfem_solid_contact_add_pair", 4, "ee", "", "", "i", {R_SCALAR}, 1},
+    [F_SC_SETUP] = {"tfem_solid_contact_setup", 4, "", "", "", "", {0}, 0},
+    [F_SC_SIZES] = {"tfem_solid_contact_sizes", 4, "", "", "", "iil", {R_SCALAR, R_SCALAR, R_SCALAR}, 1},
+    [F_SC_NODES] = {"tfem_solid_contact_nodes", 4, "", "", "", "i", {R_SCN}, 0},
+    [F_SC_TETS] = {"tfem_solid_contact_tetrahedra", 4, "", "", "", "i", {R_S4CT}, 0},
+    [F_SC_PATTERN] = {"tfem_solid_contact_pattern", 4, "", "", "", "ll", {R_SCP, R_SCP}, 0},
+    [F_SC_ELEMENT_EQUATIONS] = {"tfem_solid_contact_element_equations", 4, "", "", "", "l", {R_S12CT}, 0},
+    [F_SC_ELEMENT_BLOCKS] = {"tfem_solid_contact_element_blocks", 4, "", "", "", "d", {R_S144CT}, 0},
+    [F_SC_EVALUATE] = {"tfem_solid_contact_evaluate", 4, "RDk", "", "U", "dd", {R_SCP, R_S3CN}, 0},
+    [F_SC_GATHER] = {"tfem_solid_contact_gather", 4, "gDk", "", "U", "d", {R_S3CN}, 0},
+    [F_SC_SCATTER_ADD] = {"tfem_solid_contact_scatter_add", 4, "RDk", "", "UU", "d", {R_SNEQ}, 0},
+    [F_SC_UPDATE] = {"tfem_solid_contact_update", 4, "RDk", "", "U", "iii", {R_SCALAR, R_SCALAR, R_SCALAR}, 1},
+    [F_SC_RESTART] = {"tfem_solid_contact_restart", 4, "", "", "", "", {0}, 0},
+    [F_SC_GET_ACTIVE] = {"tfem_solid_contact_get_active", 4, "", "", "", "i", {R_SCT}, 0},
+    [F_SC_SET_ACTIVE] = {"tfem_solid_contact_set_active", 4, "ADk", "", "a", "", {0}, 0},
+    [F_SC_GAPS] = {"tfem_solid_contact_gaps", 4, "RDk", "", "U", "d", {R_SCT}, 0},
+    [F_SC_AREA] = {"tfem_solid_contact_area", 4, "", "", "", "d", {R_SCALAR}, 1},
     [F_DESTROY_NULL] = {"tfem_destroy(NULL)", 0, "", "", "", "", {0}, 0},
     [F_RECREATE] = {"tfem_destroy+tfem_create", 0, "", "", "", "", {0}, 0},
     [F_TWIN] = {"(twin model oracle)", 0, "", "", "", "", {0}, 0},
@@ -757,7 +941,20 @@ static int out_kind(int f, int j) {
   }
 }
 /* Functions whose failure may write (documented truncation of messages). */
-static int writes_on_failure(int f) { return f == F_LAST_ERROR || f == F_GET_WARNING || f == F_CONTACT_LAST_ERROR; }
+static int writes_on_failure(int f) {
+  return f == F_LAST_ERROR || f == F_GET_WARNING || f == F_CONTACT_LAST_ERROR || f == F_S_LAST_ERROR || f == F_S_GET_WARNING ||
+         f == F_SC_LAST_ERROR;
+}
+/* ... and with which status: the 3D ones exactly as the header says (the
+ * warning cut to the buffer with BUFFER_TOO_SMALL, "on any other error
+ * buffer is unchanged"; a message cut so, or the message refusing a handle
+ * that is not live with INVALID_ARGUMENT). */
+static int may_write_on_failure(int f, int st) {
+  if (f == F_S_GET_WARNING) return st == TFEM_STATUS_BUFFER_TOO_SMALL;
+  if (f == F_S_LAST_ERROR || f == F_SC_LAST_ERROR)
+    return st == TFEM_STATUS_BUFFER_TOO_SMALL || st == TFEM_STATUS_INVALID_ARGUMENT;
+  return writes_on_failure(f);
+}
 /* The input arrays made when the call runs (from a recipe). */
 static int in_runtime(int f, int j) { char r = FN[f].ink[j]; return r == 'U' || r == 'a' || r == 's'; }
 
@@ -770,7 +967,11 @@ static int out_nullable(int f, int j) {
   case F_CONTACT_SIZES: case F_CONTACT_EVALUATE: case F_CONTACT_UPDATE: case F_ADD_CONTACT_PAIRS_AUTO:
   case F_GET_CONTACT_SLAVE_NODES: /* ("any pointer may be NULL") */
   case F_SOLVE_ADAPTIVE: case F_GET_ADAPT_CYCLES:
+  case F_S_GET_SIZES: case F_S_ADD_PAIR: case F_S_SOLVE: case F_S_SOLVE_CONTACT: case F_S_STEP: case F_SC_ADD_SIDE:
+  case F_SC_ADD_PAIR: case F_SC_SIZES: case F_SC_EVALUATE: case F_SC_UPDATE:
     return 1;
+  case F_S_MESH_TETS: case F_S_GET_FACES: /* ("bodies" / "tags" may be NULL) */
+    return j == 1;
   default: (void)j; return 0;
   }
 }
@@ -833,6 +1034,10 @@ typedef struct {
 typedef struct {
   int fn;
   int null_model;
+  /* the handle passed (not NULL): 0 the function's own, else one of another
+   * kind (1 the 2D model, 2 a 2D context, 3 the 3D model, 4 the 3D context)
+   * or 5 one of its own kind destroyed just before the call (call_handle) */
+  int handle;
   int iv[MAXI];
   double dv[MAXD];
   in_arr in[MAXIN];
@@ -878,6 +1083,9 @@ typedef struct {
    * the model's DOF hmap[e] (2 node + component); neq equations. */
   int coupled, hm_mul, hm_off, neq;
   int *hmap;
+  /* a 3D case (the runner makes the 3D handles); coupled = 2: its host
+   * equation e (0-based) is the 3D model's DOF e (3 node + component) */
+  int solid;
 } case_t;
 
 static void in_set(call_t *c, int j, const void *v, int n, size_t el) {
@@ -1142,6 +1350,28 @@ static char *gmsh_square(const char *nodes_header, const char *elements_header, 
   return s;
 }
 
+/* The files tfem_solid_load_gmsh is given: the tetrahedral mesh of
+ * c_tests/solid_test.c (nodes A..E, tetrahedra ABCD and BCDE of physical
+ * volume 1, triangle ABC in physical surfaces 10 and 99, BCE in 20), the
+ * same cut short, claiming 10^15 nodes, and 2D files (the valid square:
+ * no tetrahedra), garbage, none, the directory, an empty file. */
+enum { SG_VALID, SG_TRUNCATED, SG_NODES_1E15, SG_2D, SG_GARBAGE, SG_NONEXISTENT, SG_DIRECTORY, SG_EMPTY, NSG };
+static const char *const SG_NAME[NSG] = {"solid", "solid_truncated", "solid_nodes_1e15", NULL, NULL, NULL, NULL, NULL};
+static const int SG_2D_FILE[NSG] = {-1, -1, -1, G_VALID, G_GARBAGE, G_NONEXISTENT, G_DIRECTORY, G_EMPTY};
+static char *sg_path[NSG];
+static char *sg_text[NSG];
+static size_t sg_len[NSG];
+static const char SOLID_MSH[] =
+    "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n"
+    "$PhysicalNames\n4\n3 1 \"steel\"\n2 10 \"bottom\"\n2 20 \"slant\"\n2 99 \"all\"\n"
+    "$EndPhysicalNames\n"
+    "$Entities\n0 0 2 1\n1 0 0 0 1 1 0 2 10 99 0\n2 0 0 0 1 1 1 1 20 0\n"
+    "1 0 0 0 1 1 1 1 1 0\n$EndEntities\n"
+    "$Nodes\n1 5 101 105\n3 1 0 5\n101\n102\n103\n104\n105\n"
+    "0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n$EndNodes\n"
+    "$Elements\n3 4 1 8\n3 1 4 2\n1 101 102 103 104\n2 102 103 104 105\n"
+    "2 1 2 1\n7 101 102 103\n2 2 2 1\n8 102 103 105\n$EndElements\n";
+
 static void on_signal(int sig);
 static pid_t g_owner; /* the process that made g_dir (children leave it) */
 
@@ -1207,6 +1437,33 @@ static void gmsh_files_init(void) {
     g_text[g] = t;
     g_len[g] = t ? strlen(t) : 0;
   }
+  for (int g = 0; g < NSG; ++g) {
+    if (SG_2D_FILE[g] >= 0) { /* (a 2D file's path; its text is the 2D file's) */
+      sg_path[g] = strdup(g_path[SG_2D_FILE[g]]);
+      continue;
+    }
+    char *t = strdup(SOLID_MSH), path[512];
+    if (g == SG_TRUNCATED) t[strstr(t, "$Elements") - t + 30] = 0;
+    if (g == SG_NODES_1E15) {
+      char *at = strstr(t, "1 5 101 105");
+      size_t head = (size_t)(at - t);
+      char *u = xmalloc(strlen(t) + 64);
+      snprintf(u, strlen(t) + 64, "%.*s1 1000000000000000 101 105%s", (int)head, t, at + strlen("1 5 101 105"));
+      free(t);
+      t = u;
+    }
+    snprintf(path, sizeof path, "%s/%s.msh", g_dir, SG_NAME[g]);
+    FILE *f = fopen(path, "wb");
+    if (!f) {
+      perror(path);
+      exit(3);
+    }
+    fwrite(t, 1, strlen(t), f);
+    fclose(f);
+    sg_path[g] = strdup(path);
+    sg_text[g] = t;
+    sg_len[g] = strlen(t);
+  }
 }
 /* The paths tfem_write_vtu is given: a file in the private directory
  * (unlinked after the call), one whose name is not UTF-8 (any bytes, on
@@ -1250,6 +1507,12 @@ static void gmsh_files_cleanup(void) {
     free(g_text[g]);
     g_path[g] = g_text[g] = NULL;
   }
+  for (int g = 0; g < NSG; ++g) {
+    if (sg_text[g]) unlink(sg_path[g]);
+    free(sg_path[g]);
+    free(sg_text[g]);
+    sg_path[g] = sg_text[g] = NULL;
+  }
   char extra[2][400];
   snprintf(extra[0], sizeof extra[0], "%s/stderr", g_dir);
   snprintf(extra[1], sizeof extra[1], "%s/repro.c", g_dir);
@@ -1265,6 +1528,8 @@ static void on_signal(int sig) {
     char p[400];
     for (int g = 0; g < NGMSH; ++g)
       if (g_path[g] && g != G_DIRECTORY && g != G_NONEXISTENT && g != G_BAD_UTF8) unlink(g_path[g]);
+    for (int g = 0; g < NSG; ++g)
+      if (sg_text[g]) unlink(sg_path[g]);
     snprintf(p, sizeof p, "%s/stderr", g_dir);
     unlink(p);
     snprintf(p, sizeof p, "%s/repro.c", g_dir);
@@ -1330,6 +1595,7 @@ static double plausible_double(rng_t *r, char role) {
 static int enum_max(char role) {
   switch (role) {
   case 'C': case 'L': case 'T': case 'x': case 'Z': return 1;
+  case 'K': return 2; /* (a 3D component: x, y, z) */
   case 'M': return 3;
   case 'O': case 'P': return 2; /* (P: strain, stress, axisymmetric) */
   default: return 1;
@@ -1366,6 +1632,9 @@ static int plausible_int(rng_t *r, char role, const ctx_t *cx) {
   case 'Y': return chance(r, 0.8) ? rrange(r, 1, 4) : rrange(r, 5, 6);
   case 'N': return (int[]){200, 500, 2000, 5000, 20000, 2000}[rint_(r, 6)];
   case 'P': return chance(r, 0.8) ? rint_(r, 2) : TFEM_PLANE_MODE_AXISYMMETRIC;
+  case 'F': return chance(r, 0.6) ? SG_VALID : rint_(r, NSG);
+  case 'Q': return chance(r, 0.8) ? 0 : rrange(r, -1, 2);
+  case 'e': return cx->hbase + rint_(r, cx->nsides > 1 ? cx->nsides : 2);
   default: return rint_(r, enum_max(role) + 1);
   }
 }
@@ -1396,7 +1665,7 @@ static int wild_int(rng_t *r, char role, int v, const ctx_t *cx) {
   case 4: return sat_int((long long)v - 1);
   case 5:
     if (role == 'n') return cx->nn + cx->base;
-    if (role == 'f' || role == 'V') return -1;
+    if (role == 'f' || role == 'V' || role == 'F') return -1;
     return enum_max(role) + 1;
   case 6: return role == 'n' ? sat_int((long long)v + (cx->base ? -1 : 1)) : 99;
   default: return 0;
@@ -1427,6 +1696,21 @@ static void fix_arrays(rng_t *r, call_t *c, const ctx_t *cx) {
     break;
   case F_CONTACT_ADD_PAIR_WITH_MESH: need[0] = c->iv[2] >= 0 && c->iv[2] < 100000 ? 3 * c->iv[2] : -1; break;
   case F_ADD_CONTACT_PAIRS_AUTO: need[0] = c->iv[0] >= 0 && c->iv[0] < 100000 ? c->iv[0] : -1; break;
+  case F_S_SET_MESH:
+    need[0] = c->iv[0] >= 0 && c->iv[0] < 100000 ? 3 * c->iv[0] : -1;
+    need[1] = c->iv[1] >= 0 && c->iv[1] < 100000 ? 4 * c->iv[1] : -1;
+    need[2] = c->iv[1] >= 0 && c->iv[1] < 100000 ? c->iv[1] : -1;
+    break;
+  case F_S_SET_FACES: case F_S_ADD_FACES:
+    need[0] = c->iv[0] >= 0 && c->iv[0] < 100000 ? 3 * c->iv[0] : -1;
+    need[1] = c->iv[0] >= 0 && c->iv[0] < 100000 ? c->iv[0] : -1;
+    break;
+  case F_SC_ADD_SIDE:
+    need[0] = c->iv[2] >= 0 && c->iv[2] < 100000 ? c->iv[2] : -1;
+    need[1] = need[0] >= 0 ? 3 * need[0] : -1;
+    need[2] = need[1];
+    need[3] = c->iv[3] >= 0 && c->iv[3] < 100000 ? 3 * c->iv[3] : -1;
+    break;
   default: return;
   }
   for (int j = 0; j < fn_nin(c->fn); ++j) {
@@ -3251,6 +3535,8 @@ static void mutate_arg(rng_t *r, call_t *c, const ctx_t *cx) {
           c->iv[k] = (int[]){1 - c->iv[k], 2, -1}[rint_(r, 3)];
         } else if (role == 'f') {
           c->iv[k] = rrange(r, -1, NGMSH - 1);
+        } else if (role == 'F') {
+          c->iv[k] = rrange(r, -1, NSG - 1);
         } else {
           c->iv[k] = chance(r, 0.3) ? plausible_int(r, role, cx) : wild_int(r, role, c->iv[k], cx);
         }
@@ -3267,7 +3553,7 @@ static void mutate_arg(rng_t *r, call_t *c, const ctx_t *cx) {
       if (fn_nin(fn)) {
         int j = rint_(r, fn_nin(fn));
         char role = FN[fn].ink[j];
-        if (fn == F_CONTACT_SCATTER_ADD && j == 1) break; /* (the host vector's content, not an argument) */
+        if ((fn == F_CONTACT_SCATTER_ADD || fn == F_SC_SCATTER_ADD) && j == 1) break; /* (the host vector's content) */
         if (role == 'o' || role == 'r' || in_runtime(fn, j) || chance(r, 0.2) || c->in[j].n == 0) {
           c->in[j].null_ = 1;
         } else if (role == 'q') {
@@ -3306,7 +3592,8 @@ static void mutate_arg(rng_t *r, call_t *c, const ctx_t *cx) {
       }
       break;
     default: /* options of a contact solve */
-      if (fn == F_SOLVE_CONTACT || fn == F_STEP || fn == F_CONTACT_SET_OPTIONS || fn == F_SOLVE_ADAPTIVE) {
+      if (fn == F_SOLVE_CONTACT || fn == F_STEP || fn == F_CONTACT_SET_OPTIONS || fn == F_SOLVE_ADAPTIVE ||
+          fn == F_S_SOLVE_CONTACT || fn == F_S_STEP || fn == F_SC_CREATE) {
         int k = rint_(r, 6);
         if (k < 4) c->iv[k] = chance(r, 0.5) ? plausible_int(r, FN[fn].ir[k], cx) : wild_int(r, FN[fn].ir[k], c->iv[k], cx);
         else c->dv[k - 4] = chance(r, 0.5) ? plausible_double(r, FN[fn].dr[k - 4]) : wild_double(r);
@@ -3422,12 +3709,905 @@ static void mutate_case(rng_t *r, case_t *cs, const ctx_t *cx) {
   }
 }
 
+/* ------------------------------------------------------------------------ */
+/* The 3D model and its contact context: meshes, scenes, random calls        */
+/* ------------------------------------------------------------------------ */
+
+/* A share of the cases (SOLID_SHARE, drawn from a stream of their own so
+ * that every other case is the one it was) are 3D cases: the runner makes
+ * the 3D handles, and the calls are the 3D model's, its contact context's
+ * and, given the 3D handles, a few 2D ones. */
+#define SOLID_SHARE 0.08
+static double g_solid_share = SOLID_SHARE; /* (--solid-share: a campaign of 3D cases, 1 for 3D only) */
+
+typedef struct {
+  int nn, nt, nf;
+  double *xyz;
+  int *tet, *body, *face, *ftag; /* 0-based */
+  int capn, capt, capf;
+} smesh_t;
+
+static int smesh_node(smesh_t *m, double x, double y, double z) {
+  if (m->nn == m->capn) {
+    m->capn = m->capn ? 2 * m->capn : 64;
+    m->xyz = xrealloc(m->xyz, sizeof(double) * 3 * (size_t)m->capn);
+  }
+  m->xyz[3 * m->nn] = x;
+  m->xyz[3 * m->nn + 1] = y;
+  m->xyz[3 * m->nn + 2] = z;
+  return m->nn++;
+}
+static void smesh_tet(smesh_t *m, const int v[4], int body) {
+  if (m->nt == m->capt) {
+    m->capt = m->capt ? 2 * m->capt : 64;
+    m->tet = xrealloc(m->tet, sizeof(int) * 4 * (size_t)m->capt);
+    m->body = xrealloc(m->body, sizeof(int) * (size_t)m->capt);
+  }
+  memcpy(&m->tet[4 * m->nt], v, 4 * sizeof(int));
+  m->body[m->nt++] = body;
+}
+static void smesh_face(smesh_t *m, int a, int b, int c, int tag) {
+  if (m->nf == m->capf) {
+    m->capf = m->capf ? 2 * m->capf : 64;
+    m->face = xrealloc(m->face, sizeof(int) * 3 * (size_t)m->capf);
+    m->ftag = xrealloc(m->ftag, sizeof(int) * (size_t)m->capf);
+  }
+  m->face[3 * m->nf] = a;
+  m->face[3 * m->nf + 1] = b;
+  m->face[3 * m->nf + 2] = c;
+  m->ftag[m->nf++] = tag;
+}
+static void smesh_free(smesh_t *m) {
+  free(m->xyz), free(m->tet), free(m->body), free(m->face), free(m->ftag);
+  memset(m, 0, sizeof *m);
+}
+
+/* A block [0, 1] x [0, 1] x [z0, z0 + 1] of n x n x n cells of Kuhn's six
+ * tetrahedra (c_tests/solid_test.c's cube: the odd orders numbered
+ * backwards, J > 0), body `body`, its sides tagged tag0 + 1 .. tag0 + 6
+ * (x = 0, x = 1, y = 0, y = 1, z = z0, z = z0 + 1), every face of its
+ * tetrahedra on a side. Returns its first node. */
+static int kuhn_block(smesh_t *m, int n, double z0, int body, int tag0) {
+  static const int orders[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
+  int first = m->nn, np = n + 1, start = m->nt;
+  for (int k = 0; k < np; ++k)
+    for (int j = 0; j < np; ++j)
+      for (int i = 0; i < np; ++i) smesh_node(m, (double)i / n, (double)j / n, z0 + (double)k / n);
+#define KID(i, j, k) (first + (i) + np * ((j) + np * (k)))
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i)
+        for (int o = 0; o < 6; ++o) {
+          int p[3] = {0, 0, 0}, v[4];
+          v[0] = KID(i, j, k);
+          for (int s = 0; s < 3; ++s) {
+            p[orders[o][s]] = 1;
+            v[s + 1] = KID(i + p[0], j + p[1], k + p[2]);
+          }
+          if (o >= 3) {
+            int t = v[2];
+            v[2] = v[3];
+            v[3] = t;
+          }
+          smesh_tet(m, v, body);
+        }
+#undef KID
+  for (int e = start; e < m->nt; ++e)
+    for (int skip = 0; skip < 4; ++skip) {
+      int f[3], nf = 0;
+      for (int q = 0; q < 4; ++q)
+        if (q != skip) f[nf++] = m->tet[4 * e + q];
+      for (int axis = 0; axis < 3; ++axis)
+        for (int end = 0; end < 2; ++end) {
+          int at = end ? n : 0, on = 1;
+          for (int q = 0; q < 3; ++q) {
+            int rr = f[q] - first, g[3] = {rr % np, (rr / np) % np, rr / (np * np)};
+            on = on && g[axis] == at;
+          }
+          if (on) smesh_face(m, f[0], f[1], f[2], tag0 + 1 + 2 * axis + end);
+        }
+    }
+  return first;
+}
+
+/* The generation context of a 3D case. */
+static ctx_t ctx3(const smesh_t *m, int base, int nbodies) {
+  ctx_t cx;
+  memset(&cx, 0, sizeof cx);
+  cx.nn = m ? m->nn : 4;
+  cx.nt = m ? m->nt : 0;
+  cx.base = base;
+  cx.ntags = 0;
+  for (int f = 0; m && f < m->nf && cx.ntags < 8; ++f) {
+    int k = 0;
+    while (k < cx.ntags && cx.tags[k] != m->ftag[f]) ++k;
+    if (k == cx.ntags) cx.tags[cx.ntags++] = m->ftag[f];
+  }
+  if (!cx.ntags) cx.tags[0] = 1, cx.tags[1] = 2, cx.tags[2] = 3, cx.tags[3] = 4, cx.ntags = 4;
+  cx.nbodies = nbodies;
+  for (int b = 0; b < nbodies && b < 4; ++b) cx.bodies[b] = b + 1;
+  return cx;
+}
+
+static call_t *s_mesh_call(case_t *cs, const smesh_t *m, int base) {
+  call_t *c = add_call(cs, F_S_SET_MESH);
+  c->iv[0] = m->nn;
+  c->iv[1] = m->nt;
+  c->iv[2] = base;
+  in_set(c, 0, m->xyz, 3 * m->nn, sizeof(double));
+  in_set(c, 1, NULL, 4 * m->nt, sizeof(int));
+  for (int k = 0; k < 4 * m->nt; ++k) ((int *)c->in[1].p)[k] = m->tet[k] + base;
+  in_set(c, 2, m->body, m->nt, sizeof(int));
+  return c;
+}
+/* The faces of m tagged `tag` (INT_MIN: every one) through fn, given the
+ * tag `as_tag` (INT_MIN: their own). */
+static call_t *s_faces_call(case_t *cs, const smesh_t *m, int base, int fn, int tag, int as_tag) {
+  call_t *c = add_call(cs, fn);
+  int n = 0;
+  for (int f = 0; f < m->nf; ++f) n += tag == INT_MIN || m->ftag[f] == tag;
+  c->iv[0] = n;
+  in_set(c, 0, NULL, 3 * n, sizeof(int));
+  in_set(c, 1, NULL, n, sizeof(int));
+  for (int f = 0, k = 0; f < m->nf; ++f)
+    if (tag == INT_MIN || m->ftag[f] == tag) {
+      for (int q = 0; q < 3; ++q) ((int *)c->in[0].p)[3 * k + q] = m->face[3 * f + q] + base;
+      ((int *)c->in[1].p)[k++] = as_tag == INT_MIN ? m->ftag[f] : as_tag;
+    }
+  return c;
+}
+/* The tagged faces of a scene: one tfem_solid_set_boundary_faces (60%),
+ * or one group (tag) per call: set for the first and add for the others
+ * (20%), or add only (20%). */
+static void s_faces_calls(rng_t *r, case_t *cs, const smesh_t *m, int base) {
+  int tags[16], nt = 0, v = rint_(r, 10);
+  for (int f = 0; f < m->nf; ++f) {
+    int k = 0;
+    while (k < nt && tags[k] != m->ftag[f]) ++k;
+    if (k == nt && nt < 16) tags[nt++] = m->ftag[f];
+  }
+  if (v < 6 || nt == 0) {
+    s_faces_call(cs, m, base, F_S_SET_FACES, INT_MIN, INT_MIN);
+    return;
+  }
+  for (int k = 0; k < nt; ++k) s_faces_call(cs, m, base, k == 0 && v < 8 ? F_S_SET_FACES : F_S_ADD_FACES, tags[k], INT_MIN);
+}
+static call_t *s_call(case_t *cs, int fn, int a, int b, double x, double y, double z) {
+  call_t *c = add_call(cs, fn);
+  c->iv[0] = a;
+  c->iv[1] = b;
+  c->dv[0] = x;
+  c->dv[1] = y;
+  c->dv[2] = z;
+  return c;
+}
+/* A solve or step with options (law and test 0: frictionless, the 3D
+ * test), or none (null_opts). */
+static call_t *s_solve_call(case_t *cs, int fn, int maxit, int refac, double ec, double lam, double factor, int null_opts) {
+  call_t *c = add_call(cs, fn);
+  c->iv[2] = maxit;
+  c->iv[3] = refac;
+  c->dv[0] = ec;
+  c->dv[1] = lam;
+  c->dv[2] = factor;
+  c->in[0].null_ = null_opts;
+  return c;
+}
+static call_t *want(call_t *c, int status) {
+  c->want = status + 1;
+  return c;
+}
+/* Oracles of a pristine 3D scene (call_t.oracle; the closed form's
+ * numbers in the getter's dv, which a getter does not pass) and the
+ * reference displacements of its steps (call_t.tag; slot tw_a). */
+enum { SO_TENSION_U = 10, SO_TENSION_S, SO_TENSION_R, SO_TENSION_W, SO_BLOCKS_S, SO_BLOCKS_AREA, SO_BLOCKS_ACTIVE,
+       SO_BLOCKS_R, SO_BLOCKS_P, SO_BLOCKS_F };
+enum { ST_REF = 20, ST_CMP };
+static call_t *s_oracle(case_t *cs, int fn, int oracle, double load, double young, double nu) {
+  call_t *c = add_call(cs, fn);
+  c->oracle = oracle;
+  c->dv[0] = load;
+  c->dv[1] = young;
+  c->dv[2] = nu;
+  c->want = TFEM_STATUS_OK + 1;
+  return c;
+}
+/* The displacements stored in slot `slot` (ST_REF), or compared with
+ * those of the slot times `factor` within rtol of their largest (0: bit
+ * for bit) (ST_CMP). */
+static call_t *s_disp_tag(case_t *cs, int tag, int slot, double factor, double rtol) {
+  call_t *c = add_call(cs, F_S_DISPLACEMENTS);
+  c->tag = tag;
+  c->tw_a = slot;
+  c->dv[0] = factor;
+  c->dv[1] = rtol;
+  c->want = TFEM_STATUS_OK + 1;
+  return c;
+}
+
+static void s_result_getters(rng_t *r, case_t *cs, int contact) {
+  add_call(cs, F_S_GET_SIZES);
+  add_call(cs, F_S_DISPLACEMENTS);
+  if (chance(r, 0.6)) add_call(cs, F_S_REACTIONS);
+  if (chance(r, 0.5)) add_call(cs, F_S_STRAINS);
+  if (chance(r, 0.5)) add_call(cs, F_S_STRESSES);
+  if (chance(r, 0.4)) add_call(cs, F_S_WORK);
+  if (chance(r, 0.4)) add_call(cs, F_S_SOLVE_INFO);
+  if (chance(r, 0.3)) add_call(cs, F_S_ITERATIONS);
+  if (contact) {
+    add_call(cs, F_S_CONTACT_ACTIVE);
+    if (chance(r, 0.6)) add_call(cs, F_S_CONTACT_FORCES);
+    if (chance(r, 0.5)) add_call(cs, F_S_NODAL_PRESSURES);
+    if (chance(r, 0.5)) add_call(cs, F_S_AREA);
+    if (chance(r, 0.4)) s_call(cs, F_S_PAIR_AREA, chance(r, 0.8) ? 0 : rrange(r, -1, 2), 0, 0, 0, 0);
+    if (chance(r, 0.4)) add_call(cs, F_S_CONTACT_TETS);
+  } else if (chance(r, 0.1)) {
+    add_call(cs, chance(r, 0.5) ? F_S_AREA : F_S_CONTACT_FORCES);
+  }
+  if (chance(r, 0.3)) add_call(cs, F_S_WARNING_COUNT);
+  if (chance(r, 0.15)) s_call(cs, F_S_GET_WARNING, 0, 0, 0, 0, 0)->out[0] = (out_spec){LS_FIXED, 512, 0, 0, 0, 0};
+  if (chance(r, 0.15)) s_call(cs, F_S_GET_WARNING_SIZE, rint_(r, 2), 0, 0, 0, 0);
+  if (chance(r, 0.15)) s_call(cs, F_S_WRITE_VTU, chance(r, 0.8) ? VP_FILE : rint_(r, NVTU), 0, 0, 0, 0);
+  if (chance(r, 0.2)) add_call(cs, F_S_FACE_COUNT);
+  if (chance(r, 0.2)) add_call(cs, F_S_MESH_NODES);
+  if (chance(r, 0.2)) add_call(cs, F_S_MESH_TETS)->out[1].null_ = chance(r, 0.3);
+  if (chance(r, 0.2)) add_call(cs, F_S_GET_FACES)->out[1].null_ = chance(r, 0.3);
+  if (chance(r, 0.2)) add_call(cs, F_S_LAST_ERROR)->out[0] = (out_spec){LS_FIXED, 512, 0, 0, 0, 0};
+  if (chance(r, 0.1)) add_call(cs, F_S_LAST_ERROR_LENGTH);
+}
+
+/* A unit cube of n x n x n cells (body 1, E, nu) on rollers (u_x = 0 on
+ * x = 0, tag 1; u_y = 0 on y = 0, tag 3; u_z = 0 on z = 0, tag 5) pulled
+ * by a traction t on x = 1 (tag 2; or a pressure -t there): uniaxial
+ * stress, exactly u = (t x, -nu t y, -nu t z) / E, sigma = (t, 0, ...),
+ * the rollers' reactions -t, the work t^2 / E. */
+static void scene_solid_tension(rng_t *r, case_t *cs, ctx_t *cx, smesh_t *m) {
+  int n = rrange(r, 1, 2), base = rint_(r, 2), k = rint_(r, 3);
+  static const double Es[] = {1.0, 1000.0, 210e9}, ts[] = {0.1, 10.0, 1e6}, nus[] = {0.25, 0.3, 0.0};
+  double E = Es[k], t = ts[k], nu = nus[rint_(r, 3)];
+  kuhn_block(m, n, 0.0, 1, 0);
+  *cx = ctx3(m, base, 1);
+  int mat_first = chance(r, 0.3);
+  if (mat_first) want(s_call(cs, F_S_SET_MATERIAL, 1, 0, E, nu, 0), TFEM_STATUS_OK);
+  want(s_mesh_call(cs, m, base), TFEM_STATUS_OK);
+  s_faces_calls(r, cs, m, base);
+  if (!mat_first) want(s_call(cs, F_S_SET_MATERIAL, 1, 0, E, nu, 0), TFEM_STATUS_OK);
+  if (chance(r, 0.3)) want(s_call(cs, F_S_SET_TEMPERING, chance(r, 0.5) ? 0 : 3, 0, 0, 0, 0), TFEM_STATUS_OK);
+  int order[3] = {0, 1, 2};
+  for (int i = 2; i > 0; --i) {
+    int j = rint_(r, i + 1), x = order[i];
+    order[i] = order[j], order[j] = x;
+  }
+  for (int i = 0; i < 3; ++i) want(s_call(cs, F_S_FIX_FACES, 1 + 2 * order[i], order[i], 0.0, 0, 0), TFEM_STATUS_OK);
+  if (chance(r, 0.6)) want(s_call(cs, F_S_ADD_TRACTION, 2, 0, t, 0.0, 0.0), TFEM_STATUS_OK);
+  else want(s_call(cs, F_S_ADD_PRESSURE, 2, 0, -t, 0, 0), TFEM_STATUS_OK);
+  if (chance(r, 0.2)) want(s_call(cs, F_S_SET_ORDERING, rint_(r, 3), 0, 0, 0, 0), TFEM_STATUS_OK);
+  if (chance(r, 0.5)) want(add_call(cs, F_S_SOLVE), TFEM_STATUS_OK);
+  else want(s_solve_call(cs, F_S_SOLVE_CONTACT, 50, rint_(r, 2), 0, 0, 0, chance(r, 0.5)), TFEM_STATUS_OK);
+  s_oracle(cs, F_S_DISPLACEMENTS, SO_TENSION_U, t, E, nu);
+  if (chance(r, 0.7)) s_oracle(cs, F_S_STRESSES, SO_TENSION_S, t, E, nu);
+  if (chance(r, 0.6)) s_oracle(cs, F_S_REACTIONS, SO_TENSION_R, t, E, nu);
+  if (chance(r, 0.5)) s_oracle(cs, F_S_WORK, SO_TENSION_W, t, E, nu);
+  if (chance(r, 0.2)) want(s_call(cs, F_S_SET_ORDERING, rint_(r, 3), 0, 0, 0, 0), TFEM_STATUS_OK);
+  s_result_getters(r, cs, 0);
+}
+
+/* The stacked cubes of c_tests/solid_test.c: two blocks of n x n x n
+ * cells, body 1 on z in [-1, 0] and body 2 on z in [gap, 1 + gap] (tags
+ * 1..6 and 11..16), on rollers (u_z = 0 under the lower one, u_x = 0 on
+ * x = 0 and u_y = 0 on y = 0 of both), pressed into frictionless contact
+ * (the lower top, tag 6, and the upper bottom, tag 15, a pair either way
+ * round): touching under a pressure p on the upper top (exact: sigma_zz =
+ * -p, every tetrahedron of B active, contact area 1, the rollers carry p),
+ * or across a gap of 0.01 by u_z = -0.02 prescribed there. Returns p (0
+ * with a gap); *upper: the upper block's first node. */
+static double solid_blocks_problem(rng_t *r, case_t *cs, ctx_t *cx, smesh_t *m, int gap, int *upper, double *young) {
+  int n = rrange(r, 1, 2), base = rint_(r, 2);
+  double E = chance(r, 0.5) ? 1.0 : 1000.0, nu = 0.25, p = 0.1 * E;
+  kuhn_block(m, n, -1.0, 1, 0);
+  *upper = kuhn_block(m, n, gap ? 0.01 : 0.0, 2, 10);
+  *young = E;
+  *cx = ctx3(m, base, 2);
+  want(s_mesh_call(cs, m, base), TFEM_STATUS_OK);
+  s_faces_calls(r, cs, m, base);
+  want(s_call(cs, F_S_SET_MATERIAL, 1, 0, E, nu, 0), TFEM_STATUS_OK);
+  want(s_call(cs, F_S_SET_MATERIAL, 2, 0, E, nu, 0), TFEM_STATUS_OK);
+  static const int rollers[5][2] = {{5, TFEM_AXIS_Z}, {1, TFEM_AXIS_X}, {11, TFEM_AXIS_X}, {3, TFEM_AXIS_Y}, {13, TFEM_AXIS_Y}};
+  int first = rint_(r, 5);
+  for (int i = 0; i < 5; ++i)
+    want(s_call(cs, F_S_FIX_FACES, rollers[(first + i) % 5][0], rollers[(first + i) % 5][1], 0.0, 0, 0), TFEM_STATUS_OK);
+  if (gap) {
+    want(s_call(cs, F_S_FIX_FACES, 16, TFEM_AXIS_Z, -0.02, 0, 0), TFEM_STATUS_OK);
+    p = 0;
+  } else if (chance(r, 0.7)) {
+    want(s_call(cs, F_S_ADD_PRESSURE, 16, 0, p, 0, 0), TFEM_STATUS_OK);
+  } else {
+    want(s_call(cs, F_S_ADD_TRACTION, 16, 0, 0.0, 0.0, -p), TFEM_STATUS_OK);
+  }
+  if (chance(r, 0.7)) want(s_call(cs, F_S_ADD_PAIR, 6, 15, 0, 0, 0), TFEM_STATUS_OK);
+  else want(s_call(cs, F_S_ADD_PAIR, 15, 6, 0, 0, 0), TFEM_STATUS_OK);
+  return p;
+}
+
+static void scene_solid_blocks(rng_t *r, case_t *cs, ctx_t *cx, smesh_t *m, int gap) {
+  int upper;
+  double E, p = solid_blocks_problem(r, cs, cx, m, gap, &upper, &E);
+  if (chance(r, 0.2)) want(s_call(cs, F_S_SET_TEMPERING, 0, 0, 0, 0, 0), TFEM_STATUS_OK);
+  if (chance(r, 0.3)) want(add_call(cs, F_S_SOLVE), TFEM_STATUS_OK);
+  else want(s_solve_call(cs, F_S_SOLVE_CONTACT, 50, rint_(r, 2), 0, 0, 0, chance(r, 0.4)), TFEM_STATUS_OK);
+  if (!gap) {
+    s_oracle(cs, F_S_STRESSES, SO_BLOCKS_S, p, E, 0.25);
+    if (chance(r, 0.6)) s_oracle(cs, F_S_REACTIONS, SO_BLOCKS_R, p, E, 0.25);
+    if (chance(r, 0.6)) s_oracle(cs, F_S_NODAL_PRESSURES, SO_BLOCKS_P, p, E, 0.25);
+    if (chance(r, 0.6)) s_oracle(cs, F_S_CONTACT_FORCES, SO_BLOCKS_F, p, E, 0.25)->iv[0] = upper;
+  }
+  s_oracle(cs, F_S_AREA, SO_BLOCKS_AREA, p, E, 0.25);
+  if (chance(r, 0.5)) s_oracle(cs, F_S_PAIR_AREA, SO_BLOCKS_AREA, p, E, 0.25);
+  s_oracle(cs, F_S_CONTACT_ACTIVE, SO_BLOCKS_ACTIVE, p, E, 0.25);
+  s_result_getters(r, cs, 1);
+}
+
+/* Load steps on the touching blocks: a step at a factor a is the solve
+ * times a (the blocks stay in full contact: linear, within 1e-9 of the
+ * largest), reverted to the solve's results bit for bit, once; a step
+ * repeated after its revert, bit for bit; a bad factor refused, the
+ * results kept; new loads (the pressure doubled) discard the results
+ * (a revert refused), and a step at 1 is then twice the solve. */
+static void scene_solid_steps(rng_t *r, case_t *cs, ctx_t *cx, smesh_t *m) {
+  int upper;
+  double E;
+  solid_blocks_problem(r, cs, cx, m, 0, &upper, &E);
+  double p = E * 0.1, a = (double[]){0.5, 0.25, 2.0, 1.0}[rint_(r, 4)];
+  int null_opts = chance(r, 0.5), refac = chance(r, 0.3);
+  want(s_solve_call(cs, F_S_SOLVE_CONTACT, 50, refac, 0, 0, 0, chance(r, 0.5)), TFEM_STATUS_OK);
+  s_disp_tag(cs, ST_REF, 0, 1.0, 0.0);
+  want(s_solve_call(cs, F_S_STEP, 50, refac, 0, 0, a, null_opts), TFEM_STATUS_OK);
+  s_disp_tag(cs, ST_CMP, 0, a, 1e-9);
+  if (chance(r, 0.5)) s_oracle(cs, F_S_STRESSES, SO_BLOCKS_S, a * p, E, 0.25);
+  want(add_call(cs, F_S_REVERT_STEP), TFEM_STATUS_OK);
+  s_disp_tag(cs, ST_CMP, 0, 1.0, 0.0);
+  want(add_call(cs, F_S_REVERT_STEP), TFEM_STATUS_INVALID_STATE);
+  double b = (double[]){0.5, 0.75, 1.5}[rint_(r, 3)];
+  want(s_solve_call(cs, F_S_STEP, 50, refac, 0, 0, b, null_opts), TFEM_STATUS_OK);
+  s_disp_tag(cs, ST_REF, 1, 1.0, 0.0);
+  want(add_call(cs, F_S_REVERT_STEP), TFEM_STATUS_OK);
+  want(s_solve_call(cs, F_S_STEP, 50, refac, 0, 0, b, null_opts), TFEM_STATUS_OK);
+  s_disp_tag(cs, ST_CMP, 1, 1.0, 0.0);
+  if (chance(r, 0.5)) {
+    double bad = (double[]){NAN, INFINITY, -INFINITY, 1e301, -1e301}[rint_(r, 5)];
+    want(s_solve_call(cs, F_S_STEP, 50, refac, 0, 0, bad, null_opts), TFEM_STATUS_INVALID_ARGUMENT);
+    s_disp_tag(cs, ST_CMP, 1, 1.0, 0.0);
+  }
+  if (chance(r, 0.5)) {
+    want(s_call(cs, F_S_ADD_PRESSURE, 16, 0, p, 0, 0), TFEM_STATUS_OK);
+    want(add_call(cs, F_S_REVERT_STEP), TFEM_STATUS_INVALID_STATE);
+    want(s_solve_call(cs, F_S_STEP, 50, refac, 0, 0, 1.0, null_opts), TFEM_STATUS_OK);
+    s_disp_tag(cs, ST_CMP, 0, 2.0, 1e-9);
+  }
+  s_result_getters(r, cs, 1);
+}
+
+/* The interface of tag `tag` of m as one side of a 3D contact context:
+ * host node numbers mul * node + off, equations 3 node + component in the
+ * index base (none for the DOFs the blocks' rollers fix: u_x on x = 0,
+ * u_y on y = 0), triangles counter-clockwise seen from outside (their
+ * normal along out_z). */
+static call_t *s_side_call(case_t *cs, const smesh_t *m, int tag, int body, double young, int base, int mul, int off,
+                           double out_z) {
+  int nf = 0, nn = 0, *nodes = xmalloc(sizeof(int) * 3 * (size_t)m->nf + 1);
+  for (int f = 0; f < m->nf; ++f)
+    if (m->ftag[f] == tag) {
+      ++nf;
+      for (int q = 0; q < 3; ++q) {
+        int v = m->face[3 * f + q], seen = 0;
+        for (int i = 0; i < nn && !seen; ++i) seen = nodes[i] == v;
+        if (!seen) nodes[nn++] = v;
+      }
+    }
+  call_t *c = add_call(cs, F_SC_ADD_SIDE);
+  c->iv[0] = tag;
+  c->iv[1] = body;
+  c->iv[2] = nn;
+  c->iv[3] = nf;
+  c->dv[0] = young;
+  in_set(c, 0, NULL, nn, sizeof(int));
+  in_set(c, 1, NULL, 3 * nn, sizeof(double));
+  in_set(c, 2, NULL, 3 * nn, sizeof(int64_t));
+  in_set(c, 3, NULL, 3 * nf, sizeof(int));
+  for (int i = 0; i < nn; ++i) {
+    int v = nodes[i];
+    ((int *)c->in[0].p)[i] = mul * v + off;
+    for (int k = 0; k < 3; ++k) {
+      ((double *)c->in[1].p)[3 * i + k] = m->xyz[3 * v + k];
+      ((int64_t *)c->in[2].p)[3 * i + k] = k < 2 && m->xyz[3 * v + k] == 0.0 ? base - 1 : 3 * v + k + base;
+    }
+  }
+  for (int f = 0, k = 0; f < m->nf; ++f)
+    if (m->ftag[f] == tag) {
+      int t[3] = {m->face[3 * f], m->face[3 * f + 1], m->face[3 * f + 2]};
+      const double *a = &m->xyz[3 * t[0]], *b = &m->xyz[3 * t[1]], *d = &m->xyz[3 * t[2]];
+      double nz = (b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]);
+      if (nz * out_z < 0) {
+        int x = t[1];
+        t[1] = t[2], t[2] = x;
+      }
+      for (int q = 0; q < 3; ++q) ((int *)c->in[3].p)[3 * k + q] = mul * t[q] + off;
+      ++k;
+    }
+  free(nodes);
+  return c;
+}
+
+/* A 3D host code on the blocks: the model solves them, and a 3D contact
+ * context holds the same interface, its equations those of the model's
+ * DOFs (3 node + component), so that the model's displacements are the
+ * host's solution vector. Every entry point of the context, in the order
+ * of a host's active-set loop. */
+static void scene_solid_host(rng_t *r, case_t *cs, ctx_t *cx, smesh_t *m) {
+  int upper;
+  double E;
+  solid_blocks_problem(r, cs, cx, m, chance(r, 0.2), &upper, &E);
+  want(s_solve_call(cs, F_S_SOLVE_CONTACT, 50, 0, 0, 0, 0, 1), TFEM_STATUS_OK);
+  add_call(cs, F_S_DISPLACEMENTS);
+  int base = rint_(r, 2), mul = chance(r, 0.5) ? 1 : 3, off = chance(r, 0.5) ? base : 7;
+  cs->coupled = 2;
+  cs->hm_mul = mul;
+  cs->hm_off = off;
+  cs->neq = 3 * m->nn;
+  cx->hbase = base;
+  cx->nh = 0;
+  for (int f = 0; f < m->nf && cx->nh < 64; ++f)
+    if (m->ftag[f] == 6 || m->ftag[f] == 15) cx->hids[cx->nh++] = mul * m->face[3 * f] + off;
+  cx->nsides = 2;
+  call_t *c = add_call(cs, F_SC_CREATE);
+  c->iv[2] = chance(r, 0.8) ? 50 : 3;
+  c->iv[4] = base;
+  c->dv[0] = chance(r, 0.7) ? 0 : E;
+  c->dv[1] = chance(r, 0.7) ? 0 : 1.0;
+  c->in[0].null_ = chance(r, 0.5);
+  want(c, TFEM_STATUS_OK);
+  want(s_side_call(cs, m, 6, 1, E, base, mul, off, 1.0), TFEM_STATUS_OK);
+  want(s_side_call(cs, m, 15, 2, E, base, mul, off, -1.0), TFEM_STATUS_OK);
+  want(s_call(cs, F_SC_ADD_PAIR, base, base + 1, 0, 0, 0), TFEM_STATUS_OK);
+  if (chance(r, 0.5)) want(add_call(cs, F_SC_SETUP), TFEM_STATUS_OK);
+  add_call(cs, F_SC_SIZES);
+  add_call(cs, F_SC_NODES);
+  add_call(cs, F_SC_PATTERN);
+  if (chance(r, 0.6)) add_call(cs, F_SC_ELEMENT_EQUATIONS);
+  if (chance(r, 0.5)) add_call(cs, F_SC_ELEMENT_BLOCKS);
+  if (chance(r, 0.5)) add_call(cs, F_SC_TETS);
+  rt_call(cs, F_SC_EVALUATE, 0, rint_(r, 1000)); /* the initial gaps' load */
+  rt_call(cs, F_SC_GATHER, 2, rint_(r, 1000));   /* the model's displacements */
+  rt_call(cs, F_SC_UPDATE, 2, rint_(r, 1000));
+  add_call(cs, F_SC_GET_ACTIVE);
+  rt_call(cs, F_SC_EVALUATE, 2, rint_(r, 1000));
+  rt_call(cs, F_SC_SCATTER_ADD, 1, rint_(r, 1000));
+  add_call(cs, F_SC_AREA);
+  rt_call(cs, F_SC_GAPS, 2, rint_(r, 1000));
+  rt_call(cs, F_SC_SET_ACTIVE, chance(r, 0.5) ? 3 : 2, rint_(r, 1000));
+  add_call(cs, F_SC_GET_ACTIVE);
+  if (chance(r, 0.5)) add_call(cs, F_SC_RESTART);
+  rt_call(cs, F_SC_UPDATE, chance(r, 0.5) ? 0 : 1, rint_(r, 1000));
+  rt_call(cs, F_SC_UPDATE, 2, rint_(r, 1000));
+  rt_call(cs, F_SC_GAPS, 1, rint_(r, 1000));
+  if (chance(r, 0.3)) add_call(cs, F_SC_LAST_ERROR)->out[0] = (out_spec){LS_FIXED, 512, 0, 0, 0, 0};
+  if (chance(r, 0.2)) add_call(cs, F_SC_LAST_ERROR_LENGTH);
+  if (chance(r, 0.2)) {
+    add_call(cs, F_SC_DESTROY);
+    add_call(cs, F_SC_AREA);
+    if (chance(r, 0.5)) add_call(cs, F_SC_LAST_ERROR_LENGTH);
+  }
+}
+
+/* A tetrahedral Gmsh file (SG_VALID 75%: nodes A..E, ABC in groups 10 and
+ * 99, BCE in 20), its mesh and faces read back, held (u_z = 0 on ABC, A
+ * fixed in x and y, B in y) and pressed on BCE, solved; or a file refused
+ * (the model unchanged). */
+static void scene_solid_gmsh(rng_t *r, case_t *cs, ctx_t *cx) {
+  int base = rint_(r, 2), file = chance(r, 0.75) ? SG_VALID : rint_(r, NSG);
+  smesh_t none = {0};
+  *cx = ctx3(&none, base, 1);
+  cx->nn = 5, cx->tags[0] = 10, cx->tags[1] = 20, cx->tags[2] = 99, cx->ntags = 3;
+  call_t *c = s_call(cs, F_S_LOAD_GMSH, file, base, 0, 0, 0);
+  if (file == SG_VALID) want(c, TFEM_STATUS_OK);
+  if (chance(r, 0.3)) s_call(cs, F_S_LOAD_GMSH, 1 + rint_(r, NSG - 1), base, 0, 0, 0);
+  add_call(cs, F_S_GET_SIZES);
+  if (chance(r, 0.6)) add_call(cs, F_S_FACE_COUNT);
+  if (chance(r, 0.6)) add_call(cs, F_S_MESH_NODES);
+  if (chance(r, 0.6)) add_call(cs, F_S_MESH_TETS);
+  if (chance(r, 0.6)) add_call(cs, F_S_GET_FACES);
+  s_call(cs, F_S_SET_MATERIAL, 1, 0, 1.0, 0.3, 0);
+  s_call(cs, F_S_FIX_FACES, 10, TFEM_AXIS_Z, 0.0, 0, 0);
+  s_call(cs, F_S_FIX, base, TFEM_AXIS_X, 0.0, 0, 0);
+  s_call(cs, F_S_FIX, base, TFEM_AXIS_Y, 0.0, 0, 0);
+  s_call(cs, F_S_FIX, base + 1, TFEM_AXIS_Y, 0.0, 0, 0);
+  s_call(cs, F_S_ADD_PRESSURE, 20, 0, 0.1, 0, 0);
+  if (file == SG_VALID) want(add_call(cs, F_S_SOLVE), TFEM_STATUS_OK);
+  else add_call(cs, F_S_SOLVE);
+  s_result_getters(r, cs, 0);
+}
+
+/* A random tetrahedral mesh: 4..14 nodes on the grid of step 1/2 in the
+ * unit cube (20%: scaled by a wild number), 1..12 tetrahedra of random
+ * nodes (10% with a node repeated), some of their faces tagged 1..4, a
+ * random triangle sometimes. */
+static void solid_random_mesh(rng_t *r, smesh_t *m, int nbodies) {
+  int nn = rrange(r, 4, 14), nt = rrange(r, 1, 12);
+  double scale = chance(r, 0.8) ? 1.0 : wild_double(r);
+  for (int i = 0; i < nn; ++i)
+    smesh_node(m, rint_(r, 3) * 0.5 * scale, rint_(r, 3) * 0.5 * scale, rint_(r, 3) * 0.5 * scale);
+  for (int t = 0; t < nt; ++t) {
+    int v[4];
+    for (int k = 0; k < 4; ++k) {
+      v[k] = rint_(r, nn);
+      for (int tries = 0; tries < 20 && chance(r, 0.9); ++tries) {
+        int dup = 0;
+        for (int q = 0; q < k; ++q) dup |= v[q] == v[k];
+        if (!dup) break;
+        v[k] = rint_(r, nn);
+      }
+    }
+    smesh_tet(m, v, 1 + rint_(r, nbodies));
+  }
+  for (int t = 0; t < nt; ++t)
+    for (int skip = 0; skip < 4; ++skip)
+      if (chance(r, 0.25)) {
+        int f[3], k = 0;
+        for (int q = 0; q < 4; ++q)
+          if (q != skip) f[k++] = m->tet[4 * t + q];
+        smesh_face(m, f[0], f[1], f[2], rrange(r, 1, 4));
+      }
+  if (chance(r, 0.1)) smesh_face(m, rint_(r, nn), rint_(r, nn), rint_(r, nn), rrange(r, 1, 4));
+}
+
+/* Whether call c passes a handle (and so can be given another one). */
+static int takes_handle(int fn) { return FN[fn].model != 0; }
+/* A handle of another kind than fn's, or one of its own destroyed (5). */
+static int other_handle(rng_t *r, int fn) {
+  int own = FN[fn].model, h;
+  do h = rrange(r, 1, 5);
+  while (h == own);
+  return h;
+}
+
+static int huge_count(rng_t *r, call_t *c);
+/* A random 3D call (or a 2D one given a 3D handle); arguments plausible
+ * for the context, each made wild with probability `wild`. */
+static void random_solid_call(rng_t *r, case_t *cs, const ctx_t *cx, const smesh_t *sm, double wild, int at, int forced) {
+  static const int weight[NF] = {
+      [F_S_LAST_ERROR] = 3, [F_S_LAST_ERROR_LENGTH] = 2, [F_S_WARNING_COUNT] = 2, [F_S_GET_WARNING_SIZE] = 2,
+      [F_S_GET_WARNING] = 2, [F_S_SET_MESH] = 3, [F_S_LOAD_GMSH] = 2, [F_S_SET_FACES] = 3, [F_S_ADD_FACES] = 3,
+      [F_S_GET_SIZES] = 2, [F_S_FACE_COUNT] = 2, [F_S_MESH_NODES] = 2, [F_S_MESH_TETS] = 2, [F_S_GET_FACES] = 2,
+      [F_S_SET_MATERIAL] = 4, [F_S_SET_TEMPERING] = 3, [F_S_SET_ORDERING] = 2, [F_S_FIX] = 4, [F_S_FIX_FACES] = 4,
+      [F_S_CLEAR_CONSTRAINTS] = 2, [F_S_ADD_PRESSURE] = 3, [F_S_ADD_TRACTION] = 3, [F_S_ADD_NODAL_FORCE] = 3,
+      [F_S_CLEAR_LOADS] = 2, [F_S_ADD_PAIR] = 3, [F_S_CLEAR_PAIRS] = 2, [F_S_SOLVE] = 5, [F_S_SOLVE_CONTACT] = 5,
+      [F_S_STEP] = 4, [F_S_REVERT_STEP] = 3, [F_S_SOLVE_INFO] = 2, [F_S_ITERATIONS] = 2, [F_S_DISPLACEMENTS] = 4,
+      [F_S_STRAINS] = 2, [F_S_STRESSES] = 3, [F_S_REACTIONS] = 3, [F_S_WORK] = 2, [F_S_CONTACT_TETS] = 2,
+      [F_S_CONTACT_ACTIVE] = 3, [F_S_CONTACT_FORCES] = 3, [F_S_NODAL_PRESSURES] = 3, [F_S_AREA] = 2,
+      [F_S_PAIR_AREA] = 2, [F_S_WRITE_VTU] = 2, [F_S_DESTROY] = 1, [F_S_RECREATE] = 1,
+      [F_SC_CREATE] = 3, [F_SC_DESTROY] = 1, [F_SC_LAST_ERROR] = 2, [F_SC_LAST_ERROR_LENGTH] = 1, [F_SC_ADD_SIDE] = 4,
+      [F_SC_ADD_PAIR] = 3, [F_SC_SETUP] = 2, [F_SC_SIZES] = 2, [F_SC_NODES] = 1, [F_SC_TETS] = 1, [F_SC_PATTERN] = 1,
+      [F_SC_ELEMENT_EQUATIONS] = 1, [F_SC_ELEMENT_BLOCKS] = 1, [F_SC_EVALUATE] = 2, [F_SC_GATHER] = 2,
+      [F_SC_SCATTER_ADD] = 2, [F_SC_UPDATE] = 2, [F_SC_RESTART] = 1, [F_SC_GET_ACTIVE] = 1, [F_SC_SET_ACTIVE] = 1,
+      [F_SC_GAPS] = 2, [F_SC_AREA] = 1,
+      /* 2D functions, given a 3D handle */
+      [F_GET_SIZES] = 1, [F_SOLVE] = 1, [F_SET_MATERIAL] = 1, [F_LAST_ERROR] = 1, [F_LAST_ERROR_LENGTH] = 1,
+      [F_GET_DISPLACEMENTS] = 1, [F_CONTACT_SIZES] = 1, [F_CONTACT_LAST_ERROR] = 1, [F_CONTACT_LAST_ERROR_LENGTH] = 1,
+      [F_CONTACT_EVALUATE] = 1};
+  int total = 0;
+  for (int f = 0; f < NF; ++f) total += weight[f];
+  int x = rint_(r, total), fn = 0;
+  while (x >= weight[fn]) x -= weight[fn++];
+  if (forced >= 0) fn = forced;
+  case_t one = {0};
+  call_t *c = add_call(&one, fn);
+  for (int k = 0; k < fn_ni(fn); ++k) {
+    char role = FN[fn].ir[k];
+    c->iv[k] = plausible_int(r, role, cx);
+    if (chance(r, wild) && role != 'c') c->iv[k] = wild_int(r, role, c->iv[k], cx);
+  }
+  for (int k = 0; k < fn_nd(fn); ++k)
+    c->dv[k] = chance(r, wild) ? wild_double(r) : plausible_double(r, FN[fn].dr[k]);
+  switch (fn) {
+  case F_S_SET_MESH: {
+    smesh_t rm = {0};
+    const smesh_t *use = sm && sm->nt && chance(r, 0.5) ? sm : (solid_random_mesh(r, &rm, cx->nbodies > 1 ? 2 : 1), &rm);
+    c->iv[0] = use->nn;
+    c->iv[1] = use->nt;
+    c->iv[2] = chance(r, wild) ? wild_int(r, 'B', cx->base, cx) : cx->base;
+    in_set(c, 0, use->xyz, 3 * use->nn, sizeof(double));
+    in_set(c, 1, NULL, 4 * use->nt, sizeof(int));
+    for (int k = 0; k < 4 * use->nt; ++k) ((int *)c->in[1].p)[k] = use->tet[k] + cx->base;
+    in_set(c, 2, use->body, use->nt, sizeof(int));
+    smesh_free(&rm);
+    break;
+  }
+  case F_S_SET_FACES: case F_S_ADD_FACES: {
+    /* the scene's faces (set: most of them; add: one tag's, as it or
+     * under another tag), sometimes a face inside the mesh (of two
+     * tetrahedra) or random nodes */
+    int nf = 0, cap = (sm ? sm->nf : 0) + 4, tag = sm && sm->nf ? sm->ftag[rint_(r, sm->nf)] : 1;
+    int as = fn == F_S_ADD_FACES && chance(r, 0.4) ? pick_tag(r, cx) : INT_MIN;
+    int *fv = xmalloc(sizeof(int) * 3 * (size_t)cap), *tg = xmalloc(sizeof(int) * (size_t)cap);
+    double keep = chance(r, 0.5) ? 1.0 : 0.8;
+    for (int f = 0; sm && f < sm->nf; ++f)
+      if ((fn == F_S_SET_FACES || sm->ftag[f] == tag) && chance(r, keep)) {
+        for (int q = 0; q < 3; ++q) fv[3 * nf + q] = sm->face[3 * f + q] + cx->base;
+        tg[nf++] = as != INT_MIN ? as : chance(r, 0.9) ? sm->ftag[f] : pick_tag(r, cx);
+      }
+    if (sm && sm->nt > 1 && chance(r, 0.2)) { /* a face of a tetrahedron, maybe inside */
+      int t = rint_(r, sm->nt), skip = rint_(r, 4), k = 0;
+      for (int q = 0; q < 4; ++q)
+        if (q != skip) fv[3 * nf + k++] = sm->tet[4 * t + q] + cx->base;
+      tg[nf++] = pick_tag(r, cx);
+    }
+    if (nf == 0 || chance(r, 0.1)) {
+      for (int q = 0; q < 3; ++q) fv[3 * nf + q] = pick_node(r, cx);
+      tg[nf++] = pick_tag(r, cx);
+    }
+    c->iv[0] = nf;
+    in_set(c, 0, fv, 3 * nf, sizeof(int));
+    in_set(c, 1, tg, nf, sizeof(int));
+    free(fv), free(tg);
+    break;
+  }
+  case F_SC_ADD_SIDE:
+    if (sm && sm->nf && chance(r, 0.7)) {
+      /* a side of the scene's interface (tag 6 or 15), in the case's host numbering */
+      int tag = chance(r, 0.5) ? 6 : 15, mul = cs->hm_mul > 0 ? cs->hm_mul : 1, off = cs->hm_mul > 0 ? cs->hm_off : cx->hbase;
+      case_t tmp = {0};
+      call_t *sc = s_side_call(&tmp, sm, tag, tag == 6 ? 1 : 2, chance(r, wild) ? wild_double(r) : 1.0, cx->hbase, mul, off,
+                               tag == 6 ? 1.0 : -1.0);
+      if (sc->iv[3] > 0) {
+        call_t keep_c;
+        memset(&keep_c, 0, sizeof keep_c);
+        for (int j = 0; j < 4; ++j) in_set(c, j, sc->in[j].p, sc->in[j].n, in_el(F_SC_ADD_SIDE, j));
+        c->iv[0] = sc->iv[0], c->iv[1] = sc->iv[1], c->iv[2] = sc->iv[2], c->iv[3] = sc->iv[3], c->dv[0] = sc->dv[0];
+        (void)keep_c;
+      }
+      case_free(&tmp);
+    }
+    break;
+  case F_S_SOLVE_CONTACT: case F_S_STEP: case F_SC_CREATE:
+    if (!chance(r, wild)) c->iv[0] = c->iv[1] = 0; /* (frictionless, the 3D test: what 3D takes) */
+    if (fn == F_SC_CREATE) c->iv[4] = chance(r, wild) ? wild_int(r, 'B', cx->hbase, cx) : cx->hbase;
+    if (chance(r, 0.2)) c->in[0].null_ = 1;
+    break;
+  case F_S_LAST_ERROR: case F_SC_LAST_ERROR: case F_S_GET_WARNING: case F_LAST_ERROR: case F_CONTACT_LAST_ERROR:
+    c->out[0] = (out_spec){chance(r, 0.7) ? LS_FIXED : LS_EXACT, rint_(r, 3) ? 512 : rint_(r, 40), 0, 0, 0, 0};
+    break;
+  default: break;
+  }
+  fix_arrays(r, c, cx);
+  if (chance(r, wild * 0.1)) huge_count(r, c);
+  if (FN[fn].model && chance(r, wild * 0.2)) c->null_model = 1;
+  /* a handle of another kind: the 2D functions always get one (the 2D
+   * model of a 3D case holds nothing), the 3D ones sometimes */
+  if (takes_handle(fn) && (FN[fn].model <= 2 || chance(r, 0.03 + wild * 0.2))) c->handle = other_handle(r, fn);
+  if (FN[fn].model <= 2 && c->handle == 5) c->handle = 3 + rint_(r, 2);
+  for (int j = 0; j < fn_nout(fn); ++j) {
+    if (chance(r, wild * 0.3)) c->out[j].null_ = 1;
+    else if (!FN[fn].scalar_out && chance(r, wild * 0.5))
+      c->out[j] = (out_spec){LS_REL, chance(r, 0.7) ? -1 : rrange(r, -3, 3), 0, 0, 0, 0};
+  }
+  c->mutated = 1;
+  case_insert_copy(cs, at < 0 ? cs->n : at, c);
+  case_free(&one);
+}
+
+/* A count of call c made huge (INT_MAX, 2^30, 2^28) with the arrays it
+ * sizes NULL: a count larger than its array is the caller's error, but
+ * with the array NULL the call must be refused before it reads or
+ * reserves anything (no abort, no huge allocation). Returns 0 if c has no
+ * count. */
+static int huge_count(rng_t *r, call_t *c) {
+  int fn = c->fn, ks[4], nk = 0;
+  for (int i = 0; i < fn_ni(fn); ++i)
+    if (FN[fn].ir[i] == 'c') ks[nk++] = i;
+  if (!nk) return 0;
+  int k = ks[rint_(r, nk)];
+  c->iv[k] = (int[]){INT_MAX, 1 << 30, 1 << 28}[rint_(r, 3)];
+  switch (fn) {
+  case F_S_SET_MESH:
+    if (k == 0) c->in[0].null_ = 1;
+    else c->in[1].null_ = c->in[2].null_ = 1;
+    break;
+  case F_S_SET_FACES: case F_S_ADD_FACES: c->in[0].null_ = c->in[1].null_ = 1; break;
+  case F_SC_ADD_SIDE:
+    if (k == 2) c->in[0].null_ = c->in[1].null_ = c->in[2].null_ = 1;
+    else c->in[3].null_ = 1;
+    break;
+  default:
+    for (int j = 0; j < fn_nin(fn); ++j) c->in[j].null_ = 1;
+    break;
+  }
+  c->mutated = 1;
+  return 1;
+}
+
+/* Structural and argument mutations of a 3D scene. */
+static void solid_mutate_case(rng_t *r, case_t *cs, const ctx_t *cx, const smesh_t *sm) {
+  int n_mut = rrange(r, 1, 4);
+  for (int k = 0; k < n_mut && cs->n > 0; ++k) {
+    int i = rint_(r, cs->n);
+    switch (rint_(r, 16)) {
+    case 0: case 1: case 2: mutate_arg(r, &cs->c[i], cx); break;
+    case 3: { /* an argument, or a count made huge with its arrays NULL */
+      int tries = 0;
+      if (chance(r, 0.5)) {
+        mutate_arg(r, &cs->c[i], cx);
+        break;
+      }
+      while (tries++ < 40 && !strchr(FN[cs->c[i].fn].ir, 'c')) i = rint_(r, cs->n);
+      if (!huge_count(r, &cs->c[i])) mutate_arg(r, &cs->c[i], cx);
+      break;
+    }
+    case 4: case 5: random_solid_call(r, cs, cx, sm, 0.3, rint_(r, cs->n + 1), -1); break;
+    case 6: if (cs->n > 1) case_delete(cs, i); break;
+    case 7: { /* duplicate, maybe mutated, right after or later */
+      int at = chance(r, 0.5) ? i + 1 : rrange(r, i + 1, cs->n);
+      case_insert_copy(cs, at, &cs->c[i]);
+      cs->c[at].mutated = 1;
+      if (chance(r, 0.5)) mutate_arg(r, &cs->c[at], cx);
+      break;
+    }
+    case 8: if (i + 1 < cs->n) { /* swap neighbours */
+        call_t t = cs->c[i];
+        cs->c[i] = cs->c[i + 1];
+        cs->c[i + 1] = t;
+        cs->c[i].mutated = cs->c[i + 1].mutated = 1;
+      }
+      break;
+    case 9: { /* move a call elsewhere */
+      call_t t = cs->c[i];
+      memmove(&cs->c[i], &cs->c[i + 1], (size_t)(cs->n - 1 - i) * sizeof(call_t));
+      int at = rint_(r, cs->n);
+      memmove(&cs->c[at + 1], &cs->c[at], (size_t)(cs->n - 1 - at) * sizeof(call_t));
+      cs->c[at] = t;
+      cs->c[at].mutated = 1;
+      break;
+    }
+    case 10: { /* a handle of another kind, or destroyed, on a call that takes one */
+      int tries = 0;
+      while (tries++ < 40 && !takes_handle(cs->c[i].fn)) i = rint_(r, cs->n);
+      if (takes_handle(cs->c[i].fn)) {
+        cs->c[i].handle = other_handle(r, cs->c[i].fn);
+        cs->c[i].mutated = 1;
+      }
+      break;
+    }
+    case 11: { /* an extreme magnitude for a physical value */
+      static const double ext[] = {1e300, DBL_MAX, 1e200, 1e155, 1e-300, 4.9406564584124654e-324, 1e-200, 1e30};
+      int tries = 0;
+      while (tries++ < 40 && !(fn_nd(cs->c[i].fn) > 0 && FN[cs->c[i].fn].model)) i = rint_(r, cs->n);
+      call_t *c = &cs->c[i];
+      if (fn_nd(c->fn) > 0 && FN[c->fn].model) {
+        int kk = rint_(r, fn_nd(c->fn));
+        c->dv[kk] = ext[rint_(r, 8)] * (c->dv[kk] < 0 ? -1 : 1);
+        c->mutated = 1;
+      }
+      break;
+    }
+    case 12: { /* another solve or step, with other options */
+      case_t one = {0};
+      int fn = (int[]){F_S_SOLVE, F_S_SOLVE_CONTACT, F_S_STEP, F_S_REVERT_STEP}[rint_(r, 4)];
+      call_t *c = s_solve_call(&one, fn, chance(r, 0.3) ? 1 : 50, rint_(r, 2), chance(r, 0.8) ? 0 : wild_double(r),
+                               chance(r, 0.8) ? 0 : 0.5, plausible_double(r, 'a'), chance(r, 0.3));
+      c->mutated = 1;
+      case_insert_copy(cs, rint_(r, cs->n + 1), c);
+      case_free(&one);
+      break;
+    }
+    case 13: { /* the model or the context re-created or destroyed, or a handle destroyed as another kind */
+      case_t one = {0};
+      int fn = (int[]){F_S_RECREATE, F_S_DESTROY, F_SC_DESTROY, F_SC_CREATE}[rint_(r, 4)];
+      call_t *c = add_call(&one, fn);
+      if (fn == F_S_DESTROY || (fn == F_SC_DESTROY && chance(r, 0.6))) c->handle = other_handle(r, fn);
+      if (fn == F_SC_CREATE) c->iv[2] = 50, c->iv[4] = cx->hbase;
+      c->mutated = 1;
+      case_insert_copy(cs, rint_(r, cs->n + 1), c);
+      case_free(&one);
+      break;
+    }
+    case 14: /* faces given late (while constraints, loads or pairs name them) or again */
+      random_solid_call(r, cs, cx, sm, 0.0, rrange(r, cs->n / 2, cs->n), chance(r, 0.5) ? F_S_SET_FACES : F_S_ADD_FACES);
+      break;
+    default: { /* the ordering (results kept) anywhere */
+      case_t one = {0};
+      call_t *c = s_call(&one, F_S_SET_ORDERING, chance(r, 0.8) ? rint_(r, 3) : (int[]){-1, 3, INT_MIN}[rint_(r, 3)], 0,
+                         0, 0, 0);
+      c->mutated = 1;
+      case_insert_copy(cs, rint_(r, cs->n + 1), c);
+      if (chance(r, 0.5)) {
+        case_t two = {0};
+        add_call(&two, F_S_DISPLACEMENTS)->mutated = 1;
+        case_insert_copy(cs, rint_(r, cs->n + 1), &two.c[0]);
+        case_free(&two);
+      }
+      case_free(&one);
+      break;
+    }
+    }
+  }
+}
+
+/* Builds a 3D case (valid scenes, mutated or left pristine; random
+ * sequences), from the case's own stream r. */
+static void gen_solid_case(rng_t *r, case_t *cs) {
+  smesh_t sm = {0};
+  ctx_t cx;
+  memset(&cx, 0, sizeof cx);
+  cs->solid = 1;
+  if (chance(r, 0.65)) {
+    int s = rint_(r, 20);
+    if (s < 4) { cs->kind = "solid_tension"; scene_solid_tension(r, cs, &cx, &sm); }
+    else if (s < 7) { cs->kind = "solid_blocks"; scene_solid_blocks(r, cs, &cx, &sm, 0); }
+    else if (s < 9) { cs->kind = "solid_gap"; scene_solid_blocks(r, cs, &cx, &sm, 1); }
+    else if (s < 13) { cs->kind = "solid_steps"; scene_solid_steps(r, cs, &cx, &sm); }
+    else if (s < 18) { cs->kind = "solid_host"; scene_solid_host(r, cs, &cx, &sm); }
+    else { cs->kind = "solid_gmsh"; scene_solid_gmsh(r, cs, &cx); }
+    if (chance(r, 0.25)) cs->pristine = 1;
+    else solid_mutate_case(r, cs, &cx, &sm);
+  } else {
+    cs->kind = "solid_random";
+    int nb = rrange(r, 1, 2);
+    if (chance(r, 0.3)) {
+      int upper;
+      double E;
+      solid_blocks_problem(r, cs, &cx, &sm, chance(r, 0.3), &upper, &E);
+      for (int i = 0; i < cs->n; ++i) cs->c[i].want = 0;
+      cx.hbase = rint_(r, 2), cx.nsides = 2;
+    } else if (chance(r, 0.8)) {
+      solid_random_mesh(r, &sm, nb);
+      cx = ctx3(&sm, rint_(r, 2), nb);
+      s_mesh_call(cs, &sm, cx.base);
+      if (chance(r, 0.8) && sm.nf) s_faces_calls(r, cs, &sm, cx.base);
+      for (int b = 1; b <= nb; ++b)
+        if (chance(r, 0.8)) s_call(cs, F_S_SET_MATERIAL, b, 0, plausible_double(r, 'E'), plausible_double(r, 'p'), 0);
+      if (chance(r, 0.6)) {
+        /* three nodes of every tetrahedron held (80%; else half the nodes),
+         * loads on the others and on a tag: a solve that may succeed on any
+         * geometry (flat, inverted, huge, tiny) */
+        int every = chance(r, 0.8);
+        char *held = xcalloc((size_t)sm.nn + 1, 1);
+        for (int t = 0; t < sm.nt && every; ++t)
+          for (int q = 0; q < 3; ++q) held[sm.tet[4 * t + q]] = 1;
+        for (int v = 0; v < sm.nn && !every; ++v) held[v] = chance(r, 0.5);
+        for (int b = 1; b <= nb; ++b) s_call(cs, F_S_SET_MATERIAL, b, 0, plausible_double(r, 'E'), 0.3, 0);
+        for (int v = 0; v < sm.nn; ++v)
+          if (held[v])
+            for (int k = 0; k < 3; ++k) s_call(cs, F_S_FIX, v + cx.base, k, chance(r, 0.8) ? 0.0 : plausible_double(r, 'u'), 0, 0);
+        free(held);
+        s_call(cs, F_S_ADD_NODAL_FORCE, rint_(r, sm.nn) + cx.base, 0, plausible_double(r, 'f'), plausible_double(r, 'f'),
+               plausible_double(r, 'f'));
+        if (sm.nf && chance(r, 0.5)) s_call(cs, F_S_ADD_PRESSURE, sm.ftag[rint_(r, sm.nf)], 0, plausible_double(r, 'f'), 0, 0);
+        if (chance(r, 0.5)) add_call(cs, F_S_SOLVE);
+        else s_solve_call(cs, F_S_SOLVE_CONTACT, 50, rint_(r, 2), 0, 0, 0, chance(r, 0.5));
+        s_result_getters(r, cs, chance(r, 0.3));
+      }
+    } else {
+      cx = ctx3(NULL, rint_(r, 2), 2);
+      cx.nn = rrange(r, 0, 6);
+    }
+    int n = rrange(r, 3, 40);
+    double wild = runif(r) * 0.5;
+    for (int k = 0; k < n; ++k) random_solid_call(r, cs, &cx, sm.nt ? &sm : NULL, wild, -1, -1);
+  }
+  smesh_free(&sm);
+}
+
 /* Builds case number `index` of `seed`. */
 static void gen_case(uint64_t seed, long index, case_t *cs, mesh_t *m) {
   rng_t r = {mix64(seed * 0x9e3779b97f4a7c15ULL + (uint64_t)index)};
   memset(cs, 0, sizeof *cs);
   cs->seed = seed;
   cs->index = index;
+  /* (a 3D case, from a stream of its own: the others are as they were) */
+  rng_t r3 = {mix64(seed * 0x9e3779b97f4a7c15ULL + (uint64_t)index) ^ 0x3d3d3d3d3d3d3d3dULL};
+  if (runif(&r3) < g_solid_share) {
+    gen_solid_case(&r3, cs);
+    return;
+  }
   ctx_t cx = {0};
   int kind = rint_(&r, 100);
   if (kind < 70) {
@@ -4289,6 +5469,285 @@ static int circle_expect(const shadow_t *s, int tag, double x, double y, double 
 }
 
 /* ------------------------------------------------------------------------ */
+/* The 3D model and its contact context: the shadow and the checks           */
+/* ------------------------------------------------------------------------ */
+
+/* What the tester knows the 3D model (and the 3D context) hold. */
+typedef struct {
+  int tag, type; /* 0 pressure, 1 traction */
+  double v[3];
+} ss_load;
+
+typedef struct {
+  int has_mesh; /* a mesh was set (by set_mesh or a Gmsh file) */
+  int exact;    /* and it is known here */
+  int nn, nt, base;
+  double *xyz;
+  int *tet, *body; /* 0-based, as the model holds them (renumbered) */
+  int nf, *face, *ftag;
+  /* what names the faces (the model refuses new faces while any is declared) */
+  int constrained, loaded, npairs;
+  int pair_tag[16][2];
+  double *presc;  /* 3 per node, NAN: free */
+  double *nforce; /* 3 per node */
+  ss_load *load;
+  int nl;
+  /* the results: 0 none, 1 a solve's, 2 a step's; not known here; a step
+   * to revert (1 yes, 0 no, -1 not known) and what it would bring back */
+  int results, res_unknown, undo, pre_results, pre_unknown;
+  long sol_gen;
+  uint64_t disp_hash, pre_disp_hash;
+  long disp_gen;
+  int disp_idx, pre_disp_ok, pre_disp_idx;
+  /* the bodies given a material (the model's: a new mesh keeps them; 16
+   * kept, more: not known) */
+  int nmat, mat_body[16];
+  /* the reference displacements of a pristine scene (ST_REF) */
+  double *ref[2];
+  long nref[2];
+  /* the 3D context: made, its index base, sides (bodies), pairs, B built,
+   * the interface nodes in the order the sides first gave them (with their
+   * coordinates and equations, 0-based, -1 none; more than 512: not known) */
+  int sc_live, sc_base, sc_nsides, sc_npairs, sc_built;
+  int sc_side_body[64];
+  int sc_nn;
+  int sc_ids[512];
+  double sc_xyz[512][3];
+  int64_t sc_eq[512][3];
+} sshadow_t;
+
+static void ss_clear_mesh(sshadow_t *s) {
+  free(s->xyz), free(s->tet), free(s->body), free(s->face), free(s->ftag), free(s->presc), free(s->nforce),
+      free(s->load);
+  s->xyz = s->presc = s->nforce = NULL;
+  s->tet = s->body = s->face = s->ftag = NULL;
+  s->load = NULL;
+  s->has_mesh = s->exact = s->nn = s->nt = s->nf = s->nl = 0;
+  s->constrained = s->loaded = s->npairs = 0;
+  s->results = s->res_unknown = s->undo = 0;
+  s->sol_gen++;
+}
+static void ss_free(sshadow_t *s) {
+  ss_clear_mesh(s);
+  free(s->ref[0]), free(s->ref[1]);
+  s->ref[0] = s->ref[1] = NULL;
+}
+
+/* J = det[x1 - x0, x2 - x0, x3 - x0] and the longest edge, as
+ * src/fem/tet.rs TetGeometry computes them (the same operations). */
+static double ss_j(const double *x0, const double *x1, const double *x2, const double *x3, double *h) {
+  const double *x[4] = {x0, x1, x2, x3};
+  double e1[3], e2[3], e3[3];
+  for (int k = 0; k < 3; ++k) e1[k] = x1[k] - x0[k], e2[k] = x2[k] - x0[k], e3[k] = x3[k] - x0[k];
+  double a1[3] = {e2[1] * e3[2] - e2[2] * e3[1], e2[2] * e3[0] - e2[0] * e3[2], e2[0] * e3[1] - e2[1] * e3[0]};
+  double hh = 0.0;
+  for (int i = 0; i < 4; ++i)
+    for (int k = i + 1; k < 4; ++k) {
+      double d[3] = {x[i][0] - x[k][0], x[i][1] - x[k][1], x[i][2] - x[k][2]};
+      hh = fmax(hh, sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]));
+    }
+  if (h) *h = hh;
+  return e1[0] * a1[0] + e1[1] * a1[1] + e1[2] * a1[2];
+}
+
+/* A new mesh (tet0: 0-based as given); a tetrahedron of negative J is
+ * renumbered, its last two nodes swapped (src/fem/solid_mesh.rs). */
+static void ss_new_mesh(sshadow_t *s, int nn, const double *xyz, int nt, const int *tet0, const int *body, int base) {
+  ss_clear_mesh(s);
+  s->has_mesh = s->exact = 1;
+  s->nn = nn, s->nt = nt, s->base = base;
+  s->xyz = xmalloc(sizeof(double) * 3 * (size_t)nn + 1);
+  memcpy(s->xyz, xyz, sizeof(double) * 3 * (size_t)nn);
+  s->tet = xmalloc(sizeof(int) * 4 * (size_t)nt + 1);
+  memcpy(s->tet, tet0, sizeof(int) * 4 * (size_t)nt);
+  s->body = xmalloc(sizeof(int) * (size_t)nt + 1);
+  memcpy(s->body, body, sizeof(int) * (size_t)nt);
+  for (int e = 0; e < nt; ++e) {
+    int *t = &s->tet[4 * e];
+    if (ss_j(&xyz[3 * t[0]], &xyz[3 * t[1]], &xyz[3 * t[2]], &xyz[3 * t[3]], NULL) < 0.0) {
+      int x = t[2];
+      t[2] = t[3], t[3] = x;
+    }
+  }
+  s->presc = xmalloc(sizeof(double) * 3 * (size_t)nn + 1);
+  for (int k = 0; k < 3 * nn; ++k) s->presc[k] = NAN;
+  s->nforce = xcalloc(3 * (size_t)nn + 1, sizeof(double));
+}
+/* The mesh of SG_VALID (c_tests/solid_test.c's: node i the i-th of the file). */
+static void ss_gmsh_valid(sshadow_t *s, int base) {
+  static const double xyz[15] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1};
+  static const int tet[8] = {0, 1, 2, 3, 1, 2, 3, 4}, body[2] = {1, 1}, face[9] = {0, 1, 2, 0, 1, 2, 1, 2, 4};
+  static const int tag[3] = {10, 99, 20};
+  ss_new_mesh(s, 5, xyz, 2, tet, body, base);
+  s->nf = 3;
+  s->face = xmalloc(sizeof face);
+  s->ftag = xmalloc(sizeof tag);
+  memcpy(s->face, face, sizeof face);
+  memcpy(s->ftag, tag, sizeof tag);
+}
+static void ss_sorted3(const int *f, int *k) {
+  k[0] = f[0], k[1] = f[1], k[2] = f[2];
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2 - i; ++j)
+      if (k[j] > k[j + 1]) {
+        int x = k[j];
+        k[j] = k[j + 1], k[j + 1] = x;
+      }
+}
+/* The tetrahedra having face f (0-based nodes): their count, the first. */
+static int ss_owners(const sshadow_t *s, const int *f, int *owner) {
+  int key[3], n = 0;
+  ss_sorted3(f, key);
+  for (int e = 0; e < s->nt; ++e)
+    for (int skip = 0; skip < 4; ++skip) {
+      int g[3], k = 0, gk[3];
+      for (int q = 0; q < 4; ++q)
+        if (q != skip) g[k++] = s->tet[4 * e + q];
+      ss_sorted3(g, gk);
+      if (gk[0] == key[0] && gk[1] == key[1] && gk[2] == key[2] && n++ == 0) *owner = e;
+    }
+  return n;
+}
+static int ss_tag_faces(const sshadow_t *s, int tag) {
+  int n = 0;
+  for (int f = 0; f < s->nf; ++f) n += s->ftag[f] == tag;
+  return n;
+}
+static int ss_has_material(const sshadow_t *s, int body) {
+  for (int k = 0; k < s->nmat && k < 16; ++k)
+    if (s->mat_body[k] == body) return 1;
+  return s->nmat > 16 ? -1 : 0;
+}
+/* A body of the mesh without a material: 1 some (*which), 0 none, -1 not known. */
+static int ss_missing_material(const sshadow_t *s, int *which) {
+  if (!s->exact) return -1;
+  int unknown = 0;
+  for (int e = 0; e < s->nt; ++e) {
+    int h = ss_has_material(s, s->body[e]);
+    if (h == 0) {
+      *which = s->body[e];
+      return 1;
+    }
+    unknown |= h < 0;
+  }
+  return unknown ? -1 : 0;
+}
+/* The faces (3 node indices each in the index base, tags) a call gives
+ * are refused by the header's rules: 1 (why), 0 not, -1 not known here. */
+static int ss_faces_refused(const sshadow_t *s, const call_t *c, char *why, size_t cap) {
+  int n = c->iv[0], add = c->fn == F_S_ADD_FACES;
+  if (!s->has_mesh) return snprintf(why, cap, "no mesh"), 1;
+  if (n < 0) return snprintf(why, cap, "n_faces = %d", n), 1;
+  if (n > 0 && (c->in[0].null_ || c->in[1].null_)) return snprintf(why, cap, "an array NULL"), 1;
+  if (!s->exact) return -1;
+  if (s->constrained || s->loaded || s->npairs)
+    return snprintf(why, cap, "constraints, loads or contact pairs name the faces"), 1;
+  if (n > 0 && (c->in[0].n < 3 * n || c->in[1].n < n)) return -1;
+  const int *fv = c->in[0].p, *tg = c->in[1].p;
+  for (int f = 0; f < n; ++f) {
+    int g[3];
+    for (int q = 0; q < 3; ++q) {
+      long v = (long)fv[3 * f + q] - s->base;
+      if (v < 0 || v >= s->nn) return snprintf(why, cap, "face %d: node %d out of range", f, fv[3 * f + q]), 1;
+      g[q] = (int)v;
+    }
+    int owner = -1, count = ss_owners(s, g, &owner);
+    if (count != 1) return snprintf(why, cap, "face %d is a face of %d tetrahedra", f, count), 1;
+    double h, j = ss_j(&s->xyz[3 * s->tet[4 * owner]], &s->xyz[3 * s->tet[4 * owner + 1]], &s->xyz[3 * s->tet[4 * owner + 2]],
+                       &s->xyz[3 * s->tet[4 * owner + 3]], &h);
+    /* (as src/fem/solid_mesh.rs tests it: a J that is NaN is not flat) */
+    if (fabs(j) <= 1e-12 * h * h * h) return snprintf(why, cap, "face %d is a face of a flat tetrahedron only", f), 1;
+    int key[3];
+    ss_sorted3(g, key);
+    for (int e = 0; e < (add ? s->nf : 0) + f; ++e) {
+      int other[3], ok[3], otag;
+      if (add && e < s->nf) {
+        memcpy(other, &s->face[3 * e], sizeof other);
+        otag = s->ftag[e];
+      } else {
+        int k = add ? e - s->nf : e;
+        for (int q = 0; q < 3; ++q) other[q] = fv[3 * k + q] - s->base;
+        otag = tg[k];
+      }
+      ss_sorted3(other, ok);
+      if (otag == tg[f] && ok[0] == key[0] && ok[1] == key[1] && ok[2] == key[2])
+        return snprintf(why, cap, "face %d given tag %d twice", f, tg[f]), 1;
+    }
+  }
+  return 0;
+}
+/* The nodal loads the shadow knows (3 per node): nodal forces, and the
+ * pressures and tractions on the faces of their tags (a third of each
+ * face's force at each of its nodes; a pressure acts along minus the
+ * outward normal, away from the face's tetrahedron). 0 if not known. */
+static int ss_loads(const sshadow_t *s, double *f) {
+  if (!s->exact) return 0;
+  memcpy(f, s->nforce, sizeof(double) * 3 * (size_t)s->nn);
+  for (int l = 0; l < s->nl; ++l)
+    for (int k = 0; k < s->nf; ++k) {
+      if (s->ftag[k] != s->load[l].tag) continue;
+      const int *fv = &s->face[3 * k];
+      const double *a = &s->xyz[3 * fv[0]], *b = &s->xyz[3 * fv[1]], *c = &s->xyz[3 * fv[2]];
+      double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]}, w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+      double n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]};
+      int owner = -1;
+      if (ss_owners(s, fv, &owner) < 1) return 0;
+      int d = -1;
+      for (int q = 0; q < 4; ++q) {
+        int v = s->tet[4 * owner + q];
+        if (v != fv[0] && v != fv[1] && v != fv[2]) d = v;
+      }
+      if (d < 0) return 0;
+      const double *x = &s->xyz[3 * d];
+      if (n[0] * (x[0] - a[0]) + n[1] * (x[1] - a[1]) + n[2] * (x[2] - a[2]) > 0)
+        for (int q = 0; q < 3; ++q) n[q] = -n[q];
+      double area2 = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      for (int q = 0; q < 3; ++q)
+        for (int comp = 0; comp < 3; ++comp)
+          f[3 * fv[q] + comp] += s->load[l].type ? s->load[l].v[comp] * area2 / 6.0 : -s->load[l].v[0] * n[comp] / 6.0;
+    }
+  return 1;
+}
+
+static int solid_result_fn(int fn) {
+  switch (fn) {
+  case F_S_SOLVE_INFO: case F_S_ITERATIONS: case F_S_DISPLACEMENTS: case F_S_STRAINS: case F_S_STRESSES:
+  case F_S_REACTIONS: case F_S_WORK: case F_S_CONTACT_TETS: case F_S_CONTACT_ACTIVE: case F_S_CONTACT_FORCES:
+  case F_S_NODAL_PRESSURES: case F_S_AREA: case F_S_PAIR_AREA: case F_S_WRITE_VTU:
+    return 1;
+  default: return 0;
+  }
+}
+/* Does a successful call of f change the 3D problem (and so discard the results)? */
+static int solid_changes_problem(int fn) {
+  switch (fn) {
+  case F_S_SET_MESH: case F_S_LOAD_GMSH: case F_S_SET_FACES: case F_S_ADD_FACES: case F_S_SET_MATERIAL:
+  case F_S_SET_TEMPERING: case F_S_FIX: case F_S_FIX_FACES: case F_S_CLEAR_CONSTRAINTS: case F_S_ADD_PRESSURE:
+  case F_S_ADD_TRACTION: case F_S_ADD_NODAL_FORCE: case F_S_CLEAR_LOADS: case F_S_ADD_PAIR: case F_S_CLEAR_PAIRS:
+    return 1;
+  default: return 0;
+  }
+}
+/* The 3D context's calls that build B (a success means it is built). */
+static int sc_builds(int fn) {
+  switch (fn) {
+  case F_SC_SETUP: case F_SC_SIZES: case F_SC_TETS: case F_SC_PATTERN: case F_SC_ELEMENT_EQUATIONS:
+  case F_SC_ELEMENT_BLOCKS: case F_SC_EVALUATE: case F_SC_UPDATE: case F_SC_RESTART: case F_SC_GET_ACTIVE:
+  case F_SC_SET_ACTIVE: case F_SC_GAPS: case F_SC_AREA:
+    return 1;
+  default: return 0;
+  }
+}
+/* The options of a 3D solve, step or context are refused by the header's
+ * rules (frictionless, the 3D test, max_iterations >= 1, refactorize 0 or
+ * 1, E_c and lambda 0 or finite and > 0). */
+static int solid_options_refused(const call_t *c) {
+  if (c->in[0].null_) return 0;
+  int bad = c->iv[0] != 0 || c->iv[1] != 0 || c->iv[2] < 1 || (c->iv[3] != 0 && c->iv[3] != 1);
+  for (int k = 0; k < 2; ++k) bad |= !(c->dv[k] == 0.0 || (isfinite(c->dv[k]) && c->dv[k] > 0));
+  return bad;
+}
+/* ------------------------------------------------------------------------ */
 /* The runner: executes a case's calls and checks each                       */
 /* ------------------------------------------------------------------------ */
 
@@ -4328,6 +5787,12 @@ typedef struct {
    * generation fam_gen: -1 not asked, 0 refused, 1 served */
   long fam_gen;
   int seen_elem, seen_slave;
+  /* a 3D case: the 3D model (NULL once destroyed), the 3D context (NULL:
+   * none), a 2D context (a handle of another kind), the 3D shadow */
+  tfem_solid_model *sm;
+  tfem_solid_contact *sctx;
+  tfem_contact *octx;
+  sshadow_t ss;
 } runner_t;
 
 static void c_emit_call(FILE *f, const call_t *c, int idx);
@@ -4380,6 +5845,8 @@ static void excerpt(const char *s, size_t n, char *out, size_t cap) {
 }
 
 static int ctx_sizes(runner_t *R, int *nn, int *ne, int64_t *np);
+static int ssc_sizes(runner_t *R, int *nn, int *nt, int64_t *np);
+static int ssc_nodes(const runner_t *R);
 /* The cycles of the model's last adaptive solve (tfem_get_adapt_cycles
  * with no column: OK once the length holds them all): 0 none (refused
  * INVALID_STATE), -1 not known (another refusal, or more than 4096). */
@@ -4449,6 +5916,38 @@ static long required_len(runner_t *R, const call_t *c, int j) {
     if (tfem_get_warning(R->m, c->iv[0], b, sizeof b) != TFEM_STATUS_OK) return -1;
     return (long)strlen(b) + 1;
   }
+  /* the 3D model and its context */
+  case R_S3NN: case R_SNN: case R_S6NT: case R_S4NT: case R_SNT: case R_SNC: case R_S4NC:
+    if (!R->sm || tfem_solid_get_sizes(R->sm, &nn, &nt, &nc) != TFEM_STATUS_OK) return -1;
+    return rq == R_S3NN ? 3L * nn : rq == R_SNN ? nn : rq == R_S6NT ? 6L * nt : rq == R_S4NT ? 4L * nt : rq == R_SNT ? nt
+         : rq == R_SNC ? nc : 4L * nc;
+  case R_S3NF: case R_SNF:
+    if (!R->sm || tfem_solid_get_boundary_face_count(R->sm, &nn) != TFEM_STATUS_OK) return -1;
+    return rq == R_S3NF ? 3L * nn : nn;
+  case R_SMSG: return c->null_model || c->handle || !R->sm ? -1 : (long)tfem_solid_last_error_length(R->sm);
+  case R_SWARN: {
+    char b[4096];
+    if (!R->sm || tfem_solid_get_warning(R->sm, c->iv[0], b, sizeof b) != TFEM_STATUS_OK) return -1;
+    return (long)strlen(b) + 1;
+  }
+  case R_SCN: case R_S3CN: {
+    int cn = ssc_nodes(R);
+    return cn < 0 ? -1 : rq == R_SCN ? cn : 3L * cn;
+  }
+  case R_SCT: case R_S4CT: case R_S12CT: case R_S144CT: case R_SCP: {
+    int ce;
+    int64_t np;
+    if (!ssc_sizes(R, NULL, &ce, &np)) return -1;
+    return rq == R_SCT ? ce : rq == R_S4CT ? 4L * ce : rq == R_S12CT ? 12L * ce : rq == R_S144CT ? 144L * ce : (long)np;
+  }
+  case R_SCMSG: {
+    static __thread char b[65536];
+    if (c->null_model || c->handle || !R->sctx) return -1;
+    b[0] = 0;
+    tfem_solid_contact_last_error(R->sctx, b, sizeof b);
+    return (long)strlen(b) + 1;
+  }
+  case R_SNEQ: return R->cs->coupled == 2 ? R->cs->neq : -1;
   default: return -1;
   }
 }
@@ -6194,6 +7693,1105 @@ static int vtu_refusal_of_accessor(tfem_model *m, const char *msg) {
   return seen;
 }
 
+/* ------------------------------------------------------------------------ */
+/* The 3D model and its contact context: handles, inputs, oracles            */
+/* ------------------------------------------------------------------------ */
+
+/* The handle call c passes when it names one (c->handle): of another kind
+ * (the 2D model, a 2D context, the 3D model, the 3D context: NULL when the
+ * case has none), or one of the function's own kind destroyed right
+ * before the call (nothing is made between: its address is no live
+ * handle's). */
+static void *call_handle(runner_t *R, const call_t *c) {
+  switch (c->handle) {
+  case 1: return R->m;
+  case 2: return R->octx;
+  case 3: return R->sm;
+  case 4: return R->sctx;
+  default:
+    switch (FN[c->fn].model) {
+    case 1: {
+      tfem_model *x = tfem_create();
+      tfem_destroy(x);
+      return x;
+    }
+    case 2: {
+      tfem_contact *x = tfem_contact_create(0);
+      tfem_contact_destroy(x);
+      return x;
+    }
+    case 3: {
+      tfem_solid_model *x = tfem_solid_create();
+      tfem_solid_destroy(x);
+      return x;
+    }
+    default: {
+      tfem_solid_contact *x = tfem_solid_contact_create(0, NULL);
+      tfem_solid_contact_destroy(x);
+      return x;
+    }
+    }
+  }
+}
+static const char *handle_name(int h) {
+  static const char *const n[] = {"its own", "the 2D model", "a 2D context", "the 3D model", "the 3D context",
+                                  "a destroyed one"};
+  return h >= 0 && h <= 5 ? n[h] : "?";
+}
+/* The message the *_last_error function of `kind` (1..4) gives for h. */
+static int last_error_of(int kind, void *h, char *b, size_t cap) {
+  b[0] = 0;
+  switch (kind) {
+  case 1: return tfem_last_error(h, b, cap);
+  case 2: return tfem_contact_last_error(h, b, cap);
+  case 3: return tfem_solid_last_error(h, b, cap);
+  default: return tfem_solid_contact_last_error(h, b, cap);
+  }
+}
+/* A live handle of the runner that is no longer live: its name, or NULL. */
+static const char *handle_gone(runner_t *R) {
+  char b[8];
+  if (R->m && tfem_last_error(R->m, b, sizeof b) == TFEM_STATUS_INVALID_ARGUMENT) return "the 2D model";
+  if (R->ctx && tfem_contact_last_error(R->ctx, b, sizeof b) == TFEM_STATUS_INVALID_ARGUMENT) return "the 2D context";
+  if (R->octx && tfem_contact_last_error(R->octx, b, sizeof b) == TFEM_STATUS_INVALID_ARGUMENT) return "a 2D context";
+  if (R->sm && tfem_solid_last_error(R->sm, b, sizeof b) == TFEM_STATUS_INVALID_ARGUMENT) return "the 3D model";
+  if (R->sctx && tfem_solid_contact_last_error(R->sctx, b, sizeof b) == TFEM_STATUS_INVALID_ARGUMENT)
+    return "the 3D context";
+  return NULL;
+}
+
+/* A call given a handle of another kind, or destroyed (hp; NULL when the
+ * case has no handle of that kind): refused with INVALID_ARGUMENT (NULL:
+ * NULL_POINTER), the message in the thread's slot saying what the handle
+ * is not; the *_last_error functions give INVALID_ARGUMENT with that
+ * message in their buffer, *_last_error_length its size; a *_destroy of
+ * it is a no-op. (Nothing written and nothing changed: the generic checks
+ * and the replay.) */
+static void oracle_handle(runner_t *R, int idx, const call_t *c, int st, void *hp, size_t lel, const gbuf *g,
+                          const char *msg) {
+  int fn = c->fn, kind = FN[fn].model;
+  static __thread char full[65536];
+  R->oracles[O_HANDLE]++;
+  int is_last = fn == F_LAST_ERROR || fn == F_CONTACT_LAST_ERROR || fn == F_S_LAST_ERROR || fn == F_SC_LAST_ERROR;
+  int is_len = fn == F_LAST_ERROR_LENGTH || fn == F_CONTACT_LAST_ERROR_LENGTH || fn == F_S_LAST_ERROR_LENGTH ||
+               fn == F_SC_LAST_ERROR_LENGTH;
+  int is_destroy = fn == F_CONTACT_DESTROY || fn == F_S_DESTROY || fn == F_SC_DESTROY;
+  if (is_destroy) {
+    const char *gone = handle_gone(R);
+    if (gone) finding(R, V_HANDLE, idx, "%s of %s destroyed %s (the header: a no-op)", fn_name(fn), handle_name(c->handle), gone);
+    return;
+  }
+  if (is_last || is_len) {
+    int s2 = hp ? last_error_of(kind, hp, full, sizeof full) : TFEM_STATUS_NULL_POINTER;
+    if (hp && (s2 != TFEM_STATUS_INVALID_ARGUMENT || (!strstr(full, "is not") && !strstr(full, "destroyed")))) {
+      finding(R, V_HANDLE, idx, "given %s: %s, \"%.160s\" (not INVALID_ARGUMENT saying what it is not)",
+              handle_name(c->handle), status_name(s2), full);
+      return;
+    }
+    if (is_len) {
+      size_t want_len = hp ? strlen(full) + 1 : 1;
+      if (lel != want_len)
+        finding(R, V_HANDLE, idx, "%zu for %s, the message refusing it has %zu bytes", lel, handle_name(c->handle),
+                want_len - 1);
+      return;
+    }
+    if (hp && st != TFEM_STATUS_INVALID_ARGUMENT)
+      finding(R, V_HANDLE, idx, "%s for %s (the header: INVALID_ARGUMENT, the message saying so in the buffer)",
+              status_name(st), handle_name(c->handle));
+    else if (hp && !c->out[0].null_ && c->out[0].len > 0) {
+      const char *b = (const char *)g[0].p;
+      size_t n = strnlen(b, c->out[0].len);
+      if (n == c->out[0].len || strncmp(b, full, n) != 0 || (n < strlen(full) && n + 1 < c->out[0].len))
+        finding(R, V_HANDLE, idx, "the buffer of %zu bytes for %s holds \"%.80s\", not the message \"%.160s\" cut to it",
+                c->out[0].len, handle_name(c->handle), b, full);
+    }
+    return;
+  }
+  if (hp ? st != TFEM_STATUS_INVALID_ARGUMENT : st != TFEM_STATUS_NULL_POINTER)
+    finding(R, V_HANDLE, idx, "%s for %s (the header: INVALID_ARGUMENT for a handle that is not live, of its kind): "
+            "\"%.160s\"", status_name(st), handle_name(c->handle), msg);
+  else if (hp && !strstr(msg, "is not"))
+    finding(R, V_HANDLE, idx, "INVALID_ARGUMENT for %s, the thread's message does not say what it is not: \"%.160s\"",
+            handle_name(c->handle), msg);
+}
+
+/* The 3D context's sizes once B is built (asking builds it). */
+static int ssc_sizes(runner_t *R, int *nn, int *nt, int64_t *np) {
+  int a = -1, b = -1;
+  int64_t e = -1;
+  if (!R->sctx || !R->ss.sc_built || tfem_solid_contact_sizes(R->sctx, &a, &b, &e) != TFEM_STATUS_OK || a < 0 ||
+      b < 0 || e < 0)
+    return 0;
+  if (nn) *nn = a;
+  if (nt) *nt = b;
+  if (np) *np = e;
+  return 1;
+}
+/* The interface nodes of the 3D context the shadow knows (-1: not known). */
+static int ssc_nodes(const runner_t *R) { return R->ss.sc_live && R->ss.sc_nn <= 512 ? R->ss.sc_nn : -1; }
+
+/* The runtime inputs of a 3D context's call (make_inputs' recipes): u (3
+ * per interface node, or the host's vector), the host vector scatter_add
+ * adds to, active flags. */
+static void make_solid_inputs(runner_t *R, call_t *c, int idx) {
+  int fn = c->fn;
+  if (c->in_made) return;
+  c->in_made = 1;
+  int rec = c->iv[0], dl = c->iv[1], k = c->iv[2] < 0 ? -(c->iv[2] + 1) : c->iv[2];
+  if (dl < -100000 || dl > 100000) dl = dl < 0 ? -100000 : 100000;
+  rng_t q = {mix64(0x5eedULL + (uint64_t)k * 7919u + (uint64_t)idx)};
+  int cn = ssc_nodes(R), ce = -1;
+  ssc_sizes(R, NULL, &ce, NULL);
+  /* the 3D model's displacements, when the case couples the two (host equation = model DOF) */
+  int mnn = -1;
+  double *mu = NULL;
+  if (R->cs->coupled == 2 && R->sm && tfem_solid_get_sizes(R->sm, &mnn, NULL, NULL) == TFEM_STATUS_OK && mnn > 0) {
+    mu = xmalloc(sizeof(double) * 3 * (size_t)mnn);
+    if (tfem_solid_get_displacements(R->sm, mu, 3 * (size_t)mnn) != TFEM_STATUS_OK) free(mu), mu = NULL;
+  }
+  for (int j = 0; j < fn_nin(fn); ++j) {
+    if (!in_runtime(fn, j)) continue;
+    char role = FN[fn].ink[j];
+    if (role == 'U') {
+      long base, ns = 0;
+      double *src = NULL;
+      if (fn == F_SC_GATHER) {
+        base = R->cs->coupled == 2 ? R->cs->neq : 3 + k % 20;
+        if (mu && R->cs->neq == 3 * mnn) src = mu, ns = 3L * mnn;
+      } else if (fn == F_SC_SCATTER_ADD && j == 1) {
+        base = (long)c->out[0].len;
+        dl = 0;
+      } else {
+        base = cn >= 0 ? 3L * cn : 3 + 3 * (k % 6);
+        if (mu && cn > 0 && R->cs->hm_mul > 0) {
+          /* the model's displacements at the interface nodes */
+          src = xcalloc(3 * (size_t)cn + 1, sizeof(double));
+          ns = 3L * cn;
+          for (int i = 0; i < cn; ++i) {
+            long v = ((long)R->ss.sc_ids[i] - R->cs->hm_off) / R->cs->hm_mul;
+            if (v >= 0 && v < mnn && v * R->cs->hm_mul + R->cs->hm_off == R->ss.sc_ids[i])
+              for (int comp = 0; comp < 3; ++comp) src[3 * i + comp] = mu[3 * v + comp];
+          }
+        }
+      }
+      long n = base + dl;
+      if (n < 0) n = 0;
+      if (n > 4000000) n = 4000000;
+      double *u = xcalloc((size_t)n + 1, sizeof(double));
+      double *full = xcalloc((size_t)(n > ns ? n : ns) + 1, sizeof(double));
+      if (src) memcpy(full, src, sizeof(double) * (size_t)ns);
+      rt_fill(&q, u, (int)n, fn == F_SC_SCATTER_ADD && j == 1 ? (rec == 0 ? 0 : 1) : rec, full, k);
+      in_set(c, j, u, (int)n, sizeof(double));
+      free(u), free(full);
+      if (src && src != mu) free(src);
+    } else if (role == 'a') {
+      long n = (ce >= 0 ? ce : 1 + k % 8) + dl;
+      if (n < 0) n = 0;
+      if (n > 4000000) n = 4000000;
+      int *a = xcalloc((size_t)n + 1, sizeof(int));
+      if (rec == 3 && ce >= 0) {
+        int *cur = xcalloc((size_t)ce + 1, sizeof(int));
+        if (tfem_solid_contact_get_active(R->sctx, cur, (size_t)ce) == TFEM_STATUS_OK)
+          for (long i = 0; i < n && i < ce; ++i) a[i] = cur[i];
+        free(cur);
+      } else {
+        for (long i = 0; i < n; ++i) a[i] = rec == 1 ? 1 : (rec == 2 || rec == 4) ? (int)(rnext(&q) & 1) : 0;
+        if (rec == 4 && n > 0) a[k % n] = (int[]){2, -1, INT_MIN, INT_MAX}[k % 4];
+      }
+      in_set(c, j, a, (int)n, sizeof(int));
+      free(a);
+    }
+  }
+  free(mu);
+}
+
+/* Value oracles of the 3D context, from its own outputs: the pattern is,
+ * tetrahedron after tetrahedron of B, the pairs of its DOFs with an
+ * equation (tfem_solid_contact_element_equations) row by row; evaluate's
+ * values are the element blocks' entries in that order; gather gives
+ * each DOF its equation's entry (0 without one), scatter_add adds the
+ * residual to exactly those; set_active then get_active gives the flags
+ * set; update's changed is 0 or 1, 1 exactly when it switched some; the
+ * area is +0.0 without an active tetrahedron. */
+static void oracle_solid_host(runner_t *R, int idx, const call_t *c, gbuf *g) {
+  int fn = c->fn, nn, nt, base = R->ss.sc_base;
+  int64_t np;
+  if (!ssc_sizes(R, &nn, &nt, &np)) return;
+  int64_t *eq = xmalloc(sizeof(int64_t) * 12 * (size_t)nt + 1);
+  int *act = xmalloc(sizeof(int) * (size_t)nt + 1), *nodes = xmalloc(sizeof(int) * (size_t)nn + 1);
+  int *tets = xmalloc(sizeof(int) * 4 * (size_t)nt + 1);
+  if (tfem_solid_contact_element_equations(R->sctx, eq, 12 * (size_t)nt) != TFEM_STATUS_OK ||
+      tfem_solid_contact_get_active(R->sctx, act, (size_t)nt) != TFEM_STATUS_OK ||
+      tfem_solid_contact_nodes(R->sctx, nodes, (size_t)nn) != TFEM_STATUS_OK ||
+      tfem_solid_contact_tetrahedra(R->sctx, tets, 4 * (size_t)nt) != TFEM_STATUS_OK)
+    goto done;
+  if (fn == F_SC_PATTERN || fn == F_SC_EVALUATE) {
+    const int64_t *rows = fn == F_SC_PATTERN ? (const int64_t *)(const void *)g[0].p : NULL;
+    const int64_t *cols = fn == F_SC_PATTERN ? (const int64_t *)(const void *)g[1].p : NULL;
+    const double *val = fn == F_SC_EVALUATE && !c->out[0].null_ ? (const double *)(const void *)g[0].p : NULL;
+    double *blk = NULL;
+    if (val) {
+      blk = xmalloc(sizeof(double) * 144 * (size_t)nt + 1);
+      if (tfem_solid_contact_element_blocks(R->sctx, blk, 144 * (size_t)nt) != TFEM_STATUS_OK) {
+        free(blk);
+        goto done;
+      }
+    }
+    int64_t p = 0;
+    int bad = 0;
+    for (int k = 0; k < nt && !bad; ++k)
+      for (int a = 0; a < 12 && !bad; ++a) {
+        if (eq[12 * k + a] < base) continue;
+        for (int b = 0; b < 12 && !bad; ++b) {
+          if (eq[12 * k + b] < base) continue;
+          if ((size_t)p < c->out[0].len) {
+            if (rows && (rows[p] != eq[12 * k + a] || cols[p] != eq[12 * k + b])) {
+              finding(R, V_SOLID_HOST, idx, "pattern entry %" PRId64 " = (%" PRId64 ", %" PRId64 "), tetrahedron %d's DOFs "
+                      "%d, %d have equations %" PRId64 ", %" PRId64, p, rows[p], cols[p], k, a, b, eq[12 * k + a],
+                      eq[12 * k + b]);
+              bad = 1;
+            }
+            double want_v = blk ? blk[144 * k + 12 * a + b] : 0;
+            if (val && val[p] != want_v) {
+              finding(R, V_SOLID_HOST, idx, "value %" PRId64 " = %.17g, tetrahedron %d's block (%d, %d) = %.17g (active %d)",
+                      p, val[p], k, a, b, want_v, act[k]);
+              bad = 1;
+            }
+          }
+          ++p;
+        }
+      }
+    if (!bad && p != np)
+      finding(R, V_SOLID_HOST, idx, "%" PRId64 " pattern entries from the element equations, sizes says %" PRId64, p, np);
+    /* (an inactive tetrahedron's block is zeros) */
+    for (int k = 0; blk && k < nt && !bad; ++k)
+      for (int i = 0; i < 144 && !act[k]; ++i)
+        if (blk[144 * k + i] != 0) {
+          finding(R, V_SOLID_HOST, idx, "inactive tetrahedron %d has a block entry %.17g", k, blk[144 * k + i]);
+          bad = 1;
+          break;
+        }
+    R->oracles[O_SOLID_HOST]++;
+    free(blk);
+  } else if (fn == F_SC_GATHER || fn == F_SC_SCATTER_ADD) {
+    /* each DOF's equation: from the tetrahedra of B that hold its node */
+    const double *in = c->in[0].p;
+    size_t neq = fn == F_SC_GATHER ? (size_t)c->in[0].n : c->out[0].len;
+    const double *out = (const double *)(const void *)g[0].p, *before = c->in[1].p;
+    double *expect = NULL;
+    if (fn == F_SC_SCATTER_ADD) {
+      expect = xmalloc(sizeof(double) * neq + 1);
+      memcpy(expect, before, sizeof(double) * neq);
+    }
+    int bad = 0, unknown = 0;
+    for (int i = 0; i < nn && !bad; ++i)
+      for (int comp = 0; comp < 3 && !bad; ++comp) {
+        int64_t e = -2;
+        for (int k = 0; k < nt && e == -2; ++k)
+          for (int a = 0; a < 4; ++a)
+            if (tets[4 * k + a] == nodes[i]) {
+              e = eq[12 * k + 3 * a + comp] < base ? -1 : eq[12 * k + 3 * a + comp] - base;
+              break;
+            }
+        if (e == -2) { /* a node on no tetrahedron of B: its equation is not known here */
+          unknown = 1;
+          continue;
+        }
+        if (e >= (int64_t)neq) {
+          finding(R, V_SOLID_HOST, idx, "OK with equation %" PRId64 " of node %d beyond the %zu given", e + base, nodes[i], neq);
+          bad = 1;
+        } else if (fn == F_SC_GATHER) {
+          double want_u = e < 0 ? 0.0 : in[e];
+          if (memcmp(&want_u, &out[3 * i + comp], 8) != 0 && !(want_u == 0 && out[3 * i + comp] == 0)) {
+            finding(R, V_SOLID_HOST, idx, "u[%d] of node %d = %.17g, its equation %" PRId64 " holds %.17g", 3 * i + comp,
+                    nodes[i], out[3 * i + comp], e + base, want_u);
+            bad = 1;
+          }
+        } else if (e >= 0) {
+          expect[e] += in[3 * i + comp];
+        }
+      }
+    if (fn == F_SC_SCATTER_ADD && !unknown)
+      for (size_t e = 0; e < neq && !bad; ++e)
+        if (!(out[e] == expect[e] || fabs(out[e] - expect[e]) <= 1e-13 * fabs(expect[e]))) {
+          finding(R, V_SOLID_HOST, idx, "host vector entry %zu = %.17g, expected %.17g", e, out[e], expect[e]);
+          bad = 1;
+        }
+    free(expect);
+    R->oracles[O_SOLID_HOST]++;
+  } else if (fn == F_SC_SET_ACTIVE) {
+    const int *a = c->in[0].p;
+    for (int k = 0; k < nt; ++k)
+      if (act[k] != a[k]) {
+        finding(R, V_SOLID_HOST, idx, "tetrahedron %d set to %d, tfem_solid_contact_get_active gives %d", k, a[k], act[k]);
+        break;
+      }
+    R->oracles[O_SOLID_HOST]++;
+  } else if (fn == F_SC_UPDATE && !c->out[0].null_) {
+    int ch, on = -1, off = -1;
+    memcpy(&ch, g[0].p, sizeof ch);
+    if (!c->out[1].null_) memcpy(&on, g[1].p, sizeof on);
+    if (!c->out[2].null_) memcpy(&off, g[2].p, sizeof off);
+    R->oracles[O_SOLID_HOST]++;
+    if (ch != 0 && ch != 1) finding(R, V_SOLID_HOST, idx, "changed = %d", ch);
+    else if (on >= 0 && off >= 0 && ch != (on + off > 0))
+      finding(R, V_SOLID_HOST, idx, "changed = %d with %d switched on and %d off", ch, on, off);
+    else if ((on >= 0 && on > nt) || (off >= 0 && off > nt) || on < -1 || off < -1)
+      finding(R, V_SOLID_HOST, idx, "%d switched on and %d off of %d tetrahedra", on, off, nt);
+  } else if (fn == F_SC_AREA) {
+    double A;
+    memcpy(&A, g[0].p, 8);
+    int na = 0;
+    for (int k = 0; k < nt; ++k) na += act[k];
+    R->oracles[O_SOLID_HOST]++;
+    /* (-0.0 with nothing active: unlike tfem_contact_length's "+0.0", the
+     * 3D header promises no sign of zero) */
+    if (A < 0 || (na == 0 && A != 0)) finding(R, V_SOLID_HOST, idx, "contact area %.17g with %d active tetrahedra", A, na);
+  }
+done:
+  free(eq), free(act), free(nodes), free(tets);
+}
+
+/* tfem_solid_write_vtu: NULL refused; a file written only where it can
+ * be, a grid of the model's points and tetrahedra; an unwritable path
+ * refused with TFEM_STATUS_IO once there are results (NUMERICAL_FAILURE
+ * for a result that is not finite, nothing written). */
+static void solid_vtu_check(runner_t *R, int idx, const call_t *c, int st, const char *path, const char *vtu, size_t vtu_n,
+                            int vtu_found, const char *msg) {
+  const sshadow_t *s = &R->ss;
+  int known = s->has_mesh && s->results && !s->res_unknown;
+  if (c->null_model || c->handle) return;
+  if (!path && st != TFEM_STATUS_NULL_POINTER) {
+    finding(R, V_NULL_ARG, idx, "NULL path gave %s", status_name(st));
+  } else if (path && st == TFEM_STATUS_OK && !vtu_writable(c->iv[0])) {
+    finding(R, V_SOLID, idx, "OK although the path \"%s\" cannot be written", path);
+  } else if (path && st == TFEM_STATUS_OK) {
+    int nn = -1, nt = -1;
+    char want_p[64], want_c[64];
+    if (!vtu_found) {
+      finding(R, V_SOLID, idx, "OK but no file at %s", path);
+    } else if (tfem_solid_get_sizes(R->sm, &nn, &nt, NULL) == TFEM_STATUS_OK) {
+      snprintf(want_p, sizeof want_p, "NumberOfPoints=\"%d\"", nn);
+      snprintf(want_c, sizeof want_c, "NumberOfCells=\"%d\"", nt);
+      R->oracles[O_VTU]++;
+      if (!vtu || !strstr(vtu, "<VTKFile") || !strstr(vtu, "UnstructuredGrid") || !strstr(vtu, want_p) ||
+          !strstr(vtu, want_c))
+        finding(R, V_SOLID, idx, "the .vtu (%zu bytes) is not a grid of %d points and %d tetrahedra", vtu_n, nn, nt);
+    }
+  } else if (path && known && st == TFEM_STATUS_NUMERICAL_FAILURE) {
+    R->oracles[O_VTU]++;
+    if (vtu_found) finding(R, V_SOLID, idx, "NUMERICAL_FAILURE, yet a file is at \"%s\": \"%.160s\"", path, msg);
+  } else if (path && known && st != TFEM_STATUS_INVALID_STATE) {
+    int want_st = vtu_writable(c->iv[0]) ? TFEM_STATUS_OK : TFEM_STATUS_IO;
+    R->oracles[O_VTU]++;
+    if (st != want_st)
+      finding(R, V_SOLID, idx, "%s (not %s) for the path \"%s\" after a solve: \"%.160s\"", status_name(st),
+              status_name(want_st), path, msg);
+  }
+}
+
+/* A pristine 3D scene's closed form (call_t.oracle, its numbers in dv). */
+static void solid_exact(runner_t *R, int idx, const call_t *c, const gbuf *g) {
+  const sshadow_t *s = &R->ss;
+  const double load = c->dv[0], E = c->dv[1], nu = c->dv[2], tol = 1e-9;
+  long n = c->out[0].req;
+  const double *v = (const double *)(const void *)g[0].p;
+  if (!s->exact || c->out[0].null_ || !R->pristine || idx >= R->full_prefix) return;
+  R->oracles[O_SOLID_EXACT]++;
+  switch (c->oracle) {
+  case SO_TENSION_U: {
+    if (n != 3L * s->nn) return;
+    double worst = 0, scale = fabs(load) / E;
+    for (int i = 0; i < s->nn; ++i) {
+      const double *x = &s->xyz[3 * i];
+      double want_u[3] = {load * x[0] / E, -nu * load * x[1] / E, -nu * load * x[2] / E};
+      for (int k = 0; k < 3; ++k) worst = fmax(worst, fabs(v[3 * i + k] - want_u[k]));
+    }
+    if (!(worst <= tol * scale))
+      finding(R, V_SOLID, idx, "tension of a cube: |u - (t x, -nu t y, -nu t z)/E| up to %.3g, %.3g of t/E (t %g, E %g, nu %g)",
+              worst, worst / scale, load, E, nu);
+    break;
+  }
+  case SO_TENSION_S: case SO_BLOCKS_S: {
+    if (n != 6L * s->nt) return;
+    double worst = 0;
+    for (int e = 0; e < s->nt; ++e)
+      for (int k = 0; k < 6; ++k) {
+        double want_s = c->oracle == SO_TENSION_S ? (k == 0 ? load : 0.0) : (k == 2 ? -load : 0.0);
+        worst = fmax(worst, fabs(v[6 * e + k] - want_s));
+      }
+    if (!(worst <= tol * fabs(load)))
+      finding(R, V_SOLID, idx, "%s: the stresses differ from the uniaxial %s = %g by up to %.3g", c->oracle == SO_TENSION_S ?
+              "tension of a cube" : "stacked blocks pressed", c->oracle == SO_TENSION_S ? "sigma_xx" : "sigma_zz",
+              c->oracle == SO_TENSION_S ? load : -load, worst);
+    break;
+  }
+  case SO_TENSION_R: case SO_BLOCKS_R: {
+    if (n != 3L * s->nn) return;
+    double sum[3] = {0, 0, 0}, mag = 0;
+    for (int i = 0; i < s->nn; ++i)
+      for (int k = 0; k < 3; ++k) sum[k] += v[3 * i + k], mag += fabs(v[3 * i + k]);
+    double want_r[3] = {c->oracle == SO_TENSION_R ? -load : 0.0, 0.0, c->oracle == SO_BLOCKS_R ? load : 0.0};
+    for (int k = 0; k < 3; ++k)
+      if (!(fabs(sum[k] - want_r[k]) <= tol * (fabs(load) + mag))) {
+        finding(R, V_SOLID, idx, "the reactions sum to %.17g in %c, the load gives %g", sum[k], 'x' + k, want_r[k]);
+        break;
+      }
+    break;
+  }
+  case SO_TENSION_W: {
+    double w;
+    memcpy(&w, g[0].p, 8);
+    if (!(fabs(w - load * load / E) <= tol * load * load / E))
+      finding(R, V_SOLID, idx, "external work %.17g, exactly t^2/E = %.17g for the pulled cube", w, load * load / E);
+    break;
+  }
+  case SO_BLOCKS_AREA: {
+    double a;
+    memcpy(&a, g[0].p, 8);
+    if (!(fabs(a - 1.0) <= 1e-12)) finding(R, V_SOLID, idx, "contact area %.17g of the closed interface of area 1", a);
+    break;
+  }
+  case SO_BLOCKS_ACTIVE: {
+    for (long k = 0; k < n; ++k) {
+      int a;
+      memcpy(&a, g[0].p + sizeof(int) * (size_t)k, sizeof a);
+      if (a != 1) {
+        finding(R, V_SOLID, idx, "tetrahedron %ld of B is not active (%d), every one is on the closed interface", k, a);
+        break;
+      }
+    }
+    if (n < 1) finding(R, V_SOLID, idx, "no tetrahedron of B on the closed interface");
+    break;
+  }
+  case SO_BLOCKS_P: {
+    if (n != s->nn) return;
+    for (int i = 0; i < s->nn; ++i) {
+      double want_p = s->xyz[3 * i + 2] == 0.0 ? load : 0.0;
+      if (!(fabs(v[i] - want_p) <= tol * load)) {
+        finding(R, V_SOLID, idx, "nodal contact pressure %.17g at node %d (z = %g), exactly %g", v[i], i + s->base,
+                s->xyz[3 * i + 2], want_p);
+        break;
+      }
+    }
+    break;
+  }
+  case SO_BLOCKS_F: {
+    if (n != 3L * s->nn) return;
+    double up = 0;
+    for (int i = c->iv[0]; i < s->nn; ++i) up += v[3 * i + 2];
+    if (!(fabs(up - load) <= tol * load))
+      finding(R, V_SOLID, idx, "the contact holds the upper block up by %.17g, the load is %g", up, load);
+    break;
+  }
+  default: break;
+  }
+}
+
+/* The checks of a 3D call made with its own handle (or none), and the
+ * shadow it updates. */
+static void solid_checks(runner_t *R, int idx, call_t *c, int st, gbuf *g, const char *msg) {
+  int fn = c->fn;
+  sshadow_t *s = &R->ss;
+  char why[200] = "";
+  if (c->null_model) return;
+  /* ---- the 3D model ---- */
+  if (FN[fn].model == 3 || fn == F_S_RECREATE) {
+    int refused = -1; /* the header refuses the call: 1 yes (why), 0 no (valid), -1 not known */
+    switch (fn) {
+    case F_S_SET_MESH: {
+      int nn = c->iv[0], nt = c->iv[1], base = c->iv[2];
+      refused = 0;
+      if (base != 0 && base != 1) refused = 1, snprintf(why, sizeof why, "index_base = %d", base);
+      else if (nn < 0 || nt < 0) refused = 1, snprintf(why, sizeof why, "a negative count");
+      else if ((nn > 0 && c->in[0].null_) || (nt > 0 && (c->in[1].null_ || c->in[2].null_)))
+        refused = 1, snprintf(why, sizeof why, "an array NULL");
+      else if (c->in[0].n < 3 * nn || c->in[1].n < 4 * nt || c->in[2].n < nt) refused = -1;
+      else {
+        const double *x = c->in[0].p;
+        const int *t = c->in[1].p;
+        for (int k = 0; k < 3 * nn && !refused; ++k)
+          if (!isfinite(x[k])) refused = 1, snprintf(why, sizeof why, "a coordinate %g", x[k]);
+        for (int e = 0; e < nt && !refused; ++e)
+          for (int a = 0; a < 4 && !refused; ++a) {
+            if ((long)t[4 * e + a] - base < 0 || (long)t[4 * e + a] - base >= nn)
+              refused = 1, snprintf(why, sizeof why, "tetrahedron %d: node %d out of range", e, t[4 * e + a]);
+            for (int b = a + 1; b < 4 && !refused; ++b)
+              if (t[4 * e + a] == t[4 * e + b]) refused = 1, snprintf(why, sizeof why, "tetrahedron %d repeats a node", e);
+          }
+      }
+      break;
+    }
+    case F_S_LOAD_GMSH:
+      refused = c->iv[1] != 0 && c->iv[1] != 1 ? 1 : c->iv[0] == SG_VALID ? 0 : 1;
+      snprintf(why, sizeof why, "file %d, index_base %d", c->iv[0], c->iv[1]);
+      break;
+    case F_S_SET_FACES: case F_S_ADD_FACES: refused = ss_faces_refused(s, c, why, sizeof why); break;
+    case F_S_SET_MATERIAL: {
+      double E = c->dv[0], nu = c->dv[1];
+      refused = !(isfinite(E) && E > 0 && isfinite(nu) && nu > -1.0 && nu < 0.5);
+      snprintf(why, sizeof why, "E = %g, nu = %g", E, nu);
+      if (refused && st != TFEM_STATUS_OK && st != TFEM_STATUS_INVALID_MATERIAL)
+        finding(R, V_SOLID, idx, "a material (%s) refused with %s, not INVALID_MATERIAL", why, status_name(st));
+      break;
+    }
+    case F_S_SET_TEMPERING:
+      refused = !(c->iv[0] == 0 || c->iv[0] == 3 || ((c->iv[0] == 1 || c->iv[0] == 2) && isfinite(c->dv[0]) && c->dv[0] > 0));
+      snprintf(why, sizeof why, "mode %d, value %g", c->iv[0], c->dv[0]);
+      break;
+    case F_S_SET_ORDERING:
+      refused = c->iv[0] < 0 || c->iv[0] > 2;
+      snprintf(why, sizeof why, "ordering %d", c->iv[0]);
+      break;
+    case F_S_FIX: case F_S_ADD_NODAL_FORCE: {
+      long v = (long)c->iv[0] - s->base;
+      int finite = fn == F_S_FIX ? isfinite(c->dv[0]) : isfinite(c->dv[0]) && isfinite(c->dv[1]) && isfinite(c->dv[2]);
+      refused = !s->has_mesh || (s->exact && (v < 0 || v >= s->nn)) || !finite || (fn == F_S_FIX && (c->iv[1] < 0 || c->iv[1] > 2));
+      if (!refused && !s->exact) refused = -1;
+      snprintf(why, sizeof why, "%s, node %d, component %d, value %g", s->has_mesh ? "a mesh" : "no mesh", c->iv[0],
+               fn == F_S_FIX ? c->iv[1] : -1, c->dv[0]);
+      break;
+    }
+    case F_S_FIX_FACES: case F_S_ADD_PRESSURE: case F_S_ADD_TRACTION: {
+      int finite = fn == F_S_ADD_TRACTION ? isfinite(c->dv[0]) && isfinite(c->dv[1]) && isfinite(c->dv[2]) : isfinite(c->dv[0]);
+      int comp_bad = fn == F_S_FIX_FACES && (c->iv[1] < 0 || c->iv[1] > 2);
+      refused = !s->has_mesh || !finite || comp_bad || (s->exact && !ss_tag_faces(s, c->iv[0]));
+      if (!refused && !s->exact) refused = -1;
+      snprintf(why, sizeof why, "%s, tag %d (%d faces), value %g", s->has_mesh ? "a mesh" : "no mesh", c->iv[0],
+               s->exact ? ss_tag_faces(s, c->iv[0]) : -1, c->dv[0]);
+      break;
+    }
+    case F_S_ADD_PAIR:
+      refused = !s->has_mesh || c->iv[0] == c->iv[1] ||
+                (s->exact && (!ss_tag_faces(s, c->iv[0]) || !ss_tag_faces(s, c->iv[1])));
+      if (!refused && !s->exact) refused = -1;
+      snprintf(why, sizeof why, "tags %d and %d", c->iv[0], c->iv[1]);
+      break;
+    case F_S_CLEAR_CONSTRAINTS: case F_S_CLEAR_LOADS: case F_S_CLEAR_PAIRS:
+      refused = 0;
+      break;
+    case F_S_SOLVE: case F_S_SOLVE_CONTACT: case F_S_STEP: {
+      int body = 0, missing = ss_missing_material(s, &body);
+      int bad_factor = fn == F_S_STEP && !(isfinite(c->dv[2]) && fabs(c->dv[2]) <= 1e300);
+      int bad_opts = fn != F_S_SOLVE && solid_options_refused(c);
+      if (!s->has_mesh) refused = 1, snprintf(why, sizeof why, "no mesh");
+      else if (bad_opts) refused = 1, snprintf(why, sizeof why, "options %d %d %d %d %g %g", c->iv[0], c->iv[1], c->iv[2],
+                                              c->iv[3], c->dv[0], c->dv[1]);
+      else if (missing == 1) refused = 1, snprintf(why, sizeof why, "body %d has no material", body);
+      else if (bad_factor) refused = 1, snprintf(why, sizeof why, "load_factor = %g", c->dv[2]);
+      if (refused == 1 && missing == 1 && !bad_opts && st != TFEM_STATUS_OK && st != TFEM_STATUS_INVALID_MATERIAL)
+        finding(R, V_SOLID, idx, "%s refused with %s, not INVALID_MATERIAL: \"%.160s\"", why, status_name(st), msg);
+      break;
+    }
+    case F_S_REVERT_STEP:
+      if (s->undo >= 0) refused = !s->undo, snprintf(why, sizeof why, "no load step to revert");
+      if (st != TFEM_STATUS_OK && st != TFEM_STATUS_INVALID_STATE)
+        finding(R, V_SOLID, idx, "%s (the header: refused with INVALID_STATE only): \"%.160s\"", status_name(st), msg);
+      if (s->undo == 1 && st != TFEM_STATUS_OK)
+        finding(R, V_SOLID, idx, "refused after a load step that nothing changed since: %s \"%.160s\"", status_name(st), msg);
+      break;
+    case F_S_PAIR_AREA:
+      if (s->has_mesh && s->results && !s->res_unknown) {
+        refused = c->iv[0] < 0 || c->iv[0] >= s->npairs;
+        snprintf(why, sizeof why, "pair %d of %d", c->iv[0], s->npairs);
+      }
+      break;
+    case F_S_GET_WARNING_SIZE: case F_S_GET_WARNING:
+      if (st == TFEM_STATUS_OK || st == TFEM_STATUS_BUFFER_TOO_SMALL) {
+        int count = -1;
+        if (tfem_solid_warning_count(R->sm, &count) == TFEM_STATUS_OK && (c->iv[0] < 0 || c->iv[0] >= count))
+          finding(R, V_SOLID, idx, "%s for warning %d of %d", status_name(st), c->iv[0], count);
+      }
+      if (fn == F_S_GET_WARNING_SIZE && st == TFEM_STATUS_OK && !c->out[0].null_) {
+        size_t z;
+        memcpy(&z, g[0].p, sizeof z);
+        if (z < 1 || z > ((size_t)1 << 26)) {
+          finding(R, V_SOLID, idx, "warning %d has size %zu", c->iv[0], z);
+        } else {
+          char *w = xmalloc(z + 1);
+          int s_short = z > 1 ? tfem_solid_get_warning(R->sm, c->iv[0], w, z - 1) : TFEM_STATUS_BUFFER_TOO_SMALL;
+          memset(w, 'x', z + 1);
+          int s_full = tfem_solid_get_warning(R->sm, c->iv[0], w, z);
+          R->oracles[O_WARNING_SIZE]++;
+          if (s_full != TFEM_STATUS_OK || strnlen(w, z) + 1 != z || s_short != TFEM_STATUS_BUFFER_TOO_SMALL)
+            finding(R, V_SOLID, idx, "warning %d of size %zu: a buffer of that size gives %s (%zu bytes), one byte less %s",
+                    c->iv[0], z, status_name(s_full), strnlen(w, z), status_name(s_short));
+          free(w);
+        }
+      }
+      break;
+    default: break;
+    }
+    if (refused >= 0) {
+      R->oracles[O_SOLID_ARGS]++;
+      if (refused && st == TFEM_STATUS_OK)
+        finding(R, V_SOLID, idx, "OK although %s (the header: refused)", why);
+      else if (!refused && st != TFEM_STATUS_OK && st != TFEM_STATUS_OUT_OF_MEMORY && !solid_result_fn(fn) &&
+               fn != F_S_SOLVE && fn != F_S_SOLVE_CONTACT && fn != F_S_STEP && fn != F_S_REVERT_STEP)
+        finding(R, V_SOLID, idx, "%s refused (%s): \"%.160s\"", why[0] ? why : "a valid call", status_name(st), msg);
+    }
+    /* results kept until a change of the problem, gone after one */
+    if (solid_result_fn(fn) && s->has_mesh && !s->res_unknown) {
+      R->oracles[O_SOLID_KEPT]++;
+      if (st == TFEM_STATUS_INVALID_STATE && s->results)
+        finding(R, V_SOLID, idx, "INVALID_STATE although the last %s succeeded and nothing changed the problem since: "
+                "\"%.160s\"", s->results == 2 ? "load step" : "solve", msg);
+      else if (st == TFEM_STATUS_OK && !s->results)
+        finding(R, V_SOLID, idx, "results returned although %s", s->sol_gen > 1 ? "the problem changed since the last solve"
+                                                                             : "nothing was solved");
+    }
+    if (c->want && R->pristine && idx < R->full_prefix && st != c->want - 1)
+      finding(R, V_SOLID, idx, "%s, the scene expects %s: \"%.160s\"", status_name(st), status_name(c->want - 1), msg);
+    if (st == TFEM_STATUS_OK) {
+      /* ---- outputs of a successful call ---- */
+      switch (fn) {
+      case F_S_GET_SIZES:
+        if (s->exact && !c->out[0].null_ && !c->out[1].null_) {
+          int nn, nt, nc = -1;
+          memcpy(&nn, g[0].p, 4);
+          memcpy(&nt, g[1].p, 4);
+          if (!c->out[2].null_) memcpy(&nc, g[2].p, 4);
+          R->oracles[O_SOLID_MESH]++;
+          if (nn != s->nn || nt != s->nt || (!c->out[2].null_ && (nc < 0 || (!s->results && !s->res_unknown && nc != 0))))
+            finding(R, V_SOLID, idx, "sizes %d, %d, %d; the mesh has %d nodes and %d tetrahedra%s", nn, nt, nc, s->nn, s->nt,
+                    s->results ? "" : ", and there are no results");
+        }
+        break;
+      case F_S_FACE_COUNT:
+        if (s->exact) {
+          int n;
+          memcpy(&n, g[0].p, 4);
+          R->oracles[O_SOLID_MESH]++;
+          if (n != s->nf) finding(R, V_SOLID, idx, "%d faces, %d were given", n, s->nf);
+        }
+        break;
+      case F_S_MESH_NODES:
+        if (s->exact && out_full(c, 0) && c->out[0].req == 3L * s->nn) {
+          R->oracles[O_SOLID_MESH]++;
+          if (s->nn && memcmp(g[0].p, s->xyz, sizeof(double) * 3 * (size_t)s->nn) != 0)
+            finding(R, V_SOLID, idx, "the nodes read back differ from those given");
+        }
+        break;
+      case F_S_MESH_TETS:
+        if (s->exact && out_full(c, 0) && c->out[0].req == 4L * s->nt) {
+          const int *t = (const int *)(const void *)g[0].p;
+          R->oracles[O_SOLID_MESH]++;
+          for (int e = 0; e < s->nt; ++e) {
+            int same = 1, swapped = 1;
+            for (int a = 0; a < 4; ++a) same &= t[4 * e + a] == s->tet[4 * e + a] + s->base;
+            for (int a = 0; a < 4; ++a) swapped &= t[4 * e + a] == s->tet[4 * e + (a < 2 ? a : 5 - a)] + s->base;
+            /* (a J within round-off of 0 may take either sign: this file's
+             * arithmetic may contract into fused multiply-adds, the
+             * library's does not) */
+            double h, j = ss_j(&s->xyz[3 * s->tet[4 * e]], &s->xyz[3 * s->tet[4 * e + 1]], &s->xyz[3 * s->tet[4 * e + 2]],
+                               &s->xyz[3 * s->tet[4 * e + 3]], &h);
+            if (!same && swapped && !(fabs(j) > 1e-9 * h * h * h)) same = 1;
+            if (!same) {
+              finding(R, V_SOLID, idx, "tetrahedron %d reads back as %d %d %d %d, given (renumbered if of negative J) %d %d %d %d",
+                      e + s->base, t[4 * e], t[4 * e + 1], t[4 * e + 2], t[4 * e + 3], s->tet[4 * e] + s->base,
+                      s->tet[4 * e + 1] + s->base, s->tet[4 * e + 2] + s->base, s->tet[4 * e + 3] + s->base);
+              break;
+            }
+          }
+          if (s->nt && out_full(c, 1) && memcmp(g[1].p, s->body, sizeof(int) * (size_t)s->nt) != 0)
+            finding(R, V_SOLID, idx, "the bodies read back differ from those given");
+        }
+        break;
+      case F_S_GET_FACES:
+        if (s->exact && out_full(c, 0) && c->out[0].req == 3L * s->nf) {
+          const int *f = (const int *)(const void *)g[0].p;
+          R->oracles[O_SOLID_MESH]++;
+          for (int k = 0; k < 3 * s->nf; ++k)
+            if (f[k] != s->face[k] + s->base) {
+              finding(R, V_SOLID, idx, "face %d reads back with node %d, given %d", k / 3 + s->base, f[k], s->face[k] + s->base);
+              break;
+            }
+          if (s->nf && out_full(c, 1) && memcmp(g[1].p, s->ftag, sizeof(int) * (size_t)s->nf) != 0)
+            finding(R, V_SOLID, idx, "the face tags read back differ from those given");
+        }
+        break;
+      case F_S_ADD_PAIR:
+        if (!c->out[0].null_) {
+          int p;
+          memcpy(&p, g[0].p, 4);
+          if (s->exact && p != s->npairs) finding(R, V_SOLID, idx, "pair index %d, %d pairs were declared before", p, s->npairs);
+        }
+        break;
+      case F_S_ITERATIONS: {
+        int it;
+        memcpy(&it, g[0].p, 4);
+        if (it < 1) finding(R, V_SOLID, idx, "%d active-set iterations", it);
+        break;
+      }
+      case F_S_DISPLACEMENTS:
+        if (out_full(c, 0) && s->results) {
+          uint64_t h = fnv64(g[0].p, sizeof(double) * (size_t)c->out[0].req);
+          R->oracles[O_SOLID_KEPT] += s->disp_gen == s->sol_gen;
+          if (s->disp_gen == s->sol_gen && h != s->disp_hash)
+            finding(R, V_SOLID, idx, "displacements differ from those of call #%d, although no solve succeeded and nothing "
+                    "changed the problem since", s->disp_idx);
+          s->disp_hash = h, s->disp_gen = s->sol_gen, s->disp_idx = idx;
+        }
+        if (out_full(c, 0) && c->oracle) solid_exact(R, idx, c, g);
+        if (out_full(c, 0) && (c->tag == ST_REF || c->tag == ST_CMP) && R->pristine && idx < R->full_prefix) {
+          int slot = c->tw_a & 1;
+          long n = c->out[0].req;
+          const double *u = (const double *)(const void *)g[0].p;
+          if (c->tag == ST_REF) {
+            free(s->ref[slot]);
+            s->ref[slot] = xmalloc(sizeof(double) * (size_t)n + 1);
+            memcpy(s->ref[slot], u, sizeof(double) * (size_t)n);
+            s->nref[slot] = n;
+          } else if (s->ref[slot] && s->nref[slot] == n) {
+            double umax = 0, worst = 0;
+            long at = -1;
+            for (long k = 0; k < n; ++k) umax = fmax(umax, fabs(s->ref[slot][k]));
+            for (long k = 0; k < n; ++k) {
+              double d = fabs(u[k] - c->dv[0] * s->ref[slot][k]);
+              if (c->dv[1] == 0 ? memcmp(&u[k], &s->ref[slot][k], 8) != 0 : d > worst) worst = d, at = k;
+            }
+            R->oracles[O_SOLID_STEP]++;
+            if (c->dv[1] == 0 && at >= 0)
+              finding(R, V_SOLID, idx, "u[%ld] = %.17g, %.17g in the results this step repeats or reverts to (bit for bit)",
+                      at, u[at], s->ref[slot][at]);
+            else if (c->dv[1] > 0 && !(worst <= c->dv[1] * fabs(c->dv[0]) * umax))
+              finding(R, V_SOLID, idx, "u differs from %g times the reference by %.3g (u[%ld]; largest |u| %.3g): a step "
+                      "at a factor is the solve of the loads times it", c->dv[0], worst, at, umax);
+          }
+        }
+        break;
+      case F_S_STRESSES: case F_S_REACTIONS: case F_S_WORK: case F_S_NODAL_PRESSURES:
+        if (c->oracle && (fn == F_S_WORK || out_full(c, 0))) solid_exact(R, idx, c, g);
+        if (fn == F_S_REACTIONS && out_full(c, 0) && s->exact && c->out[0].req == 3L * s->nn && s->results) {
+          /* zero at the components not prescribed */
+          const double *v = (const double *)(const void *)g[0].p;
+          R->oracles[O_SOLID_CONTACT]++;
+          for (int k = 0; k < 3 * s->nn; ++k)
+            if (isnan(s->presc[k]) && v[k] != 0.0) {
+              finding(R, V_SOLID, idx, "reaction %.17g at component %d of node %d, which is not prescribed", v[k], k % 3,
+                      k / 3 + s->base);
+              break;
+            }
+        }
+        if (fn == F_S_NODAL_PRESSURES && out_full(c, 0) && s->exact && c->out[0].req == s->nn && s->npairs <= 16) {
+          /* zero off the pairs' faces */
+          const double *v = (const double *)(const void *)g[0].p;
+          char *on = xcalloc((size_t)s->nn + 1, 1);
+          for (int f = 0; f < s->nf; ++f)
+            for (int p = 0; p < s->npairs; ++p)
+              if (s->ftag[f] == s->pair_tag[p][0] || s->ftag[f] == s->pair_tag[p][1])
+                on[s->face[3 * f]] = on[s->face[3 * f + 1]] = on[s->face[3 * f + 2]] = 1;
+          R->oracles[O_SOLID_CONTACT]++;
+          for (int i = 0; i < s->nn; ++i)
+            if (!on[i] && v[i] != 0.0) {
+              finding(R, V_SOLID, idx, "contact pressure %.17g at node %d, on no face of a contact pair", v[i], i + s->base);
+              break;
+            }
+          free(on);
+        }
+        if (fn == F_S_WORK && s->exact && s->results == 1 && !s->res_unknown) {
+          /* the work of the loads known here over the displacements */
+          double w, *f = xmalloc(sizeof(double) * 3 * (size_t)s->nn + 1), *u = xmalloc(sizeof(double) * 3 * (size_t)s->nn + 1);
+          memcpy(&w, g[0].p, 8);
+          if (ss_loads(s, f) && tfem_solid_get_displacements(R->sm, u, 3 * (size_t)s->nn) == TFEM_STATUS_OK) {
+            double sum = 0, mag = 0;
+            for (int k = 0; k < 3 * s->nn; ++k) sum += f[k] * u[k], mag += fabs(f[k] * u[k]);
+            R->oracles[O_WORK]++;
+            if (isfinite(mag) && mag < 1e300 && !(fabs(w - sum) <= 1e-10 * mag + 1e-300))
+              finding(R, V_SOLID, idx, "external work %.17g, the sum of f.u over the loads known here %.17g", w, sum);
+          }
+          free(f), free(u);
+        }
+        break;
+      case F_S_CONTACT_ACTIVE: case F_S_CONTACT_TETS:
+        if (out_full(c, 0)) {
+          long n = c->out[0].req;
+          R->oracles[O_SOLID_CONTACT]++;
+          for (long k = 0; k < n; ++k) {
+            int v;
+            memcpy(&v, g[0].p + sizeof(int) * (size_t)k, sizeof v);
+            if (fn == F_S_CONTACT_ACTIVE ? v != 0 && v != 1 : s->exact && (v < s->base || v >= s->base + s->nn)) {
+              finding(R, V_SOLID, idx, "%s %ld = %d", fn == F_S_CONTACT_ACTIVE ? "active flag" : "node", k, v);
+              break;
+            }
+          }
+          if (c->oracle) solid_exact(R, idx, c, g);
+        }
+        break;
+      case F_S_CONTACT_FORCES:
+        if (out_full(c, 0)) {
+          /* the forces of a pair sum to zero: all of them too */
+          const double *v = (const double *)(const void *)g[0].p;
+          long n = c->out[0].req;
+          double sum[3] = {0, 0, 0}, mag = 0;
+          for (long k = 0; k < n; ++k) sum[k % 3] += v[k], mag += fabs(v[k]);
+          R->oracles[O_SOLID_CONTACT]++;
+          for (int k = 0; k < 3; ++k)
+            if (isfinite(mag) && mag < 1e300 && !(fabs(sum[k]) <= 1e-9 * mag + 1e-300)) {
+              finding(R, V_SOLID, idx, "the contact forces sum to %.3g in %c (of %.3g in all)", sum[k], 'x' + k, mag);
+              break;
+            }
+          if (c->oracle) solid_exact(R, idx, c, g);
+        }
+        break;
+      case F_S_AREA: case F_S_PAIR_AREA: {
+        double a;
+        memcpy(&a, g[0].p, 8);
+        R->oracles[O_SOLID_CONTACT]++;
+        if (a < 0) finding(R, V_SOLID, idx, "contact area %.17g", a);
+        if (c->oracle) solid_exact(R, idx, c, g);
+        break;
+      }
+      default: break;
+      }
+      /* ---- the shadow ---- */
+      switch (fn) {
+      case F_S_SET_MESH: {
+        int *t0 = xmalloc(sizeof(int) * 4 * (size_t)c->iv[1] + 1);
+        for (int k = 0; k < 4 * c->iv[1]; ++k) t0[k] = ((const int *)c->in[1].p)[k] - c->iv[2];
+        ss_new_mesh(s, c->iv[0], c->in[0].p, c->iv[1], t0, c->in[2].p, c->iv[2]);
+        free(t0);
+        break;
+      }
+      case F_S_LOAD_GMSH:
+        if (c->iv[0] == SG_VALID) ss_gmsh_valid(s, c->iv[1]);
+        else ss_clear_mesh(s), s->has_mesh = 1, s->base = c->iv[1];
+        break;
+      case F_S_SET_FACES: case F_S_ADD_FACES:
+        if (s->exact && c->in[0].n >= 3 * c->iv[0] && c->in[1].n >= c->iv[0]) {
+          int from = fn == F_S_ADD_FACES ? s->nf : 0, n = c->iv[0];
+          s->face = xrealloc(s->face, sizeof(int) * 3 * (size_t)(from + n) + 1);
+          s->ftag = xrealloc(s->ftag, sizeof(int) * (size_t)(from + n) + 1);
+          for (int k = 0; k < 3 * n; ++k) s->face[3 * from + k] = ((const int *)c->in[0].p)[k] - s->base;
+          if (n) memcpy(&s->ftag[from], c->in[1].p, sizeof(int) * (size_t)n);
+          s->nf = from + n;
+        } else {
+          s->exact = 0;
+        }
+        break;
+      case F_S_SET_MATERIAL:
+        if (ss_has_material(s, c->iv[0]) == 0) {
+          if (s->nmat < 16) s->mat_body[s->nmat] = c->iv[0];
+          s->nmat++;
+        }
+        break;
+      case F_S_FIX: case F_S_FIX_FACES:
+        s->constrained = 1;
+        if (s->exact) {
+          for (int v = 0; v < s->nn; ++v) {
+            int on = fn == F_S_FIX ? v == c->iv[0] - s->base : 0;
+            for (int f = 0; f < s->nf && !on && fn == F_S_FIX_FACES; ++f)
+              on = s->ftag[f] == c->iv[0] && (s->face[3 * f] == v || s->face[3 * f + 1] == v || s->face[3 * f + 2] == v);
+            if (on) s->presc[3 * v + c->iv[1]] = c->dv[0];
+          }
+        }
+        break;
+      case F_S_CLEAR_CONSTRAINTS:
+        s->constrained = 0;
+        for (int k = 0; s->exact && k < 3 * s->nn; ++k) s->presc[k] = NAN;
+        break;
+      case F_S_ADD_PRESSURE: case F_S_ADD_TRACTION:
+        s->loaded = 1;
+        s->load = xrealloc(s->load, sizeof(ss_load) * (size_t)(s->nl + 1));
+        s->load[s->nl++] = (ss_load){c->iv[0], fn == F_S_ADD_TRACTION, {c->dv[0], c->dv[1], c->dv[2]}};
+        break;
+      case F_S_ADD_NODAL_FORCE:
+        s->loaded = 1;
+        if (s->exact)
+          for (int k = 0; k < 3; ++k) s->nforce[3 * (c->iv[0] - s->base) + k] += c->dv[k];
+        break;
+      case F_S_CLEAR_LOADS:
+        s->loaded = 0;
+        s->nl = 0;
+        if (s->exact) memset(s->nforce, 0, sizeof(double) * 3 * (size_t)s->nn);
+        break;
+      case F_S_ADD_PAIR:
+        if (s->npairs < 16) s->pair_tag[s->npairs][0] = c->iv[0], s->pair_tag[s->npairs][1] = c->iv[1];
+        s->npairs++;
+        break;
+      case F_S_CLEAR_PAIRS: s->npairs = 0; break;
+      case F_S_SOLVE: case F_S_SOLVE_CONTACT:
+        s->results = 1, s->res_unknown = 0, s->undo = 0, s->sol_gen++;
+        break;
+      case F_S_STEP:
+        s->pre_results = s->results, s->pre_unknown = s->res_unknown;
+        s->pre_disp_ok = s->results && s->disp_gen == s->sol_gen;
+        s->pre_disp_hash = s->disp_hash, s->pre_disp_idx = s->disp_idx;
+        s->results = 2, s->res_unknown = 0, s->undo = 1, s->sol_gen++;
+        break;
+      case F_S_REVERT_STEP:
+        /* the results before the step, their displacements bit for bit */
+        if (s->undo == 1) {
+          s->results = s->pre_results, s->res_unknown = s->pre_unknown;
+          s->sol_gen++;
+          if (s->pre_disp_ok) s->disp_hash = s->pre_disp_hash, s->disp_gen = s->sol_gen, s->disp_idx = s->pre_disp_idx;
+        } else {
+          s->res_unknown = 1, s->sol_gen++;
+        }
+        s->undo = 0;
+        break;
+      case F_S_RECREATE:
+        ss_clear_mesh(s);
+        s->nmat = 0;
+        break;
+      default: break;
+      }
+      if (solid_changes_problem(fn)) s->results = 0, s->res_unknown = 0, s->undo = 0, s->sol_gen++;
+    }
+    if (fn == F_S_DESTROY && !c->handle) {
+      ss_clear_mesh(s);
+      s->nmat = 0;
+    }
+    return;
+  }
+  /* ---- the 3D context ---- */
+  if (fn == F_SC_CREATE) {
+    int base = c->iv[4], valid = (base == 0 || base == 1) && !solid_options_refused(c);
+    R->oracles[O_SOLID_HOST]++;
+    if ((st == TFEM_STATUS_OK) != valid)
+      finding(R, V_SOLID_HOST, idx, "tfem_solid_contact_create(%d, %s) %s", base, c->in[0].null_ ? "NULL" : "options",
+              st ? "returned NULL" : "made a context although its arguments are refused");
+    if (st == TFEM_STATUS_OK) {
+      s->sc_live = 1, s->sc_base = base, s->sc_nsides = s->sc_npairs = s->sc_built = s->sc_nn = 0;
+    }
+    return;
+  }
+  if (FN[fn].model != 4 || !s->sc_live) return;
+  int refused = -1;
+  if (fn == F_SC_ADD_SIDE) {
+    int nn = c->iv[2], nt = c->iv[3], base = s->sc_base;
+    const int64_t most = (int64_t)(PTRDIFF_MAX / 8);
+    refused = 0;
+    if (s->sc_built) refused = 1, snprintf(why, sizeof why, "B is built");
+    else if (nn < 0 || nt < 0) refused = 1, snprintf(why, sizeof why, "a negative count");
+    else if ((nn > 0 && (c->in[0].null_ || c->in[1].null_ || c->in[2].null_)) || (nt > 0 && c->in[3].null_))
+      refused = 1, snprintf(why, sizeof why, "an array NULL");
+    else if (!(isfinite(c->dv[0]) && c->dv[0] > 0)) refused = 1, snprintf(why, sizeof why, "Young's modulus %g", c->dv[0]);
+    else if (c->in[0].n < nn || c->in[1].n < 3 * nn || c->in[2].n < 3 * nn || c->in[3].n < 3 * nt || s->sc_nn > 512)
+      refused = -1;
+    else {
+      const int *ids = c->in[0].p, *tri = c->in[3].p;
+      const double *x = c->in[1].p;
+      const int64_t *eq = c->in[2].p;
+      for (int i = 0; i < nn && refused == 0; ++i) {
+        if (ids[i] < base) {
+          refused = 1, snprintf(why, sizeof why, "node %d below the index base", ids[i]);
+          break;
+        }
+        for (int k = 0; k < 3; ++k)
+          if (!isfinite(x[3 * i + k])) refused = 1, snprintf(why, sizeof why, "node %d at a non-finite coordinate", ids[i]);
+        for (int k = 0; k < 3; ++k)
+          if (eq[3 * i + k] >= (int64_t)base + most) refused = 1, snprintf(why, sizeof why, "an equation beyond any vector");
+        if (refused) break;
+        for (int v = 0; v < s->sc_nn; ++v)
+          if (s->sc_ids[v] == ids[i]) {
+            int same = 1;
+            for (int k = 0; k < 3; ++k)
+              same &= x[3 * i + k] == s->sc_xyz[v][k] && (eq[3 * i + k] < base ? -1 : eq[3 * i + k] - base) == s->sc_eq[v][k];
+            if (!same) refused = 1, snprintf(why, sizeof why, "node %d given before with other coordinates or equations", ids[i]);
+          }
+      }
+      for (int k = 0; k < 3 * nt && refused == 0; ++k) {
+        int found = 0;
+        for (int i = 0; i < nn && !found; ++i) found = ids[i] == tri[k];
+        if (!found) refused = 1, snprintf(why, sizeof why, "a triangle over node %d, which the side does not give", tri[k]);
+      }
+      if (refused == 0 && nt == 0) refused = 1, snprintf(why, sizeof why, "no triangle");
+    }
+    if (st == TFEM_STATUS_OK && !c->out[0].null_) {
+      int side;
+      memcpy(&side, g[0].p, 4);
+      if (side != s->sc_nsides + s->sc_base)
+        finding(R, V_SOLID_HOST, idx, "side number %d, %d sides were added before (index base %d)", side, s->sc_nsides, s->sc_base);
+    }
+    if (st == TFEM_STATUS_OK) {
+      if (s->sc_nsides < 64) s->sc_side_body[s->sc_nsides] = c->iv[1];
+      s->sc_nsides++;
+      const int *ids = c->in[0].p;
+      const double *x = c->in[1].p;
+      const int64_t *eq = c->in[2].p;
+      for (int i = 0; i < nn && c->in[0].n >= nn && c->in[1].n >= 3 * nn && c->in[2].n >= 3 * nn && s->sc_nn <= 512; ++i) {
+        int known = 0;
+        for (int v = 0; v < s->sc_nn && !known; ++v) known = s->sc_ids[v] == ids[i];
+        if (known) continue;
+        if (s->sc_nn == 512) {
+          s->sc_nn++;
+          break;
+        }
+        int v = s->sc_nn++;
+        s->sc_ids[v] = ids[i];
+        for (int k = 0; k < 3; ++k) s->sc_xyz[v][k] = x[3 * i + k], s->sc_eq[v][k] = eq[3 * i + k] < s->sc_base ? -1 : eq[3 * i + k] - s->sc_base;
+      }
+    }
+  } else if (fn == F_SC_ADD_PAIR) {
+    long a = (long)c->iv[0] - s->sc_base, b = (long)c->iv[1] - s->sc_base;
+    refused = s->sc_built || a < 0 || b < 0 || a >= s->sc_nsides || b >= s->sc_nsides ||
+              (a < 64 && b < 64 && s->sc_side_body[a] == s->sc_side_body[b]);
+    if (s->sc_nsides > 64) refused = -1;
+    snprintf(why, sizeof why, "sides %d and %d of %d%s", c->iv[0], c->iv[1], s->sc_nsides, s->sc_built ? ", B built" : "");
+    if (st == TFEM_STATUS_OK && !c->out[0].null_) {
+      int p;
+      memcpy(&p, g[0].p, 4);
+      if (p != s->sc_npairs + s->sc_base)
+        finding(R, V_SOLID_HOST, idx, "pair number %d, %d pairs were added before (index base %d)", p, s->sc_npairs, s->sc_base);
+    }
+    if (st == TFEM_STATUS_OK) s->sc_npairs++;
+  } else if (sc_builds(fn) && s->sc_npairs == 0) {
+    refused = 1, snprintf(why, sizeof why, "no contact pair");
+    if (st != TFEM_STATUS_OK && st != TFEM_STATUS_INVALID_STATE && st != TFEM_STATUS_NULL_POINTER &&
+        st != TFEM_STATUS_INVALID_ARGUMENT && st != TFEM_STATUS_BUFFER_TOO_SMALL)
+      finding(R, V_SOLID_HOST, idx, "%s without a pair: \"%.160s\"", status_name(st), msg);
+  }
+  if (refused >= 0) {
+    R->oracles[O_SOLID_HOST]++;
+    if (refused && st == TFEM_STATUS_OK) finding(R, V_SOLID_HOST, idx, "OK although %s (the header: refused)", why);
+    else if (!refused && st != TFEM_STATUS_OK && st != TFEM_STATUS_OUT_OF_MEMORY)
+      finding(R, V_SOLID_HOST, idx, "%s refused (%s): \"%.160s\"", why[0] ? why : "a valid call", status_name(st), msg);
+  }
+  if (c->want && R->pristine && idx < R->full_prefix && st != c->want - 1)
+    finding(R, V_SOLID_HOST, idx, "%s, the scene expects %s: \"%.160s\"", status_name(st), status_name(c->want - 1), msg);
+  if (st != TFEM_STATUS_OK) return;
+  if (sc_builds(fn)) s->sc_built = 1;
+  if (fn == F_SC_SIZES && !c->out[0].null_ && ssc_nodes(R) >= 0) {
+    int n;
+    memcpy(&n, g[0].p, 4);
+    R->oracles[O_SOLID_HOST]++;
+    if (n != ssc_nodes(R)) finding(R, V_SOLID_HOST, idx, "%d interface nodes, the sides gave %d", n, ssc_nodes(R));
+  }
+  if (fn == F_SC_NODES && out_full(c, 0) && ssc_nodes(R) >= 0 && c->out[0].req == ssc_nodes(R)) {
+    R->oracles[O_SOLID_HOST]++;
+    if (memcmp(g[0].p, s->sc_ids, sizeof(int) * (size_t)ssc_nodes(R)) != 0)
+      finding(R, V_SOLID_HOST, idx, "the interface nodes are not in the order the sides first gave them");
+  }
+  if (fn == F_SC_GET_ACTIVE && out_full(c, 0))
+    for (long k = 0; k < c->out[0].req; ++k) {
+      int v;
+      memcpy(&v, g[0].p + sizeof(int) * (size_t)k, sizeof v);
+      if (v != 0 && v != 1) {
+        finding(R, V_SOLID_HOST, idx, "active flag %ld = %d", k, v);
+        break;
+      }
+    }
+  int full0 = out_full(c, 0);
+  if ((fn == F_SC_PATTERN && full0 && out_full(c, 1)) || (fn == F_SC_EVALUATE && full0) ||
+      ((fn == F_SC_GATHER || fn == F_SC_SCATTER_ADD) && full0 && !c->in[0].null_) ||
+      (fn == F_SC_SET_ACTIVE && !c->in[0].null_) || fn == F_SC_UPDATE || (fn == F_SC_AREA && !c->out[0].null_))
+    oracle_solid_host(R, idx, c, g);
+  if (fn == F_SC_DESTROY && !c->handle) s->sc_live = 0;
+}
+/* Keeps the outputs of an OK call for the replay; frees the buffers. */
+static void keep_outputs(call_t *c, int st, int nout, const char *ver, gbuf *g) {
+  if (st == TFEM_STATUS_OK) {
+    if (c->fn == F_VERSION && ver) {
+      c->saved[0] = (unsigned char *)strdup(ver);
+    } else {
+      for (int j = 0; j < nout; ++j)
+        if (!c->out[j].null_) c->saved[j] = out_bytes(&g[j], &c->saved_n[j]);
+    }
+  }
+  for (int j = 0; j < nout; ++j) free(g[j].blk);
+}
+
 static void exec_call(runner_t *R, int idx) {
   call_t *c = &R->cs->c[idx];
   int fn = c->fn;
@@ -6207,13 +8805,23 @@ static void exec_call(runner_t *R, int idx) {
     }
     return;
   }
-  /* (a context's call without a context passes NULL) */
-  if (R->phase == 0 && FN[fn].model == 2 && !R->ctx) c->null_model = 1;
+  /* (a context's call without a context passes NULL; so does a 3D call
+   * once the 3D model is destroyed; a handle of the call's own kind is its
+   * own) */
+  if (R->phase == 0 && c->handle == FN[fn].model) c->handle = 0;
+  if (R->phase == 0 && ((c->handle == 1 && !R->m) || (c->handle == 2 && !R->octx) || (c->handle == 3 && !R->sm) ||
+                        (c->handle == 4 && !R->sctx)))
+    c->handle = 0, c->null_model = 1; /* (no handle of that kind: NULL) */
+  if (R->phase == 0 && !c->handle &&
+      ((FN[fn].model == 2 && !R->ctx) || (FN[fn].model == 3 && !R->sm) || (FN[fn].model == 4 && !R->sctx)))
+    c->null_model = 1;
   tfem_model *m = c->null_model ? NULL : R->m;
   tfem_contact *hc = c->null_model ? NULL : R->ctx;
+  tfem_solid_model *sm = c->null_model ? NULL : R->sm;
+  tfem_solid_contact *sx = c->null_model ? NULL : R->sctx;
   if (R->phase == 0) {
     resolve_outputs(R, c);
-    if (fn == F_CONTACT_PATTERN) c->out[1].len = c->out[0].len; /* (one length for both) */
+    if (fn == F_CONTACT_PATTERN || fn == F_SC_PATTERN) c->out[1].len = c->out[0].len; /* (one length for both) */
     if (fn == F_GET_CONTACT_SLAVE_NODES) { /* (one length for the four: the last one not exact, else the first's) */
       size_t L = c->out[0].len;
       for (int j = 0; j < 4; ++j)
@@ -6226,7 +8834,8 @@ static void exec_call(runner_t *R, int idx) {
         if (c->out[j].ls != LS_EXACT) L = c->out[j].len;
       for (int j = 0; j < 3; ++j) c->out[j].len = L;
     }
-    make_inputs(R, c, idx);
+    if (FN[fn].model == 4) make_solid_inputs(R, c, idx);
+    else make_inputs(R, c, idx);
   }
   const void *in[MAXIN];
   for (int j = 0; j < MAXIN; ++j) in[j] = c->in[j].null_ ? NULL : c->in[j].p;
@@ -6239,15 +8848,16 @@ static void exec_call(runner_t *R, int idx) {
     o[j] = c->out[j].null_ ? NULL : g[j].p;
   }
   /* tfem_contact_scatter_add adds to the host's vector: it starts with the values made for it */
-  if (fn == F_CONTACT_SCATTER_ADD && c->in[1].p && g[0].n <= (size_t)c->in[1].n)
+  if ((fn == F_CONTACT_SCATTER_ADD || fn == F_SC_SCATTER_ADD) && c->in[1].p && g[0].n <= (size_t)c->in[1].n)
     memcpy(g[0].p, c->in[1].p, sizeof(double) * g[0].n);
   size_t ulen = c->in[0].n > 0 ? (size_t)c->in[0].n : 0;
   size_t lel = 0;
   const char *ver = NULL;
   const char *path = NULL;
   if (fn == F_LOAD_GMSH && c->iv[0] >= 0 && c->iv[0] < NGMSH) path = g_path[c->iv[0]];
+  if (fn == F_S_LOAD_GMSH && c->iv[0] >= 0 && c->iv[0] < NSG) path = sg_path[c->iv[0]];
   char vbuf[600];
-  if (fn == F_WRITE_VTU) {
+  if (fn == F_WRITE_VTU || fn == F_S_WRITE_VTU) {
     path = vtu_path(c->iv[0], R->cs->index, idx, vbuf, sizeof vbuf);
     if (vtu_writable(c->iv[0])) unlink(path); /* (left by a child that died) */
   }
@@ -6258,6 +8868,13 @@ static void exec_call(runner_t *R, int idx) {
   if (R->verbose && R->phase == 0) {
     printf("  #%-3d %-34s", idx, fn_name(fn));
     fflush(stdout);
+  }
+  /* a handle of another kind, or destroyed (made last: nothing is made
+   * between its destruction and the call) */
+  void *hp = NULL;
+  if (c->handle && !c->null_model && FN[fn].model) {
+    hp = call_handle(R, c);
+    m = hp, hc = hp, sm = hp, sx = hp;
   }
   off_t e0 = fd_size(2);
   int st = TFEM_STATUS_OK;
@@ -6340,7 +8957,7 @@ static void exec_call(runner_t *R, int idx) {
   }
   case F_CONTACT_DESTROY:
     tfem_contact_destroy(hc);
-    if (hc) R->ctx = NULL, R->cbuilt = 0;
+    if (hc && !c->handle) R->ctx = NULL, R->cbuilt = 0;
     break;
   case F_CONTACT_LAST_ERROR: st = tfem_contact_last_error(hc, o[0], c->out[0].len); break;
   case F_CONTACT_SET_OPTIONS: st = tfem_contact_set_options(hc, c->in[0].null_ ? NULL : &opts); break;
@@ -6389,6 +9006,98 @@ static void exec_call(runner_t *R, int idx) {
     break;
   case F_GET_ADAPT_CYCLES: st = tfem_get_adapt_cycles(m, o[0], o[1], o[2], c->out[0].len); break;
   case F_SET_BOUNDARY_CIRCLE: st = tfem_set_boundary_circle(m, c->iv[0], c->dv[0], c->dv[1], c->dv[2]); break;
+  /* the 3D model */
+  case F_S_LAST_ERROR: st = tfem_solid_last_error(sm, o[0], c->out[0].len); break;
+  case F_S_LAST_ERROR_LENGTH: lel = tfem_solid_last_error_length(sm); break;
+  case F_S_WARNING_COUNT: st = tfem_solid_warning_count(sm, o[0]); break;
+  case F_S_GET_WARNING_SIZE: st = tfem_solid_get_warning_size(sm, c->iv[0], o[0]); break;
+  case F_S_GET_WARNING: st = tfem_solid_get_warning(sm, c->iv[0], o[0], c->out[0].len); break;
+  case F_S_SET_MESH: st = tfem_solid_set_mesh(sm, c->iv[0], in[0], c->iv[1], in[1], in[2], c->iv[2]); break;
+  case F_S_LOAD_GMSH: st = tfem_solid_load_gmsh(sm, path, c->iv[1]); break;
+  case F_S_SET_FACES: st = tfem_solid_set_boundary_faces(sm, c->iv[0], in[0], in[1]); break;
+  case F_S_ADD_FACES: st = tfem_solid_add_boundary_faces(sm, c->iv[0], in[0], in[1]); break;
+  case F_S_GET_SIZES: st = tfem_solid_get_sizes(sm, o[0], o[1], o[2]); break;
+  case F_S_FACE_COUNT: st = tfem_solid_get_boundary_face_count(sm, o[0]); break;
+  case F_S_MESH_NODES: st = tfem_solid_get_mesh_nodes(sm, o[0], c->out[0].len); break;
+  case F_S_MESH_TETS: st = tfem_solid_get_mesh_tetrahedra(sm, o[0], c->out[0].len, o[1], c->out[1].len); break;
+  case F_S_GET_FACES: st = tfem_solid_get_boundary_faces(sm, o[0], c->out[0].len, o[1], c->out[1].len); break;
+  case F_S_SET_MATERIAL: st = tfem_solid_set_material(sm, c->iv[0], c->dv[0], c->dv[1]); break;
+  case F_S_SET_TEMPERING: st = tfem_solid_set_tempering(sm, c->iv[0], c->dv[0]); break;
+  case F_S_SET_ORDERING: st = tfem_solid_set_ordering(sm, c->iv[0]); break;
+  case F_S_FIX: st = tfem_solid_fix(sm, c->iv[0], c->iv[1], c->dv[0]); break;
+  case F_S_FIX_FACES: st = tfem_solid_fix_faces(sm, c->iv[0], c->iv[1], c->dv[0]); break;
+  case F_S_CLEAR_CONSTRAINTS: st = tfem_solid_clear_constraints(sm); break;
+  case F_S_ADD_PRESSURE: st = tfem_solid_add_pressure(sm, c->iv[0], c->dv[0]); break;
+  case F_S_ADD_TRACTION: st = tfem_solid_add_traction(sm, c->iv[0], c->dv[0], c->dv[1], c->dv[2]); break;
+  case F_S_ADD_NODAL_FORCE: st = tfem_solid_add_nodal_force(sm, c->iv[0], c->dv[0], c->dv[1], c->dv[2]); break;
+  case F_S_CLEAR_LOADS: st = tfem_solid_clear_loads(sm); break;
+  case F_S_ADD_PAIR: st = tfem_solid_add_contact_pair(sm, c->iv[0], c->iv[1], o[0]); break;
+  case F_S_CLEAR_PAIRS: st = tfem_solid_clear_contact_pairs(sm); break;
+  case F_S_SOLVE: st = tfem_solid_solve(sm, o[0]); break;
+  case F_S_SOLVE_CONTACT: st = tfem_solid_solve_contact(sm, c->in[0].null_ ? NULL : &opts, o[0]); break;
+  case F_S_STEP: st = tfem_solid_step(sm, c->dv[2], c->in[0].null_ ? NULL : &opts, o[0]); break;
+  case F_S_REVERT_STEP: st = tfem_solid_revert_step(sm); break;
+  case F_S_SOLVE_INFO: st = tfem_solid_get_solve_info(sm, o[0]); break;
+  case F_S_ITERATIONS: st = tfem_solid_get_iterations(sm, o[0]); break;
+  case F_S_DISPLACEMENTS: st = tfem_solid_get_displacements(sm, o[0], c->out[0].len); break;
+  case F_S_STRAINS: st = tfem_solid_get_element_strains(sm, o[0], c->out[0].len); break;
+  case F_S_STRESSES: st = tfem_solid_get_element_stresses(sm, o[0], c->out[0].len); break;
+  case F_S_REACTIONS: st = tfem_solid_get_reactions(sm, o[0], c->out[0].len); break;
+  case F_S_WORK: st = tfem_solid_get_external_work(sm, o[0]); break;
+  case F_S_CONTACT_TETS: st = tfem_solid_get_contact_tetrahedra(sm, o[0], c->out[0].len); break;
+  case F_S_CONTACT_ACTIVE: st = tfem_solid_get_contact_active(sm, o[0], c->out[0].len); break;
+  case F_S_CONTACT_FORCES: st = tfem_solid_get_contact_forces(sm, o[0], c->out[0].len); break;
+  case F_S_NODAL_PRESSURES: st = tfem_solid_get_contact_nodal_pressures(sm, o[0], c->out[0].len); break;
+  case F_S_AREA: st = tfem_solid_get_contact_area(sm, o[0]); break;
+  case F_S_PAIR_AREA: st = tfem_solid_get_contact_pair_area(sm, c->iv[0], o[0]); break;
+  case F_S_WRITE_VTU: st = tfem_solid_write_vtu(sm, path); break;
+  case F_S_DESTROY:
+    tfem_solid_destroy(sm);
+    if (sm && !c->handle) R->sm = NULL;
+    break;
+  case F_S_RECREATE:
+    tfem_solid_destroy(R->sm);
+    R->sm = tfem_solid_create();
+    break;
+  /* the 3D contact context */
+  case F_SC_CREATE: {
+    tfem_solid_contact *nc = tfem_solid_contact_create(c->iv[4], c->in[0].null_ ? NULL : &opts);
+    if (nc) {
+      tfem_solid_contact_destroy(R->sctx);
+      R->sctx = nc;
+    } else {
+      st = TFEM_STATUS_INVALID_ARGUMENT; /* (NULL: the message is the thread's) */
+    }
+    break;
+  }
+  case F_SC_DESTROY:
+    tfem_solid_contact_destroy(sx);
+    if (sx && !c->handle) R->sctx = NULL;
+    break;
+  case F_SC_LAST_ERROR: st = tfem_solid_contact_last_error(sx, o[0], c->out[0].len); break;
+  case F_SC_LAST_ERROR_LENGTH: lel = tfem_solid_contact_last_error_length(sx); break;
+  case F_SC_ADD_SIDE:
+    st = tfem_solid_contact_add_side(sx, c->iv[0], c->iv[1], c->dv[0], c->iv[2], in[0], in[1], in[2], c->iv[3], in[3], o[0]);
+    break;
+  case F_SC_ADD_PAIR: st = tfem_solid_contact_add_pair(sx, c->iv[0], c->iv[1], o[0]); break;
+  case F_SC_SETUP: st = tfem_solid_contact_setup(sx); break;
+  case F_SC_SIZES: st = tfem_solid_contact_sizes(sx, o[0], o[1], o[2]); break;
+  case F_SC_NODES: st = tfem_solid_contact_nodes(sx, o[0], c->out[0].len); break;
+  case F_SC_TETS: st = tfem_solid_contact_tetrahedra(sx, o[0], c->out[0].len); break;
+  case F_SC_PATTERN: st = tfem_solid_contact_pattern(sx, o[0], o[1], c->out[0].len); break;
+  case F_SC_ELEMENT_EQUATIONS: st = tfem_solid_contact_element_equations(sx, o[0], c->out[0].len); break;
+  case F_SC_ELEMENT_BLOCKS: st = tfem_solid_contact_element_blocks(sx, o[0], c->out[0].len); break;
+  case F_SC_EVALUATE:
+    st = tfem_solid_contact_evaluate(sx, in[0], ulen, o[0], c->out[0].len, o[1], c->out[1].len);
+    break;
+  case F_SC_GATHER: st = tfem_solid_contact_gather(sx, in[0], ulen, o[0], c->out[0].len); break;
+  case F_SC_SCATTER_ADD: st = tfem_solid_contact_scatter_add(sx, in[0], ulen, o[0], c->out[0].len); break;
+  case F_SC_UPDATE: st = tfem_solid_contact_update(sx, in[0], ulen, o[0], o[1], o[2]); break;
+  case F_SC_RESTART: st = tfem_solid_contact_restart(sx); break;
+  case F_SC_GET_ACTIVE: st = tfem_solid_contact_get_active(sx, o[0], c->out[0].len); break;
+  case F_SC_SET_ACTIVE: st = tfem_solid_contact_set_active(sx, in[0], ulen); break;
+  case F_SC_GAPS: st = tfem_solid_contact_gaps(sx, in[0], ulen, o[0], c->out[0].len); break;
+  case F_SC_AREA: st = tfem_solid_contact_area(sx, o[0]); break;
   case F_DESTROY_NULL: tfem_destroy(NULL); break;
   case F_RECREATE:
     tfem_destroy(R->m);
@@ -6401,7 +9110,7 @@ static void exec_call(runner_t *R, int idx) {
   char *vtu = NULL;
   size_t vtu_n = 0;
   int vtu_found = 0;
-  if (fn == F_WRITE_VTU && path && vtu_writable(c->iv[0])) {
+  if ((fn == F_WRITE_VTU || fn == F_S_WRITE_VTU) && path && vtu_writable(c->iv[0])) {
     FILE *vf = fopen(path, "rb");
     if (vf) {
       vtu_found = 1;
@@ -6439,7 +9148,10 @@ static void exec_call(runner_t *R, int idx) {
     char why[400] = "";
     if (st != TFEM_STATUS_OK) {
       char msg[300] = "";
-      if (FN[fn].model == 2 && hc) tfem_contact_last_error(hc, msg, sizeof msg);
+      if (c->handle) tfem_last_error(NULL, msg, sizeof msg);
+      else if (FN[fn].model == 2 && hc) tfem_contact_last_error(hc, msg, sizeof msg);
+      else if (FN[fn].model == 3 && sm) tfem_solid_last_error(sm, msg, sizeof msg);
+      else if (FN[fn].model == 4 && sx) tfem_solid_contact_last_error(sx, msg, sizeof msg);
       else tfem_last_error(FN[fn].model == 1 && !c->null_model ? R->m : NULL, msg, sizeof msg);
       snprintf(why, sizeof why, "OK originally, %s (%d) on replay without the failed calls: %s", status_name(st), st, msg);
       R->status_flips++;
@@ -6489,14 +9201,21 @@ static void exec_call(runner_t *R, int idx) {
   c->status = st;
   c->ran = 1;
   R->calls++;
-  const tfem_model *slot = (FN[fn].model == 1 && !c->null_model) ? R->m : NULL;
-  int hslot = FN[fn].model == 2 && hc; /* the message is the context's */
+  /* (the message of a call given another handle is the thread's) */
+  const tfem_model *slot = (FN[fn].model == 1 && !c->null_model && !c->handle) ? R->m : NULL;
+  int hslot = FN[fn].model == 2 && hc && !c->handle; /* the message is the context's */
+  tfem_solid_model *sslot = FN[fn].model == 3 && !c->handle ? sm : NULL;         /* ... the 3D model's */
+  tfem_solid_contact *scslot = FN[fn].model == 4 && !c->handle ? sx : NULL;      /* ... the 3D context's */
   int msg_fn = fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && fn != F_VERSION && fn != F_DESTROY_NULL &&
                fn != F_RECREATE && fn != F_CONTACT_LAST_ERROR && fn != F_CONTACT_DESTROY &&
-               fn != F_CONTACT_LAST_ERROR_LENGTH;
+               fn != F_CONTACT_LAST_ERROR_LENGTH && fn != F_S_LAST_ERROR && fn != F_S_LAST_ERROR_LENGTH &&
+               fn != F_S_DESTROY && fn != F_S_RECREATE && fn != F_SC_LAST_ERROR && fn != F_SC_LAST_ERROR_LENGTH &&
+               fn != F_SC_DESTROY;
   static __thread char msg[65536];
   msg[0] = 0;
   if (msg_fn && hslot) tfem_contact_last_error(hc, msg, sizeof msg);
+  else if (msg_fn && sslot) tfem_solid_last_error(sslot, msg, 4096);
+  else if (msg_fn && scslot) tfem_solid_contact_last_error(scslot, msg, 4096);
   else if (msg_fn) tfem_last_error(slot, msg, 4096);
   c->refine_refused = fn == F_SOLVE_ADAPTIVE && st == TFEM_STATUS_INVALID_ARGUMENT && strstr(msg, "curve") != NULL;
   if (R->verbose) {
@@ -6541,25 +9260,27 @@ static void exec_call(runner_t *R, int idx) {
   for (int j = 0; j < nout; ++j)
     if (!c->out[j].null_ && !gb_canary_ok(&g[j]))
       finding(R, V_CANARY, idx, "output %d (declared length %zu) has a canary overwritten", j, c->out[j].len);
-  if (st != TFEM_STATUS_OK && !writes_on_failure(fn))
+  if (st != TFEM_STATUS_OK && !may_write_on_failure(fn, st))
     for (int j = 0; j < nout; ++j)
-      if (!c->out[j].null_ && (fn == F_CONTACT_SCATTER_ADD ? c->in[1].p && g[0].n <= (size_t)c->in[1].n &&
+      if (!c->out[j].null_ && (fn == F_CONTACT_SCATTER_ADD || fn == F_SC_SCATTER_ADD ? c->in[1].p && g[0].n <= (size_t)c->in[1].n &&
                                                               memcmp(g[0].p, c->in[1].p, sizeof(double) * g[0].n) != 0
                                                         : !gb_untouched(&g[j])))
         finding(R, V_WRITE_ON_FAIL, idx, "output %d written although the status is %s", j, status_name(st));
   if (c->null_model && FN[fn].model && fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && fn != F_CONTACT_DESTROY &&
-      fn != F_CONTACT_LAST_ERROR_LENGTH && st != TFEM_STATUS_NULL_POINTER)
+      fn != F_CONTACT_LAST_ERROR_LENGTH && fn != F_S_LAST_ERROR_LENGTH && fn != F_SC_LAST_ERROR_LENGTH &&
+      fn != F_S_DESTROY && fn != F_SC_DESTROY && st != TFEM_STATUS_NULL_POINTER)
     finding(R, V_OTHER, idx, "NULL model gave %s, not NULL_POINTER", status_name(st));
   /* NULL pointers other than the model: a required one must be refused, an
    * optional one ("may be NULL") accepted. (An input array of no element
    * may be NULL.) */
-  if (FN[fn].model && !c->null_model && fn != F_LAST_ERROR && fn != F_CONTACT_LAST_ERROR) {
+  if (FN[fn].model && !c->null_model && !c->handle && fn != F_LAST_ERROR && fn != F_CONTACT_LAST_ERROR &&
+      fn != F_S_LAST_ERROR && fn != F_SC_LAST_ERROR) {
     int req_null = -1, opt_null = -1;
     for (int j = 0; j < nout; ++j)
       if (c->out[j].null_) *(out_nullable(fn, j) ? &opt_null : &req_null) = j;
     for (int j = 0; j < fn_nin(fn); ++j)
       if (c->in[j].null_ && (FN[fn].ink[j] == 'o' || FN[fn].ink[j] == 'r' || c->in[j].n > 0) &&
-          !(fn == F_CONTACT_SCATTER_ADD && j == 1))
+          !((fn == F_CONTACT_SCATTER_ADD || fn == F_SC_SCATTER_ADD) && j == 1))
         *(FN[fn].ink[j] == 'o' ? &opt_null : &req_null) = 10 + j;
     if (req_null >= 0 && st == TFEM_STATUS_OK)
       finding(R, V_NULL_ARG, idx, "OK although %s %d is NULL", req_null >= 10 ? "input" : "output", req_null % 10);
@@ -6570,9 +9291,14 @@ static void exec_call(runner_t *R, int idx) {
 
   /* Messages. */
   if (msg_fn) {
-    size_t sl = strlen(msg), L = hslot ? sl + 1 : tfem_last_error_length(slot);
+    size_t sl = strlen(msg), L = hslot     ? sl + 1
+                                 : sslot   ? tfem_solid_last_error_length(sslot)
+                                 : scslot  ? tfem_solid_contact_last_error_length(scslot)
+                                           : tfem_last_error_length(slot);
     if (st != TFEM_STATUS_OK) {
-      if (sl == 0) finding(R, V_EMPTY_MSG, idx, "status %s without a message (%s slot)", status_name(st), slot ? "model" : "thread");
+      if (sl == 0)
+        finding(R, V_EMPTY_MSG, idx, "status %s without a message (%s slot)", status_name(st),
+                slot ? "model" : sslot ? "3D model" : scslot ? "3D context" : "thread");
       if (L > MAX_MSG + 1) {
         char ex[200];
         excerpt(msg, sl < 120 ? sl : 120, ex, sizeof ex);
@@ -6580,9 +9306,9 @@ static void exec_call(runner_t *R, int idx) {
       }
       if (L <= 4096 && L != sl + 1)
         finding(R, V_LASTERR, idx, "tfem_last_error_length = %zu but the message has %zu bytes", L, sl);
-    } else if ((slot || hslot) && sl != 0) {
+    } else if ((slot || hslot || sslot || scslot) && sl != 0) {
       finding(R, V_LASTERR, idx, "the model's message is not empty after a successful call: \"%.80s\"", msg);
-    } else if (!slot && !hslot && sl != 0 && !FN[fn].model) {
+    } else if (!slot && !hslot && !sslot && !scslot && sl != 0 && !FN[fn].model) {
       char ex[200];
       excerpt(msg, sl < 100 ? sl : 100, ex, sizeof ex);
       finding(R, V_SLOT, idx, "tfem_last_error(NULL) still gives \"%s\" after this successful model-free call", ex);
@@ -6590,13 +9316,22 @@ static void exec_call(runner_t *R, int idx) {
   }
 
   /* The last-error calls themselves. */
-  if (fn == F_LAST_ERROR || (fn == F_CONTACT_LAST_ERROR && hc)) {
+  if (!c->handle && (fn == F_LAST_ERROR || (fn == F_CONTACT_LAST_ERROR && hc) || (fn == F_S_LAST_ERROR && sm) ||
+                      (fn == F_SC_LAST_ERROR && sx))) {
     size_t L = fn == F_LAST_ERROR ? tfem_last_error_length(m) : 0;
-    if (fn == F_CONTACT_LAST_ERROR) {
+    if (fn == F_CONTACT_LAST_ERROR || fn == F_S_LAST_ERROR || fn == F_SC_LAST_ERROR) {
       static __thread char b[65536];
       b[0] = 0;
-      tfem_contact_last_error(hc, b, sizeof b);
+      if (fn == F_CONTACT_LAST_ERROR) tfem_contact_last_error(hc, b, sizeof b);
+      else if (fn == F_S_LAST_ERROR) tfem_solid_last_error(sm, b, sizeof b);
+      else tfem_solid_contact_last_error(sx, b, sizeof b);
       L = strlen(b) + 1;
+      if (fn == F_S_LAST_ERROR && tfem_solid_last_error_length(sm) != L)
+        finding(R, V_LASTERR, idx, "tfem_solid_last_error_length = %zu, the message has %zu bytes", tfem_solid_last_error_length(sm),
+                L - 1);
+      if (fn == F_SC_LAST_ERROR && tfem_solid_contact_last_error_length(sx) != L)
+        finding(R, V_LASTERR, idx, "tfem_solid_contact_last_error_length = %zu, the message has %zu bytes",
+                tfem_solid_contact_last_error_length(sx), L - 1);
     }
     size_t len = c->out[0].len;
     if (!o[0]) {
@@ -6616,6 +9351,16 @@ static void exec_call(runner_t *R, int idx) {
   if (fn == F_CONTACT_CREATE && (st == TFEM_STATUS_OK) != (c->iv[0] == 0 || c->iv[0] == 1))
     finding(R, V_OTHER, idx, "tfem_contact_create(%d) %s", c->iv[0], st ? "returned NULL" : "made a context");
   if (fn == F_LAST_ERROR_LENGTH && lel < 1) finding(R, V_LASTERR, idx, "tfem_last_error_length = 0");
+  if ((fn == F_S_LAST_ERROR_LENGTH || fn == F_SC_LAST_ERROR_LENGTH) && !c->handle) {
+    /* 1 for NULL; else the message the *_last_error function gives, with its NUL */
+    static __thread char b[65536];
+    b[0] = 0;
+    if (fn == F_S_LAST_ERROR_LENGTH && sm) tfem_solid_last_error(sm, b, sizeof b);
+    if (fn == F_SC_LAST_ERROR_LENGTH && sx) tfem_solid_contact_last_error(sx, b, sizeof b);
+    if (lel != strlen(b) + 1)
+      finding(R, V_LASTERR, idx, "%s = %zu, the message (%s) has %zu bytes", fn_name(fn), lel,
+              c->null_model ? "NULL handle" : "live", strlen(b));
+  }
   if (fn == F_CONTACT_LAST_ERROR_LENGTH) {
     /* 1 for NULL; else the message tfem_contact_last_error gives, with its NUL */
     static __thread char b[65536];
@@ -6656,7 +9401,8 @@ static void exec_call(runner_t *R, int idx) {
    * holding the grid of the model's points and cells; an unwritable path
    * refused with TFEM_STATUS_IO once there are results; NUMERICAL_FAILURE
    * only as an accessor of what it writes refuses it, nothing written. */
-  if (fn == F_WRITE_VTU && !c->null_model) {
+  if (fn == F_S_WRITE_VTU) solid_vtu_check(R, idx, c, st, path, vtu, vtu_n, vtu_found, msg);
+  if (fn == F_WRITE_VTU && !c->null_model && !c->handle) {
     const shadow_t *sv = &R->sh;
     int known = sv->has_mesh && sv->results && !sv->res_unknown;
     if (!path && st != TFEM_STATUS_NULL_POINTER) {
@@ -6714,7 +9460,7 @@ static void exec_call(runner_t *R, int idx) {
       /* (scatter_add adds to the host's own vector: a non-finite value
        * already in it stays; gather and scatter_add refuse one they read) */
       int passed_through = 0;
-      if (fn == F_CONTACT_SCATTER_ADD && c->in[1].p)
+      if ((fn == F_CONTACT_SCATTER_ADD || fn == F_SC_SCATTER_ADD) && c->in[1].p)
         for (int i = 0; i < c->in[1].n && !passed_through; ++i) passed_through = !isfinite(((const double *)c->in[1].p)[i]);
       if (b->kind == K_D && !passed_through) {
         for (size_t i = 0; i < b->n; ++i) {
@@ -6796,7 +9542,7 @@ static void exec_call(runner_t *R, int idx) {
        * equations the sides use, fewer than the model's 2 n_nodes when the
        * last nodes are off the interface; seed 11 case 17609) */
       if (!FN[fn].scalar_out && b->kind != K_C && c->out[j].req >= 0 && (size_t)c->out[j].req > b->n &&
-          fn != F_CONTACT_SCATTER_ADD)
+          fn != F_CONTACT_SCATTER_ADD && fn != F_SC_SCATTER_ADD)
         finding(R, V_OTHER, idx, "OK with output %d of length %zu where %ld are needed", j, b->n, c->out[j].req);
     }
     /* Structure of the system matrix. */
@@ -6843,8 +9589,17 @@ static void exec_call(runner_t *R, int idx) {
       if (nn != R->sh.nn || nt != R->sh.nt) finding(R, V_OTHER, idx, "sizes %d, %d; the mesh has %d, %d", nn, nt, R->sh.nn, R->sh.nt);
     }
     if (c->null_model && FN[fn].model && fn != F_LAST_ERROR && fn != F_LAST_ERROR_LENGTH && fn != F_CONTACT_DESTROY &&
-        fn != F_CONTACT_LAST_ERROR_LENGTH)
+        fn != F_CONTACT_LAST_ERROR_LENGTH && fn != F_S_LAST_ERROR_LENGTH && fn != F_SC_LAST_ERROR_LENGTH &&
+        fn != F_S_DESTROY && fn != F_SC_DESTROY)
       finding(R, V_OTHER, idx, "OK with a NULL model");
+  }
+
+  /* ---- the 3D model and context, and calls given a handle of another kind ---- */
+  if (c->handle || FN[fn].model >= 3 || fn == F_S_RECREATE || fn == F_SC_CREATE) {
+    if (c->handle && !c->null_model) oracle_handle(R, idx, c, st, hp, lel, g, msg);
+    else solid_checks(R, idx, c, st, g, msg);
+    keep_outputs(c, st, nout, ver, g);
+    return;
   }
 
   /* ---- the contact context and load steps ---- */
@@ -7795,15 +10550,7 @@ static void exec_call(runner_t *R, int idx) {
   }
 
   /* Keep the outputs for the replay. */
-  if (st == TFEM_STATUS_OK) {
-    if (fn == F_VERSION && ver) {
-      c->saved[0] = (unsigned char *)strdup(ver);
-    } else {
-      for (int j = 0; j < nout; ++j)
-        if (!c->out[j].null_) c->saved[j] = out_bytes(&g[j], &c->saved_n[j]);
-    }
-  }
-  for (int j = 0; j < nout; ++j) free(g[j].blk);
+  keep_outputs(c, st, nout, ver, g);
 }
 
 /* ------------------------------------------------------------------------ */
@@ -7872,6 +10619,14 @@ static void c_emit_header(FILE *f, const case_t *cs) {
           "  char b[4096] = \"\";\n  if (s != TFEM_STATUS_OK) {\n    if (c) tfem_contact_last_error(c, b, sizeof b);\n"
           "    else tfem_last_error(NULL, b, sizeof b);\n  }\n"
           "  printf(\"%%s #%%d %%s -> %%d %%s\\n\", L, k, fn, (int)s, b);\n}\n"
+          "static inline void show_s(const tfem_solid_model *m, int k, const char *fn, tfem_status s) {\n"
+          "  char b[4096] = \"\";\n  if (s != TFEM_STATUS_OK) {\n    if (m) tfem_solid_last_error(m, b, sizeof b);\n"
+          "    else tfem_last_error(NULL, b, sizeof b);\n  }\n"
+          "  printf(\"%%s #%%d %%s -> %%d %%s\\n\", L, k, fn, (int)s, b);\n}\n"
+          "static inline void show_sc(const tfem_solid_contact *c, int k, const char *fn, tfem_status s) {\n"
+          "  char b[4096] = \"\";\n  if (s != TFEM_STATUS_OK) {\n    if (c) tfem_solid_contact_last_error(c, b, sizeof b);\n"
+          "    else tfem_last_error(NULL, b, sizeof b);\n  }\n"
+          "  printf(\"%%s #%%d %%s -> %%d %%s\\n\", L, k, fn, (int)s, b);\n}\n"
           "static inline unsigned long long fnv(const void *p, size_t n) {\n"
           "  unsigned long long h = 1469598103934665603ULL;\n"
           "  for (size_t i = 0; i < n; ++i) h = (h ^ ((const unsigned char *)p)[i]) * 1099511628211ULL;\n"
@@ -7899,6 +10654,10 @@ static void c_emit_header(FILE *f, const case_t *cs) {
           "  if (f) {\n    fwrite(text, 1, n, f);\n    fclose(f);\n  }\n}\n\n"
           "static void run(void) {\n  tfem_model *m = tfem_create();\n  tfem_contact *cx = NULL;\n  tfem_status s;\n  (void)s;\n",
           cs->seed, cs->index, cs->kind);
+  if (cs->solid)
+    fprintf(f, "  tfem_solid_model *sm = tfem_solid_create();\n  tfem_solid_contact *scx = NULL;\n"
+               "  tfem_contact *ocx = tfem_contact_create(0); /* (a handle of another kind) */\n"
+               "  (void)sm, (void)scx, (void)ocx;\n");
 }
 
 static void c_emit_call(FILE *f, const call_t *c, int idx) {
@@ -7906,6 +10665,24 @@ static void c_emit_call(FILE *f, const call_t *c, int idx) {
   char b1[64];
   const char *M = c->null_model ? "NULL" : "m";
   fprintf(f, "  if (!skip(%d)) {\n", idx);
+  /* the handle of another kind the call is given, or one destroyed just before */
+  static const char *const KT[5] = {"", "tfem_model", "tfem_contact", "tfem_solid_model", "tfem_solid_contact"};
+  static const char *const HV[5] = {"", "m", "ocx", "sm", "scx"};
+  char hx[96] = "";
+  int kind = FN[fn].model;
+  if (c->handle && !c->null_model && kind) {
+    if (c->handle == 5) {
+      static const char *const mk[5] = {"", "tfem_create()", "tfem_contact_create(0)", "tfem_solid_create()",
+                                        "tfem_solid_contact_create(0, NULL)"};
+      static const char *const rm[5] = {"", "tfem_destroy", "tfem_contact_destroy", "tfem_solid_destroy",
+                                         "tfem_solid_contact_destroy"};
+      fprintf(f, "    %s *dead = %s;\n    %s(dead); /* (a destroyed handle) */\n", KT[kind], mk[kind], rm[kind]);
+      snprintf(hx, sizeof hx, "dead");
+    } else {
+      snprintf(hx, sizeof hx, "(%s *)%s", KT[kind], HV[c->handle]);
+    }
+    M = hx;
+  }
   for (int j = 0; j < fn_nin(fn); ++j) {
     char role = FN[fn].ink[j];
     if (role == 'o' || role == 'r' || c->in[j].null_ || (fn == F_CONTACT_SCATTER_ADD && j == 1 && c->out[0].null_)) continue;
@@ -7942,8 +10719,9 @@ static void c_emit_call(FILE *f, const call_t *c, int idx) {
   for (int k = 0; k < MAXD; ++k) cdbl(c->dv[k], d[k]);
   const int *I = c->iv;
   size_t *len = (size_t[]){c->out[0].len, c->out[1].len, c->out[2].len, c->out[3].len};
-  const char *sl = FN[fn].model == 1 ? M : "NULL";
-  const char *H = c->null_model ? "NULL" : "cx";
+  const char *sl = FN[fn].model == 1 && !hx[0] ? M : "NULL";
+  const char *H = hx[0] ? hx : c->null_model ? "NULL" : "cx";
+  const char *SM = hx[0] ? hx : c->null_model ? "NULL" : "sm", *SX = hx[0] ? hx : c->null_model ? "NULL" : "scx";
   size_t ul = c->in[0].n > 0 ? (size_t)c->in[0].n : 0;
   switch (fn) {
   case F_VERSION: fprintf(f, "    printf(\"%%s #%d version %%s\\n\", L, tfem_version());\n", idx); break;
@@ -8141,11 +10919,155 @@ static void c_emit_call(FILE *f, const call_t *c, int idx) {
     break;
   case F_DESTROY_NULL: fprintf(f, "    tfem_destroy(NULL);\n"); break;
   case F_RECREATE: fprintf(f, "    tfem_destroy(m);\n    m = tfem_create();\n"); break;
+  /* the 3D model */
+  case F_S_LAST_ERROR: fprintf(f, "    s = tfem_solid_last_error(%s, %s, %zu);\n", SM, o[0], len[0]); break;
+  case F_S_LAST_ERROR_LENGTH:
+    fprintf(f, "    printf(\"%%s #%d length %%zu\\n\", L, tfem_solid_last_error_length(%s));\n", idx, SM);
+    break;
+  case F_S_WARNING_COUNT: fprintf(f, "    s = tfem_solid_warning_count(%s, %s);\n", SM, o[0]); break;
+  case F_S_GET_WARNING_SIZE: fprintf(f, "    s = tfem_solid_get_warning_size(%s, %d, %s);\n", SM, I[0], o[0]); break;
+  case F_S_GET_WARNING: fprintf(f, "    s = tfem_solid_get_warning(%s, %d, %s, %zu);\n", SM, I[0], o[0], len[0]); break;
+  case F_S_SET_MESH:
+    fprintf(f, "    s = tfem_solid_set_mesh(%s, %d, %s, %d, %s, %s, %d);\n", SM, I[0], a[0], I[1], a[1], a[2], I[2]);
+    break;
+  case F_S_LOAD_GMSH:
+    if (I[0] < 0 || I[0] >= NSG) {
+      fprintf(f, "    s = tfem_solid_load_gmsh(%s, NULL, %d);\n", SM, I[1]);
+    } else if (SG_2D_FILE[I[0]] >= 0) {
+      int g2 = SG_2D_FILE[I[0]];
+      if (g_text[g2] && g2 != G_DIRECTORY && g2 != G_NONEXISTENT && g2 != G_BAD_UTF8) {
+        fprintf(f, "    write_file(%s, ", G_REPRO[g2]);
+        c_str(f, g_text[g2], g_len[g2]);
+        fprintf(f, ", %zu);\n", g_len[g2]);
+      }
+      if (g2 == G_DIRECTORY) fprintf(f, "    mkdir(REPRO_DIR, 0700);\n");
+      fprintf(f, "    s = tfem_solid_load_gmsh(%s, %s, %d);\n", SM, G_REPRO[g2], I[1]);
+    } else {
+      fprintf(f, "    write_file(REPRO_DIR \"/%s.msh\", ", SG_NAME[I[0]]);
+      c_str(f, sg_text[I[0]], sg_len[I[0]]);
+      fprintf(f, ", %zu);\n    s = tfem_solid_load_gmsh(%s, REPRO_DIR \"/%s.msh\", %d);\n", sg_len[I[0]], SM, SG_NAME[I[0]], I[1]);
+    }
+    break;
+  case F_S_SET_FACES: fprintf(f, "    s = tfem_solid_set_boundary_faces(%s, %d, %s, %s);\n", SM, I[0], a[0], a[1]); break;
+  case F_S_ADD_FACES: fprintf(f, "    s = tfem_solid_add_boundary_faces(%s, %d, %s, %s);\n", SM, I[0], a[0], a[1]); break;
+  case F_S_GET_SIZES: fprintf(f, "    s = tfem_solid_get_sizes(%s, %s, %s, %s);\n", SM, o[0], o[1], o[2]); break;
+  case F_S_FACE_COUNT: fprintf(f, "    s = tfem_solid_get_boundary_face_count(%s, %s);\n", SM, o[0]); break;
+  case F_S_MESH_NODES: fprintf(f, "    s = tfem_solid_get_mesh_nodes(%s, %s, %zu);\n", SM, o[0], len[0]); break;
+  case F_S_MESH_TETS:
+    fprintf(f, "    s = tfem_solid_get_mesh_tetrahedra(%s, %s, %zu, %s, %zu);\n", SM, o[0], len[0], o[1], len[1]);
+    break;
+  case F_S_GET_FACES:
+    fprintf(f, "    s = tfem_solid_get_boundary_faces(%s, %s, %zu, %s, %zu);\n", SM, o[0], len[0], o[1], len[1]);
+    break;
+  case F_S_SET_MATERIAL: fprintf(f, "    s = tfem_solid_set_material(%s, %d, %s, %s);\n", SM, I[0], d[0], d[1]); break;
+  case F_S_SET_TEMPERING: fprintf(f, "    s = tfem_solid_set_tempering(%s, %d, %s);\n", SM, I[0], d[0]); break;
+  case F_S_SET_ORDERING: fprintf(f, "    s = tfem_solid_set_ordering(%s, %d);\n", SM, I[0]); break;
+  case F_S_FIX: fprintf(f, "    s = tfem_solid_fix(%s, %d, %d, %s);\n", SM, I[0], I[1], d[0]); break;
+  case F_S_FIX_FACES: fprintf(f, "    s = tfem_solid_fix_faces(%s, %d, %d, %s);\n", SM, I[0], I[1], d[0]); break;
+  case F_S_CLEAR_CONSTRAINTS: fprintf(f, "    s = tfem_solid_clear_constraints(%s);\n", SM); break;
+  case F_S_ADD_PRESSURE: fprintf(f, "    s = tfem_solid_add_pressure(%s, %d, %s);\n", SM, I[0], d[0]); break;
+  case F_S_ADD_TRACTION:
+    fprintf(f, "    s = tfem_solid_add_traction(%s, %d, %s, %s, %s);\n", SM, I[0], d[0], d[1], d[2]);
+    break;
+  case F_S_ADD_NODAL_FORCE:
+    fprintf(f, "    s = tfem_solid_add_nodal_force(%s, %d, %s, %s, %s);\n", SM, I[0], d[0], d[1], d[2]);
+    break;
+  case F_S_CLEAR_LOADS: fprintf(f, "    s = tfem_solid_clear_loads(%s);\n", SM); break;
+  case F_S_ADD_PAIR: fprintf(f, "    s = tfem_solid_add_contact_pair(%s, %d, %d, %s);\n", SM, I[0], I[1], o[0]); break;
+  case F_S_CLEAR_PAIRS: fprintf(f, "    s = tfem_solid_clear_contact_pairs(%s);\n", SM); break;
+  case F_S_SOLVE: fprintf(f, "    s = tfem_solid_solve(%s, %s);\n", SM, o[0]); break;
+  case F_S_SOLVE_CONTACT: case F_S_STEP:
+    if (!c->in[0].null_)
+      fprintf(f, "    tfem_contact_options opt = {%d, %s, %s, %d, %d, %d};\n", I[0], d[0], d[1], I[1], I[2], I[3]);
+    if (fn == F_S_STEP)
+      fprintf(f, "    s = tfem_solid_step(%s, %s, %s, %s);\n", SM, d[2], c->in[0].null_ ? "NULL" : "&opt", o[0]);
+    else fprintf(f, "    s = tfem_solid_solve_contact(%s, %s, %s);\n", SM, c->in[0].null_ ? "NULL" : "&opt", o[0]);
+    break;
+  case F_S_REVERT_STEP: fprintf(f, "    s = tfem_solid_revert_step(%s);\n", SM); break;
+  case F_S_SOLVE_INFO: fprintf(f, "    s = tfem_solid_get_solve_info(%s, %s);\n", SM, o[0]); break;
+  case F_S_ITERATIONS: fprintf(f, "    s = tfem_solid_get_iterations(%s, %s);\n", SM, o[0]); break;
+  case F_S_DISPLACEMENTS: fprintf(f, "    s = tfem_solid_get_displacements(%s, %s, %zu);\n", SM, o[0], len[0]); break;
+  case F_S_STRAINS: fprintf(f, "    s = tfem_solid_get_element_strains(%s, %s, %zu);\n", SM, o[0], len[0]); break;
+  case F_S_STRESSES: fprintf(f, "    s = tfem_solid_get_element_stresses(%s, %s, %zu);\n", SM, o[0], len[0]); break;
+  case F_S_REACTIONS: fprintf(f, "    s = tfem_solid_get_reactions(%s, %s, %zu);\n", SM, o[0], len[0]); break;
+  case F_S_WORK: fprintf(f, "    s = tfem_solid_get_external_work(%s, %s);\n", SM, o[0]); break;
+  case F_S_CONTACT_TETS: fprintf(f, "    s = tfem_solid_get_contact_tetrahedra(%s, %s, %zu);\n", SM, o[0], len[0]); break;
+  case F_S_CONTACT_ACTIVE: fprintf(f, "    s = tfem_solid_get_contact_active(%s, %s, %zu);\n", SM, o[0], len[0]); break;
+  case F_S_CONTACT_FORCES: fprintf(f, "    s = tfem_solid_get_contact_forces(%s, %s, %zu);\n", SM, o[0], len[0]); break;
+  case F_S_NODAL_PRESSURES:
+    fprintf(f, "    s = tfem_solid_get_contact_nodal_pressures(%s, %s, %zu);\n", SM, o[0], len[0]);
+    break;
+  case F_S_AREA: fprintf(f, "    s = tfem_solid_get_contact_area(%s, %s);\n", SM, o[0]); break;
+  case F_S_PAIR_AREA: fprintf(f, "    s = tfem_solid_get_contact_pair_area(%s, %d, %s);\n", SM, I[0], o[0]); break;
+  case F_S_WRITE_VTU: {
+    static const char *const vp[NVTU] = {"REPRO_DIR \"/out.vtu\"", "REPRO_DIR \"/\\377\\376.vtu\"",
+                                         "REPRO_DIR \"/no_such_dir/out.vtu\"", "REPRO_DIR", "\"\""};
+    int k = I[0];
+    if (k >= 0 && k < NVTU && k != VP_NO_DIR && k != VP_EMPTY) fprintf(f, "    mkdir(REPRO_DIR, 0700);\n");
+    fprintf(f, "    s = tfem_solid_write_vtu(%s, %s);\n", SM, k >= 0 && k < NVTU ? vp[k] : "NULL");
+    break;
+  }
+  case F_S_DESTROY:
+    fprintf(f, "    tfem_solid_destroy(%s);\n", SM);
+    if (!c->null_model && !hx[0]) fprintf(f, "    sm = NULL;\n");
+    break;
+  case F_S_RECREATE: fprintf(f, "    tfem_solid_destroy(sm);\n    sm = tfem_solid_create();\n"); break;
+  /* the 3D contact context */
+  case F_SC_CREATE:
+    if (!c->in[0].null_)
+      fprintf(f, "    tfem_contact_options opt = {%d, %s, %s, %d, %d, %d};\n", I[0], d[0], d[1], I[1], I[2], I[3]);
+    fprintf(f, "    tfem_solid_contact *nc = tfem_solid_contact_create(%d, %s);\n"
+               "    s = nc ? TFEM_STATUS_OK : TFEM_STATUS_INVALID_ARGUMENT;\n"
+               "    if (nc) {\n      tfem_solid_contact_destroy(scx);\n      scx = nc;\n    }\n",
+            I[4], c->in[0].null_ ? "NULL" : "&opt");
+    break;
+  case F_SC_DESTROY:
+    fprintf(f, "    tfem_solid_contact_destroy(%s);\n", SX);
+    if (!c->null_model && !hx[0]) fprintf(f, "    scx = NULL;\n");
+    break;
+  case F_SC_LAST_ERROR: fprintf(f, "    s = tfem_solid_contact_last_error(%s, %s, %zu);\n", SX, o[0], len[0]); break;
+  case F_SC_LAST_ERROR_LENGTH:
+    fprintf(f, "    printf(\"%%s #%d length %%zu\\n\", L, tfem_solid_contact_last_error_length(%s));\n", idx, SX);
+    break;
+  case F_SC_ADD_SIDE:
+    fprintf(f, "    s = tfem_solid_contact_add_side(%s, %d, %d, %s, %d, %s, %s, %s, %d, %s, %s);\n", SX, I[0], I[1], d[0], I[2],
+            a[0], a[1], a[2], I[3], a[3], o[0]);
+    break;
+  case F_SC_ADD_PAIR: fprintf(f, "    s = tfem_solid_contact_add_pair(%s, %d, %d, %s);\n", SX, I[0], I[1], o[0]); break;
+  case F_SC_SETUP: fprintf(f, "    s = tfem_solid_contact_setup(%s);\n", SX); break;
+  case F_SC_SIZES: fprintf(f, "    s = tfem_solid_contact_sizes(%s, %s, %s, %s);\n", SX, o[0], o[1], o[2]); break;
+  case F_SC_NODES: fprintf(f, "    s = tfem_solid_contact_nodes(%s, %s, %zu);\n", SX, o[0], len[0]); break;
+  case F_SC_TETS: fprintf(f, "    s = tfem_solid_contact_tetrahedra(%s, %s, %zu);\n", SX, o[0], len[0]); break;
+  case F_SC_PATTERN: fprintf(f, "    s = tfem_solid_contact_pattern(%s, %s, %s, %zu);\n", SX, o[0], o[1], len[0]); break;
+  case F_SC_ELEMENT_EQUATIONS:
+    fprintf(f, "    s = tfem_solid_contact_element_equations(%s, %s, %zu);\n", SX, o[0], len[0]);
+    break;
+  case F_SC_ELEMENT_BLOCKS: fprintf(f, "    s = tfem_solid_contact_element_blocks(%s, %s, %zu);\n", SX, o[0], len[0]); break;
+  case F_SC_EVALUATE:
+    fprintf(f, "    s = tfem_solid_contact_evaluate(%s, %s, %zu, %s, %zu, %s, %zu);\n", SX, a[0], ul, o[0], len[0], o[1], len[1]);
+    break;
+  case F_SC_GATHER: fprintf(f, "    s = tfem_solid_contact_gather(%s, %s, %zu, %s, %zu);\n", SX, a[0], ul, o[0], len[0]); break;
+  case F_SC_SCATTER_ADD:
+    if (!c->out[0].null_) fprintf(f, "    memcpy(o0, a1, sizeof o0);\n");
+    fprintf(f, "    s = tfem_solid_contact_scatter_add(%s, %s, %zu, %s, %zu);\n", SX, a[0], ul, o[0], len[0]);
+    break;
+  case F_SC_UPDATE:
+    fprintf(f, "    s = tfem_solid_contact_update(%s, %s, %zu, %s, %s, %s);\n", SX, a[0], ul, o[0], o[1], o[2]);
+    break;
+  case F_SC_RESTART: fprintf(f, "    s = tfem_solid_contact_restart(%s);\n", SX); break;
+  case F_SC_GET_ACTIVE: fprintf(f, "    s = tfem_solid_contact_get_active(%s, %s, %zu);\n", SX, o[0], len[0]); break;
+  case F_SC_SET_ACTIVE: fprintf(f, "    s = tfem_solid_contact_set_active(%s, %s, %zu);\n", SX, a[0], ul); break;
+  case F_SC_GAPS: fprintf(f, "    s = tfem_solid_contact_gaps(%s, %s, %zu, %s, %zu);\n", SX, a[0], ul, o[0], len[0]); break;
+  case F_SC_AREA: fprintf(f, "    s = tfem_solid_contact_area(%s, %s);\n", SX, o[0]); break;
   default: break;
   }
   if (fn != F_VERSION && fn != F_LAST_ERROR_LENGTH && fn != F_DESTROY_NULL && fn != F_RECREATE && fn != F_CONTACT_DESTROY &&
-      fn != F_CONTACT_LAST_ERROR_LENGTH) {
-    if (FN[fn].model == 2 && fn != F_CONTACT_LAST_ERROR) fprintf(f, "    show_c(%s, %d, \"%s\", s);\n", H, idx, fn_name(fn));
+      fn != F_CONTACT_LAST_ERROR_LENGTH && fn != F_S_LAST_ERROR_LENGTH && fn != F_S_DESTROY && fn != F_S_RECREATE &&
+      fn != F_SC_DESTROY && fn != F_SC_LAST_ERROR_LENGTH) {
+    int own3 = !hx[0] && fn != F_S_LAST_ERROR && fn != F_SC_LAST_ERROR;
+    if (FN[fn].model == 2 && fn != F_CONTACT_LAST_ERROR) fprintf(f, "    show_c(%s, %d, \"%s\", s);\n", hx[0] ? "NULL" : H, idx, fn_name(fn));
+    else if (FN[fn].model == 3) fprintf(f, "    show_s(%s, %d, \"%s\", s);\n", own3 ? SM : "NULL", idx, fn_name(fn));
+    else if (FN[fn].model == 4) fprintf(f, "    show_sc(%s, %d, \"%s\", s);\n", own3 ? SX : "NULL", idx, fn_name(fn));
     else fprintf(f, "    show(%s, %d, \"%s\", s);\n", fn == F_LAST_ERROR || fn == F_CONTACT_LAST_ERROR ? "NULL" : sl, idx, fn_name(fn));
     if (fn == F_LAST_ERROR) fprintf(f, "    (void)0; /* (the message shown is the thread's) */\n");
     int any = 0;
@@ -8191,6 +11113,7 @@ static void c_emit_status(FILE *f, const call_t *c, int idx, int st) {
 }
 
 static void c_emit_tail(FILE *f, const case_t *cs, int died) {
+  if (cs->solid) fprintf(f, "  tfem_solid_destroy(sm);\n  tfem_solid_contact_destroy(scx);\n  tfem_contact_destroy(ocx);\n");
   fprintf(f, "  tfem_destroy(m);\n  tfem_contact_destroy(cx);\n}\n\n");
   if (died) fprintf(f, "/* The process died in the last call above. */\n");
   fprintf(f, "static int skip_failed = 0;\nstatic int skip(int k) {\n  static const int failed[] = {");
@@ -8241,11 +11164,22 @@ static void run_case(uint64_t seed, long index, int verbose, case_result *res) {
   }
   R.m = tfem_create();
   if (!R.m) finding(&R, V_OTHER, -1, "tfem_create() returned NULL");
+  if (cs.solid) {
+    /* (a 3D case: the 3D model, and a 2D context as a handle of another kind) */
+    R.sm = tfem_solid_create();
+    R.octx = tfem_contact_create(0);
+    if (!R.sm || !R.octx) finding(&R, V_OTHER, -1, "tfem_solid_create() or tfem_contact_create(0) returned NULL");
+  }
   for (int i = 0; i < cs.n && R.m; ++i) exec_call(&R, i);
   tfem_destroy(R.m);
   tfem_contact_destroy(R.ctx);
   R.ctx = NULL;
   R.cbuilt = 0;
+  tfem_solid_destroy(R.sm);
+  tfem_solid_contact_destroy(R.sctx);
+  tfem_contact_destroy(R.octx);
+  R.sm = NULL, R.sctx = NULL, R.octx = NULL;
+  ss_free(&R.ss);
   if (R.cfile) {
     c_emit_tail(R.cfile, &cs, 0);
     fflush(R.cfile);
@@ -8254,6 +11188,7 @@ static void run_case(uint64_t seed, long index, int verbose, case_result *res) {
   /* Replay on a fresh model without the calls that failed. */
   R.phase = 1;
   R.m = tfem_create();
+  if (cs.solid) R.sm = tfem_solid_create(), R.octx = tfem_contact_create(0);
   if (verbose) {
     int nf = 0;
     for (int i = 0; i < cs.n; ++i) nf += cs.c[i].status != TFEM_STATUS_OK;
@@ -8265,11 +11200,16 @@ static void run_case(uint64_t seed, long index, int verbose, case_result *res) {
   for (int i = 0; i < cs.n && R.m; ++i)
     if (cs.c[i].ran && cs.c[i].status == TFEM_STATUS_OK && cs.c[i].fn != F_LAST_ERROR &&
         cs.c[i].fn != F_LAST_ERROR_LENGTH && cs.c[i].fn != F_CONTACT_LAST_ERROR &&
-        cs.c[i].fn != F_CONTACT_LAST_ERROR_LENGTH)
+        cs.c[i].fn != F_CONTACT_LAST_ERROR_LENGTH && cs.c[i].fn != F_S_LAST_ERROR &&
+        cs.c[i].fn != F_S_LAST_ERROR_LENGTH && cs.c[i].fn != F_SC_LAST_ERROR && cs.c[i].fn != F_SC_LAST_ERROR_LENGTH)
       exec_call(&R, i);
   tfem_destroy(R.m);
   tfem_contact_destroy(R.ctx);
   R.ctx = NULL;
+  tfem_solid_destroy(R.sm);
+  tfem_solid_contact_destroy(R.sctx);
+  tfem_contact_destroy(R.octx);
+  R.sm = NULL, R.sctx = NULL, R.octx = NULL;
   free(R.st_last), free(R.st_prev);
   if (verbose) {
     long after = 0;
@@ -8937,6 +11877,124 @@ static int self_test(void) {
     ST(R0.counts[V_CIRCLE] == 3 && circle_expect(sh, 3, 0, 0, 1, why, sizeof why, NULL) == -1);
     sh_clear_mesh(sh);
   }
+  /* The 3D checkers: the Kuhn blocks, the shadow's J, faces and loads, the
+   * options refused, what a failed 3D message copy may write. */
+  {
+    smesh_t m = {0};
+    int lower = kuhn_block(&m, 2, -1.0, 1, 0), upper = kuhn_block(&m, 2, 0.0, 2, 10);
+    ST(lower == 0 && upper == 27 && m.nn == 54 && m.nt == 96 && m.nf == 2 * 6 * 8);
+    int positive = 1, per_tag[17] = {0};
+    for (int e = 0; e < m.nt; ++e)
+      positive &= ss_j(&m.xyz[3 * m.tet[4 * e]], &m.xyz[3 * m.tet[4 * e + 1]], &m.xyz[3 * m.tet[4 * e + 2]],
+                       &m.xyz[3 * m.tet[4 * e + 3]], NULL) > 0;
+    for (int f = 0; f < m.nf; ++f) per_tag[m.ftag[f] < 17 ? m.ftag[f] : 0]++;
+    ST(positive && per_tag[1] == 8 && per_tag[6] == 8 && per_tag[15] == 8 && per_tag[16] == 8 && per_tag[7] == 0 &&
+       per_tag[0] == 0);
+    sshadow_t sh;
+    memset(&sh, 0, sizeof sh);
+    int swapped[4 * 96];
+    memcpy(swapped, m.tet, sizeof swapped);
+    swapped[2] = m.tet[3], swapped[3] = m.tet[2]; /* tetrahedron 0 given with negative J: renumbered */
+    ss_new_mesh(&sh, m.nn, m.xyz, m.nt, swapped, m.body, 1);
+    ST(!memcmp(sh.tet, m.tet, sizeof swapped) && sh.base == 1 && sh.exact);
+    case_t cs;
+    memset(&cs, 0, sizeof cs);
+    char why[200];
+    call_t *c = s_faces_call(&cs, &m, 1, F_S_SET_FACES, INT_MIN, INT_MIN);
+    ST(ss_faces_refused(&sh, c, why, sizeof why) == 0);
+    int inner[3] = {m.tet[0] + 1, m.tet[1] + 1, m.tet[2] + 1}, owner = -1, g0[3] = {m.tet[0], m.tet[1], m.tet[2]};
+    int shared = ss_owners(&sh, g0, &owner) == 2;
+    c = s_call(&cs, F_S_ADD_FACES, 1, 0, 0, 0, 0);
+    in_set(c, 0, inner, 3, sizeof(int));
+    in_set(c, 1, (int[]){7}, 1, sizeof(int));
+    ST(!shared || (ss_faces_refused(&sh, c, why, sizeof why) == 1 && strstr(why, "2 tetrahedra")));
+    c = s_faces_call(&cs, &m, 1, F_S_SET_FACES, 16, INT_MIN);
+    case_insert_copy(&cs, cs.n, c);
+    c = &cs.c[cs.n - 1];
+    sh.nf = 0;
+    ST(ss_faces_refused(&sh, c, why, sizeof why) == 0);
+    int *both = xmalloc(sizeof(int) * 6 * 8), *tags = xmalloc(sizeof(int) * 16);
+    memcpy(both, c->in[0].p, sizeof(int) * 24), memcpy(both + 24, c->in[0].p, sizeof(int) * 24);
+    for (int k = 0; k < 16; ++k) tags[k] = 16;
+    in_set(c, 0, both, 48, sizeof(int)), in_set(c, 1, tags, 16, sizeof(int));
+    c->iv[0] = 16;
+    ST(ss_faces_refused(&sh, c, why, sizeof why) == 1 && strstr(why, "twice")); /* (a face given twice with one tag) */
+    tags[15] = 17;
+    for (int k = 8; k < 16; ++k) tags[k] = 17;
+    in_set(c, 1, tags, 16, sizeof(int));
+    ST(ss_faces_refused(&sh, c, why, sizeof why) == 0); /* (the same faces under another tag) */
+    sh.loaded = 1;
+    ST(ss_faces_refused(&sh, c, why, sizeof why) == 1 && strstr(why, "name the faces"));
+    sh.loaded = 0;
+    free(both), free(tags);
+    /* the loads on the upper top (tag 16, area 1, outward +z): a pressure
+     * 2 pushes down by 2 in all, a traction (1, 0, 3) pulls by (1, 0, 3) */
+    sh.nf = m.nf;
+    sh.face = xmalloc(sizeof(int) * 3 * (size_t)m.nf), sh.ftag = xmalloc(sizeof(int) * (size_t)m.nf);
+    memcpy(sh.face, m.face, sizeof(int) * 3 * (size_t)m.nf), memcpy(sh.ftag, m.ftag, sizeof(int) * (size_t)m.nf);
+    sh.load = xmalloc(2 * sizeof(ss_load));
+    sh.load[0] = (ss_load){16, 0, {2.0, 0, 0}}, sh.load[1] = (ss_load){16, 1, {1.0, 0.0, 3.0}}, sh.nl = 2;
+    double f[3 * 54], tot[3] = {0, 0, 0};
+    ST(ss_loads(&sh, f));
+    for (int k = 0; k < 3 * 54; ++k) tot[k % 3] += f[k];
+    ST(fabs(tot[0] - 1.0) < 1e-14 && fabs(tot[1]) < 1e-14 && fabs(tot[2] - 1.0) < 1e-14);
+    /* a flat tetrahedron (four nodes of one plane): its face refused */
+    double flat_xyz[12] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
+    int flat_tet[4] = {0, 1, 2, 3}, flat_body[1] = {1}, flat_face[3] = {0, 1, 2}, flat_tag[1] = {1};
+    ss_new_mesh(&sh, 4, flat_xyz, 1, flat_tet, flat_body, 0);
+    c = s_call(&cs, F_S_SET_FACES, 1, 0, 0, 0, 0);
+    in_set(c, 0, flat_face, 3, sizeof(int)), in_set(c, 1, flat_tag, 1, sizeof(int));
+    ST(ss_faces_refused(&sh, c, why, sizeof why) == 1 && strstr(why, "flat"));
+    ss_free(&sh);
+    /* the options: frictionless, the 3D test, max_iterations >= 1, refactorize 0 or 1, E_c and lambda 0 or > 0 */
+    c = s_solve_call(&cs, F_S_SOLVE_CONTACT, 50, 1, 0.0, 2.0, 0, 0);
+    ST(!solid_options_refused(c));
+    c->iv[0] = 1;
+    ST(solid_options_refused(c));
+    c->iv[0] = 0, c->dv[1] = -0.0;
+    ST(!solid_options_refused(c));
+    c->dv[1] = NAN;
+    ST(solid_options_refused(c));
+    c->dv[1] = 0, c->iv[2] = 0;
+    ST(solid_options_refused(c));
+    c->in[0].null_ = 1;
+    ST(!solid_options_refused(c));
+    ST(!may_write_on_failure(F_S_GET_WARNING, TFEM_STATUS_INVALID_ARGUMENT) &&
+       may_write_on_failure(F_S_GET_WARNING, TFEM_STATUS_BUFFER_TOO_SMALL) &&
+       may_write_on_failure(F_SC_LAST_ERROR, TFEM_STATUS_INVALID_ARGUMENT) &&
+       !may_write_on_failure(F_S_LAST_ERROR, TFEM_STATUS_NULL_POINTER) && may_write_on_failure(F_GET_WARNING, 2));
+    ST(solid_changes_problem(F_S_FIX) && !solid_changes_problem(F_S_SET_ORDERING) && sc_builds(F_SC_AREA) &&
+       !sc_builds(F_SC_GATHER) && solid_result_fn(F_S_WRITE_VTU));
+    case_free(&cs);
+    smesh_free(&m);
+  }
+  /* 3D cases: a share of the cases (from a stream of their own: the
+   * others are the cases they were without it), every kind met, each
+   * generated the same from (seed, case). */
+  {
+    static const char *const kinds[7] = {"solid_tension", "solid_blocks", "solid_gap", "solid_steps", "solid_host",
+                                         "solid_gmsh", "solid_random"};
+    int met[7] = {0}, n3 = 0, same_2d = 1;
+    double keep = g_solid_share;
+    for (long k = 0; k < 2000; ++k) {
+      mesh_t m1 = {0}, m2 = {0};
+      case_t c1, c2;
+      g_solid_share = keep;
+      gen_case(13, k, &c1, &m1);
+      g_solid_share = 0.0;
+      gen_case(13, k, &c2, &m2);
+      n3 += c1.solid;
+      for (int i = 0; i < 7 && c1.solid; ++i) met[i] |= !strcmp(c1.kind, kinds[i]);
+      if (!c1.solid) {
+        same_2d &= c1.n == c2.n && !strcmp(c1.kind, c2.kind);
+        for (int i = 0; same_2d && i < c1.n; ++i) same_2d = c1.c[i].fn == c2.c[i].fn && !memcmp(c1.c[i].iv, c2.c[i].iv, sizeof c1.c[i].iv);
+      }
+      case_free(&c1), case_free(&c2), mesh_free(&m1), mesh_free(&m2);
+    }
+    g_solid_share = keep;
+    ST(n3 > 0.5 * SOLID_SHARE * 2000 && n3 < 1.5 * SOLID_SHARE * 2000 && same_2d);
+    for (int i = 0; i < 7; ++i) ST(met[i]);
+  }
   /* Case generation is a pure function of (seed, case). */
   for (long k = 0; k < 200; ++k) {
     mesh_t m1 = {0}, m2 = {0};
@@ -8968,15 +12026,16 @@ static int self_test(void) {
 
 static void usage(void) {
   printf("usage: api_fuzz [--seed S] [--cases N] [--first K] [--threads T] [--long] [--seconds S]\n"
-         "                [--batch B] [--timeout S] [--print-limit P] [--verbose] [--no-fork]\n"
+         "                [--batch B] [--timeout S] [--print-limit P] [--verbose] [--no-fork] [--solid-share F]\n"
          "       api_fuzz --seed S --replay-case K [--minimize [--class NAME]] [--c-file PATH]\n"
          "         (--class state_change_status: a call OK originally fails on the replay)\n"
          "       api_fuzz --self-test   (checks the checkers, no library call)\n"
          "Defaults: seed 1, %d cases from case 0 (about a minute on 2 cores), 1 thread, batches of 25 cases\n"
          "per forked child, 120 s per batch. --long runs 500 times as many cases (hours);\n"
-         "--seconds stops starting new batches after that many seconds. Exit status 1 if any\n"
+         "--seconds stops starting new batches after that many seconds. --solid-share sets the share of 3D\n"
+         "cases (default %.2f; 1: only 3D; give it to --replay-case too). Exit status 1 if any\n"
          "violation was found. Classes:",
-         20000);
+         20000, SOLID_SHARE);
   for (int v = 0; v < NV; ++v) printf("%s %s", v ? "," : "", V_NAME[v]);
   printf("\n");
 }
@@ -9000,6 +12059,7 @@ int main(int argc, char **argv) {
     else if (!strcmp(a, "--print-limit") && v) g_print_limit = atoi(v), ++i;
     else if (!strcmp(a, "--replay-case") && v) replay = strtol(v, NULL, 0), ++i;
     else if (!strcmp(a, "--c-file") && v) cpath = v, ++i;
+    else if (!strcmp(a, "--solid-share") && v) g_solid_share = atof(v), ++i;
     else if (!strcmp(a, "--class") && v) {
       for (int k = 0; k < NV; ++k)
         if (!strcmp(v, V_NAME[k])) target = k;

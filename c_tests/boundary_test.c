@@ -3199,6 +3199,845 @@ static void a_boundary_circle_before_a_mesh_is_an_invalid_state(void) {
   tfem_destroy(m);
 }
 
+/* ---- The 3D model (tfem_solid_*) and its host contact context
+ * (tfem_solid_contact_*): a failed call writes none of its outputs and
+ * leaves the model, or the context, as it was, bit for bit. ---- */
+
+/* Two unit cubes of SC x SC x SC cells of Kuhn's six tetrahedra (as
+ * c_tests/solid_test.c builds them), body 1 on z in [-1, 0] and body 2 on
+ * z in [gap, 1 + gap], sides tagged 1..6 and 11..16 (x = min, x = max,
+ * y = min, y = max, z = min, z = max). */
+enum { SC = 2, SCP = SC + 1, SC_NODES_PER = SCP * SCP * SCP, SC_NODES = 2 * SC_NODES_PER };
+enum { SC_TETS = 2 * 6 * SC * SC * SC, SC_FACES = 2 * 6 * 2 * SC * SC, SC_CONTACT = 3 * 2 * SC * SC };
+enum { SC_SIDE_NODES = SCP * SCP, SC_SIDE_TRIS = 2 * SC * SC, SC_NL = 6 * SC_SIDE_NODES };
+typedef struct {
+  double xyz[3 * SC_NODES];
+  int tets[4 * SC_TETS], body[SC_TETS], faces[3 * SC_FACES], tags[SC_FACES];
+  int nt, nf;
+} cubes_t;
+static cubes_t C3;
+
+static int cube_id(int first, int i, int j, int k) { return first + i + SCP * (j + SCP * k); }
+static int cube_grid(int first, int v, int axis) {
+  int r = v - first, g[3] = {r % SCP, (r / SCP) % SCP, r / (SCP * SCP)};
+  return g[axis];
+}
+static void kuhn_cube(cubes_t *c, int first, double z0, int b, int tag0) {
+  static const int orders[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
+  for (int k = 0; k < SCP; ++k)
+    for (int j = 0; j < SCP; ++j)
+      for (int i = 0; i < SCP; ++i) {
+        int v = cube_id(first, i, j, k);
+        c->xyz[3 * v] = (double)i / SC;
+        c->xyz[3 * v + 1] = (double)j / SC;
+        c->xyz[3 * v + 2] = z0 + (double)k / SC;
+      }
+  int start = c->nt;
+  for (int k = 0; k < SC; ++k)
+    for (int j = 0; j < SC; ++j)
+      for (int i = 0; i < SC; ++i)
+        for (int o = 0; o < 6; ++o) {
+          int p[3] = {0, 0, 0}, *t = &c->tets[4 * c->nt];
+          t[0] = cube_id(first, i, j, k);
+          for (int s = 0; s < 3; ++s) {
+            p[orders[o][s]] = 1;
+            t[s + 1] = cube_id(first, i + p[0], j + p[1], k + p[2]);
+          }
+          if (o >= 3) {
+            int swap = t[2];
+            t[2] = t[3];
+            t[3] = swap;
+          }
+          c->body[c->nt++] = b;
+        }
+  for (int e = start; e < c->nt; ++e)
+    for (int skip = 0; skip < 4; ++skip) {
+      int f[3], n = 0;
+      for (int q = 0; q < 4; ++q)
+        if (q != skip) f[n++] = c->tets[4 * e + q];
+      for (int axis = 0; axis < 3; ++axis)
+        for (int end = 0; end < 2; ++end) {
+          int at = end ? SC : 0, on = 1;
+          for (int q = 0; q < 3; ++q) on = on && cube_grid(first, f[q], axis) == at;
+          if (on) {
+            memcpy(&c->faces[3 * c->nf], f, sizeof f);
+            c->tags[c->nf++] = tag0 + 1 + 2 * axis + end;
+          }
+        }
+    }
+}
+static void stacked_cubes_mesh(cubes_t *c, double gap) {
+  memset(c, 0, sizeof *c);
+  kuhn_cube(c, 0, -1.0, 1, 0);
+  kuhn_cube(c, SC_NODES_PER, gap, 2, 10);
+}
+
+/* The stacked cubes on rollers (u_z = 0 under the lower one, u_x = 0 on
+ * x = 0 and u_y = 0 on y = 0 of both) in frictionless contact (the lower
+ * top, tag 6, planar side a; the upper bottom, tag 15): touching and
+ * pressed by a pressure on the upper top, or (gap > 0) pressed down by a
+ * prescribed u_z = -2 gap there, which the contact loop takes two
+ * iterations to settle. */
+static tfem_solid_model *stacked_cubes(double gap) {
+  stacked_cubes_mesh(&C3, gap);
+  tfem_solid_model *m = tfem_solid_create();
+  CHECK(m != NULL);
+  CHECK(tfem_solid_set_mesh(m, SC_NODES, C3.xyz, SC_TETS, C3.tets, C3.body, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_solid_set_boundary_faces(m, SC_FACES, C3.faces, C3.tags) == TFEM_STATUS_OK);
+  CHECK(tfem_solid_set_material(m, 1, 1.0, 0.25) == TFEM_STATUS_OK);
+  CHECK(tfem_solid_set_material(m, 2, 1.0, 0.25) == TFEM_STATUS_OK);
+  CHECK(tfem_solid_fix_faces(m, 5, TFEM_AXIS_Z, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_solid_fix_faces(m, 1, TFEM_AXIS_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_solid_fix_faces(m, 11, TFEM_AXIS_X, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_solid_fix_faces(m, 3, TFEM_AXIS_Y, 0.0) == TFEM_STATUS_OK);
+  CHECK(tfem_solid_fix_faces(m, 13, TFEM_AXIS_Y, 0.0) == TFEM_STATUS_OK);
+  if (gap > 0) CHECK(tfem_solid_fix_faces(m, 16, TFEM_AXIS_Z, -2 * gap) == TFEM_STATUS_OK);
+  else CHECK(tfem_solid_add_pressure(m, 16, 0.1) == TFEM_STATUS_OK);
+  CHECK(tfem_solid_add_contact_pair(m, 6, 15, NULL) == TFEM_STATUS_OK);
+  return m;
+}
+
+/* Everything a 3D model gives back, each getter's status with it (the
+ * solve statistics without their timings), to compare bit for bit. */
+typedef struct {
+  int st[24];
+  int sizes[3], face_count, warnings, iterations;
+  double xyz[3 * SC_NODES];
+  int tets[4 * SC_TETS], bodies[SC_TETS], faces[3 * SC_FACES], tags[SC_FACES];
+  double u[3 * SC_NODES], strain[6 * SC_TETS], stress[6 * SC_TETS], reaction[3 * SC_NODES];
+  double force[3 * SC_NODES], pressure[SC_NODES], work, area, pair_area;
+  int contact_tets[4 * SC_CONTACT], active[SC_CONTACT];
+  tfem_solve_info info;
+  size_t last_error_length;
+} solid_state_t;
+
+static void solid_state_of(tfem_solid_model *m, solid_state_t *s) {
+  memset(s, 0, sizeof *s);
+  int k = 0;
+  tfem_solve_info info;
+  s->st[k++] = tfem_solid_get_sizes(m, &s->sizes[0], &s->sizes[1], &s->sizes[2]);
+  s->st[k++] = tfem_solid_get_boundary_face_count(m, &s->face_count);
+  s->st[k++] = tfem_solid_warning_count(m, &s->warnings);
+  s->st[k++] = tfem_solid_get_mesh_nodes(m, s->xyz, 3 * SC_NODES);
+  s->st[k++] = tfem_solid_get_mesh_tetrahedra(m, s->tets, 4 * SC_TETS, s->bodies, SC_TETS);
+  s->st[k++] = tfem_solid_get_boundary_faces(m, s->faces, 3 * SC_FACES, s->tags, SC_FACES);
+  s->st[k++] = tfem_solid_get_iterations(m, &s->iterations);
+  s->st[k++] = tfem_solid_get_displacements(m, s->u, 3 * SC_NODES);
+  s->st[k++] = tfem_solid_get_element_strains(m, s->strain, 6 * SC_TETS);
+  s->st[k++] = tfem_solid_get_element_stresses(m, s->stress, 6 * SC_TETS);
+  s->st[k++] = tfem_solid_get_reactions(m, s->reaction, 3 * SC_NODES);
+  s->st[k++] = tfem_solid_get_contact_forces(m, s->force, 3 * SC_NODES);
+  s->st[k++] = tfem_solid_get_contact_nodal_pressures(m, s->pressure, SC_NODES);
+  s->st[k++] = tfem_solid_get_external_work(m, &s->work);
+  s->st[k++] = tfem_solid_get_contact_area(m, &s->area);
+  s->st[k++] = tfem_solid_get_contact_pair_area(m, 0, &s->pair_area);
+  s->st[k++] = tfem_solid_get_contact_tetrahedra(m, s->contact_tets, 4 * SC_CONTACT);
+  s->st[k++] = tfem_solid_get_contact_active(m, s->active, SC_CONTACT);
+  s->st[k++] = tfem_solid_get_solve_info(m, &info);
+  if (s->st[k - 1] == TFEM_STATUS_OK) {
+    s->info.unknowns = info.unknowns;
+    s->info.matrix_nnz = info.matrix_nnz;
+    s->info.factor_nnz = info.factor_nnz;
+    s->info.factorizations = info.factorizations;
+    s->info.interface_unknowns = info.interface_unknowns;
+    s->info.relative_residual = info.relative_residual;
+    s->info.condition_estimate = info.condition_estimate;
+    s->info.memory_bytes = info.memory_bytes;
+    s->info.factorization_bytes = info.factorization_bytes;
+  }
+  /* (last: the getters above succeed or fail, and leave their message) */
+  s->last_error_length = 0;
+}
+
+static solid_state_t solid_before, solid_after;
+static void expect_solid_as_it_was(tfem_solid_model *m, const char *what, int line) {
+  solid_state_of(m, &solid_after);
+  if (memcmp(&solid_before, &solid_after, sizeof solid_before) == 0) {
+    ++passed;
+  } else {
+    ++failed;
+    printf("FAIL line %d: after %s the 3D model gives other results\n", line, what);
+  }
+}
+/* `call` on sentinel-filled outputs must return `status`, write nothing,
+ * and leave every result of the 3D model m as solid_before holds them. */
+#define SOLID_UNWRITTEN(m, call, status)                 \
+  do {                                                   \
+    UNWRITTEN(call, status);                             \
+    expect_solid_as_it_was(m, #call, __LINE__);          \
+  } while (0)
+
+/* The faces of the stacked cubes tagged `tag`, turned counter-clockwise
+ * seen from outside (outward normal along out_z), as a host's side in
+ * host node numbers v + base, with equations 3 v + c + base (none for u_x
+ * on x = 0, as the rollers fix it). */
+typedef struct {
+  int nodes[SC_SIDE_NODES];
+  double xyz[3 * SC_SIDE_NODES];
+  int64_t equations[3 * SC_SIDE_NODES];
+  int triangles[3 * SC_SIDE_TRIS];
+  int n_nodes, n_triangles;
+} host_side_t;
+static void host_side_of(int tag, double out_z, int base, host_side_t *s) {
+  memset(s, 0, sizeof *s);
+  for (int f = 0; f < C3.nf; ++f) {
+    if (C3.tags[f] != tag) continue;
+    int t[3] = {C3.faces[3 * f], C3.faces[3 * f + 1], C3.faces[3 * f + 2]};
+    const double *a = &C3.xyz[3 * t[0]], *b = &C3.xyz[3 * t[1]], *c = &C3.xyz[3 * t[2]];
+    double nz = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+    if (nz * out_z < 0) {
+      int swap = t[1];
+      t[1] = t[2];
+      t[2] = swap;
+    }
+    for (int q = 0; q < 3; ++q) {
+      s->triangles[3 * s->n_triangles + q] = t[q] + base;
+      int known = 0;
+      for (int i = 0; i < s->n_nodes; ++i) known = known || s->nodes[i] == t[q] + base;
+      if (known) continue;
+      int i = s->n_nodes++;
+      s->nodes[i] = t[q] + base;
+      for (int k = 0; k < 3; ++k) {
+        s->xyz[3 * i + k] = C3.xyz[3 * t[q] + k];
+        s->equations[3 * i + k] = k == 0 && C3.xyz[3 * t[q]] == 0.0 ? base - 1 : 3 * t[q] + k + base;
+      }
+    }
+    ++s->n_triangles;
+  }
+}
+
+/* Everything a 3D context gives back at the displacements u (sizes,
+ * nodes, B, pattern, element equations and blocks, flags, values and
+ * residual, gaps, area), each status with it. */
+typedef struct {
+  int st[12];
+  int n_nodes, n_tets;
+  int64_t n_entries;
+  int nodes[2 * SC_SIDE_NODES], tets[4 * SC_CONTACT], active[SC_CONTACT];
+  int64_t rows[144 * SC_CONTACT], cols[144 * SC_CONTACT], equations[12 * SC_CONTACT];
+  double blocks[144 * SC_CONTACT], values[144 * SC_CONTACT], residual[SC_NL], gaps[SC_CONTACT], area;
+} host_state_t;
+static host_state_t host_before, host_after;
+static void host_state_of(tfem_solid_contact *c, const double *u, host_state_t *s) {
+  memset(s, 0, sizeof *s);
+  int k = 0;
+  const size_t E = 144 * SC_CONTACT;
+  s->st[k++] = tfem_solid_contact_sizes(c, &s->n_nodes, &s->n_tets, &s->n_entries);
+  s->st[k++] = tfem_solid_contact_nodes(c, s->nodes, 2 * SC_SIDE_NODES);
+  s->st[k++] = tfem_solid_contact_tetrahedra(c, s->tets, 4 * SC_CONTACT);
+  s->st[k++] = tfem_solid_contact_pattern(c, s->rows, s->cols, E);
+  s->st[k++] = tfem_solid_contact_element_equations(c, s->equations, 12 * SC_CONTACT);
+  s->st[k++] = tfem_solid_contact_element_blocks(c, s->blocks, E);
+  s->st[k++] = tfem_solid_contact_get_active(c, s->active, SC_CONTACT);
+  s->st[k++] = tfem_solid_contact_evaluate(c, u, SC_NL, s->values, E, s->residual, SC_NL);
+  s->st[k++] = tfem_solid_contact_gaps(c, u, SC_NL, s->gaps, SC_CONTACT);
+  s->st[k++] = tfem_solid_contact_area(c, &s->area);
+}
+static void expect_host_as_it_was(tfem_solid_contact *c, const double *u, const char *what, int line) {
+  host_state_of(c, u, &host_after);
+  if (memcmp(&host_before, &host_after, sizeof host_before) == 0) {
+    ++passed;
+  } else {
+    ++failed;
+    printf("FAIL line %d: after %s the 3D contact context gives other values\n", line, what);
+  }
+}
+#define HOST_UNWRITTEN(c, u, call, status)               \
+  do {                                                   \
+    UNWRITTEN(call, status);                             \
+    expect_host_as_it_was(c, u, #call, __LINE__);        \
+  } while (0)
+
+static void a_failed_3d_call_writes_nothing_and_leaves_the_model_as_it_was(void) {
+  const tfem_status NUL = TFEM_STATUS_NULL_POINTER, ARG = TFEM_STATUS_INVALID_ARGUMENT,
+                    STATE = TFEM_STATUS_INVALID_STATE, SHORT = TFEM_STATUS_BUFFER_TOO_SMALL,
+                    MATERIAL = TFEM_STATUS_INVALID_MATERIAL, MESH = TFEM_STATUS_INVALID_MESH;
+  const size_t L = 8192;
+  tfem_contact_options bad;
+
+  /* No model, a destroyed one, or a handle of another kind: the 3D
+   * model's getters and mutators, and the 2D ones given 3D handles. */
+  tfem_model *two = tfem_create();
+  tfem_contact *two_c = tfem_contact_create(0);
+  tfem_solid_contact *sc = tfem_solid_contact_create(0, NULL);
+  tfem_solid_model *live = stacked_cubes(0.0);
+  CHECK(tfem_solid_solve_contact(live, NULL, NULL) == TFEM_STATUS_OK);
+  solid_state_of(live, &solid_before);
+  static solid_state_t live_state;
+  live_state = solid_before;
+  /* (destroyed after the others are made: a new handle may take the
+   * address of a destroyed one, and then reaches it) */
+  tfem_solid_model *dead = tfem_solid_create();
+  tfem_solid_destroy(dead);
+  tfem_solid_model *const wrong[4] = {NULL, dead, (tfem_solid_model *)two, (tfem_solid_model *)sc};
+  for (int w = 0; w < 4; ++w) {
+    tfem_solid_model *h = wrong[w];
+    const tfem_status want = h ? ARG : NUL;
+    SOLID_UNWRITTEN(live, tfem_solid_warning_count(h, O[0].i), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_warning_size(h, 0, O[0].z), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_warning(h, 0, O[0].c, 512), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_sizes(h, O[0].i, O[1].i, O[2].i), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_boundary_face_count(h, O[0].i), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_mesh_nodes(h, O[0].d, L), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_mesh_tetrahedra(h, O[0].i, L, O[1].i, L), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_boundary_faces(h, O[0].i, L, O[1].i, L), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_solve_info(h, &O[0].info), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_iterations(h, O[0].i), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_displacements(h, O[0].d, L), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_element_strains(h, O[0].d, L), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_element_stresses(h, O[0].d, L), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_reactions(h, O[0].d, L), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_external_work(h, O[0].d), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_contact_tetrahedra(h, O[0].i, L), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_contact_active(h, O[0].i, L), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_contact_forces(h, O[0].d, L), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_contact_nodal_pressures(h, O[0].d, L), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_contact_area(h, O[0].d), want);
+    SOLID_UNWRITTEN(live, tfem_solid_get_contact_pair_area(h, 0, O[0].d), want);
+    SOLID_UNWRITTEN(live, tfem_solid_set_mesh(h, SC_NODES, C3.xyz, SC_TETS, C3.tets, C3.body, 0), want);
+    SOLID_UNWRITTEN(live, tfem_solid_set_boundary_faces(h, SC_FACES, C3.faces, C3.tags), want);
+    SOLID_UNWRITTEN(live, tfem_solid_set_material(h, 1, 1.0, 0.25), want);
+    SOLID_UNWRITTEN(live, tfem_solid_set_tempering(h, 0, 0.0), want);
+    SOLID_UNWRITTEN(live, tfem_solid_set_ordering(h, 0), want);
+    SOLID_UNWRITTEN(live, tfem_solid_fix(h, 0, TFEM_AXIS_X, 0.0), want);
+    SOLID_UNWRITTEN(live, tfem_solid_add_pressure(h, 16, 1.0), want);
+    SOLID_UNWRITTEN(live, tfem_solid_add_contact_pair(h, 6, 15, O[0].i), want);
+    SOLID_UNWRITTEN(live, tfem_solid_clear_loads(h), want);
+    SOLID_UNWRITTEN(live, tfem_solid_solve(h, &O[0].info), want);
+    SOLID_UNWRITTEN(live, tfem_solid_solve_contact(h, NULL, &O[0].info), want);
+    SOLID_UNWRITTEN(live, tfem_solid_step(h, 0.5, NULL, &O[0].info), want);
+    SOLID_UNWRITTEN(live, tfem_solid_revert_step(h), want);
+    SOLID_UNWRITTEN(live, tfem_solid_write_vtu(h, "/nonexistent-folder-of-tfem/x.vtu"), want);
+    tfem_solid_destroy(h); /* not a live 3D model: a no-op */
+  }
+  /* The 2D functions refuse the 3D handles. */
+  SOLID_UNWRITTEN(live, tfem_get_sizes((tfem_model *)live, O[0].i, O[1].i, O[2].i), ARG);
+  SOLID_UNWRITTEN(live, tfem_get_displacements((tfem_model *)live, O[0].d, L), ARG);
+  SOLID_UNWRITTEN(live, tfem_set_material((tfem_model *)live, 1, 1.0, 0.25, TFEM_PLANE_MODE_STRAIN), ARG);
+  SOLID_UNWRITTEN(live, tfem_solve_contact((tfem_model *)live, NULL, &O[0].rep), ARG);
+  SOLID_UNWRITTEN(live, tfem_contact_sizes((tfem_contact *)live, O[0].i, O[1].i, O[2].l), ARG);
+  SOLID_UNWRITTEN(live, tfem_contact_sizes((tfem_contact *)sc, O[0].i, O[1].i, O[2].l), ARG);
+  SOLID_UNWRITTEN(live, tfem_solid_contact_sizes((tfem_solid_contact *)live, O[0].i, O[1].i, O[2].l), ARG);
+  SOLID_UNWRITTEN(live, tfem_solid_contact_sizes((tfem_solid_contact *)two_c, O[0].i, O[1].i, O[2].l), ARG);
+  tfem_destroy((tfem_model *)live);          /* not a 2D model: a no-op */
+  tfem_contact_destroy((tfem_contact *)live); /* not a 2D context: a no-op */
+  tfem_solid_contact_destroy((tfem_solid_contact *)live);
+  expect_solid_as_it_was(live, "destroying it as another kind of handle", __LINE__);
+  /* (The exceptions: the message copies say why the handle is refused.) */
+  memset(O, SENTINEL, sizeof O);
+  CHECK(tfem_solid_last_error(dead, O[0].c, 512) == ARG && strstr(O[0].c, "destroyed") != NULL);
+  CHECK(tfem_solid_last_error_length(dead) == strlen(O[0].c) + 1);
+  memset(O, SENTINEL, sizeof O);
+  CHECK(tfem_solid_last_error((tfem_solid_model *)two, O[0].c, 512) == ARG && strstr(O[0].c, "not a 3D model") != NULL);
+  memset(O, SENTINEL, sizeof O);
+  CHECK(tfem_solid_last_error(NULL, O[0].c, 512) == NUL && outputs_intact());
+  CHECK(tfem_solid_last_error_length(NULL) == 1);
+  CHECK(tfem_last_error(two, O[0].c, 512) == TFEM_STATUS_OK); /* the 2D model is still live */
+
+  /* No mesh yet. */
+  tfem_solid_model *m = tfem_solid_create();
+  solid_state_of(m, &solid_before);
+  SOLID_UNWRITTEN(m, tfem_solid_get_sizes(m, O[0].i, O[1].i, O[2].i), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_boundary_face_count(m, O[0].i), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_mesh_nodes(m, O[0].d, L), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_mesh_tetrahedra(m, O[0].i, L, O[1].i, L), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_boundary_faces(m, O[0].i, L, O[1].i, L), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_warning_size(m, 0, O[0].z), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_get_warning(m, 0, O[0].c, 512), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_set_boundary_faces(m, SC_FACES, C3.faces, C3.tags), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_fix(m, 0, TFEM_AXIS_X, 0.0), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_fix_faces(m, 5, TFEM_AXIS_Z, 0.0), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_add_pressure(m, 16, 0.1), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_add_traction(m, 16, 0.0, 0.0, 0.1), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_add_nodal_force(m, 0, 0.0, 0.0, 1.0), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_add_contact_pair(m, 6, 15, O[0].i), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_solve(m, &O[0].info), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_solve_contact(m, NULL, &O[0].info), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_step(m, 1.0, NULL, &O[0].info), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_revert_step(m), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_displacements(m, O[0].d, L), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_solve_info(m, &O[0].info), STATE);
+  tfem_solid_destroy(m);
+
+  /* A mesh, not solved: no results yet; body 2 without a material. */
+  m = tfem_solid_create();
+  CHECK(tfem_solid_set_mesh(m, SC_NODES, C3.xyz, SC_TETS, C3.tets, C3.body, 0) == TFEM_STATUS_OK);
+  CHECK(tfem_solid_set_boundary_faces(m, SC_FACES, C3.faces, C3.tags) == TFEM_STATUS_OK);
+  CHECK(tfem_solid_set_material(m, 1, 1.0, 0.25) == TFEM_STATUS_OK);
+  CHECK(tfem_solid_fix_faces(m, 5, TFEM_AXIS_Z, 0.0) == TFEM_STATUS_OK);
+  solid_state_of(m, &solid_before);
+  SOLID_UNWRITTEN(m, tfem_solid_get_solve_info(m, &O[0].info), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_iterations(m, O[0].i), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_displacements(m, O[0].d, L), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_element_strains(m, O[0].d, L), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_element_stresses(m, O[0].d, L), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_reactions(m, O[0].d, L), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_external_work(m, O[0].d), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_contact_tetrahedra(m, O[0].i, L), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_contact_active(m, O[0].i, L), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_contact_forces(m, O[0].d, L), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_contact_nodal_pressures(m, O[0].d, L), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_contact_area(m, O[0].d), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_get_contact_pair_area(m, 0, O[0].d), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_write_vtu(m, "/nonexistent-folder-of-tfem/x.vtu"), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_revert_step(m), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_solve(m, &O[0].info), MATERIAL);
+  SOLID_UNWRITTEN(m, tfem_solid_step(m, 1.0, NULL, &O[0].info), MATERIAL);
+  tfem_solid_destroy(m);
+
+  /* Solved: every refusal of a getter (a buffer too short, or NULL beside
+   * others long enough; an index out of range) and of a mutator (a bad
+   * argument, a state, a solve that fails before or after its work)
+   * writes nothing and leaves every result as it was. */
+  m = stacked_cubes(0.0);
+  CHECK(tfem_solid_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  int nc = 0, warnings = -1;
+  CHECK(tfem_solid_get_sizes(m, NULL, NULL, &nc) == TFEM_STATUS_OK && nc == SC_CONTACT);
+  CHECK(tfem_solid_warning_count(m, &warnings) == TFEM_STATUS_OK && warnings == 0);
+  solid_state_of(m, &solid_before);
+  const size_t nn = SC_NODES, nt = SC_TETS, nf = SC_FACES, ce = SC_CONTACT;
+  SOLID_UNWRITTEN(m, tfem_solid_get_mesh_nodes(m, O[0].d, 3 * nn - 1), SHORT);
+  SOLID_UNWRITTEN(m, tfem_solid_get_mesh_nodes(m, NULL, 3 * nn), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_get_mesh_tetrahedra(m, O[0].i, 4 * nt, O[1].i, nt - 1), SHORT);
+  SOLID_UNWRITTEN(m, tfem_solid_get_mesh_tetrahedra(m, O[0].i, 4 * nt - 1, O[1].i, nt), SHORT);
+  SOLID_UNWRITTEN(m, tfem_solid_get_mesh_tetrahedra(m, NULL, 0, O[1].i, nt), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_get_boundary_faces(m, O[0].i, 3 * nf, O[1].i, nf - 1), SHORT);
+  SOLID_UNWRITTEN(m, tfem_solid_get_boundary_faces(m, O[0].i, 3 * nf - 1, O[1].i, nf), SHORT);
+  SOLID_UNWRITTEN(m, tfem_solid_get_boundary_faces(m, NULL, 3 * nf, O[1].i, nf), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_get_sizes(NULL, O[0].i, O[1].i, O[2].i), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_get_boundary_face_count(m, NULL), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_warning_count(m, NULL), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_get_warning_size(m, 0, O[0].z), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_get_warning_size(m, -1, O[0].z), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_get_warning(m, INT_MIN, O[0].c, 512), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_get_solve_info(m, NULL), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_get_iterations(m, NULL), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_get_displacements(m, O[0].d, 3 * nn - 1), SHORT);
+  SOLID_UNWRITTEN(m, tfem_solid_get_displacements(m, NULL, 3 * nn), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_get_element_strains(m, O[0].d, 6 * nt - 1), SHORT);
+  SOLID_UNWRITTEN(m, tfem_solid_get_element_stresses(m, O[0].d, 6 * nt - 1), SHORT);
+  SOLID_UNWRITTEN(m, tfem_solid_get_element_stresses(m, O[0].d, 0), SHORT);
+  SOLID_UNWRITTEN(m, tfem_solid_get_reactions(m, O[0].d, 3 * nn - 1), SHORT);
+  SOLID_UNWRITTEN(m, tfem_solid_get_reactions(m, NULL, 3 * nn), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_get_external_work(m, NULL), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_get_contact_tetrahedra(m, O[0].i, 4 * ce - 1), SHORT);
+  SOLID_UNWRITTEN(m, tfem_solid_get_contact_active(m, O[0].i, ce - 1), SHORT);
+  SOLID_UNWRITTEN(m, tfem_solid_get_contact_active(m, NULL, ce), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_get_contact_forces(m, O[0].d, 3 * nn - 1), SHORT);
+  SOLID_UNWRITTEN(m, tfem_solid_get_contact_nodal_pressures(m, O[0].d, nn - 1), SHORT);
+  SOLID_UNWRITTEN(m, tfem_solid_get_contact_area(m, NULL), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_get_contact_pair_area(m, 1, O[0].d), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_get_contact_pair_area(m, -1, O[0].d), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_get_contact_pair_area(m, INT_MAX, O[0].d), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_get_contact_pair_area(m, 0, NULL), NUL);
+
+  /* Mutators refusing their arguments. */
+  int bad_tets[4 * SC_TETS], bad_faces[3 * SC_FACES];
+  double bad_xyz[3 * SC_NODES];
+  memcpy(bad_tets, C3.tets, sizeof bad_tets);
+  bad_tets[4 * 5 + 1] = SC_NODES; /* a node out of range */
+  SOLID_UNWRITTEN(m, tfem_solid_set_mesh(m, SC_NODES, C3.xyz, SC_TETS, bad_tets, C3.body, 0), MESH);
+  bad_tets[4 * 5 + 1] = bad_tets[4 * 5 + 2]; /* a node repeated in a tetrahedron */
+  SOLID_UNWRITTEN(m, tfem_solid_set_mesh(m, SC_NODES, C3.xyz, SC_TETS, bad_tets, C3.body, 0), MESH);
+  bad_tets[4 * 5 + 1] = -1;
+  SOLID_UNWRITTEN(m, tfem_solid_set_mesh(m, SC_NODES, C3.xyz, SC_TETS, bad_tets, C3.body, 0), MESH);
+  memcpy(bad_xyz, C3.xyz, sizeof bad_xyz);
+  bad_xyz[7] = NAN;
+  SOLID_UNWRITTEN(m, tfem_solid_set_mesh(m, SC_NODES, bad_xyz, SC_TETS, C3.tets, C3.body, 0), MESH);
+  bad_xyz[7] = -INFINITY;
+  SOLID_UNWRITTEN(m, tfem_solid_set_mesh(m, SC_NODES, bad_xyz, SC_TETS, C3.tets, C3.body, 0), MESH);
+  SOLID_UNWRITTEN(m, tfem_solid_set_mesh(m, SC_NODES, C3.xyz, SC_TETS, C3.tets, C3.body, 2), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_set_mesh(m, SC_NODES, C3.xyz, SC_TETS, C3.tets, C3.body, -1), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_set_mesh(m, -1, C3.xyz, SC_TETS, C3.tets, C3.body, 0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_set_mesh(m, SC_NODES, C3.xyz, INT_MIN, C3.tets, C3.body, 0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_set_mesh(m, SC_NODES, NULL, SC_TETS, C3.tets, C3.body, 0), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_set_mesh(m, SC_NODES, C3.xyz, SC_TETS, NULL, C3.body, 0), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_set_mesh(m, SC_NODES, C3.xyz, SC_TETS, C3.tets, NULL, 0), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_load_gmsh(m, NULL, 0), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_load_gmsh(m, "/nonexistent-folder-of-tfem/x.msh", 0), TFEM_STATUS_IO);
+  SOLID_UNWRITTEN(m, tfem_solid_load_gmsh(m, "", 0), TFEM_STATUS_IO);
+  /* (faces come before the constraints, loads and pairs that name them) */
+  SOLID_UNWRITTEN(m, tfem_solid_set_boundary_faces(m, SC_FACES, C3.faces, C3.tags), STATE);
+  SOLID_UNWRITTEN(m, tfem_solid_add_boundary_faces(m, 1, C3.faces, C3.tags), STATE);
+  memcpy(bad_faces, C3.faces, sizeof bad_faces);
+  bad_faces[4] = SC_NODES;
+  SOLID_UNWRITTEN(m, tfem_solid_set_boundary_faces(m, SC_FACES, bad_faces, C3.tags), MESH);
+  SOLID_UNWRITTEN(m, tfem_solid_set_boundary_faces(m, -1, C3.faces, C3.tags), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_set_boundary_faces(m, SC_FACES, C3.faces, NULL), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_add_boundary_faces(m, 2, NULL, C3.tags), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_set_material(m, 1, -1.0, 0.25), MATERIAL);
+  SOLID_UNWRITTEN(m, tfem_solid_set_material(m, 1, 0.0, 0.25), MATERIAL);
+  SOLID_UNWRITTEN(m, tfem_solid_set_material(m, 1, NAN, 0.25), MATERIAL);
+  SOLID_UNWRITTEN(m, tfem_solid_set_material(m, 2, INFINITY, 0.25), MATERIAL);
+  SOLID_UNWRITTEN(m, tfem_solid_set_material(m, 2, 1.0, 0.5), MATERIAL);
+  SOLID_UNWRITTEN(m, tfem_solid_set_material(m, 2, 1.0, -1.0), MATERIAL);
+  SOLID_UNWRITTEN(m, tfem_solid_set_material(m, 2, 1.0, NAN), MATERIAL);
+  SOLID_UNWRITTEN(m, tfem_solid_set_tempering(m, 4, 0.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_set_tempering(m, -1, 0.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_set_tempering(m, 1, -1.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_set_tempering(m, 1, 0.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_set_tempering(m, 2, NAN), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_set_tempering(m, 2, INFINITY), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_set_ordering(m, 3), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_set_ordering(m, -1), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_fix(m, SC_NODES, TFEM_AXIS_X, 0.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_fix(m, -1, TFEM_AXIS_X, 0.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_fix(m, INT_MIN, TFEM_AXIS_X, 0.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_fix(m, 0, 3, 0.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_fix(m, 0, -1, 0.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_fix(m, 0, TFEM_AXIS_Z, NAN), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_fix(m, 0, TFEM_AXIS_Z, -INFINITY), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_fix_faces(m, 99, TFEM_AXIS_X, 0.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_fix_faces(m, 5, 3, 0.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_fix_faces(m, 5, TFEM_AXIS_Z, NAN), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_add_pressure(m, 99, 0.1), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_add_pressure(m, 16, NAN), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_add_pressure(m, 16, INFINITY), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_add_traction(m, 99, 0.0, 0.0, 1.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_add_traction(m, 16, 0.0, NAN, 1.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_add_traction(m, 16, 0.0, 0.0, -INFINITY), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_add_nodal_force(m, SC_NODES, 0.0, 0.0, 1.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_add_nodal_force(m, -1, 0.0, 0.0, 1.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_add_nodal_force(m, 0, NAN, 0.0, 1.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_add_contact_pair(m, 6, 6, O[0].i), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_add_contact_pair(m, 6, 99, O[0].i), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_add_contact_pair(m, 99, 15, O[0].i), ARG);
+  /* Solves and steps that fail before their work: the options, the load
+   * factor; a revert with no step. */
+  tfem_contact_options_default(&bad);
+  bad.law = TFEM_CONTACT_LAW_STICK;
+  SOLID_UNWRITTEN(m, tfem_solid_solve_contact(m, &bad, &O[0].info), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_step(m, 1.0, &bad, &O[0].info), ARG);
+  tfem_contact_options_default(&bad);
+  bad.inversion_test = TFEM_INVERSION_TEST_LITERAL;
+  SOLID_UNWRITTEN(m, tfem_solid_solve_contact(m, &bad, &O[0].info), ARG);
+  tfem_contact_options_default(&bad);
+  bad.max_iterations = 0;
+  SOLID_UNWRITTEN(m, tfem_solid_solve_contact(m, &bad, &O[0].info), ARG);
+  tfem_contact_options_default(&bad);
+  bad.contact_modulus = -1.0;
+  SOLID_UNWRITTEN(m, tfem_solid_solve_contact(m, &bad, &O[0].info), ARG);
+  tfem_contact_options_default(&bad);
+  bad.lambda = NAN;
+  SOLID_UNWRITTEN(m, tfem_solid_solve_contact(m, &bad, &O[0].info), ARG);
+  tfem_contact_options_default(&bad);
+  bad.law = 7;
+  SOLID_UNWRITTEN(m, tfem_solid_step(m, 1.0, &bad, &O[0].info), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_step(m, NAN, NULL, &O[0].info), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_step(m, -INFINITY, NULL, &O[0].info), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_step(m, 1e301, NULL, &O[0].info), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_revert_step(m), STATE); /* (a solve is no step) */
+  /* ... and after their work: a contact modulus that leaves body 2 held
+   * by nothing (SINGULAR), a step unloading it (SINGULAR). */
+  tfem_contact_options_default(&bad);
+  bad.contact_modulus = 1e-300;
+  SOLID_UNWRITTEN(m, tfem_solid_solve_contact(m, &bad, &O[0].info), TFEM_STATUS_SINGULAR);
+  SOLID_UNWRITTEN(m, tfem_solid_step(m, -1.0, NULL, &O[0].info), TFEM_STATUS_SINGULAR);
+  SOLID_UNWRITTEN(m, tfem_solid_write_vtu(m, NULL), NUL);
+  SOLID_UNWRITTEN(m, tfem_solid_write_vtu(m, "/nonexistent-folder-of-tfem/x.vtu"), TFEM_STATUS_IO);
+  SOLID_UNWRITTEN(m, tfem_solid_write_vtu(m, ""), TFEM_STATUS_IO);
+
+  /* A step, then the refusals again: the step's results stay, and so does
+   * its revert (once). */
+  CHECK(tfem_solid_step(m, 0.5, NULL, NULL) == TFEM_STATUS_OK);
+  solid_state_of(m, &solid_before);
+  SOLID_UNWRITTEN(m, tfem_solid_step(m, NAN, NULL, &O[0].info), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_step(m, -1.0, NULL, &O[0].info), TFEM_STATUS_SINGULAR);
+  SOLID_UNWRITTEN(m, tfem_solid_solve_contact(m, &bad, &O[0].info), TFEM_STATUS_SINGULAR);
+  SOLID_UNWRITTEN(m, tfem_solid_fix(m, 0, 5, 0.0), ARG);
+  SOLID_UNWRITTEN(m, tfem_solid_get_displacements(m, O[0].d, 3 * nn - 1), SHORT);
+  CHECK(tfem_solid_revert_step(m) == TFEM_STATUS_OK);
+  solid_state_of(m, &solid_before);
+  SOLID_UNWRITTEN(m, tfem_solid_revert_step(m), STATE);
+  /* (the results reverted to are the solve's) */
+  solid_state_of(m, &solid_after);
+  tfem_solid_model *again = stacked_cubes(0.0);
+  CHECK(tfem_solid_solve_contact(again, NULL, NULL) == TFEM_STATUS_OK);
+  solid_state_of(again, &solid_before);
+  CHECK(memcmp(&solid_before, &solid_after, sizeof solid_before) == 0);
+  tfem_solid_destroy(again);
+
+  /* The model is still usable: the same problem solved again gives the
+   * same results, bit for bit, and so does a step after every refusal. */
+  solid_state_of(m, &solid_before);
+  CHECK(tfem_solid_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  expect_solid_as_it_was(m, "the solve after the refusals", __LINE__);
+  CHECK(tfem_solid_last_error_length(m) == 1);
+  tfem_solid_destroy(m);
+
+  /* A solve that fails after its work on a problem with results: the gap
+   * closed in two iterations, refused at one (NOT_CONVERGED). */
+  m = stacked_cubes(0.01);
+  CHECK(tfem_solid_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  int iterations = 0;
+  CHECK(tfem_solid_get_iterations(m, &iterations) == TFEM_STATUS_OK && iterations >= 2);
+  solid_state_of(m, &solid_before);
+  tfem_contact_options_default(&bad);
+  bad.max_iterations = 1;
+  SOLID_UNWRITTEN(m, tfem_solid_solve_contact(m, &bad, &O[0].info), TFEM_STATUS_NOT_CONVERGED);
+  SOLID_UNWRITTEN(m, tfem_solid_step(m, 0.0, &bad, &O[0].info), TFEM_STATUS_NOT_CONVERGED);
+  CHECK(tfem_solid_solve_contact(m, NULL, NULL) == TFEM_STATUS_OK);
+  expect_solid_as_it_was(m, "the solve after the refused ones", __LINE__);
+  tfem_solid_destroy(m);
+  /* (The exception: the message copies write the message cut to the
+   * buffer with BUFFER_TOO_SMALL.) */
+  m = tfem_solid_create();
+  CHECK(tfem_solid_fix(m, 0, TFEM_AXIS_X, 0.0) == STATE);
+  memset(O, SENTINEL, sizeof O);
+  CHECK(tfem_solid_last_error(m, O[0].c, 8) == SHORT && strlen(O[0].c) == 7);
+  memset(O, SENTINEL, sizeof O);
+  CHECK(tfem_solid_last_error(m, O[0].c, 0) == SHORT && outputs_intact());
+  tfem_solid_destroy(m);
+
+  /* The host contact context: refused handles first. */
+  dead = tfem_solid_create();
+  tfem_solid_destroy(dead);
+  double u[SC_NL], nan_u[SC_NL], huge_u[SC_NL], host[3 * SC_NODES];
+  memset(u, 0, sizeof u);
+  memset(nan_u, 0, sizeof nan_u);
+  memset(huge_u, 0, sizeof huge_u);
+  nan_u[5] = NAN;
+  tfem_solid_contact *const wrong_c[4] = {NULL, (tfem_solid_contact *)dead, (tfem_solid_contact *)two_c,
+                                           (tfem_solid_contact *)live};
+  for (int w = 0; w < 4; ++w) {
+    tfem_solid_contact *h = wrong_c[w];
+    const tfem_status want = h ? ARG : NUL;
+    UNWRITTEN(tfem_solid_contact_add_side(h, 6, 1, 1.0, 0, NULL, NULL, NULL, 0, NULL, O[0].i), want);
+    UNWRITTEN(tfem_solid_contact_add_pair(h, 0, 1, O[0].i), want);
+    UNWRITTEN(tfem_solid_contact_setup(h), want);
+    UNWRITTEN(tfem_solid_contact_sizes(h, O[0].i, O[1].i, O[2].l), want);
+    UNWRITTEN(tfem_solid_contact_nodes(h, O[0].i, L), want);
+    UNWRITTEN(tfem_solid_contact_tetrahedra(h, O[0].i, L), want);
+    UNWRITTEN(tfem_solid_contact_pattern(h, O[0].l, O[1].l, L), want);
+    UNWRITTEN(tfem_solid_contact_element_equations(h, O[0].l, L), want);
+    UNWRITTEN(tfem_solid_contact_element_blocks(h, O[0].d, L), want);
+    UNWRITTEN(tfem_solid_contact_evaluate(h, u, SC_NL, O[0].d, L, O[1].d, L), want);
+    UNWRITTEN(tfem_solid_contact_gather(h, host, 3 * SC_NODES, O[0].d, L), want);
+    UNWRITTEN(tfem_solid_contact_update(h, u, SC_NL, O[0].i, O[1].i, O[2].i), want);
+    UNWRITTEN(tfem_solid_contact_restart(h), want);
+    UNWRITTEN(tfem_solid_contact_get_active(h, O[0].i, L), want);
+    UNWRITTEN(tfem_solid_contact_gaps(h, u, SC_NL, O[0].d, L), want);
+    UNWRITTEN(tfem_solid_contact_area(h, O[0].d), want);
+    memset(O, SENTINEL, sizeof O);
+    CHECK(tfem_solid_contact_scatter_add(h, u, SC_NL, O[0].d, 3 * SC_NODES) == want && outputs_intact());
+    tfem_solid_contact_destroy(h); /* a no-op */
+  }
+  CHECK(tfem_last_error(two, O[0].c, 512) == TFEM_STATUS_OK && tfem_contact_last_error(two_c, O[0].c, 512) ==
+        TFEM_STATUS_OK);
+  solid_before = live_state;
+  expect_solid_as_it_was(live, "the 3D context's refusals of the 3D model", __LINE__);
+  memset(O, SENTINEL, sizeof O);
+  CHECK(tfem_solid_contact_create(2, NULL) == NULL && outputs_intact());
+  tfem_contact_options_default(&bad);
+  bad.law = TFEM_CONTACT_LAW_STICK;
+  CHECK(tfem_solid_contact_create(0, &bad) == NULL);
+
+  /* No pair yet: what needs B refuses; the sides' refusals. */
+  tfem_solid_contact *c = sc;
+  UNWRITTEN(tfem_solid_contact_setup(c), STATE);
+  UNWRITTEN(tfem_solid_contact_sizes(c, O[0].i, O[1].i, O[2].l), STATE);
+  UNWRITTEN(tfem_solid_contact_tetrahedra(c, O[0].i, L), STATE);
+  UNWRITTEN(tfem_solid_contact_pattern(c, O[0].l, O[1].l, L), STATE);
+  UNWRITTEN(tfem_solid_contact_element_equations(c, O[0].l, L), STATE);
+  UNWRITTEN(tfem_solid_contact_element_blocks(c, O[0].d, L), STATE);
+  UNWRITTEN(tfem_solid_contact_get_active(c, O[0].i, L), STATE);
+  UNWRITTEN(tfem_solid_contact_evaluate(c, NULL, 0, O[0].d, L, O[1].d, L), STATE);
+  UNWRITTEN(tfem_solid_contact_update(c, NULL, 0, O[0].i, O[1].i, O[2].i), STATE);
+  UNWRITTEN(tfem_solid_contact_gaps(c, NULL, 0, O[0].d, L), STATE);
+  UNWRITTEN(tfem_solid_contact_area(c, O[0].d), STATE);
+  UNWRITTEN(tfem_solid_contact_set_active(c, NULL, 0), STATE);
+  UNWRITTEN(tfem_solid_contact_restart(c), STATE);
+  stacked_cubes_mesh(&C3, 0.0);
+  host_side_t lower, upper, side;
+  host_side_of(6, 1.0, 0, &lower);
+  host_side_of(15, -1.0, 0, &upper);
+#define ADD_SIDE(c, s, tag, body, young, out) \
+  tfem_solid_contact_add_side(c, tag, body, young, (s).n_nodes, (s).nodes, (s).xyz, (s).equations, (s).n_triangles, \
+                              (s).triangles, out)
+  side = lower;
+  UNWRITTEN(tfem_solid_contact_add_side(c, 6, 1, 1.0, side.n_nodes, NULL, side.xyz, side.equations, side.n_triangles,
+                                        side.triangles, O[0].i), NUL);
+  UNWRITTEN(tfem_solid_contact_add_side(c, 6, 1, 1.0, side.n_nodes, side.nodes, NULL, side.equations,
+                                        side.n_triangles, side.triangles, O[0].i), NUL);
+  UNWRITTEN(tfem_solid_contact_add_side(c, 6, 1, 1.0, side.n_nodes, side.nodes, side.xyz, NULL, side.n_triangles,
+                                        side.triangles, O[0].i), NUL);
+  UNWRITTEN(tfem_solid_contact_add_side(c, 6, 1, 1.0, side.n_nodes, side.nodes, side.xyz, side.equations,
+                                        side.n_triangles, NULL, O[0].i), NUL);
+  UNWRITTEN(tfem_solid_contact_add_side(c, 6, 1, 1.0, -1, side.nodes, side.xyz, side.equations, side.n_triangles,
+                                        side.triangles, O[0].i), ARG);
+  UNWRITTEN(tfem_solid_contact_add_side(c, 6, 1, 1.0, side.n_nodes, side.nodes, side.xyz, side.equations, -1,
+                                        side.triangles, O[0].i), ARG);
+  UNWRITTEN(tfem_solid_contact_add_side(c, 6, 1, 1.0, side.n_nodes, side.nodes, side.xyz, side.equations, 0,
+                                        side.triangles, O[0].i), ARG);
+  UNWRITTEN(ADD_SIDE(c, side, 6, 1, -1.0, O[0].i), ARG);
+  UNWRITTEN(ADD_SIDE(c, side, 6, 1, NAN, O[0].i), ARG);
+  UNWRITTEN(ADD_SIDE(c, side, 6, 1, INFINITY, O[0].i), ARG);
+  side.triangles[4] = 999; /* a node the side does not give */
+  UNWRITTEN(ADD_SIDE(c, side, 6, 1, 1.0, O[0].i), ARG);
+  side = lower;
+  side.nodes[2] = -1; /* below the index base */
+  UNWRITTEN(ADD_SIDE(c, side, 6, 1, 1.0, O[0].i), ARG);
+  side = lower;
+  side.xyz[4] = NAN;
+  UNWRITTEN(ADD_SIDE(c, side, 6, 1, 1.0, O[0].i), ARG);
+  side = lower;
+  side.equations[7] = INT64_MAX; /* beyond any host vector */
+  UNWRITTEN(ADD_SIDE(c, side, 6, 1, 1.0, O[0].i), ARG);
+  CHECK(ADD_SIDE(c, lower, 6, 1, 1.0, NULL) == TFEM_STATUS_OK);
+  side = upper;
+  memcpy(side.nodes, lower.nodes, sizeof side.nodes); /* the lower side's nodes at other coordinates */
+  UNWRITTEN(ADD_SIDE(c, side, 15, 2, 1.0, O[0].i), ARG);
+  UNWRITTEN(tfem_solid_contact_add_pair(c, 0, 1, O[0].i), ARG); /* side 1 does not exist */
+  UNWRITTEN(tfem_solid_contact_add_pair(c, -1, 0, O[0].i), ARG);
+  UNWRITTEN(tfem_solid_contact_add_pair(c, 0, 0, O[0].i), ARG); /* one body */
+  UNWRITTEN(tfem_solid_contact_add_pair(c, INT_MIN, INT_MAX, O[0].i), ARG);
+  CHECK(ADD_SIDE(c, upper, 15, 2, 1.0, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_solid_contact_add_pair(c, 0, 1, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_solid_contact_setup(c) == TFEM_STATUS_OK);
+  int hn = 0, ht = 0;
+  int64_t entries = 0;
+  CHECK(tfem_solid_contact_sizes(c, &hn, &ht, &entries) == TFEM_STATUS_OK && hn == 2 * SC_SIDE_NODES &&
+        ht == SC_CONTACT && entries > 0 && entries <= 144 * SC_CONTACT);
+  for (int k = 0; k < SC_NL; ++k) u[k] = 1e-3 * ((k * 7) % 11 - 5);
+  for (int k = 0; k < 3 * SC_NODES; ++k) host[k] = 1e-3 * ((k * 5) % 13 - 6);
+  host_state_of(c, u, &host_before);
+  for (int k = 0; k < 10; ++k) CHECK(host_before.st[k] == TFEM_STATUS_OK);
+  const size_t en = (size_t)entries, hnl = 3 * (size_t)hn, ct = (size_t)ht, neq = 3 * SC_NODES;
+
+  /* B is built: sides and pairs are fixed. */
+  HOST_UNWRITTEN(c, u, ADD_SIDE(c, lower, 7, 3, 1.0, O[0].i), STATE);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_add_pair(c, 0, 1, O[0].i), STATE);
+  /* Buffers too short, or NULL beside others long enough. */
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_nodes(c, O[0].i, (size_t)hn - 1), SHORT);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_nodes(c, NULL, (size_t)hn), NUL);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_tetrahedra(c, O[0].i, 4 * ct - 1), SHORT);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_pattern(c, O[0].l, O[1].l, en - 1), SHORT);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_pattern(c, O[0].l, NULL, en), NUL);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_pattern(c, NULL, O[1].l, en), NUL);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_element_equations(c, O[0].l, 12 * ct - 1), SHORT);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_element_blocks(c, O[0].d, 144 * ct - 1), SHORT);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_element_blocks(c, NULL, 144 * ct), NUL);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_get_active(c, O[0].i, ct - 1), SHORT);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_area(c, NULL), NUL);
+  /* Evaluating: a NULL or short u, a NaN, a buffer too short. */
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_evaluate(c, NULL, hnl, O[0].d, en, O[1].d, hnl), NUL);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_evaluate(c, u, hnl - 1, O[0].d, en, O[1].d, hnl), ARG);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_evaluate(c, u, hnl + 3, O[0].d, en, O[1].d, hnl), ARG);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_evaluate(c, u, hnl, O[0].d, en - 1, O[1].d, hnl), SHORT);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_evaluate(c, u, hnl, O[0].d, en, O[1].d, hnl - 1), SHORT);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_evaluate(c, nan_u, hnl, O[0].d, en, O[1].d, hnl), ARG);
+  /* Host vectors: an equation beyond the vector, a NaN there, a short u. */
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_gather(c, host, 3, O[0].d, hnl), ARG);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_gather(c, host, neq, O[0].d, hnl - 1), SHORT);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_gather(c, NULL, neq, O[0].d, hnl), NUL);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_gather(c, host, neq, NULL, hnl), NUL);
+  double nan_host[3 * SC_NODES];
+  memcpy(nan_host, host, sizeof host);
+  for (int k = 0; k < 3 * SC_NODES; ++k) nan_host[k] = NAN; /* (every equation: the sides' too) */
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_gather(c, nan_host, neq, O[0].d, hnl), ARG);
+  /* scatter_add: the host vector (O[0]) unchanged by every refusal */
+#define SCATTER_UNCHANGED(call, status)                                          \
+  do {                                                                           \
+    memset(O, SENTINEL, sizeof O);                                               \
+    memcpy(O[0].d, host, sizeof host);                                           \
+    tfem_status got_ = (call);                                                   \
+    int same_ = memcmp(O[0].d, host, sizeof host) == 0;                          \
+    memset(O[0].d, SENTINEL, sizeof host);                                       \
+    int intact_ = outputs_intact();                                              \
+    CHECK(got_ == (status) && same_ && intact_);                                 \
+    if (got_ != (status)) printf("  (line %d: status %d)\n", __LINE__, (int)got_); \
+    expect_host_as_it_was(c, u, #call, __LINE__);                                \
+  } while (0)
+  SCATTER_UNCHANGED(tfem_solid_contact_scatter_add(c, nan_u, hnl, O[0].d, neq), ARG);
+  SCATTER_UNCHANGED(tfem_solid_contact_scatter_add(c, u, hnl - 3, O[0].d, neq), ARG);
+  SCATTER_UNCHANGED(tfem_solid_contact_scatter_add(c, u, hnl, O[0].d, 3), ARG);
+  SCATTER_UNCHANGED(tfem_solid_contact_scatter_add(c, NULL, hnl, O[0].d, neq), NUL);
+  /* (the sides pulled 2e308 apart: the gaps and the residual overflow) */
+  for (int k = 0; k < SC_NL; ++k) huge_u[k] = k % 3 != 2 ? 0.0 : k < 3 * SC_SIDE_NODES ? -1e308 : 1e308;
+  {
+    double keep = host[3 * (SC_NODES - 1) + 2];
+    for (int k = 0; k < 3 * SC_NODES; ++k) host[k] = k % 3 == 2 ? 1e308 : host[k];
+    SCATTER_UNCHANGED(tfem_solid_contact_scatter_add(c, huge_u, hnl, O[0].d, neq), TFEM_STATUS_NUMERICAL_FAILURE);
+    for (int k = 0; k < 3 * SC_NODES; ++k) host[k] = k % 3 == 2 ? INFINITY : host[k];
+    SCATTER_UNCHANGED(tfem_solid_contact_scatter_add(c, u, hnl, O[0].d, neq), ARG);
+    for (int k = 0; k < 3 * SC_NODES; ++k) host[k] = 1e-3 * ((k * 5) % 13 - 6);
+    (void)keep;
+  }
+  /* The active set: a NaN, a wrong length, a flag other than 0 or 1, a
+   * count that is not B's; the flags and the loop stay. */
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_update(c, nan_u, hnl, O[0].i, O[1].i, O[2].i), ARG);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_update(c, u, hnl - 1, O[0].i, O[1].i, O[2].i), ARG);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_update(c, NULL, hnl, O[0].i, O[1].i, O[2].i), NUL);
+  int flags[SC_CONTACT];
+  for (int k = 0; k < SC_CONTACT; ++k) flags[k] = k % 2;
+  flags[3] = 2;
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_set_active(c, flags, ct), ARG);
+  flags[3] = -1;
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_set_active(c, flags, ct), ARG);
+  flags[3] = 0;
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_set_active(c, flags, ct - 1), ARG);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_set_active(c, flags, ct + 1), ARG);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_set_active(c, NULL, ct), NUL);
+  /* Gaps: short, a NaN, an overflow. */
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_gaps(c, u, hnl, O[0].d, ct - 1), SHORT);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_gaps(c, nan_u, hnl, O[0].d, ct), ARG);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_gaps(c, u, hnl - 1, O[0].d, ct), ARG);
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_gaps(c, huge_u, hnl, O[0].d, ct), TFEM_STATUS_NUMERICAL_FAILURE);
+  /* An evaluation whose residual overflows. */
+  HOST_UNWRITTEN(c, u, tfem_solid_contact_evaluate(c, huge_u, hnl, O[0].d, en, O[1].d, hnl),
+                 TFEM_STATUS_NUMERICAL_FAILURE);
+  /* The loop's cap: max_iterations = 1 refuses a second update of one
+   * loop, the flags and outputs unchanged. */
+  tfem_solid_contact *capped;
+  tfem_contact_options_default(&bad);
+  bad.max_iterations = 1;
+  capped = tfem_solid_contact_create(0, &bad);
+  CHECK(capped != NULL);
+  CHECK(ADD_SIDE(capped, lower, 6, 1, 1.0, NULL) == TFEM_STATUS_OK);
+  CHECK(ADD_SIDE(capped, upper, 15, 2, 1.0, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_solid_contact_add_pair(capped, 0, 1, NULL) == TFEM_STATUS_OK);
+  double zero[SC_NL];
+  memset(zero, 0, sizeof zero);
+  CHECK(tfem_solid_contact_update(capped, zero, hnl, NULL, NULL, NULL) == TFEM_STATUS_OK);
+  host_state_t capped_before;
+  host_state_of(capped, u, &capped_before);
+  memset(O, SENTINEL, sizeof O);
+  CHECK(tfem_solid_contact_update(capped, zero, hnl, O[0].i, O[1].i, O[2].i) == TFEM_STATUS_NOT_CONVERGED &&
+        outputs_intact());
+  host_state_of(capped, u, &host_after);
+  CHECK(memcmp(&capped_before, &host_after, sizeof host_after) == 0);
+  tfem_solid_contact_destroy(capped);
+  /* Sides that do not face each other: refused when B is built, the
+   * context unchanged (and refused again the same way). */
+  tfem_solid_contact *turned = tfem_solid_contact_create(0, NULL);
+  host_side_of(15, 1.0, 0, &side);
+  CHECK(ADD_SIDE(turned, lower, 6, 1, 1.0, NULL) == TFEM_STATUS_OK);
+  CHECK(ADD_SIDE(turned, side, 15, 2, 1.0, NULL) == TFEM_STATUS_OK);
+  CHECK(tfem_solid_contact_add_pair(turned, 0, 1, NULL) == TFEM_STATUS_OK);
+  UNWRITTEN(tfem_solid_contact_sizes(turned, O[0].i, O[1].i, O[2].l), ARG);
+  UNWRITTEN(tfem_solid_contact_evaluate(turned, u, hnl, O[0].d, L, O[1].d, L), ARG);
+  UNWRITTEN(tfem_solid_contact_setup(turned), ARG);
+  tfem_solid_contact_destroy(turned);
+
+  /* The context is still usable, with every value it gave before. */
+  expect_host_as_it_was(c, u, "every refusal", __LINE__);
+  CHECK(tfem_solid_contact_last_error_length(c) == 1);
+  /* (The exceptions: the message copies.) */
+  CHECK(tfem_solid_contact_gaps(c, nan_u, hnl, NULL, 0) != TFEM_STATUS_OK);
+  memset(O, SENTINEL, sizeof O);
+  CHECK(tfem_solid_contact_last_error(c, O[0].c, 8) == SHORT && strlen(O[0].c) == 7);
+  tfem_solid_contact_destroy(c);
+  memset(O, SENTINEL, sizeof O);
+  CHECK(tfem_solid_contact_last_error(c, O[0].c, 512) == ARG && strstr(O[0].c, "destroyed") != NULL);
+  CHECK(tfem_solid_contact_last_error_length(c) == strlen(O[0].c) + 1);
+#undef ADD_SIDE
+#undef SCATTER_UNCHANGED
+
+  tfem_solid_destroy(live);
+  tfem_destroy(two);
+  tfem_contact_destroy(two_c);
+}
+
 int main(int argc, char **argv) {
   if (argc == 4 && strcmp(argv[1], "--solve-under-cap") == 0)
     return solve_under_cap(atof(argv[2]), argv[3]);
@@ -3292,6 +4131,7 @@ int main(int argc, char **argv) {
   a_bad_boundary_circle_is_refused_and_changes_nothing();
   an_adaptive_solve_puts_new_boundary_nodes_on_the_declared_circle();
   a_boundary_circle_before_a_mesh_is_an_invalid_state();
+  a_failed_3d_call_writes_nothing_and_leaves_the_model_as_it_was();
 
   if (gmsh_dir[0] != '\0') rmdir(gmsh_dir);
 

@@ -54,7 +54,8 @@ fn without_contact_pairs_the_solve_builds_no_contact_structure() {
     assert_eq!(model.contact_tetrahedra().unwrap().len(), 0);
     assert_eq!(model.iterations().unwrap(), 1);
     assert_eq!(info.factorizations, 1);
-    assert_eq!(model.contact_area().unwrap(), 0.0);
+    let area = model.contact_area().unwrap();
+    assert!(area == 0.0 && area.is_sign_positive(), "{area:?}");
 }
 
 #[test]

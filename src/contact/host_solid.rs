@@ -534,13 +534,15 @@ impl SolidHostContact {
     }
 
     /// The area in contact: each active tetrahedron stands for a third of
-    /// its prism's facing triangle.
+    /// its prism's facing triangle; +0.0 when none is on (an empty sum of
+    /// floats is −0.0).
     pub fn contact_area(&mut self) -> Result<f64> {
         let b = self.built()?;
         Ok((0..b.gap.len())
             .filter(|&k| b.active.active()[k])
             .map(|k| b.gap.area(k) / 3.0)
-            .sum())
+            .sum::<f64>()
+            + 0.0)
     }
 
     /// Checks a per-node displacement array (3 per interface node).

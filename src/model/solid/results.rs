@@ -55,13 +55,15 @@ impl SolidModel {
     }
 
     /// The area of the interfaces in contact: each active tetrahedron of B
-    /// stands for a third of its prism's facing triangle.
+    /// stands for a third of its prism's facing triangle; +0.0 when none is
+    /// on (an empty sum of floats is −0.0).
     pub fn contact_area(&self) -> Result<f64> {
         let s = self.solution()?;
         Ok((0..s.gap.len())
             .filter(|&k| s.active[k])
             .map(|k| s.gap.area(k) / 3.0)
-            .sum())
+            .sum::<f64>()
+            + 0.0)
     }
 
     /// [`SolidModel::contact_area`] of one pair.
@@ -76,7 +78,8 @@ impl SolidModel {
         Ok((0..s.gap.len())
             .filter(|&k| s.active[k] && s.pair_of[k] == pair)
             .map(|k| s.gap.area(k) / 3.0)
-            .sum())
+            .sum::<f64>()
+            + 0.0)
     }
 
     /// The force B exerts on each node (three per node; zero off the
