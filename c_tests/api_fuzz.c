@@ -8690,6 +8690,14 @@ static void solid_checks(runner_t *R, int idx, call_t *c, int st, gbuf *g, const
               same &= x[3 * i + k] == s->sc_xyz[v][k] && (eq[3 * i + k] < base ? -1 : eq[3 * i + k] - base) == s->sc_eq[v][k];
             if (!same) refused = 1, snprintf(why, sizeof why, "node %d given before with other coordinates or equations", ids[i]);
           }
+        for (int j = 0; j < i && refused == 0; ++j)
+          if (ids[j] == ids[i]) {
+            int same = 1;
+            for (int k = 0; k < 3; ++k)
+              same &= x[3 * i + k] == x[3 * j + k] &&
+                      (eq[3 * i + k] < base ? -1 : eq[3 * i + k] - base) == (eq[3 * j + k] < base ? -1 : eq[3 * j + k] - base);
+            if (!same) refused = 1, snprintf(why, sizeof why, "node %d given twice with other coordinates or equations", ids[i]);
+          }
       }
       for (int k = 0; k < 3 * nt && refused == 0; ++k) {
         int found = 0;

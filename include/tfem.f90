@@ -2684,11 +2684,11 @@ module tfem_c
     !! unknowns `equations` (3 per node, in the index base; a value below the base marks a fixed DOF
     !! without an equation), and `n_triangles` triangles `triangles` (3 host node numbers each)
     !! numbered counter-clockwise seen from outside the body, so that the two sides of a pair face
-    !! each other. A node of two sides must come with the same coordinates and equations. Refused
-    !! with TFEM_STATUS_INVALID_ARGUMENT, naming the side (by its number in the index base and its
-    !! tag), the node or the triangle: a node number below the index base, a coordinate that is not
-    !! finite, an equation no host vector can hold (from index_base + PTRDIFF_MAX / 8 on), a
-    !! triangle over a node the side does not give, a side without triangles;
+    !! each other. A node of two sides, or given twice in one, must come with the same coordinates
+    !! and equations. Refused with TFEM_STATUS_INVALID_ARGUMENT, naming the side (by its number in
+    !! the index base and its tag), the node or the triangle: a node number below the index base, a
+    !! coordinate that is not finite, an equation no host vector can hold (from index_base +
+    !! PTRDIFF_MAX / 8 on), a triangle over a node the side does not give, a side without triangles;
     !! TFEM_STATUS_INVALID_STATE once B is built. The host's system size is not known here:
     !! `tfem_solid_contact_gather` and `tfem_solid_contact_scatter_add` check every equation against
     !! the vector they are given. Writes the side's number (in the index base) to `side` (may be

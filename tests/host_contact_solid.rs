@@ -303,6 +303,14 @@ fn bad_sides_are_refused_by_name_and_leave_the_context_unchanged() {
         ..good
     }));
     assert!(message.contains("Young"), "{message}");
+    let twice = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.5, 1.0, 0.0]];
+    let message = refusal(contact.add_side(&HostSurface {
+        nodes: &[1, 2, 1],
+        xyz: &twice,
+        triangles: &[[1, 2, 1]],
+        ..good
+    }));
+    assert!(message.contains("node 1 is given twice"), "{message}");
     assert!(contact.nodes().is_empty());
     let a = contact.add_side(&good).unwrap();
     let message = refusal(contact.add_pair(a, a));

@@ -196,7 +196,17 @@ impl SolidHostContact {
                     )));
                 }
                 None => match added.get(&id) {
-                    Some(&v) => v,
+                    // Given twice in this side: the same node only if alike.
+                    Some(&v) => {
+                        let (_, x0, eq0) = new_nodes[v - self.x.len()];
+                        if (x0, eq0) != (x, equation) {
+                            return Err(Error::argument(format!(
+                                "{name}: node {id} is given twice with other coordinates or \
+                                 equations"
+                            )));
+                        }
+                        v
+                    }
                     None => {
                         new_nodes.push((id, x, equation));
                         self.x.len() + new_nodes.len() - 1

@@ -250,8 +250,8 @@ pub unsafe extern "C" fn tfem_solid_contact_last_error_length(
 /// base marks a fixed DOF without an equation), and `n_triangles`
 /// triangles `triangles` (3 host node numbers each) numbered
 /// counter-clockwise seen from outside the body, so that the two sides of
-/// a pair face each other. A node of two sides must come with the same
-/// coordinates and equations. Refused with TFEM_STATUS_INVALID_ARGUMENT,
+/// a pair face each other. A node of two sides, or given twice in one,
+/// must come with the same coordinates and equations. Refused with TFEM_STATUS_INVALID_ARGUMENT,
 /// naming the side (by its number in the index base and its tag), the node
 /// or the triangle: a node number below the index base, a coordinate that
 /// is not finite, an equation no host vector can hold (from index_base +
