@@ -766,6 +766,34 @@ static void refusals(void) {
   tfem_solid_contact_destroy(c); /* again: a no-op */
 }
 
+/* A side's node that faces no node of the other side is named by the
+ * host's own number (here index base 1): the lower side's node (1, 1, N)
+ * moved off the node above it. */
+static void unmatched_node_named_by_host_number(void) {
+  tfem_solid_contact *c = tfem_solid_contact_create(1, NULL);
+  CHECK(c != NULL);
+  side_of(TAG_LOWER_TOP, 1.0, 1, &lower);
+  side_of(TAG_UPPER_BOTTOM, -1.0, 1, &upper);
+  int host = id(0, 1, 1, N) + 1, found = 0;
+  for (int m = 0; m < lower.n_nodes; ++m)
+    if (lower.nodes[m] == host) {
+      lower.xyz[3 * m] += 0.1 / N;
+      found = 1;
+    }
+  CHECK(found);
+  int a = -7, b = -7;
+  OK(tfem_solid_contact_add_side(c, TAG_LOWER_TOP, 1, E, lower.n_nodes, lower.nodes, lower.xyz,
+                                 lower.equations, lower.n_triangles, lower.triangles, &a));
+  OK(tfem_solid_contact_add_side(c, TAG_UPPER_BOTTOM, 2, E, upper.n_nodes, upper.nodes,
+                                 upper.xyz, upper.equations, upper.n_triangles, upper.triangles,
+                                 &b));
+  OK(tfem_solid_contact_add_pair(c, a, b, NULL));
+  char needle[64];
+  snprintf(needle, sizeof needle, "node %d of surface a faces no node", host);
+  EXPECT_ERROR(c, tfem_solid_contact_setup(c), TFEM_STATUS_INVALID_ARGUMENT, needle);
+  tfem_solid_contact_destroy(c);
+}
+
 int main(void) {
   cube(0, -1.0, 0);
   cube(NODES_PER, 0.0, 10);
@@ -780,6 +808,7 @@ int main(void) {
   patch_test(1);
   patch_test(0);
   refusals();
+  unmatched_node_named_by_host_number();
 
   printf("solid_host_test: %d passed, %d failed\n", passed, failed);
   return failed == 0 ? 0 : 1;

@@ -455,6 +455,30 @@ int main(int argc, char **argv) {
     UNCHANGED(m);
   }
 
+  /* Under index base 1, a contact side's refusal names the node by its
+   * 1-based number: side a's node (1, 1, N) moved off the node it faced. */
+  {
+    static double moved[3 * N_NODES];
+    static int tets1[4 * N_TETS], faces1[3 * N_FACES];
+    memcpy(moved, xyz, sizeof xyz);
+    int v = id(0, 1, 1, N);
+    moved[3 * v] += 0.1 / N;
+    for (int k = 0; k < 4 * N_TETS; ++k) tets1[k] = tets[k] + 1;
+    for (int k = 0; k < 3 * N_FACES; ++k) faces1[k] = faces[k] + 1;
+    tfem_solid_model *b1 = tfem_solid_create();
+    OK(tfem_solid_set_mesh(b1, N_NODES, moved, N_TETS, tets1, body, 1));
+    OK(tfem_solid_set_boundary_faces(b1, N_FACES, faces1, tags));
+    OK(tfem_solid_set_material(b1, 1, E, NU));
+    OK(tfem_solid_set_material(b1, 2, E, NU));
+    OK(tfem_solid_fix_faces(b1, 5, TFEM_AXIS_Z, 0.0));
+    OK(tfem_solid_add_contact_pair(b1, 6, 15, NULL));
+    char needle[64];
+    snprintf(needle, sizeof needle, "node %d of surface a faces no node", v + 1);
+    EXPECT_ERROR(b1, tfem_solid_solve_contact(b1, NULL, NULL), TFEM_STATUS_INVALID_ARGUMENT,
+                 needle);
+    tfem_solid_destroy(b1);
+  }
+
   /* A handle of the other kind, or none, is refused; its message is the
    * thread's. */
   tfem_model *two = tfem_create();

@@ -5,8 +5,9 @@
 ! documentation, the enums as named constants, the structs as bind(C) types, and
 ! string helpers. From tfem.h:
 !
-! tfem -- the Tempered Finite Element Method for 2D elasticity and
-! contact, frictionless or with Coulomb friction. C ABI.
+! tfem -- the Tempered Finite Element Method for elasticity and contact
+! in 2D (frictionless or with Coulomb friction) and 3D (frictionless).
+! C ABI.
 !
 ! Overview
 ! - Two objects. A tfem_model holds a whole problem: the mesh and its

@@ -1,6 +1,7 @@
 /*
- * tfem -- the Tempered Finite Element Method for 2D elasticity and
- * contact, frictionless or with Coulomb friction. C ABI.
+ * tfem -- the Tempered Finite Element Method for elasticity and contact
+ * in 2D (frictionless or with Coulomb friction) and 3D (frictionless).
+ * C ABI.
  *
  * Overview
  * - Two objects. A tfem_model holds a whole problem: the mesh and its

@@ -1,6 +1,7 @@
-//! # tfem — the Tempered Finite Element Method for 2D elasticity and contact
+//! # tfem — the Tempered Finite Element Method for elasticity and contact
 //!
-//! P1 triangles whose stiffness divides by max(J, Jmin) instead of J, so that
+//! P1 triangles (and, in 3D, linear tetrahedra: [`model::solid`],
+//! docs/method.md §9) whose stiffness divides by max(J, Jmin) instead of J, so that
 //! flat, degenerate and inverted elements stay finite and do not lock
 //! (docs/method.md §2), and contact between bodies, frictionless or with
 //! Coulomb friction (docs/method.md §6.15), by activating the inverted

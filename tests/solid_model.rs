@@ -53,6 +53,11 @@ fn without_contact_pairs_the_solve_builds_no_contact_structure() {
     let info = model.solve().unwrap();
     assert_eq!(model.contact_tetrahedra().unwrap().len(), 0);
     assert_eq!(model.iterations().unwrap(), 1);
+    let history = model.contact_history().unwrap();
+    assert!(
+        history.len() == 1 && history[0].active + history[0].switched_on == 0,
+        "{history:?}"
+    );
     assert_eq!(info.factorizations, 1);
     let area = model.contact_area().unwrap();
     assert!(area == 0.0 && area.is_sign_positive(), "{area:?}");
@@ -111,6 +116,32 @@ fn the_seed_scenes_contact_carries_the_whole_load_and_lifts_off_at_the_corner() 
     assert!((r.transmitted - 1.0).abs() < 1e-9, "{r:?}");
     assert!(r.gap_corner > 0.0, "the corner opens: {r:?}");
     assert!(r.contact_area > 0.0 && r.contact_area < 1.0, "{r:?}");
+}
+
+#[test]
+fn the_contact_history_accounts_for_every_switch_to_the_final_set() {
+    let scene = seed(ContactLoop::Product);
+    let mut model = scene.model().unwrap();
+    model.solve_contact(&scene.options()).unwrap();
+    let history = model.contact_history().unwrap();
+    assert_eq!(history.len(), model.iterations().unwrap());
+    assert!(history.len() > 1, "the seed scene lifts off: {history:?}");
+    for w in history.windows(2) {
+        assert_eq!(
+            w[1].active + w[0].switched_off,
+            w[0].active + w[0].switched_on,
+            "{history:?}"
+        );
+    }
+    let last = history.last().unwrap();
+    assert_eq!((last.switched_on, last.switched_off), (0, 0), "{history:?}");
+    let on = model
+        .contact_active()
+        .unwrap()
+        .iter()
+        .filter(|&&a| a)
+        .count();
+    assert_eq!(last.active, on);
 }
 
 #[test]

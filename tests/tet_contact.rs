@@ -343,6 +343,7 @@ fn b_built_from_the_facing_surfaces_is_the_stacked_meshs_layer() {
             a: &a,
             b: &b,
             normal: [0.0, 0.0, 1.0],
+            number: &|v| v as i64,
         })
         .unwrap();
         // The same tetrahedra, each numbered with the same orientation: J

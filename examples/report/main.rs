@@ -35,6 +35,7 @@ mod many_bodies;
 mod patch;
 mod seed;
 mod speed;
+mod speed_3d;
 mod stability;
 mod tetrahedra;
 
@@ -61,6 +62,7 @@ use crate::many_bodies::many_bodies;
 use crate::patch::{patch_ratios, patch_test};
 use crate::seed::seed;
 use crate::speed::{export_matrix, faer_alone, speed, speed_run};
+use crate::speed_3d::{seed3d_run, speed_3d};
 use crate::stability::stability;
 use crate::tetrahedra::tetrahedra;
 
@@ -101,6 +103,7 @@ const SECTIONS: &[&str] = &[
     "axisymmetric",
     "adaptive",
     "tetrahedra",
+    "speed_3d",
     "calculix",
     "host_codes",
     "q4_host",
@@ -148,6 +151,13 @@ fn args() -> Args {
                 let mode = it.next().expect("--speed-run N ORDERING MODE");
                 speed_run(n, &ordering, &mode);
             }
+            "--seed3d-run" => {
+                let n = it
+                    .next()
+                    .and_then(|v| v.parse().ok())
+                    .expect("--seed3d-run N");
+                seed3d_run(n);
+            }
             "--export-matrix" => {
                 let n = it
                     .next()
@@ -188,7 +198,7 @@ fn main() {
     )
     .unwrap();
     type Section = fn(&mut String, &Args);
-    let sections: [(&str, Section); 22] = [
+    let sections: [(&str, Section); 23] = [
         ("manufactured", manufactured),
         ("seed", seed),
         ("patch_test", patch_test),
@@ -207,6 +217,7 @@ fn main() {
         ("axisymmetric", axisymmetric),
         ("adaptive", adaptive),
         ("tetrahedra", tetrahedra),
+        ("speed_3d", speed_3d),
         ("calculix", calculix),
         ("host_codes", host_codes),
         ("q4_host", q4_host),

@@ -744,7 +744,9 @@ fn calculix_3d(report: &mut String, tfem_rows: &[(f64, [f64; 4])]) {
     };
     let runs: Vec<serde_json::Value> = (text.lines())
         .filter_map(|l| serde_json::from_str(l).ok())
-        .filter(|v: &serde_json::Value| v["contact"] == "n2s" && v["converged"] != false)
+        .filter(|v: &serde_json::Value| {
+            v["contact"] == "n2s" && v["converged"] != false && v["retimed"] != true
+        })
         .collect();
     writeln!(
         report,
@@ -818,7 +820,7 @@ fn calculix_3d(report: &mut String, tfem_rows: &[(f64, [f64; 4])]) {
 
 /// q∞ and s of q = q∞ + K h^s through three points (h decreasing), or
 /// None when the differences change sign (no such fit).
-fn extrapolate(q: &[(f64, f64)]) -> Option<(f64, f64)> {
+pub(crate) fn extrapolate(q: &[(f64, f64)]) -> Option<(f64, f64)> {
     let [(h1, q1), (h2, q2), (h3, q3)] = [q[0], q[1], q[2]];
     let ratio = (q1 - q2) / (q2 - q3);
     if !(ratio > 0.0 && ratio.is_finite()) {

@@ -342,6 +342,7 @@ impl SolidHostContact {
                 a: &self.sides[a].triangles,
                 b: &self.sides[b].triangles,
                 normal,
+                number: &|v| self.node_id[v],
             })
             .map_err(name)?;
             let modulus = (self.options.contact_modulus)

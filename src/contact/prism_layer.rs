@@ -26,6 +26,9 @@ pub struct FacingSurfaces<'a> {
     /// The interface plane's unit normal, pointing from a into b (a's
     /// outward normal): b moving along it opens the gap.
     pub normal: [f64; 3],
+    /// The caller's number of node v, for messages (the mesh's index base,
+    /// or a host code's own node numbers).
+    pub number: &'a dyn Fn(usize) -> i64,
 }
 
 /// B's tetrahedra between `s.a` and `s.b`: every node of a must face a node
@@ -53,12 +56,14 @@ pub fn prism_layer(s: &FacingSurfaces<'_>) -> Result<Vec<GapTetrahedron>> {
     let facing = facing_nodes(s, &plane, shortest)?;
     let triangles_b: HashSet<[usize; 3]> = s.b.iter().map(|t| sorted(*t)).collect();
     let mut layer = Vec::with_capacity(3 * s.a.len());
-    for (k, tri) in s.a.iter().enumerate() {
+    for tri in s.a {
         let top = tri.map(|v| facing[&v]);
         if !triangles_b.contains(&sorted(top)) {
             return Err(Error::argument(format!(
-                "triangle {k} of surface a faces no triangle of surface b (nodes {top:?} of b \
-                 face it): the interface must match triangle to triangle"
+                "the triangle of surface a on nodes {:?} faces no triangle of surface b (nodes \
+                 {:?} of b face it): the interface must match triangle to triangle",
+                tri.map(s.number),
+                top.map(s.number)
             )));
         }
         for t in split_prism(*tri, top, |v| v) {
@@ -179,7 +184,8 @@ fn facing_nodes(
                 if (p[0] - q[0]).hypot(p[1] - q[1]) <= tol {
                     if found.is_some_and(|f| f != w) {
                         return Err(Error::argument(format!(
-                            "node {v} of surface a faces two nodes of surface b"
+                            "node {} of surface a faces two nodes of surface b",
+                            (s.number)(v)
                         )));
                     }
                     found = Some(w);
@@ -188,13 +194,15 @@ fn facing_nodes(
         }
         let Some(w) = found else {
             return Err(Error::argument(format!(
-                "node {v} of surface a faces no node of surface b: the interface must match \
-                 node to node"
+                "node {} of surface a faces no node of surface b: the interface must match \
+                 node to node",
+                (s.number)(v)
             )));
         };
         if w == v {
             return Err(Error::argument(format!(
-                "node {v} is on both surfaces: each body needs its own nodes on the interface"
+                "node {} is on both surfaces: each body needs its own nodes on the interface",
+                (s.number)(v)
             )));
         }
         facing.insert(v, w);
@@ -279,6 +287,7 @@ mod tests {
             a,
             b,
             normal: [0.0, 0.0, 1.0],
+            number: &|v| v as i64 + 1,
         })
     }
 
@@ -320,23 +329,28 @@ mod tests {
     }
 
     #[test]
-    fn a_node_without_a_facing_node_is_named() {
+    fn a_node_without_a_facing_node_is_named_in_the_callers_numbering() {
         let (mut points, a, b) = squares(0.0);
         points[6][0] += 0.1;
         let e = build(&points, &a, &b).unwrap_err();
+        // Node 2 (0-based) is node 3 in `build`'s 1-based numbering.
         assert!(
-            e.message().contains("node 2 of surface a faces no node"),
+            e.message().contains("node 3 of surface a faces no node"),
             "{e}"
         );
     }
 
     #[test]
-    fn a_triangle_without_a_facing_triangle_is_named() {
+    fn a_triangle_without_a_facing_triangle_is_named_by_its_nodes() {
         let (points, a, _) = squares(0.0);
         // b split along the other diagonal.
         let b = vec![[4, 5, 7], [5, 6, 7]];
         let e = build(&points, &a, &b).unwrap_err();
-        assert!(e.message().contains("triangle 0 of surface a"), "{e}");
+        assert!(
+            e.message()
+                .contains("triangle of surface a on nodes [1, 2, 3]"),
+            "{e}"
+        );
     }
 
     #[test]
@@ -349,6 +363,7 @@ mod tests {
             a: &a,
             b: &a,
             normal: [0.0, 0.0, 2.0],
+            number: &|v| v as i64,
         })
         .unwrap_err();
         assert!(e.message().contains("not a unit vector"), "{e}");

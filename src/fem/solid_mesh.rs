@@ -45,6 +45,21 @@ pub struct SolidMesh {
     bodies: Vec<i32>,
     index_base: usize,
     warnings: Vec<String>,
+    /// The largest side of the bounding box, kept: every tetrahedron's
+    /// default Jmin reads it.
+    size: f64,
+}
+
+/// The largest side of the bounding box of `nodes`.
+fn bounding_size(nodes: &[[f64; 3]]) -> f64 {
+    (0..3)
+        .map(|i| {
+            let (lo, hi) = (nodes.iter()).fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
+                (a.min(p[i]), b.max(p[i]))
+            });
+            hi - lo
+        })
+        .fold(0.0, f64::max)
 }
 
 impl SolidMesh {
@@ -128,6 +143,7 @@ impl SolidMesh {
             ));
         }
         Ok(SolidMesh {
+            size: bounding_size(&nodes),
             nodes,
             tets,
             body_of,
@@ -296,15 +312,7 @@ impl SolidMesh {
     /// The largest side of the bounding box (the model size Jmin's default
     /// λ is).
     pub fn size(&self) -> f64 {
-        (0..3)
-            .map(|i| {
-                let (lo, hi) = (self.nodes.iter())
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), p| {
-                        (a.min(p[i]), b.max(p[i]))
-                    });
-                hi - lo
-            })
-            .fold(0.0, f64::max)
+        self.size
     }
 
     /// The geometry of a tetrahedron.

@@ -23,7 +23,7 @@ use crate::fem::solid_assembly::{SolidBodies, tet_cliques};
 use crate::fem::solid_mesh::SolidMesh;
 use crate::fem::tet::{dot, isotropic_d, sub};
 use crate::linalg::Ordering;
-use crate::solve::report::SolveInfo;
+use crate::solve::report::{IterationRecord, SolveInfo};
 use crate::solve::solid::{SolidAnalysis, SolidSystem, solve_gap_contact_from};
 
 /// A displacement component in space.
@@ -118,7 +118,7 @@ struct SolidSolution {
     pair_of: Vec<usize>,
     active: Vec<bool>,
     info: SolveInfo,
-    iterations: usize,
+    history: Vec<IterationRecord>,
     warnings: Vec<String>,
 }
 

@@ -58,7 +58,7 @@ impl Default for TwoBlocks3d {
 }
 
 /// The outputs of [`TwoBlocks3d`] (of the whole scene, not the quarter).
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct TwoBlocks3dResult {
     /// The area of the interface in contact.
     pub contact_area: f64,
@@ -86,6 +86,10 @@ pub struct TwoBlocks3dResult {
     pub timings: Timings,
     /// Seconds of the solve.
     pub seconds: f64,
+    /// B's tetrahedra switched (on or off) after each active-set solve:
+    /// the rank of the change to the next solve's matrix (from
+    /// [`TwoBlocks3d::solve_model`]; empty from the study's loop).
+    pub switches: Vec<usize>,
 }
 
 impl TwoBlocks3d {
@@ -168,6 +172,7 @@ impl TwoBlocks3d {
             factorization_bytes: r.factorization_bytes,
             timings: r.timings,
             seconds: r.seconds,
+            switches: Vec::new(),
         })
     }
 }
@@ -295,6 +300,9 @@ impl TwoBlocks3d {
             factorization_bytes: info.factorization_bytes,
             timings: info.timings,
             seconds,
+            switches: (model.contact_history()?.iter())
+                .map(|r| r.switched_on + r.switched_off)
+                .collect(),
         })
     }
 }

@@ -22,7 +22,16 @@ impl SolidModel {
 
     /// The active-set iterations of the last solve (1 without contact).
     pub fn iterations(&self) -> Result<usize> {
-        Ok(self.solution()?.iterations)
+        Ok(self.solution()?.history.len())
+    }
+
+    /// One record per active-set iteration of the last solve: B's
+    /// tetrahedra on in its solve and those the inversion test switched on
+    /// and off after it (without contact pairs, one record of zeros). The
+    /// switches are the rank of the change between two solves' matrices,
+    /// each tetrahedron of B adding E_c/(6T_e)·w wᵀ.
+    pub fn contact_history(&self) -> Result<&[IterationRecord]> {
+        Ok(&self.solution()?.history)
     }
 
     /// What the mesh and the last solve noticed but did not refuse.

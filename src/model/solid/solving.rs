@@ -175,7 +175,7 @@ impl SolidModel {
             gap,
             pair_of: layer.pair_of.clone(),
             active: solved.active,
-            iterations: solved.history.len(),
+            history: solved.history,
             info,
             warnings,
         })
@@ -307,6 +307,7 @@ impl SolidModel {
                 a: &a.triangles,
                 b: &b.triangles,
                 normal,
+                number: &|v| (v + mesh.index_base()) as i64,
             })
             .map_err(name)?;
             let modulus = options

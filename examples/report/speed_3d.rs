@@ -1,0 +1,359 @@
+//! Speed and memory of the seed scene in 3D through the product's
+//! `SolidModel`, each size in its own process so that its peak memory is
+//! its own: the phases, fill and peak memory per unknown, one thread
+//! against two, and CalculiX side by side at equal accuracy.
+
+use std::fmt::Write as _;
+
+use serde_json::Value;
+
+use tfem::studies::tet_scenes::TwoBlocks3d;
+
+use crate::Args;
+use crate::common::peak_rss;
+use crate::tetrahedra::extrapolate;
+
+/// `report --seed3d-run N`: solves the 3D seed scene at h = 1/N through
+/// [`TwoBlocks3d::solve_model`] and prints one JSON line (threads from
+/// `RAYON_NUM_THREADS`, set by the parent).
+pub(crate) fn seed3d_run(n: usize) -> ! {
+    let scene = TwoBlocks3d {
+        h: 1.0 / n as f64,
+        ..Default::default()
+    };
+    let r = scene.solve_model().expect("the 3D seed scene");
+    let t = r.timings;
+    println!(
+        "{}",
+        serde_json::json!({
+            "unknowns": r.unknowns, "iterations": r.iterations,
+            "factorizations": r.factorizations, "factor_nnz": r.factor_nnz,
+            "factorization_bytes": r.factorization_bytes,
+            "assembly": t.assembly, "analysis": t.analysis, "factorization": t.factorization,
+            "solve": t.solve, "total": r.seconds,
+            "contact_area": r.contact_area, "gap_corner": r.gap_corner, "v_top": r.v_top,
+            "compliance": r.compliance, "transmitted": r.transmitted,
+            "switches": r.switches, "threads": rayon_threads(), "rss_peak": peak_rss(),
+        })
+    );
+    std::process::exit(0)
+}
+
+fn rayon_threads() -> usize {
+    std::env::var("RAYON_NUM_THREADS")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+}
+
+/// One run in a child process with `threads` threads (0: the machine's).
+fn child(n: usize, threads: usize) -> Option<Value> {
+    let mut command = std::process::Command::new(std::env::current_exe().ok()?);
+    command.args(["--seed3d-run", &n.to_string()]);
+    if threads > 0 {
+        command.env("RAYON_NUM_THREADS", threads.to_string());
+    }
+    let out = command.output().ok()?;
+    let text = String::from_utf8_lossy(&out.stdout);
+    serde_json::from_str(text.lines().last()?).ok()
+}
+
+/// A measured run: its mesh divisor, threads and the child's values.
+struct Run {
+    n: usize,
+    v: Value,
+}
+
+impl Run {
+    fn f(&self, key: &str) -> f64 {
+        self.v[key].as_f64().unwrap_or(f64::NAN)
+    }
+    fn threads(&self) -> u64 {
+        self.v["threads"].as_u64().unwrap_or(0)
+    }
+}
+
+pub(crate) fn speed_3d(report: &mut String, a: &Args) {
+    // (N, threads; 0: the machine's): the machine's threads over the sizes,
+    // one thread where CalculiX (one thread) is met at equal accuracy. The
+    // grid must fall on the loaded square's edge: N a multiple of 20.
+    let plan: &[(usize, usize)] = if a.quick {
+        &[(20, 0), (40, 0), (20, 1)]
+    } else {
+        &[
+            (40, 0),
+            (60, 0),
+            (60, 1),
+            (80, 0),
+            (80, 1),
+            (100, 0),
+            (100, 1),
+            (120, 0),
+        ]
+    };
+    let runs: Vec<Run> = plan
+        .iter()
+        .filter_map(|&(n, threads)| {
+            let v = child(n, threads);
+            if v.is_none() {
+                eprintln!("speed_3d: the run at h = 1/{n} failed");
+            }
+            v.map(|v| Run { n, v })
+        })
+        .collect();
+    writeln!(report, "## Speed and memory in three dimensions\n").unwrap();
+    phases(report, &runs);
+    memory_fit(report, &runs);
+    equal_accuracy(report, &runs);
+}
+
+/// The phases of each run and its memory.
+fn phases(report: &mut String, runs: &[Run]) {
+    writeln!(
+        report,
+        "The seed scene in 3D (the scene of the tetrahedra section's contact tables) through the \
+         product's `SolidModel` (`TwoBlocks3d::solve_model`, what `examples/two_blocks_3d` runs), \
+         each size in its own process (`report --seed3d-run N`); nested dissection; seconds summed \
+         over the active-set solves, each of which refactorises (the 3D interface is not condensed). \
+         *peak factorisation*: what one numeric factorisation holds at its peak (factor values, \
+         structure, faer's workspace); *peak RSS*: the whole process's (mesh, model, matrix, \
+         factor, results). *switches*: B's tetrahedra the inversion test switched after each solve \
+         (of 3 per interface triangle), the rank of the change from one solve's matrix to the next's.\n\n\
+         | h | unknowns | threads | solves | assembly | analysis | factorisations | triangular solves | total [s] | factor entries per unknown | peak factorisation [MB] | peak RSS [MB] | peak RSS per unknown [kB] | switches |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+    )
+    .unwrap();
+    for r in runs {
+        let unknowns = r.f("unknowns");
+        let switches = (r.v["switches"].as_array().into_iter().flatten())
+            .map(|k| k.to_string())
+            .collect::<Vec<_>>()
+            .join(", ");
+        writeln!(
+            report,
+            "| 1/{} | {} | {} | {} | {:.2} | {:.2} | {:.1} ({:.1} each) | {:.2} | {:.1} | {:.0} | {:.0} | {:.0} | {:.1} | {} |",
+            r.n,
+            unknowns,
+            r.threads(),
+            r.v["iterations"],
+            r.f("assembly"),
+            r.f("analysis"),
+            r.f("factorization"),
+            r.f("factorization") / r.f("factorizations"),
+            r.f("solve"),
+            r.f("total"),
+            r.f("factor_nnz") / unknowns,
+            r.f("factorization_bytes") / 1e6,
+            r.f("rss_peak") / 1e6,
+            r.f("rss_peak") / unknowns / 1e3,
+            switches,
+        )
+        .unwrap();
+    }
+    writeln!(report).unwrap();
+}
+
+/// Least-squares slope and intercept of y against x.
+fn line_fit(points: &[(f64, f64)]) -> Option<(f64, f64)> {
+    let n = points.len() as f64;
+    if points.len() < 2 {
+        return None;
+    }
+    let (sx, sy) = points
+        .iter()
+        .fold((0.0, 0.0), |a, p| (a.0 + p.0, a.1 + p.1));
+    let (mx, my) = (sx / n, sy / n);
+    let sxx: f64 = points.iter().map(|p| (p.0 - mx).powi(2)).sum();
+    let sxy: f64 = points.iter().map(|p| (p.0 - mx) * (p.1 - my)).sum();
+    (sxx > 0.0).then(|| (sxy / sxx, my - sxy / sxx * mx))
+}
+
+/// Growth of time, fill and memory with the unknowns (two-thread runs),
+/// and the size at which peak memory reaches 24 GB on that trend.
+fn memory_fit(report: &mut String, runs: &[Run]) {
+    let two: Vec<&Run> = runs.iter().filter(|r| r.threads() != 1).collect();
+    let fit = |key: &str, per_factorisation: bool| {
+        let points: Vec<(f64, f64)> = (two.iter())
+            .map(|r| {
+                let y = r.f(key)
+                    / if per_factorisation {
+                        r.f("factorizations")
+                    } else {
+                        1.0
+                    };
+                (r.f("unknowns").ln(), y.ln())
+            })
+            .filter(|p| p.1.is_finite())
+            .collect();
+        line_fit(&points)
+    };
+    let (Some(nnz), Some(time), Some(rss)) = (
+        fit("factor_nnz", false),
+        fit("factorization", true),
+        fit("rss_peak", false),
+    ) else {
+        return;
+    };
+    let limit = ((24e9f64).ln() - rss.1) / rss.0;
+    writeln!(
+        report,
+        "Fitted over the two-thread runs against the unknowns N: factor entries ∝ N^{:.2}, one \
+         factorisation's time ∝ N^{:.2}, peak RSS ∝ N^{:.2} (nested dissection on a 3D grid: N^(4/3), \
+         N² and N^(4/3) in theory). On that trend the peak RSS reaches 24 GB at about {:.2e} unknowns \
+         (h ≈ 1/{:.0}), where one factorisation would take about {:.0} s.\n",
+        nnz.0,
+        time.0,
+        rss.0,
+        limit.exp(),
+        // N ≈ 0.4 n³ for this quarter model (the table's unknowns).
+        (limit.exp() / 0.4).cbrt(),
+        (time.0 * limit + time.1).exp(),
+    )
+    .unwrap();
+}
+
+/// CalculiX's converged C3D8 runs (scripts/calculix/seed3d/results.jsonl).
+fn calculix_runs() -> Vec<Value> {
+    let path = concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scripts/calculix/seed3d/results.jsonl"
+    );
+    let text = std::fs::read_to_string(path).unwrap_or_default();
+    let mut runs: Vec<Value> = (text.lines())
+        .filter_map(|l| serde_json::from_str(l).ok())
+        .filter(|v: &Value| {
+            v["contact"] == "n2s" && v["converged"] != false && v["retimed"] != true
+        })
+        .collect();
+    let h = |v: &Value| v["h"].as_f64().unwrap_or(f64::NAN);
+    runs.sort_by(|a, b| h(b).total_cmp(&h(a)));
+    runs
+}
+
+/// The error of each code's runs against a common converged value (the
+/// mean of the two codes' extrapolations, which CalculiX's table beside the
+/// contact tables gives), and the tfem time at CalculiX's accuracy.
+fn equal_accuracy(report: &mut String, runs: &[Run]) {
+    let ccx = calculix_runs();
+    if ccx.is_empty() || runs.is_empty() {
+        return;
+    }
+    // The converged values: the mean of the two codes' extrapolations
+    // from their three finest meshes (tfem's from its two-thread runs here),
+    // ± half their difference; CalculiX's alone when tfem has no fit.
+    let tfem_rows: Vec<&Run> = runs.iter().filter(|r| r.threads() != 1).collect();
+    let converged = |key: &str| -> Option<(f64, f64)> {
+        let finest = |q: Vec<(f64, f64)>| -> Option<f64> {
+            (q.len() >= 3)
+                .then(|| extrapolate(&q[q.len() - 3..]))
+                .flatten()
+                .map(|(value, _)| value)
+        };
+        let theirs = finest(
+            (ccx.iter())
+                .map(|v| {
+                    (
+                        v["h"].as_f64().unwrap_or(f64::NAN),
+                        v[key].as_f64().unwrap_or(f64::NAN),
+                    )
+                })
+                .collect(),
+        )?;
+        let ours = finest(
+            tfem_rows
+                .iter()
+                .map(|r| (1.0 / r.n as f64, r.f(key)))
+                .collect(),
+        );
+        Some(ours.map_or((theirs, f64::NAN), |ours| {
+            (0.5 * (ours + theirs), 0.5 * (ours - theirs).abs())
+        }))
+    };
+    let (Some(v_top), Some(compliance)) = (converged("v_top"), converged("compliance")) else {
+        return;
+    };
+    let reference = [v_top.0, compliance.0];
+    let spread = |(_, spread): (f64, f64)| {
+        if spread.is_finite() {
+            format!(" ± {spread:.1e}")
+        } else {
+            " (CalculiX's alone: tfem has no fit)".to_string()
+        }
+    };
+    writeln!(
+        report,
+        "At equal accuracy against CalculiX (its C3D8 runs of the tetrahedra section, one thread, \
+         ccx's wall time measured on a loaded machine). The converged values are the means of the \
+         two codes' extrapolations from their three finest meshes (q = q∞ + K h^s; ± half their \
+         difference): v_top {:.5e}{} and compliance {:.3}{}. *tfem at \
+         CalculiX's accuracy*: the time interpolated, log-log in error, between the two runs of the \
+         same thread count that bracket CalculiX's v_top error, or *not reached* when none does.\n\n\
+         | code | h | unknowns | threads | time [s] | v_top error | compliance error |\n\
+         |---|---|---|---|---|---|---|",
+        v_top.0,
+        spread(v_top),
+        compliance.0,
+        spread(compliance)
+    )
+    .unwrap();
+    let error = |k: usize, value: f64| value / reference[k] - 1.0;
+    for v in &ccx {
+        let f = |key: &str| v[key].as_f64().unwrap_or(f64::NAN);
+        writeln!(
+            report,
+            "| CalculiX C3D8 | 1/{:.0} | {} | 1 | {:.1} | {:+.2e} | {:+.2e} |",
+            1.0 / f("h"),
+            v["equations"],
+            f("ccx_seconds"),
+            error(0, f("v_top")),
+            error(1, f("compliance")),
+        )
+        .unwrap();
+    }
+    for r in runs {
+        writeln!(
+            report,
+            "| tfem P1 | 1/{} | {} | {} | {:.1} | {:+.2e} | {:+.2e} |",
+            r.n,
+            r.f("unknowns"),
+            r.threads(),
+            r.f("total"),
+            error(0, r.f("v_top")),
+            error(1, r.f("compliance")),
+        )
+        .unwrap();
+    }
+    writeln!(
+        report,
+        "\n| CalculiX h | its v_top error | CalculiX [s] | tfem at its accuracy, 1 thread [s] | tfem at its accuracy, the machine's threads [s] |\n|---|---|---|---|---|"
+    )
+    .unwrap();
+    for v in &ccx {
+        let target = error(0, v["v_top"].as_f64().unwrap_or(f64::NAN)).abs();
+        let at = |threads: u64| -> String {
+            let mut points: Vec<(f64, f64)> = (runs.iter())
+                .filter(|r| (r.threads() == 1) == (threads == 1))
+                .map(|r| (error(0, r.f("v_top")).abs(), r.f("total")))
+                .collect();
+            points.sort_by(|a, b| b.0.total_cmp(&a.0));
+            points
+                .windows(2)
+                .find(|w| w[0].0 >= target && target >= w[1].0)
+                .map_or("not reached".into(), |w| {
+                    let s = (target / w[0].0).ln() / (w[1].0 / w[0].0).ln();
+                    format!("{:.0}", (w[0].1.ln() + s * (w[1].1 / w[0].1).ln()).exp())
+                })
+        };
+        writeln!(
+            report,
+            "| 1/{:.0} | {:+.2e} | {:.1} | {} | {} |",
+            1.0 / v["h"].as_f64().unwrap_or(f64::NAN),
+            error(0, v["v_top"].as_f64().unwrap_or(f64::NAN)),
+            v["ccx_seconds"].as_f64().unwrap_or(f64::NAN),
+            at(1),
+            at(2),
+        )
+        .unwrap();
+    }
+    writeln!(report).unwrap();
+}
