@@ -8,11 +8,13 @@
 
 use std::collections::HashMap;
 use std::path::{Path, PathBuf};
-use std::process::Command;
+
+mod vtu_reader;
 
 use tfem::mesh::Mesh;
 use tfem::scenes::TwoBlocks;
 use tfem::{Component, ContactOptions, ContactWeighting, Material, Model, PlaneMode, Status};
+use vtu_reader::{Vtu, as_f64, as_i64, python_arrays, read_vtu, same};
 
 fn out_dir() -> PathBuf {
     let dir = std::env::current_exe()
@@ -45,217 +47,9 @@ fn written(model: &Model, name: &str) -> PathBuf {
     path
 }
 
-// ---------------------------------------------------------------------------
-// A reader of our own: the XML up to `<AppendedData encoding="raw">` read
-// tag by tag, then each array's block found at its offset from the byte
-// after `_`. It checks the layout rules of the VTK XML format as it goes.
-// ---------------------------------------------------------------------------
-
-/// One `DataArray` of the file.
-#[derive(Debug)]
-struct Array {
-    /// Its section: `Points`, `Cells`, `PointData` or `CellData`.
-    section: String,
-    name: String,
-    scalar: String,
-    components: usize,
-    /// Its value bytes (after the byte count).
-    bytes: Vec<u8>,
-}
-
-struct Vtu {
-    root: HashMap<String, String>,
-    points: usize,
-    cells: usize,
-    arrays: Vec<Array>,
-}
-
-/// The attributes of the tag text `text` (between `<` and `>`).
-fn attributes(text: &str) -> HashMap<String, String> {
-    let mut out = HashMap::new();
-    let mut rest = text.split_once(char::is_whitespace).map_or("", |s| s.1);
-    while let Some((key, after)) = rest.split_once("=\"") {
-        let (value, tail) = after.split_once('"').expect("a closing quote");
-        let previous = out.insert(key.trim().to_string(), value.to_string());
-        assert!(previous.is_none(), "attribute {key} given twice");
-        rest = tail;
-    }
-    out
-}
-
-fn scalar_size(scalar: &str) -> usize {
-    match scalar {
-        "Float64" | "Int64" | "UInt64" => 8,
-        "Float32" | "Int32" | "UInt32" => 4,
-        "UInt8" | "Int8" => 1,
-        other => panic!("unexpected type {other}"),
-    }
-}
-
-fn read_vtu(path: &Path) -> Vtu {
-    let file = std::fs::read(path).unwrap();
-    let start_tag = b"<AppendedData encoding=\"raw\">";
-    let at = file
-        .windows(start_tag.len())
-        .position(|w| w == start_tag)
-        .expect("<AppendedData encoding=\"raw\">");
-    let xml = std::str::from_utf8(&file[..at]).expect("the XML is text");
-    let after_tag = at + start_tag.len();
-    let underscore = after_tag
-        + file[after_tag..]
-            .iter()
-            .position(|&b| b == b'_')
-            .expect("the `_` that opens the data");
-    assert!(
-        file[after_tag..underscore]
-            .iter()
-            .all(u8::is_ascii_whitespace),
-        "only blanks between <AppendedData> and `_`"
-    );
-    let data = &file[underscore + 1..];
-
-    let (mut root, mut piece) = (None, None);
-    let mut section = String::new();
-    let mut headers = Vec::new();
-    for tag in xml.split('<').skip(1) {
-        let text = tag.split_once('>').expect("a tag ends with >").0;
-        let name = text.split_whitespace().next().unwrap_or("");
-        match name {
-            "?xml" => {}
-            "VTKFile" => root = Some(attributes(text)),
-            "UnstructuredGrid" | "/UnstructuredGrid" | "/Piece" => {}
-            "Piece" => piece = Some(attributes(text)),
-            "Points" | "Cells" | "PointData" | "CellData" => {
-                assert!(section.is_empty(), "{name} inside {section}");
-                section = name.to_string();
-            }
-            "/Points" | "/Cells" | "/PointData" | "/CellData" => {
-                assert_eq!(&name[1..], section, "{name} closes {section}");
-                section.clear();
-            }
-            "DataArray" => {
-                assert!(text.ends_with('/'), "an appended DataArray is empty");
-                assert!(!section.is_empty(), "a DataArray outside a section");
-                headers.push((section.clone(), attributes(text.trim_end_matches('/'))));
-            }
-            other => panic!("unexpected tag <{other}>"),
-        }
-    }
-    let root = root.expect("<VTKFile>");
-    let piece = piece.expect("<Piece>");
-    let count = |key: &str| -> usize { piece[key].parse().unwrap() };
-    let (points, cells) = (count("NumberOfPoints"), count("NumberOfCells"));
-
-    // The blocks tile the data in the order of the headers, from offset 0.
-    let mut next = 0usize;
-    let mut arrays = Vec::new();
-    for (section, a) in headers {
-        assert_eq!(a["format"], "appended", "{a:?}");
-        let offset: usize = a["offset"].parse().unwrap();
-        assert_eq!(offset, next, "{a:?}: the blocks must follow each other");
-        let length = u64::from_le_bytes(data[offset..offset + 8].try_into().unwrap()) as usize;
-        let components: usize = a["NumberOfComponents"].parse().unwrap();
-        let tuples = match section.as_str() {
-            "Points" | "PointData" => points,
-            "CellData" => cells,
-            _ => match a["Name"].as_str() {
-                "connectivity" => 3 * cells,
-                _ => cells,
-            },
-        };
-        assert_eq!(
-            length,
-            tuples * components * scalar_size(&a["type"]),
-            "{a:?}: the byte count"
-        );
-        arrays.push(Array {
-            section,
-            name: a["Name"].clone(),
-            scalar: a["type"].clone(),
-            components,
-            bytes: data[offset + 8..offset + 8 + length].to_vec(),
-        });
-        next = offset + 8 + length;
-    }
-    let tail = std::str::from_utf8(&data[next..]).expect("text after the data");
-    let words: Vec<&str> = tail.split_whitespace().collect();
-    assert_eq!(words, ["</AppendedData>", "</VTKFile>"]);
-    assert!(
-        tail.starts_with('\n'),
-        "a line break ends the data (meshio cuts the data at the last one)"
-    );
-    Vtu {
-        root,
-        points,
-        cells,
-        arrays,
-    }
-}
-
-impl Vtu {
-    fn array(&self, section: &str, name: &str) -> &Array {
-        self.arrays
-            .iter()
-            .find(|a| a.section == section && a.name == name)
-            .unwrap_or_else(|| panic!("{section}/{name} missing"))
-    }
-
-    fn has(&self, section: &str, name: &str) -> bool {
-        self.arrays
-            .iter()
-            .any(|a| a.section == section && a.name == name)
-    }
-
-    fn names(&self, section: &str) -> Vec<&str> {
-        self.arrays
-            .iter()
-            .filter(|a| a.section == section)
-            .map(|a| a.name.as_str())
-            .collect()
-    }
-
-    fn f64s(&self, section: &str, name: &str, components: usize) -> Vec<f64> {
-        let a = self.array(section, name);
-        assert_eq!((a.scalar.as_str(), a.components), ("Float64", components));
-        a.bytes
-            .chunks_exact(8)
-            .map(|b| f64::from_le_bytes(b.try_into().unwrap()))
-            .collect()
-    }
-
-    fn ints(&self, section: &str, name: &str) -> Vec<i64> {
-        let a = self.array(section, name);
-        assert_eq!(a.components, 1);
-        match a.scalar.as_str() {
-            "Int32" => a
-                .bytes
-                .chunks_exact(4)
-                .map(|b| i64::from(i32::from_le_bytes(b.try_into().unwrap())))
-                .collect(),
-            "Int64" => a
-                .bytes
-                .chunks_exact(8)
-                .map(|b| i64::from_le_bytes(b.try_into().unwrap()))
-                .collect(),
-            "UInt8" => a.bytes.iter().map(|&b| i64::from(b)).collect(),
-            other => panic!("{name} is {other}"),
-        }
-    }
-}
-
 /// Plane vectors as the file holds them: [x, y, 0] per point.
 fn xyz(v: &[[f64; 2]]) -> Vec<f64> {
     v.iter().flat_map(|d| [d[0], d[1], 0.0]).collect()
-}
-
-fn bits(v: &[f64]) -> Vec<u64> {
-    v.iter().map(|x| x.to_bits()).collect()
-}
-
-/// Asserts `read` and `model` are the same values, bit for bit.
-fn same(what: &str, read: &[f64], model: &[f64]) {
-    assert_eq!(read.len(), model.len(), "{what}: lengths");
-    assert!(bits(read) == bits(model), "{what}: values differ");
 }
 
 /// The body triangles' values the file should hold, then `extra`.
@@ -352,7 +146,7 @@ fn check_nodal_contact(vtu: &Vtu, model: &Model) {
 
 #[test]
 fn the_file_is_a_little_endian_grid_with_uint64_headers() {
-    let vtu = read_vtu(&written(&seed(ContactWeighting::Strip), "header.vtu"));
+    let vtu = read_vtu(&written(&seed(ContactWeighting::Strip), "header.vtu"), 3);
     assert_eq!(vtu.root["type"], "UnstructuredGrid");
     assert_eq!(vtu.root["version"], "1.0");
     assert_eq!(vtu.root["byte_order"], "LittleEndian");
@@ -373,7 +167,7 @@ fn the_automatic_weighting_writes_the_elements_of_b_of_its_strip_pairs() {
 
 fn check_strip_solve(weighting: ContactWeighting, name: &str) {
     let model = seed(weighting);
-    let vtu = read_vtu(&written(&model, name));
+    let vtu = read_vtu(&written(&model, name), 3);
     let b = model.contact_elements().unwrap();
     assert!(!b.is_empty());
     check_mesh_and_body_fields(&vtu, &model, b);
@@ -401,7 +195,7 @@ fn check_strip_solve(weighting: ContactWeighting, name: &str) {
 #[test]
 fn a_mortar_solve_writes_the_nodal_contact_arrays_and_no_cells_of_b() {
     let model = seed(ContactWeighting::Mortar);
-    let vtu = read_vtu(&written(&model, "mortar.vtu"));
+    let vtu = read_vtu(&written(&model, "mortar.vtu"), 3);
     check_mesh_and_body_fields(&vtu, &model, &[]);
     check_nodal_contact(&vtu, &model);
     assert_eq!(
@@ -421,7 +215,7 @@ fn a_load_step_writes_the_nodal_contact_arrays_under_either_weighting() {
         .unwrap();
         s.model.set_contact_weighting(weighting).unwrap();
         s.model.step(0.5, &ContactOptions::default()).unwrap();
-        let vtu = read_vtu(&written(&s.model, "step.vtu"));
+        let vtu = read_vtu(&written(&s.model, "step.vtu"), 3);
         check_nodal_contact(&vtu, &s.model);
     }
 }
@@ -454,7 +248,7 @@ fn square_without_contact() -> Model {
 #[test]
 fn a_solve_without_contact_writes_no_contact_array() {
     let model = square_without_contact();
-    let vtu = read_vtu(&written(&model, "no_contact.vtu"));
+    let vtu = read_vtu(&written(&model, "no_contact.vtu"), 3);
     check_mesh_and_body_fields(&vtu, &model, &[]);
     assert_eq!(vtu.names("PointData"), ["displacement"]);
     assert_eq!(
@@ -497,55 +291,6 @@ fn a_file_that_cannot_be_written_is_an_io_error_in_words_naming_it() {
 // one ParaView uses) through its Python bindings. Each prints every array
 // as the hex of its little-endian bytes, compared with the model's values.
 // ---------------------------------------------------------------------------
-
-/// Runs `script` (Python, given the file's path) if `python3` can import
-/// `module`; None, with a note on stdout, where it cannot.
-fn python_arrays(module: &str, script: &str, path: &Path) -> Option<HashMap<String, Vec<u8>>> {
-    let probe = Command::new("python3")
-        .args(["-c", &format!("import {module}")])
-        .output();
-    if !probe.is_ok_and(|o| o.status.success()) {
-        println!("note: skipped: python3 cannot import {module} (pip install {module} to run it)");
-        return None;
-    }
-    let out = Command::new("python3")
-        .args(["-c", script])
-        .arg(path)
-        .output()
-        .unwrap();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    assert!(out.status.success(), "{module} failed:\n{stderr}");
-    assert!(stderr.trim().is_empty(), "{module} complained:\n{stderr}");
-    let text = String::from_utf8(out.stdout).unwrap();
-    let hex = |s: &str| -> Vec<u8> {
-        (0..s.len())
-            .step_by(2)
-            .map(|k| u8::from_str_radix(&s[k..k + 2], 16).unwrap())
-            .collect()
-    };
-    Some(
-        text.lines()
-            .map(|l| {
-                let (name, bytes) = l.split_once(' ').unwrap_or((l, ""));
-                (name.to_string(), hex(bytes))
-            })
-            .collect(),
-    )
-}
-
-fn as_f64(bytes: &[u8]) -> Vec<f64> {
-    bytes
-        .chunks_exact(8)
-        .map(|b| f64::from_le_bytes(b.try_into().unwrap()))
-        .collect()
-}
-
-fn as_i64(bytes: &[u8]) -> Vec<i64> {
-    bytes
-        .chunks_exact(8)
-        .map(|b| i64::from_le_bytes(b.try_into().unwrap()))
-        .collect()
-}
 
 /// What another reader gave against the model (strip weighting, so that
 /// the cells include the elements of B).
