@@ -17,6 +17,7 @@ use crate::tetrahedra::extrapolate;
 /// [`TwoBlocks3d::solve_model`] and prints one JSON line (threads from
 /// `RAYON_NUM_THREADS`, set by the parent).
 pub(crate) fn seed3d_run(n: usize) -> ! {
+    let load = load_average();
     let scene = TwoBlocks3d {
         h: 1.0 / n as f64,
         ..Default::default()
@@ -33,7 +34,7 @@ pub(crate) fn seed3d_run(n: usize) -> ! {
             "solve": t.solve, "total": r.seconds,
             "contact_area": r.contact_area, "gap_corner": r.gap_corner, "v_top": r.v_top,
             "compliance": r.compliance, "transmitted": r.transmitted,
-            "switches": r.switches, "threads": rayon_threads(), "rss_peak": peak_rss(),
+            "switches": r.switches, "threads": rayon_threads(), "rss_peak": peak_rss(), "load_before": load,
         })
     );
     std::process::exit(0)
@@ -54,8 +55,21 @@ fn child(n: usize, threads: usize) -> Option<Value> {
         command.env("RAYON_NUM_THREADS", threads.to_string());
     }
     let out = command.output().ok()?;
+    if !out.status.success() {
+        eprintln!(
+            "speed_3d: h = 1/{n}: {}\n{}",
+            out.status,
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
     let text = String::from_utf8_lossy(&out.stdout);
     serde_json::from_str(text.lines().last()?).ok()
+}
+
+/// The 1-minute load average, where Linux gives it.
+fn load_average() -> Option<f64> {
+    let text = std::fs::read_to_string("/proc/loadavg").ok()?;
+    text.split_whitespace().next()?.parse().ok()
 }
 
 /// A measured run: its mesh divisor, threads and the child's values.
@@ -118,9 +132,10 @@ fn phases(report: &mut String, runs: &[Run]) {
          *peak factorisation*: what one numeric factorisation holds at its peak (factor values, \
          structure, faer's workspace); *peak RSS*: the whole process's (mesh, model, matrix, \
          factor, results). *switches*: B's tetrahedra the inversion test switched after each solve \
-         (of 3 per interface triangle), the rank of the change from one solve's matrix to the next's.\n\n\
-         | h | unknowns | threads | solves | assembly | analysis | factorisations | triangular solves | total [s] | factor entries per unknown | peak factorisation [MB] | peak RSS [MB] | peak RSS per unknown [kB] | switches |\n\
-         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+         (of 3 per interface triangle), a bound on the rank of the change from one solve's matrix to \
+         the next's; *load before*: the machine's 1-minute load average when the run started.\n\n\
+         | h | unknowns | threads | solves | assembly | analysis | factorisations | triangular solves | total [s] | factor entries per unknown | peak factorisation [MB] | peak RSS [MB] | peak RSS per unknown [kB] | switches | load before |\n\
+         |---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
     )
     .unwrap();
     for r in runs {
@@ -131,7 +146,7 @@ fn phases(report: &mut String, runs: &[Run]) {
             .join(", ");
         writeln!(
             report,
-            "| 1/{} | {} | {} | {} | {:.2} | {:.2} | {:.1} ({:.1} each) | {:.2} | {:.1} | {:.0} | {:.0} | {:.0} | {:.1} | {} |",
+            "| 1/{} | {} | {} | {} | {:.2} | {:.2} | {:.1} ({:.1} each) | {:.2} | {:.1} | {:.0} | {:.0} | {:.0} | {:.1} | {} | {} |",
             r.n,
             unknowns,
             r.threads(),
@@ -147,6 +162,9 @@ fn phases(report: &mut String, runs: &[Run]) {
             r.f("rss_peak") / 1e6,
             r.f("rss_peak") / unknowns / 1e3,
             switches,
+            r.v["load_before"]
+                .as_f64()
+                .map_or("–".into(), |l| format!("{l:.2}")),
         )
         .unwrap();
     }
@@ -168,46 +186,61 @@ fn line_fit(points: &[(f64, f64)]) -> Option<(f64, f64)> {
     (sxx > 0.0).then(|| (sxy / sxx, my - sxy / sxx * mx))
 }
 
-/// Growth of time, fill and memory with the unknowns (two-thread runs),
-/// and the size at which peak memory reaches 24 GB on that trend.
+/// The runs on the machine's threads, by size, one per size.
+fn machine_runs(runs: &[Run]) -> Vec<&Run> {
+    let mut machine: Vec<&Run> = runs.iter().filter(|r| r.threads() != 1).collect();
+    machine.sort_by_key(|r| r.n);
+    machine.dedup_by_key(|r| r.n);
+    machine
+}
+
+/// Growth of time, fill and memory with the unknowns (the machine's
+/// threads), over every size and between the two largest, and the size at
+/// which peak memory reaches 24 GB on the latter, the steeper, trend.
 fn memory_fit(report: &mut String, runs: &[Run]) {
-    let two: Vec<&Run> = runs.iter().filter(|r| r.threads() != 1).collect();
-    let fit = |key: &str, per_factorisation: bool| {
-        let points: Vec<(f64, f64)> = (two.iter())
+    let machine = machine_runs(runs);
+    let fit = |runs: &[&Run], key: &str, per_factorisation: bool| {
+        let points: Vec<(f64, f64)> = (runs.iter())
             .map(|r| {
-                let y = r.f(key)
-                    / if per_factorisation {
-                        r.f("factorizations")
-                    } else {
-                        1.0
-                    };
-                (r.f("unknowns").ln(), y.ln())
+                let per = if per_factorisation {
+                    r.f("factorizations")
+                } else {
+                    1.0
+                };
+                (r.f("unknowns").ln(), (r.f(key) / per).ln())
             })
-            .filter(|p| p.1.is_finite())
+            .filter(|p| p.0.is_finite() && p.1.is_finite())
             .collect();
         line_fit(&points)
     };
-    let (Some(nnz), Some(time), Some(rss)) = (
-        fit("factor_nnz", false),
-        fit("factorization", true),
-        fit("rss_peak", false),
+    let largest = &machine[machine.len().saturating_sub(2)..];
+    let (Some(nnz), Some(time), Some(rss), Some(time2), Some(rss2), Some(last)) = (
+        fit(&machine, "factor_nnz", false),
+        fit(&machine, "factorization", true),
+        fit(&machine, "rss_peak", false),
+        fit(largest, "factorization", true),
+        fit(largest, "rss_peak", false),
+        machine.last(),
     ) else {
         return;
     };
-    let limit = ((24e9f64).ln() - rss.1) / rss.0;
+    let limit = ((24e9f64).ln() - rss2.1) / rss2.0;
     writeln!(
         report,
-        "Fitted over the two-thread runs against the unknowns N: factor entries ∝ N^{:.2}, one \
-         factorisation's time ∝ N^{:.2}, peak RSS ∝ N^{:.2} (nested dissection on a 3D grid: N^(4/3), \
-         N² and N^(4/3) in theory). On that trend the peak RSS reaches 24 GB at about {:.2e} unknowns \
-         (h ≈ 1/{:.0}), where one factorisation would take about {:.0} s.\n",
+        "Fitted over the runs on the machine's threads against the unknowns N: factor entries ∝ \
+         N^{:.2}, one factorisation's time ∝ N^{:.2}, peak RSS ∝ N^{:.2} (nested dissection on a 3D \
+         grid: N^(4/3), N² and N^(4/3) in theory). Between the two largest sizes the growth is \
+         steeper: one factorisation ∝ N^{:.2}, peak RSS ∝ N^{:.2}. On that trend the peak RSS \
+         reaches 24 GB at about {:.2e} unknowns (h ≈ 1/{:.0}; this scene's meshes exist for h = \
+         1/N with N a multiple of 20), where one factorisation would take about {:.0} s.\n",
         nnz.0,
         time.0,
         rss.0,
+        time2.0,
+        rss2.0,
         limit.exp(),
-        // N ≈ 0.4 n³ for this quarter model (the table's unknowns).
-        (limit.exp() / 0.4).cbrt(),
-        (time.0 * limit + time.1).exp(),
+        last.n as f64 * (limit.exp() / last.f("unknowns")).cbrt(),
+        (time2.0 * limit + time2.1).exp(),
     )
     .unwrap();
 }
@@ -241,7 +274,7 @@ fn equal_accuracy(report: &mut String, runs: &[Run]) {
     // The converged values: the mean of the two codes' extrapolations
     // from their three finest meshes (tfem's from its two-thread runs here),
     // ± half their difference; CalculiX's alone when tfem has no fit.
-    let tfem_rows: Vec<&Run> = runs.iter().filter(|r| r.threads() != 1).collect();
+    let tfem_rows = machine_runs(runs);
     let converged = |key: &str| -> Option<(f64, f64)> {
         let finest = |q: Vec<(f64, f64)>| -> Option<f64> {
             (q.len() >= 3)
@@ -287,7 +320,8 @@ fn equal_accuracy(report: &mut String, runs: &[Run]) {
          two codes' extrapolations from their three finest meshes (q = q∞ + K h^s; ± half their \
          difference): v_top {:.5e}{} and compliance {:.3}{}. *tfem at \
          CalculiX's accuracy*: the time interpolated, log-log in error, between the two runs of the \
-         same thread count that bracket CalculiX's v_top error, or *not reached* when none does.\n\n\
+         same thread count that bracket CalculiX's v_top error; *≤ t* when tfem's cheapest run is \
+         already as accurate; *not reached* when no run is.\n\n\
          | code | h | unknowns | threads | time [s] | v_top error | compliance error |\n\
          |---|---|---|---|---|---|---|",
         v_top.0,
@@ -330,19 +364,29 @@ fn equal_accuracy(report: &mut String, runs: &[Run]) {
     .unwrap();
     for v in &ccx {
         let target = error(0, v["v_top"].as_f64().unwrap_or(f64::NAN)).abs();
-        let at = |threads: u64| -> String {
+        // The first run, in order of time, at least as accurate as
+        // CalculiX, interpolated log-log against the run before it.
+        let at = |one: bool| -> String {
             let mut points: Vec<(f64, f64)> = (runs.iter())
-                .filter(|r| (r.threads() == 1) == (threads == 1))
-                .map(|r| (error(0, r.f("v_top")).abs(), r.f("total")))
+                .filter(|r| (r.threads() == 1) == one)
+                .map(|r| (error(0, r.f("v_top")), r.f("total")))
                 .collect();
-            points.sort_by(|a, b| b.0.total_cmp(&a.0));
-            points
-                .windows(2)
-                .find(|w| w[0].0 >= target && target >= w[1].0)
-                .map_or("not reached".into(), |w| {
-                    let s = (target / w[0].0).ln() / (w[1].0 / w[0].0).ln();
-                    format!("{:.0}", (w[0].1.ln() + s * (w[1].1 / w[0].1).ln()).exp())
-                })
+            points.sort_by(|a, b| a.1.total_cmp(&b.1));
+            let Some(k) = points.iter().position(|p| p.0.abs() <= target) else {
+                return "not reached".into();
+            };
+            let (e1, t1) = points[k];
+            let bracket = k
+                .checked_sub(1)
+                .map(|j| points[j])
+                .filter(|&(e0, _)| e0.signum() == e1.signum() && e1 != 0.0 && e0.abs() > e1.abs());
+            match bracket {
+                Some((e0, t0)) => {
+                    let s = (target / e0.abs()).ln() / (e1 / e0).ln();
+                    format!("{:.0}", (t0.ln() + s * (t1 / t0).ln()).exp())
+                }
+                None => format!("≤ {t1:.1}"),
+            }
         };
         writeln!(
             report,
@@ -350,8 +394,8 @@ fn equal_accuracy(report: &mut String, runs: &[Run]) {
             1.0 / v["h"].as_f64().unwrap_or(f64::NAN),
             error(0, v["v_top"].as_f64().unwrap_or(f64::NAN)),
             v["ccx_seconds"].as_f64().unwrap_or(f64::NAN),
-            at(1),
-            at(2),
+            at(true),
+            at(false),
         )
         .unwrap();
     }

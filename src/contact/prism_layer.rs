@@ -41,7 +41,7 @@ pub fn prism_layer(s: &FacingSurfaces<'_>) -> Result<Vec<GapTetrahedron>> {
     for (name, tris) in [("a", s.a), ("b", s.b)] {
         if let Some(v) = tris.iter().flatten().find(|&&v| v >= s.points.len()) {
             return Err(Error::argument(format!(
-                "surface {name} uses node {v}, out of range ({} nodes)",
+                "surface {name} uses node index {v} (0-based, internal), out of range ({} nodes)",
                 s.points.len()
             )));
         }

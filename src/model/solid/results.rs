@@ -27,9 +27,9 @@ impl SolidModel {
 
     /// One record per active-set iteration of the last solve: B's
     /// tetrahedra on in its solve and those the inversion test switched on
-    /// and off after it (without contact pairs, one record of zeros). The
-    /// switches are the rank of the change between two solves' matrices,
-    /// each tetrahedron of B adding E_c/(6T_e)·w wᵀ.
+    /// and off after it (without contact pairs, one record of zeros). Each
+    /// tetrahedron of B adds E_c/(6T_e)·w wᵀ, so the switches bound the
+    /// rank of the change from one solve's matrix to the next's.
     pub fn contact_history(&self) -> Result<&[IterationRecord]> {
         Ok(&self.solution()?.history)
     }

@@ -416,12 +416,12 @@ impl Side {
         let n = sum.map(|c| c / norm);
         let x0 = mesh.nodes()[self.triangles[0][0]];
         let extent = mesh.size();
-        for (k, (tri, m)) in self.triangles.iter().zip(&self.normals).enumerate() {
+        for (tri, m) in self.triangles.iter().zip(&self.normals) {
             let off_plane =
                 (tri.iter()).any(|&v| dot(sub(mesh.nodes()[v], x0), n).abs() > 1e-9 * extent);
             if dot(*m, n) < 1.0 - 1e-9 || off_plane {
                 return Err(Error::argument(format!(
-                    "side a (tag {}) is not planar: its face {k} (nodes {}) leaves the plane of \
+                    "side a (tag {}) is not planar: its face on nodes {} leaves the plane of \
                      the side; B in 3D needs a planar side a (docs/method.md §9)",
                     self.tag,
                     names(mesh, tri)
