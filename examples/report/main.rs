@@ -2,7 +2,7 @@
 //! the verification scenes and the seed scene, stability on stiff and
 //! extreme cases, speed with both orderings, and what each scene built.
 //!
-//!   cargo run --release --example report               # full, up to ~1M unknowns (~10 min)
+//!   cargo run --release --example report               # full: 2D to ~2M unknowns, 3D to 685k (~2 h)
 //!   cargo run --release --example report -- --quick    # small sizes, for CI
 //!   cargo run --release --example report -- --calculix # also CalculiX beside tfem (~6 more min)
 //!   cargo run --release --example report -- --only friction,many_bodies --out /tmp/r
