@@ -263,49 +263,69 @@ fn calculix_runs() -> Vec<Value> {
     runs
 }
 
-/// The error of each code's runs against a common converged value (the
-/// mean of the two codes' extrapolations, which CalculiX's table beside the
-/// contact tables gives), and the tfem time at CalculiX's accuracy.
+/// A converged value and its uncertainty: the mean of the two codes'
+/// extrapolations from their three finest meshes (tfem's from its runs on
+/// the machine's threads), ± half their difference; CalculiX's alone, with
+/// a NaN spread, when tfem has no fit.
+fn converged(ccx: &[Value], runs: &[Run], key: &str) -> Option<(f64, f64)> {
+    let finest = |q: Vec<(f64, f64)>| -> Option<f64> {
+        (q.len() >= 3)
+            .then(|| extrapolate(&q[q.len() - 3..]))
+            .flatten()
+            .map(|(value, _)| value)
+    };
+    let field = |v: &Value, k: &str| v[k].as_f64().unwrap_or(f64::NAN);
+    let theirs = finest(ccx.iter().map(|v| (field(v, "h"), field(v, key))).collect())?;
+    let ours = finest(
+        (machine_runs(runs).iter())
+            .map(|r| (1.0 / r.n as f64, r.f(key)))
+            .collect(),
+    );
+    Some(ours.map_or((theirs, f64::NAN), |ours| {
+        (0.5 * (ours + theirs), 0.5 * (ours - theirs).abs())
+    }))
+}
+
+/// tfem's time at the v_top error `target` on one thread (`one`) or the
+/// machine's: the first run, in order of time, at least as accurate,
+/// interpolated log-log against the run before it; "≤ t" when that run
+/// has no such neighbour, "not reached" when no run is as accurate.
+fn time_at_accuracy(runs: &[Run], v_top: f64, target: f64, one: bool) -> String {
+    let mut points: Vec<(f64, f64)> = (runs.iter())
+        .filter(|r| (r.threads() == 1) == one)
+        .map(|r| (r.f("v_top") / v_top - 1.0, r.f("total")))
+        .collect();
+    points.sort_by(|a, b| a.1.total_cmp(&b.1));
+    let Some(k) = points.iter().position(|p| p.0.abs() <= target) else {
+        return "not reached".into();
+    };
+    let (e1, t1) = points[k];
+    let bracket = k
+        .checked_sub(1)
+        .map(|j| points[j])
+        .filter(|&(e0, _)| e0.signum() == e1.signum() && e1 != 0.0 && e0.abs() > e1.abs());
+    match bracket {
+        Some((e0, t0)) => {
+            let s = (target / e0.abs()).ln() / (e1 / e0).ln();
+            format!("{:.0}", (t0.ln() + s * (t1 / t0).ln()).exp())
+        }
+        None => format!("≤ {t1:.1}"),
+    }
+}
+
+/// The error of each code's runs against the converged values, and
+/// tfem's time at each CalculiX run's accuracy.
 fn equal_accuracy(report: &mut String, runs: &[Run]) {
     let ccx = calculix_runs();
     if ccx.is_empty() || runs.is_empty() {
         return;
     }
-    // The converged values: the mean of the two codes' extrapolations
-    // from their three finest meshes (tfem's from its two-thread runs here),
-    // ± half their difference; CalculiX's alone when tfem has no fit.
-    let tfem_rows = machine_runs(runs);
-    let converged = |key: &str| -> Option<(f64, f64)> {
-        let finest = |q: Vec<(f64, f64)>| -> Option<f64> {
-            (q.len() >= 3)
-                .then(|| extrapolate(&q[q.len() - 3..]))
-                .flatten()
-                .map(|(value, _)| value)
-        };
-        let theirs = finest(
-            (ccx.iter())
-                .map(|v| {
-                    (
-                        v["h"].as_f64().unwrap_or(f64::NAN),
-                        v[key].as_f64().unwrap_or(f64::NAN),
-                    )
-                })
-                .collect(),
-        )?;
-        let ours = finest(
-            tfem_rows
-                .iter()
-                .map(|r| (1.0 / r.n as f64, r.f(key)))
-                .collect(),
-        );
-        Some(ours.map_or((theirs, f64::NAN), |ours| {
-            (0.5 * (ours + theirs), 0.5 * (ours - theirs).abs())
-        }))
-    };
-    let (Some(v_top), Some(compliance)) = (converged("v_top"), converged("compliance")) else {
+    let (Some(v_top), Some(compliance)) = (
+        converged(&ccx, runs, "v_top"),
+        converged(&ccx, runs, "compliance"),
+    ) else {
         return;
     };
-    let reference = [v_top.0, compliance.0];
     let spread = |(_, spread): (f64, f64)| {
         if spread.is_finite() {
             format!(" ± {spread:.1e}")
@@ -330,8 +350,33 @@ fn equal_accuracy(report: &mut String, runs: &[Run]) {
         spread(compliance)
     )
     .unwrap();
-    let error = |k: usize, value: f64| value / reference[k] - 1.0;
+    error_rows(report, &ccx, runs, [v_top.0, compliance.0]);
+    writeln!(
+        report,
+        "\n| CalculiX h | its v_top error | CalculiX [s] | tfem at its accuracy, 1 thread [s] | tfem at its accuracy, the machine's threads [s] |\n|---|---|---|---|---|"
+    )
+    .unwrap();
     for v in &ccx {
+        let f = |key: &str| v[key].as_f64().unwrap_or(f64::NAN);
+        let error = f("v_top") / v_top.0 - 1.0;
+        writeln!(
+            report,
+            "| 1/{:.0} | {:+.2e} | {:.1} | {} | {} |",
+            1.0 / f("h"),
+            error,
+            f("ccx_seconds"),
+            time_at_accuracy(runs, v_top.0, error.abs(), true),
+            time_at_accuracy(runs, v_top.0, error.abs(), false),
+        )
+        .unwrap();
+    }
+    writeln!(report).unwrap();
+}
+
+/// Each run's v_top and compliance errors against `reference`.
+fn error_rows(report: &mut String, ccx: &[Value], runs: &[Run], reference: [f64; 2]) {
+    let error = |k: usize, value: f64| value / reference[k] - 1.0;
+    for v in ccx {
         let f = |key: &str| v[key].as_f64().unwrap_or(f64::NAN);
         writeln!(
             report,
@@ -357,47 +402,4 @@ fn equal_accuracy(report: &mut String, runs: &[Run]) {
         )
         .unwrap();
     }
-    writeln!(
-        report,
-        "\n| CalculiX h | its v_top error | CalculiX [s] | tfem at its accuracy, 1 thread [s] | tfem at its accuracy, the machine's threads [s] |\n|---|---|---|---|---|"
-    )
-    .unwrap();
-    for v in &ccx {
-        let target = error(0, v["v_top"].as_f64().unwrap_or(f64::NAN)).abs();
-        // The first run, in order of time, at least as accurate as
-        // CalculiX, interpolated log-log against the run before it.
-        let at = |one: bool| -> String {
-            let mut points: Vec<(f64, f64)> = (runs.iter())
-                .filter(|r| (r.threads() == 1) == one)
-                .map(|r| (error(0, r.f("v_top")), r.f("total")))
-                .collect();
-            points.sort_by(|a, b| a.1.total_cmp(&b.1));
-            let Some(k) = points.iter().position(|p| p.0.abs() <= target) else {
-                return "not reached".into();
-            };
-            let (e1, t1) = points[k];
-            let bracket = k
-                .checked_sub(1)
-                .map(|j| points[j])
-                .filter(|&(e0, _)| e0.signum() == e1.signum() && e1 != 0.0 && e0.abs() > e1.abs());
-            match bracket {
-                Some((e0, t0)) => {
-                    let s = (target / e0.abs()).ln() / (e1 / e0).ln();
-                    format!("{:.0}", (t0.ln() + s * (t1 / t0).ln()).exp())
-                }
-                None => format!("≤ {t1:.1}"),
-            }
-        };
-        writeln!(
-            report,
-            "| 1/{:.0} | {:+.2e} | {:.1} | {} | {} |",
-            1.0 / v["h"].as_f64().unwrap_or(f64::NAN),
-            error(0, v["v_top"].as_f64().unwrap_or(f64::NAN)),
-            v["ccx_seconds"].as_f64().unwrap_or(f64::NAN),
-            at(true),
-            at(false),
-        )
-        .unwrap();
-    }
-    writeln!(report).unwrap();
 }
